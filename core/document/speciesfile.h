@@ -1,0 +1,24 @@
+#pragma once
+
+#include <QString>
+
+#include "engine/graph/graph.h"
+
+namespace sylva::doc {
+
+/// Current version of the species file format ("format": "sylva-species").
+inline constexpr int kSpeciesFormatVersion = 1;
+
+/// Loads a species file (JSON) into a graph whose baseDir is the file's folder. Also accepts a
+/// bare grammar file (.lsys or the legacy format), wrapped into an lsystem -> tube_mesh graph.
+/// Throws sylva::InvalidInput (with file/line/column where known) or sylva::IoError.
+graph::SpeciesGraph loadSpecies(const QString& path);
+
+/// Parses species JSON text; \p fileName and \p baseDir are used for messages and paths.
+graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName,
+                                 const QString& baseDir);
+
+/// Serialises a graph back to species JSON (stable key order).
+QByteArray serializeSpecies(const graph::SpeciesGraph& graph);
+
+} // namespace sylva::doc

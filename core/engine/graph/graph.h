@@ -1,0 +1,133 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/graph/value.h"
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
+#include "engine/util/progress.h"
+
+namespace sylva::graph {
+
+/// One node of a species graph as written in a species file.
+struct NodeDesc {
+    std::string id;
+    std::string type;
+    Value params = Value::Object{};
+    std::vector<std::string> inputs;
+};
+
+/// A species: a small DAG of nodes whose `output` node yields the tree.
+struct SpeciesGraph {
+    std::string name;
+    std::vector<NodeDesc> nodes;
+    std::string output;
+    /// Folder that relative paths in parameters (grammar_file, mesh files) resolve against.
+    std::filesystem::path baseDir;
+    /// The file this graph came from, for diagnostics ("" when built in code).
+    std::string sourceFile;
+
+    const NodeDesc* findNode(const std::string& id) const;
+    NodeDesc* findNode(const std::string& id);
+};
+
+/// What a node produces. Generators fill `skeleton`, meshing nodes fill `mesh` (and pass the
+/// skeleton through). `stats` holds counts ("symbols", "segments", ...) and `timingsMs` the time
+/// of each stage ("expand", "interpret", "mesh"), both accumulated along the inputs.
+struct NodeOutput {
+    std::shared_ptr<const skel::Skeleton> skeleton;
+    std::shared_ptr<const mesh::Mesh> mesh;
+    std::map<std::string, double> stats;
+    std::map<std::string, double> timingsMs;
+};
+
+/// Everything a node's evaluate function may look at. It must be a pure function of these.
+struct NodeContext {
+    const NodeDesc& node;
+    const Value& params;                      ///< node.params, with overrides applied
+    std::vector<const NodeOutput*> inputs;    ///< in the order of node.inputs
+    std::uint64_t seed = 0;                   ///< evaluation seed (instance seed)
+    bool seedOverridden = false;              ///< true when the caller set the seed explicitly
+    const std::filesystem::path& baseDir;
+    const std::string& sourceFile;
+    Progress& progress;
+
+    /// Resolves a path parameter against baseDir.
+    std::filesystem::path resolve(const std::string& relative) const;
+    /// Throws InvalidInput "<sourceFile>: node '<id>': <message>".
+    [[noreturn]] void fail(const std::string& message) const;
+};
+
+/// A node type: its name, the inputs it accepts, and its evaluate function.
+struct NodeType {
+    std::string name;
+    int minInputs = 0;
+    int maxInputs = 0;
+    std::function<NodeOutput(const NodeContext&)> evaluate;
+    /// Parameter names this type understands; unknown keys in a species file are an error.
+    std::vector<std::string> knownParams;
+};
+
+/// The table of node types. registerBuiltinNodeTypes() fills it with every engine node
+/// (lsystem, tube_mesh, space_colonization, ...); tests may register their own.
+class NodeRegistry {
+public:
+    static NodeRegistry& instance();
+    void add(NodeType type);
+    const NodeType* find(const std::string& name) const;
+    std::vector<std::string> names() const;
+
+private:
+    std::map<std::string, NodeType> mTypes;
+};
+
+/// Registers every built-in node type once (idempotent, thread-safe).
+void registerBuiltinNodeTypes();
+
+/// Evaluates a species graph. Each node is evaluated once per change: results are cached by a
+/// hash of (type, parameters, seed, input hashes), so changing one parameter re-runs only that
+/// node and what depends on it.
+class Evaluator {
+public:
+    explicit Evaluator(SpeciesGraph graph);
+
+    const SpeciesGraph& graph() const { return mGraph; }
+    /// Checks ids, types, inputs, cycles and the output node; throws InvalidInput.
+    void validate() const;
+
+    /// Sets node.param (a --set override or an editor edit). Throws InvalidInput for an
+    /// unknown node.
+    void setParam(const std::string& nodeId, const std::string& key, Value value);
+    /// Replaces the whole graph, keeping cached results of unchanged nodes.
+    void setGraph(SpeciesGraph graph);
+
+    /// Evaluates the output node (or \p nodeId) with the given seed. When \p seed is absent, the
+    /// generators use their own seed parameter (e.g. a grammar's `seed:`).
+    const NodeOutput& evaluate(Progress& progress = noProgress());
+    const NodeOutput& evaluate(std::uint64_t seed, Progress& progress = noProgress());
+    const NodeOutput& evaluateNode(const std::string& nodeId, bool seedOverridden,
+                                   std::uint64_t seed, Progress& progress = noProgress());
+
+    /// How many node evaluations ran (cache misses) since construction; for tests.
+    std::size_t evaluations() const { return mEvaluations; }
+
+private:
+    struct CacheEntry {
+        std::uint64_t key = 0;
+        std::shared_ptr<NodeOutput> output;
+    };
+    std::uint64_t nodeKey(const NodeDesc& node, std::uint64_t seed, bool seedOverridden,
+                          const std::vector<std::uint64_t>& inputKeys) const;
+
+    SpeciesGraph mGraph;
+    std::map<std::string, CacheEntry> mCache;
+    std::size_t mEvaluations = 0;
+};
+
+} // namespace sylva::graph

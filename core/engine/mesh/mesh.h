@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace sylva::mesh {
+
+/// A contiguous run of triangles that share one material.
+struct Submesh {
+    std::string material;        ///< "bark", "leaf", ...
+    std::uint32_t firstIndex = 0; ///< into Mesh::indices
+    std::uint32_t indexCount = 0;
+};
+
+/// Indexed triangle mesh, the output of meshing nodes and the input of exporters and the
+/// viewport. Attributes are per vertex; normals and uvs are empty or of positions' size.
+struct Mesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint32_t> indices; ///< three per triangle
+    std::vector<Submesh> submeshes;     ///< cover indices in order; empty means one "bark" run
+
+    std::size_t vertexCount() const { return positions.size(); }
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    bool empty() const { return positions.empty(); }
+};
+
+} // namespace sylva::mesh
