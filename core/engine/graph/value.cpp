@@ -87,6 +87,43 @@ void appendJson(std::string& out, const Value& v) {
     }
 }
 
+bool isFlat(const Value& v) {
+    if (!v.isArray()) return false;
+    for (const Value& e : v.toArray())
+        if (e.isArray() || e.isObject()) return false;
+    return true;
+}
+
+void appendPretty(std::string& out, const Value& v, int depth) {
+    const std::string pad(static_cast<std::size_t>(depth + 1) * 2, ' ');
+    const std::string closePad(static_cast<std::size_t>(depth) * 2, ' ');
+    if (v.isArray() && !v.toArray().empty() && !isFlat(v)) {
+        out += "[\n";
+        bool first = true;
+        for (const Value& e : v.toArray()) {
+            if (!first) out += ",\n";
+            first = false;
+            out += pad;
+            appendPretty(out, e, depth + 1);
+        }
+        out += "\n" + closePad + "]";
+    } else if (v.isObject() && !v.toObject().empty()) {
+        out += "{\n";
+        bool first = true;
+        for (const auto& [k, e] : v.toObject()) {
+            if (!first) out += ",\n";
+            first = false;
+            out += pad;
+            appendString(out, k);
+            out += ": ";
+            appendPretty(out, e, depth + 1);
+        }
+        out += "\n" + closePad + "}";
+    } else {
+        appendJson(out, v);
+    }
+}
+
 /// Recursive-descent JSON parser that tracks line and column for its diagnostics.
 class JsonParser {
 public:
@@ -361,6 +398,12 @@ std::string Value::string(const std::string& key, const std::string& fallback) c
 std::string Value::toJson() const {
     std::string out;
     appendJson(out, *this);
+    return out;
+}
+
+std::string Value::toPrettyJson() const {
+    std::string out;
+    appendPretty(out, *this, 0);
     return out;
 }
 

@@ -54,6 +54,9 @@ public:
 
     /// Compact canonical JSON text (sorted keys, shortest round-trip numbers).
     std::string toJson() const;
+    /// Canonical JSON indented by two spaces per level, arrays of numbers kept on one line;
+    /// what files for people to read (projects, species) are saved as. Ends without newline.
+    std::string toPrettyJson() const;
     /// Parses JSON text; throws InvalidInput with line and column.
     static Value parseJson(const std::string& text, const std::string& fileName = {});
     /// Parses a command-line value: JSON if it parses, otherwise a plain string.

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace sylva::cli {
+
+// Each command takes its arguments (without the command name) and returns the exit status.
+// They throw UsageError, sylva::InvalidInput, sylva::IoError...; main() maps those to messages
+// and exit statuses in one place.
+int runExpand(const std::vector<std::string>& args);
+int runTree(const std::vector<std::string>& args);
+
+} // namespace sylva::cli

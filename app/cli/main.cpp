@@ -1,0 +1,72 @@
+// sylva-cli: the headless front end of the Sylva engine (batch and farm use).
+#include "cliargs.h"
+#include "commands.h"
+
+#include "engine/util/error.h"
+
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* kUsage =
+    "usage: sylva-cli <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  expand <grammar> [-n N] [--seed S]      print the derived L-system string\n"
+    "  tree <grammar|species.json> -o out.obj  generate one tree\n"
+    "       [-n N] [--seed S] [--set node.param=value]... [--stats]\n"
+    "  help                                    show this text\n"
+    "\n"
+    "exit status: 0 success, 1 bad input (message as file:line:col: error: ...), 2 bad usage\n";
+
+void printError(const std::string& message) {
+    // Engine messages with positions are already "file:line:col: error: ..."; others get the
+    // program name so every line on stderr says where it came from.
+    if (message.find(": error: ") != std::string::npos)
+        std::fprintf(stderr, "%s\n", message.c_str());
+    else
+        std::fprintf(stderr, "sylva-cli: error: %s\n", message.c_str());
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    using namespace sylva::cli;
+    if (argc < 2) {
+        std::fputs(kUsage, stderr);
+        return kBadUsage;
+    }
+    const std::string command = argv[1];
+    const std::vector<std::string> args(argv + 2, argv + argc);
+    try {
+        if (command == "help" || command == "--help" || command == "-h") {
+            std::fputs(kUsage, stdout);
+            return kOk;
+        }
+        if (command == "expand") return runExpand(args);
+        if (command == "tree") return runTree(args);
+        throw UsageError("unknown command '" + command + "'");
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "sylva-cli: %s\n(see 'sylva-cli help')\n", e.what());
+        return kBadUsage;
+    } catch (const sylva::InvalidInput& e) {
+        printError(e.what());
+        return kBadInput;
+    } catch (const sylva::LimitExceeded& e) {
+        printError(e.what());
+        return kBadInput;
+    } catch (const sylva::IoError& e) {
+        printError(e.what());
+        return kBadInput;
+    } catch (const std::bad_alloc&) {
+        printError("out of memory");
+        return kBadInput;
+    } catch (const std::exception& e) {
+        printError(e.what());
+        return kBadInput;
+    }
+}

@@ -1,0 +1,303 @@
+#include "document/project.h"
+
+#include "document/formatupgrade.h"
+#include "engine/util/atomicfile.h"
+#include "engine/util/error.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+#include <cmath>
+
+namespace sylva::doc {
+
+namespace {
+
+using graph::Value;
+
+const std::vector<std::string> kKnownKeys = {"format", "format_version", "app_version", "seed",
+                                             "species", "domains", "instances", "obstacles",
+                                             "camera", "light"};
+
+glm::vec3 vec3Of(const Value& v, const std::string& what) {
+    const Value::Array& a = v.toArray(what);
+    if (a.size() != 3) throw InvalidInput(what + " must be [x, y, z]");
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i) {
+        const double d = a[static_cast<std::size_t>(i)].toNumber(what);
+        if (!std::isfinite(d)) throw InvalidInput(what + " must be finite");
+        out[i] = static_cast<float>(d);
+    }
+    return out;
+}
+
+glm::vec2 vec2Of(const Value& v, const std::string& what) {
+    const Value::Array& a = v.toArray(what);
+    if (a.size() != 2) throw InvalidInput(what + " must be [x, z]");
+    return {static_cast<float>(a[0].toNumber(what)), static_cast<float>(a[1].toNumber(what))};
+}
+
+Value arrayOf(const glm::vec3& v) { return Value(Value::Array{v.x, v.y, v.z}); }
+Value arrayOf(const glm::vec2& v) { return Value(Value::Array{v.x, v.y}); }
+
+glm::vec3 vec3Or(const Value& obj, const std::string& key, const glm::vec3& fallback,
+                 const std::string& where) {
+    const Value* v = obj.find(key);
+    return v ? vec3Of(*v, where + "." + key) : fallback;
+}
+
+ProjectSpecies parseSpeciesRef(const Value& v, std::size_t i) {
+    const std::string where = "species[" + std::to_string(i) + "]";
+    ProjectSpecies s;
+    s.name = v.string("name", "");
+    if (s.name.empty()) throw InvalidInput(where + " needs a \"name\"");
+    s.file = v.string("file", "");
+    if (const Value* g = v.find("graph")) s.graph = *g;
+    if (s.file.empty() == !s.graph.has_value())
+        throw InvalidInput(where + " (\"" + s.name + "\") needs exactly one of \"file\" or \"graph\"");
+    return s;
+}
+
+PlacementDomain parseDomain(const Value& v, std::size_t i) {
+    const std::string where = "domains[" + std::to_string(i) + "]";
+    PlacementDomain d;
+    d.shape = v.string("shape", "rectangle");
+    if (d.shape == "rectangle") {
+        const Value* mn = v.find("min");
+        const Value* mx = v.find("max");
+        if (!mn || !mx) throw InvalidInput(where + ": a rectangle needs \"min\" and \"max\" [x, z]");
+        d.min = vec2Of(*mn, where + ".min");
+        d.max = vec2Of(*mx, where + ".max");
+        if (!(d.min.x < d.max.x && d.min.y < d.max.y))
+            throw InvalidInput(where + ": min must be below max in x and z");
+    } else if (d.shape == "polygon") {
+        const Value* pts = v.find("points");
+        if (!pts) throw InvalidInput(where + ": a polygon needs \"points\" [[x, z], ...]");
+        for (const Value& p : pts->toArray(where + ".points")) d.polygon.push_back(vec2Of(p, where + ".points"));
+        if (d.polygon.size() < 3) throw InvalidInput(where + ": a polygon needs at least 3 points");
+    } else if (d.shape == "terrain") {
+        d.terrain = v.string("file", "");
+        if (d.terrain.empty()) throw InvalidInput(where + ": a terrain domain needs a mesh \"file\"");
+    } else {
+        throw InvalidInput(where + ": shape must be rectangle, polygon or terrain, got \"" + d.shape + "\"");
+    }
+    if (const Value* counts = v.find("counts")) {
+        for (const auto& [name, n] : counts->toObject(where + ".counts")) {
+            const double c = n.toNumber(where + ".counts." + name);
+            if (c < 0 || c != std::floor(c) || c > 1e8)
+                throw InvalidInput(where + ".counts." + name + " must be a whole number in [0, 1e8]");
+            d.counts[name] = static_cast<int>(c);
+        }
+    }
+    return d;
+}
+
+ProjectInstance parseInstance(const Value& v, std::size_t i) {
+    const std::string where = "instances[" + std::to_string(i) + "]";
+    ProjectInstance in;
+    in.species = v.string("species", "");
+    if (in.species.empty()) throw InvalidInput(where + " needs a \"species\"");
+    in.position = vec3Or(v, "position", in.position, where);
+    in.rotation = v.number("rotation", 0.0);
+    in.scale = v.number("scale", 1.0);
+    requireRange((where + ".scale").c_str(), in.scale, 1e-3, 1e3);
+    in.seed = static_cast<std::uint64_t>(v.integer("seed", 0));
+    in.growth = v.number("growth", 1.0);
+    requireRange((where + ".growth").c_str(), in.growth, 0.0, 1.0);
+    return in;
+}
+
+ProjectObstacle parseObstacle(const Value& v, std::size_t i) {
+    const std::string where = "obstacles[" + std::to_string(i) + "]";
+    ProjectObstacle o;
+    o.file = v.string("file", "");
+    if (o.file.empty()) throw InvalidInput(where + " needs a mesh \"file\"");
+    o.translate = vec3Or(v, "translate", o.translate, where);
+    o.rotate = vec3Or(v, "rotate", o.rotate, where);
+    o.scale = vec3Or(v, "scale", o.scale, where);
+    return o;
+}
+
+} // namespace
+
+const std::vector<UpgradeStep>& projectUpgrades() {
+    // format_version 1 is the first released format; future steps go here, in order.
+    static const std::vector<UpgradeStep> steps;
+    return steps;
+}
+
+QString Project::resolve(const std::string& relative) const {
+    const QString p = QString::fromStdString(relative);
+    if (QFileInfo(p).isAbsolute() || baseDir.isEmpty()) return p;
+    return QDir(baseDir).filePath(p);
+}
+
+const ProjectSpecies* Project::findSpecies(const std::string& name) const {
+    for (const ProjectSpecies& s : species)
+        if (s.name == name) return &s;
+    return nullptr;
+}
+
+Project parseProject(const QByteArray& json, const QString& fileName, LoadReport* report) {
+    const std::string file = fileName.toStdString();
+    const std::string where = file.empty() ? std::string() : file + ": ";
+    Value root = Value::parseJson(json.toStdString(), file);
+    if (!root.isObject()) throw InvalidInput(where + "a project file must hold a JSON object");
+    const UpgradeReport upgrade = upgradeFormat(root.objectRef(), "sylva-project",
+                                                kProjectFormatVersion, projectUpgrades(), file, false);
+    if (report) {
+        report->warnings = upgrade.warnings;
+        report->upgrades = upgrade.applied;
+    }
+    try {
+        Project p; // filled completely before it is returned: never half-loaded
+        p.baseDir = QFileInfo(fileName).absolutePath();
+        p.seed = static_cast<std::uint64_t>(root.integer("seed", 0));
+        p.appVersion = root.string("app_version", "");
+        if (const Value* v = root.find("species"))
+            for (std::size_t i = 0; i < v->toArray("species").size(); ++i)
+                p.species.push_back(parseSpeciesRef(v->toArray()[i], i));
+        if (const Value* v = root.find("domains"))
+            for (std::size_t i = 0; i < v->toArray("domains").size(); ++i)
+                p.domains.push_back(parseDomain(v->toArray()[i], i));
+        if (const Value* v = root.find("instances"))
+            for (std::size_t i = 0; i < v->toArray("instances").size(); ++i)
+                p.instances.push_back(parseInstance(v->toArray()[i], i));
+        if (const Value* v = root.find("obstacles"))
+            for (std::size_t i = 0; i < v->toArray("obstacles").size(); ++i)
+                p.obstacles.push_back(parseObstacle(v->toArray()[i], i));
+        if (const Value* cam = root.find("camera")) {
+            p.cameraPosition = vec3Or(*cam, "position", p.cameraPosition, "camera");
+            p.cameraTarget = vec3Or(*cam, "target", p.cameraTarget, "camera");
+        }
+        if (const Value* light = root.find("light")) {
+            p.lightDirection = vec3Or(*light, "direction", p.lightDirection, "light");
+            if (glm::length(p.lightDirection) < 1e-6f)
+                throw InvalidInput("light.direction must not be zero");
+        }
+        // Species names must be unique and every reference must name one.
+        for (std::size_t i = 0; i < p.species.size(); ++i)
+            for (std::size_t j = 0; j < i; ++j)
+                if (p.species[i].name == p.species[j].name)
+                    throw InvalidInput("species \"" + p.species[i].name + "\" is defined twice");
+        for (const PlacementDomain& d : p.domains)
+            for (const auto& [name, count] : d.counts)
+                if (!p.findSpecies(name)) throw InvalidInput("domain counts name unknown species \"" + name + "\"");
+        for (const ProjectInstance& in : p.instances)
+            if (!p.findSpecies(in.species))
+                throw InvalidInput("instance names unknown species \"" + in.species + "\"");
+        for (const auto& [key, value] : root.toObject()) {
+            bool known = false;
+            for (const std::string& k : kKnownKeys) known = known || k == key;
+            if (!known) p.extra[key] = value;
+        }
+        return p;
+    } catch (const InvalidInput& e) {
+        if (!e.diagnostics().empty()) throw;
+        throw InvalidInput(where + e.what());
+    }
+}
+
+Project loadProject(const QString& path, LoadReport* report) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw IoError("cannot read " + path.toStdString() + ": " + file.errorString().toStdString());
+    return parseProject(file.readAll(), path, report);
+}
+
+QByteArray serializeProject(const Project& p) {
+    Value::Object root = p.extra;
+    root["format"] = "sylva-project";
+    root["format_version"] = kProjectFormatVersion;
+    root["app_version"] = p.appVersion.empty() ? std::string(SYLVA_VERSION) : p.appVersion;
+    root["seed"] = static_cast<double>(p.seed);
+    Value::Array species;
+    for (const ProjectSpecies& s : p.species) {
+        Value::Object o{{"name", s.name}};
+        if (s.graph) o["graph"] = *s.graph;
+        else o["file"] = s.file;
+        species.emplace_back(std::move(o));
+    }
+    root["species"] = Value(std::move(species));
+    Value::Array domains;
+    for (const PlacementDomain& d : p.domains) {
+        Value::Object o{{"shape", d.shape}};
+        if (d.shape == "rectangle") {
+            o["min"] = arrayOf(d.min);
+            o["max"] = arrayOf(d.max);
+        } else if (d.shape == "polygon") {
+            Value::Array pts;
+            for (const glm::vec2& q : d.polygon) pts.push_back(arrayOf(q));
+            o["points"] = Value(std::move(pts));
+        } else {
+            o["file"] = d.terrain;
+        }
+        Value::Object counts;
+        for (const auto& [name, n] : d.counts) counts[name] = n;
+        o["counts"] = Value(std::move(counts));
+        domains.emplace_back(std::move(o));
+    }
+    root["domains"] = Value(std::move(domains));
+    Value::Array instances;
+    for (const ProjectInstance& in : p.instances)
+        instances.emplace_back(Value::Object{{"species", in.species},
+                                             {"position", arrayOf(in.position)},
+                                             {"rotation", in.rotation},
+                                             {"scale", in.scale},
+                                             {"seed", static_cast<double>(in.seed)},
+                                             {"growth", in.growth}});
+    root["instances"] = Value(std::move(instances));
+    Value::Array obstacles;
+    for (const ProjectObstacle& o : p.obstacles)
+        obstacles.emplace_back(Value::Object{{"file", o.file},
+                                             {"translate", arrayOf(o.translate)},
+                                             {"rotate", arrayOf(o.rotate)},
+                                             {"scale", arrayOf(o.scale)}});
+    root["obstacles"] = Value(std::move(obstacles));
+    root["camera"] = Value::Object{{"position", arrayOf(p.cameraPosition)},
+                                   {"target", arrayOf(p.cameraTarget)}};
+    root["light"] = Value::Object{{"direction", arrayOf(p.lightDirection)}};
+    return QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n");
+}
+
+void saveProject(const Project& project, const QString& path) {
+    const QByteArray bytes = serializeProject(project);
+    writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+}
+
+Project importReferenceScene(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw IoError("cannot read " + path.toStdString() + ": " + file.errorString().toStdString());
+    const std::string name = path.toStdString();
+    const Value root = Value::parseJson(file.readAll().toStdString(), name);
+    Project p;
+    p.baseDir = QFileInfo(path).absolutePath();
+    p.seed = static_cast<std::uint64_t>(root.integer("seed", 0));
+    PlacementDomain domain;
+    if (const Value* d = root.find("domain")) {
+        if (const Value* mn = d->find("min")) domain.min = vec2Of(*mn, "domain.min");
+        if (const Value* mx = d->find("max")) domain.max = vec2Of(*mx, "domain.max");
+    }
+    const Value* plants = root.find("plants");
+    if (!plants) throw InvalidInput(name + ": a reference scene needs \"plants\"");
+    for (const Value& plant : plants->toArray("plants")) {
+        ProjectSpecies s;
+        s.file = plant.string("file", "");
+        if (s.file.empty()) throw InvalidInput(name + ": each plant needs a \"file\"");
+        s.name = plant.string("name", QFileInfo(QString::fromStdString(s.file)).completeBaseName().toStdString());
+        if (!p.findSpecies(s.name)) p.species.push_back(s);
+        domain.counts[s.name] += static_cast<int>(plant.integer("quantity", 1));
+    }
+    p.domains.push_back(domain);
+    if (const Value* meshes = root.find("collision_meshes"))
+        for (const Value& m : meshes->toArray("collision_meshes")) {
+            ProjectObstacle o;
+            o.file = m.isString() ? m.toString() : m.string("file", "");
+            p.obstacles.push_back(o);
+        }
+    return p;
+}
+
+} // namespace sylva::doc

@@ -1,0 +1,97 @@
+#pragma once
+
+#include <QByteArray>
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "document/formatupgrade.h"
+#include "engine/graph/value.h"
+
+namespace sylva::doc {
+
+/// Current version of the project format ("format": "sylva-project").
+inline constexpr int kProjectFormatVersion = 1;
+
+/// A species used by the project: a species file (relative to the project) or an inline graph.
+struct ProjectSpecies {
+    std::string name;
+    std::string file;                  ///< relative to the project file; empty when inline
+    std::optional<graph::Value> graph; ///< inline {"nodes": [...], "output": ...}
+};
+
+/// Where trees are scattered and how many of each species.
+struct PlacementDomain {
+    std::string shape = "rectangle";       ///< "rectangle" | "polygon" | "terrain"
+    glm::vec2 min{-50.0f}, max{50.0f};     ///< x and z on the ground (rectangle), metres
+    std::vector<glm::vec2> polygon;        ///< x,z corners (polygon)
+    std::string terrain;                   ///< mesh file (terrain), relative to the project
+    std::map<std::string, int> counts;     ///< species name → number of trees
+};
+
+/// A tree placed by hand.
+struct ProjectInstance {
+    std::string species;
+    glm::vec3 position{0.0f};
+    double rotation = 0.0; ///< degrees about +Y
+    double scale = 1.0;
+    std::uint64_t seed = 0;
+    double growth = 1.0;   ///< growth stage 0..1
+};
+
+/// An obstacle mesh with its transform (rotate in degrees about x, y, z, applied in that order).
+struct ProjectObstacle {
+    std::string file; ///< relative to the project file
+    glm::vec3 translate{0.0f}, rotate{0.0f}, scale{1.0f};
+};
+
+/// The document behind a `.sylva` file. Paths are kept as written (relative to the project) and
+/// resolved with resolve().
+struct Project {
+    std::uint64_t seed = 0;
+    std::string appVersion;
+    std::vector<ProjectSpecies> species;
+    std::vector<PlacementDomain> domains;
+    std::vector<ProjectInstance> instances;
+    std::vector<ProjectObstacle> obstacles;
+    glm::vec3 cameraPosition{0.0f, 20.0f, 80.0f}, cameraTarget{0.0f};
+    glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
+    /// Keys this version does not know, kept so that saving never drops another tool's data.
+    graph::Value::Object extra;
+
+    QString baseDir; ///< folder of the project file (not saved)
+    QString resolve(const std::string& relative) const;
+    const ProjectSpecies* findSpecies(const std::string& name) const;
+    bool operator==(const Project&) const = default;
+};
+
+/// Warnings produced while loading (upgrades applied, newer file).
+struct LoadReport {
+    std::vector<std::string> warnings;
+    std::vector<std::string> upgrades;
+};
+
+/// Parses a project; throws InvalidInput (naming the file, and line/column for JSON syntax) and
+/// never returns a half-loaded project. A file from a newer Sylva loads with a warning.
+Project parseProject(const QByteArray& json, const QString& fileName, LoadReport* report = nullptr);
+Project loadProject(const QString& path, LoadReport* report = nullptr);
+/// Canonical, indented JSON; load → save reproduces a saved file byte for byte.
+QByteArray serializeProject(const Project& project);
+/// Atomic save (temporary + rename).
+void saveProject(const Project& project, const QString& path);
+
+/// Imports the JSON scene description of the reference implementation (reference 000 §4.1):
+/// {"plants": [{"file": "alder.txt", "quantity": 100}, ...], "collision_meshes": ["wall.obj"],
+///  optional "domain": {"min": [x, z], "max": [x, z]}, "seed"}. Grammar files become species.
+Project importReferenceScene(const QString& path);
+
+/// The project format's upgrade steps (exposed for tests).
+const std::vector<UpgradeStep>& projectUpgrades();
+
+} // namespace sylva::doc

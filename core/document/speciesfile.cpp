@@ -1,0 +1,108 @@
+#include "document/speciesfile.h"
+
+#include "document/formatupgrade.h"
+#include "engine/util/error.h"
+
+#include <QFile>
+#include <QFileInfo>
+
+namespace sylva::doc {
+
+namespace {
+
+using graph::Value;
+
+/// Species format upgrades (none yet: version 1 is the first). Add steps here, never checks in
+/// the parser below.
+const std::vector<UpgradeStep>& speciesUpgrades() {
+    static const std::vector<UpgradeStep> steps;
+    return steps;
+}
+
+graph::SpeciesGraph wrapGrammar(const QString& path) {
+    graph::SpeciesGraph g;
+    const QFileInfo info(path);
+    g.name = info.completeBaseName().toStdString();
+    g.baseDir = info.absolutePath().toStdString();
+    g.sourceFile = path.toStdString();
+    graph::NodeDesc grow{"grow", "lsystem", Value::Object{{"grammar_file", info.fileName().toStdString()}}, {}};
+    graph::NodeDesc mesh{"mesh", "tube_mesh", Value::Object{}, {"grow"}};
+    g.nodes = {grow, mesh};
+    g.output = "mesh";
+    return g;
+}
+
+} // namespace
+
+graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName,
+                                 const QString& baseDir) {
+    const std::string file = fileName.toStdString();
+    const std::string where = file.empty() ? std::string() : file + ": ";
+    Value root = Value::parseJson(json.toStdString(), file);
+    if (!root.isObject()) throw InvalidInput(where + "a species file must hold a JSON object");
+    Value::Object& obj = root.objectRef();
+    upgradeFormat(obj, "sylva-species", kSpeciesFormatVersion, speciesUpgrades(), file, true);
+
+    graph::SpeciesGraph g;
+    g.sourceFile = file;
+    g.baseDir = baseDir.toStdString();
+    g.name = root.string("name", QFileInfo(fileName).completeBaseName().toStdString());
+    const Value* graphValue = root.find("graph");
+    if (!graphValue || !graphValue->isObject())
+        throw InvalidInput(where + "\"graph\" (an object with \"nodes\" and \"output\") is missing");
+    const Value* nodes = graphValue->find("nodes");
+    if (!nodes || !nodes->isArray() || nodes->toArray().empty())
+        throw InvalidInput(where + "\"graph.nodes\" must be a non-empty array");
+    for (const Value& n : nodes->toArray()) {
+        if (!n.isObject()) throw InvalidInput(where + "each node must be an object");
+        graph::NodeDesc node;
+        node.id = n.string("id", "");
+        node.type = n.string("type", "");
+        if (node.id.empty() || node.type.empty())
+            throw InvalidInput(where + "each node needs an \"id\" and a \"type\"");
+        if (const Value* params = n.find("params")) {
+            if (!params->isObject())
+                throw InvalidInput(where + "node '" + node.id + "': \"params\" must be an object");
+            node.params = *params;
+        }
+        if (const Value* inputs = n.find("inputs")) {
+            for (const Value& in : inputs->toArray("node '" + node.id + "' inputs"))
+                node.inputs.push_back(in.toString("an input id"));
+        }
+        g.nodes.push_back(std::move(node));
+    }
+    g.output = graphValue->string("output", g.nodes.back().id);
+    return g;
+}
+
+graph::SpeciesGraph loadSpecies(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw IoError("cannot read " + path.toStdString() + ": " + file.errorString().toStdString());
+    const QByteArray bytes = file.readAll();
+    const QFileInfo info(path);
+    const QString suffix = info.suffix().toLower();
+    if (suffix == "json" || suffix == "sylva-species" || bytes.trimmed().startsWith('{'))
+        return parseSpecies(bytes, path, info.absolutePath());
+    return wrapGrammar(path);
+}
+
+QByteArray serializeSpecies(const graph::SpeciesGraph& g) {
+    Value::Array nodes;
+    for (const graph::NodeDesc& n : g.nodes) {
+        Value::Object o{{"id", n.id}, {"type", n.type}, {"params", n.params}};
+        if (!n.inputs.empty()) {
+            Value::Array inputs;
+            for (const std::string& in : n.inputs) inputs.emplace_back(in);
+            o["inputs"] = Value(std::move(inputs));
+        }
+        nodes.emplace_back(std::move(o));
+    }
+    Value root(Value::Object{{"format", "sylva-species"},
+                             {"format_version", kSpeciesFormatVersion},
+                             {"name", g.name},
+                             {"graph", Value::Object{{"nodes", std::move(nodes)}, {"output", g.output}}}});
+    return QByteArray::fromStdString(root.toJson() + "\n");
+}
+
+} // namespace sylva::doc

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every test through ctest:
+#   1. Release build with -Werror: engine GoogleTests, QtTest suites under xvfb-run, CLI
+#      end-to-end tests, the clang-format check; benchmarks are built, not run.
+#   2. The engine tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")"
+./scripts/install-deps.sh
+
+JOBS=${SYLVA_JOBS:-$(nproc)}
+start=$(date +%s)
+
+cmake --preset release >/dev/null
+cmake --build --preset release -j "$JOBS"
+ctest --preset release -j "$JOBS"
+
+if [[ "${SYLVA_SKIP_ASAN:-0}" != 1 ]]; then
+  cmake --preset asan >/dev/null
+  cmake --build --preset asan -j "$JOBS"
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$JOBS"
+fi
+echo "test.sh: all test suites passed in $(( $(date +%s) - start )) s"

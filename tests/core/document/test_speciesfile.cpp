@@ -1,0 +1,75 @@
+#include "document/speciesfile.h"
+#include "engine/util/error.h"
+
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QFile>
+
+using namespace sylva;
+
+namespace {
+const char* kSpecies = R"({ "format": "sylva-species", "format_version": 1, "name": "Ternary tree",
+  "graph": { "nodes": [
+      { "id": "grow", "type": "lsystem", "params": { "grammar_file": "ternary.lsys" } },
+      { "id": "mesh", "type": "tube_mesh", "inputs": ["grow"], "params": { "resolution": 8 } } ],
+    "output": "mesh" } })";
+
+std::string errorOf(const std::string& json) {
+    try {
+        doc::parseSpecies(QByteArray::fromStdString(json), "x.json", "/tmp");
+    } catch (const InvalidInput& e) {
+        return e.what();
+    }
+    return "";
+}
+} // namespace
+
+TEST(SpeciesFile, ParsesTheDocumentedExample) {
+    const graph::SpeciesGraph g = doc::parseSpecies(kSpecies, "/p/ternary.json", "/p");
+    EXPECT_EQ(g.name, "Ternary tree");
+    ASSERT_EQ(g.nodes.size(), 2u);
+    EXPECT_EQ(g.nodes[0].id, "grow");
+    EXPECT_EQ(g.nodes[0].params.string("grammar_file", ""), "ternary.lsys");
+    EXPECT_EQ(g.nodes[1].inputs, std::vector<std::string>{"grow"});
+    EXPECT_EQ(g.nodes[1].params.integer("resolution", 0), 8);
+    EXPECT_EQ(g.output, "mesh");
+    EXPECT_EQ(g.baseDir, std::filesystem::path("/p"));
+}
+
+TEST(SpeciesFile, SerializeRoundTripsByteIdentically) {
+    const graph::SpeciesGraph g = doc::parseSpecies(kSpecies, "a.json", "/p");
+    const QByteArray once = doc::serializeSpecies(g);
+    const QByteArray twice = doc::serializeSpecies(doc::parseSpecies(once, "b.json", "/p"));
+    EXPECT_EQ(once, twice);
+}
+
+TEST(SpeciesFile, RefusesWrongOrNewerFormats) {
+    EXPECT_NE(errorOf(R"({"format":"other","format_version":1})").find("not a sylva-species file"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format":"sylva-species"})").find("format_version"), std::string::npos);
+    EXPECT_NE(errorOf(R"({"format":"sylva-species","format_version":99,"graph":{}})")
+                  .find("newer Sylva"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format":"sylva-species","format_version":1})").find("\"graph\""),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"format":"sylva-species","format_version":1,"graph":{"nodes":[]}})")
+                  .find("non-empty"),
+              std::string::npos);
+    EXPECT_NE(errorOf("{\n\"format\": }").find("x.json:2:11"), std::string::npos);
+}
+
+TEST(SpeciesFile, LoadsGrammarFilesAsLsystemGraphs) {
+    const QString dir = QDir::tempPath() + "/sylva-test-species";
+    QDir().mkpath(dir);
+    QFile f(dir + "/bush.lsys");
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("axiom: F\nF -> FF\n");
+    f.close();
+    const graph::SpeciesGraph g = doc::loadSpecies(dir + "/bush.lsys");
+    ASSERT_EQ(g.nodes.size(), 2u);
+    EXPECT_EQ(g.nodes[0].type, "lsystem");
+    EXPECT_EQ(g.nodes[1].type, "tube_mesh");
+    EXPECT_EQ(g.name, "bush");
+    EXPECT_THROW(doc::loadSpecies(dir + "/missing.json"), IoError);
+}

@@ -1,0 +1,60 @@
+#include "engine/graph/value.h"
+#include "engine/util/error.h"
+
+#include <gtest/gtest.h>
+
+using sylva::graph::Value;
+
+TEST(Value, JsonRoundTripIsCanonical) {
+    const std::string text = R"({"b":[1,2.5,-3e-7,true,null],"a":{"z":"x\"y\n","y":{}},"c":0.1})";
+    const Value v = Value::parseJson(text);
+    // Keys sorted, shortest round-trip numbers.
+    EXPECT_EQ(v.toJson(), R"({"a":{"y":{},"z":"x\"y\n"},"b":[1,2.5,-3e-7,true,null],"c":0.1})");
+    EXPECT_EQ(Value::parseJson(v.toJson()), v);
+    EXPECT_EQ(Value::parseJson(v.toJson()).hash(), v.hash());
+}
+
+TEST(Value, UnicodeEscapes) {
+    EXPECT_EQ(Value::parseJson(R"("\u00e9\ud83c\udf33")").toString(), "\xC3\xA9\xF0\x9F\x8C\xB3");
+}
+
+TEST(Value, SyntaxErrorsCarryLineAndColumn) {
+    try {
+        Value::parseJson("{\n  \"a\": 1,\n  \"b\": ]\n}", "s.json");
+        FAIL() << "no error";
+    } catch (const sylva::InvalidInput& e) {
+        ASSERT_EQ(e.diagnostics().size(), 1u);
+        EXPECT_EQ(e.diagnostics()[0].line, 3);
+        EXPECT_EQ(e.diagnostics()[0].column, 8);
+        EXPECT_EQ(e.diagnostics()[0].file, "s.json");
+    }
+    EXPECT_THROW(Value::parseJson(R"({"a":1,"a":2})"), sylva::InvalidInput);
+    EXPECT_THROW(Value::parseJson(R"([1,2)"), sylva::InvalidInput);
+    EXPECT_THROW(Value::parseJson(R"("abc)"), sylva::InvalidInput);
+    EXPECT_THROW(Value::parseJson("1 2"), sylva::InvalidInput);
+}
+
+TEST(Value, TypedGettersNameTheKey) {
+    const Value v = Value::parseJson(R"({"n":3,"s":"x","f":2.5})");
+    EXPECT_EQ(v.integer("n", 0), 3);
+    EXPECT_EQ(v.integer("missing", 7), 7);
+    EXPECT_EQ(v.string("s", ""), "x");
+    try {
+        (void)v.integer("f", 0);
+        FAIL();
+    } catch (const sylva::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("f must be a whole number"), std::string::npos);
+    }
+    try {
+        (void)v.number("s", 0);
+        FAIL();
+    } catch (const sylva::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("s must be a number"), std::string::npos);
+    }
+}
+
+TEST(Value, LooseParsing) {
+    EXPECT_TRUE(Value::parseLoose("3").isNumber());
+    EXPECT_TRUE(Value::parseLoose("[1,2]").isArray());
+    EXPECT_EQ(Value::parseLoose("ternary.lsys").toString(), "ternary.lsys");
+}
