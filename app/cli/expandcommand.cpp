@@ -26,8 +26,10 @@ int runExpand(const std::vector<std::string>& argv) {
     auto n = args.integer("-n", 0, 1000);
     if (!n) n = args.integer("--generations", 0, 1000);
     if (n) options.generations = static_cast<int>(*n);
-    if (auto seed = args.integer("--seed", 0, (1LL << 62))) options.seed = static_cast<std::uint64_t>(*seed);
-    if (auto limit = args.integer("--limit", 1, 2'000'000'000)) options.symbolLimit = static_cast<std::size_t>(*limit);
+    if (auto seed = args.integer("--seed", 0, (1LL << 62)))
+        options.seed = static_cast<std::uint64_t>(*seed);
+    if (auto limit = args.integer("--limit", 1, 2'000'000'000))
+        options.symbolLimit = static_cast<std::size_t>(*limit);
 
     const std::string word = lsys::formatModules(lsys::derive(grammar, options));
     std::fwrite(word.data(), 1, word.size(), stdout);

@@ -21,7 +21,8 @@ namespace {
 void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
     const auto eq = assignment.find('=');
     const auto dot = assignment.find('.');
-    if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 || dot + 1 == eq)
+    if (eq == std::string::npos || dot == std::string::npos || dot > eq || dot == 0 ||
+        dot + 1 == eq)
         throw UsageError("--set expects node.param=value, got '" + assignment + "'");
     evaluator.setParam(assignment.substr(0, dot), assignment.substr(dot + 1, eq - dot - 1),
                        graph::Value::parseLoose(assignment.substr(eq + 1)));
@@ -29,7 +30,8 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
 
 std::string objectName(const std::string& speciesName) {
     std::string out;
-    for (char c : speciesName) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-') ? c : '_';
+    for (char c : speciesName)
+        out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-') ? c : '_';
     return out.empty() ? std::string("tree") : out;
 }
 
@@ -42,7 +44,8 @@ void appendJsonNumber(std::string& out, const char* key, double v, bool comma = 
 } // namespace
 
 int runTree(const std::vector<std::string>& argv) {
-    const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set"}, {"--stats"});
+    const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set"},
+                    {"--stats"});
     if (args.positional().size() != 1)
         throw UsageError("usage: sylva-cli tree <grammar.lsys|species.json> -o out.obj [-n N] "
                          "[--seed S] [--set node.param=value]... [--stats]");
@@ -63,9 +66,11 @@ int runTree(const std::vector<std::string>& argv) {
                 evaluator.setParam(node.id, "generations", graph::Value(static_cast<double>(*n)));
                 any = true;
             }
-        if (!any) throw UsageError("-n applies to L-system species; this species has no lsystem node");
+        if (!any)
+            throw UsageError("-n applies to L-system species; this species has no lsystem node");
     }
-    for (const std::string& s : args.values("--set")) applySet(evaluator, s);
+    for (const std::string& s : args.values("--set"))
+        applySet(evaluator, s);
 
     const auto seed = args.integer("--seed", 0, (1LL << 62));
     const graph::NodeOutput& result =
@@ -97,7 +102,8 @@ int runTree(const std::vector<std::string>& argv) {
         appendJsonNumber(json, "triangles", static_cast<double>(result.mesh->triangleCount()));
         appendJsonNumber(json, "height", stat("height"));
         json += "\"timings_ms\":{";
-        for (const auto& [k, v] : result.timingsMs) appendJsonNumber(json, k.c_str(), v);
+        for (const auto& [k, v] : result.timingsMs)
+            appendJsonNumber(json, k.c_str(), v);
         appendJsonNumber(json, "write", writeMs, false);
         json += "}}\n";
         (void)timing;

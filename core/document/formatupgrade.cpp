@@ -6,9 +6,9 @@
 
 namespace sylva::doc {
 
-UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& formatName,
-                            int current, const std::vector<UpgradeStep>& steps,
-                            const std::string& fileName, bool refuseNewer) {
+UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& formatName, int current,
+                            const std::vector<UpgradeStep>& steps, const std::string& fileName,
+                            bool refuseNewer) {
     const std::string where = fileName.empty() ? std::string() : fileName + ": ";
     auto format = root.find("format");
     if (format == root.end() || !format->second.isString() ||
@@ -25,8 +25,8 @@ UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& forma
     report.fileVersion = static_cast<int>(version->second.toNumber());
     if (report.fileVersion > current) {
         const std::string message = "written by a newer Sylva (format_version " +
-                                    std::to_string(report.fileVersion) + ", this build reads up to " +
-                                    std::to_string(current) + ")";
+                                    std::to_string(report.fileVersion) +
+                                    ", this build reads up to " + std::to_string(current) + ")";
         if (refuseNewer) throw InvalidInput(where + message + "; please update Sylva");
         report.warnings.push_back(where + message + "; unknown settings are ignored");
         return report;

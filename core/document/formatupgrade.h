@@ -28,8 +28,8 @@ struct UpgradeReport {
 /// Throws InvalidInput (naming \p fileName) when the format name is wrong or the version is
 /// missing/invalid. A file newer than \p current is refused when \p refuseNewer, otherwise it
 /// loads with a warning (unknown keys are ignored).
-UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& formatName,
-                            int current, const std::vector<UpgradeStep>& steps,
-                            const std::string& fileName, bool refuseNewer);
+UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& formatName, int current,
+                            const std::vector<UpgradeStep>& steps, const std::string& fileName,
+                            bool refuseNewer);
 
 } // namespace sylva::doc

@@ -16,9 +16,9 @@ namespace {
 
 using graph::Value;
 
-const std::vector<std::string> kKnownKeys = {"format", "format_version", "app_version", "seed",
-                                             "species", "domains", "instances", "obstacles",
-                                             "camera", "light"};
+const std::vector<std::string> kKnownKeys = {
+    "format",  "format_version", "app_version", "seed",   "species",
+    "domains", "instances",      "obstacles",   "camera", "light"};
 
 glm::vec3 vec3Of(const Value& v, const std::string& what) {
     const Value::Array& a = v.toArray(what);
@@ -38,8 +38,12 @@ glm::vec2 vec2Of(const Value& v, const std::string& what) {
     return {static_cast<float>(a[0].toNumber(what)), static_cast<float>(a[1].toNumber(what))};
 }
 
-Value arrayOf(const glm::vec3& v) { return Value(Value::Array{v.x, v.y, v.z}); }
-Value arrayOf(const glm::vec2& v) { return Value(Value::Array{v.x, v.y}); }
+Value arrayOf(const glm::vec3& v) {
+    return Value(Value::Array{v.x, v.y, v.z});
+}
+Value arrayOf(const glm::vec2& v) {
+    return Value(Value::Array{v.x, v.y});
+}
 
 glm::vec3 vec3Or(const Value& obj, const std::string& key, const glm::vec3& fallback,
                  const std::string& where) {
@@ -55,7 +59,8 @@ ProjectSpecies parseSpeciesRef(const Value& v, std::size_t i) {
     s.file = v.string("file", "");
     if (const Value* g = v.find("graph")) s.graph = *g;
     if (s.file.empty() == !s.graph.has_value())
-        throw InvalidInput(where + " (\"" + s.name + "\") needs exactly one of \"file\" or \"graph\"");
+        throw InvalidInput(where + " (\"" + s.name +
+                           "\") needs exactly one of \"file\" or \"graph\"");
     return s;
 }
 
@@ -66,7 +71,8 @@ PlacementDomain parseDomain(const Value& v, std::size_t i) {
     if (d.shape == "rectangle") {
         const Value* mn = v.find("min");
         const Value* mx = v.find("max");
-        if (!mn || !mx) throw InvalidInput(where + ": a rectangle needs \"min\" and \"max\" [x, z]");
+        if (!mn || !mx)
+            throw InvalidInput(where + ": a rectangle needs \"min\" and \"max\" [x, z]");
         d.min = vec2Of(*mn, where + ".min");
         d.max = vec2Of(*mx, where + ".max");
         if (!(d.min.x < d.max.x && d.min.y < d.max.y))
@@ -74,19 +80,23 @@ PlacementDomain parseDomain(const Value& v, std::size_t i) {
     } else if (d.shape == "polygon") {
         const Value* pts = v.find("points");
         if (!pts) throw InvalidInput(where + ": a polygon needs \"points\" [[x, z], ...]");
-        for (const Value& p : pts->toArray(where + ".points")) d.polygon.push_back(vec2Of(p, where + ".points"));
+        for (const Value& p : pts->toArray(where + ".points"))
+            d.polygon.push_back(vec2Of(p, where + ".points"));
         if (d.polygon.size() < 3) throw InvalidInput(where + ": a polygon needs at least 3 points");
     } else if (d.shape == "terrain") {
         d.terrain = v.string("file", "");
-        if (d.terrain.empty()) throw InvalidInput(where + ": a terrain domain needs a mesh \"file\"");
+        if (d.terrain.empty())
+            throw InvalidInput(where + ": a terrain domain needs a mesh \"file\"");
     } else {
-        throw InvalidInput(where + ": shape must be rectangle, polygon or terrain, got \"" + d.shape + "\"");
+        throw InvalidInput(where + ": shape must be rectangle, polygon or terrain, got \"" +
+                           d.shape + "\"");
     }
     if (const Value* counts = v.find("counts")) {
         for (const auto& [name, n] : counts->toObject(where + ".counts")) {
             const double c = n.toNumber(where + ".counts." + name);
             if (c < 0 || c != std::floor(c) || c > 1e8)
-                throw InvalidInput(where + ".counts." + name + " must be a whole number in [0, 1e8]");
+                throw InvalidInput(where + ".counts." + name +
+                                   " must be a whole number in [0, 1e8]");
             d.counts[name] = static_cast<int>(c);
         }
     }
@@ -144,8 +154,8 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
     const std::string where = file.empty() ? std::string() : file + ": ";
     Value root = Value::parseJson(json.toStdString(), file);
     if (!root.isObject()) throw InvalidInput(where + "a project file must hold a JSON object");
-    const UpgradeReport upgrade = upgradeFormat(root.objectRef(), "sylva-project",
-                                                kProjectFormatVersion, projectUpgrades(), file, false);
+    const UpgradeReport upgrade = upgradeFormat(
+        root.objectRef(), "sylva-project", kProjectFormatVersion, projectUpgrades(), file, false);
     if (report) {
         report->warnings = upgrade.warnings;
         report->upgrades = upgrade.applied;
@@ -183,13 +193,15 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
                     throw InvalidInput("species \"" + p.species[i].name + "\" is defined twice");
         for (const PlacementDomain& d : p.domains)
             for (const auto& [name, count] : d.counts)
-                if (!p.findSpecies(name)) throw InvalidInput("domain counts name unknown species \"" + name + "\"");
+                if (!p.findSpecies(name))
+                    throw InvalidInput("domain counts name unknown species \"" + name + "\"");
         for (const ProjectInstance& in : p.instances)
             if (!p.findSpecies(in.species))
                 throw InvalidInput("instance names unknown species \"" + in.species + "\"");
         for (const auto& [key, value] : root.toObject()) {
             bool known = false;
-            for (const std::string& k : kKnownKeys) known = known || k == key;
+            for (const std::string& k : kKnownKeys)
+                known = known || k == key;
             if (!known) p.extra[key] = value;
         }
         return p;
@@ -202,7 +214,8 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
 Project loadProject(const QString& path, LoadReport* report) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw IoError("cannot read " + path.toStdString() + ": " + file.errorString().toStdString());
+        throw IoError("cannot read " + path.toStdString() + ": " +
+                      file.errorString().toStdString());
     return parseProject(file.readAll(), path, report);
 }
 
@@ -215,8 +228,10 @@ QByteArray serializeProject(const Project& p) {
     Value::Array species;
     for (const ProjectSpecies& s : p.species) {
         Value::Object o{{"name", s.name}};
-        if (s.graph) o["graph"] = *s.graph;
-        else o["file"] = s.file;
+        if (s.graph)
+            o["graph"] = *s.graph;
+        else
+            o["file"] = s.file;
         species.emplace_back(std::move(o));
     }
     root["species"] = Value(std::move(species));
@@ -228,13 +243,15 @@ QByteArray serializeProject(const Project& p) {
             o["max"] = arrayOf(d.max);
         } else if (d.shape == "polygon") {
             Value::Array pts;
-            for (const glm::vec2& q : d.polygon) pts.push_back(arrayOf(q));
+            for (const glm::vec2& q : d.polygon)
+                pts.push_back(arrayOf(q));
             o["points"] = Value(std::move(pts));
         } else {
             o["file"] = d.terrain;
         }
         Value::Object counts;
-        for (const auto& [name, n] : d.counts) counts[name] = n;
+        for (const auto& [name, n] : d.counts)
+            counts[name] = n;
         o["counts"] = Value(std::move(counts));
         domains.emplace_back(std::move(o));
     }
@@ -255,21 +272,24 @@ QByteArray serializeProject(const Project& p) {
                                              {"rotate", arrayOf(o.rotate)},
                                              {"scale", arrayOf(o.scale)}});
     root["obstacles"] = Value(std::move(obstacles));
-    root["camera"] = Value::Object{{"position", arrayOf(p.cameraPosition)},
-                                   {"target", arrayOf(p.cameraTarget)}};
+    root["camera"] =
+        Value::Object{{"position", arrayOf(p.cameraPosition)}, {"target", arrayOf(p.cameraTarget)}};
     root["light"] = Value::Object{{"direction", arrayOf(p.lightDirection)}};
     return QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n");
 }
 
 void saveProject(const Project& project, const QString& path) {
     const QByteArray bytes = serializeProject(project);
-    writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    writeFileAtomically(
+        path.toStdString(),
+        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
 }
 
 Project importReferenceScene(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw IoError("cannot read " + path.toStdString() + ": " + file.errorString().toStdString());
+        throw IoError("cannot read " + path.toStdString() + ": " +
+                      file.errorString().toStdString());
     const std::string name = path.toStdString();
     const Value root = Value::parseJson(file.readAll().toStdString(), name);
     Project p;
@@ -286,7 +306,8 @@ Project importReferenceScene(const QString& path) {
         ProjectSpecies s;
         s.file = plant.string("file", "");
         if (s.file.empty()) throw InvalidInput(name + ": each plant needs a \"file\"");
-        s.name = plant.string("name", QFileInfo(QString::fromStdString(s.file)).completeBaseName().toStdString());
+        s.name = plant.string(
+            "name", QFileInfo(QString::fromStdString(s.file)).completeBaseName().toStdString());
         if (!p.findSpecies(s.name)) p.species.push_back(s);
         domain.counts[s.name] += static_cast<int>(plant.integer("quantity", 1));
     }

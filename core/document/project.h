@@ -24,15 +24,17 @@ struct ProjectSpecies {
     std::string name;
     std::string file;                  ///< relative to the project file; empty when inline
     std::optional<graph::Value> graph; ///< inline {"nodes": [...], "output": ...}
+    bool operator==(const ProjectSpecies&) const = default;
 };
 
 /// Where trees are scattered and how many of each species.
 struct PlacementDomain {
-    std::string shape = "rectangle";       ///< "rectangle" | "polygon" | "terrain"
-    glm::vec2 min{-50.0f}, max{50.0f};     ///< x and z on the ground (rectangle), metres
-    std::vector<glm::vec2> polygon;        ///< x,z corners (polygon)
-    std::string terrain;                   ///< mesh file (terrain), relative to the project
-    std::map<std::string, int> counts;     ///< species name → number of trees
+    std::string shape = "rectangle";   ///< "rectangle" | "polygon" | "terrain"
+    glm::vec2 min{-50.0f}, max{50.0f}; ///< x and z on the ground (rectangle), metres
+    std::vector<glm::vec2> polygon;    ///< x,z corners (polygon)
+    std::string terrain;               ///< mesh file (terrain), relative to the project
+    std::map<std::string, int> counts; ///< species name → number of trees
+    bool operator==(const PlacementDomain&) const = default;
 };
 
 /// A tree placed by hand.
@@ -42,13 +44,15 @@ struct ProjectInstance {
     double rotation = 0.0; ///< degrees about +Y
     double scale = 1.0;
     std::uint64_t seed = 0;
-    double growth = 1.0;   ///< growth stage 0..1
+    double growth = 1.0; ///< growth stage 0..1
+    bool operator==(const ProjectInstance&) const = default;
 };
 
 /// An obstacle mesh with its transform (rotate in degrees about x, y, z, applied in that order).
 struct ProjectObstacle {
     std::string file; ///< relative to the project file
     glm::vec3 translate{0.0f}, rotate{0.0f}, scale{1.0f};
+    bool operator==(const ProjectObstacle&) const = default;
 };
 
 /// The document behind a `.sylva` file. Paths are kept as written (relative to the project) and

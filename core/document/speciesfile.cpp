@@ -25,7 +25,8 @@ graph::SpeciesGraph wrapGrammar(const QString& path) {
     g.name = info.completeBaseName().toStdString();
     g.baseDir = info.absolutePath().toStdString();
     g.sourceFile = path.toStdString();
-    graph::NodeDesc grow{"grow", "lsystem", Value::Object{{"grammar_file", info.fileName().toStdString()}}, {}};
+    graph::NodeDesc grow{
+        "grow", "lsystem", Value::Object{{"grammar_file", info.fileName().toStdString()}}, {}};
     graph::NodeDesc mesh{"mesh", "tube_mesh", Value::Object{}, {"grow"}};
     g.nodes = {grow, mesh};
     g.output = "mesh";
@@ -49,7 +50,8 @@ graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName
     g.name = root.string("name", QFileInfo(fileName).completeBaseName().toStdString());
     const Value* graphValue = root.find("graph");
     if (!graphValue || !graphValue->isObject())
-        throw InvalidInput(where + "\"graph\" (an object with \"nodes\" and \"output\") is missing");
+        throw InvalidInput(where +
+                           "\"graph\" (an object with \"nodes\" and \"output\") is missing");
     const Value* nodes = graphValue->find("nodes");
     if (!nodes || !nodes->isArray() || nodes->toArray().empty())
         throw InvalidInput(where + "\"graph.nodes\" must be a non-empty array");
@@ -72,13 +74,27 @@ graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName
         g.nodes.push_back(std::move(node));
     }
     g.output = graphValue->string("output", g.nodes.back().id);
+    if (const Value* traits = root.find("traits")) {
+        if (!traits->isObject()) throw InvalidInput(where + "\"traits\" must be an object");
+        try {
+            g.traits.woodDensity = traits->number("wood_density", g.traits.woodDensity);
+            g.traits.carbonFraction = traits->number("carbon_fraction", g.traits.carbonFraction);
+            g.traits.crownRadius = traits->number("crown_radius", g.traits.crownRadius);
+            requireRange("traits.wood_density (kg/m3)", g.traits.woodDensity, 1, 2000);
+            requireRange("traits.carbon_fraction", g.traits.carbonFraction, 0.01, 1);
+            requireRange("traits.crown_radius (m)", g.traits.crownRadius, 0, 500);
+        } catch (const InvalidInput& e) {
+            throw InvalidInput(where + e.what());
+        }
+    }
     return g;
 }
 
 graph::SpeciesGraph loadSpecies(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
-        throw IoError("cannot read " + path.toStdString() + ": " + file.errorString().toStdString());
+        throw IoError("cannot read " + path.toStdString() + ": " +
+                      file.errorString().toStdString());
     const QByteArray bytes = file.readAll();
     const QFileInfo info(path);
     const QString suffix = info.suffix().toLower();
@@ -93,15 +109,20 @@ QByteArray serializeSpecies(const graph::SpeciesGraph& g) {
         Value::Object o{{"id", n.id}, {"type", n.type}, {"params", n.params}};
         if (!n.inputs.empty()) {
             Value::Array inputs;
-            for (const std::string& in : n.inputs) inputs.emplace_back(in);
+            for (const std::string& in : n.inputs)
+                inputs.emplace_back(in);
             o["inputs"] = Value(std::move(inputs));
         }
         nodes.emplace_back(std::move(o));
     }
-    Value root(Value::Object{{"format", "sylva-species"},
-                             {"format_version", kSpeciesFormatVersion},
-                             {"name", g.name},
-                             {"graph", Value::Object{{"nodes", std::move(nodes)}, {"output", g.output}}}});
+    Value root(
+        Value::Object{{"format", "sylva-species"},
+                      {"format_version", kSpeciesFormatVersion},
+                      {"name", g.name},
+                      {"graph", Value::Object{{"nodes", std::move(nodes)}, {"output", g.output}}},
+                      {"traits", Value::Object{{"wood_density", g.traits.woodDensity},
+                                               {"carbon_fraction", g.traits.carbonFraction},
+                                               {"crown_radius", g.traits.crownRadius}}}});
     return QByteArray::fromStdString(root.toJson() + "\n");
 }
 

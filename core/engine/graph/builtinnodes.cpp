@@ -13,6 +13,9 @@
 #include <sstream>
 
 // --- node registrations of other modules (one include and one call each) ---
+#include "engine/environment/adaptnode.h"
+#include "engine/growth/selforganizingnode.h"
+#include "engine/growth/spacecolonizationnode.h"
 #include "engine/mesh/meshnodes.h"
 // --- end of node registrations' includes ---
 
@@ -106,11 +109,17 @@ void registerBuiltinNodeTypes() {
     static std::once_flag once;
     std::call_once(once, [] {
         NodeRegistry& registry = NodeRegistry::instance();
-        registry.add(NodeType{"lsystem", 0, 0, evaluateLsystem,
+        registry.add(NodeType{"lsystem",
+                              0,
+                              0,
+                              evaluateLsystem,
                               {"grammar", "grammar_file", "generations", "seed", "symbol_limit",
                                "angle", "step", "width", "width_factor", "leaf_size"}});
         // --- node registrations of other modules (one call each) ---
         mesh::registerMeshNodes(registry);
+        env::registerAdaptNode(registry);
+        growth::registerSelfOrganizingNode(registry);
+        growth::registerSpaceColonizationNode(registry);
         // --- end of node registrations ---
     });
 }

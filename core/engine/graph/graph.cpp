@@ -48,7 +48,8 @@ const NodeType* NodeRegistry::find(const std::string& name) const {
 
 std::vector<std::string> NodeRegistry::names() const {
     std::vector<std::string> out;
-    for (const auto& [name, type] : mTypes) out.push_back(name);
+    for (const auto& [name, type] : mTypes)
+        out.push_back(name);
     return out;
 }
 
@@ -63,11 +64,13 @@ void Evaluator::validate() const {
     const NodeRegistry& registry = NodeRegistry::instance();
     for (const NodeDesc& n : mGraph.nodes) {
         if (n.id.empty()) throw InvalidInput(where + "a node has no id");
-        if (!ids.insert(n.id).second) throw InvalidInput(where + "duplicate node id '" + n.id + "'");
+        if (!ids.insert(n.id).second)
+            throw InvalidInput(where + "duplicate node id '" + n.id + "'");
         const NodeType* type = registry.find(n.type);
         if (!type) {
             std::string known;
-            for (const std::string& name : registry.names()) known += (known.empty() ? "" : ", ") + name;
+            for (const std::string& name : registry.names())
+                known += (known.empty() ? "" : ", ") + name;
             throw InvalidInput(where + "node '" + n.id + "' has unknown type '" + n.type +
                                "' (known: " + known + ")");
         }
@@ -77,14 +80,17 @@ void Evaluator::validate() const {
                                std::to_string(type->minInputs) + ".." +
                                std::to_string(type->maxInputs) + " inputs, got " +
                                std::to_string(inputs));
-        if (!n.params.isObject()) throw InvalidInput(where + "node '" + n.id + "': params must be an object");
+        if (!n.params.isObject())
+            throw InvalidInput(where + "node '" + n.id + "': params must be an object");
         if (!type->knownParams.empty()) {
             for (const auto& [key, value] : n.params.toObject()) {
                 bool known = false;
-                for (const std::string& k : type->knownParams) known = known || k == key;
+                for (const std::string& k : type->knownParams)
+                    known = known || k == key;
                 if (!known) {
                     std::string list;
-                    for (const std::string& k : type->knownParams) list += (list.empty() ? "" : ", ") + k;
+                    for (const std::string& k : type->knownParams)
+                        list += (list.empty() ? "" : ", ") + k;
                     throw InvalidInput(where + "node '" + n.id + "' (" + n.type +
                                        ") has no parameter '" + key + "' (known: " + list + ")");
                 }
@@ -94,7 +100,8 @@ void Evaluator::validate() const {
     for (const NodeDesc& n : mGraph.nodes)
         for (const std::string& in : n.inputs)
             if (!ids.count(in))
-                throw InvalidInput(where + "node '" + n.id + "' takes input from unknown node '" + in + "'");
+                throw InvalidInput(where + "node '" + n.id + "' takes input from unknown node '" +
+                                   in + "'");
     if (!ids.count(mGraph.output))
         throw InvalidInput(where + "output node '" + mGraph.output + "' does not exist");
 
@@ -105,18 +112,22 @@ void Evaluator::validate() const {
         if (c == 2) return;
         if (c == 1) throw InvalidInput(where + "the graph has a cycle through node '" + id + "'");
         c = 1;
-        for (const std::string& in : mGraph.findNode(id)->inputs) visit(in);
+        for (const std::string& in : mGraph.findNode(id)->inputs)
+            visit(in);
         colour[id] = 2;
     };
-    for (const NodeDesc& n : mGraph.nodes) visit(n.id);
+    for (const NodeDesc& n : mGraph.nodes)
+        visit(n.id);
 }
 
 void Evaluator::setParam(const std::string& nodeId, const std::string& key, Value value) {
     NodeDesc* node = mGraph.findNode(nodeId);
     if (!node) {
         std::string list;
-        for (const NodeDesc& n : mGraph.nodes) list += (list.empty() ? "" : ", ") + n.id;
-        throw InvalidInput("no node '" + nodeId + "' in species '" + mGraph.name + "' (nodes: " + list + ")");
+        for (const NodeDesc& n : mGraph.nodes)
+            list += (list.empty() ? "" : ", ") + n.id;
+        throw InvalidInput("no node '" + nodeId + "' in species '" + mGraph.name +
+                           "' (nodes: " + list + ")");
     }
     SpeciesGraph copy = mGraph;
     copy.findNode(nodeId)->params.objectRef()[key] = std::move(value);
@@ -143,11 +154,15 @@ std::uint64_t Evaluator::nodeKey(const NodeDesc& node, std::uint64_t seed, bool 
             h *= 1099511628211ull;
         }
     };
-    for (unsigned char c : node.type) mix(c);
+    for (unsigned char c : node.type)
+        mix(c);
     mix(node.params.hash());
     mix(seedOverridden ? seed : 0xFFFFFFFFFFFFFFFFull);
-    for (unsigned char c : mGraph.baseDir.string()) mix(c);
-    for (std::uint64_t k : inputKeys) mix(k);
+    for (unsigned char c : mGraph.baseDir.string())
+        mix(c);
+    for (std::uint64_t k : inputKeys)
+        mix(k);
+    mix(mTree ? mTree->key : 0);
     return h;
 }
 
@@ -159,30 +174,45 @@ const NodeOutput& Evaluator::evaluate(std::uint64_t seed, Progress& progress) {
     return evaluateNode(mGraph.output, true, seed, progress);
 }
 
+const NodeOutput& Evaluator::evaluateTree(std::uint64_t seed, const TreeContext& tree,
+                                          Progress& progress) {
+    struct Reset {
+        const TreeContext*& ref;
+        ~Reset() { ref = nullptr; }
+    } reset{mTree};
+    mTree = &tree;
+    return evaluateNode(mGraph.output, true, seed, progress);
+}
+
 const NodeOutput& Evaluator::evaluateNode(const std::string& nodeId, bool seedOverridden,
                                           std::uint64_t seed, Progress& progress) {
     // Post-order evaluation; the cache key chains through the inputs, so an edit upstream
     // invalidates exactly the nodes downstream of it.
     std::map<std::string, std::uint64_t> keys;
-    std::function<std::uint64_t(const std::string&)> run = [&](const std::string& id) -> std::uint64_t {
+    std::function<std::uint64_t(const std::string&)> run =
+        [&](const std::string& id) -> std::uint64_t {
         if (auto it = keys.find(id); it != keys.end()) return it->second;
         const NodeDesc& node = *mGraph.findNode(id);
         std::vector<std::uint64_t> inputKeys;
-        for (const std::string& in : node.inputs) inputKeys.push_back(run(in));
+        for (const std::string& in : node.inputs)
+            inputKeys.push_back(run(in));
         const std::uint64_t key = nodeKey(node, seed, seedOverridden, inputKeys);
         CacheEntry& entry = mCache[id];
         if (!entry.output || entry.key != key) {
             progress.checkCancelled();
-            NodeContext ctx{node, node.params, {}, seed, seedOverridden, mGraph.baseDir,
-                            mGraph.sourceFile, progress};
-            for (const std::string& in : node.inputs) ctx.inputs.push_back(mCache[in].output.get());
+            NodeContext ctx{node,           node.params,       {},       seed, seedOverridden,
+                            mGraph.baseDir, mGraph.sourceFile, progress, mTree};
+            for (const std::string& in : node.inputs)
+                ctx.inputs.push_back(mCache[in].output.get());
             const NodeType* type = NodeRegistry::instance().find(node.type);
             auto output = std::make_shared<NodeOutput>(type->evaluate(ctx));
             // Accumulate the inputs' stats and timings that the node did not set itself, so the
             // output node reports the whole pipeline.
             for (const NodeOutput* in : ctx.inputs) {
-                for (const auto& [k, v] : in->stats) output->stats.try_emplace(k, v);
-                for (const auto& [k, v] : in->timingsMs) output->timingsMs.try_emplace(k, v);
+                for (const auto& [k, v] : in->stats)
+                    output->stats.try_emplace(k, v);
+                for (const auto& [k, v] : in->timingsMs)
+                    output->timingsMs.try_emplace(k, v);
             }
             entry.key = key;
             entry.output = std::move(output);

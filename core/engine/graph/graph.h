@@ -8,12 +8,38 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "engine/graph/value.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
 
+namespace sylva::env {
+class ObstacleScene;
+struct CrownVolume;
+} // namespace sylva::env
+
 namespace sylva::graph {
+
+/// Where one tree of a scene stands, for the nodes that react to it (adapt, LOD meshing).
+/// Absent (nullptr) when a species is evaluated on its own.
+struct TreeContext {
+    glm::mat4 transform{1.0f};                     ///< tree local frame → world
+    const env::ObstacleScene* obstacles = nullptr; ///< the scene's obstacles, or none
+    const env::CrownVolume* neighbours = nullptr;  ///< neighbouring crowns (world space)
+    std::size_t neighbourCount = 0;
+    glm::vec3 lightDirection{0.0f, -1.0f, 0.0f}; ///< direction the light travels
+    double cameraDistance = -1.0;                ///< metres from the camera; < 0: no camera
+    std::uint64_t key = 0; ///< identifies this context in the evaluator's cache (instance id+1)
+};
+
+/// Whole-tree traits of a species used by forests and metrics (species file "traits").
+struct SpeciesTraits {
+    double woodDensity = 550.0;   ///< oven-dry wood density, kg/m³, (0, 2000]
+    double carbonFraction = 0.47; ///< carbon per dry mass, (0, 1]
+    double crownRadius = 0.0;     ///< metres; 0: measured from a generated tree
+};
 
 /// One node of a species graph as written in a species file.
 struct NodeDesc {
@@ -32,6 +58,7 @@ struct SpeciesGraph {
     std::filesystem::path baseDir;
     /// The file this graph came from, for diagnostics ("" when built in code).
     std::string sourceFile;
+    SpeciesTraits traits;
 
     const NodeDesc* findNode(const std::string& id) const;
     NodeDesc* findNode(const std::string& id);
@@ -50,13 +77,14 @@ struct NodeOutput {
 /// Everything a node's evaluate function may look at. It must be a pure function of these.
 struct NodeContext {
     const NodeDesc& node;
-    const Value& params;                      ///< node.params, with overrides applied
-    std::vector<const NodeOutput*> inputs;    ///< in the order of node.inputs
-    std::uint64_t seed = 0;                   ///< evaluation seed (instance seed)
-    bool seedOverridden = false;              ///< true when the caller set the seed explicitly
+    const Value& params;                   ///< node.params, with overrides applied
+    std::vector<const NodeOutput*> inputs; ///< in the order of node.inputs
+    std::uint64_t seed = 0;                ///< evaluation seed (instance seed)
+    bool seedOverridden = false;           ///< true when the caller set the seed explicitly
     const std::filesystem::path& baseDir;
     const std::string& sourceFile;
     Progress& progress;
+    const TreeContext* tree = nullptr; ///< set when the species grows as part of a scene
 
     /// Resolves a path parameter against baseDir.
     std::filesystem::path resolve(const std::string& relative) const;
@@ -113,6 +141,10 @@ public:
     const NodeOutput& evaluate(std::uint64_t seed, Progress& progress = noProgress());
     const NodeOutput& evaluateNode(const std::string& nodeId, bool seedOverridden,
                                    std::uint64_t seed, Progress& progress = noProgress());
+    /// Evaluates the output node for one tree of a scene: nodes that react to the scene
+    /// (adapt, LOD meshing) read \p tree; the cache key includes tree.key.
+    const NodeOutput& evaluateTree(std::uint64_t seed, const TreeContext& tree,
+                                   Progress& progress = noProgress());
 
     /// How many node evaluations ran (cache misses) since construction; for tests.
     std::size_t evaluations() const { return mEvaluations; }
@@ -124,6 +156,7 @@ private:
     };
     std::uint64_t nodeKey(const NodeDesc& node, std::uint64_t seed, bool seedOverridden,
                           const std::vector<std::uint64_t>& inputKeys) const;
+    const TreeContext* mTree = nullptr; ///< during evaluateTree() only
 
     SpeciesGraph mGraph;
     std::map<std::string, CacheEntry> mCache;

@@ -16,7 +16,7 @@ public:
     using Array = std::vector<Value>;
     using Object = std::map<std::string, Value>;
 
-    Value() = default;                       // null
+    Value() = default; // null
     Value(std::nullptr_t) {}
     Value(bool b) : mData(b) {}
     Value(double d) : mData(d) {}

@@ -10,7 +10,7 @@ namespace sylva::mesh {
 
 /// A contiguous run of triangles that share one material.
 struct Submesh {
-    std::string material;        ///< "bark", "leaf", ...
+    std::string material;         ///< "bark", "leaf", ...
     std::uint32_t firstIndex = 0; ///< into Mesh::indices
     std::uint32_t indexCount = 0;
 };
@@ -23,6 +23,11 @@ struct Mesh {
     std::vector<glm::vec2> uvs;
     std::vector<std::uint32_t> indices; ///< three per triangle
     std::vector<Submesh> submeshes;     ///< cover indices in order; empty means one "bark" run
+    /// Optional per-vertex attributes for game-engine wind shaders (empty or of positions' size):
+    /// the branch order of the vertex's branch, and a 0 (rigid trunk) .. 1 (thinnest twig,
+    /// leaves) flexibility weight.
+    std::vector<std::uint16_t> branchOrder;
+    std::vector<float> flexibility;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }

@@ -40,7 +40,8 @@ std::int32_t Skeleton::addNode(const glm::vec3& pos, std::int32_t parentIndex, f
 
 std::size_t Skeleton::segmentCount() const {
     std::size_t n = 0;
-    for (std::int32_t p : parent) n += p >= 0 ? 1 : 0;
+    for (std::int32_t p : parent)
+        n += p >= 0 ? 1 : 0;
     return n;
 }
 

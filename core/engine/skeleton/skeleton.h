@@ -18,9 +18,15 @@ enum NodeFlag : std::uint8_t {
 /// The turtle frame convention, used everywhere a rest orientation is stored: the quaternion
 /// maps the local axes to world space with heading = q·(0,1,0), left = q·(-1,0,0) and
 /// up = q·(0,0,1). The identity is a turtle at the origin heading +Y (up), left -X, up +Z.
-inline glm::vec3 headingOf(const glm::quat& q) { return q * glm::vec3(0, 1, 0); }
-inline glm::vec3 leftOf(const glm::quat& q) { return q * glm::vec3(-1, 0, 0); }
-inline glm::vec3 upOf(const glm::quat& q) { return q * glm::vec3(0, 0, 1); }
+inline glm::vec3 headingOf(const glm::quat& q) {
+    return q * glm::vec3(0, 1, 0);
+}
+inline glm::vec3 leftOf(const glm::quat& q) {
+    return q * glm::vec3(-1, 0, 0);
+}
+inline glm::vec3 upOf(const glm::quat& q) {
+    return q * glm::vec3(0, 0, 1);
+}
 
 /// A leaf (from the grammar's J or a later leaves node): a card anchored at position.
 struct Leaf {
@@ -36,10 +42,10 @@ struct Leaf {
 struct Skeleton {
     std::vector<glm::vec3> position;
     std::vector<std::int32_t> parent;
-    std::vector<float> radius;              ///< metres, at the node
-    std::vector<std::uint16_t> order;       ///< branch order, 0 for the trunk
-    std::vector<std::uint8_t> flags;        ///< NodeFlag bits
-    std::vector<glm::quat> orientation;     ///< rest orientation (turtle frame) at the node
+    std::vector<float> radius;          ///< metres, at the node
+    std::vector<std::uint16_t> order;   ///< branch order, 0 for the trunk
+    std::vector<std::uint8_t> flags;    ///< NodeFlag bits
+    std::vector<glm::quat> orientation; ///< rest orientation (turtle frame) at the node
     std::vector<Leaf> leaves;
 
     std::size_t size() const { return position.size(); }

@@ -27,8 +27,7 @@ std::filesystem::path temporaryBeside(const std::filesystem::path& path) {
 AtomicFile::AtomicFile(std::filesystem::path path) : mPath(std::move(path)) {
     mTemp = temporaryBeside(mPath);
     mFile = std::fopen(mTemp.c_str(), "wb");
-    if (!mFile)
-        throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
+    if (!mFile) throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
 }
 
 AtomicFile::~AtomicFile() {

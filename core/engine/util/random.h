@@ -22,7 +22,8 @@ public:
     explicit Rng(std::uint64_t seed = 0) { reseed(seed); }
 
     void reseed(std::uint64_t seed) {
-        for (int i = 0; i < 4; ++i) mState[i] = mixSeed(seed, static_cast<std::uint64_t>(i));
+        for (int i = 0; i < 4; ++i)
+            mState[i] = mixSeed(seed, static_cast<std::uint64_t>(i));
     }
 
     std::uint64_t next() {
@@ -46,7 +47,9 @@ public:
     std::uint64_t below(std::uint64_t n) { return static_cast<std::uint64_t>(uniform() * n); }
 
 private:
-    static constexpr std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+    static constexpr std::uint64_t rotl(std::uint64_t x, int k) {
+        return (x << k) | (x >> (64 - k));
+    }
     std::uint64_t mState[4];
 };
 

@@ -48,9 +48,9 @@ TEST(SpeciesFile, RefusesWrongOrNewerFormats) {
     EXPECT_NE(errorOf(R"({"format":"other","format_version":1})").find("not a sylva-species file"),
               std::string::npos);
     EXPECT_NE(errorOf(R"({"format":"sylva-species"})").find("format_version"), std::string::npos);
-    EXPECT_NE(errorOf(R"({"format":"sylva-species","format_version":99,"graph":{}})")
-                  .find("newer Sylva"),
-              std::string::npos);
+    EXPECT_NE(
+        errorOf(R"({"format":"sylva-species","format_version":99,"graph":{}})").find("newer Sylva"),
+        std::string::npos);
     EXPECT_NE(errorOf(R"({"format":"sylva-species","format_version":1})").find("\"graph\""),
               std::string::npos);
     EXPECT_NE(errorOf(R"({"format":"sylva-species","format_version":1,"graph":{"nodes":[]}})")

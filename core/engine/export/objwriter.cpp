@@ -1,0 +1,378 @@
+#include "engine/export/objwriter.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+#include "engine/util/atomicfile.h"
+#include "engine/util/error.h"
+
+namespace sylva::exporter {
+
+namespace {
+
+constexpr std::uint64_t kPow10[] = {1ull,         10ull,         100ull,        1000ull,
+                                    10000ull,     100000ull,     1000000ull,    10000000ull,
+                                    100000000ull, 1000000000ull, 10000000000ull};
+
+constexpr char kDigitPairs[201] = "00010203040506070809101112131415161718192021222324"
+                                  "25262728293031323334353637383940414243444546474849"
+                                  "50515253545556575859606162636465666768697071727374"
+                                  "75767778798081828384858687888990919293949596979899";
+
+inline char* writeUint(char* p, std::uint64_t v) {
+    char tmp[24];
+    char* e = tmp + sizeof(tmp);
+    char* s = e;
+    while (v >= 100) {
+        const auto r = static_cast<std::size_t>(v % 100) * 2;
+        v /= 100;
+        *--s = kDigitPairs[r + 1];
+        *--s = kDigitPairs[r];
+    }
+    if (v >= 10) {
+        const auto r = static_cast<std::size_t>(v) * 2;
+        *--s = kDigitPairs[r + 1];
+        *--s = kDigitPairs[r];
+    } else {
+        *--s = static_cast<char>('0' + v);
+    }
+    const auto n = static_cast<std::size_t>(e - s);
+    std::memcpy(p, s, n);
+    return p + n;
+}
+
+// Appends into a std::string through a stack block, so the hot loops write to plain memory.
+class BlockWriter {
+public:
+    explicit BlockWriter(std::string& out) : mOut(out) {}
+    ~BlockWriter() { flush(); }
+    BlockWriter(const BlockWriter&) = delete;
+    BlockWriter& operator=(const BlockWriter&) = delete;
+    // Returns a pointer with at least 512 bytes of room; commit the end with done().
+    char* room() {
+        if (mPos + 512 > kSize) flush();
+        return mBlock + mPos;
+    }
+    void done(char* end) { mPos = static_cast<std::size_t>(end - mBlock); }
+    void text(std::string_view s) {
+        flush();
+        mOut.append(s);
+    }
+    void flush() {
+        mOut.append(mBlock, mPos);
+        mPos = 0;
+    }
+
+private:
+    static constexpr std::size_t kSize = 1 << 15;
+    std::string& mOut;
+    char mBlock[kSize];
+    std::size_t mPos = 0;
+};
+
+enum class Section { Header, V, VT, VN, F };
+
+struct Task {
+    const ObjObject* object = nullptr;
+    Section section = Section::Header;
+    std::size_t begin = 0, end = 0; // vertices, or triangles for F
+    ObjOffsets base;                // offsets of this object's first v/vt/vn
+    bool hasUv = false, hasNormal = false;
+    bool identity = true;
+    glm::mat3 normalMatrix{1.0f};
+};
+
+std::string objectName(const std::string& name) {
+    std::string s = name.empty() ? std::string("tree") : name;
+    for (char& c : s)
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') c = '_';
+    return s;
+}
+
+void formatTask(std::string& out, const Task& t, const ObjOptions& o) {
+    const mesh::Mesh& m = *t.object->mesh;
+    BlockWriter w(out);
+    switch (t.section) {
+    case Section::Header:
+        w.text("o " + objectName(t.object->name) + "\n");
+        break;
+    case Section::V:
+        for (std::size_t i = t.begin; i < t.end; ++i) {
+            glm::vec3 p = m.positions[i];
+            if (!t.identity) p = glm::vec3(t.object->transform * glm::vec4(p, 1.0f));
+            char* c = w.room();
+            *c++ = 'v';
+            *c++ = ' ';
+            c = formatFixed(c, p.x, o.positionDecimals);
+            *c++ = ' ';
+            c = formatFixed(c, p.y, o.positionDecimals);
+            *c++ = ' ';
+            c = formatFixed(c, p.z, o.positionDecimals);
+            *c++ = '\n';
+            w.done(c);
+        }
+        break;
+    case Section::VT:
+        for (std::size_t i = t.begin; i < t.end; ++i) {
+            const glm::vec2 uv = m.uvs[i];
+            char* c = w.room();
+            *c++ = 'v';
+            *c++ = 't';
+            *c++ = ' ';
+            c = formatFixed(c, uv.x, o.uvDecimals);
+            *c++ = ' ';
+            c = formatFixed(c, uv.y, o.uvDecimals);
+            *c++ = '\n';
+            w.done(c);
+        }
+        break;
+    case Section::VN:
+        for (std::size_t i = t.begin; i < t.end; ++i) {
+            glm::vec3 n = m.normals[i];
+            if (!t.identity) n = glm::normalize(t.normalMatrix * n);
+            char* c = w.room();
+            *c++ = 'v';
+            *c++ = 'n';
+            *c++ = ' ';
+            c = formatFixed(c, n.x, o.normalDecimals);
+            *c++ = ' ';
+            c = formatFixed(c, n.y, o.normalDecimals);
+            *c++ = ' ';
+            c = formatFixed(c, n.z, o.normalDecimals);
+            *c++ = '\n';
+            w.done(c);
+        }
+        break;
+    case Section::F: {
+        // usemtl lines go before the first triangle of each submesh run.
+        std::vector<std::pair<std::size_t, std::string>> switches;
+        if (o.materials) {
+            if (m.submeshes.empty())
+                switches.emplace_back(0, "bark");
+            else
+                for (const mesh::Submesh& s : m.submeshes)
+                    switches.emplace_back(s.firstIndex / 3, s.material);
+        }
+        std::size_t next = 0;
+        while (next < switches.size() && switches[next].first < t.begin)
+            ++next;
+        for (std::size_t tri = t.begin; tri < t.end; ++tri) {
+            while (next < switches.size() && switches[next].first == tri) {
+                w.text("usemtl " + switches[next].second + "\n");
+                ++next;
+            }
+            char* c = w.room();
+            *c++ = 'f';
+            for (int k = 0; k < 3; ++k) {
+                const std::uint64_t idx = m.indices[tri * 3 + static_cast<std::size_t>(k)];
+                *c++ = ' ';
+                c = writeUint(c, t.base.v + idx);
+                if (t.hasUv || t.hasNormal) {
+                    *c++ = '/';
+                    if (t.hasUv) c = writeUint(c, t.base.vt + idx);
+                    if (t.hasNormal) {
+                        *c++ = '/';
+                        c = writeUint(c, t.base.vn + idx);
+                    }
+                }
+            }
+            *c++ = '\n';
+            w.done(c);
+        }
+        break;
+    }
+    }
+}
+
+void checkOptions(const ObjOptions& o) {
+    requireRange("position decimals", o.positionDecimals, 1, 9);
+    requireRange("normal decimals", o.normalDecimals, 1, 9);
+    requireRange("uv decimals", o.uvDecimals, 1, 9);
+}
+
+// Splits objects into ordered tasks; \p chunk bounds the vertices/triangles per task.
+std::vector<Task> makeTasks(const std::vector<ObjObject>& objects, ObjOffsets& offsets,
+                            const ObjOptions& o, std::size_t chunk) {
+    std::vector<Task> tasks;
+    for (const ObjObject& object : objects) {
+        if (!object.mesh) throw InvalidInput("OBJ object '" + object.name + "' has no mesh");
+        const mesh::Mesh& m = *object.mesh;
+        const std::size_t nv = m.positions.size();
+        Task t;
+        t.object = &object;
+        t.base = offsets;
+        t.hasUv = o.uvs && m.uvs.size() == nv && nv > 0;
+        t.hasNormal = o.normals && m.normals.size() == nv && nv > 0;
+        t.identity = object.transform == glm::mat4(1.0f);
+        if (!t.identity) t.normalMatrix = glm::transpose(glm::inverse(glm::mat3(object.transform)));
+        tasks.push_back(t);
+        auto split = [&](Section s, std::size_t n) {
+            for (std::size_t b = 0; b < n; b += chunk) {
+                Task c = t;
+                c.section = s;
+                c.begin = b;
+                c.end = std::min(n, b + chunk);
+                tasks.push_back(c);
+            }
+        };
+        split(Section::V, nv);
+        if (t.hasUv) split(Section::VT, nv);
+        if (t.hasNormal) split(Section::VN, nv);
+        split(Section::F, m.indices.size() / 3);
+        offsets.v += nv;
+        if (t.hasUv) offsets.vt += nv;
+        if (t.hasNormal) offsets.vn += nv;
+    }
+    return tasks;
+}
+
+std::string formatTasks(const std::vector<Task>& tasks, const ObjOptions& o) {
+    std::vector<std::string> parts(tasks.size());
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(tasks.size()); ++i)
+        formatTask(parts[static_cast<std::size_t>(i)], tasks[static_cast<std::size_t>(i)], o);
+    std::size_t total = 0;
+    for (const std::string& s : parts)
+        total += s.size();
+    std::string out;
+    out.reserve(total);
+    for (const std::string& s : parts)
+        out += s;
+    return out;
+}
+
+constexpr std::size_t kChunk = 32768;
+
+} // namespace
+
+namespace {
+
+// Compile-time decimals turn the divisions by 10^D into multiplications.
+template <int D> char* formatFixedT(char* p, double value) {
+    constexpr std::uint64_t scale = kPow10[D];
+    const double scaled = value * static_cast<double>(scale);
+    if (!(std::abs(scaled) < 9.0e18)) return std::to_chars(p, p + 40, value).ptr;
+    const double r = std::nearbyint(scaled);
+    if (r == 0.0) {
+        *p++ = '0';
+        return p;
+    }
+    std::uint64_t q;
+    if (r < 0.0) {
+        *p++ = '-';
+        q = static_cast<std::uint64_t>(-r);
+    } else {
+        q = static_cast<std::uint64_t>(r);
+    }
+    p = writeUint(p, q / scale);
+    std::uint64_t fp = q % scale;
+    if (fp != 0) {
+        int d = D;
+        while (fp % 10 == 0) {
+            fp /= 10;
+            --d;
+        }
+        *p++ = '.';
+        char* end = p + d;
+        char* c = end;
+        while (c > p) {
+            *--c = static_cast<char>('0' + fp % 10);
+            fp /= 10;
+        }
+        p = end;
+    }
+    return p;
+}
+
+} // namespace
+
+char* formatFixed(char* p, double value, int decimals) {
+    switch (decimals) {
+    case 1:
+        return formatFixedT<1>(p, value);
+    case 2:
+        return formatFixedT<2>(p, value);
+    case 3:
+        return formatFixedT<3>(p, value);
+    case 4:
+        return formatFixedT<4>(p, value);
+    case 5:
+        return formatFixedT<5>(p, value);
+    case 6:
+        return formatFixedT<6>(p, value);
+    case 7:
+        return formatFixedT<7>(p, value);
+    case 8:
+        return formatFixedT<8>(p, value);
+    default:
+        return formatFixedT<9>(p, value);
+    }
+}
+
+void appendObj(std::string& out, const ObjObject& object, ObjOffsets& offsets,
+               const ObjOptions& options) {
+    checkOptions(options);
+    const std::vector<ObjObject> one{object};
+    const std::vector<Task> tasks = makeTasks(one, offsets, options, static_cast<std::size_t>(-1));
+    for (Task t : tasks) {
+        t.object = &object;
+        formatTask(out, t, options);
+    }
+}
+
+std::string formatObj(const std::vector<ObjObject>& objects, const ObjOptions& options) {
+    checkOptions(options);
+    ObjOffsets offsets;
+    std::string head;
+    if (!options.mtllib.empty()) head = "mtllib " + options.mtllib + "\n";
+    const std::vector<Task> tasks = makeTasks(objects, offsets, options, kChunk);
+    return head + formatTasks(tasks, options);
+}
+
+ObjStreamWriter::ObjStreamWriter(const std::filesystem::path& path, ObjOptions options)
+    : mFile(std::make_unique<AtomicFile>(path)), mOptions(std::move(options)) {
+    checkOptions(mOptions);
+    if (!mOptions.mtllib.empty()) {
+        const std::string head = "mtllib " + mOptions.mtllib + "\n";
+        mFile->write(head);
+        mBytes += head.size();
+    }
+}
+
+ObjStreamWriter::~ObjStreamWriter() = default;
+
+void ObjStreamWriter::add(const std::vector<ObjObject>& objects) {
+    const std::vector<Task> tasks = makeTasks(objects, mOffsets, mOptions, kChunk);
+    const std::string text = formatTasks(tasks, mOptions);
+    mFile->write(text);
+    mBytes += text.size();
+}
+
+void ObjStreamWriter::commit() {
+    mFile->commit();
+}
+
+void writeObjFile(const std::filesystem::path& path, const std::vector<ObjObject>& objects,
+                  const ObjOptions& options, Progress& progress) {
+    ObjStreamWriter writer(path, options);
+    constexpr std::size_t kBatchVertices = 1 << 20;
+    std::vector<ObjObject> batch;
+    std::size_t batchVertices = 0;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        batch.push_back(objects[i]);
+        batchVertices += objects[i].mesh ? objects[i].mesh->positions.size() : 0;
+        if (batchVertices >= kBatchVertices || i + 1 == objects.size()) {
+            progress.checkCancelled();
+            writer.add(batch);
+            progress.report(static_cast<double>(i + 1) / static_cast<double>(objects.size()),
+                            "write");
+            batch.clear();
+            batchVertices = 0;
+        }
+    }
+    writer.commit();
+}
+
+} // namespace sylva::exporter

@@ -1,0 +1,88 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/mesh/mesh.h"
+#include "engine/util/progress.h"
+
+namespace sylva {
+class AtomicFile;
+}
+
+namespace sylva::exporter {
+
+/// One OBJ object (`o name`): a mesh placed by a transform (an instance of a tree).
+struct ObjObject {
+    std::string name; ///< written after `o`; spaces become '_'
+    const mesh::Mesh* mesh = nullptr;
+    glm::mat4 transform{1.0f}; ///< applied to positions; normals get its inverse transpose
+};
+
+/// What the writer emits and how precisely.
+struct ObjOptions {
+    bool normals = true;      ///< `vn` (when the mesh has them)
+    bool uvs = true;          ///< `vt` (when the mesh has them)
+    bool materials = true;    ///< `usemtl <submesh material>` before each run of faces
+    std::string mtllib;       ///< written as `mtllib <name>` at the top when not empty
+    int positionDecimals = 6; ///< fixed decimals of `v` (6 = micrometres), 1..9
+    int normalDecimals = 4;   ///< of `vn`, 1..9
+    int uvDecimals = 5;       ///< of `vt`, 1..9
+};
+
+/// Running 1-based indices of the next v / vt / vn, carried from object to object.
+struct ObjOffsets {
+    std::uint64_t v = 1;
+    std::uint64_t vt = 1;
+    std::uint64_t vn = 1;
+};
+
+/// Appends one object in OBJ text to \p out and advances \p offsets. Numbers are formatted
+/// without iostreams (fixed decimals, trailing zeros trimmed), faces as `f v/vt/vn`.
+void appendObj(std::string& out, const ObjObject& object, ObjOffsets& offsets,
+               const ObjOptions& options = {});
+
+/// Formats several objects: the text is cut into chunks (per object and per 32k vertices or
+/// faces) formatted in parallel with OpenMP and joined in order, so the bytes are the same on
+/// any thread count. Includes the `mtllib` line when options.mtllib is set.
+std::string formatObj(const std::vector<ObjObject>& objects, const ObjOptions& options = {});
+
+/// Streams objects into an OBJ file through AtomicFile: a forest larger than memory can be
+/// written batch by batch (each batch formatted in parallel). Nothing appears at the path
+/// unless commit() runs.
+class ObjStreamWriter {
+public:
+    ObjStreamWriter(const std::filesystem::path& path, ObjOptions options = {});
+    ~ObjStreamWriter();
+    ObjStreamWriter(const ObjStreamWriter&) = delete;
+    ObjStreamWriter& operator=(const ObjStreamWriter&) = delete;
+
+    /// Formats and writes a batch of objects (after all earlier batches).
+    void add(const std::vector<ObjObject>& objects);
+    /// Bytes written so far.
+    std::uint64_t bytesWritten() const { return mBytes; }
+    /// Flushes and renames the temporary into place.
+    void commit();
+
+private:
+    std::unique_ptr<AtomicFile> mFile;
+    ObjOptions mOptions;
+    ObjOffsets mOffsets;
+    std::uint64_t mBytes = 0;
+};
+
+/// Writes all objects to \p path atomically (batches of about a million vertices).
+/// \throw IoError when the file cannot be written; Cancelled through \p progress.
+void writeObjFile(const std::filesystem::path& path, const std::vector<ObjObject>& objects,
+                  const ObjOptions& options = {}, Progress& progress = noProgress());
+
+/// Writes \p value with \p decimals fixed decimals (trailing zeros trimmed) at \p p and returns
+/// the end; very large or non-finite values fall back to std::to_chars. Needs 40 bytes.
+char* formatFixed(char* p, double value, int decimals);
+
+} // namespace sylva::exporter

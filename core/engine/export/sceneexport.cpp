@@ -1,0 +1,268 @@
+#include "engine/export/sceneexport.h"
+
+#include <algorithm>
+#include <memory>
+#include <unordered_map>
+
+#include <assimp/Exporter.hpp>
+#include <assimp/GltfMaterial.h>
+#include <assimp/material.h>
+#include <assimp/scene.h>
+
+#include "engine/export/objwriter.h"
+#include "engine/util/atomicfile.h"
+#include "engine/util/error.h"
+
+namespace sylva::exporter {
+
+namespace {
+
+aiMaterial* makeMaterial(const Material& m) {
+    auto* mat = new aiMaterial();
+    const aiString name(m.name);
+    mat->AddProperty(&name, AI_MATKEY_NAME);
+    const aiColor3D diffuse(m.diffuse.x, m.diffuse.y, m.diffuse.z);
+    mat->AddProperty(&diffuse, 1, AI_MATKEY_COLOR_DIFFUSE);
+    const aiColor4D base(m.diffuse.x, m.diffuse.y, m.diffuse.z, 1.0f);
+    mat->AddProperty(&base, 1, AI_MATKEY_BASE_COLOR);
+    if (!m.diffuseTexture.empty()) {
+        const aiString tex(m.diffuseTexture);
+        mat->AddProperty(&tex, AI_MATKEY_TEXTURE_DIFFUSE(0));
+        mat->AddProperty(&tex, AI_MATKEY_TEXTURE(aiTextureType_BASE_COLOR, 0));
+    }
+    const int twoSided = m.twoSided ? 1 : 0;
+    mat->AddProperty(&twoSided, 1, AI_MATKEY_TWOSIDED);
+    if (m.alphaMask) {
+        const aiString mode("MASK");
+        mat->AddProperty(&mode, AI_MATKEY_GLTF_ALPHAMODE);
+    }
+    return mat;
+}
+
+// One Assimp mesh for the triangles [first, first+count) of \p m, with its vertices compacted.
+aiMesh* makeMesh(const mesh::Mesh& m, std::uint32_t first, std::uint32_t count,
+                 unsigned materialIndex, const std::string& name) {
+    auto* out = new aiMesh();
+    out->mName = aiString(name);
+    out->mMaterialIndex = materialIndex;
+    out->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+    std::vector<std::uint32_t> remap(m.positions.size(), UINT32_MAX);
+    std::vector<std::uint32_t> used;
+    for (std::uint32_t i = first; i < first + count; ++i) {
+        const std::uint32_t v = m.indices[i];
+        if (remap[v] == UINT32_MAX) {
+            remap[v] = static_cast<std::uint32_t>(used.size());
+            used.push_back(v);
+        }
+    }
+    const auto nv = static_cast<unsigned>(used.size());
+    out->mNumVertices = nv;
+    out->mVertices = new aiVector3D[nv];
+    const bool normals = m.normals.size() == m.positions.size();
+    const bool uvs = m.uvs.size() == m.positions.size();
+    if (normals) out->mNormals = new aiVector3D[nv];
+    if (uvs) {
+        out->mTextureCoords[0] = new aiVector3D[nv];
+        out->mNumUVComponents[0] = 2;
+    }
+    for (unsigned k = 0; k < nv; ++k) {
+        const std::uint32_t v = used[k];
+        out->mVertices[k] = aiVector3D(m.positions[v].x, m.positions[v].y, m.positions[v].z);
+        if (normals) out->mNormals[k] = aiVector3D(m.normals[v].x, m.normals[v].y, m.normals[v].z);
+        if (uvs) out->mTextureCoords[0][k] = aiVector3D(m.uvs[v].x, m.uvs[v].y, 0.0f);
+    }
+    out->mNumFaces = count / 3;
+    out->mFaces = new aiFace[out->mNumFaces];
+    for (unsigned f = 0; f < out->mNumFaces; ++f) {
+        aiFace& face = out->mFaces[f];
+        face.mNumIndices = 3;
+        face.mIndices = new unsigned[3];
+        for (unsigned c = 0; c < 3; ++c)
+            face.mIndices[c] = remap[m.indices[first + 3 * f + c]];
+    }
+    return out;
+}
+
+std::unique_ptr<aiScene> buildScene(const SceneDesc& desc) {
+    auto scene = std::make_unique<aiScene>();
+    std::vector<Material> materials = desc.materials;
+    std::unordered_map<std::string, unsigned> materialIndex;
+    for (unsigned i = 0; i < materials.size(); ++i)
+        materialIndex[materials[i].name] = i;
+
+    std::vector<aiMesh*> meshes;
+    std::vector<std::vector<unsigned>> meshParts(desc.meshes.size());
+    for (std::size_t mi = 0; mi < desc.meshes.size(); ++mi) {
+        const SceneMesh& sm = desc.meshes[mi];
+        if (!sm.mesh) throw InvalidInput("scene mesh '" + sm.name + "' has no mesh");
+        std::vector<mesh::Submesh> parts = sm.mesh->submeshes;
+        if (parts.empty())
+            parts.push_back({"bark", 0, static_cast<std::uint32_t>(sm.mesh->indices.size())});
+        for (const mesh::Submesh& part : parts) {
+            if (part.indexCount == 0) continue;
+            auto it = materialIndex.find(part.material);
+            if (it == materialIndex.end()) {
+                // A material nobody described still gets a plain entry so nothing is dropped.
+                materials.push_back({part.material, glm::vec3(0.8f), "", false, false});
+                it = materialIndex
+                         .emplace(part.material, static_cast<unsigned>(materials.size() - 1))
+                         .first;
+            }
+            meshParts[mi].push_back(static_cast<unsigned>(meshes.size()));
+            meshes.push_back(makeMesh(*sm.mesh, part.firstIndex, part.indexCount, it->second,
+                                      sm.name + "_" + part.material));
+        }
+    }
+    scene->mNumMeshes = static_cast<unsigned>(meshes.size());
+    scene->mMeshes = new aiMesh*[std::max<std::size_t>(meshes.size(), 1)];
+    std::copy(meshes.begin(), meshes.end(), scene->mMeshes);
+
+    scene->mNumMaterials = static_cast<unsigned>(materials.size());
+    scene->mMaterials = new aiMaterial*[std::max<std::size_t>(materials.size(), 1)];
+    for (unsigned i = 0; i < materials.size(); ++i)
+        scene->mMaterials[i] = makeMaterial(materials[i]);
+
+    scene->mRootNode = new aiNode("sylva");
+    aiNode* root = scene->mRootNode;
+    root->mNumChildren = static_cast<unsigned>(desc.instances.size());
+    root->mChildren = new aiNode*[std::max<std::size_t>(desc.instances.size(), 1)];
+    for (std::size_t i = 0; i < desc.instances.size(); ++i) {
+        const SceneInstance& inst = desc.instances[i];
+        if (inst.mesh >= desc.meshes.size())
+            throw InvalidInput("instance '" + inst.name + "' names mesh " +
+                               std::to_string(inst.mesh) + " of " +
+                               std::to_string(desc.meshes.size()));
+        auto* node = new aiNode(inst.name);
+        node->mParent = root;
+        const aiMatrix4x4 t(
+            aiVector3D(inst.scale.x, inst.scale.y, inst.scale.z),
+            aiQuaternion(inst.rotation.w, inst.rotation.x, inst.rotation.y, inst.rotation.z),
+            aiVector3D(inst.position.x, inst.position.y, inst.position.z));
+        node->mTransformation = t;
+        const auto& parts = meshParts[inst.mesh];
+        node->mNumMeshes = static_cast<unsigned>(parts.size());
+        if (!parts.empty()) {
+            node->mMeshes = new unsigned[parts.size()];
+            std::copy(parts.begin(), parts.end(), node->mMeshes);
+        }
+        root->mChildren[i] = node;
+    }
+    return scene;
+}
+
+} // namespace
+
+SceneFormat sceneFormatFor(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".glb") return SceneFormat::Glb;
+    if (ext == ".gltf") return SceneFormat::Gltf;
+    if (ext == ".fbx") return SceneFormat::Fbx;
+    throw InvalidInput("unknown scene format '" + ext + "' (use .glb, .gltf or .fbx)");
+}
+
+void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneFormat format) {
+    const std::unique_ptr<aiScene> scene = buildScene(desc);
+    const char* id = format == SceneFormat::Glb    ? "glb2"
+                     : format == SceneFormat::Gltf ? "gltf2"
+                     : format == SceneFormat::Fbx  ? "fbxa"
+                                                   : "fbx";
+    Assimp::Exporter exporter;
+    if (format == SceneFormat::Fbx || format == SceneFormat::FbxBinary) {
+        // Assimp's FBX writer seeks back to patch block offsets, which its memory blobs do not
+        // support; it writes a temporary beside the target that is renamed on success.
+        std::string tempName(1, '.'); // appended: GCC 12 warns falsely on "." + std::string
+        tempName.append(path.filename().string());
+        tempName.append(".tmp.fbx");
+        const std::filesystem::path temp = path.parent_path() / tempName;
+        if (exporter.Export(scene.get(), id, temp.string()) != AI_SUCCESS) {
+            std::error_code ec;
+            std::filesystem::remove(temp, ec);
+            throw IoError("cannot export " + path.string() + ": " + exporter.GetErrorString());
+        }
+        std::error_code ec;
+        std::filesystem::rename(temp, path, ec);
+        if (ec) {
+            std::filesystem::remove(temp, ec);
+            throw IoError("cannot replace " + path.string());
+        }
+        return;
+    }
+    const aiExportDataBlob* blob = exporter.ExportToBlob(scene.get(), id);
+    if (!blob) throw IoError("cannot export " + path.string() + ": " + exporter.GetErrorString());
+    // A text glTF comes as the .gltf blob followed by its .bin, which the text references by
+    // Assimp's blob placeholder ("$blobfile.bin"); we name it after the file instead.
+    std::string first(static_cast<const char*>(blob->data), blob->size);
+    if (format == SceneFormat::Gltf && blob->next) {
+        const std::string binName = path.stem().string() + ".bin";
+        const std::string assimpBin = std::string("$blobfile.") + blob->next->name.C_Str();
+        for (std::size_t at = first.find(assimpBin); at != std::string::npos;
+             at = first.find(assimpBin, at + binName.size()))
+            first.replace(at, assimpBin.size(), binName);
+        const aiExportDataBlob* bin = blob->next;
+        writeFileAtomically(path.parent_path() / binName,
+                            std::string_view(static_cast<const char*>(bin->data), bin->size));
+    }
+    writeFileAtomically(path, first);
+}
+
+namespace {
+void number(std::string& out, double v) {
+    char buf[48];
+    out.append(buf, formatFixed(buf, v, 6));
+}
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) continue;
+        out += c;
+    }
+    return out + "\"";
+}
+} // namespace
+
+std::string formatInstancesJson(const SceneDesc& scene) {
+    std::string out = "{\"format\":\"sylva-instances\",\"format_version\":1,\"instances\":[";
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const SceneInstance& in = scene.instances[i];
+        if (i) out += ',';
+        out += "\n{\"name\":" + jsonString(in.name) + ",\"mesh\":" +
+               jsonString(in.mesh < scene.meshes.size() ? scene.meshes[in.mesh].name : "") +
+               ",\"position\":[";
+        const float vals[10] = {in.position.x, in.position.y, in.position.z, in.rotation.x,
+                                in.rotation.y, in.rotation.z, in.rotation.w, in.scale.x,
+                                in.scale.y,    in.scale.z};
+        for (int k = 0; k < 10; ++k) {
+            if (k == 3)
+                out += "],\"rotation\":[";
+            else if (k == 7)
+                out += "],\"scale\":[";
+            else if (k)
+                out += ',';
+            number(out, vals[k]);
+        }
+        out += "]}";
+    }
+    out += "\n]}\n";
+    return out;
+}
+
+std::string formatInstancesCsv(const SceneDesc& scene) {
+    std::string out = "name,mesh,px,py,pz,qx,qy,qz,qw,sx,sy,sz\n";
+    for (const SceneInstance& in : scene.instances) {
+        out += in.name + "," + (in.mesh < scene.meshes.size() ? scene.meshes[in.mesh].name : "");
+        const float vals[10] = {in.position.x, in.position.y, in.position.z, in.rotation.x,
+                                in.rotation.y, in.rotation.z, in.rotation.w, in.scale.x,
+                                in.scale.y,    in.scale.z};
+        for (float v : vals) {
+            out += ',';
+            number(out, v);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+} // namespace sylva::exporter

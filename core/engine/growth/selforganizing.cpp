@@ -1,0 +1,722 @@
+#include "engine/growth/selforganizing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <tuple>
+
+#include <glm/gtx/quaternion.hpp>
+
+#include "engine/growth/pipemodel.h"
+#include "engine/util/error.h"
+
+namespace sylva::growth {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+float radians(double degrees) {
+    return static_cast<float>(degrees) * kPi / 180.0f;
+}
+std::size_t sz(std::int32_t i) {
+    return static_cast<std::size_t>(i);
+}
+
+const glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+
+/// Direction of the axillary bud of a metamer with frame \p q: its heading pitched by the
+/// branching angle about the frame's up axis (towards its left).
+glm::quat lateralFrame(const glm::quat& q, float branchAngle) {
+    return q * glm::angleAxis(branchAngle, glm::vec3(0, 0, 1));
+}
+
+/// Minimal rotation turning the heading of \p q into \p dir, then the phyllotaxis roll.
+glm::quat steer(const glm::quat& q, const glm::vec3& dir, float roll) {
+    const glm::vec3 h = skel::headingOf(q);
+    glm::quat r = glm::rotation(h, dir);
+    if (glm::dot(h, dir) < -0.9999f) r = glm::angleAxis(kPi, skel::leftOf(q));
+    return glm::normalize(r * q * glm::angleAxis(roll, glm::vec3(0, 1, 0)));
+}
+
+glm::vec3 randomUnit(Rng& rng) {
+    for (;;) {
+        const glm::vec3 v(rng.uniformf(-1, 1), rng.uniformf(-1, 1), rng.uniformf(-1, 1));
+        const float l2 = glm::dot(v, v);
+        if (l2 > 1e-4f && l2 <= 1.0f) return v / std::sqrt(l2);
+    }
+}
+
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+    const float l = glm::length(v);
+    return l > 1e-6f ? v / l : fallback;
+}
+
+/// Möller–Trumbore: does the segment p→q cross the triangle (a, b, c)?
+bool segmentHitsTriangle(const glm::vec3& p, const glm::vec3& q, const glm::vec3& a,
+                         const glm::vec3& b, const glm::vec3& c) {
+    const glm::vec3 d = q - p;
+    const glm::vec3 e1 = b - a, e2 = c - a;
+    const glm::vec3 h = glm::cross(d, e2);
+    const float det = glm::dot(e1, h);
+    if (std::fabs(det) < 1e-12f) return false;
+    const float inv = 1.0f / det;
+    const glm::vec3 s = p - a;
+    const float u = inv * glm::dot(s, h);
+    if (u < 0.0f || u > 1.0f) return false;
+    const glm::vec3 qv = glm::cross(s, e1);
+    const float v = inv * glm::dot(d, qv);
+    if (v < 0.0f || u + v > 1.0f) return false;
+    const float t = inv * glm::dot(e2, qv);
+    return t >= 0.0f && t <= 1.0f;
+}
+
+/// The 26 neighbour offsets and their unit directions.
+struct Neighbours {
+    glm::ivec3 offset[26];
+    glm::vec3 dir[26];
+    Neighbours() {
+        int k = 0;
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x)
+                for (int z = -1; z <= 1; ++z) {
+                    if (x == 0 && y == 0 && z == 0) continue;
+                    offset[k] = {x, y, z};
+                    dir[k] = glm::normalize(glm::vec3(x, y, z));
+                    ++k;
+                }
+    }
+};
+const Neighbours kNeighbours;
+
+} // namespace
+
+void SelfOrganizingParams::validate() const {
+    requireRange("cycles", cycles, 1, 200);
+    requireRange("alpha", alpha, 1e-6, 100);
+    requireRange("lambda", lambda, 0, 1);
+    requireRange("w_max", wMax, 1e-6, 10);
+    requireRange("w_min", wMin, 0, wMax);
+    requireRange("kappa", kappa, 1e-6, 1);
+    requireRange("perception_angle", perceptionAngle, 1, 360);
+    requireRange("perception_radius", perceptionRadius, 0.5, 100);
+    requireRange("occupancy_radius", occupancyRadius, 0.1, std::min(100.0, perceptionRadius));
+    requireRange("markers", markers, 0, 5'000'000);
+    requireRange("crown_radius", crownRadius, 1e-3, 500);
+    requireRange("crown_base", crownBase, 0, 500);
+    requireRange("crown_top", crownTop, crownBase + 1e-3, 1000);
+    requireRange("shadow_a", shadowA, 1e-6, 100);
+    requireRange("shadow_b", shadowB, 1.000001, 100);
+    requireRange("shadow_depth", shadowDepth, 0, 32);
+    requireRange("full_exposure", fullExposure, 1e-6, 100);
+    requireRange("voxel_size", voxelSize, 0.1, 100);
+    requireRange("internode_length", internodeLength, 0.001, 10);
+    requireRange("branch_angle", branchAngle, 0, 180);
+    requireRange("divergence_angle", divergenceAngle, 0, 360);
+    requireRange("optimal_weight", optimalWeight, 0, 10);
+    requireRange("tropism_weight", tropismWeight, -10, 10);
+    requireRange("lateral_tropism_weight", lateralTropismWeight, -10, 10);
+    requireRange("direction_noise", directionNoise, 0, 1);
+    requireRange("max_shoot_length", maxShootLength, 1, 1000);
+    requireRange("shedding_threshold", sheddingThreshold, 0, 100);
+    requireRange("tip_radius", tipRadius, 1e-6, 1);
+    requireRange("pipe_exponent", pipeExponent, 1, 4);
+    requireRange("leaf_size", leafSize, 0, 10);
+    requireRange("leaf_age", leafAge, 0, 200);
+    requireRange("max_internodes", static_cast<double>(maxInternodes), 1, 50'000'000);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
+                                                   std::vector<glm::vec3> obstacles,
+                                                   SimulationOptions options)
+    : mTrees(std::move(trees)), mObstacles(std::move(obstacles)), mOptions(options) {
+    if (mTrees.empty()) throw InvalidInput("a stand needs at least one tree");
+    if (mTrees.size() > 65535) throw LimitExceeded("a stand holds at most 65,535 trees");
+    if (mObstacles.size() % 3 != 0)
+        throw InvalidInput("obstacle triangles need 3 points each, got " +
+                           std::to_string(mObstacles.size()) + " points");
+    for (const glm::vec3& p : mObstacles)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw InvalidInput("obstacle triangles contain a non-finite coordinate");
+    mEnv = mTrees[0].params.environment;
+    if (!mObstacles.empty()) {
+        mObstacleLo = mObstacleHi = mObstacles[0];
+        for (const glm::vec3& p : mObstacles) {
+            mObstacleLo = glm::min(mObstacleLo, p);
+            mObstacleHi = glm::max(mObstacleHi, p);
+        }
+    }
+    for (std::size_t t = 0; t < mTrees.size(); ++t) {
+        const StandTree& tree = mTrees[t];
+        tree.params.validate();
+        const glm::vec3& p = tree.position;
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw InvalidInput("tree " + std::to_string(t) + " has a non-finite position");
+        if (tree.params.environment != mEnv)
+            throw InvalidInput("all trees of a stand must use the same environment (tree " +
+                               std::to_string(t) + " differs from tree 0)");
+        const SelfOrganizingParams& sp = tree.params;
+        mAlloc.push_back({sp.alpha, sp.lambda, sp.wMin, sp.wMax, sp.kappa});
+        mShedThreshold.push_back(sp.sheddingThreshold);
+        mTotalCycles = std::max(mTotalCycles, sp.cycles);
+        mRng.emplace_back(mixSeed(tree.seed, 0x5e1f));
+    }
+    mCount.assign(mTrees.size(), 0);
+    mShedTree.assign(mTrees.size(), 0);
+    const SelfOrganizingParams& p0 = mTrees[0].params;
+
+    if (mEnv == SoEnvironment::ShadowPropagation) {
+        int margin = 0;
+        float floorY = std::numeric_limits<float>::max();
+        for (const StandTree& t : mTrees) {
+            mKernels.push_back(
+                ShadowKernel::make(t.params.shadowA, t.params.shadowB, t.params.shadowDepth));
+            margin = std::max(margin, t.params.shadowDepth);
+            floorY = std::min(floorY, t.position.y);
+        }
+        const float h = static_cast<float>(p0.voxelSize * p0.internodeLength);
+        mShadow = std::make_unique<ShadowGrid>(h, floorY - h, margin);
+        mObstacleKernel = mKernels[0];
+        // Voxelize obstacles by sampling each triangle at half the voxel size.
+        for (std::size_t i = 0; i + 2 < mObstacles.size(); i += 3) {
+            const glm::vec3 a = mObstacles[i], b = mObstacles[i + 1], c = mObstacles[i + 2];
+            const float len = std::max(glm::length(b - a), glm::length(c - a));
+            const int steps = std::min(4096, static_cast<int>(std::ceil(len / (0.5f * h))) + 1);
+            for (int u = 0; u <= steps; ++u)
+                for (int v = 0; u + v <= steps; ++v) {
+                    const float fu = static_cast<float>(u) / static_cast<float>(steps);
+                    const float fv = static_cast<float>(v) / static_cast<float>(steps);
+                    mObstacleVoxels.push_back(mShadow->voxelOf(a + (b - a) * fu + (c - a) * fv));
+                }
+        }
+        std::sort(mObstacleVoxels.begin(), mObstacleVoxels.end(),
+                  [](const glm::ivec3& l, const glm::ivec3& r) {
+                      return std::tie(l.y, l.x, l.z) < std::tie(r.y, r.x, r.z);
+                  });
+        mObstacleVoxels.erase(std::unique(mObstacleVoxels.begin(), mObstacleVoxels.end()),
+                              mObstacleVoxels.end());
+        for (const glm::ivec3& v : mObstacleVoxels) {
+            mShadow->setBlocked(v);
+            mShadow->addPyramid(v, mObstacleKernel, 1);
+        }
+    } else {
+        std::vector<glm::vec3> markers;
+        float cell = std::numeric_limits<float>::max();
+        for (std::size_t t = 0; t < mTrees.size(); ++t) {
+            const SelfOrganizingParams& sp = mTrees[t].params;
+            Rng rng(mixSeed(mTrees[t].seed, 0x3a7c));
+            const glm::vec3 radii(static_cast<float>(sp.crownRadius),
+                                  static_cast<float>(0.5 * (sp.crownTop - sp.crownBase)),
+                                  static_cast<float>(sp.crownRadius));
+            const glm::vec3 centre =
+                mTrees[t].position +
+                glm::vec3(0, static_cast<float>(0.5 * (sp.crownTop + sp.crownBase)), 0);
+            for (int k = 0; k < sp.markers;) {
+                const glm::vec3 u(rng.uniformf(-1, 1), rng.uniformf(-1, 1), rng.uniformf(-1, 1));
+                if (glm::dot(u, u) > 1.0f) continue;
+                markers.push_back(centre + u * radii);
+                ++k;
+            }
+            cell = std::min(cell, static_cast<float>(sp.occupancyRadius * sp.internodeLength));
+        }
+        mMarkers = std::make_unique<MarkerSet>(std::move(markers), cell);
+        const float rho = static_cast<float>(p0.occupancyRadius * p0.internodeLength);
+        for (std::size_t i = 0; i + 2 < mObstacles.size(); i += 3)
+            mMarkers->removeNearTriangle(mObstacles[i], mObstacles[i + 1], mObstacles[i + 2], rho);
+    }
+}
+
+void SelfOrganizingSimulation::addSource(std::size_t metamer, int sign) {
+    mShadow->addPyramid(mShadow->voxelOf(mM.end[metamer]), mKernels[mM.tree[metamer]], sign);
+}
+
+void SelfOrganizingSimulation::rebuildShadow() {
+    mShadow->clearShadow();
+    for (const glm::ivec3& v : mObstacleVoxels)
+        mShadow->addPyramid(v, mObstacleKernel, 1);
+    for (std::size_t i = 0; i < mM.size(); ++i)
+        addSource(i, 1);
+}
+
+ShadowGrid SelfOrganizingSimulation::recomputeShadow() const {
+    if (!mShadow) throw InvalidInput("this stand has no shadow grid");
+    int margin = 0;
+    float floorY = std::numeric_limits<float>::max();
+    for (const StandTree& t : mTrees) {
+        margin = std::max(margin, t.params.shadowDepth);
+        floorY = std::min(floorY, t.position.y);
+    }
+    const float h = mShadow->voxelSize();
+    ShadowGrid g(h, floorY - h, margin);
+    for (const glm::ivec3& v : mObstacleVoxels)
+        g.addPyramid(v, mObstacleKernel, 1);
+    for (std::size_t i = 0; i < mM.size(); ++i)
+        g.addPyramid(g.voxelOf(mM.end[i]), mKernels[mM.tree[i]], 1);
+    return g;
+}
+
+std::int32_t SelfOrganizingSimulation::appendMetamer(std::int32_t parent, bool lateral,
+                                                     const glm::vec3& end, const glm::quat& frame,
+                                                     std::uint16_t tree, std::uint16_t order) {
+    const SelfOrganizingParams& sp = mTrees[tree].params;
+    if (++mCount[tree] > sp.maxInternodes)
+        throw LimitExceeded("self-organizing tree " + std::to_string(tree) + " exceeded " +
+                            std::to_string(sp.maxInternodes) +
+                            " internodes (max_internodes) in cycle " + std::to_string(mCycle + 1) +
+                            " of " + std::to_string(sp.cycles) +
+                            "; lower alpha or cycles, or raise max_internodes");
+    const auto index = static_cast<std::int32_t>(mM.size());
+    mM.end.push_back(end);
+    mM.frame.push_back(frame);
+    mM.parent.push_back(parent);
+    mM.mainChild.push_back(-1);
+    mM.lateralChild.push_back(-1);
+    mM.tree.push_back(tree);
+    mM.order.push_back(order);
+    mM.born.push_back(static_cast<std::uint16_t>(mCycle));
+    mM.deadBuds.push_back(0);
+    if (parent >= 0) (lateral ? mM.lateralChild : mM.mainChild)[sz(parent)] = index;
+    return index;
+}
+
+void SelfOrganizingSimulation::plant(std::size_t t) {
+    const StandTree& tree = mTrees[t];
+    Rng& rng = mRng[t];
+    const glm::quat frame = glm::angleAxis(rng.uniformf(0, 2 * kPi), kUp);
+    const float len = static_cast<float>(tree.params.internodeLength);
+    const auto i = appendMetamer(-1, false, tree.position + kUp * len, frame,
+                                 static_cast<std::uint16_t>(t), 0);
+    if (mShadow && !mOptions.naiveShadow) addSource(sz(i), 1);
+    if (mMarkers)
+        mMarkers->removeWithin(mM.end[sz(i)],
+                               static_cast<float>(tree.params.occupancyRadius * len));
+}
+
+void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
+                                             std::vector<double>& axillary) {
+    const std::size_t n = mM.size();
+    terminal.assign(n, 0.0);
+    axillary.assign(n, 0.0);
+    auto terminalAlive = [&](std::size_t i) {
+        return mM.mainChild[i] < 0 && !(mM.deadBuds[i] & 1u);
+    };
+    auto axillaryAlive = [&](std::size_t i) {
+        return mM.lateralChild[i] < 0 && !(mM.deadBuds[i] & 2u);
+    };
+    if (mEnv == SoEnvironment::ShadowPropagation) {
+        const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (count > 4096)
+        for (std::int64_t k = 0; k < count; ++k) {
+            const auto i = static_cast<std::size_t>(k);
+            const bool ta = terminalAlive(i), aa = axillaryAlive(i);
+            if (!ta && !aa) continue;
+            const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
+            const glm::ivec3 v = mShadow->voxelOf(mM.end[i]);
+            const double q = mShadow->blocked(v)
+                                 ? 0.0
+                                 : std::max(sp.fullExposure - mShadow->shadow(v) + sp.shadowA, 0.0);
+            if (ta) terminal[i] = q;
+            if (aa) axillary[i] = q;
+        }
+        return;
+    }
+
+    // Space colonization: each marker belongs to the closest bud that perceives it.
+    struct Bud {
+        glm::vec3 pos, dir;
+        float r2, cosHalf;
+        std::uint32_t key; ///< 2·metamer + (0 terminal | 1 axillary)
+    };
+    std::vector<Bud> buds;
+    std::vector<glm::vec3> budPos;
+    float rMax = 0.0f;
+    for (std::size_t i = 0; i < n; ++i) {
+        const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
+        const float r = static_cast<float>(sp.perceptionRadius * sp.internodeLength);
+        const float c = std::cos(0.5f * radians(sp.perceptionAngle));
+        rMax = std::max(rMax, r);
+        if (terminalAlive(i))
+            buds.push_back({mM.end[i], skel::headingOf(mM.frame[i]), r * r, c,
+                            static_cast<std::uint32_t>(2 * i)});
+        if (axillaryAlive(i))
+            buds.push_back({mM.end[i],
+                            skel::headingOf(lateralFrame(mM.frame[i], radians(sp.branchAngle))),
+                            r * r, c, static_cast<std::uint32_t>(2 * i + 1)});
+    }
+    mOptimalTerminal.assign(n, glm::vec3(0.0f));
+    mOptimalAxillary.assign(n, glm::vec3(0.0f));
+    if (buds.empty()) return;
+    budPos.reserve(buds.size());
+    for (const Bud& b : buds)
+        budPos.push_back(b.pos);
+    const PointGrid grid(budPos, rMax);
+    const std::vector<std::uint32_t> alive = mMarkers->aliveIndices();
+    const std::vector<glm::vec3>& mp = mMarkers->positions();
+    std::vector<std::int32_t> owner(alive.size(), -1);
+    const auto count = static_cast<std::int64_t>(alive.size());
+#pragma omp parallel for schedule(dynamic, 256) if (count > 1024)
+    for (std::int64_t k = 0; k < count; ++k) {
+        const glm::vec3 m = mp[alive[static_cast<std::size_t>(k)]];
+        std::int32_t best = -1;
+        float bestD2 = std::numeric_limits<float>::max();
+        grid.forEachInRadius(m, rMax, [&](std::uint32_t b, float d2) {
+            const Bud& bud = buds[b];
+            if (d2 >= bud.r2 || d2 > bestD2) return;
+            const glm::vec3 d = m - bud.pos;
+            if (glm::dot(d, bud.dir) < bud.cosHalf * std::sqrt(d2)) return;
+            if (d2 < bestD2 || static_cast<std::int32_t>(b) < best) {
+                bestD2 = d2;
+                best = static_cast<std::int32_t>(b);
+            }
+        });
+        owner[static_cast<std::size_t>(k)] = best;
+    }
+    std::vector<glm::vec3> sum(buds.size(), glm::vec3(0.0f));
+    std::vector<std::uint8_t> seen(buds.size(), 0);
+    for (std::size_t k = 0; k < alive.size(); ++k) {
+        if (owner[k] < 0) continue;
+        const Bud& bud = buds[sz(owner[k])];
+        sum[sz(owner[k])] += safeNormalize(mp[alive[k]] - bud.pos, bud.dir);
+        seen[sz(owner[k])] = 1;
+    }
+    for (std::size_t b = 0; b < buds.size(); ++b) {
+        if (!seen[b]) continue;
+        const std::size_t i = buds[b].key >> 1;
+        const glm::vec3 v = safeNormalize(sum[b], buds[b].dir);
+        if (buds[b].key & 1u) {
+            axillary[i] = 1.0;
+            mOptimalAxillary[i] = v;
+        } else {
+            terminal[i] = 1.0;
+            mOptimalTerminal[i] = v;
+        }
+    }
+}
+
+glm::vec3 SelfOrganizingSimulation::optimalShadowDirection(const glm::vec3& pos,
+                                                           const glm::vec3& dir,
+                                                           double cosHalf) const {
+    const glm::ivec3 v = mShadow->voxelOf(pos);
+    std::int32_t best = std::numeric_limits<std::int32_t>::max();
+    glm::vec3 sum(0.0f);
+    for (int k = 0; k < 26; ++k) {
+        if (glm::dot(kNeighbours.dir[k], dir) < static_cast<float>(cosHalf)) continue;
+        const glm::ivec3 u = v + kNeighbours.offset[k];
+        if (mShadow->blocked(u)) continue;
+        const std::int32_t s = mShadow->raw(u);
+        if (s < best) {
+            best = s;
+            sum = kNeighbours.dir[k];
+        } else if (s == best) {
+            sum += kNeighbours.dir[k];
+        }
+    }
+    return safeNormalize(sum, dir);
+}
+
+void SelfOrganizingSimulation::shed(const std::vector<std::uint8_t>& removed) {
+    const std::size_t n = mM.size();
+    std::vector<std::int32_t> remap(n, -1);
+    std::int32_t next = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (removed[i]) {
+            if (mShadow && !mOptions.naiveShadow) addSource(i, -1);
+            --mCount[mM.tree[i]];
+            ++mShedTree[mM.tree[i]];
+            ++mShed;
+            continue;
+        }
+        remap[i] = next++;
+    }
+    MetamerArrays out;
+    auto fix = [&](std::int32_t j) { return j < 0 ? -1 : remap[sz(j)]; };
+    for (std::size_t i = 0; i < n; ++i) {
+        if (removed[i]) continue;
+        std::uint8_t dead = mM.deadBuds[i];
+        // A shed branch leaves a scar: its axillary bud is gone for good.
+        if (mM.lateralChild[i] >= 0 && removed[sz(mM.lateralChild[i])]) dead |= 2u;
+        if (mM.mainChild[i] >= 0 && removed[sz(mM.mainChild[i])]) dead |= 1u;
+        out.end.push_back(mM.end[i]);
+        out.frame.push_back(mM.frame[i]);
+        out.parent.push_back(fix(mM.parent[i]));
+        out.mainChild.push_back(fix(mM.mainChild[i]));
+        out.lateralChild.push_back(fix(mM.lateralChild[i]));
+        out.tree.push_back(mM.tree[i]);
+        out.order.push_back(mM.order[i]);
+        out.born.push_back(mM.born[i]);
+        out.deadBuds.push_back(dead);
+    }
+    mM = std::move(out);
+}
+
+Vigour SelfOrganizingSimulation::allocate(const std::vector<double>& gathered,
+                                          const std::vector<double>& terminal,
+                                          const std::vector<double>& axillary) const {
+    const MetamerTopology topo = mM.topology();
+    // Trees may mix models: run both where needed and pick per tree.
+    bool anyBH = false, anyPriority = false;
+    for (const StandTree& t : mTrees)
+        (t.params.allocation == SoAllocation::BorchertHonda ? anyBH : anyPriority) = true;
+    Vigour bh, pr;
+    if (anyBH)
+        bh = mOptions.naiveAllocation
+                 ? allocateBorchertHondaNaive(topo, terminal, axillary, mAlloc)
+                 : allocateBorchertHonda(topo, gathered, terminal, axillary, mAlloc);
+    if (anyPriority) pr = allocatePriority(topo, gathered, terminal, axillary, mAlloc);
+    if (!anyPriority) return bh;
+    if (!anyBH) return pr;
+    for (std::size_t i = 0; i < mM.size(); ++i)
+        if (mTrees[mM.tree[i]].params.allocation == SoAllocation::Priority) {
+            bh.metamer[i] = pr.metamer[i];
+            bh.terminal[i] = pr.terminal[i];
+            bh.axillary[i] = pr.axillary[i];
+        }
+    return bh;
+}
+
+bool SelfOrganizingSimulation::hitsObstacle(const glm::vec3& from, const glm::vec3& to) const {
+    if (mObstacles.empty()) return false;
+    const glm::vec3 lo = glm::min(from, to), hi = glm::max(from, to);
+    if (glm::any(glm::lessThan(hi, mObstacleLo)) || glm::any(glm::greaterThan(lo, mObstacleHi)))
+        return false;
+    for (std::size_t i = 0; i + 2 < mObstacles.size(); i += 3)
+        if (segmentHitsTriangle(from, to, mObstacles[i], mObstacles[i + 1], mObstacles[i + 2]))
+            return true;
+    return false;
+}
+
+void SelfOrganizingSimulation::growShoot(std::int32_t from, bool lateral, double vigour,
+                                         const glm::vec3& optimal) {
+    const std::uint16_t t = mM.tree[sz(from)];
+    const SelfOrganizingParams& sp = mTrees[t].params;
+    Rng& rng = mRng[t];
+    const int n = std::min(static_cast<int>(std::floor(vigour)), sp.maxShootLength);
+    const float len = static_cast<float>(sp.internodeLength * std::min(vigour / n, 2.0));
+    glm::quat frame =
+        lateral ? lateralFrame(mM.frame[sz(from)], radians(sp.branchAngle)) : mM.frame[sz(from)];
+    glm::vec3 pos = mM.end[sz(from)];
+    std::int32_t parent = from;
+    const std::uint16_t order = static_cast<std::uint16_t>(mM.order[sz(from)] + (lateral ? 1 : 0));
+    const float xi = static_cast<float>(sp.optimalWeight);
+    const float eta = static_cast<float>(order == 0 ? sp.tropismWeight : sp.lateralTropismWeight);
+    const float noise = static_cast<float>(sp.directionNoise);
+    const float roll = radians(sp.divergenceAngle);
+    for (int k = 0; k < n; ++k) {
+        const glm::vec3 h = skel::headingOf(frame);
+        glm::vec3 d = h + xi * optimal + eta * kUp;
+        if (noise > 0.0f) d += noise * randomUnit(rng);
+        d = safeNormalize(d, h);
+        const glm::vec3 end = pos + d * len;
+        if (end.y < mTrees[t].position.y ||
+            (mShadow ? mShadow->blocked(mShadow->voxelOf(end)) : hitsObstacle(pos, end))) {
+            // The shoot ran into the ground or an obstacle: its bud stops there.
+            mM.deadBuds[sz(parent)] |= (k == 0 && lateral) ? 2u : 1u;
+            return;
+        }
+        frame = steer(frame, d, roll);
+        parent = appendMetamer(parent, lateral && k == 0, end, frame, t, order);
+        pos = end;
+    }
+}
+
+void SelfOrganizingSimulation::step() {
+    if (done()) return;
+    for (std::size_t t = 0; t < mTrees.size(); ++t)
+        if (mCycle == mTotalCycles - mTrees[t].params.cycles) plant(t);
+    if (mShadow && mOptions.naiveShadow) rebuildShadow();
+
+    std::vector<double> terminal, axillary;
+    evaluateLight(terminal, axillary);
+    std::vector<double> gathered(mM.size());
+    std::vector<std::int32_t> internodes(mM.size());
+    gatherLight(mM.topology(), terminal, axillary, gathered, internodes);
+
+    const std::vector<std::uint8_t> removed =
+        markShed(mM.topology(), gathered, internodes, mShedThreshold);
+    if (std::find(removed.begin(), removed.end(), 1) != removed.end()) {
+        // Keep the buds' light and space colonization directions aligned with the survivors.
+        std::size_t k = 0;
+        const bool sc = mEnv == SoEnvironment::SpaceColonization;
+        for (std::size_t i = 0; i < removed.size(); ++i) {
+            if (removed[i]) continue;
+            terminal[k] = terminal[i];
+            axillary[k] = axillary[i];
+            if (sc) {
+                mOptimalTerminal[k] = mOptimalTerminal[i];
+                mOptimalAxillary[k] = mOptimalAxillary[i];
+            }
+            if (mM.lateralChild[i] >= 0 && removed[sz(mM.lateralChild[i])]) axillary[k] = 0.0;
+            if (mM.mainChild[i] >= 0 && removed[sz(mM.mainChild[i])]) terminal[k] = 0.0;
+            ++k;
+        }
+        shed(removed);
+        if (mShadow && mOptions.naiveShadow) rebuildShadow();
+        terminal.resize(k);
+        axillary.resize(k);
+        gathered.resize(k);
+        internodes.resize(k);
+        gatherLight(mM.topology(), terminal, axillary, gathered, internodes);
+    }
+
+    const Vigour vig = allocate(gathered, terminal, axillary);
+
+    // Buds that grow, in metamer order (terminal before axillary), with their optimal
+    // direction; the shadow lookups run in parallel, the appends sequentially.
+    struct Growing {
+        std::int32_t metamer;
+        bool lateral;
+        double vigour;
+        glm::vec3 optimal;
+        bool seedling = false; ///< leader of a tree that perceives nothing yet
+    };
+    std::vector<Growing> growing;
+    const std::size_t n0 = mM.size();
+    for (std::size_t i = 0; i < n0; ++i) {
+        const auto idx = static_cast<std::int32_t>(i);
+        if (mM.mainChild[i] < 0 && !(mM.deadBuds[i] & 1u) && vig.terminal[i] >= 1.0)
+            growing.push_back({idx, false, vig.terminal[i], glm::vec3(0.0f)});
+        if (mM.lateralChild[i] < 0 && !(mM.deadBuds[i] & 2u) && vig.axillary[i] >= 1.0)
+            growing.push_back({idx, true, vig.axillary[i], glm::vec3(0.0f)});
+    }
+    if (mEnv == SoEnvironment::SpaceColonization) {
+        // A tree that perceives no marker at all (a seedling below its crown envelope) grows
+        // its leader straight up, max_shoot_length metamers per cycle, until it reaches them.
+        for (std::size_t i = 0; i < n0; ++i) {
+            if (mM.parent[i] >= 0 || gathered[i] > 0.0) continue;
+            std::size_t tip = i;
+            while (mM.mainChild[tip] >= 0)
+                tip = sz(mM.mainChild[tip]);
+            if (mM.deadBuds[tip] & 1u) continue;
+            growing.push_back({static_cast<std::int32_t>(tip), false,
+                               static_cast<double>(mTrees[mM.tree[i]].params.maxShootLength), kUp,
+                               true});
+        }
+    }
+    const auto count = static_cast<std::int64_t>(growing.size());
+#pragma omp parallel for schedule(static) if (count > 4096)
+    for (std::int64_t k = 0; k < count; ++k) {
+        Growing& g = growing[static_cast<std::size_t>(k)];
+        if (g.seedling) continue;
+        const std::size_t i = sz(g.metamer);
+        const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
+        if (mEnv == SoEnvironment::SpaceColonization) {
+            g.optimal = g.lateral ? mOptimalAxillary[i] : mOptimalTerminal[i];
+        } else {
+            const glm::quat f =
+                g.lateral ? lateralFrame(mM.frame[i], radians(sp.branchAngle)) : mM.frame[i];
+            g.optimal = optimalShadowDirection(mM.end[i], skel::headingOf(f),
+                                               std::cos(0.5 * sp.perceptionAngle * kPi / 180.0));
+        }
+    }
+    for (const Growing& g : growing)
+        growShoot(g.metamer, g.lateral, g.vigour, g.optimal);
+
+    // Environment update: only the new metamers.
+    for (std::size_t i = n0; i < mM.size(); ++i) {
+        if (mShadow && !mOptions.naiveShadow) addSource(i, 1);
+        if (mMarkers) {
+            const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
+            mMarkers->removeWithin(mM.end[i],
+                                   static_cast<float>(sp.occupancyRadius * sp.internodeLength));
+        }
+    }
+    if (mShadow && mOptions.naiveShadow) rebuildShadow();
+    ++mCycle;
+}
+
+std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {
+    const std::size_t n = mM.size();
+    std::vector<double> terminal, axillary;
+    if (mShadow && mOptions.naiveShadow) rebuildShadow();
+    evaluateLight(terminal, axillary);
+    std::vector<double> gathered(n);
+    std::vector<std::int32_t> internodes(n);
+    gatherLight(mM.topology(), terminal, axillary, gathered, internodes);
+    const Vigour vig = allocate(gathered, terminal, axillary);
+
+    std::vector<SelfOrganizingResult> out(mTrees.size());
+    std::vector<std::int32_t> local(n, -1);
+    for (std::size_t t = 0; t < mTrees.size(); ++t) {
+        out[t].internodes = static_cast<std::size_t>(mCount[t]);
+        out[t].cycles = mTrees[t].params.cycles;
+        out[t].skeleton.reserve(static_cast<std::size_t>(mCount[t]) + 1);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint16_t t = mM.tree[i];
+        const SelfOrganizingParams& sp = mTrees[t].params;
+        SelfOrganizingResult& r = out[t];
+        const glm::vec3 base = mTrees[t].position;
+        const float radius = static_cast<float>(sp.tipRadius);
+        std::int32_t parentNode;
+        if (mM.parent[i] < 0) {
+            parentNode = r.skeleton.addNode(glm::vec3(0.0f), -1, radius, 0, mM.frame[i]);
+            r.light.push_back(static_cast<float>(gathered[i]));
+            r.vigour.push_back(static_cast<float>(vig.metamer[i]));
+            r.age.push_back(static_cast<std::uint16_t>(mCycle - mM.born[i]));
+        } else {
+            parentNode = local[sz(mM.parent[i])];
+        }
+        local[i] =
+            r.skeleton.addNode(mM.end[i] - base, parentNode, radius, mM.order[i], mM.frame[i]);
+        r.light.push_back(static_cast<float>(gathered[i]));
+        r.vigour.push_back(static_cast<float>(vig.metamer[i]));
+        const int age = mCycle - mM.born[i];
+        r.age.push_back(static_cast<std::uint16_t>(age));
+        if (sp.leafSize > 0.0 && age < sp.leafAge && mM.lateralChild[i] < 0) {
+            skel::Leaf leaf;
+            leaf.position = mM.end[i] - base;
+            leaf.orientation = lateralFrame(mM.frame[i], radians(sp.branchAngle));
+            leaf.size = static_cast<float>(sp.leafSize);
+            leaf.node = local[i];
+            r.skeleton.leaves.push_back(leaf);
+        }
+    }
+    for (std::size_t t = 0; t < mTrees.size(); ++t) {
+        out[t].shed = mShedTree[t];
+        out[t].skeleton.finalize();
+        applyPipeModel(out[t].skeleton, static_cast<float>(mTrees[t].params.tipRadius),
+                       static_cast<float>(mTrees[t].params.pipeExponent));
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+std::vector<SelfOrganizingResult> growStandDetailed(const std::vector<StandTree>& trees,
+                                                    const std::vector<glm::vec3>& obstacles,
+                                                    Progress& progress) {
+    SelfOrganizingSimulation sim(trees, obstacles);
+    while (!sim.done()) {
+        progress.checkCancelled();
+        progress.report(static_cast<double>(sim.cycle()) / sim.totalCycles(), "grow");
+        sim.step();
+    }
+    progress.report(1.0, "grow");
+    return sim.results();
+}
+
+std::vector<skel::Skeleton> growStand(const std::vector<StandTree>& trees,
+                                      const std::vector<glm::vec3>& obstacles, Progress& progress) {
+    std::vector<SelfOrganizingResult> r = growStandDetailed(trees, obstacles, progress);
+    std::vector<skel::Skeleton> out;
+    out.reserve(r.size());
+    for (SelfOrganizingResult& x : r)
+        out.push_back(std::move(x.skeleton));
+    return out;
+}
+
+SelfOrganizingResult growSelfOrganizingDetailed(const SelfOrganizingParams& params,
+                                                std::uint64_t seed, Progress& progress) {
+    std::vector<SelfOrganizingResult> r =
+        growStandDetailed({StandTree{glm::vec3(0.0f), params, seed}}, {}, progress);
+    return std::move(r[0]);
+}
+
+skel::Skeleton growSelfOrganizing(const SelfOrganizingParams& params, std::uint64_t seed,
+                                  Progress& progress) {
+    return growSelfOrganizingDetailed(params, seed, progress).skeleton;
+}
+
+} // namespace sylva::growth

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace sylva::growth {
+
+/// The shadow increments of one pyramid (Palubicki et al. 2009): Δs(q) = a·b^(−q) for
+/// q = 0…q_max, stored in ShadowGrid's fixed-point units so that adding and removing the same
+/// pyramid, in any order, returns the grid to exactly the same values.
+struct ShadowKernel {
+    int depth = 0;                   ///< q_max, voxels below the source, 0..32
+    std::vector<std::int32_t> delta; ///< depth+1 fixed-point increments
+
+    /// \param a shadow of the source voxel itself, > 0; \param b attenuation base, > 1.
+    static ShadowKernel make(double a, double b, int depth);
+};
+
+/// A voxel grid of shadow values that grows on demand (Y up). A source at voxel (I, J, K)
+/// shadows the voxels (I±p, J−q, K±p), p = 0…q, q = 0…q_max, by Δs(q). The grid always keeps
+/// a horizontal margin of q_max voxels around every source, so no pyramid is ever clipped
+/// sideways and growing the grid is a plain copy; pyramids are clipped only below the floor.
+/// Values are fixed point (1/kScale), which makes incremental updates exact.
+class ShadowGrid {
+public:
+    static constexpr double kScale = 16384.0;
+
+    /// \param voxelSize edge length in metres, > 0; \param floorY lowest height (metres) that
+    /// receives shadow; \param margin largest q_max of any source that will be added.
+    ShadowGrid(float voxelSize, float floorY, int margin);
+
+    float voxelSize() const { return mVoxelSize; }
+    /// Integer voxel coordinates of a point (floor(p / voxelSize)).
+    glm::ivec3 voxelOf(const glm::vec3& p) const;
+    /// Centre of a voxel in metres.
+    glm::vec3 centreOf(const glm::ivec3& v) const;
+
+    /// Adds (sign = +1) or removes (sign = −1) the pyramid of a source at voxel \p v, growing
+    /// the grid first when needed.
+    void addPyramid(const glm::ivec3& v, const ShadowKernel& kernel, int sign = 1);
+    /// Shadow value s at a voxel (0 above or beside the grid, the floor row's value below it).
+    double shadow(const glm::ivec3& v) const { return raw(v) / kScale; }
+    std::int32_t raw(const glm::ivec3& v) const {
+        glm::ivec3 c = v;
+        if (c.y < mFloor) c.y = mFloor;
+        return inside(c) ? mValues[index(c)] : 0;
+    }
+
+    /// Marks a voxel opaque (obstacles): buds there get no light and never grow towards it.
+    void setBlocked(const glm::ivec3& v);
+    bool blocked(const glm::ivec3& v) const {
+        return mAnyBlocked && inside(v) && mBlocked[index(v)] != 0;
+    }
+
+    /// Zeroes every shadow value (keeps bounds and blocked voxels).
+    void clearShadow();
+    /// Makes sure the voxel \p v plus the margin is inside the grid.
+    void reserveAround(const glm::ivec3& v);
+
+    const glm::ivec3& lo() const { return mLo; }
+    const glm::ivec3& dims() const { return mDim; }
+    /// Raw values in (y, x, z) order, for comparisons in tests.
+    const std::vector<std::int32_t>& values() const { return mValues; }
+    /// True when both grids hold the same shadow at every voxel either of them covers.
+    bool sameShadow(const ShadowGrid& other) const;
+
+private:
+    bool inside(const glm::ivec3& v) const {
+        return v.x >= mLo.x && v.y >= mLo.y && v.z >= mLo.z && v.x < mLo.x + mDim.x &&
+               v.y < mLo.y + mDim.y && v.z < mLo.z + mDim.z;
+    }
+    std::size_t index(const glm::ivec3& v) const {
+        return (static_cast<std::size_t>(v.y - mLo.y) * static_cast<std::size_t>(mDim.x) +
+                static_cast<std::size_t>(v.x - mLo.x)) *
+                   static_cast<std::size_t>(mDim.z) +
+               static_cast<std::size_t>(v.z - mLo.z);
+    }
+    void resize(const glm::ivec3& lo, const glm::ivec3& hi);
+
+    float mVoxelSize;
+    int mFloor;  ///< lowest voxel row
+    int mMargin; ///< horizontal margin kept around sources
+    glm::ivec3 mLo{0};
+    glm::ivec3 mDim{0};
+    std::vector<std::int32_t> mValues;
+    std::vector<std::uint8_t> mBlocked;
+    bool mAnyBlocked = false; ///< lets the common obstacle-free case skip the lookup
+};
+
+} // namespace sylva::growth

@@ -1,0 +1,528 @@
+#include "engine/growth/spacecolonization.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include <glm/gtx/quaternion.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "engine/growth/pipemodel.h"
+#include "engine/growth/spatialgrid.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+
+namespace sylva::growth {
+
+void validate(const ColonizationParams& p) {
+    requireRange("influence_distance", p.influenceDistance, 0.0, 1000.0);
+    requireRange("segment_length", p.segmentLength, 0.0, 100.0);
+    requireRange("kill_distance", p.killDistance, 0.0, 1000.0);
+    if (!(p.segmentLength > 0.0f)) throw InvalidInput("segment_length must be in (0, 100], got 0");
+    if (!(p.killDistance < p.influenceDistance))
+        throw InvalidInput("kill_distance must be smaller than influence_distance (" +
+                           std::to_string(p.influenceDistance) + "), got " +
+                           std::to_string(p.killDistance));
+    if (!(p.killDistance > p.segmentLength))
+        throw InvalidInput("kill_distance must be larger than segment_length (" +
+                           std::to_string(p.segmentLength) + "), got " +
+                           std::to_string(p.killDistance) +
+                           "; otherwise a branch can step over its points and circle them");
+    requireRange("randomness", p.randomness, 0.0, 1.0);
+    for (int a = 0; a < 3; ++a)
+        requireRange("tropism component", p.tropism[a], -1.0, 1.0);
+    if (glm::length(p.tropism) > 1.0f)
+        throw InvalidInput("tropism must have length in [0, 1], got " +
+                           std::to_string(glm::length(p.tropism)));
+    requireRange("trunk_height", p.trunkHeight, 0.0, 1000.0);
+    for (int a = 0; a < 3; ++a)
+        requireRange("root component", p.root[a], -1e6, 1e6);
+    requireRange("max_iterations", p.maxIterations, 1, 100000);
+    requireRange("pipe_exponent", p.pipeExponent, kMinPipeExponent, kMaxPipeExponent);
+    requireRange("tip_radius", p.tipRadius, 0.0, 10.0);
+    if (!(p.tipRadius > 0.0f)) throw InvalidInput("tip_radius must be in (0, 10], got 0");
+}
+
+namespace {
+
+/// Closest node within d_i of every live point, and the kill test.
+struct PointState {
+    const std::vector<glm::vec3>& points;
+    std::vector<float> best2;           ///< squared distance to bestNode, d_i² when none
+    std::vector<std::int32_t> bestNode; ///< -1 when no node is within d_i
+    std::vector<std::uint8_t> killed;
+    std::vector<std::uint32_t> live; ///< live points in increasing index order
+};
+
+/// The oracle: every live point against every node, every iteration.
+void updateNaive(PointState& s, const std::vector<glm::vec3>& nodes, float di2, float dk2) {
+    for (std::uint32_t a : s.live) {
+        float b2 = di2;
+        std::int32_t bn = -1;
+        const glm::vec3 p = s.points[a];
+        for (std::size_t j = 0; j < nodes.size(); ++j) {
+            const float d2 = distance2(p, nodes[j]);
+            if (d2 < b2) {
+                b2 = d2;
+                bn = static_cast<std::int32_t>(j);
+            }
+        }
+        s.best2[a] = b2;
+        s.bestNode[a] = bn;
+        if (b2 < dk2) s.killed[a] = 1;
+    }
+}
+
+/// Cached closest node per point. Nodes never move and points only die, so the closest node
+/// can change only to a node added since the last update; nodes are visited in increasing index
+/// order with a strict '<', which reproduces the oracle's lowest-index tie-breaking exactly.
+/// Points are kept cell by cell (PointGrid cells) in struct-of-arrays form, live points first,
+/// so both inner loops are branch-free and vectorize. A cell is skipped for a new node when the
+/// node is no closer to the cell's bounds than the worst cached distance of its live points
+/// (no point of it could improve); the bound holds in float arithmetic, so skipping never
+/// changes a result.
+class AcceleratedSearch {
+public:
+    AcceleratedSearch(const std::vector<glm::vec3>& points, float di) {
+        const PointGrid grid(points, cellSizeFor(points, di));
+        std::size_t total = 0;
+        for (const PointGrid::Cell& c : grid.cells())
+            total += padded(c.end - c.begin);
+        mX.resize(total);
+        mY.resize(total);
+        mZ.resize(total);
+        mBest2.resize(total);
+        mNode.resize(total);
+        mId.resize(total);
+        std::uint32_t begin = 0;
+        for (const PointGrid::Cell& c : grid.cells()) {
+            const std::uint32_t n = c.end - c.begin;
+            for (std::uint32_t k = 0; k < n; ++k) {
+                const std::uint32_t i = grid.order()[c.begin + k];
+                mX[begin + k] = points[i].x;
+                mY[begin + k] = points[i].y;
+                mZ[begin + k] = points[i].z;
+                mBest2[begin + k] = di * di;
+                mNode[begin + k] = -1;
+                mId[begin + k] = i;
+            }
+            clearPadding(begin, n);
+            mActive.push_back(static_cast<std::uint32_t>(mCells.size()));
+            mCells.push_back({begin, n, di * di, c.lo, c.hi});
+            begin += padded(n);
+        }
+    }
+
+    void update(PointState& s, const std::vector<glm::vec3>& nodes, std::size_t firstNew,
+                float dk2) {
+        const std::size_t newNodes = nodes.size() - firstNew;
+        mNX.resize(newNodes);
+        mNY.resize(newNodes);
+        mNZ.resize(newNodes);
+        for (std::size_t j = 0; j < newNodes; ++j) {
+            mNX[j] = nodes[firstNew + j].x;
+            mNY[j] = nodes[firstNew + j].y;
+            mNZ[j] = nodes[firstNew + j].z;
+        }
+        const auto cellCount = static_cast<std::int64_t>(mActive.size());
+        // Each cell is owned by one thread and its points see the nodes in index order, so the
+        // result does not depend on the number of threads. Small updates stay serial: waking
+        // a team costs more than they do.
+        const bool parallel = cellCount * static_cast<std::int64_t>(newNodes) > 200000;
+#pragma omp parallel for schedule(dynamic, 32) if (parallel)
+        for (std::int64_t k = 0; k < cellCount; ++k)
+            updateCell(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
+        std::erase_if(mActive, [this](std::uint32_t c) { return mCells[c].live == 0; });
+    }
+
+private:
+    struct Cell {
+        std::uint32_t begin; ///< into the point arrays; storage is padded to 4 lanes
+        std::uint32_t live;  ///< live points, stored first
+        float max2;          ///< largest cached best2 of the live points
+        glm::vec3 lo, hi;    ///< bounds of all the cell's points
+    };
+
+    static std::uint32_t padded(std::uint32_t n) {
+        return (n + 3u) & ~3u;
+    }
+
+    // Inert lanes: an infinite distance never beats anything and 0 never raises the maximum.
+    void clearPadding(std::uint32_t begin, std::uint32_t live) {
+        const float inf = std::numeric_limits<float>::infinity();
+        for (std::uint32_t k = live; k < padded(live); ++k) {
+            mX[begin + k] = mY[begin + k] = mZ[begin + k] = inf;
+            mBest2[begin + k] = 0.0f;
+            mNode[begin + k] = -1;
+            mId[begin + k] = 0;
+        }
+    }
+
+    void updateCell(PointState& s, Cell& cell, std::size_t firstNew, float dk2) {
+        const std::size_t newNodes = mNX.size();
+        const float* nx = mNX.data();
+        const float* ny = mNY.data();
+        const float* nz = mNZ.data();
+        const float lx = cell.lo.x, ly = cell.lo.y, lz = cell.lo.z;
+        const float hx = cell.hi.x, hy = cell.hi.y, hz = cell.hi.z;
+        float* X = mX.data() + cell.begin;
+        float* Y = mY.data() + cell.begin;
+        float* Z = mZ.data() + cell.begin;
+        float* B = mBest2.data() + cell.begin;
+        std::int32_t* N = mNode.data() + cell.begin;
+        const std::uint32_t* I = mId.data() + cell.begin;
+        const std::uint32_t lanes = padded(cell.live);
+        float max2 = cell.max2;
+        bool anyKill = false;
+
+        // Offers new node j to every live point of the cell (the oracle's distance2 expression
+        // and strict '<'), publishes improvements to the shared state and tightens max2.
+        auto improved = [&](std::uint32_t i, std::int32_t node) {
+            s.best2[I[i]] = B[i];
+            s.bestNode[I[i]] = node;
+            anyKill |= B[i] < dk2;
+        };
+        auto process = [&](std::size_t j) {
+            const float px = nx[j], py = ny[j], pz = nz[j];
+            const auto node = static_cast<std::int32_t>(firstNew + j);
+#if defined(__SSE2__)
+            const __m128 vx = _mm_set1_ps(px), vy = _mm_set1_ps(py), vz = _mm_set1_ps(pz);
+            const __m128i vnode = _mm_set1_epi32(node);
+            __m128 vm = _mm_setzero_ps();
+            for (std::uint32_t i = 0; i < lanes; i += 4) {
+                const __m128 dx = _mm_sub_ps(_mm_loadu_ps(X + i), vx);
+                const __m128 dy = _mm_sub_ps(_mm_loadu_ps(Y + i), vy);
+                const __m128 dz = _mm_sub_ps(_mm_loadu_ps(Z + i), vz);
+                const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
+                                             _mm_mul_ps(dz, dz));
+                __m128 b = _mm_loadu_ps(B + i);
+                const __m128 better = _mm_cmplt_ps(d2, b);
+                int mask = _mm_movemask_ps(better);
+                if (mask != 0) {
+                    b = _mm_or_ps(_mm_and_ps(better, d2), _mm_andnot_ps(better, b));
+                    _mm_storeu_ps(B + i, b);
+                    const __m128i m = _mm_castps_si128(better);
+                    auto* np = reinterpret_cast<__m128i*>(N + i);
+                    _mm_storeu_si128(np, _mm_or_si128(_mm_and_si128(m, vnode),
+                                                      _mm_andnot_si128(m, _mm_loadu_si128(np))));
+                    for (; mask != 0; mask &= mask - 1)
+                        improved(i + static_cast<std::uint32_t>(
+                                         __builtin_ctz(static_cast<unsigned>(mask))),
+                                 node);
+                }
+                vm = _mm_max_ps(vm, b);
+            }
+            alignas(16) float m4[4];
+            _mm_store_ps(m4, vm);
+            max2 = std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3]));
+#else
+            float m = 0.0f;
+            for (std::uint32_t i = 0; i < lanes; ++i) {
+                const float dx = X[i] - px;
+                const float dy = Y[i] - py;
+                const float dz = Z[i] - pz;
+                const float d2 = (dx * dx + dy * dy) + dz * dz;
+                if (d2 < B[i]) {
+                    B[i] = d2;
+                    N[i] = node;
+                    improved(i, node);
+                }
+                m = std::max(m, B[i]);
+            }
+            max2 = m;
+#endif
+        };
+
+        // The node-to-cell bound is PointGrid::boxDistance2, written branch-free. max2 only
+        // shrinks while nodes are processed, so a node that fails the test stays skipped; one
+        // tested against a stale max2 is processed for nothing but changes no result.
+        std::size_t j = 0;
+#if defined(__SSE2__)
+        {
+            const __m128 vlx = _mm_set1_ps(lx), vly = _mm_set1_ps(ly), vlz = _mm_set1_ps(lz);
+            const __m128 vhx = _mm_set1_ps(hx), vhy = _mm_set1_ps(hy), vhz = _mm_set1_ps(hz);
+            const __m128 zero = _mm_setzero_ps();
+            for (; j + 4 <= newNodes; j += 4) {
+                const __m128 x = _mm_loadu_ps(nx + j);
+                const __m128 y = _mm_loadu_ps(ny + j);
+                const __m128 z = _mm_loadu_ps(nz + j);
+                const __m128 dx =
+                    _mm_max_ps(_mm_max_ps(_mm_sub_ps(vlx, x), _mm_sub_ps(x, vhx)), zero);
+                const __m128 dy =
+                    _mm_max_ps(_mm_max_ps(_mm_sub_ps(vly, y), _mm_sub_ps(y, vhy)), zero);
+                const __m128 dz =
+                    _mm_max_ps(_mm_max_ps(_mm_sub_ps(vlz, z), _mm_sub_ps(z, vhz)), zero);
+                const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
+                                             _mm_mul_ps(dz, dz));
+                int mask = _mm_movemask_ps(_mm_cmplt_ps(d2, _mm_set1_ps(max2)));
+                for (; mask != 0; mask &= mask - 1)
+                    process(j +
+                            static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask))));
+            }
+        }
+#endif
+        for (; j < newNodes; ++j) {
+            const float dx = std::max(std::max(lx - nx[j], nx[j] - hx), 0.0f);
+            const float dy = std::max(std::max(ly - ny[j], ny[j] - hy), 0.0f);
+            const float dz = std::max(std::max(lz - nz[j], nz[j] - hz), 0.0f);
+            if ((dx * dx + dy * dy) + dz * dz < max2) process(j);
+        }
+        cell.max2 = max2;
+        if (!anyKill) return;
+
+        std::uint32_t kept = 0;
+        float keptMax = 0.0f;
+        for (std::uint32_t i = 0; i < cell.live; ++i) {
+            if (B[i] < dk2) {
+                s.killed[I[i]] = 1;
+                continue;
+            }
+            X[kept] = X[i];
+            Y[kept] = Y[i];
+            Z[kept] = Z[i];
+            B[kept] = B[i];
+            N[kept] = N[i];
+            mId[cell.begin + kept] = I[i];
+            keptMax = std::max(keptMax, B[i]);
+            ++kept;
+        }
+        cell.live = kept;
+        cell.max2 = keptMax;
+        clearPadding(cell.begin, kept);
+    }
+
+    // About kPointsPerCell points per cell, never finer than d_i / 8 (the pruning works on
+    // cells: smaller cells prune more points but cost more node-to-cell tests).
+    static float cellSizeFor(const std::vector<glm::vec3>& points, float di) {
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (const glm::vec3& p : points) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        const glm::dvec3 e = glm::max(glm::dvec3(hi - lo), glm::dvec3(1e-3));
+        const double h =
+            std::cbrt(e.x * e.y * e.z * kPointsPerCell / static_cast<double>(points.size()));
+        return static_cast<float>(std::max(h, static_cast<double>(di) / 8.0));
+    }
+    static constexpr double kPointsPerCell = 8.0;
+
+    std::vector<float> mX, mY, mZ, mBest2; ///< per point, grouped by cell, padded
+    std::vector<std::int32_t> mNode;
+    std::vector<std::uint32_t> mId;
+    std::vector<Cell> mCells;
+    std::vector<std::uint32_t> mActive; ///< cells with live points
+    std::vector<float> mNX, mNY, mNZ;   ///< the nodes added since the last update
+};
+
+glm::vec3 randomUnit(Rng& rng) {
+    const double z = rng.uniform(-1.0, 1.0);
+    const double phi = rng.uniform(0.0, 2.0 * 3.14159265358979323846);
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return glm::vec3(static_cast<float>(r * std::cos(phi)), static_cast<float>(z),
+                     static_cast<float>(r * std::sin(phi)));
+}
+
+glm::quat transport(const glm::quat& parent, const glm::vec3& dir) {
+    return glm::normalize(glm::rotation(skel::headingOf(parent), dir) * parent);
+}
+
+void buildTrunk(skel::Skeleton& skel, const std::vector<glm::vec3>& points,
+                const ColonizationParams& p) {
+    const glm::quat up(1, 0, 0, 0);
+    skel.addNode(p.root, -1, 0.0f, 0, up);
+    if (p.trunkHeight > 0.0f) {
+        const int n =
+            std::max(1, static_cast<int>(std::ceil(p.trunkHeight / p.segmentLength - 1e-4f)));
+        for (int i = 1; i <= n; ++i)
+            skel.addNode(p.root + glm::vec3(0, p.trunkHeight * static_cast<float>(i) / n, 0),
+                         static_cast<std::int32_t>(skel.size() - 1), 0.0f, 0, up);
+    }
+    // Grow the trunk on up to the crown, as Runions et al. do, when it stops short of it.
+    float top = -std::numeric_limits<float>::max();
+    for (const glm::vec3& a : points)
+        top = std::max(top, a.y);
+    const float di2 = p.influenceDistance * p.influenceDistance;
+    for (;;) {
+        const glm::vec3 tip = skel.position.back();
+        bool inReach = false;
+        for (const glm::vec3& a : points)
+            if (distance2(a, tip) < di2) {
+                inReach = true;
+                break;
+            }
+        if (inReach || tip.y >= top || skel.size() >= kMaxColonizationNodes) break;
+        skel.addNode(tip + glm::vec3(0, p.segmentLength, 0),
+                     static_cast<std::int32_t>(skel.size() - 1), 0.0f, 0, up);
+    }
+}
+
+} // namespace
+
+ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
+                            const ColonizationParams& params, const skel::Skeleton* initial,
+                            NeighbourSearch search, Progress& progress) {
+    validate(params);
+    for (const glm::vec3& a : attractors)
+        if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(a.z))
+            throw InvalidInput("attraction points must be finite");
+    if (attractors.size() > std::numeric_limits<std::int32_t>::max())
+        throw LimitExceeded("too many attraction points");
+
+    ColonizationResult result;
+    skel::Skeleton& skel = result.skeleton;
+    if (initial != nullptr && !initial->empty()) {
+        initial->validate();
+        skel = *initial;
+    } else {
+        buildTrunk(skel, attractors, params);
+    }
+    result.initialNodes = skel.size();
+
+    const float di2 = params.influenceDistance * params.influenceDistance;
+    const float dk2 = params.killDistance * params.killDistance;
+    const float D = params.segmentLength;
+
+    PointState s{attractors,
+                 std::vector<float>(attractors.size(), di2),
+                 std::vector<std::int32_t>(attractors.size(), -1),
+                 std::vector<std::uint8_t>(attractors.size(), 0),
+                 {}};
+    s.live.resize(attractors.size());
+    for (std::size_t i = 0; i < attractors.size(); ++i)
+        s.live[i] = static_cast<std::uint32_t>(i);
+
+    std::unique_ptr<AcceleratedSearch> fast;
+    if (search == NeighbourSearch::Accelerated && !attractors.empty())
+        fast = std::make_unique<AcceleratedSearch>(attractors, params.influenceDistance);
+
+    // Per-node scratch, grown with the skeleton.
+    std::vector<glm::vec3> sum;
+    std::vector<std::uint32_t> count;
+    std::vector<std::uint64_t> setHash;
+    std::vector<float> nearest2;
+    std::vector<std::uint32_t> nearest;
+    std::vector<std::uint64_t> lastHash;
+    std::vector<std::uint32_t> lastCount;
+    std::vector<int> lastGrown;
+    std::vector<std::uint32_t> attracted;
+
+    Rng rng(mixSeed(params.seed, 0x636f6c6f6e697a65ull)); // "colonize"
+    std::size_t firstNew = 0;
+    for (int iteration = 0;; ++iteration) {
+        progress.checkCancelled();
+        // 1. closest nodes and the kill zone
+        if (fast)
+            fast->update(s, skel.position, firstNew, dk2);
+        else
+            updateNaive(s, skel.position, di2, dk2);
+        std::erase_if(s.live, [&s](std::uint32_t a) { return s.killed[a] != 0; });
+        firstNew = skel.size();
+        if (s.live.empty()) {
+            result.stopReason = StopReason::NoPointsLeft;
+            break;
+        }
+        if (iteration >= params.maxIterations) {
+            result.stopReason = StopReason::IterationCap;
+            break;
+        }
+
+        // 2. sum the unit vectors per node, in point index order
+        const std::size_t n = skel.size();
+        sum.resize(n);
+        count.resize(n, 0);
+        setHash.resize(n);
+        nearest2.resize(n);
+        nearest.resize(n);
+        lastHash.resize(n, 0);
+        lastCount.resize(n, 0);
+        lastGrown.resize(n, -2);
+        attracted.clear();
+        for (std::uint32_t a : s.live) {
+            const std::int32_t bn = s.bestNode[a];
+            if (bn < 0) continue;
+            const auto j = static_cast<std::size_t>(bn);
+            if (count[j]++ == 0) {
+                attracted.push_back(static_cast<std::uint32_t>(j));
+                sum[j] = glm::vec3(0.0f);
+                setHash[j] = 0x243F6A8885A308D3ull;
+                nearest2[j] = std::numeric_limits<float>::infinity();
+            }
+            sum[j] += (s.points[a] - skel.position[j]) * (1.0f / std::sqrt(s.best2[a]));
+            setHash[j] = mixSeed(setHash[j], a);
+            if (s.best2[a] < nearest2[j]) {
+                nearest2[j] = s.best2[a];
+                nearest[j] = a;
+            }
+        }
+        if (attracted.empty()) {
+            result.stopReason = StopReason::NothingInReach;
+            break;
+        }
+        std::sort(attracted.begin(), attracted.end());
+
+        // 3. grow one segment from every attracted node, in node index order
+        if (skel.size() + attracted.size() > kMaxColonizationNodes)
+            throw LimitExceeded("space colonization would exceed " +
+                                std::to_string(kMaxColonizationNodes) +
+                                " nodes; use fewer attraction points or a longer segment_length");
+        for (std::uint32_t j : attracted) {
+            const glm::vec3 origin = skel.position[j];
+            const float len = glm::length(sum[j]);
+            const bool cancelled = len <= 1e-5f * static_cast<float>(count[j]);
+            const bool repeated = !cancelled && lastGrown[j] == iteration - 1 &&
+                                  lastHash[j] == setHash[j] && lastCount[j] == count[j];
+            glm::vec3 dir;
+            if (cancelled || repeated) {
+                dir = (s.points[nearest[j]] - origin) * (1.0f / std::sqrt(nearest2[j]));
+                ++(cancelled ? result.zeroAverageFixes : result.oscillationFixes);
+            } else {
+                const glm::vec3 mean = sum[j] / len;
+                dir = mean;
+                if (params.randomness > 0.0f) dir += params.randomness * randomUnit(rng);
+                dir += params.tropism;
+                const float l = glm::length(dir);
+                dir = l > 1e-6f ? dir / l : mean;
+            }
+            lastGrown[j] = iteration;
+            lastHash[j] = setHash[j];
+            lastCount[j] = count[j];
+            count[j] = 0;
+            skel.addNode(origin + D * dir, static_cast<std::int32_t>(j), 0.0f, skel.order[j],
+                         transport(skel.orientation[j], dir));
+        }
+        result.iterations = iteration + 1;
+        progress.report(static_cast<double>(iteration + 1) / params.maxIterations, "grow");
+    }
+
+    result.killed = std::move(s.killed);
+    result.killedCount = attractors.size() - s.live.size();
+
+    // Thickness, then branch orders: the thickest new child continues its parent's axis.
+    applyPipeModel(skel, params.tipRadius, params.pipeExponent);
+    const std::size_t n0 = result.initialNodes;
+    std::vector<std::uint8_t> hasInitialChild(skel.size(), 0);
+    for (std::size_t i = 0; i < n0; ++i)
+        if (skel.parent[i] >= 0) hasInitialChild[static_cast<std::size_t>(skel.parent[i])] = 1;
+    std::vector<std::int32_t> mainChild(skel.size(), -1);
+    for (std::size_t i = n0; i < skel.size(); ++i) {
+        const auto p = static_cast<std::size_t>(skel.parent[i]);
+        if (hasInitialChild[p]) continue;
+        const std::int32_t cur = mainChild[p];
+        if (cur < 0 || skel.radius[i] > skel.radius[static_cast<std::size_t>(cur)])
+            mainChild[p] = static_cast<std::int32_t>(i);
+    }
+    for (std::size_t i = n0; i < skel.size(); ++i) {
+        const auto p = static_cast<std::size_t>(skel.parent[i]);
+        const int o = skel.order[p] + (mainChild[p] == static_cast<std::int32_t>(i) ? 0 : 1);
+        skel.order[i] = static_cast<std::uint16_t>(std::min(o, 65535));
+    }
+    skel.finalize();
+    return result;
+}
+
+} // namespace sylva::growth

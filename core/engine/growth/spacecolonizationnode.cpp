@@ -1,0 +1,209 @@
+#include "engine/growth/spacecolonizationnode.h"
+
+#include <chrono>
+#include <cmath>
+#include <set>
+
+#include "engine/growth/envelope.h"
+#include "engine/growth/spacecolonization.h"
+#include "engine/util/error.h"
+
+namespace sylva::growth {
+
+namespace {
+
+using graph::Value;
+
+glm::vec3 vec3Param(const Value& obj, const std::string& key, const glm::vec3& fallback,
+                    const std::string& what) {
+    const Value* v = obj.find(key);
+    if (v == nullptr) return fallback;
+    const Value::Array& a = v->toArray(what);
+    if (a.size() != 3) throw InvalidInput(what + " must be an array of 3 numbers");
+    glm::vec3 r;
+    for (int i = 0; i < 3; ++i) {
+        const double x = a[static_cast<std::size_t>(i)].toNumber(what);
+        if (!std::isfinite(x)) throw InvalidInput(what + " must be finite");
+        r[i] = static_cast<float>(x);
+    }
+    return r;
+}
+
+void checkKeys(const Value& obj, const std::set<std::string>& allowed, const std::string& what) {
+    for (const auto& [key, value] : obj.toObject(what)) {
+        (void)value;
+        if (allowed.count(key) == 0) {
+            std::string list;
+            for (const std::string& k : allowed)
+                list += (list.empty() ? "" : ", ") + k;
+            throw InvalidInput(what + ": unknown key '" + key + "' (allowed: " + list + ")");
+        }
+    }
+}
+
+float positive(const Value& obj, const std::string& key, double fallback, double hi,
+               const std::string& what) {
+    const double v = obj.number(key, fallback);
+    if (!(v > 0.0) || !(v <= hi))
+        throw InvalidInput(what + "." + key + " must be in (0, " + std::to_string(hi) + "], got " +
+                           std::to_string(v));
+    return static_cast<float>(v);
+}
+
+} // namespace
+
+Envelope envelopeFromParams(const Value& env, const graph::NodeContext& ctx) {
+    const std::string what = "envelope";
+    env.toObject(what);
+    const EnvelopeShape shape = envelopeShapeFromName(env.string("shape", "sphere"));
+    const glm::vec3 center = vec3Param(env, "center", glm::vec3(0, 6, 0), what + ".center");
+    switch (shape) {
+    case EnvelopeShape::Sphere:
+        checkKeys(env, {"shape", "center", "radius"}, what);
+        return Envelope::sphere(center, positive(env, "radius", 4.5, 1000, what));
+    case EnvelopeShape::Ellipsoid:
+        checkKeys(env, {"shape", "center", "radii"}, what);
+        return Envelope::ellipsoid(center,
+                                   vec3Param(env, "radii", glm::vec3(4, 3, 4), what + ".radii"));
+    case EnvelopeShape::Cone:
+        checkKeys(env, {"shape", "center", "radius", "height", "inverted"}, what);
+        return Envelope::cone(center, positive(env, "radius", 3, 1000, what),
+                              positive(env, "height", 6, 1000, what),
+                              env.boolean("inverted", false));
+    case EnvelopeShape::Cylinder:
+        checkKeys(env, {"shape", "center", "radius", "height"}, what);
+        return Envelope::cylinder(center, positive(env, "radius", 2, 1000, what),
+                                  positive(env, "height", 6, 1000, what));
+    case EnvelopeShape::Hemisphere:
+        checkKeys(env, {"shape", "center", "radius"}, what);
+        return Envelope::hemisphere(center, positive(env, "radius", 4.5, 1000, what));
+    case EnvelopeShape::Profile: {
+        checkKeys(env, {"shape", "center", "radius", "height", "profile"}, what);
+        const Value* prof = env.find("profile");
+        if (prof == nullptr)
+            throw InvalidInput("envelope.profile is required for shape 'profile': a list of "
+                               "[t, radius] pairs or a Weber-Penn shape name");
+        std::vector<glm::vec2> points;
+        if (prof->isString()) {
+            points = Envelope::weberPennProfile(prof->toString());
+        } else {
+            for (const Value& p : prof->toArray("envelope.profile")) {
+                const Value::Array& pair = p.toArray("envelope.profile point");
+                if (pair.size() != 2)
+                    throw InvalidInput("envelope.profile points must be [t, radius] pairs");
+                points.emplace_back(
+                    static_cast<float>(pair[0].toNumber("envelope.profile t")),
+                    static_cast<float>(pair[1].toNumber("envelope.profile radius")));
+            }
+        }
+        return Envelope::profile(center, positive(env, "radius", 3, 1000, what),
+                                 positive(env, "height", 6, 1000, what), std::move(points));
+    }
+    case EnvelopeShape::Mesh: {
+        checkKeys(env, {"shape", "file", "scale", "offset", "center"}, what);
+        const Value* file = env.find("file");
+        if (file == nullptr) throw InvalidInput("envelope.file is required for shape 'mesh'");
+        const glm::vec3 offset = vec3Param(env, "offset", glm::vec3(0.0f), what + ".offset");
+        return Envelope::loadMesh(ctx.resolve(file->toString("envelope.file")),
+                                  positive(env, "scale", 1, 1e6, what), offset);
+    }
+    }
+    throw InvalidInput("unknown envelope shape");
+}
+
+void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
+    graph::NodeType type;
+    type.name = "space_colonization";
+    type.minInputs = 0;
+    type.maxInputs = 1;
+    type.knownParams = {"attractors",
+                        "envelope",
+                        "influence_distance",
+                        "kill_distance",
+                        "segment_length",
+                        "randomness",
+                        "tropism",
+                        "trunk_height",
+                        "root",
+                        "max_iterations",
+                        "pipe_exponent",
+                        "tip_radius",
+                        "seed"};
+    type.evaluate = [](const graph::NodeContext& ctx) -> graph::NodeOutput {
+        using Clock = std::chrono::steady_clock;
+        const Value& p = ctx.params;
+        ColonizationParams cp;
+        std::int64_t count = 0;
+        std::uint64_t seed = 0;
+        Envelope envelope = Envelope::sphere(glm::vec3(0, 6, 0), 4.5f);
+        try {
+            count = p.integer("attractors", 3000);
+            if (count < 1 || count > 2'000'000)
+                throw InvalidInput("attractors must be in [1, 2000000], got " +
+                                   std::to_string(count));
+            cp.influenceDistance = static_cast<float>(p.number("influence_distance", 3.0));
+            cp.killDistance = static_cast<float>(p.number("kill_distance", 0.6));
+            cp.segmentLength = static_cast<float>(p.number("segment_length", 0.2));
+            cp.randomness = static_cast<float>(p.number("randomness", 0.147));
+            cp.tropism = vec3Param(p, "tropism", glm::vec3(0.0f), "tropism");
+            cp.trunkHeight = static_cast<float>(p.number("trunk_height", 2.0));
+            cp.root = vec3Param(p, "root", glm::vec3(0.0f), "root");
+            const std::int64_t iters = p.integer("max_iterations", 1000);
+            if (iters < 1 || iters > 100000)
+                throw InvalidInput("max_iterations must be in [1, 100000], got " +
+                                   std::to_string(iters));
+            cp.maxIterations = static_cast<int>(iters);
+            cp.pipeExponent = static_cast<float>(p.number("pipe_exponent", 2.41));
+            cp.tipRadius = static_cast<float>(p.number("tip_radius", 0.01));
+            const std::int64_t s = p.integer("seed", 1);
+            if (s < 0) throw InvalidInput("seed must be >= 0, got " + std::to_string(s));
+            seed = ctx.seedOverridden ? ctx.seed : static_cast<std::uint64_t>(s);
+            cp.seed = seed;
+            validate(cp);
+            const Value* env = p.find("envelope");
+            if (env != nullptr) envelope = envelopeFromParams(*env, ctx);
+        } catch (const InvalidInput& e) {
+            ctx.fail(e.what());
+        }
+
+        const skel::Skeleton* initial = nullptr;
+        if (!ctx.inputs.empty()) {
+            if (ctx.inputs[0] == nullptr || !ctx.inputs[0]->skeleton)
+                ctx.fail("the input node gives no skeleton to grow from");
+            initial = ctx.inputs[0]->skeleton.get();
+        }
+
+        graph::NodeOutput out;
+        if (!ctx.inputs.empty()) {
+            out.stats = ctx.inputs[0]->stats;
+            out.timingsMs = ctx.inputs[0]->timingsMs;
+        }
+        const auto t0 = Clock::now();
+        const std::vector<glm::vec3> points =
+            envelope.sample(static_cast<std::size_t>(count), seed);
+        const auto t1 = Clock::now();
+        ColonizationResult r =
+            colonize(points, cp, initial, NeighbourSearch::Accelerated, ctx.progress);
+        const auto t2 = Clock::now();
+
+        auto ms = [](auto a, auto b) {
+            return std::chrono::duration<double, std::milli>(b - a).count();
+        };
+        out.timingsMs["attractors"] += ms(t0, t1);
+        out.timingsMs["grow"] += ms(t1, t2);
+        out.stats["segments"] = static_cast<double>(r.skeleton.segmentCount());
+        out.stats["nodes"] = static_cast<double>(r.skeleton.size());
+        out.stats["attractors"] = static_cast<double>(points.size());
+        out.stats["attractors_killed"] = static_cast<double>(r.killedCount);
+        out.stats["attractors_left"] = static_cast<double>(points.size() - r.killedCount);
+        out.stats["iterations"] = r.iterations;
+        out.stats["stop_reason"] = static_cast<double>(static_cast<int>(r.stopReason));
+        out.stats["zero_average_fixes"] = static_cast<double>(r.zeroAverageFixes);
+        out.stats["oscillation_fixes"] = static_cast<double>(r.oscillationFixes);
+        out.skeleton = std::make_shared<const skel::Skeleton>(std::move(r.skeleton));
+        return out;
+    };
+    registry.add(std::move(type));
+}
+
+} // namespace sylva::growth

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "engine/graph/graph.h"
+
+namespace sylva::growth {
+
+/// Registers the `space_colonization` node type: 0 inputs (a trunk of trunk_height from root)
+/// or 1 input whose skeleton is the initial skeleton. Parameters and ranges are listed in
+/// docs/space-colonization.md. Output: the skeleton; stats segments, nodes, attractors,
+/// attractors_killed, attractors_left, iterations, stop_reason (0 no points left, 1 nothing in
+/// reach, 2 iteration cap), zero_average_fixes, oscillation_fixes; timings "attractors" (sampling)
+/// and "grow" (colonization and pipe model), milliseconds.
+void registerSpaceColonizationNode(graph::NodeRegistry& registry);
+
+/// Builds the attraction-point envelope from the node's `envelope` object; mesh files resolve
+/// through \p ctx. Exposed for tests and the editor's envelope preview.
+class Envelope;
+Envelope envelopeFromParams(const graph::Value& envelope, const graph::NodeContext& ctx);
+
+} // namespace sylva::growth

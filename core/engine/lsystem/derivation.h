@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "engine/lsystem/grammar.h"
+#include "engine/lsystem/modulestring.h"
+#include "engine/util/progress.h"
+
+namespace sylva::lsys {
+
+struct DeriveOptions {
+    std::optional<int> generations;       ///< overrides Grammar::generations (>= 0)
+    std::optional<std::uint64_t> seed;    ///< overrides Grammar::seed
+    std::size_t symbolLimit = 20'000'000; ///< most modules any generation may hold
+};
+
+/// Rewrites the axiom `generations` times (ABOP rule choice, see docs/grammar.md).
+/// Context-free deterministic grammars without parameters take a table-driven path whose next
+/// length is known exactly before any memory is spent; other grammars never hold more than
+/// `symbolLimit` modules either.
+/// \throw LimitExceeded naming the generation that would exceed `symbolLimit`.
+/// \throw InvalidInput with a Diagnostic at the failing expression (division by zero, a
+///        non-finite value) naming the rule.
+/// \throw Cancelled when \p progress asks to stop (checked between generations and every
+///        million modules).
+/// Stochastic choices and rand() draw from sylva::Rng seeded by mixSeed(seed, generation), so
+/// the result depends only on the grammar, the generation count and the seed.
+ModuleString derive(const Grammar& g, const DeriveOptions& opt = {}, Progress& p = noProgress());
+
+/// Shortest text form without spaces: "A(4)B(3)F[+F]" (numbers in the shortest form that reads
+/// back to the same double; parameters separated by ',').
+std::string formatModules(const ModuleString& s);
+
+} // namespace sylva::lsys

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <vector>
+
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
+
+namespace sylva::mesh {
+
+/// Shape of the leaf cards.
+struct LeafCardSettings {
+    double aspect = 0.5;    ///< card width / card length, (0, 4]
+    double sizeScale = 1.0; ///< multiplies every Leaf::size, (0, 100]
+};
+
+/// Appends one card (4 vertices, 2 triangles) per leaf as a "leaf" submesh. A card starts at
+/// Leaf::position and extends Leaf::size metres along the leaf's heading, aspect·size wide
+/// along its left axis; its normal is the leaf's up axis. UVs: u = 0..1 across, v = 0 at the
+/// stem to 1 at the tip, so a leaf texture stands upright. When \p skeleton is given and the
+/// mesh carries wind attributes, leaves take their node's branch order and flexibility 1.
+void appendLeafCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
+                     const LeafCardSettings& settings, const skel::Skeleton* skeleton = nullptr);
+
+} // namespace sylva::mesh

@@ -1,0 +1,151 @@
+#include "engine/mesh/leafplacement.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+
+namespace sylva::mesh {
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+glm::vec3 perpendicular(const glm::vec3& t, const glm::vec3& hint) {
+    glm::vec3 p = hint - glm::dot(hint, t) * t;
+    if (glm::dot(p, p) < 1e-8f) {
+        const glm::vec3 a = std::abs(t.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+        p = glm::cross(t, a);
+    }
+    return glm::normalize(p);
+}
+
+struct Placer {
+    const LeafPlacement& p;
+    glm::vec3 light;
+    std::vector<skel::Leaf>& out;
+
+    // A leaf at \p base on a branch with tangent \p t, radial direction \p radial.
+    void leaf(const glm::vec3& base, const glm::vec3& t, const glm::vec3& radial, float forward,
+              Rng& rng, std::int32_t node) {
+        const float pa = static_cast<float>(p.petioleAngle * kDeg);
+        glm::vec3 h = glm::normalize(std::sin(pa) * radial + std::cos(pa) * t + forward * t);
+        glm::vec3 n = static_cast<float>(p.normalWeight) * radial +
+                      static_cast<float>(p.upWeight) * glm::vec3(0, 1, 0) +
+                      static_cast<float>(p.lightWeight) * light;
+        // The card must not contain its own normal: keep n perpendicular to the heading.
+        n -= glm::dot(n, h) * h;
+        if (glm::dot(n, n) < 1e-8f) n = perpendicular(h, glm::cross(h, t) + radial);
+        n = glm::normalize(n);
+        const glm::vec3 l = glm::cross(n, h); // U × H = L for a right-handed H, L, U frame
+        skel::Leaf leaf;
+        leaf.position = base;
+        leaf.orientation = glm::normalize(glm::quat_cast(glm::mat3(-l, h, n)));
+        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
+        leaf.size = static_cast<float>(p.size * (1.0 + v));
+        leaf.node = node;
+        out.push_back(leaf);
+    }
+
+    // Angles of the leaves at position index k (radians).
+    void angles(std::uint64_t k, std::vector<double>& a) const {
+        a.clear();
+        switch (p.phyllotaxis) {
+        case Phyllotaxis::Alternate:
+            a.push_back(std::numbers::pi * static_cast<double>(k % 2));
+            break;
+        case Phyllotaxis::Opposite: {
+            const double base = 0.5 * std::numbers::pi * static_cast<double>(k % 2);
+            a.push_back(base);
+            a.push_back(base + std::numbers::pi);
+            break;
+        }
+        case Phyllotaxis::Whorled: {
+            const double gap = 2.0 * std::numbers::pi / p.whorlCount;
+            const double base = 0.5 * gap * static_cast<double>(k % 2);
+            for (int i = 0; i < p.whorlCount; ++i)
+                a.push_back(base + gap * i);
+            break;
+        }
+        case Phyllotaxis::Spiral:
+            a.push_back(137.5 * kDeg * static_cast<double>(k % 100000));
+            break;
+        }
+    }
+};
+
+} // namespace
+
+std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement& p) {
+    requireRange("whorl_count", p.whorlCount, 2, 12);
+    requireRange("size", p.size, 1e-6, 100.0);
+    requireRange("size_variation", p.sizeVariation, 0.0, 1.0);
+    requireRange("density", p.density, 0.0, 1000.0);
+    requireRange("tip_count", p.tipCount, 0, 32);
+    requireRange("max_branch_radius", p.maxBranchRadius, 0.0, 1e3);
+    requireRange("petiole_angle", p.petioleAngle, 0.0, 90.0);
+    requireRange("normal_weight", p.normalWeight, 0.0, 1e3);
+    requireRange("up_weight", p.upWeight, 0.0, 1e3);
+    requireRange("light_weight", p.lightWeight, 0.0, 1e3);
+    s.validate();
+
+    std::vector<skel::Leaf> out;
+    if (p.keepGrammarLeaves) out = s.leaves;
+    const float ll = glm::length(p.lightDirection);
+    Placer placer{p, ll > 0.0f ? p.lightDirection / ll : glm::vec3(0, 1, 0), out};
+
+    const std::size_t n = s.size();
+    std::vector<std::uint32_t> children(n, 0);
+    std::vector<std::uint8_t> hidden(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t par = s.parent[i];
+        hidden[i] =
+            (s.flags[i] & skel::kHidden) || (par >= 0 && hidden[static_cast<std::size_t>(par)]);
+        if (par >= 0 && !hidden[i]) ++children[static_cast<std::size_t>(par)];
+    }
+    // Running position index along each axis so phyllotaxis continues across segments.
+    std::vector<std::uint64_t> index(n, 0);
+    std::vector<double> a;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t par = s.parent[i];
+        if (par < 0 || hidden[i]) continue;
+        const auto pi = static_cast<std::size_t>(par);
+        Rng rng(mixSeed(p.seed, i));
+        const glm::vec3 a0 = s.position[pi], a1 = s.position[i];
+        const float len = glm::length(a1 - a0);
+        const glm::vec3 t = len > 1e-9f ? (a1 - a0) / len : skel::headingOf(s.orientation[i]);
+        const glm::vec3 e1 = perpendicular(t, skel::upOf(s.orientation[i]));
+        const glm::vec3 e2 = glm::cross(t, e1);
+        std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
+        if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
+            const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
+            for (std::uint64_t c = 0; c < count; ++c, ++k) {
+                const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
+                const glm::vec3 axis = a0 + f * (a1 - a0);
+                const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
+                placer.angles(k, a);
+                for (double ang : a) {
+                    const glm::vec3 radial = static_cast<float>(std::cos(ang)) * e1 +
+                                             static_cast<float>(std::sin(ang)) * e2;
+                    placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
+                                static_cast<std::int32_t>(i));
+                }
+            }
+        }
+        index[i] = k;
+        if (p.atTips && children[i] == 0) {
+            for (int c = 0; c < p.tipCount; ++c) {
+                const double ang = 2.0 * std::numbers::pi * c / p.tipCount + rng.uniform(0.0, 0.5);
+                const glm::vec3 radial =
+                    static_cast<float>(std::cos(ang)) * e1 + static_cast<float>(std::sin(ang)) * e2;
+                placer.leaf(a1, t, radial, 1.0f, rng, static_cast<std::int32_t>(i));
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace sylva::mesh

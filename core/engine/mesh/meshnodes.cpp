@@ -1,0 +1,224 @@
+#include "engine/mesh/meshnodes.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "engine/graph/graph.h"
+#include "engine/mesh/leafplacement.h"
+#include "engine/mesh/lod.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+
+namespace sylva::mesh {
+
+namespace {
+
+using graph::NodeContext;
+using graph::NodeOutput;
+using graph::Value;
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+const skel::Skeleton& inputSkeleton(const NodeContext& ctx) {
+    if (ctx.inputs.empty() || !ctx.inputs[0] || !ctx.inputs[0]->skeleton)
+        ctx.fail("needs an input node that produces a skeleton");
+    return *ctx.inputs[0]->skeleton;
+}
+
+double ranged(const Value& p, const char* key, double fallback, double lo, double hi) {
+    const double v = p.number(key, fallback);
+    requireRange(key, v, lo, hi);
+    return v;
+}
+
+int rangedInt(const Value& p, const char* key, int fallback, int lo, int hi) {
+    const double v = p.number(key, fallback);
+    requireRange(key, v, lo, hi);
+    if (v != static_cast<double>(static_cast<int>(v)))
+        throw InvalidInput(std::string(key) + " must be a whole number");
+    return static_cast<int>(v);
+}
+
+LodSettings lodFromParams(const Value& p) {
+    LodSettings lod;
+    if (const Value* bands = p.find("lod_bands"); bands && !bands->isNull()) {
+        lod.bands.clear();
+        for (const Value& b : bands->toArray("lod_bands")) {
+            LodBand band;
+            if (b.isArray()) {
+                const Value::Array& a = b.toArray();
+                if (a.size() < 2 || a.size() > 3)
+                    throw InvalidInput("lod_bands entries are [distance, resolution] or "
+                                       "[distance, resolution, leaf_fraction]");
+                band.distance = a[0].toNumber("lod band distance");
+                band.resolution = static_cast<int>(a[1].toNumber("lod band resolution"));
+                if (a.size() == 3) band.leafFraction = a[2].toNumber("lod band leaf fraction");
+            } else {
+                band.distance = b.number("distance", 0.0);
+                band.resolution = static_cast<int>(b.integer("resolution", 8));
+                band.leafFraction = b.number("leaf_fraction", 1.0);
+            }
+            lod.bands.push_back(band);
+        }
+    }
+    lod.minTwigPixels = ranged(p, "lod_min_twig_pixels", lod.minTwigPixels, 0.0, 1e3);
+    lod.screenHeightPx = ranged(p, "lod_screen_height", lod.screenHeightPx, 1.0, 1e5);
+    lod.fovYDegrees = ranged(p, "lod_fov", lod.fovYDegrees, 1.0, 179.0);
+    validateLod(lod);
+    return lod;
+}
+
+} // namespace
+
+TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed) {
+    TreeMeshSettings s;
+    s.tubes.resolution = rangedInt(p, "resolution", 8, 3, 64);
+    s.tubes.caps = p.boolean("caps", true);
+    const std::string thickness = p.string("thickness", "skeleton");
+    if (thickness == "skeleton")
+        s.tubes.thickness = ThicknessMode::Skeleton;
+    else if (thickness == "branching")
+        s.tubes.thickness = ThicknessMode::Branching;
+    else
+        throw InvalidInput("thickness must be \"skeleton\" or \"branching\", got \"" + thickness +
+                           "\"");
+    s.tubes.initialThickness = ranged(p, "initial_thickness", 0.2, 0.0, 1e3);
+    s.tubes.thicknessMultiplier = ranged(p, "thickness_multiplier", 0.8, 1e-6, 1.0);
+    s.tubes.radiusScale = ranged(p, "radius_scale", 1.0, 0.0, 1e3);
+    s.tubes.windAttributes = p.boolean("wind_attributes", false);
+    s.leaves = p.boolean("leaves", true);
+    s.leafCards.aspect = ranged(p, "leaf_aspect", 0.5, 1e-6, 4.0);
+    s.leafCards.sizeScale = ranged(p, "leaf_scale", 1.0, 1e-6, 100.0);
+    const double distance = ranged(p, "lod_distance", -1.0, -1.0, 1e7);
+    s.lod = lodFromParams(p);
+    s.useLod = distance >= 0.0;
+    s.cameraDistance = std::max(distance, 0.0);
+    s.seed = seed;
+    return s;
+}
+
+namespace {
+
+NodeOutput evaluateTubeMesh(const NodeContext& ctx) {
+    const skel::Skeleton& skeleton = inputSkeleton(ctx);
+    TreeMeshSettings settings;
+    try {
+        settings = treeMeshSettingsFromParams(ctx.params, mixSeed(ctx.seed, 0x7EAF));
+    } catch (const InvalidInput& e) {
+        ctx.fail(e.what());
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    auto mesh = std::make_shared<Mesh>(buildTreeMesh(skeleton, settings, ctx.progress));
+    NodeOutput out;
+    out.timingsMs["mesh"] = msSince(t0);
+    out.skeleton = ctx.inputs[0]->skeleton;
+    out.stats["vertices"] = static_cast<double>(mesh->vertexCount());
+    out.stats["triangles"] = static_cast<double>(mesh->triangleCount());
+    if (settings.useLod)
+        out.stats["lod_band"] =
+            static_cast<double>(selectLod(settings.lod, settings.cameraDistance).band);
+    out.mesh = std::move(mesh);
+    return out;
+}
+
+Phyllotaxis phyllotaxisFrom(const std::string& s) {
+    if (s == "alternate") return Phyllotaxis::Alternate;
+    if (s == "opposite") return Phyllotaxis::Opposite;
+    if (s == "whorled") return Phyllotaxis::Whorled;
+    if (s == "spiral") return Phyllotaxis::Spiral;
+    throw InvalidInput("phyllotaxis must be \"alternate\", \"opposite\", \"whorled\" or "
+                       "\"spiral\", got \"" +
+                       s + "\"");
+}
+
+NodeOutput evaluateLeaves(const NodeContext& ctx) {
+    const skel::Skeleton& skeleton = inputSkeleton(ctx);
+    const Value& p = ctx.params;
+    LeafPlacement placement;
+    std::vector<skel::Leaf> leaves;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        const std::string where = p.string("placement", "branches_and_tips");
+        if (where == "branches") {
+            placement.atTips = false;
+        } else if (where == "tips") {
+            placement.alongBranches = false;
+        } else if (where == "grammar") {
+            placement.alongBranches = placement.atTips = false;
+            placement.keepGrammarLeaves = true;
+        } else if (where != "branches_and_tips") {
+            throw InvalidInput("placement must be \"branches\", \"tips\", \"branches_and_tips\" "
+                               "or \"grammar\", got \"" +
+                               where + "\"");
+        }
+        placement.keepGrammarLeaves = p.boolean("keep_grammar_leaves", placement.keepGrammarLeaves);
+        placement.phyllotaxis = phyllotaxisFrom(p.string("phyllotaxis", "spiral"));
+        placement.whorlCount = rangedInt(p, "whorl_count", 3, 2, 12);
+        placement.size = ranged(p, "size", placement.size, 1e-6, 100.0);
+        placement.sizeVariation = ranged(p, "size_variation", placement.sizeVariation, 0.0, 1.0);
+        placement.density = ranged(p, "density", placement.density, 0.0, 1000.0);
+        placement.tipCount = rangedInt(p, "tip_count", placement.tipCount, 0, 32);
+        placement.maxBranchRadius =
+            ranged(p, "max_branch_radius", placement.maxBranchRadius, 0.0, 1e3);
+        placement.petioleAngle = ranged(p, "petiole_angle", placement.petioleAngle, 0.0, 90.0);
+        placement.normalWeight = ranged(p, "normal_weight", placement.normalWeight, 0.0, 1e3);
+        placement.upWeight = ranged(p, "up_weight", placement.upWeight, 0.0, 1e3);
+        placement.lightWeight = ranged(p, "light_weight", placement.lightWeight, 0.0, 1e3);
+        if (const Value* light = p.find("light_direction"); light && !light->isNull()) {
+            const Value::Array& a = light->toArray("light_direction");
+            if (a.size() != 3) throw InvalidInput("light_direction must be [x, y, z]");
+            placement.lightDirection = {a[0].toNumber(), a[1].toNumber(), a[2].toNumber()};
+        }
+        placement.seed = mixSeed(ctx.seed, 0x1EAF);
+        leaves = placeLeaves(skeleton, placement);
+    } catch (const InvalidInput& e) {
+        ctx.fail(e.what());
+    }
+    auto out_skeleton = std::make_shared<skel::Skeleton>(skeleton);
+    out_skeleton->leaves = std::move(leaves);
+    NodeOutput out;
+    if (ctx.inputs[0]->mesh) {
+        // Placed after tube_mesh: append the cards of the leaves this node made.
+        auto m = std::make_shared<Mesh>(*ctx.inputs[0]->mesh);
+        const std::size_t first = placement.keepGrammarLeaves ? skeleton.leaves.size() : 0;
+        const std::vector<skel::Leaf> fresh(out_skeleton->leaves.begin() +
+                                                static_cast<std::ptrdiff_t>(first),
+                                            out_skeleton->leaves.end());
+        LeafCardSettings cards;
+        cards.aspect = ranged(p, "leaf_aspect", 0.5, 1e-6, 4.0);
+        appendLeafCards(*m, fresh, cards, out_skeleton.get());
+        out.stats["vertices"] = static_cast<double>(m->vertexCount());
+        out.stats["triangles"] = static_cast<double>(m->triangleCount());
+        out.mesh = std::move(m);
+    }
+    out.timingsMs["leaves"] = msSince(t0);
+    out.stats["leaves"] = static_cast<double>(out_skeleton->leaves.size());
+    out.skeleton = std::move(out_skeleton);
+    return out;
+}
+
+} // namespace
+
+void registerMeshNodes(graph::NodeRegistry& registry) {
+    registry.add(graph::NodeType{
+        "tube_mesh",
+        1,
+        1,
+        evaluateTubeMesh,
+        {"resolution", "caps", "thickness", "initial_thickness", "thickness_multiplier",
+         "radius_scale", "wind_attributes", "leaves", "leaf_aspect", "leaf_scale", "lod_distance",
+         "lod_bands", "lod_min_twig_pixels", "lod_screen_height", "lod_fov"}});
+    registry.add(graph::NodeType{"leaves",
+                                 1,
+                                 1,
+                                 evaluateLeaves,
+                                 {"placement", "keep_grammar_leaves", "phyllotaxis", "whorl_count",
+                                  "size", "size_variation", "density", "tip_count",
+                                  "max_branch_radius", "petiole_angle", "normal_weight",
+                                  "up_weight", "light_weight", "light_direction", "leaf_aspect"}});
+}
+
+} // namespace sylva::mesh

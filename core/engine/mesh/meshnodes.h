@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstdint>
+
+#include "engine/mesh/lod.h"
+
+namespace sylva::graph {
+class NodeRegistry;
+class Value;
+} // namespace sylva::graph
+
+namespace sylva::mesh {
+
+/// Registers the geometry node types (see docs/geometry.md for every parameter):
+/// - `tube_mesh`: input one node with a skeleton; outputs the skeleton and a bark + leaf mesh.
+///   Params: resolution (3..64, 8), caps, thickness ("skeleton" | "branching"),
+///   initial_thickness, thickness_multiplier, radius_scale, leaves, leaf_aspect, leaf_scale,
+///   wind_attributes, lod_distance (-1 = off), lod_bands, lod_min_twig_pixels,
+///   lod_screen_height, lod_fov. Stats: vertices, triangles; timing: mesh.
+/// - `leaves`: input one node with a skeleton; outputs the skeleton with placed leaves (and, if
+///   the input carries a mesh, that mesh with the new leaves' cards appended).
+void registerMeshNodes(graph::NodeRegistry& registry);
+
+/// The tube_mesh node's parameters as settings, for callers that mesh outside the graph (LOD
+/// chains, forests). \p seed drives leaf thinning. \throw InvalidInput naming the parameter.
+TreeMeshSettings treeMeshSettingsFromParams(const graph::Value& params, std::uint64_t seed);
+
+} // namespace sylva::mesh

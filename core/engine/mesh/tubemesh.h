@@ -1,0 +1,53 @@
+#pragma once
+
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
+#include "engine/util/progress.h"
+
+namespace sylva::mesh {
+
+/// Where branch radii come from.
+enum class ThicknessMode {
+    Skeleton,  ///< the skeleton's radii (turtle width, pipe model)
+    Branching, ///< t = i·m^b (reference 000 §4.4): b = branching points below the node
+};
+
+/// Parameters of the generalized-cylinder branch mesher.
+struct TubeSettings {
+    int resolution = 8; ///< vertices around a ring, 3..64
+    bool caps = true;   ///< close branch tips and root bases with flat caps
+    ThicknessMode thickness = ThicknessMode::Skeleton;
+    double initialThickness = 0.2;    ///< i: trunk DIAMETER (metres) in Branching mode
+    double thicknessMultiplier = 0.8; ///< m: factor per branching point in Branching mode, (0, 1]
+    double radiusScale = 1.0;         ///< multiplies every radius
+    /// Lateral branches whose base radius (after scaling) is below this are dropped with
+    /// everything they carry (used by LOD to drop thin twigs); metres, 0 keeps everything.
+    double minBranchRadius = 0.0;
+    bool windAttributes = false; ///< fill Mesh::branchOrder and Mesh::flexibility
+};
+
+/// Smallest radius a ring gets (metres): zero-width branches would give degenerate triangles.
+inline constexpr float kMinTubeRadius = 1e-4f;
+
+/// Builds branch tubes for a skeleton, appended to \p out as one "bark" submesh.
+///
+/// Each axis (a node followed by the children of the same branch order) is one generalized
+/// cylinder: one ring of resolution+1 vertices (the seam is duplicated for UVs) per node,
+/// oriented by rotation-minimizing (parallel-transport, double-reflection) frames, so there is
+/// no twist along a branch. A lateral branch starts with a ring centred on its parent node,
+/// with its own radius clamped to the parent's, so the ring lies inside the parent's surface:
+/// forks have neither gaps nor slivers. UVs: u = 0..1 around, v = arc length / circumference.
+/// Normals are smooth and tilted by the taper. Hidden nodes (kHidden) are skipped with their
+/// subtrees. Deterministic and parallel (OpenMP) with identical output on any thread count.
+/// \throw InvalidInput for a resolution outside 3..64 or an invalid skeleton.
+void appendTubes(Mesh& out, const skel::Skeleton& skeleton, const TubeSettings& settings,
+                 Progress& progress = noProgress());
+
+/// Convenience: a new mesh holding only the tubes.
+Mesh buildTubeMesh(const skel::Skeleton& skeleton, const TubeSettings& settings,
+                   Progress& progress = noProgress());
+
+/// Effective ring radius per node for \p settings (thickness mode, scale, minimum), metres.
+std::vector<float> tubeRadii(const skel::Skeleton& skeleton, const TubeSettings& settings);
+
+} // namespace sylva::mesh

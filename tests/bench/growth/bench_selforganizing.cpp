@@ -1,0 +1,122 @@
+// Self-organizing trees: one cycle of a ~100k-internode tree, a ~500k-internode tree, a
+// 30-tree stand, each with incremental updates against the naive full recomputation.
+#include <benchmark/benchmark.h>
+
+#include <omp.h>
+
+#include "engine/growth/allocation.h"
+#include "engine/growth/selforganizing.h"
+
+using namespace sylva::growth;
+
+namespace {
+
+/// A vigorous shadow-propagation tree (conifer-like preset with α = 4) that reaches 10^5
+/// internodes in about 20 cycles.
+SelfOrganizingParams benchParams() {
+    SelfOrganizingParams p;
+    p.environment = SoEnvironment::ShadowPropagation;
+    p.cycles = 200;
+    p.alpha = 4.0;
+    p.lambda = 0.5;
+    p.shadowA = 0.2;
+    p.internodeLength = 0.25;
+    p.branchAngle = 85;
+    p.optimalWeight = 0.05;
+    p.tropismWeight = 0.5;
+    p.lateralTropismWeight = -0.03;
+    p.sheddingThreshold = 0.1;
+    p.leafSize = 0.0;
+    p.maxInternodes = 5'000'000;
+    return p;
+}
+
+void growTo(SelfOrganizingSimulation& sim, std::size_t internodes) {
+    while (sim.metamers().size() < internodes && !sim.done())
+        sim.step();
+}
+
+/// Arg 0: incremental shadow + linear allocation; 1: naive shadow + naive allocation.
+void BM_SelfOrgCycle100k(benchmark::State& state) {
+    const bool naive = state.range(0) != 0;
+    std::size_t size = 0;
+    for (auto _ : state) {
+        state.PauseTiming();
+        SelfOrganizingSimulation sim({{glm::vec3(0), benchParams(), 1}}, {});
+        growTo(sim, 100'000);
+        sim.setOptions({naive, naive});
+        size = sim.metamers().size();
+        state.ResumeTiming();
+        sim.step();
+    }
+    state.counters["internodes"] = static_cast<double>(size);
+}
+BENCHMARK(BM_SelfOrgCycle100k)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_SelfOrgTree500k(benchmark::State& state) {
+    const bool naive = state.range(0) != 0;
+    std::size_t size = 0;
+    int cycles = 0;
+    for (auto _ : state) {
+        SelfOrganizingSimulation sim({{glm::vec3(0), benchParams(), 1}}, {},
+                                     SimulationOptions{naive, false});
+        growTo(sim, 500'000);
+        benchmark::DoNotOptimize(sim.results());
+        size = sim.metamers().size();
+        cycles = sim.cycle();
+    }
+    state.counters["internodes"] = static_cast<double>(size);
+    state.counters["cycles"] = cycles;
+}
+BENCHMARK(BM_SelfOrgTree500k)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_SelfOrgStand30(benchmark::State& state) {
+    const bool naive = state.range(0) != 0;
+    std::vector<StandTree> trees;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 5; ++j) {
+            SelfOrganizingParams p = benchParams();
+            p.cycles = 15;
+            trees.push_back(
+                {glm::vec3(i * 6.0f, 0, j * 6.0f), p, static_cast<std::uint64_t>(10 * i + j)});
+        }
+    std::size_t size = 0;
+    for (auto _ : state) {
+        SelfOrganizingSimulation sim(trees, {}, SimulationOptions{naive, false});
+        while (!sim.done())
+            sim.step();
+        const auto results = sim.results();
+        size = 0;
+        for (const auto& r : results)
+            size += r.internodes;
+    }
+    state.counters["internodes"] = static_cast<double>(size);
+    state.counters["per_tree"] = static_cast<double>(size) / 30.0;
+}
+BENCHMARK(BM_SelfOrgStand30)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+/// Borchert–Honda on the 100k tree: the linear scan (0) against per-bud path products (1).
+void BM_SelfOrgBorchertHonda(benchmark::State& state) {
+    SelfOrganizingSimulation sim({{glm::vec3(0), benchParams(), 1}}, {});
+    growTo(sim, 100'000);
+    std::vector<double> t, a;
+    sim.evaluateLight(t, a);
+    const MetamerTopology topo = sim.metamers().topology();
+    std::vector<double> g(t.size());
+    std::vector<std::int32_t> c(t.size());
+    const AllocationParams p{4.0, 0.5};
+    for (auto _ : state) {
+        if (state.range(0) == 0) {
+            gatherLight(topo, t, a, g, c);
+            benchmark::DoNotOptimize(allocateBorchertHonda(topo, g, t, a, {&p, 1}));
+        } else {
+            benchmark::DoNotOptimize(allocateBorchertHondaNaive(topo, t, a, {&p, 1}));
+        }
+    }
+    state.counters["internodes"] = static_cast<double>(t.size());
+}
+BENCHMARK(BM_SelfOrgBorchertHonda)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+BENCHMARK_MAIN();

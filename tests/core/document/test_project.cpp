@@ -1,0 +1,172 @@
+#include "document/formatupgrade.h"
+#include "document/project.h"
+#include "engine/util/error.h"
+
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QFile>
+
+using namespace sylva;
+
+namespace {
+
+// The public contract example of the forest issue, verbatim.
+const char* kContract = R"({ "format": "sylva-project", "format_version": 1, "seed": 7,
+  "species":   [ { "name": "alder", "file": "species/alder.json" } ],
+  "domains":   [ { "shape": "rectangle", "min": [-50, -50], "max": [50, 50], "counts": { "alder": 1000 } } ],
+  "instances": [ { "species": "alder", "position": [0, 0, 0], "rotation": 0, "scale": 1, "seed": 3 } ],
+  "obstacles": [ { "file": "meshes/wall.obj", "translate": [0, 0, 0], "rotate": [0, 0, 0], "scale": [1, 1, 1] } ],
+  "camera":    { "position": [0, 20, 80], "target": [0, 0, 0] },
+  "light":     { "direction": [0.3, -1, 0.2] } })";
+
+std::string errorOf(const std::string& json) {
+    try {
+        doc::parseProject(QByteArray::fromStdString(json), "p.sylva");
+    } catch (const InvalidInput& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(Project, ReadsThePublicContract) {
+    const doc::Project p = doc::parseProject(kContract, "/proj/forest.sylva");
+    EXPECT_EQ(p.seed, 7u);
+    ASSERT_EQ(p.species.size(), 1u);
+    EXPECT_EQ(p.species[0].file, "species/alder.json");
+    EXPECT_EQ(p.resolve(p.species[0].file), "/proj/species/alder.json");
+    ASSERT_EQ(p.domains.size(), 1u);
+    EXPECT_EQ(p.domains[0].counts.at("alder"), 1000);
+    EXPECT_FLOAT_EQ(p.domains[0].min.x, -50.0f);
+    ASSERT_EQ(p.instances.size(), 1u);
+    EXPECT_EQ(p.instances[0].seed, 3u);
+    ASSERT_EQ(p.obstacles.size(), 1u);
+    EXPECT_EQ(p.obstacles[0].file, "meshes/wall.obj");
+    EXPECT_FLOAT_EQ(p.cameraPosition.z, 80.0f);
+    EXPECT_FLOAT_EQ(p.lightDirection.y, -1.0f);
+}
+
+TEST(Project, RoundTripsByteIdentically) {
+    const doc::Project p = doc::parseProject(kContract, "/proj/forest.sylva");
+    const QByteArray saved = doc::serializeProject(p);
+    const doc::Project again = doc::parseProject(saved, "/proj/forest.sylva");
+    EXPECT_EQ(again.appVersion, SYLVA_VERSION); // the saving version is recorded
+    doc::Project expected = p;
+    expected.appVersion = again.appVersion;
+    EXPECT_EQ(again, expected);
+    EXPECT_EQ(doc::serializeProject(again), saved);
+}
+
+TEST(Project, KeepsKeysItDoesNotKnow) {
+    std::string json = kContract;
+    json.insert(1, R"("render_settings": {"samples": 64}, )");
+    const doc::Project p = doc::parseProject(QByteArray::fromStdString(json), "x.sylva");
+    const QByteArray saved = doc::serializeProject(p);
+    EXPECT_TRUE(saved.contains("\"samples\": 64"));
+}
+
+TEST(Project, NewerFilesLoadWithAWarning) {
+    std::string json = kContract;
+    json.replace(json.find("\"format_version\": 1"), 19, "\"format_version\": 9");
+    doc::LoadReport report;
+    const doc::Project p = doc::parseProject(QByteArray::fromStdString(json), "new.sylva", &report);
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_NE(report.warnings[0].find("newer Sylva"), std::string::npos);
+    EXPECT_EQ(p.species.size(), 1u);
+}
+
+TEST(Project, BadInputIsRefusedWithAMessage) {
+    EXPECT_NE(errorOf("{").find("p.sylva:1:2"), std::string::npos);
+    EXPECT_NE(
+        errorOf(R"({"format":"sylva-species","format_version":1})").find("not a sylva-project"),
+        std::string::npos);
+    EXPECT_NE(
+        errorOf(R"({"format":"sylva-project","format_version":1,"domains":[{"shape":"circle"}]})")
+            .find("rectangle, polygon or terrain"),
+        std::string::npos);
+    EXPECT_NE(
+        errorOf(
+            R"({"format":"sylva-project","format_version":1,"species":[{"name":"a","file":"a.json"}],
+                         "instances":[{"species":"b"}]})")
+            .find("unknown species \"b\""),
+        std::string::npos);
+    EXPECT_NE(
+        errorOf(
+            R"({"format":"sylva-project","format_version":1,"species":[{"name":"a","file":"a.json"}],
+                         "instances":[{"species":"a","scale":0}]})")
+            .find("instances[0].scale must be in [0.001, 1000]"),
+        std::string::npos);
+    EXPECT_NE(
+        errorOf(R"({"format":"sylva-project","format_version":1,"camera":{"position":[1,2]}})")
+            .find("camera.position must be [x, y, z]"),
+        std::string::npos);
+}
+
+TEST(Project, SavesAtomically) {
+    const QString dir = QDir::tempPath() + "/sylva-test-project";
+    QDir(dir).removeRecursively();
+    QDir().mkpath(dir);
+    doc::Project p = doc::parseProject(kContract, dir + "/a.sylva");
+    doc::saveProject(p, dir + "/a.sylva");
+    const doc::Project loaded = doc::loadProject(dir + "/a.sylva");
+    EXPECT_EQ(doc::serializeProject(loaded), doc::serializeProject(p));
+    EXPECT_EQ(QDir(dir).entryList(QDir::Files | QDir::Hidden).size(), 1);
+    EXPECT_THROW(doc::saveProject(p, "/nonexistent-dir/a.sylva"), IoError);
+}
+
+TEST(UpgradeChain, RunsStepsInOrderAndOnlyFromTheFilesVersion) {
+    std::vector<std::string> log;
+    const std::vector<doc::UpgradeStep> steps = {
+        {1, "rename trees to instances",
+         [&](graph::Value::Object& o) {
+             log.push_back("1");
+             o["instances"] = o["trees"];
+             o.erase("trees");
+         }},
+        {2, "add light",
+         [&](graph::Value::Object& o) {
+             log.push_back("2");
+             o["light"] = graph::Value::Object{{"direction", graph::Value::Array{0, -1, 0}}};
+         }},
+    };
+    graph::Value v1 = graph::Value::parseJson(R"({"format":"f","format_version":1,"trees":[1]})");
+    const doc::UpgradeReport r = doc::upgradeFormat(v1.objectRef(), "f", 3, steps, "a", true);
+    EXPECT_EQ(log, (std::vector<std::string>{"1", "2"}));
+    EXPECT_EQ(r.applied.size(), 2u);
+    EXPECT_EQ(
+        v1.toJson(),
+        R"({"format":"f","format_version":3,"instances":[1],"light":{"direction":[0,-1,0]}})");
+
+    log.clear();
+    graph::Value v2 = graph::Value::parseJson(R"({"format":"f","format_version":2})");
+    doc::upgradeFormat(v2.objectRef(), "f", 3, steps, "a", true);
+    EXPECT_EQ(log, std::vector<std::string>{"2"});
+
+    graph::Value v4 = graph::Value::parseJson(R"({"format":"f","format_version":4})");
+    EXPECT_THROW(doc::upgradeFormat(v4.objectRef(), "f", 3, steps, "a", true), InvalidInput);
+    EXPECT_EQ(doc::upgradeFormat(v4.objectRef(), "f", 3, steps, "a", false).warnings.size(), 1u);
+    graph::Value gap = graph::Value::parseJson(R"({"format":"f","format_version":1})");
+    EXPECT_THROW(doc::upgradeFormat(gap.objectRef(), "f", 3, {steps[1]}, "a", true), InvalidInput);
+}
+
+TEST(Project, ImportsTheReferenceSceneDescription) {
+    const QString dir = QDir::tempPath() + "/sylva-test-refscene";
+    QDir().mkpath(dir);
+    QFile f(dir + "/scene.json");
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"({"plants":[{"file":"alder.txt","quantity":100},{"file":"bush.txt","quantity":20}],
+                "collision_meshes":["wall.obj","rock.obj"]})");
+    f.close();
+    const doc::Project p = doc::importReferenceScene(dir + "/scene.json");
+    ASSERT_EQ(p.species.size(), 2u);
+    EXPECT_EQ(p.species[0].name, "alder");
+    EXPECT_EQ(p.domains.at(0).counts.at("alder"), 100);
+    EXPECT_EQ(p.domains.at(0).counts.at("bush"), 20);
+    ASSERT_EQ(p.obstacles.size(), 2u);
+    EXPECT_EQ(p.obstacles[1].file, "rock.obj");
+    // The imported project saves as a regular project and loads back the same.
+    const QByteArray saved = doc::serializeProject(p);
+    EXPECT_EQ(doc::serializeProject(doc::parseProject(saved, dir + "/scene.sylva")), saved);
+}

@@ -1,0 +1,232 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <omp.h>
+
+#include "engine/lsystem/turtle.h"
+#include "engine/mesh/tubemesh.h"
+#include "engine/util/error.h"
+#include "testwords.h"
+
+using namespace sylva;
+using sylva::testing::makeWord;
+
+namespace {
+
+skel::Skeleton tree(const std::string& text) {
+    return lsys::interpret(makeWord(text), lsys::TurtleSettings{});
+}
+
+skel::Skeleton bigTree() {
+    lsys::TurtleSettings t;
+    t.angleDegrees = 30;
+    t.step = 0.5;
+    t.width = 0.3;
+    return lsys::interpret(makeWord(sylva::testing::testTreeWord(4)), t);
+}
+
+// Oracle checks shared by several tests: finite unit normals, no degenerate triangles, and every
+// triangle's winding agrees with its vertex normals (outward faces).
+void checkWellFormed(const mesh::Mesh& m) {
+    ASSERT_EQ(m.normals.size(), m.positions.size());
+    ASSERT_EQ(m.uvs.size(), m.positions.size());
+    for (const glm::vec3& n : m.normals) {
+        ASSERT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+        ASSERT_NEAR(glm::length(n), 1.0f, 1e-3f);
+    }
+    for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+        const std::uint32_t a = m.indices[t], b = m.indices[t + 1], c = m.indices[t + 2];
+        ASSERT_LT(std::max({a, b, c}), m.positions.size());
+        const glm::vec3 cr =
+            glm::cross(m.positions[b] - m.positions[a], m.positions[c] - m.positions[a]);
+        const float area = 0.5f * glm::length(cr);
+        ASSERT_GT(area, 1e-12f) << "degenerate triangle " << t / 3;
+        const glm::vec3 ns = m.normals[a] + m.normals[b] + m.normals[c];
+        ASSERT_GT(glm::dot(cr, ns), 0.0f) << "triangle " << t / 3 << " faces inwards";
+    }
+}
+
+} // namespace
+
+TEST(TubeMesh, CountsOfAStraightBranch) {
+    const auto s = tree("FF");
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    const auto m = mesh::buildTubeMesh(s, settings);
+    EXPECT_EQ(m.vertexCount(), 3u * 9u);
+    EXPECT_EQ(m.triangleCount(), 2u * 8u * 2u);
+    settings.caps = true;
+    const auto c = mesh::buildTubeMesh(s, settings);
+    EXPECT_EQ(c.vertexCount(), 3u * 9u + 2u * 10u);
+    EXPECT_EQ(c.triangleCount(), 2u * 8u * 2u + 2u * 8u);
+    ASSERT_EQ(c.submeshes.size(), 1u);
+    EXPECT_EQ(c.submeshes[0].material, "bark");
+    EXPECT_EQ(c.submeshes[0].indexCount, c.indices.size());
+    checkWellFormed(c);
+}
+
+TEST(TubeMesh, RingsLieAtTheRadius) {
+    const auto s = tree("F!(0.06)F");
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    settings.resolution = 5;
+    const auto m = mesh::buildTubeMesh(s, settings);
+    ASSERT_EQ(m.vertexCount(), 18u);
+    for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t j = 0; j < 6; ++j) {
+            const glm::vec3 d = m.positions[k * 6 + j] - s.position[k];
+            EXPECT_NEAR(d.y, 0.0f, 1e-6f);
+            EXPECT_NEAR(glm::length(d), s.radius[k], 1e-6f);
+        }
+    // u around (seam duplicated), v = length / circumference with the average radius.
+    EXPECT_FLOAT_EQ(m.uvs[0].x, 0.0f);
+    EXPECT_FLOAT_EQ(m.uvs[5].x, 1.0f);
+    EXPECT_EQ(m.positions[0], m.positions[5]);
+    const float v1 = 1.0f / (2.0f * std::numbers::pi_v<float> * 0.05f);
+    const float v2 = v1 + 1.0f / (2.0f * std::numbers::pi_v<float> * 0.5f * (0.05f + 0.03f));
+    EXPECT_NEAR(m.uvs[6].y, v1, 1e-4f);
+    EXPECT_NEAR(m.uvs[12].y, v2, 1e-4f);
+    checkWellFormed(m);
+}
+
+TEST(TubeMesh, PlanarBendDoesNotTwist) {
+    // Yaw turns keep the turtle's up (+Z); a rotation-minimizing frame started on +Z stays there.
+    const auto s = tree("F+(30)F+(30)F-(50)F+(80)F");
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    const auto m = mesh::buildTubeMesh(s, settings);
+    ASSERT_EQ(m.vertexCount(), s.size() * 9u);
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        const glm::vec3 d = glm::normalize(m.positions[k * 9] - s.position[k]);
+        EXPECT_NEAR(d.z, 1.0f, 1e-5f) << "ring " << k;
+    }
+    checkWellFormed(m);
+}
+
+TEST(TubeMesh, FramesAreRotationMinimizingIn3D) {
+    // A gently spiralling branch: consecutive ring frames differ only by the rotation taking one
+    // tangent to the next (the oracle), up to the discretisation error of double reflection.
+    std::string text = "F";
+    for (int i = 0; i < 40; ++i)
+        text += "+(7)&(5)/(11)F";
+    const auto s = tree(text);
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    const auto m = mesh::buildTubeMesh(s, settings);
+    const std::size_t rv = 9;
+    ASSERT_EQ(m.vertexCount(), s.size() * rv);
+    auto tangent = [&](std::size_t k) {
+        return glm::normalize(glm::cross(m.positions[k * rv] - s.position[k],
+                                         m.positions[k * rv + 2] - s.position[k]));
+    };
+    for (std::size_t k = 1; k < s.size(); ++k) {
+        const glm::vec3 t0 = tangent(k - 1), t1 = tangent(k);
+        const glm::vec3 n0 = glm::normalize(m.positions[(k - 1) * rv] - s.position[k - 1]);
+        const glm::vec3 n1 = glm::normalize(m.positions[k * rv] - s.position[k]);
+        const glm::vec3 axis = glm::cross(t0, t1);
+        glm::vec3 expected = n0;
+        if (glm::length(axis) > 1e-7f) {
+            const float angle = std::atan2(glm::length(axis), glm::dot(t0, t1));
+            expected = glm::angleAxis(angle, glm::normalize(axis)) * n0;
+        }
+        EXPECT_GT(glm::dot(expected, n1), std::cos(0.01f)) << "ring " << k;
+    }
+    checkWellFormed(m);
+}
+
+TEST(TubeMesh, LateralBaseRingSitsInsideParent) {
+    const auto s = bigTree();
+    mesh::TubeSettings settings;
+    settings.windAttributes = true;
+    settings.resolution = 6;
+    const auto m = mesh::buildTubeMesh(s, settings);
+    checkWellFormed(m);
+    ASSERT_EQ(m.branchOrder.size(), m.vertexCount());
+    std::size_t forks = 0;
+    for (std::size_t j = 0; j < s.size(); ++j) {
+        const std::int32_t p = s.parent[j];
+        if (p < 0 || s.order[j] == s.order[static_cast<std::size_t>(p)]) continue;
+        ++forks;
+        const glm::vec3 fork = s.position[static_cast<std::size_t>(p)];
+        const float rp = s.radius[static_cast<std::size_t>(p)];
+        // The res+1 vertices of the child's order nearest to the fork form its base ring.
+        std::vector<float> dist;
+        for (std::size_t v = 0; v < m.vertexCount(); ++v)
+            if (m.branchOrder[v] == s.order[j]) dist.push_back(glm::length(m.positions[v] - fork));
+        std::partial_sort(dist.begin(), dist.begin() + 7, dist.end());
+        for (int i = 0; i < 7; ++i)
+            EXPECT_LE(dist[static_cast<std::size_t>(i)], rp * 1.0001f) << "fork at node " << p;
+    }
+    EXPECT_GT(forks, 10u);
+}
+
+TEST(TubeMesh, BranchingThickness) {
+    const auto s = tree("F[+F]F");
+    mesh::TubeSettings settings;
+    settings.thickness = mesh::ThicknessMode::Branching;
+    settings.initialThickness = 0.4;
+    settings.thicknessMultiplier = 0.5;
+    const auto r = mesh::tubeRadii(s, settings);
+    ASSERT_EQ(r.size(), 4u);
+    EXPECT_FLOAT_EQ(r[0], 0.2f);
+    EXPECT_FLOAT_EQ(r[1], 0.2f);
+    EXPECT_FLOAT_EQ(r[2], 0.1f); // one branching point below
+    EXPECT_FLOAT_EQ(r[3], 0.1f);
+}
+
+TEST(TubeMesh, MinBranchRadiusDropsThinLaterals) {
+    const auto s = tree("F[+!(0.02)F[-F]]F");
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    const auto all = mesh::buildTubeMesh(s, settings);
+    settings.minBranchRadius = 0.02;
+    const auto trunk = mesh::buildTubeMesh(s, settings);
+    EXPECT_EQ(all.vertexCount(), (3u + 2u + 2u) * 9u);
+    EXPECT_EQ(trunk.vertexCount(), 3u * 9u);
+}
+
+TEST(TubeMesh, HiddenNodesAreSkipped) {
+    auto s = tree("F[+F]F");
+    s.flags[2] |= skel::kHidden;
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    EXPECT_EQ(mesh::buildTubeMesh(s, settings).vertexCount(), 3u * 9u);
+}
+
+TEST(TubeMesh, SameOnOneAndTwoThreads) {
+    const auto s = bigTree();
+    mesh::TubeSettings settings;
+    settings.windAttributes = true;
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const auto a = mesh::buildTubeMesh(s, settings);
+    omp_set_num_threads(2);
+    const auto b = mesh::buildTubeMesh(s, settings);
+    omp_set_num_threads(saved);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.normals, b.normals);
+    EXPECT_EQ(a.uvs, b.uvs);
+    EXPECT_EQ(a.indices, b.indices);
+    EXPECT_EQ(a.flexibility, b.flexibility);
+}
+
+TEST(TubeMesh, ZeroLengthAndZeroWidthSegmentsStayWellFormed) {
+    const auto s = tree("FF(0)F!(0)F[+F(0)]");
+    const auto m = mesh::buildTubeMesh(s, mesh::TubeSettings{});
+    checkWellFormed(m);
+}
+
+TEST(TubeMesh, RejectsBadResolution) {
+    const auto s = tree("F");
+    mesh::TubeSettings settings;
+    settings.resolution = 2;
+    try {
+        mesh::buildTubeMesh(s, settings);
+        FAIL();
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("[3, 64]"), std::string::npos) << e.what();
+    }
+}

@@ -1,0 +1,126 @@
+// The shadow propagation environment: pyramid values by hand, incremental == full.
+#include <gtest/gtest.h>
+
+#include "engine/growth/selforganizing.h"
+#include "engine/growth/shadowgrid.h"
+
+using namespace sylva::growth;
+
+namespace {
+double s(const ShadowGrid& g, int x, int y, int z) {
+    return g.shadow({x, y, z});
+}
+} // namespace
+
+TEST(SelfOrgShadow, SingleBudPyramid) {
+    // a = 1, b = 2, q_max = 3: Δs = 1, 1/2, 1/4, 1/8 at q = 0..3 within |dx|, |dz| <= q.
+    ShadowGrid g(1.0f, -100.0f, 3);
+    g.addPyramid({0, 10, 0}, ShadowKernel::make(1.0, 2.0, 3));
+    EXPECT_DOUBLE_EQ(s(g, 0, 10, 0), 1.0);
+    EXPECT_DOUBLE_EQ(s(g, 0, 9, 0), 0.5);
+    EXPECT_DOUBLE_EQ(s(g, 1, 9, -1), 0.5);
+    EXPECT_DOUBLE_EQ(s(g, 2, 8, 2), 0.25);
+    EXPECT_DOUBLE_EQ(s(g, -3, 7, 3), 0.125);
+    EXPECT_DOUBLE_EQ(s(g, 0, 7, 0), 0.125);
+    // Outside the pyramid.
+    EXPECT_EQ(s(g, 1, 10, 0), 0.0); // beside the bud
+    EXPECT_EQ(s(g, 0, 11, 0), 0.0); // above
+    EXPECT_EQ(s(g, 2, 9, 0), 0.0);  // p > q
+    EXPECT_EQ(s(g, 0, 6, 0), 0.0);  // below q_max
+    EXPECT_EQ(s(g, -4, 7, 0), 0.0);
+    // a = 0.5, b = 3, q_max = 2.
+    ShadowGrid h(0.5f, -100.0f, 2);
+    h.addPyramid({3, 3, 3}, ShadowKernel::make(0.5, 3.0, 2));
+    EXPECT_NEAR(s(h, 3, 3, 3), 0.5, 1e-4);
+    EXPECT_NEAR(s(h, 4, 2, 2), 0.5 / 3, 1e-4);
+    EXPECT_NEAR(s(h, 1, 1, 5), 0.5 / 9, 1e-4);
+    // Voxel coordinates of points: floor(p / h).
+    EXPECT_EQ(h.voxelOf({1.2f, -0.2f, 0.0f}), glm::ivec3(2, -1, 0));
+}
+
+TEST(SelfOrgShadow, TwoOverlappingBuds) {
+    const ShadowKernel k = ShadowKernel::make(1.0, 2.0, 3);
+    ShadowGrid g(1.0f, -100.0f, 3);
+    g.addPyramid({0, 10, 0}, k);
+    g.addPyramid({1, 9, 0}, k);
+    EXPECT_DOUBLE_EQ(s(g, 1, 9, 0), 0.5 + 1.0);  // first q=1, second q=0
+    EXPECT_DOUBLE_EQ(s(g, 0, 9, 0), 0.5);        // only the first
+    EXPECT_DOUBLE_EQ(s(g, 1, 8, 0), 0.25 + 0.5); // q=2 and q=1
+    EXPECT_DOUBLE_EQ(s(g, 2, 8, 1), 0.25 + 0.5);
+    EXPECT_DOUBLE_EQ(s(g, 3, 8, 0), 0.0); // beyond both pyramids' width
+    EXPECT_DOUBLE_EQ(s(g, 2, 7, 0), 0.125 + 0.25);
+    EXPECT_DOUBLE_EQ(s(g, -2, 7, 0), 0.125);
+    EXPECT_DOUBLE_EQ(s(g, 4, 6, 0), 0.125);
+    EXPECT_DOUBLE_EQ(s(g, 0, 6, 0), 0.125); // below the first's reach, second q=3
+    // Light of the lower bud: Q = C − s + a = 1 − 1.5 + 1.
+    EXPECT_DOUBLE_EQ(1.0 - s(g, 1, 9, 0) + 1.0, 0.5);
+    // Removing both gives zero everywhere, however the grid grew meanwhile.
+    g.addPyramid({40, 30, -25}, k);
+    EXPECT_DOUBLE_EQ(s(g, 1, 9, 0), 1.5);
+    g.addPyramid({0, 10, 0}, k, -1);
+    g.addPyramid({40, 30, -25}, k, -1);
+    g.addPyramid({1, 9, 0}, k, -1);
+    for (std::int32_t v : g.values())
+        ASSERT_EQ(v, 0);
+}
+
+TEST(SelfOrgShadow, FloorClipsPyramids) {
+    ShadowGrid g(1.0f, 0.0f, 4);
+    g.addPyramid({0, 1, 0}, ShadowKernel::make(1.0, 2.0, 4));
+    EXPECT_DOUBLE_EQ(s(g, 0, 0, 0), 0.5);
+    EXPECT_DOUBLE_EQ(s(g, 0, -3, 0), 0.5); // below the floor reads the floor row
+}
+
+TEST(SelfOrgShadow, IncrementalEqualsFullRecomputation) {
+    SelfOrganizingParams p;
+    p.cycles = 12;
+    p.sheddingThreshold = 0.35; // sheds a lot, so removals are exercised
+    p.shadowDepth = 4;
+    std::vector<StandTree> trees = {{{0, 0, 0}, p, 1}, {{0.8f, 0, 0.3f}, p, 2}};
+    trees[1].params.shadowA = 0.7;
+    trees[1].params.shadowB = 1.7;
+    trees[1].params.shadowDepth = 6;
+    trees[1].params.cycles = 9;
+    // A small wall casting shadow too.
+    std::vector<glm::vec3> wall = {{-1, 0, -1}, {-1, 2, -1}, {-1, 2, 1}};
+    SelfOrganizingSimulation sim(trees, wall);
+    std::size_t checked = 0;
+    while (!sim.done()) {
+        sim.step();
+        ASSERT_TRUE(sim.shadowGrid()->sameShadow(sim.recomputeShadow())) << sim.cycle();
+        ++checked;
+    }
+    EXPECT_EQ(checked, 12u);
+    EXPECT_GT(sim.shedCount(), 0u);
+    EXPECT_GT(sim.metamers().size(), 200u);
+}
+
+TEST(SelfOrgShadow, NaiveAndIncrementalGrowTheSameTree) {
+    SelfOrganizingParams p;
+    p.cycles = 10;
+    SelfOrganizingSimulation a({{glm::vec3(0), p, 5}}, {});
+    SelfOrganizingSimulation b({{glm::vec3(0), p, 5}}, {}, SimulationOptions{true, false});
+    while (!a.done()) {
+        a.step();
+        b.step();
+    }
+    ASSERT_EQ(a.metamers().size(), b.metamers().size());
+    for (std::size_t i = 0; i < a.metamers().size(); ++i)
+        ASSERT_EQ(a.metamers().end[i], b.metamers().end[i]);
+    EXPECT_TRUE(a.shadowGrid()->sameShadow(*b.shadowGrid()));
+}
+
+TEST(SelfOrgShadow, LoneBudSeesFullLight) {
+    SelfOrganizingParams p;
+    p.fullExposure = 0.8;
+    SelfOrganizingSimulation sim({{glm::vec3(0), p, 1}}, {});
+    sim.step(); // plants the first metamer and grows
+    std::vector<double> t, a;
+    sim.evaluateLight(t, a);
+    // Every bud's light is C minus the shadow of the others: never above C, and the lone
+    // bud of a new tree has exactly C.
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        EXPECT_LE(t[i], 0.8 + 1e-9);
+        EXPECT_LE(a[i], 0.8 + 1e-9);
+    }
+}

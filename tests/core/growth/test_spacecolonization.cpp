@@ -1,0 +1,360 @@
+// Space colonization: the accelerated search against the brute-force oracle, the end state,
+// the envelope bound, the pipe model, determinism across thread counts and the validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <omp.h>
+
+#include "engine/growth/envelope.h"
+#include "engine/growth/pipemodel.h"
+#include "engine/growth/spacecolonization.h"
+#include "engine/growth/spatialgrid.h"
+#include "engine/util/error.h"
+
+using namespace sylva;
+using namespace sylva::growth;
+
+namespace {
+
+// Bit-exact comparison of two skeletons.
+void expectIdentical(const skel::Skeleton& a, const skel::Skeleton& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_EQ(std::memcmp(&a.position[i], &b.position[i], sizeof(glm::vec3)), 0)
+            << "node " << i;
+        ASSERT_EQ(a.parent[i], b.parent[i]) << "node " << i;
+        ASSERT_EQ(std::memcmp(&a.radius[i], &b.radius[i], sizeof(float)), 0) << "node " << i;
+        ASSERT_EQ(a.order[i], b.order[i]) << "node " << i;
+        ASSERT_EQ(a.flags[i], b.flags[i]) << "node " << i;
+        ASSERT_EQ(std::memcmp(&a.orientation[i], &b.orientation[i], sizeof(glm::quat)), 0);
+    }
+}
+
+ColonizationParams referenceParams() {
+    ColonizationParams p; // the reference's values: d_i 3, d_k 0.6, D 0.2, randomness 0.147
+    p.trunkHeight = 2.0f;
+    return p;
+}
+
+std::vector<glm::vec3> spherePoints(std::size_t n, std::uint64_t seed = 7) {
+    return Envelope::sphere({0, 6, 0}, 4.5f).sample(n, seed);
+}
+
+// The end-state oracle, by brute force over the final skeleton.
+void expectEveryPointKilledOrOutOfReach(const std::vector<glm::vec3>& points,
+                                        const ColonizationResult& r, const ColonizationParams& p) {
+    ASSERT_NE(r.stopReason, StopReason::IterationCap);
+    const float di2 = p.influenceDistance * p.influenceDistance;
+    const float dk2 = p.killDistance * p.killDistance;
+    for (std::size_t a = 0; a < points.size(); ++a) {
+        float best = INFINITY;
+        for (const glm::vec3& n : r.skeleton.position)
+            best = std::min(best, distance2(points[a], n));
+        if (r.killed[a])
+            EXPECT_LT(best, dk2) << "point " << a << " killed without a node in the kill zone";
+        else
+            EXPECT_GE(best, di2) << "point " << a << " alive yet in reach of a node";
+    }
+}
+
+} // namespace
+
+TEST(SpaceColonization, AcceleratedEqualsNaive) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+        const auto points = spherePoints(800, seed);
+        ColonizationParams p = referenceParams();
+        p.seed = seed;
+        const ColonizationResult fast = colonize(points, p, nullptr, NeighbourSearch::Accelerated);
+        const ColonizationResult slow = colonize(points, p, nullptr, NeighbourSearch::Naive);
+        expectIdentical(fast.skeleton, slow.skeleton);
+        EXPECT_EQ(fast.killed, slow.killed);
+        EXPECT_EQ(fast.iterations, slow.iterations);
+        EXPECT_GT(fast.skeleton.size(), 200u);
+    }
+}
+
+TEST(SpaceColonization, AcceleratedEqualsNaiveOtherShapesAndTropism) {
+    ColonizationParams p;
+    p.influenceDistance = 1.5f;
+    p.killDistance = 0.3f;
+    p.segmentLength = 0.1f;
+    p.trunkHeight = 1.0f;
+    p.tropism = {0.1f, -0.2f, 0.0f};
+    p.randomness = 0.3f;
+    const auto points = Envelope::cone({0, 2, 0}, 1.5f, 4.0f).sample(700, 5);
+    const ColonizationResult fast = colonize(points, p, nullptr, NeighbourSearch::Accelerated);
+    const ColonizationResult slow = colonize(points, p, nullptr, NeighbourSearch::Naive);
+    expectIdentical(fast.skeleton, slow.skeleton);
+    EXPECT_EQ(fast.killed, slow.killed);
+}
+
+TEST(SpaceColonization, EveryPointKilledOrOutOfReach) {
+    const auto points = spherePoints(1000);
+    const ColonizationParams p = referenceParams();
+    const ColonizationResult r = colonize(points, p);
+    expectEveryPointKilledOrOutOfReach(points, r, p);
+    EXPECT_EQ(r.killedCount, points.size()); // a sphere in reach of its trunk is eaten whole
+    EXPECT_EQ(r.stopReason, StopReason::NoPointsLeft);
+
+    // A far cluster nobody reaches: it stays, and the growth stops for lack of reach.
+    std::vector<glm::vec3> more = points;
+    for (int i = 0; i < 20; ++i)
+        more.push_back({40.0f + 0.1f * i, 6.0f, 0.0f});
+    const ColonizationResult r2 = colonize(more, p);
+    expectEveryPointKilledOrOutOfReach(more, r2, p);
+    EXPECT_EQ(r2.stopReason, StopReason::NothingInReach);
+    EXPECT_EQ(r2.killedCount, points.size());
+}
+
+TEST(SpaceColonization, NodesStayInsideEnvelopeGrownByOneSegment) {
+    ColonizationParams p = referenceParams();
+    for (float randomness : {0.0f, 0.147f}) {
+        p.randomness = randomness;
+        const glm::vec3 c(0, 6, 0);
+        const float radius = 4.5f;
+        const ColonizationResult r = colonize(spherePoints(1500), p);
+        for (std::size_t i = r.initialNodes; i < r.skeleton.size(); ++i)
+            ASSERT_LE(glm::length(r.skeleton.position[i] - c), radius + p.segmentLength + 1e-4f)
+                << "node " << i << " randomness " << randomness;
+    }
+    // A cylinder: radial and vertical bounds.
+    const auto points = Envelope::cylinder({0, 3, 0}, 1.2f, 6.0f).sample(1200, 3);
+    p = referenceParams();
+    p.influenceDistance = 1.5f;
+    p.killDistance = 0.35f;
+    p.segmentLength = 0.15f;
+    p.trunkHeight = 3.0f;
+    const ColonizationResult r = colonize(points, p);
+    for (std::size_t i = r.initialNodes; i < r.skeleton.size(); ++i) {
+        const glm::vec3 q = r.skeleton.position[i];
+        ASSERT_LE(std::sqrt(q.x * q.x + q.z * q.z), 1.2f + p.segmentLength + 1e-4f);
+        ASSERT_GE(q.y, 3.0f - p.segmentLength - 1e-4f);
+        ASSERT_LE(q.y, 9.0f + p.segmentLength + 1e-4f);
+    }
+}
+
+TEST(SpaceColonization, PipeModelHoldsAtEveryFork) {
+    ColonizationParams p = referenceParams();
+    const ColonizationResult r = colonize(spherePoints(1000), p);
+    const skel::Skeleton& s = r.skeleton;
+    std::vector<double> sum(s.size(), 0.0);
+    std::vector<int> children(s.size(), 0);
+    for (std::size_t i = 1; i < s.size(); ++i) {
+        sum[static_cast<std::size_t>(s.parent[i])] +=
+            std::pow(double(s.radius[i]), double(p.pipeExponent));
+        ++children[static_cast<std::size_t>(s.parent[i])];
+    }
+    int forks = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if (children[i] == 0) {
+            EXPECT_FLOAT_EQ(s.radius[i], p.tipRadius);
+            continue;
+        }
+        forks += children[i] > 1;
+        const double lhs = std::pow(double(s.radius[i]), double(p.pipeExponent));
+        ASSERT_NEAR(lhs, sum[i], 1e-4 * lhs) << "node " << i;
+    }
+    EXPECT_GT(forks, 50);
+    EXPECT_GT(s.radius[0], 5 * p.tipRadius);
+}
+
+TEST(PipeModel, HandComputed) {
+    skel::Skeleton s;
+    const glm::quat q(1, 0, 0, 0);
+    s.addNode({0, 0, 0}, -1, 0, 0, q);
+    s.addNode({0, 1, 0}, 0, 0, 0, q);
+    s.addNode({1, 2, 0}, 1, 0, 0, q);
+    s.addNode({-1, 2, 0}, 1, 0, 1, q);
+    s.addNode({0, 3, 0}, 1, 0, 1, q, skel::kHidden); // pruned: does not feed its parent
+    applyPipeModel(s, 0.5f, 2.0f);
+    EXPECT_FLOAT_EQ(s.radius[2], 0.5f);
+    EXPECT_FLOAT_EQ(s.radius[3], 0.5f);
+    EXPECT_FLOAT_EQ(s.radius[4], 0.5f);
+    EXPECT_FLOAT_EQ(s.radius[1], std::sqrt(0.5f)); // sqrt(0.25 + 0.25)
+    EXPECT_FLOAT_EQ(s.radius[0], std::sqrt(0.5f));
+    applyPipeModel(s, 0.5f, 1.0f);
+    EXPECT_FLOAT_EQ(s.radius[1], 1.0f);
+    EXPECT_THROW(applyPipeModel(s, 0.5f, 0.9f), InvalidInput);
+    EXPECT_THROW(applyPipeModel(s, 0.5f, 4.1f), InvalidInput);
+    EXPECT_THROW(applyPipeModel(s, 0.0f, 2.0f), InvalidInput);
+}
+
+TEST(SpaceColonization, SameResultOnOneAndTwoThreads) {
+    // Large enough for the parallel path to engage.
+    const auto points = spherePoints(8000, 11);
+    const ColonizationParams p = referenceParams();
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const ColonizationResult one = colonize(points, p);
+    omp_set_num_threads(2);
+    const ColonizationResult two = colonize(points, p);
+    omp_set_num_threads(saved);
+    expectIdentical(one.skeleton, two.skeleton);
+    // And the same seed twice is the same tree; another seed is another tree.
+    ColonizationParams q = p;
+    q.seed = 99;
+    EXPECT_NE(colonize(points, q).skeleton.position, one.skeleton.position);
+}
+
+TEST(SpaceColonization, ZeroAverageAttractionIsResolved) {
+    // One node exactly between two points: the unit vectors cancel.
+    skel::Skeleton start;
+    start.addNode({0, 0, 0}, -1, 0.01f, 0, glm::quat(1, 0, 0, 0));
+    const std::vector<glm::vec3> points = {{1, 0, 0}, {-1, 0, 0}};
+    ColonizationParams p;
+    p.influenceDistance = 3.0f;
+    p.killDistance = 0.3f;
+    p.segmentLength = 0.1f;
+    p.randomness = 0.0f;
+    const ColonizationResult r = colonize(points, p, &start);
+    EXPECT_GE(r.zeroAverageFixes, 1u);
+    EXPECT_EQ(r.killedCount, 2u);
+    EXPECT_EQ(r.stopReason, StopReason::NoPointsLeft);
+    // The tie goes to the lower point index: the first step heads to +X.
+    EXPECT_FLOAT_EQ(r.skeleton.position[1].x, 0.1f);
+    expectIdentical(r.skeleton, colonize(points, p, &start, NeighbourSearch::Naive).skeleton);
+}
+
+TEST(SpaceColonization, TwoPointOscillationIsResolved) {
+    // Two points almost opposite: the mean steps sideways by D, neither point comes closer to
+    // the child than to the node, so the node would sprout the same child again and again.
+    skel::Skeleton start;
+    start.addNode({0, 0, 0}, -1, 0.01f, 0, glm::quat(1, 0, 0, 0));
+    const std::vector<glm::vec3> points = {{1, 0.02f, 0}, {-1, 0.02f, 0}};
+    ColonizationParams p;
+    p.influenceDistance = 3.0f;
+    p.killDistance = 0.3f;
+    p.segmentLength = 0.1f;
+    p.randomness = 0.0f;
+    p.maxIterations = 200;
+    const ColonizationResult r = colonize(points, p, &start);
+    EXPECT_GE(r.oscillationFixes, 1u);
+    EXPECT_EQ(r.killedCount, 2u);
+    EXPECT_EQ(r.stopReason, StopReason::NoPointsLeft);
+    EXPECT_LT(r.skeleton.size(), 40u); // ~2 × (1 - 0.3) / 0.1 steps plus the fork, no brush
+    for (std::size_t i = 0; i < r.skeleton.size(); ++i)
+        for (std::size_t j = i + 1; j < r.skeleton.size(); ++j)
+            EXPECT_GT(distance2(r.skeleton.position[i], r.skeleton.position[j]), 1e-8f)
+                << "duplicate nodes " << i << " and " << j;
+    expectIdentical(r.skeleton, colonize(points, p, &start, NeighbourSearch::Naive).skeleton);
+}
+
+TEST(SpaceColonization, ContinuesFromInitialSkeleton) {
+    // A bent trunk standing in for an L-system's: 12 nodes with orders and orientations.
+    skel::Skeleton trunk;
+    trunk.addNode({0, 0, 0}, -1, 0.2f, 0, glm::quat(1, 0, 0, 0));
+    for (int i = 1; i < 10; ++i)
+        trunk.addNode({0.05f * i, 0.4f * i, 0}, i - 1, 0.1f, 0, glm::quat(1, 0, 0, 0));
+    trunk.addNode({0.6f, 3.0f, 0}, 7, 0.05f, 1, glm::quat(1, 0, 0, 0)); // a side branch
+    trunk.leaves.push_back({{0.6f, 3.0f, 0}, glm::quat(1, 0, 0, 0), 0.1f, 10});
+    trunk.finalize();
+    const auto points = spherePoints(900);
+    const ColonizationParams p = referenceParams();
+    const ColonizationResult r = colonize(points, p, &trunk);
+    const ColonizationResult slow = colonize(points, p, &trunk, NeighbourSearch::Naive);
+    expectIdentical(r.skeleton, slow.skeleton);
+    ASSERT_EQ(r.initialNodes, trunk.size());
+    ASSERT_GT(r.skeleton.size(), trunk.size() + 100);
+    for (std::size_t i = 0; i < trunk.size(); ++i) {
+        EXPECT_EQ(r.skeleton.position[i], trunk.position[i]);
+        EXPECT_EQ(r.skeleton.parent[i], trunk.parent[i]);
+        EXPECT_EQ(r.skeleton.order[i], trunk.order[i]);
+    }
+    EXPECT_EQ(r.skeleton.leaves.size(), 1u);
+    // Every new node descends from the trunk; no new root.
+    for (std::size_t i = trunk.size(); i < r.skeleton.size(); ++i)
+        EXPECT_GE(r.skeleton.parent[i], 0);
+    expectEveryPointKilledOrOutOfReach(points, r, p);
+}
+
+TEST(SpaceColonization, TrunkReachesTheCrown) {
+    ColonizationParams p = referenceParams();
+    p.trunkHeight = 1.0f; // too short: the trunk grows on until the crown is in reach
+    const auto points = Envelope::sphere({0, 10, 0}, 3.0f).sample(500, 2);
+    const ColonizationResult r = colonize(points, p);
+    ASSERT_GT(r.initialNodes, 6u);
+    const glm::vec3 top = r.skeleton.position[r.initialNodes - 1];
+    float best = INFINITY;
+    for (const glm::vec3& a : points)
+        best = std::min(best, distance2(a, top));
+    EXPECT_LT(best, p.influenceDistance * p.influenceDistance);
+    // ... and not one segment more.
+    const glm::vec3 below = r.skeleton.position[r.initialNodes - 2];
+    for (const glm::vec3& a : points)
+        EXPECT_GE(distance2(a, below), p.influenceDistance * p.influenceDistance);
+    for (std::size_t i = 0; i < r.initialNodes; ++i)
+        EXPECT_EQ(r.skeleton.order[i], 0);
+}
+
+TEST(SpaceColonization, ValidationMessagesNameTheRange) {
+    auto message = [](ColonizationParams p) -> std::string {
+        try {
+            validate(p);
+        } catch (const InvalidInput& e) {
+            return e.what();
+        }
+        return "";
+    };
+    ColonizationParams p;
+    EXPECT_EQ(message(p), "");
+    p.killDistance = 3.0f;
+    EXPECT_NE(message(p).find("kill_distance must be smaller than influence_distance"),
+              std::string::npos);
+    p = {};
+    p.killDistance = 0.2f;
+    EXPECT_NE(message(p).find("kill_distance must be larger than segment_length"),
+              std::string::npos);
+    p = {};
+    p.segmentLength = -1.0f;
+    EXPECT_NE(message(p).find("segment_length"), std::string::npos);
+    p = {};
+    p.influenceDistance = NAN;
+    EXPECT_NE(message(p).find("influence_distance"), std::string::npos);
+    p = {};
+    p.influenceDistance = INFINITY;
+    EXPECT_NE(message(p).find("influence_distance"), std::string::npos);
+    p = {};
+    p.randomness = 1.5f;
+    EXPECT_NE(message(p).find("randomness must be in [0, 1]"), std::string::npos);
+    p = {};
+    p.pipeExponent = 0.5f;
+    EXPECT_NE(message(p).find("pipe_exponent must be in [1, 4]"), std::string::npos);
+    p = {};
+    p.tipRadius = 0.0f;
+    EXPECT_NE(message(p).find("tip_radius"), std::string::npos);
+    p = {};
+    p.maxIterations = 0;
+    EXPECT_NE(message(p).find("max_iterations"), std::string::npos);
+    p = {};
+    p.tropism = {0, -0.9f, 0.9f};
+    EXPECT_NE(message(p).find("tropism"), std::string::npos);
+    p = {};
+    p.trunkHeight = -1.0f;
+    EXPECT_NE(message(p).find("trunk_height"), std::string::npos);
+    // colonize() validates too, and rejects non-finite points.
+    p = {};
+    p.killDistance = 5.0f;
+    EXPECT_THROW(colonize(spherePoints(10), p), InvalidInput);
+    EXPECT_THROW(colonize({{0, NAN, 0}}, ColonizationParams{}), InvalidInput);
+}
+
+TEST(PointGrid, RadiusQueryMatchesBruteForce) {
+    const auto points = spherePoints(3000, 4);
+    const PointGrid grid(points, 0.7f);
+    for (const glm::vec3 c : {glm::vec3(0, 6, 0), glm::vec3(3, 8, -1), glm::vec3(10, 0, 0)}) {
+        for (float r : {0.3f, 1.0f, 2.5f}) {
+            std::vector<std::uint32_t> got, want;
+            grid.forEachInRadius(c, r, [&](std::uint32_t i, float) { got.push_back(i); });
+            for (std::uint32_t i = 0; i < points.size(); ++i)
+                if (distance2(points[i], c) < r * r) want.push_back(i);
+            std::sort(got.begin(), got.end());
+            EXPECT_EQ(got, want);
+        }
+    }
+    // Cell bounds bound every point of the cell.
+    for (const PointGrid::Cell& cell : grid.cells())
+        for (std::uint32_t k = cell.begin; k < cell.end; ++k)
+            EXPECT_LE(PointGrid::boxDistance2(cell, {1, 2, 3}),
+                      distance2(points[grid.order()[k]], {1, 2, 3}));
+}

@@ -1,0 +1,55 @@
+// The symbol limit: predicted before the memory is spent, naming the generation.
+#include <gtest/gtest.h>
+
+#include "lsystemtest.h"
+
+using namespace sylva;
+using namespace sylva::lsys;
+using namespace sylva::lsys::test;
+
+namespace {
+
+std::string limitMessage(const Grammar& g, int generations, std::size_t limit) {
+    try {
+        derive(g, options(generations, std::nullopt, limit));
+    } catch (const LimitExceeded& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(Limit, FastPathPredictsTheExactLength) {
+    const Grammar g = parseGrammar("axiom: F\nF -> FF\n");
+    EXPECT_EQ(derive(g, options(9, std::nullopt, 512)).size(), 512u);
+    EXPECT_EQ(limitMessage(g, 10, 512), "generation 10 would hold 1024 modules, more than the "
+                                        "symbol limit of 512; derive fewer generations or raise "
+                                        "the limit");
+    // A thousand generations stop at generation 10 without overflowing the counts.
+    EXPECT_NE(limitMessage(g, 1000, 1000).find("generation 10 "), std::string::npos);
+    // The default limit is 20 million: 2^25 > 2e7 fails at generation 25.
+    const ModuleString ok = derive(g, options(24));
+    EXPECT_EQ(ok.size(), 1u << 24);
+    EXPECT_THROW(derive(g, options(25)), LimitExceeded);
+}
+
+TEST(Limit, GeneralPathNeverHoldsMoreThanTheLimit) {
+    // Parametric: 2^n modules at generation n.
+    const Grammar g = parseGrammar("axiom: A(0)\nA(x) -> A(x+1)A(x+1)\n");
+    EXPECT_EQ(derive(g, options(6, std::nullopt, 64)).size(), 64u);
+    const std::string m = limitMessage(g, 7, 64);
+    EXPECT_NE(m.find("generation 7 would hold more than 64 modules"), std::string::npos) << m;
+    // Stochastic: the exact length is only known by drawing; it throws iff it exceeds.
+    const Grammar s = parseGrammar("axiom: A\nA -> AA : 0.5\nA -> A : 0.5\n");
+    for (std::uint64_t seed = 0; seed < 20; ++seed) {
+        const std::size_t full = derive(s, options(8, seed, 1u << 20)).size();
+        EXPECT_NO_THROW(derive(s, options(8, seed, full)));
+        EXPECT_THROW(derive(s, options(8, seed, full - 1)), LimitExceeded);
+    }
+}
+
+TEST(Limit, TheAxiomCountsAsGenerationZero) {
+    const Grammar g = parseGrammar("axiom: FFFF\n");
+    EXPECT_NE(limitMessage(g, 0, 3).find("generation 0 would hold 4 modules"), std::string::npos);
+}
