@@ -10,5 +10,7 @@ namespace sylva::cli {
 // and exit statuses in one place.
 int runExpand(const std::vector<std::string>& args);
 int runTree(const std::vector<std::string>& args);
+int runForest(const std::vector<std::string>& args);
+int runStats(const std::vector<std::string>& args);
 
 } // namespace sylva::cli

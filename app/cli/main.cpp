@@ -17,8 +17,12 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  expand <grammar> [-n N] [--seed S]      print the derived L-system string\n"
-    "  tree <grammar|species.json> -o out.obj  generate one tree\n"
+    "  tree <grammar|species.json> -o out.{obj,glb,fbx}   generate one tree\n"
     "       [-n N] [--seed S] [--set node.param=value]... [--stats]\n"
+    "  forest <project.sylva> -o out.{obj,glb,fbx}       generate a forest\n"
+    "       [--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--no-lod]\n"
+    "       [--no-adapt] [--no-neighbours] [--instance-tables] [--naive-placement]\n"
+    "  stats <project.sylva|species.json> [--json]       height, DBH, biomass, CO2\n"
     "  help                                    show this text\n"
     "\n"
     "exit status: 0 success, 1 bad input (message as file:line:col: error: ...), 2 bad usage\n";
@@ -49,7 +53,12 @@ int main(int argc, char** argv) {
         }
         if (command == "expand") return runExpand(args);
         if (command == "tree") return runTree(args);
+        if (command == "forest") return runForest(args);
+        if (command == "stats") return runStats(args);
         throw UsageError("unknown command '" + command + "'");
+    } catch (const sylva::Cancelled&) {
+        std::fprintf(stderr, "sylva-cli: interrupted; no output written\n");
+        return 130;
     } catch (const UsageError& e) {
         std::fprintf(stderr, "sylva-cli: %s\n(see 'sylva-cli help')\n", e.what());
         return kBadUsage;

@@ -1,8 +1,8 @@
 #include "cliargs.h"
 #include "commands.h"
+#include "treeexport.h"
 
 #include "document/speciesfile.h"
-#include "engine/export/objwriter.h"
 #include "engine/graph/graph.h"
 #include "engine/util/error.h"
 
@@ -47,8 +47,9 @@ int runTree(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set"},
                     {"--stats"});
     if (args.positional().size() != 1)
-        throw UsageError("usage: sylva-cli tree <grammar.lsys|species.json> -o out.obj [-n N] "
-                         "[--seed S] [--set node.param=value]... [--stats]");
+        throw UsageError(
+            "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{obj,glb,fbx} [-n N] "
+            "[--seed S] [--set node.param=value]... [--stats]");
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
     if (!output) throw UsageError("tree needs an output file: -o out.obj");
@@ -80,8 +81,9 @@ int runTree(const std::vector<std::string>& argv) {
                            "' produces no mesh; end the graph with a tube_mesh node");
 
     const auto t0 = std::chrono::steady_clock::now();
-    exporter::ObjObject object{objectName(evaluator.graph().name), result.mesh.get()};
-    exporter::writeObjFile(*output, {object});
+    TreeExporter exporter(*output);
+    exporter.add({ExportTree{objectName(evaluator.graph().name), result.mesh}});
+    exporter.commit();
     const double writeMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 

@@ -175,13 +175,13 @@ const NodeOutput& Evaluator::evaluate(std::uint64_t seed, Progress& progress) {
 }
 
 const NodeOutput& Evaluator::evaluateTree(std::uint64_t seed, const TreeContext& tree,
-                                          Progress& progress) {
+                                          Progress& progress, const std::string& nodeId) {
     struct Reset {
         const TreeContext*& ref;
         ~Reset() { ref = nullptr; }
     } reset{mTree};
     mTree = &tree;
-    return evaluateNode(mGraph.output, true, seed, progress);
+    return evaluateNode(nodeId.empty() ? mGraph.output : nodeId, true, seed, progress);
 }
 
 const NodeOutput& Evaluator::evaluateNode(const std::string& nodeId, bool seedOverridden,

@@ -144,7 +144,8 @@ public:
     /// Evaluates the output node for one tree of a scene: nodes that react to the scene
     /// (adapt, LOD meshing) read \p tree; the cache key includes tree.key.
     const NodeOutput& evaluateTree(std::uint64_t seed, const TreeContext& tree,
-                                   Progress& progress = noProgress());
+                                   Progress& progress = noProgress(),
+                                   const std::string& nodeId = {});
 
     /// How many node evaluations ran (cache misses) since construction; for tests.
     std::size_t evaluations() const { return mEvaluations; }

@@ -151,6 +151,10 @@ void registerSelfOrganizingNode(graph::NodeRegistry& registry) {
         out.stats["segments"] = static_cast<double>(r.skeleton.segmentCount());
         out.stats["leaves"] = static_cast<double>(r.skeleton.leaves.size());
         out.timingsMs["grow"] = ms;
+        r.skeleton.light = std::move(r.light);
+        r.skeleton.vigour = std::move(r.vigour);
+        r.skeleton.age = std::move(r.age);
+        r.skeleton.validate();
         out.skeleton = std::make_shared<const skel::Skeleton>(std::move(r.skeleton));
         return out;
     };

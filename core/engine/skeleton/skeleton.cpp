@@ -23,6 +23,9 @@ void Skeleton::clear() {
     flags.clear();
     orientation.clear();
     leaves.clear();
+    light.clear();
+    vigour.clear();
+    age.clear();
 }
 
 std::int32_t Skeleton::addNode(const glm::vec3& pos, std::int32_t parentIndex, float r,
@@ -62,6 +65,9 @@ void Skeleton::validate() const {
     if (parent.size() != n || radius.size() != n || order.size() != n || flags.size() != n ||
         orientation.size() != n)
         throw InvalidInput("skeleton arrays differ in size");
+    if ((!light.empty() && light.size() != n) || (!vigour.empty() && vigour.size() != n) ||
+        (!age.empty() && age.size() != n))
+        throw InvalidInput("skeleton growth records (light, vigour, age) differ in size");
     for (std::size_t i = 0; i < n; ++i)
         if (parent[i] >= static_cast<std::int32_t>(i) || parent[i] < -1)
             throw InvalidInput("skeleton node " + std::to_string(i) +

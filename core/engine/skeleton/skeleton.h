@@ -47,6 +47,13 @@ struct Skeleton {
     std::vector<std::uint8_t> flags;    ///< NodeFlag bits
     std::vector<glm::quat> orientation; ///< rest orientation (turtle frame) at the node
     std::vector<Leaf> leaves;
+    /// Optional per-node growth records (empty when the generator does not produce them; else
+    /// one entry per node): light gathered by the node's subtree (units of full exposure),
+    /// vigour flowing through it (metamer units) and its age in growth cycles. The editor
+    /// colours trees by them, so a user can see why a branch was shed.
+    std::vector<float> light;
+    std::vector<float> vigour;
+    std::vector<std::uint16_t> age;
 
     std::size_t size() const { return position.size(); }
     bool empty() const { return position.empty(); }

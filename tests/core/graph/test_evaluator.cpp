@@ -141,3 +141,22 @@ TEST(Evaluator, RejectedEditLosesNothing) {
     e.setParam("src", "length", Value(2));
     EXPECT_EQ(e.evaluate().skeleton->size(), 3u);
 }
+
+TEST(BuiltinNodes, SelfOrganizingTreesCarryTheirGrowthRecords) {
+    registerBuiltinNodeTypes();
+    SpeciesGraph g;
+    g.name = "so";
+    g.nodes = {NodeDesc{"grow", "self_organizing", Value::Object{{"cycles", 5}}, {}}};
+    g.output = "grow";
+    Evaluator e(std::move(g));
+    const auto& s = *e.evaluate(3).skeleton;
+    ASSERT_GT(s.size(), 1u);
+    EXPECT_EQ(s.light.size(), s.size());
+    EXPECT_EQ(s.vigour.size(), s.size());
+    EXPECT_EQ(s.age.size(), s.size());
+    EXPECT_NO_THROW(s.validate());
+    // The root has lived through every cycle; light is non-negative everywhere.
+    EXPECT_GE(s.age[0], s.age.back());
+    for (float l : s.light)
+        EXPECT_GE(l, 0.0f);
+}

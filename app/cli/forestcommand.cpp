@@ -1,0 +1,176 @@
+#include "cliargs.h"
+#include "commands.h"
+#include "terminalprogress.h"
+#include "treeexport.h"
+
+#include "document/project.h"
+#include "document/scenebuild.h"
+#include "engine/forest/placement.h"
+#include "engine/scene/forestbuild.h"
+#include "engine/util/error.h"
+
+#include <QFile>
+
+#include <chrono>
+#include <cstdio>
+#include <omp.h>
+
+namespace sylva::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+glm::vec3 parseVec3(const std::string& text, const std::string& option) {
+    glm::vec3 v;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3)
+        throw UsageError(option + " expects x,y,z (metres), got '" + text + "'");
+    return v;
+}
+
+void num(std::string& out, const char* key, double v, bool comma = true) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "\"%s\":%.10g%s", key, v, comma ? "," : "");
+    out += buf;
+}
+
+} // namespace
+
+doc::Project loadProjectOrScene(const std::string& path) {
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly)) throw IoError("cannot read " + path);
+    const QByteArray bytes = file.readAll();
+    // The reference implementation's scene description has "plants" and no "format".
+    if (!bytes.contains("\"format\"") && bytes.contains("\"plants\""))
+        return doc::importReferenceScene(QString::fromStdString(path));
+    doc::LoadReport report;
+    doc::Project project = doc::parseProject(bytes, QString::fromStdString(path), &report);
+    for (const std::string& w : report.warnings)
+        std::fprintf(stderr, "sylva-cli: warning: %s\n", w.c_str());
+    return project;
+}
+
+std::string metricsJson(const forest::SceneMetrics& m) {
+    std::string json = "{";
+    num(json, "trees", static_cast<double>(m.trees));
+    num(json, "mean_height_m", m.meanHeightM);
+    num(json, "mean_dbh_m", m.meanDbhM);
+    num(json, "mean_crown_width_m", m.meanCrownWidthM);
+    num(json, "wood_volume_m3", m.woodVolumeM3);
+    num(json, "dry_biomass_kg", m.dryBiomassKg);
+    num(json, "carbon_kg", m.carbonKg);
+    num(json, "co2_kg", m.co2Kg);
+    num(json, "chave_agb_kg", m.chaveAgbKg, false);
+    return json + "}";
+}
+
+int runForest(const std::vector<std::string>& argv) {
+    const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
+                    {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
+                     "--naive-placement"});
+    if (args.positional().size() != 1)
+        throw UsageError("usage: sylva-cli forest <project.sylva> -o out.{obj,glb,fbx} "
+                         "[--camera x,y,z] [--threads N] [--tile i/N] [--stats]");
+    auto output = args.value("-o");
+    if (!output) output = args.value("--output");
+    if (!output) throw UsageError("forest needs an output file: -o out.obj");
+    if (auto threads = args.integer("--threads", 1, 1024))
+        omp_set_num_threads(static_cast<int>(*threads));
+    scene::ForestOptions options;
+    if (auto tile = args.value("--tile")) {
+        try {
+            std::tie(options.tile, options.tileCount) = forest::parseTileSpec(*tile);
+        } catch (const InvalidInput& e) {
+            throw UsageError(e.what());
+        }
+    }
+    options.useLod = !args.flag("--no-lod");
+    options.adapt = !args.flag("--no-adapt");
+    options.neighbours = !args.flag("--no-neighbours");
+    if (args.flag("--naive-placement")) options.placement = forest::PlacementMethod::Naive;
+
+    const auto start = Clock::now();
+    const doc::Project project = loadProjectOrScene(args.positional()[0]);
+    scene::ForestScene forestScene = doc::makeForestScene(project);
+    if (auto camera = args.value("--camera")) forestScene.camera = parseVec3(*camera, "--camera");
+    const double loadMs = msSince(start);
+
+    TreeExporter exporter(*output);
+    exporter.setInstanceTables(args.flag("--instance-tables"));
+    TerminalProgress progress;
+    double writeMs = 0;
+    scene::ForestStats stats;
+    try {
+        stats = scene::buildForest(
+            forestScene, options,
+            [&](const std::vector<scene::ForestTree>& batch) {
+                const auto t = Clock::now();
+                std::vector<ExportTree> trees;
+                trees.reserve(batch.size());
+                for (const scene::ForestTree& tree : batch)
+                    trees.push_back({tree.name, tree.mesh, tree.instance.position,
+                                     tree.instance.rotation,
+                                     tree.instance.scale * tree.instance.growth});
+                exporter.add(trees);
+                progress.checkCancelled();
+                writeMs += msSince(t);
+            },
+            progress);
+        const auto t = Clock::now();
+        exporter.commit();
+        writeMs += msSince(t);
+    } catch (const Cancelled&) {
+        progress.finish();
+        std::fprintf(stderr, "sylva-cli: interrupted; no output written\n");
+        return kInterrupted;
+    }
+    progress.finish();
+    for (const forest::Shortfall& s : stats.shortfalls)
+        std::fprintf(
+            stderr, "sylva-cli: warning: domain %zu: placed %zu of %zu '%s' (no room left)\n",
+            s.domain + 1, s.placed, s.requested, forestScene.species[s.species].name.c_str());
+
+    if (args.flag("--stats")) {
+        std::string json = "{";
+        num(json, "trees", static_cast<double>(stats.trees));
+        num(json, "trees_in_scene", static_cast<double>(stats.treesInScene));
+        num(json, "tile", options.tile + 1);
+        num(json, "tiles", options.tileCount);
+        num(json, "threads", omp_get_max_threads());
+        num(json, "vertices", static_cast<double>(stats.vertices));
+        num(json, "triangles", static_cast<double>(stats.triangles));
+        num(json, "obstacle_triangles",
+            forestScene.obstacles ? static_cast<double>(forestScene.obstacles->triangleCount())
+                                  : 0.0);
+        num(json, "colliding_trees", static_cast<double>(stats.collidingTrees));
+        num(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
+        std::size_t missing = 0;
+        for (const forest::Shortfall& s : stats.shortfalls)
+            missing += s.requested - s.placed;
+        num(json, "shortfall", static_cast<double>(missing));
+        json += "\"metrics\":" + metricsJson(stats.metrics) + ",";
+        json += "\"timings_ms\":{";
+        num(json, "load", loadMs);
+        for (const auto& [k, v] : stats.wallMs)
+            num(json, k.c_str(), v);
+        num(json, "write", writeMs);
+        num(json, "total", msSince(start), false);
+        json += "},\"cpu_ms\":{";
+        bool first = true;
+        for (const auto& [k, v] : stats.cpuMs) {
+            if (!first) json += ",";
+            first = false;
+            num(json, k.c_str(), v, false);
+        }
+        json += "}}\n";
+        std::fwrite(json.data(), 1, json.size(), stdout);
+    }
+    return kOk;
+}
+
+} // namespace sylva::cli

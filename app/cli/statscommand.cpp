@@ -1,0 +1,80 @@
+#include "cliargs.h"
+#include "commands.h"
+#include "terminalprogress.h"
+
+#include "document/project.h"
+#include "document/scenebuild.h"
+#include "document/speciesfile.h"
+#include "engine/forest/metrics.h"
+#include "engine/scene/forestbuild.h"
+#include "engine/util/error.h"
+
+#include <QString>
+
+#include <cstdio>
+
+namespace sylva::cli {
+
+doc::Project loadProjectOrScene(const std::string& path); // forestcommand.cpp
+std::string metricsJson(const forest::SceneMetrics& m);   // forestcommand.cpp
+
+namespace {
+
+void printTable(const forest::SceneMetrics& m, bool perTree) {
+    std::printf("%-28s %14zu\n", "trees", m.trees);
+    std::printf("%-28s %14.2f\n", perTree ? "height (m)" : "mean height (m)", m.meanHeightM);
+    std::printf("%-28s %14.3f\n", perTree ? "DBH at 1.3 m (m)" : "mean DBH at 1.3 m (m)",
+                m.meanDbhM);
+    std::printf("%-28s %14.2f\n", perTree ? "crown width (m)" : "mean crown width (m)",
+                m.meanCrownWidthM);
+    std::printf("%-28s %14.4f\n", "wood volume (m3)", m.woodVolumeM3);
+    std::printf("%-28s %14.2f\n", "dry biomass (kg)", m.dryBiomassKg);
+    std::printf("%-28s %14.2f\n", "carbon (kg)", m.carbonKg);
+    std::printf("%-28s %14.2f\n", "CO2 equivalent (kg)", m.co2Kg);
+    std::printf("%-28s %14.2f\n", "Chave 2014 AGB (kg)", m.chaveAgbKg);
+}
+
+} // namespace
+
+int runStats(const std::vector<std::string>& argv) {
+    const Args args(argv, {"--seed"}, {"--json"});
+    if (args.positional().size() != 1)
+        throw UsageError(
+            "usage: sylva-cli stats <project.sylva|species.json|grammar> [--json] [--seed S]");
+    const std::string path = args.positional()[0];
+    const bool isProject = path.ends_with(".sylva") || path.ends_with(".scene.json");
+    forest::SceneMetrics metrics;
+    if (isProject) {
+        const doc::Project project = loadProjectOrScene(path);
+        scene::ForestOptions options;
+        options.buildMeshes = false;
+        TerminalProgress progress;
+        const scene::ForestStats stats = scene::buildForest(
+            doc::makeForestScene(project), options, [](const auto&) {}, progress);
+        progress.finish();
+        metrics = stats.metrics;
+    } else {
+        graph::registerBuiltinNodeTypes();
+        const graph::SpeciesGraph species = doc::loadSpecies(QString::fromStdString(path));
+        graph::Evaluator evaluator(species);
+        const graph::NodeDesc* out = species.findNode(species.output);
+        const std::string node = out && out->inputs.size() == 1 ? out->inputs[0] : species.output;
+        const auto seed = args.integer("--seed", 0, (1LL << 62));
+        const graph::NodeOutput& result = evaluator.evaluateNode(
+            node, seed.has_value(), seed ? static_cast<std::uint64_t>(*seed) : 0);
+        if (!result.skeleton) throw InvalidInput(path + ": the species produces no skeleton");
+        forest::WoodProperties wood;
+        wood.densityKgM3 = species.traits.woodDensity;
+        wood.carbonFraction = species.traits.carbonFraction;
+        metrics.add(forest::measureTree(*result.skeleton, wood));
+    }
+    if (args.flag("--json")) {
+        const std::string json = metricsJson(metrics) + "\n";
+        std::fwrite(json.data(), 1, json.size(), stdout);
+    } else {
+        printTable(metrics, !isProject);
+    }
+    return kOk;
+}
+
+} // namespace sylva::cli

@@ -1,0 +1,105 @@
+#include "treeexport.h"
+
+#include "engine/export/materials.h"
+#include "engine/util/atomicfile.h"
+#include "engine/util/error.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cstdlib>
+#include <unistd.h>
+
+namespace sylva::cli {
+
+namespace fs = std::filesystem;
+
+fs::path resourcesDir() {
+    if (const char* env = std::getenv("SYLVA_RESOURCES_DIR"); env && *env) return env;
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        // build/<preset>/app/cli/sylva-cli or <build>/app/cli/sylva-cli → <source>/resources;
+        // <prefix>/bin → <prefix>/share/sylva/resources
+        for (const fs::path& candidate :
+             {exe.parent_path() / "../../../../resources", exe.parent_path() / "../../../resources",
+              exe.parent_path() / "../share/sylva/resources"}) {
+            if (fs::exists(candidate / "textures", ec)) return fs::weakly_canonical(candidate, ec);
+        }
+    }
+    return {};
+}
+
+TreeExporter::TreeExporter(fs::path path) : mPath(std::move(path)) {
+    std::string ext = mPath.extension().string();
+    for (char& c : ext)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    mObj = ext == ".obj";
+    if (mObj) {
+        exporter::ObjOptions options;
+        options.mtllib = mPath.stem().string() + ".mtl";
+        mObjWriter = std::make_unique<exporter::ObjStreamWriter>(mPath, options);
+    } else {
+        (void)exporter::sceneFormatFor(mPath); // rejects unknown extensions before any work
+    }
+}
+
+TreeExporter::~TreeExporter() = default;
+
+void TreeExporter::add(const std::vector<ExportTree>& trees) {
+    if (mObj) {
+        std::vector<exporter::ObjObject> objects;
+        objects.reserve(trees.size());
+        for (const ExportTree& t : trees) {
+            glm::mat4 m = glm::translate(glm::mat4(1.0f), t.position);
+            m = glm::rotate(m, t.rotationY, glm::vec3(0, 1, 0));
+            m = glm::scale(m, glm::vec3(t.scale));
+            objects.push_back({t.name, t.mesh.get(), m});
+        }
+        mObjWriter->add(objects);
+    }
+    if (!mObj || mInstanceTables) {
+        for (const ExportTree& t : trees) {
+            std::size_t meshIndex = mScene.meshes.size();
+            for (std::size_t i = 0; i < mKeepAlive.size(); ++i)
+                if (mKeepAlive[i] == t.mesh) meshIndex = i; // shared meshes are written once
+            if (meshIndex == mScene.meshes.size()) {
+                mKeepAlive.push_back(t.mesh);
+                mScene.meshes.push_back({t.name, t.mesh.get()});
+            }
+            exporter::SceneInstance instance;
+            instance.name = t.name;
+            instance.mesh = meshIndex;
+            instance.position = t.position;
+            instance.rotation = glm::angleAxis(t.rotationY, glm::vec3(0, 1, 0));
+            instance.scale = glm::vec3(t.scale);
+            mScene.instances.push_back(instance);
+        }
+    }
+}
+
+std::vector<fs::path> TreeExporter::commit() {
+    std::vector<fs::path> written{mPath};
+    const fs::path dir = mPath.parent_path().empty() ? fs::path(".") : mPath.parent_path();
+    if (mObj) {
+        const fs::path mtl = dir / (mPath.stem().string() + ".mtl");
+        exporter::writeMtlFile(mtl, exporter::defaultMaterials());
+        mObjWriter->commit();
+        written.push_back(mtl);
+    } else {
+        exporter::writeScene(mPath, mScene, exporter::sceneFormatFor(mPath));
+    }
+    if (const fs::path res = resourcesDir(); !res.empty())
+        if (exporter::copyTextures(exporter::defaultMaterials(), res / "textures", dir) > 0)
+            written.push_back(dir / "textures");
+    if (mInstanceTables) {
+        const fs::path json = dir / (mPath.stem().string() + ".instances.json");
+        const fs::path csv = dir / (mPath.stem().string() + ".instances.csv");
+        writeFileAtomically(json, exporter::formatInstancesJson(mScene));
+        writeFileAtomically(csv, exporter::formatInstancesCsv(mScene));
+        written.push_back(json);
+        written.push_back(csv);
+    }
+    return written;
+}
+
+} // namespace sylva::cli

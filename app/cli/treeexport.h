@@ -1,0 +1,52 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include "engine/export/objwriter.h"
+#include "engine/export/sceneexport.h"
+#include "engine/mesh/mesh.h"
+
+namespace sylva::cli {
+
+/// One tree to export: its mesh in its own frame and where it stands.
+struct ExportTree {
+    std::string name;
+    std::shared_ptr<const mesh::Mesh> mesh;
+    glm::vec3 position{0.0f};
+    float rotationY = 0.0f; ///< radians about +Y
+    float scale = 1.0f;
+};
+
+/// Writes trees by the output's extension: `.obj` streams batch by batch (plus `<name>.mtl` and
+/// the bark/leaf textures in `textures/` beside it); `.glb`, `.gltf` and `.fbx` go through
+/// Assimp with one node per tree. Nothing appears at the path before commit() succeeds.
+class TreeExporter {
+public:
+    explicit TreeExporter(std::filesystem::path path);
+    ~TreeExporter();
+    void add(const std::vector<ExportTree>& trees);
+    /// Finishes the file(s); returns the paths written (main file first).
+    std::vector<std::filesystem::path> commit();
+    /// Also write `<stem>.instances.json` and `.csv` (mesh, position, rotation, scale).
+    void setInstanceTables(bool on) { mInstanceTables = on; }
+
+private:
+    std::filesystem::path mPath;
+    bool mObj = true;
+    bool mInstanceTables = false;
+    std::unique_ptr<exporter::ObjStreamWriter> mObjWriter;
+    std::vector<std::shared_ptr<const mesh::Mesh>> mKeepAlive;
+    exporter::SceneDesc mScene;
+};
+
+/// Folder of Sylva's shipped resources (textures): $SYLVA_RESOURCES_DIR, the source tree next
+/// to the build folder, or the installed share/sylva/resources; empty when none is found.
+std::filesystem::path resourcesDir();
+
+} // namespace sylva::cli

@@ -1,0 +1,86 @@
+#include "document/scenebuild.h"
+
+#include "document/speciesfile.h"
+#include "engine/environment/adaptnode.h"
+#include "engine/util/error.h"
+
+#include <QFileInfo>
+
+#include <cmath>
+
+namespace sylva::doc {
+
+scene::ForestScene makeForestScene(const Project& project) {
+    scene::ForestScene s;
+    s.seed = project.seed;
+    s.camera = project.cameraPosition;
+    s.lightDirection = project.lightDirection;
+
+    std::map<std::string, std::uint32_t> speciesIndex;
+    for (const ProjectSpecies& ps : project.species) {
+        scene::SceneSpecies species;
+        species.name = ps.name;
+        if (ps.graph) {
+            const graph::Value root(graph::Value::Object{{"format", "sylva-species"},
+                                                         {"format_version", kSpeciesFormatVersion},
+                                                         {"name", ps.name},
+                                                         {"graph", *ps.graph}});
+            species.graph = parseSpecies(QByteArray::fromStdString(root.toJson()),
+                                         QString::fromStdString(ps.name), project.baseDir);
+        } else {
+            species.graph = loadSpecies(project.resolve(ps.file));
+        }
+        speciesIndex[ps.name] = static_cast<std::uint32_t>(s.species.size());
+        s.species.push_back(std::move(species));
+    }
+
+    std::vector<env::ObstacleSpec> obstacles;
+    for (const ProjectObstacle& o : project.obstacles) {
+        env::ObstacleSpec spec;
+        spec.file = project.resolve(o.file).toStdString();
+        spec.transform.translate = o.translate;
+        spec.transform.rotateDeg = o.rotate;
+        spec.transform.scale = o.scale;
+        obstacles.push_back(spec);
+    }
+    if (!obstacles.empty()) s.obstacles = env::loadObstacleScene(obstacles);
+
+    for (const PlacementDomain& d : project.domains) {
+        forest::Domain domain;
+        if (d.shape == "polygon") {
+            domain.shape = forest::DomainShape::Polygon;
+            domain.polygon = d.polygon;
+        } else if (d.shape == "terrain") {
+            // Trees go where a ray down meets the terrain, within the terrain's footprint.
+            env::ObstacleSpec spec;
+            spec.file = project.resolve(d.terrain).toStdString();
+            s.ground = env::loadObstacleScene({spec});
+            domain.min = {s.ground->lo().x, s.ground->lo().z};
+            domain.max = {s.ground->hi().x, s.ground->hi().z};
+        } else {
+            domain.min = d.min;
+            domain.max = d.max;
+        }
+        for (const auto& [name, count] : d.counts)
+            domain.counts.emplace_back(name, static_cast<std::size_t>(count));
+        s.domains.push_back(std::move(domain));
+    }
+
+    std::uint32_t id = 0;
+    for (const ProjectInstance& pi : project.instances) {
+        forest::Instance in;
+        in.id = id++;
+        in.species = speciesIndex.at(pi.species);
+        in.position = pi.position;
+        const double turns = pi.rotation / 360.0 - std::floor(pi.rotation / 360.0); // [0, 1)
+        in.rotation = static_cast<float>(turns * 2.0 * M_PI);
+        in.scale = static_cast<float>(pi.scale);
+        in.growth = static_cast<float>(pi.growth);
+        in.seed = pi.seed;
+        in.handPlaced = true;
+        s.handPlaced.push_back(in);
+    }
+    return s;
+}
+
+} // namespace sylva::doc

@@ -1,0 +1,295 @@
+#include "engine/scene/forestbuild.h"
+
+#include "engine/mesh/lod.h"
+#include "engine/mesh/meshnodes.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <unordered_map>
+
+#include <omp.h>
+
+namespace sylva::scene {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+/// What the builder needs to know about one species' graph.
+struct SpeciesPlan {
+    const graph::NodeDesc* meshNode = nullptr; ///< the output node
+    std::string skeletonNode;                  ///< its input: yields the (adapted) skeleton
+    bool hasAdaptNode = false;
+    CrownShape crown;
+    forest::WoodProperties wood;
+};
+
+SpeciesPlan planSpecies(const SceneSpecies& s) {
+    SpeciesPlan plan;
+    const graph::SpeciesGraph& g = s.graph;
+    plan.meshNode = g.findNode(g.output);
+    if (!plan.meshNode || plan.meshNode->type != "tube_mesh" || plan.meshNode->inputs.size() != 1)
+        throw InvalidInput("species '" + s.name +
+                           "': a forest needs the species' output node to be a tube_mesh with "
+                           "one input (the skeleton)");
+    plan.skeletonNode = plan.meshNode->inputs[0];
+    for (const graph::NodeDesc& n : g.nodes)
+        plan.hasAdaptNode = plan.hasAdaptNode || n.type == "adapt";
+    plan.wood.densityKgM3 = g.traits.woodDensity;
+    plan.wood.carbonFraction = g.traits.carbonFraction;
+    return plan;
+}
+
+/// Uniform grid over the instances' ground positions, for neighbour look-ups.
+class NeighbourGrid {
+public:
+    NeighbourGrid(const std::vector<env::CrownVolume>& crowns, float cell)
+        : mCrowns(crowns), mCell(cell) {
+        for (std::size_t i = 0; i < crowns.size(); ++i)
+            mCells[key(crowns[i].base)].push_back(static_cast<std::uint32_t>(i));
+    }
+    /// Crowns other than \p self whose cylinders overlap its cylinder, in instance order.
+    std::vector<env::CrownVolume> around(std::size_t self) const {
+        const env::CrownVolume& c = mCrowns[self];
+        std::vector<std::uint32_t> found;
+        const auto cx = static_cast<long long>(std::floor(c.base.x / mCell));
+        const auto cz = static_cast<long long>(std::floor(c.base.z / mCell));
+        for (long long dx = -1; dx <= 1; ++dx)
+            for (long long dz = -1; dz <= 1; ++dz) {
+                auto it = mCells.find(pack(cx + dx, cz + dz));
+                if (it == mCells.end()) continue;
+                for (std::uint32_t j : it->second) {
+                    if (j == self) continue;
+                    const env::CrownVolume& o = mCrowns[j];
+                    const float d =
+                        glm::length(glm::vec2(o.base.x - c.base.x, o.base.z - c.base.z));
+                    if (d < o.radius + c.radius) found.push_back(j);
+                }
+            }
+        std::sort(found.begin(), found.end());
+        std::vector<env::CrownVolume> out;
+        out.reserve(found.size());
+        for (std::uint32_t j : found)
+            out.push_back(mCrowns[j]);
+        return out;
+    }
+
+private:
+    static std::uint64_t pack(long long x, long long z) {
+        return (static_cast<std::uint64_t>(x) << 32) ^
+               (static_cast<std::uint64_t>(z) & 0xFFFFFFFFull);
+    }
+    std::uint64_t key(const glm::vec3& p) const {
+        return pack(static_cast<long long>(std::floor(p.x / mCell)),
+                    static_cast<long long>(std::floor(p.z / mCell)));
+    }
+    const std::vector<env::CrownVolume>& mCrowns;
+    float mCell;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> mCells;
+};
+
+const env::ObstacleScene& emptyScene() {
+    static const env::ObstacleScene scene;
+    return scene;
+}
+
+} // namespace
+
+CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed) {
+    graph::Evaluator evaluator(species);
+    const graph::NodeDesc* out = species.findNode(species.output);
+    const std::string node = out && out->inputs.size() == 1 ? out->inputs[0] : species.output;
+    const graph::NodeOutput& result = evaluator.evaluateNode(node, true, seed);
+    CrownShape crown;
+    if (!result.skeleton || result.skeleton->empty()) return crown;
+    const skel::Skeleton& s = *result.skeleton;
+    float radius = 0.0f, top = 0.0f, bottom = std::numeric_limits<float>::max();
+    const glm::vec3 root = s.position[0];
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const glm::vec3 d = s.position[i] - root;
+        radius = std::max(radius, glm::length(glm::vec2(d.x, d.z)));
+        top = std::max(top, d.y);
+        if (s.order[i] > 0) bottom = std::min(bottom, d.y);
+    }
+    crown.radius = std::max(radius, 0.05f);
+    crown.top = std::max(top, 0.05f);
+    crown.bottom =
+        bottom == std::numeric_limits<float>::max() ? 0.5f * crown.top : std::max(bottom, 0.0f);
+    if (species.traits.crownRadius > 0)
+        crown.radius = static_cast<float>(species.traits.crownRadius);
+    return crown;
+}
+
+ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
+                        const TreeSink& sink, Progress& progress) {
+    if (scene.species.empty()) throw InvalidInput("the scene has no species");
+    requireRange("tile count", options.tileCount, 1, 1e6);
+    requireRange("tile", options.tile, 0, options.tileCount - 1);
+    ForestStats stats;
+
+    // 1. Species: graphs checked, crowns measured once on a sample tree.
+    auto t0 = Clock::now();
+    std::vector<SpeciesPlan> plans;
+    std::vector<forest::SpeciesSpec> specs;
+    for (std::size_t i = 0; i < scene.species.size(); ++i) {
+        plans.push_back(planSpecies(scene.species[i]));
+        plans.back().crown = measureCrown(scene.species[i].graph, mixSeed(scene.seed, 0xC0000 + i));
+        specs.push_back({scene.species[i].name, plans.back().crown.radius});
+    }
+    stats.wallMs["species"] = msSince(t0);
+
+    // 2. Placement over the whole scene, then the tile.
+    t0 = Clock::now();
+    forest::PlacementParams placement;
+    placement.seed = scene.seed;
+    placement.ground = scene.ground.get();
+    placement.obstacles = scene.obstacles.get();
+    forest::PlacementResult placed =
+        forest::placeForest(specs, scene.domains, scene.handPlaced, placement, options.placement);
+    stats.shortfalls = placed.shortfalls;
+    stats.treesInScene = placed.instances.size();
+    std::vector<std::size_t> selected;
+    if (options.tileCount > 1) {
+        const forest::TileGrid grid =
+            forest::makeTileGrid(scene.domains, scene.handPlaced, options.tileCount);
+        for (std::size_t i = 0; i < placed.instances.size(); ++i)
+            if (forest::tileOf(grid, placed.instances[i].position) == options.tile)
+                selected.push_back(i);
+    } else {
+        selected.resize(placed.instances.size());
+        for (std::size_t i = 0; i < selected.size(); ++i)
+            selected[i] = i;
+    }
+    stats.trees = selected.size();
+
+    // Every tree's crown, for its neighbours (computed over the whole scene so tiles agree).
+    std::vector<env::CrownVolume> crowns(placed.instances.size());
+    float maxRadius = 0.1f;
+    for (std::size_t i = 0; i < crowns.size(); ++i) {
+        const forest::Instance& in = placed.instances[i];
+        const CrownShape& c = plans[in.species].crown;
+        const float s = in.scale * in.growth;
+        crowns[i] = {in.position, c.radius * s, c.bottom * s, c.top * s};
+        maxRadius = std::max(maxRadius, crowns[i].radius);
+    }
+    const NeighbourGrid neighbourGrid(crowns, 2.0f * maxRadius);
+    stats.wallMs["place"] = msSince(t0);
+
+    // 3. Trees, in parallel batches handed on in order.
+    t0 = Clock::now();
+    const int threads = std::max(1, omp_get_max_threads());
+    std::vector<std::vector<std::unique_ptr<graph::Evaluator>>> evaluators(
+        static_cast<std::size_t>(threads));
+    for (auto& perThread : evaluators)
+        for (const SceneSpecies& s : scene.species)
+            perThread.push_back(std::make_unique<graph::Evaluator>(s.graph));
+    std::vector<mesh::TreeMeshSettings> meshSettings;
+    for (const SpeciesPlan& plan : plans)
+        meshSettings.push_back(mesh::treeMeshSettingsFromParams(plan.meshNode->params, 0));
+
+    const env::ObstacleScene& obstacles = scene.obstacles ? *scene.obstacles : emptyScene();
+    std::vector<double> cpuGenerate(static_cast<std::size_t>(threads), 0.0), cpuAdapt(cpuGenerate),
+        cpuMesh(cpuGenerate);
+    const std::size_t batchSize = std::max<std::size_t>(1, options.batchSize);
+    for (std::size_t begin = 0; begin < selected.size(); begin += batchSize) {
+        progress.checkCancelled();
+        const std::size_t end = std::min(selected.size(), begin + batchSize);
+        std::vector<ForestTree> batch(end - begin);
+        std::vector<std::exception_ptr> errors(end - begin);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(end - begin); ++k) {
+            const auto slot = static_cast<std::size_t>(k);
+            const std::size_t index = selected[begin + slot];
+            const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+            try {
+                const forest::Instance& in = placed.instances[index];
+                const SceneSpecies& species = scene.species[in.species];
+                const SpeciesPlan& plan = plans[in.species];
+                ForestTree& tree = batch[slot];
+                tree.instance = in;
+                tree.name = species.name + "_" + std::to_string(in.id);
+
+                std::vector<env::CrownVolume> near;
+                if (options.neighbours) near = neighbourGrid.around(index);
+                graph::TreeContext ctx;
+                ctx.transform = in.transform();
+                ctx.obstacles = options.adapt ? &obstacles : nullptr;
+                ctx.neighbours = near.data();
+                ctx.neighbourCount = near.size();
+                ctx.lightDirection = scene.lightDirection;
+                ctx.cameraDistance = glm::length(scene.camera - in.position);
+                ctx.key = in.id + 1;
+
+                auto t = Clock::now();
+                graph::Evaluator& evaluator = *evaluators[thread][in.species];
+                std::shared_ptr<const skel::Skeleton> skeleton =
+                    evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode).skeleton;
+                if (!skeleton)
+                    throw InvalidInput("species '" + species.name + "' produced no skeleton");
+                cpuGenerate[thread] += msSince(t);
+
+                if (options.adapt && !plan.hasAdaptNode && (!obstacles.empty() || !near.empty())) {
+                    t = Clock::now();
+                    env::AdaptParams params;
+                    params.lightDirection = scene.lightDirection;
+                    env::AdaptResult adapted =
+                        env::adaptTree(*skeleton, obstacles, ctx.transform, params, near);
+                    tree.adapt = adapted.stats;
+                    skeleton = std::make_shared<const skel::Skeleton>(std::move(adapted.skeleton));
+                    cpuAdapt[thread] += msSince(t);
+                }
+
+                tree.metrics = forest::measureTree(*skeleton, plan.wood, in.scale * in.growth);
+                if (!options.buildMeshes) {
+                    tree.mesh = std::make_shared<const mesh::Mesh>();
+                    continue;
+                }
+                t = Clock::now();
+                mesh::TreeMeshSettings settings = meshSettings[in.species];
+                settings.seed = mixSeed(in.seed, 0x7EAF);
+                if (options.useLod) {
+                    settings.useLod = true;
+                    // LOD bands are in world metres; the mesh is built in the tree's frame.
+                    settings.cameraDistance = ctx.cameraDistance;
+                }
+                tree.mesh =
+                    std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
+                cpuMesh[thread] += msSince(t);
+            } catch (...) {
+                errors[slot] = std::current_exception();
+            }
+        }
+        for (const std::exception_ptr& e : errors)
+            if (e) std::rethrow_exception(e); // the first failing tree in instance order
+        for (const ForestTree& tree : batch) {
+            stats.vertices += tree.mesh->vertexCount();
+            stats.triangles += tree.mesh->triangleCount();
+            stats.collidingTrees += tree.adapt.collidingBefore > 0 ? 1 : 0;
+            stats.prunedNodes += tree.adapt.hiddenNodes;
+            stats.metrics.add(tree.metrics);
+        }
+        sink(batch);
+        progress.report(static_cast<double>(end) / static_cast<double>(selected.size()), "trees");
+    }
+    auto sum = [](const std::vector<double>& v) {
+        double s = 0;
+        for (double x : v)
+            s += x;
+        return s;
+    };
+    stats.cpuMs["generate"] = sum(cpuGenerate);
+    stats.cpuMs["adapt"] = sum(cpuAdapt);
+    stats.cpuMs["mesh"] = sum(cpuMesh);
+    stats.wallMs["trees"] = msSince(t0);
+    return stats;
+}
+
+} // namespace sylva::scene

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/environment/adapt.h"
+#include "engine/environment/obstaclescene.h"
+#include "engine/forest/metrics.h"
+#include "engine/forest/placement.h"
+#include "engine/graph/graph.h"
+#include "engine/mesh/mesh.h"
+#include "engine/util/progress.h"
+
+namespace sylva::scene {
+
+/// A species of a scene: its graph (output = a meshing node whose input yields the skeleton).
+struct SceneSpecies {
+    std::string name;
+    graph::SpeciesGraph graph;
+};
+
+/// Everything a forest is built from; the document layer fills it from a `.sylva` project.
+struct ForestScene {
+    std::uint64_t seed = 0;
+    std::vector<SceneSpecies> species;
+    std::vector<forest::Domain> domains;
+    std::vector<forest::Instance> handPlaced; ///< species index, position, rotation (radians)...
+    std::shared_ptr<const env::ObstacleScene> obstacles; ///< may be null
+    std::shared_ptr<const env::ObstacleScene> ground;    ///< terrain; null = flat ground y = 0
+    glm::vec3 camera{0.0f, 20.0f, 80.0f};
+    glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
+};
+
+struct ForestOptions {
+    int tile = 0;               ///< 0-based tile to build
+    int tileCount = 1;          ///< 1 = the whole forest
+    bool useLod = true;         ///< mesh resolution from the distance to the camera
+    bool adapt = true;          ///< bend/prune trees against obstacles and neighbouring crowns
+    bool neighbours = true;     ///< neighbouring crowns count as obstacles
+    bool buildMeshes = true;    ///< false: skeletons and metrics only (sylva-cli stats)
+    std::size_t batchSize = 64; ///< trees generated in parallel before they are handed on
+    forest::PlacementMethod placement = forest::PlacementMethod::Grid;
+};
+
+/// One finished tree, in its own local frame; `instance.transform()` places it in the world.
+struct ForestTree {
+    forest::Instance instance;
+    std::string name; ///< "<species>_<id>"
+    std::shared_ptr<const mesh::Mesh> mesh;
+    forest::TreeMetrics metrics;
+    env::AdaptStats adapt;
+};
+
+/// What a build did. CPU times are summed over threads; `wallMs` is elapsed time.
+struct ForestStats {
+    std::size_t treesInScene = 0; ///< all trees of all tiles
+    std::size_t trees = 0;        ///< trees of the built tile
+    std::size_t vertices = 0, triangles = 0;
+    std::size_t collidingTrees = 0, prunedNodes = 0;
+    std::vector<forest::Shortfall> shortfalls;
+    forest::SceneMetrics metrics;
+    std::map<std::string, double> cpuMs;  ///< generate, adapt, mesh
+    std::map<std::string, double> wallMs; ///< load, place, build (set by callers too)
+};
+
+/// Receives finished trees in instance order, one batch at a time (streaming exporters).
+using TreeSink = std::function<void(const std::vector<ForestTree>& batch)>;
+
+/// Crown radius (m) and crown height band of a species at scale 1, measured on one sample tree
+/// when the species' traits do not give a radius.
+struct CrownShape {
+    float radius = 1.0f, bottom = 0.0f, top = 1.0f;
+};
+CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed);
+
+/// Builds a forest: places the trees (hand-placed ones first, then the domains'), selects the
+/// tile, and for each of its trees evaluates the species graph with the tree's seed, adapts the
+/// skeleton to the obstacles and neighbouring crowns (from the rest pose), meshes it at the LOD
+/// its distance to the camera asks for, and measures it. Trees are built in parallel batches and
+/// handed to \p sink in instance order, so the output is identical on any thread count, and the
+/// union of the tiles' trees equals the whole forest's.
+/// \throw InvalidInput, IoError, LimitExceeded, Cancelled (through \p progress).
+ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
+                        const TreeSink& sink, Progress& progress = noProgress());
+
+} // namespace sylva::scene
