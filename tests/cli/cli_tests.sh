@@ -65,13 +65,17 @@ tree_set_override)
   run_cli 0 tree "$DATA/lsystem/bush.lsys" -o a.obj --stats -n 1
   grep -q '"segments":5[,}]' out.txt || fail "-n 1: $(cat out.txt)" ;;
 tree_determinism)
-  run_cli 0 tree "$DATA/lsystem/stochastic.lsys" -o a.obj --seed 11
-  run_cli 0 tree "$DATA/lsystem/stochastic.lsys" -o b.obj --seed 11
-  cmp -s a.obj b.obj || fail "same seed, different OBJ"
-  OMP_NUM_THREADS=1 "$CLI" tree "$DATA/lsystem/stochastic.lsys" -o c.obj --seed 11 || fail "1 thread"
-  OMP_NUM_THREADS=2 "$CLI" tree "$DATA/lsystem/stochastic.lsys" -o d.obj --seed 11 || fail "2 threads"
-  cmp -s c.obj d.obj || fail "1 and 2 threads differ"
-  cmp -s a.obj c.obj || fail "thread count changed the output" ;;
+  # Same file name in four folders: the OBJ names its MTL after itself.
+  mkdir -p a b c d
+  run_cli 0 tree "$DATA/lsystem/stochastic.lsys" -o a/t.obj --seed 11
+  run_cli 0 tree "$DATA/lsystem/stochastic.lsys" -o b/t.obj --seed 11
+  cmp -s a/t.obj b/t.obj || fail "same seed, different OBJ"
+  OMP_NUM_THREADS=1 "$CLI" tree "$DATA/lsystem/stochastic.lsys" -o c/t.obj --seed 11 || fail "1 thread"
+  OMP_NUM_THREADS=2 "$CLI" tree "$DATA/lsystem/stochastic.lsys" -o d/t.obj --seed 11 || fail "2 threads"
+  cmp -s c/t.obj d/t.obj || fail "1 and 2 threads differ"
+  cmp -s a/t.obj c/t.obj || fail "thread count changed the output"
+  run_cli 0 tree "$DATA/lsystem/stochastic.lsys" -o b/t.obj --seed 12
+  ! cmp -s a/t.obj b/t.obj || fail "another seed gave the same tree" ;;
 bad_syntax_reports_position)
   run_cli 1 expand "$DATA/lsystem/bad-syntax.lsys"
   grep -Eq "bad-syntax.lsys:3:[0-9]+: error: .*" err.txt || fail "message: $(cat err.txt)"
@@ -104,6 +108,71 @@ bad_param_range)
 missing_file)
   run_cli 1 tree does-not-exist.json -o a.obj
   grep -q "does-not-exist.json" err.txt || fail "$(cat err.txt)" ;;
+tree_glb_export)
+  run_cli 0 tree "$DATA/lsystem/bush.lsys" -o bush.glb
+  [[ $(head -c 4 bush.glb) == glTF ]] || fail "not a binary glTF"
+  if command -v assimp >/dev/null; then
+    assimp info bush.glb > info.txt 2>&1 || fail "assimp cannot read the GLB: $(cat info.txt)"
+    grep -qi "meshes" info.txt || fail "$(cat info.txt)"
+  fi
+  run_cli 0 tree "$DATA/lsystem/bush.lsys" -o bush.obj
+  [[ -s bush.mtl ]] || fail "no MTL beside the OBJ"
+  grep -q '^mtllib bush.mtl' bush.obj || fail "OBJ does not reference its MTL"
+  grep -q '^usemtl bark' bush.obj || fail "no bark material in use" ;;
+forest_obj_and_stats)
+  run_cli 0 forest "$DATA/projects/small.sylva" -o forest.obj --stats
+  n=$(grep -c '^o ' forest.obj)
+  [[ $n == 41 ]] || fail "expected 41 tree objects (1 hand-placed + 40), got $n"
+  grep -q '^o bush_0$' forest.obj || fail "hand-placed tree missing"
+  for key in trees vertices triangles colliding_trees metrics co2_kg timings_ms place write total; do
+    grep -q "\"$key\"" out.txt || fail "stats lack $key: $(cat out.txt)"
+  done
+  grep -q '"trees":41,' out.txt || fail "$(cat out.txt)"
+  # the hand-placed bush stands 0.6 m from the wall: at least it collides
+  grep -q '"colliding_trees":[1-9]' out.txt || fail "no tree touched the wall: $(cat out.txt)" ;;
+forest_threads_identical)
+  mkdir -p one two
+  run_cli 0 forest "$DATA/projects/small.sylva" -o one/f.obj --threads 1
+  run_cli 0 forest "$DATA/projects/small.sylva" -o two/f.obj --threads 2
+  cmp -s one/f.obj two/f.obj || fail "1 and 2 threads give different forests" ;;
+forest_tiles_union)
+  run_cli 0 forest "$DATA/projects/small.sylva" -o whole.obj
+  : > tiles.txt
+  for i in 1 2 3 4; do
+    run_cli 0 forest "$DATA/projects/small.sylva" -o tile$i.obj --tile $i/4
+    # per object: its name and its vertex lines (face indices are file-relative)
+    awk '/^o /{name=$2} /^v /{print name, $0}' tile$i.obj >> tiles.txt
+  done
+  awk '/^o /{name=$2} /^v /{print name, $0}' whole.obj | sort > whole.txt
+  sort tiles.txt > union.txt
+  cmp -s whole.txt union.txt || fail "the union of 4 tiles differs from the whole forest"
+  run_cli 2 forest "$DATA/projects/small.sylva" -o x.obj --tile 5/4
+  run_cli 2 forest "$DATA/projects/small.sylva" -o x.obj --tile zero ;;
+forest_reference_scene)
+  run_cli 0 forest "$DATA/projects/reference-scene.json" -o ref.obj --stats
+  grep -q '"trees":8,' out.txt || fail "$(cat out.txt)" ;;
+forest_bad_project)
+  printf '{"format":"sylva-project","format_version":1,"species":[{"name":"a","file":"missing.json"}],"domains":[{"shape":"rectangle","min":[0,0],"max":[5,5],"counts":{"a":3}}]}' > bad.sylva
+  run_cli 1 forest bad.sylva -o f.obj
+  grep -q "missing.json" err.txt || fail "$(cat err.txt)"
+  [[ ! -e f.obj ]] || fail "partial output"
+  printf '{"format":"sylva-project","format_version":1,"species":[{"name":"a","file":"%s"}],"obstacles":[{"file":"nowhere.obj"}]}' "$DATA/lsystem/bush.lsys" > bad2.sylva
+  run_cli 1 forest bad2.sylva -o f.obj
+  grep -q "nowhere.obj" err.txt || fail "$(cat err.txt)"
+  printf '{"format":"sylva-project","format_version":1,"seed":' > trunc.sylva
+  run_cli 1 forest trunc.sylva -o f.obj
+  grep -q "trunc.sylva:1:" err.txt || fail "$(cat err.txt)"
+  [[ ! -e f.obj ]] || fail "partial output" ;;
+stats_species)
+  run_cli 0 stats "$DATA/lsystem/bush.lsys" --json
+  for key in mean_height_m mean_dbh_m wood_volume_m3 dry_biomass_kg carbon_kg co2_kg chave_agb_kg; do
+    grep -q "\"$key\"" out.txt || fail "stats lack $key: $(cat out.txt)"
+  done
+  run_cli 0 stats "$DATA/lsystem/bush.lsys"
+  grep -q "CO2 equivalent (kg)" out.txt || fail "table lacks units: $(cat out.txt)" ;;
+stats_project)
+  run_cli 0 stats "$DATA/projects/small.sylva" --json
+  grep -q '"trees":41' out.txt || fail "$(cat out.txt)" ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
