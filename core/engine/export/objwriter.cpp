@@ -4,6 +4,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <future>
+
+#if defined(__linux__)
+#include <fcntl.h>
+#include <unistd.h>
+#endif
 
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
@@ -79,6 +85,7 @@ struct Task {
     Section section = Section::Header;
     std::size_t begin = 0, end = 0; // vertices, or triangles for F
     ObjOffsets base;                // offsets of this object's first v/vt/vn
+    std::uint64_t vertices = 0;     // the object's vertex count (relative indices count back)
     bool hasUv = false, hasNormal = false;
     bool identity = true;
     glm::mat3 normalMatrix{1.0f};
@@ -93,6 +100,13 @@ std::string objectName(const std::string& name) {
 
 void formatTask(std::string& out, const Task& t, const ObjOptions& o) {
     const mesh::Mesh& m = *t.object->mesh;
+    // Typical line lengths, so the part grows without reallocation copies in most cases.
+    const std::size_t lines = t.end - t.begin;
+    const std::size_t perLine = t.section == Section::F    ? 24 + 30 * (t.hasUv + t.hasNormal)
+                                : t.section == Section::VT ? 4 + 2 * (o.uvDecimals + 3)
+                                : t.section == Section::VN ? 4 + 3 * (o.normalDecimals + 4)
+                                                           : 3 + 3 * (o.positionDecimals + 6);
+    out.reserve(out.size() + lines * perLine);
     BlockWriter w(out);
     switch (t.section) {
     case Section::Header:
@@ -168,6 +182,28 @@ void formatTask(std::string& out, const Task& t, const ObjOptions& o) {
             for (int k = 0; k < 3; ++k) {
                 const std::uint64_t idx = m.indices[tri * 3 + static_cast<std::size_t>(k)];
                 *c++ = ' ';
+                if (o.relativeIndices) {
+                    // v, vt and vn of an object come in equal numbers, so one text serves all.
+                    char number[24];
+                    number[0] = '-';
+                    const auto len =
+                        static_cast<std::size_t>(writeUint(number + 1, t.vertices - idx) - number);
+                    std::memcpy(c, number, len);
+                    c += len;
+                    if (t.hasUv || t.hasNormal) {
+                        *c++ = '/';
+                        if (t.hasUv) {
+                            std::memcpy(c, number, len);
+                            c += len;
+                        }
+                        if (t.hasNormal) {
+                            *c++ = '/';
+                            std::memcpy(c, number, len);
+                            c += len;
+                        }
+                    }
+                    continue;
+                }
                 c = writeUint(c, t.base.v + idx);
                 if (t.hasUv || t.hasNormal) {
                     *c++ = '/';
@@ -205,6 +241,7 @@ std::vector<Task> makeTasks(const std::vector<ObjObject>& objects, ObjOffsets& o
         t.base = offsets;
         t.hasUv = o.uvs && m.uvs.size() == nv && nv > 0;
         t.hasNormal = o.normals && m.normals.size() == nv && nv > 0;
+        t.vertices = nv;
         t.identity = object.transform == glm::mat4(1.0f);
         if (!t.identity) t.normalMatrix = glm::transpose(glm::inverse(glm::mat3(object.transform)));
         tasks.push_back(t);
@@ -228,11 +265,16 @@ std::vector<Task> makeTasks(const std::vector<ObjObject>& objects, ObjOffsets& o
     return tasks;
 }
 
-std::string formatTasks(const std::vector<Task>& tasks, const ObjOptions& o) {
+std::vector<std::string> formatParts(const std::vector<Task>& tasks, const ObjOptions& o) {
     std::vector<std::string> parts(tasks.size());
 #pragma omp parallel for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < static_cast<std::int64_t>(tasks.size()); ++i)
         formatTask(parts[static_cast<std::size_t>(i)], tasks[static_cast<std::size_t>(i)], o);
+    return parts;
+}
+
+std::string formatTasks(const std::vector<Task>& tasks, const ObjOptions& o) {
+    const std::vector<std::string> parts = formatParts(tasks, o);
     std::size_t total = 0;
     for (const std::string& s : parts)
         total += s.size();
@@ -331,9 +373,25 @@ std::string formatObj(const std::vector<ObjObject>& objects, const ObjOptions& o
     return head + formatTasks(tasks, options);
 }
 
+// The writing half of ObjStreamWriter: one batch in flight on a background thread.
+struct ObjStreamWriter::Background {
+    std::future<void> pending;
+    std::uint64_t kicked = 0; // bytes handed to the kernel's writeback so far
+#if defined(__linux__)
+    int fd = -1; // a second descriptor of the temporary, only for sync_file_range
+    ~Background() {
+        if (fd >= 0) ::close(fd);
+    }
+#endif
+};
+
 ObjStreamWriter::ObjStreamWriter(const std::filesystem::path& path, ObjOptions options)
-    : mFile(std::make_unique<AtomicFile>(path)), mOptions(std::move(options)) {
+    : mFile(std::make_unique<AtomicFile>(path)), mOptions(std::move(options)),
+      mWriter(std::make_unique<Background>()) {
     checkOptions(mOptions);
+#if defined(__linux__)
+    mWriter->fd = ::open(mFile->temporaryPath().c_str(), O_WRONLY | O_CLOEXEC);
+#endif
     if (!mOptions.mtllib.empty()) {
         const std::string head = "mtllib " + mOptions.mtllib + "\n";
         mFile->write(head);
@@ -341,16 +399,45 @@ ObjStreamWriter::ObjStreamWriter(const std::filesystem::path& path, ObjOptions o
     }
 }
 
-ObjStreamWriter::~ObjStreamWriter() = default;
+ObjStreamWriter::~ObjStreamWriter() {
+    // The background write must end before the file goes; its error no longer matters.
+    if (mWriter && mWriter->pending.valid()) mWriter->pending.wait();
+}
+
+void ObjStreamWriter::waitForWriter() {
+    if (mWriter->pending.valid()) mWriter->pending.get(); // rethrows IoError
+}
 
 void ObjStreamWriter::add(const std::vector<ObjObject>& objects) {
     const std::vector<Task> tasks = makeTasks(objects, mOffsets, mOptions, kChunk);
-    const std::string text = formatTasks(tasks, mOptions);
-    mFile->write(text);
-    mBytes += text.size();
+    std::vector<std::string> parts = formatParts(tasks, mOptions);
+    std::uint64_t bytes = 0;
+    for (const std::string& part : parts)
+        bytes += part.size();
+    waitForWriter();
+    mBytes += bytes;
+    const std::uint64_t end = mBytes;
+    mWriter->pending = std::async(std::launch::async, [this, end, parts = std::move(parts)] {
+        for (const std::string& part : parts)
+            mFile->write(part);
+#if defined(__linux__)
+        // Start writing back what is certainly out of stdio's buffer (its size is far below
+        // 1 MiB), so the disk works while the next batches are formatted.
+        constexpr std::uint64_t kSlack = 1 << 20;
+        if (mWriter->fd >= 0 && end > mWriter->kicked + 2 * kSlack) {
+            const std::uint64_t upTo = end - kSlack;
+            ::sync_file_range(mWriter->fd, static_cast<off_t>(mWriter->kicked),
+                              static_cast<off_t>(upTo - mWriter->kicked), SYNC_FILE_RANGE_WRITE);
+            mWriter->kicked = upTo;
+        }
+#else
+        (void)end;
+#endif
+    });
 }
 
 void ObjStreamWriter::commit() {
+    waitForWriter();
     mFile->commit();
 }
 

@@ -47,11 +47,21 @@ Vigour allocateBorchertHonda(const MetamerTopology& t, std::span<const double> g
                              std::span<const double> terminalLight,
                              std::span<const double> axillaryLight,
                              std::span<const AllocationParams> params) {
-    const std::size_t n = t.parent.size();
     Vigour out;
-    out.metamer.assign(n, 0.0);
-    out.terminal.assign(n, 0.0);
-    out.axillary.assign(n, 0.0);
+    allocateBorchertHonda(t, gathered, terminalLight, axillaryLight, params, out);
+    return out;
+}
+
+void allocateBorchertHonda(const MetamerTopology& t, std::span<const double> gathered,
+                           std::span<const double> terminalLight,
+                           std::span<const double> axillaryLight,
+                           std::span<const AllocationParams> params, Vigour& out) {
+    const std::size_t n = t.parent.size();
+    // Every slot is written below (metamer[i] by its parent or as a root before it is read,
+    // terminal/axillary where the slot holds a bud); only the child-held slots need zeroing.
+    out.metamer.resize(n);
+    out.terminal.resize(n);
+    out.axillary.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const AllocationParams& p = params[t.tree[i]];
         if (t.parent[i] < 0) out.metamer[i] = p.alpha * gathered[i];
@@ -60,10 +70,19 @@ Vigour allocateBorchertHonda(const MetamerTopology& t, std::span<const double> g
         const double ql = l >= 0 ? gathered[sz(l)] : axillaryLight[i];
         double vm = 0.0, vl = 0.0;
         splitBorchertHonda(out.metamer[i], qm, ql, p.lambda, vm, vl);
-        (m >= 0 ? out.metamer[sz(m)] : out.terminal[i]) = vm;
-        (l >= 0 ? out.metamer[sz(l)] : out.axillary[i]) = vl;
+        if (m >= 0) {
+            out.metamer[sz(m)] = vm;
+            out.terminal[i] = 0.0;
+        } else {
+            out.terminal[i] = vm;
+        }
+        if (l >= 0) {
+            out.metamer[sz(l)] = vl;
+            out.axillary[i] = 0.0;
+        } else {
+            out.axillary[i] = vl;
+        }
     }
-    return out;
 }
 
 Vigour allocateBorchertHondaNaive(const MetamerTopology& t, std::span<const double> terminalLight,
@@ -118,8 +137,15 @@ Vigour allocatePriority(const MetamerTopology& t, std::span<const double> gather
                         std::span<const double> terminalLight,
                         std::span<const double> axillaryLight,
                         std::span<const AllocationParams> params) {
-    const std::size_t n = t.parent.size();
     Vigour out;
+    allocatePriority(t, gathered, terminalLight, axillaryLight, params, out);
+    return out;
+}
+
+void allocatePriority(const MetamerTopology& t, std::span<const double> gathered,
+                      std::span<const double> terminalLight, std::span<const double> axillaryLight,
+                      std::span<const AllocationParams> params, Vigour& out) {
+    const std::size_t n = t.parent.size();
     out.metamer.assign(n, 0.0);
     out.terminal.assign(n, 0.0);
     out.axillary.assign(n, 0.0);
@@ -164,14 +190,22 @@ Vigour allocatePriority(const MetamerTopology& t, std::span<const double> gather
         out.metamer[i] = out.terminal[i] + out.axillary[i];
     for (std::size_t i = n; i-- > 0;)
         if (t.parent[i] >= 0) out.metamer[sz(t.parent[i])] += out.metamer[i];
-    return out;
 }
 
 std::vector<std::uint8_t> markShed(const MetamerTopology& t, std::span<const double> gathered,
                                    std::span<const std::int32_t> internodes,
                                    std::span<const double> thresholdPerTree) {
+    std::vector<std::uint8_t> removed;
+    markShed(t, gathered, internodes, thresholdPerTree, removed);
+    return removed;
+}
+
+bool markShed(const MetamerTopology& t, std::span<const double> gathered,
+              std::span<const std::int32_t> internodes, std::span<const double> thresholdPerTree,
+              std::vector<std::uint8_t>& removed) {
     const std::size_t n = t.parent.size();
-    std::vector<std::uint8_t> removed(n, 0);
+    removed.assign(n, 0);
+    bool any = false;
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t p = t.parent[i];
         if (p < 0) continue;
@@ -180,10 +214,12 @@ std::vector<std::uint8_t> markShed(const MetamerTopology& t, std::span<const dou
             continue;
         }
         const bool lateralRoot = t.lateralChild[sz(p)] == static_cast<std::int32_t>(i);
-        if (lateralRoot && gathered[i] < thresholdPerTree[t.tree[i]] * internodes[i])
+        if (lateralRoot && gathered[i] < thresholdPerTree[t.tree[i]] * internodes[i]) {
             removed[i] = 1;
+            any = true;
+        }
     }
-    return removed;
+    return any;
 }
 
 } // namespace sylva::growth

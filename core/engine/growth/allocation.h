@@ -45,6 +45,11 @@ Vigour allocateBorchertHonda(const MetamerTopology& topology, std::span<const do
                              std::span<const double> terminalLight,
                              std::span<const double> axillaryLight,
                              std::span<const AllocationParams> params);
+/// The same, into \p out (its buffers are reused: no allocation once they are large enough).
+void allocateBorchertHonda(const MetamerTopology& topology, std::span<const double> gathered,
+                           std::span<const double> terminalLight,
+                           std::span<const double> axillaryLight,
+                           std::span<const AllocationParams> params, Vigour& out);
 
 /// The same model computed the slow way (test oracle and benchmark baseline): the vigour of
 /// each bud is v_base times the product of the split fractions along its path to the root
@@ -62,6 +67,10 @@ Vigour allocatePriority(const MetamerTopology& topology, std::span<const double>
                         std::span<const double> terminalLight,
                         std::span<const double> axillaryLight,
                         std::span<const AllocationParams> params);
+/// The same, into \p out (its buffers are reused).
+void allocatePriority(const MetamerTopology& topology, std::span<const double> gathered,
+                      std::span<const double> terminalLight, std::span<const double> axillaryLight,
+                      std::span<const AllocationParams> params, Vigour& out);
 
 /// Shedding: marks for removal every lateral branch (a metamer that is its parent's lateral
 /// child) whose gathered light per internode, gathered[i] / internodes[i], is below the
@@ -71,5 +80,9 @@ std::vector<std::uint8_t> markShed(const MetamerTopology& topology,
                                    std::span<const double> gathered,
                                    std::span<const std::int32_t> internodes,
                                    std::span<const double> thresholdPerTree);
+/// The same into \p removed (resized to the metamer count); returns whether anything is shed.
+bool markShed(const MetamerTopology& topology, std::span<const double> gathered,
+              std::span<const std::int32_t> internodes, std::span<const double> thresholdPerTree,
+              std::vector<std::uint8_t>& removed);
 
 } // namespace sylva::growth

@@ -1,6 +1,7 @@
 #include "engine/growth/selforganizing.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -32,11 +33,11 @@ glm::quat lateralFrame(const glm::quat& q, float branchAngle) {
 }
 
 /// Minimal rotation turning the heading of \p q into \p dir, then the phyllotaxis roll.
-glm::quat steer(const glm::quat& q, const glm::vec3& dir, float roll) {
+glm::quat steer(const glm::quat& q, const glm::vec3& dir, const glm::quat& roll) {
     const glm::vec3 h = skel::headingOf(q);
     glm::quat r = glm::rotation(h, dir);
     if (glm::dot(h, dir) < -0.9999f) r = glm::angleAxis(kPi, skel::leftOf(q));
-    return glm::normalize(r * q * glm::angleAxis(roll, glm::vec3(0, 1, 0)));
+    return glm::normalize(r * q * roll);
 }
 
 glm::vec3 randomUnit(Rng& rng) {
@@ -71,17 +72,17 @@ bool segmentHitsTriangle(const glm::vec3& p, const glm::vec3& q, const glm::vec3
     return t >= 0.0f && t <= 1.0f;
 }
 
-/// The 26 neighbour offsets and their unit directions.
+/// The 26 neighbour voxels: unit directions and their cells in ShadowGrid::neighbourhood().
 struct Neighbours {
-    glm::ivec3 offset[26];
     glm::vec3 dir[26];
+    int cell[26]; ///< index into ShadowGrid::neighbourhood()
     Neighbours() {
         int k = 0;
         for (int y = -1; y <= 1; ++y)
             for (int x = -1; x <= 1; ++x)
                 for (int z = -1; z <= 1; ++z) {
                     if (x == 0 && y == 0 && z == 0) continue;
-                    offset[k] = {x, y, z};
+                    cell[k] = (y + 1) * 9 + (x + 1) * 3 + (z + 1);
                     dir[k] = glm::normalize(glm::vec3(x, y, z));
                     ++k;
                 }
@@ -162,6 +163,10 @@ SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
         mShedThreshold.push_back(sp.sheddingThreshold);
         mTotalCycles = std::max(mTotalCycles, sp.cycles);
         mRng.emplace_back(mixSeed(tree.seed, 0x5e1f));
+        mLateralTurn.push_back(glm::angleAxis(radians(sp.branchAngle), glm::vec3(0, 0, 1)));
+        mRoll.push_back(glm::angleAxis(radians(sp.divergenceAngle), glm::vec3(0, 1, 0)));
+        mCosHalfCone.push_back(
+            static_cast<float>(std::cos(0.5 * sp.perceptionAngle * kPi / 180.0)));
     }
     mCount.assign(mTrees.size(), 0);
     mShedTree.assign(mTrees.size(), 0);
@@ -177,7 +182,7 @@ SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
             floorY = std::min(floorY, t.position.y);
         }
         const float h = static_cast<float>(p0.voxelSize * p0.internodeLength);
-        mShadow = std::make_unique<ShadowGrid>(h, floorY - h, margin);
+        mShadow.emplace(h, floorY - h, margin);
         mObstacleKernel = mKernels[0];
         // Voxelize obstacles by sampling each triangle at half the voxel size.
         for (std::size_t i = 0; i + 2 < mObstacles.size(); i += 3) {
@@ -221,7 +226,7 @@ SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
             }
             cell = std::min(cell, static_cast<float>(sp.occupancyRadius * sp.internodeLength));
         }
-        mMarkers = std::make_unique<MarkerSet>(std::move(markers), cell);
+        mMarkers.emplace(std::move(markers), cell);
         const float rho = static_cast<float>(p0.occupancyRadius * p0.internodeLength);
         for (std::size_t i = 0; i + 2 < mObstacles.size(); i += 3)
             mMarkers->removeNearTriangle(mObstacles[i], mObstacles[i + 1], mObstacles[i + 2], rho);
@@ -306,17 +311,22 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
         return mM.lateralChild[i] < 0 && !(mM.deadBuds[i] & 2u);
     };
     if (mEnv == SoEnvironment::ShadowPropagation) {
+        const ShadowGrid& grid = *mShadow;
         const auto count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static) if (count > 4096)
+        // Few trees, many metamers: look the light constants up per tree, not per metamer.
+        std::vector<double> full(mTrees.size()), a(mTrees.size());
+        for (std::size_t t = 0; t < mTrees.size(); ++t) {
+            full[t] = mTrees[t].params.fullExposure;
+            a[t] = mTrees[t].params.shadowA;
+        }
+#pragma omp parallel for schedule(static) if (count > 1024)
         for (std::int64_t k = 0; k < count; ++k) {
             const auto i = static_cast<std::size_t>(k);
             const bool ta = terminalAlive(i), aa = axillaryAlive(i);
             if (!ta && !aa) continue;
-            const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
-            const glm::ivec3 v = mShadow->voxelOf(mM.end[i]);
-            const double q = mShadow->blocked(v)
-                                 ? 0.0
-                                 : std::max(sp.fullExposure - mShadow->shadow(v) + sp.shadowA, 0.0);
+            const glm::ivec3 v = grid.voxelOf(mM.end[i]);
+            const std::uint16_t t = mM.tree[i];
+            const double q = grid.blocked(v) ? 0.0 : std::max(full[t] - grid.shadow(v) + a[t], 0.0);
             if (ta) terminal[i] = q;
             if (aa) axillary[i] = q;
         }
@@ -397,19 +407,19 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
 
 glm::vec3 SelfOrganizingSimulation::optimalShadowDirection(const glm::vec3& pos,
                                                            const glm::vec3& dir,
-                                                           double cosHalf) const {
-    const glm::ivec3 v = mShadow->voxelOf(pos);
+                                                           float cosHalf) const {
+    std::int32_t s[27];
+    mShadow->neighbourhood(mShadow->voxelOf(pos), s);
     std::int32_t best = std::numeric_limits<std::int32_t>::max();
     glm::vec3 sum(0.0f);
     for (int k = 0; k < 26; ++k) {
-        if (glm::dot(kNeighbours.dir[k], dir) < static_cast<float>(cosHalf)) continue;
-        const glm::ivec3 u = v + kNeighbours.offset[k];
-        if (mShadow->blocked(u)) continue;
-        const std::int32_t s = mShadow->raw(u);
-        if (s < best) {
-            best = s;
+        if (glm::dot(kNeighbours.dir[k], dir) < cosHalf) continue;
+        const std::int32_t value = s[kNeighbours.cell[k]];
+        if (value == ShadowGrid::kOpaque) continue;
+        if (value < best) {
+            best = value;
             sum = kNeighbours.dir[k];
-        } else if (s == best) {
+        } else if (value == best) {
             sum += kNeighbours.dir[k];
         }
     }
@@ -418,62 +428,101 @@ glm::vec3 SelfOrganizingSimulation::optimalShadowDirection(const glm::vec3& pos,
 
 void SelfOrganizingSimulation::shed(const std::vector<std::uint8_t>& removed) {
     const std::size_t n = mM.size();
-    std::vector<std::int32_t> remap(n, -1);
+    const bool incremental = mShadow && !mOptions.naiveShadow;
+    const bool sc = mEnv == SoEnvironment::SpaceColonization;
+    mRemap.resize(n);
+    mSources.clear();
     std::int32_t next = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (removed[i]) {
-            if (mShadow && !mOptions.naiveShadow) addSource(i, -1);
-            --mCount[mM.tree[i]];
-            ++mShedTree[mM.tree[i]];
+            const std::uint16_t t = mM.tree[i];
+            if (incremental) mSources.push_back({mShadow->voxelOf(mM.end[i]), -1, t});
+            --mCount[t];
+            ++mShedTree[t];
             ++mShed;
+            mRemap[i] = -1;
             continue;
         }
-        remap[i] = next++;
+        mRemap[i] = next++;
     }
-    MetamerArrays out;
-    auto fix = [&](std::int32_t j) { return j < 0 ? -1 : remap[sz(j)]; };
+    // Stable in-place compaction: the write slot k never passes the read slot i, and the
+    // children of i (read through removed[] and mRemap) sit after i, so nothing is read after
+    // it was overwritten.
+    auto fix = [&](std::int32_t j) { return j < 0 ? -1 : mRemap[sz(j)]; };
     for (std::size_t i = 0; i < n; ++i) {
         if (removed[i]) continue;
+        const std::size_t k = sz(mRemap[i]);
         std::uint8_t dead = mM.deadBuds[i];
-        // A shed branch leaves a scar: its axillary bud is gone for good.
-        if (mM.lateralChild[i] >= 0 && removed[sz(mM.lateralChild[i])]) dead |= 2u;
-        if (mM.mainChild[i] >= 0 && removed[sz(mM.mainChild[i])]) dead |= 1u;
-        out.end.push_back(mM.end[i]);
-        out.frame.push_back(mM.frame[i]);
-        out.parent.push_back(fix(mM.parent[i]));
-        out.mainChild.push_back(fix(mM.mainChild[i]));
-        out.lateralChild.push_back(fix(mM.lateralChild[i]));
-        out.tree.push_back(mM.tree[i]);
-        out.order.push_back(mM.order[i]);
-        out.born.push_back(mM.born[i]);
-        out.deadBuds.push_back(dead);
+        double terminal = mTerminalLight[i], axillary = mAxillaryLight[i];
+        // A shed branch leaves a scar: its bud is gone for good.
+        const std::int32_t l = mM.lateralChild[i], m = mM.mainChild[i];
+        if (l >= 0 && removed[sz(l)]) {
+            dead |= 2u;
+            axillary = 0.0;
+        }
+        if (m >= 0 && removed[sz(m)]) {
+            dead |= 1u;
+            terminal = 0.0;
+        }
+        mTerminalLight[k] = terminal;
+        mAxillaryLight[k] = axillary;
+        if (sc) {
+            mOptimalTerminal[k] = mOptimalTerminal[i];
+            mOptimalAxillary[k] = mOptimalAxillary[i];
+        }
+        mM.end[k] = mM.end[i];
+        mM.frame[k] = mM.frame[i];
+        mM.parent[k] = fix(mM.parent[i]);
+        mM.mainChild[k] = fix(m);
+        mM.lateralChild[k] = fix(l);
+        mM.tree[k] = mM.tree[i];
+        mM.order[k] = mM.order[i];
+        mM.born[k] = mM.born[i];
+        mM.deadBuds[k] = dead;
     }
-    mM = std::move(out);
+    const auto kept = static_cast<std::size_t>(next);
+    mM.end.resize(kept);
+    mM.frame.resize(kept);
+    mM.parent.resize(kept);
+    mM.mainChild.resize(kept);
+    mM.lateralChild.resize(kept);
+    mM.tree.resize(kept);
+    mM.order.resize(kept);
+    mM.born.resize(kept);
+    mM.deadBuds.resize(kept);
+    mTerminalLight.resize(kept);
+    mAxillaryLight.resize(kept);
+    if (sc) {
+        mOptimalTerminal.resize(kept);
+        mOptimalAxillary.resize(kept);
+    }
+    if (incremental) mShadow->applyBatch(mSources, mKernels);
 }
 
-Vigour SelfOrganizingSimulation::allocate(const std::vector<double>& gathered,
-                                          const std::vector<double>& terminal,
-                                          const std::vector<double>& axillary) const {
+void SelfOrganizingSimulation::allocate(const std::vector<double>& gathered,
+                                        const std::vector<double>& terminal,
+                                        const std::vector<double>& axillary, Vigour& out) const {
     const MetamerTopology topo = mM.topology();
     // Trees may mix models: run both where needed and pick per tree.
     bool anyBH = false, anyPriority = false;
     for (const StandTree& t : mTrees)
         (t.params.allocation == SoAllocation::BorchertHonda ? anyBH : anyPriority) = true;
-    Vigour bh, pr;
-    if (anyBH)
-        bh = mOptions.naiveAllocation
-                 ? allocateBorchertHondaNaive(topo, terminal, axillary, mAlloc)
-                 : allocateBorchertHonda(topo, gathered, terminal, axillary, mAlloc);
-    if (anyPriority) pr = allocatePriority(topo, gathered, terminal, axillary, mAlloc);
-    if (!anyPriority) return bh;
-    if (!anyBH) return pr;
+    if (!anyBH) {
+        allocatePriority(topo, gathered, terminal, axillary, mAlloc, out);
+        return;
+    }
+    if (mOptions.naiveAllocation)
+        out = allocateBorchertHondaNaive(topo, terminal, axillary, mAlloc);
+    else
+        allocateBorchertHonda(topo, gathered, terminal, axillary, mAlloc, out);
+    if (!anyPriority) return;
+    const Vigour pr = allocatePriority(topo, gathered, terminal, axillary, mAlloc);
     for (std::size_t i = 0; i < mM.size(); ++i)
         if (mTrees[mM.tree[i]].params.allocation == SoAllocation::Priority) {
-            bh.metamer[i] = pr.metamer[i];
-            bh.terminal[i] = pr.terminal[i];
-            bh.axillary[i] = pr.axillary[i];
+            out.metamer[i] = pr.metamer[i];
+            out.terminal[i] = pr.terminal[i];
+            out.axillary[i] = pr.axillary[i];
         }
-    return bh;
 }
 
 bool SelfOrganizingSimulation::hitsObstacle(const glm::vec3& from, const glm::vec3& to) const {
@@ -487,143 +536,218 @@ bool SelfOrganizingSimulation::hitsObstacle(const glm::vec3& from, const glm::ve
     return false;
 }
 
-void SelfOrganizingSimulation::growShoot(std::int32_t from, bool lateral, double vigour,
-                                         const glm::vec3& optimal) {
-    const std::uint16_t t = mM.tree[sz(from)];
+std::int32_t SelfOrganizingSimulation::makeShoot(const Growing& g, glm::vec3* ends,
+                                                 glm::quat* frames) const {
+    const std::size_t from = sz(g.metamer);
+    const std::uint16_t t = mM.tree[from];
     const SelfOrganizingParams& sp = mTrees[t].params;
-    Rng& rng = mRng[t];
-    const int n = std::min(static_cast<int>(std::floor(vigour)), sp.maxShootLength);
-    const float len = static_cast<float>(sp.internodeLength * std::min(vigour / n, 2.0));
-    glm::quat frame =
-        lateral ? lateralFrame(mM.frame[sz(from)], radians(sp.branchAngle)) : mM.frame[sz(from)];
-    glm::vec3 pos = mM.end[sz(from)];
-    std::int32_t parent = from;
-    const std::uint16_t order = static_cast<std::uint16_t>(mM.order[sz(from)] + (lateral ? 1 : 0));
+    // Every bud draws from a stream of its own (tree seed, cycle, bud), so shoots can be made
+    // in any order on any number of threads.
+    Rng rng(mixSeed(mixSeed(mTrees[t].seed, 0x5400u + static_cast<std::uint64_t>(mCycle)),
+                    2 * from + (g.lateral ? 1 : 0)));
+    const int n = g.planned;
+    const float len = static_cast<float>(sp.internodeLength * std::min(g.vigour / n, 2.0));
+    glm::quat frame = g.lateral ? mM.frame[from] * mLateralTurn[t] : mM.frame[from];
+    glm::vec3 pos = mM.end[from];
+    const int order = mM.order[from] + (g.lateral ? 1 : 0);
     const float xi = static_cast<float>(sp.optimalWeight);
     const float eta = static_cast<float>(order == 0 ? sp.tropismWeight : sp.lateralTropismWeight);
     const float noise = static_cast<float>(sp.directionNoise);
-    const float roll = radians(sp.divergenceAngle);
+    const float ground = mTrees[t].position.y;
     for (int k = 0; k < n; ++k) {
         const glm::vec3 h = skel::headingOf(frame);
-        glm::vec3 d = h + xi * optimal + eta * kUp;
+        glm::vec3 d = h + xi * g.optimal + eta * kUp;
         if (noise > 0.0f) d += noise * randomUnit(rng);
         d = safeNormalize(d, h);
         const glm::vec3 end = pos + d * len;
-        if (end.y < mTrees[t].position.y ||
-            (mShadow ? mShadow->blocked(mShadow->voxelOf(end)) : hitsObstacle(pos, end))) {
-            // The shoot ran into the ground or an obstacle: its bud stops there.
-            mM.deadBuds[sz(parent)] |= (k == 0 && lateral) ? 2u : 1u;
-            return;
-        }
-        frame = steer(frame, d, roll);
-        parent = appendMetamer(parent, lateral && k == 0, end, frame, t, order);
+        // A shoot that runs into the ground or an obstacle stops there.
+        if (end.y < ground ||
+            (mShadow ? mShadow->blocked(mShadow->voxelOf(end)) : hitsObstacle(pos, end)))
+            return k;
+        frame = steer(frame, d, mRoll[t]);
+        ends[k] = end;
+        frames[k] = frame;
         pos = end;
+    }
+    return n;
+}
+
+void SelfOrganizingSimulation::commitShoots() {
+    // Per-tree limit first, so that a throw leaves the arrays untouched.
+    std::vector<std::int64_t> added(mTrees.size(), 0);
+    std::size_t total = 0;
+    for (const Growing& g : mGrowing) {
+        added[mM.tree[sz(g.metamer)]] += g.made;
+        total += static_cast<std::size_t>(g.made);
+    }
+    for (std::size_t t = 0; t < mTrees.size(); ++t) {
+        const SelfOrganizingParams& sp = mTrees[t].params;
+        if (mCount[t] + added[t] > sp.maxInternodes)
+            throw LimitExceeded("self-organizing tree " + std::to_string(t) + " exceeded " +
+                                std::to_string(sp.maxInternodes) +
+                                " internodes (max_internodes) in cycle " +
+                                std::to_string(mCycle + 1) + " of " + std::to_string(sp.cycles) +
+                                "; lower alpha or cycles, or raise max_internodes");
+        mCount[t] += added[t];
+    }
+    const std::size_t n0 = mM.size(), n1 = n0 + total;
+    mM.end.resize(n1);
+    mM.frame.resize(n1);
+    mM.parent.resize(n1);
+    mM.mainChild.resize(n1);
+    mM.lateralChild.resize(n1);
+    mM.tree.resize(n1);
+    mM.order.resize(n1);
+    mM.born.resize(n1);
+    mM.deadBuds.resize(n1);
+    // The new metamers, shoot after shoot in bud order: the bud's metamer links to the first,
+    // each links to the next along the axis.
+    std::size_t first = n0;
+    for (Growing& g : mGrowing) {
+        const std::size_t from = sz(g.metamer);
+        if (g.made == 0) {
+            mM.deadBuds[from] |= g.lateral ? 2u : 1u;
+            continue;
+        }
+        (g.lateral ? mM.lateralChild : mM.mainChild)[from] = static_cast<std::int32_t>(first);
+        g.first = first;
+        first += static_cast<std::size_t>(g.made);
+    }
+    const auto count = static_cast<std::int64_t>(mGrowing.size());
+    const auto cycle = static_cast<std::uint16_t>(mCycle);
+#pragma omp parallel for schedule(static) if (total > 1024)
+    for (std::int64_t k = 0; k < count; ++k) {
+        const Growing& g = mGrowing[static_cast<std::size_t>(k)];
+        if (g.made == 0) continue;
+        const std::size_t from = sz(g.metamer);
+        const std::size_t scratch = g.slot;
+        const std::uint16_t tree = mM.tree[from];
+        const auto order = static_cast<std::uint16_t>(mM.order[from] + (g.lateral ? 1 : 0));
+        for (std::int32_t j = 0; j < g.made; ++j) {
+            const std::size_t i = g.first + sz(j);
+            mM.end[i] = mShootEnd[scratch + sz(j)];
+            mM.frame[i] = mShootFrame[scratch + sz(j)];
+            mM.parent[i] = j == 0 ? g.metamer : static_cast<std::int32_t>(i - 1);
+            mM.mainChild[i] = j + 1 < g.made ? static_cast<std::int32_t>(i + 1) : -1;
+            mM.lateralChild[i] = -1;
+            mM.tree[i] = tree;
+            mM.order[i] = order;
+            mM.born[i] = cycle;
+            // A shoot cut short loses its terminal bud.
+            mM.deadBuds[i] = j + 1 == g.made && g.made < g.planned ? 1u : 0u;
+        }
     }
 }
 
 void SelfOrganizingSimulation::step() {
     if (done()) return;
+    using Clock = std::chrono::steady_clock;
+    auto ms = [](Clock::time_point a, Clock::time_point b) {
+        return std::chrono::duration<double, std::milli>(b - a).count();
+    };
+    const Clock::time_point t0 = Clock::now();
     for (std::size_t t = 0; t < mTrees.size(); ++t)
         if (mCycle == mTotalCycles - mTrees[t].params.cycles) plant(t);
     if (mShadow && mOptions.naiveShadow) rebuildShadow();
 
-    std::vector<double> terminal, axillary;
-    evaluateLight(terminal, axillary);
-    std::vector<double> gathered(mM.size());
-    std::vector<std::int32_t> internodes(mM.size());
-    gatherLight(mM.topology(), terminal, axillary, gathered, internodes);
-
-    const std::vector<std::uint8_t> removed =
-        markShed(mM.topology(), gathered, internodes, mShedThreshold);
-    if (std::find(removed.begin(), removed.end(), 1) != removed.end()) {
-        // Keep the buds' light and space colonization directions aligned with the survivors.
-        std::size_t k = 0;
-        const bool sc = mEnv == SoEnvironment::SpaceColonization;
-        for (std::size_t i = 0; i < removed.size(); ++i) {
-            if (removed[i]) continue;
-            terminal[k] = terminal[i];
-            axillary[k] = axillary[i];
-            if (sc) {
-                mOptimalTerminal[k] = mOptimalTerminal[i];
-                mOptimalAxillary[k] = mOptimalAxillary[i];
-            }
-            if (mM.lateralChild[i] >= 0 && removed[sz(mM.lateralChild[i])]) axillary[k] = 0.0;
-            if (mM.mainChild[i] >= 0 && removed[sz(mM.mainChild[i])]) terminal[k] = 0.0;
-            ++k;
-        }
-        shed(removed);
+    evaluateLight(mTerminalLight, mAxillaryLight);
+    const Clock::time_point t1 = Clock::now();
+    mGathered.resize(mM.size());
+    mInternodes.resize(mM.size());
+    gatherLight(mM.topology(), mTerminalLight, mAxillaryLight, mGathered, mInternodes);
+    if (markShed(mM.topology(), mGathered, mInternodes, mShedThreshold, mRemoved)) {
+        shed(mRemoved);
         if (mShadow && mOptions.naiveShadow) rebuildShadow();
-        terminal.resize(k);
-        axillary.resize(k);
-        gathered.resize(k);
-        internodes.resize(k);
-        gatherLight(mM.topology(), terminal, axillary, gathered, internodes);
+        mGathered.resize(mM.size());
+        mInternodes.resize(mM.size());
+        gatherLight(mM.topology(), mTerminalLight, mAxillaryLight, mGathered, mInternodes);
     }
+    const Clock::time_point t2 = Clock::now();
 
-    const Vigour vig = allocate(gathered, terminal, axillary);
+    allocate(mGathered, mTerminalLight, mAxillaryLight, mVigour);
+    const Clock::time_point t3 = Clock::now();
 
-    // Buds that grow, in metamer order (terminal before axillary), with their optimal
-    // direction; the shadow lookups run in parallel, the appends sequentially.
-    struct Growing {
-        std::int32_t metamer;
-        bool lateral;
-        double vigour;
-        glm::vec3 optimal;
-        bool seedling = false; ///< leader of a tree that perceives nothing yet
-    };
-    std::vector<Growing> growing;
+    // Buds that grow, in metamer order (terminal before axillary). Their shoots are made in
+    // parallel into scratch slots (prefix sums of the planned lengths), then appended in order.
+    mGrowing.clear();
     const std::size_t n0 = mM.size();
+    std::size_t slots = 0;
+    auto plan = [&](std::size_t i, bool lateral, double vigour, bool seedling,
+                    const glm::vec3& optimal) {
+        const int maxLength = mTrees[mM.tree[i]].params.maxShootLength;
+        Growing g;
+        g.metamer = static_cast<std::int32_t>(i);
+        g.planned = static_cast<std::int32_t>(std::min(std::floor(vigour), double(maxLength)));
+        g.slot = slots;
+        g.vigour = vigour;
+        g.optimal = optimal;
+        g.lateral = lateral;
+        g.seedling = seedling;
+        slots += sz(g.planned);
+        mGrowing.push_back(g);
+    };
     for (std::size_t i = 0; i < n0; ++i) {
-        const auto idx = static_cast<std::int32_t>(i);
-        if (mM.mainChild[i] < 0 && !(mM.deadBuds[i] & 1u) && vig.terminal[i] >= 1.0)
-            growing.push_back({idx, false, vig.terminal[i], glm::vec3(0.0f)});
-        if (mM.lateralChild[i] < 0 && !(mM.deadBuds[i] & 2u) && vig.axillary[i] >= 1.0)
-            growing.push_back({idx, true, vig.axillary[i], glm::vec3(0.0f)});
+        if (mM.mainChild[i] < 0 && !(mM.deadBuds[i] & 1u) && mVigour.terminal[i] >= 1.0)
+            plan(i, false, mVigour.terminal[i], false, glm::vec3(0.0f));
+        if (mM.lateralChild[i] < 0 && !(mM.deadBuds[i] & 2u) && mVigour.axillary[i] >= 1.0)
+            plan(i, true, mVigour.axillary[i], false, glm::vec3(0.0f));
     }
     if (mEnv == SoEnvironment::SpaceColonization) {
         // A tree that perceives no marker at all (a seedling below its crown envelope) grows
         // its leader straight up, max_shoot_length metamers per cycle, until it reaches them.
         for (std::size_t i = 0; i < n0; ++i) {
-            if (mM.parent[i] >= 0 || gathered[i] > 0.0) continue;
+            if (mM.parent[i] >= 0 || mGathered[i] > 0.0) continue;
             std::size_t tip = i;
             while (mM.mainChild[tip] >= 0)
                 tip = sz(mM.mainChild[tip]);
             if (mM.deadBuds[tip] & 1u) continue;
-            growing.push_back({static_cast<std::int32_t>(tip), false,
-                               static_cast<double>(mTrees[mM.tree[i]].params.maxShootLength), kUp,
-                               true});
+            plan(tip, false, static_cast<double>(mTrees[mM.tree[i]].params.maxShootLength), true,
+                 kUp);
         }
     }
-    const auto count = static_cast<std::int64_t>(growing.size());
-#pragma omp parallel for schedule(static) if (count > 4096)
+    mShootEnd.resize(slots);
+    mShootFrame.resize(slots);
+    const auto count = static_cast<std::int64_t>(mGrowing.size());
+#pragma omp parallel for schedule(dynamic, 64) if (count > 256)
     for (std::int64_t k = 0; k < count; ++k) {
-        Growing& g = growing[static_cast<std::size_t>(k)];
-        if (g.seedling) continue;
+        Growing& g = mGrowing[static_cast<std::size_t>(k)];
         const std::size_t i = sz(g.metamer);
-        const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
-        if (mEnv == SoEnvironment::SpaceColonization) {
+        if (g.seedling) {
+            // Grows straight up (optimal = +Y, set when planned).
+        } else if (mEnv == SoEnvironment::SpaceColonization) {
             g.optimal = g.lateral ? mOptimalAxillary[i] : mOptimalTerminal[i];
         } else {
-            const glm::quat f =
-                g.lateral ? lateralFrame(mM.frame[i], radians(sp.branchAngle)) : mM.frame[i];
-            g.optimal = optimalShadowDirection(mM.end[i], skel::headingOf(f),
-                                               std::cos(0.5 * sp.perceptionAngle * kPi / 180.0));
+            const std::uint16_t t = mM.tree[i];
+            const glm::quat f = g.lateral ? mM.frame[i] * mLateralTurn[t] : mM.frame[i];
+            g.optimal = optimalShadowDirection(mM.end[i], skel::headingOf(f), mCosHalfCone[t]);
         }
+        g.made = makeShoot(g, mShootEnd.data() + g.slot, mShootFrame.data() + g.slot);
     }
-    for (const Growing& g : growing)
-        growShoot(g.metamer, g.lateral, g.vigour, g.optimal);
+    commitShoots();
+    const Clock::time_point t4 = Clock::now();
 
     // Environment update: only the new metamers.
-    for (std::size_t i = n0; i < mM.size(); ++i) {
-        if (mShadow && !mOptions.naiveShadow) addSource(i, 1);
-        if (mMarkers) {
+    const std::size_t n1 = mM.size();
+    if (mShadow && !mOptions.naiveShadow) {
+        mSources.resize(n1 - n0);
+        const auto added = static_cast<std::int64_t>(n1 - n0);
+#pragma omp parallel for schedule(static) if (added > 1024)
+        for (std::int64_t k = 0; k < added; ++k) {
+            const std::size_t i = n0 + static_cast<std::size_t>(k);
+            mSources[static_cast<std::size_t>(k)] = {mShadow->voxelOf(mM.end[i]), 1, mM.tree[i]};
+        }
+        mShadow->applyBatch(mSources, mKernels);
+    }
+    if (mMarkers)
+        for (std::size_t i = n0; i < n1; ++i) {
             const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
             mMarkers->removeWithin(mM.end[i],
                                    static_cast<float>(sp.occupancyRadius * sp.internodeLength));
         }
-    }
     if (mShadow && mOptions.naiveShadow) rebuildShadow();
     ++mCycle;
+    const Clock::time_point t5 = Clock::now();
+    mTimings = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5), ms(t0, t5)};
 }
 
 std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {
@@ -634,7 +758,8 @@ std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {
     std::vector<double> gathered(n);
     std::vector<std::int32_t> internodes(n);
     gatherLight(mM.topology(), terminal, axillary, gathered, internodes);
-    const Vigour vig = allocate(gathered, terminal, axillary);
+    Vigour vig;
+    allocate(gathered, terminal, axillary, vig);
 
     std::vector<SelfOrganizingResult> out(mTrees.size());
     std::vector<std::int32_t> local(n, -1);

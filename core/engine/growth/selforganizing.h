@@ -1,7 +1,7 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -131,6 +131,16 @@ struct SimulationOptions {
     bool naiveAllocation = false; ///< Borchert–Honda by per-bud path products
 };
 
+/// Wall-clock milliseconds of the stages of the last step() (for the benchmark's profile).
+struct CycleTimings {
+    double light = 0;       ///< bud light from the environment
+    double shedding = 0;    ///< gather, shed, compaction (and the shed pyramids' removal)
+    double allocation = 0;  ///< Borchert–Honda or priority
+    double shoots = 0;      ///< optimal directions and new metamers
+    double environment = 0; ///< new pyramids / marker removal
+    double total = 0;
+};
+
 /// The metamers of all trees, parents before children (see MetamerTopology).
 struct MetamerArrays {
     std::vector<glm::vec3> end;   ///< node at the end of the internode (world metres)
@@ -162,9 +172,10 @@ public:
     void step();
 
     const MetamerArrays& metamers() const { return mM; }
+    const CycleTimings& lastTimings() const { return mTimings; }
     std::size_t shedCount() const { return mShed; }
-    const ShadowGrid* shadowGrid() const { return mShadow.get(); }
-    const MarkerSet* markerSet() const { return mMarkers.get(); }
+    const ShadowGrid* shadowGrid() const { return mShadow ? &*mShadow : nullptr; }
+    const MarkerSet* markerSet() const { return mMarkers ? &*mMarkers : nullptr; }
     /// The shadow grid rebuilt from every current source (oracle for the incremental one).
     ShadowGrid recomputeShadow() const;
 
@@ -180,16 +191,34 @@ private:
     void addSource(std::size_t metamer, int sign);
     void rebuildShadow();
     glm::vec3 optimalShadowDirection(const glm::vec3& pos, const glm::vec3& dir,
-                                     double cosHalf) const;
+                                     float cosHalf) const;
+    /// A bud that grows this cycle and the slots its shoot fills.
+    struct Growing {
+        std::int32_t metamer;
+        std::int32_t planned;  ///< metamers the vigour allows
+        std::int32_t made = 0; ///< metamers made (fewer where the shoot hit ground or obstacle)
+        std::size_t slot = 0;  ///< first scratch slot of the shoot
+        std::size_t first = 0; ///< index of its first metamer once committed
+        double vigour;
+        glm::vec3 optimal{0.0f};
+        bool lateral;
+        bool seedling = false; ///< leader of a tree that perceives nothing yet
+    };
+    /// Removes the marked metamers in place (stable), keeping the bud light and the space
+    /// colonization directions aligned; returns the shed pyramids for the incremental update.
     void shed(const std::vector<std::uint8_t>& removed);
     std::int32_t appendMetamer(std::int32_t parent, bool lateral, const glm::vec3& end,
                                const glm::quat& frame, std::uint16_t tree, std::uint16_t order);
     /// Space colonization: does a new internode cross an obstacle triangle? (Brute force over
     /// the triangles inside a bounding-box test; the shadow grid uses blocked voxels instead.)
     bool hitsObstacle(const glm::vec3& from, const glm::vec3& to) const;
-    void growShoot(std::int32_t from, bool lateral, double vigour, const glm::vec3& optimal);
-    Vigour allocate(const std::vector<double>& gathered, const std::vector<double>& terminal,
-                    const std::vector<double>& axillary) const;
+    /// Computes one shoot into the scratch slots (thread-safe: reads only the current state;
+    /// its random numbers come from a stream of its own bud); returns the metamers made.
+    std::int32_t makeShoot(const Growing& g, glm::vec3* ends, glm::quat* frames) const;
+    /// Appends the shoots made this cycle, in bud order.
+    void commitShoots();
+    void allocate(const std::vector<double>& gathered, const std::vector<double>& terminal,
+                  const std::vector<double>& axillary, Vigour& out) const;
 
     std::vector<StandTree> mTrees;
     std::vector<glm::vec3> mObstacles;
@@ -201,13 +230,25 @@ private:
     std::vector<ShadowKernel> mKernels;
     ShadowKernel mObstacleKernel;
     std::vector<glm::ivec3> mObstacleVoxels;
-    std::unique_ptr<ShadowGrid> mShadow;
-    std::unique_ptr<MarkerSet> mMarkers;
+    std::optional<ShadowGrid> mShadow;
+    std::optional<MarkerSet> mMarkers;
     std::vector<Rng> mRng;
     std::vector<std::int64_t> mCount;                          ///< internodes per tree
     std::vector<std::size_t> mShedTree;                        ///< metamers shed per tree
     std::vector<glm::vec3> mOptimalTerminal, mOptimalAxillary; ///< space colonization V
+    std::vector<glm::quat> mLateralTurn, mRoll; ///< per tree: bud angle and phyllotaxis rotations
+    std::vector<float> mCosHalfCone;            ///< per tree: cos(θ/2)
     MetamerArrays mM;
+    CycleTimings mTimings;
+    // Per-cycle buffers, kept to avoid reallocating them every cycle.
+    std::vector<double> mTerminalLight, mAxillaryLight, mGathered;
+    std::vector<std::int32_t> mInternodes, mRemap;
+    std::vector<std::uint8_t> mRemoved;
+    Vigour mVigour;
+    std::vector<Growing> mGrowing;
+    std::vector<glm::vec3> mShootEnd;
+    std::vector<glm::quat> mShootFrame;
+    std::vector<ShadowSource> mSources;
     int mCycle = 0;
     int mTotalCycles = 0;
     std::size_t mShed = 0;

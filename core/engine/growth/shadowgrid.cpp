@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
+
+#include <omp.h>
 
 #include "engine/util/error.h"
 
@@ -26,13 +30,30 @@ ShadowGrid::ShadowGrid(float voxelSize, float floorY, int margin)
     mFloor = static_cast<int>(std::floor(floorY / voxelSize));
 }
 
-glm::ivec3 ShadowGrid::voxelOf(const glm::vec3& p) const {
-    const glm::vec3 s = glm::floor(p / mVoxelSize);
-    return {static_cast<int>(s.x), static_cast<int>(s.y), static_cast<int>(s.z)};
-}
-
 glm::vec3 ShadowGrid::centreOf(const glm::ivec3& v) const {
     return (glm::vec3(v) + 0.5f) * mVoxelSize;
+}
+
+void ShadowGrid::neighbourhood(const glm::ivec3& v, std::int32_t (&out)[27]) const {
+    if (v.y - 1 >= mFloor && inside(v - 1) && inside(v + 1)) {
+        const std::int32_t* base = mValues.data() + index(v - 1);
+        const std::uint8_t* opaque = mBlocked.data() + index(v - 1);
+        const auto sx = static_cast<std::size_t>(mDim.z);
+        const std::size_t sy = sx * static_cast<std::size_t>(mDim.x);
+        for (std::size_t y = 0; y < 3; ++y)
+            for (std::size_t x = 0; x < 3; ++x)
+                for (std::size_t z = 0; z < 3; ++z) {
+                    const std::size_t o = y * sy + x * sx + z;
+                    out[y * 9 + x * 3 + z] = mAnyBlocked && opaque[o] ? kOpaque : base[o];
+                }
+        return;
+    }
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 3; ++x)
+            for (int z = 0; z < 3; ++z) {
+                const glm::ivec3 u = v + glm::ivec3(x - 1, y - 1, z - 1);
+                out[y * 9 + x * 3 + z] = blocked(u) ? kOpaque : raw(u);
+            }
 }
 
 void ShadowGrid::setBlocked(const glm::ivec3& v) {
@@ -106,6 +127,149 @@ void ShadowGrid::addPyramid(const glm::ivec3& v, const ShadowKernel& kernel, int
             std::int32_t* row = mValues.data() + index({x, y, v.z - q});
             for (int k = 0; k <= 2 * q; ++k)
                 row[k] += d;
+        }
+    }
+}
+
+void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
+                            std::span<const ShadowKernel> kernels) {
+    if (sources.empty()) return;
+    int maxDepth = 0;
+    for (const ShadowKernel& k : kernels)
+        maxDepth = std::max(maxDepth, k.depth);
+    if (maxDepth > mMargin)
+        throw InvalidInput("shadow_depth " + std::to_string(maxDepth) +
+                           " exceeds the grid margin " + std::to_string(mMargin));
+    glm::ivec3 lo = sources[0].voxel, hi = lo;
+    for (const ShadowSource& s : sources) {
+        lo = glm::min(lo, s.voxel);
+        hi = glm::max(hi, s.voxel);
+    }
+    // Pyramids are clipped only below the floor; the grid's horizontal margin covers them.
+    reserveAround(lo);
+    reserveAround(hi);
+    if (hi.y < mFloor) return;
+
+    // Counting sort of the sources by their layer (sources below the floor cast nothing).
+    const int firstSource = std::max(lo.y, mFloor);
+    const auto layers = static_cast<std::size_t>(hi.y - firstSource + 1);
+    mBucketStart.assign(layers + 1, 0);
+    for (const ShadowSource& s : sources)
+        if (s.voxel.y >= firstSource)
+            ++mBucketStart[static_cast<std::size_t>(s.voxel.y - firstSource) + 1];
+    for (std::size_t b = 0; b < layers; ++b)
+        mBucketStart[b + 1] += mBucketStart[b];
+    mBucketOrder.resize(mBucketStart[layers]);
+    {
+        std::vector<std::uint32_t> fill(mBucketStart.begin(), mBucketStart.end() - 1);
+        for (std::size_t i = 0; i < sources.size(); ++i) {
+            const int y = sources[i].voxel.y;
+            if (y < firstSource) continue;
+            mBucketOrder[fill[static_cast<std::size_t>(y - firstSource)]++] =
+                static_cast<std::uint32_t>(i);
+        }
+    }
+
+    // Each output layer gathers the pyramid slices (squares) of the sources up to maxDepth
+    // above it. Where the squares cover much more than their bounding rectangle, they go into a
+    // 2D difference array (4 corners each) that one prefix-sum sweep turns into the values;
+    // otherwise they are added directly. Both are exact integer sums.
+    const int firstLayer = std::max(mFloor, firstSource - maxDepth);
+    const int layerCount = hi.y - firstLayer + 1;
+    const auto total = static_cast<std::int64_t>(sources.size());
+    const auto dx = static_cast<std::size_t>(mDim.x), dz = static_cast<std::size_t>(mDim.z);
+    const std::size_t planeD = (dx + 1) * (dz + 1);
+    const int threads = omp_get_max_threads();
+    mDiff.resize(static_cast<std::size_t>(threads));
+    for (std::vector<std::int32_t>& d : mDiff)
+        if (d.size() != planeD) d.assign(planeD, 0);
+#pragma omp parallel if (total > 256)
+    {
+        std::vector<std::int32_t>& diff = mDiff[static_cast<std::size_t>(omp_get_thread_num())];
+        std::vector<std::int32_t> colAcc(dz + 1);
+#pragma omp for schedule(dynamic, 1)
+        for (int l = 0; l < layerCount; ++l) {
+            const int y = firstLayer + l;
+            std::int32_t* plane = mValues.data() + static_cast<std::size_t>(y - mLo.y) * dx * dz;
+            // Pass 1: extent and direct cost of this layer's squares.
+            int x0 = std::numeric_limits<int>::max(), z0 = x0;
+            int x1 = std::numeric_limits<int>::min(), z1 = x1;
+            std::int64_t cells = 0;
+            auto forEach = [&](auto&& f) {
+                for (int q = 0; q <= maxDepth; ++q) {
+                    const int sy = y + q;
+                    if (sy < firstSource || sy > hi.y) continue;
+                    const auto b = static_cast<std::size_t>(sy - firstSource);
+                    for (std::uint32_t k = mBucketStart[b]; k < mBucketStart[b + 1]; ++k) {
+                        const ShadowSource& s = sources[mBucketOrder[k]];
+                        const ShadowKernel& kernel = kernels[s.kernel];
+                        if (q > kernel.depth) continue;
+                        f(s, q, s.weight * kernel.delta[static_cast<std::size_t>(q)]);
+                    }
+                }
+            };
+            forEach([&](const ShadowSource& s, int q, std::int32_t) {
+                x0 = std::min(x0, s.voxel.x - q);
+                x1 = std::max(x1, s.voxel.x + q);
+                z0 = std::min(z0, s.voxel.z - q);
+                z1 = std::max(z1, s.voxel.z + q);
+                cells += static_cast<std::int64_t>(2 * q + 1) * (2 * q + 1);
+            });
+            if (cells == 0) continue;
+            const std::int64_t area =
+                static_cast<std::int64_t>(x1 - x0 + 1) * static_cast<std::int64_t>(z1 - z0 + 1);
+            if (cells < 2 * area) {
+                forEach([&](const ShadowSource& s, int q, std::int32_t d) {
+                    for (int x = s.voxel.x - q; x <= s.voxel.x + q; ++x) {
+                        std::int32_t* row = plane + static_cast<std::size_t>(x - mLo.x) * dz +
+                                            static_cast<std::size_t>(s.voxel.z - q - mLo.z);
+                        for (int z = 0; z <= 2 * q; ++z)
+                            row[z] += d;
+                    }
+                });
+                continue;
+            }
+            // Local plane coordinates; the difference array has one extra row and column for
+            // the far corners.
+            const std::size_t stride = dz + 1;
+            forEach([&](const ShadowSource& s, int q, std::int32_t d) {
+                const auto a0 = static_cast<std::size_t>(s.voxel.x - q - mLo.x);
+                const auto a1 = static_cast<std::size_t>(s.voxel.x + q + 1 - mLo.x);
+                const auto c0 = static_cast<std::size_t>(s.voxel.z - q - mLo.z);
+                const auto c1 = static_cast<std::size_t>(s.voxel.z + q + 1 - mLo.z);
+                diff[a0 * stride + c0] += d;
+                diff[a0 * stride + c1] -= d;
+                diff[a1 * stride + c0] -= d;
+                diff[a1 * stride + c1] += d;
+            });
+            const auto lx0 = static_cast<std::size_t>(x0 - mLo.x);
+            const auto lx1 = static_cast<std::size_t>(x1 - mLo.x);
+            const auto lz0 = static_cast<std::size_t>(z0 - mLo.z);
+            const auto lz1 = static_cast<std::size_t>(z1 - mLo.z);
+            // Two sweeps so that the second vectorizes: prefix sums along z in place (a chain
+            // per row), then running sums down x added into the layer.
+            const std::size_t width = lz1 - lz0 + 1;
+            std::fill_n(colAcc.begin(), width, 0);
+            for (std::size_t x = lx0; x <= lx1; ++x) {
+                std::int32_t* drow = diff.data() + x * stride + lz0;
+                std::int32_t run = 0;
+                for (std::size_t z = 0; z < width; ++z) {
+                    run += drow[z];
+                    drow[z] = run;
+                }
+                drow[width] = 0;
+            }
+            for (std::size_t x = lx0; x <= lx1; ++x) {
+                std::int32_t* __restrict drow = diff.data() + x * stride + lz0;
+                std::int32_t* __restrict srow = plane + x * dz + lz0;
+                std::int32_t* __restrict acc = colAcc.data();
+                for (std::size_t z = 0; z < width; ++z) {
+                    acc[z] += drow[z];
+                    srow[z] += acc[z];
+                    drow[z] = 0;
+                }
+            }
+            std::fill_n(diff.data() + (lx1 + 1) * stride + lz0, lz1 - lz0 + 2, 0);
         }
     }
 }

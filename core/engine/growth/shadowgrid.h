@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,14 @@ struct ShadowKernel {
     static ShadowKernel make(double a, double b, int depth);
 };
 
+/// One pyramid change of a batch (ShadowGrid::applyBatch): the pyramid of kernel \p kernel at
+/// voxel \p voxel, added \p weight times (negative removes).
+struct ShadowSource {
+    glm::ivec3 voxel{0};
+    std::int32_t weight = 1;
+    std::uint32_t kernel = 0; ///< index into the kernels passed to applyBatch
+};
+
 /// A voxel grid of shadow values that grows on demand (Y up). A source at voxel (I, J, K)
 /// shadows the voxels (I±p, J−q, K±p), p = 0…q, q = 0…q_max, by Δs(q). The grid always keeps
 /// a horizontal margin of q_max voxels around every source, so no pyramid is ever clipped
@@ -33,13 +42,21 @@ public:
 
     float voxelSize() const { return mVoxelSize; }
     /// Integer voxel coordinates of a point (floor(p / voxelSize)).
-    glm::ivec3 voxelOf(const glm::vec3& p) const;
+    glm::ivec3 voxelOf(const glm::vec3& p) const {
+        const glm::vec3 s = glm::floor(p / mVoxelSize);
+        return {static_cast<int>(s.x), static_cast<int>(s.y), static_cast<int>(s.z)};
+    }
     /// Centre of a voxel in metres.
     glm::vec3 centreOf(const glm::ivec3& v) const;
 
     /// Adds (sign = +1) or removes (sign = −1) the pyramid of a source at voxel \p v, growing
     /// the grid first when needed.
     void addPyramid(const glm::ivec3& v, const ShadowKernel& kernel, int sign = 1);
+    /// Applies many pyramid changes at once, equal to addPyramid for each of them in any order
+    /// (integer arithmetic). Grows the grid once, then updates one horizontal layer at a time
+    /// (in parallel over layers, so each layer stays in cache and no two threads write the
+    /// same voxel): the result is identical on any number of threads.
+    void applyBatch(std::span<const ShadowSource> sources, std::span<const ShadowKernel> kernels);
     /// Shadow value s at a voxel (0 above or beside the grid, the floor row's value below it).
     double shadow(const glm::ivec3& v) const { return raw(v) / kScale; }
     std::int32_t raw(const glm::ivec3& v) const {
@@ -47,6 +64,13 @@ public:
         if (c.y < mFloor) c.y = mFloor;
         return inside(c) ? mValues[index(c)] : 0;
     }
+
+    /// Value of neighbourhood() for an opaque voxel.
+    static constexpr std::int32_t kOpaque = 0x7fffffff;
+    /// Raw values of the 3×3×3 voxels around \p v, index (dy+1)·9 + (dx+1)·3 + (dz+1), with
+    /// kOpaque for blocked voxels; same values as raw() and blocked() voxel by voxel, but one
+    /// bounds test and nine contiguous triples in the common case.
+    void neighbourhood(const glm::ivec3& v, std::int32_t (&out)[27]) const;
 
     /// Marks a voxel opaque (obstacles): buds there get no light and never grow towards it.
     void setBlocked(const glm::ivec3& v);
@@ -87,6 +111,9 @@ private:
     std::vector<std::int32_t> mValues;
     std::vector<std::uint8_t> mBlocked;
     bool mAnyBlocked = false; ///< lets the common obstacle-free case skip the lookup
+    std::vector<std::uint32_t> mBucketStart, mBucketOrder; ///< applyBatch scratch (by layer)
+    /// applyBatch: one zeroed difference plane per thread ((dims.x + 1) · (dims.z + 1)).
+    std::vector<std::vector<std::int32_t>> mDiff;
 };
 
 } // namespace sylva::growth

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "engine/util/hugepages.h"
 #include "engine/util/error.h"
 
 namespace sylva::mesh {
@@ -100,30 +101,88 @@ Layout chainLayout(std::size_t rings, bool lateral, bool caps, int res) {
     return l;
 }
 
+// Writes one run of chains into a scratch block: vertex v lands at v - base (indices keep
+// their absolute values). Raw pointers, so the compiler does not reload vector internals.
 struct Writer {
-    Mesh& m;
-    bool wind;
+    glm::vec3* pos;
+    glm::vec3* nrm;
+    glm::vec2* uvs;
+    std::uint16_t* orders; ///< null without wind attributes
+    float* flexes;
+    std::uint32_t* idx;
+    std::size_t base;
+    std::size_t indexBase;
     std::size_t v;
     std::size_t i;
-    std::uint16_t order;
-    float invRMax;
+    std::uint16_t order = 0;
+    float invRMax = 0.0f;
     float flex = 0.0f;
 
     void vertex(const glm::vec3& p, const glm::vec3& n, const glm::vec2& uv) {
-        m.positions[v] = p;
-        m.normals[v] = n;
-        m.uvs[v] = uv;
-        if (wind) {
-            m.branchOrder[v] = order;
-            m.flexibility[v] = flex;
+        const std::size_t k = v - base;
+        pos[k] = p;
+        nrm[k] = n;
+        uvs[k] = uv;
+        if (orders) {
+            orders[k] = order;
+            flexes[k] = flex;
         }
         ++v;
     }
     void triangle(std::size_t a, std::size_t b, std::size_t c) {
-        m.indices[i] = static_cast<std::uint32_t>(a);
-        m.indices[i + 1] = static_cast<std::uint32_t>(b);
-        m.indices[i + 2] = static_cast<std::uint32_t>(c);
+        std::uint32_t* t = idx + (i - indexBase);
+        t[0] = static_cast<std::uint32_t>(a);
+        t[1] = static_cast<std::uint32_t>(b);
+        t[2] = static_cast<std::uint32_t>(c);
         i += 3;
+    }
+};
+
+// A thread's reusable block of vertices and indices for one run of chains; its contents are
+// appended to the mesh in chain order. Generating into a block that stays in cache and then
+// appending to reserved (not resized) arrays writes the big arrays once: resize() would first
+// zero-fill them (value-initialized glm vectors), a whole extra pass over ~56 bytes a vertex.
+struct Scratch {
+    std::vector<glm::vec3> pos, nrm;
+    std::vector<glm::vec2> uvs;
+    std::vector<std::uint16_t> orders;
+    std::vector<float> flexes;
+    std::vector<std::uint32_t> idx;
+
+    Writer writer(std::size_t vBegin, std::size_t vCount, std::size_t iBegin, std::size_t iCount,
+                  bool wind) {
+        if (pos.size() < vCount) {
+            pos.resize(vCount);
+            nrm.resize(vCount);
+            uvs.resize(vCount);
+            if (wind) {
+                orders.resize(vCount);
+                flexes.resize(vCount);
+            }
+        }
+        if (idx.size() < iCount) idx.resize(iCount);
+        return Writer{pos.data(),
+                      nrm.data(),
+                      uvs.data(),
+                      wind ? orders.data() : nullptr,
+                      wind ? flexes.data() : nullptr,
+                      idx.data(),
+                      vBegin,
+                      iBegin,
+                      vBegin,
+                      iBegin};
+    }
+    void appendTo(Mesh& m, std::size_t vCount, std::size_t iCount, bool wind) const {
+        const auto vn = static_cast<std::ptrdiff_t>(vCount);
+        m.positions.insert(m.positions.end(), pos.begin(), pos.begin() + vn);
+        m.normals.insert(m.normals.end(), nrm.begin(), nrm.begin() + vn);
+        m.uvs.insert(m.uvs.end(), uvs.begin(), uvs.begin() + vn);
+        if (wind) {
+            m.branchOrder.insert(m.branchOrder.end(), orders.begin(), orders.begin() + vn);
+            m.flexibility.insert(m.flexibility.end(), flexes.begin(), flexes.begin() + vn);
+        }
+        m.indices.insert(m.indices.end(), idx.begin(),
+                         idx.begin() + static_cast<std::ptrdiff_t>(iCount));
     }
 };
 
@@ -297,15 +356,27 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                             " vertices; the limit of 32-bit indices is 4294967295");
 
     // Attributes the mesh did not have yet are filled for the existing vertices too.
-    out.positions.resize(vOff[count]);
-    out.normals.resize(vOff[count], glm::vec3(0, 1, 0));
-    out.uvs.resize(vOff[count], glm::vec2(0.0f));
+    const std::size_t existing = out.positions.size();
+    out.normals.resize(existing, glm::vec3(0, 1, 0));
+    out.uvs.resize(existing, glm::vec2(0.0f));
     const bool wind = settings.windAttributes || !out.branchOrder.empty();
     if (wind) {
-        out.branchOrder.resize(vOff[count], 0);
-        out.flexibility.resize(vOff[count], 1.0f);
+        out.branchOrder.resize(existing, 0);
+        out.flexibility.resize(existing, 1.0f);
     }
-    out.indices.resize(iOff[count]);
+    auto reserveBig = [](auto& v, std::size_t n) {
+        const bool fresh = v.capacity() < n;
+        v.reserve(n);
+        if (fresh) adviseHugePages(v);
+    };
+    reserveBig(out.positions, vOff[count]);
+    reserveBig(out.normals, vOff[count]);
+    reserveBig(out.uvs, vOff[count]);
+    if (wind) {
+        reserveBig(out.branchOrder, vOff[count]);
+        reserveBig(out.flexibility, vOff[count]);
+    }
+    reserveBig(out.indices, iOff[count]);
     if (iOff[count] > iOff[0]) {
         if (out.submeshes.empty() && iOff[0] > 0)
             out.submeshes.push_back({"bark", 0, static_cast<std::uint32_t>(iOff[0])});
@@ -327,22 +398,40 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         rMax = std::max(rMax, r);
     const float invRMax = rMax > 0.0f ? 1.0f / rMax : 0.0f;
 
-    // Batches keep cancellation responsive; inside a batch the chains are independent and
-    // each writes only its own precomputed ranges, so the result is thread-count independent.
-    constexpr std::size_t kBatch = 8192;
-    for (std::size_t first = 0; first < count; first += kBatch) {
+    // Runs of consecutive chains of about kRunVertices vertices are meshed in parallel, each
+    // into its thread's scratch block, and appended in chain order (omp ordered): the result
+    // is the same on any thread count. Cancellation is checked between groups of runs.
+    constexpr std::size_t kRunVertices = 4096;
+    std::vector<std::size_t> runs{0};
+    for (std::size_t c = 0; c < count; ++c)
+        if (vOff[c + 1] - vOff[runs.back()] >= kRunVertices || c + 1 == count)
+            runs.push_back(c + 1);
+    const std::size_t runCount = runs.size() - 1;
+    constexpr std::size_t kRunsPerCheck = 256;
+    for (std::size_t first = 0; first < runCount; first += kRunsPerCheck) {
         progress.checkCancelled();
-        progress.report(static_cast<double>(first) / static_cast<double>(count), "mesh");
-        const auto last = static_cast<std::int64_t>(std::min(count, first + kBatch));
-#pragma omp parallel for schedule(dynamic, 256)
-        for (std::int64_t ci = static_cast<std::int64_t>(first); ci < last; ++ci) {
-            const auto c = static_cast<std::size_t>(ci);
-            const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
-            const std::size_t m = chains.begin[c + 1] - chains.begin[c];
-            const bool lateral = chains.lateral[c] != 0;
-            const auto head = static_cast<std::size_t>(nodes[lateral ? 1 : 0]);
-            Writer w{out, wind, vOff[c], iOff[c], s.order[head], invRMax};
-            meshChain(w, s, radius, nodes, m, lateral, settings.caps, cs);
+        progress.report(static_cast<double>(first) / static_cast<double>(runCount), "mesh");
+        const auto last = static_cast<std::int64_t>(std::min(runCount, first + kRunsPerCheck));
+#pragma omp parallel
+        {
+            Scratch scratch;
+#pragma omp for ordered schedule(dynamic, 1)
+            for (std::int64_t ri = static_cast<std::int64_t>(first); ri < last; ++ri) {
+                const std::size_t c0 = runs[static_cast<std::size_t>(ri)];
+                const std::size_t c1 = runs[static_cast<std::size_t>(ri) + 1];
+                const std::size_t nv = vOff[c1] - vOff[c0], ni = iOff[c1] - iOff[c0];
+                Writer w = scratch.writer(vOff[c0], nv, iOff[c0], ni, wind);
+                w.invRMax = invRMax;
+                for (std::size_t c = c0; c < c1; ++c) {
+                    const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
+                    const std::size_t m = chains.begin[c + 1] - chains.begin[c];
+                    const bool lateral = chains.lateral[c] != 0;
+                    w.order = s.order[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
+                    meshChain(w, s, radius, nodes, m, lateral, settings.caps, cs);
+                }
+#pragma omp ordered
+                scratch.appendTo(out, nv, ni, wind);
+            }
         }
     }
     progress.report(1.0, "mesh");

@@ -7,6 +7,9 @@
 
 #include <omp.h>
 
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+
 #include "engine/export/objwriter.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/lod.h"
@@ -148,5 +151,67 @@ TEST(ObjWriter, FileIsWrittenAtomically) {
     for (const auto& e : std::filesystem::directory_iterator(dir))
         files += e.is_regular_file();
     EXPECT_EQ(files, 1u); // no temporaries left
+    std::filesystem::remove_all(dir);
+}
+
+TEST(ObjWriter, RelativeIndicesByHand) {
+    const mesh::Mesh m = triangleMesh();
+    std::string out;
+    exporter::ObjOffsets offsets{5, 5, 5}; // relative indices do not depend on earlier objects
+    exporter::ObjOptions options;
+    options.relativeIndices = true;
+    options.materials = false;
+    exporter::appendObj(out, {"t", &m}, offsets, options);
+    EXPECT_EQ(out, "o t\n"
+                   "v 0 0 0\nv 1.5 0 0\nv 0 2 -0.25\n"
+                   "vt 0 0\nvt 1 0\nvt 0 1\n"
+                   "vn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
+                   "f -3/-3/-3 -2/-2/-2 -1/-1/-1\n");
+    options.uvs = false;
+    out.clear();
+    exporter::appendObj(out, {"t", &m}, offsets, options);
+    EXPECT_NE(out.find("f -3//-3 -2//-2 -1//-1\n"), std::string::npos) << out;
+}
+
+// Oracle: Assimp reads the compact file (relative indices, fewer decimals) as the same
+// geometry as the default one, to the documented precision.
+TEST(ObjWriter, CompactOptionsReadBackLikeDefault) {
+    const auto dir = tempDir("compact");
+    const mesh::Mesh m = treeMesh();
+    std::vector<exporter::ObjObject> objects{{"a", &m}, {"b", &m}};
+    objects[1].transform = glm::translate(glm::mat4(1.0f), glm::vec3(3, 0, 1));
+    exporter::writeObjFile(dir / "full.obj", objects);
+    exporter::writeObjFile(dir / "compact.obj", objects, exporter::ObjOptions::compact());
+    // Fewer decimals alone shrink the file (relative indices pay off only once absolute ones
+    // grow longer than an object's vertex count, i.e. in forests: see docs/perf/geometry.md).
+    exporter::ObjOptions decimalsOnly = exporter::ObjOptions::compact();
+    decimalsOnly.relativeIndices = false;
+    exporter::writeObjFile(dir / "decimals.obj", objects, decimalsOnly);
+    EXPECT_LT(std::filesystem::file_size(dir / "decimals.obj"),
+              std::filesystem::file_size(dir / "full.obj"));
+    Assimp::Importer ia, ib;
+    const aiScene* a = ia.ReadFile((dir / "full.obj").string(), 0);
+    const aiScene* b = ib.ReadFile((dir / "compact.obj").string(), 0);
+    ASSERT_TRUE(a && b) << ia.GetErrorString() << ib.GetErrorString();
+    ASSERT_EQ(a->mNumMeshes, b->mNumMeshes);
+    ASSERT_GE(a->mNumMeshes, 2u);
+    for (unsigned k = 0; k < a->mNumMeshes; ++k) {
+        const aiMesh* ma = a->mMeshes[k];
+        const aiMesh* mb = b->mMeshes[k];
+        ASSERT_EQ(ma->mNumFaces, mb->mNumFaces);
+        ASSERT_EQ(ma->mNumVertices, mb->mNumVertices);
+        for (unsigned f = 0; f < ma->mNumFaces; ++f) {
+            ASSERT_EQ(ma->mFaces[f].mNumIndices, 3u);
+            for (unsigned c = 0; c < 3; ++c) {
+                const unsigned ia3 = ma->mFaces[f].mIndices[c], ib3 = mb->mFaces[f].mIndices[c];
+                const aiVector3D d = ma->mVertices[ia3] - mb->mVertices[ib3];
+                ASSERT_LE(d.Length(), 1e-4f) << "mesh " << k << " face " << f;
+                const aiVector3D dn = ma->mNormals[ia3] - mb->mNormals[ib3];
+                ASSERT_LE(dn.Length(), 2e-3f);
+                const aiVector3D dt = ma->mTextureCoords[0][ia3] - mb->mTextureCoords[0][ib3];
+                ASSERT_LE(dt.Length(), 1e-4f);
+            }
+        }
+    }
     std::filesystem::remove_all(dir);
 }

@@ -226,7 +226,10 @@ TEST(SceneExport, BlenderImportsObjAndGlb) {
     const auto dir = tempDir("blender");
     exporter::writeScene(dir / "forest.glb", f.scene, exporter::SceneFormat::Glb);
     exporter::writeObjFile(dir / "forest.obj", {{"oak_0", &f.a}});
-    const std::string script = "import bpy,sys\n"
+    // Debian 12's Blender 3.4 glTF importer uses np.bool, which its numpy 1.24 removed: alias it
+    // back so the importer's default shading path runs.
+    const std::string script = "import bpy,sys,numpy\n"
+                               "if not hasattr(numpy,'bool'): numpy.bool=bool\n"
                                "bpy.ops.wm.read_factory_settings(use_empty=True)\n"
                                "bpy.ops.import_scene.gltf(filepath='" +
                                (dir / "forest.glb").string() +
@@ -239,14 +242,28 @@ TEST(SceneExport, BlenderImportsObjAndGlb) {
                                "except AttributeError:\n  bpy.ops.import_scene.obj(filepath='" +
                                (dir / "forest.obj").string() +
                                "')\n"
-                               "m=len([o for o in bpy.data.objects if o.type=='MESH'])\n"
-                               "sys.exit(0 if n>=3 and m>=1 else 1)\n";
+                               "m=[o for o in bpy.data.objects if o.type=='MESH']\n"
+                               "print('sylva-check', n, [o.name for o in m])\n"
+                               "ok=n>=3 and len(m)==1 and m[0].name.startswith('oak_0') and "
+                               "len(m[0].data.polygons)==" +
+                               std::to_string(f.a.triangleCount()) +
+                               "\n"
+                               "sys.exit(0 if ok else 1)\n";
     {
         std::ofstream out(dir / "check.py");
         out << script;
     }
     const std::string cmd = "blender -b --python-exit-code 1 --python " +
-                            (dir / "check.py").string() + " >/dev/null 2>&1";
-    EXPECT_EQ(std::system(cmd.c_str()), 0);
+                            (dir / "check.py").string() + " >" + (dir / "blender.log").string() +
+                            " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::string log;
+    {
+        std::ifstream in(dir / "blender.log");
+        std::stringstream ss;
+        ss << in.rdbuf();
+        log = ss.str();
+    }
+    EXPECT_EQ(rc, 0) << "blender output:\n" << log;
     std::filesystem::remove_all(dir);
 }

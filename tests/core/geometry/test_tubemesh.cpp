@@ -9,6 +9,7 @@
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/util/error.h"
+#include "referencetubemesh.h"
 #include "testwords.h"
 
 using namespace sylva;
@@ -229,4 +230,50 @@ TEST(TubeMesh, RejectsBadResolution) {
     } catch (const InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find("[3, 64]"), std::string::npos) << e.what();
     }
+}
+
+// Oracle: the first, straightforward mesher (resize + write at offsets) gives the same bytes as
+// the optimized one (scratch blocks appended in order), on one and two threads, with and
+// without caps, wind attributes, twig dropping, and when appending to a mesh that has vertices
+// but no normals yet.
+TEST(TubeMesh, SameBytesAsStraightforwardMesher) {
+    lsys::TurtleSettings t;
+    t.angleDegrees = 30;
+    t.step = 0.5;
+    t.width = 0.3;
+    const auto s = lsys::interpret(makeWord(sylva::testing::testTreeWord(6)), t);
+    const int saved = omp_get_max_threads();
+    for (int threads : {1, 2})
+        for (int variant = 0; variant < 4; ++variant) {
+            omp_set_num_threads(threads);
+            mesh::TubeSettings settings;
+            settings.resolution = variant == 3 ? 5 : 8;
+            settings.caps = variant != 1;
+            settings.windAttributes = variant == 2;
+            settings.minBranchRadius = variant == 3 ? 0.02 : 0.0;
+            mesh::Mesh a, b;
+            if (variant == 1) {
+                a.positions.push_back({1, 2, 3});
+                a.indices = {0, 0, 0};
+                b = a;
+            }
+            mesh::appendTubes(a, s, settings);
+            mesh::reference::appendTubesReference(b, s, settings);
+            const std::string what =
+                "threads " + std::to_string(threads) + " variant " + std::to_string(variant);
+            ASSERT_GT(a.vertexCount(), 2u * 4096u) << what; // several scratch runs
+            EXPECT_EQ(a.positions, b.positions) << what;
+            EXPECT_EQ(a.normals, b.normals) << what;
+            EXPECT_EQ(a.uvs, b.uvs) << what;
+            EXPECT_EQ(a.indices, b.indices) << what;
+            EXPECT_EQ(a.branchOrder, b.branchOrder) << what;
+            EXPECT_EQ(a.flexibility, b.flexibility) << what;
+            ASSERT_EQ(a.submeshes.size(), b.submeshes.size()) << what;
+            for (std::size_t k = 0; k < a.submeshes.size(); ++k) {
+                EXPECT_EQ(a.submeshes[k].material, b.submeshes[k].material) << what;
+                EXPECT_EQ(a.submeshes[k].firstIndex, b.submeshes[k].firstIndex) << what;
+                EXPECT_EQ(a.submeshes[k].indexCount, b.submeshes[k].indexCount) << what;
+            }
+        }
+    omp_set_num_threads(saved);
 }

@@ -5,6 +5,7 @@
 
 #include "engine/lsystem/turtle.h"
 #include "engine/util/random.h"
+#include "referenceturtle.h"
 #include "testwords.h"
 
 using sylva::lsys::interpret;
@@ -236,4 +237,72 @@ TEST(Turtle, MatchesVectorTurtleOnRandomWords) {
 TEST(Turtle, SkeletonIsValid) {
     const auto s = run("F[+F[-F]F]f[&F]F(0.5)J");
     EXPECT_NO_THROW(s.validate());
+}
+
+namespace {
+
+// Exact comparison with the straightforward turtle (== on floats, so only an exact zero's sign
+// may differ).
+void expectSameSkeleton(const sylva::skel::Skeleton& a, const sylva::skel::Skeleton& b,
+                        const std::string& what) {
+    ASSERT_EQ(a.size(), b.size()) << what;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        ASSERT_EQ(a.parent[i], b.parent[i]) << what << " node " << i;
+        ASSERT_EQ(a.order[i], b.order[i]) << what << " node " << i;
+        ASSERT_EQ(a.flags[i], b.flags[i]) << what << " node " << i;
+        ASSERT_EQ(a.radius[i], b.radius[i]) << what << " node " << i;
+        for (int k = 0; k < 3; ++k)
+            ASSERT_EQ(a.position[i][k], b.position[i][k]) << what << " node " << i;
+        for (int k = 0; k < 4; ++k)
+            ASSERT_EQ(a.orientation[i][k], b.orientation[i][k]) << what << " node " << i;
+    }
+    ASSERT_EQ(a.leaves.size(), b.leaves.size()) << what;
+    for (std::size_t i = 0; i < a.leaves.size(); ++i) {
+        EXPECT_EQ(a.leaves[i].node, b.leaves[i].node) << what;
+        EXPECT_EQ(a.leaves[i].size, b.leaves[i].size) << what;
+        EXPECT_EQ(a.leaves[i].position, b.leaves[i].position) << what;
+        EXPECT_EQ(a.leaves[i].orientation, b.leaves[i].orientation) << what;
+    }
+}
+
+} // namespace
+
+// Oracle: the optimized interpreter gives the same floats as the first, straightforward one,
+// on random words with every turtle symbol, parameters or not, cuts, moves and leaves.
+TEST(Turtle, MatchesStraightforwardTurtleExactly) {
+    const std::string alphabet = "FFFF+-&^\\/|$[[]]f!%JAB";
+    for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+        sylva::Rng rng(seed);
+        const bool params = seed % 2 == 0;
+        std::string text;
+        int depth = 0;
+        for (int i = 0; i < 400; ++i) {
+            char c = alphabet[rng.below(alphabet.size())];
+            if (c == ']' && depth == 0) c = 'F';
+            if (c == '%' && rng.below(4) != 0) c = '+'; // rare cuts keep most of the word
+            depth += c == '[' ? 1 : c == ']' ? -1 : 0;
+            text.push_back(c);
+            if (params && c != '[' && c != ']' && c != '%' && c != '$' && c != '|' &&
+                rng.below(2) == 0) {
+                // Appended piecewise: GCC 12 reports a false -Wrestrict on "(" + string + ")".
+                text.push_back('(');
+                text.append(std::to_string(0.1 + 60.0 * rng.uniform()));
+                text.push_back(')');
+            }
+        }
+        TurtleSettings settings;
+        settings.angleDegrees = 5.0 + 80.0 * rng.uniform();
+        settings.step = 0.2 + rng.uniform();
+        settings.width = 0.05 + 0.3 * rng.uniform();
+        const auto word = makeWord(text);
+        expectSameSkeleton(interpret(word, settings),
+                           sylva::lsys::reference::interpretReference(word, settings),
+                           "seed " + std::to_string(seed));
+    }
+    // The ABOP word of the benchmark, smaller: the context-free fast path.
+    const auto abop = makeWord(sylva::testing::rewrite("F[&F][^F]", 'F', "F[+F]F[-F]F", 5));
+    TurtleSettings settings;
+    settings.angleDegrees = 25.7;
+    expectSameSkeleton(interpret(abop, settings),
+                       sylva::lsys::reference::interpretReference(abop, settings), "abop");
 }

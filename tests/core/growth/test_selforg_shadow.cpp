@@ -1,8 +1,11 @@
 // The shadow propagation environment: pyramid values by hand, incremental == full.
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include "engine/growth/selforganizing.h"
 #include "engine/growth/shadowgrid.h"
+#include "engine/util/random.h"
 
 using namespace sylva::growth;
 
@@ -73,8 +76,8 @@ TEST(SelfOrgShadow, FloorClipsPyramids) {
 
 TEST(SelfOrgShadow, IncrementalEqualsFullRecomputation) {
     SelfOrganizingParams p;
-    p.cycles = 12;
-    p.sheddingThreshold = 0.35; // sheds a lot, so removals are exercised
+    p.cycles = 14;
+    p.sheddingThreshold = 0.3; // sheds a lot, so removals are exercised
     p.shadowDepth = 4;
     std::vector<StandTree> trees = {{{0, 0, 0}, p, 1}, {{0.8f, 0, 0.3f}, p, 2}};
     trees[1].params.shadowA = 0.7;
@@ -90,24 +93,48 @@ TEST(SelfOrgShadow, IncrementalEqualsFullRecomputation) {
         ASSERT_TRUE(sim.shadowGrid()->sameShadow(sim.recomputeShadow())) << sim.cycle();
         ++checked;
     }
-    EXPECT_EQ(checked, 12u);
+    EXPECT_EQ(checked, 14u);
     EXPECT_GT(sim.shedCount(), 0u);
     EXPECT_GT(sim.metamers().size(), 200u);
 }
 
 TEST(SelfOrgShadow, NaiveAndIncrementalGrowTheSameTree) {
-    SelfOrganizingParams p;
-    p.cycles = 10;
-    SelfOrganizingSimulation a({{glm::vec3(0), p, 5}}, {});
-    SelfOrganizingSimulation b({{glm::vec3(0), p, 5}}, {}, SimulationOptions{true, false});
-    while (!a.done()) {
-        a.step();
-        b.step();
+    // A small tree, and a vigorous one large enough for the parallel loops and the batched
+    // difference-array shadow update to take part. The naive run uses one thread, the
+    // incremental one two, so this also checks the thread-count independence.
+    SelfOrganizingParams vigorous;
+    vigorous.cycles = 13;
+    vigorous.alpha = 4.0;
+    vigorous.shadowA = 0.2;
+    vigorous.internodeLength = 0.25;
+    vigorous.branchAngle = 85;
+    vigorous.optimalWeight = 0.05;
+    vigorous.tropismWeight = 0.5;
+    for (const SelfOrganizingParams& p : {SelfOrganizingParams{}, vigorous}) {
+        SelfOrganizingSimulation a({{glm::vec3(0), p, 5}}, {});
+        SelfOrganizingSimulation b({{glm::vec3(0), p, 5}}, {}, SimulationOptions{true, true});
+        const int before = omp_get_max_threads();
+        while (!a.done()) {
+            omp_set_num_threads(2);
+            a.step();
+            omp_set_num_threads(1);
+            b.step();
+        }
+        omp_set_num_threads(before);
+        ASSERT_EQ(a.metamers().size(), b.metamers().size());
+        for (std::size_t i = 0; i < a.metamers().size(); ++i) {
+            ASSERT_EQ(a.metamers().end[i], b.metamers().end[i]);
+            ASSERT_EQ(a.metamers().parent[i], b.metamers().parent[i]);
+            ASSERT_EQ(a.metamers().deadBuds[i], b.metamers().deadBuds[i]);
+        }
+        EXPECT_EQ(a.shedCount(), b.shedCount());
+        EXPECT_TRUE(a.shadowGrid()->sameShadow(*b.shadowGrid()));
+        EXPECT_TRUE(a.shadowGrid()->sameShadow(a.recomputeShadow()));
+        if (p.alpha == vigorous.alpha) {
+            EXPECT_GT(a.metamers().size(), 3000u);
+            EXPECT_GT(a.shedCount(), 500u);
+        }
     }
-    ASSERT_EQ(a.metamers().size(), b.metamers().size());
-    for (std::size_t i = 0; i < a.metamers().size(); ++i)
-        ASSERT_EQ(a.metamers().end[i], b.metamers().end[i]);
-    EXPECT_TRUE(a.shadowGrid()->sameShadow(*b.shadowGrid()));
 }
 
 TEST(SelfOrgShadow, LoneBudSeesFullLight) {
@@ -122,5 +149,74 @@ TEST(SelfOrgShadow, LoneBudSeesFullLight) {
     for (std::size_t i = 0; i < t.size(); ++i) {
         EXPECT_LE(t[i], 0.8 + 1e-9);
         EXPECT_LE(a[i], 0.8 + 1e-9);
+    }
+}
+
+TEST(SelfOrgShadow, BatchEqualsOnePyramidAtATime) {
+    // Oracle: addPyramid per source. Mixed kernels, removals, sources below and at the floor,
+    // a dense cluster (difference-array path) and scattered sources (direct path), on 1 and 2
+    // threads.
+    const std::vector<ShadowKernel> kernels = {ShadowKernel::make(1.0, 2.0, 5),
+                                               ShadowKernel::make(0.3, 1.5, 2),
+                                               ShadowKernel::make(2.0, 3.0, 0)};
+    sylva::Rng rng(42);
+    std::vector<ShadowSource> sources;
+    for (int i = 0; i < 4000; ++i) {
+        const bool dense = i < 3000;
+        const int w = dense ? 6 : 60;
+        const glm::ivec3 v(static_cast<int>(rng.below(static_cast<std::uint64_t>(w))) - w / 2,
+                           static_cast<int>(rng.below(12)) - 3,
+                           static_cast<int>(rng.below(static_cast<std::uint64_t>(w))) - w / 2);
+        sources.push_back(
+            {v, rng.uniform() < 0.3 ? -1 : 2, static_cast<std::uint32_t>(rng.below(3))});
+    }
+    ShadowGrid oracle(1.0f, 0.0f, 5);
+    for (const ShadowSource& s : sources)
+        oracle.addPyramid(s.voxel, kernels[s.kernel], s.weight);
+    for (int threads : {1, 2}) {
+        const int before = omp_get_max_threads();
+        omp_set_num_threads(threads);
+        ShadowGrid batch(1.0f, 0.0f, 5);
+        batch.addPyramid({100, 20, 100}, kernels[0]); // grows the grid first
+        batch.applyBatch(sources, kernels);
+        batch.addPyramid({100, 20, 100}, kernels[0], -1);
+        omp_set_num_threads(before);
+        EXPECT_TRUE(batch.sameShadow(oracle)) << threads << " threads";
+        // Applying the removals of everything returns the grid to zero.
+        std::vector<ShadowSource> undo = sources;
+        for (ShadowSource& s : undo)
+            s.weight = -s.weight;
+        batch.applyBatch(undo, kernels);
+        for (std::int32_t v : batch.values())
+            ASSERT_EQ(v, 0);
+    }
+    // Scattered sources take the direct path.
+    ShadowGrid sparse(1.0f, 0.0f, 5), sparseOracle(1.0f, 0.0f, 5);
+    const std::vector<ShadowSource> few = {{{0, 9, 0}, 1, 0}, {{30, 4, -20}, -1, 1}};
+    sparse.applyBatch(few, kernels);
+    for (const ShadowSource& s : few)
+        sparseOracle.addPyramid(s.voxel, kernels[s.kernel], s.weight);
+    EXPECT_TRUE(sparse.sameShadow(sparseOracle));
+}
+
+TEST(SelfOrgShadow, NeighbourhoodMatchesVoxelLookups) {
+    ShadowGrid g(1.0f, 0.0f, 3);
+    const ShadowKernel k = ShadowKernel::make(1.0, 2.0, 3);
+    g.addPyramid({0, 6, 0}, k);
+    g.addPyramid({2, 4, 1}, k);
+    g.setBlocked({1, 3, 1});
+    // Inside (fast path), at the floor (clamped reads) and at the grid's edge (fallback).
+    for (const glm::ivec3 c :
+         {glm::ivec3(1, 4, 0), glm::ivec3(0, 0, 0), glm::ivec3(3, 7, 4), glm::ivec3(-3, 2, -3)}) {
+        std::int32_t n[27];
+        g.neighbourhood(c, n);
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x)
+                for (int z = -1; z <= 1; ++z) {
+                    const glm::ivec3 u = c + glm::ivec3(x, y, z);
+                    const std::int32_t expect = g.blocked(u) ? ShadowGrid::kOpaque : g.raw(u);
+                    ASSERT_EQ(n[(y + 1) * 9 + (x + 1) * 3 + (z + 1)], expect)
+                        << c.x << "," << c.y << "," << c.z << " + " << x << "," << y << "," << z;
+                }
     }
 }
