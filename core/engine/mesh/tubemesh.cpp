@@ -6,8 +6,8 @@
 #include <numbers>
 #include <string>
 
-#include "engine/util/hugepages.h"
 #include "engine/util/error.h"
+#include "engine/util/hugepages.h"
 
 namespace sylva::mesh {
 
