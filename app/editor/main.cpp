@@ -1,0 +1,138 @@
+// sylva: the editor. `sylva [species.json]` opens the main window on a species (default: the
+// ternary tree preset); `sylva --screenshot out.png [--size WxH] [species.json]` renders the
+// viewport to a PNG and exits (needs an X server; use xvfb-run on a headless machine).
+
+#include <cstdio>
+#include <memory>
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QRegularExpression>
+#include <QTimer>
+#include <QTranslator>
+
+#include "ui/mainwindow.h"
+#include "ui/viewport.h"
+
+namespace {
+
+void installTranslators(QApplication& app) {
+    // Both translators are parented to the application, which outlives every window.
+    auto* qt = new QTranslator(&app);
+    if (qt->load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
+                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QApplication::installTranslator(qt);
+    auto* sylva = new QTranslator(&app);
+    if (sylva->load(QLocale(), QStringLiteral("sylva"), QStringLiteral("_"),
+                    QStringLiteral(":/i18n")))
+        QApplication::installTranslator(sylva);
+}
+
+bool parseSize(const QString& text, QSize& size) {
+    static const QRegularExpression pattern(QStringLiteral("^(\\d{2,5})[xX](\\d{2,5})$"));
+    const QRegularExpressionMatch match = pattern.match(text);
+    if (!match.hasMatch()) return false;
+    size = QSize(match.captured(1).toInt(), match.captured(2).toInt());
+    return size.width() >= 16 && size.height() >= 16 && size.width() <= 8192 &&
+           size.height() <= 8192;
+}
+
+void fail(const QString& message) {
+    std::fprintf(stderr, "sylva: %s\n", message.toLocal8Bit().constData());
+}
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    sylva::ui::Viewport::installDefaultSurfaceFormat();
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("Sylva"));
+    QApplication::setOrganizationName(QStringLiteral("Sylva"));
+    QApplication::setApplicationVersion(QStringLiteral(SYLVA_VERSION));
+    installTranslators(app);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QApplication::translate("main", "Sylva, the procedural tree editor."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(
+        QStringLiteral("species"),
+        QApplication::translate("main", "Species file to open (default: the ternary tree)."),
+        QStringLiteral("[species.json]"));
+    const QCommandLineOption screenshotOption(
+        QStringLiteral("screenshot"),
+        QApplication::translate("main", "Render the viewport to <file> (PNG) and exit."),
+        QStringLiteral("file"));
+    const QCommandLineOption sizeOption(
+        QStringLiteral("size"),
+        QApplication::translate("main", "Viewport size in pixels, e.g. 1024x768."),
+        QStringLiteral("WxH"));
+    parser.addOption(screenshotOption);
+    parser.addOption(sizeOption);
+    parser.process(app);
+
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1) {
+        fail(QApplication::translate("main", "expected at most one species file"));
+        return 2;
+    }
+    const bool screenshotMode = parser.isSet(screenshotOption);
+    QSize size = screenshotMode ? QSize(960, 720) : QSize();
+    if (parser.isSet(sizeOption) && !parseSize(parser.value(sizeOption), size)) {
+        fail(QApplication::translate("main", "--size expects WxH between 16 and 8192, got '%1'")
+                 .arg(parser.value(sizeOption)));
+        return 2;
+    }
+
+    sylva::ui::MainWindow window;
+    if (size.isValid()) window.viewport()->setFixedSize(size);
+    window.show();
+    if (size.isValid() && !screenshotMode) {
+        // Only the first layout uses the requested size; afterwards the user may resize.
+        QTimer::singleShot(0, &window, [&window] {
+            window.viewport()->setMinimumSize(160, 120);
+            window.viewport()->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+        });
+    }
+
+    if (positional.isEmpty())
+        window.openDefaultPreset();
+    else
+        window.openSpecies(QFileInfo(positional.first()).absoluteFilePath());
+
+    if (screenshotMode) {
+        const QString output = QFileInfo(parser.value(screenshotOption)).absoluteFilePath();
+        QObject::connect(&window, &sylva::ui::MainWindow::generationFinished, &app,
+                         [&window, output](bool ok) {
+                             if (!ok) {
+                                 fail(window.lastError());
+                                 QApplication::exit(1);
+                                 return;
+                             }
+                             // Give the window a few event loop turns to be exposed.
+                             auto* timer = new QTimer(&window);
+                             auto clock = std::make_shared<QElapsedTimer>();
+                             clock->start();
+                             QObject::connect(timer, &QTimer::timeout, &window, [=, &window] {
+                                 if (!window.viewport()->grabFramebuffer().isNull() ||
+                                     clock->elapsed() > 20000) {
+                                     timer->stop();
+                                     const bool saved = window.saveScreenshot(output);
+                                     if (!saved)
+                                         fail(window.lastError());
+                                     else
+                                         std::printf("%s\n", output.toLocal8Bit().constData());
+                                     QApplication::exit(saved ? 0 : 1);
+                                 }
+                             });
+                             timer->start(50);
+                         });
+    }
+    return QApplication::exec();
+}

@@ -1,0 +1,300 @@
+// Smoke test of the editor window under a real X server (xvfb-run): the default preset is
+// generated through the real pipeline, drawn with OpenGL, grabbed to PNG and inspected.
+
+#include <algorithm>
+#include <cmath>
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QImage>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMouseEvent>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTest>
+#include <QTranslator>
+#include <QWheelEvent>
+
+#include "engine/mesh/mesh.h"
+#include "ui/mainwindow.h"
+#include "ui/orbitcamera.h"
+#include "ui/presetlibrary.h"
+#include "ui/statspanel.h"
+#include "ui/viewport.h"
+
+using namespace sylva::ui;
+
+namespace {
+
+constexpr int kGenerationTimeoutMs = 120000;
+const QSize kViewportSize(640, 480);
+
+QString outputPath(const QString& name) {
+    return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
+}
+
+/// Bark is a warm brown (red > green > blue, green about half way between); leaves are green
+/// dominant. Neither the blue-grey background, the neutral grid nor its red and blue axis
+/// lines are either.
+bool isBark(QRgb c) {
+    const int r = qRed(c), g = qGreen(c), b = qBlue(c);
+    return r > g && g > b && r - b >= 25 && 4 * (g - b) >= r - b;
+}
+bool isLeaf(QRgb c) {
+    const int r = qRed(c), g = qGreen(c), b = qBlue(c);
+    return g > r + 10 && g > b + 10;
+}
+bool isTree(QRgb c) {
+    return isBark(c) || isLeaf(c);
+}
+
+int channelDifference(QRgb a, QRgb b) {
+    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                     std::abs(qBlue(a) - qBlue(b))});
+}
+
+struct TreePixels {
+    qint64 tree = 0;     ///< bark- or leaf-coloured pixels
+    qint64 changed = 0;  ///< pixels that differ from the empty scene
+    qint64 onBorder = 0; ///< tree pixels in the outermost two rows / columns
+    QRect box;           ///< bounds of the changed pixels
+};
+
+TreePixels analyse(const QImage& tree, const QImage& empty) {
+    TreePixels result;
+    int x0 = tree.width(), y0 = tree.height(), x1 = -1, y1 = -1;
+    for (int y = 0; y < tree.height(); ++y) {
+        for (int x = 0; x < tree.width(); ++x) {
+            const QRgb c = tree.pixel(x, y);
+            if (isTree(c)) {
+                ++result.tree;
+                if (x < 2 || y < 2 || x >= tree.width() - 2 || y >= tree.height() - 2)
+                    ++result.onBorder;
+            }
+            if (channelDifference(c, empty.pixel(x, y)) > 24) {
+                ++result.changed;
+                x0 = std::min(x0, x);
+                y0 = std::min(y0, y);
+                x1 = std::max(x1, x);
+                y1 = std::max(y1, y);
+            }
+        }
+    }
+    if (x1 >= 0) result.box = QRect(QPoint(x0, y0), QPoint(x1, y1));
+    return result;
+}
+
+void sendMouse(QWidget* widget, QEvent::Type type, QPoint pos, Qt::MouseButton button,
+               Qt::MouseButtons buttons) {
+    QMouseEvent event(type, QPointF(pos), widget->mapToGlobal(QPointF(pos)), button, buttons,
+                      Qt::NoModifier);
+    QApplication::sendEvent(widget, &event);
+}
+
+void drag(QWidget* widget, Qt::MouseButton button, QPoint from, QPoint delta) {
+    sendMouse(widget, QEvent::MouseButtonPress, from, button, button);
+    // Two moves: the camera must accumulate deltas, not jump to the last position.
+    sendMouse(widget, QEvent::MouseMove, from + delta / 2, Qt::NoButton, button);
+    sendMouse(widget, QEvent::MouseMove, from + delta, Qt::NoButton, button);
+    sendMouse(widget, QEvent::MouseButtonRelease, from + delta, button, Qt::NoButton);
+}
+
+bool near(float a, float b, float tolerance = 1e-4f) {
+    return std::abs(a - b) <= tolerance * std::max(1.0f, std::abs(b));
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() {
+        QVERIFY2(!qEnvironmentVariableIsEmpty("SYLVA_PRESETS_DIR"),
+                 "run through ctest, which points SYLVA_PRESETS_DIR at presets/");
+        QVERIFY2(QFileInfo::exists(PresetLibrary::defaultPreset()),
+                 qPrintable(QStringLiteral("no default preset in ") + PresetLibrary::directory()));
+
+        mWindow = std::make_unique<MainWindow>();
+        mWindow->viewport()->setFixedSize(kViewportSize);
+        mWindow->show();
+        QVERIFY(QTest::qWaitForWindowExposed(mWindow.get()));
+        QSignalSpy finished(mWindow.get(), &MainWindow::generationFinished);
+        QVERIFY(mWindow->openDefaultPreset());
+        QVERIFY(mWindow->isGenerating() || finished.count() == 1);
+        QVERIFY(finished.count() == 1 || finished.wait(kGenerationTimeoutMs));
+        QCOMPARE(finished.count(), 1);
+        QVERIFY2(finished.first().first().toBool(), qPrintable(mWindow->lastError()));
+        QVERIFY2(mWindow->viewport()->glError().isEmpty(),
+                 qPrintable(mWindow->viewport()->glError()));
+        qInfo("GL: %s", qPrintable(mWindow->viewport()->glInfo()));
+    }
+
+    void cleanupTestCase() { mWindow.reset(); }
+
+    /// The tree is drawn: compared with the same view without the mesh, many pixels change,
+    /// they are bark/leaf coloured, centred, tall (framed) and not cut by the border.
+    void defaultPresetIsDrawn() {
+        Viewport* viewport = mWindow->viewport();
+        viewport->frameScene();
+        const QImage tree = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(tree.size(), kViewportSize * viewport->devicePixelRatio());
+        QVERIFY(tree.save(outputPath(QStringLiteral("ui_smoke_tree.png"))));
+
+        const auto mesh = viewport->mesh();
+        QVERIFY(mesh && !mesh->empty());
+        viewport->setMesh(nullptr, false);
+        const QImage empty = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        viewport->setMesh(mesh, false);
+        QVERIFY(empty.save(outputPath(QStringLiteral("ui_smoke_empty.png"))));
+
+        // The empty scene is the gradient, not one clear colour: the renderer works at all.
+        QVERIFY(channelDifference(empty.pixel(5, 5), empty.pixel(5, empty.height() - 5)) > 40);
+        qint64 treeInEmpty = 0;
+        for (int y = 0; y < empty.height(); ++y)
+            for (int x = 0; x < empty.width(); ++x)
+                treeInEmpty += isTree(empty.pixel(x, y));
+        QCOMPARE(treeInEmpty, qint64(0)); // the classifier does not fire on background or grid
+
+        const TreePixels px = analyse(tree, empty);
+        const qint64 total = qint64(tree.width()) * tree.height();
+        qInfo("tree pixels %lld, changed %lld of %lld, box %d,%d %dx%d", px.tree, px.changed, total,
+              px.box.x(), px.box.y(), px.box.width(), px.box.height());
+        QVERIFY2(px.tree > total / 100, "fewer than 1% of the pixels are bark or leaf coloured");
+        QVERIFY(px.changed >= px.tree / 2);
+        QCOMPARE(px.onBorder, qint64(0)); // framed, not clipped
+        const QPointF centre = QRectF(px.box).center();
+        QVERIFY2(std::abs(centre.x() - tree.width() / 2.0) < 0.2 * tree.width(),
+                 "the tree is not centred horizontally");
+        QVERIFY2(std::abs(centre.y() - tree.height() / 2.0) < 0.2 * tree.height(),
+                 "the tree is not centred vertically");
+        QVERIFY2(px.box.height() > tree.height() / 2, "the tree is not framed (too small)");
+    }
+
+    void statsShowTheGeneratedTree() {
+        const GenerationResult& result = mWindow->lastResult();
+        QVERIFY(result.ok());
+        QCOMPARE(QFileInfo(result.path), QFileInfo(PresetLibrary::defaultPreset()));
+        StatsPanel* stats = mWindow->statsPanel();
+        QCOMPARE(stats->value(QStringLiteral("statVertices")),
+                 QString::number(result.mesh->vertexCount()));
+        QCOMPARE(stats->value(QStringLiteral("statTriangles")),
+                 QString::number(result.mesh->indices.size() / 3));
+        QVERIFY(result.mesh->vertexCount() > 100);
+        QVERIFY(stats->value(QStringLiteral("statSegments")).toLongLong() > 0);
+        QVERIFY(stats->value(QStringLiteral("statSpecies")) == result.speciesName);
+        QVERIFY(!result.speciesName.isEmpty());
+        QVERIFY(result.height() > 0.0);
+        QVERIFY(mWindow->windowTitle().contains(result.speciesName));
+    }
+
+    void leftDragOrbits() {
+        Viewport* viewport = mWindow->viewport();
+        viewport->frameScene();
+        const QImage before = viewport->grabFramebuffer();
+        const OrbitCamera start = viewport->camera();
+        QSignalSpy changed(viewport, &Viewport::cameraChanged);
+        drag(viewport, Qt::LeftButton, QPoint(300, 200), QPoint(80, -30));
+        const OrbitCamera& cam = viewport->camera();
+        QVERIFY(near(cam.yaw(), start.yaw() - 80.0f * OrbitCamera::kRadiansPerPixel));
+        QVERIFY(near(cam.pitch(), start.pitch() - 30.0f * OrbitCamera::kRadiansPerPixel));
+        QVERIFY(glm::length(cam.target() - start.target()) < 1e-6f);
+        QCOMPARE(changed.count(), 2);
+        const QImage after = viewport->grabFramebuffer();
+        QVERIFY(after != before);
+        QVERIFY(after.save(outputPath(QStringLiteral("ui_smoke_orbited.png"))));
+    }
+
+    void rightDragPansAndWheelZooms() {
+        Viewport* viewport = mWindow->viewport();
+        viewport->frameScene();
+        const OrbitCamera start = viewport->camera();
+        drag(viewport, Qt::RightButton, QPoint(300, 200), QPoint(40, 0));
+        const OrbitCamera& cam = viewport->camera();
+        const float worldPerPixel =
+            2.0f * start.distance() * std::tan(0.5f * start.fovY()) / float(viewport->height());
+        // The target slides left along the camera's right vector: the scene follows the mouse.
+        const glm::vec3 moved = cam.target() - start.target();
+        QVERIFY(glm::length(moved + start.right() * 40.0f * worldPerPixel) <
+                1e-4f * start.distance());
+        QCOMPARE(cam.yaw(), start.yaw());
+
+        QWheelEvent wheel(QPointF(320, 240), viewport->mapToGlobal(QPointF(320, 240)), QPoint(),
+                          QPoint(0, 240), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(viewport, &wheel);
+        QVERIFY(near(cam.distance(),
+                     start.distance() * OrbitCamera::kZoomPerStep * OrbitCamera::kZoomPerStep));
+
+        // F frames the tree again: back to the framed target and distance.
+        viewport->setFocus();
+        QTest::keyClick(viewport, Qt::Key_F);
+        QVERIFY(near(cam.distance(), start.distance()));
+        QVERIFY(glm::length(cam.target() - start.target()) < 1e-4f * start.distance());
+    }
+
+    void brokenFileKeepsTheTreeAndReportsTheError() {
+        const auto mesh = mWindow->viewport()->mesh();
+        const QString missing = outputPath(QStringLiteral("no-such-species.json"));
+        QSignalSpy finished(mWindow.get(), &MainWindow::generationFinished);
+        mWindow->openSpecies(missing);
+        QVERIFY(finished.wait(kGenerationTimeoutMs));
+        QCOMPARE(finished.first().first().toBool(), false);
+        QVERIFY(mWindow->lastError().contains(QStringLiteral("no-such-species.json")));
+        QVERIFY(mWindow->statusBar()->currentMessage().contains(
+            QStringLiteral("no-such-species.json")));
+        QCOMPARE(mWindow->viewport()->mesh(), mesh); // the last good tree stays
+    }
+
+    void presetsMenuListsThePresetsFolder() {
+        const QDir dir(qEnvironmentVariable("SYLVA_PRESETS_DIR"));
+        const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files);
+        QVERIFY(!files.isEmpty());
+        Q_EMIT mWindow->presetsMenu()->aboutToShow();
+        const QList<QAction*> actions = mWindow->presetsMenu()->actions();
+        QCOMPARE(actions.size(), files.size());
+        QStringList paths;
+        for (QAction* action : actions)
+            paths << QFileInfo(action->data().toString()).fileName();
+        paths.sort();
+        QStringList expected = files;
+        expected.sort();
+        QCOMPARE(paths, expected);
+    }
+
+    void screenshotWritesThePng() {
+        const QString path = outputPath(QStringLiteral("ui_smoke_screenshot.png"));
+        QFile::remove(path);
+        QVERIFY(mWindow->saveScreenshot(path));
+        const QImage image(path);
+        QCOMPARE(image.size(), kViewportSize * mWindow->viewport()->devicePixelRatio());
+        QVERIFY(!mWindow->saveScreenshot(QStringLiteral("/nonexistent-dir/shot.png")));
+    }
+
+    void germanTranslationLoads() {
+        QTranslator translator;
+        QVERIFY(translator.load(QStringLiteral(":/i18n/sylva_de.qm")));
+        QVERIFY(QApplication::installTranslator(&translator));
+        MainWindow german;
+        QStringList titles;
+        for (QAction* action : german.menuBar()->actions())
+            titles << action->text();
+        QApplication::removeTranslator(&translator);
+        QCOMPARE(titles.value(0), QStringLiteral("&Datei"));
+        QCOMPARE(titles.value(1), QStringLiteral("&Vorlagen"));
+        QCOMPARE(titles.value(2), QStringLiteral("&Ansicht"));
+    }
+
+private:
+    std::unique_ptr<MainWindow> mWindow;
+};
+
+int main(int argc, char* argv[]) {
+    Viewport::installDefaultSurfaceFormat();
+    QApplication app(argc, argv);
+    TestMainWindow test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "test_mainwindow.moc"

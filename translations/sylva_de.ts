@@ -1,0 +1,215 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de" sourcelanguage="en">
+<context>
+    <name>QObject</name>
+    <message>
+        <source>%1: the species' output node produced no mesh</source>
+        <translation>%1: Der Ausgabeknoten der Art hat kein Netz erzeugt</translation>
+    </message>
+    <message>
+        <source>%1: out of memory while generating the tree</source>
+        <translation>%1: Nicht genug Speicher beim Erzeugen des Baums</translation>
+    </message>
+    <message>
+        <source>%1: unexpected error: %2</source>
+        <translation>%1: Unerwarteter Fehler: %2</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Sylva, the procedural tree editor.</source>
+        <translation>Sylva, der prozedurale Baumeditor.</translation>
+    </message>
+    <message>
+        <source>Species file to open (default: the ternary tree).</source>
+        <translation>Zu öffnende Artdatei (Standard: der ternäre Baum).</translation>
+    </message>
+    <message>
+        <source>Render the viewport to &lt;file&gt; (PNG) and exit.</source>
+        <translation>Die Ansicht als &lt;file&gt; (PNG) speichern und beenden.</translation>
+    </message>
+    <message>
+        <source>Viewport size in pixels, e.g. 1024x768.</source>
+        <translation>Größe der Ansicht in Pixeln, z. B. 1024x768.</translation>
+    </message>
+    <message>
+        <source>expected at most one species file</source>
+        <translation>höchstens eine Artdatei erwartet</translation>
+    </message>
+    <message>
+        <source>--size expects WxH between 16 and 8192, got '%1'</source>
+        <translation>--size erwartet BxH zwischen 16 und 8192, erhalten: '%1'</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::MainWindow</name>
+    <message>
+        <source>Sylva</source>
+        <translation>Sylva</translation>
+    </message>
+    <message>
+        <source>Tree</source>
+        <translation>Baum</translation>
+    </message>
+    <message>
+        <source>Generating: %1</source>
+        <translation>Erzeuge: %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Open species…</source>
+        <translation>Art &amp;öffnen…</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>&amp;Neu laden</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>Save &amp;screenshot…</source>
+        <translation>&amp;Bildschirmfoto speichern…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+S</source>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Vorlagen</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Frame tree</source>
+        <translation>Baum ein&amp;passen</translation>
+    </message>
+    <message>
+        <source>Show &amp;grid</source>
+        <translation>&amp;Gitter anzeigen</translation>
+    </message>
+    <message>
+        <source>No presets folder found (set SYLVA_PRESETS_DIR)</source>
+        <translation>Kein Vorlagenordner gefunden (SYLVA_PRESETS_DIR setzen)</translation>
+    </message>
+    <message>
+        <source>No presets in %1</source>
+        <translation>Keine Vorlagen in %1</translation>
+    </message>
+    <message>
+        <source>Generating %1…</source>
+        <translation>Erzeuge %1…</translation>
+    </message>
+    <message>
+        <source>No presets folder found: set SYLVA_PRESETS_DIR or open a species file with File ▸ Open species…</source>
+        <translation>Kein Vorlagenordner gefunden: SYLVA_PRESETS_DIR setzen oder eine Artdatei mit Datei ▸ Art öffnen… laden</translation>
+    </message>
+    <message>
+        <source>%1 — Sylva</source>
+        <translation>%1 — Sylva</translation>
+    </message>
+    <message>
+        <source>Generated %1 in %2 ms</source>
+        <translation>%1 in %2 ms erzeugt</translation>
+    </message>
+    <message>
+        <source>Could not read the viewport's image (no OpenGL context).</source>
+        <translation>Das Bild der Ansicht konnte nicht gelesen werden (kein OpenGL-Kontext).</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Open species</source>
+        <translation>Art öffnen</translation>
+    </message>
+    <message>
+        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
+        <translation>Arten und Grammatiken (*.json *.lsys *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Bildschirmfoto speichern</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.bmp)</source>
+        <translation>Bilder (*.png *.jpg *.bmp)</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::StatsPanel</name>
+    <message>
+        <source>Species:</source>
+        <translation>Art:</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <source>Vertices:</source>
+        <translation>Eckpunkte:</translation>
+    </message>
+    <message>
+        <source>Triangles:</source>
+        <translation>Dreiecke:</translation>
+    </message>
+    <message>
+        <source>Segments:</source>
+        <translation>Segmente:</translation>
+    </message>
+    <message>
+        <source>Leaves:</source>
+        <translation>Blätter:</translation>
+    </message>
+    <message>
+        <source>Height:</source>
+        <translation>Höhe:</translation>
+    </message>
+    <message>
+        <source>Generation time:</source>
+        <translation>Erzeugungszeit:</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Generating %1…</source>
+        <translation>Erzeuge %1…</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::Viewport</name>
+    <message>
+        <source>OpenGL 3.3 core profile is not available (got %1.%2).</source>
+        <translation>OpenGL 3.3 Core Profile ist nicht verfügbar (erhalten: %1.%2).</translation>
+    </message>
+    <message>
+        <source>The mesh has an index out of range; it is not drawn.</source>
+        <translation>Das Netz hat einen ungültigen Index und wird nicht gezeichnet.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,251 @@
+#include "ui/mainwindow.h"
+
+#include <string>
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImage>
+#include <QKeySequence>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QPromise>
+#include <QStatusBar>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "ui/presetlibrary.h"
+#include "ui/statspanel.h"
+#include "ui/viewport.h"
+
+namespace sylva::ui {
+
+namespace {
+
+/// Bridges the engine's Progress to a QPromise: the UI sees stage names, and cancelling the
+/// future stops the engine at its next checkCancelled().
+class PromiseProgress : public Progress {
+public:
+    explicit PromiseProgress(QPromise<GenerationResult>& promise) : mPromise(promise) {}
+
+    void report(double fraction, std::string_view stage) override {
+        (void)fraction;
+        // Stages report often; only a new stage name is worth a cross-thread signal.
+        if (stage == mStage) return;
+        mStage.assign(stage);
+        mPromise.setProgressValueAndText(++mTicks,
+                                         QString::fromUtf8(stage.data(), qsizetype(stage.size())));
+    }
+    bool isCancelled() const override { return mPromise.isCanceled(); }
+
+private:
+    QPromise<GenerationResult>& mPromise;
+    std::string mStage;
+    int mTicks = 0;
+};
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setWindowTitle(tr("Sylva"));
+    setObjectName(QStringLiteral("SylvaMainWindow"));
+
+    mViewport = new Viewport(this);
+    mViewport->setObjectName(QStringLiteral("viewport"));
+    setCentralWidget(mViewport);
+
+    mStats = new StatsPanel(this);
+    mStatsDock = new QDockWidget(tr("Tree"), this);
+    mStatsDock->setObjectName(QStringLiteral("statsDock"));
+    mStatsDock->setWidget(mStats);
+    mStatsDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
+    addDockWidget(Qt::RightDockWidgetArea, mStatsDock);
+
+    mBusy = new QProgressBar(this);
+    mBusy->setRange(0, 0); // indeterminate: stages do not report a common scale
+    mBusy->setMaximumWidth(120);
+    mBusy->setVisible(false);
+    statusBar()->addPermanentWidget(mBusy);
+    mGlLabel = new QLabel(this);
+    statusBar()->addPermanentWidget(mGlLabel);
+
+    createMenus();
+
+    connect(&mWatcher, &QFutureWatcher<GenerationResult>::finished, this,
+            &MainWindow::onGenerationFinished);
+    connect(&mWatcher, &QFutureWatcher<GenerationResult>::progressTextChanged, this,
+            [this](const QString& stage) {
+                statusBar()->showMessage(tr("Generating: %1").arg(stage));
+            });
+}
+
+MainWindow::~MainWindow() {
+    // The worker only touches its own copies, but stopping it keeps shutdown quick.
+    mWatcher.disconnect(this);
+    mWatcher.cancel();
+    mWatcher.waitForFinished();
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->setObjectName(QStringLiteral("fileMenu"));
+    QAction* open = file->addAction(tr("&Open species…"), this, &MainWindow::showOpenDialog);
+    open->setShortcut(QKeySequence::Open);
+    mReloadAction = file->addAction(tr("&Reload"), this, &MainWindow::reload);
+    mReloadAction->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(tr("Ctrl+R"))});
+    mReloadAction->setEnabled(false);
+    QAction* shot =
+        file->addAction(tr("Save &screenshot…"), this, &MainWindow::showScreenshotDialog);
+    shot->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    mPresetsMenu = menuBar()->addMenu(tr("&Presets"));
+    mPresetsMenu->setObjectName(QStringLiteral("presetsMenu"));
+    mPresetGroup = new QActionGroup(this);
+    connect(mPresetsMenu, &QMenu::aboutToShow, this, &MainWindow::populatePresetsMenu);
+    populatePresetsMenu();
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->setObjectName(QStringLiteral("viewMenu"));
+    QAction* frame = view->addAction(tr("&Frame tree"), mViewport, &Viewport::frameScene);
+    frame->setShortcut(QKeySequence(Qt::Key_F));
+    frame->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    QAction* grid = view->addAction(tr("Show &grid"));
+    grid->setCheckable(true);
+    grid->setChecked(true);
+    grid->setShortcut(QKeySequence(Qt::Key_G));
+    connect(grid, &QAction::toggled, mViewport, &Viewport::setGridVisible);
+    // Shortcuts of the View menu act while the viewport has focus, like the F key itself.
+    mViewport->addAction(frame);
+    mViewport->addAction(grid);
+    view->addSeparator();
+    view->addAction(mStatsDock->toggleViewAction());
+}
+
+void MainWindow::populatePresetsMenu() {
+    mPresetsMenu->clear();
+    for (QAction* action : mPresetGroup->actions())
+        mPresetGroup->removeAction(action);
+    const QString dir = PresetLibrary::directory();
+    const QList<PresetInfo> presets = PresetLibrary::list(dir);
+    if (presets.isEmpty()) {
+        QAction* none = mPresetsMenu->addAction(
+            dir.isEmpty() ? tr("No presets folder found (set SYLVA_PRESETS_DIR)")
+                          : tr("No presets in %1").arg(QDir::toNativeSeparators(dir)));
+        none->setEnabled(false);
+        return;
+    }
+    for (const PresetInfo& preset : presets) {
+        QAction* action = mPresetsMenu->addAction(preset.name);
+        action->setData(preset.path);
+        action->setToolTip(preset.path);
+        action->setCheckable(true);
+        action->setChecked(QFileInfo(preset.path) == QFileInfo(mCurrentPath));
+        mPresetGroup->addAction(action);
+        connect(action, &QAction::triggered, this,
+                [this, path = preset.path] { openSpecies(path); });
+    }
+}
+
+void MainWindow::openSpecies(const QString& path) {
+    if (mWatcher.isRunning()) mWatcher.cancel(); // superseded; its result is dropped
+    mCurrentPath = path;
+    mReloadAction->setEnabled(!path.isEmpty());
+    const QString name = QFileInfo(path).fileName();
+    mStats->showGenerating(name);
+    statusBar()->showMessage(tr("Generating %1…").arg(name));
+    mBusy->setVisible(true);
+    mWatcher.setFuture(QtConcurrent::run([path](QPromise<GenerationResult>& promise) {
+        PromiseProgress progress(promise);
+        promise.addResult(generateTree(path, progress));
+    }));
+}
+
+bool MainWindow::openDefaultPreset() {
+    const QString path = PresetLibrary::defaultPreset();
+    if (path.isEmpty()) {
+        reportError(tr("No presets folder found: set SYLVA_PRESETS_DIR or open a species file "
+                       "with File ▸ Open species…"));
+        Q_EMIT generationFinished(false);
+        return false;
+    }
+    openSpecies(path);
+    return true;
+}
+
+void MainWindow::reload() {
+    if (!mCurrentPath.isEmpty()) openSpecies(mCurrentPath);
+}
+
+void MainWindow::onGenerationFinished() {
+    const QFuture<GenerationResult> future = mWatcher.future();
+    if (future.isCanceled() || future.resultCount() == 0) return; // superseded by a newer run
+    GenerationResult result = future.result();
+    mBusy->setVisible(false);
+    if (result.cancelled) return;
+    if (!result.ok()) {
+        reportError(result.error);
+        Q_EMIT generationFinished(false);
+        return;
+    }
+    mLastError.clear();
+    mResult = std::move(result);
+    mViewport->setMesh(mResult.mesh, true);
+    mStats->showResult(mResult);
+    setWindowTitle(tr("%1 — Sylva").arg(mResult.speciesName));
+    statusBar()->showMessage(
+        tr("Generated %1 in %2 ms").arg(mResult.speciesName).arg(mResult.elapsedMs, 0, 'f', 1),
+        10000);
+    if (!mViewport->glError().isEmpty()) statusBar()->showMessage(mViewport->glError());
+    mGlLabel->setText(mViewport->glInfo());
+    Q_EMIT generationFinished(true);
+}
+
+void MainWindow::reportError(const QString& message) {
+    mBusy->setVisible(false);
+    mLastError = message;
+    mStats->showError(message);
+    // The status bar shows one line; the dock shows the whole message.
+    statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0));
+}
+
+bool MainWindow::saveScreenshot(const QString& path) {
+    const QImage image = mViewport->grabFramebuffer();
+    if (image.isNull()) {
+        reportError(tr("Could not read the viewport's image (no OpenGL context)."));
+        return false;
+    }
+    if (!image.save(path)) {
+        reportError(tr("Could not write %1.").arg(QDir::toNativeSeparators(path)));
+        return false;
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 10000);
+    return true;
+}
+
+void MainWindow::showOpenDialog() {
+    QString dir = mCurrentPath.isEmpty() ? PresetLibrary::directory()
+                                         : QFileInfo(mCurrentPath).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open species"), dir,
+        tr("Species and grammars (*.json *.lsys *.txt);;All files (*)"));
+    if (!path.isEmpty()) openSpecies(path);
+}
+
+void MainWindow::showScreenshotDialog() {
+    const QString suggested = mResult.speciesName.isEmpty()
+                                  ? QStringLiteral("sylva.png")
+                                  : QFileInfo(mResult.path).completeBaseName() + ".png";
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save screenshot"), suggested,
+                                                      tr("Images (*.png *.jpg *.bmp)"));
+    if (!path.isEmpty()) saveScreenshot(path);
+}
+
+} // namespace sylva::ui

@@ -1,0 +1,80 @@
+#pragma once
+
+#include <QFutureWatcher>
+#include <QMainWindow>
+#include <QString>
+
+#include "ui/treegenerator.h"
+
+class QAction;
+class QDockWidget;
+class QActionGroup;
+class QLabel;
+class QMenu;
+class QProgressBar;
+
+namespace sylva::ui {
+
+class StatsPanel;
+class Viewport;
+
+/// The editor's main window: the 3D viewport in the middle, a dock with the tree's statistics,
+/// File / Presets / View menus. Species are generated on a worker thread (QtConcurrent); the
+/// window stays responsive and a newer request cancels an older one.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Viewport* viewport() const { return mViewport; }
+    StatsPanel* statsPanel() const { return mStats; }
+    QMenu* presetsMenu() const { return mPresetsMenu; }
+
+    /// Starts generating the species file at \p path; generationFinished() tells when it is
+    /// done. Errors never throw: they go to the status bar and the stats dock.
+    void openSpecies(const QString& path);
+    /// Opens PresetLibrary::defaultPreset(); false (with a message) when there is none.
+    bool openDefaultPreset();
+    /// Generates the current species file again (after editing it on disk).
+    void reload();
+    /// Saves the viewport's current image; false (with a message) on failure.
+    bool saveScreenshot(const QString& path);
+
+    /// The species file shown (or being generated).
+    QString currentPath() const { return mCurrentPath; }
+    /// The last successful generation (empty result before the first).
+    const GenerationResult& lastResult() const { return mResult; }
+    /// The message of the last failed generation; cleared by a successful one.
+    QString lastError() const { return mLastError; }
+    bool isGenerating() const { return mWatcher.isRunning(); }
+
+Q_SIGNALS:
+    /// Emitted on the GUI thread when a generation ends (not when it was superseded).
+    void generationFinished(bool ok);
+
+private:
+    void createMenus();
+    void populatePresetsMenu();
+    void onGenerationFinished();
+    void showOpenDialog();
+    void showScreenshotDialog();
+    void reportError(const QString& message);
+
+    Viewport* mViewport = nullptr;
+    StatsPanel* mStats = nullptr;
+    QDockWidget* mStatsDock = nullptr;
+    QMenu* mPresetsMenu = nullptr;
+    QActionGroup* mPresetGroup = nullptr;
+    QAction* mReloadAction = nullptr;
+    QLabel* mGlLabel = nullptr;
+    QProgressBar* mBusy = nullptr;
+
+    QFutureWatcher<GenerationResult> mWatcher;
+    QString mCurrentPath;
+    QString mLastError;
+    GenerationResult mResult;
+};
+
+} // namespace sylva::ui

@@ -1,0 +1,80 @@
+#include "ui/statspanel.h"
+
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QVBoxLayout>
+
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
+#include "ui/treegenerator.h"
+
+namespace sylva::ui {
+
+StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
+    auto* outer = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    outer->addLayout(form);
+    outer->addStretch(1);
+    setLayout(outer);
+
+    auto add = [&](const QString& label, const QString& name) {
+        auto* value = new QLabel(QStringLiteral("–"), this);
+        value->setObjectName(name);
+        value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        form->addRow(label, value);
+        return value;
+    };
+    mSpecies = add(tr("Species:"), QStringLiteral("statSpecies"));
+    mSpecies->setWordWrap(true);
+    mFile = add(tr("File:"), QStringLiteral("statFile"));
+    mVertices = add(tr("Vertices:"), QStringLiteral("statVertices"));
+    mTriangles = add(tr("Triangles:"), QStringLiteral("statTriangles"));
+    mSegments = add(tr("Segments:"), QStringLiteral("statSegments"));
+    mLeaves = add(tr("Leaves:"), QStringLiteral("statLeaves"));
+    mHeight = add(tr("Height:"), QStringLiteral("statHeight"));
+    mTime = add(tr("Generation time:"), QStringLiteral("statTime"));
+
+    mStatus = new QLabel(this);
+    mStatus->setObjectName(QStringLiteral("statStatus"));
+    mStatus->setWordWrap(true);
+    mStatus->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    outer->insertWidget(1, mStatus);
+}
+
+void StatsPanel::showResult(const GenerationResult& result) {
+    const QLocale locale;
+    mSpecies->setText(result.speciesName);
+    mFile->setText(QFileInfo(result.path).fileName());
+    mFile->setToolTip(result.path);
+    mVertices->setText(QString::number(result.mesh ? result.mesh->vertexCount() : 0));
+    mTriangles->setText(QString::number(result.mesh ? result.mesh->triangleCount() : 0));
+    mSegments->setText(QString::number(qlonglong(result.segments())));
+    qlonglong leaves = result.skeleton ? qlonglong(result.skeleton->leaves.size()) : 0;
+    if (auto it = result.stats.find("leaves"); it != result.stats.end())
+        leaves = qlonglong(it->second);
+    mLeaves->setText(QString::number(leaves));
+    mHeight->setText(tr("%1 m").arg(locale.toString(result.height(), 'f', 2)));
+    mTime->setText(tr("%1 ms").arg(locale.toString(result.elapsedMs, 'f', 1)));
+    mStatus->clear();
+    mStatus->setStyleSheet({});
+}
+
+void StatsPanel::showGenerating(const QString& name) {
+    mStatus->setStyleSheet({});
+    mStatus->setText(tr("Generating %1…").arg(name));
+}
+
+void StatsPanel::showError(const QString& message) {
+    mStatus->setStyleSheet(QStringLiteral("color: #b00020;"));
+    mStatus->setText(message);
+}
+
+QString StatsPanel::value(const QString& objectName) const {
+    const auto* label = findChild<QLabel*>(objectName);
+    return label ? label->text() : QString();
+}
+
+} // namespace sylva::ui

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+
+namespace sylva::ui {
+
+struct GenerationResult;
+
+/// The "Tree" dock: species name and statistics of the generated tree. Each value label has an
+/// object name ("statVertices", ...) so that tests and style sheets can find it.
+class StatsPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit StatsPanel(QWidget* parent = nullptr);
+
+    /// Shows the numbers of a successful run.
+    void showResult(const GenerationResult& result);
+    /// Marks the panel as busy while \p name is being generated.
+    void showGenerating(const QString& name);
+    /// Shows an error under the last good statistics.
+    void showError(const QString& message);
+
+    /// The text of a value label by object name (for tests); empty if there is none.
+    QString value(const QString& objectName) const;
+
+private:
+    QLabel* mSpecies = nullptr;
+    QLabel* mFile = nullptr;
+    QLabel* mVertices = nullptr;
+    QLabel* mTriangles = nullptr;
+    QLabel* mSegments = nullptr;
+    QLabel* mLeaves = nullptr;
+    QLabel* mHeight = nullptr;
+    QLabel* mTime = nullptr;
+    QLabel* mStatus = nullptr;
+};
+
+} // namespace sylva::ui

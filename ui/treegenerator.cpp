@@ -1,0 +1,87 @@
+#include "ui/treegenerator.h"
+
+#include <algorithm>
+#include <exception>
+#include <limits>
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+#include <QObject>
+#include <QStringList>
+
+#include "document/speciesfile.h"
+#include "engine/graph/graph.h"
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
+#include "engine/util/error.h"
+
+namespace sylva::ui {
+
+namespace {
+
+QString describe(const InvalidInput& e) {
+    if (e.diagnostics().empty()) return QString::fromStdString(e.what());
+    QStringList lines;
+    for (const Diagnostic& d : e.diagnostics())
+        lines << QString::fromStdString(d.format());
+    return lines.join(QLatin1Char('\n'));
+}
+
+} // namespace
+
+double GenerationResult::height() const {
+    if (auto it = stats.find("height"); it != stats.end()) return it->second;
+    if (!mesh || mesh->empty()) return 0.0;
+    float lo = std::numeric_limits<float>::max();
+    float hi = std::numeric_limits<float>::lowest();
+    for (const auto& p : mesh->positions) {
+        lo = std::min(lo, p.y);
+        hi = std::max(hi, p.y);
+    }
+    return double(hi - lo);
+}
+
+double GenerationResult::segments() const {
+    if (auto it = stats.find("segments"); it != stats.end()) return it->second;
+    return skeleton ? double(skeleton->segmentCount()) : 0.0;
+}
+
+GenerationResult generateTree(const QString& path, Progress& progress) {
+    GenerationResult result;
+    result.path = path;
+    result.speciesName = QFileInfo(path).completeBaseName();
+    QElapsedTimer timer;
+    timer.start();
+    try {
+        graph::registerBuiltinNodeTypes();
+        graph::SpeciesGraph species = doc::loadSpecies(path);
+        if (!species.name.empty()) result.speciesName = QString::fromStdString(species.name);
+        graph::Evaluator evaluator(std::move(species));
+        const graph::NodeOutput& output = evaluator.evaluate(progress);
+        result.mesh = output.mesh;
+        result.skeleton = output.skeleton;
+        result.stats = output.stats;
+        result.timingsMs = output.timingsMs;
+        if (!result.mesh || result.mesh->empty())
+            result.error = QObject::tr("%1: the species' output node produced no mesh")
+                               .arg(QFileInfo(path).fileName());
+    } catch (const Cancelled&) {
+        result.cancelled = true;
+    } catch (const InvalidInput& e) {
+        result.error = describe(e);
+    } catch (const IoError& e) {
+        result.error = QString::fromStdString(e.what());
+    } catch (const LimitExceeded& e) {
+        result.error = QString::fromStdString(e.what());
+    } catch (const std::bad_alloc&) {
+        result.error = QObject::tr("%1: out of memory while generating the tree")
+                           .arg(QFileInfo(path).fileName());
+    } catch (const std::exception& e) {
+        result.error = QObject::tr("%1: unexpected error: %2")
+                           .arg(QFileInfo(path).fileName(), QString::fromUtf8(e.what()));
+    }
+    result.elapsedMs = double(timer.nsecsElapsed()) * 1e-6;
+    return result;
+}
+
+} // namespace sylva::ui

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include <QString>
+
+#include "engine/util/progress.h"
+
+namespace sylva::mesh {
+struct Mesh;
+}
+namespace sylva::skel {
+struct Skeleton;
+}
+
+namespace sylva::ui {
+
+/// What one generation run produced. Plain data: it is handed from the worker thread to the UI
+/// through a QFuture, so no exception ever crosses threads or signals.
+struct GenerationResult {
+    QString path;        ///< the species file that was loaded
+    QString speciesName; ///< its "name", or the file's base name
+    std::shared_ptr<const mesh::Mesh> mesh;
+    std::shared_ptr<const skel::Skeleton> skeleton;
+    std::map<std::string, double> stats;     ///< from the graph's output node
+    std::map<std::string, double> timingsMs; ///< per stage, from the graph's output node
+    double elapsedMs = 0.0;                  ///< load + evaluate, wall clock
+    QString error;                           ///< user-facing message; empty on success
+    bool cancelled = false;
+
+    bool ok() const { return error.isEmpty() && !cancelled && mesh != nullptr; }
+    /// Tree height in metres: the output's "height" stat, else the mesh's vertical extent.
+    double height() const;
+    /// Number of branch segments: the "segments" stat, else the skeleton's segment count.
+    double segments() const;
+};
+
+/// Loads the species file at \p path and evaluates its graph with the file's own seed. Runs on
+/// any thread and never throws: this is the action boundary where engine exceptions
+/// (InvalidInput, IoError, LimitExceeded, Cancelled) become a message in the result.
+GenerationResult generateTree(const QString& path, Progress& progress = noProgress());
+
+} // namespace sylva::ui

@@ -1,0 +1,493 @@
+#include "ui/viewport.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QOpenGLShaderProgram>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "engine/mesh/mesh.h"
+
+namespace sylva::ui {
+
+namespace {
+
+const char* const kMeshVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 uViewProj;
+out vec3 vNormal;
+out vec3 vWorld;
+void main() {
+    vNormal = aNormal;
+    vWorld = aPosition;
+    gl_Position = uViewProj * vec4(aPosition, 1.0);
+}
+)";
+
+// Lambert key light plus a hemisphere ambient (sky above, warm ground below). Normals are
+// flipped towards the viewer so that leaf cards and inconsistent windings light the same from
+// both sides.
+const char* const kMeshFragmentShader = R"(#version 330 core
+in vec3 vNormal;
+in vec3 vWorld;
+uniform vec3 uAlbedo;
+uniform vec3 uLightDir;
+uniform vec3 uEye;
+out vec4 fragColor;
+void main() {
+    vec3 n = vNormal;
+    float len = length(n);
+    n = len > 1e-6 ? n / len : vec3(0.0, 1.0, 0.0);
+    vec3 toEye = normalize(uEye - vWorld);
+    if (dot(n, toEye) < 0.0) n = -n;
+    float diffuse = max(dot(n, uLightDir), 0.0);
+    vec3 sky = vec3(0.62, 0.70, 0.85);
+    vec3 ground = vec3(0.30, 0.25, 0.20);
+    vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
+    vec3 color = uAlbedo * (0.55 * ambient + 1.35 * vec3(1.0, 0.96, 0.90) * diffuse);
+    fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+}
+)";
+
+const char* const kLineVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec4 aColor;
+uniform mat4 uViewProj;
+out vec4 vColor;
+out vec3 vWorld;
+void main() {
+    vColor = aColor;
+    vWorld = aPosition;
+    gl_Position = uViewProj * vec4(aPosition, 1.0);
+}
+)";
+
+// The grid fades out towards its rim so that it has no hard edge.
+const char* const kLineFragmentShader = R"(#version 330 core
+in vec4 vColor;
+in vec3 vWorld;
+uniform vec3 uCenter;
+uniform float uExtent;
+out vec4 fragColor;
+void main() {
+    float r = length(vWorld.xz - uCenter.xz) / uExtent;
+    fragColor = vec4(vColor.rgb, vColor.a * (1.0 - smoothstep(0.55, 1.0, r)));
+}
+)";
+
+// One triangle that covers the screen; no vertex buffer needed.
+const char* const kBackgroundVertexShader = R"(#version 330 core
+out float vT;
+void main() {
+    vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+    vT = 0.5 * p.y + 0.5;
+    gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+
+const char* const kBackgroundFragmentShader = R"(#version 330 core
+in float vT;
+uniform vec3 uTop;
+uniform vec3 uBottom;
+out vec4 fragColor;
+void main() {
+    fragColor = vec4(mix(uBottom, uTop, clamp(vT, 0.0, 1.0)), 1.0);
+}
+)";
+
+// sRGB colours of the background gradient.
+constexpr glm::vec3 kBackgroundTop{0.42f, 0.53f, 0.68f};
+constexpr glm::vec3 kBackgroundBottom{0.84f, 0.86f, 0.88f};
+
+std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertex, const char* fragment,
+                                                   QString& error) {
+    auto program = std::make_unique<QOpenGLShaderProgram>();
+    if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
+        !program->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) || !program->link()) {
+        error = QStringLiteral("shader error: ") + program->log();
+        return nullptr;
+    }
+    return program;
+}
+
+void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::vec3& v) {
+    program.setUniformValue(name, v.x, v.y, v.z);
+}
+
+void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4& m) {
+    // glm is column-major like OpenGL, so the raw array goes through unchanged.
+    program.setUniformValue(program.uniformLocation(name),
+                            QMatrix4x4(glm::value_ptr(m)).transposed());
+}
+
+std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh) {
+    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+        // Area-weighted: the unnormalised cross product.
+        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a],
+                                       mesh.positions[c] - mesh.positions[a]);
+        normals[a] += n;
+        normals[b] += n;
+        normals[c] += n;
+    }
+    return normals;
+}
+
+} // namespace
+
+glm::vec3 Viewport::materialColor(const std::string& material) {
+    if (material == "leaf" || material == "leaves" || material == "foliage")
+        return {0.11f, 0.30f, 0.06f};
+    if (material == "bark" || material.empty()) return {0.17f, 0.10f, 0.055f};
+    return {0.35f, 0.35f, 0.35f};
+}
+
+void Viewport::installDefaultSurfaceFormat() {
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setSamples(4);
+    QSurfaceFormat::setDefaultFormat(format);
+}
+
+Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    if (format.samples() < 0) format.setSamples(4);
+    setFormat(format);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(false);
+    setMinimumSize(160, 120);
+}
+
+Viewport::~Viewport() {
+    if (mGlReady && context()) {
+        makeCurrent();
+        releaseGl();
+        doneCurrent();
+    }
+}
+
+void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame) {
+    mMesh = std::move(mesh);
+    mMeshDirty = true;
+    if (mMesh && !mMesh->empty()) {
+        glm::vec3 lo(std::numeric_limits<float>::max());
+        glm::vec3 hi(std::numeric_limits<float>::lowest());
+        for (const glm::vec3& p : mMesh->positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        mBoundsLo = lo;
+        mBoundsHi = hi;
+    } else {
+        mBoundsLo = {-0.5f, 0.0f, -0.5f};
+        mBoundsHi = {0.5f, 1.0f, 0.5f};
+    }
+    if (frame) {
+        applyFrame();
+        Q_EMIT cameraChanged();
+    }
+    update();
+}
+
+void Viewport::frameScene() {
+    applyFrame();
+    update();
+    Q_EMIT cameraChanged();
+}
+
+void Viewport::applyFrame() {
+    if (mMesh && !mMesh->empty())
+        mCamera.framePoints(mMesh->positions, aspect());
+    else
+        mCamera.frame(mBoundsLo, mBoundsHi, aspect());
+    mAutoFramed = true;
+    mGridExtent = 0.0f; // rebuilt for the new scene size at the next paint
+}
+
+void Viewport::setGridVisible(bool visible) {
+    mGridVisible = visible;
+    update();
+}
+
+float Viewport::aspect() const {
+    return height() > 0 ? float(width()) / float(height()) : 1.0f;
+}
+
+void Viewport::initializeGL() {
+    if (!initializeOpenGLFunctions()) {
+        mGlError = tr("OpenGL 3.3 core profile is not available (got %1.%2).")
+                       .arg(context()->format().majorVersion())
+                       .arg(context()->format().minorVersion());
+        return;
+    }
+    mGlInfo = QStringLiteral("%1, OpenGL %2")
+                  .arg(reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+                       reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+    mMeshProgram = buildProgram(kMeshVertexShader, kMeshFragmentShader, mGlError);
+    if (mMeshProgram) mLineProgram = buildProgram(kLineVertexShader, kLineFragmentShader, mGlError);
+    if (mLineProgram)
+        mBackgroundProgram =
+            buildProgram(kBackgroundVertexShader, kBackgroundFragmentShader, mGlError);
+    if (!mBackgroundProgram) return;
+
+    glGenVertexArrays(1, &mMeshVao);
+    glGenBuffers(1, &mMeshVbo);
+    glGenBuffers(1, &mMeshIbo);
+    glGenVertexArrays(1, &mGridVao);
+    glGenBuffers(1, &mGridVbo);
+    glGenVertexArrays(1, &mEmptyVao);
+
+    glBindVertexArray(mMeshVao);
+    glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                          reinterpret_cast<void*>(3 * sizeof(float)));
+
+    glBindVertexArray(mGridVao);
+    glBindBuffer(GL_ARRAY_BUFFER, mGridVbo);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                          reinterpret_cast<void*>(3 * sizeof(float)));
+    glBindVertexArray(0);
+
+    mGlReady = true;
+    mMeshDirty = true;
+    mGridExtent = 0.0f;
+}
+
+void Viewport::releaseGl() {
+    glDeleteVertexArrays(1, &mMeshVao);
+    glDeleteBuffers(1, &mMeshVbo);
+    glDeleteBuffers(1, &mMeshIbo);
+    glDeleteVertexArrays(1, &mGridVao);
+    glDeleteBuffers(1, &mGridVbo);
+    glDeleteVertexArrays(1, &mEmptyVao);
+    mMeshVao = mMeshVbo = mMeshIbo = mGridVao = mGridVbo = mEmptyVao = 0;
+    mMeshProgram.reset();
+    mLineProgram.reset();
+    mBackgroundProgram.reset();
+    mGlReady = false;
+}
+
+void Viewport::uploadMesh() {
+    mMeshDirty = false;
+    mRanges.clear();
+    if (!mMesh || mMesh->empty() || mMesh->indices.empty()) return;
+    const mesh::Mesh& m = *mMesh;
+    const std::size_t vertexCount = m.positions.size();
+    // A bad index would make the driver read out of bounds; refuse the mesh instead.
+    for (std::uint32_t index : m.indices) {
+        if (index >= vertexCount) {
+            mGlError = tr("The mesh has an index out of range; it is not drawn.");
+            return;
+        }
+    }
+    const std::vector<glm::vec3> computed =
+        m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
+    const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
+
+    std::vector<float> interleaved(vertexCount * 6);
+    for (std::size_t i = 0; i < vertexCount; ++i) {
+        float* v = &interleaved[i * 6];
+        v[0] = m.positions[i].x;
+        v[1] = m.positions[i].y;
+        v[2] = m.positions[i].z;
+        v[3] = normals[i].x;
+        v[4] = normals[i].y;
+        v[5] = normals[i].z;
+    }
+    glBindVertexArray(mMeshVao);
+    glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
+                 interleaved.data(), GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(std::uint32_t)),
+                 m.indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+
+    const auto total = static_cast<std::uint32_t>(m.indices.size());
+    if (m.submeshes.empty()) {
+        mRanges.push_back({materialColor("bark"), 0, total});
+    } else {
+        for (const mesh::Submesh& s : m.submeshes) {
+            if (s.firstIndex >= total) continue;
+            const std::uint32_t count = std::min(s.indexCount, total - s.firstIndex);
+            mRanges.push_back({materialColor(s.material), s.firstIndex, count - count % 3});
+        }
+    }
+}
+
+void Viewport::buildGrid() {
+    const float radius = mCamera.sceneRadius();
+    // A power-of-ten spacing that gives a few dozen lines across the framed scene.
+    const float step = std::pow(10.0f, std::floor(std::log10(std::max(radius, 1e-3f) * 0.5f)));
+    const int half = std::max(5, int(std::ceil(2.0f * radius / step)));
+    mGridExtent = float(half) * step;
+    const glm::vec3 centre = 0.5f * (mBoundsLo + mBoundsHi);
+    const float cx = std::round(centre.x / step) * step;
+    const float cz = std::round(centre.z / step) * step;
+    const float y = std::min(0.0f, mBoundsLo.y);
+    mGridCenter = glm::vec3(cx, y, cz);
+
+    std::vector<float> data;
+    data.reserve(std::size_t(4 * half + 2) * 2 * 7);
+    auto line = [&](glm::vec3 a, glm::vec3 b, glm::vec4 c) {
+        for (const glm::vec3& p : {a, b})
+            data.insert(data.end(), {p.x, p.y, p.z, c.x, c.y, c.z, c.w});
+    };
+    const glm::vec4 minor(0.30f, 0.33f, 0.37f, 0.30f);
+    const glm::vec4 major(0.25f, 0.27f, 0.31f, 0.60f);
+    for (int i = -half; i <= half; ++i) {
+        const float x = cx + float(i) * step;
+        const float z = cz + float(i) * step;
+        const long long gx = std::llround(x / step);
+        const long long gz = std::llround(z / step);
+        const glm::vec4 cX =
+            gx == 0 ? glm::vec4(0.30f, 0.42f, 0.75f, 0.85f) : (gx % 10 == 0 ? major : minor);
+        const glm::vec4 cZ =
+            gz == 0 ? glm::vec4(0.75f, 0.30f, 0.28f, 0.85f) : (gz % 10 == 0 ? major : minor);
+        // Line of constant x runs along z (the z axis when x == 0), and vice versa.
+        line({x, y, cz - mGridExtent}, {x, y, cz + mGridExtent}, cX);
+        line({cx - mGridExtent, y, z}, {cx + mGridExtent, y, z}, cZ);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, mGridVbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    mGridVertexCount = GLsizei(data.size() / 7);
+}
+
+void Viewport::resizeGL(int width, int height) {
+    (void)width;
+    (void)height;
+    // Until the user moves the camera, keep the scene framed for the new aspect ratio.
+    if (mAutoFramed) applyFrame();
+}
+
+void Viewport::paintGL() {
+    if (!mGlReady) {
+        // Without our functions, fall back to the context's basic ones to show a neutral grey.
+        QOpenGLFunctions* f = context()->functions();
+        f->glClearColor(0.25f, 0.25f, 0.25f, 1.0f);
+        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return;
+    }
+    if (mMeshDirty) uploadMesh();
+    if (mGridExtent <= 0.0f) buildGrid();
+
+    glClearColor(kBackgroundBottom.x, kBackgroundBottom.y, kBackgroundBottom.z, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    mBackgroundProgram->bind();
+    setUniform(*mBackgroundProgram, "uTop", kBackgroundTop);
+    setUniform(*mBackgroundProgram, "uBottom", kBackgroundBottom);
+    glBindVertexArray(mEmptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+
+    const glm::mat4 viewProj = mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix();
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+
+    if (mGridVisible && mGridVertexCount > 0) {
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        mLineProgram->bind();
+        setUniform(*mLineProgram, "uViewProj", viewProj);
+        setUniform(*mLineProgram, "uCenter", mGridCenter);
+        mLineProgram->setUniformValue("uExtent", mGridExtent);
+        glBindVertexArray(mGridVao);
+        glDrawArrays(GL_LINES, 0, mGridVertexCount);
+        glDisable(GL_BLEND);
+    }
+
+    glDepthMask(GL_TRUE);
+    if (!mRanges.empty()) {
+        mMeshProgram->bind();
+        setUniform(*mMeshProgram, "uViewProj", viewProj);
+        setUniform(*mMeshProgram, "uEye", mCamera.eye());
+        // A key light that follows the camera (above, to the left, from the front) keeps the
+        // tree readable from every side.
+        const glm::vec3 light = glm::normalize(-0.5f * mCamera.forward() + 0.8f * mCamera.up() -
+                                               0.6f * mCamera.right());
+        setUniform(*mMeshProgram, "uLightDir", light);
+        glBindVertexArray(mMeshVao);
+        for (const DrawRange& r : mRanges) {
+            setUniform(*mMeshProgram, "uAlbedo", r.color);
+            glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                           reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+        }
+    }
+    glBindVertexArray(0);
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    mLastMouse = event->position().toPoint();
+    if (event->button() == Qt::LeftButton && !(event->modifiers() & Qt::ShiftModifier))
+        mDrag = DragMode::Orbit;
+    else if (event->button() == Qt::LeftButton || event->button() == Qt::RightButton ||
+             event->button() == Qt::MiddleButton)
+        mDrag = DragMode::Pan;
+    event->accept();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    const QPoint pos = event->position().toPoint();
+    const QPoint delta = pos - mLastMouse;
+    mLastMouse = pos;
+    if (mDrag == DragMode::None || delta.isNull()) return;
+    mAutoFramed = false;
+    if (mDrag == DragMode::Orbit)
+        mCamera.orbit(float(delta.x()), float(delta.y()));
+    else
+        mCamera.pan(float(delta.x()), float(delta.y()), float(std::max(height(), 1)));
+    update();
+    Q_EMIT cameraChanged();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+    mDrag = DragMode::None;
+    event->accept();
+}
+
+void Viewport::wheelEvent(QWheelEvent* event) {
+    const float steps = float(event->angleDelta().y()) / 120.0f;
+    if (steps == 0.0f) return;
+    mAutoFramed = false;
+    mCamera.zoom(steps);
+    update();
+    Q_EMIT cameraChanged();
+    event->accept();
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_F || event->key() == Qt::Key_Home) {
+        frameScene();
+        event->accept();
+        return;
+    }
+    QOpenGLWidget::keyPressEvent(event);
+}
+
+} // namespace sylva::ui

@@ -1,0 +1,118 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QString>
+
+#include <glm/glm.hpp>
+
+#include "ui/orbitcamera.h"
+
+class QOpenGLShaderProgram;
+
+namespace sylva::mesh {
+struct Mesh;
+}
+
+namespace sylva::ui {
+
+/// The 3D view: draws a mesh (bark and leaf submeshes) over a gradient background and a ground
+/// grid with OpenGL 3.3 core, and lets the user orbit (left drag), pan (right or middle drag,
+/// or Shift + left drag), zoom (wheel) and frame the tree (F).
+class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+    Q_OBJECT
+
+public:
+    /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
+    static glm::vec3 materialColor(const std::string& material);
+
+    /// Requests an OpenGL 3.3 core profile with depth and 4x multisampling for every context.
+    /// Call before constructing QApplication.
+    static void installDefaultSurfaceFormat();
+
+    explicit Viewport(QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    /// Shows \p mesh (nullptr clears the view). With \p frame the camera frames its bounds.
+    void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true);
+    const std::shared_ptr<const mesh::Mesh>& mesh() const { return mMesh; }
+
+    OrbitCamera& camera() { return mCamera; }
+    const OrbitCamera& camera() const { return mCamera; }
+    /// Aims the camera at the mesh's bounds (or the unit box around the origin when empty).
+    void frameScene();
+
+    void setGridVisible(bool visible);
+    bool isGridVisible() const { return mGridVisible; }
+
+    /// Renderer and version as reported by the driver, empty before initializeGL().
+    QString glInfo() const { return mGlInfo; }
+    /// Why rendering is not possible (no 3.3 context, a shader failed), empty when fine.
+    QString glError() const { return mGlError; }
+
+    QSize sizeHint() const override { return {960, 720}; }
+
+Q_SIGNALS:
+    void cameraChanged();
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int width, int height) override;
+    void paintGL() override;
+
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    struct DrawRange {
+        glm::vec3 color;
+        std::uint32_t firstIndex = 0;
+        std::uint32_t indexCount = 0;
+    };
+    enum class DragMode { None, Orbit, Pan };
+
+    void releaseGl();
+    void applyFrame();
+    void uploadMesh();
+    void buildGrid();
+    float aspect() const;
+
+    std::shared_ptr<const mesh::Mesh> mMesh;
+    glm::vec3 mBoundsLo{-0.5f, 0.0f, -0.5f};
+    glm::vec3 mBoundsHi{0.5f, 1.0f, 0.5f};
+    OrbitCamera mCamera;
+    bool mMeshDirty = false;
+    bool mAutoFramed = true;
+    bool mGridVisible = true;
+
+    DragMode mDrag = DragMode::None;
+    QPoint mLastMouse;
+
+    bool mGlReady = false;
+    QString mGlInfo;
+    QString mGlError;
+    std::unique_ptr<QOpenGLShaderProgram> mMeshProgram;
+    std::unique_ptr<QOpenGLShaderProgram> mLineProgram;
+    std::unique_ptr<QOpenGLShaderProgram> mBackgroundProgram;
+    GLuint mMeshVao = 0;
+    GLuint mMeshVbo = 0;
+    GLuint mMeshIbo = 0;
+    GLuint mGridVao = 0;
+    GLuint mGridVbo = 0;
+    GLuint mEmptyVao = 0;
+    GLsizei mGridVertexCount = 0;
+    float mGridExtent = 0.0f;
+    glm::vec3 mGridCenter{0.0f};
+    std::vector<DrawRange> mRanges;
+};
+
+} // namespace sylva::ui
