@@ -102,7 +102,10 @@ int runTree(const std::vector<std::string>& argv) {
         appendJsonNumber(json, "leaves", stat("leaves"));
         appendJsonNumber(json, "vertices", static_cast<double>(result.mesh->vertexCount()));
         appendJsonNumber(json, "triangles", static_cast<double>(result.mesh->triangleCount()));
-        appendJsonNumber(json, "height", stat("height"));
+        // Height from the skeleton itself, whatever node grew it.
+        glm::vec3 lo(0.0f), hi(0.0f);
+        if (result.skeleton) result.skeleton->bounds(lo, hi);
+        appendJsonNumber(json, "height", result.skeleton ? hi.y - lo.y : stat("height"));
         json += "\"timings_ms\":{";
         for (const auto& [k, v] : result.timingsMs)
             appendJsonNumber(json, k.c_str(), v);

@@ -7,6 +7,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <memory>
+
+#include "engine/environment/obstaclescene.h"
 #include "engine/growth/allocation.h"
 #include "engine/growth/markerset.h"
 #include "engine/growth/shadowgrid.h"
@@ -223,6 +226,8 @@ private:
     std::vector<StandTree> mTrees;
     std::vector<glm::vec3> mObstacles;
     glm::vec3 mObstacleLo{0.0f}, mObstacleHi{0.0f};
+    /// BVH over mObstacles for the shoot-vs-obstacle test (shared by copies: immutable).
+    std::shared_ptr<const env::ObstacleScene> mObstacleScene;
     SimulationOptions mOptions;
     SoEnvironment mEnv;
     std::vector<AllocationParams> mAlloc;

@@ -1,5 +1,7 @@
 #include "engine/scene/forestbuild.h"
 
+#include "engine/growth/selforganizing.h"
+#include "engine/growth/selforganizingnode.h"
 #include "engine/mesh/lod.h"
 #include "engine/mesh/meshnodes.h"
 #include "engine/util/error.h"
@@ -28,6 +30,7 @@ struct SpeciesPlan {
     const graph::NodeDesc* meshNode = nullptr; ///< the output node
     std::string skeletonNode;                  ///< its input: yields the (adapted) skeleton
     bool hasAdaptNode = false;
+    bool selfOrganizing = false; ///< grows with the scene's other such trees in one stand
     CrownShape crown;
     forest::WoodProperties wood;
 };
@@ -43,6 +46,8 @@ SpeciesPlan planSpecies(const SceneSpecies& s) {
     plan.skeletonNode = plan.meshNode->inputs[0];
     for (const graph::NodeDesc& n : g.nodes)
         plan.hasAdaptNode = plan.hasAdaptNode || n.type == "adapt";
+    const graph::NodeDesc* grow = g.findNode(plan.skeletonNode);
+    plan.selfOrganizing = grow && grow->type == "self_organizing";
     plan.wood.densityKgM3 = g.traits.woodDensity;
     plan.wood.carbonFraction = g.traits.carbonFraction;
     return plan;
@@ -183,6 +188,48 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     const NeighbourGrid neighbourGrid(crowns, 2.0f * maxRadius);
     stats.wallMs["place"] = msSince(t0);
 
+    // Self-organizing trees of the whole scene (all tiles, so tiles agree) grow together in one
+    // shared environment per environment kind: they compete for light and space, and the
+    // obstacles cast shadow and block markers. They stand upright at their placed position;
+    // their size comes from the competition, not from placement's scale and growth stage.
+    t0 = Clock::now();
+    std::vector<std::shared_ptr<const skel::Skeleton>> standGrown(placed.instances.size());
+    {
+        std::vector<glm::vec3> obstacleTriangles;
+        if (scene.obstacles)
+            for (const env::ObstacleMesh& m : scene.obstacles->meshes())
+                for (const glm::uvec3& t : m.triangles)
+                    for (int k = 0; k < 3; ++k)
+                        obstacleTriangles.push_back(m.vertices[t[k]]);
+        std::map<int, std::vector<std::size_t>> stands; // environment kind → instances
+        std::vector<growth::StandTree> standTrees(placed.instances.size());
+        for (std::size_t i = 0; i < placed.instances.size(); ++i) {
+            forest::Instance& in = placed.instances[i];
+            const SpeciesPlan& plan = plans[in.species];
+            if (!plan.selfOrganizing) continue;
+            const graph::SpeciesGraph& g = scene.species[in.species].graph;
+            standTrees[i].params =
+                growth::selfOrganizingParamsFrom(g.findNode(plan.skeletonNode)->params);
+            standTrees[i].position = in.position;
+            standTrees[i].seed = in.seed;
+            in.rotation = 0.0f;
+            in.scale = 1.0f;
+            in.growth = 1.0f;
+            stands[static_cast<int>(standTrees[i].params.environment)].push_back(i);
+        }
+        for (const auto& [kind, members] : stands) {
+            std::vector<growth::StandTree> trees;
+            for (std::size_t i : members)
+                trees.push_back(standTrees[i]);
+            std::vector<skel::Skeleton> grown =
+                growth::growStand(trees, obstacleTriangles, progress);
+            for (std::size_t k = 0; k < members.size(); ++k)
+                standGrown[members[k]] =
+                    std::make_shared<const skel::Skeleton>(std::move(grown[k]));
+        }
+    }
+    stats.wallMs["stand"] = msSince(t0);
+
     // 3. Trees, in parallel batches handed on in order.
     t0 = Clock::now();
     const int threads = std::max(1, omp_get_max_threads());
@@ -231,12 +278,16 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 auto t = Clock::now();
                 graph::Evaluator& evaluator = *evaluators[thread][in.species];
                 std::shared_ptr<const skel::Skeleton> skeleton =
-                    evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode).skeleton;
+                    plan.selfOrganizing
+                        ? standGrown[index]
+                        : evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode)
+                              .skeleton;
                 if (!skeleton)
                     throw InvalidInput("species '" + species.name + "' produced no skeleton");
                 cpuGenerate[thread] += msSince(t);
 
-                if (options.adapt && !plan.hasAdaptNode && (!obstacles.empty() || !near.empty())) {
+                if (options.adapt && !plan.hasAdaptNode && !plan.selfOrganizing &&
+                    (!obstacles.empty() || !near.empty())) {
                     t = Clock::now();
                     env::AdaptParams params;
                     params.lightDirection = scene.lightDirection;
