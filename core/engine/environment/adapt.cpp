@@ -377,6 +377,7 @@ std::vector<AdaptResult> adaptTrees(std::span<const skel::Skeleton* const> rest,
     if (rest.size() != transforms.size() ||
         (!neighbours.empty() && neighbours.size() != rest.size()))
         throw InvalidInput("adaptTrees: one transform (and neighbour list) per tree");
+    progress.checkCancelled();
     std::vector<AdaptResult> out(rest.size());
     const auto n = static_cast<std::ptrdiff_t>(rest.size());
     std::atomic<bool> stop{false};
@@ -404,7 +405,8 @@ std::vector<AdaptResult> adaptTrees(std::span<const skel::Skeleton* const> rest,
         }
     }
     if (error) std::rethrow_exception(error);
-    if (stop) throw Cancelled();
+    // Under load thread 0 may have run no iteration at all: ask once more after the loop.
+    if (stop || progress.isCancelled()) throw Cancelled();
     return out;
 }
 

@@ -101,6 +101,8 @@ private:
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> mCells;
 };
 
+constexpr float kNeighbourCore = 0.5f;
+
 const env::ObstacleScene& emptyScene() {
     static const env::ObstacleScene scene;
     return scene;
@@ -182,7 +184,10 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         const forest::Instance& in = placed.instances[i];
         const CrownShape& c = plans[in.species].crown;
         const float s = in.scale * in.growth;
-        crowns[i] = {in.position, c.radius * s, c.bottom * s, c.top * s};
+        // A neighbour blocks with the dense core of its crown only: placement lets crowns
+        // overlap at their rims (as in the reference), and treating the whole crown cylinder as
+        // solid pruned ~40 % of a dense forest.
+        crowns[i] = {in.position, kNeighbourCore * c.radius * s, c.bottom * s, c.top * s};
         maxRadius = std::max(maxRadius, crowns[i].radius);
     }
     const NeighbourGrid neighbourGrid(crowns, 2.0f * maxRadius);
