@@ -23,12 +23,16 @@ DEMO_SPECIES=presets/ternary-tree.json
 if [[ $headless == 1 ]]; then
   out=out/demo
   mkdir -p "$out"
-  for species in "$DEMO_SPECIES" presets/alder.json; do
-    name=$(basename "$species" .json)
-    "$BIN/cli/sylva-cli" tree "$species" -o "$out/$name.obj" --stats > "$out/$name.stats.json"
-    echo "generated $out/$name.obj ($(grep -o '"triangles":[0-9]*' "$out/$name.stats.json"))"
-  done
-  echo "Demo files are in $(pwd)/$out"
+  "$BIN/cli/sylva-cli" forest resources/demo/forest.sylva -o "$out/forest.obj" --stats > "$out/forest.stats.json"
+  echo "generated $out/forest.obj: $(grep -o '"trees":[0-9]*' "$out/forest.stats.json" | cut -d: -f2) trees," \
+       "$(grep -o '"triangles":[0-9]*' "$out/forest.stats.json" | head -1 | cut -d: -f2) triangles"
+  "$BIN/cli/sylva-cli" forest resources/demo/stand.sylva -o "$out/stand.glb" --stats > "$out/stand.stats.json"
+  echo "generated $out/stand.glb: self-organizing trees grown together"
+  "$BIN/cli/sylva-cli" tree "$DEMO_SPECIES" -o "$out/ternary-tree.obj" --stats > "$out/ternary-tree.stats.json"
+  echo "generated $out/ternary-tree.obj"
+  "$BIN/cli/sylva-cli" stats resources/demo/forest.sylva > "$out/forest.carbon.txt"
+  echo "biomass and CO2 of the demo forest: $out/forest.carbon.txt"
+  echo "Demo files are in $(pwd)/$out (materials in *.mtl, textures in $out/textures)"
 else
   exec "$BIN/editor/sylva" "$DEMO_SPECIES"
 fi

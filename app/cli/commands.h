@@ -12,5 +12,6 @@ int runExpand(const std::vector<std::string>& args);
 int runTree(const std::vector<std::string>& args);
 int runForest(const std::vector<std::string>& args);
 int runStats(const std::vector<std::string>& args);
+int runLods(const std::vector<std::string>& args);
 
 } // namespace sylva::cli

@@ -23,6 +23,7 @@ const char* kUsage =
     "       [--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--no-lod]\n"
     "       [--no-adapt] [--no-neighbours] [--instance-tables] [--naive-placement]\n"
     "  stats <project.sylva|species.json> [--json]       height, DBH, biomass, CO2\n"
+    "  lods <species.json> -o <folder> [--json]          LOD chain for game engines\n"
     "  help                                    show this text\n"
     "\n"
     "exit status: 0 success, 1 bad input (message as file:line:col: error: ...), 2 bad usage\n";
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
         if (command == "tree") return runTree(args);
         if (command == "forest") return runForest(args);
         if (command == "stats") return runStats(args);
+        if (command == "lods") return runLods(args);
         throw UsageError("unknown command '" + command + "'");
     } catch (const sylva::Cancelled&) {
         std::fprintf(stderr, "sylva-cli: interrupted; no output written\n");

@@ -173,6 +173,14 @@ stats_species)
 stats_project)
   run_cli 0 stats "$DATA/projects/small.sylva" --json
   grep -q '"trees":41' out.txt || fail "$(cat out.txt)" ;;
+lods_chain)
+  run_cli 0 lods "$DATA/lsystem/bush.lsys" -o lods --json
+  for i in 0 1 2; do [[ -s lods/bush_LOD$i.obj ]] || fail "missing bush_LOD$i.obj: $(ls lods)"; done
+  [[ -s lods/bush_LODs.glb ]] || fail "missing glb"
+  # triangle counts strictly decrease from level to level
+  tris=$(grep -o '"triangles":[0-9]*' out.txt | cut -d: -f2 | tr '\n' ' ')
+  read -r t0 t1 t2 <<< "$tris"
+  (( t0 > t1 && t1 > t2 )) || fail "triangles do not decrease: $tris" ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
