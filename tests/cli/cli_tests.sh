@@ -181,6 +181,13 @@ lods_chain)
   tris=$(grep -o '"triangles":[0-9]*' out.txt | cut -d: -f2 | tr '\n' ' ')
   read -r t0 t1 t2 <<< "$tris"
   (( t0 > t1 && t1 > t2 )) || fail "triangles do not decrease: $tris" ;;
+forest_species_adapt_node)
+  # A species with its own adapt node reacts to the scene's wall (the bush at x=0.5 m touches
+  # the 0.2 m thick wall at x=0; the one at x=30 m does not).
+  run_cli 0 forest "$DATA/projects/adapt.sylva" -o f.obj --stats
+  grep -q '"colliding_trees":1,' out.txt || fail "$(cat out.txt)"
+  run_cli 0 forest "$DATA/projects/adapt.sylva" -o g.obj --stats --no-adapt
+  grep -q '"colliding_trees":0,' out.txt || fail "--no-adapt still adapted: $(cat out.txt)" ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

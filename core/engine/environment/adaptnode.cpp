@@ -75,16 +75,29 @@ NodeOutput evaluateAdapt(const NodeContext& ctx) {
     m = glm::scale(m, glm::vec3(static_cast<float>(scale)));
 
     const auto t0 = std::chrono::steady_clock::now();
-    const std::shared_ptr<const ObstacleScene> scene = loadObstacleScene(specs);
+    std::shared_ptr<const ObstacleScene> scene = loadObstacleScene(specs);
     const double loadMs = msSince(t0);
     const auto t1 = std::chrono::steady_clock::now();
-    AdaptResult r = adaptTree(*ctx.inputs[0]->skeleton, *scene, m, params);
+    AdaptResult r;
+    if (ctx.tree && ctx.tree->obstacles && specs.empty()) {
+        // Growing in a scene: the scene's obstacles, the tree's placement, its neighbours'
+        // crowns and the scene's light replace the node's own obstacles and placement.
+        AdaptParams sceneParams = params;
+        if (!p.contains("light_direction")) sceneParams.lightDirection = ctx.tree->lightDirection;
+        r = adaptTree(*ctx.inputs[0]->skeleton, *ctx.tree->obstacles, ctx.tree->transform,
+                      sceneParams,
+                      std::span<const CrownVolume>(ctx.tree->neighbours, ctx.tree->neighbourCount));
+        scene.reset();
+    } else {
+        r = adaptTree(*ctx.inputs[0]->skeleton, *scene, m, params);
+    }
 
     NodeOutput out;
     out.timingsMs["obstacles"] = loadMs;
     out.timingsMs["adapt"] = msSince(t1);
-    out.stats["adapt_obstacle_triangles"] = static_cast<double>(scene->triangleCount());
-    out.stats["adapt_degenerate_triangles"] = static_cast<double>(scene->degenerateCount());
+    const ObstacleScene& used = scene ? *scene : *ctx.tree->obstacles;
+    out.stats["adapt_obstacle_triangles"] = static_cast<double>(used.triangleCount());
+    out.stats["adapt_degenerate_triangles"] = static_cast<double>(used.degenerateCount());
     out.stats["adapt_colliding_before"] = static_cast<double>(r.stats.collidingBefore);
     out.stats["adapt_colliding_after"] = static_cast<double>(r.stats.collidingAfter);
     out.stats["adapt_hidden_nodes"] = static_cast<double>(r.stats.hiddenNodes);

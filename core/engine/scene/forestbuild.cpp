@@ -282,11 +282,22 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
 
                 auto t = Clock::now();
                 graph::Evaluator& evaluator = *evaluators[thread][in.species];
-                std::shared_ptr<const skel::Skeleton> skeleton =
-                    plan.selfOrganizing
-                        ? standGrown[index]
-                        : evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode)
-                              .skeleton;
+                std::shared_ptr<const skel::Skeleton> skeleton;
+                if (plan.selfOrganizing) {
+                    skeleton = standGrown[index];
+                } else {
+                    const graph::NodeOutput& grown =
+                        evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode);
+                    skeleton = grown.skeleton;
+                    // A species' own adapt node reports what it did through its stats.
+                    auto stat = [&](const char* key) {
+                        auto it = grown.stats.find(key);
+                        return it == grown.stats.end() ? 0.0 : it->second;
+                    };
+                    tree.adapt.collidingBefore =
+                        static_cast<std::size_t>(stat("adapt_colliding_before"));
+                    tree.adapt.hiddenNodes = static_cast<std::size_t>(stat("adapt_hidden_nodes"));
+                }
                 if (!skeleton)
                     throw InvalidInput("species '" + species.name + "' produced no skeleton");
                 cpuGenerate[thread] += msSince(t);
