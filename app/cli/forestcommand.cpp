@@ -100,9 +100,10 @@ int runForest(const std::vector<std::string>& argv) {
     if (auto camera = args.value("--camera")) forestScene.camera = parseVec3(*camera, "--camera");
     const double loadMs = msSince(start);
 
+    // Ctrl-C is caught from here on, before the exporter creates its temporary file.
+    TerminalProgress progress;
     TreeExporter exporter(*output);
     exporter.setInstanceTables(args.flag("--instance-tables"));
-    TerminalProgress progress;
     double writeMs = 0;
     scene::ForestStats stats;
     try {

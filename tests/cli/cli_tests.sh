@@ -188,6 +188,18 @@ forest_species_adapt_node)
   grep -q '"colliding_trees":1,' out.txt || fail "$(cat out.txt)"
   run_cli 0 forest "$DATA/projects/adapt.sylva" -o g.obj --stats --no-adapt
   grep -q '"colliding_trees":0,' out.txt || fail "--no-adapt still adapted: $(cat out.txt)" ;;
+forest_interrupt)
+  # Ctrl-C during a long run (1,000 trees): exit 130, no output, no temporary left behind.
+  "$CLI" forest "$DATA/../../resources/demo/bench-1000.sylva" -o big.obj >out.txt 2>err.txt &
+  pid=$!
+  sleep 1.5
+  kill -INT $pid
+  wait $pid
+  got=$?
+  [[ $got == 130 ]] || fail "exit status $got after SIGINT, expected 130: $(cat err.txt)"
+  grep -q "interrupted" err.txt || fail "no message: $(cat err.txt)"
+  [[ ! -e big.obj ]] || fail "a half-written big.obj is left"
+  [[ $(ls -A | grep -c 'tmp') == 0 ]] || fail "temporary files left: $(ls -A)" ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
