@@ -44,13 +44,29 @@ int runStats(const std::vector<std::string>& argv) {
     const std::string path = args.positional()[0];
     const bool isProject = path.ends_with(".sylva") || path.ends_with(".scene.json");
     forest::SceneMetrics metrics;
+    std::string perTree; // JSON objects, one per tree of a project
     if (isProject) {
         const doc::Project project = loadProjectOrScene(path);
         scene::ForestOptions options;
         options.buildMeshes = false;
         TerminalProgress progress;
         const scene::ForestStats stats = scene::buildForest(
-            doc::makeForestScene(project), options, [](const auto&) {}, progress);
+            doc::makeForestScene(project), options,
+            [&](const std::vector<scene::ForestTree>& batch) {
+                for (const scene::ForestTree& t : batch) {
+                    forest::SceneMetrics one;
+                    one.add(t.metrics);
+                    std::string obj = metricsJson(one);
+                    obj.erase(0, obj.find(',') + 1); // drop "trees":1
+                    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on a + chain.
+                    if (!perTree.empty()) perTree.push_back(',');
+                    perTree.append("{\"name\":\"");
+                    perTree.append(t.name);
+                    perTree.append("\",");
+                    perTree.append(obj);
+                }
+            },
+            progress);
         progress.finish();
         metrics = stats.metrics;
     } else {
@@ -69,7 +85,14 @@ int runStats(const std::vector<std::string>& argv) {
         metrics.add(forest::measureTree(*result.skeleton, wood));
     }
     if (args.flag("--json")) {
-        const std::string json = metricsJson(metrics) + "\n";
+        std::string json = metricsJson(metrics);
+        if (isProject) {
+            json.pop_back(); // the closing brace
+            json.append(",\"per_tree\":[");
+            json.append(perTree);
+            json.append("]}");
+        }
+        json += "\n";
         std::fwrite(json.data(), 1, json.size(), stdout);
     } else {
         printTable(metrics, !isProject);

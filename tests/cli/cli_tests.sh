@@ -200,6 +200,14 @@ forest_interrupt)
   grep -q "interrupted" err.txt || fail "no message: $(cat err.txt)"
   [[ ! -e big.obj ]] || fail "a half-written big.obj is left"
   [[ $(ls -A | grep -c 'tmp') == 0 ]] || fail "temporary files left: $(ls -A)" ;;
+forest_terrain)
+  # Trees stand where a ray down meets the terrain y = 2 + 0.1 x: every tree's lowest vertex
+  # lies on the slope (within the root's radius), never at y = 0.
+  run_cli 0 forest "$DATA/projects/terrain.sylva" -o t.obj --stats --no-lod
+  grep -q '"trees":12,' out.txt || fail "$(cat out.txt)"
+  awk '/^o /{if (name!="") print name, lo, x; name=$2; lo=1e9} /^v /{if ($3<lo){lo=$3; x=$2}} END{print name, lo, x}' t.obj > low.txt
+  awk '{ground=2+0.1*$3; d=$2-ground; if (d<0) d=-d; if (d>0.2) {print "off the slope:", $0; bad=1}} END{exit bad}' low.txt \
+    || fail "a tree does not stand on the terrain: $(cat low.txt)" ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"
