@@ -4,7 +4,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <source>%1: the species' output node produced no mesh</source>
+        <source>%1: the species&apos; output node produced no mesh</source>
         <translation>%1: Der Ausgabeknoten der Art hat kein Netz erzeugt</translation>
     </message>
     <message>
@@ -39,8 +39,8 @@
         <translation>höchstens eine Artdatei erwartet</translation>
     </message>
     <message>
-        <source>--size expects WxH between 16 and 8192, got '%1'</source>
-        <translation>--size erwartet BxH zwischen 16 und 8192, erhalten: '%1'</translation>
+        <source>--size expects WxH between 16 and 8192, got &apos;%1&apos;</source>
+        <translation>--size erwartet BxH zwischen 16 und 8192, erhalten: &apos;%1&apos;</translation>
     </message>
 </context>
 <context>
@@ -126,7 +126,7 @@
         <translation>%1 in %2 ms erzeugt</translation>
     </message>
     <message>
-        <source>Could not read the viewport's image (no OpenGL context).</source>
+        <source>Could not read the viewport&apos;s image (no OpenGL context).</source>
         <translation>Das Bild der Ansicht konnte nicht gelesen werden (kein OpenGL-Kontext).</translation>
     </message>
     <message>
