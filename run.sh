@@ -24,7 +24,7 @@ if [[ $headless == 1 ]]; then
   out=out/demo
   mkdir -p "$out"
   "$BIN/cli/sylva-cli" forest resources/demo/forest.sylva -o "$out/forest.obj" --stats > "$out/forest.stats.json"
-  echo "generated $out/forest.obj: $(grep -o '"trees":[0-9]*' "$out/forest.stats.json" | cut -d: -f2) trees," \
+  echo "generated $out/forest.obj: $(grep -o '"trees":[0-9]*' "$out/forest.stats.json" | head -1 | cut -d: -f2) trees," \
        "$(grep -o '"triangles":[0-9]*' "$out/forest.stats.json" | head -1 | cut -d: -f2) triangles"
   "$BIN/cli/sylva-cli" forest resources/demo/stand.sylva -o "$out/stand.glb" --stats > "$out/stand.stats.json"
   echo "generated $out/stand.glb: self-organizing trees grown together"
