@@ -1,4 +1,5 @@
 #include "cliargs.h"
+#include "clishared.h"
 #include "commands.h"
 #include "terminalprogress.h"
 #include "treeexport.h"
@@ -33,41 +34,7 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
     return v;
 }
 
-void num(std::string& out, const char* key, double v, bool comma = true) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "\"%s\":%.10g%s", key, v, comma ? "," : "");
-    out += buf;
-}
-
 } // namespace
-
-doc::Project loadProjectOrScene(const std::string& path) {
-    QFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::ReadOnly)) throw IoError("cannot read " + path);
-    const QByteArray bytes = file.readAll();
-    // The reference implementation's scene description has "plants" and no "format".
-    if (!bytes.contains("\"format\"") && bytes.contains("\"plants\""))
-        return doc::importReferenceScene(QString::fromStdString(path));
-    doc::LoadReport report;
-    doc::Project project = doc::parseProject(bytes, QString::fromStdString(path), &report);
-    for (const std::string& w : report.warnings)
-        std::fprintf(stderr, "sylva-cli: warning: %s\n", w.c_str());
-    return project;
-}
-
-std::string metricsJson(const forest::SceneMetrics& m) {
-    std::string json = "{";
-    num(json, "trees", static_cast<double>(m.trees));
-    num(json, "mean_height_m", m.meanHeightM);
-    num(json, "mean_dbh_m", m.meanDbhM);
-    num(json, "mean_crown_width_m", m.meanCrownWidthM);
-    num(json, "wood_volume_m3", m.woodVolumeM3);
-    num(json, "dry_biomass_kg", m.dryBiomassKg);
-    num(json, "carbon_kg", m.carbonKg);
-    num(json, "co2_kg", m.co2Kg);
-    num(json, "chave_agb_kg", m.chaveAgbKg, false);
-    return json + "}";
-}
 
 int runForest(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
@@ -138,35 +105,36 @@ int runForest(const std::vector<std::string>& argv) {
 
     if (args.flag("--stats")) {
         std::string json = "{";
-        num(json, "trees", static_cast<double>(stats.trees));
-        num(json, "trees_in_scene", static_cast<double>(stats.treesInScene));
-        num(json, "tile", options.tile + 1);
-        num(json, "tiles", options.tileCount);
-        num(json, "threads", omp_get_max_threads());
-        num(json, "vertices", static_cast<double>(stats.vertices));
-        num(json, "triangles", static_cast<double>(stats.triangles));
-        num(json, "obstacle_triangles",
-            forestScene.obstacles ? static_cast<double>(forestScene.obstacles->triangleCount())
-                                  : 0.0);
-        num(json, "colliding_trees", static_cast<double>(stats.collidingTrees));
-        num(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
+        appendJsonNumber(json, "trees", static_cast<double>(stats.trees));
+        appendJsonNumber(json, "trees_in_scene", static_cast<double>(stats.treesInScene));
+        appendJsonNumber(json, "tile", options.tile + 1);
+        appendJsonNumber(json, "tiles", options.tileCount);
+        appendJsonNumber(json, "threads", omp_get_max_threads());
+        appendJsonNumber(json, "vertices", static_cast<double>(stats.vertices));
+        appendJsonNumber(json, "triangles", static_cast<double>(stats.triangles));
+        appendJsonNumber(json, "obstacle_triangles",
+                         forestScene.obstacles
+                             ? static_cast<double>(forestScene.obstacles->triangleCount())
+                             : 0.0);
+        appendJsonNumber(json, "colliding_trees", static_cast<double>(stats.collidingTrees));
+        appendJsonNumber(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
         std::size_t missing = 0;
         for (const forest::Shortfall& s : stats.shortfalls)
             missing += s.requested - s.placed;
-        num(json, "shortfall", static_cast<double>(missing));
+        appendJsonNumber(json, "shortfall", static_cast<double>(missing));
         json += "\"metrics\":" + metricsJson(stats.metrics) + ",";
         json += "\"timings_ms\":{";
-        num(json, "load", loadMs);
+        appendJsonNumber(json, "load", loadMs);
         for (const auto& [k, v] : stats.wallMs)
-            num(json, k.c_str(), v);
-        num(json, "write", writeMs);
-        num(json, "total", msSince(start), false);
+            appendJsonNumber(json, k.c_str(), v);
+        appendJsonNumber(json, "write", writeMs);
+        appendJsonNumber(json, "total", msSince(start), false);
         json += "},\"cpu_ms\":{";
         bool first = true;
         for (const auto& [k, v] : stats.cpuMs) {
             if (!first) json += ",";
             first = false;
-            num(json, k.c_str(), v, false);
+            appendJsonNumber(json, k.c_str(), v, false);
         }
         json += "}}\n";
         std::fwrite(json.data(), 1, json.size(), stdout);

@@ -31,7 +31,7 @@ int runLods(const std::vector<std::string>& argv) {
     graph::Evaluator evaluator(species);
     const auto seed = args.integer("--seed", 0, (1LL << 62));
     const graph::NodeOutput& grown = evaluator.evaluateNode(
-        out->inputs[0], seed.has_value(), seed ? static_cast<std::uint64_t>(*seed) : 0);
+        species.skeletonSource(), seed.has_value(), seed ? static_cast<std::uint64_t>(*seed) : 0);
     if (!grown.skeleton) throw InvalidInput("the species produces no skeleton");
 
     const mesh::TreeMeshSettings settings = mesh::treeMeshSettingsFromParams(out->params, 0);

@@ -1,4 +1,5 @@
 #include "cliargs.h"
+#include "clishared.h"
 #include "commands.h"
 #include "terminalprogress.h"
 
@@ -14,9 +15,6 @@
 #include <cstdio>
 
 namespace sylva::cli {
-
-doc::Project loadProjectOrScene(const std::string& path); // forestcommand.cpp
-std::string metricsJson(const forest::SceneMetrics& m);   // forestcommand.cpp
 
 namespace {
 
@@ -73,8 +71,7 @@ int runStats(const std::vector<std::string>& argv) {
         graph::registerBuiltinNodeTypes();
         const graph::SpeciesGraph species = doc::loadSpecies(QString::fromStdString(path));
         graph::Evaluator evaluator(species);
-        const graph::NodeDesc* out = species.findNode(species.output);
-        const std::string node = out && out->inputs.size() == 1 ? out->inputs[0] : species.output;
+        const std::string& node = species.skeletonSource();
         const auto seed = args.integer("--seed", 0, (1LL << 62));
         const graph::NodeOutput& result = evaluator.evaluateNode(
             node, seed.has_value(), seed ? static_cast<std::uint64_t>(*seed) : 0);

@@ -1,4 +1,5 @@
 #include "cliargs.h"
+#include "clishared.h"
 #include "commands.h"
 #include "treeexport.h"
 
@@ -33,12 +34,6 @@ std::string objectName(const std::string& speciesName) {
     for (char c : speciesName)
         out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-') ? c : '_';
     return out.empty() ? std::string("tree") : out;
-}
-
-void appendJsonNumber(std::string& out, const char* key, double v, bool comma = true) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "\"%s\":%.17g%s", key, v, comma ? "," : "");
-    out += buf;
 }
 
 } // namespace
@@ -92,10 +87,6 @@ int runTree(const std::vector<std::string>& argv) {
             auto it = result.stats.find(key);
             return it == result.stats.end() ? 0.0 : it->second;
         };
-        auto timing = [&](const char* key) {
-            auto it = result.timingsMs.find(key);
-            return it == result.timingsMs.end() ? 0.0 : it->second;
-        };
         std::string json = "{";
         appendJsonNumber(json, "symbols", stat("symbols"));
         appendJsonNumber(json, "segments", stat("segments"));
@@ -111,7 +102,6 @@ int runTree(const std::vector<std::string>& argv) {
             appendJsonNumber(json, k.c_str(), v);
         appendJsonNumber(json, "write", writeMs, false);
         json += "}}\n";
-        (void)timing;
         std::fwrite(json.data(), 1, json.size(), stdout);
     }
     return kOk;

@@ -30,6 +30,12 @@ fs::path resourcesDir() {
 }
 
 TreeExporter::TreeExporter(fs::path path) : mPath(std::move(path)) {
+    // Like other exporters, write into a folder that does not exist yet (out/forest.obj).
+    if (const fs::path dir = mPath.parent_path(); !dir.empty()) {
+        std::error_code ec;
+        fs::create_directories(dir, ec);
+        if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());
+    }
     std::string ext = mPath.extension().string();
     for (char& c : ext)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -59,13 +65,13 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
     }
     if (!mObj || mInstanceTables) {
         for (const ExportTree& t : trees) {
-            std::size_t meshIndex = mScene.meshes.size();
-            for (std::size_t i = 0; i < mKeepAlive.size(); ++i)
-                if (mKeepAlive[i] == t.mesh) meshIndex = i; // shared meshes are written once
-            if (meshIndex == mScene.meshes.size()) {
+            // Shared meshes are written once.
+            const auto [it, added] = mMeshIndex.try_emplace(t.mesh.get(), mScene.meshes.size());
+            if (added) {
                 mKeepAlive.push_back(t.mesh);
                 mScene.meshes.push_back({t.name, t.mesh.get()});
             }
+            const std::size_t meshIndex = it->second;
             exporter::SceneInstance instance;
             instance.name = t.name;
             instance.mesh = meshIndex;

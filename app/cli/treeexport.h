@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -42,6 +43,7 @@ private:
     bool mInstanceTables = false;
     std::unique_ptr<exporter::ObjStreamWriter> mObjWriter;
     std::vector<std::shared_ptr<const mesh::Mesh>> mKeepAlive;
+    std::unordered_map<const mesh::Mesh*, std::size_t> mMeshIndex; ///< into mScene.meshes
     exporter::SceneDesc mScene;
 };
 

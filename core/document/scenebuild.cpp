@@ -25,8 +25,8 @@ scene::ForestScene makeForestScene(const Project& project) {
                                                          {"format_version", kSpeciesFormatVersion},
                                                          {"name", ps.name},
                                                          {"graph", *ps.graph}});
-            species.graph = parseSpecies(QByteArray::fromStdString(root.toJson()),
-                                         QString::fromStdString(ps.name), project.baseDir);
+            species.graph =
+                speciesFromValue(root, QString::fromStdString(ps.name), project.baseDir);
         } else {
             species.graph = loadSpecies(project.resolve(ps.file));
         }

@@ -37,9 +37,14 @@ graph::SpeciesGraph wrapGrammar(const QString& path) {
 
 graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName,
                                  const QString& baseDir) {
+    return speciesFromValue(Value::parseJson(json.toStdString(), fileName.toStdString()), fileName,
+                            baseDir);
+}
+
+graph::SpeciesGraph speciesFromValue(graph::Value root, const QString& fileName,
+                                     const QString& baseDir) {
     const std::string file = fileName.toStdString();
     const std::string where = file.empty() ? std::string() : file + ": ";
-    Value root = Value::parseJson(json.toStdString(), file);
     if (!root.isObject()) throw InvalidInput(where + "a species file must hold a JSON object");
     Value::Object& obj = root.objectRef();
     upgradeFormat(obj, "sylva-species", kSpeciesFormatVersion, speciesUpgrades(), file, true);

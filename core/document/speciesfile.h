@@ -18,6 +18,10 @@ graph::SpeciesGraph loadSpecies(const QString& path);
 graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName,
                                  const QString& baseDir);
 
+/// The same from JSON already parsed (e.g. a graph inlined in a project file).
+graph::SpeciesGraph speciesFromValue(graph::Value root, const QString& fileName,
+                                     const QString& baseDir);
+
 /// Serialises a graph back to species JSON (stable key order).
 QByteArray serializeSpecies(const graph::SpeciesGraph& graph);
 

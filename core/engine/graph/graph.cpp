@@ -20,6 +20,11 @@ NodeDesc* SpeciesGraph::findNode(const std::string& id) {
     return nullptr;
 }
 
+const std::string& SpeciesGraph::skeletonSource() const {
+    const NodeDesc* out = findNode(output);
+    return out && out->type == "tube_mesh" && out->inputs.size() == 1 ? out->inputs[0] : output;
+}
+
 std::filesystem::path NodeContext::resolve(const std::string& relative) const {
     std::filesystem::path p(relative);
     if (p.is_absolute() || baseDir.empty()) return p;

@@ -62,6 +62,9 @@ struct SpeciesGraph {
 
     const NodeDesc* findNode(const std::string& id) const;
     NodeDesc* findNode(const std::string& id);
+    /// The node whose result is the tree's skeleton before meshing: the output node's single
+    /// input when the output is a tube_mesh, else the output node itself.
+    const std::string& skeletonSource() const;
 };
 
 /// What a node produces. Generators fill `skeleton`, meshing nodes fill `mesh` (and pass the

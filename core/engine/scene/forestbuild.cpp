@@ -43,7 +43,7 @@ SpeciesPlan planSpecies(const SceneSpecies& s) {
         throw InvalidInput("species '" + s.name +
                            "': a forest needs the species' output node to be a tube_mesh with "
                            "one input (the skeleton)");
-    plan.skeletonNode = plan.meshNode->inputs[0];
+    plan.skeletonNode = g.skeletonSource();
     for (const graph::NodeDesc& n : g.nodes)
         plan.hasAdaptNode = plan.hasAdaptNode || n.type == "adapt";
     const graph::NodeDesc* grow = g.findNode(plan.skeletonNode);
@@ -112,9 +112,7 @@ const env::ObstacleScene& emptyScene() {
 
 CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed) {
     graph::Evaluator evaluator(species);
-    const graph::NodeDesc* out = species.findNode(species.output);
-    const std::string node = out && out->inputs.size() == 1 ? out->inputs[0] : species.output;
-    const graph::NodeOutput& result = evaluator.evaluateNode(node, true, seed);
+    const graph::NodeOutput& result = evaluator.evaluateNode(species.skeletonSource(), true, seed);
     CrownShape crown;
     if (!result.skeleton || result.skeleton->empty()) return crown;
     const skel::Skeleton& s = *result.skeleton;

@@ -1,5 +1,6 @@
 #include "document/formatupgrade.h"
 #include "document/project.h"
+#include "document/scenebuild.h"
 #include "engine/util/error.h"
 
 #include <gtest/gtest.h>
@@ -169,4 +170,22 @@ TEST(Project, ImportsTheReferenceSceneDescription) {
     // The imported project saves as a regular project and loads back the same.
     const QByteArray saved = doc::serializeProject(p);
     EXPECT_EQ(doc::serializeProject(doc::parseProject(saved, dir + "/scene.sylva")), saved);
+}
+
+TEST(Project, InlineSpeciesGraphsBecomeSceneSpecies) {
+    const char* json = R"({"format":"sylva-project","format_version":1,
+      "species":[{"name":"bush","graph":{"nodes":[
+          {"id":"grow","type":"lsystem","params":{"grammar":"axiom: F\nF -> FF\n"}},
+          {"id":"mesh","type":"tube_mesh","inputs":["grow"],"params":{"resolution":5}}],
+        "output":"mesh"}}],
+      "instances":[{"species":"bush","position":[1,0,2],"rotation":90,"seed":4}]})";
+    const doc::Project p = doc::parseProject(json, "/proj/inline.sylva");
+    const scene::ForestScene s = doc::makeForestScene(p);
+    ASSERT_EQ(s.species.size(), 1u);
+    EXPECT_EQ(s.species[0].graph.name, "bush");
+    EXPECT_EQ(s.species[0].graph.skeletonSource(), "grow");
+    EXPECT_EQ(s.species[0].graph.findNode("mesh")->params.integer("resolution", 0), 5);
+    ASSERT_EQ(s.handPlaced.size(), 1u);
+    EXPECT_NEAR(s.handPlaced[0].rotation, 3.14159265f / 2.0f, 1e-6f);
+    EXPECT_EQ(s.handPlaced[0].seed, 4u);
 }

@@ -1,0 +1,49 @@
+#include "clishared.h"
+
+#include "engine/util/error.h"
+
+#include <QFile>
+
+#include <charconv>
+#include <cstdio>
+
+namespace sylva::cli {
+
+void appendJsonNumber(std::string& out, const char* key, double value, bool comma) {
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, value).ptr;
+    out += '"';
+    out += key;
+    out += "\":";
+    out.append(buf, end);
+    if (comma) out += ',';
+}
+
+doc::Project loadProjectOrScene(const std::string& path) {
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly)) throw IoError("cannot read " + path);
+    const QByteArray bytes = file.readAll();
+    if (!bytes.contains("\"format\"") && bytes.contains("\"plants\""))
+        return doc::importReferenceScene(QString::fromStdString(path));
+    doc::LoadReport report;
+    doc::Project project = doc::parseProject(bytes, QString::fromStdString(path), &report);
+    for (const std::string& w : report.warnings)
+        std::fprintf(stderr, "sylva-cli: warning: %s\n", w.c_str());
+    return project;
+}
+
+std::string metricsJson(const forest::SceneMetrics& m) {
+    std::string json = "{";
+    appendJsonNumber(json, "trees", static_cast<double>(m.trees));
+    appendJsonNumber(json, "mean_height_m", m.meanHeightM);
+    appendJsonNumber(json, "mean_dbh_m", m.meanDbhM);
+    appendJsonNumber(json, "mean_crown_width_m", m.meanCrownWidthM);
+    appendJsonNumber(json, "wood_volume_m3", m.woodVolumeM3);
+    appendJsonNumber(json, "dry_biomass_kg", m.dryBiomassKg);
+    appendJsonNumber(json, "carbon_kg", m.carbonKg);
+    appendJsonNumber(json, "co2_kg", m.co2Kg);
+    appendJsonNumber(json, "chave_agb_kg", m.chaveAgbKg, false);
+    return json + "}";
+}
+
+} // namespace sylva::cli

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <string>
+
+#include "document/project.h"
+#include "engine/forest/metrics.h"
+
+namespace sylva::cli {
+
+/// Appends `"key":value` (shortest round-trip number) and a comma unless \p comma is false.
+void appendJsonNumber(std::string& out, const char* key, double value, bool comma = true);
+
+/// A `.sylva` project, or the reference implementation's scene description (it has "plants"
+/// and no "format"); warnings of the loader go to stderr.
+doc::Project loadProjectOrScene(const std::string& path);
+
+/// The scene metrics as one JSON object (units in the key names).
+std::string metricsJson(const forest::SceneMetrics& metrics);
+
+} // namespace sylva::cli
