@@ -39,10 +39,11 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
 int runForest(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
-                     "--naive-placement"});
+                     "--naive-placement", "--fsync", "--compact"});
     if (args.positional().size() != 1)
-        throw UsageError("usage: sylva-cli forest <project.sylva> -o out.{obj,glb,fbx} "
-                         "[--camera x,y,z] [--threads N] [--tile i/N] [--stats]");
+        throw UsageError(
+            "usage: sylva-cli forest <project.sylva> -o out.{obj,glb,fbx} "
+            "[--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--fsync] [--compact]");
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
     if (!output) throw UsageError("forest needs an output file: -o out.obj");
@@ -69,7 +70,7 @@ int runForest(const std::vector<std::string>& argv) {
 
     // Ctrl-C is caught from here on, before the exporter creates its temporary file.
     TerminalProgress progress;
-    TreeExporter exporter(*output);
+    TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
     exporter.setInstanceTables(args.flag("--instance-tables"));
     double writeMs = 0;
     scene::ForestStats stats;

@@ -40,11 +40,11 @@ std::string objectName(const std::string& speciesName) {
 
 int runTree(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set"},
-                    {"--stats"});
+                    {"--stats", "--fsync", "--compact"});
     if (args.positional().size() != 1)
         throw UsageError(
             "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{obj,glb,fbx} [-n N] "
-            "[--seed S] [--set node.param=value]... [--stats]");
+            "[--seed S] [--set node.param=value]... [--stats] [--fsync] [--compact]");
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
     if (!output) throw UsageError("tree needs an output file: -o out.obj");
@@ -76,7 +76,7 @@ int runTree(const std::vector<std::string>& argv) {
                            "' produces no mesh; end the graph with a tube_mesh node");
 
     const auto t0 = std::chrono::steady_clock::now();
-    TreeExporter exporter(*output);
+    TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
     exporter.add({ExportTree{objectName(evaluator.graph().name), result.mesh}});
     exporter.commit();
     const double writeMs =

@@ -29,7 +29,7 @@ fs::path resourcesDir() {
     return {};
 }
 
-TreeExporter::TreeExporter(fs::path path) : mPath(std::move(path)) {
+TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path)) {
     // Like other exporters, write into a folder that does not exist yet (out/forest.obj).
     if (const fs::path dir = mPath.parent_path(); !dir.empty()) {
         std::error_code ec;
@@ -41,8 +41,10 @@ TreeExporter::TreeExporter(fs::path path) : mPath(std::move(path)) {
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     mObj = ext == ".obj";
     if (mObj) {
-        exporter::ObjOptions options;
+        exporter::ObjOptions options =
+            obj.compact ? exporter::ObjOptions::compact() : exporter::ObjOptions{};
         options.mtllib = mPath.stem().string() + ".mtl";
+        options.fsync = obj.fsync;
         mObjWriter = std::make_unique<exporter::ObjStreamWriter>(mPath, options);
     } else {
         (void)exporter::sceneFormatFor(mPath); // rejects unknown extensions before any work

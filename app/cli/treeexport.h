@@ -24,12 +24,20 @@ struct ExportTree {
     float scale = 1.0f;
 };
 
+/// How an OBJ stream is written (`--fsync`, `--compact`).
+struct ObjChoices {
+    bool fsync = false;   ///< wait for the disk before the OBJ is renamed into place
+    bool compact = false; ///< exporter::ObjOptions::compact()
+};
+
 /// Writes trees by the output's extension: `.obj` streams batch by batch (plus `<name>.mtl` and
 /// the bark/leaf textures in `textures/` beside it); `.glb`, `.gltf` and `.fbx` go through
 /// Assimp with one node per tree. Nothing appears at the path before commit() succeeds.
 class TreeExporter {
 public:
-    explicit TreeExporter(std::filesystem::path path);
+    /// \param obj how the OBJ stream is written; the other files are small and always
+    /// written durably.
+    explicit TreeExporter(std::filesystem::path path, ObjChoices obj = {});
     ~TreeExporter();
     void add(const std::vector<ExportTree>& trees);
     /// Finishes the file(s); returns the paths written (main file first).

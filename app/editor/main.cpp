@@ -16,6 +16,7 @@
 #include <QTimer>
 #include <QTranslator>
 
+#include "engine/util/memorypolicy.h"
 #include "ui/mainwindow.h"
 #include "ui/viewport.h"
 
@@ -49,6 +50,7 @@ void fail(const QString& message) {
 } // namespace
 
 int main(int argc, char* argv[]) {
+    sylva::keepFreedMemory(); // re-generation on every edit reuses the previous tree's pages
     sylva::ui::Viewport::installDefaultSurfaceFormat();
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("Sylva"));

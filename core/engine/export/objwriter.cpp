@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <future>
+#include <memory>
 
 #if defined(__linux__)
 #include <fcntl.h>
@@ -27,55 +28,72 @@ constexpr char kDigitPairs[201] = "000102030405060708091011121314151617181920212
                                   "50515253545556575859606162636465666768697071727374"
                                   "75767778798081828384858687888990919293949596979899";
 
+inline int digitCount(std::uint64_t v) {
+    int n = 1;
+    for (;;) {
+        if (v < 10) return n;
+        if (v < 100) return n + 1;
+        if (v < 1000) return n + 2;
+        if (v < 10000) return n + 3;
+        v /= 10000;
+        n += 4;
+    }
+}
+
+// Writes the digits straight into place (counted first), two at a time from the last.
 inline char* writeUint(char* p, std::uint64_t v) {
-    char tmp[24];
-    char* e = tmp + sizeof(tmp);
-    char* s = e;
+    char* const end = p + digitCount(v);
+    char* c = end;
     while (v >= 100) {
         const auto r = static_cast<std::size_t>(v % 100) * 2;
         v /= 100;
-        *--s = kDigitPairs[r + 1];
-        *--s = kDigitPairs[r];
+        *--c = kDigitPairs[r + 1];
+        *--c = kDigitPairs[r];
     }
     if (v >= 10) {
         const auto r = static_cast<std::size_t>(v) * 2;
-        *--s = kDigitPairs[r + 1];
-        *--s = kDigitPairs[r];
+        *--c = kDigitPairs[r + 1];
+        *--c = kDigitPairs[r];
     } else {
-        *--s = static_cast<char>('0' + v);
+        *--c = static_cast<char>('0' + v);
     }
-    const auto n = static_cast<std::size_t>(e - s);
-    std::memcpy(p, s, n);
-    return p + n;
+    return end;
 }
 
-// Appends into a std::string through a stack block, so the hot loops write to plain memory.
-class BlockWriter {
+// Copies a short text (at most 24 bytes) with one fixed-size copy, which compiles to a few
+// moves instead of a call; the destination has room to spare (BlockWriter::room()).
+inline char* copyShort(char* to, const char* from, std::size_t len) {
+    std::memcpy(to, from, 24);
+    return to + len;
+}
+
+// A growable text buffer that the hot loops write into directly: no staging copy, and unlike
+// std::string::resize no zero-fill of the room it reserves.
+class TextBuffer {
 public:
-    explicit BlockWriter(std::string& out) : mOut(out) {}
-    ~BlockWriter() { flush(); }
-    BlockWriter(const BlockWriter&) = delete;
-    BlockWriter& operator=(const BlockWriter&) = delete;
+    std::string_view view() const { return {mData.get(), mSize}; }
+    void reserve(std::size_t bytes) {
+        if (bytes <= mCapacity) return;
+        auto grown = std::make_unique_for_overwrite<char[]>(bytes);
+        if (mSize > 0) std::memcpy(grown.get(), mData.get(), mSize);
+        mData = std::move(grown);
+        mCapacity = bytes;
+    }
     // Returns a pointer with at least 512 bytes of room; commit the end with done().
     char* room() {
-        if (mPos + 512 > kSize) flush();
-        return mBlock + mPos;
+        if (mSize + 512 > mCapacity) reserve(std::max<std::size_t>(2 * mCapacity, mSize + 4096));
+        return mData.get() + mSize;
     }
-    void done(char* end) { mPos = static_cast<std::size_t>(end - mBlock); }
+    void done(char* end) { mSize = static_cast<std::size_t>(end - mData.get()); }
     void text(std::string_view s) {
-        flush();
-        mOut.append(s);
-    }
-    void flush() {
-        mOut.append(mBlock, mPos);
-        mPos = 0;
+        reserve(mSize + s.size() + 512);
+        std::memcpy(mData.get() + mSize, s.data(), s.size());
+        mSize += s.size();
     }
 
 private:
-    static constexpr std::size_t kSize = 1 << 15;
-    std::string& mOut;
-    char mBlock[kSize];
-    std::size_t mPos = 0;
+    std::unique_ptr<char[]> mData;
+    std::size_t mSize = 0, mCapacity = 0;
 };
 
 enum class Section { Header, V, VT, VN, F };
@@ -98,7 +116,7 @@ std::string objectName(const std::string& name) {
     return s;
 }
 
-void formatTask(std::string& out, const Task& t, const ObjOptions& o) {
+void formatTask(TextBuffer& w, const Task& t, const ObjOptions& o) {
     const mesh::Mesh& m = *t.object->mesh;
     // Typical line lengths, so the part grows without reallocation copies in most cases.
     const std::size_t lines = t.end - t.begin;
@@ -106,8 +124,7 @@ void formatTask(std::string& out, const Task& t, const ObjOptions& o) {
                                 : t.section == Section::VT ? 4 + 2 * (o.uvDecimals + 3)
                                 : t.section == Section::VN ? 4 + 3 * (o.normalDecimals + 4)
                                                            : 3 + 3 * (o.positionDecimals + 6);
-    out.reserve(out.size() + lines * perLine);
-    BlockWriter w(out);
+    w.reserve(lines * perLine + 1024);
     switch (t.section) {
     case Section::Header:
         w.text("o " + objectName(t.object->name) + "\n");
@@ -169,6 +186,8 @@ void formatTask(std::string& out, const Task& t, const ObjOptions& o) {
                 for (const mesh::Submesh& s : m.submeshes)
                     switches.emplace_back(s.firstIndex / 3, s.material);
         }
+        const bool sameIndices =
+            (!t.hasUv || t.base.vt == t.base.v) && (!t.hasNormal || t.base.vn == t.base.v);
         std::size_t next = 0;
         while (next < switches.size() && switches[next].first < t.begin)
             ++next;
@@ -188,23 +207,34 @@ void formatTask(std::string& out, const Task& t, const ObjOptions& o) {
                     number[0] = '-';
                     const auto len =
                         static_cast<std::size_t>(writeUint(number + 1, t.vertices - idx) - number);
-                    std::memcpy(c, number, len);
-                    c += len;
+                    c = copyShort(c, number, len);
                     if (t.hasUv || t.hasNormal) {
                         *c++ = '/';
-                        if (t.hasUv) {
-                            std::memcpy(c, number, len);
-                            c += len;
-                        }
+                        if (t.hasUv) c = copyShort(c, number, len);
                         if (t.hasNormal) {
                             *c++ = '/';
-                            std::memcpy(c, number, len);
-                            c += len;
+                            c = copyShort(c, number, len);
                         }
                     }
                     continue;
                 }
+                char* const number = c;
                 c = writeUint(c, t.base.v + idx);
+                if (sameIndices) {
+                    // v, vt and vn numbered alike (the usual case): one text, copied.
+                    const auto len = static_cast<std::size_t>(c - number);
+                    char text[24]; // copies must not overlap their source
+                    std::memcpy(text, number, sizeof text);
+                    if (t.hasUv || t.hasNormal) {
+                        *c++ = '/';
+                        if (t.hasUv) c = copyShort(c, text, len);
+                        if (t.hasNormal) {
+                            *c++ = '/';
+                            c = copyShort(c, text, len);
+                        }
+                    }
+                    continue;
+                }
                 if (t.hasUv || t.hasNormal) {
                     *c++ = '/';
                     if (t.hasUv) c = writeUint(c, t.base.vt + idx);
@@ -265,8 +295,8 @@ std::vector<Task> makeTasks(const std::vector<ObjObject>& objects, ObjOffsets& o
     return tasks;
 }
 
-std::vector<std::string> formatParts(const std::vector<Task>& tasks, const ObjOptions& o) {
-    std::vector<std::string> parts(tasks.size());
+std::vector<TextBuffer> formatParts(const std::vector<Task>& tasks, const ObjOptions& o) {
+    std::vector<TextBuffer> parts(tasks.size());
 #pragma omp parallel for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < static_cast<std::int64_t>(tasks.size()); ++i)
         formatTask(parts[static_cast<std::size_t>(i)], tasks[static_cast<std::size_t>(i)], o);
@@ -274,14 +304,14 @@ std::vector<std::string> formatParts(const std::vector<Task>& tasks, const ObjOp
 }
 
 std::string formatTasks(const std::vector<Task>& tasks, const ObjOptions& o) {
-    const std::vector<std::string> parts = formatParts(tasks, o);
+    const std::vector<TextBuffer> parts = formatParts(tasks, o);
     std::size_t total = 0;
-    for (const std::string& s : parts)
-        total += s.size();
+    for (const TextBuffer& part : parts)
+        total += part.view().size();
     std::string out;
     out.reserve(total);
-    for (const std::string& s : parts)
-        out += s;
+    for (const TextBuffer& part : parts)
+        out += part.view();
     return out;
 }
 
@@ -295,34 +325,36 @@ namespace {
 template <int D> char* formatFixedT(char* p, double value) {
     constexpr std::uint64_t scale = kPow10[D];
     const double scaled = value * static_cast<double>(scale);
-    if (!(std::abs(scaled) < 9.0e18)) return std::to_chars(p, p + 40, value).ptr;
-    const double r = std::nearbyint(scaled);
-    if (r == 0.0) {
+    const double magnitude = std::abs(scaled);
+    if (!(magnitude < 9.0e18)) return std::to_chars(p, p + 40, value).ptr;
+    // Rounded half away from zero (a library nearbyint() is a call per number); the
+    // difference is exact in double, so 0.49999999999999994 does not round up.
+    // Both tests below are as random as the data: written without branches.
+    auto q = static_cast<std::uint64_t>(magnitude);
+    q += static_cast<std::uint64_t>(magnitude - static_cast<double>(q) >= 0.5);
+    if (q == 0) {
         *p++ = '0';
         return p;
     }
-    std::uint64_t q;
-    if (r < 0.0) {
-        *p++ = '-';
-        q = static_cast<std::uint64_t>(-r);
-    } else {
-        q = static_cast<std::uint64_t>(r);
-    }
-    p = writeUint(p, q / scale);
-    std::uint64_t fp = q % scale;
+    *p = '-';
+    p += scaled < 0.0 ? 1 : 0;
+    const std::uint64_t whole = q / scale;
+    std::uint64_t fp = q - whole * scale;
+    p = writeUint(p, whole);
     if (fp != 0) {
-        int d = D;
-        while (fp % 10 == 0) {
-            fp /= 10;
-            --d;
-        }
+        // All D decimals from the last, two at a time, then the trailing zeros dropped.
         *p++ = '.';
-        char* end = p + d;
+        char* end = p + D;
         char* c = end;
-        while (c > p) {
-            *--c = static_cast<char>('0' + fp % 10);
-            fp /= 10;
+        for (int d = D; d >= 2; d -= 2) {
+            const auto r = static_cast<std::size_t>(fp % 100) * 2;
+            fp /= 100;
+            *--c = kDigitPairs[r + 1];
+            *--c = kDigitPairs[r];
         }
+        if constexpr (D % 2 == 1) *--c = static_cast<char>('0' + fp);
+        while (end[-1] == '0')
+            --end;
         p = end;
     }
     return p;
@@ -360,7 +392,9 @@ void appendObj(std::string& out, const ObjObject& object, ObjOffsets& offsets,
     const std::vector<Task> tasks = makeTasks(one, offsets, options, static_cast<std::size_t>(-1));
     for (Task t : tasks) {
         t.object = &object;
-        formatTask(out, t, options);
+        TextBuffer text;
+        formatTask(text, t, options);
+        out += text.view();
     }
 }
 
@@ -386,11 +420,12 @@ struct ObjStreamWriter::Background {
 };
 
 ObjStreamWriter::ObjStreamWriter(const std::filesystem::path& path, ObjOptions options)
-    : mFile(std::make_unique<AtomicFile>(path)), mOptions(std::move(options)),
-      mWriter(std::make_unique<Background>()) {
+    : mFile(std::make_unique<AtomicFile>(path,
+                                         options.fsync ? Durability::Durable : Durability::Atomic)),
+      mOptions(std::move(options)), mWriter(std::make_unique<Background>()) {
     checkOptions(mOptions);
 #if defined(__linux__)
-    mWriter->fd = ::open(mFile->temporaryPath().c_str(), O_WRONLY | O_CLOEXEC);
+    if (mOptions.fsync) mWriter->fd = ::open(mFile->temporaryPath().c_str(), O_WRONLY | O_CLOEXEC);
 #endif
     if (!mOptions.mtllib.empty()) {
         const std::string head = "mtllib " + mOptions.mtllib + "\n";
@@ -410,16 +445,16 @@ void ObjStreamWriter::waitForWriter() {
 
 void ObjStreamWriter::add(const std::vector<ObjObject>& objects) {
     const std::vector<Task> tasks = makeTasks(objects, mOffsets, mOptions, kChunk);
-    std::vector<std::string> parts = formatParts(tasks, mOptions);
+    std::vector<TextBuffer> parts = formatParts(tasks, mOptions);
     std::uint64_t bytes = 0;
-    for (const std::string& part : parts)
-        bytes += part.size();
+    for (const TextBuffer& part : parts)
+        bytes += part.view().size();
     waitForWriter();
     mBytes += bytes;
     const std::uint64_t end = mBytes;
     mWriter->pending = std::async(std::launch::async, [this, end, parts = std::move(parts)] {
-        for (const std::string& part : parts)
-            mFile->write(part);
+        for (const TextBuffer& part : parts)
+            mFile->write(part.view());
 #if defined(__linux__)
         // Start writing back what is certainly out of stdio's buffer (its size is far below
         // 1 MiB), so the disk works while the next batches are formatted.

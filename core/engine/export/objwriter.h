@@ -37,6 +37,10 @@ struct ObjOptions {
     /// last v/vt/vn: standard OBJ, shorter in large files (a forest's absolute indices reach
     /// 8 digits) and the same for every instance of a mesh. Assimp and Blender read them.
     bool relativeIndices = false;
+    /// Files: wait for the disk (fsync) before the rename (see sylva::Durability). Off by
+    /// default: the export is atomic either way, and a multi-gigabyte forest would otherwise
+    /// spend most of its time waiting for the disk.
+    bool fsync = false;
 
     /// Smaller files for large forests: positions to 0.1 mm (4 decimals), normals to 3 decimals
     /// (direction error below 0.1°), uvs to 4 decimals (a texel of a 10k texture), relative
@@ -70,9 +74,9 @@ std::string formatObj(const std::vector<ObjObject>& objects, const ObjOptions& o
 
 /// Streams objects into an OBJ file through AtomicFile: a forest larger than memory can be
 /// written batch by batch (each batch formatted in parallel). Writing is double-buffered: a
-/// background thread writes batch k while batch k+1 is formatted, and asks the kernel to start
-/// writing the file back to disk as it goes (Linux), so that commit()'s fsync waits only for
-/// the tail. Nothing appears at the path unless commit() runs.
+/// background thread writes batch k while batch k+1 is formatted. With options.fsync it also
+/// asks the kernel to start writing the file back to disk as it goes (Linux), so that
+/// commit()'s fsync waits only for the tail. Nothing appears at the path unless commit() runs.
 class ObjStreamWriter {
 public:
     ObjStreamWriter(const std::filesystem::path& path, ObjOptions options = {});

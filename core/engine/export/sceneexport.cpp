@@ -1,6 +1,8 @@
 #include "engine/export/sceneexport.h"
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <unordered_map>
 
@@ -9,6 +11,7 @@
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
+#include "engine/export/fbxfix.h"
 #include "engine/export/objwriter.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
@@ -164,29 +167,34 @@ SceneFormat sceneFormatFor(const std::filesystem::path& path) {
 
 void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneFormat format) {
     const std::unique_ptr<aiScene> scene = buildScene(desc);
-    const char* id = format == SceneFormat::Glb    ? "glb2"
-                     : format == SceneFormat::Gltf ? "gltf2"
-                     : format == SceneFormat::Fbx  ? "fbxa"
-                                                   : "fbx";
+    const char* id = format == SceneFormat::Glb        ? "glb2"
+                     : format == SceneFormat::Gltf     ? "gltf2"
+                     : format == SceneFormat::FbxAscii ? "fbxa"
+                                                       : "fbx";
     Assimp::Exporter exporter;
-    if (format == SceneFormat::Fbx || format == SceneFormat::FbxBinary) {
+    if (format == SceneFormat::Fbx || format == SceneFormat::FbxAscii) {
         // Assimp's FBX writer seeks back to patch block offsets, which its memory blobs do not
-        // support; it writes a temporary beside the target that is renamed on success.
+        // support: it writes a temporary beside the target, which is read back, repaired
+        // (binary) or given its unit (both), and written atomically.
         std::string tempName(1, '.'); // appended: GCC 12 warns falsely on "." + std::string
         tempName.append(path.filename().string());
-        tempName.append(".tmp.fbx");
+        tempName.append(".assimp.fbx");
         const std::filesystem::path temp = path.parent_path() / tempName;
-        if (exporter.Export(scene.get(), id, temp.string()) != AI_SUCCESS) {
-            std::error_code ec;
-            std::filesystem::remove(temp, ec);
+        struct RemoveTemp {
+            const std::filesystem::path& path;
+            ~RemoveTemp() {
+                std::error_code ec;
+                std::filesystem::remove(path, ec);
+            }
+        } removeTemp{temp};
+        if (exporter.Export(scene.get(), id, temp.string()) != AI_SUCCESS)
             throw IoError("cannot export " + path.string() + ": " + exporter.GetErrorString());
-        }
-        std::error_code ec;
-        std::filesystem::rename(temp, path, ec);
-        if (ec) {
-            std::filesystem::remove(temp, ec);
-            throw IoError("cannot replace " + path.string());
-        }
+        std::ifstream in(temp, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        if (!in.good() && !in.eof()) throw IoError("cannot read back " + temp.string());
+        writeFileAtomically(path, format == SceneFormat::Fbx
+                                      ? repairAssimpFbxBinary(bytes)
+                                      : setFbxAsciiUnitScale(std::move(bytes)));
         return;
     }
     const aiExportDataBlob* blob = exporter.ExportToBlob(scene.get(), id);

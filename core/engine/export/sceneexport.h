@@ -37,13 +37,15 @@ struct SceneDesc {
 enum class SceneFormat {
     Glb,  ///< glTF 2.0 binary (.glb)
     Gltf, ///< glTF 2.0 text with an external .bin (two files)
-    Fbx,  ///< Autodesk FBX 7.4 ASCII (read back by Assimp in the tests)
-    /// Autodesk FBX binary. Assimp 5.2.5 cannot read its own binary FBX back ("block offset is
-    /// out of range", also with the assimp CLI), so this one is not verified here.
-    FbxBinary,
+    /// Autodesk FBX 7.5 binary, the form Blender, Unity and Unreal import. Assimp 5.2.5 writes
+    /// it without the null records FBX 7.5 requires (nobody can read that back), so the bytes
+    /// are repaired (repairAssimpFbxBinary) before they are written; units: metres.
+    Fbx,
+    /// Autodesk FBX 7.4 ASCII (Blender does not import ASCII FBX; Maya and Assimp do).
+    FbxAscii,
 };
 
-/// The format for a file name's extension (.glb, .gltf, .fbx = ASCII FBX); throws InvalidInput
+/// The format for a file name's extension (.glb, .gltf, .fbx = binary FBX); throws InvalidInput
 /// otherwise.
 SceneFormat sceneFormatFor(const std::filesystem::path& path);
 

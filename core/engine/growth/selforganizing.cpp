@@ -32,9 +32,9 @@ glm::quat lateralFrame(const glm::quat& q, float branchAngle) {
     return q * glm::angleAxis(branchAngle, glm::vec3(0, 0, 1));
 }
 
-/// Minimal rotation turning the heading of \p q into \p dir, then the phyllotaxis roll.
-glm::quat steer(const glm::quat& q, const glm::vec3& dir, const glm::quat& roll) {
-    const glm::vec3 h = skel::headingOf(q);
+/// Minimal rotation turning the heading \p h of \p q into \p dir, then the phyllotaxis roll.
+glm::quat steer(const glm::quat& q, const glm::vec3& h, const glm::vec3& dir,
+                const glm::quat& roll) {
     glm::quat r = glm::rotation(h, dir);
     if (glm::dot(h, dir) < -0.9999f) r = glm::angleAxis(kPi, skel::leftOf(q));
     return glm::normalize(r * q * roll);
@@ -53,9 +53,11 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
     return l > 1e-6f ? v / l : fallback;
 }
 
-/// The 26 neighbour voxels: unit directions and their cells in ShadowGrid::neighbourhood().
+/// The 26 neighbour voxels: unit directions (also as separate x/y/z arrays, so the cone test
+/// of all 26 vectorizes) and their cells in ShadowGrid::neighbourhood().
 struct Neighbours {
     glm::vec3 dir[26];
+    float dx[26], dy[26], dz[26];
     int cell[26]; ///< index into ShadowGrid::neighbourhood()
     Neighbours() {
         int k = 0;
@@ -65,6 +67,9 @@ struct Neighbours {
                     if (x == 0 && y == 0 && z == 0) continue;
                     cell[k] = (y + 1) * 9 + (x + 1) * 3 + (z + 1);
                     dir[k] = glm::normalize(glm::vec3(x, y, z));
+                    dx[k] = dir[k].x;
+                    dy[k] = dir[k].y;
+                    dz[k] = dir[k].z;
                     ++k;
                 }
     }
@@ -308,16 +313,30 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
             full[t] = mTrees[t].params.fullExposure;
             a[t] = mTrees[t].params.shadowA;
         }
+        // Two passes: the grid cell of every bud first (arithmetic), then the scattered reads,
+        // each prefetched kAhead buds early so that their cache misses overlap.
+        constexpr std::int64_t kNoBud = -2, kAhead = 24;
+        mCells.resize(n);
 #pragma omp parallel for schedule(static) if (count > 1024)
         for (std::int64_t k = 0; k < count; ++k) {
             const auto i = static_cast<std::size_t>(k);
-            const bool ta = terminalAlive(i), aa = axillaryAlive(i);
-            if (!ta && !aa) continue;
-            const glm::ivec3 v = grid.voxelOf(mM.end[i]);
+            mCells[i] = terminalAlive(i) || axillaryAlive(i) ? grid.cellOf(grid.voxelOf(mM.end[i]))
+                                                             : kNoBud;
+        }
+        const bool anyBlocked = grid.anyBlocked();
+#pragma omp parallel for schedule(static) if (count > 1024)
+        for (std::int64_t k = 0; k < count; ++k) {
+            const auto i = static_cast<std::size_t>(k);
+            if (k + kAhead < count) grid.prefetchCell(mCells[i + kAhead]);
+            const std::int64_t cell = mCells[i];
+            if (cell == kNoBud) continue;
             const std::uint16_t t = mM.tree[i];
-            const double q = grid.blocked(v) ? 0.0 : std::max(full[t] - grid.shadow(v) + a[t], 0.0);
-            if (ta) terminal[i] = q;
-            if (aa) axillary[i] = q;
+            const double q =
+                anyBlocked && grid.blocked(grid.voxelOf(mM.end[i]))
+                    ? 0.0
+                    : std::max(full[t] - grid.rawAt(cell) / ShadowGrid::kScale + a[t], 0.0);
+            if (terminalAlive(i)) terminal[i] = q;
+            if (axillaryAlive(i)) axillary[i] = q;
         }
         return;
     }
@@ -394,23 +413,29 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
     }
 }
 
-glm::vec3 SelfOrganizingSimulation::optimalShadowDirection(const glm::vec3& pos,
+glm::vec3 SelfOrganizingSimulation::optimalShadowDirection(const glm::ivec3& voxel,
                                                            const glm::vec3& dir,
                                                            float cosHalf) const {
     std::int32_t s[27];
-    mShadow->neighbourhood(mShadow->voxelOf(pos), s);
-    std::int32_t best = std::numeric_limits<std::int32_t>::max();
+    mShadow->neighbourhood(voxel, s);
+    // Branch-free (which neighbours pass is as random as the shadow): every neighbour outside
+    // the cone or opaque counts as kOpaque, the least shadow wins, and the directions of all
+    // neighbours that tie for it are summed in neighbour order (as a running "best so far"
+    // loop would, so the sum is bit for bit the same).
+    std::int32_t value[26];
+    for (int k = 0; k < 26; ++k) {
+        const float d =
+            kNeighbours.dx[k] * dir.x + kNeighbours.dy[k] * dir.y + kNeighbours.dz[k] * dir.z;
+        value[k] = d < cosHalf ? ShadowGrid::kOpaque : s[kNeighbours.cell[k]];
+    }
+    std::int32_t best = ShadowGrid::kOpaque;
+    for (int k = 0; k < 26; ++k)
+        best = std::min(best, value[k]);
+    if (best == ShadowGrid::kOpaque) return dir;
     glm::vec3 sum(0.0f);
     for (int k = 0; k < 26; ++k) {
-        if (glm::dot(kNeighbours.dir[k], dir) < cosHalf) continue;
-        const std::int32_t value = s[kNeighbours.cell[k]];
-        if (value == ShadowGrid::kOpaque) continue;
-        if (value < best) {
-            best = value;
-            sum = kNeighbours.dir[k];
-        } else if (value == best) {
-            sum += kNeighbours.dir[k];
-        }
+        const float w = value[k] == best ? 1.0f : 0.0f;
+        sum += w * kNeighbours.dir[k];
     }
     return safeNormalize(sum, dir);
 }
@@ -420,7 +445,6 @@ void SelfOrganizingSimulation::shed(const std::vector<std::uint8_t>& removed) {
     const bool incremental = mShadow && !mOptions.naiveShadow;
     const bool sc = mEnv == SoEnvironment::SpaceColonization;
     mRemap.resize(n);
-    mSources.clear();
     std::int32_t next = 0;
     for (std::size_t i = 0; i < n; ++i) {
         if (removed[i]) {
@@ -485,7 +509,8 @@ void SelfOrganizingSimulation::shed(const std::vector<std::uint8_t>& removed) {
         mOptimalTerminal.resize(kept);
         mOptimalAxillary.resize(kept);
     }
-    if (incremental) mShadow->applyBatch(mSources, mKernels);
+    // The shed pyramids stay in the grid until the end of the cycle (step()): the environment
+    // of this cycle's buds is the one they perceived when it began.
 }
 
 void SelfOrganizingSimulation::allocate(const std::vector<double>& gathered,
@@ -548,9 +573,10 @@ std::int32_t SelfOrganizingSimulation::makeShoot(const Growing& g, glm::vec3* en
         const glm::vec3 end = pos + d * len;
         // A shoot that runs into the ground or an obstacle stops there.
         if (end.y < ground ||
-            (mShadow ? mShadow->blocked(mShadow->voxelOf(end)) : hitsObstacle(pos, end)))
+            (mShadow ? mShadow->anyBlocked() && mShadow->blocked(mShadow->voxelOf(end))
+                     : hitsObstacle(pos, end)))
             return k;
-        frame = steer(frame, d, mRoll[t]);
+        frame = steer(frame, h, d, mRoll[t]);
         ends[k] = end;
         frames[k] = frame;
         pos = end;
@@ -635,6 +661,7 @@ void SelfOrganizingSimulation::step() {
     for (std::size_t t = 0; t < mTrees.size(); ++t)
         if (mCycle == mTotalCycles - mTrees[t].params.cycles) plant(t);
     if (mShadow && mOptions.naiveShadow) rebuildShadow();
+    mSources.clear(); // shadow changes of this cycle: shed pyramids, then new ones
 
     evaluateLight(mTerminalLight, mAxillaryLight);
     const Clock::time_point t1 = Clock::now();
@@ -643,7 +670,6 @@ void SelfOrganizingSimulation::step() {
     gatherLight(mM.topology(), mTerminalLight, mAxillaryLight, mGathered, mInternodes);
     if (markShed(mM.topology(), mGathered, mInternodes, mShedThreshold, mRemoved)) {
         shed(mRemoved);
-        if (mShadow && mOptions.naiveShadow) rebuildShadow();
         mGathered.resize(mM.size());
         mInternodes.resize(mM.size());
         gatherLight(mM.topology(), mTerminalLight, mAxillaryLight, mGathered, mInternodes);
@@ -693,7 +719,18 @@ void SelfOrganizingSimulation::step() {
     }
     mShootEnd.resize(slots);
     mShootFrame.resize(slots);
+    // Optimal directions first (scattered grid reads, fetched a few buds ahead), then shoots.
     const auto count = static_cast<std::int64_t>(mGrowing.size());
+    const Clock::time_point s0 = Clock::now();
+    constexpr std::int64_t kAhead = 8;
+    if (mShadow) {
+        mBudVoxels.resize(mGrowing.size());
+#pragma omp parallel for schedule(static) if (count > 1024)
+        for (std::int64_t k = 0; k < count; ++k) {
+            const auto b = static_cast<std::size_t>(k);
+            mBudVoxels[b] = mShadow->voxelOf(mM.end[sz(mGrowing[b].metamer)]);
+        }
+    }
 #pragma omp parallel for schedule(dynamic, 64) if (count > 256)
     for (std::int64_t k = 0; k < count; ++k) {
         Growing& g = mGrowing[static_cast<std::size_t>(k)];
@@ -704,23 +741,34 @@ void SelfOrganizingSimulation::step() {
             g.optimal = g.lateral ? mOptimalAxillary[i] : mOptimalTerminal[i];
         } else {
             const std::uint16_t t = mM.tree[i];
+            if (k + kAhead < count)
+                mShadow->prefetchNeighbourhood(mBudVoxels[static_cast<std::size_t>(k + kAhead)]);
             const glm::quat f = g.lateral ? mM.frame[i] * mLateralTurn[t] : mM.frame[i];
-            g.optimal = optimalShadowDirection(mM.end[i], skel::headingOf(f), mCosHalfCone[t]);
+            g.optimal = optimalShadowDirection(mBudVoxels[static_cast<std::size_t>(k)],
+                                               skel::headingOf(f), mCosHalfCone[t]);
         }
+    }
+    const Clock::time_point s1 = Clock::now();
+#pragma omp parallel for schedule(dynamic, 64) if (count > 256)
+    for (std::int64_t k = 0; k < count; ++k) {
+        Growing& g = mGrowing[static_cast<std::size_t>(k)];
         g.made = makeShoot(g, mShootEnd.data() + g.slot, mShootFrame.data() + g.slot);
     }
+    const Clock::time_point s2 = Clock::now();
     commitShoots();
     const Clock::time_point t4 = Clock::now();
 
-    // Environment update: only the new metamers.
+    // Environment update: only the metamers shed and added this cycle, in one batch.
     const std::size_t n1 = mM.size();
     if (mShadow && !mOptions.naiveShadow) {
-        mSources.resize(n1 - n0);
+        const std::size_t removed = mSources.size();
+        mSources.resize(removed + (n1 - n0));
         const auto added = static_cast<std::int64_t>(n1 - n0);
 #pragma omp parallel for schedule(static) if (added > 1024)
         for (std::int64_t k = 0; k < added; ++k) {
             const std::size_t i = n0 + static_cast<std::size_t>(k);
-            mSources[static_cast<std::size_t>(k)] = {mShadow->voxelOf(mM.end[i]), 1, mM.tree[i]};
+            mSources[removed + static_cast<std::size_t>(k)] = {mShadow->voxelOf(mM.end[i]), 1,
+                                                               mM.tree[i]};
         }
         mShadow->applyBatch(mSources, mKernels);
     }
@@ -733,7 +781,8 @@ void SelfOrganizingSimulation::step() {
     if (mShadow && mOptions.naiveShadow) rebuildShadow();
     ++mCycle;
     const Clock::time_point t5 = Clock::now();
-    mTimings = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5), ms(t0, t5)};
+    mTimings = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(s0, s1),
+                ms(s1, s2), ms(s2, t4), ms(t4, t5), ms(t0, t5)};
 }
 
 std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {

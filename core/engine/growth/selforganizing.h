@@ -137,10 +137,13 @@ struct SimulationOptions {
 /// Wall-clock milliseconds of the stages of the last step() (for the benchmark's profile).
 struct CycleTimings {
     double light = 0;       ///< bud light from the environment
-    double shedding = 0;    ///< gather, shed, compaction (and the shed pyramids' removal)
+    double shedding = 0;    ///< gather, shed, compaction
     double allocation = 0;  ///< Borchert–Honda or priority
-    double shoots = 0;      ///< optimal directions and new metamers
-    double environment = 0; ///< new pyramids / marker removal
+    double shoots = 0;      ///< optimal directions and new metamers (the three below)
+    double directions = 0;  ///<   of which: buds' optimal growth directions
+    double making = 0;      ///<   of which: the shoots' metamers (parallel, into scratch)
+    double commit = 0;      ///<   of which: appending them to the arrays
+    double environment = 0; ///< shadow update (shed and new pyramids) / marker removal
     double total = 0;
 };
 
@@ -193,7 +196,8 @@ private:
     void plant(std::size_t treeIndex);
     void addSource(std::size_t metamer, int sign);
     void rebuildShadow();
-    glm::vec3 optimalShadowDirection(const glm::vec3& pos, const glm::vec3& dir,
+    /// Least shadowed direction among the 26 neighbours of the bud's voxel inside its cone.
+    glm::vec3 optimalShadowDirection(const glm::ivec3& voxel, const glm::vec3& dir,
                                      float cosHalf) const;
     /// A bud that grows this cycle and the slots its shoot fills.
     struct Growing {
@@ -208,7 +212,8 @@ private:
         bool seedling = false; ///< leader of a tree that perceives nothing yet
     };
     /// Removes the marked metamers in place (stable), keeping the bud light and the space
-    /// colonization directions aligned; returns the shed pyramids for the incremental update.
+    /// colonization directions aligned; queues their pyramids' removal in mSources for the
+    /// cycle's one shadow update at its end.
     void shed(const std::vector<std::uint8_t>& removed);
     std::int32_t appendMetamer(std::int32_t parent, bool lateral, const glm::vec3& end,
                                const glm::quat& frame, std::uint16_t tree, std::uint16_t order);
@@ -248,6 +253,8 @@ private:
     // Per-cycle buffers, kept to avoid reallocating them every cycle.
     std::vector<double> mTerminalLight, mAxillaryLight, mGathered;
     std::vector<std::int32_t> mInternodes, mRemap;
+    std::vector<std::int64_t> mCells;   ///< shadow grid cell of each metamer's buds (light pass)
+    std::vector<glm::ivec3> mBudVoxels; ///< voxel of each growing bud (optimal directions)
     std::vector<std::uint8_t> mRemoved;
     Vigour mVigour;
     std::vector<Growing> mGrowing;

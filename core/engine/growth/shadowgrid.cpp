@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include "engine/util/error.h"
+#include "engine/util/hugepages.h"
 
 namespace sylva::growth {
 
@@ -93,7 +94,12 @@ void ShadowGrid::resize(const glm::ivec3& lo, const glm::ivec3& hi) {
     if (count > (std::size_t{1} << 31))
         throw LimitExceeded("shadow grid would need " + std::to_string(count) +
                             " voxels; use a larger voxel_size");
-    std::vector<std::int32_t> values(count, 0);
+    // Bud lookups land anywhere in a grid of tens of MB: with 4 KiB pages nearly every one is
+    // a TLB miss too. Huge pages are advised before the zero fill touches the memory.
+    std::vector<std::int32_t> values;
+    values.reserve(count);
+    adviseHugePages(values);
+    values.resize(count, 0);
     std::vector<std::uint8_t> blockedNew(count, 0);
     for (int y = mLo.y; y < mLo.y + mDim.y; ++y)
         for (int x = mLo.x; x < mLo.x + mDim.x; ++x) {

@@ -72,6 +72,36 @@ public:
     /// bounds test and nine contiguous triples in the common case.
     void neighbourhood(const glm::ivec3& v, std::int32_t (&out)[27]) const;
 
+    /// Index of the value raw(v) reads (below the floor: the floor row's), or −1 outside the
+    /// grid, for lookups split in two passes: first every index (arithmetic only), then the
+    /// values with prefetchCell() a few lookups ahead. Bud lookups are scattered over a grid of
+    /// tens of MB, so overlapping their cache misses is most of their cost.
+    std::int64_t cellOf(const glm::ivec3& v) const {
+        glm::ivec3 c = v;
+        if (c.y < mFloor) c.y = mFloor;
+        return inside(c) ? static_cast<std::int64_t>(index(c)) : -1;
+    }
+    std::int32_t rawAt(std::int64_t cell) const {
+        return cell < 0 ? 0 : mValues[static_cast<std::size_t>(cell)];
+    }
+    void prefetchCell(std::int64_t cell) const {
+        if (cell >= 0) __builtin_prefetch(mValues.data() + cell);
+    }
+    /// False when no voxel is blocked (the common obstacle-free case).
+    bool anyBlocked() const { return mAnyBlocked; }
+    /// Hints the cache to load the 3×3×3 neighbourhood of \p v ahead of neighbourhood().
+    void prefetchNeighbourhood(const glm::ivec3& v) const {
+        if (!(inside(v - 1) && inside(v + 1))) return;
+        const std::int32_t* base = mValues.data() + index(v - 1);
+        const auto sx = static_cast<std::size_t>(mDim.z);
+        const std::size_t sy = sx * static_cast<std::size_t>(mDim.x);
+        for (std::size_t y = 0; y < 3; ++y)
+            for (std::size_t x = 0; x < 3; ++x) {
+                __builtin_prefetch(base + y * sy + x * sx);
+                __builtin_prefetch(base + y * sy + x * sx + 2);
+            }
+    }
+
     /// Marks a voxel opaque (obstacles): buds there get no light and never grow towards it.
     void setBlocked(const glm::ivec3& v);
     bool blocked(const glm::ivec3& v) const {

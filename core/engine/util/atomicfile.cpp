@@ -24,7 +24,8 @@ std::filesystem::path temporaryBeside(const std::filesystem::path& path) {
 }
 } // namespace
 
-AtomicFile::AtomicFile(std::filesystem::path path) : mPath(std::move(path)) {
+AtomicFile::AtomicFile(std::filesystem::path path, Durability durability)
+    : mPath(std::move(path)), mDurability(durability) {
     mTemp = temporaryBeside(mPath);
     mFile = std::fopen(mTemp.c_str(), "wb");
     if (!mFile) throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
@@ -45,7 +46,8 @@ void AtomicFile::write(std::string_view bytes) {
 }
 
 void AtomicFile::commit() {
-    if (std::fflush(mFile) != 0 || ::fsync(::fileno(mFile)) != 0) {
+    if (std::fflush(mFile) != 0 ||
+        (mDurability == Durability::Durable && ::fsync(::fileno(mFile)) != 0)) {
         throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
     }
     const int rc = std::fclose(mFile);

@@ -11,11 +11,20 @@ namespace sylva {
 /// failure the temporary is removed and IoError is thrown; \p path is never half-written.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
+/// Whether commit() waits for the bytes to reach the disk (fsync) before the rename.
+///
+/// Both modes are atomic for readers: the target path shows the old file or the complete new
+/// one, never a part. Durable also survives a power cut right after commit(), at the price of
+/// waiting for the disk: for a multi-gigabyte forest export that wait is most of the time
+/// (docs/perf/geometry.md). Documents (projects, species, small sidecars) are always durable;
+/// large regenerable exports default to Atomic and take Durable on request (`--fsync`).
+enum class Durability { Atomic, Durable };
+
 /// RAII helper for streaming writers: open() creates the temporary, commit() renames it into
 /// place, and the destructor removes the temporary if commit() was never reached.
 class AtomicFile {
 public:
-    explicit AtomicFile(std::filesystem::path path);
+    explicit AtomicFile(std::filesystem::path path, Durability durability = Durability::Durable);
     ~AtomicFile();
     AtomicFile(const AtomicFile&) = delete;
     AtomicFile& operator=(const AtomicFile&) = delete;
@@ -30,6 +39,7 @@ private:
     std::filesystem::path mPath;
     std::filesystem::path mTemp;
     std::FILE* mFile = nullptr;
+    Durability mDurability;
     bool mCommitted = false;
 };
 

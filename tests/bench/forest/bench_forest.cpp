@@ -229,5 +229,3 @@ BENCHMARK(BM_AdaptBruteForce)
     ->Iterations(1);
 
 } // namespace
-
-BENCHMARK_MAIN();

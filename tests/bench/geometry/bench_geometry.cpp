@@ -6,7 +6,9 @@
 #include <iomanip>
 #include <sstream>
 
+#include <malloc.h>
 #include <omp.h>
+#include <unistd.h>
 
 #include "../../core/geometry/referencetubemesh.h"
 #include "../../core/geometry/referenceturtle.h"
@@ -18,6 +20,7 @@
 #include "engine/mesh/lod.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/util/atomicfile.h"
+#include "engine/util/memorypolicy.h"
 
 using namespace sylva;
 
@@ -103,6 +106,19 @@ void BM_TurtleContextFree(benchmark::State& state) {
     runTurtle(state, abopWord(), lsys::TurtleSettings{}, fastTurtle);
 }
 BENCHMARK(BM_TurtleContextFree)->Unit(benchmark::kMillisecond);
+
+// The same with glibc's default allocation policy, i.e. without sylva::keepFreedMemory():
+// every skeleton array is a fresh mapping that the kernel faults in and zeroes, as in a
+// process that generates one tree and exits.
+void BM_TurtleContextFreeFreshMemory(benchmark::State& state) {
+    constexpr int kGlibcDefault = 128 * 1024;
+    ::mallopt(M_MMAP_THRESHOLD, kGlibcDefault);
+    ::mallopt(M_TRIM_THRESHOLD, kGlibcDefault);
+    ::malloc_trim(0);
+    runTurtle(state, abopWord(), lsys::TurtleSettings{}, fastTurtle);
+    keepFreedMemory();
+}
+BENCHMARK(BM_TurtleContextFreeFreshMemory)->Unit(benchmark::kMillisecond);
 
 // The first, straightforward turtle (tests/core/geometry/referenceturtle.h), same word.
 void BM_TurtleContextFreeReference(benchmark::State& state) {
@@ -319,13 +335,23 @@ std::uint64_t forestBytes(int compact) {
     return gForestBytes[compact];
 }
 
+// Untimed: writes back what earlier benchmarks left dirty in the page cache, so that this
+// run is not throttled for their gigabytes.
+void settleDisk(benchmark::State& state) {
+    state.PauseTiming();
+    ::sync();
+    state.ResumeTiming();
+}
+
 void runForest(benchmark::State& state, const exporter::ObjOptions& options, int slot) {
     const auto objs = forest();
     const auto path = forestPath();
     const int saved = omp_get_max_threads();
     omp_set_num_threads(static_cast<int>(state.range(0)));
-    for (auto _ : state)
+    for (auto _ : state) {
+        settleDisk(state);
         exporter::writeObjFile(path, objs, options);
+    }
     omp_set_num_threads(saved);
     const auto bytes = std::filesystem::file_size(path);
     gForestBytes[slot] = bytes;
@@ -346,6 +372,19 @@ BENCHMARK(BM_ForestObjFile)
     ->UseRealTime()
     ->Iterations(1);
 
+// The same with ObjOptions::fsync: the call returns once the file is on the disk.
+void BM_ForestObjFileFsync(benchmark::State& state) {
+    exporter::ObjOptions o;
+    o.fsync = true;
+    runForest(state, o, 0);
+}
+BENCHMARK(BM_ForestObjFileFsync)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
 // ObjOptions::compact(): 0.1 mm positions, 3-decimal normals, 4-decimal uvs, relative indices.
 void BM_ForestObjFileCompact(benchmark::State& state) {
     runForest(state, exporter::ObjOptions::compact(), 1);
@@ -357,15 +396,17 @@ BENCHMARK(BM_ForestObjFileCompact)
     ->UseRealTime()
     ->Iterations(1);
 
-// What the disk alone allows: the same byte count as the forest file (arg 0 default, 1
-// compact) written with 8 MiB fwrite blocks and fsync through AtomicFile, like `dd
-// conv=fsync`. No formatting at all.
+// What the file system alone allows: the same byte count as the forest file (compact:0
+// default, 1 compact) written with 8 MiB fwrite blocks through AtomicFile, with fsync (like
+// `dd conv=fsync`) or without. No formatting at all.
 void BM_DiskFloor(benchmark::State& state) {
     const std::uint64_t bytes = forestBytes(static_cast<int>(state.range(0)));
+    const Durability durability = state.range(1) ? Durability::Durable : Durability::Atomic;
     const std::string block(8u << 20, 'x');
     const auto path = forestPath();
     for (auto _ : state) {
-        AtomicFile file(path);
+        settleDisk(state);
+        AtomicFile file(path, durability);
         for (std::uint64_t done = 0; done < bytes; done += block.size())
             file.write(std::string_view(block).substr(
                 0, static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), bytes - done))));
@@ -376,13 +417,12 @@ void BM_DiskFloor(benchmark::State& state) {
     std::filesystem::remove(path);
 }
 BENCHMARK(BM_DiskFloor)
-    ->Arg(0)
-    ->Arg(1)
-    ->ArgName("compact")
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({1, 0})
+    ->ArgNames({"compact", "fsync"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(1);
 
 } // namespace
-
-BENCHMARK_MAIN();

@@ -85,5 +85,3 @@ BENCHMARK(BM_ColonizeAccelerated)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(0.3);
 BENCHMARK(BM_SampleSphere)->Arg(100000)->Unit(benchmark::kMillisecond);
-
-BENCHMARK_MAIN();

@@ -135,5 +135,3 @@ BENCHMARK(BM_DeriveContextSensitive)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DeriveParametric)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DeriveStochastic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ParseGrammar)->Unit(benchmark::kMicrosecond);
-
-BENCHMARK_MAIN();

@@ -133,17 +133,34 @@ TEST(SceneExport, GltfAndFbxReadBack) {
     ASSERT_NE(s, nullptr) << importer.GetErrorString();
     checkSceneReadBack(s, f, true);
 
-    exporter::writeScene(dir / "forest.fbx", f.scene, exporter::SceneFormat::Fbx);
-    Assimp::Importer fbx;
-    const aiScene* t = fbx.ReadFile((dir / "forest.fbx").string(), 0);
-    ASSERT_NE(t, nullptr) << fbx.GetErrorString();
-    std::set<std::string> mats = materialNames(t);
-    EXPECT_TRUE(mats.count("bark"));
-    EXPECT_TRUE(mats.count("leaf"));
-    std::size_t faces = 0;
-    for (unsigned i = 0; i < t->mNumMeshes; ++i)
-        faces += t->mMeshes[i]->mNumFaces;
-    EXPECT_GE(faces, f.a.triangleCount() + f.b.triangleCount());
+    // Binary (the .fbx default) and ASCII FBX: both read back, in metres.
+    EXPECT_EQ(exporter::sceneFormatFor("forest.fbx"), exporter::SceneFormat::Fbx);
+    for (const auto format : {exporter::SceneFormat::Fbx, exporter::SceneFormat::FbxAscii}) {
+        const auto path = dir / (format == exporter::SceneFormat::Fbx ? "b.fbx" : "a.fbx");
+        exporter::writeScene(path, f.scene, format);
+        Assimp::Importer fbx;
+        const aiScene* t = fbx.ReadFile(path.string(), 0);
+        ASSERT_NE(t, nullptr) << path << ": " << fbx.GetErrorString();
+        std::set<std::string> mats = materialNames(t);
+        EXPECT_TRUE(mats.count("bark"));
+        EXPECT_TRUE(mats.count("leaf"));
+        std::size_t faces = 0;
+        for (unsigned i = 0; i < t->mNumMeshes; ++i)
+            faces += t->mMeshes[i]->mNumFaces;
+        EXPECT_GE(faces, f.a.triangleCount() + f.b.triangleCount());
+        std::set<std::string> nodes;
+        for (unsigned i = 0; i < t->mRootNode->mNumChildren; ++i)
+            nodes.insert(t->mRootNode->mChildren[i]->mName.C_Str());
+        for (const auto& inst : f.scene.instances)
+            EXPECT_TRUE(nodes.count(inst.name)) << path << " lacks node " << inst.name;
+        float unit = 0; // Assimp keeps FBX's UnitScaleFactor as a float
+        ASSERT_NE(t->mMetaData, nullptr);
+        EXPECT_TRUE(t->mMetaData->Get("UnitScaleFactor", unit)) << path;
+        EXPECT_EQ(unit, 100.0f) << path << ": 1 unit = 100 cm = 1 m";
+        // Nothing but the file itself is left in the folder (no temporaries).
+        EXPECT_FALSE(
+            std::filesystem::exists(dir / ("." + path.filename().string() + ".assimp.fbx")));
+    }
     EXPECT_THROW(exporter::sceneFormatFor("x.stl"), InvalidInput);
     std::filesystem::remove_all(dir);
 }
@@ -219,13 +236,14 @@ TEST(SceneExport, TexturesAreCopied) {
 }
 
 // Blender is an optional reader: without it the test says so and is skipped.
-TEST(SceneExport, BlenderImportsObjAndGlb) {
+TEST(SceneExport, BlenderImportsObjGlbAndFbx) {
     if (std::system("command -v blender >/dev/null 2>&1") != 0)
-        GTEST_SKIP() << "blender not installed: Blender import of OBJ/GLB not checked";
+        GTEST_SKIP() << "blender not installed: Blender import of OBJ/GLB/FBX not checked";
     const Fixture f;
     const auto dir = tempDir("blender");
     exporter::writeScene(dir / "forest.glb", f.scene, exporter::SceneFormat::Glb);
     exporter::writeObjFile(dir / "forest.obj", {{"oak_0", &f.a}});
+    exporter::writeScene(dir / "forest.fbx", f.scene, exporter::SceneFormat::Fbx);
     // Debian 12's Blender 3.4 glTF importer uses np.bool, which its numpy 1.24 removed: alias it
     // back so the importer's default shading path runs.
     const std::string script = "import bpy,sys,numpy\n"
@@ -243,10 +261,25 @@ TEST(SceneExport, BlenderImportsObjAndGlb) {
                                (dir / "forest.obj").string() +
                                "')\n"
                                "m=[o for o in bpy.data.objects if o.type=='MESH']\n"
-                               "print('sylva-check', n, [o.name for o in m])\n"
+                               "names=[o.name for o in m]\n"
                                "ok=n>=3 and len(m)==1 and m[0].name.startswith('oak_0') and "
                                "len(m[0].data.polygons)==" +
                                std::to_string(f.a.triangleCount()) +
+                               "\n"
+                               // Binary FBX: a node per instance holding its meshes
+                               // (bark, leaf), oak_1 10 m from oak_0 (the file is in metres).
+                               "bpy.ops.wm.read_factory_settings(use_empty=True)\n"
+                               "bpy.ops.import_scene.fbx(filepath='" +
+                               (dir / "forest.fbx").string() +
+                               "')\n"
+                               "x={o.name:o.matrix_world.translation.x for o in "
+                               "bpy.data.objects}\n"
+                               "p=sum(len(o.data.polygons) for o in bpy.data.objects "
+                               "if o.type=='MESH')\n"
+                               "print('sylva-check', n, names, x, p)\n"
+                               "ok=ok and {'oak_0','oak_1','birch_0'}<=set(x) and "
+                               "abs(x['oak_1']-x['oak_0']-10.0)<1e-3 and p==" +
+                               std::to_string(2 * f.a.triangleCount() + f.b.triangleCount()) +
                                "\n"
                                "sys.exit(0 if ok else 1)\n";
     {
