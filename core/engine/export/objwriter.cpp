@@ -6,6 +6,7 @@
 #include <cstring>
 #include <future>
 #include <memory>
+#include <type_traits>
 
 #if defined(__linux__)
 #include <fcntl.h>
@@ -60,13 +61,6 @@ inline char* writeUint(char* p, std::uint64_t v) {
     return end;
 }
 
-// Copies a short text (at most 24 bytes) with one fixed-size copy, which compiles to a few
-// moves instead of a call; the destination has room to spare (BlockWriter::room()).
-inline char* copyShort(char* to, const char* from, std::size_t len) {
-    std::memcpy(to, from, 24);
-    return to + len;
-}
-
 // A growable text buffer that the hot loops write into directly: no staging copy, and unlike
 // std::string::resize no zero-fill of the room it reserves.
 class TextBuffer {
@@ -107,6 +101,9 @@ struct Task {
     bool hasUv = false, hasNormal = false;
     bool identity = true;
     glm::mat3 normalMatrix{1.0f};
+    /// The normal matrix is a rotation (the transform rotates, translates and scales uniformly,
+    /// as placed trees do): unit normals stay unit, so no normalisation per vertex.
+    bool rotationOnly = false;
 };
 
 std::string objectName(const std::string& name) {
@@ -114,6 +111,74 @@ std::string objectName(const std::string& name) {
     for (char& c : s)
         if (c == ' ' || c == '\t' || c == '\n' || c == '\r') c = '_';
     return s;
+}
+
+// Compile-time decimals turn the divisions by 10^D into multiplications.
+template <int D> char* formatFixedT(char* p, double value) {
+    constexpr std::uint64_t scale = kPow10[D];
+    const double scaled = value * static_cast<double>(scale);
+    const double magnitude = std::abs(scaled);
+    if (!(magnitude < 9.0e18)) return std::to_chars(p, p + 40, value).ptr;
+    // Rounded half away from zero (a library nearbyint() is a call per number); the
+    // difference is exact in double, so 0.49999999999999994 does not round up.
+    // Both tests below are as random as the data: written without branches.
+    // Through int64 (magnitude < 9e18 < 2^63): one instruction each way, where the unsigned
+    // conversions compile to a branchy sequence on x86-64.
+    const auto truncated = static_cast<std::int64_t>(magnitude);
+    auto q = static_cast<std::uint64_t>(truncated);
+    q += static_cast<std::uint64_t>(magnitude - static_cast<double>(truncated) >= 0.5);
+    if (q == 0) {
+        *p++ = '0';
+        return p;
+    }
+    *p = '-';
+    p += scaled < 0.0 ? 1 : 0;
+    const std::uint64_t whole = q / scale;
+    // Below 10^9, so 32-bit arithmetic (cheaper divisions by 100) does.
+    auto fp = static_cast<std::uint32_t>(q - whole * scale);
+    p = writeUint(p, whole);
+    if (fp != 0) {
+        // All D decimals from the last, two at a time, then the trailing zeros dropped.
+        *p++ = '.';
+        char* end = p + D;
+        char* c = end;
+        for (int d = D; d >= 2; d -= 2) {
+            const auto r = static_cast<std::size_t>(fp % 100) * 2;
+            fp /= 100;
+            *--c = kDigitPairs[r + 1];
+            *--c = kDigitPairs[r];
+        }
+        if constexpr (D % 2 == 1) *--c = static_cast<char>('0' + fp);
+        while (end[-1] == '0')
+            --end;
+        p = end;
+    }
+    return p;
+}
+
+// Calls f(std::integral_constant<int, D>) for D = decimals (1..9), so that the loops below
+// are compiled once per precision with formatFixedT<D> inlined.
+template <class F> void withDecimals(int decimals, F&& f) {
+    switch (decimals) {
+    case 1:
+        return f(std::integral_constant<int, 1>{});
+    case 2:
+        return f(std::integral_constant<int, 2>{});
+    case 3:
+        return f(std::integral_constant<int, 3>{});
+    case 4:
+        return f(std::integral_constant<int, 4>{});
+    case 5:
+        return f(std::integral_constant<int, 5>{});
+    case 6:
+        return f(std::integral_constant<int, 6>{});
+    case 7:
+        return f(std::integral_constant<int, 7>{});
+    case 8:
+        return f(std::integral_constant<int, 8>{});
+    default:
+        return f(std::integral_constant<int, 9>{});
+    }
 }
 
 void formatTask(TextBuffer& w, const Task& t, const ObjOptions& o) {
@@ -130,51 +195,63 @@ void formatTask(TextBuffer& w, const Task& t, const ObjOptions& o) {
         w.text("o " + objectName(t.object->name) + "\n");
         break;
     case Section::V:
-        for (std::size_t i = t.begin; i < t.end; ++i) {
-            glm::vec3 p = m.positions[i];
-            if (!t.identity) p = glm::vec3(t.object->transform * glm::vec4(p, 1.0f));
-            char* c = w.room();
-            *c++ = 'v';
-            *c++ = ' ';
-            c = formatFixed(c, p.x, o.positionDecimals);
-            *c++ = ' ';
-            c = formatFixed(c, p.y, o.positionDecimals);
-            *c++ = ' ';
-            c = formatFixed(c, p.z, o.positionDecimals);
-            *c++ = '\n';
-            w.done(c);
-        }
+        withDecimals(o.positionDecimals, [&](auto decimals) {
+            constexpr int D = decltype(decimals)::value;
+            for (std::size_t i = t.begin; i < t.end; ++i) {
+                glm::vec3 p = m.positions[i];
+                if (!t.identity) p = glm::vec3(t.object->transform * glm::vec4(p, 1.0f));
+                char* c = w.room();
+                *c++ = 'v';
+                *c++ = ' ';
+                c = formatFixedT<D>(c, p.x);
+                *c++ = ' ';
+                c = formatFixedT<D>(c, p.y);
+                *c++ = ' ';
+                c = formatFixedT<D>(c, p.z);
+                *c++ = '\n';
+                w.done(c);
+            }
+        });
         break;
     case Section::VT:
-        for (std::size_t i = t.begin; i < t.end; ++i) {
-            const glm::vec2 uv = m.uvs[i];
-            char* c = w.room();
-            *c++ = 'v';
-            *c++ = 't';
-            *c++ = ' ';
-            c = formatFixed(c, uv.x, o.uvDecimals);
-            *c++ = ' ';
-            c = formatFixed(c, uv.y, o.uvDecimals);
-            *c++ = '\n';
-            w.done(c);
-        }
+        withDecimals(o.uvDecimals, [&](auto decimals) {
+            constexpr int D = decltype(decimals)::value;
+            for (std::size_t i = t.begin; i < t.end; ++i) {
+                const glm::vec2 uv = m.uvs[i];
+                char* c = w.room();
+                *c++ = 'v';
+                *c++ = 't';
+                *c++ = ' ';
+                c = formatFixedT<D>(c, uv.x);
+                *c++ = ' ';
+                c = formatFixedT<D>(c, uv.y);
+                *c++ = '\n';
+                w.done(c);
+            }
+        });
         break;
     case Section::VN:
-        for (std::size_t i = t.begin; i < t.end; ++i) {
-            glm::vec3 n = m.normals[i];
-            if (!t.identity) n = glm::normalize(t.normalMatrix * n);
-            char* c = w.room();
-            *c++ = 'v';
-            *c++ = 'n';
-            *c++ = ' ';
-            c = formatFixed(c, n.x, o.normalDecimals);
-            *c++ = ' ';
-            c = formatFixed(c, n.y, o.normalDecimals);
-            *c++ = ' ';
-            c = formatFixed(c, n.z, o.normalDecimals);
-            *c++ = '\n';
-            w.done(c);
-        }
+        withDecimals(o.normalDecimals, [&](auto decimals) {
+            constexpr int D = decltype(decimals)::value;
+            for (std::size_t i = t.begin; i < t.end; ++i) {
+                glm::vec3 n = m.normals[i];
+                if (t.rotationOnly)
+                    n = t.normalMatrix * n;
+                else if (!t.identity)
+                    n = glm::normalize(t.normalMatrix * n);
+                char* c = w.room();
+                *c++ = 'v';
+                *c++ = 'n';
+                *c++ = ' ';
+                c = formatFixedT<D>(c, n.x);
+                *c++ = ' ';
+                c = formatFixedT<D>(c, n.y);
+                *c++ = ' ';
+                c = formatFixedT<D>(c, n.z);
+                *c++ = '\n';
+                w.done(c);
+            }
+        });
         break;
     case Section::F: {
         // usemtl lines go before the first triangle of each submesh run.
@@ -186,8 +263,38 @@ void formatTask(TextBuffer& w, const Task& t, const ObjOptions& o) {
                 for (const mesh::Submesh& s : m.submeshes)
                     switches.emplace_back(s.firstIndex / 3, s.material);
         }
-        const bool sameIndices =
-            (!t.hasUv || t.base.vt == t.base.v) && (!t.hasNormal || t.base.vn == t.base.v);
+        // The text of a corner ("v/vt/vn") depends only on its vertex, and a tube mesh's
+        // triangles reuse nearby vertices: corners are formatted once into a small
+        // direct-mapped cache and copied from there (one fixed-size copy per corner).
+        struct Corner {
+            std::uint64_t key = 0; // vertex + 1; 0 = empty
+            std::uint32_t len = 0;
+            char text[52]{};
+        };
+        constexpr std::size_t kCacheSize = 2048;
+        std::vector<Corner> cache(kCacheSize);
+        auto formatCorner = [&](std::uint64_t idx, char* out) {
+            char* c = out;
+            auto number = [&](std::uint64_t base) {
+                if (o.relativeIndices) {
+                    // v, vt and vn of an object come in equal numbers: one text serves all.
+                    *c++ = '-';
+                    c = writeUint(c, t.vertices - idx);
+                } else {
+                    c = writeUint(c, base + idx);
+                }
+            };
+            number(t.base.v);
+            if (t.hasUv || t.hasNormal) {
+                *c++ = '/';
+                if (t.hasUv) number(t.base.vt);
+                if (t.hasNormal) {
+                    *c++ = '/';
+                    number(t.base.vn);
+                }
+            }
+            return static_cast<std::size_t>(c - out);
+        };
         std::size_t next = 0;
         while (next < switches.size() && switches[next].first < t.begin)
             ++next;
@@ -201,48 +308,21 @@ void formatTask(TextBuffer& w, const Task& t, const ObjOptions& o) {
             for (int k = 0; k < 3; ++k) {
                 const std::uint64_t idx = m.indices[tri * 3 + static_cast<std::size_t>(k)];
                 *c++ = ' ';
-                if (o.relativeIndices) {
-                    // v, vt and vn of an object come in equal numbers, so one text serves all.
-                    char number[24];
-                    number[0] = '-';
-                    const auto len =
-                        static_cast<std::size_t>(writeUint(number + 1, t.vertices - idx) - number);
-                    c = copyShort(c, number, len);
-                    if (t.hasUv || t.hasNormal) {
-                        *c++ = '/';
-                        if (t.hasUv) c = copyShort(c, number, len);
-                        if (t.hasNormal) {
-                            *c++ = '/';
-                            c = copyShort(c, number, len);
-                        }
+                Corner& e = cache[idx % kCacheSize];
+                if (e.key != idx + 1) {
+                    char text[80]; // three 20-digit numbers, signs and slashes at most
+                    const std::size_t len = formatCorner(idx, text);
+                    if (len > sizeof e.text) { // absurdly large indices: not cached
+                        std::memcpy(c, text, len);
+                        c += len;
+                        continue;
                     }
-                    continue;
+                    e.key = idx + 1;
+                    e.len = static_cast<std::uint32_t>(len);
+                    std::memcpy(e.text, text, len);
                 }
-                char* const number = c;
-                c = writeUint(c, t.base.v + idx);
-                if (sameIndices) {
-                    // v, vt and vn numbered alike (the usual case): one text, copied.
-                    const auto len = static_cast<std::size_t>(c - number);
-                    char text[24]; // copies must not overlap their source
-                    std::memcpy(text, number, sizeof text);
-                    if (t.hasUv || t.hasNormal) {
-                        *c++ = '/';
-                        if (t.hasUv) c = copyShort(c, text, len);
-                        if (t.hasNormal) {
-                            *c++ = '/';
-                            c = copyShort(c, text, len);
-                        }
-                    }
-                    continue;
-                }
-                if (t.hasUv || t.hasNormal) {
-                    *c++ = '/';
-                    if (t.hasUv) c = writeUint(c, t.base.vt + idx);
-                    if (t.hasNormal) {
-                        *c++ = '/';
-                        c = writeUint(c, t.base.vn + idx);
-                    }
-                }
+                std::memcpy(c, e.text, sizeof e.text);
+                c += e.len;
             }
             *c++ = '\n';
             w.done(c);
@@ -273,7 +353,21 @@ std::vector<Task> makeTasks(const std::vector<ObjObject>& objects, ObjOffsets& o
         t.hasNormal = o.normals && m.normals.size() == nv && nv > 0;
         t.vertices = nv;
         t.identity = object.transform == glm::mat4(1.0f);
-        if (!t.identity) t.normalMatrix = glm::transpose(glm::inverse(glm::mat3(object.transform)));
+        if (!t.identity) {
+            t.normalMatrix = glm::transpose(glm::inverse(glm::mat3(object.transform)));
+            // Orthogonal columns of equal length: a rotation times a uniform scale, which
+            // divided out leaves a rotation.
+            const glm::mat3& nm = t.normalMatrix;
+            const float len = glm::length(nm[0]);
+            constexpr float kTolerance = 1e-6f;
+            auto near = [&](float a, float b) { return std::abs(a - b) <= kTolerance * len * len; };
+            if (len > 0.0f && near(glm::dot(nm[1], nm[1]), len * len) &&
+                near(glm::dot(nm[2], nm[2]), len * len) && near(glm::dot(nm[0], nm[1]), 0.0f) &&
+                near(glm::dot(nm[0], nm[2]), 0.0f) && near(glm::dot(nm[1], nm[2]), 0.0f)) {
+                t.normalMatrix = nm / len;
+                t.rotationOnly = true;
+            }
+        }
         tasks.push_back(t);
         auto split = [&](Section s, std::size_t n) {
             for (std::size_t b = 0; b < n; b += chunk) {
@@ -319,70 +413,9 @@ constexpr std::size_t kChunk = 32768;
 
 } // namespace
 
-namespace {
-
-// Compile-time decimals turn the divisions by 10^D into multiplications.
-template <int D> char* formatFixedT(char* p, double value) {
-    constexpr std::uint64_t scale = kPow10[D];
-    const double scaled = value * static_cast<double>(scale);
-    const double magnitude = std::abs(scaled);
-    if (!(magnitude < 9.0e18)) return std::to_chars(p, p + 40, value).ptr;
-    // Rounded half away from zero (a library nearbyint() is a call per number); the
-    // difference is exact in double, so 0.49999999999999994 does not round up.
-    // Both tests below are as random as the data: written without branches.
-    auto q = static_cast<std::uint64_t>(magnitude);
-    q += static_cast<std::uint64_t>(magnitude - static_cast<double>(q) >= 0.5);
-    if (q == 0) {
-        *p++ = '0';
-        return p;
-    }
-    *p = '-';
-    p += scaled < 0.0 ? 1 : 0;
-    const std::uint64_t whole = q / scale;
-    std::uint64_t fp = q - whole * scale;
-    p = writeUint(p, whole);
-    if (fp != 0) {
-        // All D decimals from the last, two at a time, then the trailing zeros dropped.
-        *p++ = '.';
-        char* end = p + D;
-        char* c = end;
-        for (int d = D; d >= 2; d -= 2) {
-            const auto r = static_cast<std::size_t>(fp % 100) * 2;
-            fp /= 100;
-            *--c = kDigitPairs[r + 1];
-            *--c = kDigitPairs[r];
-        }
-        if constexpr (D % 2 == 1) *--c = static_cast<char>('0' + fp);
-        while (end[-1] == '0')
-            --end;
-        p = end;
-    }
-    return p;
-}
-
-} // namespace
-
 char* formatFixed(char* p, double value, int decimals) {
-    switch (decimals) {
-    case 1:
-        return formatFixedT<1>(p, value);
-    case 2:
-        return formatFixedT<2>(p, value);
-    case 3:
-        return formatFixedT<3>(p, value);
-    case 4:
-        return formatFixedT<4>(p, value);
-    case 5:
-        return formatFixedT<5>(p, value);
-    case 6:
-        return formatFixedT<6>(p, value);
-    case 7:
-        return formatFixedT<7>(p, value);
-    case 8:
-        return formatFixedT<8>(p, value);
-    default:
-        return formatFixedT<9>(p, value);
-    }
+    withDecimals(decimals, [&](auto d) { p = formatFixedT<decltype(d)::value>(p, value); });
+    return p;
 }
 
 void appendObj(std::string& out, const ObjObject& object, ObjOffsets& offsets,
@@ -479,7 +512,7 @@ void ObjStreamWriter::commit() {
 void writeObjFile(const std::filesystem::path& path, const std::vector<ObjObject>& objects,
                   const ObjOptions& options, Progress& progress) {
     ObjStreamWriter writer(path, options);
-    constexpr std::size_t kBatchVertices = 1 << 20;
+    constexpr std::size_t kBatchVertices = 1 << 18;
     std::vector<ObjObject> batch;
     std::size_t batchVertices = 0;
     for (std::size_t i = 0; i < objects.size(); ++i) {

@@ -422,22 +422,26 @@ glm::vec3 SelfOrganizingSimulation::optimalShadowDirection(const glm::ivec3& vox
     // the cone or opaque counts as kOpaque, the least shadow wins, and the directions of all
     // neighbours that tie for it are summed in neighbour order (as a running "best so far"
     // loop would, so the sum is bit for bit the same).
+    // (Masks instead of ?: so that the compiler cannot turn them back into branches.)
     std::int32_t value[26];
     for (int k = 0; k < 26; ++k) {
         const float d =
             kNeighbours.dx[k] * dir.x + kNeighbours.dy[k] * dir.y + kNeighbours.dz[k] * dir.z;
-        value[k] = d < cosHalf ? ShadowGrid::kOpaque : s[kNeighbours.cell[k]];
+        const std::int32_t inCone = -static_cast<std::int32_t>(d >= cosHalf);
+        value[k] = (s[kNeighbours.cell[k]] & inCone) | (ShadowGrid::kOpaque & ~inCone);
     }
     std::int32_t best = ShadowGrid::kOpaque;
     for (int k = 0; k < 26; ++k)
         best = std::min(best, value[k]);
     if (best == ShadowGrid::kOpaque) return dir;
-    glm::vec3 sum(0.0f);
+    float sx = 0.0f, sy = 0.0f, sz = 0.0f;
     for (int k = 0; k < 26; ++k) {
-        const float w = value[k] == best ? 1.0f : 0.0f;
-        sum += w * kNeighbours.dir[k];
+        const auto w = static_cast<float>(value[k] == best);
+        sx += w * kNeighbours.dx[k];
+        sy += w * kNeighbours.dy[k];
+        sz += w * kNeighbours.dz[k];
     }
-    return safeNormalize(sum, dir);
+    return safeNormalize(glm::vec3(sx, sy, sz), dir);
 }
 
 void SelfOrganizingSimulation::shed(const std::vector<std::uint8_t>& removed) {

@@ -156,7 +156,8 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     reserveAround(hi);
     if (hi.y < mFloor) return;
 
-    // Counting sort of the sources by their layer (sources below the floor cast nothing).
+    // Counting sort of the sources by their layer (sources below the floor cast nothing), into
+    // a contiguous copy so that each layer's sources are read in sequence.
     const int firstSource = std::max(lo.y, mFloor);
     const auto layers = static_cast<std::size_t>(hi.y - firstSource + 1);
     mBucketStart.assign(layers + 1, 0);
@@ -165,14 +166,26 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
             ++mBucketStart[static_cast<std::size_t>(s.voxel.y - firstSource) + 1];
     for (std::size_t b = 0; b < layers; ++b)
         mBucketStart[b + 1] += mBucketStart[b];
-    mBucketOrder.resize(mBucketStart[layers]);
+    mSorted.resize(mBucketStart[layers]);
+    // Per source layer: the extent of its sources and, per depth q, how many of them reach q.
+    const auto depths = static_cast<std::size_t>(maxDepth) + 1;
+    mLayerExtent.assign(
+        layers, glm::ivec4(std::numeric_limits<int>::max(), std::numeric_limits<int>::min(),
+                           std::numeric_limits<int>::max(), std::numeric_limits<int>::min()));
+    mReach.assign(layers * depths, 0);
     {
         std::vector<std::uint32_t> fill(mBucketStart.begin(), mBucketStart.end() - 1);
-        for (std::size_t i = 0; i < sources.size(); ++i) {
-            const int y = sources[i].voxel.y;
+        for (const ShadowSource& s : sources) {
+            const int y = s.voxel.y;
             if (y < firstSource) continue;
-            mBucketOrder[fill[static_cast<std::size_t>(y - firstSource)]++] =
-                static_cast<std::uint32_t>(i);
+            const auto b = static_cast<std::size_t>(y - firstSource);
+            mSorted[fill[b]++] = {s.voxel.x, s.voxel.z, s.weight, s.kernel};
+            glm::ivec4& e = mLayerExtent[b];
+            e = {std::min(e.x, s.voxel.x), std::max(e.y, s.voxel.x), std::min(e.z, s.voxel.z),
+                 std::max(e.w, s.voxel.z)};
+            const int depth = kernels[s.kernel].depth;
+            for (int q = 0; q <= depth; ++q)
+                ++mReach[b * depths + static_cast<std::size_t>(q)];
         }
     }
 
@@ -197,38 +210,44 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
         for (int l = 0; l < layerCount; ++l) {
             const int y = firstLayer + l;
             std::int32_t* plane = mValues.data() + static_cast<std::size_t>(y - mLo.y) * dx * dz;
-            // Pass 1: extent and direct cost of this layer's squares.
+            // Extent and direct cost of this layer's squares, from the per-layer summaries.
             int x0 = std::numeric_limits<int>::max(), z0 = x0;
             int x1 = std::numeric_limits<int>::min(), z1 = x1;
             std::int64_t cells = 0;
+            for (int q = 0; q <= maxDepth; ++q) {
+                const int sy = y + q;
+                if (sy < firstSource || sy > hi.y) continue;
+                const auto b = static_cast<std::size_t>(sy - firstSource);
+                const std::uint32_t reach = mReach[b * depths + static_cast<std::size_t>(q)];
+                if (reach == 0) continue;
+                const glm::ivec4& e = mLayerExtent[b];
+                x0 = std::min(x0, e.x - q);
+                x1 = std::max(x1, e.y + q);
+                z0 = std::min(z0, e.z - q);
+                z1 = std::max(z1, e.w + q);
+                cells += static_cast<std::int64_t>(reach) * (2 * q + 1) * (2 * q + 1);
+            }
+            if (cells == 0) continue;
             auto forEach = [&](auto&& f) {
                 for (int q = 0; q <= maxDepth; ++q) {
                     const int sy = y + q;
                     if (sy < firstSource || sy > hi.y) continue;
                     const auto b = static_cast<std::size_t>(sy - firstSource);
                     for (std::uint32_t k = mBucketStart[b]; k < mBucketStart[b + 1]; ++k) {
-                        const ShadowSource& s = sources[mBucketOrder[k]];
+                        const SortedSource& s = mSorted[k];
                         const ShadowKernel& kernel = kernels[s.kernel];
                         if (q > kernel.depth) continue;
                         f(s, q, s.weight * kernel.delta[static_cast<std::size_t>(q)]);
                     }
                 }
             };
-            forEach([&](const ShadowSource& s, int q, std::int32_t) {
-                x0 = std::min(x0, s.voxel.x - q);
-                x1 = std::max(x1, s.voxel.x + q);
-                z0 = std::min(z0, s.voxel.z - q);
-                z1 = std::max(z1, s.voxel.z + q);
-                cells += static_cast<std::int64_t>(2 * q + 1) * (2 * q + 1);
-            });
-            if (cells == 0) continue;
             const std::int64_t area =
                 static_cast<std::int64_t>(x1 - x0 + 1) * static_cast<std::int64_t>(z1 - z0 + 1);
             if (cells < 2 * area) {
-                forEach([&](const ShadowSource& s, int q, std::int32_t d) {
-                    for (int x = s.voxel.x - q; x <= s.voxel.x + q; ++x) {
+                forEach([&](const SortedSource& s, int q, std::int32_t d) {
+                    for (int x = s.x - q; x <= s.x + q; ++x) {
                         std::int32_t* row = plane + static_cast<std::size_t>(x - mLo.x) * dz +
-                                            static_cast<std::size_t>(s.voxel.z - q - mLo.z);
+                                            static_cast<std::size_t>(s.z - q - mLo.z);
                         for (int z = 0; z <= 2 * q; ++z)
                             row[z] += d;
                     }
@@ -238,11 +257,11 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
             // Local plane coordinates; the difference array has one extra row and column for
             // the far corners.
             const std::size_t stride = dz + 1;
-            forEach([&](const ShadowSource& s, int q, std::int32_t d) {
-                const auto a0 = static_cast<std::size_t>(s.voxel.x - q - mLo.x);
-                const auto a1 = static_cast<std::size_t>(s.voxel.x + q + 1 - mLo.x);
-                const auto c0 = static_cast<std::size_t>(s.voxel.z - q - mLo.z);
-                const auto c1 = static_cast<std::size_t>(s.voxel.z + q + 1 - mLo.z);
+            forEach([&](const SortedSource& s, int q, std::int32_t d) {
+                const auto a0 = static_cast<std::size_t>(s.x - q - mLo.x);
+                const auto a1 = static_cast<std::size_t>(s.x + q + 1 - mLo.x);
+                const auto c0 = static_cast<std::size_t>(s.z - q - mLo.z);
+                const auto c1 = static_cast<std::size_t>(s.z + q + 1 - mLo.z);
                 diff[a0 * stride + c0] += d;
                 diff[a0 * stride + c1] -= d;
                 diff[a1 * stride + c0] -= d;

@@ -141,7 +141,16 @@ private:
     std::vector<std::int32_t> mValues;
     std::vector<std::uint8_t> mBlocked;
     bool mAnyBlocked = false; ///< lets the common obstacle-free case skip the lookup
-    std::vector<std::uint32_t> mBucketStart, mBucketOrder; ///< applyBatch scratch (by layer)
+    /// applyBatch scratch: sources by layer (counting sort), each layer's extent (x0, x1, z0,
+    /// z1) and how many of its sources reach each depth.
+    struct SortedSource {
+        int x, z;
+        std::int32_t weight;
+        std::uint32_t kernel;
+    };
+    std::vector<std::uint32_t> mBucketStart, mReach;
+    std::vector<SortedSource> mSorted;
+    std::vector<glm::ivec4> mLayerExtent;
     /// applyBatch: one zeroed difference plane per thread ((dims.x + 1) · (dims.z + 1)).
     std::vector<std::vector<std::int32_t>> mDiff;
 };

@@ -31,6 +31,17 @@ SelfOrganizingParams benchParams() {
     return p;
 }
 
+/// The shipped conifer preset (presets/so-conifer.json) without leaves: a tree that adds about
+/// 30 % and sheds about 15 % of its size per cycle at 100k internodes (the bench tree above
+/// replaces ~90 %).
+SelfOrganizingParams coniferParams() {
+    SelfOrganizingParams p = benchParams();
+    p.alpha = 2.0;
+    p.lambda = 0.55;
+    p.sheddingThreshold = 0.25;
+    return p;
+}
+
 void growTo(SelfOrganizingSimulation& sim, std::size_t internodes) {
     while (sim.metamers().size() < internodes && !sim.done())
         sim.step();
@@ -43,13 +54,13 @@ void growTo(SelfOrganizingSimulation& sim, std::size_t internodes) {
 /// capacity reallocate on the first append; the copied grid loses its huge pages).
 /// Arg 0: incremental shadow + linear allocation; 1: naive shadow + naive allocation.
 /// Counters: the stages of the cycle in ms (mean over the iterations).
-void BM_SelfOrgCycle100k(benchmark::State& state) {
+void runCycle100k(benchmark::State& state, const SelfOrganizingParams& params) {
     const bool naive = state.range(0) != 0;
     CycleTimings sum;
     std::size_t added = 0, shed = 0, before = 0;
     for (auto _ : state) {
         state.PauseTiming();
-        SelfOrganizingSimulation sim({{glm::vec3(0), benchParams(), 1}}, {});
+        SelfOrganizingSimulation sim({{glm::vec3(0), params, 1}}, {});
         growTo(sim, 100'000);
         sim.setOptions({naive, naive});
         before = sim.metamers().size();
@@ -83,7 +94,16 @@ void BM_SelfOrgCycle100k(benchmark::State& state) {
     state.counters["commit_ms"] = sum.commit / n;
     state.counters["shadow_ms"] = sum.environment / n;
 }
+void BM_SelfOrgCycle100k(benchmark::State& state) {
+    runCycle100k(state, benchParams());
+}
 BENCHMARK(BM_SelfOrgCycle100k)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(8);
+
+/// The same for the conifer preset at ~100k internodes.
+void BM_SelfOrgCycle100kConifer(benchmark::State& state) {
+    runCycle100k(state, coniferParams());
+}
+BENCHMARK(BM_SelfOrgCycle100kConifer)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(8);
 
 void BM_SelfOrgTree500k(benchmark::State& state) {
     const bool naive = state.range(0) != 0;
