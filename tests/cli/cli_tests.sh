@@ -140,14 +140,29 @@ forest_tiles_union)
   : > tiles.txt
   for i in 1 2 3 4; do
     run_cli 0 forest "$DATA/projects/small.sylva" -o tile$i.obj --tile $i/4
-    # per object: its name and its vertex lines (face indices are file-relative)
-    awk '/^o /{name=$2} /^v /{print name, $0}' tile$i.obj >> tiles.txt
+    # per object: its name and every line of it; the forest's compact OBJ counts face
+    # indices back within each object, so a tree's text does not depend on the trees before it
+    awk '/^o /{name=$2} /^(v|vt|vn|f|usemtl) /{print name, $0}' tile$i.obj >> tiles.txt
   done
-  awk '/^o /{name=$2} /^v /{print name, $0}' whole.obj | sort > whole.txt
+  awk '/^o /{name=$2} /^(v|vt|vn|f|usemtl) /{print name, $0}' whole.obj | sort > whole.txt
   sort tiles.txt > union.txt
   cmp -s whole.txt union.txt || fail "the union of 4 tiles differs from the whole forest"
   run_cli 2 forest "$DATA/projects/small.sylva" -o x.obj --tile 5/4
   run_cli 2 forest "$DATA/projects/small.sylva" -o x.obj --tile zero ;;
+forest_obj_precision)
+  # default: compact (0.1 mm positions, relative face indices); --full-precision: micrometres
+  # and absolute indices; the same trees and faces either way
+  run_cli 0 forest "$DATA/projects/small.sylva" -o c.obj
+  run_cli 0 forest "$DATA/projects/small.sylva" -o full.obj --full-precision
+  grep -q '^f -[0-9]' c.obj || fail "compact OBJ should use relative face indices"
+  grep -q '^f -' full.obj && fail "full precision OBJ should use absolute face indices"
+  awk '/^v /{split($2,a,"."); if (length(a[2]) > 4) bad=1} END{exit bad}' c.obj ||
+    fail "compact positions have more than 4 decimals"
+  awk '/^v /{split($2,a,"."); if (length(a[2]) == 6) six=1} END{exit !six}' full.obj ||
+    fail "full precision positions never have 6 decimals"
+  [[ $(grep -c '^f ' c.obj) == $(grep -c '^f ' full.obj) ]] || fail "face counts differ"
+  [[ $(grep -c '^o ' c.obj) == $(grep -c '^o ' full.obj) ]] || fail "object counts differ"
+  (( $(stat -c %s c.obj) < $(stat -c %s full.obj) )) || fail "compact is not smaller" ;;
 forest_reference_scene)
   run_cli 0 forest "$DATA/projects/reference-scene.json" -o ref.obj --stats
   grep -q '"trees":8,' out.txt || fail "$(cat out.txt)" ;;

@@ -236,7 +236,7 @@ TEST(SceneExport, TexturesAreCopied) {
 }
 
 // Blender is an optional reader: without it the test says so and is skipped.
-TEST(SceneExport, BlenderImportsObjGlbAndFbx) {
+TEST(SceneExport, BlenderImportsObjGlbFbxAndCompactObj) {
     if (std::system("command -v blender >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "blender not installed: Blender import of OBJ/GLB/FBX not checked";
     const Fixture f;
@@ -244,6 +244,9 @@ TEST(SceneExport, BlenderImportsObjGlbAndFbx) {
     exporter::writeScene(dir / "forest.glb", f.scene, exporter::SceneFormat::Glb);
     exporter::writeObjFile(dir / "forest.obj", {{"oak_0", &f.a}});
     exporter::writeScene(dir / "forest.fbx", f.scene, exporter::SceneFormat::Fbx);
+    // Compact OBJ: relative (negative) face indices, counted back within each object.
+    exporter::writeObjFile(dir / "compact.obj", {{"oak_0", &f.a}, {"birch_0", &f.b}},
+                           exporter::ObjOptions::compact());
     // Debian 12's Blender 3.4 glTF importer uses np.bool, which its numpy 1.24 removed: alias it
     // back so the importer's default shading path runs.
     const std::string script = "import bpy,sys,numpy\n"
@@ -281,6 +284,20 @@ TEST(SceneExport, BlenderImportsObjGlbAndFbx) {
                                "abs(x['oak_1']-x['oak_0']-10.0)<1e-3 and p==" +
                                std::to_string(2 * f.a.triangleCount() + f.b.triangleCount()) +
                                "\n"
+                               "bpy.ops.wm.read_factory_settings(use_empty=True)\n"
+                               "try:\n  bpy.ops.wm.obj_import(filepath='" +
+                               (dir / "compact.obj").string() +
+                               "')\n"
+                               "except AttributeError:\n  bpy.ops.import_scene.obj(filepath='" +
+                               (dir / "compact.obj").string() +
+                               "')\n"
+                               "c=sorted((o.name[:7],len(o.data.polygons)) for o in "
+                               "bpy.data.objects if o.type=='MESH')\n"
+                               "print('sylva-check compact', c)\n"
+                               "ok=ok and c==[('birch_0'," +
+                               std::to_string(f.b.triangleCount()) + "),('oak_0'," +
+                               std::to_string(f.a.triangleCount()) +
+                               ")]\n"
                                "sys.exit(0 if ok else 1)\n";
     {
         std::ofstream out(dir / "check.py");
