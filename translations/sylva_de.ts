@@ -2,6 +2,37 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
+    <name>AttributeColors</name>
+    <message>
+        <source>Light per internode</source>
+        <translation>Licht pro Internodium</translation>
+    </message>
+    <message>
+        <source>Vigour (log scale)</source>
+        <translation>Wuchskraft (logarithmisch)</translation>
+    </message>
+    <message>
+        <source>Age in cycles</source>
+        <translation>Alter in Zyklen</translation>
+    </message>
+    <message>
+        <source>Branch order</source>
+        <translation>Astordnung</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materialien</translation>
+    </message>
+    <message>
+        <source>%1: not available for this tree</source>
+        <translation>%1: für diesen Baum nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>%1: 0 (blue) – %2 (yellow)</source>
+        <translation>%1: 0 (blau) – %2 (gelb)</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>%1: the species&apos; output node produced no mesh</source>
@@ -152,6 +183,30 @@
     <message>
         <source>Images (*.png *.jpg *.bmp)</source>
         <translation>Bilder (*.png *.jpg *.bmp)</translation>
+    </message>
+    <message>
+        <source>&amp;Colour by</source>
+        <translation>&amp;Einfärben nach</translation>
+    </message>
+    <message>
+        <source>&amp;Material</source>
+        <translation>&amp;Material</translation>
+    </message>
+    <message>
+        <source>&amp;Light (per internode)</source>
+        <translation>&amp;Licht (pro Internodium)</translation>
+    </message>
+    <message>
+        <source>&amp;Vigour</source>
+        <translation>&amp;Wuchskraft</translation>
+    </message>
+    <message>
+        <source>&amp;Age</source>
+        <translation>&amp;Alter</translation>
+    </message>
+    <message>
+        <source>Branch &amp;order</source>
+        <translation>Ast&amp;ordnung</translation>
     </message>
 </context>
 <context>

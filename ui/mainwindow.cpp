@@ -19,6 +19,8 @@
 #include <QStatusBar>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
 #include "ui/presetlibrary.h"
 #include "ui/statspanel.h"
 #include "ui/viewport.h"
@@ -125,8 +127,45 @@ void MainWindow::createMenus() {
     // Shortcuts of the View menu act while the viewport has focus, like the F key itself.
     mViewport->addAction(frame);
     mViewport->addAction(grid);
+    QMenu* color = view->addMenu(tr("&Colour by"));
+    color->setObjectName(QStringLiteral("colorMenu"));
+    mColorGroup = new QActionGroup(this);
+    const std::pair<ColorBy, QString> modes[] = {{ColorBy::Material, tr("&Material")},
+                                                 {ColorBy::Light, tr("&Light (per internode)")},
+                                                 {ColorBy::Vigour, tr("&Vigour")},
+                                                 {ColorBy::Age, tr("&Age")},
+                                                 {ColorBy::BranchOrder, tr("Branch &order")}};
+    for (const auto& [mode, label] : modes) {
+        QAction* action = color->addAction(label);
+        action->setCheckable(true);
+        action->setChecked(mode == mColorBy);
+        action->setData(static_cast<int>(mode));
+        mColorGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, mode = mode] { setColorBy(mode); });
+    }
     view->addSeparator();
     view->addAction(mStatsDock->toggleViewAction());
+}
+
+void MainWindow::setColorBy(ColorBy mode) {
+    mColorBy = mode;
+    for (QAction* action : mColorGroup->actions())
+        action->setChecked(action->data().toInt() == static_cast<int>(mode));
+    applyColoring();
+}
+
+void MainWindow::applyColoring() {
+    const skel::Skeleton* skeleton = mResult.skeleton.get();
+    // Attributes this tree has; the others are greyed out.
+    for (QAction* action : mColorGroup->actions())
+        action->setEnabled(!skeleton ||
+                           hasAttribute(*skeleton, static_cast<ColorBy>(action->data().toInt())));
+    if (!mResult.mesh || !skeleton) return;
+    std::vector<glm::vec3> colors = attributeColors(*mResult.mesh, *skeleton, mColorBy);
+    mViewport->setVertexColors(std::move(colors));
+    // The legend names the ramp's range, or says that this tree lacks the attribute.
+    if (mColorBy != ColorBy::Material)
+        statusBar()->showMessage(attributeLegend(*skeleton, mColorBy));
 }
 
 void MainWindow::populatePresetsMenu() {
@@ -203,6 +242,7 @@ void MainWindow::onGenerationFinished() {
     statusBar()->showMessage(
         tr("Generated %1 in %2 ms").arg(mResult.speciesName).arg(mResult.elapsedMs, 0, 'f', 1),
         10000);
+    applyColoring();
     if (!mViewport->glError().isEmpty()) statusBar()->showMessage(mViewport->glError());
     mGlLabel->setText(mViewport->glInfo());
     Q_EMIT generationFinished(true);

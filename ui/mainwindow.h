@@ -4,6 +4,7 @@
 #include <QMainWindow>
 #include <QString>
 
+#include "ui/attributecolors.h"
 #include "ui/treegenerator.h"
 
 class QAction;
@@ -50,6 +51,11 @@ public:
     QString lastError() const { return mLastError; }
     bool isGenerating() const { return mWatcher.isRunning(); }
 
+    /// Colours the tree by its materials or a node attribute (View ▸ Colour by); modes the tree
+    /// lacks (light, vigour and age come from self-organizing growth) fall back to materials.
+    void setColorBy(ColorBy mode);
+    ColorBy colorBy() const { return mColorBy; }
+
 Q_SIGNALS:
     /// Emitted on the GUI thread when a generation ends (not when it was superseded).
     void generationFinished(bool ok);
@@ -61,6 +67,7 @@ private:
     void showOpenDialog();
     void showScreenshotDialog();
     void reportError(const QString& message);
+    void applyColoring();
 
     Viewport* mViewport = nullptr;
     StatsPanel* mStats = nullptr;
@@ -68,6 +75,8 @@ private:
     QMenu* mPresetsMenu = nullptr;
     QActionGroup* mPresetGroup = nullptr;
     QAction* mReloadAction = nullptr;
+    QActionGroup* mColorGroup = nullptr;
+    ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;
     QProgressBar* mBusy = nullptr;
 

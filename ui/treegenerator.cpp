@@ -56,6 +56,11 @@ GenerationResult generateTree(const QString& path, Progress& progress) {
         graph::registerBuiltinNodeTypes();
         graph::SpeciesGraph species = doc::loadSpecies(path);
         if (!species.name.empty()) result.speciesName = QString::fromStdString(species.name);
+        // The viewport can colour the tree by node attributes: ask the mesher which node each
+        // vertex belongs to.
+        if (graph::NodeDesc* out = species.findNode(species.output);
+            out && out->type == "tube_mesh")
+            out->params.objectRef()["node_ids"] = graph::Value(true);
         graph::Evaluator evaluator(std::move(species));
         const graph::NodeOutput& output = evaluator.evaluate(progress);
         result.mesh = output.mesh;

@@ -22,12 +22,15 @@ namespace {
 const char* const kMeshVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec3 aColor;
 uniform mat4 uViewProj;
 out vec3 vNormal;
 out vec3 vWorld;
+out vec3 vColor;
 void main() {
     vNormal = aNormal;
     vWorld = aPosition;
+    vColor = aColor;
     gl_Position = uViewProj * vec4(aPosition, 1.0);
 }
 )";
@@ -38,7 +41,9 @@ void main() {
 const char* const kMeshFragmentShader = R"(#version 330 core
 in vec3 vNormal;
 in vec3 vWorld;
+in vec3 vColor;
 uniform vec3 uAlbedo;
+uniform bool uVertexColor; // colour by a node attribute instead of the material
 uniform vec3 uLightDir;
 uniform vec3 uEye;
 out vec4 fragColor;
@@ -52,7 +57,8 @@ void main() {
     vec3 sky = vec3(0.62, 0.70, 0.85);
     vec3 ground = vec3(0.30, 0.25, 0.20);
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    vec3 color = uAlbedo * (0.55 * ambient + 1.35 * vec3(1.0, 0.96, 0.90) * diffuse);
+    vec3 albedo = uVertexColor ? vColor : uAlbedo;
+    vec3 color = albedo * (0.55 * ambient + 1.35 * vec3(1.0, 0.96, 0.90) * diffuse);
     fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
 }
 )";
@@ -183,6 +189,7 @@ Viewport::~Viewport() {
 
 void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame) {
     mMesh = std::move(mesh);
+    mVertexColors.clear();
     mMeshDirty = true;
     if (mMesh && !mMesh->empty()) {
         glm::vec3 lo(std::numeric_limits<float>::max());
@@ -201,6 +208,16 @@ void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame) {
         applyFrame();
         Q_EMIT cameraChanged();
     }
+    update();
+}
+
+std::size_t Viewport::vertexCount() const {
+    return mMesh ? mMesh->positions.size() : 0;
+}
+
+void Viewport::setVertexColors(std::vector<glm::vec3> colors) {
+    mVertexColors = std::move(colors);
+    mMeshDirty = true;
     update();
 }
 
@@ -255,11 +272,16 @@ void Viewport::initializeGL() {
     glBindVertexArray(mMeshVao);
     glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
+    // Position, normal, attribute colour (zero unless the view colours by an attribute).
+    constexpr GLsizei kStride = 9 * sizeof(float);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride, nullptr);
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride,
                           reinterpret_cast<void*>(3 * sizeof(float)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride,
+                          reinterpret_cast<void*>(6 * sizeof(float)));
 
     glBindVertexArray(mGridVao);
     glBindBuffer(GL_ARRAY_BUFFER, mGridVbo);
@@ -306,16 +328,23 @@ void Viewport::uploadMesh() {
         m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
     const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
 
-    std::vector<float> interleaved(vertexCount * 6);
+    const bool colored = mVertexColors.size() == vertexCount;
+    std::vector<float> interleaved(vertexCount * 9, 0.0f);
     for (std::size_t i = 0; i < vertexCount; ++i) {
-        float* v = &interleaved[i * 6];
+        float* v = &interleaved[i * 9];
         v[0] = m.positions[i].x;
         v[1] = m.positions[i].y;
         v[2] = m.positions[i].z;
         v[3] = normals[i].x;
         v[4] = normals[i].y;
         v[5] = normals[i].z;
+        if (colored) {
+            v[6] = mVertexColors[i].x;
+            v[7] = mVertexColors[i].y;
+            v[8] = mVertexColors[i].z;
+        }
     }
+    mUseVertexColors = colored;
     glBindVertexArray(mMeshVao);
     glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
@@ -432,6 +461,7 @@ void Viewport::paintGL() {
         const glm::vec3 light = glm::normalize(-0.5f * mCamera.forward() + 0.8f * mCamera.up() -
                                                0.6f * mCamera.right());
         setUniform(*mMeshProgram, "uLightDir", light);
+        mMeshProgram->setUniformValue("uVertexColor", mUseVertexColors);
         glBindVertexArray(mMeshVao);
         for (const DrawRange& r : mRanges) {
             setUniform(*mMeshProgram, "uAlbedo", r.color);

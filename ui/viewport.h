@@ -39,8 +39,15 @@ public:
     explicit Viewport(QWidget* parent = nullptr);
     ~Viewport() override;
 
-    /// Shows \p mesh (nullptr clears the view). With \p frame the camera frames its bounds.
+    /// Shows \p mesh (nullptr clears the view) in its materials' colours. With \p frame the
+    /// camera frames its bounds.
     void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true);
+    /// Colours the mesh per vertex (linear RGB, one per vertex, e.g. attributeColors()), or by
+    /// its materials again when \p colors is empty or does not match the mesh.
+    void setVertexColors(std::vector<glm::vec3> colors);
+    bool usesVertexColors() const {
+        return !mVertexColors.empty() && mVertexColors.size() == vertexCount();
+    }
     const std::shared_ptr<const mesh::Mesh>& mesh() const { return mMesh; }
 
     OrbitCamera& camera() { return mCamera; }
@@ -86,7 +93,11 @@ private:
     void buildGrid();
     float aspect() const;
 
+    std::size_t vertexCount() const;
+
     std::shared_ptr<const mesh::Mesh> mMesh;
+    std::vector<glm::vec3> mVertexColors;
+    bool mUseVertexColors = false; ///< what the uploaded buffer holds
     glm::vec3 mBoundsLo{-0.5f, 0.0f, -0.5f};
     glm::vec3 mBoundsHi{0.5f, 1.0f, 0.5f};
     OrbitCamera mCamera;

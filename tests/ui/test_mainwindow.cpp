@@ -286,6 +286,59 @@ private Q_SLOTS:
         QCOMPARE(titles.value(2), QStringLiteral("&Ansicht"));
     }
 
+    /// View ▸ Colour by: an L-system tree offers only branch order; a self-organizing tree
+    /// shows its light per internode on the ramp (dark blue → yellow), and Material brings the
+    /// bark and leaf colours back. Runs last: it changes the open species.
+    void colourByNodeAttributes() {
+        QMenu* menu = mWindow->findChild<QMenu*>(QStringLiteral("colorMenu"));
+        QVERIFY(menu);
+        const QList<QAction*> actions = menu->actions();
+        QCOMPARE(actions.size(), 5);
+        QVERIFY(!actions[1]->isEnabled()); // light: the ternary tree is an L-system
+        QVERIFY(!actions[2]->isEnabled());
+        QVERIFY(!actions[3]->isEnabled());
+        QVERIFY(actions[4]->isEnabled()); // branch order
+        mWindow->setColorBy(ColorBy::BranchOrder);
+        QVERIFY(mWindow->viewport()->usesVertexColors());
+        QVERIFY(actions[4]->isChecked());
+
+        QSignalSpy finished(mWindow.get(), &MainWindow::generationFinished);
+        mWindow->openSpecies(QDir(PresetLibrary::directory()).filePath("so-broadleaf.json"));
+        QVERIFY(finished.wait(kGenerationTimeoutMs));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(mWindow->lastError()));
+        QVERIFY(actions[1]->isEnabled() && actions[2]->isEnabled() && actions[3]->isEnabled());
+        QVERIFY(mWindow->viewport()->usesVertexColors()); // the mode stays across trees
+        mWindow->setColorBy(ColorBy::Light);
+        QVERIFY(mWindow->viewport()->usesVertexColors());
+        QVERIFY(mWindow->statusBar()->currentMessage().contains(QStringLiteral("Light")));
+        Viewport* viewport = mWindow->viewport();
+        viewport->frameScene();
+        const QImage light = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        QVERIFY(light.save(outputPath(QStringLiteral("ui_colour_by_light.png"))));
+        qint64 blue = 0, yellow = 0, material = 0;
+        for (int y = 0; y < light.height(); ++y)
+            for (int x = 0; x < light.width(); ++x) {
+                const QRgb c = light.pixel(x, y);
+                const int r = qRed(c), g = qGreen(c), b = qBlue(c);
+                blue += b > r + 25 && b > g && b < 170; // the ramp's dark end, not the sky
+                yellow += r > b + 60 && g > b + 60;
+                material += isBark(c);
+            }
+        qInfo("colour by light: %lld dark blue, %lld yellow, %lld bark pixels", blue, yellow,
+              material);
+        QVERIFY2(blue > 200, "no shaded (low light) branches on the ramp's dark end");
+        QVERIFY2(yellow > 200, "no lit twigs on the ramp's bright end");
+
+        mWindow->setColorBy(ColorBy::Material);
+        QVERIFY(!viewport->usesVertexColors());
+        const QImage plain = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        qint64 tree = 0;
+        for (int y = 0; y < plain.height(); ++y)
+            for (int x = 0; x < plain.width(); ++x)
+                tree += isTree(plain.pixel(x, y));
+        QVERIFY(tree > qint64(plain.width()) * plain.height() / 100);
+    }
+
 private:
     std::unique_ptr<MainWindow> mWindow;
 };

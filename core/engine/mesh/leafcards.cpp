@@ -22,6 +22,8 @@ void appendLeafCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
         out.branchOrder.resize(nv, 0);
         out.flexibility.resize(nv, 1.0f);
     }
+    const bool ids = !out.node.empty();
+    if (ids) out.node.resize(nv, Mesh::kNoNode);
     out.indices.resize(i0 + 6 * leaves.size());
     const auto aspect = static_cast<float>(settings.aspect);
     const auto scale = static_cast<float>(settings.sizeScale);
@@ -39,6 +41,9 @@ void appendLeafCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
             out.positions[v + c] = corners[c];
             out.normals[v + c] = n;
             out.uvs[v + c] = kUv[c];
+            if (ids)
+                out.node[v + c] =
+                    leaf.node >= 0 ? static_cast<std::uint32_t>(leaf.node) : Mesh::kNoNode;
             if (wind) {
                 const bool known = skeleton && leaf.node >= 0 &&
                                    static_cast<std::size_t>(leaf.node) < skeleton->size();

@@ -17,7 +17,8 @@ struct LeafCardSettings {
 /// Leaf::position and extends Leaf::size metres along the leaf's heading, aspect·size wide
 /// along its left axis; its normal is the leaf's up axis. UVs: u = 0..1 across, v = 0 at the
 /// stem to 1 at the tip, so a leaf texture stands upright. When \p skeleton is given and the
-/// mesh carries wind attributes, leaves take their node's branch order and flexibility 1.
+/// mesh carries wind attributes, leaves take their node's branch order and flexibility 1. When
+/// the mesh carries node ids (Mesh::node), each card's vertices get its leaf's node.
 void appendLeafCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
                      const LeafCardSettings& settings, const skel::Skeleton* skeleton = nullptr);
 

@@ -28,6 +28,12 @@ struct Mesh {
     /// leaves) flexibility weight.
     std::vector<std::uint16_t> branchOrder;
     std::vector<float> flexibility;
+    /// Optional (empty or of positions' size): the skeleton node each vertex was made for (its
+    /// ring's node, the first node of a lateral for the lateral's base ring, a cap's end node,
+    /// a leaf card's node; kNoNode when unknown), so that a viewer can colour the mesh by
+    /// per-node attributes (light, vigour, age, order).
+    std::vector<std::uint32_t> node;
+    static constexpr std::uint32_t kNoNode = 0xffffffffu;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }

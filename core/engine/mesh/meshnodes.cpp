@@ -89,6 +89,7 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed) 
     s.tubes.thicknessMultiplier = ranged(p, "thickness_multiplier", 0.8, 1e-6, 1.0);
     s.tubes.radiusScale = ranged(p, "radius_scale", 1.0, 0.0, 1e3);
     s.tubes.windAttributes = p.boolean("wind_attributes", false);
+    s.tubes.nodeIds = p.boolean("node_ids", false);
     s.leaves = p.boolean("leaves", true);
     s.leafCards.aspect = ranged(p, "leaf_aspect", 0.5, 1e-6, 4.0);
     s.leafCards.sizeScale = ranged(p, "leaf_scale", 1.0, 1e-6, 100.0);
@@ -209,8 +210,8 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
         1,
         evaluateTubeMesh,
         {"resolution", "caps", "thickness", "initial_thickness", "thickness_multiplier",
-         "radius_scale", "wind_attributes", "leaves", "leaf_aspect", "leaf_scale", "lod_distance",
-         "lod_bands", "lod_min_twig_pixels", "lod_screen_height", "lod_fov"}});
+         "radius_scale", "wind_attributes", "node_ids", "leaves", "leaf_aspect", "leaf_scale",
+         "lod_distance", "lod_bands", "lod_min_twig_pixels", "lod_screen_height", "lod_fov"}});
     registry.add(graph::NodeType{"leaves",
                                  1,
                                  1,

@@ -109,6 +109,7 @@ struct Writer {
     glm::vec2* uvs;
     std::uint16_t* orders; ///< null without wind attributes
     float* flexes;
+    std::uint32_t* nodeIds; ///< null without node ids
     std::uint32_t* idx;
     std::size_t base;
     std::size_t indexBase;
@@ -117,6 +118,7 @@ struct Writer {
     std::uint16_t order = 0;
     float invRMax = 0.0f;
     float flex = 0.0f;
+    std::uint32_t node = 0;
 
     void vertex(const glm::vec3& p, const glm::vec3& n, const glm::vec2& uv) {
         const std::size_t k = v - base;
@@ -127,6 +129,7 @@ struct Writer {
             orders[k] = order;
             flexes[k] = flex;
         }
+        if (nodeIds) nodeIds[k] = node;
         ++v;
     }
     void triangle(std::size_t a, std::size_t b, std::size_t c) {
@@ -147,32 +150,35 @@ struct Scratch {
     std::vector<glm::vec2> uvs;
     std::vector<std::uint16_t> orders;
     std::vector<float> flexes;
+    std::vector<std::uint32_t> nodeIds;
     std::vector<std::uint32_t> idx;
 
     Writer writer(std::size_t vBegin, std::size_t vCount, std::size_t iBegin, std::size_t iCount,
-                  bool wind) {
+                  bool wind, bool ids) {
         if (pos.size() < vCount) {
             pos.resize(vCount);
             nrm.resize(vCount);
             uvs.resize(vCount);
-            if (wind) {
-                orders.resize(vCount);
-                flexes.resize(vCount);
-            }
         }
+        if (wind && orders.size() < vCount) {
+            orders.resize(vCount);
+            flexes.resize(vCount);
+        }
+        if (ids && nodeIds.size() < vCount) nodeIds.resize(vCount);
         if (idx.size() < iCount) idx.resize(iCount);
         return Writer{pos.data(),
                       nrm.data(),
                       uvs.data(),
                       wind ? orders.data() : nullptr,
                       wind ? flexes.data() : nullptr,
+                      ids ? nodeIds.data() : nullptr,
                       idx.data(),
                       vBegin,
                       iBegin,
                       vBegin,
                       iBegin};
     }
-    void appendTo(Mesh& m, std::size_t vCount, std::size_t iCount, bool wind) const {
+    void appendTo(Mesh& m, std::size_t vCount, std::size_t iCount, bool wind, bool ids) const {
         const auto vn = static_cast<std::ptrdiff_t>(vCount);
         m.positions.insert(m.positions.end(), pos.begin(), pos.begin() + vn);
         m.normals.insert(m.normals.end(), nrm.begin(), nrm.begin() + vn);
@@ -181,6 +187,7 @@ struct Scratch {
             m.branchOrder.insert(m.branchOrder.end(), orders.begin(), orders.begin() + vn);
             m.flexibility.insert(m.flexibility.end(), flexes.begin(), flexes.begin() + vn);
         }
+        if (ids) m.node.insert(m.node.end(), nodeIds.begin(), nodeIds.begin() + vn);
         m.indices.insert(m.indices.end(), idx.begin(),
                          idx.begin() + static_cast<std::ptrdiff_t>(iCount));
     }
@@ -230,6 +237,8 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
 
     for (std::size_t k = 0; k < m; ++k) {
+        // A lateral's base ring sits at its parent's node but belongs to the lateral.
+        w.node = static_cast<std::uint32_t>(nodes[k == 0 && lateral ? 1 : k]);
         const glm::vec3 p = P(k);
         const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
         const glm::vec3 t = k == 0       ? dNext
@@ -294,6 +303,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     if (caps && !lateral) {
         const std::size_t end = w.v;
         w.v = firstRing - ringVerts - 1;
+        w.node = static_cast<std::uint32_t>(nodes[0]);
         cap(w, P(0), n0, b0, -t0, R(0), cs, true);
         w.v = end;
     }
@@ -364,6 +374,8 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         out.branchOrder.resize(existing, 0);
         out.flexibility.resize(existing, 1.0f);
     }
+    const bool ids = settings.nodeIds || !out.node.empty();
+    if (ids) out.node.resize(existing, Mesh::kNoNode);
     auto reserveBig = [](auto& v, std::size_t n) {
         const bool fresh = v.capacity() < n;
         v.reserve(n);
@@ -376,6 +388,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         reserveBig(out.branchOrder, vOff[count]);
         reserveBig(out.flexibility, vOff[count]);
     }
+    if (ids) reserveBig(out.node, vOff[count]);
     reserveBig(out.indices, iOff[count]);
     if (iOff[count] > iOff[0]) {
         if (out.submeshes.empty() && iOff[0] > 0)
@@ -420,7 +433,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                 const std::size_t c0 = runs[static_cast<std::size_t>(ri)];
                 const std::size_t c1 = runs[static_cast<std::size_t>(ri) + 1];
                 const std::size_t nv = vOff[c1] - vOff[c0], ni = iOff[c1] - iOff[c0];
-                Writer w = scratch.writer(vOff[c0], nv, iOff[c0], ni, wind);
+                Writer w = scratch.writer(vOff[c0], nv, iOff[c0], ni, wind, ids);
                 w.invRMax = invRMax;
                 for (std::size_t c = c0; c < c1; ++c) {
                     const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
@@ -430,7 +443,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                     meshChain(w, s, radius, nodes, m, lateral, settings.caps, cs);
                 }
 #pragma omp ordered
-                scratch.appendTo(out, nv, ni, wind);
+                scratch.appendTo(out, nv, ni, wind, ids);
             }
         }
     }

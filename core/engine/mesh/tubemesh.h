@@ -24,6 +24,7 @@ struct TubeSettings {
     /// everything they carry (used by LOD to drop thin twigs); metres, 0 keeps everything.
     double minBranchRadius = 0.0;
     bool windAttributes = false; ///< fill Mesh::branchOrder and Mesh::flexibility
+    bool nodeIds = false;        ///< fill Mesh::node (for colouring by node attributes)
 };
 
 /// Smallest radius a ring gets (metres): zero-width branches would give degenerate triangles.

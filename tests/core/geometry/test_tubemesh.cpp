@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "engine/lsystem/turtle.h"
+#include "engine/mesh/leafcards.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/util/error.h"
 #include "referencetubemesh.h"
@@ -276,4 +277,57 @@ TEST(TubeMesh, SameBytesAsStraightforwardMesher) {
             }
         }
     omp_set_num_threads(saved);
+}
+
+TEST(TubeMesh, NodeIdsNameTheNodeOfEveryVertex) {
+    // F F [ + F F ]: trunk nodes 0, 1, 2; the lateral's nodes 3, 4 start at node 2.
+    const auto s = tree("FF[+FF]");
+    ASSERT_EQ(s.size(), 5u);
+    ASSERT_EQ(s.parent[3], 2);
+    mesh::TubeSettings settings;
+    settings.resolution = 5;
+    const auto plain = mesh::buildTubeMesh(s, settings);
+    EXPECT_TRUE(plain.node.empty()) << "node ids only on request";
+    settings.nodeIds = true;
+    const auto m = mesh::buildTubeMesh(s, settings);
+    ASSERT_EQ(m.node.size(), m.positions.size());
+    EXPECT_EQ(m.positions, plain.positions) << "asking for node ids changes no geometry";
+    EXPECT_EQ(m.indices, plain.indices);
+    const auto r = mesh::tubeRadii(s, settings);
+    std::vector<int> perNode(s.size(), 0);
+    for (std::size_t v = 0; v < m.node.size(); ++v) {
+        const std::uint32_t n = m.node[v];
+        ASSERT_LT(n, s.size()) << "vertex " << v;
+        ++perNode[n];
+        // Ring vertices lie at their node's radius from it, cap centres on it; the lateral's
+        // base ring lies around its parent node 2 (radius clamped to the parent's) but belongs
+        // to the lateral's first node 3.
+        const float d = glm::distance(m.positions[v], s.position[n]);
+        const float dParent = glm::distance(m.positions[v], s.position[2]);
+        const bool onOwn = d < 1e-5f || std::abs(d - r[n]) < 1e-4f;
+        const bool baseRing = n == 3 && std::abs(dParent - std::min(r[2], r[3])) < 1e-4f;
+        EXPECT_TRUE(onOwn || baseRing)
+            << "vertex " << v << " of node " << n << " lies " << d << " from it";
+    }
+    // A ring of 6 vertices per node, plus the lateral's base ring on node 3 and the caps
+    // (6 + centre) of the root 0 and the chain ends 2 and 4.
+    EXPECT_EQ(perNode[0], 6 + 7);
+    EXPECT_EQ(perNode[1], 6);
+    EXPECT_EQ(perNode[2], 6 + 7);
+    EXPECT_EQ(perNode[3], 6 + 6);
+    EXPECT_EQ(perNode[4], 6 + 7);
+
+    // Leaf cards take their leaf's node when the mesh carries node ids.
+    std::vector<skel::Leaf> leaves(2);
+    leaves[0].node = 4;
+    leaves[0].size = 0.1f;
+    leaves[1].node = -1;
+    leaves[1].size = 0.1f;
+    mesh::Mesh withLeaves = m;
+    mesh::appendLeafCards(withLeaves, leaves, {});
+    ASSERT_EQ(withLeaves.node.size(), withLeaves.positions.size());
+    for (std::size_t c = 0; c < 4; ++c) {
+        EXPECT_EQ(withLeaves.node[m.node.size() + c], 4u);
+        EXPECT_EQ(withLeaves.node[m.node.size() + 4 + c], mesh::Mesh::kNoNode);
+    }
 }
