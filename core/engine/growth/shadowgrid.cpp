@@ -183,11 +183,13 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
             glm::ivec4& e = mLayerExtent[b];
             e = {std::min(e.x, s.voxel.x), std::max(e.y, s.voxel.x), std::min(e.z, s.voxel.z),
                  std::max(e.w, s.voxel.z)};
-            const int depth = kernels[s.kernel].depth;
-            for (int q = 0; q <= depth; ++q)
-                ++mReach[b * depths + static_cast<std::size_t>(q)];
+            // Counted at its own depth here; the suffix sums below make it "reaches q".
+            ++mReach[b * depths + static_cast<std::size_t>(kernels[s.kernel].depth)];
         }
     }
+    for (std::size_t b = 0; b < layers; ++b)
+        for (std::size_t q = depths - 1; q-- > 0;)
+            mReach[b * depths + q] += mReach[b * depths + q + 1];
 
     // Each output layer gathers the pyramid slices (squares) of the sources up to maxDepth
     // above it. Where the squares cover much more than their bounding rectangle, they go into a
