@@ -1,6 +1,7 @@
 #include "document/project.h"
 
 #include "document/formatupgrade.h"
+#include "engine/graph/vectorparam.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -15,22 +16,11 @@ namespace sylva::doc {
 namespace {
 
 using graph::Value;
+using graph::vec3Of;
 
 const std::vector<std::string> kKnownKeys = {
     "format",  "format_version", "app_version", "seed",   "species",
     "domains", "instances",      "obstacles",   "camera", "light"};
-
-glm::vec3 vec3Of(const Value& v, const std::string& what) {
-    const Value::Array& a = v.toArray(what);
-    if (a.size() != 3) throw InvalidInput(what + " must be [x, y, z]");
-    glm::vec3 out;
-    for (int i = 0; i < 3; ++i) {
-        const double d = a[static_cast<std::size_t>(i)].toNumber(what);
-        if (!std::isfinite(d)) throw InvalidInput(what + " must be finite");
-        out[i] = static_cast<float>(d);
-    }
-    return out;
-}
 
 glm::vec2 vec2Of(const Value& v, const std::string& what) {
     const Value::Array& a = v.toArray(what);

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/graph/vectorparam.h"
 #include "engine/util/error.h"
 
 namespace sylva::env {
@@ -18,16 +19,12 @@ using graph::NodeContext;
 using graph::NodeOutput;
 using graph::Value;
 
-glm::vec3 vec3Of(const Value& v, const std::string& what) {
+// A vector parameter; a single number means the same value on every axis (uniform scale).
+glm::vec3 vec3OrUniform(const Value& v, const std::string& what) {
     if (v.isNumber()) return glm::vec3(static_cast<float>(v.toNumber(what)));
-    const Value::Array& a = v.toArray(what);
-    if (a.size() != 3) throw InvalidInput(what + " must be [x, y, z]");
-    glm::vec3 out;
-    for (int k = 0; k < 3; ++k) {
-        const double x = a[static_cast<std::size_t>(k)].toNumber(what);
-        requireRange(what.c_str(), x, -1e9, 1e9);
-        out[k] = static_cast<float>(x);
-    }
+    const glm::vec3 out = graph::vec3Of(v, what);
+    for (int k = 0; k < 3; ++k)
+        requireRange(what.c_str(), out[k], -1e9, 1e9);
     return out;
 }
 
@@ -65,7 +62,8 @@ NodeOutput evaluateAdapt(const NodeContext& ctx) {
             specs.push_back(obstacleSpecFromValue(entry, ctx.baseDir));
 
     glm::vec3 position(0.0f);
-    if (const Value* v = p.find("position"); v && !v->isNull()) position = vec3Of(*v, "position");
+    if (const Value* v = p.find("position"); v && !v->isNull())
+        position = vec3OrUniform(*v, "position");
     const double rotation = p.number("rotation", 0.0);
     const double scale = p.number("scale", 1.0);
     requireRange("rotation", rotation, -1e6, 1e6);
@@ -148,9 +146,10 @@ ObstacleSpec obstacleSpecFromValue(const Value& v, const std::filesystem::path& 
     ObstacleSpec spec;
     const std::filesystem::path path(file->toString("obstacle file"));
     spec.file = path.is_absolute() ? path : baseDir / path;
-    if (const Value* t = v.find("translate")) spec.transform.translate = vec3Of(*t, "translate");
-    if (const Value* r = v.find("rotate")) spec.transform.rotateDeg = vec3Of(*r, "rotate");
-    if (const Value* s = v.find("scale")) spec.transform.scale = vec3Of(*s, "scale");
+    if (const Value* t = v.find("translate"))
+        spec.transform.translate = vec3OrUniform(*t, "translate");
+    if (const Value* r = v.find("rotate")) spec.transform.rotateDeg = vec3OrUniform(*r, "rotate");
+    if (const Value* s = v.find("scale")) spec.transform.scale = vec3OrUniform(*s, "scale");
     return spec;
 }
 
@@ -163,7 +162,7 @@ AdaptParams adaptParamsFromValue(const Value& p) {
     a.recheckAll = p.boolean("recheck_all", a.recheckAll);
     a.returnToVertical = p.boolean("return_to_vertical", a.returnToVertical);
     if (const Value* l = p.find("light_direction"); l && !l->isNull())
-        a.lightDirection = vec3Of(*l, "light_direction");
+        a.lightDirection = vec3OrUniform(*l, "light_direction");
     requireRange("max_bend", a.maxBend, 0.0, 1.5707963267948966);
     requireRange("bend_multiplier", a.bendMultiplier, 0.0, 1.0);
     return a;

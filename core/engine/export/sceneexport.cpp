@@ -1,13 +1,15 @@
 #include "engine/export/sceneexport.h"
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
+#include <cstring>
+#include <map>
 #include <memory>
 #include <unordered_map>
 
 #include <assimp/Exporter.hpp>
 #include <assimp/GltfMaterial.h>
+#include <assimp/IOStream.hpp>
+#include <assimp/IOSystem.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
@@ -165,6 +167,57 @@ SceneFormat sceneFormatFor(const std::filesystem::path& path) {
     throw InvalidInput("unknown scene format '" + ext + "' (use .glb, .gltf or .fbx)");
 }
 
+namespace {
+
+// A growable in-memory file that Assimp's exporters can write, seek and overwrite.
+class MemoryStream : public Assimp::IOStream {
+public:
+    explicit MemoryStream(std::string& bytes) : mBytes(bytes) {}
+    size_t Read(void*, size_t, size_t) override { return 0; } // export only
+    size_t Write(const void* buffer, size_t size, size_t count) override {
+        const std::size_t n = size * count;
+        if (mPos + n > mBytes.size()) mBytes.resize(mPos + n);
+        std::memcpy(mBytes.data() + mPos, buffer, n);
+        mPos += n;
+        return count;
+    }
+    aiReturn Seek(size_t offset, aiOrigin origin) override {
+        const std::size_t base = origin == aiOrigin_SET   ? 0
+                                 : origin == aiOrigin_CUR ? mPos
+                                                          : mBytes.size();
+        if (base + offset > mBytes.size()) return aiReturn_FAILURE;
+        mPos = base + offset;
+        return aiReturn_SUCCESS;
+    }
+    size_t Tell() const override { return mPos; }
+    size_t FileSize() const override { return mBytes.size(); }
+    void Flush() override {}
+
+private:
+    std::string& mBytes;
+    std::size_t mPos = 0;
+};
+
+// The files an exporter opens for writing, kept in memory by name.
+class MemoryFiles : public Assimp::IOSystem {
+public:
+    bool Exists(const char* file) const override { return mFiles.count(file) != 0; }
+    char getOsSeparator() const override { return '/'; }
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        if (mode == nullptr || (mode[0] != 'w' && mode[0] != 'a')) return nullptr;
+        std::string& bytes = mFiles[file];
+        if (mode[0] == 'w') bytes.clear();
+        return new MemoryStream(bytes);
+    }
+    void Close(Assimp::IOStream* stream) override { delete stream; }
+    std::string take(const std::string& file) { return std::move(mFiles[file]); }
+
+private:
+    std::map<std::string, std::string> mFiles;
+};
+
+} // namespace
+
 void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneFormat format) {
     const std::unique_ptr<aiScene> scene = buildScene(desc);
     const char* id = format == SceneFormat::Glb        ? "glb2"
@@ -173,25 +226,14 @@ void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneF
                                                        : "fbx";
     Assimp::Exporter exporter;
     if (format == SceneFormat::Fbx || format == SceneFormat::FbxAscii) {
-        // Assimp's FBX writer seeks back to patch block offsets, which its memory blobs do not
-        // support: it writes a temporary beside the target, which is read back, repaired
-        // (binary) or given its unit (both), and written atomically.
-        std::string tempName(1, '.'); // appended: GCC 12 warns falsely on "." + std::string
-        tempName.append(path.filename().string());
-        tempName.append(".assimp.fbx");
-        const std::filesystem::path temp = path.parent_path() / tempName;
-        struct RemoveTemp {
-            const std::filesystem::path& path;
-            ~RemoveTemp() {
-                std::error_code ec;
-                std::filesystem::remove(path, ec);
-            }
-        } removeTemp{temp};
-        if (exporter.Export(scene.get(), id, temp.string()) != AI_SUCCESS)
+        // Assimp's FBX writer seeks back to patch block offsets, which its export blobs do not
+        // support: it writes into a seekable in-memory file instead, whose bytes are repaired
+        // (binary) or given their unit (both) and written atomically. No temporary on disk.
+        auto* files = new MemoryFiles; // owned by the exporter from here on
+        exporter.SetIOHandler(files);
+        if (exporter.Export(scene.get(), id, "scene.fbx") != AI_SUCCESS)
             throw IoError("cannot export " + path.string() + ": " + exporter.GetErrorString());
-        std::ifstream in(temp, std::ios::binary);
-        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        if (!in.good() && !in.eof()) throw IoError("cannot read back " + temp.string());
+        std::string bytes = files->take("scene.fbx");
         writeFileAtomically(path, format == SceneFormat::Fbx
                                       ? repairAssimpFbxBinary(bytes)
                                       : setFbxAsciiUnitScale(std::move(bytes)));

@@ -7,46 +7,56 @@
 
 namespace sylva::growth {
 
-const std::vector<std::string>& selfOrganizingParamNames() {
-    static const std::vector<std::string> names = {"cycles",
-                                                   "environment",
-                                                   "allocation",
-                                                   "alpha",
-                                                   "lambda",
-                                                   "w_min",
-                                                   "w_max",
-                                                   "kappa",
-                                                   "perception_angle",
-                                                   "perception_radius",
-                                                   "occupancy_radius",
-                                                   "markers",
-                                                   "crown_radius",
-                                                   "crown_base",
-                                                   "crown_top",
-                                                   "shadow_a",
-                                                   "shadow_b",
-                                                   "shadow_depth",
-                                                   "full_exposure",
-                                                   "voxel_size",
-                                                   "internode_length",
-                                                   "branch_angle",
-                                                   "divergence_angle",
-                                                   "optimal_weight",
-                                                   "tropism_weight",
-                                                   "direction_noise",
-                                                   "max_shoot_length",
-                                                   "shedding_threshold",
-                                                   "tip_radius",
-                                                   "pipe_exponent",
-                                                   "leaf_size",
-                                                   "leaf_age",
-                                                   "max_internodes",
-                                                   "lateral_tropism_weight",
-                                                   "seed"};
-    return names;
-}
-
 namespace {
+
+using P = SelfOrganizingParams;
+
+// The numeric parameters, by name: one table gives both the node's known parameter names and
+// the reading (ranges are checked by SelfOrganizingParams::validate()).
+struct RealParam {
+    const char* name;
+    double P::*member;
+};
+constexpr RealParam kReals[] = {
+    {"alpha", &P::alpha},
+    {"lambda", &P::lambda},
+    {"w_min", &P::wMin},
+    {"w_max", &P::wMax},
+    {"kappa", &P::kappa},
+    {"perception_angle", &P::perceptionAngle},
+    {"perception_radius", &P::perceptionRadius},
+    {"occupancy_radius", &P::occupancyRadius},
+    {"crown_radius", &P::crownRadius},
+    {"crown_base", &P::crownBase},
+    {"crown_top", &P::crownTop},
+    {"shadow_a", &P::shadowA},
+    {"shadow_b", &P::shadowB},
+    {"full_exposure", &P::fullExposure},
+    {"voxel_size", &P::voxelSize},
+    {"internode_length", &P::internodeLength},
+    {"branch_angle", &P::branchAngle},
+    {"divergence_angle", &P::divergenceAngle},
+    {"optimal_weight", &P::optimalWeight},
+    {"tropism_weight", &P::tropismWeight},
+    {"lateral_tropism_weight", &P::lateralTropismWeight},
+    {"direction_noise", &P::directionNoise},
+    {"shedding_threshold", &P::sheddingThreshold},
+    {"tip_radius", &P::tipRadius},
+    {"pipe_exponent", &P::pipeExponent},
+    {"leaf_size", &P::leafSize},
+};
+
+// Whole-number parameters with their range (checked here: a fraction is an error too).
+struct IntegerParam {
+    const char* name;
+    int P::*member;
+    int lo, hi;
+};
+constexpr IntegerParam kIntegers[] = {
+    {"cycles", &P::cycles, 1, 200},           {"markers", &P::markers, 0, 5'000'000},
+    {"shadow_depth", &P::shadowDepth, 0, 32}, {"max_shoot_length", &P::maxShootLength, 1, 1000},
+    {"leaf_age", &P::leafAge, 0, 200},
+};
 
 int integerIn(const graph::Value& v, const char* key, int fallback, int lo, int hi) {
     const double d = v.number(key, fallback);
@@ -58,9 +68,22 @@ int integerIn(const graph::Value& v, const char* key, int fallback, int lo, int 
 
 } // namespace
 
+const std::vector<std::string>& selfOrganizingParamNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n = {"environment", "allocation", "max_internodes", "seed"};
+        for (const IntegerParam& i : kIntegers)
+            n.emplace_back(i.name);
+        for (const RealParam& r : kReals)
+            n.emplace_back(r.name);
+        return n;
+    }();
+    return names;
+}
+
 SelfOrganizingParams selfOrganizingParamsFrom(const graph::Value& v) {
     SelfOrganizingParams p;
-    p.cycles = integerIn(v, "cycles", p.cycles, 1, 200);
+    for (const IntegerParam& i : kIntegers)
+        p.*i.member = integerIn(v, i.name, p.*i.member, i.lo, i.hi);
     const std::string env = v.string("environment", "shadow_propagation");
     if (env == "shadow_propagation")
         p.environment = SoEnvironment::ShadowPropagation;
@@ -78,36 +101,8 @@ SelfOrganizingParams selfOrganizingParamsFrom(const graph::Value& v) {
     else
         throw InvalidInput("allocation must be \"borchert_honda\" or \"priority\", got \"" + alloc +
                            "\"");
-    p.alpha = v.number("alpha", p.alpha);
-    p.lambda = v.number("lambda", p.lambda);
-    p.wMin = v.number("w_min", p.wMin);
-    p.wMax = v.number("w_max", p.wMax);
-    p.kappa = v.number("kappa", p.kappa);
-    p.perceptionAngle = v.number("perception_angle", p.perceptionAngle);
-    p.perceptionRadius = v.number("perception_radius", p.perceptionRadius);
-    p.occupancyRadius = v.number("occupancy_radius", p.occupancyRadius);
-    p.markers = integerIn(v, "markers", p.markers, 0, 5'000'000);
-    p.crownRadius = v.number("crown_radius", p.crownRadius);
-    p.crownBase = v.number("crown_base", p.crownBase);
-    p.crownTop = v.number("crown_top", p.crownTop);
-    p.shadowA = v.number("shadow_a", p.shadowA);
-    p.shadowB = v.number("shadow_b", p.shadowB);
-    p.shadowDepth = integerIn(v, "shadow_depth", p.shadowDepth, 0, 32);
-    p.fullExposure = v.number("full_exposure", p.fullExposure);
-    p.voxelSize = v.number("voxel_size", p.voxelSize);
-    p.internodeLength = v.number("internode_length", p.internodeLength);
-    p.branchAngle = v.number("branch_angle", p.branchAngle);
-    p.divergenceAngle = v.number("divergence_angle", p.divergenceAngle);
-    p.optimalWeight = v.number("optimal_weight", p.optimalWeight);
-    p.tropismWeight = v.number("tropism_weight", p.tropismWeight);
-    p.lateralTropismWeight = v.number("lateral_tropism_weight", p.lateralTropismWeight);
-    p.directionNoise = v.number("direction_noise", p.directionNoise);
-    p.maxShootLength = integerIn(v, "max_shoot_length", p.maxShootLength, 1, 1000);
-    p.sheddingThreshold = v.number("shedding_threshold", p.sheddingThreshold);
-    p.tipRadius = v.number("tip_radius", p.tipRadius);
-    p.pipeExponent = v.number("pipe_exponent", p.pipeExponent);
-    p.leafSize = v.number("leaf_size", p.leafSize);
-    p.leafAge = integerIn(v, "leaf_age", p.leafAge, 0, 200);
+    for (const RealParam& r : kReals)
+        p.*r.member = v.number(r.name, p.*r.member);
     const double maxInternodes = v.number("max_internodes", static_cast<double>(p.maxInternodes));
     requireRange("max_internodes", maxInternodes, 1, 50'000'000);
     p.maxInternodes = static_cast<std::int64_t>(maxInternodes);

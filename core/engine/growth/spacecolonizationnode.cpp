@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "engine/graph/vectorparam.h"
 #include "engine/growth/envelope.h"
 #include "engine/growth/spacecolonization.h"
 #include "engine/util/error.h"
@@ -17,16 +18,7 @@ using graph::Value;
 glm::vec3 vec3Param(const Value& obj, const std::string& key, const glm::vec3& fallback,
                     const std::string& what) {
     const Value* v = obj.find(key);
-    if (v == nullptr) return fallback;
-    const Value::Array& a = v->toArray(what);
-    if (a.size() != 3) throw InvalidInput(what + " must be an array of 3 numbers");
-    glm::vec3 r;
-    for (int i = 0; i < 3; ++i) {
-        const double x = a[static_cast<std::size_t>(i)].toNumber(what);
-        if (!std::isfinite(x)) throw InvalidInput(what + " must be finite");
-        r[i] = static_cast<float>(x);
-    }
-    return r;
+    return v == nullptr ? fallback : graph::vec3Of(*v, what);
 }
 
 void checkKeys(const Value& obj, const std::set<std::string>& allowed, const std::string& what) {
