@@ -43,6 +43,46 @@ void gatherLight(const MetamerTopology& t, std::span<const double> terminalLight
     }
 }
 
+bool gatherLightAndMarkShed(const MetamerTopology& t, std::span<const double> terminalLight,
+                            std::span<const double> axillaryLight,
+                            std::span<const double> thresholdPerTree, std::span<double> gathered,
+                            std::span<std::int32_t> internodes, std::span<std::uint8_t> marks,
+                            std::vector<ShedSums>& scratch) {
+    const std::size_t n = t.parent.size();
+    scratch.resize(n);
+    ShedSums* sums = scratch.data();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double own = (t.mainChild[i] < 0 ? terminalLight[i] : 0.0) +
+                           (t.lateralChild[i] < 0 ? axillaryLight[i] : 0.0);
+        sums[i] = {own, own, 1, 1};
+    }
+    bool any = false;
+    // Reverse scan: when i is reached, all its descendants (higher indices) have added into it,
+    // so its sums are final and its shedding can be decided before it adds to its parent.
+    for (std::size_t i = n; i-- > 0;) {
+        const ShedSums s = sums[i];
+        gathered[i] = s.kept;
+        internodes[i] = s.keptCount;
+        const std::int32_t p = t.parent[i];
+        if (p < 0) {
+            marks[i] = 0;
+            continue;
+        }
+        const bool lateral = t.lateralChild[sz(p)] == static_cast<std::int32_t>(i);
+        const bool shedRoot = lateral && s.full < thresholdPerTree[t.tree[i]] * s.fullCount;
+        marks[i] = static_cast<std::uint8_t>((shedRoot ? 1u : 0u) | (lateral ? 2u : 0u));
+        any = any || shedRoot;
+        ShedSums& up = sums[sz(p)];
+        up.full += s.full;
+        up.fullCount += s.fullCount;
+        // A shed branch adds nothing (adding +0.0 would not change the bits of the sum: the
+        // sums are ≥ 0, so x + 0.0 == x exactly).
+        up.kept += shedRoot ? 0.0 : s.kept;
+        up.keptCount += shedRoot ? 0 : s.keptCount;
+    }
+    return any;
+}
+
 Vigour allocateBorchertHonda(const MetamerTopology& t, std::span<const double> gathered,
                              std::span<const double> terminalLight,
                              std::span<const double> axillaryLight,

@@ -24,6 +24,27 @@ void gatherLight(const MetamerTopology& topology, std::span<const double> termin
                  std::span<const double> axillaryLight, std::span<double> gathered,
                  std::span<std::int32_t> internodes);
 
+/// Subtree sums before and after shedding (gatherLightAndMarkShed's scratch, one per metamer,
+/// kept together so a child adds into one cache line of its parent).
+struct ShedSums {
+    double full, kept;
+    std::int32_t fullCount, keptCount;
+};
+
+/// gatherLight and markShed in one reverse scan, for the growth loop. Fills \p gathered and
+/// \p internodes as gatherLight would for the tree that remains after shedding (the subtree
+/// sums of the shed lateral branches left out, in the same order, so the values are bit for bit
+/// those of gatherLight over the remaining metamers) and \p marks: bit 0 for the roots of shed
+/// branches (a lateral child whose full subtree has gathered / internodes below its tree's
+/// threshold, as in markShed), bit 1 for every lateral child. Everything under a marked root is
+/// shed too; the caller propagates that (parents before children). \p scratch is reused
+/// between calls. Returns whether any root is marked.
+bool gatherLightAndMarkShed(const MetamerTopology& topology, std::span<const double> terminalLight,
+                            std::span<const double> axillaryLight,
+                            std::span<const double> thresholdPerTree, std::span<double> gathered,
+                            std::span<std::int32_t> internodes, std::span<std::uint8_t> marks,
+                            std::vector<ShedSums>& scratch);
+
 /// Per-tree constants of the allocation models (index = MetamerTopology::tree).
 struct AllocationParams {
     double alpha = 2.0;  ///< v_base = α·Q_base, (0, 100]

@@ -11,6 +11,7 @@
 
 #include "engine/growth/pipemodel.h"
 #include "engine/util/error.h"
+#include "engine/util/randomvector.h"
 
 namespace sylva::growth {
 
@@ -32,20 +33,20 @@ glm::quat lateralFrame(const glm::quat& q, float branchAngle) {
     return q * glm::angleAxis(branchAngle, glm::vec3(0, 0, 1));
 }
 
-/// Minimal rotation turning the heading \p h of \p q into \p dir, then the phyllotaxis roll.
+/// Minimal rotation turning the unit heading \p h of \p q into the unit \p dir, then the
+/// phyllotaxis roll. The rotation is the unnormalized half-way quaternion (1 + h·d, h × d):
+/// one normalization of the product instead of one per factor.
 glm::quat steer(const glm::quat& q, const glm::vec3& h, const glm::vec3& dir,
                 const glm::quat& roll) {
-    glm::quat r = glm::rotation(h, dir);
-    if (glm::dot(h, dir) < -0.9999f) r = glm::angleAxis(kPi, skel::leftOf(q));
-    return glm::normalize(r * q * roll);
-}
-
-glm::vec3 randomUnit(Rng& rng) {
-    for (;;) {
-        const glm::vec3 v(rng.uniformf(-1, 1), rng.uniformf(-1, 1), rng.uniformf(-1, 1));
-        const float l2 = glm::dot(v, v);
-        if (l2 > 1e-4f && l2 <= 1.0f) return v / std::sqrt(l2);
+    const float c = glm::dot(h, dir);
+    glm::quat r;
+    if (c < -0.9999f) {
+        r = glm::angleAxis(kPi, skel::leftOf(q));
+    } else {
+        const glm::vec3 a = glm::cross(h, dir);
+        r = glm::quat(1.0f + c, a.x, a.y, a.z);
     }
+    return glm::normalize(r * q * roll);
 }
 
 glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
@@ -296,8 +297,6 @@ void SelfOrganizingSimulation::plant(std::size_t t) {
 void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
                                              std::vector<double>& axillary) {
     const std::size_t n = mM.size();
-    terminal.assign(n, 0.0);
-    axillary.assign(n, 0.0);
     auto terminalAlive = [&](std::size_t i) {
         return mM.mainChild[i] < 0 && !(mM.deadBuds[i] & 1u);
     };
@@ -305,6 +304,9 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
         return mM.lateralChild[i] < 0 && !(mM.deadBuds[i] & 2u);
     };
     if (mEnv == SoEnvironment::ShadowPropagation) {
+        // Every slot is written below (in parallel), so the arrays need no zeroing first.
+        terminal.resize(n);
+        axillary.resize(n);
         const ShadowGrid& grid = *mShadow;
         const auto count = static_cast<std::int64_t>(n);
         // Few trees, many metamers: look the light constants up per tree, not per metamer.
@@ -329,17 +331,20 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
             const auto i = static_cast<std::size_t>(k);
             if (k + kAhead < count) grid.prefetchCell(mCells[i + kAhead]);
             const std::int64_t cell = mCells[i];
-            if (cell == kNoBud) continue;
-            const std::uint16_t t = mM.tree[i];
-            const double q =
-                anyBlocked && grid.blocked(grid.voxelOf(mM.end[i]))
-                    ? 0.0
-                    : std::max(full[t] - grid.rawAt(cell) / ShadowGrid::kScale + a[t], 0.0);
-            if (terminalAlive(i)) terminal[i] = q;
-            if (axillaryAlive(i)) axillary[i] = q;
+            double q = 0.0;
+            if (cell != kNoBud) {
+                const std::uint16_t t = mM.tree[i];
+                q = anyBlocked && grid.blocked(grid.voxelOf(mM.end[i]))
+                        ? 0.0
+                        : std::max(full[t] - grid.rawAt(cell) / ShadowGrid::kScale + a[t], 0.0);
+            }
+            terminal[i] = terminalAlive(i) ? q : 0.0;
+            axillary[i] = axillaryAlive(i) ? q : 0.0;
         }
         return;
     }
+    terminal.assign(n, 0.0);
+    axillary.assign(n, 0.0);
 
     // Space colonization: each marker belongs to the closest bud that perceives it.
     struct Bud {
@@ -444,71 +449,70 @@ glm::vec3 SelfOrganizingSimulation::optimalShadowDirection(const glm::ivec3& vox
     return safeNormalize(glm::vec3(sx, sy, sz), dir);
 }
 
-void SelfOrganizingSimulation::shed(const std::vector<std::uint8_t>& removed) {
+void SelfOrganizingSimulation::shed() {
     const std::size_t n = mM.size();
     const bool incremental = mShadow && !mOptions.naiveShadow;
     const bool sc = mEnv == SoEnvironment::SpaceColonization;
     mRemap.resize(n);
+    // One forward pass: a metamer is shed when it is a marked root or its parent is shed;
+    // survivors move down in place (stable: the write slot k never passes the read slot i).
+    // Child links are set from the child's side (it knows from its mark whether it is its
+    // parent's lateral child), because the parent's old slot may already be overwritten.
     std::int32_t next = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        if (removed[i]) {
+        const std::int32_t p = mM.parent[i];
+        const std::uint8_t mark = mMarks[i];
+        const std::int32_t newParent = p < 0 ? -1 : mRemap[sz(p)];
+        if ((mark & 1u) || (p >= 0 && newParent < 0)) {
             const std::uint16_t t = mM.tree[i];
             if (incremental) mSources.push_back({mShadow->voxelOf(mM.end[i]), -1, t});
             --mCount[t];
             ++mShedTree[t];
             ++mShed;
             mRemap[i] = -1;
+            // The root of a shed branch leaves a scar: its parent's bud is gone for good.
+            if (newParent >= 0) {
+                const std::size_t k = sz(newParent);
+                if (mark & 2u) {
+                    mM.deadBuds[k] |= 2u;
+                    mAxillaryLight[k] = 0.0;
+                } else {
+                    mM.deadBuds[k] |= 1u;
+                    mTerminalLight[k] = 0.0;
+                }
+            }
             continue;
         }
+        const auto k = static_cast<std::size_t>(next);
         mRemap[i] = next++;
-    }
-    // Stable in-place compaction: the write slot k never passes the read slot i, and the
-    // children of i (read through removed[] and mRemap) sit after i, so nothing is read after
-    // it was overwritten.
-    auto fix = [&](std::int32_t j) { return j < 0 ? -1 : mRemap[sz(j)]; };
-    for (std::size_t i = 0; i < n; ++i) {
-        if (removed[i]) continue;
-        const std::size_t k = sz(mRemap[i]);
-        std::uint8_t dead = mM.deadBuds[i];
-        double terminal = mTerminalLight[i], axillary = mAxillaryLight[i];
-        // A shed branch leaves a scar: its bud is gone for good.
-        const std::int32_t l = mM.lateralChild[i], m = mM.mainChild[i];
-        if (l >= 0 && removed[sz(l)]) {
-            dead |= 2u;
-            axillary = 0.0;
+        if (k != i) {
+            mM.end[k] = mM.end[i];
+            mM.frame[k] = mM.frame[i];
+            mM.tree[k] = mM.tree[i];
+            mM.order[k] = mM.order[i];
+            mM.born[k] = mM.born[i];
+            mM.deadBuds[k] = mM.deadBuds[i];
+            mTerminalLight[k] = mTerminalLight[i];
+            mAxillaryLight[k] = mAxillaryLight[i];
+            mGathered[k] = mGathered[i];
+            mInternodes[k] = mInternodes[i];
+            if (sc) {
+                mOptimalTerminal[k] = mOptimalTerminal[i];
+                mOptimalAxillary[k] = mOptimalAxillary[i];
+            }
         }
-        if (m >= 0 && removed[sz(m)]) {
-            dead |= 1u;
-            terminal = 0.0;
-        }
-        mTerminalLight[k] = terminal;
-        mAxillaryLight[k] = axillary;
-        if (sc) {
-            mOptimalTerminal[k] = mOptimalTerminal[i];
-            mOptimalAxillary[k] = mOptimalAxillary[i];
-        }
-        mM.end[k] = mM.end[i];
-        mM.frame[k] = mM.frame[i];
-        mM.parent[k] = fix(mM.parent[i]);
-        mM.mainChild[k] = fix(m);
-        mM.lateralChild[k] = fix(l);
-        mM.tree[k] = mM.tree[i];
-        mM.order[k] = mM.order[i];
-        mM.born[k] = mM.born[i];
-        mM.deadBuds[k] = dead;
+        mM.parent[k] = newParent;
+        mM.mainChild[k] = -1;
+        mM.lateralChild[k] = -1;
+        if (newParent >= 0)
+            ((mark & 2u) ? mM.lateralChild : mM.mainChild)[sz(newParent)] = next - 1;
     }
     const auto kept = static_cast<std::size_t>(next);
-    mM.end.resize(kept);
-    mM.frame.resize(kept);
-    mM.parent.resize(kept);
-    mM.mainChild.resize(kept);
-    mM.lateralChild.resize(kept);
-    mM.tree.resize(kept);
-    mM.order.resize(kept);
-    mM.born.resize(kept);
-    mM.deadBuds.resize(kept);
+    resizeMetamers(kept);
     mTerminalLight.resize(kept);
     mAxillaryLight.resize(kept);
+    mGathered.resize(kept);
+    mInternodes.resize(kept);
     if (sc) {
         mOptimalTerminal.resize(kept);
         mOptimalAxillary.resize(kept);
@@ -517,9 +521,21 @@ void SelfOrganizingSimulation::shed(const std::vector<std::uint8_t>& removed) {
     // of this cycle's buds is the one they perceived when it began.
 }
 
-void SelfOrganizingSimulation::allocate(const std::vector<double>& gathered,
-                                        const std::vector<double>& terminal,
-                                        const std::vector<double>& axillary, Vigour& out) const {
+void SelfOrganizingSimulation::resizeMetamers(std::size_t n) {
+    mM.end.resize(n);
+    mM.frame.resize(n);
+    mM.parent.resize(n);
+    mM.mainChild.resize(n);
+    mM.lateralChild.resize(n);
+    mM.tree.resize(n);
+    mM.order.resize(n);
+    mM.born.resize(n);
+    mM.deadBuds.resize(n);
+}
+
+void SelfOrganizingSimulation::allocate(std::span<const double> gathered,
+                                        std::span<const double> terminal,
+                                        std::span<const double> axillary, Vigour& out) const {
     const MetamerTopology topo = mM.topology();
     // Trees may mix models: run both where needed and pick per tree.
     bool anyBH = false, anyPriority = false;
@@ -569,21 +585,28 @@ std::int32_t SelfOrganizingSimulation::makeShoot(const Growing& g, glm::vec3* en
     const float eta = static_cast<float>(order == 0 ? sp.tropismWeight : sp.lateralTropismWeight);
     const float noise = static_cast<float>(sp.directionNoise);
     const float ground = mTrees[t].position.y;
+    // The heading is carried from metamer to metamer instead of read back from each frame:
+    // steering turns the heading into d exactly and the phyllotaxis roll is about the heading,
+    // so the next heading is d. That keeps the frame maths off the loop's dependency chain.
+    const glm::vec3 pull = xi * g.optimal + eta * kUp;
+    const glm::quat roll = mRoll[t];
+    const bool blockedVoxels = mShadow && mShadow->anyBlocked();
+    const bool obstacles = !mShadow && !mObstacles.empty();
+    glm::vec3 h = skel::headingOf(frame);
     for (int k = 0; k < n; ++k) {
-        const glm::vec3 h = skel::headingOf(frame);
-        glm::vec3 d = h + xi * g.optimal + eta * kUp;
-        if (noise > 0.0f) d += noise * randomUnit(rng);
+        glm::vec3 d = h + pull;
+        if (noise > 0.0f) d += noise * randomUnitVector(rng);
         d = safeNormalize(d, h);
         const glm::vec3 end = pos + d * len;
         // A shoot that runs into the ground or an obstacle stops there.
-        if (end.y < ground ||
-            (mShadow ? mShadow->anyBlocked() && mShadow->blocked(mShadow->voxelOf(end))
-                     : hitsObstacle(pos, end)))
+        if (end.y < ground || (blockedVoxels && mShadow->blocked(mShadow->voxelOf(end))) ||
+            (obstacles && hitsObstacle(pos, end)))
             return k;
-        frame = steer(frame, h, d, mRoll[t]);
+        frame = steer(frame, h, d, roll);
         ends[k] = end;
         frames[k] = frame;
         pos = end;
+        h = d;
     }
     return n;
 }
@@ -606,16 +629,8 @@ void SelfOrganizingSimulation::commitShoots() {
                                 "; lower alpha or cycles, or raise max_internodes");
         mCount[t] += added[t];
     }
-    const std::size_t n0 = mM.size(), n1 = n0 + total;
-    mM.end.resize(n1);
-    mM.frame.resize(n1);
-    mM.parent.resize(n1);
-    mM.mainChild.resize(n1);
-    mM.lateralChild.resize(n1);
-    mM.tree.resize(n1);
-    mM.order.resize(n1);
-    mM.born.resize(n1);
-    mM.deadBuds.resize(n1);
+    const std::size_t n0 = mM.size();
+    resizeMetamers(n0 + total);
     // The new metamers, shoot after shoot in bud order: the bud's metamer links to the first,
     // each links to the next along the axis.
     std::size_t first = n0;
@@ -669,14 +684,13 @@ void SelfOrganizingSimulation::step() {
 
     evaluateLight(mTerminalLight, mAxillaryLight);
     const Clock::time_point t1 = Clock::now();
-    mGathered.resize(mM.size());
-    mInternodes.resize(mM.size());
-    gatherLight(mM.topology(), mTerminalLight, mAxillaryLight, mGathered, mInternodes);
-    if (markShed(mM.topology(), mGathered, mInternodes, mShedThreshold, mRemoved)) {
-        shed(mRemoved);
-        mGathered.resize(mM.size());
-        mInternodes.resize(mM.size());
-        gatherLight(mM.topology(), mTerminalLight, mAxillaryLight, mGathered, mInternodes);
+    const std::size_t n = mM.size();
+    mGathered.resize(n);
+    mInternodes.resize(n);
+    mMarks.resize(n);
+    if (gatherLightAndMarkShed(mM.topology(), mTerminalLight, mAxillaryLight, mShedThreshold,
+                               mGathered, mInternodes, mMarks, mShedSums)) {
+        shed();
     }
     const Clock::time_point t2 = Clock::now();
 

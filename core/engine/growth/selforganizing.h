@@ -16,6 +16,7 @@
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
 #include "engine/util/random.h"
+#include "engine/util/rawvector.h"
 
 namespace sylva::growth {
 
@@ -148,12 +149,14 @@ struct CycleTimings {
 };
 
 /// The metamers of all trees, parents before children (see MetamerTopology).
+/// (RawVector: the new shoots' slots are written right after the resize, so it does not zero
+/// them first.)
 struct MetamerArrays {
-    std::vector<glm::vec3> end;   ///< node at the end of the internode (world metres)
-    std::vector<glm::quat> frame; ///< turtle frame of the internode
-    std::vector<std::int32_t> parent, mainChild, lateralChild;
-    std::vector<std::uint16_t> tree, order, born;
-    std::vector<std::uint8_t> deadBuds; ///< bit 0: terminal bud dead, bit 1: axillary bud dead
+    RawVector<glm::vec3> end;   ///< node at the end of the internode (world metres)
+    RawVector<glm::quat> frame; ///< turtle frame of the internode
+    RawVector<std::int32_t> parent, mainChild, lateralChild;
+    RawVector<std::uint16_t> tree, order, born;
+    RawVector<std::uint8_t> deadBuds; ///< bit 0: terminal bud dead, bit 1: axillary bud dead
 
     std::size_t size() const { return end.size(); }
     MetamerTopology topology() const { return {parent, mainChild, lateralChild, tree}; }
@@ -211,10 +214,12 @@ private:
         bool lateral;
         bool seedling = false; ///< leader of a tree that perceives nothing yet
     };
-    /// Removes the marked metamers in place (stable), keeping the bud light and the space
-    /// colonization directions aligned; queues their pyramids' removal in mSources for the
-    /// cycle's one shadow update at its end.
-    void shed(const std::vector<std::uint8_t>& removed);
+    /// Removes the branches marked in mMarks (gatherLightAndMarkShed) in place, stable, with
+    /// everything they carry; keeps the bud light, gathered light and the space colonization
+    /// directions aligned; queues their pyramids' removal in mSources for the cycle's one
+    /// shadow update at its end.
+    void shed();
+    void resizeMetamers(std::size_t n);
     std::int32_t appendMetamer(std::int32_t parent, bool lateral, const glm::vec3& end,
                                const glm::quat& frame, std::uint16_t tree, std::uint16_t order);
     /// Space colonization: does a new internode cross an obstacle triangle? (Brute force over
@@ -225,8 +230,8 @@ private:
     std::int32_t makeShoot(const Growing& g, glm::vec3* ends, glm::quat* frames) const;
     /// Appends the shoots made this cycle, in bud order.
     void commitShoots();
-    void allocate(const std::vector<double>& gathered, const std::vector<double>& terminal,
-                  const std::vector<double>& axillary, Vigour& out) const;
+    void allocate(std::span<const double> gathered, std::span<const double> terminal,
+                  std::span<const double> axillary, Vigour& out) const;
 
     std::vector<StandTree> mTrees;
     std::vector<glm::vec3> mObstacles;
@@ -251,15 +256,17 @@ private:
     MetamerArrays mM;
     CycleTimings mTimings;
     // Per-cycle buffers, kept to avoid reallocating them every cycle.
-    std::vector<double> mTerminalLight, mAxillaryLight, mGathered;
-    std::vector<std::int32_t> mInternodes, mRemap;
+    std::vector<double> mTerminalLight, mAxillaryLight;
+    RawVector<double> mGathered;
+    RawVector<std::int32_t> mInternodes, mRemap;
+    std::vector<ShedSums> mShedSums;
+    RawVector<std::uint8_t> mMarks;     ///< gatherLightAndMarkShed: shed roots, lateral children
     std::vector<std::int64_t> mCells;   ///< shadow grid cell of each metamer's buds (light pass)
     std::vector<glm::ivec3> mBudVoxels; ///< voxel of each growing bud (optimal directions)
-    std::vector<std::uint8_t> mRemoved;
     Vigour mVigour;
     std::vector<Growing> mGrowing;
-    std::vector<glm::vec3> mShootEnd;
-    std::vector<glm::quat> mShootFrame;
+    RawVector<glm::vec3> mShootEnd;
+    RawVector<glm::quat> mShootFrame;
     std::vector<ShadowSource> mSources;
     int mCycle = 0;
     int mTotalCycles = 0;

@@ -146,50 +146,99 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     if (maxDepth > mMargin)
         throw InvalidInput("shadow_depth " + std::to_string(maxDepth) +
                            " exceeds the grid margin " + std::to_string(mMargin));
-    glm::ivec3 lo = sources[0].voxel, hi = lo;
-    for (const ShadowSource& s : sources) {
-        lo = glm::min(lo, s.voxel);
-        hi = glm::max(hi, s.voxel);
-    }
-    // Pyramids are clipped only below the floor; the grid's horizontal margin covers them.
-    reserveAround(lo);
-    reserveAround(hi);
-    if (hi.y < mFloor) return;
-
-    // Counting sort of the sources by their layer (sources below the floor cast nothing), into
-    // a contiguous copy so that each layer's sources are read in sequence.
-    const int firstSource = std::max(lo.y, mFloor);
-    const auto layers = static_cast<std::size_t>(hi.y - firstSource + 1);
-    mBucketStart.assign(layers + 1, 0);
-    for (const ShadowSource& s : sources)
-        if (s.voxel.y >= firstSource)
-            ++mBucketStart[static_cast<std::size_t>(s.voxel.y - firstSource) + 1];
-    for (std::size_t b = 0; b < layers; ++b)
-        mBucketStart[b + 1] += mBucketStart[b];
-    mSorted.resize(mBucketStart[layers]);
-    // Per source layer: the extent of its sources and, per depth q, how many of them reach q.
+    // Counting sort of the sources by their layer (sources below the floor cast nothing) into a
+    // contiguous copy, so that each layer's sources are read in sequence; with per layer the
+    // extent of its sources and, per depth q, how many of them reach q. In parallel: each
+    // thread counts its share, the counts are merged in thread order, then each thread places
+    // its share, so the order within a layer is the input order on any number of threads.
+    const auto total = static_cast<std::int64_t>(sources.size());
+    const int threads = total > 4096 ? omp_get_max_threads() : 1;
     const auto depths = static_cast<std::size_t>(maxDepth) + 1;
-    mLayerExtent.assign(
-        layers, glm::ivec4(std::numeric_limits<int>::max(), std::numeric_limits<int>::min(),
-                           std::numeric_limits<int>::max(), std::numeric_limits<int>::min()));
-    mReach.assign(layers * depths, 0);
+    const glm::ivec4 noExtent(std::numeric_limits<int>::max(), std::numeric_limits<int>::min(),
+                              std::numeric_limits<int>::max(), std::numeric_limits<int>::min());
+    mPart.resize(static_cast<std::size_t>(threads));
+    glm::ivec3 lo = sources[0].voxel, hi = lo;
+    int firstSource = 0;
+    std::size_t layers = 0;
+    bool nothing = false;
+#pragma omp parallel num_threads(threads)
     {
-        std::vector<std::uint32_t> fill(mBucketStart.begin(), mBucketStart.end() - 1);
-        for (const ShadowSource& s : sources) {
-            const int y = s.voxel.y;
-            if (y < firstSource) continue;
-            const auto b = static_cast<std::size_t>(y - firstSource);
-            mSorted[fill[b]++] = {s.voxel.x, s.voxel.z, s.weight, s.kernel};
-            glm::ivec4& e = mLayerExtent[b];
-            e = {std::min(e.x, s.voxel.x), std::max(e.y, s.voxel.x), std::min(e.z, s.voxel.z),
-                 std::max(e.w, s.voxel.z)};
-            // Counted at its own depth here; the suffix sums below make it "reaches q".
-            ++mReach[b * depths + static_cast<std::size_t>(kernels[s.kernel].depth)];
+        const auto t = static_cast<std::size_t>(omp_get_thread_num());
+        const auto nt = static_cast<std::size_t>(omp_get_num_threads());
+        const std::size_t begin = sources.size() * t / nt;
+        const std::size_t end = sources.size() * (t + 1) / nt;
+        Part& part = mPart[t];
+        glm::ivec3 plo = sources[begin].voxel, phi = plo;
+        for (std::size_t i = begin; i < end; ++i) {
+            plo = glm::min(plo, sources[i].voxel);
+            phi = glm::max(phi, sources[i].voxel);
         }
+#pragma omp critical(sylva_shadow_bounds)
+        {
+            lo = glm::min(lo, plo);
+            hi = glm::max(hi, phi);
+        }
+#pragma omp barrier
+#pragma omp single
+        {
+            // Pyramids are clipped only below the floor; the grid's margin covers them sideways.
+            reserveAround(lo);
+            reserveAround(hi);
+            nothing = hi.y < mFloor;
+            firstSource = std::max(lo.y, mFloor);
+            layers = nothing ? 0 : static_cast<std::size_t>(hi.y - firstSource + 1);
+        }
+        if (!nothing) {
+            part.count.assign(layers, 0);
+            part.extent.assign(layers, noExtent);
+            part.reach.assign(layers * depths, 0);
+            for (std::size_t i = begin; i < end; ++i) {
+                const ShadowSource& s = sources[i];
+                if (s.voxel.y < firstSource) continue;
+                const auto b = static_cast<std::size_t>(s.voxel.y - firstSource);
+                ++part.count[b];
+                glm::ivec4& e = part.extent[b];
+                e = {std::min(e.x, s.voxel.x), std::max(e.y, s.voxel.x), std::min(e.z, s.voxel.z),
+                     std::max(e.w, s.voxel.z)};
+                // Counted at its own depth; the suffix sums below make it "reaches q".
+                ++part.reach[b * depths + static_cast<std::size_t>(kernels[s.kernel].depth)];
+            }
+        }
+#pragma omp barrier
+#pragma omp single
+        if (!nothing) {
+            mBucketStart.assign(layers + 1, 0);
+            mLayerExtent.assign(layers, noExtent);
+            mReach.assign(layers * depths, 0);
+            std::uint32_t at = 0;
+            for (std::size_t b = 0; b < layers; ++b) {
+                mBucketStart[b] = at;
+                glm::ivec4& e = mLayerExtent[b];
+                for (Part& p : mPart) {
+                    const std::uint32_t c = p.count[b];
+                    p.count[b] = at; // becomes this part's first slot in the bucket
+                    at += c;
+                    const glm::ivec4& pe = p.extent[b];
+                    e = {std::min(e.x, pe.x), std::max(e.y, pe.y), std::min(e.z, pe.z),
+                         std::max(e.w, pe.w)};
+                    for (std::size_t q = 0; q < depths; ++q)
+                        mReach[b * depths + q] += p.reach[b * depths + q];
+                }
+                for (std::size_t q = depths - 1; q-- > 0;)
+                    mReach[b * depths + q] += mReach[b * depths + q + 1];
+            }
+            mBucketStart[layers] = at;
+            mSorted.resize(at);
+        }
+        if (!nothing)
+            for (std::size_t i = begin; i < end; ++i) {
+                const ShadowSource& s = sources[i];
+                if (s.voxel.y < firstSource) continue;
+                const auto b = static_cast<std::size_t>(s.voxel.y - firstSource);
+                mSorted[part.count[b]++] = {s.voxel.x, s.voxel.z, s.weight, s.kernel};
+            }
     }
-    for (std::size_t b = 0; b < layers; ++b)
-        for (std::size_t q = depths - 1; q-- > 0;)
-            mReach[b * depths + q] += mReach[b * depths + q + 1];
+    if (nothing) return;
 
     // Each output layer gathers the pyramid slices (squares) of the sources up to maxDepth
     // above it. Where the squares cover much more than their bounding rectangle, they go into a
@@ -197,11 +246,9 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     // otherwise they are added directly. Both are exact integer sums.
     const int firstLayer = std::max(mFloor, firstSource - maxDepth);
     const int layerCount = hi.y - firstLayer + 1;
-    const auto total = static_cast<std::int64_t>(sources.size());
     const auto dx = static_cast<std::size_t>(mDim.x), dz = static_cast<std::size_t>(mDim.z);
     const std::size_t planeD = (dx + 1) * (dz + 1);
-    const int threads = omp_get_max_threads();
-    mDiff.resize(static_cast<std::size_t>(threads));
+    mDiff.resize(static_cast<std::size_t>(omp_get_max_threads()));
     for (std::vector<std::int32_t>& d : mDiff)
         if (d.size() != planeD) d.assign(planeD, 0);
 #pragma omp parallel if (total > 256)
@@ -245,6 +292,7 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
             };
             const std::int64_t area =
                 static_cast<std::int64_t>(x1 - x0 + 1) * static_cast<std::int64_t>(z1 - z0 + 1);
+
             if (cells < 2 * area) {
                 forEach([&](const SortedSource& s, int q, std::int32_t d) {
                     for (int x = s.x - q; x <= s.x + q; ++x) {
@@ -256,29 +304,27 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
                 });
                 continue;
             }
-            // Local plane coordinates; the difference array has one extra row and column for
-            // the far corners.
-            const std::size_t stride = dz + 1;
+            // The difference array covers just this layer's extent (local coordinates, one extra
+            // row and column for the far corners), so the corners and the sweeps stay in a
+            // compact block of the thread's cache instead of spanning the whole grid's plane.
+            const std::size_t width = static_cast<std::size_t>(z1 - z0) + 1;
+            const std::size_t rows = static_cast<std::size_t>(x1 - x0) + 1;
+            const std::size_t stride = width + 1;
             forEach([&](const SortedSource& s, int q, std::int32_t d) {
-                const auto a0 = static_cast<std::size_t>(s.x - q - mLo.x);
-                const auto a1 = static_cast<std::size_t>(s.x + q + 1 - mLo.x);
-                const auto c0 = static_cast<std::size_t>(s.z - q - mLo.z);
-                const auto c1 = static_cast<std::size_t>(s.z + q + 1 - mLo.z);
+                const auto a0 = static_cast<std::size_t>(s.x - q - x0);
+                const auto a1 = static_cast<std::size_t>(s.x + q + 1 - x0);
+                const auto c0 = static_cast<std::size_t>(s.z - q - z0);
+                const auto c1 = static_cast<std::size_t>(s.z + q + 1 - z0);
                 diff[a0 * stride + c0] += d;
                 diff[a0 * stride + c1] -= d;
                 diff[a1 * stride + c0] -= d;
                 diff[a1 * stride + c1] += d;
             });
-            const auto lx0 = static_cast<std::size_t>(x0 - mLo.x);
-            const auto lx1 = static_cast<std::size_t>(x1 - mLo.x);
-            const auto lz0 = static_cast<std::size_t>(z0 - mLo.z);
-            const auto lz1 = static_cast<std::size_t>(z1 - mLo.z);
             // Two sweeps so that the second vectorizes: prefix sums along z in place (a chain
-            // per row), then running sums down x added into the layer.
-            const std::size_t width = lz1 - lz0 + 1;
+            // per row), then running sums down x added into the layer; the array is left zeroed.
             std::fill_n(colAcc.begin(), width, 0);
-            for (std::size_t x = lx0; x <= lx1; ++x) {
-                std::int32_t* drow = diff.data() + x * stride + lz0;
+            for (std::size_t x = 0; x < rows; ++x) {
+                std::int32_t* drow = diff.data() + x * stride;
                 std::int32_t run = 0;
                 for (std::size_t z = 0; z < width; ++z) {
                     run += drow[z];
@@ -286,9 +332,11 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
                 }
                 drow[width] = 0;
             }
-            for (std::size_t x = lx0; x <= lx1; ++x) {
-                std::int32_t* __restrict drow = diff.data() + x * stride + lz0;
-                std::int32_t* __restrict srow = plane + x * dz + lz0;
+            const std::size_t planeOrigin =
+                static_cast<std::size_t>(x0 - mLo.x) * dz + static_cast<std::size_t>(z0 - mLo.z);
+            for (std::size_t x = 0; x < rows; ++x) {
+                std::int32_t* __restrict drow = diff.data() + x * stride;
+                std::int32_t* __restrict srow = plane + planeOrigin + x * dz;
                 std::int32_t* __restrict acc = colAcc.data();
                 for (std::size_t z = 0; z < width; ++z) {
                     acc[z] += drow[z];
@@ -296,7 +344,7 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
                     drow[z] = 0;
                 }
             }
-            std::fill_n(diff.data() + (lx1 + 1) * stride + lz0, lz1 - lz0 + 2, 0);
+            std::fill_n(diff.data() + rows * stride, stride, 0);
         }
     }
 }

@@ -151,6 +151,12 @@ private:
     std::vector<std::uint32_t> mBucketStart, mReach;
     std::vector<SortedSource> mSorted;
     std::vector<glm::ivec4> mLayerExtent;
+    /// applyBatch: one thread's share of the sort (counts, then first slots, per layer).
+    struct Part {
+        std::vector<std::uint32_t> count, reach;
+        std::vector<glm::ivec4> extent;
+    };
+    std::vector<Part> mPart;
     /// applyBatch: one zeroed difference plane per thread ((dims.x + 1) · (dims.z + 1)).
     std::vector<std::vector<std::int32_t>> mDiff;
 };

@@ -274,3 +274,57 @@ TEST(SelfOrgAllocation, ShedMarksExactlyTheDimBranches) {
             }
     }
 }
+
+TEST(SelfOrgAllocation, OnePassShedEqualsGatherMarkAndRegather) {
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        const Tree t = randomTree(seed * 97, 3000, 2);
+        const std::size_t n = t.parent.size();
+        const std::vector<double> thr = {0.3, 0.45};
+        // The separate steps: gather, mark, then gather again over the tree that remains.
+        std::vector<double> g(n);
+        std::vector<std::int32_t> c(n);
+        gatherLight(t.topo(), t.terminal, t.axillary, g, c);
+        const std::vector<std::uint8_t> removed = markShed(t.topo(), g, c, thr);
+        Tree kept;
+        std::vector<std::int32_t> remap(n, -1);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (removed[i]) continue;
+            const std::int32_t p = t.parent[i];
+            const bool lateral = p >= 0 && t.lateralChild[static_cast<std::size_t>(p)] ==
+                                               static_cast<std::int32_t>(i);
+            remap[i] =
+                kept.add(p < 0 ? -1 : remap[static_cast<std::size_t>(p)], lateral, t.tree[i]);
+            kept.terminal.back() = t.terminal[i];
+            kept.axillary.back() = t.axillary[i];
+        }
+        std::vector<double> gk(kept.parent.size());
+        std::vector<std::int32_t> ck(kept.parent.size());
+        gatherLight(kept.topo(), kept.terminal, kept.axillary, gk, ck);
+
+        std::vector<double> g1(n);
+        std::vector<std::int32_t> c1(n);
+        std::vector<std::uint8_t> marks(n);
+        std::vector<ShedSums> scratch;
+        const bool any =
+            gatherLightAndMarkShed(t.topo(), t.terminal, t.axillary, thr, g1, c1, marks, scratch);
+        std::size_t shed = 0;
+        std::vector<std::uint8_t> gone(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::int32_t p = t.parent[i];
+            const bool lateral = p >= 0 && t.lateralChild[static_cast<std::size_t>(p)] ==
+                                               static_cast<std::int32_t>(i);
+            EXPECT_EQ((marks[i] & 2u) != 0, lateral) << "seed " << seed << " metamer " << i;
+            gone[i] = (marks[i] & 1u) || (p >= 0 && gone[static_cast<std::size_t>(p)]);
+            EXPECT_EQ(gone[i] != 0, removed[i] != 0) << "seed " << seed << " metamer " << i;
+            shed += gone[i];
+            if (!removed[i]) {
+                // Bit for bit: the same additions in the same order.
+                EXPECT_EQ(g1[i], gk[static_cast<std::size_t>(remap[i])]) << "metamer " << i;
+                EXPECT_EQ(c1[i], ck[static_cast<std::size_t>(remap[i])]) << "metamer " << i;
+            }
+        }
+        EXPECT_EQ(any, shed > 0);
+        EXPECT_GT(shed, 0u);
+        EXPECT_LT(shed, n);
+    }
+}

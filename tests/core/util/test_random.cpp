@@ -1,4 +1,5 @@
 #include "engine/util/random.h"
+#include "engine/util/randomvector.h"
 
 #include <gtest/gtest.h>
 
@@ -53,4 +54,47 @@ TEST(Random, BelowCoversRange) {
         seen.insert(v);
     }
     EXPECT_EQ(seen.size(), 10u);
+}
+
+TEST(Random, UnitVectorsAreUnitAndUniform) {
+    Rng rng(7);
+    constexpr int kCount = 200000;
+    glm::dvec3 mean(0.0), meanSq(0.0);
+    int octant[8] = {};
+    int zBins[10] = {};
+    for (int i = 0; i < kCount; ++i) {
+        const glm::vec3 v = sylva::randomUnitVector(rng);
+        ASSERT_NEAR(glm::length(v), 1.0f, 1e-5f);
+        mean += glm::dvec3(v);
+        meanSq += glm::dvec3(v) * glm::dvec3(v);
+        ++octant[(v.x > 0 ? 1 : 0) + (v.y > 0 ? 2 : 0) + (v.z > 0 ? 4 : 0)];
+        ++zBins[std::min(9, static_cast<int>((v.z + 1.0f) * 5.0f))];
+    }
+    mean /= double(kCount);
+    meanSq /= double(kCount);
+    // Uniform on the sphere: zero mean, E[x²] = E[y²] = E[z²] = 1/3, equal octants, z uniform
+    // (Archimedes). Tolerances are ~5 standard errors.
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(mean[a], 0.0, 0.007);
+        EXPECT_NEAR(meanSq[a], 1.0 / 3.0, 0.005);
+    }
+    for (int o : octant)
+        EXPECT_NEAR(o, kCount / 8, 5 * std::sqrt(kCount / 8.0));
+    for (int b : zBins)
+        EXPECT_NEAR(b, kCount / 10, 5 * std::sqrt(kCount / 10.0));
+}
+
+TEST(Random, UnitVectorAzimuthMatchesTheTrigonometry) {
+    // The vector's azimuth is the draw's low 24 bits as a fraction of a turn, z its high 24.
+    Rng rng(11), copy(11);
+    for (int i = 0; i < 10000; ++i) {
+        const std::uint64_t bits = copy.next();
+        const glm::vec3 v = sylva::randomUnitVector(rng);
+        const double z = static_cast<double>(bits >> 40) * 0x1.0p-23 - 1.0;
+        const double phi = static_cast<double>(bits & 0xffffffu) * 0x1.0p-24 * 2.0 * M_PI;
+        const double r = std::sqrt(1.0 - z * z);
+        ASSERT_NEAR(v.z, z, 1e-7);
+        ASSERT_NEAR(v.x, r * std::cos(phi), 5e-6);
+        ASSERT_NEAR(v.y, r * std::sin(phi), 5e-6);
+    }
 }
