@@ -73,6 +73,44 @@ QString attributeName(ColorBy mode) {
     return QCoreApplication::translate("AttributeColors", "Materials");
 }
 
+// The raw values scaled to 0..1 for the ramp (see normalizedAttribute()).
+std::vector<float> normalized(Raw raw, ColorBy mode) {
+    if (raw.value.empty()) return {};
+    if (mode == ColorBy::Vigour) {
+        const float scale = raw.max > 0.0f ? 1.0f / std::log1p(raw.max) : 0.0f;
+        for (float& v : raw.value)
+            v = std::log1p(v) * scale;
+    } else {
+        const float scale = raw.max > 0.0f ? 1.0f / raw.max : 0.0f;
+        for (float& v : raw.value)
+            v *= scale;
+    }
+    for (float& v : raw.value)
+        v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
+    return std::move(raw.value);
+}
+
+QString legendOf(const Raw& raw, ColorBy mode) {
+    if (mode == ColorBy::Material) return attributeName(mode);
+    if (raw.value.empty())
+        return QCoreApplication::translate("AttributeColors", "%1: not available for this tree")
+            .arg(attributeName(mode));
+    return QCoreApplication::translate("AttributeColors", "%1: 0 (blue) – %2 (yellow)")
+        .arg(attributeName(mode))
+        .arg(double(raw.max), 0, 'g', 3);
+}
+
+// One ramp colour per vertex from its node's 0..1 value; empty without node ids or values.
+std::vector<glm::vec3> vertexColors(const mesh::Mesh& mesh, const std::vector<float>& t) {
+    if (t.empty() || mesh.node.size() != mesh.positions.size()) return {};
+    std::vector<glm::vec3> colors(mesh.positions.size());
+    for (std::size_t v = 0; v < colors.size(); ++v) {
+        const std::uint32_t node = mesh.node[v];
+        colors[v] = rampColor(node < t.size() ? t[node] : 0.0f);
+    }
+    return colors;
+}
+
 } // namespace
 
 bool hasAttribute(const skel::Skeleton& s, ColorBy mode) {
@@ -91,20 +129,7 @@ bool hasAttribute(const skel::Skeleton& s, ColorBy mode) {
 }
 
 std::vector<float> normalizedAttribute(const skel::Skeleton& s, ColorBy mode) {
-    Raw raw = rawAttribute(s, mode);
-    if (raw.value.empty()) return {};
-    if (mode == ColorBy::Vigour) {
-        const float scale = raw.max > 0.0f ? 1.0f / std::log1p(raw.max) : 0.0f;
-        for (float& v : raw.value)
-            v = std::log1p(v) * scale;
-    } else {
-        const float scale = raw.max > 0.0f ? 1.0f / raw.max : 0.0f;
-        for (float& v : raw.value)
-            v *= scale;
-    }
-    for (float& v : raw.value)
-        v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-    return raw.value;
+    return normalized(rawAttribute(s, mode), mode);
 }
 
 glm::vec3 rampColor(float t) {
@@ -120,26 +145,22 @@ glm::vec3 rampColor(float t) {
 
 std::vector<glm::vec3> attributeColors(const mesh::Mesh& mesh, const skel::Skeleton& skeleton,
                                        ColorBy mode) {
-    if (mode == ColorBy::Material || mesh.node.size() != mesh.positions.size()) return {};
-    const std::vector<float> t = normalizedAttribute(skeleton, mode);
-    if (t.empty()) return {};
-    std::vector<glm::vec3> colors(mesh.positions.size());
-    for (std::size_t v = 0; v < colors.size(); ++v) {
-        const std::uint32_t node = mesh.node[v];
-        colors[v] = rampColor(node < t.size() ? t[node] : 0.0f);
-    }
-    return colors;
+    if (mode == ColorBy::Material) return {};
+    return vertexColors(mesh, normalizedAttribute(skeleton, mode));
 }
 
 QString attributeLegend(const skel::Skeleton& skeleton, ColorBy mode) {
-    if (mode == ColorBy::Material) return attributeName(mode);
-    const Raw raw = rawAttribute(skeleton, mode);
-    if (raw.value.empty())
-        return QCoreApplication::translate("AttributeColors", "%1: not available for this tree")
-            .arg(attributeName(mode));
-    return QCoreApplication::translate("AttributeColors", "%1: 0 (blue) – %2 (yellow)")
-        .arg(attributeName(mode))
-        .arg(double(raw.max), 0, 'g', 3);
+    return legendOf(rawAttribute(skeleton, mode), mode);
+}
+
+AttributeColoring colorByAttribute(const mesh::Mesh& mesh, const skel::Skeleton& skeleton,
+                                   ColorBy mode) {
+    Raw raw = rawAttribute(skeleton, mode); // one pass over the skeleton for both
+    AttributeColoring out;
+    out.legend = legendOf(raw, mode);
+    if (mode != ColorBy::Material)
+        out.colors = vertexColors(mesh, normalized(std::move(raw), mode));
+    return out;
 }
 
 } // namespace sylva::ui

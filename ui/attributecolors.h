@@ -46,4 +46,13 @@ std::vector<glm::vec3> attributeColors(const mesh::Mesh& mesh, const skel::Skele
 /// The legend shown in the status bar, e.g. "Light per internode: 0 (blue) – 0.82 (yellow)".
 QString attributeLegend(const skel::Skeleton& skeleton, ColorBy mode);
 
+/// attributeColors() and attributeLegend() together, from one pass over the skeleton (what the
+/// viewport shows after each generation).
+struct AttributeColoring {
+    std::vector<glm::vec3> colors;
+    QString legend;
+};
+AttributeColoring colorByAttribute(const mesh::Mesh& mesh, const skel::Skeleton& skeleton,
+                                   ColorBy mode);
+
 } // namespace sylva::ui

@@ -161,11 +161,10 @@ void MainWindow::applyColoring() {
         action->setEnabled(!skeleton ||
                            hasAttribute(*skeleton, static_cast<ColorBy>(action->data().toInt())));
     if (!mResult.mesh || !skeleton) return;
-    std::vector<glm::vec3> colors = attributeColors(*mResult.mesh, *skeleton, mColorBy);
-    mViewport->setVertexColors(std::move(colors));
+    AttributeColoring coloring = colorByAttribute(*mResult.mesh, *skeleton, mColorBy);
+    mViewport->setVertexColors(std::move(coloring.colors));
     // The legend names the ramp's range, or says that this tree lacks the attribute.
-    if (mColorBy != ColorBy::Material)
-        statusBar()->showMessage(attributeLegend(*skeleton, mColorBy));
+    if (mColorBy != ColorBy::Material) statusBar()->showMessage(coloring.legend);
 }
 
 void MainWindow::populatePresetsMenu() {

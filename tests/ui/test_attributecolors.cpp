@@ -113,6 +113,24 @@ private Q_SLOTS:
         bare.light.clear();
         QVERIFY(attributeLegend(bare, ColorBy::Light).contains(QStringLiteral("not available")));
     }
+
+    void oneCallGivesColoursAndLegend() {
+        const skel::Skeleton s = fiveNodes();
+        mesh::Mesh m;
+        m.positions.resize(4);
+        m.node = {2, 4, 0, mesh::Mesh::kNoNode};
+        for (ColorBy mode : {ColorBy::Material, ColorBy::Light, ColorBy::Vigour, ColorBy::Age,
+                             ColorBy::BranchOrder}) {
+            const AttributeColoring c = colorByAttribute(m, s, mode);
+            QVERIFY(c.colors == attributeColors(m, s, mode));
+            QCOMPARE(c.legend, attributeLegend(s, mode));
+        }
+        skel::Skeleton bare = s;
+        bare.light.clear();
+        const AttributeColoring none = colorByAttribute(m, bare, ColorBy::Light);
+        QVERIFY(none.colors.empty());
+        QVERIFY(none.legend.contains(QStringLiteral("not available")));
+    }
 };
 
 QTEST_APPLESS_MAIN(TestAttributeColors)

@@ -235,17 +235,8 @@ void allocatePriority(const MetamerTopology& t, std::span<const double> gathered
 std::vector<std::uint8_t> markShed(const MetamerTopology& t, std::span<const double> gathered,
                                    std::span<const std::int32_t> internodes,
                                    std::span<const double> thresholdPerTree) {
-    std::vector<std::uint8_t> removed;
-    markShed(t, gathered, internodes, thresholdPerTree, removed);
-    return removed;
-}
-
-bool markShed(const MetamerTopology& t, std::span<const double> gathered,
-              std::span<const std::int32_t> internodes, std::span<const double> thresholdPerTree,
-              std::vector<std::uint8_t>& removed) {
     const std::size_t n = t.parent.size();
-    removed.assign(n, 0);
-    bool any = false;
+    std::vector<std::uint8_t> removed(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t p = t.parent[i];
         if (p < 0) continue;
@@ -254,12 +245,10 @@ bool markShed(const MetamerTopology& t, std::span<const double> gathered,
             continue;
         }
         const bool lateralRoot = t.lateralChild[sz(p)] == static_cast<std::int32_t>(i);
-        if (lateralRoot && gathered[i] < thresholdPerTree[t.tree[i]] * internodes[i]) {
+        if (lateralRoot && gathered[i] < thresholdPerTree[t.tree[i]] * internodes[i])
             removed[i] = 1;
-            any = true;
-        }
     }
-    return any;
+    return removed;
 }
 
 } // namespace sylva::growth

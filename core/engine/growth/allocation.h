@@ -96,14 +96,11 @@ void allocatePriority(const MetamerTopology& topology, std::span<const double> g
 /// Shedding: marks for removal every lateral branch (a metamer that is its parent's lateral
 /// child) whose gathered light per internode, gathered[i] / internodes[i], is below the
 /// threshold of its tree, together with everything it carries. The axis from a tree's first
-/// metamer is never shed. One forward scan; returns 1 for removed metamers.
+/// metamer is never shed. One forward scan; returns 1 for removed metamers. (The growth loop
+/// uses gatherLightAndMarkShed; this plain form is its test oracle.)
 std::vector<std::uint8_t> markShed(const MetamerTopology& topology,
                                    std::span<const double> gathered,
                                    std::span<const std::int32_t> internodes,
                                    std::span<const double> thresholdPerTree);
-/// The same into \p removed (resized to the metamer count); returns whether anything is shed.
-bool markShed(const MetamerTopology& topology, std::span<const double> gathered,
-              std::span<const std::int32_t> internodes, std::span<const double> thresholdPerTree,
-              std::vector<std::uint8_t>& removed);
 
 } // namespace sylva::growth

@@ -156,7 +156,6 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     const auto depths = static_cast<std::size_t>(maxDepth) + 1;
     const glm::ivec4 noExtent(std::numeric_limits<int>::max(), std::numeric_limits<int>::min(),
                               std::numeric_limits<int>::max(), std::numeric_limits<int>::min());
-    mPart.resize(static_cast<std::size_t>(threads));
     glm::ivec3 lo = sources[0].voxel, hi = lo;
     int firstSource = 0;
     std::size_t layers = 0;
@@ -167,7 +166,6 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
         const auto nt = static_cast<std::size_t>(omp_get_num_threads());
         const std::size_t begin = sources.size() * t / nt;
         const std::size_t end = sources.size() * (t + 1) / nt;
-        Part& part = mPart[t];
         glm::ivec3 plo = sources[begin].voxel, phi = plo;
         for (std::size_t i = begin; i < end; ++i) {
             plo = glm::min(plo, sources[i].voxel);
@@ -181,6 +179,9 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
 #pragma omp barrier
 #pragma omp single
         {
+            // One share per thread of the team actually running, which can be smaller than
+            // omp_get_max_threads() (one thread when called inside another parallel region).
+            mPart.resize(nt);
             // Pyramids are clipped only below the floor; the grid's margin covers them sideways.
             reserveAround(lo);
             reserveAround(hi);
@@ -188,6 +189,7 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
             firstSource = std::max(lo.y, mFloor);
             layers = nothing ? 0 : static_cast<std::size_t>(hi.y - firstSource + 1);
         }
+        Part& part = mPart[t];
         if (!nothing) {
             part.count.assign(layers, 0);
             part.extent.assign(layers, noExtent);

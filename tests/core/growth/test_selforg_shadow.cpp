@@ -190,6 +190,26 @@ TEST(SelfOrgShadow, BatchEqualsOnePyramidAtATime) {
         for (std::int32_t v : batch.values())
             ASSERT_EQ(v, 0);
     }
+    // Called from inside a parallel region (trees grown by a parallel caller): the inner team
+    // has fewer threads than omp_get_max_threads() says, and the result is still exact.
+    // (Twice the sources: enough for the batch to sort them in parallel.)
+    {
+        std::vector<ShadowSource> twice = sources;
+        twice.insert(twice.end(), sources.begin(), sources.end());
+        ShadowGrid twiceOracle(1.0f, 0.0f, 5);
+        for (const ShadowSource& s : twice)
+            twiceOracle.addPyramid(s.voxel, kernels[s.kernel], s.weight);
+        ShadowGrid nested(1.0f, 0.0f, 5);
+        const int before = omp_get_max_threads();
+        omp_set_num_threads(2);
+#pragma omp parallel num_threads(2)
+        {
+#pragma omp single
+            nested.applyBatch(twice, kernels);
+        }
+        omp_set_num_threads(before);
+        EXPECT_TRUE(nested.sameShadow(twiceOracle)) << "inside a parallel region";
+    }
     // Scattered sources take the direct path.
     ShadowGrid sparse(1.0f, 0.0f, 5), sparseOracle(1.0f, 0.0f, 5);
     const std::vector<ShadowSource> few = {{{0, 9, 0}, 1, 0}, {{30, 4, -20}, -1, 1}};
