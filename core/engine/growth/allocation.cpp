@@ -11,19 +11,6 @@ std::size_t sz(std::int32_t i) {
     return static_cast<std::size_t>(i);
 }
 
-/// Split of vigour v between the axis (light qm) and the lateral branch (light ql).
-void splitBorchertHonda(double v, double qm, double ql, double lambda, double& vm, double& vl) {
-    const double wm = lambda * qm;
-    const double wl = (1.0 - lambda) * ql;
-    const double d = wm + wl;
-    if (d <= 0.0) {
-        vm = vl = 0.0;
-        return;
-    }
-    vm = v * wm / d;
-    vl = v * wl / d;
-}
-
 } // namespace
 
 void gatherLight(const MetamerTopology& t, std::span<const double> terminalLight,
@@ -51,7 +38,10 @@ bool gatherLightAndMarkShed(const MetamerTopology& t, std::span<const double> te
     const std::size_t n = t.parent.size();
     scratch.resize(n);
     ShedSums* sums = scratch.data();
-    for (std::size_t i = 0; i < n; ++i) {
+    const auto count = static_cast<std::int64_t>(n);
+#pragma omp parallel for schedule(static) if (count > 8192)
+    for (std::int64_t k = 0; k < count; ++k) {
+        const auto i = static_cast<std::size_t>(k);
         const double own = (t.mainChild[i] < 0 ? terminalLight[i] : 0.0) +
                            (t.lateralChild[i] < 0 ? axillaryLight[i] : 0.0);
         sums[i] = {own, own, 1, 1};
@@ -68,17 +58,20 @@ bool gatherLightAndMarkShed(const MetamerTopology& t, std::span<const double> te
             marks[i] = 0;
             continue;
         }
+        // Without branches (& not &&, selects not ifs): which children are lateral, and which
+        // of those are shed, is as good as random to a branch predictor.
         const bool lateral = t.lateralChild[sz(p)] == static_cast<std::int32_t>(i);
-        const bool shedRoot = lateral && s.full < thresholdPerTree[t.tree[i]] * s.fullCount;
-        marks[i] = static_cast<std::uint8_t>((shedRoot ? 1u : 0u) | (lateral ? 2u : 0u));
-        any = any || shedRoot;
+        const bool shedRoot = lateral & (s.full < thresholdPerTree[t.tree[i]] * s.fullCount);
+        marks[i] = static_cast<std::uint8_t>(static_cast<unsigned>(shedRoot) |
+                                             (static_cast<unsigned>(lateral) << 1));
+        any |= shedRoot;
         ShedSums& up = sums[sz(p)];
         up.full += s.full;
         up.fullCount += s.fullCount;
         // A shed branch adds nothing (adding +0.0 would not change the bits of the sum: the
         // sums are ≥ 0, so x + 0.0 == x exactly).
         up.kept += shedRoot ? 0.0 : s.kept;
-        up.keptCount += shedRoot ? 0 : s.keptCount;
+        up.keptCount += s.keptCount & -static_cast<std::int32_t>(!shedRoot);
     }
     return any;
 }
@@ -97,32 +90,15 @@ void allocateBorchertHonda(const MetamerTopology& t, std::span<const double> gat
                            std::span<const double> axillaryLight,
                            std::span<const AllocationParams> params, Vigour& out) {
     const std::size_t n = t.parent.size();
-    // Every slot is written below (metamer[i] by its parent or as a root before it is read,
-    // terminal/axillary where the slot holds a bud); only the child-held slots need zeroing.
+    // metamer[i] is written by its parent (or as a root) before it is read; the bud arrays hold
+    // 0 where the slot holds a child.
     out.metamer.resize(n);
-    out.terminal.resize(n);
-    out.axillary.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const AllocationParams& p = params[t.tree[i]];
-        if (t.parent[i] < 0) out.metamer[i] = p.alpha * gathered[i];
-        const std::int32_t m = t.mainChild[i], l = t.lateralChild[i];
-        const double qm = m >= 0 ? gathered[sz(m)] : terminalLight[i];
-        const double ql = l >= 0 ? gathered[sz(l)] : axillaryLight[i];
-        double vm = 0.0, vl = 0.0;
-        splitBorchertHonda(out.metamer[i], qm, ql, p.lambda, vm, vl);
-        if (m >= 0) {
-            out.metamer[sz(m)] = vm;
-            out.terminal[i] = 0.0;
-        } else {
-            out.terminal[i] = vm;
-        }
-        if (l >= 0) {
-            out.metamer[sz(l)] = vl;
-            out.axillary[i] = 0.0;
-        } else {
-            out.axillary[i] = vl;
-        }
-    }
+    out.terminal.assign(n, 0.0);
+    out.axillary.assign(n, 0.0);
+    forEachBudVigourBorchertHonda(t, gathered, terminalLight, axillaryLight, params, out.metamer,
+                                  [&](std::size_t i, bool lateral, double v) {
+                                      (lateral ? out.axillary : out.terminal)[i] = v;
+                                  });
 }
 
 Vigour allocateBorchertHondaNaive(const MetamerTopology& t, std::span<const double> terminalLight,
@@ -158,7 +134,7 @@ Vigour allocateBorchertHondaNaive(const MetamerTopology& t, std::span<const doub
             const double qm = m >= 0 ? light(m) : terminalLight[sz(node)];
             const double ql = l >= 0 ? light(l) : axillaryLight[sz(node)];
             double vm = 0.0, vl = 0.0;
-            splitBorchertHonda(v, qm, ql, p.lambda, vm, vl);
+            detail::splitVigour(v, qm, ql, p.lambda, vm, vl);
             v = child == m ? vm : vl;
         }
         out.metamer[i] = v;
@@ -166,7 +142,7 @@ Vigour allocateBorchertHondaNaive(const MetamerTopology& t, std::span<const doub
         const double qm = m >= 0 ? light(m) : terminalLight[i];
         const double ql = l >= 0 ? light(l) : axillaryLight[i];
         double vm = 0.0, vl = 0.0;
-        splitBorchertHonda(v, qm, ql, p.lambda, vm, vl);
+        detail::splitVigour(v, qm, ql, p.lambda, vm, vl);
         if (m < 0) out.terminal[i] = vm;
         if (l < 0) out.axillary[i] = vl;
     }

@@ -59,6 +59,51 @@ struct Vigour {
     std::vector<double> metamer, terminal, axillary;
 };
 
+namespace detail {
+/// Split of vigour \p v between the axis (light \p qm) and the lateral branch (light \p ql).
+inline void splitVigour(double v, double qm, double ql, double lambda, double& vm, double& vl) {
+    const double wm = lambda * qm;
+    const double wl = (1.0 - lambda) * ql;
+    const double d = wm + wl;
+    if (d <= 0.0) {
+        vm = vl = 0.0;
+        return;
+    }
+    vm = v * wm / d;
+    vl = v * wl / d;
+}
+} // namespace detail
+
+/// Borchert–Honda's forward scan (see allocateBorchertHonda) with the vigour of each bud handed
+/// to \p bud(i, lateral, v), terminal before axillary, in metamer order, for every slot that
+/// holds a bud (not a child): the growth loop plans its shoots from it in the same pass instead
+/// of storing every bud's vigour and reading it back. \p metamer receives every metamer's vigour.
+template <class BudFn>
+void forEachBudVigourBorchertHonda(const MetamerTopology& t, std::span<const double> gathered,
+                                   std::span<const double> terminalLight,
+                                   std::span<const double> axillaryLight,
+                                   std::span<const AllocationParams> params,
+                                   std::span<double> metamer, BudFn&& bud) {
+    const std::size_t n = t.parent.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const AllocationParams& p = params[t.tree[i]];
+        if (t.parent[i] < 0) metamer[i] = p.alpha * gathered[i];
+        const std::int32_t m = t.mainChild[i], l = t.lateralChild[i];
+        const double qm = m >= 0 ? gathered[static_cast<std::size_t>(m)] : terminalLight[i];
+        const double ql = l >= 0 ? gathered[static_cast<std::size_t>(l)] : axillaryLight[i];
+        double vm = 0.0, vl = 0.0;
+        detail::splitVigour(metamer[i], qm, ql, p.lambda, vm, vl);
+        if (m >= 0)
+            metamer[static_cast<std::size_t>(m)] = vm;
+        else
+            bud(i, false, vm);
+        if (l >= 0)
+            metamer[static_cast<std::size_t>(l)] = vl;
+        else
+            bud(i, true, vl);
+    }
+}
+
 /// Borchert–Honda allocation, one forward scan: v_root = α·Q_root; at each node the vigour v is
 /// split into v_m = v·λQ_m / (λQ_m + (1−λ)Q_l) for the axis and v_l = v·(1−λ)Q_l / (…) for the
 /// lateral branch (Q from gatherLight). A node whose two sides both have Q = 0 passes nothing.

@@ -471,60 +471,79 @@ void SelfOrganizingSimulation::shed() {
     const bool incremental = mShadow && !mOptions.naiveShadow;
     const bool sc = mEnv == SoEnvironment::SpaceColonization;
     mRemap.resize(n);
-    // One forward pass: a metamer is shed when it is a marked root or its parent is shed;
-    // survivors move down in place (stable: the write slot k never passes the read slot i).
-    // Child links are set from the child's side (it knows from its mark whether it is its
-    // parent's lateral child), because the parent's old slot may already be overwritten.
+    // First pass, forward: a metamer is shed when it is a marked root or its parent is shed;
+    // each survivor gets its new slot. The root of a shed branch leaves a scar: its parent's bud
+    // is gone for good (written at the parent's old slot, which the moves below carry along).
     std::int32_t next = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t p = mM.parent[i];
         const std::uint8_t mark = mMarks[i];
-        const std::int32_t newParent = p < 0 ? -1 : mRemap[sz(p)];
-        if ((mark & 1u) || (p >= 0 && newParent < 0)) {
-            const std::uint16_t t = mM.tree[i];
-            if (incremental) mSources.push_back({mShadow->voxelOf(mM.end[i]), -1, t});
-            --mCount[t];
-            ++mShedTree[t];
-            ++mShed;
-            mRemap[i] = -1;
-            // The root of a shed branch leaves a scar: its parent's bud is gone for good.
-            if (newParent >= 0) {
-                const std::size_t k = sz(newParent);
-                if (mark & 2u) {
-                    mM.deadBuds[k] |= 2u;
-                    mAxillaryLight[k] = 0.0;
-                } else {
-                    mM.deadBuds[k] |= 1u;
-                    mTerminalLight[k] = 0.0;
-                }
-            }
+        if (!(mark & 1u) && (p < 0 || mRemap[sz(p)] >= 0)) {
+            mRemap[i] = next++;
             continue;
         }
-        const auto k = static_cast<std::size_t>(next);
-        mRemap[i] = next++;
-        if (k != i) {
-            mM.end[k] = mM.end[i];
-            mM.frame[k] = mM.frame[i];
-            mM.tree[k] = mM.tree[i];
-            mM.order[k] = mM.order[i];
-            mM.born[k] = mM.born[i];
-            mM.deadBuds[k] = mM.deadBuds[i];
-            mTerminalLight[k] = mTerminalLight[i];
-            mAxillaryLight[k] = mAxillaryLight[i];
-            mGathered[k] = mGathered[i];
-            mInternodes[k] = mInternodes[i];
-            if (sc) {
-                mOptimalTerminal[k] = mOptimalTerminal[i];
-                mOptimalAxillary[k] = mOptimalAxillary[i];
+        mRemap[i] = -1;
+        const std::uint16_t t = mM.tree[i];
+        if (incremental) mSources.push_back({mShadow->voxelOf(mM.end[i]), -1, t});
+        --mCount[t];
+        ++mShedTree[t];
+        ++mShed;
+        if (p >= 0 && mRemap[sz(p)] >= 0) {
+            const std::size_t k = sz(p);
+            if (mark & 2u) {
+                mM.deadBuds[k] |= 2u;
+                mAxillaryLight[k] = 0.0;
+            } else {
+                mM.deadBuds[k] |= 1u;
+                mTerminalLight[k] = 0.0;
             }
         }
-        mM.parent[k] = newParent;
-        mM.mainChild[k] = -1;
-        mM.lateralChild[k] = -1;
-        if (newParent >= 0)
-            ((mark & 2u) ? mM.lateralChild : mM.mainChild)[sz(newParent)] = next - 1;
     }
     const auto kept = static_cast<std::size_t>(next);
+    // Then the survivors move down in place (stable: slot k never passes slot i), the arrays in
+    // two groups that two threads move at once (each group in one pass, so no array is read
+    // and written by both). Child links are set from the child's side (its mark says whether
+    // it is its parent's lateral child), after the parent's own slot has been reset.
+#pragma omp parallel sections if (n > 8192)
+    {
+#pragma omp section
+        {
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::int32_t r = mRemap[i];
+                if (r < 0) continue;
+                const std::size_t k = sz(r);
+                mM.end[k] = mM.end[i];
+                mM.frame[k] = mM.frame[i];
+                mM.tree[k] = mM.tree[i];
+                mM.order[k] = mM.order[i];
+                mM.born[k] = mM.born[i];
+                if (sc) {
+                    mOptimalTerminal[k] = mOptimalTerminal[i];
+                    mOptimalAxillary[k] = mOptimalAxillary[i];
+                }
+            }
+        }
+#pragma omp section
+        {
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::int32_t r = mRemap[i];
+                if (r < 0) continue;
+                const std::size_t k = sz(r);
+                const std::int32_t p = mM.parent[i];
+                const std::int32_t newParent = p < 0 ? -1 : mRemap[sz(p)];
+                mM.parent[k] = newParent;
+                mM.mainChild[k] = -1;
+                mM.lateralChild[k] = -1;
+                mM.deadBuds[k] = mM.deadBuds[i];
+                mTerminalLight[k] = mTerminalLight[i];
+                mAxillaryLight[k] = mAxillaryLight[i];
+                mGathered[k] = mGathered[i];
+                mInternodes[k] = mInternodes[i];
+                if (newParent >= 0)
+                    ((mMarks[i] & 2u) ? mM.lateralChild : mM.mainChild)[sz(newParent)] = r;
+            }
+        }
+    }
     resizeMetamers(kept);
     mTerminalLight.resize(kept);
     mAxillaryLight.resize(kept);
@@ -711,9 +730,6 @@ void SelfOrganizingSimulation::step() {
     }
     const Clock::time_point t2 = Clock::now();
 
-    allocate(mGathered, mTerminalLight, mAxillaryLight, mVigour);
-    const Clock::time_point t3 = Clock::now();
-
     // Buds that grow, in metamer order (terminal before axillary). Their shoots are made in
     // parallel into scratch slots (prefix sums of the planned lengths), then appended in order.
     mGrowing.clear();
@@ -733,12 +749,28 @@ void SelfOrganizingSimulation::step() {
         slots += sz(g.planned);
         mGrowing.push_back(g);
     };
-    for (std::size_t i = 0; i < n0; ++i) {
-        if (mM.mainChild[i] < 0 && !(mM.deadBuds[i] & 1u) && mVigour.terminal[i] >= 1.0)
-            plan(i, false, mVigour.terminal[i], false, glm::vec3(0.0f));
-        if (mM.lateralChild[i] < 0 && !(mM.deadBuds[i] & 2u) && mVigour.axillary[i] >= 1.0)
-            plan(i, true, mVigour.axillary[i], false, glm::vec3(0.0f));
+    auto planBud = [&](std::size_t i, bool lateral, double vigour) {
+        if (vigour >= 1.0 && !(mM.deadBuds[i] & (lateral ? 2u : 1u)))
+            plan(i, lateral, vigour, false, glm::vec3(0.0f));
+    };
+    bool allBorchertHonda = !mOptions.naiveAllocation;
+    for (const StandTree& t : mTrees)
+        allBorchertHonda = allBorchertHonda && t.params.allocation == SoAllocation::BorchertHonda;
+    if (allBorchertHonda) {
+        // The common case in one forward scan: vigour split and shoots planned as the scan
+        // reaches each bud (the same buds, in the same order, as the general path below).
+        mVigour.metamer.resize(n0);
+        forEachBudVigourBorchertHonda(mM.topology(), mGathered, mTerminalLight, mAxillaryLight,
+                                      mAlloc, mVigour.metamer, planBud);
+    } else {
+        allocate(mGathered, mTerminalLight, mAxillaryLight, mVigour);
+        for (std::size_t i = 0; i < n0; ++i) {
+            if (mM.mainChild[i] < 0) planBud(i, false, mVigour.terminal[i]);
+            if (mM.lateralChild[i] < 0) planBud(i, true, mVigour.axillary[i]);
+        }
     }
+    const Clock::time_point t3 = Clock::now();
+
     if (mEnv == SoEnvironment::SpaceColonization) {
         // A tree that perceives no marker at all (a seedling below its crown envelope) grows
         // its leader straight up, max_shoot_length metamers per cycle, until it reaches them.

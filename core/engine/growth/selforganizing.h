@@ -139,7 +139,7 @@ struct SimulationOptions {
 struct CycleTimings {
     double light = 0;       ///< bud light from the environment
     double shedding = 0;    ///< gather, shed, compaction
-    double allocation = 0;  ///< Borchert–Honda or priority
+    double allocation = 0;  ///< Borchert–Honda or priority, and which buds grow how far
     double shoots = 0;      ///< optimal directions and new metamers (the three below)
     double directions = 0;  ///<   of which: buds' optimal growth directions
     double making = 0;      ///<   of which: the shoots' metamers (parallel, into scratch)

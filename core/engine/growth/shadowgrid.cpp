@@ -248,6 +248,13 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     // otherwise they are added directly. Both are exact integer sums.
     const int firstLayer = std::max(mFloor, firstSource - maxDepth);
     const int layerCount = hi.y - firstLayer + 1;
+    // Δs(q) per kernel in one flat table (0 where q is beyond the kernel's depth), so the loops
+    // below read one int per source instead of the kernel's vector, and skip those sources.
+    const std::size_t kernelCount = kernels.size();
+    mDeltaByDepth.assign(depths * kernelCount, 0);
+    for (std::size_t k = 0; k < kernelCount; ++k)
+        for (std::size_t q = 0; q <= static_cast<std::size_t>(kernels[k].depth); ++q)
+            mDeltaByDepth[q * kernelCount + k] = kernels[k].delta[q];
     const auto dx = static_cast<std::size_t>(mDim.x), dz = static_cast<std::size_t>(mDim.z);
     const std::size_t planeD = (dx + 1) * (dz + 1);
     mDiff.resize(static_cast<std::size_t>(omp_get_max_threads()));
@@ -279,16 +286,21 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
                 cells += static_cast<std::int64_t>(reach) * (2 * q + 1) * (2 * q + 1);
             }
             if (cells == 0) continue;
+            // Calls f(source, q, Δs) for every source slice that reaches this layer (all the
+            // loop state in locals, so that the writes into int arrays cannot force reloads).
             auto forEach = [&](auto&& f) {
                 for (int q = 0; q <= maxDepth; ++q) {
                     const int sy = y + q;
                     if (sy < firstSource || sy > hi.y) continue;
                     const auto b = static_cast<std::size_t>(sy - firstSource);
-                    for (std::uint32_t k = mBucketStart[b]; k < mBucketStart[b + 1]; ++k) {
-                        const SortedSource& s = mSorted[k];
-                        const ShadowKernel& kernel = kernels[s.kernel];
-                        if (q > kernel.depth) continue;
-                        f(s, q, s.weight * kernel.delta[static_cast<std::size_t>(q)]);
+                    if (mReach[b * depths + static_cast<std::size_t>(q)] == 0) continue;
+                    const std::int32_t* delta =
+                        mDeltaByDepth.data() + static_cast<std::size_t>(q) * kernelCount;
+                    const SortedSource* s = mSorted.data() + mBucketStart[b];
+                    const SortedSource* const end = mSorted.data() + mBucketStart[b + 1];
+                    for (; s != end; ++s) {
+                        const std::int32_t d = s->weight * delta[s->kernel];
+                        if (d != 0) f(*s, q, d); // 0: beyond the kernel's depth, or no change
                     }
                 }
             };
@@ -312,15 +324,18 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
             const std::size_t width = static_cast<std::size_t>(z1 - z0) + 1;
             const std::size_t rows = static_cast<std::size_t>(x1 - x0) + 1;
             const std::size_t stride = width + 1;
+            // Corner (x − q, z − q) of a slice is at x·stride + z − origin(q); the other three
+            // are w = 2q + 1 columns and/or rows further.
+            std::int32_t* __restrict corners = diff.data();
+            const auto iStride = static_cast<std::ptrdiff_t>(stride);
             forEach([&](const SortedSource& s, int q, std::int32_t d) {
-                const auto a0 = static_cast<std::size_t>(s.x - q - x0);
-                const auto a1 = static_cast<std::size_t>(s.x + q + 1 - x0);
-                const auto c0 = static_cast<std::size_t>(s.z - q - z0);
-                const auto c1 = static_cast<std::size_t>(s.z + q + 1 - z0);
-                diff[a0 * stride + c0] += d;
-                diff[a0 * stride + c1] -= d;
-                diff[a1 * stride + c0] -= d;
-                diff[a1 * stride + c1] += d;
+                const std::ptrdiff_t w = 2 * q + 1;
+                const std::ptrdiff_t origin = (x0 + q) * iStride + (z0 + q);
+                const std::ptrdiff_t i = s.x * iStride + s.z - origin;
+                corners[i] += d;
+                corners[i + w] -= d;
+                corners[i + w * iStride] -= d;
+                corners[i + w * iStride + w] += d;
             });
             // Two sweeps so that the second vectorizes: prefix sums along z in place (a chain
             // per row), then running sums down x added into the layer; the array is left zeroed.

@@ -159,6 +159,8 @@ private:
     std::vector<Part> mPart;
     /// applyBatch: one zeroed difference plane per thread ((dims.x + 1) · (dims.z + 1)).
     std::vector<std::vector<std::int32_t>> mDiff;
+    /// applyBatch: Δs(q) of every kernel, q-major (q · kernels + kernel), 0 beyond its depth.
+    std::vector<std::int32_t> mDeltaByDepth;
 };
 
 } // namespace sylva::growth

@@ -2,6 +2,9 @@
 // 30-tree stand, each with incremental updates against the naive full recomputation.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <vector>
+
 #include <omp.h>
 
 #include "engine/growth/allocation.h"
@@ -57,6 +60,7 @@ void growTo(SelfOrganizingSimulation& sim, std::size_t internodes) {
 void runCycle100k(benchmark::State& state, const SelfOrganizingParams& params) {
     const bool naive = state.range(0) != 0;
     CycleTimings sum;
+    std::vector<double> totals; // per iteration, for the median (this VM's speed drifts)
     std::size_t added = 0, shed = 0, before = 0;
     for (auto _ : state) {
         state.PauseTiming();
@@ -77,6 +81,7 @@ void runCycle100k(benchmark::State& state, const SelfOrganizingParams& params) {
         sum.making += t.making;
         sum.commit += t.commit;
         sum.environment += t.environment;
+        totals.push_back(t.total);
         shed = sim.shedCount() - shedBefore;
         added = sim.metamers().size() + shed - before;
         state.ResumeTiming();
@@ -93,6 +98,9 @@ void runCycle100k(benchmark::State& state, const SelfOrganizingParams& params) {
     state.counters["make_ms"] = sum.making / n;
     state.counters["commit_ms"] = sum.commit / n;
     state.counters["shadow_ms"] = sum.environment / n;
+    std::sort(totals.begin(), totals.end());
+    state.counters["median_ms"] = totals[totals.size() / 2];
+    state.counters["min_ms"] = totals.front();
 }
 void BM_SelfOrgCycle100k(benchmark::State& state) {
     runCycle100k(state, benchParams());
