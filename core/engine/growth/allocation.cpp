@@ -58,20 +58,17 @@ bool gatherLightAndMarkShed(const MetamerTopology& t, std::span<const double> te
             marks[i] = 0;
             continue;
         }
-        // Without branches (& not &&, selects not ifs): which children are lateral, and which
-        // of those are shed, is as good as random to a branch predictor.
         const bool lateral = t.lateralChild[sz(p)] == static_cast<std::int32_t>(i);
-        const bool shedRoot = lateral & (s.full < thresholdPerTree[t.tree[i]] * s.fullCount);
-        marks[i] = static_cast<std::uint8_t>(static_cast<unsigned>(shedRoot) |
-                                             (static_cast<unsigned>(lateral) << 1));
-        any |= shedRoot;
+        const bool shedRoot = lateral && s.full < thresholdPerTree[t.tree[i]] * s.fullCount;
+        marks[i] = static_cast<std::uint8_t>((shedRoot ? 1u : 0u) | (lateral ? 2u : 0u));
+        any = any || shedRoot;
         ShedSums& up = sums[sz(p)];
         up.full += s.full;
         up.fullCount += s.fullCount;
         // A shed branch adds nothing (adding +0.0 would not change the bits of the sum: the
         // sums are ≥ 0, so x + 0.0 == x exactly).
         up.kept += shedRoot ? 0.0 : s.kept;
-        up.keptCount += s.keptCount & -static_cast<std::int32_t>(!shedRoot);
+        up.keptCount += shedRoot ? 0 : s.keptCount;
     }
     return any;
 }
