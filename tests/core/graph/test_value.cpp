@@ -34,6 +34,21 @@ TEST(Value, SyntaxErrorsCarryLineAndColumn) {
     EXPECT_THROW(Value::parseJson("1 2"), sylva::InvalidInput);
 }
 
+TEST(Value, BadNumbersAreNamedWithTheirColumn) {
+    auto message = [](const std::string& text) {
+        try {
+            (void)Value::parseJson(text, "n.json");
+        } catch (const sylva::InvalidInput& e) {
+            EXPECT_EQ(e.diagnostics().at(0).column, 7) << text;
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message(R"({"a": 1e400})").find("number '1e400' is out of range"), std::string::npos);
+    EXPECT_NE(message(R"({"a": 1.2.3})").find("malformed number '1.2.3'"), std::string::npos);
+    EXPECT_NE(message(R"({"a": -})").find("malformed number '-'"), std::string::npos);
+}
+
 TEST(Value, TypedGettersNameTheKey) {
     const Value v = Value::parseJson(R"({"n":3,"s":"x","f":2.5})");
     EXPECT_EQ(v.integer("n", 0), 3);
