@@ -86,6 +86,49 @@ TEST(SelfOrgGrowth, DeterministicOnOneAndTwoThreads) {
     }
 }
 
+// The test above stays below the sizes where every parallel loop of a cycle (light, the
+// shedding's two-group move, directions, shoots, appending, the shadow layers) splits its work;
+// here a tree grows past 20k metamers and every cycle must give the same arrays on 1, 2 and 3
+// threads, for the Borchert–Honda scan and the two-pass (priority) path.
+TEST(SelfOrgGrowth, DeterministicOnOneTwoAndThreeThreadsAtSize) {
+    SelfOrganizingParams p;
+    p.environment = SoEnvironment::ShadowPropagation;
+    p.alpha = 4.0;
+    p.lambda = 0.5;
+    p.shadowA = 0.2;
+    p.internodeLength = 0.25;
+    p.branchAngle = 85;
+    p.tropismWeight = 0.5;
+    p.leafSize = 0.0;
+    for (SoAllocation allocation : {SoAllocation::BorchertHonda, SoAllocation::Priority}) {
+        p.allocation = allocation;
+        p.cycles = allocation == SoAllocation::BorchertHonda ? 14 : 10;
+        const int before = omp_get_max_threads();
+        std::vector<SelfOrganizingSimulation> sims;
+        for (int threads = 1; threads <= 3; ++threads)
+            sims.emplace_back(std::vector<StandTree>{{{0, 0, 0}, p, 5}}, std::vector<glm::vec3>{});
+        std::size_t largest = 0;
+        while (!sims[0].done()) {
+            for (int threads = 1; threads <= 3; ++threads) {
+                omp_set_num_threads(threads);
+                sims[static_cast<std::size_t>(threads - 1)].step();
+            }
+            const MetamerArrays& a = sims[0].metamers();
+            largest = std::max(largest, a.size());
+            for (std::size_t k = 1; k < 3; ++k) {
+                const MetamerArrays& b = sims[k].metamers();
+                ASSERT_EQ(a.size(), b.size());
+                ASSERT_TRUE(a.end == b.end && a.frame == b.frame && a.parent == b.parent &&
+                            a.mainChild == b.mainChild && a.lateralChild == b.lateralChild &&
+                            a.deadBuds == b.deadBuds && a.born == b.born)
+                    << "threads " << k + 1 << ", " << a.size() << " metamers";
+            }
+        }
+        omp_set_num_threads(before);
+        EXPECT_GT(largest, 20000u);
+    }
+}
+
 TEST(SelfOrgGrowth, SheddingRemovesExactlyTheDimSubtrees) {
     SelfOrganizingParams p = small(SoEnvironment::ShadowPropagation);
     p.sheddingThreshold = 0.3;
