@@ -342,13 +342,11 @@ private:
             ++mPos;
         double d = 0;
         auto res = std::from_chars(mText.data() + start, mText.data() + mPos, d);
-        const std::string token = mText.substr(start, mPos - start);
-        if (res.ec == std::errc::result_out_of_range) {
-            mPos = start;
-            fail("number '" + token + "' is out of range (magnitudes up to 1.8e308)");
-        }
         if (res.ec != std::errc() || res.ptr != mText.data() + mPos) {
+            const std::string token = mText.substr(start, mPos - start);
             mPos = start;
+            if (res.ec == std::errc::result_out_of_range)
+                fail("number '" + token + "' is out of range (magnitudes up to 1.8e308)");
             fail("malformed number '" + token + "'");
         }
         return d;

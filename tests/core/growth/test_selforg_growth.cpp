@@ -6,6 +6,7 @@
 
 #include "engine/growth/selforganizing.h"
 #include "engine/util/error.h"
+#include "selforgparams.h"
 
 using namespace sylva;
 using namespace sylva::growth;
@@ -86,23 +87,16 @@ TEST(SelfOrgGrowth, DeterministicOnOneAndTwoThreads) {
     }
 }
 
-// The test above stays below the sizes where every parallel loop of a cycle (light, the
-// shedding's two-group move, directions, shoots, appending, the shadow layers) splits its work;
-// here a tree grows past 20k metamers and every cycle must give the same arrays on 1, 2 and 3
-// threads, for the Borchert–Honda scan and the two-pass (priority) path.
+// The test above stays below the sizes where the parallel loops of a cycle split their work.
+// Here a tree grows past 20k metamers and every cycle must give the same arrays on 1, 2 and 3
+// threads, with the Borchert–Honda scan and with the two-pass (priority) path.
+// (SelfOrgShadow.NaiveAndIncrementalGrowTheSameTree also compares 1 and 2 threads at size, but
+// across the naive and incremental paths, Borchert–Honda only, and at the end of the run.)
 TEST(SelfOrgGrowth, DeterministicOnOneTwoAndThreeThreadsAtSize) {
-    SelfOrganizingParams p;
-    p.environment = SoEnvironment::ShadowPropagation;
-    p.alpha = 4.0;
-    p.lambda = 0.5;
-    p.shadowA = 0.2;
-    p.internodeLength = 0.25;
-    p.branchAngle = 85;
-    p.tropismWeight = 0.5;
-    p.leafSize = 0.0;
     for (SoAllocation allocation : {SoAllocation::BorchertHonda, SoAllocation::Priority}) {
+        SelfOrganizingParams p =
+            test::vigorousParams(allocation == SoAllocation::BorchertHonda ? 14 : 10);
         p.allocation = allocation;
-        p.cycles = allocation == SoAllocation::BorchertHonda ? 14 : 10;
         const int before = omp_get_max_threads();
         std::vector<SelfOrganizingSimulation> sims;
         for (int threads = 1; threads <= 3; ++threads)

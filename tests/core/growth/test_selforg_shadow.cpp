@@ -6,6 +6,7 @@
 #include "engine/growth/selforganizing.h"
 #include "engine/growth/shadowgrid.h"
 #include "engine/util/random.h"
+#include "selforgparams.h"
 
 using namespace sylva::growth;
 
@@ -102,14 +103,7 @@ TEST(SelfOrgShadow, NaiveAndIncrementalGrowTheSameTree) {
     // A small tree, and a vigorous one large enough for the parallel loops and the batched
     // difference-array shadow update to take part. The naive run uses one thread, the
     // incremental one two, so this also checks the thread-count independence.
-    SelfOrganizingParams vigorous;
-    vigorous.cycles = 13;
-    vigorous.alpha = 4.0;
-    vigorous.shadowA = 0.2;
-    vigorous.internodeLength = 0.25;
-    vigorous.branchAngle = 85;
-    vigorous.optimalWeight = 0.05;
-    vigorous.tropismWeight = 0.5;
+    const SelfOrganizingParams vigorous = test::vigorousParams(13);
     for (const SelfOrganizingParams& p : {SelfOrganizingParams{}, vigorous}) {
         SelfOrganizingSimulation a({{glm::vec3(0), p, 5}}, {});
         SelfOrganizingSimulation b({{glm::vec3(0), p, 5}}, {}, SimulationOptions{true, true});
