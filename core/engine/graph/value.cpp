@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <string_view>
 
 namespace sylva::graph {
 
@@ -342,14 +343,43 @@ private:
             ++mPos;
         double d = 0;
         auto res = std::from_chars(mText.data() + start, mText.data() + mPos, d);
-        if (res.ec != std::errc() || res.ptr != mText.data() + mPos) {
+        if (res.ec != std::errc() || res.ptr != mText.data() + mPos ||
+            !isJsonNumber(std::string_view(mText).substr(start, mPos - start))) {
             const std::string token = mText.substr(start, mPos - start);
             mPos = start;
             if (res.ec == std::errc::result_out_of_range)
                 fail("number '" + token + "' is out of range (magnitudes up to 1.8e308)");
-            fail("malformed number '" + token + "'");
+            fail("malformed number '" + token +
+                 "' (JSON numbers are like 12, -0.5 or 3e-4: no leading zeros, digits on both "
+                 "sides of '.')");
         }
         return d;
+    }
+
+    // JSON's number grammar: -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?
+    static bool isJsonNumber(std::string_view t) {
+        std::size_t i = 0;
+        auto digits = [&] {
+            const std::size_t from = i;
+            while (i < t.size() && t[i] >= '0' && t[i] <= '9')
+                ++i;
+            return i - from;
+        };
+        if (i < t.size() && t[i] == '-') ++i;
+        if (i < t.size() && t[i] == '0')
+            ++i;
+        else if (digits() == 0)
+            return false;
+        if (i < t.size() && t[i] == '.') {
+            ++i;
+            if (digits() == 0) return false;
+        }
+        if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+            ++i;
+            if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+            if (digits() == 0) return false;
+        }
+        return i == t.size();
     }
 
     const std::string& mText;

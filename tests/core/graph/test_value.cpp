@@ -47,6 +47,14 @@ TEST(Value, BadNumbersAreNamedWithTheirColumn) {
     EXPECT_NE(message(R"({"a": 1e400})").find("number '1e400' is out of range"), std::string::npos);
     EXPECT_NE(message(R"({"a": 1.2.3})").find("malformed number '1.2.3'"), std::string::npos);
     EXPECT_NE(message(R"({"a": -})").find("malformed number '-'"), std::string::npos);
+    // Strict JSON: no leading zeros, digits on both sides of '.', an exponent has digits.
+    for (const char* bad : {"02", "-01", "2.", "2.e3", "1e", "1e+", "-.5", "1-2"})
+        EXPECT_NE(message(std::string(R"({"a": )") + bad + "}")
+                      .find(std::string("malformed number '") + bad + "'"),
+                  std::string::npos)
+            << bad;
+    for (const char* good : {"0", "-0", "10", "0.5", "-0.25", "1e3", "1E-3", "2.5e+2"})
+        EXPECT_EQ(message(std::string(R"({"a": )") + good + "}"), "no error") << good;
 }
 
 TEST(Value, TypedGettersNameTheKey) {
