@@ -31,6 +31,14 @@
         <source>%1: 0 (blue) – %2 (yellow)</source>
         <translation>%1: 0 (blau) – %2 (gelb)</translation>
     </message>
+    <message>
+        <source>; red: %1 internodes in branches below the shedding threshold %2, shed at the next cycle</source>
+        <translation>; rot: %1 Internodien in Ästen unter der Abwurfschwelle %2, im nächsten Zyklus abgeworfen</translation>
+    </message>
+    <message>
+        <source>; no branch is below the shedding threshold %1</source>
+        <translation>; kein Ast liegt unter der Abwurfschwelle %1</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -72,6 +80,14 @@
     <message>
         <source>--size expects WxH between 16 and 8192, got &apos;%1&apos;</source>
         <translation>--size erwartet BxH zwischen 16 und 8192, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Colour the tree by &lt;mode&gt;: material, light, vigour, age or order.</source>
+        <translation>Den Baum nach &lt;mode&gt; einfärben: material, light, vigour, age oder order.</translation>
+    </message>
+    <message>
+        <source>--color-by expects material, light, vigour, age or order, got &apos;%1&apos;</source>
+        <translation>--color-by erwartet material, light, vigour, age oder order, erhalten: &apos;%1&apos;</translation>
     </message>
 </context>
 <context>

@@ -17,6 +17,8 @@ namespace {
 struct Raw {
     std::vector<float> value;
     float max = 0.0f;
+    std::size_t starved = 0; ///< Light: metamers flagged kStarved
+    float threshold = 0.0f;  ///< Light: the skeleton's shedding threshold
 };
 
 Raw rawAttribute(const skel::Skeleton& s, ColorBy mode) {
@@ -33,8 +35,11 @@ Raw rawAttribute(const skel::Skeleton& s, ColorBy mode) {
             count[i] += 1.0f;
             count[static_cast<std::size_t>(s.parent[i])] += count[i];
         }
-        for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t i = 0; i < n; ++i) {
             raw.value[i] = count[i] > 0.0f ? s.light[i] / count[i] : s.light[i];
+            raw.starved += s.parent[i] >= 0 && (s.flags[i] & skel::kStarved) ? 1 : 0;
+        }
+        raw.threshold = s.shedThreshold;
         break;
     }
     case ColorBy::Vigour:
@@ -95,18 +100,37 @@ QString legendOf(const Raw& raw, ColorBy mode) {
     if (raw.value.empty())
         return QCoreApplication::translate("AttributeColors", "%1: not available for this tree")
             .arg(attributeName(mode));
-    return QCoreApplication::translate("AttributeColors", "%1: 0 (blue) – %2 (yellow)")
-        .arg(attributeName(mode))
-        .arg(double(raw.max), 0, 'g', 3);
+    QString legend = QCoreApplication::translate("AttributeColors", "%1: 0 (blue) – %2 (yellow)")
+                         .arg(attributeName(mode))
+                         .arg(double(raw.max), 0, 'g', 3);
+    if (mode == ColorBy::Light && raw.threshold > 0.0f) {
+        legend += raw.starved > 0
+                      ? QCoreApplication::translate(
+                            "AttributeColors",
+                            "; red: %1 internodes in branches below the shedding threshold %2, "
+                            "shed at the next cycle")
+                            .arg(qulonglong(raw.starved))
+                            .arg(double(raw.threshold), 0, 'g', 3)
+                      : QCoreApplication::translate(
+                            "AttributeColors", "; no branch is below the shedding threshold %1")
+                            .arg(double(raw.threshold), 0, 'g', 3);
+    }
+    return legend;
 }
 
-// One ramp colour per vertex from its node's 0..1 value; empty without node ids or values.
-std::vector<glm::vec3> vertexColors(const mesh::Mesh& mesh, const std::vector<float>& t) {
+// One ramp colour per vertex from its node's 0..1 value (Light: kStarvedColor for starved
+// nodes); empty without node ids or values.
+std::vector<glm::vec3> vertexColors(const mesh::Mesh& mesh, const skel::Skeleton& s, ColorBy mode,
+                                    const std::vector<float>& t) {
     if (t.empty() || mesh.node.size() != mesh.positions.size()) return {};
+    const bool markStarved = mode == ColorBy::Light && s.flags.size() == t.size();
     std::vector<glm::vec3> colors(mesh.positions.size());
     for (std::size_t v = 0; v < colors.size(); ++v) {
         const std::uint32_t node = mesh.node[v];
-        colors[v] = rampColor(node < t.size() ? t[node] : 0.0f);
+        if (node < t.size() && markStarved && (s.flags[node] & skel::kStarved))
+            colors[v] = kStarvedColor;
+        else
+            colors[v] = rampColor(node < t.size() ? t[node] : 0.0f);
     }
     return colors;
 }
@@ -146,7 +170,7 @@ glm::vec3 rampColor(float t) {
 std::vector<glm::vec3> attributeColors(const mesh::Mesh& mesh, const skel::Skeleton& skeleton,
                                        ColorBy mode) {
     if (mode == ColorBy::Material) return {};
-    return vertexColors(mesh, normalizedAttribute(skeleton, mode));
+    return vertexColors(mesh, skeleton, mode, normalizedAttribute(skeleton, mode));
 }
 
 QString attributeLegend(const skel::Skeleton& skeleton, ColorBy mode) {
@@ -159,7 +183,7 @@ AttributeColoring colorByAttribute(const mesh::Mesh& mesh, const skel::Skeleton&
     AttributeColoring out;
     out.legend = legendOf(raw, mode);
     if (mode != ColorBy::Material)
-        out.colors = vertexColors(mesh, normalized(std::move(raw), mode));
+        out.colors = vertexColors(mesh, skeleton, mode, normalized(std::move(raw), mode));
     return out;
 }
 

@@ -20,7 +20,8 @@ namespace sylva::ui {
 /// has branch order).
 enum class ColorBy {
     Material,
-    Light,       ///< light per internode of the node's subtree: the quantity shedding tests
+    Light,       ///< light per internode of the node's subtree: the quantity shedding tests;
+                 ///< branches below the shedding threshold (skel::kStarved) in kStarvedColor
     Vigour,      ///< resource flowing through the node (log scale)
     Age,         ///< growth cycles since the node's metamer grew
     BranchOrder, ///< 0 for the trunk
@@ -34,6 +35,10 @@ bool hasAttribute(const skel::Skeleton& skeleton, ColorBy mode);
 /// vigour: log(1 + v) / log(1 + v_max); age and order: value / largest value.
 std::vector<float> normalizedAttribute(const skel::Skeleton& skeleton, ColorBy mode);
 
+/// Colour (linear RGB) of starved nodes when colouring by light: the branches the next growth
+/// cycle would shed. Red, outside the ramp's blue–green–yellow.
+inline constexpr glm::vec3 kStarvedColor{0.80f, 0.02f, 0.02f};
+
 /// The colour ramp (linear RGB): dark blue (0) through teal and green to yellow (1), readable on
 /// the viewport's background and monotonic in brightness.
 glm::vec3 rampColor(float t);
@@ -43,7 +48,9 @@ glm::vec3 rampColor(float t);
 std::vector<glm::vec3> attributeColors(const mesh::Mesh& mesh, const skel::Skeleton& skeleton,
                                        ColorBy mode);
 
-/// The legend shown in the status bar, e.g. "Light per internode: 0 (blue) – 0.82 (yellow)".
+/// The legend shown in the status bar, e.g. "Light per internode: 0 (blue) – 0.82 (yellow)";
+/// for light with a shedding threshold it adds how many internodes are starved (red) and the
+/// threshold they fall below.
 QString attributeLegend(const skel::Skeleton& skeleton, ColorBy mode);
 
 /// attributeColors() and attributeLegend() together, from one pass over the skeleton (what the

@@ -97,6 +97,10 @@ int runTree(const std::vector<std::string>& argv) {
         glm::vec3 lo(0.0f), hi(0.0f);
         if (result.skeleton) result.skeleton->bounds(lo, hi);
         appendJsonNumber(json, "height", result.skeleton ? hi.y - lo.y : stat("height"));
+        // Self-organizing growth: metamers, those shed over the run, and those the next cycle
+        // would shed (light per internode below the threshold; red in the editor's light view).
+        for (const char* key : {"internodes", "cycles", "shed", "starved"})
+            if (result.stats.count(key) != 0) appendJsonNumber(json, key, stat(key));
         json += "\"timings_ms\":{";
         for (const auto& [k, v] : result.timingsMs)
             appendJsonNumber(json, k.c_str(), v);

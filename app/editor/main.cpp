@@ -1,9 +1,11 @@
 // sylva: the editor. `sylva [species.json]` opens the main window on a species (default: the
 // ternary tree preset); `sylva --screenshot out.png [--size WxH] [species.json]` renders the
-// viewport to a PNG and exits (needs an X server; use xvfb-run on a headless machine).
+// viewport to a PNG and exits (needs an X server; use xvfb-run on a headless machine);
+// `--color-by light|vigour|age|order` colours the tree by a node attribute (View ▸ Colour by).
 
 #include <cstdio>
 #include <memory>
+#include <utility>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -43,6 +45,22 @@ bool parseSize(const QString& text, QSize& size) {
            size.height() <= 8192;
 }
 
+// The View ▸ Colour by mode named on the command line; false for an unknown name.
+bool parseColorBy(const QString& text, sylva::ui::ColorBy& mode) {
+    using sylva::ui::ColorBy;
+    static const std::pair<const char*, ColorBy> kNames[] = {{"material", ColorBy::Material},
+                                                             {"light", ColorBy::Light},
+                                                             {"vigour", ColorBy::Vigour},
+                                                             {"age", ColorBy::Age},
+                                                             {"order", ColorBy::BranchOrder}};
+    for (const auto& [name, value] : kNames)
+        if (text == QLatin1String(name)) {
+            mode = value;
+            return true;
+        }
+    return false;
+}
+
 void fail(const QString& message) {
     std::fprintf(stderr, "sylva: %s\n", message.toLocal8Bit().constData());
 }
@@ -75,8 +93,14 @@ int main(int argc, char* argv[]) {
         QStringLiteral("size"),
         QApplication::translate("main", "Viewport size in pixels, e.g. 1024x768."),
         QStringLiteral("WxH"));
+    const QCommandLineOption colorByOption(
+        QStringLiteral("color-by"),
+        QApplication::translate(
+            "main", "Colour the tree by <mode>: material, light, vigour, age or order."),
+        QStringLiteral("mode"));
     parser.addOption(screenshotOption);
     parser.addOption(sizeOption);
+    parser.addOption(colorByOption);
     parser.process(app);
 
     const QStringList positional = parser.positionalArguments();
@@ -92,7 +116,16 @@ int main(int argc, char* argv[]) {
         return 2;
     }
 
+    sylva::ui::ColorBy colorBy = sylva::ui::ColorBy::Material;
+    if (parser.isSet(colorByOption) && !parseColorBy(parser.value(colorByOption), colorBy)) {
+        fail(QApplication::translate(
+                 "main", "--color-by expects material, light, vigour, age or order, got '%1'")
+                 .arg(parser.value(colorByOption)));
+        return 2;
+    }
+
     sylva::ui::MainWindow window;
+    window.setColorBy(colorBy);
     if (size.isValid()) window.viewport()->setFixedSize(size);
     window.show();
     if (size.isValid() && !screenshotMode) {

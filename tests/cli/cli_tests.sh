@@ -47,6 +47,20 @@ tree_obj_and_stats)
   v=$(grep -c '^v ' bush.obj); f=$(grep -c '^f ' bush.obj)
   grep -q "\"vertices\":$v[,}]" out.txt || fail "stats vertices differ from OBJ's $v"
   grep -q "\"triangles\":$f[,}]" out.txt || fail "stats triangles differ from OBJ's $f" ;;
+tree_self_organizing_stats)
+  # A self-organizing species reports its metamers, those shed and those starving now.
+  run_cli 0 tree "$DATA/../../presets/so-shrub.json" -o s.obj --stats --set grow.cycles=8
+  for key in internodes cycles shed starved; do
+    grep -q "\"$key\":[0-9]" out.txt || fail "stats lack $key: $(cat out.txt)"
+  done
+  grep -q '"cycles":8[,}]' out.txt || fail "--set grow.cycles=8: $(cat out.txt)"
+  n=$(grep -o '"internodes":[0-9]*' out.txt | cut -d: -f2)
+  st=$(grep -o '"starved":[0-9]*' out.txt | cut -d: -f2)
+  seg=$(grep -o '"segments":[0-9]*' out.txt | cut -d: -f2)
+  (( n > 100 && st <= n && seg == n )) || fail "internodes $n, starved $st, segments $seg"
+  # An L-system tree has none of them.
+  run_cli 0 tree "$DATA/lsystem/bush.lsys" -o b.obj --stats
+  ! grep -q '"starved"' out.txt || fail "an L-system reports starved metamers" ;;
 tree_species_json)
   mkdir -p sp && cp "$DATA/lsystem/bush.lsys" sp/
   cat > sp/bush.json <<'JSON'

@@ -106,6 +106,32 @@ private Q_SLOTS:
         QVERIFY(attributeColors(m, s, ColorBy::Light).empty());
     }
 
+    void starvedBranchesAreRedWhenColouredByLight() {
+        // The lateral 3 -> 4 falls below a threshold of 0.6 (light per internode 0.5): flagged.
+        skel::Skeleton s = fiveNodes();
+        s.shedThreshold = 0.6f;
+        s.flags[3] |= skel::kStarved;
+        s.flags[4] |= skel::kStarved;
+        mesh::Mesh m;
+        m.positions.resize(3);
+        m.node = {2, 4, 3};
+        const std::vector<glm::vec3> light = attributeColors(m, s, ColorBy::Light);
+        QCOMPARE(light[0], rampColor(1.0f));
+        QCOMPARE(light[1], kStarvedColor);
+        QCOMPARE(light[2], kStarvedColor);
+        // Other modes keep the ramp for the same nodes.
+        QCOMPARE(attributeColors(m, s, ColorBy::Age)[1], rampColor(0.0f));
+        const QString legend = attributeLegend(s, ColorBy::Light);
+        QVERIFY2(legend.contains(QStringLiteral("red: 2 internodes")), qPrintable(legend));
+        QVERIFY2(legend.contains(QStringLiteral("0.6")), qPrintable(legend));
+        QCOMPARE(colorByAttribute(m, s, ColorBy::Light).legend, legend);
+        // A threshold with nothing below it says so; no threshold, no mention.
+        s.flags[3] = s.flags[4] = 0;
+        QVERIFY(attributeLegend(s, ColorBy::Light).contains(QStringLiteral("no branch")));
+        s.shedThreshold = 0.0f;
+        QVERIFY(!attributeLegend(s, ColorBy::Light).contains(QStringLiteral("threshold")));
+    }
+
     void legendNamesTheRange() {
         const skel::Skeleton s = fiveNodes();
         QVERIFY(attributeLegend(s, ColorBy::Age).contains(QStringLiteral("4")));

@@ -315,7 +315,10 @@ private Q_SLOTS:
         viewport->frameScene();
         const QImage light = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
         QVERIFY(light.save(outputPath(QStringLiteral("ui_colour_by_light.png"))));
-        qint64 blue = 0, yellow = 0, material = 0;
+        auto isRed = [](QRgb c) {
+            return qRed(c) > 2 * qGreen(c) + 40 && qRed(c) > 2 * qBlue(c) + 40;
+        };
+        qint64 blue = 0, yellow = 0, material = 0, red = 0;
         for (int y = 0; y < light.height(); ++y)
             for (int x = 0; x < light.width(); ++x) {
                 const QRgb c = light.pixel(x, y);
@@ -323,11 +326,24 @@ private Q_SLOTS:
                 blue += b > r + 25 && b > g && b < 170; // the ramp's dark end, not the sky
                 yellow += r > b + 60 && g > b + 60;
                 material += isBark(c);
+                red += isRed(c);
             }
-        qInfo("colour by light: %lld dark blue, %lld yellow, %lld bark pixels", blue, yellow,
-              material);
+        qInfo("colour by light: %lld dark blue, %lld yellow, %lld red, %lld bark pixels", blue,
+              yellow, red, material);
         QVERIFY2(blue > 200, "no shaded (low light) branches on the ramp's dark end");
         QVERIFY2(yellow > 200, "no lit twigs on the ramp's bright end");
+        // The branches the next cycle would shed are red (the ramp has no red; the grid's red
+        // axis is in both pictures), and the legend says how many and below which threshold.
+        const QString legend = mWindow->statusBar()->currentMessage();
+        QVERIFY2(legend.contains(QStringLiteral("shed at the next cycle")), qPrintable(legend));
+        mWindow->setColorBy(ColorBy::Age);
+        const QImage age = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        qint64 redOutsideLight = 0;
+        for (int y = 0; y < age.height(); ++y)
+            for (int x = 0; x < age.width(); ++x)
+                redOutsideLight += isRed(age.pixel(x, y));
+        qInfo("red pixels: %lld coloured by light, %lld by age", red, redOutsideLight);
+        QVERIFY2(red > redOutsideLight + 300, "no starved branches drawn in red");
 
         mWindow->setColorBy(ColorBy::Material);
         QVERIFY(!viewport->usesVertexColors());

@@ -862,6 +862,22 @@ std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {
     gatherLight(mM.topology(), terminal, axillary, gathered, internodes);
     Vigour vig;
     allocate(gathered, terminal, axillary, vig);
+    // The branches the next cycle would shed, decided exactly as step() decides them (same
+    // light, same scan), so the editor can show which branches starve and why.
+    std::vector<std::uint8_t> starved(n, 0);
+    {
+        std::vector<double> keptGathered(n);
+        std::vector<std::int32_t> keptInternodes(n);
+        std::vector<ShedSums> scratch;
+        if (gatherLightAndMarkShed(mM.topology(), terminal, axillary, mShedThreshold, keptGathered,
+                                   keptInternodes, starved, scratch)) {
+            for (std::size_t i = 0; i < n; ++i)
+                starved[i] =
+                    (starved[i] & 1u) || (mM.parent[i] >= 0 && starved[sz(mM.parent[i])]) ? 1u : 0u;
+        } else {
+            std::fill(starved.begin(), starved.end(), std::uint8_t{0});
+        }
+    }
 
     std::vector<SelfOrganizingResult> out(mTrees.size());
     std::vector<std::int32_t> local(n, -1);
@@ -885,8 +901,9 @@ std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {
         } else {
             parentNode = local[sz(mM.parent[i])];
         }
-        local[i] =
-            r.skeleton.addNode(mM.end[i] - base, parentNode, radius, mM.order[i], mM.frame[i]);
+        local[i] = r.skeleton.addNode(mM.end[i] - base, parentNode, radius, mM.order[i],
+                                      mM.frame[i], starved[i] ? skel::kStarved : 0);
+        r.starved += starved[i];
         r.light.push_back(static_cast<float>(gathered[i]));
         r.vigour.push_back(static_cast<float>(vig.metamer[i]));
         const int age = mCycle - mM.born[i];
@@ -902,6 +919,7 @@ std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {
     }
     for (std::size_t t = 0; t < mTrees.size(); ++t) {
         out[t].shed = mShedTree[t];
+        out[t].skeleton.shedThreshold = static_cast<float>(mTrees[t].params.sheddingThreshold);
         out[t].skeleton.finalize();
         applyPipeModel(out[t].skeleton, static_cast<float>(mTrees[t].params.tipRadius),
                        static_cast<float>(mTrees[t].params.pipeExponent));

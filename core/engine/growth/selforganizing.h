@@ -105,6 +105,9 @@ struct SelfOrganizingResult {
     std::vector<std::uint16_t> age; ///< cycles since the node's metamer grew
     std::size_t internodes = 0;
     std::size_t shed = 0; ///< metamers this tree shed over the whole run
+    /// Metamers in branches whose light per internode is below the shedding threshold now:
+    /// the next cycle would shed them (their skeleton nodes carry skel::kStarved).
+    std::size_t starved = 0;
     int cycles = 0;
 };
 

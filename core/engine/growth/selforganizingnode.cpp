@@ -142,6 +142,7 @@ void registerSelfOrganizingNode(graph::NodeRegistry& registry) {
         out.stats["internodes"] = static_cast<double>(r.internodes);
         out.stats["cycles"] = r.cycles;
         out.stats["shed"] = static_cast<double>(r.shed);
+        out.stats["starved"] = static_cast<double>(r.starved);
         out.stats["nodes"] = static_cast<double>(r.skeleton.size());
         out.stats["segments"] = static_cast<double>(r.skeleton.segmentCount());
         out.stats["leaves"] = static_cast<double>(r.skeleton.leaves.size());

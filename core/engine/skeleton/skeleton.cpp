@@ -26,6 +26,7 @@ void Skeleton::clear() {
     light.clear();
     vigour.clear();
     age.clear();
+    shedThreshold = 0.0f;
 }
 
 std::int32_t Skeleton::addNode(const glm::vec3& pos, std::int32_t parentIndex, float r,

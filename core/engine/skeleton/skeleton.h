@@ -13,6 +13,9 @@ enum NodeFlag : std::uint8_t {
     kHidden = 1 << 0, ///< pruned by adaptation; kept so re-adapting and undo can restore it
     kTip = 1 << 1,    ///< no child continues this axis (set by finalize())
     kFork = 1 << 2,   ///< more than one child (set by finalize())
+    /// Self-organizing growth: in a lateral branch whose light per internode is below its
+    /// tree's shedding threshold (Skeleton::shedThreshold), so the next cycle would shed it.
+    kStarved = 1 << 3,
 };
 
 /// The turtle frame convention, used everywhere a rest orientation is stored: the quaternion
@@ -54,6 +57,9 @@ struct Skeleton {
     std::vector<float> light;
     std::vector<float> vigour;
     std::vector<std::uint16_t> age;
+    /// Light per internode below which a lateral branch is shed (self-organizing trees; 0 when
+    /// the generator sheds nothing). Nodes below it now carry kStarved.
+    float shedThreshold = 0.0f;
 
     std::size_t size() const { return position.size(); }
     bool empty() const { return position.empty(); }

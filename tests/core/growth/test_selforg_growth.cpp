@@ -175,6 +175,41 @@ TEST(SelfOrgGrowth, SheddingRemovesExactlyTheDimSubtrees) {
     EXPECT_GT(shedSeen, 0u);
 }
 
+TEST(SelfOrgGrowth, StarvedNodesAreExactlyWhatTheNextCycleSheds) {
+    // results() flags (skel::kStarved) the branches below the shedding threshold; stepping on
+    // must shed exactly those metamers and keep the others, in order.
+    SelfOrganizingParams p = small(SoEnvironment::ShadowPropagation);
+    p.sheddingThreshold = 0.3;
+    SelfOrganizingSimulation sim({{glm::vec3(0), p, 4}}, {});
+    std::size_t starvedSeen = 0;
+    sim.step();
+    while (!sim.done()) {
+        const MetamerArrays before = sim.metamers();
+        const SelfOrganizingResult r = sim.results()[0];
+        const skel::Skeleton& s = r.skeleton;
+        EXPECT_EQ(s.shedThreshold, 0.3f);
+        ASSERT_EQ(s.size(), before.size() + 1); // the root node, then one node per metamer
+        EXPECT_EQ(s.flags[0] & skel::kStarved, 0);
+        std::size_t flagged = 0;
+        for (std::size_t i = 0; i < before.size(); ++i) {
+            ASSERT_EQ(s.position[i + 1], before.end[i]);
+            flagged += (s.flags[i + 1] & skel::kStarved) ? 1 : 0;
+        }
+        EXPECT_EQ(r.starved, flagged);
+        const std::size_t shedBefore = sim.shedCount();
+        sim.step();
+        ASSERT_EQ(sim.shedCount() - shedBefore, flagged) << "cycle " << sim.cycle();
+        std::size_t k = 0;
+        for (std::size_t i = 0; i < before.size(); ++i) {
+            if (s.flags[i + 1] & skel::kStarved) continue;
+            ASSERT_EQ(sim.metamers().end[k], before.end[i]) << "metamer " << i;
+            ++k;
+        }
+        starvedSeen += flagged;
+    }
+    EXPECT_GT(starvedSeen, 0u);
+}
+
 TEST(SelfOrgGrowth, LeansAwayFromATallObstacle) {
     for (SoEnvironment env : {SoEnvironment::ShadowPropagation, SoEnvironment::SpaceColonization}) {
         SelfOrganizingParams p = small(env);
