@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds Release and opens the editor on the demo.
+# Installs what is missing, builds Release and opens the editor on the demo project (its forest
+# with the wall and the boulder it grows around).
 # With --headless (or without a display) it generates the demo with sylva-cli instead and
 # prints where the files went.
 set -euo pipefail
@@ -20,6 +21,7 @@ cmake --build --preset release -j "$(nproc)"
 
 BIN=build/release/app
 DEMO_SPECIES=presets/ternary-tree.json
+DEMO_PROJECT=resources/demo/forest.sylva
 if [[ $headless == 1 ]]; then
   out=out/demo
   mkdir -p "$out"
@@ -34,5 +36,5 @@ if [[ $headless == 1 ]]; then
   echo "biomass and CO2 of the demo forest: $out/forest.carbon.txt"
   echo "Demo files are in $(pwd)/$out (materials in *.mtl, textures in $out/textures)"
 else
-  exec "$BIN/editor/sylva" "$DEMO_SPECIES"
+  exec "$BIN/editor/sylva" "$DEMO_PROJECT"
 fi

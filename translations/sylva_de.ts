@@ -54,6 +54,17 @@
         <source>%1: unexpected error: %2</source>
         <translation>%1: Unerwarteter Fehler: %2</translation>
     </message>
+    <message numerus="yes">
+        <source>%1 (%n trees)</source>
+        <translation>
+            <numerusform>%1 (%n Baum)</numerusform>
+            <numerusform>%1 (%n Bäume)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: the project has no trees and no obstacles</source>
+        <translation>%1: Das Projekt hat weder Bäume noch Hindernisse</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -62,20 +73,12 @@
         <translation>Sylva, der prozedurale Baumeditor.</translation>
     </message>
     <message>
-        <source>Species file to open (default: the ternary tree).</source>
-        <translation>Zu öffnende Artdatei (Standard: der ternäre Baum).</translation>
-    </message>
-    <message>
         <source>Render the viewport to &lt;file&gt; (PNG) and exit.</source>
         <translation>Die Ansicht als &lt;file&gt; (PNG) speichern und beenden.</translation>
     </message>
     <message>
         <source>Viewport size in pixels, e.g. 1024x768.</source>
         <translation>Größe der Ansicht in Pixeln, z. B. 1024x768.</translation>
-    </message>
-    <message>
-        <source>expected at most one species file</source>
-        <translation>höchstens eine Artdatei erwartet</translation>
     </message>
     <message>
         <source>--size expects WxH between 16 and 8192, got &apos;%1&apos;</source>
@@ -88,6 +91,14 @@
     <message>
         <source>--color-by expects material, light, vigour, age or order, got &apos;%1&apos;</source>
         <translation>--color-by erwartet material, light, vigour, age oder order, erhalten: &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>Species or project (.sylva) to open (default: the ternary tree).</source>
+        <translation>Zu öffnende Art oder Projekt (.sylva) (Standard: der ternäre Baum).</translation>
+    </message>
+    <message>
+        <source>expected at most one species or project file</source>
+        <translation>höchstens eine Art- oder Projektdatei erwartet</translation>
     </message>
 </context>
 <context>
@@ -107,10 +118,6 @@
     <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
-    </message>
-    <message>
-        <source>&amp;Open species…</source>
-        <translation>Art &amp;öffnen…</translation>
     </message>
     <message>
         <source>&amp;Reload</source>
@@ -185,14 +192,6 @@
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <source>Open species</source>
-        <translation>Art öffnen</translation>
-    </message>
-    <message>
-        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
-        <translation>Arten und Grammatiken (*.json *.lsys *.txt);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>Save screenshot</source>
         <translation>Bildschirmfoto speichern</translation>
     </message>
@@ -223,6 +222,22 @@
     <message>
         <source>Branch &amp;order</source>
         <translation>Ast&amp;ordnung</translation>
+    </message>
+    <message>
+        <source>&amp;Open species or project…</source>
+        <translation>Art oder Projekt &amp;öffnen…</translation>
+    </message>
+    <message>
+        <source>Colouring by node attributes needs a single tree: the forest is shown in its materials</source>
+        <translation>Das Einfärben nach Knotenattributen braucht einen einzelnen Baum: Der Wald wird in seinen Materialien gezeigt</translation>
+    </message>
+    <message>
+        <source>Open species or project</source>
+        <translation>Art oder Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
+        <translation>Arten, Grammatiken und Projekte (*.json *.lsys *.txt *.sylva);;Projekte (*.sylva);;Alle Dateien (*)</translation>
     </message>
 </context>
 <context>
@@ -270,6 +285,10 @@
     <message>
         <source>Generating %1…</source>
         <translation>Erzeuge %1…</translation>
+    </message>
+    <message>
+        <source>Trees:</source>
+        <translation>Bäume:</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,7 @@
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "ui/presetlibrary.h"
+#include "ui/scenegenerator.h"
 #include "ui/statspanel.h"
 #include "ui/viewport.h"
 
@@ -96,7 +97,8 @@ MainWindow::~MainWindow() {
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->setObjectName(QStringLiteral("fileMenu"));
-    QAction* open = file->addAction(tr("&Open species…"), this, &MainWindow::showOpenDialog);
+    QAction* open =
+        file->addAction(tr("&Open species or project…"), this, &MainWindow::showOpenDialog);
     open->setShortcut(QKeySequence::Open);
     mReloadAction = file->addAction(tr("&Reload"), this, &MainWindow::reload);
     mReloadAction->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(tr("Ctrl+R"))});
@@ -157,10 +159,20 @@ void MainWindow::setColorBy(ColorBy mode) {
 void MainWindow::applyColoring() {
     const skel::Skeleton* skeleton = mResult.skeleton.get();
     // Attributes this tree has; the others are greyed out.
-    for (QAction* action : mColorGroup->actions())
-        action->setEnabled(!skeleton ||
-                           hasAttribute(*skeleton, static_cast<ColorBy>(action->data().toInt())));
-    if (!mResult.mesh || !skeleton) return;
+    // A project's forest has no one skeleton: materials only.
+    for (QAction* action : mColorGroup->actions()) {
+        const auto mode = static_cast<ColorBy>(action->data().toInt());
+        action->setEnabled(mode == ColorBy::Material ||
+                           (skeleton && hasAttribute(*skeleton, mode)) || !mResult.mesh);
+    }
+    if (!mResult.mesh) return;
+    if (!skeleton) {
+        mViewport->setVertexColors({});
+        if (mColorBy != ColorBy::Material)
+            statusBar()->showMessage(tr("Colouring by node attributes needs a single tree: the "
+                                        "forest is shown in its materials"));
+        return;
+    }
     AttributeColoring coloring = colorByAttribute(*mResult.mesh, *skeleton, mColorBy);
     mViewport->setVertexColors(std::move(coloring.colors));
     // The legend names the ramp's range, or says that this tree lacks the attribute.
@@ -202,7 +214,7 @@ void MainWindow::openSpecies(const QString& path) {
     mBusy->setVisible(true);
     mWatcher.setFuture(QtConcurrent::run([path](QPromise<GenerationResult>& promise) {
         PromiseProgress progress(promise);
-        promise.addResult(generateTree(path, progress));
+        promise.addResult(generate(path, progress)); // a species, or a project's forest
     }));
 }
 
@@ -242,6 +254,10 @@ void MainWindow::onGenerationFinished() {
         tr("Generated %1 in %2 ms").arg(mResult.speciesName).arg(mResult.elapsedMs, 0, 'f', 1),
         10000);
     applyColoring();
+    if (!mResult.warning.isEmpty()) {
+        mStats->showWarning(mResult.warning);
+        statusBar()->showMessage(mResult.warning.section(QLatin1Char('\n'), 0, 0));
+    }
     if (!mViewport->glError().isEmpty()) statusBar()->showMessage(mViewport->glError());
     mGlLabel->setText(mViewport->glInfo());
     Q_EMIT generationFinished(true);
@@ -273,8 +289,9 @@ void MainWindow::showOpenDialog() {
     QString dir = mCurrentPath.isEmpty() ? PresetLibrary::directory()
                                          : QFileInfo(mCurrentPath).absolutePath();
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open species"), dir,
-        tr("Species and grammars (*.json *.lsys *.txt);;All files (*)"));
+        this, tr("Open species or project"), dir,
+        tr("Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;"
+           "All files (*)"));
     if (!path.isEmpty()) openSpecies(path);
 }
 

@@ -33,8 +33,10 @@ public:
     StatsPanel* statsPanel() const { return mStats; }
     QMenu* presetsMenu() const { return mPresetsMenu; }
 
-    /// Starts generating the species file at \p path; generationFinished() tells when it is
-    /// done. Errors never throw: they go to the status bar and the stats dock.
+    /// Starts generating the species file at \p path, or a project's whole forest with its
+    /// obstacles (isProjectFile(): `.sylva`, built as `sylva-cli forest` builds it);
+    /// generationFinished() tells when it is done. Errors never throw: they go to the status bar
+    /// and the stats dock, and the last good tree stays.
     void openSpecies(const QString& path);
     /// Opens PresetLibrary::defaultPreset(); false (with a message) when there is none.
     bool openDefaultPreset();

@@ -30,6 +30,7 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     mSpecies = add(tr("Species:"), QStringLiteral("statSpecies"));
     mSpecies->setWordWrap(true);
     mFile = add(tr("File:"), QStringLiteral("statFile"));
+    mTrees = add(tr("Trees:"), QStringLiteral("statTrees"));
     mVertices = add(tr("Vertices:"), QStringLiteral("statVertices"));
     mTriangles = add(tr("Triangles:"), QStringLiteral("statTriangles"));
     mSegments = add(tr("Segments:"), QStringLiteral("statSegments"));
@@ -51,11 +52,16 @@ void StatsPanel::showResult(const GenerationResult& result) {
     mFile->setToolTip(result.path);
     mVertices->setText(QString::number(result.mesh ? result.mesh->vertexCount() : 0));
     mTriangles->setText(QString::number(result.mesh ? result.mesh->triangleCount() : 0));
-    mSegments->setText(QString::number(qlonglong(result.segments())));
+    // A project's forest: how many trees; its segments and leaves are not counted.
+    const auto trees = result.stats.find("trees");
+    const bool forest = trees != result.stats.end();
+    mTrees->setText(QString::number(forest ? qlonglong(trees->second) : 1));
+    mSegments->setText(forest ? QStringLiteral("–")
+                              : QString::number(qlonglong(result.segments())));
     qlonglong leaves = result.skeleton ? qlonglong(result.skeleton->leaves.size()) : 0;
     if (auto it = result.stats.find("leaves"); it != result.stats.end())
         leaves = qlonglong(it->second);
-    mLeaves->setText(QString::number(leaves));
+    mLeaves->setText(forest ? QStringLiteral("–") : QString::number(leaves));
     mHeight->setText(tr("%1 m").arg(locale.toString(result.height(), 'f', 2)));
     mTime->setText(tr("%1 ms").arg(locale.toString(result.elapsedMs, 'f', 1)));
     mStatus->clear();
@@ -69,6 +75,11 @@ void StatsPanel::showGenerating(const QString& name) {
 
 void StatsPanel::showError(const QString& message) {
     mStatus->setStyleSheet(QStringLiteral("color: #b00020;"));
+    mStatus->setText(message);
+}
+
+void StatsPanel::showWarning(const QString& message) {
+    mStatus->setStyleSheet(QStringLiteral("color: #8a5a00;"));
     mStatus->setText(message);
 }
 

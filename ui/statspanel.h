@@ -8,8 +8,8 @@ namespace sylva::ui {
 
 struct GenerationResult;
 
-/// The "Tree" dock: species name and statistics of the generated tree. Each value label has an
-/// object name ("statVertices", ...) so that tests and style sheets can find it.
+/// The "Tree" dock: species (or project) name and statistics of the generated tree or forest. Each
+/// value label has an object name ("statVertices", ...) so that tests and style sheets can find it.
 class StatsPanel : public QWidget {
     Q_OBJECT
 
@@ -22,6 +22,8 @@ public:
     void showGenerating(const QString& name);
     /// Shows an error under the last good statistics.
     void showError(const QString& message);
+    /// Shows a warning of the last load (e.g. a project from a newer Sylva) under the statistics.
+    void showWarning(const QString& message);
 
     /// The text of a value label by object name (for tests); empty if there is none.
     QString value(const QString& objectName) const;
@@ -29,6 +31,7 @@ public:
 private:
     QLabel* mSpecies = nullptr;
     QLabel* mFile = nullptr;
+    QLabel* mTrees = nullptr;
     QLabel* mVertices = nullptr;
     QLabel* mTriangles = nullptr;
     QLabel* mSegments = nullptr;

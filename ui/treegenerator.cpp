@@ -47,13 +47,7 @@ double GenerationResult::segments() const {
 }
 
 GenerationResult generateTree(const QString& path, Progress& progress) {
-    GenerationResult result;
-    result.path = path;
-    result.speciesName = QFileInfo(path).completeBaseName();
-    QElapsedTimer timer;
-    timer.start();
-    try {
-        graph::registerBuiltinNodeTypes();
+    return runGuarded(path, [&](GenerationResult& result) {
         graph::SpeciesGraph species = doc::loadSpecies(path);
         if (!species.name.empty()) result.speciesName = QString::fromStdString(species.name);
         // The viewport can colour the tree by node attributes: ask the mesher which node each
@@ -70,6 +64,19 @@ GenerationResult generateTree(const QString& path, Progress& progress) {
         if (!result.mesh || result.mesh->empty())
             result.error = QObject::tr("%1: the species' output node produced no mesh")
                                .arg(QFileInfo(path).fileName());
+    });
+}
+
+GenerationResult runGuarded(const QString& path,
+                            const std::function<void(GenerationResult&)>& body) {
+    GenerationResult result;
+    result.path = path;
+    result.speciesName = QFileInfo(path).completeBaseName();
+    QElapsedTimer timer;
+    timer.start();
+    try {
+        graph::registerBuiltinNodeTypes();
+        body(result);
     } catch (const Cancelled&) {
         result.cancelled = true;
     } catch (const InvalidInput& e) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -28,6 +29,7 @@ struct GenerationResult {
     std::map<std::string, double> timingsMs; ///< per stage, from the graph's output node
     double elapsedMs = 0.0;                  ///< load + evaluate, wall clock
     QString error;                           ///< user-facing message; empty on success
+    QString warning; ///< loaded with a warning (e.g. a project from a newer Sylva); may be empty
     bool cancelled = false;
 
     bool ok() const { return error.isEmpty() && !cancelled && mesh != nullptr; }
@@ -41,5 +43,13 @@ struct GenerationResult {
 /// any thread and never throws: this is the action boundary where engine exceptions
 /// (InvalidInput, IoError, LimitExceeded, Cancelled) become a message in the result.
 GenerationResult generateTree(const QString& path, Progress& progress = noProgress());
+
+/// A generation of the file at \p path: a result with its path and its base name as the
+/// species name, the node types registered, then \p body fills it. The engine's exceptions
+/// (InvalidInput with its diagnostics, IoError, LimitExceeded, Cancelled, out of memory, anything
+/// else) become the result's error or cancelled flag, so none leaves a generation; elapsedMs is
+/// the time \p body took.
+GenerationResult runGuarded(const QString& path,
+                            const std::function<void(GenerationResult&)>& body);
 
 } // namespace sylva::ui

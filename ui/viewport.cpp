@@ -154,7 +154,8 @@ glm::vec3 Viewport::materialColor(const std::string& material) {
     if (material == "leaf" || material == "leaves" || material == "foliage")
         return {0.11f, 0.30f, 0.06f};
     if (material == "bark" || material.empty()) return {0.17f, 0.10f, 0.055f};
-    return {0.35f, 0.35f, 0.35f};
+    if (material == "ground") return {0.10f, 0.09f, 0.05f}; // a project's terrain
+    return {0.35f, 0.35f, 0.35f};                           // obstacles and anything else
 }
 
 void Viewport::installDefaultSurfaceFormat() {

@@ -2,8 +2,6 @@
 
 #include "engine/util/error.h"
 
-#include <QFile>
-
 #include <charconv>
 #include <cstdio>
 
@@ -20,13 +18,8 @@ void appendJsonNumber(std::string& out, const char* key, double value, bool comm
 }
 
 doc::Project loadProjectOrScene(const std::string& path) {
-    QFile file(QString::fromStdString(path));
-    if (!file.open(QIODevice::ReadOnly)) throw IoError("cannot read " + path);
-    const QByteArray bytes = file.readAll();
-    if (!bytes.contains("\"format\"") && bytes.contains("\"plants\""))
-        return doc::importReferenceScene(QString::fromStdString(path));
     doc::LoadReport report;
-    doc::Project project = doc::parseProject(bytes, QString::fromStdString(path), &report);
+    doc::Project project = doc::loadProjectOrScene(QString::fromStdString(path), &report);
     for (const std::string& w : report.warnings)
         std::fprintf(stderr, "sylva-cli: warning: %s\n", w.c_str());
     return project;

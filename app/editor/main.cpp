@@ -1,6 +1,7 @@
-// sylva: the editor. `sylva [species.json]` opens the main window on a species (default: the
-// ternary tree preset); `sylva --screenshot out.png [--size WxH] [species.json]` renders the
-// viewport to a PNG and exits (needs an X server; use xvfb-run on a headless machine);
+// sylva: the editor. `sylva [species.json|project.sylva]` opens the main window on a species
+// (default: the ternary tree preset) or a project's forest; `sylva --screenshot out.png [--size
+// WxH] [species.json]` renders the viewport to a PNG and exits (needs an X server; use xvfb-run on
+// a headless machine);
 // `--color-by light|vigour|age|order` colours the tree by a node attribute (View ▸ Colour by).
 
 #include <cstdio>
@@ -83,8 +84,9 @@ int main(int argc, char* argv[]) {
     parser.addVersionOption();
     parser.addPositionalArgument(
         QStringLiteral("species"),
-        QApplication::translate("main", "Species file to open (default: the ternary tree)."),
-        QStringLiteral("[species.json]"));
+        QApplication::translate("main",
+                                "Species or project (.sylva) to open (default: the ternary tree)."),
+        QStringLiteral("[species.json|project.sylva]"));
     const QCommandLineOption screenshotOption(
         QStringLiteral("screenshot"),
         QApplication::translate("main", "Render the viewport to <file> (PNG) and exit."),
@@ -105,7 +107,7 @@ int main(int argc, char* argv[]) {
 
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1) {
-        fail(QApplication::translate("main", "expected at most one species file"));
+        fail(QApplication::translate("main", "expected at most one species or project file"));
         return 2;
     }
     const bool screenshotMode = parser.isSet(screenshotOption);

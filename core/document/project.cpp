@@ -209,6 +209,17 @@ Project loadProject(const QString& path, LoadReport* report) {
     return parseProject(file.readAll(), path, report);
 }
 
+Project loadProjectOrScene(const QString& path, LoadReport* report) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw IoError("cannot read " + path.toStdString() + ": " +
+                      file.errorString().toStdString());
+    const QByteArray bytes = file.readAll();
+    if (!bytes.contains("\"format\"") && bytes.contains("\"plants\""))
+        return importReferenceScene(path);
+    return parseProject(bytes, path, report);
+}
+
 QByteArray serializeProject(const Project& p) {
     Value::Object root = p.extra;
     root["format"] = "sylva-project";

@@ -95,6 +95,10 @@ void saveProject(const Project& project, const QString& path);
 ///  optional "domain": {"min": [x, z], "max": [x, z]}, "seed"}. Grammar files become species.
 Project importReferenceScene(const QString& path);
 
+/// A `.sylva` project (loadProject), or the reference implementation's scene description (it
+/// has "plants" and no "format"; importReferenceScene). What sylva-cli and the editor open.
+Project loadProjectOrScene(const QString& path, LoadReport* report = nullptr);
+
 /// The project format's upgrade steps (exposed for tests).
 const std::vector<UpgradeStep>& projectUpgrades();
 

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QFileInfo>
 #include <QImage>
 #include <QMenu>
 #include <QMenuBar>
@@ -284,6 +286,69 @@ private Q_SLOTS:
         QCOMPARE(titles.value(0), QStringLiteral("&Datei"));
         QCOMPARE(titles.value(1), QStringLiteral("&Vorlagen"));
         QCOMPARE(titles.value(2), QStringLiteral("&Ansicht"));
+    }
+
+    /// The bundled demo project (what ./run.sh opens): its whole forest with the wall and the
+    /// boulder, built as sylva-cli forest builds it; the dock counts the trees; colouring by node
+    /// attributes is off (a forest has no one skeleton). Then the default preset again.
+    void demoProjectShowsTheForestAndObstacles() {
+        const QString project =
+            QDir(PresetLibrary::directory()).filePath("../resources/demo/forest.sylva");
+        QVERIFY2(QFileInfo::exists(project), qPrintable(project));
+        QSignalSpy finished(mWindow.get(), &MainWindow::generationFinished);
+        mWindow->openSpecies(project);
+        QVERIFY(finished.wait(kGenerationTimeoutMs));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(mWindow->lastError()));
+        QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statTrees")), QStringLiteral("43"));
+        QVERIFY(mWindow->windowTitle().contains(QStringLiteral("forest (43 trees)")));
+        const sylva::mesh::Mesh& m = *mWindow->viewport()->mesh();
+        QStringList materials;
+        for (const sylva::mesh::Submesh& s : m.submeshes)
+            materials << QString::fromStdString(s.material);
+        QCOMPARE(materials.join(QLatin1Char(',')), QStringLiteral("bark,leaf,obstacle"));
+        QMenu* colours = mWindow->findChild<QMenu*>(QStringLiteral("colorMenu"));
+        QVERIFY(colours);
+        for (QAction* action : colours->actions())
+            QCOMPARE(action->isEnabled(), action == colours->actions().first());
+
+        Viewport* viewport = mWindow->viewport();
+        viewport->setGridVisible(false);
+        viewport->frameScene();
+        const QImage image = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        QVERIFY(image.save(outputPath(QStringLiteral("ui_demo_project.png"))));
+        // The same view without the obstacle submesh: the pixels that change are the wall and
+        // the boulder, drawn in the obstacle grey.
+        auto withoutObstacles = std::make_shared<sylva::mesh::Mesh>(m);
+        const sylva::mesh::Submesh last = withoutObstacles->submeshes.back();
+        withoutObstacles->submeshes.pop_back();
+        withoutObstacles->indices.resize(last.firstIndex);
+        const std::shared_ptr<const sylva::mesh::Mesh> full = viewport->mesh();
+        viewport->setGridVisible(false);
+        viewport->setMesh(withoutObstacles, false);
+        const QImage trees = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        viewport->setMesh(full, false);
+        viewport->setGridVisible(true);
+        qint64 changed = 0, grey = 0, tree = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QRgb c = image.pixel(x, y);
+                tree += isTree(c);
+                if (c == trees.pixel(x, y)) continue;
+                ++changed;
+                grey += std::abs(qRed(c) - qGreen(c)) < 10 && std::abs(qGreen(c) - qBlue(c)) < 10;
+            }
+        qInfo("demo project: %lld pixels changed by the obstacles, %lld of them grey; %lld tree "
+              "pixels",
+              changed, grey, tree);
+        QVERIFY2(changed > 500, "the wall and the boulder are not drawn");
+        QVERIFY2(grey > changed * 8 / 10, "the obstacles are not grey");
+        QVERIFY2(tree > 2000, "the trees are not drawn");
+
+        QSignalSpy again(mWindow.get(), &MainWindow::generationFinished);
+        QVERIFY(mWindow->openDefaultPreset());
+        QVERIFY(again.wait(kGenerationTimeoutMs));
+        QVERIFY(again.first().first().toBool());
+        QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statTrees")), QStringLiteral("1"));
     }
 
     /// View ▸ Colour by: an L-system tree offers only branch order; a self-organizing tree
