@@ -239,6 +239,37 @@
         <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
         <translation>Arten, Grammatiken und Projekte (*.json *.lsys *.txt *.sylva);;Projekte (*.sylva);;Alle Dateien (*)</translation>
     </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportieren…</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Nothing to export yet.</source>
+        <translation>Noch nichts zu exportieren.</translation>
+    </message>
+    <message>
+        <source>Could not export %1: %2</source>
+        <translation>Konnte %1 nicht exportieren: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n tree(s) to %1 (%2 files)</source>
+        <translation>
+            <numerusform>%n Baum nach %1 exportiert (%2 Dateien)</numerusform>
+            <numerusform>%n Bäume nach %1 exportiert (%2 Dateien)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx)</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

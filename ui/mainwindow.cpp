@@ -19,8 +19,10 @@
 #include <QStatusBar>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
+#include "engine/util/error.h"
 #include "ui/presetlibrary.h"
 #include "ui/scenegenerator.h"
 #include "ui/statspanel.h"
@@ -103,6 +105,9 @@ void MainWindow::createMenus() {
     mReloadAction = file->addAction(tr("&Reload"), this, &MainWindow::reload);
     mReloadAction->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(tr("Ctrl+R"))});
     mReloadAction->setEnabled(false);
+    mExportAction = file->addAction(tr("&Export…"), this, &MainWindow::showExportDialog);
+    mExportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
+    mExportAction->setEnabled(false);
     QAction* shot =
         file->addAction(tr("Save &screenshot…"), this, &MainWindow::showScreenshotDialog);
     shot->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
@@ -248,6 +253,7 @@ void MainWindow::onGenerationFinished() {
     mLastError.clear();
     mResult = std::move(result);
     mViewport->setMesh(mResult.mesh, true);
+    mExportAction->setEnabled(!mResult.exportTrees.empty());
     mStats->showResult(mResult);
     setWindowTitle(tr("%1 — Sylva").arg(mResult.speciesName));
     statusBar()->showMessage(
@@ -283,6 +289,55 @@ bool MainWindow::saveScreenshot(const QString& path) {
     }
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 10000);
     return true;
+}
+
+bool MainWindow::exportTo(const QString& path) {
+    if (mResult.exportTrees.empty()) {
+        reportError(tr("Nothing to export yet."));
+        return false;
+    }
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    QString error;
+    std::size_t files = 0;
+    try {
+        exporter::TreeExporter out(path.toStdString(), {false, mResult.compactObj});
+        out.add(mResult.exportTrees);
+        files = out.commit().size();
+    } catch (const InvalidInput& e) {
+        error = QString::fromStdString(e.what());
+    } catch (const IoError& e) {
+        error = QString::fromStdString(e.what());
+    } catch (const std::exception& e) {
+        error = tr("Could not export %1: %2")
+                    .arg(QDir::toNativeSeparators(path), QString::fromUtf8(e.what()));
+    }
+    QApplication::restoreOverrideCursor();
+    if (!error.isEmpty()) {
+        reportError(error);
+        return false;
+    }
+    statusBar()->showMessage(
+        tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(mResult.exportTrees.size()))
+            .arg(QDir::toNativeSeparators(path))
+            .arg(files),
+        10000);
+    return true;
+}
+
+void MainWindow::showExportDialog() {
+    const QString suggested = QFileInfo(mResult.path).completeBaseName() + QStringLiteral(".obj");
+    QString filter;
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Export"), suggested,
+        tr("Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)"),
+        &filter);
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) {
+        // No extension typed: the chosen filter's.
+        const qsizetype star = filter.indexOf(QStringLiteral("*."));
+        path += filter.mid(star + 1, filter.indexOf(QLatin1Char(')'), star) - star - 1);
+    }
+    exportTo(path);
 }
 
 void MainWindow::showOpenDialog() {

@@ -44,6 +44,11 @@ public:
     void reload();
     /// Saves the viewport's current image; false (with a message) on failure.
     bool saveScreenshot(const QString& path);
+    /// Exports what is shown (File ▸ Export…) by \p path's extension, exactly as `sylva-cli
+    /// tree` (a species) or `sylva-cli forest` (a project) writes it: `.obj` (+ `.mtl` and
+    /// textures), `.glb`, `.gltf` or `.fbx`. False, with a message, when there is nothing to
+    /// export or writing fails (nothing half-written is left at \p path).
+    bool exportTo(const QString& path);
 
     /// The species file shown (or being generated).
     QString currentPath() const { return mCurrentPath; }
@@ -68,6 +73,7 @@ private:
     void onGenerationFinished();
     void showOpenDialog();
     void showScreenshotDialog();
+    void showExportDialog();
     void reportError(const QString& message);
     void applyColoring();
 
@@ -77,6 +83,7 @@ private:
     QMenu* mPresetsMenu = nullptr;
     QActionGroup* mPresetGroup = nullptr;
     QAction* mReloadAction = nullptr;
+    QAction* mExportAction = nullptr;
     QActionGroup* mColorGroup = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;

@@ -112,8 +112,12 @@ GenerationResult generateScene(const QString& path, Progress& progress) {
         const scene::ForestStats stats = scene::buildForest(
             forest, scene::ForestOptions{},
             [&](const std::vector<scene::ForestTree>& batch) {
-                for (const scene::ForestTree& tree : batch)
+                for (const scene::ForestTree& tree : batch) {
                     if (tree.mesh) merged.addTree(*tree.mesh, tree.instance.transform());
+                    result.exportTrees.push_back({tree.name, tree.mesh, tree.instance.position,
+                                                  tree.instance.rotation,
+                                                  tree.instance.scale * tree.instance.growth});
+                }
             },
             progress);
         if (forest.obstacles)
@@ -123,6 +127,7 @@ GenerationResult generateScene(const QString& path, Progress& progress) {
             for (const env::ObstacleMesh& m : forest.ground->meshes())
                 merged.addSurface(m, true);
         result.mesh = std::make_shared<const mesh::Mesh>(merged.finish());
+        result.compactObj = true; // sylva-cli forest's default
         result.stats["trees"] = static_cast<double>(stats.trees);
         result.stats["segments"] = 0.0;
         result.stats["obstacle_triangles"] =

@@ -61,6 +61,8 @@ GenerationResult generateTree(const QString& path, Progress& progress) {
         result.skeleton = output.skeleton;
         result.stats = output.stats;
         result.timingsMs = output.timingsMs;
+        result.exportTrees = {
+            exporter::ExportTree{exporter::objectNameFor(evaluator.graph().name), output.mesh}};
         if (!result.mesh || result.mesh->empty())
             result.error = QObject::tr("%1: the species' output node produced no mesh")
                                .arg(QFileInfo(path).fileName());

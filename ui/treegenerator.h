@@ -4,9 +4,11 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <QString>
 
+#include "engine/export/treeexport.h"
 #include "engine/util/progress.h"
 
 namespace sylva::mesh {
@@ -30,6 +32,10 @@ struct GenerationResult {
     double elapsedMs = 0.0;                  ///< load + evaluate, wall clock
     QString error;                           ///< user-facing message; empty on success
     QString warning; ///< loaded with a warning (e.g. a project from a newer Sylva); may be empty
+    /// What File ▸ Export writes: the species' tree at the origin, or every tree of a project
+    /// placed as sylva-cli forest places it (objects named as the CLI names them).
+    std::vector<exporter::ExportTree> exportTrees;
+    bool compactObj = false; ///< OBJ precision: compact for forests, full for one tree (as the CLI)
     bool cancelled = false;
 
     bool ok() const { return error.isEmpty() && !cancelled && mesh != nullptr; }

@@ -2,10 +2,10 @@
 #include "clishared.h"
 #include "commands.h"
 #include "terminalprogress.h"
-#include "treeexport.h"
 
 #include "document/project.h"
 #include "document/scenebuild.h"
+#include "engine/export/treeexport.h"
 #include "engine/forest/placement.h"
 #include "engine/scene/forestbuild.h"
 #include "engine/util/error.h"
@@ -17,6 +17,9 @@
 #include <omp.h>
 
 namespace sylva::cli {
+
+using exporter::ExportTree;
+using exporter::TreeExporter;
 
 namespace {
 

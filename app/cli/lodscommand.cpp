@@ -1,9 +1,9 @@
 #include "cliargs.h"
 #include "commands.h"
-#include "treeexport.h"
 
 #include "document/speciesfile.h"
 #include "engine/export/lodexport.h"
+#include "engine/export/treeexport.h"
 #include "engine/mesh/meshnodes.h"
 #include "engine/util/error.h"
 
@@ -12,6 +12,8 @@
 #include <cstdio>
 
 namespace sylva::cli {
+
+using exporter::resourcesDir;
 
 int runLods(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--seed"}, {"--json", "--no-glb", "--no-obj"});

@@ -1,19 +1,21 @@
 #include "cliargs.h"
 #include "clishared.h"
 #include "commands.h"
-#include "treeexport.h"
 
 #include "document/speciesfile.h"
+#include "engine/export/treeexport.h"
 #include "engine/graph/graph.h"
 #include "engine/util/error.h"
 
 #include <QString>
 
-#include <cctype>
 #include <chrono>
 #include <cstdio>
 
 namespace sylva::cli {
+
+using exporter::ExportTree;
+using exporter::TreeExporter;
 
 namespace {
 
@@ -27,13 +29,6 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
         throw UsageError("--set expects node.param=value, got '" + assignment + "'");
     evaluator.setParam(assignment.substr(0, dot), assignment.substr(dot + 1, eq - dot - 1),
                        graph::Value::parseLoose(assignment.substr(eq + 1)));
-}
-
-std::string objectName(const std::string& speciesName) {
-    std::string out;
-    for (char c : speciesName)
-        out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-') ? c : '_';
-    return out.empty() ? std::string("tree") : out;
 }
 
 } // namespace
@@ -77,7 +72,7 @@ int runTree(const std::vector<std::string>& argv) {
 
     const auto t0 = std::chrono::steady_clock::now();
     TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
-    exporter.add({ExportTree{objectName(evaluator.graph().name), result.mesh}});
+    exporter.add({ExportTree{exporter::objectNameFor(evaluator.graph().name), result.mesh}});
     exporter.commit();
     const double writeMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -8,13 +8,16 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMouseEvent>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTranslator>
 #include <QWheelEvent>
@@ -101,6 +104,48 @@ void drag(QWidget* widget, Qt::MouseButton button, QPoint from, QPoint delta) {
     sendMouse(widget, QEvent::MouseMove, from + delta / 2, Qt::NoButton, button);
     sendMouse(widget, QEvent::MouseMove, from + delta, Qt::NoButton, button);
     sendMouse(widget, QEvent::MouseButtonRelease, from + delta, button, Qt::NoButton);
+}
+
+/// Runs sylva-cli with \p args; true when it exits with 0.
+bool runCli(const QStringList& args) {
+    QProcess cli;
+    cli.start(QStringLiteral(SYLVA_CLI_PATH), args);
+    if (!cli.waitForFinished(kGenerationTimeoutMs)) return false;
+    if (cli.exitStatus() != QProcess::NormalExit || cli.exitCode() != 0) {
+        qWarning("sylva-cli %s: %s", qPrintable(args.join(QLatin1Char(' '))),
+                 cli.readAllStandardError().constData());
+        return false;
+    }
+    return true;
+}
+
+QByteArray readAll(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+/// The editor's File ▸ Export of what is open and sylva-cli \p command on \p source write the
+/// same bytes, for every extension in \p extensions (same file names in two folders: an OBJ
+/// names its MTL after itself).
+void exportEqualsCli(MainWindow& window, const QString& command, const QString& source,
+                     const QStringList& extensions) {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("editor")));
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("cli")));
+    for (const QString& ext : extensions) {
+        const QString name = QStringLiteral("export.") + ext;
+        const QString ours = dir.filePath(QStringLiteral("editor/") + name);
+        const QString theirs = dir.filePath(QStringLiteral("cli/") + name);
+        QVERIFY2(window.exportTo(ours), qPrintable(window.lastError()));
+        QVERIFY(runCli({command, source, QStringLiteral("-o"), theirs}));
+        const QByteArray a = readAll(ours), b = readAll(theirs);
+        QVERIFY2(a.size() > 1000, qPrintable(ours));
+        QVERIFY2(a == b, qPrintable(name + QStringLiteral(" differs from sylva-cli's")));
+        if (ext == QStringLiteral("obj"))
+            QCOMPARE(readAll(dir.filePath(QStringLiteral("editor/export.mtl"))),
+                     readAll(dir.filePath(QStringLiteral("cli/export.mtl"))));
+    }
 }
 
 bool near(float a, float b, float tolerance = 1e-4f) {
@@ -274,6 +319,19 @@ private Q_SLOTS:
         QVERIFY(!mWindow->saveScreenshot(QStringLiteral("/nonexistent-dir/shot.png")));
     }
 
+    /// File ▸ Export writes exactly what sylva-cli tree writes for the same species (OBJ + MTL
+    /// and GLB), and fails with a message on an unwritable path or an unknown extension.
+    void exportWritesWhatTheCliWrites() {
+        exportEqualsCli(*mWindow, QStringLiteral("tree"), PresetLibrary::defaultPreset(),
+                        {QStringLiteral("obj"), QStringLiteral("glb")});
+        QVERIFY(!mWindow->exportTo(QStringLiteral("/proc/no-such-dir/tree.obj")));
+        QVERIFY(!mWindow->lastError().isEmpty());
+        QVERIFY(!mWindow->exportTo(QDir::temp().filePath(QStringLiteral("tree.xyz"))));
+        QVERIFY2(mWindow->lastError().contains(QStringLiteral(".xyz")),
+                 qPrintable(mWindow->lastError()));
+        QVERIFY(!QFileInfo::exists(QDir::temp().filePath(QStringLiteral("tree.xyz"))));
+    }
+
     void germanTranslationLoads() {
         QTranslator translator;
         QVERIFY(translator.load(QStringLiteral(":/i18n/sylva_de.qm")));
@@ -343,6 +401,9 @@ private Q_SLOTS:
         QVERIFY2(changed > 500, "the wall and the boulder are not drawn");
         QVERIFY2(grey > changed * 8 / 10, "the obstacles are not grey");
         QVERIFY2(tree > 2000, "the trees are not drawn");
+
+        // File ▸ Export of the forest: the bytes sylva-cli forest writes for the project.
+        exportEqualsCli(*mWindow, QStringLiteral("forest"), project, {QStringLiteral("obj")});
 
         QSignalSpy again(mWindow.get(), &MainWindow::generationFinished);
         QVERIFY(mWindow->openDefaultPreset());

@@ -1,4 +1,4 @@
-#include "treeexport.h"
+#include "engine/export/treeexport.h"
 
 #include "engine/export/materials.h"
 #include "engine/util/atomicfile.h"
@@ -6,12 +6,20 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cctype>
 #include <cstdlib>
 #include <unistd.h>
 
-namespace sylva::cli {
+namespace sylva::exporter {
 
 namespace fs = std::filesystem;
+
+std::string objectNameFor(const std::string& speciesName) {
+    std::string out;
+    for (char c : speciesName)
+        out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-') ? c : '_';
+    return out.empty() ? std::string("tree") : out;
+}
 
 fs::path resourcesDir() {
     if (const char* env = std::getenv("SYLVA_RESOURCES_DIR"); env && *env) return env;
@@ -41,13 +49,12 @@ TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     mObj = ext == ".obj";
     if (mObj) {
-        exporter::ObjOptions options =
-            obj.compact ? exporter::ObjOptions::compact() : exporter::ObjOptions{};
+        ObjOptions options = obj.compact ? ObjOptions::compact() : ObjOptions{};
         options.mtllib = mPath.stem().string() + ".mtl";
         options.fsync = obj.fsync;
-        mObjWriter = std::make_unique<exporter::ObjStreamWriter>(mPath, options);
+        mObjWriter = std::make_unique<ObjStreamWriter>(mPath, options);
     } else {
-        (void)exporter::sceneFormatFor(mPath); // rejects unknown extensions before any work
+        (void)sceneFormatFor(mPath); // rejects unknown extensions before any work
     }
 }
 
@@ -55,7 +62,7 @@ TreeExporter::~TreeExporter() = default;
 
 void TreeExporter::add(const std::vector<ExportTree>& trees) {
     if (mObj) {
-        std::vector<exporter::ObjObject> objects;
+        std::vector<ObjObject> objects;
         objects.reserve(trees.size());
         for (const ExportTree& t : trees) {
             glm::mat4 m = glm::translate(glm::mat4(1.0f), t.position);
@@ -74,7 +81,7 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
                 mScene.meshes.push_back({t.name, t.mesh.get()});
             }
             const std::size_t meshIndex = it->second;
-            exporter::SceneInstance instance;
+            SceneInstance instance;
             instance.name = t.name;
             instance.mesh = meshIndex;
             instance.position = t.position;
@@ -90,24 +97,24 @@ std::vector<fs::path> TreeExporter::commit() {
     const fs::path dir = mPath.parent_path().empty() ? fs::path(".") : mPath.parent_path();
     if (mObj) {
         const fs::path mtl = dir / (mPath.stem().string() + ".mtl");
-        exporter::writeMtlFile(mtl, exporter::defaultMaterials());
+        writeMtlFile(mtl, defaultMaterials());
         mObjWriter->commit();
         written.push_back(mtl);
     } else {
-        exporter::writeScene(mPath, mScene, exporter::sceneFormatFor(mPath));
+        writeScene(mPath, mScene, sceneFormatFor(mPath));
     }
     if (const fs::path res = resourcesDir(); !res.empty())
-        if (exporter::copyTextures(exporter::defaultMaterials(), res / "textures", dir) > 0)
+        if (copyTextures(defaultMaterials(), res / "textures", dir) > 0)
             written.push_back(dir / "textures");
     if (mInstanceTables) {
         const fs::path json = dir / (mPath.stem().string() + ".instances.json");
         const fs::path csv = dir / (mPath.stem().string() + ".instances.csv");
-        writeFileAtomically(json, exporter::formatInstancesJson(mScene));
-        writeFileAtomically(csv, exporter::formatInstancesCsv(mScene));
+        writeFileAtomically(json, formatInstancesJson(mScene));
+        writeFileAtomically(csv, formatInstancesCsv(mScene));
         written.push_back(json);
         written.push_back(csv);
     }
     return written;
 }
 
-} // namespace sylva::cli
+} // namespace sylva::exporter

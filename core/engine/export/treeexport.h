@@ -13,7 +13,7 @@
 #include "engine/export/sceneexport.h"
 #include "engine/mesh/mesh.h"
 
-namespace sylva::cli {
+namespace sylva::exporter {
 
 /// One tree to export: its mesh in its own frame and where it stands.
 struct ExportTree {
@@ -30,7 +30,8 @@ struct ObjChoices {
     bool compact = false; ///< exporter::ObjOptions::compact()
 };
 
-/// Writes trees by the output's extension: `.obj` streams batch by batch (plus `<name>.mtl` and
+/// Writes trees by the output's extension (what `sylva-cli tree`/`forest` and the editor's
+/// File ▸ Export write): `.obj` streams batch by batch (plus `<name>.mtl` and
 /// the bark/leaf textures in `textures/` beside it); `.glb`, `.gltf` and `.fbx` go through
 /// Assimp with one node per tree. Nothing appears at the path before commit() succeeds.
 class TreeExporter {
@@ -49,14 +50,18 @@ private:
     std::filesystem::path mPath;
     bool mObj = true;
     bool mInstanceTables = false;
-    std::unique_ptr<exporter::ObjStreamWriter> mObjWriter;
+    std::unique_ptr<ObjStreamWriter> mObjWriter;
     std::vector<std::shared_ptr<const mesh::Mesh>> mKeepAlive;
     std::unordered_map<const mesh::Mesh*, std::size_t> mMeshIndex; ///< into mScene.meshes
-    exporter::SceneDesc mScene;
+    SceneDesc mScene;
 };
+
+/// \p speciesName as an object name for OBJ/glTF/FBX: letters, digits and '-' kept, anything
+/// else '_' ("tree" when empty), as `sylva-cli tree` and the editor name a species' object.
+std::string objectNameFor(const std::string& speciesName);
 
 /// Folder of Sylva's shipped resources (textures): $SYLVA_RESOURCES_DIR, the source tree next
 /// to the build folder, or the installed share/sylva/resources; empty when none is found.
 std::filesystem::path resourcesDir();
 
-} // namespace sylva::cli
+} // namespace sylva::exporter
