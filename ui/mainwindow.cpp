@@ -252,6 +252,10 @@ void MainWindow::onGenerationFinished() {
     }
     mLastError.clear();
     mResult = std::move(result);
+    if (mResult.hasCamera)
+        mViewport->setViewFrom(mResult.cameraEye, mResult.cameraTarget);
+    else
+        mViewport->clearViewFrom();
     mViewport->setMesh(mResult.mesh, true);
     mExportAction->setEnabled(!mResult.exportTrees.empty());
     mStats->showResult(mResult);

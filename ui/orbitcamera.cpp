@@ -24,6 +24,16 @@ void OrbitCamera::setPitch(float radians) {
     mPitch = std::clamp(radians, -kMaxPitch, kMaxPitch);
 }
 
+void OrbitCamera::lookFrom(const glm::vec3& eye, const glm::vec3& target) {
+    mTarget = target;
+    const glm::vec3 d = eye - target;
+    const float length = glm::length(d);
+    if (!(length > 0.0f)) return;
+    setYaw(std::atan2(d.x, d.z));
+    setPitch(std::asin(std::clamp(d.y / length, -1.0f, 1.0f)));
+    setDistance(length);
+}
+
 void OrbitCamera::setDistanceLimits(float minDistance, float maxDistance) {
     mMinDistance = std::max(minDistance, 1.0e-6f);
     mMaxDistance = std::max(maxDistance, mMinDistance);

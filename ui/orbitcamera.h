@@ -55,6 +55,11 @@ public:
     float nearPlane() const;
     float farPlane() const;
 
+    /// Looks from \p eye at \p target (a project's camera): target, yaw, pitch and distance
+    /// such that eye() == \p eye, unless the pitch or distance limits clamp it. An eye on the
+    /// target keeps the current angles.
+    void lookFrom(const glm::vec3& eye, const glm::vec3& target);
+
     /// Drag to orbit: dx/dy are mouse deltas in pixels (right/down positive). Dragging right
     /// turns the scene right (the eye moves left), dragging down tilts the eye upward.
     void orbit(float dxPixels, float dyPixels);

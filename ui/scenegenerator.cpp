@@ -128,6 +128,9 @@ GenerationResult generateScene(const QString& path, Progress& progress) {
                 merged.addSurface(m, true);
         result.mesh = std::make_shared<const mesh::Mesh>(merged.finish());
         result.compactObj = true; // sylva-cli forest's default
+        result.hasCamera = true;
+        result.cameraEye = project.cameraPosition;
+        result.cameraTarget = project.cameraTarget;
         result.stats["trees"] = static_cast<double>(stats.trees);
         result.stats["segments"] = 0.0;
         result.stats["obstacle_triangles"] =

@@ -8,6 +8,8 @@
 
 #include <QString>
 
+#include <glm/glm.hpp>
+
 #include "engine/export/treeexport.h"
 #include "engine/util/progress.h"
 
@@ -36,6 +38,9 @@ struct GenerationResult {
     /// placed as sylva-cli forest places it (objects named as the CLI names them).
     std::vector<exporter::ExportTree> exportTrees;
     bool compactObj = false; ///< OBJ precision: compact for forests, full for one tree (as the CLI)
+    /// A project's camera (its LOD reference), which the viewport starts from.
+    bool hasCamera = false;
+    glm::vec3 cameraEye{0.0f}, cameraTarget{0.0f};
     bool cancelled = false;
 
     bool ok() const { return error.isEmpty() && !cancelled && mesh != nullptr; }

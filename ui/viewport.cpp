@@ -223,6 +223,7 @@ void Viewport::setVertexColors(std::vector<glm::vec3> colors) {
 }
 
 void Viewport::frameScene() {
+    mViewFrom = false;
     applyFrame();
     update();
     Q_EMIT cameraChanged();
@@ -233,8 +234,15 @@ void Viewport::applyFrame() {
         mCamera.framePoints(mMesh->positions, aspect());
     else
         mCamera.frame(mBoundsLo, mBoundsHi, aspect());
+    if (mViewFrom) mCamera.lookFrom(mViewEye, mViewTarget);
     mAutoFramed = true;
     mGridExtent = 0.0f; // rebuilt for the new scene size at the next paint
+}
+
+void Viewport::setViewFrom(const glm::vec3& eye, const glm::vec3& target) {
+    mViewFrom = true;
+    mViewEye = eye;
+    mViewTarget = target;
 }
 
 void Viewport::setGridVisible(bool visible) {

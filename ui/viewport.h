@@ -53,7 +53,13 @@ public:
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
     /// Aims the camera at the mesh's bounds (or the unit box around the origin when empty).
+    /// Forgets a view set by setViewFrom().
     void frameScene();
+    /// Shows the next meshes from \p eye towards \p target (a project's camera) instead of
+    /// framing them; the zoom limits still follow the framed bounds. frameScene() (F) goes back
+    /// to framing.
+    void setViewFrom(const glm::vec3& eye, const glm::vec3& target);
+    void clearViewFrom() { mViewFrom = false; }
 
     void setGridVisible(bool visible);
     bool isGridVisible() const { return mGridVisible; }
@@ -103,6 +109,8 @@ private:
     OrbitCamera mCamera;
     bool mMeshDirty = false;
     bool mAutoFramed = true;
+    bool mViewFrom = false; ///< applyFrame() looks from mViewEye at mViewTarget
+    glm::vec3 mViewEye{0.0f}, mViewTarget{0.0f};
     bool mGridVisible = true;
 
     DragMode mDrag = DragMode::None;

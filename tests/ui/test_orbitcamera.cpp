@@ -56,6 +56,30 @@ private Q_SLOTS:
         QVERIFY(near(camera.eye(), {1.0f, 4.5f, 3.0f + 5.0f * std::sqrt(3.0f) / 2.0f}));
     }
 
+    void looksFromAProjectsCamera() {
+        OrbitCamera camera;
+        camera.setDistanceLimits(0.1f, 1000.0f);
+        // The demo project's camera: from (0, 25, 70) at (0, 5, 0).
+        camera.lookFrom({0.0f, 25.0f, 70.0f}, {0.0f, 5.0f, 0.0f});
+        QVERIFY(near(camera.eye(), {0.0f, 25.0f, 70.0f}));
+        QVERIFY(near(camera.target(), {0.0f, 5.0f, 0.0f}));
+        QVERIFY(near(camera.pitch(), std::atan2(20.0f, 70.0f)));
+        QVERIFY(near(camera.forward(), glm::normalize(glm::vec3(0.0f, -20.0f, -70.0f))));
+        // From -X, below the target, and from straight above (clamped short of the pole).
+        camera.lookFrom({-3.0f, -1.0f, 0.0f}, {1.0f, 2.0f, 0.0f});
+        QVERIFY(near(camera.eye(), {-3.0f, -1.0f, 0.0f}));
+        QVERIFY(near(camera.yaw(), -glm::half_pi<float>()));
+        camera.lookFrom({0.0f, 10.0f, 0.0f}, {0.0f, 0.0f, 0.0f});
+        QCOMPARE(camera.pitch(), OrbitCamera::kMaxPitch);
+        QVERIFY(near(camera.distance(), 10.0f));
+        // An eye on the target keeps the angles; the distance limits clamp a far eye.
+        const float yaw = camera.yaw();
+        camera.lookFrom({2.0f, 2.0f, 2.0f}, {2.0f, 2.0f, 2.0f});
+        QCOMPARE(camera.yaw(), yaw);
+        camera.lookFrom({0.0f, 0.0f, 5000.0f}, {0.0f, 0.0f, 0.0f});
+        QCOMPARE(camera.distance(), 1000.0f);
+    }
+
     void pitchIsClampedShortOfThePole() {
         OrbitCamera camera;
         camera.setPitch(glm::radians(120.0f));
