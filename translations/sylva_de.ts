@@ -270,6 +270,10 @@
         <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
         <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx)</translation>
     </message>
+    <message>
+        <source>Reload &amp;automatically</source>
+        <translation>&amp;Automatisch neu laden</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

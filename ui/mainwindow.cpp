@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFileSystemWatcher>
 #include <QImage>
 #include <QKeySequence>
 #include <QLabel>
@@ -17,6 +18,7 @@
 #include <QProgressBar>
 #include <QPromise>
 #include <QStatusBar>
+#include <QTimer>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include "engine/export/treeexport.h"
@@ -81,6 +83,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
     createMenus();
 
+    // Files of the shown tree: a change (or a save by rename, which shows as a change of the
+    // folder) starts a short timer, so that an editor's several writes make one reload.
+    mFileWatcher = new QFileSystemWatcher(this);
+    mReloadTimer = new QTimer(this);
+    mReloadTimer->setSingleShot(true);
+    mReloadTimer->setInterval(250);
+    connect(mFileWatcher, &QFileSystemWatcher::fileChanged, mReloadTimer,
+            qOverload<>(&QTimer::start));
+    connect(mFileWatcher, &QFileSystemWatcher::directoryChanged, mReloadTimer,
+            qOverload<>(&QTimer::start));
+    connect(mReloadTimer, &QTimer::timeout, this, &MainWindow::onSourcesTouched);
+
     connect(&mWatcher, &QFutureWatcher<GenerationResult>::finished, this,
             &MainWindow::onGenerationFinished);
     connect(&mWatcher, &QFutureWatcher<GenerationResult>::progressTextChanged, this,
@@ -105,6 +119,9 @@ void MainWindow::createMenus() {
     mReloadAction = file->addAction(tr("&Reload"), this, &MainWindow::reload);
     mReloadAction->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(tr("Ctrl+R"))});
     mReloadAction->setEnabled(false);
+    mAutoReloadAction = file->addAction(tr("Reload &automatically"));
+    mAutoReloadAction->setCheckable(true);
+    mAutoReloadAction->setChecked(true);
     mExportAction = file->addAction(tr("&Export…"), this, &MainWindow::showExportDialog);
     mExportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     mExportAction->setEnabled(false);
@@ -245,6 +262,7 @@ void MainWindow::onGenerationFinished() {
     GenerationResult result = future.result();
     mBusy->setVisible(false);
     if (result.cancelled) return;
+    watchSources(result.sources, result.sourceStamps);
     if (!result.ok()) {
         reportError(result.error);
         Q_EMIT generationFinished(false);
@@ -271,6 +289,56 @@ void MainWindow::onGenerationFinished() {
     if (!mViewport->glError().isEmpty()) statusBar()->showMessage(mViewport->glError());
     mGlLabel->setText(mViewport->glInfo());
     Q_EMIT generationFinished(true);
+}
+
+void MainWindow::setAutoReload(bool on) {
+    mAutoReloadAction->setChecked(on);
+}
+
+bool MainWindow::autoReload() const {
+    return mAutoReloadAction->isChecked();
+}
+
+void MainWindow::watchSources(const QStringList& sources, const QList<QDateTime>& stamps) {
+    if (!mFileWatcher->files().isEmpty()) mFileWatcher->removePaths(mFileWatcher->files());
+    if (!mFileWatcher->directories().isEmpty())
+        mFileWatcher->removePaths(mFileWatcher->directories());
+    mSources = sources;
+    mStamps.clear();
+    QStringList folders;
+    bool changedMeanwhile = false;
+    for (qsizetype i = 0; i < sources.size(); ++i) {
+        const QFileInfo info(sources[i]);
+        const QDateTime now = info.exists() ? info.lastModified() : QDateTime();
+        // The time the file had when it was read; a file changed since is reloaded at once.
+        const QDateTime read = i < stamps.size() ? stamps[i] : now;
+        mStamps[sources[i]] = read;
+        changedMeanwhile = changedMeanwhile || now != read;
+        if (info.exists()) mFileWatcher->addPath(sources[i]);
+        if (!folders.contains(info.absolutePath())) folders << info.absolutePath();
+    }
+    for (const QString& folder : folders)
+        if (QFileInfo(folder).isDir()) mFileWatcher->addPath(folder);
+    if (changedMeanwhile) mReloadTimer->start();
+}
+
+void MainWindow::onSourcesTouched() {
+    if (!autoReload() || mCurrentPath.isEmpty()) return;
+    // A folder changes for other files too: reload only when one of ours changed, appeared or
+    // went (a save by rename replaces the file, and the watch on the old one is gone).
+    bool changed = false;
+    for (const auto& [file, stamp] : mStamps) {
+        const QFileInfo info(file);
+        if ((info.exists() ? info.lastModified() : QDateTime()) != stamp) changed = true;
+    }
+    if (!changed) return;
+    // Seen: the next change is compared with the files as they are now.
+    for (auto& [file, stamp] : mStamps) {
+        const QFileInfo info(file);
+        stamp = info.exists() ? info.lastModified() : QDateTime();
+        if (info.exists() && !mFileWatcher->files().contains(file)) mFileWatcher->addPath(file);
+    }
+    reload();
 }
 
 void MainWindow::reportError(const QString& message) {

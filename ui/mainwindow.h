@@ -1,5 +1,8 @@
 #pragma once
 
+#include <map>
+
+#include <QDateTime>
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QString>
@@ -8,6 +11,8 @@
 #include "ui/treegenerator.h"
 
 class QAction;
+class QFileSystemWatcher;
+class QTimer;
 class QDockWidget;
 class QActionGroup;
 class QLabel;
@@ -42,6 +47,14 @@ public:
     bool openDefaultPreset();
     /// Generates the current species file again (after editing it on disk).
     void reload();
+    /// File ▸ Reload automatically (on by default): regenerate when a file the shown result was
+    /// read from changes on disk (GenerationResult::sources: the species or project, its grammar
+    /// files, a project's species and obstacle meshes), also when an editor saves by writing a
+    /// new file and renaming it over the old one. Changes within 250 ms are one reload.
+    void setAutoReload(bool on);
+    bool autoReload() const;
+    /// The files watched for automatic reloading (absolute paths).
+    QStringList watchedFiles() const { return mSources; }
     /// Saves the viewport's current image; false (with a message) on failure.
     bool saveScreenshot(const QString& path);
     /// Exports what is shown (File ▸ Export…) by \p path's extension, exactly as `sylva-cli
@@ -76,6 +89,8 @@ private:
     void showExportDialog();
     void reportError(const QString& message);
     void applyColoring();
+    void watchSources(const QStringList& sources, const QList<QDateTime>& stamps);
+    void onSourcesTouched();
 
     Viewport* mViewport = nullptr;
     StatsPanel* mStats = nullptr;
@@ -84,6 +99,11 @@ private:
     QActionGroup* mPresetGroup = nullptr;
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
+    QAction* mAutoReloadAction = nullptr;
+    QFileSystemWatcher* mFileWatcher = nullptr;
+    QTimer* mReloadTimer = nullptr;
+    QStringList mSources;                 ///< files of the shown (or failed) result
+    std::map<QString, QDateTime> mStamps; ///< their modification times when watched
     QActionGroup* mColorGroup = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;

@@ -102,12 +102,24 @@ GenerationResult generateScene(const QString& path, Progress& progress) {
     return runGuarded(path, [&](GenerationResult& result) {
         doc::LoadReport report;
         const doc::Project project = doc::loadProjectOrScene(path, &report);
+        const auto stamped = [&] {
+            result.sources.removeDuplicates();
+            stampSources(result);
+        };
         QStringList warnings;
         for (const std::string& w : report.warnings)
             warnings << QString::fromStdString(w);
         result.warning = warnings.join(QLatin1Char('\n'));
+        for (const doc::ProjectSpecies& s : project.species)
+            if (!s.file.empty())
+                result.sources << QFileInfo(project.resolve(s.file)).absoluteFilePath();
+        for (const doc::ProjectObstacle& o : project.obstacles)
+            result.sources << QFileInfo(project.resolve(o.file)).absoluteFilePath();
+        stamped(); // before makeForestScene reads the species files and meshes
         const scene::ForestScene forest = doc::makeForestScene(project);
-
+        for (const scene::SceneSpecies& s : forest.species)
+            addSourceFiles(s.graph, result.sources);
+        stamped(); // before buildForest reads the grammar files
         SceneMesh merged;
         const scene::ForestStats stats = scene::buildForest(
             forest, scene::ForestOptions{},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <filesystem>
 #include <limits>
 
 #include <QElapsedTimer>
@@ -49,6 +50,8 @@ double GenerationResult::segments() const {
 GenerationResult generateTree(const QString& path, Progress& progress) {
     return runGuarded(path, [&](GenerationResult& result) {
         graph::SpeciesGraph species = doc::loadSpecies(path);
+        addSourceFiles(species, result.sources);
+        stampSources(result); // before the evaluation reads the grammar files
         if (!species.name.empty()) result.speciesName = QString::fromStdString(species.name);
         // The viewport can colour the tree by node attributes: ask the mesher which node each
         // vertex belongs to.
@@ -69,10 +72,34 @@ GenerationResult generateTree(const QString& path, Progress& progress) {
     });
 }
 
+void addSourceFiles(const graph::SpeciesGraph& graph, QStringList& out) {
+    for (const graph::NodeDesc& node : graph.nodes) {
+        if (!node.params.isObject()) continue;
+        for (const auto& [key, value] : node.params.toObject()) {
+            const bool isFile = key == "file" || key == "grammar_file" ||
+                                (key.size() > 5 && key.ends_with("_file"));
+            if (!isFile || !value.isString()) continue;
+            std::filesystem::path p(value.toString());
+            if (p.is_relative() && !graph.baseDir.empty()) p = graph.baseDir / p;
+            const QString file = QFileInfo(QString::fromStdString(p.string())).absoluteFilePath();
+            if (!out.contains(file)) out << file;
+        }
+    }
+}
+
+void stampSources(GenerationResult& result) {
+    for (qsizetype i = result.sourceStamps.size(); i < result.sources.size(); ++i) {
+        const QFileInfo info(result.sources[i]);
+        result.sourceStamps << (info.exists() ? info.lastModified() : QDateTime());
+    }
+}
+
 GenerationResult runGuarded(const QString& path,
                             const std::function<void(GenerationResult&)>& body) {
     GenerationResult result;
     result.path = path;
+    result.sources << QFileInfo(path).absoluteFilePath();
+    stampSources(result);
     result.speciesName = QFileInfo(path).completeBaseName();
     QElapsedTimer timer;
     timer.start();

@@ -6,7 +6,10 @@
 #include <string>
 #include <vector>
 
+#include <QDateTime>
+#include <QList>
 #include <QString>
+#include <QStringList>
 
 #include <glm/glm.hpp>
 
@@ -18,6 +21,9 @@ struct Mesh;
 }
 namespace sylva::skel {
 struct Skeleton;
+}
+namespace sylva::graph {
+struct SpeciesGraph;
 }
 
 namespace sylva::ui {
@@ -38,6 +44,13 @@ struct GenerationResult {
     /// placed as sylva-cli forest places it (objects named as the CLI names them).
     std::vector<exporter::ExportTree> exportTrees;
     bool compactObj = false; ///< OBJ precision: compact for forests, full for one tree (as the CLI)
+    /// The files the result was read from (absolute): the species or project file, grammar and
+    /// other files its nodes name, a project's species and obstacle meshes. Filled as far as
+    /// loading got, so a file with an error is known too. The editor reloads when one changes.
+    QStringList sources;
+    /// Modification time of each of sources when it was about to be read (invalid: missing),
+    /// so that a change during the generation is still seen (stampSources()).
+    QList<QDateTime> sourceStamps;
     /// A project's camera (its LOD reference), which the viewport starts from.
     bool hasCamera = false;
     glm::vec3 cameraEye{0.0f}, cameraTarget{0.0f};
@@ -54,6 +67,13 @@ struct GenerationResult {
 /// any thread and never throws: this is the action boundary where engine exceptions
 /// (InvalidInput, IoError, LimitExceeded, Cancelled) become a message in the result.
 GenerationResult generateTree(const QString& path, Progress& progress = noProgress());
+
+/// Appends to \p out the files that \p graph's nodes read: string parameters named `file`,
+/// `grammar_file` or `*_file`, resolved against the graph's folder (absolute, no duplicates).
+void addSourceFiles(const graph::SpeciesGraph& graph, QStringList& out);
+
+/// Records the modification time of every source that has none yet (call before reading them).
+void stampSources(GenerationResult& result);
 
 /// A generation of the file at \p path: a result with its path and its base name as the
 /// species name, the node types registered, then \p body fills it. The engine's exceptions

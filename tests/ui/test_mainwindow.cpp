@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include <QAction>
@@ -146,6 +147,18 @@ void exportEqualsCli(MainWindow& window, const QString& command, const QString& 
             QCOMPARE(readAll(dir.filePath(QStringLiteral("editor/export.mtl"))),
                      readAll(dir.filePath(QStringLiteral("cli/export.mtl"))));
     }
+}
+
+/// Writes \p text to \p path in place (truncate and write).
+bool writeFile(const QString& path, const QByteArray& text) {
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
+}
+
+/// A grammar of the bush (5^n segments after n generations).
+QByteArray bushGrammar(int generations) {
+    return "generations: " + QByteArray::number(generations) +
+           "\nangle: 25.7\nstep: 0.5\nwidth: 0.08\naxiom: F\nF -> F[+F]F[-F]F\n";
 }
 
 bool near(float a, float b, float tolerance = 1e-4f) {
@@ -330,6 +343,74 @@ private Q_SLOTS:
         QVERIFY2(mWindow->lastError().contains(QStringLiteral(".xyz")),
                  qPrintable(mWindow->lastError()));
         QVERIFY(!QFileInfo::exists(QDir::temp().filePath(QStringLiteral("tree.xyz"))));
+    }
+
+    /// File ▸ Reload automatically: editing the species' grammar file on disk regenerates the
+    /// tree, whether the editor writes in place or writes a new file and renames it over the old
+    /// one; a broken or missing grammar reports its error and fixing or creating it reloads
+    /// again; off, nothing happens.
+    void editsOnDiskReloadTheTree() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString grammar = dir.filePath(QStringLiteral("bush.lsys"));
+        const QString species = dir.filePath(QStringLiteral("bush.json"));
+        QVERIFY(writeFile(grammar, bushGrammar(2)));
+        QVERIFY(writeFile(species, R"({"format": "sylva-species", "format_version": 1,
+            "name": "Watched bush", "graph": {"nodes": [
+              {"id": "grow", "type": "lsystem", "params": {"grammar_file": "bush.lsys"}},
+              {"id": "mesh", "type": "tube_mesh", "inputs": ["grow"], "params": {}}],
+            "output": "mesh"}})"));
+        QVERIFY(mWindow->autoReload());
+        QSignalSpy finished(mWindow.get(), &MainWindow::generationFinished);
+        auto segments = [&] {
+            return mWindow->statsPanel()->value(QStringLiteral("statSegments")).toInt();
+        };
+        auto nextGeneration = [&](bool wantOk) {
+            finished.clear();
+            if (!finished.wait(10000)) return false;
+            return finished.first().first().toBool() == wantOk;
+        };
+        mWindow->openSpecies(species);
+        QVERIFY(nextGeneration(true));
+        QCOMPARE(segments(), 25);
+        QVERIFY(mWindow->watchedFiles().contains(QFileInfo(grammar).absoluteFilePath()));
+        QVERIFY(mWindow->watchedFiles().contains(QFileInfo(species).absoluteFilePath()));
+
+        // Saved in place.
+        QVERIFY(writeFile(grammar, bushGrammar(3)));
+        QVERIFY(nextGeneration(true));
+        QCOMPARE(segments(), 125);
+        // Saved by rename (the watch on the old file goes with it).
+        const QString temporary = grammar + QStringLiteral(".tmp");
+        QVERIFY(writeFile(temporary, bushGrammar(1)));
+        QVERIFY(std::rename(temporary.toLocal8Bit().constData(),
+                            grammar.toLocal8Bit().constData()) == 0);
+        QVERIFY(nextGeneration(true));
+        QCOMPARE(segments(), 5);
+        // A broken grammar: the error, the tree kept; fixed: reloaded.
+        QVERIFY(writeFile(grammar, "generations: 2\naxiom: F\nF -> F[+F\n"));
+        QVERIFY(nextGeneration(false));
+        QVERIFY2(mWindow->lastError().contains(QStringLiteral("bush.lsys")),
+                 qPrintable(mWindow->lastError()));
+        QCOMPARE(segments(), 5);
+        QVERIFY(writeFile(grammar, bushGrammar(2)));
+        QVERIFY(nextGeneration(true));
+        QCOMPARE(segments(), 25);
+        // A grammar that is missing, then created (only the folder's watch sees it appear).
+        QVERIFY(QFile::remove(grammar));
+        QVERIFY(nextGeneration(false));
+        QVERIFY(writeFile(grammar, bushGrammar(1)));
+        QVERIFY(nextGeneration(true));
+        QCOMPARE(segments(), 5);
+        // Off: a change is ignored.
+        mWindow->setAutoReload(false);
+        finished.clear();
+        QVERIFY(writeFile(grammar, bushGrammar(3)));
+        QVERIFY(!finished.wait(1500));
+        mWindow->setAutoReload(true);
+
+        QVERIFY(mWindow->openDefaultPreset());
+        QVERIFY(nextGeneration(true));
     }
 
     void germanTranslationLoads() {
