@@ -325,6 +325,14 @@
         <source>Trees:</source>
         <translation>Bäume:</translation>
     </message>
+    <message>
+        <source>CO₂ stored:</source>
+        <translation>Gespeichertes CO₂:</translation>
+    </message>
+    <message>
+        <source>%1 t</source>
+        <translation>%1 t</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::Viewport</name>

@@ -144,7 +144,6 @@ GenerationResult generateScene(const QString& path, Progress& progress) {
         result.cameraEye = project.cameraPosition;
         result.cameraTarget = project.cameraTarget;
         result.stats["trees"] = static_cast<double>(stats.trees);
-        result.stats["segments"] = 0.0;
         result.stats["obstacle_triangles"] =
             forest.obstacles ? static_cast<double>(forest.obstacles->triangleCount()) : 0.0;
         result.stats["colliding_trees"] = static_cast<double>(stats.collidingTrees);

@@ -16,7 +16,7 @@ bool isProjectFile(const QString& path);
 /// project's camera), then merges every tree, placed in the world, and the obstacle and terrain
 /// meshes into one mesh for the viewport: submeshes "bark", "leaf", then "obstacle" and
 /// "ground". No skeleton (a forest has many). Stats: "trees", "obstacle_triangles",
-/// "colliding_trees", "pruned_nodes", "segments" (0) and the scene's "co2_kg". Loader warnings
+/// "colliding_trees", "pruned_nodes" and the scene's "co2_kg". Loader warnings
 /// (a newer file, upgrades) go to GenerationResult::warning. Never throws, like generateTree.
 GenerationResult generateScene(const QString& path, Progress& progress = noProgress());
 

@@ -37,6 +37,7 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     mLeaves = add(tr("Leaves:"), QStringLiteral("statLeaves"));
     mHeight = add(tr("Height:"), QStringLiteral("statHeight"));
     mTime = add(tr("Generation time:"), QStringLiteral("statTime"));
+    mCo2 = add(tr("CO₂ stored:"), QStringLiteral("statCo2"));
 
     mStatus = new QLabel(this);
     mStatus->setObjectName(QStringLiteral("statStatus"));
@@ -64,6 +65,11 @@ void StatsPanel::showResult(const GenerationResult& result) {
     mLeaves->setText(forest ? QStringLiteral("–") : QString::number(leaves));
     mHeight->setText(tr("%1 m").arg(locale.toString(result.height(), 'f', 2)));
     mTime->setText(tr("%1 ms").arg(locale.toString(result.elapsedMs, 'f', 1)));
+    // A project's scene total (sylva-cli stats gives the per-tree figures).
+    const auto co2 = result.stats.find("co2_kg");
+    mCo2->setText(co2 == result.stats.end()
+                      ? QStringLiteral("–")
+                      : tr("%1 t").arg(locale.toString(co2->second / 1000.0, 'f', 1)));
     mStatus->clear();
     mStatus->setStyleSheet({});
 }

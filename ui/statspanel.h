@@ -38,6 +38,7 @@ private:
     QLabel* mLeaves = nullptr;
     QLabel* mHeight = nullptr;
     QLabel* mTime = nullptr;
+    QLabel* mCo2 = nullptr;
     QLabel* mStatus = nullptr;
 };
 

@@ -439,6 +439,11 @@ private Q_SLOTS:
         QVERIFY(finished.wait(kGenerationTimeoutMs));
         QVERIFY2(finished.first().first().toBool(), qPrintable(mWindow->lastError()));
         QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statTrees")), QStringLiteral("43"));
+        // The scene's CO2 in tonnes (57.4 t for the demo, as sylva-cli stats sums it).
+        QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statCo2")),
+                 QStringLiteral("%1 t").arg(mWindow->lastResult().stats.at("co2_kg") / 1000.0, 0,
+                                            'f', 1));
+        QVERIFY(mWindow->lastResult().stats.at("co2_kg") > 10000.0);
         QVERIFY(mWindow->windowTitle().contains(QStringLiteral("forest (43 trees)")));
         const sylva::mesh::Mesh& m = *mWindow->viewport()->mesh();
         QStringList materials;

@@ -51,11 +51,13 @@ private Q_SLOTS:
         graph::registerBuiltinNodeTypes();
         const scene::ForestScene forest = doc::makeForestScene(doc::loadProject(path));
         std::vector<scene::ForestTree> trees;
-        scene::buildForest(forest, scene::ForestOptions{},
-                           [&](const std::vector<scene::ForestTree>& batch) {
-                               trees.insert(trees.end(), batch.begin(), batch.end());
-                           });
+        const scene::ForestStats stats = scene::buildForest(
+            forest, scene::ForestOptions{}, [&](const std::vector<scene::ForestTree>& batch) {
+                trees.insert(trees.end(), batch.begin(), batch.end());
+            });
         QCOMPARE(r.stats.at("trees"), double(trees.size()));
+        QCOMPARE(r.stats.at("co2_kg"), stats.metrics.co2Kg);
+        QCOMPARE(r.stats.at("colliding_trees"), double(stats.collidingTrees));
         QCOMPARE(int(trees.size()), 41); // 25 bushes + 15 shrubs + 1 placed by hand
         std::size_t treeVertices = 0, treeTriangles = 0;
         for (const scene::ForestTree& t : trees) {
