@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "engine/growth/shadowgrid.h"
+#include "engine/util/safenormalize.h"
 
 namespace sylva::growth {
 
@@ -37,11 +38,6 @@ struct Neighbours {
     }
 };
 const Neighbours kNeighbours;
-
-glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
-    const float l = glm::length(v);
-    return l > 1e-6f ? v / l : fallback;
-}
 
 } // namespace
 

@@ -13,6 +13,7 @@
 #include "engine/growth/pipemodel.h"
 #include "engine/util/error.h"
 #include "engine/util/randomvector.h"
+#include "engine/util/safenormalize.h"
 
 namespace sylva::growth {
 
@@ -48,11 +49,6 @@ glm::quat steer(const glm::quat& q, const glm::vec3& h, const glm::vec3& dir,
         r = glm::quat(1.0f + c, a.x, a.y, a.z);
     }
     return glm::normalize(r * q * roll);
-}
-
-glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
-    const float l = glm::length(v);
-    return l > 1e-6f ? v / l : fallback;
 }
 
 } // namespace

@@ -1,0 +1,14 @@
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace sylva {
+
+/// \p v scaled to unit length, or \p fallback when v is shorter than 1e-6 (a direction that
+/// summed to ~0 keeps the caller's).
+inline glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+    const float l = glm::length(v);
+    return l > 1e-6f ? v / l : fallback;
+}
+
+} // namespace sylva
