@@ -16,6 +16,7 @@
 #include "engine/growth/spatialgrid.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/safenormalize.h"
 
 namespace sylva::growth {
 
@@ -485,8 +486,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
                 dir = mean;
                 if (params.randomness > 0.0f) dir += params.randomness * randomUnit(rng);
                 dir += params.tropism;
-                const float l = glm::length(dir);
-                dir = l > 1e-6f ? dir / l : mean;
+                dir = safeNormalize(dir, mean);
             }
             lastGrown[j] = iteration;
             lastHash[j] = setHash[j];

@@ -8,6 +8,7 @@
 
 #include "engine/util/error.h"
 #include "engine/util/hugepages.h"
+#include "engine/util/safenormalize.h"
 
 namespace sylva::mesh {
 
@@ -78,10 +79,8 @@ glm::vec3 anyPerpendicular(const glm::vec3& t) {
     return glm::normalize(glm::cross(t, a));
 }
 
-glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
-    const float len2 = glm::dot(v, v);
-    return len2 > 1e-20f ? v / std::sqrt(len2) : fallback;
-}
+/// Tube directions may be very short (tiny segments): only shorter ones than this fall back.
+constexpr float kMinDirectionLength = 1e-10f;
 
 struct Layout {
     std::size_t vertices = 0;
@@ -225,7 +224,9 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     };
     const glm::vec3 frameHeading =
         skel::headingOf(s.orientation[static_cast<std::size_t>(nodes[lateral ? 1 : 0])]);
-    auto dir = [&](std::size_t k) { return safeNormalize(P(k + 1) - P(k), frameHeading); };
+    auto dir = [&](std::size_t k) {
+        return safeNormalize(P(k + 1) - P(k), frameHeading, kMinDirectionLength);
+    };
 
     glm::vec3 tPrev(0.0f), n(0.0f), pPrev(0.0f);
     glm::vec3 dPrev = dir(0);
@@ -243,7 +244,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
         const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
         const glm::vec3 t = k == 0       ? dNext
                             : k + 1 == m ? dPrev
-                                         : safeNormalize(dPrev + dNext, dNext);
+                                         : safeNormalize(dPrev + dNext, dNext, kMinDirectionLength);
         if (k == 0) {
             const glm::quat q = s.orientation[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
             glm::vec3 up = skel::upOf(q);
@@ -262,7 +263,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             const float c2 = glm::dot(v2, v2);
             if (c2 > 1e-20f) nL -= (2.0f / c2) * glm::dot(v2, nL) * v2;
             nL -= glm::dot(nL, t) * t;
-            n = safeNormalize(nL, anyPerpendicular(t));
+            n = safeNormalize(nL, anyPerpendicular(t), kMinDirectionLength);
             const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
             v += std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
         }

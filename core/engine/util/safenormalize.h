@@ -4,11 +4,12 @@
 
 namespace sylva {
 
-/// \p v scaled to unit length, or \p fallback when v is shorter than 1e-6 (a direction that
-/// summed to ~0 keeps the caller's).
-inline glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+/// \p v scaled to unit length, or \p fallback when v is not longer than \p minLength (a
+/// direction that summed to ~0 keeps the caller's).
+inline glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback,
+                               float minLength = 1e-6f) {
     const float l = glm::length(v);
-    return l > 1e-6f ? v / l : fallback;
+    return l > minLength ? v / l : fallback;
 }
 
 } // namespace sylva
