@@ -48,6 +48,10 @@ ProjectSpecies parseSpeciesRef(const Value& v, std::size_t i) {
     if (s.name.empty()) throw InvalidInput(where + " needs a \"name\"");
     s.file = v.string("file", "");
     if (const Value* g = v.find("graph")) s.graph = *g;
+    if (const Value* t = v.find("traits")) {
+        if (!s.graph) throw InvalidInput(where + ": \"traits\" belong to an inline \"graph\"");
+        s.traits = *t;
+    }
     if (s.file.empty() == !s.graph.has_value())
         throw InvalidInput(where + " (\"" + s.name +
                            "\") needs exactly one of \"file\" or \"graph\"");
@@ -229,9 +233,10 @@ QByteArray serializeProject(const Project& p) {
     Value::Array species;
     for (const ProjectSpecies& s : p.species) {
         Value::Object o{{"name", s.name}};
-        if (s.graph)
+        if (s.graph) {
             o["graph"] = *s.graph;
-        else
+            if (s.traits) o["traits"] = *s.traits;
+        } else
             o["file"] = s.file;
         species.emplace_back(std::move(o));
     }

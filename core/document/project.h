@@ -24,6 +24,8 @@ struct ProjectSpecies {
     std::string name;
     std::string file;                  ///< relative to the project file; empty when inline
     std::optional<graph::Value> graph; ///< inline {"nodes": [...], "output": ...}
+    /// Inline species only: the species file's "traits" (wood density, carbon, crown radius).
+    std::optional<graph::Value> traits;
     bool operator==(const ProjectSpecies&) const = default;
 };
 

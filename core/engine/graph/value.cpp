@@ -420,6 +420,12 @@ Value::Object& Value::objectRef() {
     return std::get<Object>(mData);
 }
 
+Value::Array& Value::arrayRef() {
+    if (isNull()) mData = Array{};
+    if (!isArray()) wrongType("value", "an array", *this);
+    return std::get<Array>(mData);
+}
+
 const Value* Value::find(const std::string& key) const {
     if (!isObject()) return nullptr;
     const Object& o = std::get<Object>(mData);

@@ -40,6 +40,7 @@ public:
     const Array& toArray(const std::string& what = "value") const;
     const Object& toObject(const std::string& what = "value") const;
     Object& objectRef(); ///< converts null to an empty object
+    Array& arrayRef();   ///< converts null to an empty array
 
     /// Object member access; nullptr when absent (or when this is not an object).
     const Value* find(const std::string& key) const;

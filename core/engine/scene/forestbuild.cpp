@@ -4,6 +4,7 @@
 #include "engine/growth/selforganizingnode.h"
 #include "engine/mesh/lod.h"
 #include "engine/mesh/meshnodes.h"
+#include "engine/scene/treecache.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -103,6 +104,38 @@ private:
 
 constexpr float kNeighbourCore = 0.5f;
 
+/// The cache key of one tree (see TreeCache): everything buildTree's result depends on.
+std::uint64_t treeKey(std::uint64_t species, const forest::Instance& in,
+                      const std::vector<env::CrownVolume>& near, const ForestScene& scene,
+                      const ForestOptions& options, double cameraDistance) {
+    std::uint64_t h = mixSeed(species, options.obstaclesKey);
+    auto mix = [&h](const void* data, std::size_t n) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < n; ++i)
+            h = (h ^ p[i]) * 0x100000001b3ull;
+    };
+    auto pod = [&mix](const auto& v) { mix(&v, sizeof v); };
+    pod(in.id);
+    pod(in.position);
+    pod(in.rotation);
+    pod(in.scale);
+    pod(in.growth);
+    pod(in.seed);
+    pod(in.handPlaced);
+    for (const env::CrownVolume& c : near) {
+        pod(c.base);
+        pod(c.radius);
+        pod(c.bottom);
+        pod(c.top);
+    }
+    pod(scene.lightDirection);
+    if (options.useLod) pod(cameraDistance);
+    const bool flags[] = {options.useLod, options.adapt, options.neighbours, options.buildMeshes,
+                          scene.obstacles != nullptr};
+    mix(flags, sizeof flags);
+    return h;
+}
+
 const env::ObstacleScene& emptyScene() {
     static const env::ObstacleScene scene;
     return scene;
@@ -144,9 +177,17 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     auto t0 = Clock::now();
     std::vector<SpeciesPlan> plans;
     std::vector<forest::SpeciesSpec> specs;
+    std::vector<std::uint64_t> speciesKeys;
+    if (options.cache) options.cache->beginBuild();
     for (std::size_t i = 0; i < scene.species.size(); ++i) {
         plans.push_back(planSpecies(scene.species[i]));
-        plans.back().crown = measureCrown(scene.species[i].graph, mixSeed(scene.seed, 0xC0000 + i));
+        const std::uint64_t crownSeed = mixSeed(scene.seed, 0xC0000 + i);
+        speciesKeys.push_back(options.cache ? speciesHash(scene.species[i].graph) : 0);
+        const std::uint64_t crownKey = mixSeed(speciesKeys.back(), crownSeed);
+        std::optional<CrownShape> cached;
+        if (options.cache) cached = options.cache->findCrown(crownKey);
+        plans.back().crown = cached ? *cached : measureCrown(scene.species[i].graph, crownSeed);
+        if (options.cache && !cached) options.cache->storeCrown(crownKey, plans.back().crown);
         specs.push_back({scene.species[i].name, plans.back().crown.radius});
     }
     stats.wallMs["species"] = msSince(t0);
@@ -278,6 +319,17 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 ctx.cameraDistance = glm::length(scene.camera - in.position);
                 ctx.key = in.id + 1;
 
+                std::uint64_t cacheKey = 0;
+                if (options.cache && !plan.selfOrganizing) {
+                    cacheKey = treeKey(speciesKeys[in.species], in, near, scene, options,
+                                       ctx.cameraDistance);
+                    if (std::optional<ForestTree> cached = options.cache->findTree(cacheKey)) {
+                        tree = std::move(*cached);
+                        tree.name = species.name + "_" + std::to_string(in.id);
+                        continue;
+                    }
+                }
+
                 auto t = Clock::now();
                 graph::Evaluator& evaluator = *evaluators[thread][in.species];
                 std::shared_ptr<const skel::Skeleton> skeleton;
@@ -315,6 +367,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 tree.metrics = forest::measureTree(*skeleton, plan.wood, in.scale * in.growth);
                 if (!options.buildMeshes) {
                     tree.mesh = std::make_shared<const mesh::Mesh>();
+                    if (cacheKey) options.cache->storeTree(cacheKey, tree);
                     continue;
                 }
                 t = Clock::now();
@@ -328,6 +381,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 tree.mesh =
                     std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
                 cpuMesh[thread] += msSince(t);
+                if (cacheKey) options.cache->storeTree(cacheKey, tree);
             } catch (...) {
                 errors[slot] = std::current_exception();
             }
@@ -354,6 +408,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     stats.cpuMs["adapt"] = sum(cpuAdapt);
     stats.cpuMs["mesh"] = sum(cpuMesh);
     stats.wallMs["trees"] = msSince(t0);
+    if (options.cache) options.cache->endBuild();
     return stats;
 }
 

@@ -19,6 +19,8 @@
 
 namespace sylva::scene {
 
+class TreeCache;
+
 /// A species of a scene: its graph (output = a meshing node whose input yields the skeleton).
 struct SceneSpecies {
     std::string name;
@@ -46,6 +48,12 @@ struct ForestOptions {
     bool buildMeshes = true;    ///< false: skeletons and metrics only (sylva-cli stats)
     std::size_t batchSize = 64; ///< trees generated in parallel before they are handed on
     forest::PlacementMethod placement = forest::PlacementMethod::Grid;
+    /// Trees of an earlier build of the same scene to reuse when their inputs are unchanged
+    /// (the editor's regeneration after an edit); null: every tree is grown.
+    TreeCache* cache = nullptr;
+    /// Identifies the obstacle and ground meshes for the cache: the caller changes it whenever
+    /// they change (the pointers alone could be reused by a new scene).
+    std::uint64_t obstaclesKey = 0;
 };
 
 /// One finished tree, in its own local frame; `instance.transform()` places it in the world.

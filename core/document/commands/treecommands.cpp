@@ -1,0 +1,51 @@
+#include "document/commands/treecommands.h"
+
+namespace sylva::doc::cmd {
+
+AddTree::AddTree(Document& doc, int index, TreeId id, ProjectInstance tree, QUndoCommand* parent)
+    : QUndoCommand(QCoreApplication::translate("Commands", "Add tree"), parent), mDoc(doc),
+      mIndex(index), mId(id), mTree(std::move(tree)) {}
+
+void AddTree::undo() {
+    mDoc.rawRemoveTree(mId);
+}
+
+void AddTree::redo() {
+    mDoc.rawInsertTree(mIndex, mId, mTree);
+}
+
+RemoveTree::RemoveTree(Document& doc, TreeId id, QUndoCommand* parent)
+    : QUndoCommand(QCoreApplication::translate("Commands", "Remove tree"), parent), mDoc(doc),
+      mId(id), mIndex(doc.treeIndex(id)), mTree(doc.tree(id)) {}
+
+void RemoveTree::undo() {
+    mDoc.rawInsertTree(mIndex, mId, mTree);
+}
+
+void RemoveTree::redo() {
+    mDoc.rawRemoveTree(mId);
+}
+
+QUndoCommand* changeTree(Document& doc, TreeId id, const ProjectInstance& newTree, bool commit) {
+    const ProjectInstance& old = doc.tree(id);
+    QString label = QCoreApplication::translate("Commands", "Edit tree");
+    int changes = 0;
+    auto note = [&](bool differs, const char* what) {
+        if (!differs) return;
+        ++changes;
+        label = QCoreApplication::translate("Commands", what);
+    };
+    note(old.position != newTree.position, QT_TRANSLATE_NOOP("Commands", "Move tree"));
+    note(old.rotation != newTree.rotation, QT_TRANSLATE_NOOP("Commands", "Rotate tree"));
+    note(old.scale != newTree.scale, QT_TRANSLATE_NOOP("Commands", "Scale tree"));
+    note(old.seed != newTree.seed, QT_TRANSLATE_NOOP("Commands", "Change tree seed"));
+    note(old.species != newTree.species, QT_TRANSLATE_NOOP("Commands", "Change tree species"));
+    note(old.growth != newTree.growth, QT_TRANSLATE_NOOP("Commands", "Change tree growth"));
+    if (changes > 1) label = QCoreApplication::translate("Commands", "Edit tree");
+    return new ChangeValue<TreeId, ProjectInstance>(
+        doc, kMergeTree, id, old, newTree, commit,
+        [](Document& d, const TreeId& key, const ProjectInstance& v) { d.rawSetTree(key, v); },
+        label);
+}
+
+} // namespace sylva::doc::cmd

@@ -1,0 +1,183 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <QList>
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include "document/project.h"
+
+namespace sylva::doc {
+
+/// A tree's identity in the open document: stable while the document is open (undo of a
+/// removal gives the tree its id back), assigned 1, 2, … in file order when a file is opened.
+/// Not saved: a project's trees are its instances, in order.
+using TreeId = std::uint32_t;
+
+/// What an edit changed, so that views update and generation regrows only that.
+struct DocumentChange {
+    enum What : unsigned {
+        Trees = 1u << 0,     ///< trees moved, changed, added or removed (ids in `trees`)
+        Species = 1u << 1,   ///< a species' graph or grammar (`species`, `node`)
+        Obstacles = 1u << 2, ///< an obstacle added, removed or transformed
+        Domains = 1u << 3,   ///< a placement domain or its counts
+        Settings = 1u << 4,  ///< seed, camera or light
+        Reset = 1u << 5,     ///< a new or opened document: everything
+    };
+    unsigned what = 0;
+    QList<TreeId> trees;
+    QString species;
+    QString node;
+};
+
+/// One selectable thing of the document (the selection is not undoable, as in Tiled).
+struct ItemRef {
+    enum class Kind { Tree, Species, Obstacle, Domain, Camera, Light, Project };
+    Kind kind = Kind::Project;
+    std::uint32_t id = 0; ///< tree id, or index of the species, obstacle or domain
+    bool operator==(const ItemRef&) const = default;
+};
+
+/// The editor's only state: the open project (species with their graphs and grammar texts,
+/// trees, domains, obstacles, camera, light, seed), its undo history and the selection.
+/// Widgets, scripts and tests never change the project directly: they call the edit functions
+/// below, each of which validates its input (InvalidInput with the allowed range, nothing
+/// changed) and pushes one undoable command (core/document/commands). Signals say exactly what
+/// changed.
+class Document : public QObject {
+    Q_OBJECT
+
+public:
+    explicit Document(QObject* parent = nullptr);
+    ~Document() override;
+
+    const Project& project() const { return mProject; }
+    QUndoStack* undoStack() { return &mUndo; }
+    const QUndoStack* undoStack() const { return &mUndo; }
+
+    /// The file the document was opened from or saved to; empty for a new document.
+    QString path() const { return mPath; }
+    /// Title for a window: the file's name (or "Untitled"), without the modified marker.
+    QString displayName() const;
+    bool isModified() const { return !mUndo.isClean(); }
+
+    // --- files -------------------------------------------------------------------------
+    /// An empty project (no species, trees or obstacles); clears the undo history.
+    void newProject();
+    /// Opens a `.sylva` project or a reference scene. On any error (InvalidInput with file,
+    /// line and column; IoError) the document is left exactly as it was. Returns the loader's
+    /// warnings (a newer file, upgrades applied).
+    std::vector<std::string> open(const QString& path);
+    /// Saves atomically to \p path (the current path when empty) and marks the undo stack
+    /// clean. Relative paths in the project are rewritten for the new folder (Save As).
+    /// \throw IoError when it cannot be written (the document keeps its state and path).
+    void save(const QString& path = {});
+    /// Replaces the document by \p project read from elsewhere (an autosave): its path is \p
+    /// path, the undo history is empty and the document counts as modified.
+    void restore(Project project, const QString& path);
+    /// The project as it would be saved (canonical JSON).
+    QByteArray serialized() const { return serializeProject(mProject); }
+
+    // --- trees ---------------------------------------------------------------------------
+    const std::vector<TreeId>& treeIds() const { return mTreeIds; }
+    /// Index of \p id in project().instances, or -1.
+    int treeIndex(TreeId id) const;
+    const ProjectInstance& tree(TreeId id) const; ///< \throw InvalidInput for an unknown id
+    TreeId addTree(const ProjectInstance& tree);
+    /// Replaces a tree's placement, seed or species. With \p commit false (a drag in progress)
+    /// the next change of the same tree merges into the same undo step.
+    void setTree(TreeId id, const ProjectInstance& tree, bool commit = true);
+    void removeTrees(const QList<TreeId>& ids);
+    /// Copies of the trees, offset by \p offset metres with fresh seeds; returns their ids.
+    QList<TreeId> duplicateTrees(const QList<TreeId>& ids, glm::vec3 offset = {1.0f, 0, 0});
+
+    // --- species ---------------------------------------------------------------------------
+    int speciesIndex(const std::string& name) const;
+    /// Adds a species from a species file (kept as a reference to the file).
+    void addSpecies(const std::string& name, const QString& file);
+    /// Removes a species no tree and no domain uses.
+    void removeSpecies(const std::string& name);
+    /// The species' graph as JSON ({"nodes": [...], "output": ...}), read from its file when it
+    /// is not inline. \throw InvalidInput / IoError.
+    graph::Value speciesGraph(const std::string& name) const;
+    /// A parameter "node.param" of a species (null when unset).
+    graph::Value param(const std::string& species, const std::string& path) const;
+    /// Sets "node.param". A species read from a file becomes inline in the project on its first
+    /// edit (the file itself is never written: other projects may use it); its relative file
+    /// parameters are rewritten for the project's folder. \throw InvalidInput for an unknown
+    /// species, node or parameter, or a graph that no longer validates.
+    void setParam(const std::string& species, const std::string& path, const graph::Value& value,
+                  bool commit = true);
+    /// Sets an lsystem node's grammar text (inline; replaces a grammar_file).
+    void setGrammar(const std::string& species, const std::string& node, const std::string& text,
+                    bool commit = true);
+    /// The grammar text of an lsystem node (inline, or read from its grammar_file).
+    std::string grammar(const std::string& species, const std::string& node) const;
+
+    // --- obstacles, domains, settings ----------------------------------------------------
+    void addObstacle(const ProjectObstacle& obstacle);
+    void removeObstacle(int index);
+    void setObstacle(int index, const ProjectObstacle& obstacle, bool commit = true);
+    void addDomain(const PlacementDomain& domain);
+    void removeDomain(int index);
+    void setDomain(int index, const PlacementDomain& domain, bool commit = true);
+    void setSeed(std::uint64_t seed);
+    void setCamera(const glm::vec3& position, const glm::vec3& target, bool commit = true);
+    void setLight(const glm::vec3& direction, bool commit = true);
+
+    // --- selection (not undoable) ----------------------------------------------------------
+    const QList<ItemRef>& selection() const { return mSelection; }
+    QList<TreeId> selectedTrees() const;
+    void setSelection(const QList<ItemRef>& items);
+    void selectTrees(const QList<TreeId>& ids);
+
+    // --- for commands only (core/document/commands): raw changes with their signals --------
+    void rawInsertTree(int index, TreeId id, const ProjectInstance& tree);
+    ProjectInstance rawRemoveTree(TreeId id);
+    void rawSetTree(TreeId id, const ProjectInstance& tree);
+    void rawSetSpecies(int index, const ProjectSpecies& species, const QString& node);
+    void rawInsertSpecies(int index, const ProjectSpecies& species);
+    void rawRemoveSpecies(int index);
+    void rawInsertObstacle(int index, const ProjectObstacle& obstacle);
+    void rawRemoveObstacle(int index);
+    void rawSetObstacle(int index, const ProjectObstacle& obstacle);
+    void rawInsertDomain(int index, const PlacementDomain& domain);
+    void rawRemoveDomain(int index);
+    void rawSetDomain(int index, const PlacementDomain& domain);
+    struct Settings {
+        std::uint64_t seed = 0;
+        glm::vec3 cameraPosition{0.0f}, cameraTarget{0.0f}, lightDirection{0.0f};
+        bool operator==(const Settings&) const = default;
+    };
+    Settings settings() const;
+    void rawSetSettings(const Settings& settings);
+    TreeId takeNextTreeId() { return mNextTreeId++; }
+
+Q_SIGNALS:
+    void changed(const sylva::doc::DocumentChange& change);
+    void selectionChanged();
+    /// The file path or the modified state changed (for the window title).
+    void titleChanged();
+
+private:
+    void replace(Project project, const QString& path);
+    void emitChange(unsigned what, QList<TreeId> trees = {}, QString species = {},
+                    QString node = {});
+    void validateTree(const ProjectInstance& tree) const;
+    ProjectSpecies inlined(const ProjectSpecies& species) const;
+    void validateSpecies(const ProjectSpecies& species) const;
+    void pruneSelection();
+
+    Project mProject;
+    std::vector<TreeId> mTreeIds; ///< parallel to mProject.instances
+    TreeId mNextTreeId = 1;
+    QString mPath;
+    QUndoStack mUndo;
+    QList<ItemRef> mSelection;
+};
+
+} // namespace sylva::doc

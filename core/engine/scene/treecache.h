@@ -1,0 +1,54 @@
+#pragma once
+
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <unordered_map>
+
+#include "engine/scene/forestbuild.h"
+
+namespace sylva::scene {
+
+/// Finished trees kept between builds of one scene, so that an editor's regeneration after an
+/// edit regrows only the trees whose inputs changed. A tree's key hashes everything its result
+/// depends on: the species graph (nodes, parameters, inputs, traits, folder), the instance (id,
+/// position, rotation, scale, growth stage, seed), the neighbouring crowns it adapts to, the
+/// obstacles' identity (ForestOptions::obstaclesKey), the light, the camera distance when LOD
+/// is on, and the build options. Files a graph reads (grammar files) are not hashed: call
+/// clear() when one changes on disk. Self-organizing trees grow together in one stand and are
+/// never cached. Thread-safe: buildForest reads and writes it from its worker threads.
+class TreeCache {
+public:
+    /// Starts a build: counters reset; entries not used by this build are dropped by
+    /// endBuild(), so the cache never holds more than the last scene's trees.
+    void beginBuild();
+    void endBuild();
+    void clear();
+
+    std::optional<ForestTree> findTree(std::uint64_t key);
+    void storeTree(std::uint64_t key, const ForestTree& tree);
+    std::optional<CrownShape> findCrown(std::uint64_t key);
+    void storeCrown(std::uint64_t key, const CrownShape& crown);
+
+    /// Trees taken from the cache and trees grown during the current (or last) build.
+    std::size_t hits() const;
+    std::size_t misses() const;
+    std::size_t size() const;
+
+private:
+    template <typename T> struct Entry {
+        T value;
+        std::uint64_t build = 0;
+    };
+    mutable std::mutex mMutex;
+    std::uint64_t mBuild = 0;
+    std::size_t mHits = 0, mMisses = 0;
+    std::unordered_map<std::uint64_t, Entry<ForestTree>> mTrees;
+    std::unordered_map<std::uint64_t, Entry<CrownShape>> mCrowns;
+};
+
+/// 64-bit FNV-1a of a species graph's content (see TreeCache).
+std::uint64_t speciesHash(const graph::SpeciesGraph& graph);
+
+} // namespace sylva::scene

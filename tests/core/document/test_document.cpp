@@ -1,0 +1,382 @@
+// The editor's document: every command done, undone and redone; a seeded random sequence of
+// edits of every kind undone to the original bytes and redone to the edited bytes; merging,
+// obsolete edits, species inlining, files, and the autosave copy.
+#include "document/autosave.h"
+#include "document/document.h"
+#include "document/filerefs.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+
+using namespace sylva;
+using doc::Document;
+using doc::TreeId;
+
+namespace {
+
+const QString kDemo = QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva");
+
+class DocumentTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        static int argc = 1;
+        static char name[] = "test_document";
+        static char* argv[] = {name, nullptr};
+        if (!QCoreApplication::instance()) new QCoreApplication(argc, argv);
+    }
+    void SetUp() override {
+        ASSERT_TRUE(mDir.isValid());
+        // The demo project copied beside its meshes' and presets' folders would need the whole
+        // tree: save it under a temporary name in its own folder instead and remove it after.
+        mDoc.open(kDemo);
+        mSaved = QDir(mDir.path()).filePath("demo.sylva");
+        mDoc.save(mSaved);
+    }
+    QByteArray bytes() const { return mDoc.serialized(); }
+
+    QTemporaryDir mDir;
+    Document mDoc;
+    QString mSaved;
+};
+
+doc::ProjectInstance alder(float x, float z) {
+    doc::ProjectInstance t;
+    t.species = "alder";
+    t.position = {x, 0.0f, z};
+    t.seed = 11;
+    return t;
+}
+
+} // namespace
+
+TEST_F(DocumentTest, SavedFileReloadsByteIdentically) {
+    QFile file(mSaved);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QByteArray onDisk = file.readAll();
+    EXPECT_EQ(onDisk, bytes());
+    Document again;
+    again.open(mSaved);
+    EXPECT_EQ(again.serialized(), onDisk);
+    EXPECT_FALSE(again.isModified());
+    // Save As into another folder rewrote the relative paths: they still name the same files.
+    EXPECT_EQ(
+        QFileInfo(again.project().resolve(again.project().species[0].file)).canonicalFilePath(),
+        QFileInfo(SYLVA_SOURCE_DIR "/presets/alder.json").canonicalFilePath());
+    EXPECT_TRUE(QFileInfo::exists(again.project().resolve(again.project().obstacles[0].file)));
+}
+
+TEST_F(DocumentTest, EachTreeCommandDoesUndoesAndRedoes) {
+    const QByteArray original = bytes();
+    const TreeId id = mDoc.addTree(alder(5, 5));
+    EXPECT_EQ(mDoc.project().instances.size(), 2u);
+    EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Add tree");
+    const QByteArray added = bytes();
+
+    doc::ProjectInstance moved = mDoc.tree(id);
+    moved.position.x = 9;
+    mDoc.setTree(id, moved);
+    EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Move tree");
+    moved.rotation = 45;
+    mDoc.setTree(id, moved);
+    EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Rotate tree");
+    moved.scale = 1.5;
+    mDoc.setTree(id, moved);
+    moved.seed = 99;
+    mDoc.setTree(id, moved);
+    moved.species = "ternary";
+    mDoc.setTree(id, moved);
+    EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Change tree species");
+    const QByteArray edited = bytes();
+    for (int i = 0; i < 5; ++i)
+        mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), added);
+    for (int i = 0; i < 5; ++i)
+        mDoc.undoStack()->redo();
+    EXPECT_EQ(bytes(), edited);
+
+    const QList<TreeId> copies = mDoc.duplicateTrees({id});
+    ASSERT_EQ(copies.size(), 1);
+    EXPECT_NE(mDoc.tree(copies[0]).seed, mDoc.tree(id).seed);
+    EXPECT_FLOAT_EQ(mDoc.tree(copies[0]).position.x, 10.0f);
+    mDoc.removeTrees({id, copies[0]});
+    EXPECT_EQ(mDoc.project().instances.size(), 1u);
+    mDoc.undoStack()->undo(); // the removal of two trees is one step
+    EXPECT_EQ(mDoc.treeIndex(id), 1);
+    EXPECT_EQ(mDoc.treeIndex(copies[0]), 2);
+    mDoc.undoStack()->setIndex(0);
+    EXPECT_EQ(bytes(), original);
+    EXPECT_FALSE(mDoc.isModified());
+}
+
+TEST_F(DocumentTest, DragsMergeAndNoOpEditsLeaveNoStep) {
+    const TreeId id = mDoc.treeIds()[0];
+    const int before = mDoc.undoStack()->count();
+    doc::ProjectInstance t = mDoc.tree(id);
+    const doc::ProjectInstance start = t;
+    for (int step = 1; step <= 10; ++step) {
+        t.position.x = start.position.x + static_cast<float>(step);
+        mDoc.setTree(id, t, /*commit=*/step == 10);
+    }
+    EXPECT_EQ(mDoc.undoStack()->count(), before + 1);
+    // A committed step does not swallow the next drag.
+    t.position.z += 1;
+    mDoc.setTree(id, t, false);
+    EXPECT_EQ(mDoc.undoStack()->count(), before + 2);
+    mDoc.undoStack()->undo();
+    mDoc.undoStack()->undo();
+    EXPECT_EQ(mDoc.tree(id), start);
+    // Setting what is already there leaves no step; a drag that returns to its start neither.
+    mDoc.setTree(id, start);
+    EXPECT_EQ(mDoc.undoStack()->index(), before);
+    mDoc.setSeed(mDoc.project().seed);
+    EXPECT_EQ(mDoc.undoStack()->index(), before);
+    t = start;
+    t.position.y += 2;
+    mDoc.setTree(id, t, false);
+    mDoc.setTree(id, start, true);
+    EXPECT_EQ(mDoc.undoStack()->index(), before);
+}
+
+TEST_F(DocumentTest, BadEditsThrowAndChangeNothing) {
+    const QByteArray original = bytes();
+    const int steps = mDoc.undoStack()->count();
+    doc::ProjectInstance t = alder(0, 0);
+    t.scale = 0;
+    EXPECT_THROW(mDoc.addTree(t), InvalidInput);
+    try {
+        mDoc.addTree(t);
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("[0.01, 100]"), std::string::npos) << e.what();
+    }
+    t = alder(0, 0);
+    t.species = "baobab";
+    EXPECT_THROW(mDoc.addTree(t), InvalidInput);
+    EXPECT_THROW(mDoc.setTree(12345, alder(0, 0)), InvalidInput);
+    EXPECT_THROW(mDoc.setParam("alder", "nosuchnode.x", 1.0), InvalidInput);
+    EXPECT_THROW(mDoc.setParam("alder", "mesh.no_such_param", 1.0), InvalidInput);
+    EXPECT_THROW(mDoc.setParam("alder", "noseparator", 1.0), InvalidInput);
+    EXPECT_THROW(mDoc.removeSpecies("alder"), InvalidInput); // used by trees
+    EXPECT_THROW(mDoc.removeObstacle(7), InvalidInput);
+    EXPECT_THROW(mDoc.setCamera({1, 1, 1}, {1, 1, 1}), InvalidInput);
+    EXPECT_EQ(bytes(), original);
+    EXPECT_EQ(mDoc.undoStack()->count(), steps);
+}
+
+TEST_F(DocumentTest, SpeciesEditInlinesTheSpeciesAndKeepsItsFiles) {
+    ASSERT_FALSE(mDoc.project().species[0].file.empty());
+    const graph::Value before = mDoc.param("alder", "mesh.resolution");
+    EXPECT_EQ(before.toNumber(), 8.0);
+    mDoc.setParam("alder", "mesh.resolution", 5.0);
+    const doc::ProjectSpecies& s = mDoc.project().species[0];
+    EXPECT_TRUE(s.file.empty());
+    ASSERT_TRUE(s.graph.has_value());
+    EXPECT_TRUE(s.traits.has_value());
+    EXPECT_EQ(mDoc.param("alder", "mesh.resolution").toNumber(), 5.0);
+    // The grammar file still resolves from the project's folder.
+    const std::string grammarFile = mDoc.param("alder", "grow.grammar_file").toString();
+    EXPECT_TRUE(QFileInfo::exists(mDoc.project().resolve(grammarFile))) << grammarFile;
+    // Saved with the project, and the species file on disk is untouched.
+    mDoc.save();
+    Document again;
+    again.open(mSaved);
+    EXPECT_EQ(again.param("alder", "mesh.resolution").toNumber(), 5.0);
+    const std::string text = again.grammar("alder", "grow");
+    EXPECT_NE(text.find("axiom"), std::string::npos);
+    mDoc.setGrammar("alder", "grow", text + "\n# edited\n");
+    EXPECT_TRUE(mDoc.param("alder", "grow.grammar_file").isNull());
+    EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Edit grammar");
+    mDoc.undoStack()->setIndex(0);
+    EXPECT_FALSE(mDoc.project().species[0].file.empty());
+}
+
+TEST_F(DocumentTest, RandomEditsUndoneAndRedoneGiveTheExactBytes) {
+    const QByteArray original = bytes();
+    Rng rng(20261124);
+    auto uniform = [&rng](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+    const QString wall = QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/meshes/wall.obj");
+    int kinds[12] = {};
+    for (int edit = 0; edit < 240; ++edit) {
+        const int kind = static_cast<int>(rng.next() % 12);
+        const auto& ids = mDoc.treeIds();
+        const TreeId someTree = ids.empty() ? 0 : ids[rng.next() % ids.size()];
+        try {
+            switch (kind) {
+            case 0:
+                mDoc.addTree(alder(float(uniform(-20, 20)), float(uniform(-20, 20))));
+                break;
+            case 1:
+                if (ids.size() > 1) mDoc.removeTrees({someTree});
+                break;
+            case 2:
+                if (someTree) mDoc.duplicateTrees({someTree});
+                break;
+            case 3: {
+                if (!someTree) break;
+                doc::ProjectInstance t = mDoc.tree(someTree);
+                // A drag: several uncommitted moves and a committed release.
+                for (int k = 0; k < 4; ++k) {
+                    t.position.x += float(uniform(-1, 1));
+                    t.rotation = uniform(0, 360);
+                    mDoc.setTree(someTree, t, k == 3);
+                }
+                break;
+            }
+            case 4: {
+                if (!someTree) break;
+                doc::ProjectInstance t = mDoc.tree(someTree);
+                t.scale = uniform(0.5, 2);
+                t.seed = rng.next() % 1000;
+                t.species = rng.next() % 2 ? "alder" : "ternary";
+                mDoc.setTree(someTree, t);
+                break;
+            }
+            case 5: {
+                doc::ProjectObstacle o;
+                o.file = wall.toStdString();
+                o.translate = {float(uniform(-20, 20)), 0, float(uniform(-20, 20))};
+                mDoc.addObstacle(o);
+                break;
+            }
+            case 6:
+                if (!mDoc.project().obstacles.empty()) {
+                    const int i = int(rng.next() % mDoc.project().obstacles.size());
+                    if (rng.next() % 3 == 0) {
+                        mDoc.removeObstacle(i);
+                    } else {
+                        doc::ProjectObstacle o = mDoc.project().obstacles[std::size_t(i)];
+                        o.rotate.y = float(uniform(0, 90));
+                        o.scale = glm::vec3(float(uniform(0.5, 2)));
+                        mDoc.setObstacle(i, o);
+                    }
+                }
+                break;
+            case 7: {
+                if (mDoc.project().domains.empty()) {
+                    mDoc.addDomain(doc::PlacementDomain{});
+                    break;
+                }
+                doc::PlacementDomain d = mDoc.project().domains[0];
+                d.counts["alder"] = int(rng.next() % 50);
+                d.max.x = float(uniform(10, 60));
+                if (rng.next() % 4 == 0)
+                    mDoc.removeDomain(0);
+                else
+                    mDoc.setDomain(0, d);
+                break;
+            }
+            case 8:
+                mDoc.setSeed(rng.next() % 100000);
+                break;
+            case 9:
+                mDoc.setCamera({float(uniform(-50, 50)), float(uniform(5, 40)), 70},
+                               {0, float(uniform(0, 8)), 0}, rng.next() % 2);
+                mDoc.setLight({float(uniform(-1, 1)), -1, float(uniform(-1, 1))});
+                break;
+            case 10:
+                mDoc.setParam(rng.next() % 2 ? "alder" : "ternary", "mesh.resolution",
+                              double(3 + rng.next() % 10), rng.next() % 2);
+                break;
+            case 11:
+                mDoc.setGrammar(
+                    "ternary",
+                    mDoc.speciesGraph("ternary").find("nodes")->toArray()[0].string("id", ""),
+                    "# random edit " + std::to_string(edit) + "\naxiom: F\n");
+                break;
+            }
+            ++kinds[kind];
+        } catch (const InvalidInput& e) {
+            FAIL() << "edit " << edit << " kind " << kind << ": " << e.what();
+        }
+    }
+    for (int k = 0; k < 12; ++k)
+        EXPECT_GT(kinds[k], 0) << "edit kind " << k << " never ran";
+    ASSERT_GE(mDoc.undoStack()->count(), 200);
+    const QByteArray edited = bytes();
+    EXPECT_NE(edited, original);
+    while (mDoc.undoStack()->canUndo())
+        mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), original);
+    EXPECT_FALSE(mDoc.isModified());
+    while (mDoc.undoStack()->canRedo())
+        mDoc.undoStack()->redo();
+    EXPECT_EQ(bytes(), edited);
+    // And through the file: saved, the edited state reloads byte for byte.
+    mDoc.save();
+    Document again;
+    again.open(mSaved);
+    EXPECT_EQ(again.serialized(), edited);
+}
+
+TEST_F(DocumentTest, CorruptOrNewerFileLeavesTheDocumentAsItWas) {
+    mDoc.addTree(alder(3, 3));
+    const QByteArray before = bytes();
+    const QString broken = QDir(mDir.path()).filePath("broken.sylva");
+    QFile f(broken);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("{ \"format\": \"sylva-project\", \"format_version\": 1,\n  \"seed\": 7,,\n}");
+    f.close();
+    try {
+        mDoc.open(broken);
+        FAIL() << "a corrupt file opened";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("broken.sylva:2:"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(mDoc.open(QDir(mDir.path()).filePath("missing.sylva")), IoError);
+    EXPECT_EQ(bytes(), before);
+    EXPECT_TRUE(mDoc.isModified());
+    EXPECT_EQ(mDoc.path(), mSaved);
+}
+
+TEST_F(DocumentTest, AutosaveCopyRestoresEveryEdit) {
+    const QString folder = QDir(mDir.path()).filePath("recovery");
+    {
+        doc::Autosave autosave(mDoc, folder);
+        EXPECT_FALSE(autosave.saveNow()); // nothing unsaved
+        mDoc.addTree(alder(4, 4));
+        mDoc.setSeed(1234);
+        ASSERT_TRUE(autosave.saveNow()) << autosave.lastError().toStdString();
+        EXPECT_TRUE(QFileInfo::exists(autosave.recoveryFile()));
+        // Never over the user's file.
+        QFile user(mSaved);
+        ASSERT_TRUE(user.open(QIODevice::ReadOnly));
+        EXPECT_NE(user.readAll(), bytes());
+    }
+    const QByteArray edited = bytes();
+    Document fresh;
+    doc::Autosave next(fresh, folder);
+    const auto pending = next.pending();
+    ASSERT_TRUE(pending.has_value());
+    EXPECT_EQ(pending->documentPath, mSaved);
+    next.restore();
+    EXPECT_EQ(fresh.serialized(), edited);
+    EXPECT_TRUE(fresh.isModified());
+    EXPECT_EQ(fresh.path(), mSaved);
+    // Relative paths still resolve against the project's own folder.
+    EXPECT_TRUE(QFileInfo::exists(fresh.project().resolve(fresh.project().obstacles[0].file)));
+    // Saving the document removes the copy this run made.
+    next.saveNow();
+    fresh.save();
+    EXPECT_FALSE(next.pending().has_value());
+}
+
+TEST(FileRefs, SourceFilesOfTheDemo) {
+    const doc::Project p = doc::loadProject(kDemo);
+    const QStringList files = doc::projectSourceFiles(p);
+    auto has = [&](const char* end) {
+        for (const QString& f : files)
+            if (f.endsWith(QLatin1String(end))) return true;
+        return false;
+    };
+    EXPECT_TRUE(has("presets/alder.json"));
+    EXPECT_TRUE(has("presets/lsystem/alder.lsys"));
+    EXPECT_TRUE(has("meshes/wall.obj"));
+    EXPECT_TRUE(has("meshes/boulder.obj"));
+    EXPECT_TRUE(doc::isFileParam("grammar_file"));
+    EXPECT_FALSE(doc::isFileParam("profile"));
+}
