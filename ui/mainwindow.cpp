@@ -5,85 +5,100 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QDesktopServices>
 #include <QDir>
 #include <QDockWidget>
+#include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFileSystemWatcher>
+#include <QHeaderView>
 #include <QImage>
+#include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPromise>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolButton>
+#include <QTreeView>
+#include <QUndoView>
+#include <QUrl>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include "document/autosave.h"
+#include "document/errormessage.h"
+#include "document/filerefs.h"
+#include "document/presetlibrary.h"
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
-#include "engine/util/error.h"
-#include "ui/presetlibrary.h"
-#include "ui/scenegenerator.h"
-#include "ui/statspanel.h"
-#include "ui/viewport.h"
+#include "engine/util/random.h"
+#include "ui/document/messagespanel.h"
+#include "ui/document/outlinermodel.h"
+#include "ui/document/propertiespanel.h"
+#include "ui/document/statspanel.h"
+#include "ui/generation/documentgenerator.h"
+#include "ui/generation/promiseprogress.h"
+#include "ui/generation/scenegenerator.h"
+#include "ui/scripting/pythonconsole.h"
+#include "ui/scripting/pythonhost.h"
+#include "ui/viewport/viewport.h"
 
 namespace sylva::ui {
 
+using doc::PresetInfo;
+using doc::PresetLibrary;
+
 namespace {
-
-/// Bridges the engine's Progress to a QPromise: the UI sees stage names, and cancelling the
-/// future stops the engine at its next checkCancelled().
-class PromiseProgress : public Progress {
-public:
-    explicit PromiseProgress(QPromise<GenerationResult>& promise) : mPromise(promise) {}
-
-    void report(double fraction, std::string_view stage) override {
-        (void)fraction;
-        // Stages report often; only a new stage name is worth a cross-thread signal.
-        if (stage == mStage) return;
-        mStage.assign(stage);
-        mPromise.setProgressValueAndText(++mTicks,
-                                         QString::fromUtf8(stage.data(), qsizetype(stage.size())));
-    }
-    bool isCancelled() const override { return mPromise.isCanceled(); }
-
-private:
-    QPromise<GenerationResult>& mPromise;
-    std::string mStage;
-    int mTicks = 0;
-};
-
+constexpr int kMaxRecent = 8;
+QString errorText() {
+    return QString::fromStdString(doc::describeError(std::current_exception()).message);
+}
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
-    setWindowTitle(tr("Sylva"));
     setObjectName(QStringLiteral("SylvaMainWindow"));
+    mDocument = new doc::Document(this);
+    mAutosave = new doc::Autosave(*mDocument, doc::Autosave::defaultFolder(), this);
+    mAutosave->setInterval(
+        QSettings().value(QStringLiteral("autosaveIntervalSeconds"), 120).toInt() * 1000);
+    mGenerator = new DocumentGenerator(*mDocument, this);
 
     mViewport = new Viewport(this);
     mViewport->setObjectName(QStringLiteral("viewport"));
     setCentralWidget(mViewport);
 
-    mStats = new StatsPanel(this);
-    mStatsDock = new QDockWidget(tr("Tree"), this);
-    mStatsDock->setObjectName(QStringLiteral("statsDock"));
-    mStatsDock->setWidget(mStats);
-    mStatsDock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea);
-    addDockWidget(Qt::RightDockWidgetArea, mStatsDock);
-
     mBusy = new QProgressBar(this);
     mBusy->setRange(0, 0); // indeterminate: stages do not report a common scale
     mBusy->setMaximumWidth(120);
     mBusy->setVisible(false);
+    mCancel = new QToolButton(this);
+    mCancel->setObjectName(QStringLiteral("cancelButton"));
+    mCancel->setText(tr("Cancel"));
+    mCancel->setToolTip(tr("Stop the generation; the last result stays"));
+    mCancel->setVisible(false);
+    connect(mCancel, &QToolButton::clicked, this, [this] {
+        if (mPreview)
+            mWatcher.cancel();
+        else
+            mGenerator->cancel();
+    });
     statusBar()->addPermanentWidget(mBusy);
+    statusBar()->addPermanentWidget(mCancel);
     mGlLabel = new QLabel(this);
     statusBar()->addPermanentWidget(mGlLabel);
 
+    createDocks();
     createMenus();
 
-    // Files of the shown tree: a change (or a save by rename, which shows as a change of the
+    // Files of the shown result: a change (or a save by rename, which shows as a change of the
     // folder) starts a short timer, so that an editor's several writes make one reload.
     mFileWatcher = new QFileSystemWatcher(this);
     mReloadTimer = new QTimer(this);
@@ -96,29 +111,156 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(mReloadTimer, &QTimer::timeout, this, &MainWindow::onSourcesTouched);
 
     connect(&mWatcher, &QFutureWatcher<GenerationResult>::finished, this,
-            &MainWindow::onGenerationFinished);
+            &MainWindow::onPreviewFinished);
     connect(&mWatcher, &QFutureWatcher<GenerationResult>::progressTextChanged, this,
             [this](const QString& stage) {
                 statusBar()->showMessage(tr("Generating: %1").arg(stage));
             });
+    connect(mGenerator, &DocumentGenerator::started, this, [this] { setBusy(true); });
+    connect(mGenerator, &DocumentGenerator::progressed, this, [this](const QString& stage) {
+        statusBar()->showMessage(tr("Regrowing: %1").arg(stage));
+    });
+    connect(mGenerator, &DocumentGenerator::finished, this, &MainWindow::onDocumentGenerated);
+    connect(mGenerator, &DocumentGenerator::cancelled, this, [this] {
+        setBusy(false);
+        statusBar()->showMessage(tr("Generation cancelled; the last result stays"), 10000);
+        Q_EMIT generationFinished(false);
+    });
+    connect(mDocument, &doc::Document::changed, this, &MainWindow::onDocumentChanged);
+    connect(mDocument, &doc::Document::titleChanged, this, &MainWindow::updateTitle);
+    connect(mDocument, &doc::Document::selectionChanged, this, [this] {
+        QSet<std::uint32_t> ids;
+        for (doc::TreeId id : mDocument->selectedTrees())
+            ids.insert(id);
+        mViewport->setHighlightedTrees(ids);
+        syncOutlinerSelection();
+        mStats->showSelection(*mDocument, mGenerator->result());
+    });
+    connect(mViewport, &QOpenGLWidget::frameSwapped, this, [this] {
+        if (!mAwaitingFrame) return;
+        mAwaitingFrame = false;
+        mEditToScreenMs = double(mSinceEdit.nsecsElapsed()) * 1e-6;
+        statusBar()->showMessage(tr("Updated in %1 ms (edit to screen, %2 tree(s) regrown)")
+                                     .arg(mEditToScreenMs, 0, 'f', 1)
+                                     .arg(mGenerator->result().stats.count("regrown")
+                                              ? mGenerator->result().stats.at("regrown")
+                                              : 0.0),
+                                 10000);
+    });
+    connect(mAutosave, &doc::Autosave::saved, this, [this](const QString& file) {
+        statusBar()->showMessage(tr("Autosaved to %1").arg(QDir::toNativeSeparators(file)), 3000);
+    });
+
+    QSettings settings;
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    updateTitle();
 }
 
 MainWindow::~MainWindow() {
+    if (PythonHost::window() == this) PythonHost::setWindow(nullptr);
     // The worker only touches its own copies, but stopping it keeps shutdown quick.
     mWatcher.disconnect(this);
     mWatcher.cancel();
     mWatcher.waitForFinished();
+    mGenerator->disconnect(this);
+}
+
+void MainWindow::createDocks() {
+    auto dock = [this](const QString& name, const QString& title, QWidget* widget,
+                       Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(name);
+        d->setWidget(widget);
+        addDockWidget(area, d);
+        mDocks[name] = d;
+        return d;
+    };
+
+    mOutlinerModel = new OutlinerModel(*mDocument, this);
+    mOutliner = new QTreeView(this);
+    mOutliner->setObjectName(QStringLiteral("outlinerView"));
+    mOutliner->setModel(mOutlinerModel);
+    mOutliner->setHeaderHidden(true);
+    mOutliner->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    mOutliner->setEditTriggers(QAbstractItemView::EditKeyPressed |
+                               QAbstractItemView::DoubleClicked);
+    mOutliner->setContextMenuPolicy(Qt::ActionsContextMenu);
+    connect(mOutlinerModel, &QAbstractItemModel::modelReset, this, [this] {
+        for (int g : {OutlinerModel::SpeciesGroup, OutlinerModel::TreesGroup,
+                      OutlinerModel::DomainsGroup, OutlinerModel::ObstaclesGroup})
+            mOutliner->expand(mOutlinerModel->groupIndex(OutlinerModel::Group(g)));
+        syncOutlinerSelection();
+    });
+    connect(mOutliner->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
+        if (mSyncingSelection) return;
+        QList<doc::ItemRef> items;
+        for (const QModelIndex& i : mOutliner->selectionModel()->selectedIndexes())
+            if (auto item = mOutlinerModel->itemAt(i); item && !items.contains(*item))
+                items << *item;
+        mSyncingSelection = true;
+        mDocument->setSelection(items);
+        mSyncingSelection = false;
+    });
+    connect(mOutlinerModel, &OutlinerModel::hiddenTreesChanged, mViewport,
+            &Viewport::setHiddenTrees);
+    connect(mOutlinerModel, &OutlinerModel::editFailed, this, &MainWindow::reportError);
+    dock(QStringLiteral("outlinerDock"), tr("Outliner"), mOutliner, Qt::LeftDockWidgetArea);
+
+    mProperties = new PropertiesPanel(*mDocument, this);
+    mProperties->setObjectName(QStringLiteral("propertiesPanel"));
+    connect(mProperties, &PropertiesPanel::failed, this, &MainWindow::reportError);
+    dock(QStringLiteral("propertiesDock"), tr("Properties"), mProperties, Qt::LeftDockWidgetArea);
+
+    mStats = new StatsPanel(this);
+    dock(QStringLiteral("statsDock"), tr("Statistics"), mStats, Qt::RightDockWidgetArea);
+
+    mUndoView = new QUndoView(mDocument->undoStack(), this);
+    mUndoView->setObjectName(QStringLiteral("undoView"));
+    mUndoView->setEmptyLabel(tr("<opened>"));
+    dock(QStringLiteral("undoDock"), tr("Undo History"), mUndoView, Qt::RightDockWidgetArea);
+
+    mMessages = new MessagesPanel(this);
+    dock(QStringLiteral("messagesDock"), tr("Messages"), mMessages, Qt::BottomDockWidgetArea);
+
+    PythonHost::setWindow(this);
+    mConsole = new PythonConsole(this);
+    mConsole->setObjectName(QStringLiteral("pythonConsole"));
+    connect(mConsole, &PythonConsole::quitRequested, this, &QWidget::close);
+    dock(QStringLiteral("consoleDock"), tr("Python Console"), mConsole, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(mDocks[QStringLiteral("messagesDock")], mDocks[QStringLiteral("consoleDock")]);
+    mDocks[QStringLiteral("messagesDock")]->raise();
+    // The viewport gets the room; the panels around it start narrow and short.
+    resizeDocks({mDocks[QStringLiteral("messagesDock")]}, {140}, Qt::Vertical);
+    resizeDocks({mDocks[QStringLiteral("outlinerDock")], mDocks[QStringLiteral("statsDock")]},
+                {300, 280}, Qt::Horizontal);
 }
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->setObjectName(QStringLiteral("fileMenu"));
+    QAction* newAction = file->addAction(tr("&New project"), this, &MainWindow::newDocument);
+    newAction->setObjectName(QStringLiteral("actionNew"));
+    newAction->setShortcut(QKeySequence::New);
     QAction* open =
         file->addAction(tr("&Open species or project…"), this, &MainWindow::showOpenDialog);
+    open->setObjectName(QStringLiteral("actionOpen"));
     open->setShortcut(QKeySequence::Open);
+    mRecentMenu = file->addMenu(tr("Open &recent"));
+    mRecentMenu->setObjectName(QStringLiteral("recentMenu"));
+    connect(mRecentMenu, &QMenu::aboutToShow, this, &MainWindow::populateRecentMenu);
+    populateRecentMenu();
+    QAction* saveAction = file->addAction(tr("&Save"), this, &MainWindow::save);
+    saveAction->setObjectName(QStringLiteral("actionSave"));
+    saveAction->setShortcut(QKeySequence::Save);
+    QAction* saveAsAction = file->addAction(tr("Save &as…"), this, &MainWindow::showSaveAsDialog);
+    saveAsAction->setObjectName(QStringLiteral("actionSaveAs"));
+    saveAsAction->setShortcut(QKeySequence::SaveAs);
+    QAction* revertAction = file->addAction(tr("Re&vert"), this, &MainWindow::revert);
+    revertAction->setObjectName(QStringLiteral("actionRevert"));
+    file->addSeparator();
     mReloadAction = file->addAction(tr("&Reload"), this, &MainWindow::reload);
     mReloadAction->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(tr("Ctrl+R"))});
-    mReloadAction->setEnabled(false);
     mAutoReloadAction = file->addAction(tr("Reload &automatically"));
     mAutoReloadAction->setCheckable(true);
     mAutoReloadAction->setChecked(true);
@@ -126,11 +268,52 @@ void MainWindow::createMenus() {
     mExportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     mExportAction->setEnabled(false);
     QAction* shot =
-        file->addAction(tr("Save &screenshot…"), this, &MainWindow::showScreenshotDialog);
-    shot->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
+        file->addAction(tr("Save s&creenshot…"), this, &MainWindow::showScreenshotDialog);
+    shot->setShortcut(QKeySequence(tr("Ctrl+Alt+S")));
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    edit->setObjectName(QStringLiteral("editMenu"));
+    QAction* undo = mDocument->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("actionUndo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = mDocument->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("actionRedo"));
+    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    QAction* del = edit->addAction(tr("&Delete"), this, &MainWindow::deleteSelection);
+    del->setObjectName(QStringLiteral("actionDelete"));
+    del->setShortcut(QKeySequence::Delete);
+    QAction* dup = edit->addAction(tr("D&uplicate"), this, &MainWindow::duplicateSelection);
+    dup->setObjectName(QStringLiteral("actionDuplicate"));
+    dup->setShortcut(QKeySequence(tr("Ctrl+D")));
+    QAction* all = edit->addAction(tr("Select &all trees"), this, &MainWindow::selectAllTrees);
+    all->setObjectName(QStringLiteral("actionSelectAll"));
+    all->setShortcut(QKeySequence::SelectAll);
+    mOutliner->addAction(del);
+    mOutliner->addAction(dup);
+
+    QMenu* scene = menuBar()->addMenu(tr("&Scene"));
+    scene->setObjectName(QStringLiteral("sceneMenu"));
+    scene->addAction(tr("Add &species from file…"), this, &MainWindow::showAddSpeciesDialog);
+    QAction* addTree = scene->addAction(tr("Add &tree"), this, &MainWindow::addTreeAtTarget);
+    addTree->setObjectName(QStringLiteral("actionAddTree"));
+    addTree->setShortcut(QKeySequence(tr("Ctrl+T")));
+    scene->addAction(tr("Import &obstacle…"), this, &MainWindow::showImportObstacleDialog);
+    scene->addAction(tr("Add &domain"), this, [this] {
+        try {
+            doc::PlacementDomain d;
+            d.min = {-20.0f, -20.0f};
+            d.max = {20.0f, 20.0f};
+            mDocument->addDomain(d);
+        } catch (...) {
+            reportError(errorText());
+        }
+    });
 
     mPresetsMenu = menuBar()->addMenu(tr("&Presets"));
     mPresetsMenu->setObjectName(QStringLiteral("presetsMenu"));
@@ -139,8 +322,9 @@ void MainWindow::createMenus() {
     populatePresetsMenu();
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    mViewMenu = view;
     view->setObjectName(QStringLiteral("viewMenu"));
-    QAction* frame = view->addAction(tr("&Frame tree"), mViewport, &Viewport::frameScene);
+    QAction* frame = view->addAction(tr("&Frame all"), mViewport, &Viewport::frameScene);
     frame->setShortcut(QKeySequence(Qt::Key_F));
     frame->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     QAction* grid = view->addAction(tr("Show &grid"));
@@ -168,7 +352,49 @@ void MainWindow::createMenus() {
         connect(action, &QAction::triggered, this, [this, mode = mode] { setColorBy(mode); });
     }
     view->addSeparator();
-    view->addAction(mStatsDock->toggleViewAction());
+    QMenu* docks = view->addMenu(tr("&Panels"));
+    docks->setObjectName(QStringLiteral("panelsMenu"));
+    for (const auto& [name, d] : mDocks)
+        docks->addAction(d->toggleViewAction());
+    QMenu* language = view->addMenu(tr("&Language"));
+    language->setObjectName(QStringLiteral("languageMenu"));
+    auto* languages = new QActionGroup(this);
+    const QString current = QSettings().value(QStringLiteral("language")).toString();
+    const std::pair<QString, QString> choices[] = {
+        {QString(), tr("System default")},
+        {QStringLiteral("en"), QStringLiteral("English")},
+        {QStringLiteral("de"), QStringLiteral("Deutsch")},
+        {QStringLiteral("fr"), QStringLiteral("Français")}};
+    for (const auto& [code, label] : choices) {
+        QAction* a = language->addAction(label);
+        a->setCheckable(true);
+        a->setChecked(code == current);
+        languages->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code = code] {
+            QSettings().setValue(QStringLiteral("language"), code);
+            QMessageBox::information(this, tr("Language"),
+                                     tr("Sylva will use the new language when it starts again."));
+        });
+    }
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->setObjectName(QStringLiteral("helpMenu"));
+    help->addAction(tr("&Documentation"), this, [] {
+        QDir docs(PresetLibrary::directory());
+        const QString folder = docs.cdUp() && docs.cd(QStringLiteral("docs"))
+                                   ? docs.absolutePath()
+                                   : QStringLiteral("/usr/share/doc/sylva");
+        QDesktopServices::openUrl(QUrl::fromLocalFile(QDir(folder).filePath("editor.md")));
+    });
+    help->addAction(tr("&About Sylva"), this, [this] {
+        QMessageBox::about(
+            this, tr("About Sylva"),
+            tr("<h3>Sylva %1</h3><p>Procedural trees and forests for film and games: "
+               "L-systems, space colonization and self-organizing trees, forests that react to "
+               "the scene they stand in.</p><p>Scripting: Python (the Python Console, or "
+               "<tt>sylva --script file.py</tt>).</p>")
+                .arg(QApplication::applicationVersion()));
+    });
 }
 
 void MainWindow::setColorBy(ColorBy mode) {
@@ -179,15 +405,15 @@ void MainWindow::setColorBy(ColorBy mode) {
 }
 
 void MainWindow::applyColoring() {
-    const skel::Skeleton* skeleton = mResult.skeleton.get();
-    // Attributes this tree has; the others are greyed out.
-    // A project's forest has no one skeleton: materials only.
+    const GenerationResult& result = lastResult();
+    const skel::Skeleton* skeleton = mPreview ? result.skeleton.get() : nullptr;
+    // Attributes this tree has; the others are greyed out. A forest has no one skeleton.
     for (QAction* action : mColorGroup->actions()) {
         const auto mode = static_cast<ColorBy>(action->data().toInt());
         action->setEnabled(mode == ColorBy::Material ||
-                           (skeleton && hasAttribute(*skeleton, mode)) || !mResult.mesh);
+                           (skeleton && hasAttribute(*skeleton, mode)) || !result.mesh);
     }
-    if (!mResult.mesh) return;
+    if (!result.mesh) return;
     if (!skeleton) {
         mViewport->setVertexColors({});
         if (mColorBy != ColorBy::Material)
@@ -195,7 +421,7 @@ void MainWindow::applyColoring() {
                                         "forest is shown in its materials"));
         return;
     }
-    AttributeColoring coloring = colorByAttribute(*mResult.mesh, *skeleton, mColorBy);
+    AttributeColoring coloring = colorByAttribute(*result.mesh, *skeleton, mColorBy);
     mViewport->setVertexColors(std::move(coloring.colors));
     // The legend names the ramp's range, or says that this tree lacks the attribute.
     if (mColorBy != ColorBy::Material) statusBar()->showMessage(coloring.legend);
@@ -219,25 +445,112 @@ void MainWindow::populatePresetsMenu() {
         action->setData(preset.path);
         action->setToolTip(preset.path);
         action->setCheckable(true);
-        action->setChecked(QFileInfo(preset.path) == QFileInfo(mCurrentPath));
+        action->setChecked(mPreview && QFileInfo(preset.path) == QFileInfo(mPreviewPath));
         mPresetGroup->addAction(action);
         connect(action, &QAction::triggered, this,
                 [this, path = preset.path] { openSpecies(path); });
     }
 }
 
+void MainWindow::populateRecentMenu() {
+    mRecentMenu->clear();
+    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& path : recent) {
+        QAction* a = mRecentMenu->addAction(QDir::toNativeSeparators(path));
+        connect(a, &QAction::triggered, this, [this, path] { openSpecies(path); });
+    }
+    if (recent.isEmpty()) mRecentMenu->addAction(tr("No recent files"))->setEnabled(false);
+}
+
+void MainWindow::addRecent(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    recent.removeAll(absolute);
+    recent.prepend(absolute);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    settings.setValue(QStringLiteral("recentFiles"), recent);
+}
+
+// --- opening, saving --------------------------------------------------------------------
+
 void MainWindow::openSpecies(const QString& path) {
+    if (isProjectFile(path)) {
+        if (!openProject(path)) Q_EMIT generationFinished(false);
+        return;
+    }
     if (mWatcher.isRunning()) mWatcher.cancel(); // superseded; its result is dropped
-    mCurrentPath = path;
-    mReloadAction->setEnabled(!path.isEmpty());
+    mPreview = true;
+    mPreviewPath = path;
     const QString name = QFileInfo(path).fileName();
     mStats->showGenerating(name);
     statusBar()->showMessage(tr("Generating %1…").arg(name));
-    mBusy->setVisible(true);
+    setBusy(true);
     mWatcher.setFuture(QtConcurrent::run([path](QPromise<GenerationResult>& promise) {
         PromiseProgress progress(promise);
-        promise.addResult(generate(path, progress)); // a species, or a project's forest
+        promise.addResult(generateTree(path, progress));
     }));
+}
+
+bool MainWindow::openProject(const QString& path) {
+    if (mDocument->isModified() && !maybeDiscard()) return false;
+    try {
+        const std::vector<std::string> warnings = mDocument->open(path);
+        for (const std::string& w : warnings)
+            mMessages->add(MessagesPanel::Severity::Warning, QString::fromStdString(w));
+        if (!warnings.empty()) mStats->showWarning(QString::fromStdString(warnings.front()));
+    } catch (...) {
+        reportError(errorText());
+        return false;
+    }
+    addRecent(path);
+    mMessages->add(MessagesPanel::Severity::Info,
+                   tr("Opened %1").arg(QDir::toNativeSeparators(mDocument->path())));
+    return true;
+}
+
+bool MainWindow::newDocument() {
+    if (mDocument->isModified() && !maybeDiscard()) return false;
+    mDocument->newProject();
+    return true;
+}
+
+bool MainWindow::save() {
+    if (mDocument->path().isEmpty()) {
+        showSaveAsDialog();
+        return !mDocument->isModified();
+    }
+    return saveAs(mDocument->path());
+}
+
+bool MainWindow::saveAs(const QString& path) {
+    try {
+        mDocument->save(path);
+    } catch (...) {
+        reportError(errorText());
+        return false;
+    }
+    addRecent(path);
+    mAutosave->discard();
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(mDocument->path())),
+                             10000);
+    return true;
+}
+
+bool MainWindow::revert() {
+    if (mDocument->path().isEmpty()) return false;
+    if (mDocument->isModified() &&
+        askUser(tr("Revert to the saved file and lose your edits?"), false) != Answer::Yes)
+        return false;
+    const QString path = mDocument->path();
+    try {
+        mDocument->open(path);
+    } catch (...) {
+        reportError(errorText());
+        return false;
+    }
+    return true;
 }
 
 bool MainWindow::openDefaultPreset() {
@@ -253,14 +566,52 @@ bool MainWindow::openDefaultPreset() {
 }
 
 void MainWindow::reload() {
-    if (!mCurrentPath.isEmpty()) openSpecies(mCurrentPath);
+    if (mPreview) {
+        openSpecies(mPreviewPath);
+        return;
+    }
+    mGenerator->regenerateAll();
 }
 
-void MainWindow::onGenerationFinished() {
+QString MainWindow::currentPath() const {
+    return mPreview ? mPreviewPath : mDocument->path();
+}
+
+const GenerationResult& MainWindow::lastResult() const {
+    return mPreview ? mPreviewResult : mGenerator->result();
+}
+
+bool MainWindow::isGenerating() const {
+    return mWatcher.isRunning() || mGenerator->isBusy();
+}
+
+bool MainWindow::waitForGeneration(int timeoutMs) {
+    if (!isGenerating()) return true;
+    QEventLoop loop;
+    QTimer timeout;
+    timeout.setSingleShot(true);
+    connect(&timeout, &QTimer::timeout, &loop, &QEventLoop::quit);
+    connect(this, &MainWindow::generationFinished, &loop, [this, &loop] {
+        if (!isGenerating()) loop.quit();
+    });
+    timeout.start(timeoutMs);
+    loop.exec();
+    return !isGenerating();
+}
+
+void MainWindow::setBusy(bool busy) {
+    mBusy->setVisible(busy);
+    mCancel->setVisible(busy);
+}
+
+void MainWindow::onPreviewFinished() {
     const QFuture<GenerationResult> future = mWatcher.future();
-    if (future.isCanceled() || future.resultCount() == 0) return; // superseded by a newer run
+    if (future.isCanceled() || future.resultCount() == 0) {
+        setBusy(false);
+        return; // superseded by a newer run, or cancelled
+    }
     GenerationResult result = future.result();
-    mBusy->setVisible(false);
+    setBusy(false);
     if (result.cancelled) return;
     watchSources(result.sources, result.sourceStamps);
     if (!result.ok()) {
@@ -269,27 +620,253 @@ void MainWindow::onGenerationFinished() {
         return;
     }
     mLastError.clear();
-    mResult = std::move(result);
-    if (mResult.hasCamera)
-        mViewport->setViewFrom(mResult.cameraEye, mResult.cameraTarget);
-    else
-        mViewport->clearViewFrom();
-    mViewport->setMesh(mResult.mesh, true);
-    mExportAction->setEnabled(!mResult.exportTrees.empty());
-    mStats->showResult(mResult);
-    setWindowTitle(tr("%1 — Sylva").arg(mResult.speciesName));
-    statusBar()->showMessage(
-        tr("Generated %1 in %2 ms").arg(mResult.speciesName).arg(mResult.elapsedMs, 0, 'f', 1),
-        10000);
+    mPreviewResult = std::move(result);
+    mViewport->clearViewFrom();
+    mViewport->setTrees({});
+    mViewport->setMesh(mPreviewResult.mesh, true);
+    mExportAction->setEnabled(!mPreviewResult.exportTrees.empty());
+    mStats->showResult(mPreviewResult);
+    updateTitle();
+    statusBar()->showMessage(tr("Generated %1 in %2 ms")
+                                 .arg(mPreviewResult.speciesName)
+                                 .arg(mPreviewResult.elapsedMs, 0, 'f', 1),
+                             10000);
     applyColoring();
-    if (!mResult.warning.isEmpty()) {
-        mStats->showWarning(mResult.warning);
-        statusBar()->showMessage(mResult.warning.section(QLatin1Char('\n'), 0, 0));
-    }
     if (!mViewport->glError().isEmpty()) statusBar()->showMessage(mViewport->glError());
     mGlLabel->setText(mViewport->glInfo());
     Q_EMIT generationFinished(true);
 }
+
+void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
+    mSinceEdit.start();
+    if (change.what & doc::DocumentChange::Reset) {
+        if (mWatcher.isRunning()) mWatcher.cancel();
+        mPreview = false;
+        mFrameNext = true;
+        mStats->showGenerating(mDocument->displayName());
+        updateTitle();
+    } else if (mPreview) {
+        // An edit of the document (a script adding a tree to a new project): show it.
+        mPreview = false;
+        mFrameNext = true;
+    }
+    mGenerator->regenerate();
+}
+
+void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
+    setBusy(false);
+    if (mPreview) return;
+    const GenerationResult& result = mGenerator->result();
+    if (!ok) {
+        watchSources(doc::projectSourceFiles(mDocument->project()) << mDocument->path(), {});
+        reportError(error);
+        Q_EMIT generationFinished(false);
+        return;
+    }
+    QStringList sources = result.sources;
+    QList<QDateTime> stamps = result.sourceStamps;
+    if (!mDocument->path().isEmpty()) sources << mDocument->path();
+    watchSources(sources, stamps);
+    mLastError.clear();
+    showDocument(mFrameNext);
+    mFrameNext = false;
+    Q_EMIT generationFinished(true);
+}
+
+void MainWindow::showDocument(bool frame) {
+    const GenerationResult& result = mGenerator->result();
+    std::vector<ViewTree> trees;
+    trees.reserve(result.trees.size());
+    for (const DrawnTree& t : result.trees)
+        trees.push_back({t.docId, t.mesh, t.transform});
+    if (frame) {
+        mViewport->setViewFrom(result.cameraEye, result.cameraTarget);
+    }
+    mViewport->setVertexColors({});
+    mViewport->setTrees(std::move(trees), false);
+    mViewport->setMesh(result.mesh, frame);
+    mAwaitingFrame = true;
+    mViewport->update();
+    mExportAction->setEnabled(!result.exportTrees.empty());
+    mStats->showResult(result);
+    mStats->showSelection(*mDocument, result);
+    updateTitle();
+    applyColoring();
+    mGlLabel->setText(mViewport->glInfo());
+}
+
+void MainWindow::updateTitle() {
+    if (mPreview) {
+        setWindowTitle(tr("%1 (preview) — Sylva").arg(mPreviewResult.speciesName));
+        setWindowModified(false);
+        return;
+    }
+    QString name = mDocument->displayName();
+    if (!mGenerator->result().trees.empty() || mGenerator->result().mesh)
+        name = tr("%1 (%n trees)", nullptr, int(mGenerator->result().trees.size())).arg(name);
+    setWindowTitle(tr("%1[*] — Sylva").arg(name));
+    setWindowModified(mDocument->isModified());
+}
+
+MainWindow::Answer MainWindow::askUser(const QString& question, bool canSave) {
+    if (mAsk) return mAsk(question, canSave);
+    if (canSave) {
+        const auto b = QMessageBox::question(
+            this, tr("Sylva"), question,
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+        return b == QMessageBox::Save      ? Answer::Save
+               : b == QMessageBox::Discard ? Answer::Discard
+                                           : Answer::Cancel;
+    }
+    return QMessageBox::question(this, tr("Sylva"), question) == QMessageBox::Yes ? Answer::Yes
+                                                                                  : Answer::No;
+}
+
+bool MainWindow::maybeDiscard() {
+    const Answer a =
+        askUser(tr("%1 has unsaved edits. Save them first?").arg(mDocument->displayName()), true);
+    if (a == Answer::Save) return save();
+    if (a == Answer::Discard) {
+        mAutosave->discard();
+        return true;
+    }
+    return false;
+}
+
+bool MainWindow::offerRecovery(bool force) {
+    const auto pending = mAutosave->pending();
+    if (!pending) return false;
+    const QString what = pending->documentPath.isEmpty()
+                             ? tr("an untitled project")
+                             : QDir::toNativeSeparators(pending->documentPath);
+    if (!force &&
+        askUser(
+            tr("Sylva found edits of %1 autosaved at %2 that were never saved (the editor "
+               "did not close normally). Restore them?")
+                .arg(what, QLocale().toString(pending->saved.toLocalTime(), QLocale::ShortFormat)),
+            false) != Answer::Yes) {
+        mAutosave->discard();
+        return false;
+    }
+    try {
+        mAutosave->restore();
+    } catch (...) {
+        reportError(errorText());
+        return false;
+    }
+    mMessages->add(MessagesPanel::Severity::Info,
+                   tr("Restored the autosaved edits of %1").arg(what));
+    return true;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (mDocument->isModified() && !maybeDiscard()) {
+        event->ignore();
+        return;
+    }
+    mAutosave->discard();
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    event->accept();
+}
+
+// --- scene edits from menus ------------------------------------------------------------
+
+void MainWindow::deleteSelection() {
+    try {
+        const QList<doc::ItemRef> selection = mDocument->selection();
+        QList<doc::TreeId> trees = mDocument->selectedTrees();
+        if (!trees.isEmpty()) {
+            mDocument->removeTrees(trees);
+            return;
+        }
+        for (const doc::ItemRef& item : selection) {
+            if (item.kind == doc::ItemRef::Kind::Obstacle) mDocument->removeObstacle(int(item.id));
+            if (item.kind == doc::ItemRef::Kind::Domain) mDocument->removeDomain(int(item.id));
+            if (item.kind == doc::ItemRef::Kind::Species)
+                mDocument->removeSpecies(mDocument->project().species[item.id].name);
+            return; // indices of the rest changed
+        }
+    } catch (...) {
+        reportError(errorText());
+    }
+}
+
+void MainWindow::duplicateSelection() {
+    try {
+        const QList<doc::TreeId> copies = mDocument->duplicateTrees(mDocument->selectedTrees());
+        if (!copies.isEmpty()) mDocument->selectTrees(copies);
+    } catch (...) {
+        reportError(errorText());
+    }
+}
+
+void MainWindow::selectAllTrees() {
+    mDocument->selectTrees(
+        QList<doc::TreeId>(mDocument->treeIds().begin(), mDocument->treeIds().end()));
+}
+
+void MainWindow::addTreeAtTarget() {
+    try {
+        if (mDocument->project().species.empty())
+            throw InvalidInput("add a species first (Scene ▸ Add species from file…)");
+        doc::ProjectInstance t;
+        t.species = mDocument->project().species.front().name;
+        const glm::vec3 target = mViewport->camera().target();
+        t.position = {target.x, 0.0f, target.z};
+        t.seed =
+            mixSeed(mDocument->project().seed, mDocument->treeIds().size() + 1) % 1000000007ull;
+        mDocument->selectTrees({mDocument->addTree(t)});
+    } catch (...) {
+        reportError(errorText());
+    }
+}
+
+void MainWindow::showAddSpeciesDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Add species"), PresetLibrary::directory(),
+        tr("Species and grammars (*.json *.lsys *.txt);;All files (*)"));
+    if (path.isEmpty()) return;
+    bool ok = false;
+    const QString name =
+        QInputDialog::getText(this, tr("Add species"), tr("Name in the project:"),
+                              QLineEdit::Normal, QFileInfo(path).completeBaseName(), &ok);
+    if (!ok) return;
+    try {
+        mDocument->addSpecies(name.trimmed().toStdString(), path);
+    } catch (...) {
+        reportError(errorText());
+    }
+}
+
+void MainWindow::showImportObstacleDialog() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import obstacle"), QFileInfo(mDocument->path()).absolutePath(),
+        tr("Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)"));
+    if (path.isEmpty()) return;
+    try {
+        doc::ProjectObstacle o;
+        o.file = path.toStdString();
+        mDocument->addObstacle(o);
+    } catch (...) {
+        reportError(errorText());
+    }
+}
+
+void MainWindow::syncOutlinerSelection() {
+    if (mSyncingSelection) return;
+    mSyncingSelection = true;
+    QItemSelection selection;
+    for (const doc::ItemRef& item : mDocument->selection()) {
+        const QModelIndex i = mOutlinerModel->indexOf(item);
+        if (i.isValid()) selection.select(i, i);
+    }
+    mOutliner->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
+    mSyncingSelection = false;
+}
+
+// --- files on disk ----------------------------------------------------------------------
 
 void MainWindow::setAutoReload(bool on) {
     mAutoReloadAction->setChecked(on);
@@ -304,17 +881,20 @@ void MainWindow::watchSources(const QStringList& sources, const QList<QDateTime>
     if (!mFileWatcher->directories().isEmpty())
         mFileWatcher->removePaths(mFileWatcher->directories());
     mSources = sources;
+    mSources.removeDuplicates();
+    mSources.removeAll(QString());
     mStamps.clear();
     QStringList folders;
     bool changedMeanwhile = false;
-    for (qsizetype i = 0; i < sources.size(); ++i) {
-        const QFileInfo info(sources[i]);
+    for (qsizetype i = 0; i < mSources.size(); ++i) {
+        const QFileInfo info(mSources[i]);
         const QDateTime now = info.exists() ? info.lastModified() : QDateTime();
         // The time the file had when it was read; a file changed since is reloaded at once.
-        const QDateTime read = i < stamps.size() ? stamps[i] : now;
-        mStamps[sources[i]] = read;
+        const qsizetype k = sources.indexOf(mSources[i]);
+        const QDateTime read = k >= 0 && k < stamps.size() ? stamps[k] : now;
+        mStamps[mSources[i]] = read;
         changedMeanwhile = changedMeanwhile || now != read;
-        if (info.exists()) mFileWatcher->addPath(sources[i]);
+        if (info.exists()) mFileWatcher->addPath(mSources[i]);
         if (!folders.contains(info.absolutePath())) folders << info.absolutePath();
     }
     for (const QString& folder : folders)
@@ -323,31 +903,54 @@ void MainWindow::watchSources(const QStringList& sources, const QList<QDateTime>
 }
 
 void MainWindow::onSourcesTouched() {
-    if (!autoReload() || mCurrentPath.isEmpty()) return;
+    if (!autoReload()) return;
     // A folder changes for other files too: reload only when one of ours changed, appeared or
     // went (a save by rename replaces the file, and the watch on the old one is gone).
-    bool changed = false;
+    QStringList changed;
     for (const auto& [file, stamp] : mStamps) {
         const QFileInfo info(file);
-        if ((info.exists() ? info.lastModified() : QDateTime()) != stamp) changed = true;
+        if ((info.exists() ? info.lastModified() : QDateTime()) != stamp) changed << file;
     }
-    if (!changed) return;
+    if (changed.isEmpty()) return;
     // Seen: the next change is compared with the files as they are now.
     for (auto& [file, stamp] : mStamps) {
         const QFileInfo info(file);
         stamp = info.exists() ? info.lastModified() : QDateTime();
         if (info.exists() && !mFileWatcher->files().contains(file)) mFileWatcher->addPath(file);
     }
-    reload();
+    if (mPreview) {
+        reload();
+        return;
+    }
+    const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
+    if (!mDocument->path().isEmpty() && changed.contains(own)) {
+        // The project file itself: never throw unsaved edits away without asking.
+        if (QFileInfo::exists(own) &&
+            (!mDocument->isModified() ||
+             askUser(tr("%1 changed on disk. Reload it and lose your unsaved edits?")
+                         .arg(mDocument->displayName()),
+                     false) == Answer::Yes)) {
+            try {
+                mDocument->open(own);
+            } catch (...) {
+                reportError(errorText());
+            }
+        }
+        return;
+    }
+    mGenerator->regenerateAll(); // a species, grammar or mesh file: regrow everything
 }
 
 void MainWindow::reportError(const QString& message) {
-    mBusy->setVisible(false);
+    setBusy(isGenerating());
     mLastError = message;
     mStats->showError(message);
+    mMessages->add(MessagesPanel::Severity::Error, message);
     // The status bar shows one line; the dock shows the whole message.
     statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0));
 }
+
+// --- output -----------------------------------------------------------------------------
 
 bool MainWindow::saveScreenshot(const QString& path) {
     const QImage image = mViewport->grabFramebuffer();
@@ -363,8 +966,18 @@ bool MainWindow::saveScreenshot(const QString& path) {
     return true;
 }
 
+bool MainWindow::saveWindowScreenshot(const QString& path) {
+    const QPixmap image = grab();
+    if (image.isNull() || !image.save(path)) {
+        reportError(tr("Could not write %1.").arg(QDir::toNativeSeparators(path)));
+        return false;
+    }
+    return true;
+}
+
 bool MainWindow::exportTo(const QString& path) {
-    if (mResult.exportTrees.empty()) {
+    const GenerationResult& result = lastResult();
+    if (result.exportTrees.empty()) {
         reportError(tr("Nothing to export yet."));
         return false;
     }
@@ -372,16 +985,11 @@ bool MainWindow::exportTo(const QString& path) {
     QString error;
     std::size_t files = 0;
     try {
-        exporter::TreeExporter out(path.toStdString(), {false, mResult.compactObj});
-        out.add(mResult.exportTrees);
+        exporter::TreeExporter out(path.toStdString(), {false, result.compactObj});
+        out.add(result.exportTrees);
         files = out.commit().size();
-    } catch (const InvalidInput& e) {
-        error = QString::fromStdString(e.what());
-    } catch (const IoError& e) {
-        error = QString::fromStdString(e.what());
-    } catch (const std::exception& e) {
-        error = tr("Could not export %1: %2")
-                    .arg(QDir::toNativeSeparators(path), QString::fromUtf8(e.what()));
+    } catch (...) {
+        error = errorText();
     }
     QApplication::restoreOverrideCursor();
     if (!error.isEmpty()) {
@@ -389,7 +997,7 @@ bool MainWindow::exportTo(const QString& path) {
         return false;
     }
     statusBar()->showMessage(
-        tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(mResult.exportTrees.size()))
+        tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(result.exportTrees.size()))
             .arg(QDir::toNativeSeparators(path))
             .arg(files),
         10000);
@@ -397,7 +1005,10 @@ bool MainWindow::exportTo(const QString& path) {
 }
 
 void MainWindow::showExportDialog() {
-    const QString suggested = QFileInfo(mResult.path).completeBaseName() + QStringLiteral(".obj");
+    const QString suggested =
+        QFileInfo(currentPath().isEmpty() ? QStringLiteral("forest") : currentPath())
+            .completeBaseName() +
+        QStringLiteral(".obj");
     QString filter;
     QString path = QFileDialog::getSaveFileName(
         this, tr("Export"), suggested,
@@ -413,8 +1024,8 @@ void MainWindow::showExportDialog() {
 }
 
 void MainWindow::showOpenDialog() {
-    QString dir = mCurrentPath.isEmpty() ? PresetLibrary::directory()
-                                         : QFileInfo(mCurrentPath).absolutePath();
+    QString dir = currentPath().isEmpty() ? PresetLibrary::directory()
+                                          : QFileInfo(currentPath()).absolutePath();
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open species or project"), dir,
         tr("Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;"
@@ -422,10 +1033,21 @@ void MainWindow::showOpenDialog() {
     if (!path.isEmpty()) openSpecies(path);
 }
 
+void MainWindow::showSaveAsDialog() {
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save project as"),
+        mDocument->path().isEmpty() ? QStringLiteral("forest.sylva") : mDocument->path(),
+        tr("Sylva projects (*.sylva)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".sylva");
+    saveAs(path);
+}
+
 void MainWindow::showScreenshotDialog() {
-    const QString suggested = mResult.speciesName.isEmpty()
-                                  ? QStringLiteral("sylva.png")
-                                  : QFileInfo(mResult.path).completeBaseName() + ".png";
+    const QString suggested =
+        QFileInfo(currentPath().isEmpty() ? QStringLiteral("sylva") : currentPath())
+            .completeBaseName() +
+        ".png";
     const QString path = QFileDialog::getSaveFileName(this, tr("Save screenshot"), suggested,
                                                       tr("Images (*.png *.jpg *.bmp)"));
     if (!path.isEmpty()) saveScreenshot(path);

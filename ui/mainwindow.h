@@ -1,14 +1,17 @@
 #pragma once
 
+#include <functional>
 #include <map>
 
 #include <QDateTime>
+#include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QString>
 
-#include "ui/attributecolors.h"
-#include "ui/treegenerator.h"
+#include "document/document.h"
+#include "ui/generation/treegenerator.h"
+#include "ui/viewport/attributecolors.h"
 
 class QAction;
 class QFileSystemWatcher;
@@ -18,15 +21,31 @@ class QActionGroup;
 class QLabel;
 class QMenu;
 class QProgressBar;
+class QToolButton;
+class QTreeView;
+class QUndoView;
+
+namespace sylva::doc {
+class Autosave;
+}
 
 namespace sylva::ui {
 
+class DocumentGenerator;
+class MessagesPanel;
+class OutlinerModel;
+class PropertiesPanel;
+class PythonConsole;
 class StatsPanel;
 class Viewport;
 
-/// The editor's main window: the 3D viewport in the middle, a dock with the tree's statistics,
-/// File / Presets / View menus. Species are generated on a worker thread (QtConcurrent); the
-/// window stays responsive and a newer request cancels an older one.
+/// The editor's main window. It only assembles the rooms of `ui/`: the document (core/document:
+/// the project, its undo history, autosave) with its views (outliner, properties, undo history,
+/// statistics, messages), the generation worker, the viewport and the Python console. Every
+/// edit, from a widget, a menu or a script, goes through the document.
+///
+/// A species or grammar file opens as a preview of that one species (as `sylva-cli tree` makes
+/// it); a project opens into the document and is edited there.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -36,83 +55,150 @@ public:
 
     Viewport* viewport() const { return mViewport; }
     StatsPanel* statsPanel() const { return mStats; }
+    MessagesPanel* messages() const { return mMessages; }
     QMenu* presetsMenu() const { return mPresetsMenu; }
+    doc::Document& document() { return *mDocument; }
+    doc::Autosave& autosave() { return *mAutosave; }
+    DocumentGenerator& generator() { return *mGenerator; }
+    QTreeView* outliner() const { return mOutliner; }
+    OutlinerModel* outlinerModel() const { return mOutlinerModel; }
+    PropertiesPanel* properties() const { return mProperties; }
+    PythonConsole* console() const { return mConsole; }
 
-    /// Starts generating the species file at \p path, or a project's whole forest with its
-    /// obstacles (isProjectFile(): `.sylva`, built as `sylva-cli forest` builds it);
-    /// generationFinished() tells when it is done. Errors never throw: they go to the status bar
-    /// and the stats dock, and the last good tree stays.
+    /// Opens a project into the document (openProject) or a species file as a preview;
+    /// generationFinished() tells when it is shown. Errors never throw: they go to the status
+    /// bar, the Messages dock and the stats dock, and the last good tree stays.
     void openSpecies(const QString& path);
-    /// Opens PresetLibrary::defaultPreset(); false (with a message) when there is none.
+    /// Opens a project into the document. With unsaved edits it asks first (askUser). A file
+    /// that cannot be read keeps the open document and says why; false then.
+    bool openProject(const QString& path);
+    /// File ▸ New: an empty project (asks first with unsaved edits).
+    bool newDocument();
+    /// File ▸ Save / Save As: atomic; false with a message when writing fails.
+    bool save();
+    bool saveAs(const QString& path);
+    /// File ▸ Revert: the file as saved, dropping the edits (asks first).
+    bool revert();
+    /// Opens PresetLibrary::defaultPreset() as a preview; false (with a message) when none.
     bool openDefaultPreset();
-    /// Generates the current species file again (after editing it on disk).
+    /// Generates the shown species or project again (after editing a file on disk).
     void reload();
     /// File ▸ Reload automatically (on by default): regenerate when a file the shown result was
-    /// read from changes on disk (GenerationResult::sources: the species or project, its grammar
-    /// files, a project's species and obstacle meshes), also when an editor saves by writing a
-    /// new file and renaming it over the old one. Changes within 250 ms are one reload.
+    /// read from changes on disk. A change to the open project's own file with unsaved edits
+    /// asks before reloading.
     void setAutoReload(bool on);
     bool autoReload() const;
-    /// The files watched for automatic reloading (absolute paths).
     QStringList watchedFiles() const { return mSources; }
     /// Saves the viewport's current image; false (with a message) on failure.
     bool saveScreenshot(const QString& path);
-    /// Exports what is shown (File ▸ Export…) by \p path's extension, exactly as `sylva-cli
-    /// tree` (a species) or `sylva-cli forest` (a project) writes it: `.obj` (+ `.mtl` and
-    /// textures), `.glb`, `.gltf` or `.fbx`. False, with a message, when there is nothing to
-    /// export or writing fails (nothing half-written is left at \p path).
+    /// Saves an image of the whole window, docks and menus included.
+    bool saveWindowScreenshot(const QString& path);
+    /// Exports what is shown by \p path's extension, exactly as `sylva-cli tree` (a species) or
+    /// `sylva-cli forest` (the document's project) writes it.
     bool exportTo(const QString& path);
 
-    /// The species file shown (or being generated).
-    QString currentPath() const { return mCurrentPath; }
-    /// The last successful generation (empty result before the first).
-    const GenerationResult& lastResult() const { return mResult; }
-    /// The message of the last failed generation; cleared by a successful one.
+    /// The species file previewed, or the document's file.
+    QString currentPath() const;
+    /// The last successful generation of what is shown (preview or document).
+    const GenerationResult& lastResult() const;
     QString lastError() const { return mLastError; }
-    bool isGenerating() const { return mWatcher.isRunning(); }
+    bool isGenerating() const;
+    bool isPreview() const { return mPreview; }
+    /// Waits (running the event loop) until the current generation ends; false on timeout.
+    bool waitForGeneration(int timeoutMs = 600000);
+    /// Milliseconds from the last edit to its new meshes drawn on screen.
+    double lastEditToScreenMs() const { return mEditToScreenMs; }
 
-    /// Colours the tree by its materials or a node attribute (View ▸ Colour by); modes the tree
-    /// lacks (light, vigour and age come from self-organizing growth) fall back to materials.
     void setColorBy(ColorBy mode);
     ColorBy colorBy() const { return mColorBy; }
+
+    /// What a question to the user answers; tests and scripts replace the dialog.
+    enum class Answer { Save, Discard, Cancel, Yes, No };
+    using AskHandler = std::function<Answer(const QString& question, bool canSave)>;
+    void setAskHandler(AskHandler handler) { mAsk = std::move(handler); }
+    /// Offers to restore an autosave left by a crash (askUser); with \p force, restores it
+    /// without asking. True when one was restored.
+    bool offerRecovery(bool force = false);
+
+    /// Reports an error (status bar, Messages, stats dock).
+    void reportError(const QString& message);
 
 Q_SIGNALS:
     /// Emitted on the GUI thread when a generation ends (not when it was superseded).
     void generationFinished(bool ok);
 
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
 private:
+    void createDocks();
     void createMenus();
     void populatePresetsMenu();
-    void onGenerationFinished();
+    void populateRecentMenu();
+    void addRecent(const QString& path);
+    void onPreviewFinished();
+    void onDocumentGenerated(bool ok, const QString& error);
+    void onDocumentChanged(const doc::DocumentChange& change);
+    void showDocument(bool frame);
+    void updateTitle();
+    bool maybeDiscard();
+    Answer askUser(const QString& question, bool canSave);
     void showOpenDialog();
+    void showSaveAsDialog();
     void showScreenshotDialog();
     void showExportDialog();
-    void reportError(const QString& message);
+    void showImportObstacleDialog();
+    void showAddSpeciesDialog();
+    void addTreeAtTarget();
+    void deleteSelection();
+    void duplicateSelection();
+    void selectAllTrees();
     void applyColoring();
     void watchSources(const QStringList& sources, const QList<QDateTime>& stamps);
     void onSourcesTouched();
+    void syncOutlinerSelection();
+    void setBusy(bool busy);
 
+    doc::Document* mDocument = nullptr;
+    doc::Autosave* mAutosave = nullptr;
+    DocumentGenerator* mGenerator = nullptr;
     Viewport* mViewport = nullptr;
     StatsPanel* mStats = nullptr;
-    QDockWidget* mStatsDock = nullptr;
+    MessagesPanel* mMessages = nullptr;
+    PropertiesPanel* mProperties = nullptr;
+    OutlinerModel* mOutlinerModel = nullptr;
+    QTreeView* mOutliner = nullptr;
+    QUndoView* mUndoView = nullptr;
+    PythonConsole* mConsole = nullptr;
+    std::map<QString, QDockWidget*> mDocks;
     QMenu* mPresetsMenu = nullptr;
+    QMenu* mRecentMenu = nullptr;
+    QMenu* mViewMenu = nullptr;
     QActionGroup* mPresetGroup = nullptr;
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
     QAction* mAutoReloadAction = nullptr;
     QFileSystemWatcher* mFileWatcher = nullptr;
     QTimer* mReloadTimer = nullptr;
-    QStringList mSources;                 ///< files of the shown (or failed) result
-    std::map<QString, QDateTime> mStamps; ///< their modification times when watched
+    QStringList mSources;
+    std::map<QString, QDateTime> mStamps;
     QActionGroup* mColorGroup = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;
     QProgressBar* mBusy = nullptr;
+    QToolButton* mCancel = nullptr;
+    bool mSyncingSelection = false;
 
-    QFutureWatcher<GenerationResult> mWatcher;
-    QString mCurrentPath;
+    bool mPreview = false;                     ///< a species file is shown instead of the document
+    QFutureWatcher<GenerationResult> mWatcher; ///< the preview's generation
+    QString mPreviewPath;
+    GenerationResult mPreviewResult;
     QString mLastError;
-    GenerationResult mResult;
+    bool mFrameNext = false; ///< frame (or look from the project camera) at the next result
+    QElapsedTimer mSinceEdit;
+    double mEditToScreenMs = 0.0;
+    bool mAwaitingFrame = false;
+    AskHandler mAsk;
 };
 
 } // namespace sylva::ui

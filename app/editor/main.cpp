@@ -2,7 +2,9 @@
 // (default: the ternary tree preset) or a project's forest; `sylva --screenshot out.png [--size
 // WxH] [species.json]` renders the viewport to a PNG and exits (needs an X server; use xvfb-run on
 // a headless machine);
-// `--color-by light|vigour|age|order` colours the tree by a node attribute (View ▸ Colour by).
+// `--color-by light|vigour|age|order` colours the tree by a node attribute (View ▸ Colour by);
+// `sylva --script file.py [project]` runs a Python script in the window and exits with its
+// status; `--restore` / `--discard-autosave` answer the crash-recovery question without asking.
 
 #include <cstdio>
 #include <memory>
@@ -12,28 +14,34 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QTimer>
 #include <QTranslator>
 
+#include "document/autosave.h"
 #include "engine/util/memorypolicy.h"
 #include "ui/mainwindow.h"
-#include "ui/viewport.h"
+#include "ui/scripting/pythonhost.h"
+#include "ui/viewport/viewport.h"
 
 namespace {
 
 void installTranslators(QApplication& app) {
+    // View ▸ Language overrides the system locale.
+    const QString chosen = QSettings().value(QStringLiteral("language")).toString();
+    const QLocale locale = chosen.isEmpty() ? QLocale() : QLocale(chosen);
     // Both translators are parented to the application, which outlives every window.
     auto* qt = new QTranslator(&app);
-    if (qt->load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
+    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QApplication::installTranslator(qt);
     auto* sylva = new QTranslator(&app);
-    if (sylva->load(QLocale(), QStringLiteral("sylva"), QStringLiteral("_"),
-                    QStringLiteral(":/i18n")))
+    if (sylva->load(locale, QStringLiteral("sylva"), QStringLiteral("_"), QStringLiteral(":/i18n")))
         QApplication::installTranslator(sylva);
 }
 
@@ -60,6 +68,15 @@ bool parseColorBy(const QString& text, sylva::ui::ColorBy& mode) {
             return true;
         }
     return false;
+}
+
+// Lets the window be shown and laid out before a script looks at it.
+void waitUntilShown(QWidget& window) {
+    QElapsedTimer clock;
+    clock.start();
+    while (!window.isVisible() && clock.elapsed() < 5000)
+        QApplication::processEvents(QEventLoop::AllEvents, 50);
+    QApplication::processEvents();
 }
 
 void fail(const QString& message) {
@@ -100,6 +117,21 @@ int main(int argc, char* argv[]) {
         QApplication::translate(
             "main", "Colour the tree by <mode>: material, light, vigour, age or order."),
         QStringLiteral("mode"));
+    const QCommandLineOption scriptOption(
+        QStringLiteral("script"),
+        QApplication::translate("main",
+                                "Run the Python script <file> in the editor (after opening the "
+                                "project, if one is given) and exit with its status."),
+        QStringLiteral("file"));
+    const QCommandLineOption restoreOption(
+        QStringLiteral("restore"),
+        QApplication::translate("main", "Restore edits autosaved before a crash without asking."));
+    const QCommandLineOption discardOption(
+        QStringLiteral("discard-autosave"),
+        QApplication::translate("main", "Discard edits autosaved before a crash without asking."));
+    parser.addOption(scriptOption);
+    parser.addOption(restoreOption);
+    parser.addOption(discardOption);
     parser.addOption(screenshotOption);
     parser.addOption(sizeOption);
     parser.addOption(colorByOption);
@@ -138,10 +170,38 @@ int main(int argc, char* argv[]) {
         });
     }
 
-    if (positional.isEmpty())
-        window.openDefaultPreset();
-    else
+    const bool scriptMode = parser.isSet(scriptOption);
+    // A crash left autosaved edits: restore them (asked, or as the options say) before
+    // anything else is opened.
+    bool restored = false;
+    if (parser.isSet(discardOption))
+        window.autosave().discard();
+    else if (!screenshotMode && (parser.isSet(restoreOption) || !scriptMode))
+        restored = window.offerRecovery(parser.isSet(restoreOption));
+
+    if (!positional.isEmpty())
         window.openSpecies(QFileInfo(positional.first()).absoluteFilePath());
+    else if (!restored && !scriptMode)
+        window.openDefaultPreset();
+
+    if (scriptMode) {
+        const QString script = QFileInfo(parser.value(scriptOption)).absoluteFilePath();
+        // Scripts decide for themselves: no dialog waits for a person.
+        window.setAskHandler([](const QString&, bool canSave) {
+            return canSave ? sylva::ui::MainWindow::Answer::Discard
+                           : sylva::ui::MainWindow::Answer::Yes;
+        });
+        QTimer::singleShot(0, &window, [&window, script] {
+            waitUntilShown(window);
+            window.waitForGeneration();
+            const int status = sylva::ui::PythonHost::runScript(script);
+            window.setAskHandler([](const QString&, bool canSave) {
+                return canSave ? sylva::ui::MainWindow::Answer::Discard
+                               : sylva::ui::MainWindow::Answer::Yes;
+            });
+            QApplication::exit(status);
+        });
+    }
 
     if (screenshotMode) {
         const QString output = QFileInfo(parser.value(screenshotOption)).absoluteFilePath();
@@ -171,5 +231,8 @@ int main(int argc, char* argv[]) {
                              timer->start(50);
                          });
     }
-    return QApplication::exec();
+    const int status = QApplication::exec();
+    // A normal end: the autosave copy is only for crashes.
+    window.autosave().discard();
+    return status;
 }

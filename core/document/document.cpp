@@ -218,6 +218,35 @@ void Document::addSpecies(const std::string& name, const QString& file) {
         QCoreApplication::translate("Commands", "Add species")));
 }
 
+void Document::renameSpecies(const std::string& from, const std::string& to) {
+    const int i = speciesIndex(from);
+    if (i < 0) throw InvalidInput("unknown species '" + from + "'");
+    if (to.empty()) throw InvalidInput("a species needs a name");
+    if (to == from) return;
+    if (speciesIndex(to) >= 0) throw InvalidInput("the project already has a species '" + to + "'");
+    mUndo.beginMacro(QCoreApplication::translate("Commands", "Rename species"));
+    ProjectSpecies renamed = mProject.species[static_cast<std::size_t>(i)];
+    renamed.name = to;
+    mUndo.push(cmd::changeSpecies(*this, i, mProject.species[static_cast<std::size_t>(i)], renamed,
+                                  {}, true,
+                                  QCoreApplication::translate("Commands", "Rename species")));
+    for (std::size_t k = 0; k < mProject.instances.size(); ++k) {
+        if (mProject.instances[k].species != from) continue;
+        ProjectInstance t = mProject.instances[k];
+        t.species = to;
+        mUndo.push(cmd::changeTree(*this, mTreeIds[k], t, true));
+    }
+    for (std::size_t k = 0; k < mProject.domains.size(); ++k) {
+        auto it = mProject.domains[k].counts.find(from);
+        if (it == mProject.domains[k].counts.end()) continue;
+        PlacementDomain d = mProject.domains[k];
+        d.counts.erase(from);
+        d.counts[to] = it->second;
+        mUndo.push(cmd::changeDomain(*this, static_cast<int>(k), d, true));
+    }
+    mUndo.endMacro();
+}
+
 void Document::removeSpecies(const std::string& name) {
     const int i = speciesIndex(name);
     if (i < 0) throw InvalidInput("unknown species '" + name + "'");

@@ -99,6 +99,8 @@ public:
     int speciesIndex(const std::string& name) const;
     /// Adds a species from a species file (kept as a reference to the file).
     void addSpecies(const std::string& name, const QString& file);
+    /// Renames a species and every tree and domain count that uses it (one undo step).
+    void renameSpecies(const std::string& from, const std::string& to);
     /// Removes a species no tree and no domain uses.
     void removeSpecies(const std::string& name);
     /// The species' graph as JSON ({"nodes": [...], "output": ...}), read from its file when it

@@ -7,7 +7,7 @@
 
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
-#include "ui/attributecolors.h"
+#include "ui/viewport/attributecolors.h"
 
 using namespace sylva;
 using namespace sylva::ui;

@@ -17,20 +17,22 @@
 #include <QMouseEvent>
 #include <QProcess>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTranslator>
 #include <QWheelEvent>
 
+#include "document/presetlibrary.h"
 #include "engine/mesh/mesh.h"
+#include "ui/document/statspanel.h"
 #include "ui/mainwindow.h"
-#include "ui/orbitcamera.h"
-#include "ui/presetlibrary.h"
-#include "ui/statspanel.h"
-#include "ui/viewport.h"
+#include "ui/viewport/orbitcamera.h"
+#include "ui/viewport/viewport.h"
 
 using namespace sylva::ui;
+using sylva::doc::PresetLibrary;
 
 namespace {
 
@@ -172,6 +174,8 @@ class TestMainWindow : public QObject {
 
 private Q_SLOTS:
     void initTestCase() {
+        // Settings, recent files and the autosave copy go to a test folder, not the user's.
+        QStandardPaths::setTestModeEnabled(true);
         QVERIFY2(!qEnvironmentVariableIsEmpty("SYLVA_PRESETS_DIR"),
                  "run through ctest, which points SYLVA_PRESETS_DIR at presets/");
         QVERIFY2(QFileInfo::exists(PresetLibrary::defaultPreset()),
@@ -423,8 +427,11 @@ private Q_SLOTS:
             titles << action->text();
         QApplication::removeTranslator(&translator);
         QCOMPARE(titles.value(0), QStringLiteral("&Datei"));
-        QCOMPARE(titles.value(1), QStringLiteral("&Vorlagen"));
-        QCOMPARE(titles.value(2), QStringLiteral("&Ansicht"));
+        QCOMPARE(titles.value(1), QStringLiteral("&Bearbeiten"));
+        QCOMPARE(titles.value(2), QStringLiteral("&Szene"));
+        QCOMPARE(titles.value(3), QStringLiteral("&Vorlagen"));
+        QCOMPARE(titles.value(4), QStringLiteral("&Ansicht"));
+        QCOMPARE(titles.value(5), QStringLiteral("&Hilfe"));
     }
 
     /// The bundled demo project (what ./run.sh opens): its whole forest with the wall and the
@@ -444,12 +451,17 @@ private Q_SLOTS:
                  QStringLiteral("%1 t").arg(mWindow->lastResult().stats.at("co2_kg") / 1000.0, 0,
                                             'f', 1));
         QVERIFY(mWindow->lastResult().stats.at("co2_kg") > 10000.0);
-        QVERIFY(mWindow->windowTitle().contains(QStringLiteral("forest (43 trees)")));
+        QVERIFY2(mWindow->windowTitle().contains(QStringLiteral("forest.sylva (43 trees)")),
+                 qPrintable(mWindow->windowTitle()));
+        // Each tree drawn on its own (its identity kept); the obstacles in the static mesh.
+        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+        QCOMPARE(mWindow->viewport()->trees().front().id, 1u); // the hand-placed tree
+        QCOMPARE(mWindow->viewport()->trees().back().id, 0u);  // a domain's
         const sylva::mesh::Mesh& m = *mWindow->viewport()->mesh();
         QStringList materials;
         for (const sylva::mesh::Submesh& s : m.submeshes)
             materials << QString::fromStdString(s.material);
-        QCOMPARE(materials.join(QLatin1Char(',')), QStringLiteral("bark,leaf,obstacle"));
+        QCOMPARE(materials.join(QLatin1Char(',')), QStringLiteral("obstacle"));
         QMenu* colours = mWindow->findChild<QMenu*>(QStringLiteral("colorMenu"));
         QVERIFY(colours);
         for (QAction* action : colours->actions())
@@ -464,18 +476,16 @@ private Q_SLOTS:
         QVERIFY(glm::length(viewport->camera().eye() - glm::vec3(0, 25, 70)) > 1.0f);
         const QImage image = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
         QVERIFY(image.save(outputPath(QStringLiteral("ui_demo_project.png"))));
-        // The same view without the obstacle submesh, and empty: where only the sky was behind
-        // them, the pixels that the obstacles change are the wall and the boulder in grey.
-        auto withoutObstacles = std::make_shared<sylva::mesh::Mesh>(m);
-        const sylva::mesh::Submesh last = withoutObstacles->submeshes.back();
-        withoutObstacles->submeshes.pop_back();
-        withoutObstacles->indices.resize(last.firstIndex);
+        // The same view without the obstacles, and empty: where only the sky was behind them,
+        // the pixels that the obstacles change are the wall and the boulder in grey.
         const std::shared_ptr<const sylva::mesh::Mesh> full = viewport->mesh();
+        const std::vector<ViewTree> allTrees = viewport->trees();
         viewport->setGridVisible(false);
-        viewport->setMesh(withoutObstacles, false);
-        const QImage trees = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
         viewport->setMesh(std::make_shared<sylva::mesh::Mesh>(), false);
+        const QImage trees = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        viewport->setTrees({});
         const QImage empty = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        viewport->setTrees(allTrees);
         viewport->setMesh(full, false);
         viewport->setGridVisible(true);
         qint64 changed = 0, grey = 0, tree = 0;

@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
-#include "ui/orbitcamera.h"
+#include "ui/viewport/orbitcamera.h"
 
 using sylva::ui::OrbitCamera;
 

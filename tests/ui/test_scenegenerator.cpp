@@ -11,7 +11,7 @@
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
 #include "engine/scene/forestbuild.h"
-#include "ui/scenegenerator.h"
+#include "ui/generation/scenegenerator.h"
 
 using namespace sylva;
 using namespace sylva::ui;
@@ -65,37 +65,57 @@ private Q_SLOTS:
             treeVertices += t.mesh->vertexCount();
             treeTriangles += t.mesh->triangleCount();
         }
+        // Every tree on its own, in build order, with its mesh and its instance transform (a
+        // tree pruned away entirely by the wall has an empty mesh).
+        QCOMPARE(r.trees.size(), trees.size());
+        std::size_t drawnVertices = 0, drawnTriangles = 0;
+        for (std::size_t i = 0; i < trees.size(); ++i) {
+            const DrawnTree& d = r.trees[i];
+            QCOMPARE(d.instanceId, trees[i].instance.id);
+            QCOMPARE(d.mesh->positions, trees[i].mesh->positions);
+            QCOMPARE(d.mesh->indices, trees[i].mesh->indices);
+            QVERIFY(d.transform == trees[i].instance.transform());
+            // The hand-placed tree carries the document id of its instance.
+            QCOMPARE(d.docId, trees[i].instance.handPlaced ? trees[i].instance.id + 1 : 0u);
+            drawnVertices += d.mesh->vertexCount();
+            drawnTriangles += d.mesh->triangleCount();
+        }
+        QCOMPARE(drawnVertices, treeVertices);
+        QCOMPARE(drawnTriangles, treeTriangles);
+        // The obstacles, merged into the static mesh with the wall's corners as loaded.
         const mesh::Mesh& m = *r.mesh;
-        const mesh::Submesh* bark = findSubmesh(m, "bark");
         const mesh::Submesh* obstacle = findSubmesh(m, "obstacle");
-        QVERIFY(bark && obstacle);
-        const mesh::Submesh* leaf = findSubmesh(m, "leaf");
-        const std::size_t leafIndices = leaf ? leaf->indexCount : 0;
-        QCOMPARE((bark->indexCount + leafIndices) / 3, treeTriangles);
+        QVERIFY(obstacle);
+        QVERIFY(!findSubmesh(m, "bark"));
         QCOMPARE(std::size_t(obstacle->indexCount / 3), forest.obstacles->triangleCount());
         QCOMPARE(r.stats.at("obstacle_triangles"), double(forest.obstacles->triangleCount()));
-        QCOMPARE(m.vertexCount(), treeVertices + 3 * forest.obstacles->triangleCount());
+        QCOMPARE(m.vertexCount(), 3 * forest.obstacles->triangleCount());
         QCOMPARE(m.normals.size(), m.vertexCount());
-
-        // Every tree's vertices, in build order, placed by its instance transform (a tree
-        // pruned away entirely by the wall has none).
-        std::size_t base = 0;
-        for (const scene::ForestTree& t : trees) {
-            if (t.mesh->empty()) continue;
-            const glm::mat4 x = t.instance.transform();
-            for (std::size_t v : {std::size_t{0}, t.mesh->vertexCount() - 1}) {
-                const glm::vec3 want = glm::vec3(x * glm::vec4(t.mesh->positions[v], 1.0f));
-                QVERIFY2(glm::length(m.positions[base + v] - want) < 1e-4f,
-                         qPrintable(QString::fromStdString(t.name)));
-            }
-            base += t.mesh->vertexCount();
-        }
-        // The obstacle triangles come last, with the wall's corners as loaded.
-        const std::uint32_t firstObstacle = m.indices[obstacle->firstIndex];
-        QCOMPARE(std::size_t(firstObstacle), treeVertices);
         const env::ObstacleMesh& wall = forest.obstacles->meshes().front();
-        QCOMPARE(m.positions[firstObstacle], wall.vertices[wall.triangles.front().x]);
+        QCOMPARE(m.positions[m.indices[obstacle->firstIndex]],
+                 wall.vertices[wall.triangles.front().x]);
+        QCOMPARE(r.vertexCount(), treeVertices + m.vertexCount());
         QVERIFY(r.speciesName.contains(QStringLiteral("41")));
+    }
+
+    void unchangedTreesAreNotRegrown() {
+        const QString path = dataFile("projects/small.sylva");
+        doc::Project project = doc::loadProject(path);
+        const std::vector<doc::TreeId> ids{7};
+        SceneCaches caches;
+        const GenerationResult first = generateProject(project, path, ids, &caches);
+        QVERIFY2(first.ok(), qPrintable(first.error));
+        QCOMPARE(first.stats.at("regrown"), first.stats.at("trees"));
+        const GenerationResult second = generateProject(project, path, ids, &caches);
+        QCOMPARE(second.stats.at("regrown"), 0.0);
+        // The same meshes, shared: the viewport keeps their GPU buffers.
+        for (std::size_t i = 0; i < first.trees.size(); ++i)
+            QCOMPARE(second.trees[i].mesh.get(), first.trees[i].mesh.get());
+        project.instances[0].seed += 1;
+        const GenerationResult third = generateProject(project, path, ids, &caches);
+        QCOMPARE(third.stats.at("regrown"), 1.0);
+        QCOMPARE(third.trees[0].docId, 7u);
+        QVERIFY(third.trees[0].mesh.get() != first.trees[0].mesh.get());
     }
 
     void badProjectsGiveAMessage() {

@@ -1,4 +1,4 @@
-#include "ui/attributecolors.h"
+#include "ui/viewport/attributecolors.h"
 
 #include <algorithm>
 #include <array>

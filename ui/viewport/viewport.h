@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -8,11 +9,12 @@
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QSet>
 #include <QString>
 
 #include <glm/glm.hpp>
 
-#include "ui/orbitcamera.h"
+#include "ui/viewport/orbitcamera.h"
 
 class QOpenGLShaderProgram;
 
@@ -22,6 +24,14 @@ struct Mesh;
 
 namespace sylva::ui {
 
+/// One tree of a forest as the viewport draws it: its own mesh in its own frame, placed by
+/// \p transform (rotation, uniform scale, translation).
+struct ViewTree {
+    std::uint32_t id = 0; ///< the document's tree id; 0 for trees scattered by a domain
+    std::shared_ptr<const mesh::Mesh> mesh;
+    glm::mat4 transform{1.0f};
+};
+
 /// The 3D view: draws a mesh (bark and leaf submeshes) over a gradient background and a ground
 /// grid with OpenGL 3.3 core, and lets the user orbit (left drag), pan (right or middle drag,
 /// or Shift + left drag), zoom (wheel) and frame the tree (F).
@@ -29,6 +39,13 @@ class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
 public:
+    /// A run of triangles drawn in one material colour.
+    struct DrawRange {
+        glm::vec3 color;
+        std::uint32_t firstIndex = 0;
+        std::uint32_t indexCount = 0;
+    };
+
     /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
     static glm::vec3 materialColor(const std::string& material);
 
@@ -49,6 +66,18 @@ public:
         return !mVertexColors.empty() && mVertexColors.size() == vertexCount();
     }
     const std::shared_ptr<const mesh::Mesh>& mesh() const { return mMesh; }
+
+    /// Draws each tree of a forest separately (beside the mesh of setMesh(), which then holds
+    /// the obstacles). A mesh already on the GPU (the same pointer as before: the tree did not
+    /// change) is not uploaded again. With \p frame the camera frames everything.
+    void setTrees(std::vector<ViewTree> trees, bool frame = false);
+    const std::vector<ViewTree>& trees() const { return mTrees; }
+    /// Trees drawn highlighted (the selection) and trees not drawn (hidden in the outliner).
+    void setHighlightedTrees(const QSet<std::uint32_t>& ids);
+    void setHiddenTrees(const QSet<std::uint32_t>& ids);
+    const QSet<std::uint32_t>& highlightedTrees() const { return mHighlighted; }
+    /// Meshes uploaded to the GPU since construction (for tests: unchanged trees are not).
+    std::size_t uploads() const { return mUploads; }
 
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
@@ -86,11 +115,6 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    struct DrawRange {
-        glm::vec3 color;
-        std::uint32_t firstIndex = 0;
-        std::uint32_t indexCount = 0;
-    };
     enum class DragMode { None, Orbit, Pan };
 
     void releaseGl();
@@ -132,6 +156,21 @@ private:
     float mGridExtent = 0.0f;
     glm::vec3 mGridCenter{0.0f};
     std::vector<DrawRange> mRanges;
+
+    /// One tree mesh on the GPU, kept while some tree draws it.
+    struct GpuMesh {
+        std::shared_ptr<const mesh::Mesh> mesh;
+        GLuint vao = 0, vbo = 0, ibo = 0;
+        std::vector<DrawRange> ranges;
+    };
+    void syncTreeBuffers();
+    void releaseTreeBuffers();
+    void updateBounds();
+    std::vector<ViewTree> mTrees;
+    std::map<const mesh::Mesh*, GpuMesh> mGpuTrees;
+    bool mTreesDirty = false;
+    QSet<std::uint32_t> mHighlighted, mHidden;
+    std::size_t mUploads = 0;
 };
 
 } // namespace sylva::ui

@@ -1,4 +1,4 @@
-#include "ui/presetlibrary.h"
+#include "document/presetlibrary.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -7,7 +7,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
-namespace sylva::ui {
+namespace sylva::doc {
 
 namespace {
 
@@ -74,4 +74,4 @@ QString PresetLibrary::defaultPreset() {
     return all.isEmpty() ? QString() : all.first().path;
 }
 
-} // namespace sylva::ui
+} // namespace sylva::doc

@@ -1,4 +1,7 @@
-#include "ui/treegenerator.h"
+#include "ui/generation/treegenerator.h"
+
+#include "document/errormessage.h"
+#include "document/filerefs.h"
 
 #include <algorithm>
 #include <exception>
@@ -18,17 +21,19 @@
 
 namespace sylva::ui {
 
-namespace {
-
-QString describe(const InvalidInput& e) {
-    if (e.diagnostics().empty()) return QString::fromStdString(e.what());
-    QStringList lines;
-    for (const Diagnostic& d : e.diagnostics())
-        lines << QString::fromStdString(d.format());
-    return lines.join(QLatin1Char('\n'));
+std::size_t GenerationResult::vertexCount() const {
+    std::size_t n = mesh ? mesh->vertexCount() : 0;
+    for (const DrawnTree& t : trees)
+        n += t.mesh ? t.mesh->vertexCount() : 0;
+    return n;
 }
 
-} // namespace
+std::size_t GenerationResult::triangleCount() const {
+    std::size_t n = mesh ? mesh->triangleCount() : 0;
+    for (const DrawnTree& t : trees)
+        n += t.mesh ? t.mesh->triangleCount() : 0;
+    return n;
+}
 
 double GenerationResult::height() const {
     if (auto it = stats.find("height"); it != stats.end()) return it->second;
@@ -76,9 +81,7 @@ void addSourceFiles(const graph::SpeciesGraph& graph, QStringList& out) {
     for (const graph::NodeDesc& node : graph.nodes) {
         if (!node.params.isObject()) continue;
         for (const auto& [key, value] : node.params.toObject()) {
-            const bool isFile = key == "file" || key == "grammar_file" ||
-                                (key.size() > 5 && key.ends_with("_file"));
-            if (!isFile || !value.isString()) continue;
+            if (!doc::isFileParam(key) || !value.isString()) continue;
             std::filesystem::path p(value.toString());
             if (p.is_relative() && !graph.baseDir.empty()) p = graph.baseDir / p;
             const QString file = QFileInfo(QString::fromStdString(p.string())).absoluteFilePath();
@@ -106,20 +109,13 @@ GenerationResult runGuarded(const QString& path,
     try {
         graph::registerBuiltinNodeTypes();
         body(result);
-    } catch (const Cancelled&) {
-        result.cancelled = true;
-    } catch (const InvalidInput& e) {
-        result.error = describe(e);
-    } catch (const IoError& e) {
-        result.error = QString::fromStdString(e.what());
-    } catch (const LimitExceeded& e) {
-        result.error = QString::fromStdString(e.what());
-    } catch (const std::bad_alloc&) {
-        result.error = QObject::tr("%1: out of memory while generating the tree")
-                           .arg(QFileInfo(path).fileName());
-    } catch (const std::exception& e) {
-        result.error = QObject::tr("%1: unexpected error: %2")
-                           .arg(QFileInfo(path).fileName(), QString::fromUtf8(e.what()));
+    } catch (...) {
+        const doc::ErrorReport report =
+            doc::describeError(std::current_exception(), QFileInfo(path).fileName().toStdString());
+        if (report.kind == doc::ErrorReport::Kind::Cancelled)
+            result.cancelled = true;
+        else
+            result.error = QString::fromStdString(report.message);
     }
     result.elapsedMs = double(timer.nsecsElapsed()) * 1e-6;
     return result;

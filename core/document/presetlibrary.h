@@ -3,7 +3,7 @@
 #include <QList>
 #include <QString>
 
-namespace sylva::ui {
+namespace sylva::doc {
 
 /// One species file of the presets folder.
 struct PresetInfo {
@@ -30,4 +30,4 @@ public:
     static QString defaultPreset();
 };
 
-} // namespace sylva::ui
+} // namespace sylva::doc

@@ -4,6 +4,10 @@
 
 class QLabel;
 
+namespace sylva::doc {
+class Document;
+}
+
 namespace sylva::ui {
 
 struct GenerationResult;
@@ -25,6 +29,10 @@ public:
     /// Shows a warning of the last load (e.g. a project from a newer Sylva) under the statistics.
     void showWarning(const QString& message);
 
+    /// The selected trees of the document: how many, and their height, DBH, wood volume,
+    /// biomass and CO2 from \p result (the last generation).
+    void showSelection(const doc::Document& document, const GenerationResult& result);
+
     /// The text of a value label by object name (for tests); empty if there is none.
     QString value(const QString& objectName) const;
 
@@ -40,6 +48,7 @@ private:
     QLabel* mTime = nullptr;
     QLabel* mCo2 = nullptr;
     QLabel* mStatus = nullptr;
+    QLabel* mSelection = nullptr;
 };
 
 } // namespace sylva::ui

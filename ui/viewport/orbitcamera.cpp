@@ -1,4 +1,4 @@
-#include "ui/orbitcamera.h"
+#include "ui/viewport/orbitcamera.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "ui/viewport.h"
+#include "ui/viewport/viewport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,14 +24,16 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColor;
 uniform mat4 uViewProj;
+uniform mat4 uModel; // a tree's instance transform: rotation, uniform scale, translation
 out vec3 vNormal;
 out vec3 vWorld;
 out vec3 vColor;
 void main() {
-    vNormal = aNormal;
-    vWorld = aPosition;
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    vNormal = mat3(uModel) * aNormal;
+    vWorld = world.xyz;
     vColor = aColor;
-    gl_Position = uViewProj * vec4(aPosition, 1.0);
+    gl_Position = uViewProj * world;
 }
 )";
 
@@ -46,6 +48,7 @@ uniform vec3 uAlbedo;
 uniform bool uVertexColor; // colour by a node attribute instead of the material
 uniform vec3 uLightDir;
 uniform vec3 uEye;
+uniform float uHighlight; // a selected tree: blended towards orange
 out vec4 fragColor;
 void main() {
     vec3 n = vNormal;
@@ -59,6 +62,7 @@ void main() {
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
     vec3 albedo = uVertexColor ? vColor : uAlbedo;
     vec3 color = albedo * (0.55 * ambient + 1.35 * vec3(1.0, 0.96, 0.90) * diffuse);
+    color = mix(color, vec3(1.0, 0.45, 0.05), uHighlight);
     fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
 }
 )";
@@ -134,6 +138,40 @@ void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4
                             QMatrix4x4(glm::value_ptr(m)).transposed());
 }
 
+std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh);
+
+/// Position, normal and attribute colour per vertex (the colour zero when \p colors does not
+/// match), as the mesh shader reads them.
+std::vector<float> interleave(const mesh::Mesh& m, const std::vector<glm::vec3>& colors) {
+    const std::size_t vertexCount = m.positions.size();
+    const std::vector<glm::vec3> computed =
+        m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
+    const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
+    const bool colored = colors.size() == vertexCount;
+    std::vector<float> interleaved(vertexCount * 9, 0.0f);
+    for (std::size_t i = 0; i < vertexCount; ++i) {
+        float* v = &interleaved[i * 9];
+        v[0] = m.positions[i].x;
+        v[1] = m.positions[i].y;
+        v[2] = m.positions[i].z;
+        v[3] = normals[i].x;
+        v[4] = normals[i].y;
+        v[5] = normals[i].z;
+        if (colored) {
+            v[6] = colors[i].x;
+            v[7] = colors[i].y;
+            v[8] = colors[i].z;
+        }
+    }
+    return interleaved;
+}
+
+bool indicesInRange(const mesh::Mesh& m) {
+    for (std::uint32_t index : m.indices)
+        if (index >= m.positions.size()) return false;
+    return true;
+}
+
 std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh) {
     std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
@@ -192,19 +230,7 @@ void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame) {
     mMesh = std::move(mesh);
     mVertexColors.clear();
     mMeshDirty = true;
-    if (mMesh && !mMesh->empty()) {
-        glm::vec3 lo(std::numeric_limits<float>::max());
-        glm::vec3 hi(std::numeric_limits<float>::lowest());
-        for (const glm::vec3& p : mMesh->positions) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
-        mBoundsLo = lo;
-        mBoundsHi = hi;
-    } else {
-        mBoundsLo = {-0.5f, 0.0f, -0.5f};
-        mBoundsHi = {0.5f, 1.0f, 0.5f};
-    }
+    updateBounds();
     if (frame) {
         applyFrame();
         Q_EMIT cameraChanged();
@@ -230,7 +256,7 @@ void Viewport::frameScene() {
 }
 
 void Viewport::applyFrame() {
-    if (mMesh && !mMesh->empty())
+    if (mMesh && !mMesh->empty() && mTrees.empty())
         mCamera.framePoints(mMesh->positions, aspect());
     else
         mCamera.frame(mBoundsLo, mBoundsHi, aspect());
@@ -303,10 +329,12 @@ void Viewport::initializeGL() {
 
     mGlReady = true;
     mMeshDirty = true;
+    mTreesDirty = true;
     mGridExtent = 0.0f;
 }
 
 void Viewport::releaseGl() {
+    releaseTreeBuffers();
     glDeleteVertexArrays(1, &mMeshVao);
     glDeleteBuffers(1, &mMeshVbo);
     glDeleteBuffers(1, &mMeshIbo);
@@ -320,39 +348,35 @@ void Viewport::releaseGl() {
     mGlReady = false;
 }
 
+namespace {
+std::vector<Viewport::DrawRange> rangesOf(const mesh::Mesh& m) {
+    std::vector<Viewport::DrawRange> ranges;
+    const auto total = static_cast<std::uint32_t>(m.indices.size());
+    if (m.submeshes.empty()) {
+        ranges.push_back({Viewport::materialColor("bark"), 0, total});
+        return ranges;
+    }
+    for (const mesh::Submesh& s : m.submeshes) {
+        if (s.firstIndex >= total) continue;
+        const std::uint32_t count = std::min(s.indexCount, total - s.firstIndex);
+        ranges.push_back({Viewport::materialColor(s.material), s.firstIndex, count - count % 3});
+    }
+    return ranges;
+}
+} // namespace
+
 void Viewport::uploadMesh() {
     mMeshDirty = false;
     mRanges.clear();
     if (!mMesh || mMesh->empty() || mMesh->indices.empty()) return;
     const mesh::Mesh& m = *mMesh;
-    const std::size_t vertexCount = m.positions.size();
     // A bad index would make the driver read out of bounds; refuse the mesh instead.
-    for (std::uint32_t index : m.indices) {
-        if (index >= vertexCount) {
-            mGlError = tr("The mesh has an index out of range; it is not drawn.");
-            return;
-        }
+    if (!indicesInRange(m)) {
+        mGlError = tr("The mesh has an index out of range; it is not drawn.");
+        return;
     }
-    const std::vector<glm::vec3> computed =
-        m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
-    const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
-
-    const bool colored = mVertexColors.size() == vertexCount;
-    std::vector<float> interleaved(vertexCount * 9, 0.0f);
-    for (std::size_t i = 0; i < vertexCount; ++i) {
-        float* v = &interleaved[i * 9];
-        v[0] = m.positions[i].x;
-        v[1] = m.positions[i].y;
-        v[2] = m.positions[i].z;
-        v[3] = normals[i].x;
-        v[4] = normals[i].y;
-        v[5] = normals[i].z;
-        if (colored) {
-            v[6] = mVertexColors[i].x;
-            v[7] = mVertexColors[i].y;
-            v[8] = mVertexColors[i].z;
-        }
-    }
+    const bool colored = mVertexColors.size() == m.positions.size();
+    const std::vector<float> interleaved = interleave(m, mVertexColors);
     mUseVertexColors = colored;
     glBindVertexArray(mMeshVao);
     glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
@@ -363,16 +387,109 @@ void Viewport::uploadMesh() {
                  m.indices.data(), GL_STATIC_DRAW);
     glBindVertexArray(0);
 
-    const auto total = static_cast<std::uint32_t>(m.indices.size());
-    if (m.submeshes.empty()) {
-        mRanges.push_back({materialColor("bark"), 0, total});
-    } else {
-        for (const mesh::Submesh& s : m.submeshes) {
-            if (s.firstIndex >= total) continue;
-            const std::uint32_t count = std::min(s.indexCount, total - s.firstIndex);
-            mRanges.push_back({materialColor(s.material), s.firstIndex, count - count % 3});
+    mRanges = rangesOf(m);
+}
+
+void Viewport::setTrees(std::vector<ViewTree> trees, bool frame) {
+    mTrees = std::move(trees);
+    mTreesDirty = true;
+    updateBounds();
+    if (frame) {
+        applyFrame();
+        Q_EMIT cameraChanged();
+    }
+    update();
+}
+
+void Viewport::setHighlightedTrees(const QSet<std::uint32_t>& ids) {
+    mHighlighted = ids;
+    update();
+}
+
+void Viewport::setHiddenTrees(const QSet<std::uint32_t>& ids) {
+    mHidden = ids;
+    update();
+}
+
+void Viewport::updateBounds() {
+    glm::vec3 lo(std::numeric_limits<float>::max());
+    glm::vec3 hi(std::numeric_limits<float>::lowest());
+    auto add = [&](const glm::vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    };
+    if (mMesh)
+        for (const glm::vec3& p : mMesh->positions)
+            add(p);
+    for (const ViewTree& t : mTrees) {
+        if (!t.mesh || t.mesh->empty()) continue;
+        glm::vec3 tlo(std::numeric_limits<float>::max()), thi(std::numeric_limits<float>::lowest());
+        for (const glm::vec3& p : t.mesh->positions) {
+            tlo = glm::min(tlo, p);
+            thi = glm::max(thi, p);
+        }
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec3 c((corner & 1) ? thi.x : tlo.x, (corner & 2) ? thi.y : tlo.y,
+                              (corner & 4) ? thi.z : tlo.z);
+            add(glm::vec3(t.transform * glm::vec4(c, 1.0f)));
         }
     }
+    if (lo.x > hi.x) {
+        mBoundsLo = {-0.5f, 0.0f, -0.5f};
+        mBoundsHi = {0.5f, 1.0f, 0.5f};
+    } else {
+        mBoundsLo = lo;
+        mBoundsHi = hi;
+    }
+}
+
+void Viewport::syncTreeBuffers() {
+    mTreesDirty = false;
+    std::map<const mesh::Mesh*, GpuMesh> kept;
+    for (const ViewTree& t : mTrees) {
+        if (!t.mesh || t.mesh->empty() || kept.count(t.mesh.get())) continue;
+        auto old = mGpuTrees.find(t.mesh.get());
+        if (old != mGpuTrees.end()) {
+            kept.insert(mGpuTrees.extract(old));
+            continue;
+        }
+        if (!indicesInRange(*t.mesh)) continue;
+        GpuMesh gpu;
+        gpu.mesh = t.mesh;
+        gpu.ranges = rangesOf(*t.mesh);
+        glGenVertexArrays(1, &gpu.vao);
+        glGenBuffers(1, &gpu.vbo);
+        glGenBuffers(1, &gpu.ibo);
+        glBindVertexArray(gpu.vao);
+        glBindBuffer(GL_ARRAY_BUFFER, gpu.vbo);
+        const std::vector<float> data = interleave(*t.mesh, {});
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
+                     GL_STATIC_DRAW);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.ibo);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                     GLsizeiptr(t.mesh->indices.size() * sizeof(std::uint32_t)),
+                     t.mesh->indices.data(), GL_STATIC_DRAW);
+        constexpr GLsizei kStride = 9 * sizeof(float);
+        for (GLuint a = 0; a < 3; ++a) {
+            glEnableVertexAttribArray(a);
+            glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, kStride,
+                                  reinterpret_cast<void*>(std::uintptr_t(3 * a) * sizeof(float)));
+        }
+        glBindVertexArray(0);
+        ++mUploads;
+        kept.emplace(t.mesh.get(), std::move(gpu));
+    }
+    releaseTreeBuffers(); // those no tree draws any more
+    mGpuTrees = std::move(kept);
+}
+
+void Viewport::releaseTreeBuffers() {
+    for (auto& [key, gpu] : mGpuTrees) {
+        glDeleteVertexArrays(1, &gpu.vao);
+        glDeleteBuffers(1, &gpu.vbo);
+        glDeleteBuffers(1, &gpu.ibo);
+    }
+    mGpuTrees.clear();
 }
 
 void Viewport::buildGrid() {
@@ -431,6 +548,7 @@ void Viewport::paintGL() {
         return;
     }
     if (mMeshDirty) uploadMesh();
+    if (mTreesDirty) syncTreeBuffers();
     if (mGridExtent <= 0.0f) buildGrid();
 
     glClearColor(kBackgroundBottom.x, kBackgroundBottom.y, kBackgroundBottom.z, 1.0f);
@@ -461,8 +579,10 @@ void Viewport::paintGL() {
     }
 
     glDepthMask(GL_TRUE);
-    if (!mRanges.empty()) {
+    if (!mRanges.empty() || !mGpuTrees.empty()) {
         mMeshProgram->bind();
+        setUniform(*mMeshProgram, "uModel", glm::mat4(1.0f));
+        mMeshProgram->setUniformValue("uHighlight", 0.0f);
         setUniform(*mMeshProgram, "uViewProj", viewProj);
         setUniform(*mMeshProgram, "uEye", mCamera.eye());
         // A key light that follows the camera (above, to the left, from the front) keeps the
@@ -476,6 +596,21 @@ void Viewport::paintGL() {
             setUniform(*mMeshProgram, "uAlbedo", r.color);
             glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                            reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+        }
+        mMeshProgram->setUniformValue("uVertexColor", false);
+        for (const ViewTree& t : mTrees) {
+            if (!t.mesh || (t.id && mHidden.contains(t.id))) continue;
+            auto gpu = mGpuTrees.find(t.mesh.get());
+            if (gpu == mGpuTrees.end()) continue;
+            setUniform(*mMeshProgram, "uModel", t.transform);
+            mMeshProgram->setUniformValue("uHighlight",
+                                          t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
+            glBindVertexArray(gpu->second.vao);
+            for (const DrawRange& r : gpu->second.ranges) {
+                setUniform(*mMeshProgram, "uAlbedo", r.color);
+                glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                               reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+            }
         }
     }
     glBindVertexArray(0);

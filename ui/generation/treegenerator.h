@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/export/treeexport.h"
+#include "engine/forest/metrics.h"
 #include "engine/util/progress.h"
 
 namespace sylva::mesh {
@@ -28,13 +29,26 @@ struct SpeciesGraph;
 
 namespace sylva::ui {
 
+/// One tree of a project's forest as the viewport draws it: its own mesh (shared with the next
+/// generation when the tree did not change) placed by its instance transform.
+struct DrawnTree {
+    std::uint32_t docId = 0; ///< the document's tree id (hand-placed trees); 0 for domain trees
+    std::uint32_t instanceId = 0; ///< the forest's instance id (name suffix)
+    std::shared_ptr<const mesh::Mesh> mesh;
+    glm::mat4 transform{1.0f};
+    forest::TreeMetrics metrics;
+};
+
 /// What one generation run produced. Plain data: it is handed from the worker thread to the UI
 /// through a QFuture, so no exception ever crosses threads or signals.
 struct GenerationResult {
     QString path;        ///< the species file that was loaded
     QString speciesName; ///< its "name", or the file's base name
+    /// A species: its tree. A project: its obstacles and terrain (world space, submeshes
+    /// "obstacle" and "ground"); the trees are in `trees`.
     std::shared_ptr<const mesh::Mesh> mesh;
     std::shared_ptr<const skel::Skeleton> skeleton;
+    std::vector<DrawnTree> trees;            ///< a project's trees, in instance order
     std::map<std::string, double> stats;     ///< from the graph's output node
     std::map<std::string, double> timingsMs; ///< per stage, from the graph's output node
     double elapsedMs = 0.0;                  ///< load + evaluate, wall clock
@@ -57,6 +71,9 @@ struct GenerationResult {
     bool cancelled = false;
 
     bool ok() const { return error.isEmpty() && !cancelled && mesh != nullptr; }
+    /// Vertices and triangles of the mesh and every tree.
+    std::size_t vertexCount() const;
+    std::size_t triangleCount() const;
     /// Tree height in metres: the output's "height" stat, else the mesh's vertical extent.
     double height() const;
     /// Number of branch segments: the "segments" stat, else the skeleton's segment count.

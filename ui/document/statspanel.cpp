@@ -1,4 +1,4 @@
-#include "ui/statspanel.h"
+#include "ui/document/statspanel.h"
 
 #include <QFileInfo>
 #include <QFormLayout>
@@ -6,9 +6,10 @@
 #include <QLocale>
 #include <QVBoxLayout>
 
+#include "document/document.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
-#include "ui/treegenerator.h"
+#include "ui/generation/treegenerator.h"
 
 namespace sylva::ui {
 
@@ -38,6 +39,8 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     mHeight = add(tr("Height:"), QStringLiteral("statHeight"));
     mTime = add(tr("Generation time:"), QStringLiteral("statTime"));
     mCo2 = add(tr("CO₂ stored:"), QStringLiteral("statCo2"));
+    mSelection = add(tr("Selection:"), QStringLiteral("statSelection"));
+    mSelection->setWordWrap(true);
 
     mStatus = new QLabel(this);
     mStatus->setObjectName(QStringLiteral("statStatus"));
@@ -51,8 +54,8 @@ void StatsPanel::showResult(const GenerationResult& result) {
     mSpecies->setText(result.speciesName);
     mFile->setText(QFileInfo(result.path).fileName());
     mFile->setToolTip(result.path);
-    mVertices->setText(QString::number(result.mesh ? result.mesh->vertexCount() : 0));
-    mTriangles->setText(QString::number(result.mesh ? result.mesh->triangleCount() : 0));
+    mVertices->setText(QString::number(result.vertexCount()));
+    mTriangles->setText(QString::number(result.triangleCount()));
     // A project's forest: how many trees; its segments and leaves are not counted.
     const auto trees = result.stats.find("trees");
     const bool forest = trees != result.stats.end();
@@ -72,6 +75,35 @@ void StatsPanel::showResult(const GenerationResult& result) {
                       : tr("%1 t").arg(locale.toString(co2->second / 1000.0, 'f', 1)));
     mStatus->clear();
     mStatus->setStyleSheet({});
+}
+
+void StatsPanel::showSelection(const doc::Document& document, const GenerationResult& result) {
+    const QList<doc::TreeId> ids = document.selectedTrees();
+    if (ids.isEmpty()) {
+        mSelection->setText(tr("nothing selected"));
+        return;
+    }
+    forest::TreeMetrics sum;
+    double tallest = 0.0, widest = 0.0;
+    int found = 0;
+    for (const DrawnTree& t : result.trees) {
+        if (!t.docId || !ids.contains(t.docId)) continue;
+        ++found;
+        tallest = std::max(tallest, t.metrics.heightM);
+        widest = std::max(widest, t.metrics.dbhM);
+        sum.woodVolumeM3 += t.metrics.woodVolumeM3;
+        sum.dryBiomassKg += t.metrics.dryBiomassKg;
+        sum.co2Kg += t.metrics.co2Kg;
+    }
+    const QLocale locale;
+    QString text = tr("%n tree(s)", nullptr, int(ids.size()));
+    if (found > 0)
+        text +=
+            tr("; up to %1 m tall, DBH up to %2 cm; wood %3 m³, biomass %4 kg, CO₂ %5 kg")
+                .arg(locale.toString(tallest, 'f', 1), locale.toString(widest * 100, 'f', 1),
+                     locale.toString(sum.woodVolumeM3, 'f', 2),
+                     locale.toString(sum.dryBiomassKg, 'f', 0), locale.toString(sum.co2Kg, 'f', 0));
+    mSelection->setText(text);
 }
 
 void StatsPanel::showGenerating(const QString& name) {

@@ -1,0 +1,304 @@
+#include "ui/document/propertiespanel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QRegularExpressionValidator>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+#include <memory>
+
+#include "document/errormessage.h"
+
+namespace sylva::ui {
+
+using Kind = doc::ItemRef::Kind;
+
+PropertiesPanel::PropertiesPanel(doc::Document& document, QWidget* parent)
+    : QWidget(parent), mDocument(document) {
+    auto* layout = new QVBoxLayout(this);
+    mTitle = new QLabel(this);
+    mTitle->setObjectName(QStringLiteral("propertiesTitle"));
+    QFont bold = mTitle->font();
+    bold.setBold(true);
+    mTitle->setFont(bold);
+    layout->addWidget(mTitle);
+    mBody = new QWidget(this);
+    layout->addWidget(mBody);
+    layout->addStretch(1);
+    connect(&document, &doc::Document::selectionChanged, this, &PropertiesPanel::rebuild);
+    connect(&document, &doc::Document::changed, this, [this](const doc::DocumentChange& c) {
+        if (c.what & doc::DocumentChange::Reset)
+            rebuild();
+        else
+            refresh();
+    });
+    rebuild();
+}
+
+int PropertiesPanel::addSpins(const QString& label, int count, double lo, double hi, double step,
+                              int decimals, const QString& suffix, const QString& tooltip) {
+    auto* row = new QWidget(mBody);
+    auto* h = new QHBoxLayout(row);
+    h->setContentsMargins(0, 0, 0, 0);
+    const int first = int(mSpins.size());
+    static const char* const kAxes[] = {"x", "y", "z"};
+    for (int k = 0; k < count; ++k) {
+        auto* box = new QDoubleSpinBox(row);
+        box->setRange(lo, hi);
+        box->setSingleStep(step);
+        box->setDecimals(decimals);
+        box->setSuffix(suffix);
+        box->setKeyboardTracking(false); // one edit per Enter, arrow click or focus change
+        box->setAccelerated(true);
+        box->setToolTip(count > 1 ? tooltip + QStringLiteral(" (%1)").arg(QLatin1String(kAxes[k]))
+                                  : tooltip);
+        box->setObjectName(QStringLiteral("spin%1").arg(first + k));
+        h->addWidget(box);
+        mSpins.push_back(box);
+    }
+    mForm->addRow(label, row);
+    return first;
+}
+
+double PropertiesPanel::spin(int i) const {
+    return mSpins[std::size_t(i)]->value();
+}
+
+glm::vec3 PropertiesPanel::vec3At(int first) const {
+    return {float(spin(first)), float(spin(first + 1)), float(spin(first + 2))};
+}
+
+void PropertiesPanel::apply(const std::function<void()>& edit) {
+    if (mUpdating) return;
+    try {
+        edit();
+    } catch (...) {
+        Q_EMIT failed(QString::fromStdString(doc::describeError(std::current_exception()).message));
+        refresh(); // back to the document's value
+    }
+}
+
+void PropertiesPanel::rebuild() {
+    delete mBody;
+    mBody = new QWidget(this);
+    static_cast<QVBoxLayout*>(layout())->insertWidget(1, mBody);
+    mForm = new QFormLayout(mBody);
+    mForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    mSpins.clear();
+    mSpecies = nullptr;
+    mSeed = nullptr;
+    mInfo = nullptr;
+    mRefresh = nullptr;
+    const QList<doc::ItemRef>& selection = mDocument.selection();
+    mItem = selection.isEmpty() ? std::nullopt : std::optional<doc::ItemRef>(selection.last());
+    const doc::Project& p = mDocument.project();
+    auto connectAll = [this](int first, int count, const std::function<void()>& edit) {
+        for (int k = first; k < first + count; ++k)
+            connect(mSpins[std::size_t(k)], &QDoubleSpinBox::valueChanged, this,
+                    [this, edit] { apply(edit); });
+    };
+    auto seedEditor = [this](const QString& tooltip) {
+        mSeed = new QLineEdit(mBody);
+        mSeed->setObjectName(QStringLiteral("seedEdit"));
+        mSeed->setToolTip(tooltip);
+        mSeed->setValidator(new QRegularExpressionValidator(
+            QRegularExpression(QStringLiteral("[0-9]{1,19}")), mSeed));
+        mForm->addRow(tr("Seed:"), mSeed);
+    };
+
+    if (!mItem) {
+        mTitle->setText(tr("Project"));
+        mInfo = new QLabel(mBody);
+        mInfo->setWordWrap(true);
+        mForm->addRow(tr("File:"), mInfo);
+        seedEditor(tr("The project seed: domain trees take their seeds from it and their ids"));
+        connect(mSeed, &QLineEdit::editingFinished, this,
+                [this] { apply([this] { mDocument.setSeed(mSeed->text().toULongLong()); }); });
+        mRefresh = [this] {
+            mInfo->setText(mDocument.path().isEmpty() ? tr("not saved yet") : mDocument.path());
+            mSeed->setText(QString::number(mDocument.project().seed));
+        };
+    } else if (mItem->kind == Kind::Tree) {
+        const doc::TreeId id = mItem->id;
+        mTitle->setText(tr("Tree #%1").arg(id));
+        mSpecies = new QComboBox(mBody);
+        mSpecies->setObjectName(QStringLiteral("speciesCombo"));
+        for (const doc::ProjectSpecies& s : p.species)
+            mSpecies->addItem(QString::fromStdString(s.name));
+        mForm->addRow(tr("Species:"), mSpecies);
+        const int pos = addSpins(tr("Position:"), 3, -1e5, 1e5, 0.5, 2, tr(" m"),
+                                 tr("Where the trunk meets the ground, metres"));
+        const int rot = addSpins(tr("Rotation:"), 1, -3600, 3600, 15, 1, tr("°"),
+                                 tr("Turn about the vertical axis, degrees"));
+        const int scale = addSpins(tr("Scale:"), 1, 0.01, 100, 0.05, 3, {},
+                                   tr("Uniform size factor, 0.01 to 100"));
+        const int growth = addSpins(tr("Growth:"), 1, 0.01, 1, 0.05, 2, {},
+                                    tr("Growth stage, 0.01 (sapling) to 1 (mature)"));
+        seedEditor(tr("The tree's own seed: another seed grows another tree of the species"));
+        auto edit = [this, id, pos, rot, scale, growth] {
+            doc::ProjectInstance t = mDocument.tree(id);
+            t.species = mSpecies->currentText().toStdString();
+            t.position = vec3At(pos);
+            t.rotation = spin(rot);
+            t.scale = spin(scale);
+            t.growth = spin(growth);
+            t.seed = mSeed->text().toULongLong();
+            mDocument.setTree(id, t);
+        };
+        connectAll(0, int(mSpins.size()), edit);
+        connect(mSpecies, &QComboBox::currentIndexChanged, this, [this, edit] { apply(edit); });
+        connect(mSeed, &QLineEdit::editingFinished, this, [this, edit] { apply(edit); });
+        mRefresh = [this, id, pos, rot, scale, growth] {
+            if (mDocument.treeIndex(id) < 0) return;
+            const doc::ProjectInstance& t = mDocument.tree(id);
+            mSpecies->setCurrentText(QString::fromStdString(t.species));
+            for (int k = 0; k < 3; ++k)
+                mSpins[std::size_t(pos + k)]->setValue(t.position[k]);
+            mSpins[std::size_t(rot)]->setValue(t.rotation);
+            mSpins[std::size_t(scale)]->setValue(t.scale);
+            mSpins[std::size_t(growth)]->setValue(t.growth);
+            mSeed->setText(QString::number(t.seed));
+        };
+    } else if (mItem->kind == Kind::Obstacle) {
+        const int i = int(mItem->id);
+        mTitle->setText(tr("Obstacle %1").arg(i + 1));
+        mInfo = new QLabel(mBody);
+        mInfo->setWordWrap(true);
+        mForm->addRow(tr("Mesh:"), mInfo);
+        const int t = addSpins(tr("Translate:"), 3, -1e5, 1e5, 0.5, 2, tr(" m"),
+                               tr("Moves the mesh, metres"));
+        const int r = addSpins(tr("Rotate:"), 3, -360, 360, 5, 1, tr("°"),
+                               tr("Rotation about x, then y, then z, degrees"));
+        const int s = addSpins(tr("Scale:"), 3, 1e-4, 1e4, 0.1, 3, {}, tr("Scale per axis"));
+        connectAll(0, 9, [this, i, t, r, s] {
+            doc::ProjectObstacle o = mDocument.project().obstacles[std::size_t(i)];
+            o.translate = vec3At(t);
+            o.rotate = vec3At(r);
+            o.scale = vec3At(s);
+            mDocument.setObstacle(i, o);
+        });
+        mRefresh = [this, i, t, r, s] {
+            if (i >= int(mDocument.project().obstacles.size())) return;
+            const doc::ProjectObstacle& o = mDocument.project().obstacles[std::size_t(i)];
+            mInfo->setText(QString::fromStdString(o.file));
+            for (int k = 0; k < 3; ++k) {
+                mSpins[std::size_t(t + k)]->setValue(o.translate[k]);
+                mSpins[std::size_t(r + k)]->setValue(o.rotate[k]);
+                mSpins[std::size_t(s + k)]->setValue(o.scale[k]);
+            }
+        };
+    } else if (mItem->kind == Kind::Domain) {
+        const int i = int(mItem->id);
+        const doc::PlacementDomain& d = p.domains[std::size_t(i)];
+        mTitle->setText(tr("Domain %1 (%2)").arg(i + 1).arg(QString::fromStdString(d.shape)));
+        int lo = -1, hi = -1;
+        if (d.shape == "rectangle") {
+            lo = addSpins(tr("Minimum x, z:"), 2, -1e5, 1e5, 1, 1, tr(" m"),
+                          tr("Corner of the rectangle on the ground"));
+            hi = addSpins(tr("Maximum x, z:"), 2, -1e5, 1e5, 1, 1, tr(" m"),
+                          tr("Opposite corner of the rectangle"));
+        }
+        const int counts = int(mSpins.size());
+        std::vector<std::string> names;
+        for (const doc::ProjectSpecies& s : p.species) {
+            addSpins(tr("%1 trees:").arg(QString::fromStdString(s.name)), 1, 0, 1e6, 1, 0, {},
+                     tr("How many trees of this species the domain scatters"));
+            names.push_back(s.name);
+        }
+        connectAll(0, int(mSpins.size()), [this, i, lo, hi, counts, names] {
+            doc::PlacementDomain dom = mDocument.project().domains[std::size_t(i)];
+            if (lo >= 0) {
+                dom.min = {float(spin(lo)), float(spin(lo + 1))};
+                dom.max = {float(spin(hi)), float(spin(hi + 1))};
+            }
+            for (std::size_t k = 0; k < names.size(); ++k) {
+                const int n = int(spin(counts + int(k)));
+                if (n > 0)
+                    dom.counts[names[k]] = n;
+                else
+                    dom.counts.erase(names[k]);
+            }
+            mDocument.setDomain(i, dom);
+        });
+        mRefresh = [this, i, lo, hi, counts, names] {
+            if (i >= int(mDocument.project().domains.size())) return;
+            const doc::PlacementDomain& dom = mDocument.project().domains[std::size_t(i)];
+            if (lo >= 0) {
+                mSpins[std::size_t(lo)]->setValue(dom.min.x);
+                mSpins[std::size_t(lo + 1)]->setValue(dom.min.y);
+                mSpins[std::size_t(hi)]->setValue(dom.max.x);
+                mSpins[std::size_t(hi + 1)]->setValue(dom.max.y);
+            }
+            for (std::size_t k = 0; k < names.size(); ++k) {
+                auto it = dom.counts.find(names[k]);
+                mSpins[std::size_t(counts) + k]->setValue(it == dom.counts.end() ? 0 : it->second);
+            }
+        };
+    } else if (mItem->kind == Kind::Camera) {
+        mTitle->setText(tr("Camera"));
+        const int pos = addSpins(tr("Position:"), 3, -1e5, 1e5, 1, 2, tr(" m"),
+                                 tr("Where the camera stands: the reference for level of detail"));
+        const int target = addSpins(tr("Target:"), 3, -1e5, 1e5, 1, 2, tr(" m"),
+                                    tr("The point the camera looks at"));
+        connectAll(0, 6, [this, pos, target] { mDocument.setCamera(vec3At(pos), vec3At(target)); });
+        mRefresh = [this, pos, target] {
+            for (int k = 0; k < 3; ++k) {
+                mSpins[std::size_t(pos + k)]->setValue(mDocument.project().cameraPosition[k]);
+                mSpins[std::size_t(target + k)]->setValue(mDocument.project().cameraTarget[k]);
+            }
+        };
+    } else if (mItem->kind == Kind::Light) {
+        mTitle->setText(tr("Light"));
+        const int dir = addSpins(tr("Direction:"), 3, -1, 1, 0.05, 3, {},
+                                 tr("The direction sunlight travels (towards the ground: y < 0); "
+                                    "trees grow towards where it comes from"));
+        connectAll(0, 3, [this, dir] { mDocument.setLight(vec3At(dir)); });
+        mRefresh = [this, dir] {
+            for (int k = 0; k < 3; ++k)
+                mSpins[std::size_t(dir + k)]->setValue(mDocument.project().lightDirection[k]);
+        };
+    } else if (mItem->kind == Kind::Species) {
+        const int i = int(mItem->id);
+        mTitle->setText(tr("Species"));
+        mInfo = new QLabel(mBody);
+        mInfo->setWordWrap(true);
+        mInfo->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        mForm->addRow(mInfo);
+        mRefresh = [this, i] {
+            if (i >= int(mDocument.project().species.size())) return;
+            const doc::ProjectSpecies& s = mDocument.project().species[std::size_t(i)];
+            int trees = 0;
+            for (const doc::ProjectInstance& t : mDocument.project().instances)
+                trees += t.species == s.name ? 1 : 0;
+            mInfo->setText(
+                tr("<b>%1</b><br>%2<br>%3 hand-placed tree(s). Rename it in the outliner; edit "
+                   "its parameters from the Python console (doc.set_param).")
+                    .arg(QString::fromStdString(s.name).toHtmlEscaped(),
+                         s.file.empty()
+                             ? tr("Stored in the project.")
+                             : tr("From %1 (stored in the project after its first edit).")
+                                   .arg(QString::fromStdString(s.file).toHtmlEscaped()))
+                    .arg(trees));
+        };
+    }
+    refresh();
+}
+
+void PropertiesPanel::refresh() {
+    if (!mRefresh) return;
+    mUpdating = true;
+    std::vector<std::unique_ptr<QSignalBlocker>> blockers;
+    for (QDoubleSpinBox* box : mSpins)
+        blockers.push_back(std::make_unique<QSignalBlocker>(box));
+    if (mSpecies) blockers.push_back(std::make_unique<QSignalBlocker>(mSpecies));
+    if (mSeed) blockers.push_back(std::make_unique<QSignalBlocker>(mSeed));
+    mRefresh();
+    mUpdating = false;
+}
+
+} // namespace sylva::ui

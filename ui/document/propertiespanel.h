@@ -1,0 +1,59 @@
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include <QWidget>
+
+#include "document/document.h"
+
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLineEdit;
+class QLabel;
+
+namespace sylva::ui {
+
+/// The Properties dock: typed editors for the selected tree, obstacle, domain, species, the
+/// camera and the light, or the project's own settings when nothing is selected. Every change
+/// goes through the document's edit functions (one undo step each); a value the document
+/// refuses is reported (failed()) and the editor shows the document's value again.
+class PropertiesPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit PropertiesPanel(doc::Document& document, QWidget* parent = nullptr);
+
+    /// The item shown, or none for the project.
+    std::optional<doc::ItemRef> item() const { return mItem; }
+
+Q_SIGNALS:
+    void failed(const QString& message);
+
+private:
+    void rebuild();
+    void refresh();
+    void apply(const std::function<void()>& edit);
+    /// Adds a row of \p count spin boxes (x, y, z) with \p suffix; returns their index in
+    /// mSpins.
+    int addSpins(const QString& label, int count, double lo, double hi, double step, int decimals,
+                 const QString& suffix, const QString& tooltip);
+    double spin(int i) const;
+    glm::vec3 vec3At(int first) const;
+
+    doc::Document& mDocument;
+    std::optional<doc::ItemRef> mItem;
+    QLabel* mTitle = nullptr;
+    QWidget* mBody = nullptr;
+    QFormLayout* mForm = nullptr;
+    std::vector<QDoubleSpinBox*> mSpins;
+    QComboBox* mSpecies = nullptr;
+    QLineEdit* mSeed = nullptr;
+    QLabel* mInfo = nullptr;
+    std::function<void()> mRefresh; ///< puts the document's values into the editors
+    bool mUpdating = false;
+};
+
+} // namespace sylva::ui

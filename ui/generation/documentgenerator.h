@@ -1,0 +1,59 @@
+#pragma once
+
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QObject>
+
+#include "document/document.h"
+#include "ui/generation/scenegenerator.h"
+
+namespace sylva::ui {
+
+/// Regrows the open document off the GUI thread whenever it changes: one generation at a time,
+/// the newest edit wins (a running generation is cancelled and the latest state built next),
+/// and trees whose inputs did not change are reused from the last build (SceneCaches), so a
+/// one-tree edit regrows that tree and the neighbours whose crowns it touches. A cancelled or
+/// failed generation leaves the document and the last good result as they were.
+class DocumentGenerator : public QObject {
+    Q_OBJECT
+
+public:
+    explicit DocumentGenerator(doc::Document& document, QObject* parent = nullptr);
+    ~DocumentGenerator() override;
+
+    /// Builds the document's current state (after an edit, or a file changed on disk).
+    void regenerate();
+    /// Forgets every cached tree (a grammar or mesh file changed on disk) and regenerates.
+    void regenerateAll();
+    /// Stops the running generation; the last good result stays.
+    void cancel();
+    bool isBusy() const { return mWatcher.isRunning() || mPending; }
+    /// The last successful generation.
+    const GenerationResult& result() const { return mResult; }
+    /// Milliseconds from the edit that asked for the last result to its end (the mesh ready).
+    double editToResultMs() const { return mEditToResultMs; }
+
+Q_SIGNALS:
+    void started();
+    void progressed(const QString& stage);
+    /// A generation ended: \p ok with a new result(), or an error message; not emitted for a
+    /// cancelled or superseded one (cancelled() is).
+    void finished(bool ok, const QString& error);
+    void cancelled();
+
+private:
+    void start();
+    void onFinished();
+
+    doc::Document& mDocument;
+    SceneCaches mCaches;
+    QFutureWatcher<GenerationResult> mWatcher;
+    bool mPending = false;       ///< an edit arrived while a generation ran
+    bool mUserCancelled = false; ///< cancel(): do not restart
+    QElapsedTimer mSinceEdit;    ///< started at the edit the running generation builds
+    QElapsedTimer mPendingEdit;
+    GenerationResult mResult;
+    double mEditToResultMs = 0.0;
+};
+
+} // namespace sylva::ui

@@ -1,0 +1,146 @@
+#include "ui/generation/scenegenerator.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <QFile>
+#include <QFileInfo>
+#include <QStringList>
+
+#include "document/filerefs.h"
+#include "document/project.h"
+#include "document/scenebuild.h"
+#include "engine/graph/graph.h"
+#include "engine/mesh/mesh.h"
+#include "engine/scene/forestbuild.h"
+#include "engine/util/random.h"
+
+namespace sylva::ui {
+
+namespace {
+
+/// The obstacle and terrain meshes merged, world space, flat-shaded.
+mesh::Mesh surfaces(const env::ObstacleScene* obstacles, const env::ObstacleScene* ground) {
+    mesh::Mesh out;
+    for (auto [scene, material] : {std::pair{obstacles, "obstacle"}, std::pair{ground, "ground"}}) {
+        if (!scene) continue;
+        const auto first = static_cast<std::uint32_t>(out.indices.size());
+        for (const env::ObstacleMesh& m : scene->meshes())
+            for (const glm::uvec3& t : m.triangles) {
+                const glm::vec3 corners[3] = {m.vertices[t.x], m.vertices[t.y], m.vertices[t.z]};
+                const glm::vec3 n =
+                    glm::normalize(glm::cross(corners[1] - corners[0], corners[2] - corners[0]));
+                for (const glm::vec3& p : corners) {
+                    out.indices.push_back(static_cast<std::uint32_t>(out.positions.size()));
+                    out.positions.push_back(p);
+                    out.normals.push_back(n);
+                }
+            }
+        const auto count = static_cast<std::uint32_t>(out.indices.size()) - first;
+        if (count > 0) out.submeshes.push_back({material, first, count});
+    }
+    return out;
+}
+
+std::uint64_t pointerKey(const void* a, const void* b) {
+    return mixSeed(reinterpret_cast<std::uintptr_t>(a), reinterpret_cast<std::uintptr_t>(b));
+}
+
+} // namespace
+
+bool isProjectFile(const QString& path) {
+    if (path.endsWith(QStringLiteral(".sylva"), Qt::CaseInsensitive)) return true;
+    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) return false;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return false;
+    const QByteArray head = file.read(1 << 16);
+    return head.contains("\"sylva-project\"") ||
+           (!head.contains("\"format\"") && head.contains("\"plants\""));
+}
+
+GenerationResult generateProject(const doc::Project& project, const QString& path,
+                                 const std::vector<doc::TreeId>& treeIds, SceneCaches* caches,
+                                 Progress& progress) {
+    return runGuarded(path, [&](GenerationResult& result) {
+        // Watch every file the project reads; stamped before reading, so that a change during
+        // the generation is still seen.
+        result.sources << doc::projectSourceFiles(project);
+        result.sources.removeDuplicates();
+        stampSources(result);
+        const scene::ForestScene forest = doc::makeForestScene(project);
+        scene::ForestOptions options;
+        if (caches) {
+            options.cache = &caches->trees;
+            options.obstaclesKey = pointerKey(forest.obstacles.get(), forest.ground.get());
+            caches->obstacles = forest.obstacles;
+            caches->ground = forest.ground;
+        }
+        double height = 0.0;
+        const scene::ForestStats stats = scene::buildForest(
+            forest, options,
+            [&](const std::vector<scene::ForestTree>& batch) {
+                for (const scene::ForestTree& tree : batch) {
+                    DrawnTree drawn;
+                    drawn.instanceId = tree.instance.id;
+                    if (tree.instance.handPlaced && tree.instance.id < treeIds.size())
+                        drawn.docId = treeIds[tree.instance.id];
+                    drawn.mesh = tree.mesh;
+                    drawn.transform = tree.instance.transform();
+                    drawn.metrics = tree.metrics;
+                    height = std::max(height, tree.metrics.heightM);
+                    result.trees.push_back(std::move(drawn));
+                    result.exportTrees.push_back({tree.name, tree.mesh, tree.instance.position,
+                                                  tree.instance.rotation,
+                                                  tree.instance.scale * tree.instance.growth});
+                }
+            },
+            progress);
+        result.mesh = std::make_shared<const mesh::Mesh>(
+            surfaces(forest.obstacles.get(), forest.ground.get()));
+        result.compactObj = true; // sylva-cli forest's default
+        result.hasCamera = true;
+        result.cameraEye = project.cameraPosition;
+        result.cameraTarget = project.cameraTarget;
+        result.stats["trees"] = static_cast<double>(stats.trees);
+        result.stats["obstacle_triangles"] =
+            forest.obstacles ? static_cast<double>(forest.obstacles->triangleCount()) : 0.0;
+        result.stats["colliding_trees"] = static_cast<double>(stats.collidingTrees);
+        result.stats["pruned_nodes"] = static_cast<double>(stats.prunedNodes);
+        result.stats["co2_kg"] = stats.metrics.co2Kg;
+        result.stats["height"] = height;
+        result.stats["regrown"] =
+            static_cast<double>(caches ? caches->trees.misses() : stats.trees);
+        for (const auto& [stage, ms] : stats.wallMs)
+            result.timingsMs[stage] = ms;
+        result.speciesName =
+            QObject::tr("%1 (%n trees)", nullptr, int(stats.trees)).arg(result.speciesName);
+    });
+}
+
+GenerationResult generateScene(const QString& path, Progress& progress) {
+    doc::LoadReport report;
+    doc::Project project;
+    GenerationResult failed = runGuarded(
+        path, [&](GenerationResult&) { project = doc::loadProjectOrScene(path, &report); });
+    if (!failed.error.isEmpty()) return failed;
+    std::vector<doc::TreeId> ids(project.instances.size());
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        ids[i] = static_cast<doc::TreeId>(i + 1);
+    GenerationResult result = generateProject(project, path, ids, nullptr, progress);
+    QStringList warnings;
+    for (const std::string& w : report.warnings)
+        warnings << QString::fromStdString(w);
+    result.warning = warnings.join(QLatin1Char('\n'));
+    if (result.ok() && result.trees.empty() && result.mesh->empty())
+        result.error = QObject::tr("%1: the project has no trees and no obstacles")
+                           .arg(QFileInfo(path).fileName());
+    return result;
+}
+
+GenerationResult generate(const QString& path, Progress& progress) {
+    return isProjectFile(path) ? generateScene(path, progress) : generateTree(path, progress);
+}
+
+} // namespace sylva::ui

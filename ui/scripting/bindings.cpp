@@ -1,0 +1,496 @@
+// The `sylva` Python module as the editor embeds it: the running window's document, edited
+// through the same document functions (and so the same undoable commands) as the mouse. The
+// names are a public contract: docs/scripting.md.
+#include <optional>
+
+#include <pybind11/embed.h>
+#include <pybind11/stl.h>
+
+#include <QApplication>
+#include <QEventLoop>
+#include <QTimer>
+
+#include "document/autosave.h"
+#include "document/document.h"
+#include "document/errormessage.h"
+#include "engine/mesh/mesh.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+#include "ui/document/messagespanel.h"
+#include "ui/generation/documentgenerator.h"
+#include "ui/mainwindow.h"
+#include "ui/scripting/pythonhost.h"
+#include "ui/viewport/viewport.h"
+
+namespace py = pybind11;
+
+namespace sylva::ui {
+
+namespace {
+
+MainWindow& window() {
+    MainWindow* w = PythonHost::window();
+    if (!w) throw std::runtime_error("the sylva module needs the editor's window");
+    return *w;
+}
+
+doc::Document& document() {
+    return window().document();
+}
+
+graph::Value toValue(const py::handle& o) {
+    if (o.is_none()) return {};
+    if (py::isinstance<py::bool_>(o)) return graph::Value(o.cast<bool>());
+    if (py::isinstance<py::int_>(o) || py::isinstance<py::float_>(o))
+        return graph::Value(o.cast<double>());
+    if (py::isinstance<py::str>(o)) return graph::Value(o.cast<std::string>());
+    if (py::isinstance<py::dict>(o)) {
+        graph::Value::Object obj;
+        for (const auto& [k, v] : o.cast<py::dict>())
+            obj[py::str(k).cast<std::string>()] = toValue(v);
+        return graph::Value(std::move(obj));
+    }
+    if (py::isinstance<py::sequence>(o)) {
+        graph::Value::Array arr;
+        for (const py::handle& v : o.cast<py::sequence>())
+            arr.push_back(toValue(v));
+        return graph::Value(std::move(arr));
+    }
+    throw InvalidInput("cannot use a Python " +
+                       py::str(py::type::of(o).attr("__name__")).cast<std::string>() +
+                       " as a parameter value");
+}
+
+py::object fromValue(const graph::Value& v) {
+    if (v.isNull()) return py::none();
+    if (v.isBool()) return py::bool_(v.toBool());
+    if (v.isNumber()) {
+        const double d = v.toNumber();
+        if (d == double(static_cast<long long>(d)) && std::abs(d) < 9e15)
+            return py::int_(static_cast<long long>(d));
+        return py::float_(d);
+    }
+    if (v.isString()) return py::str(v.toString());
+    if (v.isArray()) {
+        py::list l;
+        for (const graph::Value& x : v.toArray())
+            l.append(fromValue(x));
+        return l;
+    }
+    py::dict d;
+    for (const auto& [k, x] : v.toObject())
+        d[py::str(k)] = fromValue(x);
+    return d;
+}
+
+glm::vec3 toVec3(const py::handle& o, const char* what) {
+    const auto seq = o.cast<std::vector<double>>();
+    if (seq.size() != 3) throw InvalidInput(std::string(what) + " needs three numbers (x, y, z)");
+    return {float(seq[0]), float(seq[1]), float(seq[2])};
+}
+
+py::tuple fromVec3(const glm::vec3& v) {
+    return py::make_tuple(v.x, v.y, v.z);
+}
+
+/// A tree as scripts see it: a snapshot of its values.
+struct Tree {
+    doc::TreeId id = 0;
+    std::string species;
+    glm::vec3 position{0.0f};
+    double rotation = 0, scale = 1, growth = 1;
+    std::uint64_t seed = 0;
+};
+
+Tree treeOf(doc::TreeId id) {
+    const doc::ProjectInstance& t = document().tree(id);
+    return {id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed};
+}
+
+void pump(double seconds) {
+    QEventLoop loop;
+    QTimer::singleShot(int(seconds * 1000.0), &loop, &QEventLoop::quit);
+    loop.exec();
+}
+
+py::dict generate() {
+    MainWindow& w = window();
+    if (!w.waitForGeneration()) throw std::runtime_error("the generation did not finish in time");
+    const GenerationResult& r = w.generator().result();
+    if (!w.lastError().isEmpty() && !r.ok()) throw InvalidInput(w.lastError().toStdString());
+    py::dict stats;
+    auto stat = [&r](const char* key) {
+        auto it = r.stats.find(key);
+        return it == r.stats.end() ? 0.0 : it->second;
+    };
+    stats["trees"] = r.trees.size();
+    stats["triangles"] = r.triangleCount();
+    stats["vertices"] = r.vertexCount();
+    stats["co2_kg"] = stat("co2_kg");
+    stats["regrown"] = static_cast<std::size_t>(stat("regrown"));
+    stats["colliding_trees"] = static_cast<std::size_t>(stat("colliding_trees"));
+    stats["ms"] = r.elapsedMs;
+    stats["edit_to_result_ms"] = w.generator().editToResultMs();
+    return stats;
+}
+
+struct DocumentApi {};
+struct WindowApi {};
+
+} // namespace
+
+} // namespace sylva::ui
+
+using namespace sylva;
+using namespace sylva::ui;
+
+namespace sylva::ui {
+// Referenced by PythonHost so that the linker keeps this file (and the module's registration)
+// when the editor links the static library.
+void linkSylvaModule() {}
+} // namespace sylva::ui
+
+PYBIND11_EMBEDDED_MODULE(sylva, m) {
+    m.doc() = "Sylva's editor: its document (trees, species, obstacles, undo) and window.";
+    // The same messages the window shows, as the exceptions Python users expect.
+    py::register_exception_translator([](std::exception_ptr p) {
+        if (!p) return;
+        try {
+            std::rethrow_exception(p);
+        } catch (const py::error_already_set&) {
+            throw;
+        } catch (const py::builtin_exception&) {
+            throw;
+        } catch (const std::exception&) {
+            const doc::ErrorReport r = doc::describeError(p);
+            using K = doc::ErrorReport::Kind;
+            switch (r.kind) {
+            case K::Io:
+                PyErr_SetString(PyExc_OSError, r.message.c_str());
+                return;
+            case K::Cancelled:
+                PyErr_SetString(PyExc_KeyboardInterrupt, r.message.c_str());
+                return;
+            case K::OutOfMemory:
+                PyErr_SetString(PyExc_MemoryError, r.message.c_str());
+                return;
+            case K::Other:
+                PyErr_SetString(PyExc_RuntimeError, r.message.c_str());
+                return;
+            default:
+                PyErr_SetString(PyExc_ValueError, r.message.c_str());
+                return;
+            }
+        }
+    });
+
+    py::class_<Tree>(m, "Tree", "A tree of the document (a snapshot of its values).")
+        .def_readonly("id", &Tree::id)
+        .def_readonly("species", &Tree::species)
+        .def_property_readonly("position", [](const Tree& t) { return fromVec3(t.position); })
+        .def_readonly("rotation", &Tree::rotation, "degrees about +Y")
+        .def_readonly("scale", &Tree::scale)
+        .def_readonly("growth", &Tree::growth)
+        .def_readonly("seed", &Tree::seed)
+        .def("__repr__", [](const Tree& t) {
+            return "<Tree " + std::to_string(t.id) + " " + t.species + " at (" +
+                   std::to_string(t.position.x) + ", " + std::to_string(t.position.y) + ", " +
+                   std::to_string(t.position.z) + ")>";
+        });
+
+    py::class_<DocumentApi>(m, "Document", "The open project; every edit is one undo step.")
+        .def(
+            "open",
+            [](DocumentApi&, const std::string& path) {
+                for (const std::string& w : document().open(QString::fromStdString(path)))
+                    py::print("sylva: warning:", w);
+            },
+            py::arg("path"))
+        .def(
+            "save",
+            [](DocumentApi&, std::optional<std::string> path) {
+                document().save(path ? QString::fromStdString(*path) : QString());
+                window().autosave().discard();
+            },
+            py::arg("path") = py::none())
+        .def("new", [](DocumentApi&) { document().newProject(); })
+        .def_property_readonly("path", [](DocumentApi&) { return document().path().toStdString(); })
+        .def_property_readonly("modified", [](DocumentApi&) { return document().isModified(); })
+        .def("trees",
+             [](DocumentApi&) {
+                 std::vector<Tree> out;
+                 for (doc::TreeId id : document().treeIds())
+                     out.push_back(treeOf(id));
+                 return out;
+             })
+        .def(
+            "tree", [](DocumentApi&, doc::TreeId id) { return treeOf(id); }, py::arg("id"))
+        .def(
+            "add_tree",
+            [](DocumentApi&, const std::string& species, py::object position, double rotation,
+               double scale, std::optional<std::uint64_t> seed) {
+                doc::ProjectInstance t;
+                t.species = species;
+                t.position = toVec3(position, "position");
+                t.rotation = rotation;
+                t.scale = scale;
+                t.seed = seed
+                             ? *seed
+                             : mixSeed(document().project().seed, document().treeIds().size() + 1) %
+                                   1000000007ull;
+                return document().addTree(t);
+            },
+            py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
+            py::arg("scale") = 1.0, py::arg("seed") = py::none())
+        .def(
+            "set_tree",
+            [](DocumentApi&, doc::TreeId id, py::object position, std::optional<double> rotation,
+               std::optional<double> scale, std::optional<std::uint64_t> seed,
+               std::optional<std::string> species, std::optional<double> growth) {
+                doc::ProjectInstance t = document().tree(id);
+                if (!position.is_none()) t.position = toVec3(position, "position");
+                if (rotation) t.rotation = *rotation;
+                if (scale) t.scale = *scale;
+                if (seed) t.seed = *seed;
+                if (species) t.species = *species;
+                if (growth) t.growth = *growth;
+                document().setTree(id, t);
+            },
+            py::arg("id"), py::arg("position") = py::none(), py::arg("rotation") = py::none(),
+            py::arg("scale") = py::none(), py::arg("seed") = py::none(),
+            py::arg("species") = py::none(), py::arg("growth") = py::none())
+        .def(
+            "remove_tree", [](DocumentApi&, doc::TreeId id) { document().removeTrees({id}); },
+            py::arg("id"))
+        .def(
+            "duplicate_trees",
+            [](DocumentApi&, const std::vector<doc::TreeId>& ids) {
+                const QList<doc::TreeId> out =
+                    document().duplicateTrees(QList<doc::TreeId>(ids.begin(), ids.end()));
+                return std::vector<doc::TreeId>(out.begin(), out.end());
+            },
+            py::arg("ids"))
+        .def("species",
+             [](DocumentApi&) {
+                 std::vector<std::string> names;
+                 for (const doc::ProjectSpecies& s : document().project().species)
+                     names.push_back(s.name);
+                 return names;
+             })
+        .def(
+            "add_species",
+            [](DocumentApi&, const std::string& name, const std::string& file) {
+                document().addSpecies(name, QString::fromStdString(file));
+            },
+            py::arg("name"), py::arg("file"))
+        .def("rename_species", [](DocumentApi&, const std::string& from,
+                                  const std::string& to) { document().renameSpecies(from, to); })
+        .def("remove_species",
+             [](DocumentApi&, const std::string& name) { document().removeSpecies(name); })
+        .def(
+            "get_param",
+            [](DocumentApi&, const std::string& species, const std::string& path) {
+                return fromValue(document().param(species, path));
+            },
+            py::arg("species"), py::arg("path"))
+        .def(
+            "set_param",
+            [](DocumentApi&, const std::string& species, const std::string& path,
+               py::object value) { document().setParam(species, path, toValue(value)); },
+            py::arg("species"), py::arg("path"), py::arg("value"))
+        .def(
+            "grammar",
+            [](DocumentApi&, const std::string& species, const std::string& node) {
+                return document().grammar(species, node);
+            },
+            py::arg("species"), py::arg("node"))
+        .def(
+            "set_grammar",
+            [](DocumentApi&, const std::string& species, const std::string& node,
+               const std::string& text) { document().setGrammar(species, node, text); },
+            py::arg("species"), py::arg("node"), py::arg("text"))
+        .def("obstacles",
+             [](DocumentApi&) {
+                 py::list out;
+                 for (const doc::ProjectObstacle& o : document().project().obstacles) {
+                     py::dict d;
+                     d["file"] = o.file;
+                     d["translate"] = fromVec3(o.translate);
+                     d["rotate"] = fromVec3(o.rotate);
+                     d["scale"] = fromVec3(o.scale);
+                     out.append(d);
+                 }
+                 return out;
+             })
+        .def(
+            "add_obstacle",
+            [](DocumentApi&, const std::string& file, py::object translate, py::object rotate,
+               py::object scale) {
+                doc::ProjectObstacle o;
+                o.file = file;
+                if (!translate.is_none()) o.translate = toVec3(translate, "translate");
+                if (!rotate.is_none()) o.rotate = toVec3(rotate, "rotate");
+                if (!scale.is_none()) o.scale = toVec3(scale, "scale");
+                document().addObstacle(o);
+                return document().project().obstacles.size() - 1;
+            },
+            py::arg("file"), py::arg("translate") = py::none(), py::arg("rotate") = py::none(),
+            py::arg("scale") = py::none())
+        .def(
+            "set_obstacle",
+            [](DocumentApi&, int index, py::object translate, py::object rotate, py::object scale) {
+                const auto& all = document().project().obstacles;
+                if (index < 0 || index >= int(all.size()))
+                    throw InvalidInput("there is no obstacle " + std::to_string(index));
+                doc::ProjectObstacle o = all[std::size_t(index)];
+                if (!translate.is_none()) o.translate = toVec3(translate, "translate");
+                if (!rotate.is_none()) o.rotate = toVec3(rotate, "rotate");
+                if (!scale.is_none()) o.scale = toVec3(scale, "scale");
+                document().setObstacle(index, o);
+            },
+            py::arg("index"), py::arg("translate") = py::none(), py::arg("rotate") = py::none(),
+            py::arg("scale") = py::none())
+        .def("remove_obstacle", [](DocumentApi&, int index) { document().removeObstacle(index); })
+        .def("domains",
+             [](DocumentApi&) {
+                 py::list out;
+                 for (const doc::PlacementDomain& d : document().project().domains) {
+                     py::dict o;
+                     o["shape"] = d.shape;
+                     o["min"] = py::make_tuple(d.min.x, d.min.y);
+                     o["max"] = py::make_tuple(d.max.x, d.max.y);
+                     o["counts"] = d.counts;
+                     out.append(o);
+                 }
+                 return out;
+             })
+        .def(
+            "set_domain",
+            [](DocumentApi&, int index, std::optional<std::map<std::string, int>> counts,
+               py::object min, py::object max) {
+                const auto& all = document().project().domains;
+                if (index < 0 || index >= int(all.size()))
+                    throw InvalidInput("there is no domain " + std::to_string(index));
+                doc::PlacementDomain d = all[std::size_t(index)];
+                if (counts) d.counts = *counts;
+                if (!min.is_none()) {
+                    auto v = min.cast<std::vector<float>>();
+                    if (v.size() != 2) throw InvalidInput("min needs two numbers (x, z)");
+                    d.min = {v[0], v[1]};
+                }
+                if (!max.is_none()) {
+                    auto v = max.cast<std::vector<float>>();
+                    if (v.size() != 2) throw InvalidInput("max needs two numbers (x, z)");
+                    d.max = {v[0], v[1]};
+                }
+                document().setDomain(index, d);
+            },
+            py::arg("index"), py::arg("counts") = py::none(), py::arg("min") = py::none(),
+            py::arg("max") = py::none())
+        .def_property(
+            "seed", [](DocumentApi&) { return document().project().seed; },
+            [](DocumentApi&, std::uint64_t seed) { document().setSeed(seed); })
+        .def(
+            "set_camera",
+            [](DocumentApi&, py::object position, py::object target) {
+                document().setCamera(toVec3(position, "position"), toVec3(target, "target"));
+            },
+            py::arg("position"), py::arg("target"))
+        .def("camera",
+             [](DocumentApi&) {
+                 return py::make_tuple(fromVec3(document().project().cameraPosition),
+                                       fromVec3(document().project().cameraTarget));
+             })
+        .def(
+            "set_light",
+            [](DocumentApi&, py::object direction) {
+                document().setLight(toVec3(direction, "direction"));
+            },
+            py::arg("direction"))
+        .def("undo", [](DocumentApi&) { document().undoStack()->undo(); })
+        .def("redo", [](DocumentApi&) { document().undoStack()->redo(); })
+        .def("undo_count", [](DocumentApi&) { return document().undoStack()->index(); })
+        .def("undo_texts",
+             [](DocumentApi&) {
+                 std::vector<std::string> out;
+                 const QUndoStack* s = document().undoStack();
+                 for (int i = 0; i < s->index(); ++i)
+                     out.push_back(s->text(i).toStdString());
+                 return out;
+             })
+        .def("selection",
+             [](DocumentApi&) {
+                 const QList<doc::TreeId> ids = document().selectedTrees();
+                 return std::vector<doc::TreeId>(ids.begin(), ids.end());
+             })
+        .def(
+            "select",
+            [](DocumentApi&, const std::vector<doc::TreeId>& ids) {
+                document().selectTrees(QList<doc::TreeId>(ids.begin(), ids.end()));
+            },
+            py::arg("ids"))
+        .def(
+            "serialized", [](DocumentApi&) { return document().serialized().toStdString(); },
+            "The project as it would be saved (canonical JSON).")
+        .def(
+            "generate", [](DocumentApi&) { return generate(); },
+            "Waits for the current generation; returns its statistics.")
+        .def(
+            "export",
+            [](DocumentApi&, const std::string& path) {
+                generate();
+                if (!window().exportTo(QString::fromStdString(path)))
+                    throw IoError(window().lastError().toStdString());
+            },
+            py::arg("path"));
+
+    py::class_<WindowApi>(m, "Window", "The editor's window.")
+        .def(
+            "screenshot",
+            [](WindowApi&, const std::string& path, bool viewportOnly) {
+                QApplication::processEvents();
+                const bool ok = viewportOnly
+                                    ? window().saveScreenshot(QString::fromStdString(path))
+                                    : window().saveWindowScreenshot(QString::fromStdString(path));
+                if (!ok) throw IoError(window().lastError().toStdString());
+            },
+            py::arg("path"), py::arg("viewport_only") = false)
+        .def("resize", [](WindowApi&, int w, int h) { window().resize(w, h); })
+        .def(
+            "last_update_ms", [](WindowApi&) { return window().lastEditToScreenMs(); },
+            "Milliseconds from the last edit to its new meshes on screen.")
+        .def(
+            "autosave",
+            [](WindowApi&) {
+                const bool saved = window().autosave().saveNow();
+                return saved ? window().autosave().recoveryFile().toStdString() : std::string();
+            },
+            "Writes the autosave copy now; its path, or '' when there was nothing unsaved.")
+        .def("messages", [](WindowApi&) {
+            std::vector<std::string> out;
+            for (int i = 0; i < window().messages()->count(); ++i)
+                out.push_back(window().messages()->message(i).toStdString());
+            return out;
+        });
+
+    m.def(
+        "document", [] { return DocumentApi{}; }, "The open document.");
+    m.def(
+        "window", [] { return WindowApi{}; }, "The editor's window.");
+    m.def(
+        "wait",
+        [](double seconds) {
+            if (seconds < 0 || seconds > 86400)
+                throw InvalidInput("wait() takes 0 to 86400 seconds");
+            pump(seconds);
+        },
+        py::arg("seconds"), "Keeps the window (and autosave) running for a while.");
+    m.def(
+        "quit",
+        [](int code) {
+            PyErr_SetObject(PyExc_SystemExit, py::int_(code).ptr());
+            throw py::error_already_set();
+        },
+        py::arg("code") = 0, "Leaves the editor with this exit status.");
+    m.attr("__version__") = QApplication::applicationVersion().toStdString();
+}
