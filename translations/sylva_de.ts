@@ -41,18 +41,132 @@
     </message>
 </context>
 <context>
+    <name>Commands</name>
+    <message>
+        <source>Remove tree</source>
+        <translation>Baum entfernen</translation>
+    </message>
+    <message>
+        <source>Remove trees</source>
+        <translation>Bäume entfernen</translation>
+    </message>
+    <message>
+        <source>Duplicate tree</source>
+        <translation>Baum duplizieren</translation>
+    </message>
+    <message>
+        <source>Duplicate trees</source>
+        <translation>Bäume duplizieren</translation>
+    </message>
+    <message>
+        <source>Add species</source>
+        <translation>Art hinzufügen</translation>
+    </message>
+    <message>
+        <source>Rename species</source>
+        <translation>Art umbenennen</translation>
+    </message>
+    <message>
+        <source>Remove species</source>
+        <translation>Art entfernen</translation>
+    </message>
+    <message>
+        <source>Edit grammar</source>
+        <translation>Grammatik bearbeiten</translation>
+    </message>
+    <message>
+        <source>Change %1</source>
+        <translation>%1 ändern</translation>
+    </message>
+    <message>
+        <source>Change project seed</source>
+        <translation>Startwert des Projekts ändern</translation>
+    </message>
+    <message>
+        <source>Move camera</source>
+        <translation>Kamera bewegen</translation>
+    </message>
+    <message>
+        <source>Change light</source>
+        <translation>Licht ändern</translation>
+    </message>
+    <message>
+        <source>Add tree</source>
+        <translation>Baum hinzufügen</translation>
+    </message>
+    <message>
+        <source>Edit tree</source>
+        <translation>Baum bearbeiten</translation>
+    </message>
+    <message>
+        <source>Move tree</source>
+        <translation>Baum verschieben</translation>
+    </message>
+    <message>
+        <source>Rotate tree</source>
+        <translation>Baum drehen</translation>
+    </message>
+    <message>
+        <source>Scale tree</source>
+        <translation>Baum skalieren</translation>
+    </message>
+    <message>
+        <source>Change tree seed</source>
+        <translation>Startwert des Baums ändern</translation>
+    </message>
+    <message>
+        <source>Change tree species</source>
+        <translation>Art des Baums ändern</translation>
+    </message>
+    <message>
+        <source>Change tree growth</source>
+        <translation>Wachstum des Baums ändern</translation>
+    </message>
+    <message>
+        <source>Remove obstacle</source>
+        <translation>Hindernis entfernen</translation>
+    </message>
+    <message>
+        <source>Add obstacle</source>
+        <translation>Hindernis hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove domain</source>
+        <translation>Bereich entfernen</translation>
+    </message>
+    <message>
+        <source>Add domain</source>
+        <translation>Bereich hinzufügen</translation>
+    </message>
+    <message>
+        <source>Transform obstacle</source>
+        <translation>Hindernis transformieren</translation>
+    </message>
+    <message>
+        <source>Change obstacle mesh</source>
+        <translation>Netz des Hindernisses ändern</translation>
+    </message>
+    <message>
+        <source>Change tree counts</source>
+        <translation>Baumanzahlen ändern</translation>
+    </message>
+    <message>
+        <source>Change domain</source>
+        <translation>Bereich ändern</translation>
+    </message>
+</context>
+<context>
+    <name>Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>%1: the species&apos; output node produced no mesh</source>
         <translation>%1: Der Ausgabeknoten der Art hat kein Netz erzeugt</translation>
-    </message>
-    <message>
-        <source>%1: out of memory while generating the tree</source>
-        <translation>%1: Nicht genug Speicher beim Erzeugen des Baums</translation>
-    </message>
-    <message>
-        <source>%1: unexpected error: %2</source>
-        <translation>%1: Unerwarteter Fehler: %2</translation>
     </message>
     <message numerus="yes">
         <source>%1 (%n trees)</source>
@@ -100,16 +214,24 @@
         <source>expected at most one species or project file</source>
         <translation>höchstens eine Art- oder Projektdatei erwartet</translation>
     </message>
+    <message>
+        <source>Run the Python script &lt;file&gt; in the editor (after opening the project, if one is given) and exit with its status.</source>
+        <translation>Das Python-Skript &lt;file&gt; im Editor ausführen (nach dem Öffnen des Projekts, falls eines angegeben ist) und mit dessen Exit-Status beenden.</translation>
+    </message>
+    <message>
+        <source>Restore edits autosaved before a crash without asking.</source>
+        <translation>Vor einem Absturz automatisch gespeicherte Änderungen ohne Rückfrage wiederherstellen.</translation>
+    </message>
+    <message>
+        <source>Discard edits autosaved before a crash without asking.</source>
+        <translation>Vor einem Absturz automatisch gespeicherte Änderungen ohne Rückfrage verwerfen.</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MainWindow</name>
     <message>
         <source>Sylva</source>
         <translation>Sylva</translation>
-    </message>
-    <message>
-        <source>Tree</source>
-        <translation>Baum</translation>
     </message>
     <message>
         <source>Generating: %1</source>
@@ -128,14 +250,6 @@
         <translation>Ctrl+R</translation>
     </message>
     <message>
-        <source>Save &amp;screenshot…</source>
-        <translation>&amp;Bildschirmfoto speichern…</translation>
-    </message>
-    <message>
-        <source>Ctrl+Shift+S</source>
-        <translation>Ctrl+Shift+S</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -146,10 +260,6 @@
     <message>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
-    </message>
-    <message>
-        <source>&amp;Frame tree</source>
-        <translation>Baum ein&amp;passen</translation>
     </message>
     <message>
         <source>Show &amp;grid</source>
@@ -170,10 +280,6 @@
     <message>
         <source>No presets folder found: set SYLVA_PRESETS_DIR or open a species file with File ▸ Open species…</source>
         <translation>Kein Vorlagenordner gefunden: SYLVA_PRESETS_DIR setzen oder eine Artdatei mit Datei ▸ Art öffnen… laden</translation>
-    </message>
-    <message>
-        <source>%1 — Sylva</source>
-        <translation>%1 — Sylva</translation>
     </message>
     <message>
         <source>Generated %1 in %2 ms</source>
@@ -251,10 +357,6 @@
         <source>Nothing to export yet.</source>
         <translation>Noch nichts zu exportieren.</translation>
     </message>
-    <message>
-        <source>Could not export %1: %2</source>
-        <translation>Konnte %1 nicht exportieren: %2</translation>
-    </message>
     <message numerus="yes">
         <source>Exported %n tree(s) to %1 (%2 files)</source>
         <translation>
@@ -273,6 +375,513 @@
     <message>
         <source>Reload &amp;automatically</source>
         <translation>&amp;Automatisch neu laden</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop the generation; the last result stays</source>
+        <translation>Erzeugung anhalten; das letzte Ergebnis bleibt erhalten</translation>
+    </message>
+    <message>
+        <source>Regrowing: %1</source>
+        <translation>Wachstum wird neu berechnet: %1</translation>
+    </message>
+    <message>
+        <source>Generation cancelled; the last result stays</source>
+        <translation>Erzeugung abgebrochen; das letzte Ergebnis bleibt erhalten</translation>
+    </message>
+    <message>
+        <source>Updated in %1 ms (edit to screen, %2 tree(s) regrown)</source>
+        <translation>In %1 ms aktualisiert (von der Bearbeitung bis zur Anzeige; neu gewachsene Bäume: %2)</translation>
+    </message>
+    <message>
+        <source>Autosaved to %1</source>
+        <translation>Automatisch in %1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Outliner</source>
+        <translation>Gliederung</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Statistics</source>
+        <translation>Statistik</translation>
+    </message>
+    <message>
+        <source>&lt;opened&gt;</source>
+        <translation>&lt;geöffnet&gt;</translation>
+    </message>
+    <message>
+        <source>Undo History</source>
+        <translation>Bearbeitungsverlauf</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Meldungen</translation>
+    </message>
+    <message>
+        <source>Python Console</source>
+        <translation>Python-Konsole</translation>
+    </message>
+    <message>
+        <source>&amp;New project</source>
+        <translation>Neues &amp;Projekt</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;as…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>Zu&amp;rücksetzen</translation>
+    </message>
+    <message>
+        <source>Save s&amp;creenshot…</source>
+        <translation>Bildschirm&amp;foto speichern…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Alt+S</source>
+        <translation>Ctrl+Alt+S</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+Z</source>
+        <translation>Ctrl+Shift+Z</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Duplizieren</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>Select &amp;all trees</source>
+        <translation>&amp;Alle Bäume auswählen</translation>
+    </message>
+    <message>
+        <source>&amp;Scene</source>
+        <translation>&amp;Szene</translation>
+    </message>
+    <message>
+        <source>Add &amp;species from file…</source>
+        <translation>&amp;Art aus Datei hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Add &amp;tree</source>
+        <translation>&amp;Baum hinzufügen</translation>
+    </message>
+    <message>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <source>Import &amp;obstacle…</source>
+        <translation>&amp;Hindernis importieren…</translation>
+    </message>
+    <message>
+        <source>Add &amp;domain</source>
+        <translation>Be&amp;reich hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Frame all</source>
+        <translation>&amp;Alles einpassen</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Bedienfelder</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Systemstandard</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>Sylva will use the new language when it starts again.</source>
+        <translation>Sylva verwendet die neue Sprache beim nächsten Start.</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Dokumentation</translation>
+    </message>
+    <message>
+        <source>&amp;About Sylva</source>
+        <translation>&amp;Über Sylva</translation>
+    </message>
+    <message>
+        <source>About Sylva</source>
+        <translation>Über Sylva</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Procedural trees and forests for film and games: L-systems, space colonization and self-organizing trees, forests that react to the scene they stand in.&lt;/p&gt;&lt;p&gt;Scripting: Python (the Python Console, or &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Prozedurale Bäume und Wälder für Film und Spiele: L-Systeme, Space Colonization und selbstorganisierende Bäume, Wälder, die auf die Szene reagieren, in der sie stehen.&lt;/p&gt;&lt;p&gt;Skripting: Python (die Python-Konsole oder &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>No recent files</source>
+        <translation>Keine zuletzt geöffneten Dateien</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Revert to the saved file and lose your edits?</source>
+        <translation>Zur gespeicherten Datei zurückkehren und Ihre Änderungen verwerfen?</translation>
+    </message>
+    <message>
+        <source>%1 (preview) — Sylva</source>
+        <translation>%1 (Vorschau) — Sylva</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%n trees)</source>
+        <translation>
+            <numerusform>%1 (%n Baum)</numerusform>
+            <numerusform>%1 (%n Bäume)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1[*] — Sylva</source>
+        <translation>%1[*] — Sylva</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Save them first?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>an untitled project</source>
+        <translation>einem unbenannten Projekt</translation>
+    </message>
+    <message>
+        <source>Sylva found edits of %1 autosaved at %2 that were never saved (the editor did not close normally). Restore them?</source>
+        <translation>Sylva hat am %2 automatisch gesicherte Änderungen an %1 gefunden, die nie gespeichert wurden (der Editor wurde nicht normal beendet). Wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Restored the autosaved edits of %1</source>
+        <translation>Automatisch gesicherte Änderungen an %1 wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>Add species</source>
+        <translation>Art hinzufügen</translation>
+    </message>
+    <message>
+        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
+        <translation>Arten und Grammatiken (*.json *.lsys *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Name in the project:</source>
+        <translation>Name im Projekt:</translation>
+    </message>
+    <message>
+        <source>Import obstacle</source>
+        <translation>Hindernis importieren</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)</source>
+        <translation>Netze (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk. Reload it and lose your unsaved edits?</source>
+        <translation>%1 wurde auf der Festplatte geändert. Neu laden und ungespeicherte Änderungen verwerfen?</translation>
+    </message>
+    <message>
+        <source>Save project as</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <source>Sylva projects (*.sylva)</source>
+        <translation>Sylva-Projekte (*.sylva)</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::MessagesPanel</name>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::OutlinerModel</name>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <source>Species (%1)</source>
+        <translation>Arten (%1)</translation>
+    </message>
+    <message>
+        <source>Trees (%1)</source>
+        <translation>Bäume (%1)</translation>
+    </message>
+    <message>
+        <source>Domains (%1)</source>
+        <translation>Bereiche (%1)</translation>
+    </message>
+    <message>
+        <source>Obstacles (%1)</source>
+        <translation>Hindernisse (%1)</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>Position %1, looking at %2: the LOD reference and the start view</source>
+        <translation>Position %1, Blick auf %2: Bezugspunkt für den LOD und Startansicht</translation>
+    </message>
+    <message>
+        <source>Light direction %1</source>
+        <translation>Lichtrichtung %1</translation>
+    </message>
+    <message>
+        <source>Stored in the project (edited here)</source>
+        <translation>Im Projekt gespeichert (hier bearbeitet)</translation>
+    </message>
+    <message>
+        <source>From %1</source>
+        <translation>Aus %1</translation>
+    </message>
+    <message>
+        <source>%1 #%2</source>
+        <translation>%1 #%2</translation>
+    </message>
+    <message>
+        <source>At %1 m, rotated %2°, scale %3, seed %4</source>
+        <translation>Bei %1 m, um %2° gedreht, Skalierung %3, Startwert %4</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 trees</source>
+        <translation>%1 %2: %3 Bäume</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PropertiesPanel</name>
+    <message>
+        <source>Seed:</source>
+        <translation>Startwert:</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>Projekt</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Datei:</translation>
+    </message>
+    <message>
+        <source>The project seed: domain trees take their seeds from it and their ids</source>
+        <translation>Der Startwert des Projekts: Die Bäume der Bereiche leiten ihre Startwerte daraus und aus ihren IDs ab</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>Tree #%1</source>
+        <translation>Baum #%1</translation>
+    </message>
+    <message>
+        <source>Species:</source>
+        <translation>Art:</translation>
+    </message>
+    <message>
+        <source>Position:</source>
+        <translation>Position:</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Where the trunk meets the ground, metres</source>
+        <translation>Punkt, an dem der Stamm den Boden berührt, in Metern</translation>
+    </message>
+    <message>
+        <source>Rotation:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Turn about the vertical axis, degrees</source>
+        <translation>Drehung um die senkrechte Achse, in Grad</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Skalierung:</translation>
+    </message>
+    <message>
+        <source>Uniform size factor, 0.01 to 100</source>
+        <translation>Einheitlicher Größenfaktor, 0,01 bis 100</translation>
+    </message>
+    <message>
+        <source>Growth:</source>
+        <translation>Wachstum:</translation>
+    </message>
+    <message>
+        <source>Growth stage, 0.01 (sapling) to 1 (mature)</source>
+        <translation>Wachstumsstadium, 0,01 (Jungbaum) bis 1 (ausgewachsen)</translation>
+    </message>
+    <message>
+        <source>The tree&apos;s own seed: another seed grows another tree of the species</source>
+        <translation>Der eigene Startwert des Baums: Ein anderer Startwert lässt einen anderen Baum derselben Art wachsen</translation>
+    </message>
+    <message>
+        <source>Obstacle %1</source>
+        <translation>Hindernis %1</translation>
+    </message>
+    <message>
+        <source>Mesh:</source>
+        <translation>Netz:</translation>
+    </message>
+    <message>
+        <source>Translate:</source>
+        <translation>Verschiebung:</translation>
+    </message>
+    <message>
+        <source>Moves the mesh, metres</source>
+        <translation>Verschiebt das Netz, in Metern</translation>
+    </message>
+    <message>
+        <source>Rotate:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <source>Rotation about x, then y, then z, degrees</source>
+        <translation>Drehung um x, dann y, dann z, in Grad</translation>
+    </message>
+    <message>
+        <source>Scale per axis</source>
+        <translation>Skalierung pro Achse</translation>
+    </message>
+    <message>
+        <source>Domain %1 (%2)</source>
+        <translation>Bereich %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Minimum x, z:</source>
+        <translation>Minimum x, z:</translation>
+    </message>
+    <message>
+        <source>Corner of the rectangle on the ground</source>
+        <translation>Ecke des Rechtecks auf dem Boden</translation>
+    </message>
+    <message>
+        <source>Maximum x, z:</source>
+        <translation>Maximum x, z:</translation>
+    </message>
+    <message>
+        <source>Opposite corner of the rectangle</source>
+        <translation>Gegenüberliegende Ecke des Rechtecks</translation>
+    </message>
+    <message>
+        <source>%1 trees:</source>
+        <translation>Bäume (%1):</translation>
+    </message>
+    <message>
+        <source>How many trees of this species the domain scatters</source>
+        <translation>Anzahl der Bäume dieser Art, die der Bereich verteilt</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Where the camera stands: the reference for level of detail</source>
+        <translation>Standort der Kamera: der Bezugspunkt für den Detailgrad</translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation>Ziel:</translation>
+    </message>
+    <message>
+        <source>The point the camera looks at</source>
+        <translation>Der Punkt, auf den die Kamera blickt</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>Direction:</source>
+        <translation>Richtung:</translation>
+    </message>
+    <message>
+        <source>The direction sunlight travels (towards the ground: y &lt; 0); trees grow towards where it comes from</source>
+        <translation>Die Richtung, in die das Sonnenlicht fällt (zum Boden hin: y &lt; 0); Bäume wachsen dorthin, woher es kommt</translation>
+    </message>
+    <message>
+        <source>Species</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; edit its parameters from the Python console (doc.set_param).</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Von Hand platzierte Bäume: %3. Benennen Sie die Art in der Gliederung um; bearbeiten Sie ihre Parameter in der Python-Konsole (doc.set_param).</translation>
+    </message>
+    <message>
+        <source>Stored in the project.</source>
+        <translation>Im Projekt gespeichert.</translation>
+    </message>
+    <message>
+        <source>From %1 (stored in the project after its first edit).</source>
+        <translation>Aus %1 (nach der ersten Bearbeitung im Projekt gespeichert).</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PythonConsole</name>
+    <message>
+        <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
+        <translation>Python %1: sylva und doc = sylva.document() sind bereit. Probieren Sie doc.trees() oder doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
     </message>
 </context>
 <context>
@@ -332,6 +941,25 @@
     <message>
         <source>%1 t</source>
         <translation>%1 t</translation>
+    </message>
+    <message>
+        <source>Selection:</source>
+        <translation>Auswahl:</translation>
+    </message>
+    <message>
+        <source>nothing selected</source>
+        <translation>nichts ausgewählt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n tree(s)</source>
+        <translation>
+            <numerusform>%n Baum</numerusform>
+            <numerusform>%n Bäume</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; up to %1 m tall, DBH up to %2 cm; wood %3 m³, biomass %4 kg, CO₂ %5 kg</source>
+        <translation>; bis zu %1 m hoch, BHD bis zu %2 cm; Holz %3 m³, Biomasse %4 kg, CO₂ %5 kg</translation>
     </message>
 </context>
 <context>

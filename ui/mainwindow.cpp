@@ -487,6 +487,7 @@ void MainWindow::openSpecies(const QString& path) {
     mStats->showGenerating(name);
     statusBar()->showMessage(tr("Generating %1…").arg(name));
     setBusy(true);
+    mPreviewRunning = true;
     mWatcher.setFuture(QtConcurrent::run([path](QPromise<GenerationResult>& promise) {
         PromiseProgress progress(promise);
         promise.addResult(generateTree(path, progress));
@@ -582,7 +583,7 @@ const GenerationResult& MainWindow::lastResult() const {
 }
 
 bool MainWindow::isGenerating() const {
-    return mWatcher.isRunning() || mGenerator->isBusy();
+    return mPreviewRunning || mGenerator->isBusy();
 }
 
 bool MainWindow::waitForGeneration(int timeoutMs) {
@@ -606,6 +607,7 @@ void MainWindow::setBusy(bool busy) {
 
 void MainWindow::onPreviewFinished() {
     const QFuture<GenerationResult> future = mWatcher.future();
+    mPreviewRunning = mWatcher.isRunning(); // a newer preview may already run
     if (future.isCanceled() || future.resultCount() == 0) {
         setBusy(false);
         return; // superseded by a newer run, or cancelled

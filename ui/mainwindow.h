@@ -191,6 +191,7 @@ private:
 
     bool mPreview = false;                     ///< a species file is shown instead of the document
     QFutureWatcher<GenerationResult> mWatcher; ///< the preview's generation
+    bool mPreviewRunning = false;              ///< until onPreviewFinished() took its result
     QString mPreviewPath;
     GenerationResult mPreviewResult;
     QString mLastError;

@@ -23,7 +23,7 @@ DocumentGenerator::~DocumentGenerator() {
 
 void DocumentGenerator::regenerate() {
     mUserCancelled = false;
-    if (mWatcher.isRunning()) {
+    if (mRunning) {
         // Newest edit wins: stop the running build; onFinished() starts the latest state.
         if (!mPending) mPendingEdit.start();
         mPending = true;
@@ -35,9 +35,9 @@ void DocumentGenerator::regenerate() {
 }
 
 void DocumentGenerator::regenerateAll() {
-    if (mWatcher.isRunning()) {
+    if (mRunning) {
         mWatcher.cancel();
-        mWatcher.waitForFinished();
+        mWatcher.waitForFinished(); // the cache is not cleared under a running build
     }
     mCaches.trees.clear();
     regenerate();
@@ -56,6 +56,7 @@ void DocumentGenerator::start() {
     const std::vector<doc::TreeId> ids = mDocument.treeIds();
     const QString path = mDocument.path().isEmpty() ? mDocument.displayName() : mDocument.path();
     SceneCaches* caches = &mCaches;
+    mRunning = true;
     Q_EMIT started();
     mWatcher.setFuture(
         QtConcurrent::run([project, ids, path, caches](QPromise<GenerationResult>& promise) {
@@ -65,6 +66,7 @@ void DocumentGenerator::start() {
 }
 
 void DocumentGenerator::onFinished() {
+    mRunning = false;
     const QFuture<GenerationResult> future = mWatcher.future();
     const bool gotResult = !future.isCanceled() && future.resultCount() > 0;
     GenerationResult result = gotResult ? future.result() : GenerationResult{};

@@ -27,7 +27,9 @@ public:
     void regenerateAll();
     /// Stops the running generation; the last good result stays.
     void cancel();
-    bool isBusy() const { return mWatcher.isRunning() || mPending; }
+    /// A generation runs, or its result has not been taken yet (the future can be finished
+    /// while its finished() signal is still queued), or a newer one waits.
+    bool isBusy() const { return mRunning || mPending; }
     /// The last successful generation.
     const GenerationResult& result() const { return mResult; }
     /// Milliseconds from the edit that asked for the last result to its end (the mesh ready).
@@ -48,6 +50,7 @@ private:
     doc::Document& mDocument;
     SceneCaches mCaches;
     QFutureWatcher<GenerationResult> mWatcher;
+    bool mRunning = false;       ///< started, onFinished() not yet run
     bool mPending = false;       ///< an edit arrived while a generation ran
     bool mUserCancelled = false; ///< cancel(): do not restart
     QElapsedTimer mSinceEdit;    ///< started at the edit the running generation builds

@@ -1,0 +1,41 @@
+#!/bin/sh
+# Runs the editor's Python scripting tests: `sylva --script` on the demo project (a copy, so
+# saving never touches the repository's file), exit statuses, and a SIGKILL after scripted
+# edits followed by a start that restores them. Usage: run_scripts.sh <sylva> <source dir> <out>
+set -eu
+SYLVA=$1
+SRC=$2
+OUT=$3
+HERE=$(dirname "$0")
+rm -rf "$OUT"
+mkdir -p "$OUT/config"
+export SYLVA_TEST_OUT="$OUT"
+export XDG_CONFIG_HOME="$OUT/config" # settings and the autosave copy stay in the test folder
+export SYLVA_PRESETS_DIR="$SRC/presets"
+DEMO="$SRC/resources/demo/forest.sylva"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+echo "-- api_edits.py"
+"$SYLVA" --discard-autosave --script "$HERE/api_edits.py" "$DEMO" || fail "api_edits.py"
+
+echo "-- exit_status.py"
+status=0
+"$SYLVA" --script "$HERE/exit_status.py" || status=$?
+[ "$status" -eq 3 ] || fail "sylva.quit(3) exited with $status"
+
+echo "-- raises.py"
+status=0
+"$SYLVA" --script "$HERE/raises.py" "$DEMO" 2>"$OUT/raises.err" || status=$?
+[ "$status" -eq 1 ] || fail "a raised exception exited with $status"
+grep -q "Traceback" "$OUT/raises.err" || fail "no traceback on stderr"
+grep -q "ValueError: unknown species 'no-such-species'" "$OUT/raises.err" || fail "no message"
+
+echo "-- crash_after_edits.py (SIGKILL)"
+status=0
+"$SYLVA" --discard-autosave --script "$HERE/crash_after_edits.py" "$DEMO" || status=$?
+[ "$status" -eq 137 ] || fail "the editor was not killed (status $status)"
+ls "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" >/dev/null || fail "no autosave copy after the crash"
+echo "-- check_restored.py (--restore)"
+"$SYLVA" --restore --script "$HERE/check_restored.py" || fail "check_restored.py"
+[ ! -e "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" ] || fail "the copy outlived a normal exit"
+echo "script tests: 5 passed, 0 failed"

@@ -1,0 +1,976 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="fr_FR">
+<context>
+    <name>AttributeColors</name>
+    <message>
+        <source>Light per internode</source>
+        <translation>Lumière par entre-nœud</translation>
+    </message>
+    <message>
+        <source>Vigour (log scale)</source>
+        <translation>Vigueur (échelle logarithmique)</translation>
+    </message>
+    <message>
+        <source>Age in cycles</source>
+        <translation>Âge en cycles</translation>
+    </message>
+    <message>
+        <source>Branch order</source>
+        <translation>Ordre des branches</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Matériaux</translation>
+    </message>
+    <message>
+        <source>%1: not available for this tree</source>
+        <translation>%1 : non disponible pour cet arbre</translation>
+    </message>
+    <message>
+        <source>%1: 0 (blue) – %2 (yellow)</source>
+        <translation>%1 : 0 (bleu) – %2 (jaune)</translation>
+    </message>
+    <message>
+        <source>; red: %1 internodes in branches below the shedding threshold %2, shed at the next cycle</source>
+        <translation>; rouge : %1 entre-nœuds dans des branches sous le seuil d&apos;élagage %2, élagués au cycle suivant</translation>
+    </message>
+    <message>
+        <source>; no branch is below the shedding threshold %1</source>
+        <translation>; aucune branche n&apos;est sous le seuil d&apos;élagage %1</translation>
+    </message>
+</context>
+<context>
+    <name>Commands</name>
+    <message>
+        <source>Remove tree</source>
+        <translation>Supprimer l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Remove trees</source>
+        <translation>Supprimer les arbres</translation>
+    </message>
+    <message>
+        <source>Duplicate tree</source>
+        <translation>Dupliquer l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Duplicate trees</source>
+        <translation>Dupliquer les arbres</translation>
+    </message>
+    <message>
+        <source>Add species</source>
+        <translation>Ajouter une espèce</translation>
+    </message>
+    <message>
+        <source>Rename species</source>
+        <translation>Renommer l&apos;espèce</translation>
+    </message>
+    <message>
+        <source>Remove species</source>
+        <translation>Supprimer l&apos;espèce</translation>
+    </message>
+    <message>
+        <source>Edit grammar</source>
+        <translation>Modifier la grammaire</translation>
+    </message>
+    <message>
+        <source>Change %1</source>
+        <translation>Modifier %1</translation>
+    </message>
+    <message>
+        <source>Change project seed</source>
+        <translation>Modifier la graine du projet</translation>
+    </message>
+    <message>
+        <source>Move camera</source>
+        <translation>Déplacer la caméra</translation>
+    </message>
+    <message>
+        <source>Change light</source>
+        <translation>Modifier la lumière</translation>
+    </message>
+    <message>
+        <source>Add tree</source>
+        <translation>Ajouter un arbre</translation>
+    </message>
+    <message>
+        <source>Edit tree</source>
+        <translation>Modifier l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Move tree</source>
+        <translation>Déplacer l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Rotate tree</source>
+        <translation>Faire pivoter l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Scale tree</source>
+        <translation>Mettre l&apos;arbre à l&apos;échelle</translation>
+    </message>
+    <message>
+        <source>Change tree seed</source>
+        <translation>Modifier la graine de l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Change tree species</source>
+        <translation>Modifier l&apos;espèce de l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Change tree growth</source>
+        <translation>Modifier la croissance de l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Remove obstacle</source>
+        <translation>Supprimer l&apos;obstacle</translation>
+    </message>
+    <message>
+        <source>Add obstacle</source>
+        <translation>Ajouter un obstacle</translation>
+    </message>
+    <message>
+        <source>Remove domain</source>
+        <translation>Supprimer la zone</translation>
+    </message>
+    <message>
+        <source>Add domain</source>
+        <translation>Ajouter une zone</translation>
+    </message>
+    <message>
+        <source>Transform obstacle</source>
+        <translation>Transformer l&apos;obstacle</translation>
+    </message>
+    <message>
+        <source>Change obstacle mesh</source>
+        <translation>Modifier le maillage de l&apos;obstacle</translation>
+    </message>
+    <message>
+        <source>Change tree counts</source>
+        <translation>Modifier le nombre d&apos;arbres</translation>
+    </message>
+    <message>
+        <source>Change domain</source>
+        <translation>Modifier la zone</translation>
+    </message>
+</context>
+<context>
+    <name>Document</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>%1: the species&apos; output node produced no mesh</source>
+        <translation>%1 : le nœud de sortie de l&apos;espèce n&apos;a produit aucun maillage</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%n trees)</source>
+        <translation>
+            <numerusform>%1 (%n arbre)</numerusform>
+            <numerusform>%1 (%n arbres)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: the project has no trees and no obstacles</source>
+        <translation>%1 : le projet ne contient ni arbres ni obstacles</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Sylva, the procedural tree editor.</source>
+        <translation>Sylva, l&apos;éditeur d&apos;arbres procéduraux.</translation>
+    </message>
+    <message>
+        <source>Species or project (.sylva) to open (default: the ternary tree).</source>
+        <translation>Espèce ou projet (.sylva) à ouvrir (par défaut : l&apos;arbre ternaire).</translation>
+    </message>
+    <message>
+        <source>Render the viewport to &lt;file&gt; (PNG) and exit.</source>
+        <translation>Rendre la vue dans &lt;file&gt; (PNG) et quitter.</translation>
+    </message>
+    <message>
+        <source>Viewport size in pixels, e.g. 1024x768.</source>
+        <translation>Taille de la vue en pixels, par ex. 1024x768.</translation>
+    </message>
+    <message>
+        <source>Colour the tree by &lt;mode&gt;: material, light, vigour, age or order.</source>
+        <translation>Colorer l&apos;arbre selon &lt;mode&gt; : material, light, vigour, age ou order.</translation>
+    </message>
+    <message>
+        <source>Run the Python script &lt;file&gt; in the editor (after opening the project, if one is given) and exit with its status.</source>
+        <translation>Exécuter le script Python &lt;file&gt; dans l&apos;éditeur (après l&apos;ouverture du projet, s&apos;il est indiqué) et quitter avec son code de sortie.</translation>
+    </message>
+    <message>
+        <source>Restore edits autosaved before a crash without asking.</source>
+        <translation>Restaurer sans confirmation les modifications enregistrées automatiquement avant un plantage.</translation>
+    </message>
+    <message>
+        <source>Discard edits autosaved before a crash without asking.</source>
+        <translation>Abandonner sans confirmation les modifications enregistrées automatiquement avant un plantage.</translation>
+    </message>
+    <message>
+        <source>expected at most one species or project file</source>
+        <translation>un seul fichier d&apos;espèce ou de projet est attendu au maximum</translation>
+    </message>
+    <message>
+        <source>--size expects WxH between 16 and 8192, got &apos;%1&apos;</source>
+        <translation>--size attend LxH entre 16 et 8192, reçu « %1 »</translation>
+    </message>
+    <message>
+        <source>--color-by expects material, light, vigour, age or order, got &apos;%1&apos;</source>
+        <translation>--color-by attend material, light, vigour, age ou order, reçu « %1 »</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::MainWindow</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Stop the generation; the last result stays</source>
+        <translation>Arrêter la génération ; le dernier résultat est conservé</translation>
+    </message>
+    <message>
+        <source>Generating: %1</source>
+        <translation>Génération : %1</translation>
+    </message>
+    <message>
+        <source>Regrowing: %1</source>
+        <translation>Nouvelle croissance : %1</translation>
+    </message>
+    <message>
+        <source>Generation cancelled; the last result stays</source>
+        <translation>Génération annulée ; le dernier résultat est conservé</translation>
+    </message>
+    <message>
+        <source>Updated in %1 ms (edit to screen, %2 tree(s) regrown)</source>
+        <translation>Mis à jour en %1 ms (de la modification à l&apos;affichage ; arbres recalculés : %2)</translation>
+    </message>
+    <message>
+        <source>Autosaved to %1</source>
+        <translation>Enregistré automatiquement dans %1</translation>
+    </message>
+    <message>
+        <source>Outliner</source>
+        <translation>Synoptique</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Propriétés</translation>
+    </message>
+    <message>
+        <source>Statistics</source>
+        <translation>Statistiques</translation>
+    </message>
+    <message>
+        <source>&lt;opened&gt;</source>
+        <translation>&lt;ouvert&gt;</translation>
+    </message>
+    <message>
+        <source>Undo History</source>
+        <translation>Historique d&apos;annulation</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Messages</translation>
+    </message>
+    <message>
+        <source>Python Console</source>
+        <translation>Console Python</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>&amp;New project</source>
+        <translation>&amp;Nouveau projet</translation>
+    </message>
+    <message>
+        <source>&amp;Open species or project…</source>
+        <translation>&amp;Ouvrir une espèce ou un projet…</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Fichiers ré&amp;cents</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Enregistrer</translation>
+    </message>
+    <message>
+        <source>Save &amp;as…</source>
+        <translation>Enregistrer &amp;sous…</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>Re&amp;venir à la version enregistrée</translation>
+    </message>
+    <message>
+        <source>&amp;Reload</source>
+        <translation>&amp;Recharger</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>Reload &amp;automatically</source>
+        <translation>Recharger &amp;automatiquement</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>E&amp;xporter…</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Save s&amp;creenshot…</source>
+        <translation>Enregistrer une ca&amp;pture d&apos;écran…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Alt+S</source>
+        <translation>Ctrl+Alt+S</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+Z</source>
+        <translation>Ctrl+Shift+Z</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Dupliquer</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>Select &amp;all trees</source>
+        <translation>Sélectionner &amp;tous les arbres</translation>
+    </message>
+    <message>
+        <source>&amp;Scene</source>
+        <translation>&amp;Scène</translation>
+    </message>
+    <message>
+        <source>Add &amp;species from file…</source>
+        <translation>Ajouter une &amp;espèce depuis un fichier…</translation>
+    </message>
+    <message>
+        <source>Add &amp;tree</source>
+        <translation>Ajouter un &amp;arbre</translation>
+    </message>
+    <message>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <source>Import &amp;obstacle…</source>
+        <translation>Importer un &amp;obstacle…</translation>
+    </message>
+    <message>
+        <source>Add &amp;domain</source>
+        <translation>Ajouter une &amp;zone</translation>
+    </message>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Préréglages</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <source>&amp;Frame all</source>
+        <translation>&amp;Tout cadrer</translation>
+    </message>
+    <message>
+        <source>Show &amp;grid</source>
+        <translation>Afficher la &amp;grille</translation>
+    </message>
+    <message>
+        <source>&amp;Colour by</source>
+        <translation>&amp;Colorer selon</translation>
+    </message>
+    <message>
+        <source>&amp;Material</source>
+        <translation>&amp;Matériau</translation>
+    </message>
+    <message>
+        <source>&amp;Light (per internode)</source>
+        <translation>&amp;Lumière (par entre-nœud)</translation>
+    </message>
+    <message>
+        <source>&amp;Vigour</source>
+        <translation>&amp;Vigueur</translation>
+    </message>
+    <message>
+        <source>&amp;Age</source>
+        <translation>Â&amp;ge</translation>
+    </message>
+    <message>
+        <source>Branch &amp;order</source>
+        <translation>&amp;Ordre des branches</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Panneaux</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Langue</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Langue du système</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Langue</translation>
+    </message>
+    <message>
+        <source>Sylva will use the new language when it starts again.</source>
+        <translation>Sylva utilisera la nouvelle langue au prochain démarrage.</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aide</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Documentation</translation>
+    </message>
+    <message>
+        <source>&amp;About Sylva</source>
+        <translation>À &amp;propos de Sylva</translation>
+    </message>
+    <message>
+        <source>About Sylva</source>
+        <translation>À propos de Sylva</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Procedural trees and forests for film and games: L-systems, space colonization and self-organizing trees, forests that react to the scene they stand in.&lt;/p&gt;&lt;p&gt;Scripting: Python (the Python Console, or &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Arbres et forêts procéduraux pour le cinéma et le jeu vidéo : L-systèmes, colonisation de l&apos;espace et arbres auto-organisés, des forêts qui réagissent à la scène dans laquelle elles se trouvent.&lt;/p&gt;&lt;p&gt;Scripts : Python (la console Python, ou &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Colouring by node attributes needs a single tree: the forest is shown in its materials</source>
+        <translation>La coloration selon les attributs des nœuds nécessite un seul arbre : la forêt est affichée avec ses matériaux</translation>
+    </message>
+    <message>
+        <source>No presets folder found (set SYLVA_PRESETS_DIR)</source>
+        <translation>Aucun dossier de préréglages trouvé (définissez SYLVA_PRESETS_DIR)</translation>
+    </message>
+    <message>
+        <source>No presets in %1</source>
+        <translation>Aucun préréglage dans %1</translation>
+    </message>
+    <message>
+        <source>No recent files</source>
+        <translation>Aucun fichier récent</translation>
+    </message>
+    <message>
+        <source>Generating %1…</source>
+        <translation>Génération de %1…</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 ouvert</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 enregistré</translation>
+    </message>
+    <message>
+        <source>Revert to the saved file and lose your edits?</source>
+        <translation>Revenir au fichier enregistré et perdre vos modifications ?</translation>
+    </message>
+    <message>
+        <source>No presets folder found: set SYLVA_PRESETS_DIR or open a species file with File ▸ Open species…</source>
+        <translation>Aucun dossier de préréglages trouvé : définissez SYLVA_PRESETS_DIR ou ouvrez un fichier d&apos;espèce avec Fichier ▸ Ouvrir une espèce ou un projet…</translation>
+    </message>
+    <message>
+        <source>Generated %1 in %2 ms</source>
+        <translation>%1 généré en %2 ms</translation>
+    </message>
+    <message>
+        <source>%1 (preview) — Sylva</source>
+        <translation>%1 (aperçu) — Sylva</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%n trees)</source>
+        <translation>
+            <numerusform>%1 (%n arbre)</numerusform>
+            <numerusform>%1 (%n arbres)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1[*] — Sylva</source>
+        <translation>%1[*] — Sylva</translation>
+    </message>
+    <message>
+        <source>Sylva</source>
+        <translation>Sylva</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Save them first?</source>
+        <translation>%1 contient des modifications non enregistrées. Les enregistrer d&apos;abord ?</translation>
+    </message>
+    <message>
+        <source>an untitled project</source>
+        <translation>projet sans titre</translation>
+    </message>
+    <message>
+        <source>Sylva found edits of %1 autosaved at %2 that were never saved (the editor did not close normally). Restore them?</source>
+        <translation>Sylva a trouvé des modifications de « %1 » enregistrées automatiquement le %2 mais jamais enregistrées (l&apos;éditeur ne s&apos;est pas fermé normalement). Les restaurer ?</translation>
+    </message>
+    <message>
+        <source>Restored the autosaved edits of %1</source>
+        <translation>Modifications de « %1 » enregistrées automatiquement restaurées</translation>
+    </message>
+    <message>
+        <source>Add species</source>
+        <translation>Ajouter une espèce</translation>
+    </message>
+    <message>
+        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
+        <translation>Espèces et grammaires (*.json *.lsys *.txt);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Name in the project:</source>
+        <translation>Nom dans le projet :</translation>
+    </message>
+    <message>
+        <source>Import obstacle</source>
+        <translation>Importer un obstacle</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)</source>
+        <translation>Maillages (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>%1 changed on disk. Reload it and lose your unsaved edits?</source>
+        <translation>%1 a été modifié sur le disque. Le recharger et perdre vos modifications non enregistrées ?</translation>
+    </message>
+    <message>
+        <source>Could not read the viewport&apos;s image (no OpenGL context).</source>
+        <translation>Impossible de lire l&apos;image de la vue (aucun contexte OpenGL).</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Impossible d&apos;écrire %1.</translation>
+    </message>
+    <message>
+        <source>Nothing to export yet.</source>
+        <translation>Rien à exporter pour l&apos;instant.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n tree(s) to %1 (%2 files)</source>
+        <translation>
+            <numerusform>%n arbre exporté vers %1 (%2 fichiers)</numerusform>
+            <numerusform>%n arbres exportés vers %1 (%2 fichiers)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx)</translation>
+    </message>
+    <message>
+        <source>Open species or project</source>
+        <translation>Ouvrir une espèce ou un projet</translation>
+    </message>
+    <message>
+        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
+        <translation>Espèces, grammaires et projets (*.json *.lsys *.txt *.sylva);;Projets (*.sylva);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Save project as</source>
+        <translation>Enregistrer le projet sous</translation>
+    </message>
+    <message>
+        <source>Sylva projects (*.sylva)</source>
+        <translation>Projets Sylva (*.sylva)</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Enregistrer une capture d&apos;écran</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.bmp)</source>
+        <translation>Images (*.png *.jpg *.bmp)</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::MessagesPanel</name>
+    <message>
+        <source>Clear</source>
+        <translation>Effacer</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::OutlinerModel</name>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>lecture impossible : %1</translation>
+    </message>
+    <message>
+        <source>Species (%1)</source>
+        <translation>Espèces (%1)</translation>
+    </message>
+    <message>
+        <source>Trees (%1)</source>
+        <translation>Arbres (%1)</translation>
+    </message>
+    <message>
+        <source>Domains (%1)</source>
+        <translation>Zones (%1)</translation>
+    </message>
+    <message>
+        <source>Obstacles (%1)</source>
+        <translation>Obstacles (%1)</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Position %1, looking at %2: the LOD reference and the start view</source>
+        <translation>Position %1, visant %2 : la référence du LOD et la vue de départ</translation>
+    </message>
+    <message>
+        <source>Light direction %1</source>
+        <translation>Direction de la lumière %1</translation>
+    </message>
+    <message>
+        <source>Stored in the project (edited here)</source>
+        <translation>Stockée dans le projet (modifiée ici)</translation>
+    </message>
+    <message>
+        <source>From %1</source>
+        <translation>Source : %1</translation>
+    </message>
+    <message>
+        <source>%1 #%2</source>
+        <translation>%1 #%2</translation>
+    </message>
+    <message>
+        <source>At %1 m, rotated %2°, scale %3, seed %4</source>
+        <translation>À %1 m, pivoté de %2°, échelle %3, graine %4</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 trees</source>
+        <translation>%1 %2 : %3 arbres</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PropertiesPanel</name>
+    <message>
+        <source>Seed:</source>
+        <translation>Graine :</translation>
+    </message>
+    <message>
+        <source>Project</source>
+        <translation>Projet</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Fichier :</translation>
+    </message>
+    <message>
+        <source>The project seed: domain trees take their seeds from it and their ids</source>
+        <translation>La graine du projet : les arbres des zones calculent leur graine à partir de celle-ci et de leur identifiant</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>pas encore enregistré</translation>
+    </message>
+    <message>
+        <source>Tree #%1</source>
+        <translation>Arbre #%1</translation>
+    </message>
+    <message>
+        <source>Species:</source>
+        <translation>Espèce :</translation>
+    </message>
+    <message>
+        <source>Position:</source>
+        <translation>Position :</translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Where the trunk meets the ground, metres</source>
+        <translation>Point où le tronc touche le sol, en mètres</translation>
+    </message>
+    <message>
+        <source>Rotation:</source>
+        <translation>Rotation :</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>Turn about the vertical axis, degrees</source>
+        <translation>Rotation autour de l&apos;axe vertical, en degrés</translation>
+    </message>
+    <message>
+        <source>Scale:</source>
+        <translation>Échelle :</translation>
+    </message>
+    <message>
+        <source>Uniform size factor, 0.01 to 100</source>
+        <translation>Facteur de taille uniforme, de 0,01 à 100</translation>
+    </message>
+    <message>
+        <source>Growth:</source>
+        <translation>Croissance :</translation>
+    </message>
+    <message>
+        <source>Growth stage, 0.01 (sapling) to 1 (mature)</source>
+        <translation>Stade de croissance, de 0,01 (jeune plant) à 1 (adulte)</translation>
+    </message>
+    <message>
+        <source>The tree&apos;s own seed: another seed grows another tree of the species</source>
+        <translation>La graine propre à l&apos;arbre : une autre graine fait pousser un autre arbre de la même espèce</translation>
+    </message>
+    <message>
+        <source>Obstacle %1</source>
+        <translation>Obstacle %1</translation>
+    </message>
+    <message>
+        <source>Mesh:</source>
+        <translation>Maillage :</translation>
+    </message>
+    <message>
+        <source>Translate:</source>
+        <translation>Translation :</translation>
+    </message>
+    <message>
+        <source>Moves the mesh, metres</source>
+        <translation>Déplace le maillage, en mètres</translation>
+    </message>
+    <message>
+        <source>Rotate:</source>
+        <translation>Rotation :</translation>
+    </message>
+    <message>
+        <source>Rotation about x, then y, then z, degrees</source>
+        <translation>Rotation autour de x, puis y, puis z, en degrés</translation>
+    </message>
+    <message>
+        <source>Scale per axis</source>
+        <translation>Échelle par axe</translation>
+    </message>
+    <message>
+        <source>Domain %1 (%2)</source>
+        <translation>Zone %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Minimum x, z:</source>
+        <translation>Minimum x, z :</translation>
+    </message>
+    <message>
+        <source>Corner of the rectangle on the ground</source>
+        <translation>Coin du rectangle au sol</translation>
+    </message>
+    <message>
+        <source>Maximum x, z:</source>
+        <translation>Maximum x, z :</translation>
+    </message>
+    <message>
+        <source>Opposite corner of the rectangle</source>
+        <translation>Coin opposé du rectangle</translation>
+    </message>
+    <message>
+        <source>%1 trees:</source>
+        <translation>Arbres (%1) :</translation>
+    </message>
+    <message>
+        <source>How many trees of this species the domain scatters</source>
+        <translation>Nombre d&apos;arbres de cette espèce que la zone disperse</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Caméra</translation>
+    </message>
+    <message>
+        <source>Where the camera stands: the reference for level of detail</source>
+        <translation>Position de la caméra : la référence pour le niveau de détail</translation>
+    </message>
+    <message>
+        <source>Target:</source>
+        <translation>Cible :</translation>
+    </message>
+    <message>
+        <source>The point the camera looks at</source>
+        <translation>Le point que vise la caméra</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Direction:</source>
+        <translation>Direction :</translation>
+    </message>
+    <message>
+        <source>The direction sunlight travels (towards the ground: y &lt; 0); trees grow towards where it comes from</source>
+        <translation>La direction dans laquelle se propage la lumière du soleil (vers le sol : y &lt; 0) ; les arbres poussent vers sa provenance</translation>
+    </message>
+    <message>
+        <source>Species</source>
+        <translation>Espèce</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; edit its parameters from the Python console (doc.set_param).</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Arbres placés à la main : %3. Renommez l&apos;espèce dans le synoptique ; modifiez ses paramètres depuis la console Python (doc.set_param).</translation>
+    </message>
+    <message>
+        <source>Stored in the project.</source>
+        <translation>Stockée dans le projet.</translation>
+    </message>
+    <message>
+        <source>From %1 (stored in the project after its first edit).</source>
+        <translation>Source : %1 (stockée dans le projet après sa première modification).</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PythonConsole</name>
+    <message>
+        <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
+        <translation>Python %1 : sylva et doc = sylva.document() sont prêts. Essayez doc.trees() ou doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::StatsPanel</name>
+    <message>
+        <source>Species:</source>
+        <translation>Espèce :</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>Fichier :</translation>
+    </message>
+    <message>
+        <source>Trees:</source>
+        <translation>Arbres :</translation>
+    </message>
+    <message>
+        <source>Vertices:</source>
+        <translation>Sommets :</translation>
+    </message>
+    <message>
+        <source>Triangles:</source>
+        <translation>Triangles :</translation>
+    </message>
+    <message>
+        <source>Segments:</source>
+        <translation>Segments :</translation>
+    </message>
+    <message>
+        <source>Leaves:</source>
+        <translation>Feuilles :</translation>
+    </message>
+    <message>
+        <source>Height:</source>
+        <translation>Hauteur :</translation>
+    </message>
+    <message>
+        <source>Generation time:</source>
+        <translation>Temps de génération :</translation>
+    </message>
+    <message>
+        <source>CO₂ stored:</source>
+        <translation>CO₂ stocké :</translation>
+    </message>
+    <message>
+        <source>Selection:</source>
+        <translation>Sélection :</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 t</source>
+        <translation>%1 t</translation>
+    </message>
+    <message>
+        <source>nothing selected</source>
+        <translation>aucune sélection</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n tree(s)</source>
+        <translation>
+            <numerusform>%n arbre</numerusform>
+            <numerusform>%n arbres</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; up to %1 m tall, DBH up to %2 cm; wood %3 m³, biomass %4 kg, CO₂ %5 kg</source>
+        <translation>; jusqu&apos;à %1 m de haut, DHP jusqu&apos;à %2 cm ; bois %3 m³, biomasse %4 kg, CO₂ %5 kg</translation>
+    </message>
+    <message>
+        <source>Generating %1…</source>
+        <translation>Génération de %1…</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::Viewport</name>
+    <message>
+        <source>OpenGL 3.3 core profile is not available (got %1.%2).</source>
+        <translation>Le profil core d&apos;OpenGL 3.3 n&apos;est pas disponible (obtenu : %1.%2).</translation>
+    </message>
+    <message>
+        <source>The mesh has an index out of range; it is not drawn.</source>
+        <translation>Le maillage contient un indice hors limites ; il n&apos;est pas dessiné.</translation>
+    </message>
+</context>
+</TS>
