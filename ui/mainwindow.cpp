@@ -139,7 +139,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(mViewport, &QOpenGLWidget::frameSwapped, this, [this] {
         if (!mAwaitingFrame) return;
         mAwaitingFrame = false;
-        mEditToScreenMs = double(mSinceEdit.nsecsElapsed()) * 1e-6;
+        mEditToScreenMs = mGenerator->msSinceResultRequest();
         statusBar()->showMessage(tr("Updated in %1 ms (edit to screen, %2 tree(s) regrown)")
                                      .arg(mEditToScreenMs, 0, 'f', 1)
                                      .arg(mGenerator->result().stats.count("regrown")
@@ -640,7 +640,6 @@ void MainWindow::onPreviewFinished() {
 }
 
 void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
-    mSinceEdit.start();
     if (change.what & doc::DocumentChange::Reset) {
         if (mWatcher.isRunning()) mWatcher.cancel();
         mPreview = false;

@@ -196,7 +196,6 @@ private:
     GenerationResult mPreviewResult;
     QString mLastError;
     bool mFrameNext = false; ///< frame (or look from the project camera) at the next result
-    QElapsedTimer mSinceEdit;
     double mEditToScreenMs = 0.0;
     bool mAwaitingFrame = false;
     AskHandler mAsk;

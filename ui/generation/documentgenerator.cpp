@@ -84,6 +84,7 @@ void DocumentGenerator::onFinished() {
         return;
     }
     mEditToResultMs = double(mSinceEdit.nsecsElapsed()) * 1e-6;
+    mResultRequest = mSinceEdit;
     mResult = std::move(result);
     Q_EMIT finished(true, {});
 }

@@ -34,6 +34,10 @@ public:
     const GenerationResult& result() const { return mResult; }
     /// Milliseconds from the edit that asked for the last result to its end (the mesh ready).
     double editToResultMs() const { return mEditToResultMs; }
+    /// Milliseconds since the edit (or reload) that asked for the last result.
+    double msSinceResultRequest() const {
+        return mResultRequest.isValid() ? double(mResultRequest.nsecsElapsed()) * 1e-6 : 0.0;
+    }
 
 Q_SIGNALS:
     void started();
@@ -56,6 +60,7 @@ private:
     QElapsedTimer mSinceEdit;    ///< started at the edit the running generation builds
     QElapsedTimer mPendingEdit;
     GenerationResult mResult;
+    QElapsedTimer mResultRequest; ///< the request behind mResult
     double mEditToResultMs = 0.0;
 };
 

@@ -457,6 +457,9 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             py::arg("path"), py::arg("viewport_only") = false)
         .def("resize", [](WindowApi&, int w, int h) { window().resize(w, h); })
         .def(
+            "regenerate_all", [](WindowApi&) { window().generator().regenerateAll(); },
+            "Drops every cached tree and regrows the whole document (File > Reload).")
+        .def(
             "last_update_ms", [](WindowApi&) { return window().lastEditToScreenMs(); },
             "Milliseconds from the last edit to its new meshes on screen.")
         .def(

@@ -202,7 +202,11 @@ void Viewport::installDefaultSurfaceFormat() {
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    format.setSamples(4);
+    // SYLVA_MSAA=0 turns multisampling off: a software renderer (Mesa llvmpipe) draws a
+    // frame about twice as fast without it (docs/performance.md).
+    format.setSamples(qEnvironmentVariableIsSet("SYLVA_MSAA")
+                          ? std::max(0, qEnvironmentVariableIntValue("SYLVA_MSAA"))
+                          : 4);
     QSurfaceFormat::setDefaultFormat(format);
 }
 
@@ -211,7 +215,7 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    if (format.samples() < 0) format.setSamples(4);
+    if (format.samples() < 0) format.setSamples(QSurfaceFormat::defaultFormat().samples());
     setFormat(format);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
