@@ -1,0 +1,315 @@
+// The editor as a user drives it: a project opened into the document, a tree picked in the
+// outliner and edited in the Properties panel with keys, undo and redo with the shortcuts,
+// Delete and Duplicate, Save through the menu action, a corrupt file, questions before unsaved
+// edits are lost (also when the file changes on disk), the Python console, Cancel, per-tree GPU
+// uploads, and a screenshot of the whole window with every dock.
+#include <memory>
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileInfo>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+#include <QTreeView>
+
+#include "document/document.h"
+#include "document/presetlibrary.h"
+#include "ui/document/messagespanel.h"
+#include "ui/document/outlinermodel.h"
+#include "ui/document/propertiespanel.h"
+#include "ui/generation/documentgenerator.h"
+#include "ui/mainwindow.h"
+#include "ui/scripting/pythonconsole.h"
+#include "ui/viewport/viewport.h"
+
+using namespace sylva;
+using namespace sylva::ui;
+
+namespace {
+
+constexpr int kTimeoutMs = 120000;
+
+QString outputPath(const QString& name) {
+    return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
+}
+
+QByteArray readFile(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace
+
+class TestEditor : public QObject {
+    Q_OBJECT
+
+private:
+    std::unique_ptr<MainWindow> mWindow;
+    QTemporaryDir mDir;
+    QString mProject;
+    int mQuestions = 0;
+    QString mLastQuestion;
+    MainWindow::Answer mAnswer = MainWindow::Answer::Cancel;
+
+    doc::Document& document() { return mWindow->document(); }
+
+    void settle() {
+        QVERIFY(mWindow->waitForGeneration(kTimeoutMs));
+        QTest::qWait(50); // a frame
+    }
+
+    QModelIndex treeIndex(int row) {
+        OutlinerModel* model = mWindow->outlinerModel();
+        return model->index(row, 0, model->groupIndex(OutlinerModel::TreesGroup));
+    }
+
+    void clickTreeInOutliner(int row) {
+        QTreeView* view = mWindow->outliner();
+        const QModelIndex index = treeIndex(row);
+        QVERIFY(index.isValid());
+        view->scrollTo(index);
+        const QRect rect = view->visualRect(index);
+        QVERIFY(!rect.isEmpty());
+        // Click the label, right of the check box.
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {},
+                          QPoint(rect.right() - 10, rect.center().y()));
+    }
+
+private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // settings and autosave in a test folder
+        QVERIFY(mDir.isValid());
+        // The demo project saved into a scratch folder (paths rebased), so saving is safe.
+        doc::Document demo;
+        demo.open(QDir(doc::PresetLibrary::directory()).filePath("../resources/demo/forest.sylva"));
+        mProject = mDir.filePath(QStringLiteral("demo.sylva"));
+        demo.save(mProject);
+
+        mWindow = std::make_unique<MainWindow>();
+        mWindow->setAskHandler([this](const QString& question, bool) {
+            ++mQuestions;
+            mLastQuestion = question;
+            return mAnswer;
+        });
+        mWindow->resize(1400, 900);
+        mWindow->show();
+        QVERIFY(QTest::qWaitForWindowExposed(mWindow.get()));
+        // Window shortcuts (Ctrl+Z, Delete) act in the active window, as for a user.
+        // (Xvfb has no window manager to activate it: the application is told instead.)
+        mWindow->activateWindow();
+        QApplication::setActiveWindow(mWindow.get());
+        QCOMPARE(QApplication::activeWindow(), mWindow.get());
+        QVERIFY(mWindow->openProject(mProject));
+        settle();
+        QVERIFY2(mWindow->lastError().isEmpty(), qPrintable(mWindow->lastError()));
+        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+    }
+
+    void cleanupTestCase() {
+        mAnswer = MainWindow::Answer::Discard;
+        mWindow.reset();
+    }
+
+    void titleShowsFileAndModifiedMarker() {
+        QVERIFY(mWindow->windowTitle().contains(QStringLiteral("demo.sylva")));
+        QVERIFY(!mWindow->isWindowModified());
+    }
+
+    /// Click a tree in the outliner, type a new x in the Properties panel: one "Move tree"
+    /// step; Ctrl+Z and Ctrl+Shift+Z undo and redo it; File > Save writes what is shown.
+    void editInPropertiesUndoRedoAndSave() {
+        const QByteArray original = document().serialized();
+        clickTreeInOutliner(0);
+        QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{1});
+        QCOMPARE(mWindow->viewport()->highlightedTrees(), QSet<std::uint32_t>{1});
+        auto* x = mWindow->properties()->findChild<QDoubleSpinBox*>(QStringLiteral("spin0"));
+        QVERIFY(x);
+        x->setFocus();
+        x->selectAll();
+        QTest::keyClicks(x, QStringLiteral("5"));
+        QTest::keyClick(x, Qt::Key_Return);
+        QCOMPARE(document().tree(1).position.x, 5.0f);
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Move tree"));
+        QVERIFY(mWindow->isWindowModified());
+        settle();
+
+        mWindow->viewport()->setFocus();
+        QTest::keyClick(mWindow.get(), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(document().serialized(), original);
+        QVERIFY(!mWindow->isWindowModified());
+        QCOMPARE(x->value(), 2.0); // the panel follows the document
+        QTest::keyClick(mWindow.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(document().tree(1).position.x, 5.0f);
+        settle();
+
+        QAction* save = mWindow->findChild<QAction*>(QStringLiteral("actionSave"));
+        QVERIFY(save);
+        save->trigger();
+        QVERIFY(!mWindow->isWindowModified());
+        QCOMPARE(readFile(mProject), document().serialized());
+    }
+
+    /// Delete and Ctrl+D on the selection, by keys, each one undo step.
+    void deleteAndDuplicateByKeys() {
+        clickTreeInOutliner(0);
+        const doc::TreeId id = document().treeIds()[0];
+        QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{id});
+        QTest::keyClick(mWindow->outliner(), Qt::Key_Delete);
+        QCOMPARE(document().treeIds().size(), std::size_t(0));
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Remove tree"));
+        QTest::keyClick(mWindow.get(), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(document().treeIds().size(), std::size_t(1));
+        document().selectTrees({id});
+        QTest::keyClick(mWindow.get(), Qt::Key_D, Qt::ControlModifier);
+        QCOMPARE(document().treeIds().size(), std::size_t(2));
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Duplicate tree"));
+        QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{document().treeIds()[1]});
+        QTest::keyClick(mWindow.get(), Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(document().treeIds().size(), std::size_t(1));
+        QVERIFY(!mWindow->isWindowModified());
+        settle();
+    }
+
+    /// A regrowth after a one-tree edit uploads that tree's mesh only.
+    void unchangedTreesAreNotUploadedAgain() {
+        settle();
+        const std::size_t before = mWindow->viewport()->uploads();
+        doc::ProjectInstance t = document().tree(1);
+        t.rotation += 30;
+        document().setTree(1, t);
+        settle();
+        QCOMPARE(mWindow->generator().result().stats.at("regrown"), 1.0);
+        QCOMPARE(mWindow->viewport()->uploads(), before + 1);
+        QVERIFY(mWindow->lastEditToScreenMs() > 0.0);
+        document().undoStack()->undo();
+        settle();
+    }
+
+    /// A corrupt file says where it is broken and keeps the open document.
+    void corruptFileKeepsTheDocument() {
+        const QByteArray before = document().serialized();
+        const QString broken = mDir.filePath(QStringLiteral("broken.sylva"));
+        QFile f(broken);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(
+            "{\n  \"format\": \"sylva-project\",\n  \"format_version\": 1,\n  \"seed\": 02\n}\n");
+        f.close();
+        QVERIFY(!mWindow->openProject(broken));
+        QCOMPARE(document().serialized(), before);
+        QCOMPARE(document().path(), mProject);
+        MessagesPanel* messages = mWindow->messages();
+        const QString last = messages->message(messages->count() - 1);
+        QVERIFY2(last.contains(QStringLiteral("broken.sylva:4:")), qPrintable(last));
+    }
+
+    /// Unsaved edits are never lost without a question: opening another file, closing, and a
+    /// change of the file on disk.
+    void unsavedEditsAsk() {
+        document().setSeed(document().project().seed + 1);
+        QVERIFY(document().isModified());
+        const QByteArray edited = document().serialized();
+        mQuestions = 0;
+        mAnswer = MainWindow::Answer::Cancel;
+        QVERIFY(!mWindow->openProject(mProject));
+        QCOMPARE(mQuestions, 1);
+        QCOMPARE(document().serialized(), edited);
+        QVERIFY(!mWindow->close()); // Cancel: the window stays
+        QCOMPARE(mQuestions, 2);
+        QVERIFY(mWindow->isVisible());
+
+        // The project file changes on disk while edits are pending: asked, No keeps them.
+        mAnswer = MainWindow::Answer::No;
+        QByteArray onDisk = readFile(mProject);
+        onDisk.replace("\"seed\": 7", "\"seed\": 8");
+        QFile f(mProject);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(onDisk);
+        f.close();
+        QTRY_COMPARE_WITH_TIMEOUT(mQuestions, 3, 5000);
+        QVERIFY2(mLastQuestion.contains(QStringLiteral("changed on disk")),
+                 qPrintable(mLastQuestion));
+        QCOMPARE(document().serialized(), edited);
+
+        // Discard: the other file opens.
+        mAnswer = MainWindow::Answer::Discard;
+        QVERIFY(mWindow->openProject(mProject));
+        QCOMPARE(document().project().seed, std::uint64_t(8));
+        QVERIFY(!document().isModified());
+        settle();
+    }
+
+    /// The Python console evaluates, edits the document through its commands, runs
+    /// multi-line statements and shows tracebacks.
+    void consoleEvaluatesAndShowsTracebacks() {
+        PythonConsole* console = mWindow->console();
+        mWindow->findChild<QDockWidget*>(QStringLiteral("consoleDock"))->raise();
+        QLineEdit* input = console->input();
+        input->setFocus();
+        QTest::keyClicks(input, QStringLiteral("tid = doc.add_tree('alder', (1, 0, 1), seed=9)"));
+        QTest::keyClick(input, Qt::Key_Return);
+        QCOMPARE(document().treeIds().size(), std::size_t(2));
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Add tree"));
+        console->submit(QStringLiteral("for i in range(3):"));
+        console->submit(QStringLiteral("    print('line', i * i)"));
+        console->submit(QString());
+        QVERIFY2(console->transcript().contains(QStringLiteral("line 4")),
+                 qPrintable(console->transcript()));
+        console->submit(QStringLiteral("1 / 0"));
+        QVERIFY(console->transcript().contains(QStringLiteral("Traceback")));
+        QVERIFY(console->transcript().contains(QStringLiteral("ZeroDivisionError")));
+        console->submit(QStringLiteral("doc.set_tree(tid, scale=0)"));
+        QVERIFY2(console->transcript().contains(QStringLiteral("ValueError: tree scale")),
+                 qPrintable(console->transcript()));
+        // History: Up brings back the last line.
+        QTest::keyClick(input, Qt::Key_Up);
+        QCOMPARE(input->text(), QStringLiteral("doc.set_tree(tid, scale=0)"));
+        input->clear();
+        document().undoStack()->undo();
+        settle();
+    }
+
+    /// Cancel in the status bar stops a regrowth; the document and the shown result stay.
+    void cancelKeepsTheDocument() {
+        settle();
+        const QByteArray before = document().serialized();
+        const std::size_t trees = mWindow->generator().result().trees.size();
+        QSignalSpy cancelled(&mWindow->generator(), &DocumentGenerator::cancelled);
+        mWindow->generator().regenerateAll();
+        QVERIFY(mWindow->isGenerating());
+        auto* cancel = mWindow->findChild<QToolButton*>(QStringLiteral("cancelButton"));
+        QVERIFY(cancel && cancel->isVisible());
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QVERIFY(cancelled.wait(kTimeoutMs) || cancelled.count() == 1);
+        QCOMPARE(document().serialized(), before);
+        QCOMPARE(mWindow->generator().result().trees.size(), trees);
+        QVERIFY(!cancel->isVisible());
+        mWindow->reload();
+        settle();
+    }
+
+    /// The whole window with every dock, for a person to look at.
+    void windowScreenshotWithEveryDock() {
+        for (QDockWidget* dock : mWindow->findChildren<QDockWidget*>())
+            QVERIFY2(dock->isVisible() || dock->objectName() == QStringLiteral("consoleDock"),
+                     qPrintable(dock->objectName()));
+        document().selectTrees({document().treeIds()[0]});
+        mWindow->console()->submit(QStringLiteral("print(len(doc.trees()), 'tree(s) placed')"));
+        settle();
+        const QString path = outputPath(QStringLiteral("ui_editor_window.png"));
+        QVERIFY(mWindow->saveWindowScreenshot(path));
+        const QImage image(path);
+        QCOMPARE(image.size(), mWindow->size() * mWindow->devicePixelRatio());
+    }
+};
+
+QTEST_MAIN(TestEditor)
+
+#include "test_editor.moc"
