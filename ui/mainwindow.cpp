@@ -7,12 +7,15 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDesktopServices>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFileSystemWatcher>
+#include <QFormLayout>
 #include <QHeaderView>
 #include <QImage>
 #include <QInputDialog>
@@ -24,6 +27,7 @@
 #include <QProgressBar>
 #include <QPromise>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolButton>
@@ -296,6 +300,10 @@ void MainWindow::createMenus() {
     all->setShortcut(QKeySequence::SelectAll);
     mOutliner->addAction(del);
     mOutliner->addAction(dup);
+    edit->addSeparator();
+    QAction* prefs = edit->addAction(tr("&Preferences…"), this, &MainWindow::showPreferences);
+    prefs->setObjectName(QStringLiteral("actionPreferences"));
+    prefs->setMenuRole(QAction::PreferencesRole);
 
     QMenu* scene = menuBar()->addMenu(tr("&Scene"));
     scene->setObjectName(QStringLiteral("sceneMenu"));
@@ -1032,6 +1040,35 @@ void MainWindow::showOpenDialog() {
         tr("Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;"
            "All files (*)"));
     if (!path.isEmpty()) openSpecies(path);
+}
+
+void MainWindow::showPreferences() {
+    QDialog dialog(this);
+    dialog.setObjectName(QStringLiteral("preferencesDialog"));
+    dialog.setWindowTitle(tr("Preferences"));
+    auto* form = new QFormLayout(&dialog);
+    auto* minutes = new QSpinBox(&dialog);
+    minutes->setObjectName(QStringLiteral("autosaveMinutes"));
+    minutes->setRange(1, 60);
+    minutes->setSuffix(tr(" min"));
+    minutes->setValue(std::max(1, mAutosave->interval() / 60000));
+    minutes->setToolTip(tr("While there are unsaved edits, a recovery copy is written this often "
+                           "and a few seconds after the last edit. It never replaces your file."));
+    form->addRow(tr("Autosave every:"), minutes);
+    auto* folder = new QLabel(QDir::toNativeSeparators(mAutosave->folder()), &dialog);
+    folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(tr("Recovery folder:"), folder);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    form->addRow(buttons);
+    if (dialog.exec() != QDialog::Accepted) return;
+    setAutosaveInterval(minutes->value() * 60);
+}
+
+void MainWindow::setAutosaveInterval(int seconds) {
+    mAutosave->setInterval(seconds * 1000);
+    QSettings().setValue(QStringLiteral("autosaveIntervalSeconds"), seconds);
 }
 
 void MainWindow::showSaveAsDialog() {

@@ -120,6 +120,9 @@ public:
     /// without asking. True when one was restored.
     bool offerRecovery(bool force = false);
 
+    /// Edit ▸ Preferences: how often the autosave copy is written (kept in the settings).
+    void setAutosaveInterval(int seconds);
+
     /// Reports an error (status bar, Messages, stats dock).
     void reportError(const QString& message);
 
@@ -145,6 +148,7 @@ private:
     Answer askUser(const QString& question, bool canSave);
     void showOpenDialog();
     void showSaveAsDialog();
+    void showPreferences();
     void showScreenshotDialog();
     void showExportDialog();
     void showImportObstacleDialog();

@@ -1,7 +1,10 @@
 #include "document/filerefs.h"
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
+
+#include <filesystem>
 
 #include "document/speciesfile.h"
 
@@ -66,6 +69,29 @@ Project rebaseProject(const Project& project, const QString& newBaseDir) {
     for (PlacementDomain& d : out.domains)
         move(d.terrain);
     return out;
+}
+
+bool isProjectFile(const QString& path) {
+    if (path.endsWith(QStringLiteral(".sylva"), Qt::CaseInsensitive)) return true;
+    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) return false;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return false;
+    const QByteArray head = file.read(1 << 16);
+    return head.contains("\"sylva-project\"") ||
+           (!head.contains("\"format\"") && head.contains("\"plants\""));
+}
+
+void addSpeciesSourceFiles(const graph::SpeciesGraph& graph, QStringList& out) {
+    for (const graph::NodeDesc& node : graph.nodes) {
+        if (!node.params.isObject()) continue;
+        for (const auto& [key, value] : node.params.toObject()) {
+            if (!isFileParam(key) || !value.isString()) continue;
+            std::filesystem::path p(value.toString());
+            if (p.is_relative() && !graph.baseDir.empty()) p = graph.baseDir / p;
+            const QString file = QFileInfo(QString::fromStdString(p.string())).absoluteFilePath();
+            if (!out.contains(file)) out << file;
+        }
+    }
 }
 
 QStringList projectSourceFiles(const Project& project) {

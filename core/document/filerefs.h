@@ -6,6 +6,7 @@
 #include <QStringList>
 
 #include "document/project.h"
+#include "engine/graph/graph.h"
 #include "engine/graph/value.h"
 
 namespace sylva::doc {
@@ -26,6 +27,14 @@ void rebaseGraphFiles(graph::Value& graph, const QString& fromDir, const QString
 /// obstacle meshes, terrains) rewritten for \p newBaseDir, and baseDir set to it. Unchanged when
 /// the folder is the same, so a save in place writes back the same text.
 Project rebaseProject(const Project& project, const QString& newBaseDir);
+
+/// Whether \p path names a project (`.sylva`, or a JSON file that is a project or the reference
+/// implementation's scene description) rather than a species or grammar.
+bool isProjectFile(const QString& path);
+
+/// Appends to \p out the files that \p graph's nodes read (isFileParam parameters), resolved
+/// against the graph's folder: absolute, no duplicates.
+void addSpeciesSourceFiles(const graph::SpeciesGraph& graph, QStringList& out);
 
 /// The files a project reads, absolute: species files, their graphs' file parameters (grammar
 /// files, ...), obstacle meshes and terrains. Files that cannot be read are still listed (a

@@ -7,19 +7,25 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDialog>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QLineEdit>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QToolButton>
 #include <QTreeView>
+#include <functional>
 
+#include "document/autosave.h"
 #include "document/document.h"
 #include "document/presetlibrary.h"
 #include "ui/document/messagespanel.h"
@@ -39,6 +45,26 @@ constexpr int kTimeoutMs = 120000;
 
 QString outputPath(const QString& name) {
     return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
+}
+
+/// Answers the next modal dialog: a file dialog gets \p file and is accepted; another dialog
+/// is handed to \p other.
+void answerNextDialog(const QString& file, std::function<void(QDialog*)> other = {}) {
+    QTimer::singleShot(200, [file, other] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (auto* dialog = qobject_cast<QFileDialog*>(modal)) {
+            dialog->setDirectory(QFileInfo(file).absolutePath());
+            dialog->selectFile(QFileInfo(file).fileName());
+            // As a user types the name (selectFile keeps a save dialog's suggested name).
+            if (auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit")))
+                name->setText(QFileInfo(file).fileName());
+            static_cast<QDialog*>(dialog)->done(QDialog::Accepted); // caller reads selectedFiles()
+        } else if (auto* d = qobject_cast<QDialog*>(modal); d && other) {
+            other(d);
+        } else {
+            answerNextDialog(file, other); // not shown yet
+        }
+    });
 }
 
 QByteArray readFile(const QString& path) {
@@ -292,6 +318,42 @@ private Q_SLOTS:
         QCOMPARE(mWindow->generator().result().trees.size(), trees);
         QVERIFY(!cancel->isVisible());
         mWindow->reload();
+        settle();
+    }
+
+    /// File > Open and File > Save As through their dialogs, and Edit > Preferences.
+    void menuActionsOpenSaveAsAndPreferences() {
+        mAnswer = MainWindow::Answer::Discard;
+        QAction* open = mWindow->findChild<QAction*>(QStringLiteral("actionOpen"));
+        QVERIFY(open);
+        answerNextDialog(mProject);
+        open->trigger();
+        settle();
+        QCOMPARE(document().path(), mProject);
+        document().setSeed(123);
+        const QString copy = mDir.filePath(QStringLiteral("sub/copy.sylva"));
+        QVERIFY(QDir().mkpath(mDir.filePath(QStringLiteral("sub"))));
+        answerNextDialog(copy);
+        mWindow->findChild<QAction*>(QStringLiteral("actionSaveAs"))->trigger();
+        QCOMPARE(document().path(), copy);
+        QVERIFY(!document().isModified());
+        QVERIFY(mWindow->windowTitle().contains(QStringLiteral("copy.sylva")));
+        QCOMPARE(readFile(copy), document().serialized());
+        // The copy in another folder still finds the species and meshes.
+        doc::Document reopened;
+        reopened.open(copy);
+        QVERIFY(QFileInfo::exists(
+            reopened.project().resolve(reopened.project().obstacles.front().file)));
+
+        answerNextDialog({}, [](QDialog* d) {
+            auto* minutes = d->findChild<QSpinBox*>(QStringLiteral("autosaveMinutes"));
+            QVERIFY(minutes);
+            minutes->setValue(5);
+            d->accept();
+        });
+        mWindow->findChild<QAction*>(QStringLiteral("actionPreferences"))->trigger();
+        QCOMPARE(mWindow->autosave().interval(), 5 * 60 * 1000);
+        mWindow->setAutosaveInterval(120);
         settle();
     }
 

@@ -50,16 +50,6 @@ std::uint64_t pointerKey(const void* a, const void* b) {
 
 } // namespace
 
-bool isProjectFile(const QString& path) {
-    if (path.endsWith(QStringLiteral(".sylva"), Qt::CaseInsensitive)) return true;
-    if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) return false;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) return false;
-    const QByteArray head = file.read(1 << 16);
-    return head.contains("\"sylva-project\"") ||
-           (!head.contains("\"format\"") && head.contains("\"plants\""));
-}
-
 GenerationResult generateProject(const doc::Project& project, const QString& path,
                                  const std::vector<doc::TreeId>& treeIds, SceneCaches* caches,
                                  Progress& progress) {

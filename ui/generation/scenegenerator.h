@@ -6,6 +6,7 @@
 #include <QString>
 
 #include "document/document.h"
+#include "document/filerefs.h"
 #include "engine/scene/treecache.h"
 #include "engine/util/progress.h"
 #include "ui/generation/treegenerator.h"
@@ -16,9 +17,7 @@ class ObstacleScene;
 
 namespace sylva::ui {
 
-/// Whether \p path names a project (`.sylva`, or a JSON file that is a project or the reference
-/// implementation's scene description) rather than a species or grammar.
-bool isProjectFile(const QString& path);
+using doc::isProjectFile;
 
 /// What successive generations of one document share: the trees of the last build (reused when
 /// their inputs are unchanged) and the obstacle scenes they were adapted to. Used by one

@@ -55,7 +55,7 @@ double GenerationResult::segments() const {
 GenerationResult generateTree(const QString& path, Progress& progress) {
     return runGuarded(path, [&](GenerationResult& result) {
         graph::SpeciesGraph species = doc::loadSpecies(path);
-        addSourceFiles(species, result.sources);
+        doc::addSpeciesSourceFiles(species, result.sources);
         stampSources(result); // before the evaluation reads the grammar files
         if (!species.name.empty()) result.speciesName = QString::fromStdString(species.name);
         // The viewport can colour the tree by node attributes: ask the mesher which node each
@@ -75,19 +75,6 @@ GenerationResult generateTree(const QString& path, Progress& progress) {
             result.error = QObject::tr("%1: the species' output node produced no mesh")
                                .arg(QFileInfo(path).fileName());
     });
-}
-
-void addSourceFiles(const graph::SpeciesGraph& graph, QStringList& out) {
-    for (const graph::NodeDesc& node : graph.nodes) {
-        if (!node.params.isObject()) continue;
-        for (const auto& [key, value] : node.params.toObject()) {
-            if (!doc::isFileParam(key) || !value.isString()) continue;
-            std::filesystem::path p(value.toString());
-            if (p.is_relative() && !graph.baseDir.empty()) p = graph.baseDir / p;
-            const QString file = QFileInfo(QString::fromStdString(p.string())).absoluteFilePath();
-            if (!out.contains(file)) out << file;
-        }
-    }
 }
 
 void stampSources(GenerationResult& result) {

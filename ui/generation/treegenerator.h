@@ -85,10 +85,6 @@ struct GenerationResult {
 /// (InvalidInput, IoError, LimitExceeded, Cancelled) become a message in the result.
 GenerationResult generateTree(const QString& path, Progress& progress = noProgress());
 
-/// Appends to \p out the files that \p graph's nodes read: string parameters named `file`,
-/// `grammar_file` or `*_file`, resolved against the graph's folder (absolute, no duplicates).
-void addSourceFiles(const graph::SpeciesGraph& graph, QStringList& out);
-
 /// Records the modification time of every source that has none yet (call before reading them).
 void stampSources(GenerationResult& result);
 
