@@ -6,11 +6,13 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDesktopServices>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QEventLoop>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -21,15 +23,18 @@
 #include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPromise>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolBar>
 #include <QToolButton>
 #include <QTreeView>
 #include <QUndoView>
@@ -43,6 +48,7 @@
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
+#include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "ui/document/messagespanel.h"
 #include "ui/document/outlinermodel.h"
@@ -53,6 +59,7 @@
 #include "ui/generation/scenegenerator.h"
 #include "ui/scripting/pythonconsole.h"
 #include "ui/scripting/pythonhost.h"
+#include "ui/viewport/toolcontroller.h"
 #include "ui/viewport/viewport.h"
 
 namespace sylva::ui {
@@ -100,7 +107,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     statusBar()->addPermanentWidget(mGlLabel);
 
     createDocks();
+    mTools = new ToolController(
+        *mDocument, *mViewport,
+        [this]() -> const GenerationResult& { return mGenerator->result(); }, this);
+    connect(mTools, &ToolController::message, this, [this](const QString& text) {
+        mMessages->add(MessagesPanel::Severity::Warning, text);
+        statusBar()->showMessage(text, 10000);
+    });
     createMenus();
+    createToolBar();
 
     // Files of the shown result: a change (or a save by rename, which shows as a change of the
     // folder) starts a short timer, so that an editor's several writes make one reload.
@@ -332,7 +347,8 @@ void MainWindow::createMenus() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     mViewMenu = view;
     view->setObjectName(QStringLiteral("viewMenu"));
-    QAction* frame = view->addAction(tr("&Frame all"), mViewport, &Viewport::frameScene);
+    QAction* frame =
+        view->addAction(tr("&Frame selection or all"), this, &MainWindow::frameSelectionOrAll);
     frame->setShortcut(QKeySequence(Qt::Key_F));
     frame->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     QAction* grid = view->addAction(tr("Show &grid"));
@@ -403,6 +419,134 @@ void MainWindow::createMenus() {
                "<tt>sylva --script file.py</tt>).</p>")
                 .arg(QApplication::applicationVersion()));
     });
+}
+
+void MainWindow::createToolBar() {
+    QToolBar* bar = addToolBar(tr("Tools"));
+    bar->setObjectName(QStringLiteral("toolsToolBar"));
+    mToolGroup = new QActionGroup(this);
+    const struct {
+        ToolController::Tool tool;
+        QString label, key, tip;
+    } tools[] = {
+        {ToolController::Tool::Select, tr("Select"), QStringLiteral("V"),
+         tr("Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a "
+            "box); [ and ] step through the trees")},
+        {ToolController::Tool::Move, tr("Move"), QStringLiteral("M"),
+         tr("Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow "
+            "keys nudge). They re-adapt to the obstacles when you let go")},
+        {ToolController::Tool::Place, tr("Place"), QStringLiteral("P"),
+         tr("Click the ground to plant a tree of the chosen species")},
+        {ToolController::Tool::Brush, tr("Brush"), QStringLiteral("B"),
+         tr("Paint trees of the species mix with the radius and density below; one stroke is "
+            "one undo step")},
+        {ToolController::Tool::Erase, tr("Erase"), QStringLiteral("E"),
+         tr("Remove the hand-placed trees the brush passes over")},
+    };
+    for (const auto& t : tools) {
+        QAction* a = bar->addAction(t.label);
+        a->setObjectName(QStringLiteral("tool_") + ToolController::name(t.tool));
+        a->setCheckable(true);
+        a->setChecked(t.tool == mTools->tool());
+        a->setShortcut(QKeySequence(t.key));
+        a->setToolTip(QStringLiteral("%1 (%2): %3").arg(t.label, t.key, t.tip));
+        mToolGroup->addAction(a);
+        connect(a, &QAction::triggered, this, [this, tool = t.tool] { mTools->setTool(tool); });
+    }
+    connect(mTools, &ToolController::toolChanged, this, [this](ToolController::Tool tool) {
+        for (QAction* a : mToolGroup->actions())
+            a->setChecked(a->objectName() == QStringLiteral("tool_") + ToolController::name(tool));
+    });
+    bar->addSeparator();
+    bar->addWidget(new QLabel(tr(" Species: "), bar));
+    mToolSpecies = new QComboBox(bar);
+    mToolSpecies->setObjectName(QStringLiteral("toolSpecies"));
+    mToolSpecies->setToolTip(tr("The species the Place tool plants, and the Brush when no mix "
+                                "is given"));
+    mToolSpecies->setMinimumContentsLength(10);
+    bar->addWidget(mToolSpecies);
+    connect(mToolSpecies, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+        mTools->setPlaceSpecies(name.toStdString());
+        applyBrushSettings();
+    });
+    connect(mDocument, &doc::Document::changed, this, [this](const doc::DocumentChange& c) {
+        if (!(c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset))) return;
+        const QString current = mToolSpecies->currentText();
+        QSignalBlocker block(mToolSpecies);
+        mToolSpecies->clear();
+        for (const doc::ProjectSpecies& sp : mDocument->project().species)
+            mToolSpecies->addItem(QString::fromStdString(sp.name));
+        if (!current.isEmpty()) mToolSpecies->setCurrentText(current);
+        mTools->setPlaceSpecies(mToolSpecies->currentText().toStdString());
+    });
+    bar->addWidget(new QLabel(tr(" Radius: "), bar));
+    mBrushRadius = new QDoubleSpinBox(bar);
+    mBrushRadius->setObjectName(QStringLiteral("brushRadius"));
+    mBrushRadius->setRange(0.5, 100);
+    mBrushRadius->setValue(mTools->brush().radius);
+    mBrushRadius->setSuffix(tr(" m"));
+    mBrushRadius->setToolTip(tr("Brush and eraser radius, metres"));
+    bar->addWidget(mBrushRadius);
+    bar->addWidget(new QLabel(tr(" Density: "), bar));
+    mBrushDensity = new QDoubleSpinBox(bar);
+    mBrushDensity->setObjectName(QStringLiteral("brushDensity"));
+    mBrushDensity->setRange(0.01, 50);
+    mBrushDensity->setValue(mTools->brush().density);
+    mBrushDensity->setSuffix(tr(" /100 m²"));
+    mBrushDensity->setToolTip(tr("Trees tried per 100 m² under the brush; spacing rules keep "
+                                 "trunks out of each other's crowns and out of obstacles"));
+    bar->addWidget(mBrushDensity);
+    bar->addWidget(new QLabel(tr(" Mix: "), bar));
+    mBrushMix = new QLineEdit(bar);
+    mBrushMix->setObjectName(QStringLiteral("brushMix"));
+    mBrushMix->setPlaceholderText(tr("e.g. alder 70, ternary 30"));
+    mBrushMix->setToolTip(tr("Species and weights the brush paints; empty: the chosen species"));
+    mBrushMix->setMinimumWidth(160);
+    bar->addWidget(mBrushMix);
+    connect(mBrushRadius, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyBrushSettings);
+    connect(mBrushDensity, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyBrushSettings);
+    connect(mBrushMix, &QLineEdit::editingFinished, this, &MainWindow::applyBrushSettings);
+}
+
+void MainWindow::applyBrushSettings() {
+    ToolController::Brush brush;
+    brush.radius = float(mBrushRadius->value());
+    brush.density = float(mBrushDensity->value());
+    const QString text = mBrushMix->text().trimmed();
+    try {
+        if (text.isEmpty()) {
+            if (!mToolSpecies->currentText().isEmpty())
+                brush.mix.emplace_back(mToolSpecies->currentText().toStdString(), 1.0);
+        } else {
+            for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+                const QStringList words = part.simplified().split(QLatin1Char(' '));
+                bool ok = words.size() == 2;
+                const double weight = ok ? words[1].toDouble(&ok) : 0.0;
+                if (!ok)
+                    throw InvalidInput("the mix is \"species weight, species weight\", got \"" +
+                                       part.trimmed().toStdString() + "\"");
+                brush.mix.emplace_back(words[0].toStdString(), weight);
+            }
+        }
+        mTools->setBrush(brush);
+    } catch (...) {
+        reportError(errorText());
+    }
+}
+
+void MainWindow::frameSelectionOrAll() {
+    const QList<doc::TreeId> ids = mDocument->selectedTrees();
+    Bounds box;
+    for (std::size_t i = 0; i < mViewport->trees().size(); ++i)
+        if (mViewport->trees()[i].id && ids.contains(mViewport->trees()[i].id) &&
+            i < mViewport->treeBounds().size() && !mViewport->treeBounds()[i].empty()) {
+            box.add(mViewport->treeBounds()[i].lo);
+            box.add(mViewport->treeBounds()[i].hi);
+        }
+    if (box.empty())
+        mViewport->frameScene();
+    else
+        mViewport->frameBox(box.lo, box.hi);
 }
 
 void MainWindow::setColorBy(ColorBy mode) {

@@ -14,6 +14,9 @@
 #include "ui/viewport/attributecolors.h"
 
 class QAction;
+class QComboBox;
+class QDoubleSpinBox;
+class QLineEdit;
 class QFileSystemWatcher;
 class QTimer;
 class QDockWidget;
@@ -37,6 +40,7 @@ class OutlinerModel;
 class PropertiesPanel;
 class PythonConsole;
 class StatsPanel;
+class ToolController;
 class Viewport;
 
 /// The editor's main window. It only assembles the rooms of `ui/`: the document (core/document:
@@ -64,6 +68,7 @@ public:
     OutlinerModel* outlinerModel() const { return mOutlinerModel; }
     PropertiesPanel* properties() const { return mProperties; }
     PythonConsole* console() const { return mConsole; }
+    ToolController& tools() { return *mTools; }
 
     /// Opens a project into the document (openProject) or a species file as a preview;
     /// generationFinished() tells when it is shown. Errors never throw: they go to the status
@@ -136,6 +141,9 @@ protected:
 private:
     void createDocks();
     void createMenus();
+    void createToolBar();
+    void frameSelectionOrAll();
+    void applyBrushSettings();
     void populatePresetsMenu();
     void populateRecentMenu();
     void addRecent(const QString& path);
@@ -174,6 +182,12 @@ private:
     QTreeView* mOutliner = nullptr;
     QUndoView* mUndoView = nullptr;
     PythonConsole* mConsole = nullptr;
+    ToolController* mTools = nullptr;
+    QComboBox* mToolSpecies = nullptr;
+    QDoubleSpinBox* mBrushRadius = nullptr;
+    QDoubleSpinBox* mBrushDensity = nullptr;
+    QLineEdit* mBrushMix = nullptr;
+    QActionGroup* mToolGroup = nullptr;
     std::map<QString, QDockWidget*> mDocks;
     QMenu* mPresetsMenu = nullptr;
     QMenu* mRecentMenu = nullptr;

@@ -74,6 +74,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                 for (const scene::ForestTree& tree : batch) {
                     DrawnTree drawn;
                     drawn.instanceId = tree.instance.id;
+                    drawn.species = tree.instance.species;
                     if (tree.instance.handPlaced && tree.instance.id < treeIds.size())
                         drawn.docId = treeIds[tree.instance.id];
                     drawn.mesh = tree.mesh;
@@ -89,6 +90,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             progress);
         result.mesh = std::make_shared<const mesh::Mesh>(
             surfaces(forest.obstacles.get(), forest.ground.get()));
+        result.obstacles = forest.obstacles;
         result.compactObj = true; // sylva-cli forest's default
         result.hasCamera = true;
         result.cameraEye = project.cameraPosition;

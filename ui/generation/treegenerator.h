@@ -26,6 +26,9 @@ struct Skeleton;
 namespace sylva::graph {
 struct SpeciesGraph;
 }
+namespace sylva::env {
+class ObstacleScene;
+}
 
 namespace sylva::ui {
 
@@ -34,6 +37,7 @@ namespace sylva::ui {
 struct DrawnTree {
     std::uint32_t docId = 0; ///< the document's tree id (hand-placed trees); 0 for domain trees
     std::uint32_t instanceId = 0; ///< the forest's instance id (name suffix)
+    std::uint32_t species = 0;    ///< index into the project's species
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};
     forest::TreeMetrics metrics;
@@ -49,6 +53,8 @@ struct GenerationResult {
     std::shared_ptr<const mesh::Mesh> mesh;
     std::shared_ptr<const skel::Skeleton> skeleton;
     std::vector<DrawnTree> trees;            ///< a project's trees, in instance order
+    /// A project's obstacles as built (for picking them and refusing trees in their footprint).
+    std::shared_ptr<const env::ObstacleScene> obstacles;
     std::map<std::string, double> stats;     ///< from the graph's output node
     std::map<std::string, double> timingsMs; ///< per stage, from the graph's output node
     double elapsedMs = 0.0;                  ///< load + evaluate, wall clock

@@ -20,6 +20,7 @@
 #include "ui/generation/documentgenerator.h"
 #include "ui/mainwindow.h"
 #include "ui/scripting/pythonhost.h"
+#include "ui/viewport/toolcontroller.h"
 #include "ui/viewport/viewport.h"
 
 namespace py = pybind11;
@@ -456,6 +457,49 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             },
             py::arg("path"), py::arg("viewport_only") = false)
         .def("resize", [](WindowApi&, int w, int h) { window().resize(w, h); })
+        .def(
+            "set_tool",
+            [](WindowApi&, const std::string& name) {
+                ToolController::Tool tool;
+                if (!ToolController::fromName(QString::fromStdString(name), tool))
+                    throw InvalidInput("unknown tool '" + name +
+                                       "' (select, move, place, brush, erase)");
+                window().tools().setTool(tool);
+            },
+            py::arg("name"), "select, move, place, brush or erase, as the toolbar.")
+        .def("tool",
+             [](WindowApi&) { return ToolController::name(window().tools().tool()).toStdString(); })
+        .def(
+            "set_place_species",
+            [](WindowApi&, const std::string& species) {
+                if (document().speciesIndex(species) < 0)
+                    throw InvalidInput("unknown species '" + species + "'");
+                window().tools().setPlaceSpecies(species);
+            },
+            py::arg("species"))
+        .def(
+            "set_brush",
+            [](WindowApi&, std::optional<float> radius, std::optional<float> density,
+               std::optional<std::map<std::string, double>> mix) {
+                ToolController::Brush brush = window().tools().brush();
+                if (radius) brush.radius = *radius;
+                if (density) brush.density = *density;
+                if (mix) brush.mix.assign(mix->begin(), mix->end());
+                window().tools().setBrush(brush);
+            },
+            py::arg("radius") = py::none(), py::arg("density") = py::none(),
+            py::arg("mix") = py::none(), "Brush radius (m), density (trees per 100 m2), mix.")
+        .def(
+            "project",
+            [](WindowApi&, float x, float y, float z) -> py::object {
+                Viewport* v = window().viewport();
+                const auto p = v->project({x, y, z});
+                if (!p) return py::none();
+                const QPoint global = v->mapToGlobal(p->toPoint());
+                return py::make_tuple(global.x(), global.y());
+            },
+            py::arg("x"), py::arg("y"), py::arg("z"),
+            "Where a world point is drawn, in global screen pixels (what xdotool takes), or None.")
         .def(
             "regenerate_all", [](WindowApi&) { window().generator().regenerateAll(); },
             "Drops every cached tree and regrows the whole document (File > Reload).")

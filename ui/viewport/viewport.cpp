@@ -405,6 +405,59 @@ void Viewport::setTrees(std::vector<ViewTree> trees, bool frame) {
     update();
 }
 
+void Viewport::setPreviewTrees(std::vector<ViewTree> trees) {
+    mPreview = std::move(trees);
+    mTreesDirty = true;
+    update();
+}
+
+void Viewport::setTreeTransform(std::size_t index, const glm::mat4& transform) {
+    if (index >= mTrees.size()) return;
+    mTrees[index].transform = transform;
+    if (index < mTreeBounds.size() && mTrees[index].mesh)
+        mTreeBounds[index] = worldBounds(*mTrees[index].mesh, transform);
+    update();
+}
+
+Ray Viewport::rayAt(const QPointF& pos) const {
+    const float w = float(std::max(width(), 1)), h = float(std::max(height(), 1));
+    const glm::vec2 ndc(2.0f * float(pos.x()) / w - 1.0f, 1.0f - 2.0f * float(pos.y()) / h);
+    const glm::mat4 inverse =
+        glm::inverse(mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix());
+    glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f);
+    glm::vec4 farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+    nearPoint /= nearPoint.w;
+    farPoint /= farPoint.w;
+    const glm::vec3 origin = mCamera.eye();
+    return {origin, glm::normalize(glm::vec3(farPoint) - glm::vec3(nearPoint))};
+}
+
+std::optional<QPointF> Viewport::project(const glm::vec3& world) const {
+    const glm::vec4 clip =
+        mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix() * glm::vec4(world, 1.0f);
+    if (clip.w <= 1e-6f) return std::nullopt;
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    if (std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f || ndc.z < -1.0f || ndc.z > 1.0f)
+        return std::nullopt;
+    return QPointF((ndc.x + 1.0f) * 0.5f * float(width()), (1.0f - ndc.y) * 0.5f * float(height()));
+}
+
+int Viewport::treeAt(const QPointF& pos) const {
+    std::vector<bool> hidden(mTrees.size(), false);
+    for (std::size_t i = 0; i < mTrees.size(); ++i)
+        hidden[i] = mTrees[i].id != 0 && mHidden.contains(mTrees[i].id);
+    return pickTree(rayAt(pos), mTrees, mTreeBounds, hidden).index;
+}
+
+void Viewport::frameBox(const glm::vec3& lo, const glm::vec3& hi) {
+    mViewFrom = false;
+    mCamera.frame(lo, hi, aspect());
+    mAutoFramed = false;
+    mGridExtent = 0.0f;
+    update();
+    Q_EMIT cameraChanged();
+}
+
 void Viewport::setHighlightedTrees(const QSet<std::uint32_t>& ids) {
     mHighlighted = ids;
     update();
@@ -425,17 +478,12 @@ void Viewport::updateBounds() {
     if (mMesh)
         for (const glm::vec3& p : mMesh->positions)
             add(p);
+    mTreeBounds.clear();
     for (const ViewTree& t : mTrees) {
-        if (!t.mesh || t.mesh->empty()) continue;
-        glm::vec3 tlo(std::numeric_limits<float>::max()), thi(std::numeric_limits<float>::lowest());
-        for (const glm::vec3& p : t.mesh->positions) {
-            tlo = glm::min(tlo, p);
-            thi = glm::max(thi, p);
-        }
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 c((corner & 1) ? thi.x : tlo.x, (corner & 2) ? thi.y : tlo.y,
-                              (corner & 4) ? thi.z : tlo.z);
-            add(glm::vec3(t.transform * glm::vec4(c, 1.0f)));
+        mTreeBounds.push_back(t.mesh ? worldBounds(*t.mesh, t.transform) : Bounds{});
+        if (!mTreeBounds.back().empty()) {
+            add(mTreeBounds.back().lo);
+            add(mTreeBounds.back().hi);
         }
     }
     if (lo.x > hi.x) {
@@ -450,7 +498,13 @@ void Viewport::updateBounds() {
 void Viewport::syncTreeBuffers() {
     mTreesDirty = false;
     std::map<const mesh::Mesh*, GpuMesh> kept;
-    for (const ViewTree& t : mTrees) {
+    std::vector<const ViewTree*> all;
+    for (const ViewTree& t : mTrees)
+        all.push_back(&t);
+    for (const ViewTree& t : mPreview)
+        all.push_back(&t);
+    for (const ViewTree* tp : all) {
+        const ViewTree& t = *tp;
         if (!t.mesh || t.mesh->empty() || kept.count(t.mesh.get())) continue;
         auto old = mGpuTrees.find(t.mesh.get());
         if (old != mGpuTrees.end()) {
@@ -602,26 +656,38 @@ void Viewport::paintGL() {
                            reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
         }
         mMeshProgram->setUniformValue("uVertexColor", false);
-        for (const ViewTree& t : mTrees) {
-            if (!t.mesh || (t.id && mHidden.contains(t.id))) continue;
+        auto drawTree = [&](const ViewTree& t, float highlight) {
             auto gpu = mGpuTrees.find(t.mesh.get());
-            if (gpu == mGpuTrees.end()) continue;
+            if (gpu == mGpuTrees.end()) return;
             setUniform(*mMeshProgram, "uModel", t.transform);
-            mMeshProgram->setUniformValue("uHighlight",
-                                          t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
+            mMeshProgram->setUniformValue("uHighlight", highlight);
             glBindVertexArray(gpu->second.vao);
             for (const DrawRange& r : gpu->second.ranges) {
                 setUniform(*mMeshProgram, "uAlbedo", r.color);
                 glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                                reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
             }
+        };
+        for (const ViewTree& t : mTrees) {
+            if (!t.mesh || (t.id && mHidden.contains(t.id))) continue;
+            drawTree(t, t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
         }
+        for (const ViewTree& t : mPreview)
+            if (t.mesh) drawTree(t, 0.25f);
     }
     glBindVertexArray(0);
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
     mLastMouse = event->position().toPoint();
+    mPressPos = mLastMouse;
+    mMovedSincePress = false;
+    setFocus(Qt::MouseFocusReason);
+    mToolDrag = mTool && event->button() == Qt::LeftButton && mTool->press(event);
+    if (mToolDrag) {
+        event->accept();
+        return;
+    }
     if (event->button() == Qt::LeftButton && !(event->modifiers() & Qt::ShiftModifier))
         mDrag = DragMode::Orbit;
     else if (event->button() == Qt::LeftButton || event->button() == Qt::RightButton ||
@@ -632,6 +698,12 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPoint pos = event->position().toPoint();
+    if ((pos - mPressPos).manhattanLength() > 4) mMovedSincePress = true;
+    if (mToolDrag) {
+        mLastMouse = pos;
+        mTool->move(event);
+        return;
+    }
     const QPoint delta = pos - mLastMouse;
     mLastMouse = pos;
     if (mDrag == DragMode::None || delta.isNull()) return;
@@ -645,7 +717,16 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+    if (mToolDrag) {
+        mToolDrag = false;
+        mTool->release(event);
+        event->accept();
+        return;
+    }
+    const bool click =
+        mDrag != DragMode::None && !mMovedSincePress && event->button() == Qt::LeftButton;
     mDrag = DragMode::None;
+    if (click && mTool) mTool->click(event);
     event->accept();
 }
 
@@ -660,6 +741,33 @@ void Viewport::wheelEvent(QWheelEvent* event) {
 }
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
+    if (mTool && mTool->key(event)) {
+        event->accept();
+        return;
+    }
+    // WASD flies the camera as in the reference implementation: forward and back along the
+    // view on the ground plane, left and right across it; a twentieth of the distance a press.
+    if (event->modifiers() == Qt::NoModifier &&
+        (event->key() == Qt::Key_W || event->key() == Qt::Key_S || event->key() == Qt::Key_A ||
+         event->key() == Qt::Key_D)) {
+        glm::vec3 forward = mCamera.forward();
+        forward.y = 0.0f;
+        forward = glm::length(forward) > 1e-6f ? glm::normalize(forward) : glm::vec3(0, 0, -1);
+        const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+        const float step = 0.05f * mCamera.distance();
+        glm::vec3 delta(0.0f);
+        if (event->key() == Qt::Key_W) delta = step * forward;
+        if (event->key() == Qt::Key_S) delta = -step * forward;
+        if (event->key() == Qt::Key_A) delta = -step * right;
+        if (event->key() == Qt::Key_D) delta = step * right;
+        mCamera.setTarget(mCamera.target() + delta);
+        mAutoFramed = false;
+        mViewFrom = false;
+        update();
+        Q_EMIT cameraChanged();
+        event->accept();
+        return;
+    }
     if (event->key() == Qt::Key_F || event->key() == Qt::Key_Home) {
         frameScene();
         event->accept();

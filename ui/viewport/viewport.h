@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "ui/viewport/orbitcamera.h"
+#include "ui/viewport/picking.h"
 
 class QOpenGLShaderProgram;
 
@@ -30,6 +31,20 @@ struct ViewTree {
     std::uint32_t id = 0; ///< the document's tree id; 0 for trees scattered by a domain
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};
+};
+
+/// What a tool (ui/viewport/toolcontroller.h) gets from the viewport. press() returns true
+/// when the tool takes the drag (the camera then does not move); move() and release() follow
+/// for that drag only. click() comes for a press and release of the left button that did not
+/// move more than a few pixels and was not taken as a drag. key() returns true when used.
+class ViewportTool {
+public:
+    virtual ~ViewportTool() = default;
+    virtual bool press(QMouseEvent* event) = 0;
+    virtual void move(QMouseEvent* event) = 0;
+    virtual void release(QMouseEvent* event) = 0;
+    virtual void click(QMouseEvent* event) = 0;
+    virtual bool key(QKeyEvent* event) = 0;
 };
 
 /// The 3D view: draws a mesh (bark and leaf submeshes) over a gradient background and a ground
@@ -75,6 +90,24 @@ public:
     /// Trees drawn highlighted (the selection) and trees not drawn (hidden in the outliner).
     void setHighlightedTrees(const QSet<std::uint32_t>& ids);
     void setHiddenTrees(const QSet<std::uint32_t>& ids);
+    /// Trees of a tool's preview (a brush stroke), drawn highlighted until cleared.
+    void setPreviewTrees(std::vector<ViewTree> trees);
+    /// Moves tree \p index to \p transform on screen only (a drag's live preview; the next
+    /// setTrees() puts back what the document holds).
+    void setTreeTransform(std::size_t index, const glm::mat4& transform);
+    /// World boxes of the trees, in the order of trees().
+    const std::vector<Bounds>& treeBounds() const { return mTreeBounds; }
+
+    /// The ray through a point of the widget (logical pixels), from the eye.
+    Ray rayAt(const QPointF& pos) const;
+    /// Where a world point is drawn, in widget pixels; none when behind the camera or outside.
+    std::optional<QPointF> project(const glm::vec3& world) const;
+    /// The index into trees() of the tree drawn at \p pos (its own triangles), or -1.
+    int treeAt(const QPointF& pos) const;
+    /// Frames a box (the selection): the camera aims at it and backs off until it fits.
+    void frameBox(const glm::vec3& lo, const glm::vec3& hi);
+
+    void setTool(ViewportTool* tool) { mTool = tool; }
     const QSet<std::uint32_t>& highlightedTrees() const { return mHighlighted; }
     /// Meshes uploaded to the GPU since construction (for tests: unchanged trees are not).
     std::size_t uploads() const { return mUploads; }
@@ -167,6 +200,12 @@ private:
     void releaseTreeBuffers();
     void updateBounds();
     std::vector<ViewTree> mTrees;
+    std::vector<ViewTree> mPreview;
+    std::vector<Bounds> mTreeBounds;
+    ViewportTool* mTool = nullptr;
+    bool mToolDrag = false;
+    QPoint mPressPos;
+    bool mMovedSincePress = false;
     std::map<const mesh::Mesh*, GpuMesh> mGpuTrees;
     bool mTreesDirty = false;
     QSet<std::uint32_t> mHighlighted, mHidden;

@@ -1,0 +1,123 @@
+#pragma once
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <QObject>
+#include <QPoint>
+
+#include "document/document.h"
+#include "ui/viewport/viewport.h"
+
+class QRubberBand;
+
+namespace sylva::ui {
+
+struct GenerationResult;
+
+/// The viewport's tools (a toolbar and shortcuts, docs/editor.md). Each gesture becomes document
+/// edits (one undo step per gesture); the camera keeps working with every tool (left drag
+/// orbits where a tool does not take it, right or middle drag pans, the wheel zooms, WASD flies).
+///
+/// - Select: click picks the tree under the cursor (its own triangles, so a click through a gap
+///   in a crown picks what is behind); Shift adds, Ctrl toggles; Ctrl+drag draws a rubber band
+///   and adds the hand-placed trees inside it; a domain's tree selects its domain, an obstacle
+///   the obstacle; `[` and `]` step through the trees.
+/// - Move: drag a selected tree (all selected trees move together) along the ground with a live
+///   preview; Ctrl+drag rotates, Shift+drag scales; arrow keys nudge 10 cm (Shift: 1 m). The
+///   release is one undo step, after which the document regrows and re-adapts the moved trees
+///   and the neighbours whose crowns they now touch. A tree dropped into an obstacle's
+///   footprint is refused with a message and goes back.
+/// - Place: a click drops a tree of the chosen species on the ground, with a fresh seed and a
+///   random rotation.
+/// - Brush: paints trees of a species mix (weights) with a radius and a density, keeping
+///   reference 000's rules: no two trunks closer than their crowns' cores, no trunk in an
+///   obstacle's footprint, random rotation and ±5 % scale. One stroke is one undo step and the
+///   forest regrows once, when the stroke ends.
+/// - Erase: removes the hand-placed trees the brush passes over; one stroke, one step.
+class ToolController : public QObject, public ViewportTool {
+    Q_OBJECT
+
+public:
+    enum class Tool { Select, Move, Place, Brush, Erase };
+    static QString name(Tool tool);
+    /// "select", "move", "place", "brush", "erase" (the script names); false for another.
+    static bool fromName(const QString& name, Tool& tool);
+
+    struct Brush {
+        float radius = 6.0f;                             ///< metres, 0.5 to 100
+        float density = 1.5f;                            ///< trees per 100 m², 0.01 to 50
+        std::vector<std::pair<std::string, double>> mix; ///< species and weight; empty: all alike
+    };
+
+    ToolController(doc::Document& document, Viewport& viewport,
+                   std::function<const GenerationResult&()> result, QObject* parent = nullptr);
+
+    Tool tool() const { return mTool; }
+    void setTool(Tool tool);
+    /// The species the Place tool drops (the first species when empty or unknown).
+    void setPlaceSpecies(const std::string& species) { mPlaceSpecies = species; }
+    std::string placeSpecies() const;
+    void setBrush(const Brush& brush);
+    const Brush& brush() const { return mBrush; }
+
+    /// Selects the previous (\p step -1) or next (+1) hand-placed tree in document order.
+    void stepSelection(int step);
+    /// Whether a trunk at \p position stands in an obstacle's footprint (what placement
+    /// refuses), from the last generation's obstacles.
+    bool inObstacleFootprint(const glm::vec3& position) const;
+
+    // ViewportTool
+    bool press(QMouseEvent* event) override;
+    void move(QMouseEvent* event) override;
+    void release(QMouseEvent* event) override;
+    void click(QMouseEvent* event) override;
+    bool key(QKeyEvent* event) override;
+
+Q_SIGNALS:
+    void toolChanged(sylva::ui::ToolController::Tool tool);
+    /// Something the user should read (a refused drop, an empty species list).
+    void message(const QString& text);
+
+private:
+    struct Dragged {
+        doc::TreeId id = 0;
+        std::size_t viewIndex = 0;
+        doc::ProjectInstance start;
+        glm::mat4 startTransform{1.0f};
+    };
+    void selectAt(const QPoint& pos, Qt::KeyboardModifiers modifiers);
+    void finishRubberBand();
+    void dragTo(const QPoint& pos, Qt::KeyboardModifiers modifiers);
+    doc::ProjectInstance draggedInstance(const Dragged& d) const;
+    void dab(const glm::vec3& centre);
+    void erase(const glm::vec3& centre);
+    void nudge(float dx, float dz);
+    float crownRadius(std::uint32_t species) const;
+    std::optional<glm::vec3> groundAt(const QPoint& pos) const;
+
+    doc::Document& mDocument;
+    Viewport& mViewport;
+    std::function<const GenerationResult&()> mResult;
+    Tool mTool = Tool::Select;
+    std::string mPlaceSpecies;
+    Brush mBrush;
+
+    // gesture state
+    QPoint mPress, mLast;
+    QRubberBand* mBand = nullptr;
+    std::vector<Dragged> mDragged;
+    glm::vec3 mDragStart{0.0f};
+    float mDragHeight = 0.0f;
+    glm::vec3 mDragMove{0.0f}; ///< the drag so far: a move, or a rotation, or a scale
+    double mDragDegrees = 0.0;
+    double mDragScale = 1.0;
+    std::vector<doc::ProjectInstance> mStroke; ///< a brush stroke's trees, added on release
+    QList<doc::TreeId> mErased;
+    glm::vec3 mLastDab{1e30f};
+    std::uint64_t mStrokes = 0;
+};
+
+} // namespace sylva::ui
