@@ -52,7 +52,7 @@ struct GenerationResult {
     /// "obstacle" and "ground"); the trees are in `trees`.
     std::shared_ptr<const mesh::Mesh> mesh;
     std::shared_ptr<const skel::Skeleton> skeleton;
-    std::vector<DrawnTree> trees;            ///< a project's trees, in instance order
+    std::vector<DrawnTree> trees; ///< a project's trees, in instance order
     /// A project's obstacles as built (for picking them and refusing trees in their footprint).
     std::shared_ptr<const env::ObstacleScene> obstacles;
     std::map<std::string, double> stats;     ///< from the graph's output node
