@@ -5,6 +5,7 @@
 #include <string>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include "engine/forest/metrics.h"
 #include "engine/mesh/mesh.h"
