@@ -242,9 +242,11 @@ std::string dataDir(const char* env, const char* sub, const char* probe) {
     std::error_code ec;
     const fs::path here = moduleDir();
     if (!here.empty()) {
-        // <prefix>/lib/python3/dist-packages or <prefix>/lib/python3.11/site-packages
+        // <prefix>/lib/python3/dist-packages, <prefix>/lib/python3.11/site-packages, or
+        // <prefix>/bin (the editor, whose embedded module calls bindEngine)
         for (const fs::path& c :
-             {here / "../../../share/sylva" / sub, here / "../../../../share/sylva" / sub})
+             {here / "../../../share/sylva" / sub, here / "../../../../share/sylva" / sub,
+              here / "../share/sylva" / sub})
             if (fs::exists(c / probe, ec)) return fs::weakly_canonical(c, ec).string();
     }
 #ifdef SYLVA_SOURCE_DIR

@@ -5,7 +5,7 @@
 
 #include <pybind11/embed.h>
 
-#include "bindings/engine.h"
+#include "python/bindings/engine.h"
 
 namespace py = pybind11;
 
