@@ -87,6 +87,10 @@ class SylvaSettings(bpy.types.PropertyGroup):
                                description="Meshes the trees bend away from")
     adapt: BoolProperty(name="Adapt to obstacles", default=True)
     lod: BoolProperty(name="Level of detail from the camera", default=False)
+    auto_regrow: BoolProperty(name="Regrow when the ground or an obstacle changes",
+                              default=False,
+                              description="Grow the forest again shortly after the ground or "
+                                          "an obstacle is moved or edited")
     tree_preset: EnumProperty(name="Tree", items=preset_items)
     tree_file: StringProperty(name="File", subtype="FILE_PATH")
 
@@ -189,7 +193,51 @@ class SYLVA_PT_panel(bpy.types.Panel):
         box.prop(s, "seed")
         box.prop(s, "adapt")
         box.prop(s, "lod")
+        box.prop(s, "auto_regrow")
         box.operator(SYLVA_OT_grow_forest.bl_idname, icon="OUTLINER_COLLECTION")
+
+
+_regrow_pending = False
+
+
+def _watched(settings):
+    names = {settings.ground.name} if settings.ground is not None else set()
+    if settings.obstacles is not None:
+        names |= {o.name for o in settings.obstacles.all_objects}
+    return names
+
+
+def _on_depsgraph_update(scene, depsgraph):
+    """Schedules a regrow when the ground or an obstacle moved or changed shape."""
+    global _regrow_pending
+    settings = getattr(scene, "sylva", None)
+    if settings is None or not settings.auto_regrow or _regrow_pending:
+        return
+    if bpy.data.collections.get(FOREST_COLLECTION) is None:
+        return  # nothing grown yet
+    watched = _watched(settings)
+    for update in depsgraph.updates:
+        obj = update.id.original if update.id else None
+        if isinstance(obj, bpy.types.Object) and obj.name in watched and (
+                update.is_updated_transform or update.is_updated_geometry):
+            _regrow_pending = True
+            bpy.app.timers.register(regrow_now, first_interval=0.3)
+            return
+
+
+def regrow_now():
+    """The scheduled regrow (a timer; also callable directly)."""
+    global _regrow_pending
+    _regrow_pending = False
+    try:
+        build.grow_forest(import_sylva(), bpy.context, bpy.context.scene.sylva)
+    except (ImportError, ValueError, OSError) as e:
+        print("sylva: regrow failed:", e)
+    return None
+
+
+def regrow_pending():
+    return _regrow_pending
 
 
 CLASSES = (SylvaSpeciesCount, SylvaSettings, SYLVA_OT_add_species, SYLVA_OT_remove_species,
@@ -200,9 +248,14 @@ def register():
     for c in CLASSES:
         bpy.utils.register_class(c)
     bpy.types.Scene.sylva = PointerProperty(type=SylvaSettings)
+    bpy.app.handlers.depsgraph_update_post.append(_on_depsgraph_update)
 
 
 def unregister():
+    if _on_depsgraph_update in bpy.app.handlers.depsgraph_update_post:
+        bpy.app.handlers.depsgraph_update_post.remove(_on_depsgraph_update)
+    if bpy.app.timers.is_registered(regrow_now):
+        bpy.app.timers.unregister(regrow_now)
     del bpy.types.Scene.sylva
     for c in reversed(CLASSES):
         bpy.utils.unregister_class(c)

@@ -94,6 +94,16 @@ assert bpy.ops.sylva.grow_forest() == {"FINISHED"}
 second = check("after moving the cube")
 assert first != second, "the forest did not change when the obstacle moved"
 
+# With "regrow when an obstacle changes", moving the cube schedules a regrow (a timer, which
+# background mode does not run: the test runs it).
+s.auto_regrow = True
+cube.location = (-5, -4, 2)
+bpy.context.view_layer.update()
+assert sylva_blender.regrow_pending(), "moving the obstacle scheduled no regrow"
+sylva_blender.regrow_now()
+third = check("regrown after the cube moved again")
+assert third != second
+
 # One tree at the 3D cursor.
 scene.cursor.location = (30, 0, 0)
 s.tree_file = os.path.join(data_dir, "lsystem", "bush.lsys")

@@ -9,9 +9,23 @@
 
 namespace py = pybind11;
 
+namespace {
+// The editor's own names in the same module (ui/scripting/bindings.cpp): none may clash.
+struct Tree {};
+struct DocumentApi {};
+struct WindowApi {};
+} // namespace
+
 PYBIND11_EMBEDDED_MODULE(sylva, m) {
-    m.def("embedded", [] { return true; }); // stands for the editor's document(), window()
     sylva::python::bindEngine(m);
+    py::class_<Tree>(m, "Tree");
+    py::class_<DocumentApi>(m, "Document");
+    py::class_<WindowApi>(m, "Window");
+    m.def("document", [] { return DocumentApi{}; });
+    m.def("window", [] { return WindowApi{}; });
+    m.def("wait", [](double) {});
+    m.def("quit", [](int) {});
+    m.def("embedded", [] { return true; });
 }
 
 int main(int argc, char** argv) {

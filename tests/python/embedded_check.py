@@ -12,3 +12,7 @@ try:
 except ValueError as e:
     assert "has no parameter 'bogus'" in str(e)
 print("embedded sylva:", tree)
+for name in ("Tree", "Document", "Window", "document", "window", "Species", "GrownTree",
+             "Project", "Forest", "ForestTree", "Mesh", "Skeleton", "load_species",
+             "load_project", "grow"):
+    assert hasattr(sylva, name), name
