@@ -136,3 +136,27 @@ def test_errors_say_what_the_cli_says(data, cli, tmp_path):
     with pytest.raises(ValueError, match="parameter value"):
         s.set_param("grow.generations", object())
     assert not (tmp_path / "x.obj").exists()
+
+
+def test_grow_reports_progress_and_stops_when_the_callback_raises(presets):
+    s = sylva.load_species(presets / "so-broadleaf.json")
+    reports = []
+    s.grow(seed=1, progress=lambda f, stage: reports.append((f, stage)))
+    stages = [stage for _, stage in reports]
+    assert "grow" in stages and "mesh" in stages and len(reports) >= 5
+
+    class Stop(Exception):
+        pass
+
+    def stop(fraction, stage):
+        if stage == "grow" and fraction > 0.1:
+            raise Stop()
+
+    with pytest.raises(Stop):
+        s.grow(seed=2, progress=stop)
+    # The species is still usable and grows the same tree as before.
+    again = s.grow(seed=2).mesh.positions
+    assert np.array_equal(again, sylva.load_species(presets / "so-broadleaf.json")
+                          .grow(seed=2).mesh.positions)
+    with pytest.raises(ValueError, match="callable"):
+        s.grow(seed=2, progress=42)
