@@ -35,6 +35,7 @@ if [[ $headless == 1 ]]; then
   "$BIN/cli/sylva-cli" stats resources/demo/forest.sylva > "$out/forest.carbon.txt"
   echo "biomass and CO2 of the demo forest: $out/forest.carbon.txt"
   echo "Demo files are in $(pwd)/$out (materials in *.mtl, textures in $out/textures)"
+  echo "Python: PYTHONPATH=$(pwd)/build/release/python /usr/bin/python3 -c 'import sylva' (docs/python.md)"
 else
   exec "$BIN/editor/sylva" "$DEMO_PROJECT"
 fi

@@ -10,7 +10,7 @@ PACKAGES=(
   libassimp-dev assimp-utils libembree-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri clang-format
-  python3-dev pybind11-dev python3-numpy
+  python3-dev pybind11-dev python3-numpy python3-pytest
 )
 # Optional extras, installed best-effort (a test that needs one skips visibly without it):
 #   SYLVA_EXTRA_PACKAGES="blender python3-numpy f3d" ./test.sh

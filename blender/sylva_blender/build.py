@@ -1,0 +1,183 @@
+"""Blender meshes ↔ Sylva: Sylva is Y-up, Blender Z-up; a Sylva point (x, y, z) is Blender's
+(x, -z, y)."""
+import os
+
+import bpy
+import numpy as np
+
+FOREST_COLLECTION = "Sylva Forest"
+
+
+def to_blender(p):
+    """(N, 3) Sylva (Y-up) → Blender (Z-up)."""
+    return np.stack([p[:, 0], -p[:, 2], p[:, 1]], axis=1)
+
+
+def to_sylva(p):
+    """(N, 3) Blender (Z-up) → Sylva (Y-up)."""
+    return np.stack([p[:, 0], p[:, 2], -p[:, 1]], axis=1)
+
+
+def world_triangles(obj, depsgraph):
+    """An object's evaluated mesh as world-space (Sylva axes) vertices and triangles."""
+    evaluated = obj.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
+    try:
+        mesh.calc_loop_triangles()
+        n = len(mesh.vertices)
+        co = np.empty(n * 3, dtype=np.float64)
+        mesh.vertices.foreach_get("co", co)
+        co = co.reshape(n, 3)
+        m = np.array(obj.matrix_world, dtype=np.float64)
+        world = co @ m[:3, :3].T + m[:3, 3]
+        tris = np.empty(len(mesh.loop_triangles) * 3, dtype=np.int64)
+        mesh.loop_triangles.foreach_get("vertices", tris)
+        return to_sylva(world), tris.reshape(-1, 3)
+    finally:
+        evaluated.to_mesh_clear()
+
+
+def _image(path):
+    name = os.path.basename(path)
+    img = bpy.data.images.get(name)
+    if img is None and os.path.exists(path):
+        img = bpy.data.images.load(path, check_existing=True)
+    return img
+
+
+def _material(name, texture, leaf):
+    mat = bpy.data.materials.get(name)
+    if mat is not None:
+        return mat
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nodes = mat.node_tree.nodes
+    bsdf = nodes.get("Principled BSDF")
+    bsdf.inputs["Base Color"].default_value = (0.3, 0.5, 0.2, 1) if leaf else (0.35, 0.25, 0.2, 1)
+    img = _image(texture) if texture else None
+    if img is not None:
+        tex = nodes.new("ShaderNodeTexImage")
+        tex.image = img
+        mat.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+        if leaf:
+            mat.node_tree.links.new(tex.outputs["Alpha"], bsdf.inputs["Alpha"])
+            mat.blend_method = "CLIP"
+            mat.shadow_method = "CLIP"
+    mat.use_backface_culling = False
+    return mat
+
+
+def materials(sylva):
+    """Sylva's bark and leaf materials with the shipped textures, by Sylva material name."""
+    textures = os.path.join(sylva.resources_dir(), "textures") if sylva.resources_dir() else ""
+
+    def tex(*names):
+        for n in names:
+            p = os.path.join(textures, n)
+            if os.path.exists(p):
+                return p
+        return ""
+
+    return {"bark": _material("Sylva Bark", tex("bark.png"), False),
+            "leaf": _material("Sylva Leaf", tex("leaf.png"), True)}
+
+
+def mesh_data(name, mesh, mats):
+    """A Blender mesh from a sylva.Mesh (numpy arrays), with UVs, normals and materials."""
+    me = bpy.data.meshes.new(name)
+    positions = to_blender(mesh.positions)
+    tris = mesh.indices
+    nv, nt = len(positions), len(tris)
+    me.vertices.add(nv)
+    me.vertices.foreach_set("co", positions.astype(np.float32).ravel())
+    me.loops.add(nt * 3)
+    me.loops.foreach_set("vertex_index", tris.astype(np.int32).ravel())
+    me.polygons.add(nt)
+    me.polygons.foreach_set("loop_start", np.arange(0, nt * 3, 3, dtype=np.int32))
+    me.polygons.foreach_set("loop_total", np.full(nt, 3, dtype=np.int32))
+    names = mesh.materials
+    mat_index = np.zeros(nt, dtype=np.int32)
+    for k, (mat, first, count) in enumerate(mesh.submeshes):
+        mat_index[first:first + count] = names.index(mat)
+    for n in names:
+        me.materials.append(mats.get(n))
+    me.polygons.foreach_set("material_index", mat_index)
+    if len(mesh.uvs):
+        uv = me.uv_layers.new(name="UVMap")
+        uv.data.foreach_set("uv", mesh.uvs[tris.ravel()].astype(np.float32).ravel())
+    me.update()
+    if len(mesh.normals):
+        me.use_auto_smooth = True
+        me.polygons.foreach_set("use_smooth", np.ones(nt, dtype=bool))
+        me.normals_split_custom_set_from_vertices(to_blender(mesh.normals).tolist())
+    return me
+
+
+def tree_object(collection, name, mesh, mats):
+    obj = bpy.data.objects.new(name, mesh_data(name, mesh, mats))
+    collection.objects.link(obj)
+    return obj
+
+
+def forest_collection(scene):
+    """The forest's collection, emptied (its meshes removed too), or a new one."""
+    col = bpy.data.collections.get(FOREST_COLLECTION)
+    if col is None:
+        col = bpy.data.collections.new(FOREST_COLLECTION)
+        scene.collection.children.link(col)
+    for obj in list(col.objects):
+        data = obj.data
+        bpy.data.objects.remove(obj, do_unlink=True)
+        if data is not None and data.users == 0:
+            bpy.data.meshes.remove(data)
+    return col
+
+
+def grow_forest(sylva, context, settings):
+    """Builds the forest of \\p settings (SylvaSettings) and puts it in the "Sylva Forest"
+    collection, one object per tree; returns the sylva.Forest."""
+    if settings.ground is None:
+        raise ValueError("choose a ground object")
+    depsgraph = context.evaluated_depsgraph_get()
+    project = sylva.Project(seed=settings.seed)
+    counts = {}
+    for i, item in enumerate(settings.species):
+        path = item.species_path()
+        if not path or item.count == 0:
+            continue
+        name = f"{os.path.splitext(os.path.basename(path))[0]}-{i + 1}"
+        project.add_species(name, path)
+        counts[name] = item.count
+    if not counts:
+        raise ValueError("add a species with a tree count")
+    vertices, triangles = world_triangles(settings.ground, depsgraph)
+    project.set_ground(vertices, triangles, counts=counts, name=settings.ground.name)
+    if settings.obstacles is not None:
+        for obj in settings.obstacles.all_objects:
+            if obj.type == "MESH" and obj != settings.ground:
+                v, t = world_triangles(obj, depsgraph)
+                if len(t):
+                    project.add_obstacle(vertices=v, triangles=t, name=obj.name)
+    camera = None
+    if settings.lod and context.scene.camera is not None:
+        c = context.scene.camera.matrix_world.translation
+        camera = (c.x, c.z, -c.y)
+    wm = context.window_manager
+    wm.progress_begin(0, 100)
+    try:
+        forest = project.build_forest(progress=lambda f, stage: wm.progress_update(int(f * 100)),
+                                      camera=camera, lod=settings.lod, adapt=settings.adapt)
+    finally:
+        wm.progress_end()
+
+    col = forest_collection(context.scene)
+    mats = materials(sylva)
+    for tree in forest.trees:
+        obj = tree_object(col, tree.name, tree.mesh, mats)
+        x, y, z = tree.position
+        obj.location = (x, -z, y)
+        obj.rotation_euler = (0.0, 0.0, tree.rotation)  # about Sylva's +Y = Blender's +Z
+        obj.scale = (tree.scale,) * 3
+        obj["sylva_species"] = tree.species
+        obj["sylva_seed"] = str(tree.seed)  # 64-bit: too large for an ID property int
+    return forest

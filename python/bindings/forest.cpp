@@ -1,0 +1,614 @@
+// sylva.Project, sylva.Forest, sylva.ForestTree: a forest built as `sylva-cli forest` builds
+// it, with obstacles and a ground that may also come from arrays (a DCC tool's own meshes).
+#include <optional>
+
+#include <omp.h>
+#include <pybind11/stl.h>
+
+#include <QDir>
+#include <QFileInfo>
+
+#include "convert.h"
+#include "types.h"
+
+#include "document/filerefs.h"
+#include "document/project.h"
+#include "document/scenebuild.h"
+#include "document/speciesfile.h"
+#include "engine/environment/obstaclemesh.h"
+#include "engine/environment/obstaclescene.h"
+#include "engine/export/treeexport.h"
+#include "engine/forest/placement.h"
+#include "engine/graph/graph.h"
+#include "engine/scene/forestbuild.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+
+namespace sylva::python {
+
+graph::SpeciesGraph speciesGraphFrom(const py::object& source); // species.cpp
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+/// A project file's content plus what only lives in memory: obstacles and a ground given as
+/// arrays (they are not saved).
+struct Project {
+    doc::Project project;
+    std::vector<env::ObstacleMesh> arrayObstacles;
+    std::optional<env::ObstacleMesh> ground;
+    std::map<std::string, int> groundCounts;
+
+    scene::ForestScene makeScene() const {
+        scene::ForestScene s = doc::makeForestScene(project);
+        if (!arrayObstacles.empty()) {
+            std::vector<env::ObstacleMesh> all;
+            if (s.obstacles) all = s.obstacles->meshes();
+            all.insert(all.end(), arrayObstacles.begin(), arrayObstacles.end());
+            s.obstacles = std::make_shared<const env::ObstacleScene>(std::move(all));
+        }
+        if (ground) {
+            if (s.ground)
+                throw InvalidInput("the project has a terrain domain already; it cannot have a "
+                                   "ground from arrays as well");
+            s.ground =
+                std::make_shared<const env::ObstacleScene>(std::vector<env::ObstacleMesh>{*ground});
+            forest::Domain d;
+            d.min = {ground->lo.x, ground->lo.z};
+            d.max = {ground->hi.x, ground->hi.z};
+            for (const auto& [name, count] : groundCounts)
+                d.counts.emplace_back(name, static_cast<std::size_t>(count));
+            s.domains.push_back(std::move(d));
+        }
+        return s;
+    }
+};
+
+struct ForestTreeRef {
+    std::shared_ptr<const std::vector<scene::ForestTree>> all;
+    std::size_t index = 0;
+    std::string species;
+    const scene::ForestTree& tree() const { return (*all)[index]; }
+};
+
+struct Forest {
+    std::shared_ptr<const std::vector<scene::ForestTree>> trees;
+    std::vector<std::string> speciesNames;
+    py::dict stats;
+};
+
+struct BuildOptions {
+    scene::ForestOptions options;
+    std::optional<glm::vec3> camera;
+};
+
+BuildOptions buildOptions(const py::object& camera, bool lod, bool adapt, bool neighbours,
+                          const py::object& tile, std::optional<int> threads) {
+    BuildOptions b;
+    b.options.useLod = lod;
+    b.options.adapt = adapt;
+    b.options.neighbours = neighbours;
+    if (!camera.is_none()) b.camera = toVec3(camera, "camera");
+    if (!tile.is_none()) {
+        if (py::isinstance<py::str>(tile)) {
+            std::tie(b.options.tile, b.options.tileCount) =
+                forest::parseTileSpec(tile.cast<std::string>());
+        } else {
+            const auto t = tile.cast<std::pair<int, int>>();
+            std::tie(b.options.tile, b.options.tileCount) =
+                forest::parseTileSpec(std::to_string(t.first) + "/" + std::to_string(t.second));
+        }
+    }
+    if (threads) {
+        if (*threads < 1 || *threads > 1024)
+            throw InvalidInput("threads must be between 1 and 1024, got " +
+                               std::to_string(*threads));
+        omp_set_num_threads(*threads);
+    }
+    return b;
+}
+
+py::dict statsDict(const scene::ForestStats& stats, const scene::ForestScene& s,
+                   const scene::ForestOptions& o) {
+    py::dict d;
+    d["trees"] = stats.trees;
+    d["trees_in_scene"] = stats.treesInScene;
+    d["tile"] = o.tile + 1;
+    d["tiles"] = o.tileCount;
+    d["vertices"] = stats.vertices;
+    d["triangles"] = stats.triangles;
+    d["obstacle_triangles"] = s.obstacles ? s.obstacles->triangleCount() : 0;
+    d["colliding_trees"] = stats.collidingTrees;
+    d["pruned_nodes"] = stats.prunedNodes;
+    std::size_t missing = 0;
+    py::list shortfalls;
+    for (const forest::Shortfall& sf : stats.shortfalls) {
+        missing += sf.requested - sf.placed;
+        py::dict x;
+        x["domain"] = sf.domain;
+        x["species"] = s.species[sf.species].name;
+        x["requested"] = sf.requested;
+        x["placed"] = sf.placed;
+        shortfalls.append(x);
+    }
+    d["shortfall"] = missing;
+    d["shortfalls"] = shortfalls;
+    const forest::SceneMetrics& m = stats.metrics;
+    py::dict metrics;
+    metrics["trees"] = m.trees;
+    metrics["mean_height_m"] = m.meanHeightM;
+    metrics["mean_dbh_m"] = m.meanDbhM;
+    metrics["mean_crown_width_m"] = m.meanCrownWidthM;
+    metrics["wood_volume_m3"] = m.woodVolumeM3;
+    metrics["dry_biomass_kg"] = m.dryBiomassKg;
+    metrics["carbon_kg"] = m.carbonKg;
+    metrics["co2_kg"] = m.co2Kg;
+    metrics["chave_agb_kg"] = m.chaveAgbKg;
+    d["metrics"] = metrics;
+    d["co2_kg"] = m.co2Kg;
+    d["timings_ms"] = stats.wallMs;
+    d["cpu_ms"] = stats.cpuMs;
+    return d;
+}
+
+void warnShortfalls(const scene::ForestStats& stats, const scene::ForestScene& s) {
+    for (const forest::Shortfall& sf : stats.shortfalls)
+        PyErr_WarnEx(PyExc_UserWarning,
+                     ("domain " + std::to_string(sf.domain + 1) + ": placed " +
+                      std::to_string(sf.placed) + " of " + std::to_string(sf.requested) + " '" +
+                      s.species[sf.species].name + "' (no room left)")
+                         .c_str(),
+                     1);
+}
+
+exporter::ExportTree exportTree(const scene::ForestTree& t) {
+    return {t.name, t.mesh, t.instance.position, t.instance.rotation,
+            t.instance.scale * t.instance.growth};
+}
+
+std::vector<std::string> writeForest(const std::vector<scene::ForestTree>& trees,
+                                     const std::string& path, bool fullPrecision, bool fsync,
+                                     bool instanceTables) {
+    exporter::TreeExporter exporter(path, {fsync, !fullPrecision});
+    exporter.setInstanceTables(instanceTables);
+    std::vector<exporter::ExportTree> batch;
+    batch.reserve(trees.size());
+    for (const scene::ForestTree& t : trees)
+        batch.push_back(exportTree(t));
+    exporter.add(batch);
+    std::vector<std::string> written;
+    for (const auto& f : exporter.commit())
+        written.push_back(f.string());
+    return written;
+}
+
+void addSpecies(Project& p, const std::string& name, const py::object& source) {
+    if (name.empty()) throw InvalidInput("a species needs a name");
+    if (p.project.findSpecies(name))
+        throw InvalidInput("the project has a species '" + name + "' already");
+    doc::ProjectSpecies ps;
+    ps.name = name;
+    if (!py::isinstance<py::dict>(source) &&
+        (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__"))) {
+        const QString file = QFileInfo(QString::fromStdString(toPath(source))).absoluteFilePath();
+        doc::loadSpecies(file); // fail now, with the file's message, rather than at build time
+        ps.file = file.toStdString();
+    } else {
+        // A Species or a dict: inline, file parameters rewritten for the project's folder.
+        const graph::SpeciesGraph g = speciesGraphFrom(source);
+        graph::Value root = graph::Value::parseJson(doc::serializeSpecies(g).toStdString());
+        graph::Value inlineGraph = *root.find("graph");
+        doc::rebaseGraphFiles(inlineGraph, QString::fromStdString(g.baseDir.string()),
+                              p.project.baseDir);
+        ps.graph = std::move(inlineGraph);
+        if (const graph::Value* traits = root.find("traits")) ps.traits = *traits;
+    }
+    p.project.species.push_back(std::move(ps));
+}
+
+std::map<std::string, int> countsFrom(const py::object& counts, const Project& p) {
+    std::map<std::string, int> out;
+    if (counts.is_none()) return out;
+    for (const auto& [k, v] : counts.cast<py::dict>()) {
+        const std::string name = py::str(k).cast<std::string>();
+        const int n = v.cast<int>();
+        if (!p.project.findSpecies(name))
+            throw InvalidInput("the project has no species '" + name + "'");
+        if (n < 0)
+            throw InvalidInput("a tree count must not be negative, got " + std::to_string(n));
+        out[name] = n;
+    }
+    return out;
+}
+
+env::ObstacleMesh meshFromArrays(const std::string& name, const py::object& vertices,
+                                 const py::object& triangles, const env::MeshTransform& t) {
+    const std::vector<glm::vec3> v = toVec3Array(vertices, (name + ": vertices").c_str());
+    const std::vector<glm::uvec3> f = toTriangleArray(triangles, (name + ": triangles").c_str());
+    return env::makeObstacleMesh(name, v, f, t.matrix());
+}
+
+env::MeshTransform transformFrom(const py::object& translate, const py::object& rotate,
+                                 const py::object& scale) {
+    env::MeshTransform t;
+    if (!translate.is_none()) t.translate = toVec3(translate, "translate");
+    if (!rotate.is_none()) t.rotateDeg = toVec3(rotate, "rotate");
+    if (!scale.is_none()) t.scale = toVec3(scale, "scale");
+    return t;
+}
+
+} // namespace
+
+void bindForest(py::module_& m) {
+    py::class_<ForestTreeRef>(m, "ForestTree",
+                              "One tree of a built forest: its mesh in its own frame and the "
+                              "transform that places it.")
+        .def_property_readonly("id", [](const ForestTreeRef& t) { return t.tree().instance.id; })
+        .def_property_readonly("name", [](const ForestTreeRef& t) { return t.tree().name; })
+        .def_readonly("species", &ForestTreeRef::species)
+        .def_property_readonly(
+            "position", [](const ForestTreeRef& t) { return fromVec3(t.tree().instance.position); })
+        .def_property_readonly(
+            "rotation", [](const ForestTreeRef& t) { return t.tree().instance.rotation; },
+            "radians about +Y")
+        .def_property_readonly(
+            "scale",
+            [](const ForestTreeRef& t) {
+                return t.tree().instance.scale * t.tree().instance.growth;
+            },
+            "uniform scale of the mesh (size variation × growth stage)")
+        .def_property_readonly("growth",
+                               [](const ForestTreeRef& t) { return t.tree().instance.growth; })
+        .def_property_readonly("seed",
+                               [](const ForestTreeRef& t) { return t.tree().instance.seed; })
+        .def_property_readonly("hand_placed",
+                               [](const ForestTreeRef& t) { return t.tree().instance.handPlaced; })
+        .def_property_readonly(
+            "transform",
+            [](const ForestTreeRef& t) {
+                const glm::mat4 mat = t.tree().instance.transform();
+                float rows[16];
+                for (int r = 0; r < 4; ++r)
+                    for (int c = 0; c < 4; ++c)
+                        rows[4 * r + c] = mat[c][r];
+                return makeArray(rows, 4, 4);
+            },
+            "4×4 local-to-world matrix (row-major: world = M @ (x, y, z, 1))")
+        .def_property_readonly("mesh",
+                               [](const ForestTreeRef& t) { return MeshRef{t.tree().mesh}; })
+        .def(
+            "world_positions",
+            [](const ForestTreeRef& t) {
+                const glm::mat4 mat = t.tree().instance.transform();
+                const auto& p = t.tree().mesh->positions;
+                std::vector<glm::vec3> out(p.size());
+                for (std::size_t i = 0; i < p.size(); ++i)
+                    out[i] = glm::vec3(mat * glm::vec4(p[i], 1.0f));
+                return makeArray(&out.data()->x, out.size(), 3);
+            },
+            "the mesh's vertices placed in the world, shape (N, 3)")
+        .def_property_readonly("metrics",
+                               [](const ForestTreeRef& t) { return metricsDict(t.tree().metrics); })
+        .def_property_readonly(
+            "colliding", [](const ForestTreeRef& t) { return t.tree().adapt.collidingBefore > 0; },
+            "whether the grown tree met an obstacle or a neighbour before adaptation")
+        .def_property_readonly("pruned_nodes",
+                               [](const ForestTreeRef& t) { return t.tree().adapt.hiddenNodes; })
+        .def("__repr__", [](const ForestTreeRef& t) {
+            const glm::vec3 p = t.tree().instance.position;
+            return "<sylva.ForestTree " + t.tree().name + " at (" + std::to_string(p.x) + ", " +
+                   std::to_string(p.y) + ", " + std::to_string(p.z) + ")>";
+        });
+
+    py::class_<Forest>(m, "Forest", "The trees of a built forest, in instance order.")
+        .def("__len__", [](const Forest& f) { return f.trees->size(); })
+        .def("__getitem__",
+             [](const Forest& f, py::ssize_t i) {
+                 const auto n = static_cast<py::ssize_t>(f.trees->size());
+                 if (i < 0) i += n;
+                 if (i < 0 || i >= n) throw py::index_error("tree index out of range");
+                 const auto k = static_cast<std::size_t>(i);
+                 return ForestTreeRef{f.trees, k, f.speciesNames[(*f.trees)[k].instance.species]};
+             })
+        .def_property_readonly(
+            "trees",
+            [](const Forest& f) {
+                std::vector<ForestTreeRef> out;
+                for (std::size_t k = 0; k < f.trees->size(); ++k)
+                    out.push_back({f.trees, k, f.speciesNames[(*f.trees)[k].instance.species]});
+                return out;
+            })
+        .def_readonly("stats", &Forest::stats,
+                      "as `sylva-cli forest --stats`: trees, vertices, triangles, "
+                      "colliding_trees, pruned_nodes, shortfall, metrics (co2_kg, ...), "
+                      "timings_ms, cpu_ms")
+        .def(
+            "export",
+            [](const Forest& f, const py::object& path, bool fullPrecision, bool fsync,
+               bool instanceTables) {
+                const std::string p = toPath(path);
+                py::gil_scoped_release release;
+                return writeForest(*f.trees, p, fullPrecision, fsync, instanceTables);
+            },
+            py::arg("path"), py::arg("full_precision") = false, py::arg("fsync") = false,
+            py::arg("instance_tables") = false,
+            "writes the forest as `sylva-cli forest -o path` does (same bytes); returns the "
+            "paths written")
+        .def("__repr__", [](const Forest& f) {
+            return "<sylva.Forest " + std::to_string(f.trees->size()) + " trees>";
+        });
+
+    py::class_<Project>(m, "Project",
+                        "A forest project: species, placement domains, hand-placed trees, "
+                        "obstacles (files or arrays), camera and seed.")
+        .def(py::init([](std::uint64_t seed, const py::object& baseDir) {
+                 Project p;
+                 p.project.seed = seed;
+                 p.project.baseDir = QDir::currentPath();
+                 if (!baseDir.is_none())
+                     p.project.baseDir =
+                         QFileInfo(QString::fromStdString(toPath(baseDir))).absoluteFilePath();
+                 return p;
+             }),
+             py::arg("seed") = 0, py::arg("base_dir") = py::none(),
+             "an empty project; relative paths resolve against base_dir (default: the working "
+             "directory)")
+        .def_property(
+            "seed", [](const Project& p) { return p.project.seed; },
+            [](Project& p, std::uint64_t s) { p.project.seed = s; })
+        .def_property(
+            "camera", [](const Project& p) { return fromVec3(p.project.cameraPosition); },
+            [](Project& p, const py::object& v) { p.project.cameraPosition = toVec3(v, "camera"); },
+            "camera position for the level of detail (metres)")
+        .def_property_readonly("base_dir",
+                               [](const Project& p) { return p.project.baseDir.toStdString(); })
+        .def_property_readonly("species",
+                               [](const Project& p) {
+                                   std::vector<std::string> names;
+                                   for (const doc::ProjectSpecies& s : p.project.species)
+                                       names.push_back(s.name);
+                                   return names;
+                               })
+        .def_property_readonly("domains",
+                               [](const Project& p) {
+                                   py::list out;
+                                   for (const doc::PlacementDomain& d : p.project.domains) {
+                                       py::dict o;
+                                       o["shape"] = d.shape;
+                                       o["min"] = py::make_tuple(d.min.x, d.min.y);
+                                       o["max"] = py::make_tuple(d.max.x, d.max.y);
+                                       o["counts"] = d.counts;
+                                       out.append(o);
+                                   }
+                                   return out;
+                               })
+        .def_property_readonly(
+            "tree_count", [](const Project& p) { return p.project.instances.size(); },
+            "hand-placed trees")
+        .def("add_species", &addSpecies, py::arg("name"), py::arg("species"),
+             "a species from a file path (kept as a reference), a Species or a dict (inline)")
+        .def(
+            "add_domain",
+            [](Project& p, const py::dict& counts, const py::object& min, const py::object& max,
+               const py::object& polygon) {
+                doc::PlacementDomain d;
+                d.counts = countsFrom(counts, p);
+                if (!polygon.is_none()) {
+                    d.shape = "polygon";
+                    for (const auto& xz : polygon.cast<std::vector<std::vector<float>>>()) {
+                        if (xz.size() != 2) throw InvalidInput("polygon corners are (x, z) pairs");
+                        d.polygon.push_back({xz[0], xz[1]});
+                    }
+                    if (d.polygon.size() < 3)
+                        throw InvalidInput("a polygon needs at least three corners");
+                } else {
+                    const auto lo = min.cast<std::vector<float>>();
+                    const auto hi = max.cast<std::vector<float>>();
+                    if (lo.size() != 2 || hi.size() != 2)
+                        throw InvalidInput("min and max are (x, z) pairs");
+                    d.min = {lo[0], lo[1]};
+                    d.max = {hi[0], hi[1]};
+                    if (!(d.min.x < d.max.x && d.min.y < d.max.y))
+                        throw InvalidInput("a domain's min must be below its max in x and z");
+                }
+                p.project.domains.push_back(std::move(d));
+                return p.project.domains.size() - 1;
+            },
+            py::arg("counts"), py::arg("min") = py::make_tuple(-50.0, -50.0),
+            py::arg("max") = py::make_tuple(50.0, 50.0), py::arg("polygon") = py::none(),
+            "a rectangle (min, max as (x, z)) or polygon domain with counts {species: n}")
+        .def(
+            "set_ground",
+            [](Project& p, const py::object& vertices, const py::object& triangles,
+               const py::object& counts, const py::object& name) {
+                const std::string label = name.is_none() ? "ground" : name.cast<std::string>();
+                env::ObstacleMesh g = meshFromArrays(label, vertices, triangles, {});
+                if (g.empty()) throw InvalidInput(label + ": the ground has no valid triangle");
+                p.groundCounts = countsFrom(counts, p);
+                p.ground = std::move(g);
+            },
+            py::arg("vertices"), py::arg("triangles"), py::arg("counts") = py::none(),
+            py::arg("name") = py::none(),
+            "a ground mesh from arrays (world space, Y up): trees stand where a ray down meets "
+            "it, in every domain, and a domain over its footprint gets counts {species: n}")
+        .def(
+            "add_tree",
+            [](Project& p, const std::string& species, const py::object& position, double rotation,
+               double scale, std::optional<std::uint64_t> seed, double growth) {
+                if (!p.project.findSpecies(species))
+                    throw InvalidInput("the project has no species '" + species + "'");
+                doc::ProjectInstance t;
+                t.species = species;
+                t.position = toVec3(position, "position");
+                t.rotation = rotation;
+                t.scale = scale;
+                t.growth = growth;
+                t.seed =
+                    seed ? *seed
+                         : mixSeed(p.project.seed, p.project.instances.size() + 1) % 1000000007ull;
+                p.project.instances.push_back(t);
+                return p.project.instances.size() - 1;
+            },
+            py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
+            py::arg("scale") = 1.0, py::arg("seed") = py::none(), py::arg("growth") = 1.0,
+            "a hand-placed tree (rotation in degrees about +Y)")
+        .def(
+            "add_obstacle",
+            [](Project& p, const py::object& file, const py::object& vertices,
+               const py::object& triangles, const py::object& translate, const py::object& rotate,
+               const py::object& scale, const py::object& name) {
+                const env::MeshTransform t = transformFrom(translate, rotate, scale);
+                if (!file.is_none()) {
+                    if (!vertices.is_none() || !triangles.is_none())
+                        throw InvalidInput("an obstacle is a file or arrays, not both");
+                    doc::ProjectObstacle o;
+                    o.file = QFileInfo(QString::fromStdString(toPath(file)))
+                                 .absoluteFilePath()
+                                 .toStdString();
+                    o.translate = t.translate;
+                    o.rotate = t.rotateDeg;
+                    o.scale = t.scale;
+                    p.project.obstacles.push_back(o);
+                    return;
+                }
+                if (vertices.is_none() || triangles.is_none())
+                    throw InvalidInput("an obstacle needs a file, or vertices and triangles");
+                const std::string label =
+                    name.is_none() ? "obstacle " + std::to_string(p.arrayObstacles.size() + 1)
+                                   : name.cast<std::string>();
+                p.arrayObstacles.push_back(meshFromArrays(label, vertices, triangles, t));
+            },
+            py::arg("file") = py::none(), py::arg("vertices") = py::none(),
+            py::arg("triangles") = py::none(), py::arg("translate") = py::none(),
+            py::arg("rotate") = py::none(), py::arg("scale") = py::none(),
+            py::arg("name") = py::none(),
+            "an obstacle mesh from a file (any format Assimp reads) or from arrays "
+            "(vertices (N, 3), triangles (M, 3)); scaled, rotated (degrees about x, y, z) and "
+            "translated")
+        .def(
+            "clear_obstacles",
+            [](Project& p) {
+                p.project.obstacles.clear();
+                p.arrayObstacles.clear();
+            },
+            "removes every obstacle (files and arrays)")
+        .def_property_readonly(
+            "obstacle_count",
+            [](const Project& p) { return p.project.obstacles.size() + p.arrayObstacles.size(); })
+        .def(
+            "save",
+            [](const Project& p, const py::object& path) {
+                if (!p.arrayObstacles.empty() || p.ground)
+                    throw InvalidInput("obstacles and grounds given as arrays cannot be saved in "
+                                       "a project file; write them to mesh files first");
+                const QString file =
+                    QFileInfo(QString::fromStdString(toPath(path))).absoluteFilePath();
+                doc::saveProject(doc::rebaseProject(p.project, QFileInfo(file).absolutePath()),
+                                 file);
+            },
+            py::arg("path"), "atomic save as a .sylva project (paths rebased)")
+        .def(
+            "build_forest",
+            [](const Project& p, const py::object& progress, const py::object& camera, bool lod,
+               bool adapt, bool neighbours, const py::object& tile, std::optional<int> threads) {
+                const BuildOptions b = buildOptions(camera, lod, adapt, neighbours, tile, threads);
+                PyProgress prog(progress);
+                auto trees = std::make_shared<std::vector<scene::ForestTree>>();
+                scene::ForestScene s;
+                scene::ForestStats stats;
+                withoutGil(prog, [&] {
+                    const auto t0 = Clock::now();
+                    s = p.makeScene();
+                    if (b.camera) s.camera = *b.camera;
+                    const double loadMs = msSince(t0);
+                    stats = scene::buildForest(
+                        s, b.options,
+                        [&](const std::vector<scene::ForestTree>& batch) {
+                            trees->insert(trees->end(), batch.begin(), batch.end());
+                        },
+                        prog);
+                    stats.wallMs["load"] = loadMs;
+                });
+                warnShortfalls(stats, s);
+                Forest f;
+                f.trees = trees;
+                for (const scene::SceneSpecies& sp : s.species)
+                    f.speciesNames.push_back(sp.name);
+                f.stats = statsDict(stats, s, b.options);
+                return f;
+            },
+            py::arg("progress") = py::none(), py::arg("camera") = py::none(), py::arg("lod") = true,
+            py::arg("adapt") = true, py::arg("neighbours") = true, py::arg("tile") = py::none(),
+            py::arg("threads") = py::none(),
+            "builds the forest as `sylva-cli forest` does, the GIL released; progress(fraction, "
+            "stage) is called on this thread; Ctrl-C raises KeyboardInterrupt")
+        .def(
+            "export_forest",
+            [](const Project& p, const py::object& path, const py::object& progress,
+               const py::object& camera, bool lod, bool adapt, bool neighbours,
+               const py::object& tile, std::optional<int> threads, bool fullPrecision, bool fsync,
+               bool instanceTables) {
+                const BuildOptions b = buildOptions(camera, lod, adapt, neighbours, tile, threads);
+                const std::string out = toPath(path);
+                PyProgress prog(progress);
+                scene::ForestScene s;
+                scene::ForestStats stats;
+                withoutGil(prog, [&] {
+                    const auto t0 = Clock::now();
+                    s = p.makeScene();
+                    if (b.camera) s.camera = *b.camera;
+                    const double loadMs = msSince(t0);
+                    exporter::TreeExporter exporter(out, {fsync, !fullPrecision});
+                    exporter.setInstanceTables(instanceTables);
+                    double writeMs = 0;
+                    stats = scene::buildForest(
+                        s, b.options,
+                        [&](const std::vector<scene::ForestTree>& batch) {
+                            const auto t = Clock::now();
+                            std::vector<exporter::ExportTree> trees;
+                            for (const scene::ForestTree& tree : batch)
+                                trees.push_back(exportTree(tree));
+                            exporter.add(trees);
+                            writeMs += msSince(t);
+                        },
+                        prog);
+                    const auto t = Clock::now();
+                    exporter.commit();
+                    stats.wallMs["write"] = writeMs + msSince(t);
+                    stats.wallMs["load"] = loadMs;
+                });
+                warnShortfalls(stats, s);
+                return statsDict(stats, s, b.options);
+            },
+            py::arg("path"), py::arg("progress") = py::none(), py::arg("camera") = py::none(),
+            py::arg("lod") = true, py::arg("adapt") = true, py::arg("neighbours") = true,
+            py::arg("tile") = py::none(), py::arg("threads") = py::none(),
+            py::arg("full_precision") = false, py::arg("fsync") = false,
+            py::arg("instance_tables") = false,
+            "builds and writes the forest batch by batch without keeping it (`sylva-cli forest "
+            "-o path`, same bytes); Ctrl-C leaves no file; returns the statistics")
+        .def("__repr__", [](const Project& p) {
+            return "<sylva.Project " + std::to_string(p.project.species.size()) + " species, " +
+                   std::to_string(p.project.domains.size() + (p.ground ? 1 : 0)) + " domains>";
+        });
+
+    m.def(
+        "load_project",
+        [](const py::object& path) {
+            doc::LoadReport report;
+            Project p;
+            p.project = doc::loadProjectOrScene(QString::fromStdString(toPath(path)), &report);
+            for (const std::string& w : report.warnings)
+                PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
+            return p;
+        },
+        py::arg("path"),
+        "a .sylva project (or the reference implementation's scene description), as "
+        "`sylva-cli forest` reads it");
+}
+
+} // namespace sylva::python

@@ -1,0 +1,376 @@
+// sylva.Species, sylva.GrownTree, sylva.Skeleton, sylva.Mesh: one species grown on its own,
+// as `sylva-cli tree` grows it.
+#include <map>
+#include <mutex>
+#include <optional>
+
+#include <pybind11/stl.h>
+
+#include <QString>
+
+#include "convert.h"
+#include "types.h"
+
+#include "document/speciesfile.h"
+#include "engine/export/treeexport.h"
+#include "engine/graph/graph.h"
+#include "engine/util/error.h"
+
+namespace sylva::python {
+
+namespace {
+
+/// A species with its evaluator (whose per-node cache makes a regrow after one parameter
+/// change cheap). Python threads may share one: growth takes the lock with the GIL released.
+struct Species {
+    std::shared_ptr<graph::Evaluator> evaluator;
+    std::shared_ptr<std::mutex> lock = std::make_shared<std::mutex>();
+
+    const graph::SpeciesGraph& graph() const { return evaluator->graph(); }
+};
+
+Species makeSpecies(graph::SpeciesGraph g) {
+    graph::registerBuiltinNodeTypes();
+    Species s{std::make_shared<graph::Evaluator>(std::move(g))};
+    s.evaluator->validate();
+    return s;
+}
+
+/// "node.param" → (node, param), split at the first dot as `sylva-cli tree --set` does.
+std::pair<std::string, std::string> splitParam(const std::string& path) {
+    const auto dot = path.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == path.size())
+        throw InvalidInput("a parameter is named node.param, got '" + path + "'");
+    return {path.substr(0, dot), path.substr(dot + 1)};
+}
+
+struct GrownTree {
+    std::string species;
+    std::optional<std::uint64_t> seed;
+    std::shared_ptr<const skel::Skeleton> skeleton;
+    std::shared_ptr<const mesh::Mesh> mesh;
+    std::map<std::string, double> stats, timingsMs;
+    graph::SpeciesTraits traits;
+};
+
+py::dict nodeDict(const graph::NodeDesc& n) {
+    py::dict d;
+    d["id"] = n.id;
+    d["type"] = n.type;
+    d["inputs"] = n.inputs;
+    d["params"] = fromValue(n.params);
+    return d;
+}
+
+py::object speciesDict(const graph::SpeciesGraph& g) {
+    const QByteArray json = doc::serializeSpecies(g);
+    return fromValue(graph::Value::parseJson(json.toStdString()));
+}
+
+Species loadSpeciesFrom(const py::object& source, const py::object& baseDir) {
+    if (py::isinstance<py::dict>(source)) {
+        const std::string base =
+            baseDir.is_none() ? std::filesystem::current_path().string() : toPath(baseDir);
+        return makeSpecies(doc::speciesFromValue(toValue(source), QStringLiteral("<dict>"),
+                                                 QString::fromStdString(base)));
+    }
+    if (py::isinstance<Species>(source)) return source.cast<Species>();
+    return makeSpecies(doc::loadSpecies(QString::fromStdString(toPath(source))));
+}
+
+} // namespace
+
+/// Also used by forest.cpp: a species argument (path, dict or Species) as a graph.
+graph::SpeciesGraph speciesGraphFrom(const py::object& source) {
+    return loadSpeciesFrom(source, py::none()).graph();
+}
+
+py::dict metricsDict(const forest::TreeMetrics& m) {
+    py::dict d;
+    d["height_m"] = m.heightM;
+    d["dbh_m"] = m.dbhM;
+    d["crown_width_m"] = m.crownWidthM;
+    d["wood_volume_m3"] = m.woodVolumeM3;
+    d["dry_biomass_kg"] = m.dryBiomassKg;
+    d["carbon_kg"] = m.carbonKg;
+    d["co2_kg"] = m.co2Kg;
+    d["chave_agb_kg"] = m.chaveAgbKg;
+    return d;
+}
+
+void bindSpecies(py::module_& m) {
+    py::class_<MeshRef>(m, "Mesh",
+                        "A tree's triangle mesh in the tree's own frame (metres, Y up). Each "
+                        "property returns a new numpy array.")
+        .def_property_readonly("positions",
+                               [](const MeshRef& r) {
+                                   return makeArray(&r.mesh->positions.data()->x,
+                                                    r.mesh->positions.size(), 3);
+                               })
+        .def_property_readonly("normals",
+                               [](const MeshRef& r) {
+                                   return makeArray(&r.mesh->normals.data()->x,
+                                                    r.mesh->normals.size(), 3);
+                               })
+        .def_property_readonly("uvs",
+                               [](const MeshRef& r) {
+                                   return makeArray(&r.mesh->uvs.data()->x, r.mesh->uvs.size(), 2);
+                               })
+        .def_property_readonly("indices",
+                               [](const MeshRef& r) {
+                                   return makeArray(r.mesh->indices.data(),
+                                                    r.mesh->indices.size() / 3, 3);
+                               })
+        .def_property_readonly(
+            "materials",
+            [](const MeshRef& r) {
+                std::vector<std::string> names;
+                for (const mesh::Submesh& s : r.mesh->submeshes)
+                    if (std::find(names.begin(), names.end(), s.material) == names.end())
+                        names.push_back(s.material);
+                if (r.mesh->submeshes.empty() && !r.mesh->indices.empty()) names.push_back("bark");
+                return names;
+            },
+            "material names in the order they first appear (\"bark\", \"leaf\")")
+        .def(
+            "indices_of",
+            [](const MeshRef& r, const std::string& material) {
+                const mesh::Mesh& me = *r.mesh;
+                std::vector<std::uint32_t> out;
+                if (me.submeshes.empty()) {
+                    if (material == "bark") out = me.indices;
+                } else {
+                    for (const mesh::Submesh& s : me.submeshes)
+                        if (s.material == material)
+                            out.insert(out.end(), me.indices.begin() + s.firstIndex,
+                                       me.indices.begin() + s.firstIndex + s.indexCount);
+                }
+                return makeArray(out.data(), out.size() / 3, 3);
+            },
+            py::arg("material"), "the triangles of one material, shape (T, 3)")
+        .def_property_readonly(
+            "submeshes",
+            [](const MeshRef& r) {
+                py::list l;
+                for (const mesh::Submesh& s : r.mesh->submeshes)
+                    l.append(py::make_tuple(s.material, s.firstIndex / 3, s.indexCount / 3));
+                return l;
+            },
+            "(material, first triangle, triangle count) runs covering indices in order")
+        .def_property_readonly("vertex_count",
+                               [](const MeshRef& r) { return r.mesh->vertexCount(); })
+        .def_property_readonly("triangle_count",
+                               [](const MeshRef& r) { return r.mesh->triangleCount(); })
+        .def("__repr__", [](const MeshRef& r) {
+            return "<sylva.Mesh " + std::to_string(r.mesh->vertexCount()) + " vertices, " +
+                   std::to_string(r.mesh->triangleCount()) + " triangles>";
+        });
+
+    py::class_<SkeletonRef>(m, "Skeleton",
+                            "A tree's skeleton: nodes stored parents before children (parents[i] "
+                            "< i, -1 for a root), metres, Y up.")
+        .def("__len__", [](const SkeletonRef& r) { return r.skeleton->size(); })
+        .def_property_readonly("positions",
+                               [](const SkeletonRef& r) {
+                                   return makeArray(&r.skeleton->position.data()->x,
+                                                    r.skeleton->size(), 3);
+                               })
+        .def_property_readonly("parents",
+                               [](const SkeletonRef& r) {
+                                   return makeArray(r.skeleton->parent.data(),
+                                                    r.skeleton->parent.size(), 0);
+                               })
+        .def_property_readonly("radii",
+                               [](const SkeletonRef& r) {
+                                   return makeArray(r.skeleton->radius.data(),
+                                                    r.skeleton->radius.size(), 0);
+                               })
+        .def_property_readonly("orders",
+                               [](const SkeletonRef& r) {
+                                   return makeArray(r.skeleton->order.data(),
+                                                    r.skeleton->order.size(), 0);
+                               })
+        .def_property_readonly(
+            "flags",
+            [](const SkeletonRef& r) {
+                return makeArray(r.skeleton->flags.data(), r.skeleton->flags.size(), 0);
+            },
+            "bits: 1 hidden (pruned), 2 tip, 4 fork, 8 starved")
+        .def_property_readonly(
+            "leaf_positions",
+            [](const SkeletonRef& r) {
+                std::vector<float> p;
+                for (const skel::Leaf& l : r.skeleton->leaves)
+                    p.insert(p.end(), {l.position.x, l.position.y, l.position.z});
+                return makeArray(p.data(), r.skeleton->leaves.size(), 3);
+            })
+        .def("__repr__", [](const SkeletonRef& r) {
+            return "<sylva.Skeleton " + std::to_string(r.skeleton->size()) + " nodes>";
+        });
+
+    py::class_<GrownTree>(m, "GrownTree", "One tree grown from a species and a seed.")
+        .def_readonly("species", &GrownTree::species)
+        .def_readonly("seed", &GrownTree::seed)
+        .def_property_readonly("skeleton",
+                               [](const GrownTree& t) -> py::object {
+                                   if (!t.skeleton) return py::none();
+                                   return py::cast(SkeletonRef{t.skeleton});
+                               })
+        .def_property_readonly("mesh", [](const GrownTree& t) { return MeshRef{t.mesh}; })
+        .def_readonly("stats", &GrownTree::stats,
+                      "counts from the generators (symbols, segments, leaves, ...)")
+        .def_readonly("timings_ms", &GrownTree::timingsMs)
+        .def(
+            "metrics",
+            [](const GrownTree& t, double scale) {
+                if (!t.skeleton) throw InvalidInput("this tree has no skeleton");
+                return metricsDict(forest::measureTree(
+                    *t.skeleton, {t.traits.woodDensity, t.traits.carbonFraction}, scale));
+            },
+            py::arg("scale") = 1.0,
+            "height, DBH, crown width, wood volume, dry biomass, carbon and CO2 (kg)")
+        .def(
+            "export",
+            [](const GrownTree& t, const py::object& path, bool compact, bool fsync) {
+                const std::string p = toPath(path);
+                std::vector<std::string> written;
+                {
+                    py::gil_scoped_release release;
+                    exporter::TreeExporter exporter(p, {fsync, compact});
+                    exporter.add(
+                        {exporter::ExportTree{exporter::objectNameFor(t.species), t.mesh}});
+                    for (const auto& f : exporter.commit())
+                        written.push_back(f.string());
+                }
+                return written;
+            },
+            py::arg("path"), py::arg("compact") = false, py::arg("fsync") = false,
+            "writes the tree as `sylva-cli tree` does (by extension: .obj + .mtl + textures, "
+            ".glb, .gltf, .fbx); returns the paths written")
+        .def("__repr__", [](const GrownTree& t) {
+            return "<sylva.GrownTree " + t.species + ": " +
+                   std::to_string(t.mesh ? t.mesh->vertexCount() : 0) + " vertices>";
+        });
+
+    py::class_<Species>(m, "Species",
+                        "A species graph (nodes with parameters) ready to grow trees. Parameters "
+                        "are checked when set: unknown nodes and parameters raise ValueError.")
+        .def_property_readonly("name", [](const Species& s) { return s.graph().name; })
+        .def_property_readonly("output", [](const Species& s) { return s.graph().output; })
+        .def_property_readonly("source", [](const Species& s) { return s.graph().sourceFile; })
+        .def_property_readonly("node_ids",
+                               [](const Species& s) {
+                                   std::vector<std::string> ids;
+                                   for (const graph::NodeDesc& n : s.graph().nodes)
+                                       ids.push_back(n.id);
+                                   return ids;
+                               })
+        .def_property_readonly("nodes",
+                               [](const Species& s) {
+                                   py::list l;
+                                   for (const graph::NodeDesc& n : s.graph().nodes)
+                                       l.append(nodeDict(n));
+                                   return l;
+                               })
+        .def_property_readonly("traits",
+                               [](const Species& s) {
+                                   py::dict d;
+                                   d["wood_density"] = s.graph().traits.woodDensity;
+                                   d["carbon_fraction"] = s.graph().traits.carbonFraction;
+                                   d["crown_radius"] = s.graph().traits.crownRadius;
+                                   return d;
+                               })
+        .def(
+            "get_param",
+            [](const Species& s, const std::string& path) {
+                const auto [node, key] = splitParam(path);
+                const graph::NodeDesc* n = s.graph().findNode(node);
+                if (!n)
+                    throw InvalidInput("no node '" + node + "' in species '" + s.graph().name +
+                                       "'");
+                const graph::Value* v = n->params.isObject() ? n->params.find(key) : nullptr;
+                return v ? fromValue(*v) : py::object(py::none());
+            },
+            py::arg("path"), "a parameter's value by \"node.param\" (None when unset)")
+        .def(
+            "set_param",
+            [](Species& s, const std::string& path, const py::object& value) {
+                const auto [node, key] = splitParam(path);
+                std::lock_guard lock(*s.lock);
+                s.evaluator->setParam(node, key, toValue(value));
+            },
+            py::arg("path"), py::arg("value"),
+            "sets \"node.param\" (as `sylva-cli tree --set`); ValueError for an unknown node or "
+            "parameter. Values out of range raise ValueError when the tree grows.")
+        .def(
+            "params",
+            [](const Species& s, const std::string& node) {
+                const graph::NodeDesc* n = s.graph().findNode(node);
+                if (!n)
+                    throw InvalidInput("no node '" + node + "' in species '" + s.graph().name +
+                                       "'");
+                return fromValue(n->params);
+            },
+            py::arg("node"))
+        .def(
+            "to_dict", [](const Species& s) { return speciesDict(s.graph()); },
+            "the species file's JSON as a dict")
+        .def("copy", [](const Species& s) { return makeSpecies(s.graph()); })
+        .def(
+            "grow",
+            [](Species& s, std::optional<std::uint64_t> seed, const py::object& progress) {
+                PyProgress p(progress);
+                GrownTree t;
+                t.species = s.graph().name;
+                t.seed = seed;
+                t.traits = s.graph().traits;
+                withoutGil(p, [&] {
+                    std::lock_guard lock(*s.lock);
+                    const graph::NodeOutput& out =
+                        seed ? s.evaluator->evaluate(*seed, p) : s.evaluator->evaluate(p);
+                    if (!out.mesh)
+                        throw InvalidInput("the species' output node '" + s.graph().output +
+                                           "' produces no mesh; end the graph with a tube_mesh "
+                                           "node");
+                    t.skeleton = out.skeleton;
+                    t.mesh = out.mesh;
+                    t.stats = out.stats;
+                    t.timingsMs = out.timingsMs;
+                });
+                return t;
+            },
+            py::arg("seed") = py::none(), py::arg("progress") = py::none(),
+            "grows one tree (as `sylva-cli tree [--seed S]`), the GIL released; without a seed "
+            "the generators use their own (a grammar's `seed:`)")
+        .def("__repr__", [](const Species& s) {
+            return "<sylva.Species '" + s.graph().name + "' " +
+                   std::to_string(s.graph().nodes.size()) + " nodes>";
+        });
+
+    m.def("load_species", &loadSpeciesFrom, py::arg("source"), py::arg("base_dir") = py::none(),
+          "a species from a file (species .json, or a bare grammar .lsys) or from a dict in the "
+          "species file's form; relative file parameters of a dict resolve against base_dir "
+          "(default: the working directory)");
+    m.def(
+        "grow",
+        [](const py::object& species, std::optional<std::uint64_t> seed,
+           const py::object& progress) {
+            Species s = loadSpeciesFrom(species, py::none());
+            return s.evaluator ? py::cast(s).attr("grow")(seed, progress) : py::object(py::none());
+        },
+        py::arg("species"), py::arg("seed") = py::none(), py::arg("progress") = py::none(),
+        "load_species(species).grow(seed)");
+    m.def(
+        "node_types",
+        [] {
+            graph::registerBuiltinNodeTypes();
+            py::dict d;
+            const graph::NodeRegistry& r = graph::NodeRegistry::instance();
+            for (const std::string& name : r.names())
+                d[py::str(name)] = r.find(name)->knownParams;
+            return d;
+        },
+        "node type → the parameter names it accepts");
+}
+
+} // namespace sylva::python

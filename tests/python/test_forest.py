@@ -1,0 +1,221 @@
+"""sylva projects and forests: the same trees and bytes as `sylva-cli forest`, obstacles and a
+ground from arrays, progress, the GIL released, Ctrl-C."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import sylva
+from conftest import read_obj_mesh
+
+
+def test_forest_equals_cli(data, cli, tmp_path):
+    project = data / "projects" / "small.sylva"
+    (tmp_path / "cli").mkdir()
+    (tmp_path / "py").mkdir()
+    (tmp_path / "stream").mkdir()
+    r = cli("forest", project, "-o", tmp_path / "cli" / "forest.obj", "--stats")
+    cli_stats = json.loads(r.stdout)
+
+    forest = sylva.load_project(project).build_forest()
+    assert len(forest) == cli_stats["trees"] == 41
+    for key in ("trees", "vertices", "triangles", "colliding_trees", "pruned_nodes",
+                "obstacle_triangles", "shortfall"):
+        assert forest.stats[key] == cli_stats[key], key
+    assert forest.stats["metrics"]["co2_kg"] == pytest.approx(cli_stats["metrics"]["co2_kg"])
+    assert sum(t.mesh.vertex_count for t in forest.trees) == cli_stats["vertices"]
+    assert forest[0].name == "bush_0" and forest[0].hand_placed
+    assert forest[0].species == "bush"
+    assert forest[-1].name == forest.trees[-1].name
+
+    forest.export(tmp_path / "py" / "forest.obj")
+    stats = sylva.load_project(project).export_forest(tmp_path / "stream" / "forest.obj")
+    assert stats["vertices"] == cli_stats["vertices"]
+    cli_bytes = (tmp_path / "cli" / "forest.obj").read_bytes()
+    assert (tmp_path / "py" / "forest.obj").read_bytes() == cli_bytes
+    assert (tmp_path / "stream" / "forest.obj").read_bytes() == cli_bytes
+    assert (tmp_path / "py" / "forest.mtl").read_bytes() == \
+        (tmp_path / "cli" / "forest.mtl").read_bytes()
+
+
+def without_fbx_timestamp(data):
+    """Assimp writes the wall-clock time into an FBX header (CreationTimeStamp: Year ...
+    Millisecond), so two exports a second apart differ there and only there."""
+    start = data.index(b"CreationTimeStamp")
+    end = data.index(b"Millisecond", start) + len(b"Millisecond") + 5  # 'I' + int32
+    return data[:start] + bytes(end - start) + data[end:]
+
+
+def test_forest_glb_and_fbx_equal_cli(data, cli, tmp_path):
+    project = data / "projects" / "small.sylva"
+    forest = sylva.load_project(project).build_forest()
+    for ext in ("glb", "fbx"):
+        cli("forest", project, "-o", tmp_path / f"cli.{ext}")
+        forest.export(tmp_path / f"py.{ext}")
+        py, ref = (tmp_path / f"py.{ext}").read_bytes(), (tmp_path / f"cli.{ext}").read_bytes()
+        if ext == "fbx":
+            py, ref = without_fbx_timestamp(py), without_fbx_timestamp(ref)
+        assert py == ref, ext
+
+
+def test_transform_places_the_mesh(data):
+    forest = sylva.load_project(data / "projects" / "small.sylva").build_forest()
+    tree = forest[5]
+    local = tree.mesh.positions
+    m = tree.transform
+    world = (np.c_[local, np.ones(len(local))] @ m.T)[:, :3]
+    assert np.allclose(world, tree.world_positions(), atol=1e-4)
+    assert np.allclose(m[:3, 3], tree.position)
+    assert tree.metrics["height_m"] > 0
+
+
+def test_obstacles_as_arrays_equal_obstacle_files(data, tmp_path):
+    project = data / "projects" / "small.sylva"
+    from_file = sylva.load_project(project)
+    from_file.export_forest(tmp_path / "file.obj")
+
+    from_arrays = sylva.load_project(project)
+    from_arrays.clear_obstacles()
+    vertices, triangles = read_obj_mesh(data / "obstacles" / "wall.obj")
+    from_arrays.add_obstacle(vertices=vertices, triangles=triangles, name="wall")
+    stats = from_arrays.export_forest(tmp_path / "arrays.obj")
+    assert stats["obstacle_triangles"] == 12 and stats["colliding_trees"] > 0
+    a = (tmp_path / "file.obj").read_bytes().replace(b"mtllib file.mtl", b"")
+    b = (tmp_path / "arrays.obj").read_bytes().replace(b"mtllib arrays.mtl", b"")
+    assert a == b
+
+    with pytest.raises(ValueError, match=r"shape \(N, 3\)"):
+        from_arrays.add_obstacle(vertices=np.zeros((4, 2)), triangles=[[0, 1, 2]])
+    with pytest.raises(ValueError, match="out of range|index"):
+        from_arrays.add_obstacle(vertices=np.zeros((3, 3)), triangles=[[0, 1, 7]])
+
+
+def test_project_in_memory_with_a_ground(data, presets):
+    p = sylva.Project(seed=4)
+    p.add_species("bush", data / "lsystem" / "bush.lsys")
+    alder = sylva.load_species(presets / "alder.json")
+    alder.set_param("grow.generations", 4)
+    p.add_species("alder", alder)  # inline, its grammar file rebased
+    # a 20 m square ground raised to y = 2
+    ground = np.array([[-10, 2, -10], [10, 2, -10], [10, 2, 10], [-10, 2, 10]], float)
+    p.set_ground(ground, [[0, 2, 1], [0, 3, 2]], counts={"bush": 6, "alder": 3})
+    p.add_tree("alder", (0, 2, 0), rotation=45, seed=9)
+    forest = p.build_forest()
+    assert len(forest) == 10
+    assert forest[0].species == "alder" and forest[0].hand_placed
+    for t in forest.trees:
+        assert -10 <= t.position[0] <= 10 and -10 <= t.position[2] <= 10
+        assert t.position[1] == pytest.approx(2.0, abs=1e-4)
+    assert forest.stats["metrics"]["co2_kg"] > 0
+    with pytest.raises(ValueError, match="no species 'oak'"):
+        p.add_domain({"oak": 3})
+    with pytest.raises(ValueError, match="cannot be saved"):
+        p.save("/tmp/never-written.sylva")
+
+
+def big_project(data, trees=600):
+    p = sylva.Project(seed=1)
+    p.add_species("bush", data / "lsystem" / "bush.lsys")
+    p.add_domain({"bush": trees}, min=(-60, -60), max=(60, 60))
+    return p
+
+
+def test_gil_released_and_progress_reported(data):
+    p = big_project(data)
+    ticks = []
+    stop = threading.Event()
+
+    def other_thread():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    reports = []
+    caller = threading.get_ident()
+
+    def progress(fraction, stage):
+        assert threading.get_ident() == caller
+        reports.append((time.perf_counter(), fraction, stage))
+
+    worker = threading.Thread(target=other_thread)
+    worker.start()
+    t0 = time.perf_counter()
+    forest = p.build_forest(progress=progress)
+    t1 = time.perf_counter()
+    stop.set()
+    worker.join()
+    assert len(forest) == 600
+    fractions = [f for _, f, s in reports if s == "trees"]
+    assert len(fractions) >= 5 and fractions == sorted(fractions) and fractions[-1] == 1.0
+    during = [t for t in ticks if t0 < t < t1]
+    print(f"build {1000 * (t1 - t0):.0f} ms, {len(reports)} progress calls, "
+          f"{len(during)} ticks of a parallel Python thread during the build")
+    # With the GIL held for the whole build the other thread could not run at all.
+    assert len(during) >= 5
+
+
+def test_callback_exception_stops_and_writes_nothing(data, tmp_path):
+    p = big_project(data)
+
+    class Stop(Exception):
+        pass
+
+    def progress(fraction, stage):
+        if fraction > 0.2:
+            raise Stop()
+
+    with pytest.raises(Stop):
+        p.export_forest(tmp_path / "forest.obj", progress=progress)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_ctrl_c_raises_keyboard_interrupt_and_writes_nothing(data, tmp_path):
+    script = f"""
+import sys, sylva
+p = sylva.Project(seed=1)
+p.add_species("bush", {str(data / "lsystem" / "bush.lsys")!r})
+p.add_domain({{"bush": 20000}}, min=(-300, -300), max=(300, 300))
+def progress(fraction, stage):
+    print("progress", fraction, flush=True)
+try:
+    p.export_forest({str(tmp_path / "forest.obj")!r}, progress=progress, threads=1)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+    sys.exit(42)
+print("finished", flush=True)
+"""
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True,
+                            env=os.environ.copy())
+    first = proc.stdout.readline()
+    assert first.startswith("progress"), first
+    t = time.perf_counter()
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=60)
+    latency = time.perf_counter() - t
+    print(f"Ctrl-C to KeyboardInterrupt: {1000 * latency:.0f} ms")
+    assert proc.returncode == 42, out
+    assert "interrupted" in out
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_bad_project_errors_match_cli(data, cli, tmp_path):
+    bad = tmp_path / "bad.sylva"
+    bad.write_text('{"format": "sylva-project", "format_version": 1, "species": [ }')
+    r = cli("forest", bad, "-o", tmp_path / "x.obj", check=False)
+    assert r.returncode == 1
+    with pytest.raises(ValueError) as e:
+        sylva.load_project(bad)
+    assert str(e.value) == r.stderr.strip().removeprefix("sylva-cli: error: ")
+    with pytest.raises(OSError):
+        sylva.load_project(tmp_path / "missing.sylva")
+    p = sylva.Project()
+    p.add_species("bush", data / "lsystem" / "bush.lsys")
+    p.add_obstacle(file=tmp_path / "missing.obj")
+    with pytest.raises(OSError, match="missing.obj"):
+        p.build_forest()

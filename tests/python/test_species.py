@@ -1,0 +1,162 @@
+"""sylva species: load (file, dict), parameters, grow → skeleton and mesh arrays, export,
+errors as the CLI reports them."""
+import json
+
+import numpy as np
+import pytest
+
+import sylva
+
+
+def test_module_basics(presets):
+    assert sylva.__version__
+    assert sylva.presets_dir() == str(presets)
+    assert "lsystem" in sylva.node_types()
+    assert "generations" in sylva.node_types()["lsystem"]
+
+
+def test_grow_gives_numpy_skeleton_and_mesh(presets):
+    species = sylva.load_species(presets / "ternary-tree.json")
+    assert species.name == "Ternary tree (ABOP 2.8)"
+    assert species.node_ids == ["grow", "mesh"]
+    tree = species.grow(seed=7)
+    sk = tree.skeleton
+    n = len(sk)
+    assert n > 100
+    assert sk.positions.shape == (n, 3) and sk.positions.dtype == np.float32
+    assert sk.parents.shape == (n,) and sk.parents.dtype == np.int32
+    assert sk.radii.shape == (n,) and sk.orders.shape == (n,)
+    assert sk.parents[0] == -1
+    assert np.all(sk.parents[1:] < np.arange(1, n))  # parents before children
+    assert np.all(sk.radii > 0)
+    mesh = tree.mesh
+    v = mesh.vertex_count
+    assert mesh.positions.shape == (v, 3)
+    assert mesh.normals.shape == (v, 3)
+    assert mesh.uvs.shape == (v, 2)
+    assert mesh.indices.shape == (mesh.triangle_count, 3)
+    assert mesh.indices.max() < v
+    # indices per material cover every triangle exactly once
+    total = sum(len(mesh.indices_of(m)) for m in mesh.materials)
+    assert total == mesh.triangle_count
+    m = tree.metrics()
+    assert m["height_m"] > 1 and m["co2_kg"] > 0
+
+
+def test_leaves_are_their_own_material(presets):
+    tree = sylva.load_species(presets / "alder.json").grow(seed=3)
+    assert set(tree.mesh.materials) == {"bark", "leaf"}
+    leaf = tree.mesh.indices_of("leaf")
+    assert leaf.shape[1] == 3 and len(leaf) > 0
+
+
+def test_same_seed_same_tree_other_seed_other_tree(presets):
+    s = sylva.load_species(presets / "alder.json")
+    a = s.grow(seed=5).mesh.positions
+    b = sylva.load_species(presets / "alder.json").grow(seed=5).mesh.positions
+    c = s.grow(seed=6).mesh.positions
+    assert np.array_equal(a, b)
+    assert a.shape != c.shape or not np.array_equal(a, c)
+
+
+def test_species_from_dict_equals_file(presets):
+    path = presets / "ternary-tree.json"
+    d = json.loads(path.read_text())
+    from_dict = sylva.load_species(d, base_dir=presets)
+    from_file = sylva.load_species(path)
+    assert from_dict.to_dict()["graph"] == from_file.to_dict()["graph"]
+    assert np.array_equal(from_dict.grow(seed=1).mesh.positions,
+                          from_file.grow(seed=1).mesh.positions)
+
+
+def test_parameters_read_set_and_validated(presets):
+    s = sylva.load_species(presets / "ternary-tree.json")
+    assert s.get_param("mesh.resolution") == 8
+    assert s.get_param("grow.generations") is None
+    before = s.grow(seed=1).mesh.vertex_count
+    s.set_param("mesh.resolution", 4)
+    assert s.get_param("mesh.resolution") == 4
+    assert s.grow(seed=1).mesh.vertex_count < before
+    with pytest.raises(ValueError, match="has no parameter 'bogus'"):
+        s.set_param("grow.bogus", 1)
+    with pytest.raises(ValueError, match="no node 'nope'"):
+        s.set_param("nope.x", 1)
+    with pytest.raises(ValueError, match="node.param"):
+        s.set_param("resolution", 1)
+    # out of range: the node's own check, when the tree grows
+    s.set_param("mesh.resolution", -3)
+    with pytest.raises(ValueError):
+        s.grow(seed=1)
+
+
+def test_tree_export_equals_cli_bytes(presets, cli, tmp_path):
+    (tmp_path / "py").mkdir()
+    (tmp_path / "cli").mkdir()
+    s = sylva.load_species(presets / "alder.json")
+    s.set_param("grow.generations", 5)
+    written = s.grow(seed=7).export(tmp_path / "py" / "tree.obj")
+    assert written[0].endswith("tree.obj")
+    cli("tree", presets / "alder.json", "--seed", 7, "--set", "grow.generations=5",
+        "-o", tmp_path / "cli" / "tree.obj")
+    for name in ("tree.obj", "tree.mtl"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
+    assert (tmp_path / "py" / "textures").is_dir()
+    sylva.grow(presets / "ternary-tree.json", seed=2).export(tmp_path / "py" / "t.glb")
+    cli("tree", presets / "ternary-tree.json", "--seed", 2, "-o", tmp_path / "cli" / "t.glb")
+    assert (tmp_path / "py" / "t.glb").read_bytes() == (tmp_path / "cli" / "t.glb").read_bytes()
+
+
+def cli_message(r):
+    """The CLI's message without its 'sylva-cli: error: ' prefix."""
+    return r.stderr.strip().removeprefix("sylva-cli: error: ")
+
+
+def test_errors_say_what_the_cli_says(data, cli, tmp_path):
+    bad = tmp_path / "bad.lsys"
+    bad.write_text("axiom: F\nF -> F[+F\n")
+    r = cli("tree", bad, "-o", tmp_path / "x.obj", check=False)
+    assert r.returncode == 1
+    with pytest.raises(ValueError) as e:
+        sylva.load_species(bad).grow()
+    assert str(e.value) == cli_message(r)
+
+    missing = tmp_path / "missing.json"
+    r = cli("tree", missing, "-o", tmp_path / "x.obj", check=False)
+    with pytest.raises(OSError) as e:
+        sylva.load_species(missing)
+    assert str(e.value) == cli_message(r)
+
+    r = cli("tree", data / "lsystem" / "bush.lsys", "--set", "grow.nope=1", "-o",
+            tmp_path / "x.obj", check=False)
+    s = sylva.load_species(data / "lsystem" / "bush.lsys")
+    with pytest.raises(ValueError) as e:
+        s.set_param("grow.nope", 1)
+    assert str(e.value) == cli_message(r)
+
+    with pytest.raises(ValueError, match="parameter value"):
+        s.set_param("grow.generations", object())
+    assert not (tmp_path / "x.obj").exists()
+
+
+def test_grow_reports_progress_and_stops_when_the_callback_raises(presets):
+    s = sylva.load_species(presets / "so-broadleaf.json")
+    reports = []
+    s.grow(seed=1, progress=lambda f, stage: reports.append((f, stage)))
+    stages = [stage for _, stage in reports]
+    assert "grow" in stages and "mesh" in stages and len(reports) >= 5
+
+    class Stop(Exception):
+        pass
+
+    def stop(fraction, stage):
+        if stage == "grow" and fraction > 0.1:
+            raise Stop()
+
+    with pytest.raises(Stop):
+        s.grow(seed=2, progress=stop)
+    # The species is still usable and grows the same tree as before.
+    again = s.grow(seed=2).mesh.positions
+    assert np.array_equal(again, sylva.load_species(presets / "so-broadleaf.json")
+                          .grow(seed=2).mesh.positions)
+    with pytest.raises(ValueError, match="callable"):
+        s.grow(seed=2, progress=42)
