@@ -18,6 +18,7 @@
 #include "engine/util/random.h"
 #include "ui/document/messagespanel.h"
 #include "ui/generation/documentgenerator.h"
+#include "python/bindings/engine.h"
 #include "ui/mainwindow.h"
 #include "ui/scripting/pythonhost.h"
 #include "ui/viewport/toolcontroller.h"
@@ -152,6 +153,9 @@ void linkSylvaModule() {}
 } // namespace sylva::ui
 
 PYBIND11_EMBEDDED_MODULE(sylva, m) {
+    // The engine's functions (load_species, grow, load_project, build_forest, ...), the same as
+    // `import sylva` from python3 (docs/python.md); the editor's document and window below.
+    sylva::python::bindEngine(m);
     m.doc() = "Sylva's editor: its document (trees, species, obstacles, undo) and window.";
     // The same messages the window shows, as the exceptions Python users expect.
     py::register_exception_translator([](std::exception_ptr p) {
