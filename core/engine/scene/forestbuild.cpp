@@ -276,6 +276,8 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 ctx.neighbourCount = near.size();
                 ctx.lightDirection = scene.lightDirection;
                 ctx.cameraDistance = glm::length(scene.camera - in.position);
+                ctx.leafScale = static_cast<float>(meshSettings[in.species].leafCards.sizeScale);
+                ctx.leafAspect = static_cast<float>(meshSettings[in.species].leafCards.aspect);
                 ctx.key = in.id + 1;
 
                 auto t = Clock::now();
@@ -300,11 +302,20 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     throw InvalidInput("species '" + species.name + "' produced no skeleton");
                 cpuGenerate[thread] += msSince(t);
 
-                if (options.adapt && !plan.hasAdaptNode && !plan.selfOrganizing &&
-                    (!obstacles.empty() || !near.empty())) {
+                if (options.adapt && (!plan.hasAdaptNode || plan.selfOrganizing) &&
+                    (!obstacles.empty() || (!near.empty() && !plan.selfOrganizing))) {
                     t = Clock::now();
                     env::AdaptParams params;
                     params.lightDirection = scene.lightDirection;
+                    params.leafScale = ctx.leafScale;
+                    params.leafAspect = ctx.leafAspect;
+                    // Stand-grown trees already competed with their neighbours and grew around
+                    // the obstacles: they are not bent, only cut where a shoot still went
+                    // through an obstacle (their markers and shadows stop most, not all).
+                    if (plan.selfOrganizing) {
+                        params.maxBend = 0.0f;
+                        near.clear();
+                    }
                     env::AdaptResult adapted =
                         env::adaptTree(*skeleton, obstacles, ctx.transform, params, near);
                     tree.adapt = adapted.stats;
@@ -312,6 +323,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     cpuAdapt[thread] += msSince(t);
                 }
 
+                tree.skeleton = skeleton;
                 tree.metrics = forest::measureTree(*skeleton, plan.wood, in.scale * in.growth);
                 if (!options.buildMeshes) {
                     tree.mesh = std::make_shared<const mesh::Mesh>();
