@@ -336,6 +336,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     settings.useLod = true;
                     // LOD bands are in world metres; the mesh is built in the tree's frame.
                     settings.cameraDistance = ctx.cameraDistance;
+                    settings.hasCamera = true;
+                    settings.cameraLocal =
+                        glm::vec3(glm::inverse(ctx.transform) * glm::vec4(scene.camera, 1.0f));
                 }
                 tree.mesh =
                     std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
