@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <tuple>
+#include <unordered_map>
 
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -29,6 +29,7 @@ void validateLod(const LodSettings& settings) {
     requireRange("lod simplify pixels", settings.simplifyPixels, 0.0, 1e3);
     requireRange("lod leaf cluster pixels", settings.leafClusterPixels, 0.0, 1e3);
     requireRange("lod ribbon pixels", settings.ribbonPixels, 0.0, 1e3);
+    requireRange("lod leafy twig pixels", settings.leafyTwigPixels, 0.0, 1e3);
 }
 
 LodLevel selectLod(const LodSettings& settings, double distance) {
@@ -44,6 +45,7 @@ LodLevel selectLod(const LodSettings& settings, double distance) {
         const double halfFov = settings.fovYDegrees * std::numbers::pi / 360.0;
         level.metresPerPixel = 2.0 * distance * std::tan(halfFov) / settings.screenHeightPx;
         level.minSubtreeExtent = settings.minTwigPixels * level.metresPerPixel;
+        level.leafyTwigExtent = settings.leafyTwigPixels * level.metresPerPixel;
         level.simplifyTolerance = settings.simplifyPixels * level.metresPerPixel;
         level.leafCell = settings.leafClusterPixels * level.metresPerPixel;
         level.ribbonRadius = 0.5 * settings.ribbonPixels * level.metresPerPixel;
@@ -51,27 +53,33 @@ LodLevel selectLod(const LodSettings& settings, double distance) {
     return level;
 }
 
-skel::Skeleton dropSmallSubtrees(const skel::Skeleton& s, double minExtent, double leafScale) {
+skel::Skeleton dropSmallSubtrees(const skel::Skeleton& s, double minExtent, double leafScale,
+                                 double leafyExtent) {
     skel::Skeleton out = s;
     const std::size_t n = s.size();
-    if (minExtent <= 0.0 || n == 0) return out;
-    // Bounds of every subtree (node positions and leaf cards), children before parents.
+    if ((minExtent <= 0.0 && leafyExtent <= 0.0) || n == 0) return out;
+    // Bounds of every subtree (node positions and leaf cards) and whether it carries leaves,
+    // children before parents.
     std::vector<glm::vec3> lo(s.position), hi(s.position);
+    std::vector<std::uint8_t> leafy(n, 0);
     for (const skel::Leaf& leaf : s.leaves) {
         if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
         const auto k = static_cast<std::size_t>(leaf.node);
         const glm::vec3 r(leaf.size * static_cast<float>(leafScale));
         lo[k] = glm::min(lo[k], leaf.position - r);
         hi[k] = glm::max(hi[k], leaf.position + r);
+        leafy[k] = 1;
     }
     for (std::size_t i = n; i-- > 1;) {
         const std::int32_t p = s.parent[i];
         if (p < 0) continue;
         lo[static_cast<std::size_t>(p)] = glm::min(lo[static_cast<std::size_t>(p)], lo[i]);
         hi[static_cast<std::size_t>(p)] = glm::max(hi[static_cast<std::size_t>(p)], hi[i]);
+        leafy[static_cast<std::size_t>(p)] |= leafy[i];
     }
     // A lateral (a child of another branch order, as the tube mesher starts one) goes when its
-    // subtree, together with the fork it grows from, is smaller than minExtent.
+    // subtree, together with the fork it grows from, is smaller than minExtent; a leafy one
+    // smaller than leafyExtent loses its bark (2) but keeps its leaves.
     std::vector<std::uint8_t> drop(n, 0);
     bool any = false;
     for (std::size_t i = 0; i < n; ++i) {
@@ -79,22 +87,24 @@ skel::Skeleton dropSmallSubtrees(const skel::Skeleton& s, double minExtent, doub
         if (pi < 0) continue;
         const auto p = static_cast<std::size_t>(pi);
         if (drop[p]) {
-            drop[i] = 1;
+            drop[i] = drop[p];
             continue;
         }
         if (s.order[i] == s.order[p]) continue;
         const glm::vec3 l = glm::min(lo[i], s.position[p]), h = glm::max(hi[i], s.position[p]);
-        if (static_cast<double>(glm::length(h - l)) < minExtent) {
+        const auto extent = static_cast<double>(glm::length(h - l));
+        if (extent < minExtent)
             drop[i] = 1;
-            any = true;
-        }
+        else if (leafy[i] && extent < leafyExtent)
+            drop[i] = 2;
+        any = any || drop[i] != 0;
     }
     if (!any) return out;
     for (std::size_t i = 0; i < n; ++i)
         if (drop[i]) out.flags[i] |= skel::kHidden;
     std::erase_if(out.leaves, [&](const skel::Leaf& leaf) {
         return leaf.node >= 0 && static_cast<std::size_t>(leaf.node) < n &&
-               drop[static_cast<std::size_t>(leaf.node)];
+               drop[static_cast<std::size_t>(leaf.node)] == 1;
     });
     return out;
 }
@@ -102,55 +112,59 @@ skel::Skeleton dropSmallSubtrees(const skel::Skeleton& s, double minExtent, doub
 std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, double cell,
                                       double leafScale) {
     if (cell <= 0.0 || leaves.size() < 2) return leaves;
-    struct Entry {
+    // Clusters in the order of their first leaf (a hash map from cube to cluster, no sort: the
+    // order only depends on the input's).
+    struct Cube {
         std::int64_t x, y, z;
-        std::size_t leaf;
+        bool operator==(const Cube&) const = default;
     };
-    std::vector<Entry> entries(leaves.size());
-    std::vector<glm::dvec3> centre(leaves.size());
+    struct CubeHash {
+        std::size_t operator()(const Cube& c) const {
+            return static_cast<std::size_t>(
+                mixSeed(mixSeed(static_cast<std::uint64_t>(c.x), static_cast<std::uint64_t>(c.y)),
+                        static_cast<std::uint64_t>(c.z)));
+        }
+    };
+    struct Cluster {
+        std::size_t count = 0, largest = 0;
+        double area = 0.0;
+        glm::dvec3 centre{0.0};
+    };
+    std::unordered_map<Cube, std::uint32_t, CubeHash> index;
+    index.reserve(leaves.size());
+    std::vector<Cluster> clusters;
     for (std::size_t i = 0; i < leaves.size(); ++i) {
         const skel::Leaf& l = leaves[i];
-        centre[i] = glm::dvec3(l.position) +
-                    glm::dvec3(skel::headingOf(l.orientation)) * (0.5 * l.size * leafScale);
-        entries[i] = {static_cast<std::int64_t>(std::floor(centre[i].x / cell)),
-                      static_cast<std::int64_t>(std::floor(centre[i].y / cell)),
-                      static_cast<std::int64_t>(std::floor(centre[i].z / cell)), i};
+        const glm::dvec3 c = glm::dvec3(l.position) + glm::dvec3(skel::headingOf(l.orientation)) *
+                                                          (0.5 * l.size * leafScale);
+        const Cube key{static_cast<std::int64_t>(std::floor(c.x / cell)),
+                       static_cast<std::int64_t>(std::floor(c.y / cell)),
+                       static_cast<std::int64_t>(std::floor(c.z / cell))};
+        const auto [it, fresh] =
+            index.try_emplace(key, static_cast<std::uint32_t>(clusters.size()));
+        if (fresh) clusters.push_back({0, i, 0.0, glm::dvec3(0.0)});
+        Cluster& k = clusters[it->second];
+        const double w = static_cast<double>(l.size) * l.size;
+        ++k.count;
+        k.area += w;
+        k.centre += w * c;
+        if (l.size > leaves[k.largest].size) k.largest = i;
     }
-    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-        return std::tie(a.x, a.y, a.z, a.leaf) < std::tie(b.x, b.y, b.z, b.leaf);
-    });
     std::vector<skel::Leaf> out;
-    out.reserve(leaves.size());
-    for (std::size_t a = 0; a < entries.size();) {
-        std::size_t b = a + 1;
-        while (b < entries.size() && entries[b].x == entries[a].x && entries[b].y == entries[a].y &&
-               entries[b].z == entries[a].z)
-            ++b;
-        if (b - a == 1) {
-            out.push_back(leaves[entries[a].leaf]);
-        } else {
-            double area = 0.0;
-            glm::dvec3 c(0.0);
-            std::size_t largest = entries[a].leaf;
-            for (std::size_t k = a; k < b; ++k) {
-                const skel::Leaf& l = leaves[entries[k].leaf];
-                const double w = static_cast<double>(l.size) * l.size;
-                area += w;
-                c += w * centre[entries[k].leaf];
-                if (l.size > leaves[largest].size) largest = entries[k].leaf;
-            }
-            skel::Leaf merged = leaves[largest];
-            if (area > 0.0) {
-                c /= area;
-                merged.size = static_cast<float>(std::sqrt(area));
-            } else {
-                c = centre[largest];
-            }
+    out.reserve(clusters.size());
+    for (const Cluster& k : clusters) {
+        if (k.count == 1) {
+            out.push_back(leaves[k.largest]);
+            continue;
+        }
+        skel::Leaf merged = leaves[k.largest];
+        if (k.area > 0.0) {
+            merged.size = static_cast<float>(std::sqrt(k.area));
+            const glm::dvec3 c = k.centre / k.area;
             merged.position = glm::vec3(c - glm::dvec3(skel::headingOf(merged.orientation)) *
                                                 (0.5 * merged.size * leafScale));
-            out.push_back(merged);
         }
-        a = b;
+        out.push_back(merged);
     }
     return out;
 }
@@ -225,8 +239,8 @@ Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& setti
     tubes.resolution = level.resolution;
     tubes.simplifyTolerance = std::max(tubes.simplifyTolerance, level.simplifyTolerance);
     leafFraction = level.leafFraction;
-    const skel::Skeleton kept =
-        dropSmallSubtrees(skeleton, level.minSubtreeExtent, settings.leafCards.sizeScale);
+    const skel::Skeleton kept = dropSmallSubtrees(
+        skeleton, level.minSubtreeExtent, settings.leafCards.sizeScale, level.leafyTwigExtent);
     appendTubes(mesh, kept, tubes, progress);
     if (settings.leaves && !kept.leaves.empty()) {
         std::vector<skel::Leaf> leaves =

@@ -30,6 +30,10 @@ struct LodSettings {
     /// whole subtree, leaf cards included, spans fewer pixels than this (the diagonal of its
     /// bounds): a twig is thinner than a pixel long before its crown is.
     double minTwigPixels = 1.0;
+    /// In every band but the first, a lateral subtree that carries leaves and spans fewer
+    /// pixels than this keeps its leaves but loses its bark: out here a leafy shoot's stem is
+    /// hidden by its own leaves (the leaves then merge into clusters like the others).
+    double leafyTwigPixels = 4.0;
     /// In every band but the first, axes are simplified within this many pixels (nodes whose
     /// position and radius the straight tube between their neighbours matches that closely).
     double simplifyPixels = 0.5;
@@ -48,6 +52,7 @@ struct LodLevel {
     double leafFraction = 1.0;
     double metresPerPixel = 0.0;    ///< a pixel's footprint at the distance; 0 in the first band
     double minSubtreeExtent = 0.0;  ///< metres: smaller lateral subtrees are dropped
+    double leafyTwigExtent = 0.0;   ///< metres: smaller leafy lateral subtrees lose their bark
     double simplifyTolerance = 0.0; ///< metres
     double leafCell = 0.0;          ///< metres: leaf cluster cube edge, 0 = no clustering
     double ribbonRadius = 0.0;      ///< metres: thinner axes become ribbons (with a camera)
@@ -62,16 +67,18 @@ void validateLod(const LodSettings& settings);
 LodLevel selectLod(const LodSettings& settings, double distance);
 
 /// The skeleton as the LOD keeps it: lateral subtrees (with their leaves) whose bounds' diagonal
-/// is below \p minExtent metres are flagged kHidden and their leaves removed. Leaf cards count
-/// with their length Leaf::size · \p leafScale. Returns a copy; nothing is dropped when minExtent
-/// is 0.
+/// is below \p minExtent metres are flagged kHidden and their leaves removed; leafy ones below
+/// \p leafyExtent are flagged kHidden but keep their leaves (bark only goes). Leaf cards count
+/// with their length Leaf::size · \p leafScale. Returns a copy; nothing is dropped when both
+/// extents are 0.
 skel::Skeleton dropSmallSubtrees(const skel::Skeleton& skeleton, double minExtent,
-                                 double leafScale = 1.0);
+                                 double leafScale = 1.0, double leafyExtent = 0.0);
 
 /// Merges the leaves whose card centres (anchor + heading · size · leafScale / 2) fall in the
 /// same cube of edge \p cell metres into one card: the largest leaf's orientation and node,
 /// centred on the area-weighted centre of the cluster, with the total area (size² summed).
-/// Deterministic (cells in a fixed order); leaves alone in their cube are kept as they are.
+/// Deterministic (clusters in the order of their first leaf); a leaf alone in its cube is kept
+/// as it is.
 std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, double cell,
                                       double leafScale = 1.0);
 

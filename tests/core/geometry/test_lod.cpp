@@ -97,6 +97,15 @@ TEST(Lod, DropsASubtreeByItsWholeSizeNotItsTwigs) {
     EXPECT_GT(mesh::buildTubeMesh(kept, radiusRule).vertexCount(), 0u);
     // Nothing is dropped without a threshold.
     EXPECT_EQ(mesh::dropSmallSubtrees(s, 0.0).leaves.size(), 2u);
+    // A leafy subtree under the leafy threshold loses its bark but keeps its leaf; one without
+    // leaves is only dropped by the first threshold.
+    skel::Skeleton bare = s;
+    bare.leaves.pop_back(); // the long branch has no leaf now
+    const skel::Skeleton leafy = mesh::dropSmallSubtrees(bare, 0.01, 1.0, 5.0);
+    EXPECT_TRUE(leafy.flags[static_cast<std::size_t>(shortTwig)] & skel::kHidden);
+    EXPECT_FALSE(leafy.flags[static_cast<std::size_t>(last)] & skel::kHidden);
+    ASSERT_EQ(leafy.leaves.size(), 1u);
+    EXPECT_EQ(leafy.leaves[0].node, shortTwig);
 }
 
 TEST(Lod, LeafClustersKeepAreaAndStayPut) {
