@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <iterator>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -46,6 +47,52 @@ bool segmentHitsCrown(const Segment& s, const CrownVolume& crown, glm::vec3* poi
     }
     if (point != nullptr) *point = glm::vec3(a + t0 * d);
     return true;
+}
+
+namespace {
+
+/// A leaf card's seven test segments in world space (stem from \p stemWorld to the anchor, four
+/// edges, two diagonals) and their bounds.
+struct CardSegments {
+    Segment seg[7];
+    glm::vec3 lo, hi;
+};
+
+CardSegments cardSegments(const glm::mat4& m, const skel::Leaf& leaf, const glm::vec3& stemWorld,
+                          float leafScale, float leafAspect) {
+    const float len = leaf.size * leafScale;
+    const glm::vec3 h = skel::headingOf(leaf.orientation) * len;
+    const glm::vec3 l = skel::leftOf(leaf.orientation) * (0.5f * leafAspect * len);
+    const glm::vec3 c[4] = {leaf.position + l, leaf.position - l, leaf.position - l + h,
+                            leaf.position + l + h};
+    CardSegments out;
+    glm::vec3 w[4];
+    const glm::vec3 anchor(m * glm::vec4(leaf.position, 1.0f));
+    out.lo = glm::min(stemWorld, anchor);
+    out.hi = glm::max(stemWorld, anchor);
+    for (int k = 0; k < 4; ++k) {
+        w[k] = glm::vec3(m * glm::vec4(c[k], 1.0f));
+        out.lo = glm::min(out.lo, w[k]);
+        out.hi = glm::max(out.hi, w[k]);
+    }
+    out.seg[0] = {stemWorld, anchor};
+    for (int k = 0; k < 4; ++k)
+        out.seg[1 + k] = {w[k], w[(k + 1) % 4]};
+    out.seg[5] = {w[0], w[2]};
+    out.seg[6] = {w[1], w[3]};
+    return out;
+}
+
+} // namespace
+
+bool leafCardTouches(const ObstacleScene& scene, const glm::mat4& m, const skel::Leaf& leaf,
+                     const glm::vec3& stemFrom, float leafScale, float leafAspect) {
+    const CardSegments card =
+        cardSegments(m, leaf, glm::vec3(m * glm::vec4(stemFrom, 1.0f)), leafScale, leafAspect);
+    if (!scene.overlapsBounds(card.lo, card.hi)) return false;
+    for (const Segment& seg : card.seg)
+        if (scene.occluded(seg)) return true;
+    return false;
 }
 
 double visibleLength(const skel::Skeleton& s) {
@@ -170,29 +217,14 @@ std::size_t dropTouchingLeaves(skel::Skeleton& s, const std::vector<glm::vec3>& 
     std::vector<std::size_t> tested; // leaves whose card box overlaps an obstacle's bounds
     for (std::size_t i = 0; i < s.leaves.size(); ++i) {
         const skel::Leaf& leaf = s.leaves[i];
-        const float len = leaf.size * params.leafScale;
-        const glm::vec3 h = skel::headingOf(leaf.orientation) * len;
-        const glm::vec3 l = skel::leftOf(leaf.orientation) * (0.5f * params.leafAspect * len);
-        const glm::vec3 c[4] = {leaf.position + l, leaf.position - l, leaf.position - l + h,
-                                leaf.position + l + h};
-        glm::vec3 w[4];
-        const glm::vec3 anchor(m * glm::vec4(leaf.position, 1.0f));
         const bool onNode = leaf.node >= 0 && static_cast<std::size_t>(leaf.node) < world.size();
         // A leaf without a node has no stem: a zero-length segment never hits.
-        const glm::vec3 stem = onNode ? world[static_cast<std::size_t>(leaf.node)] : anchor;
-        glm::vec3 lo = glm::min(stem, anchor), hi = glm::max(stem, anchor);
-        for (int k = 0; k < 4; ++k) {
-            w[k] = glm::vec3(m * glm::vec4(c[k], 1.0f));
-            lo = glm::min(lo, w[k]);
-            hi = glm::max(hi, w[k]);
-        }
-        if (!scene.overlapsBounds(lo, hi)) continue;
+        const glm::vec3 stem = onNode ? world[static_cast<std::size_t>(leaf.node)]
+                                      : glm::vec3(m * glm::vec4(leaf.position, 1.0f));
+        const CardSegments card = cardSegments(m, leaf, stem, params.leafScale, params.leafAspect);
+        if (!scene.overlapsBounds(card.lo, card.hi)) continue;
         tested.push_back(i);
-        segs.push_back({stem, anchor});
-        for (int k = 0; k < 4; ++k)
-            segs.push_back({w[k], w[(k + 1) % 4]});
-        segs.push_back({w[0], w[2]});
-        segs.push_back({w[1], w[3]});
+        segs.insert(segs.end(), std::begin(card.seg), std::end(card.seg));
     }
     if (tested.empty()) return 0;
     const std::vector<std::uint8_t> hit = collider.occluded(segs);

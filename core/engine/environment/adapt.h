@@ -98,6 +98,14 @@ std::vector<AdaptResult> adaptTrees(std::span<const skel::Skeleton* const> rest,
                                     std::span<const std::vector<CrownVolume>> neighbours = {},
                                     Progress& progress = noProgress());
 
+/// Whether a leaf card (the quad tube_mesh draws: Leaf::size · \p leafScale long, \p leafAspect
+/// times as wide; its edges and diagonals) or its stem from \p stemFrom to its anchor touches
+/// an obstacle of \p scene. Leaf and stem are in the tree's frame, \p treeTransform maps it to
+/// the world. Cards whose bounds overlap no obstacle's bounds are answered without a query.
+bool leafCardTouches(const ObstacleScene& scene, const glm::mat4& treeTransform,
+                     const skel::Leaf& leaf, const glm::vec3& stemFrom, float leafScale,
+                     float leafAspect);
+
 /// Length of every segment whose end node is not hidden (the skeleton's units).
 double visibleLength(const skel::Skeleton& skeleton);
 

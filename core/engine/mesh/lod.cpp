@@ -110,7 +110,8 @@ skel::Skeleton dropSmallSubtrees(const skel::Skeleton& s, double minExtent, doub
 }
 
 std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, double cell,
-                                      double leafScale) {
+                                      double leafScale,
+                                      const std::function<bool(const skel::Leaf&)>& accept) {
     if (cell <= 0.0 || leaves.size() < 2) return leaves;
     // Clusters in the order of their first leaf (a hash map from cube to cluster, no sort: the
     // order only depends on the input's).
@@ -133,6 +134,7 @@ std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, dou
     std::unordered_map<Cube, std::uint32_t, CubeHash> index;
     index.reserve(leaves.size());
     std::vector<Cluster> clusters;
+    std::vector<std::uint32_t> clusterOf(leaves.size());
     for (std::size_t i = 0; i < leaves.size(); ++i) {
         const skel::Leaf& l = leaves[i];
         const glm::dvec3 c = glm::dvec3(l.position) + glm::dvec3(skel::headingOf(l.orientation)) *
@@ -143,6 +145,7 @@ std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, dou
         const auto [it, fresh] =
             index.try_emplace(key, static_cast<std::uint32_t>(clusters.size()));
         if (fresh) clusters.push_back({0, i, 0.0, glm::dvec3(0.0)});
+        clusterOf[i] = it->second;
         Cluster& k = clusters[it->second];
         const double w = static_cast<double>(l.size) * l.size;
         ++k.count;
@@ -152,7 +155,8 @@ std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, dou
     }
     std::vector<skel::Leaf> out;
     out.reserve(clusters.size());
-    for (const Cluster& k : clusters) {
+    for (std::size_t ci = 0; ci < clusters.size(); ++ci) {
+        const Cluster& k = clusters[ci];
         if (k.count == 1) {
             out.push_back(leaves[k.largest]);
             continue;
@@ -163,6 +167,11 @@ std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, dou
             const glm::dvec3 c = k.centre / k.area;
             merged.position = glm::vec3(c - glm::dvec3(skel::headingOf(merged.orientation)) *
                                                 (0.5 * merged.size * leafScale));
+        }
+        if (accept && !accept(merged)) {
+            for (std::size_t i = 0; i < leaves.size(); ++i)
+                if (clusterOf[i] == ci) out.push_back(leaves[i]);
+            continue;
         }
         out.push_back(merged);
     }
@@ -243,8 +252,8 @@ Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& setti
         skeleton, level.minSubtreeExtent, settings.leafCards.sizeScale, level.leafyTwigExtent);
     appendTubes(mesh, kept, tubes, progress);
     if (settings.leaves && !kept.leaves.empty()) {
-        std::vector<skel::Leaf> leaves =
-            clusterLeaves(kept.leaves, level.leafCell, settings.leafCards.sizeScale);
+        std::vector<skel::Leaf> leaves = clusterLeaves(
+            kept.leaves, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
         if (leafFraction < 1.0) leaves = thinLeaves(leaves, leafFraction, settings.seed);
         appendLeafCards(mesh, leaves, settings.leafCards, &kept);
     }

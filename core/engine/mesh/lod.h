@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "engine/mesh/leafcards.h"
@@ -79,8 +80,10 @@ skel::Skeleton dropSmallSubtrees(const skel::Skeleton& skeleton, double minExten
 /// centred on the area-weighted centre of the cluster, with the total area (size² summed).
 /// Deterministic (clusters in the order of their first leaf); a leaf alone in its cube is kept
 /// as it is.
+/// A cluster card that \p accept (when given) refuses is not made: its leaves stay as they are.
 std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, double cell,
-                                      double leafScale = 1.0);
+                                      double leafScale = 1.0,
+                                      const std::function<bool(const skel::Leaf&)>& accept = {});
 
 /// Keeps about \p fraction of the leaves (a deterministic choice from \p seed) and scales the
 /// survivors so that the total card area (∝ size²) is exactly conserved. At least one leaf
@@ -99,6 +102,10 @@ struct TreeMeshSettings {
     /// thin branches far away become ribbons facing it. The LOD chain for game engines has none.
     bool hasCamera = false;
     glm::vec3 cameraLocal{0.0f};
+    /// Whether a card the LOD makes (a leaf cluster) may be drawn; a forest refuses cards that
+    /// would reach into an obstacle (adaptation already removed the leaves that did). Empty:
+    /// every card.
+    std::function<bool(const skel::Leaf&)> acceptLeafCard;
     LodSettings lod;
     std::uint64_t seed = 0; ///< leaf thinning
 };

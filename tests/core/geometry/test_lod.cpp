@@ -139,6 +139,16 @@ TEST(Lod, LeafClustersKeepAreaAndStayPut) {
             EXPECT_EQ(again[i].position, c[i].position);
     }
     EXPECT_EQ(mesh::clusterLeaves(s.leaves, 0.0).size(), s.leaves.size());
+    // A refused cluster card leaves its leaves as they were (a forest refuses cards that would
+    // reach into an obstacle).
+    const auto none = [](const skel::Leaf&) { return false; };
+    const std::vector<skel::Leaf> refused = mesh::clusterLeaves(s.leaves, 0.2, 1.0, none);
+    ASSERT_EQ(refused.size(), s.leaves.size());
+    std::size_t same = 0;
+    for (const skel::Leaf& l : refused)
+        for (const skel::Leaf& o : s.leaves)
+            same += l.position == o.position && l.size == o.size ? 1 : 0;
+    EXPECT_EQ(same, s.leaves.size());
 }
 
 TEST(Lod, RejectsBadBands) {
