@@ -293,7 +293,9 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
         if (glm::all(glm::lessThanEqual(clo, hi)) && glm::all(glm::lessThanEqual(lo, chi)))
             crowns.push_back(c);
     }
-    if (crowns.empty() && !scene.overlapsBounds(lo, hi)) return result;
+    // Leaves are only tested against obstacles (not crowns): none to test when far from them.
+    const bool nearObstacles = scene.overlapsBounds(lo, hi);
+    if (crowns.empty() && !nearObstacles) return result;
 
     Collider collider(scene, crowns, stats);
     Collider leafCollider(scene, {}, stats);
@@ -305,7 +307,7 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
     const std::vector<Hit> hits = collider.intersect(rest, world, allSegments);
     stats.collidingBefore = hits.size();
     if (hits.empty()) {
-        if (params.prune)
+        if (params.prune && nearObstacles)
             stats.droppedLeaves =
                 dropTouchingLeaves(out, world, treeTransform, params, scene, leafCollider);
         return result;
@@ -534,9 +536,23 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
         out.leaves.push_back(moved);
     }
     stats.visibleLengthAfter = visibleLength(out);
-    if (params.prune)
-        stats.droppedLeaves =
-            dropTouchingLeaves(out, world, treeTransform, params, scene, leafCollider);
+    if (params.prune) {
+        // Growth may have carried the crown toward an obstacle: bounds of the final pose.
+        glm::vec3 flo = world[0], fhi = world[0];
+        for (const glm::vec3& p : world) {
+            flo = glm::min(flo, p);
+            fhi = glm::max(fhi, p);
+        }
+        for (const skel::Leaf& leaf : out.leaves) {
+            const glm::vec3 a(treeTransform * glm::vec4(leaf.position, 1.0f));
+            const glm::vec3 r(leafReach(leaf, params) * worldScale);
+            flo = glm::min(flo, a - r);
+            fhi = glm::max(fhi, a + r);
+        }
+        if (scene.overlapsBounds(flo, fhi))
+            stats.droppedLeaves =
+                dropTouchingLeaves(out, world, treeTransform, params, scene, leafCollider);
+    }
     return result;
 }
 
