@@ -4,7 +4,6 @@
 #include <cmath>
 #include <numbers>
 #include <string>
-#include <unordered_map>
 
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -113,40 +112,48 @@ std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, dou
                                       double leafScale,
                                       const std::function<bool(const skel::Leaf&)>& accept) {
     if (cell <= 0.0 || leaves.size() < 2) return leaves;
-    // Clusters in the order of their first leaf (a hash map from cube to cluster, no sort: the
-    // order only depends on the input's).
+    // Clusters in the order of their first leaf (a hash table from cube to cluster, no sort: the
+    // order only depends on the input's). Open addressing in one flat array: a node-based map
+    // made this the LOD's most expensive step.
     struct Cube {
         std::int64_t x, y, z;
         bool operator==(const Cube&) const = default;
     };
-    struct CubeHash {
-        std::size_t operator()(const Cube& c) const {
-            return static_cast<std::size_t>(
-                mixSeed(mixSeed(static_cast<std::uint64_t>(c.x), static_cast<std::uint64_t>(c.y)),
-                        static_cast<std::uint64_t>(c.z)));
-        }
+    struct Slot {
+        Cube cube;
+        std::uint32_t cluster = 0xffffffffu;
     };
     struct Cluster {
         std::size_t count = 0, largest = 0;
         double area = 0.0;
         glm::dvec3 centre{0.0};
     };
-    std::unordered_map<Cube, std::uint32_t, CubeHash> index;
-    index.reserve(leaves.size());
+    std::size_t capacity = 16;
+    while (capacity < 2 * leaves.size())
+        capacity *= 2;
+    std::vector<Slot> table(capacity);
     std::vector<Cluster> clusters;
     std::vector<std::uint32_t> clusterOf(leaves.size());
+    const double inv = 1.0 / cell;
     for (std::size_t i = 0; i < leaves.size(); ++i) {
         const skel::Leaf& l = leaves[i];
         const glm::dvec3 c = glm::dvec3(l.position) + glm::dvec3(skel::headingOf(l.orientation)) *
                                                           (0.5 * l.size * leafScale);
-        const Cube key{static_cast<std::int64_t>(std::floor(c.x / cell)),
-                       static_cast<std::int64_t>(std::floor(c.y / cell)),
-                       static_cast<std::int64_t>(std::floor(c.z / cell))};
-        const auto [it, fresh] =
-            index.try_emplace(key, static_cast<std::uint32_t>(clusters.size()));
-        if (fresh) clusters.push_back({0, i, 0.0, glm::dvec3(0.0)});
-        clusterOf[i] = it->second;
-        Cluster& k = clusters[it->second];
+        const Cube key{static_cast<std::int64_t>(std::floor(c.x * inv)),
+                       static_cast<std::int64_t>(std::floor(c.y * inv)),
+                       static_cast<std::int64_t>(std::floor(c.z * inv))};
+        std::size_t h = static_cast<std::size_t>(mixSeed(mixSeed(static_cast<std::uint64_t>(key.x),
+                                                                 static_cast<std::uint64_t>(key.y)),
+                                                         static_cast<std::uint64_t>(key.z))) &
+                        (capacity - 1);
+        while (table[h].cluster != 0xffffffffu && !(table[h].cube == key))
+            h = (h + 1) & (capacity - 1);
+        if (table[h].cluster == 0xffffffffu) {
+            table[h] = {key, static_cast<std::uint32_t>(clusters.size())};
+            clusters.push_back({0, i, 0.0, glm::dvec3(0.0)});
+        }
+        clusterOf[i] = table[h].cluster;
+        Cluster& k = clusters[table[h].cluster];
         const double w = static_cast<double>(l.size) * l.size;
         ++k.count;
         k.area += w;
