@@ -182,6 +182,7 @@ std::shared_ptr<const env::ObstacleScene> obstacles() {
 
 struct PresetResult {
     std::size_t trees = 0, collidingBefore = 0, hiddenNodes = 0, droppedLeaves = 0;
+    std::size_t maxGrowthRounds = 0;
     std::size_t segments = 0, segmentsHitEmbree = 0, segmentsHitBrute = 0;
     std::size_t barkTested = 0, barkInside = 0, barkTooDeep = 0;
     std::size_t leafTested = 0, leafInside = 0;
@@ -239,6 +240,7 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
         r.collidingBefore += tree.adapt.collidingBefore;
         r.hiddenNodes += tree.adapt.hiddenNodes;
         r.droppedLeaves += tree.adapt.droppedLeaves;
+        r.maxGrowthRounds = std::max(r.maxGrowthRounds, tree.adapt.growthRounds);
         r.height = tree.metrics.heightM;
         r.crownWidth = tree.metrics.crownWidthM;
         const skel::Skeleton& sk = *tree.skeleton;
@@ -329,10 +331,11 @@ void checkEveryPreset(bool lod) {
             << " m)";
         EXPECT_EQ(r.leafInside, 0u) << name << ": leaf card vertices inside an obstacle";
         std::cout << name << ": colliding segments before " << r.collidingBefore << ", hidden "
-                  << r.hiddenNodes << ", leaves dropped " << r.droppedLeaves << ", segments "
-                  << r.segments << ", bark vertices tested " << r.barkTested << " (inside "
-                  << r.barkInside << "), leaf vertices tested " << r.leafTested << ", height "
-                  << r.height << " m, crown " << r.crownWidth << " m\n";
+                  << r.hiddenNodes << ", growth rounds <= " << r.maxGrowthRounds
+                  << ", leaves dropped " << r.droppedLeaves << ", segments " << r.segments
+                  << ", bark vertices tested " << r.barkTested << " (inside " << r.barkInside
+                  << "), leaf vertices tested " << r.leafTested << ", height " << r.height
+                  << " m, crown " << r.crownWidth << " m\n";
     }
     EXPECT_GE(presets, 16u);
     // The check is not vacuous: most presets do reach into the obstacles before adaptation.
