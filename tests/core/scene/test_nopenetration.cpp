@@ -206,11 +206,12 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
     s.obstacles = obstacles();
     // The tree 1.2 m from the demo wall's face, then trees whose crowns reach half their
     // radius into the demo wall, the boulder and the tall wall (both sides), so that small
-    // presets touch the obstacles too. Rotations differ so that other sides face them.
+    // presets touch the obstacles too, and one 1.2 m from the tall wall. Rotations differ so
+    // that other sides face them.
     const float d = std::max(0.3f, 0.5f * scene::measureCrown(g, 1).radius);
-    const std::array<glm::vec3, 5> where = {
-        glm::vec3(2, 0, -6.5f), glm::vec3(-5, 0, -7.7f + d), glm::vec3(12, 0, 12.5f + d),
-        glm::vec3(-30, 0, -19.7f + d), glm::vec3(-26, 0, -20.3f - d)};
+    const std::array<glm::vec3, 6> where = {
+        glm::vec3(2, 0, -6.5f),        glm::vec3(-5, 0, -7.7f + d),   glm::vec3(12, 0, 12.5f + d),
+        glm::vec3(-30, 0, -19.7f + d), glm::vec3(-26, 0, -20.3f - d), glm::vec3(-34, 0, -18.5f)};
     for (std::size_t i = 0; i < where.size(); ++i) {
         forest::Instance in;
         in.species = 0;
@@ -321,7 +322,7 @@ void checkEveryPreset(bool lod) {
         const std::string name = entry.path().filename().string();
         ++presets;
         colliding += r.collidingBefore > 0 ? 1 : 0;
-        EXPECT_EQ(r.trees, 5u) << name;
+        EXPECT_EQ(r.trees, 6u) << name;
         EXPECT_GT(r.segments, 0u) << name;
         EXPECT_EQ(r.segmentsHitEmbree, 0u) << name << ": visible segments crossing an obstacle";
         EXPECT_EQ(r.segmentsHitBrute, 0u) << name << ": visible segments crossing an obstacle";
