@@ -261,7 +261,12 @@ Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& setti
     if (settings.leaves && !kept.leaves.empty()) {
         std::vector<skel::Leaf> leaves = clusterLeaves(
             kept.leaves, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
-        if (leafFraction < 1.0) leaves = thinLeaves(leaves, leafFraction, settings.seed);
+        if (leafFraction < 1.0) {
+            leaves = thinLeaves(leaves, leafFraction, settings.seed);
+            // Enlarged survivors that would reach into an obstacle are left out.
+            if (settings.acceptLeafCard)
+                std::erase_if(leaves, std::not_fn(settings.acceptLeafCard));
+        }
         appendLeafCards(mesh, leaves, settings.leafCards, &kept);
     }
     return mesh;

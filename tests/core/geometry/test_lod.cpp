@@ -198,6 +198,13 @@ TEST(Lod, ChainDecreasesAndKeepsLeafArea) {
         EXPECT_LT(chain[i].mesh.triangleCount(), chain[i - 1].mesh.triangleCount()) << i;
         EXPECT_NEAR(submeshArea(chain[i].mesh, "leaf") / leafArea0, 1.0, 0.05) << i;
     }
+    // Cards the LOD makes (clusters, enlarged survivors of thinning) are only drawn when
+    // accepted: a forest refuses those that would reach into an obstacle.
+    mesh::TreeMeshSettings refusing = settings;
+    refusing.useLod = true;
+    refusing.cameraDistance = 120;
+    refusing.acceptLeafCard = [](const skel::Leaf&) { return false; };
+    EXPECT_EQ(submeshArea(mesh::buildTreeMesh(s, refusing), "leaf"), 0.0);
     // The far level drops twigs: fewer bark triangles than resolution alone would give.
     mesh::TreeMeshSettings plain = settings;
     plain.tubes.resolution = 3;
