@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <iterator>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -46,6 +47,52 @@ bool segmentHitsCrown(const Segment& s, const CrownVolume& crown, glm::vec3* poi
     }
     if (point != nullptr) *point = glm::vec3(a + t0 * d);
     return true;
+}
+
+namespace {
+
+/// A leaf card's seven test segments in world space (stem from \p stemWorld to the anchor, four
+/// edges, two diagonals) and their bounds.
+struct CardSegments {
+    Segment seg[7];
+    glm::vec3 lo, hi;
+};
+
+CardSegments cardSegments(const glm::mat4& m, const skel::Leaf& leaf, const glm::vec3& stemWorld,
+                          float leafScale, float leafAspect) {
+    const float len = leaf.size * leafScale;
+    const glm::vec3 h = skel::headingOf(leaf.orientation) * len;
+    const glm::vec3 l = skel::leftOf(leaf.orientation) * (0.5f * leafAspect * len);
+    const glm::vec3 c[4] = {leaf.position + l, leaf.position - l, leaf.position - l + h,
+                            leaf.position + l + h};
+    CardSegments out;
+    glm::vec3 w[4];
+    const glm::vec3 anchor(m * glm::vec4(leaf.position, 1.0f));
+    out.lo = glm::min(stemWorld, anchor);
+    out.hi = glm::max(stemWorld, anchor);
+    for (int k = 0; k < 4; ++k) {
+        w[k] = glm::vec3(m * glm::vec4(c[k], 1.0f));
+        out.lo = glm::min(out.lo, w[k]);
+        out.hi = glm::max(out.hi, w[k]);
+    }
+    out.seg[0] = {stemWorld, anchor};
+    for (int k = 0; k < 4; ++k)
+        out.seg[1 + k] = {w[k], w[(k + 1) % 4]};
+    out.seg[5] = {w[0], w[2]};
+    out.seg[6] = {w[1], w[3]};
+    return out;
+}
+
+} // namespace
+
+bool leafCardTouches(const ObstacleScene& scene, const glm::mat4& m, const skel::Leaf& leaf,
+                     const glm::vec3& stemFrom, float leafScale, float leafAspect) {
+    const CardSegments card =
+        cardSegments(m, leaf, glm::vec3(m * glm::vec4(stemFrom, 1.0f)), leafScale, leafAspect);
+    if (!scene.overlapsBounds(card.lo, card.hi)) return false;
+    for (const Segment& seg : card.seg)
+        if (scene.occluded(seg)) return true;
+    return false;
 }
 
 double visibleLength(const skel::Skeleton& s) {
@@ -113,6 +160,17 @@ public:
         return out;
     }
 
+    /// Which of \p segs (world space) touch anything.
+    std::vector<std::uint8_t> occluded(const std::vector<Segment>& segs) {
+        std::vector<std::uint8_t> out(segs.size(), 0);
+        mScene.occluded(segs, out);
+        mStats.segmentsTested += segs.size();
+        for (std::size_t k = 0; k < segs.size(); ++k)
+            for (std::size_t c = 0; c < mCrowns.size() && out[k] == 0; ++c)
+                if (segmentHitsCrown(segs[k], mCrowns[c])) out[k] = 1;
+        return out;
+    }
+
 private:
     static std::vector<Segment> segments(const skel::Skeleton& s, const std::vector<glm::vec3>& w,
                                          const std::vector<std::size_t>& nodes) {
@@ -134,6 +192,58 @@ std::vector<glm::vec3> toWorld(const std::vector<glm::vec3>& p, const glm::mat4&
     return w;
 }
 
+/// Largest factor by which \p m stretches a length (the tree transform's uniform scale).
+float maxScale(const glm::mat4& m) {
+    return std::max(
+        {glm::length(glm::vec3(m[0])), glm::length(glm::vec3(m[1])), glm::length(glm::vec3(m[2]))});
+}
+
+/// A leaf card's reach from its anchor: card length L, half width aspect·L/2.
+float leafReach(const skel::Leaf& leaf, const AdaptParams& params) {
+    const float len = leaf.size * params.leafScale;
+    return len * (1.0f + 0.5f * params.leafAspect);
+}
+
+/// Drops the leaves of \p s whose card (the quad tube_mesh draws: edges and diagonals) or stem
+/// (node to anchor) touches what \p collider tests (the obstacles only: a leaf reaching into a
+/// neighbour's crown is as natural as two crowns touching). \p world holds the nodes' world
+/// positions. Returns how many were dropped.
+std::size_t dropTouchingLeaves(skel::Skeleton& s, const std::vector<glm::vec3>& world,
+                               const glm::mat4& m, const AdaptParams& params,
+                               const ObstacleScene& scene, Collider& collider) {
+    if (s.leaves.empty()) return 0;
+    constexpr std::size_t kPerLeaf = 7;
+    std::vector<Segment> segs;
+    std::vector<std::size_t> tested; // leaves whose card box overlaps an obstacle's bounds
+    for (std::size_t i = 0; i < s.leaves.size(); ++i) {
+        const skel::Leaf& leaf = s.leaves[i];
+        const bool onNode = leaf.node >= 0 && static_cast<std::size_t>(leaf.node) < world.size();
+        // A leaf without a node has no stem: a zero-length segment never hits.
+        const glm::vec3 stem = onNode ? world[static_cast<std::size_t>(leaf.node)]
+                                      : glm::vec3(m * glm::vec4(leaf.position, 1.0f));
+        const CardSegments card = cardSegments(m, leaf, stem, params.leafScale, params.leafAspect);
+        if (!scene.overlapsBounds(card.lo, card.hi)) continue;
+        tested.push_back(i);
+        segs.insert(segs.end(), std::begin(card.seg), std::end(card.seg));
+    }
+    if (tested.empty()) return 0;
+    const std::vector<std::uint8_t> hit = collider.occluded(segs);
+    std::vector<std::uint8_t> drop(s.leaves.size(), 0);
+    std::size_t dropped = 0;
+    for (std::size_t t = 0; t < tested.size(); ++t) {
+        for (std::size_t k = 0; k < kPerLeaf; ++k)
+            drop[tested[t]] = drop[tested[t]] || hit[kPerLeaf * t + k] != 0;
+        dropped += drop[tested[t]];
+    }
+    if (dropped == 0) return 0;
+    std::vector<skel::Leaf> kept;
+    kept.reserve(s.leaves.size() - dropped);
+    for (std::size_t i = 0; i < s.leaves.size(); ++i)
+        if (!drop[i]) kept.push_back(s.leaves[i]);
+    s.leaves = std::move(kept);
+    return dropped;
+}
+
 } // namespace
 
 AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
@@ -143,6 +253,8 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
     requireRange("bend_multiplier", params.bendMultiplier, 0.0, 1.0);
     for (int k = 0; k < 3; ++k)
         requireRange("light direction", params.lightDirection[k], -1e6, 1e6);
+    requireRange("leaf_scale", params.leafScale, 1e-6, 100.0);
+    requireRange("leaf_aspect", params.leafAspect, 1e-6, 4.0);
     rest.validate();
 
     AdaptResult result;
@@ -165,6 +277,14 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
+    // Leaf cards reach beyond their nodes.
+    const float worldScale = maxScale(treeTransform);
+    for (const skel::Leaf& leaf : rest.leaves) {
+        const glm::vec3 a(treeTransform * glm::vec4(leaf.position, 1.0f));
+        const glm::vec3 r(leafReach(leaf, params) * worldScale);
+        lo = glm::min(lo, a - r);
+        hi = glm::max(hi, a + r);
+    }
     // Only neighbours that can touch this tree at all; keeps the per-segment loop short.
     std::vector<CrownVolume> crowns;
     for (const CrownVolume& c : neighbours) {
@@ -173,9 +293,12 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
         if (glm::all(glm::lessThanEqual(clo, hi)) && glm::all(glm::lessThanEqual(lo, chi)))
             crowns.push_back(c);
     }
-    if (crowns.empty() && !scene.overlapsBounds(lo, hi)) return result;
+    // Leaves are only tested against obstacles (not crowns): none to test when far from them.
+    const bool nearObstacles = scene.overlapsBounds(lo, hi);
+    if (crowns.empty() && !nearObstacles) return result;
 
     Collider collider(scene, crowns, stats);
+    Collider leafCollider(scene, {}, stats);
     std::vector<std::size_t> allSegments;
     allSegments.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -183,7 +306,12 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
 
     const std::vector<Hit> hits = collider.intersect(rest, world, allSegments);
     stats.collidingBefore = hits.size();
-    if (hits.empty()) return result;
+    if (hits.empty()) {
+        if (params.prune && nearObstacles)
+            stats.droppedLeaves =
+                dropTouchingLeaves(out, world, treeTransform, params, scene, leafCollider);
+        return result;
+    }
 
     // Topology: the root of every node and how many children each node has.
     std::vector<std::size_t> rootOf(n);
@@ -272,31 +400,44 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
             if (still[k] && params.prune) hidden[recheck[k]] = 1;
         }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::int32_t p = rest.parent[i];
-        if (p >= 0 && hidden[static_cast<std::size_t>(p)]) hidden[i] = 1;
-        if (hidden[i]) {
-            ++stats.hiddenNodes;
-            if (p >= 0)
-                stats.prunedLength +=
-                    glm::length(rest.position[i] - rest.position[static_cast<std::size_t>(p)]);
+    // Hidden nodes hide their subtrees; the pruned length is counted from scratch each time.
+    const auto hideSubtrees = [&] {
+        stats.hiddenNodes = 0;
+        stats.prunedLength = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::int32_t p = rest.parent[i];
+            if (p >= 0 && hidden[static_cast<std::size_t>(p)]) hidden[i] = 1;
+            if (hidden[i]) {
+                ++stats.hiddenNodes;
+                if (p >= 0)
+                    stats.prunedLength +=
+                        glm::length(rest.position[i] - rest.position[static_cast<std::size_t>(p)]);
+            }
         }
-    }
+    };
 
-    // Redistribute: grow each visible segment along itself, by a share of the pruned length
-    // weighted toward the light, so the visible length equals the rest pose's total length.
-    std::vector<glm::vec3> grown = bent;
-    if (params.redistribute && stats.prunedLength > 0.0) {
-        std::vector<double> weight(n, 0.0);
+    // Redistribute: grow each visible segment that is not frozen along itself, by a share of
+    // the pruned length weighted toward the light, so the visible length equals the rest pose's
+    // total length. Writes the grown pose and each segment's growth.
+    const float lightLen = glm::length(params.lightDirection);
+    const glm::vec3 towardLight =
+        lightLen > 1e-12f ? -params.lightDirection / lightLen : glm::vec3(0.0f);
+    const glm::mat3 linear(treeTransform);
+    std::vector<double> weight(n, 0.0), growth(n, 0.0);
+    const auto redistribute = [&](const std::vector<std::uint8_t>& frozen,
+                                  std::vector<glm::vec3>& grown) {
+        grown = bent;
+        std::fill(growth.begin(), growth.end(), 0.0);
+        stats.redistributedLength = 0.0;
+        if (!params.redistribute || stats.prunedLength <= 0.0) return;
+        std::fill(weight.begin(), weight.end(), 0.0);
         double weightSum = 0.0;
-        const float lightLen = glm::length(params.lightDirection);
-        const glm::vec3 towardLight =
-            lightLen > 1e-12f ? -params.lightDirection / lightLen : glm::vec3(0.0f);
-        const glm::mat3 linear(treeTransform);
+        std::size_t candidates = 0;
         for (std::size_t i : allSegments) {
-            if (hidden[i]) continue;
+            if (hidden[i] || frozen[i]) continue;
             const glm::vec3 d = bent[i] - bent[static_cast<std::size_t>(rest.parent[i])];
             if (glm::length(d) <= 0.0f) continue;
+            ++candidates;
             double w = 1.0;
             if (lightLen > 1e-12f) {
                 const glm::vec3 dw = linear * d;
@@ -305,30 +446,69 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
             weight[i] = w;
             weightSum += w;
         }
+        if (candidates == 0) return;
         if (weightSum <= 0.0) {
-            // Everything visible points straight away from the light: share equally.
+            // Everything that may grow points straight away from the light: share equally.
             for (std::size_t i : allSegments)
-                if (!hidden[i] &&
+                if (!hidden[i] && !frozen[i] &&
                     glm::length(bent[i] - bent[static_cast<std::size_t>(rest.parent[i])]) > 0.0f) {
                     weight[i] = 1.0;
                     weightSum += 1.0;
                 }
         }
-        if (weightSum > 0.0) {
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::int32_t pi = rest.parent[i];
-                if (pi < 0) continue;
-                const auto p = static_cast<std::size_t>(pi);
-                const glm::vec3 d = bent[i] - bent[p];
-                const double len = glm::length(glm::dvec3(d));
-                const double grow =
-                    weight[i] > 0.0 ? stats.prunedLength * weight[i] / weightSum : 0.0;
-                grown[i] =
-                    grown[p] + glm::vec3(glm::dvec3(d) * ((len + grow) / std::max(len, 1e-300)));
-                if (len <= 0.0) grown[i] = grown[p];
-                stats.redistributedLength += grow;
-            }
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::int32_t pi = rest.parent[i];
+            if (pi < 0) continue;
+            const auto p = static_cast<std::size_t>(pi);
+            const glm::vec3 d = bent[i] - bent[p];
+            const double len = glm::length(glm::dvec3(d));
+            growth[i] = weight[i] > 0.0 ? stats.prunedLength * weight[i] / weightSum : 0.0;
+            grown[i] =
+                grown[p] + glm::vec3(glm::dvec3(d) * ((len + growth[i]) / std::max(len, 1e-300)));
+            if (len <= 0.0) grown[i] = grown[p];
+            stats.redistributedLength += growth[i];
         }
+    };
+
+    // Growth moves whole subtrees, so the grown pose is checked again (the reference grew after
+    // its collision test, which let tips and whole crowns into the mesh). A segment that now
+    // collides withdraws the growth of its path to the root (the length goes to the others); one
+    // whose path did not grow is hidden. Every round freezes or hides at least one segment;
+    // after kFreezeRounds all growth stops, so the loop ends.
+    constexpr std::size_t kFreezeRounds = 8;
+    std::vector<std::uint8_t> frozen(n, 0);
+    std::vector<glm::vec3> grown;
+    hideSubtrees();
+    for (std::size_t round = 0;; ++round) {
+        redistribute(frozen, grown);
+        ++stats.growthRounds;
+        std::vector<std::size_t> visible;
+        for (std::size_t i : allSegments)
+            if (!hidden[i]) visible.push_back(i);
+        world = toWorld(grown, treeTransform);
+        const std::vector<std::uint8_t> still = collider.occluded(rest, world, visible);
+        stats.collidingAfter = 0;
+        for (std::uint8_t h : still)
+            stats.collidingAfter += h;
+        if (stats.collidingAfter == 0 || !params.prune) break;
+        for (std::size_t k = 0; k < visible.size(); ++k) {
+            if (!still[k]) continue;
+            const std::size_t j = visible[k];
+            bool grew = false;
+            for (std::int32_t x = static_cast<std::int32_t>(j); x >= 0 && !grew;
+                 x = rest.parent[static_cast<std::size_t>(x)])
+                grew = growth[static_cast<std::size_t>(x)] > 0.0;
+            if (!grew) {
+                hidden[j] = 1;
+                continue;
+            }
+            for (std::int32_t x = static_cast<std::int32_t>(j);
+                 x >= 0 && !frozen[static_cast<std::size_t>(x)];
+                 x = rest.parent[static_cast<std::size_t>(x)])
+                frozen[static_cast<std::size_t>(x)] = 1;
+        }
+        if (round + 1 >= kFreezeRounds) std::fill(frozen.begin(), frozen.end(), 1);
+        hideSubtrees();
     }
 
     // Final pose, flags, frames and leaves.
@@ -356,16 +536,23 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
         out.leaves.push_back(moved);
     }
     stats.visibleLengthAfter = visibleLength(out);
-
-    // What still touches an obstacle at the end (growth may push a tip into a mesh); reported,
-    // not pruned again, so that the length stays conserved.
-    std::vector<std::size_t> visible;
-    for (std::size_t i : allSegments)
-        if (!hidden[i]) visible.push_back(i);
-    world = toWorld(out.position, treeTransform);
-    const std::vector<std::uint8_t> finalHits = collider.occluded(rest, world, visible);
-    for (std::uint8_t h : finalHits)
-        stats.collidingAfter += h;
+    if (params.prune) {
+        // Growth may have carried the crown toward an obstacle: bounds of the final pose.
+        glm::vec3 flo = world[0], fhi = world[0];
+        for (const glm::vec3& p : world) {
+            flo = glm::min(flo, p);
+            fhi = glm::max(fhi, p);
+        }
+        for (const skel::Leaf& leaf : out.leaves) {
+            const glm::vec3 a(treeTransform * glm::vec4(leaf.position, 1.0f));
+            const glm::vec3 r(leafReach(leaf, params) * worldScale);
+            flo = glm::min(flo, a - r);
+            fhi = glm::max(fhi, a + r);
+        }
+        if (scene.overlapsBounds(flo, fhi))
+            stats.droppedLeaves =
+                dropTouchingLeaves(out, world, treeTransform, params, scene, leafCollider);
+    }
     return result;
 }
 

@@ -37,6 +37,10 @@ struct AdaptParams {
     /// light.direction). Redistribution favours branches that point against it (toward the
     /// light). A zero vector grows every branch by the same length (the reference's grow()).
     glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};
+    /// Leaf cards as the mesher will draw them (tube_mesh's leaf_scale and leaf_aspect): a leaf
+    /// whose card or stem touches an obstacle is dropped. Card length = Leaf::size · leafScale.
+    float leafScale = 1.0f;  ///< (0, 100]
+    float leafAspect = 0.5f; ///< card width / length, (0, 4]
 };
 
 /// What adaptation did to one tree. Lengths are in the skeleton's own units (metres before the
@@ -45,7 +49,10 @@ struct AdaptStats {
     std::size_t segmentsTested = 0;     ///< segment queries made (all passes)
     std::size_t collidingBefore = 0;    ///< segments that hit an obstacle in the rest pose
     std::size_t collidingAfterBend = 0; ///< segments hitting after bending (of those re-checked)
-    std::size_t collidingAfter = 0;     ///< visible segments hitting in the final pose
+    std::size_t collidingAfter = 0;     ///< visible segments hitting in the final pose (0 with
+                                        ///< prune on)
+    std::size_t growthRounds = 0;       ///< redistribution passes (each one re-checked)
+    std::size_t droppedLeaves = 0;      ///< leaves dropped because their card touched an obstacle
     std::size_t hiddenNodes = 0;        ///< nodes flagged kHidden (pruned with their children)
     double prunedLength = 0.0;          ///< total length of the hidden segments
     double redistributedLength = 0.0;   ///< length added to visible segments (== prunedLength
@@ -68,9 +75,14 @@ struct AdaptResult {
 /// the hits seen from the root, rotate the tree away from them branch level by branch level
 /// (maxBend · bendMultiplier^level, children inherit their parent's rotation), re-check, hide
 /// what still collides together with its descendants (flag kHidden; nodes are kept), and grow
-/// the remaining visible segments by the pruned length. Leaves hanging on hidden nodes are
-/// dropped, the others follow their node. Trees whose bounds touch no obstacle are returned
-/// unchanged after one bounds test.
+/// the remaining visible segments by the pruned length. The grown pose is checked again: growth
+/// that pushes a segment into an obstacle is withdrawn from that segment's path to the root (the
+/// length goes to the other segments) and, with prune on, a segment that collides without any
+/// growth is hidden, until nothing visible collides. Leaves hanging on hidden nodes are dropped,
+/// the others follow their node; a leaf whose card or stem touches an obstacle is dropped too.
+/// With prune on, no visible segment and no leaf card of the result crosses an obstacle's
+/// surface, so a tree rooted outside the obstacles keeps no branch inside one. Trees whose
+/// bounds (leaf cards included) touch no obstacle are returned unchanged after one bounds test.
 /// \throw InvalidInput for parameters out of range or an invalid skeleton.
 AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
                       const glm::mat4& treeTransform, const AdaptParams& params,
@@ -85,6 +97,14 @@ std::vector<AdaptResult> adaptTrees(std::span<const skel::Skeleton* const> rest,
                                     const ObstacleScene& scene, const AdaptParams& params,
                                     std::span<const std::vector<CrownVolume>> neighbours = {},
                                     Progress& progress = noProgress());
+
+/// Whether a leaf card (the quad tube_mesh draws: Leaf::size · \p leafScale long, \p leafAspect
+/// times as wide; its edges and diagonals) or its stem from \p stemFrom to its anchor touches
+/// an obstacle of \p scene. Leaf and stem are in the tree's frame, \p treeTransform maps it to
+/// the world. Cards whose bounds overlap no obstacle's bounds are answered without a query.
+bool leafCardTouches(const ObstacleScene& scene, const glm::mat4& treeTransform,
+                     const skel::Leaf& leaf, const glm::vec3& stemFrom, float leafScale,
+                     float leafAspect);
 
 /// Length of every segment whose end node is not hidden (the skeleton's units).
 double visibleLength(const skel::Skeleton& skeleton);

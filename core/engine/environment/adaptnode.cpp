@@ -82,6 +82,8 @@ NodeOutput evaluateAdapt(const NodeContext& ctx) {
         // crowns and the scene's light replace the node's own obstacles and placement.
         AdaptParams sceneParams = params;
         if (!p.contains("light_direction")) sceneParams.lightDirection = ctx.tree->lightDirection;
+        sceneParams.leafScale = ctx.tree->leafScale;
+        sceneParams.leafAspect = ctx.tree->leafAspect;
         r = adaptTree(*ctx.inputs[0]->skeleton, *ctx.tree->obstacles, ctx.tree->transform,
                       sceneParams,
                       std::span<const CrownVolume>(ctx.tree->neighbours, ctx.tree->neighbourCount));

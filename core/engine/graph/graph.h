@@ -31,6 +31,10 @@ struct TreeContext {
     std::size_t neighbourCount = 0;
     glm::vec3 lightDirection{0.0f, -1.0f, 0.0f}; ///< direction the light travels
     double cameraDistance = -1.0;                ///< metres from the camera; < 0: no camera
+    /// The species' leaf cards (tube_mesh's leaf_scale, leaf_aspect), so that adaptation drops
+    /// the leaves whose cards would touch an obstacle.
+    float leafScale = 1.0f;
+    float leafAspect = 0.5f;
     std::uint64_t key = 0; ///< identifies this context in the evaluator's cache (instance id+1)
 };
 

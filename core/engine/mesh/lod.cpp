@@ -1,5 +1,6 @@
 #include "engine/mesh/lod.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -24,6 +25,10 @@ void validateLod(const LodSettings& settings) {
     requireRange("lod screen height", settings.screenHeightPx, 1.0, 1e5);
     requireRange("lod fov", settings.fovYDegrees, 1.0, 179.0);
     requireRange("lod min twig pixels", settings.minTwigPixels, 0.0, 1e3);
+    requireRange("lod simplify pixels", settings.simplifyPixels, 0.0, 1e3);
+    requireRange("lod leaf cluster pixels", settings.leafClusterPixels, 0.0, 1e3);
+    requireRange("lod ribbon pixels", settings.ribbonPixels, 0.0, 1e3);
+    requireRange("lod leafy twig pixels", settings.leafyTwigPixels, 0.0, 1e3);
 }
 
 LodLevel selectLod(const LodSettings& settings, double distance) {
@@ -35,12 +40,149 @@ LodLevel selectLod(const LodSettings& settings, double distance) {
     level.resolution = b.resolution;
     level.leafFraction = b.leafFraction;
     if (level.band > 0) {
-        // A diameter 2r at distance d covers 2r / (2 d tan(fov/2)) of the screen height.
+        // A length L at distance d covers L / (2 d tan(fov/2)) of the screen height.
         const double halfFov = settings.fovYDegrees * std::numbers::pi / 360.0;
-        level.minBranchRadius =
-            settings.minTwigPixels * distance * std::tan(halfFov) / settings.screenHeightPx;
+        level.metresPerPixel = 2.0 * distance * std::tan(halfFov) / settings.screenHeightPx;
+        level.minSubtreeExtent = settings.minTwigPixels * level.metresPerPixel;
+        level.leafyTwigExtent = settings.leafyTwigPixels * level.metresPerPixel;
+        level.simplifyTolerance = settings.simplifyPixels * level.metresPerPixel;
+        level.leafCell = settings.leafClusterPixels * level.metresPerPixel;
+        level.ribbonRadius = 0.5 * settings.ribbonPixels * level.metresPerPixel;
     }
     return level;
+}
+
+skel::Skeleton dropSmallSubtrees(const skel::Skeleton& s, double minExtent, double leafScale,
+                                 double leafyExtent) {
+    skel::Skeleton out = s;
+    const std::size_t n = s.size();
+    if ((minExtent <= 0.0 && leafyExtent <= 0.0) || n == 0) return out;
+    // Bounds of every subtree (node positions and leaf cards) and whether it carries leaves,
+    // children before parents.
+    std::vector<glm::vec3> lo(s.position), hi(s.position);
+    std::vector<std::uint8_t> leafy(n, 0);
+    for (const skel::Leaf& leaf : s.leaves) {
+        if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+        const auto k = static_cast<std::size_t>(leaf.node);
+        const glm::vec3 r(leaf.size * static_cast<float>(leafScale));
+        lo[k] = glm::min(lo[k], leaf.position - r);
+        hi[k] = glm::max(hi[k], leaf.position + r);
+        leafy[k] = 1;
+    }
+    for (std::size_t i = n; i-- > 1;) {
+        const std::int32_t p = s.parent[i];
+        if (p < 0) continue;
+        lo[static_cast<std::size_t>(p)] = glm::min(lo[static_cast<std::size_t>(p)], lo[i]);
+        hi[static_cast<std::size_t>(p)] = glm::max(hi[static_cast<std::size_t>(p)], hi[i]);
+        leafy[static_cast<std::size_t>(p)] |= leafy[i];
+    }
+    // A lateral (a child of another branch order, as the tube mesher starts one) goes when its
+    // subtree, together with the fork it grows from, is smaller than minExtent; a leafy one
+    // smaller than leafyExtent loses its bark (2) but keeps its leaves.
+    std::vector<std::uint8_t> drop(n, 0);
+    bool any = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t pi = s.parent[i];
+        if (pi < 0) continue;
+        const auto p = static_cast<std::size_t>(pi);
+        if (drop[p]) {
+            drop[i] = drop[p];
+            continue;
+        }
+        if (s.order[i] == s.order[p]) continue;
+        const glm::vec3 l = glm::min(lo[i], s.position[p]), h = glm::max(hi[i], s.position[p]);
+        const auto extent = static_cast<double>(glm::length(h - l));
+        if (extent < minExtent)
+            drop[i] = 1;
+        else if (leafy[i] && extent < leafyExtent)
+            drop[i] = 2;
+        any = any || drop[i] != 0;
+    }
+    if (!any) return out;
+    for (std::size_t i = 0; i < n; ++i)
+        if (drop[i]) out.flags[i] |= skel::kHidden;
+    std::erase_if(out.leaves, [&](const skel::Leaf& leaf) {
+        return leaf.node >= 0 && static_cast<std::size_t>(leaf.node) < n &&
+               drop[static_cast<std::size_t>(leaf.node)] == 1;
+    });
+    return out;
+}
+
+std::vector<skel::Leaf> clusterLeaves(const std::vector<skel::Leaf>& leaves, double cell,
+                                      double leafScale,
+                                      const std::function<bool(const skel::Leaf&)>& accept) {
+    if (cell <= 0.0 || leaves.size() < 2) return leaves;
+    // Clusters in the order of their first leaf (a hash table from cube to cluster, no sort: the
+    // order only depends on the input's). Open addressing in one flat array: a node-based map
+    // made this the LOD's most expensive step.
+    struct Cube {
+        std::int64_t x, y, z;
+        bool operator==(const Cube&) const = default;
+    };
+    struct Slot {
+        Cube cube;
+        std::uint32_t cluster = 0xffffffffu;
+    };
+    struct Cluster {
+        std::size_t count = 0, largest = 0;
+        double area = 0.0;
+        glm::dvec3 centre{0.0};
+    };
+    std::size_t capacity = 16;
+    while (capacity < 2 * leaves.size())
+        capacity *= 2;
+    std::vector<Slot> table(capacity);
+    std::vector<Cluster> clusters;
+    std::vector<std::uint32_t> clusterOf(leaves.size());
+    const double inv = 1.0 / cell;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const skel::Leaf& l = leaves[i];
+        const glm::dvec3 c = glm::dvec3(l.position) + glm::dvec3(skel::headingOf(l.orientation)) *
+                                                          (0.5 * l.size * leafScale);
+        const Cube key{static_cast<std::int64_t>(std::floor(c.x * inv)),
+                       static_cast<std::int64_t>(std::floor(c.y * inv)),
+                       static_cast<std::int64_t>(std::floor(c.z * inv))};
+        std::size_t h = static_cast<std::size_t>(mixSeed(mixSeed(static_cast<std::uint64_t>(key.x),
+                                                                 static_cast<std::uint64_t>(key.y)),
+                                                         static_cast<std::uint64_t>(key.z))) &
+                        (capacity - 1);
+        while (table[h].cluster != 0xffffffffu && !(table[h].cube == key))
+            h = (h + 1) & (capacity - 1);
+        if (table[h].cluster == 0xffffffffu) {
+            table[h] = {key, static_cast<std::uint32_t>(clusters.size())};
+            clusters.push_back({0, i, 0.0, glm::dvec3(0.0)});
+        }
+        clusterOf[i] = table[h].cluster;
+        Cluster& k = clusters[table[h].cluster];
+        const double w = static_cast<double>(l.size) * l.size;
+        ++k.count;
+        k.area += w;
+        k.centre += w * c;
+        if (l.size > leaves[k.largest].size) k.largest = i;
+    }
+    std::vector<skel::Leaf> out;
+    out.reserve(clusters.size());
+    for (std::size_t ci = 0; ci < clusters.size(); ++ci) {
+        const Cluster& k = clusters[ci];
+        if (k.count == 1) {
+            out.push_back(leaves[k.largest]);
+            continue;
+        }
+        skel::Leaf merged = leaves[k.largest];
+        if (k.area > 0.0) {
+            merged.size = static_cast<float>(std::sqrt(k.area));
+            const glm::dvec3 c = k.centre / k.area;
+            merged.position = glm::vec3(c - glm::dvec3(skel::headingOf(merged.orientation)) *
+                                                (0.5 * merged.size * leafScale));
+        }
+        if (accept && !accept(merged)) {
+            for (std::size_t i = 0; i < leaves.size(); ++i)
+                if (clusterOf[i] == ci) out.push_back(leaves[i]);
+            continue;
+        }
+        out.push_back(merged);
+    }
+    return out;
 }
 
 std::vector<skel::Leaf> thinLeaves(const std::vector<skel::Leaf>& leaves, double fraction,
@@ -73,24 +215,59 @@ std::vector<skel::Leaf> thinLeaves(const std::vector<skel::Leaf>& leaves, double
     return kept;
 }
 
+namespace {
+
+/// How much wider a ring of \p res sides must be to cover, seen from a random direction, as
+/// much as one of \p base sides: their mean widths are perimeter / pi = 2 n r sin(pi/n) / pi.
+double ringWidthCompensation(int base, int res) {
+    if (res >= base) return 1.0;
+    const auto width = [](int n) { return n * std::sin(std::numbers::pi / n); };
+    return width(base) / width(res);
+}
+
+} // namespace
+
 Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
                    Progress& progress) {
     TubeSettings tubes = settings.tubes;
     double leafFraction = 1.0;
-    if (settings.useLod) {
-        const LodLevel level = selectLod(settings.lod, settings.cameraDistance);
-        tubes.resolution = level.resolution;
-        tubes.minBranchRadius = std::max(tubes.minBranchRadius, level.minBranchRadius);
-        leafFraction = level.leafFraction;
-    }
     Mesh mesh;
-    appendTubes(mesh, skeleton, tubes, progress);
-    if (settings.leaves && !skeleton.leaves.empty()) {
-        if (leafFraction < 1.0)
-            appendLeafCards(mesh, thinLeaves(skeleton.leaves, leafFraction, settings.seed),
-                            settings.leafCards, &skeleton);
-        else
+    if (!settings.useLod) {
+        appendTubes(mesh, skeleton, tubes, progress);
+        if (settings.leaves && !skeleton.leaves.empty())
             appendLeafCards(mesh, skeleton.leaves, settings.leafCards, &skeleton);
+        return mesh;
+    }
+    const LodLevel level = selectLod(settings.lod, settings.cameraDistance);
+    const double compensation = ringWidthCompensation(tubes.resolution, level.resolution);
+    if (level.band > 0) {
+        tubes.caps = false; // a cap is a disc across a branch end: a pixel or less out here
+        if (settings.hasCamera && level.ribbonRadius > 0.0) {
+            tubes.ribbonBelowRadius = level.ribbonRadius;
+            tubes.ribbonCamera = settings.cameraLocal;
+            // A ribbon facing the camera is as wide as the full-detail ring's mean width.
+            const int n = tubes.resolution;
+            tubes.ribbonWidthScale =
+                n * std::sin(std::numbers::pi / n) / std::numbers::pi / compensation;
+        }
+    }
+    tubes.radiusScale *= compensation;
+    tubes.resolution = level.resolution;
+    tubes.simplifyTolerance = std::max(tubes.simplifyTolerance, level.simplifyTolerance);
+    leafFraction = level.leafFraction;
+    const skel::Skeleton kept = dropSmallSubtrees(
+        skeleton, level.minSubtreeExtent, settings.leafCards.sizeScale, level.leafyTwigExtent);
+    appendTubes(mesh, kept, tubes, progress);
+    if (settings.leaves && !kept.leaves.empty()) {
+        std::vector<skel::Leaf> leaves = clusterLeaves(
+            kept.leaves, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
+        if (leafFraction < 1.0) {
+            leaves = thinLeaves(leaves, leafFraction, settings.seed);
+            // Enlarged survivors that would reach into an obstacle are left out.
+            if (settings.acceptLeafCard)
+                std::erase_if(leaves, std::not_fn(settings.acceptLeafCard));
+        }
+        appendLeafCards(mesh, leaves, settings.leafCards, &kept);
     }
     return mesh;
 }

@@ -65,6 +65,8 @@ LodSettings lodFromParams(const Value& p) {
         }
     }
     lod.minTwigPixels = ranged(p, "lod_min_twig_pixels", lod.minTwigPixels, 0.0, 1e3);
+    lod.simplifyPixels = ranged(p, "lod_simplify_pixels", lod.simplifyPixels, 0.0, 1e3);
+    lod.leafClusterPixels = ranged(p, "lod_leaf_cluster_pixels", lod.leafClusterPixels, 0.0, 1e3);
     lod.screenHeightPx = ranged(p, "lod_screen_height", lod.screenHeightPx, 1.0, 1e5);
     lod.fovYDegrees = ranged(p, "lod_fov", lod.fovYDegrees, 1.0, 179.0);
     validateLod(lod);
@@ -204,14 +206,30 @@ NodeOutput evaluateLeaves(const NodeContext& ctx) {
 } // namespace
 
 void registerMeshNodes(graph::NodeRegistry& registry) {
-    registry.add(graph::NodeType{
-        "tube_mesh",
-        1,
-        1,
-        evaluateTubeMesh,
-        {"resolution", "caps", "thickness", "initial_thickness", "thickness_multiplier",
-         "radius_scale", "wind_attributes", "node_ids", "leaves", "leaf_aspect", "leaf_scale",
-         "lod_distance", "lod_bands", "lod_min_twig_pixels", "lod_screen_height", "lod_fov"}});
+    registry.add(graph::NodeType{"tube_mesh",
+                                 1,
+                                 1,
+                                 evaluateTubeMesh,
+                                 {"resolution",
+                                  "caps",
+                                  "thickness",
+                                  "initial_thickness",
+                                  "thickness_multiplier",
+                                  "radius_scale",
+                                  "wind_attributes",
+                                  "node_ids",
+                                  "leaves",
+                                  "leaf_aspect",
+                                  "leaf_scale",
+                                  "lod_distance",
+                                  "lod_bands",
+                                  "lod_min_twig_pixels",
+                                  "lod_simplify_pixels",
+                                  "lod_leaf_cluster_pixels",
+                                  "lod_ribbon_pixels",
+                                  "lod_leafy_twig_pixels",
+                                  "lod_screen_height",
+                                  "lod_fov"}});
     registry.add(graph::NodeType{"leaves",
                                  1,
                                  1,

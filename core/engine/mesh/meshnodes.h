@@ -16,8 +16,9 @@ namespace sylva::mesh {
 ///   Params: resolution (3..64, 8), caps, thickness ("skeleton" | "branching"),
 ///   initial_thickness, thickness_multiplier, radius_scale, leaves, leaf_aspect, leaf_scale,
 ///   wind_attributes, node_ids (Mesh::node, for colouring by node attributes), lod_distance (-1 =
-///   off), lod_bands, lod_min_twig_pixels, lod_screen_height, lod_fov. Stats: vertices, triangles;
-///   timing: mesh.
+///   off), lod_bands, lod_min_twig_pixels, lod_simplify_pixels, lod_leaf_cluster_pixels,
+///   lod_ribbon_pixels, lod_leafy_twig_pixels, lod_screen_height, lod_fov. Stats: vertices,
+///   triangles; timing: mesh.
 /// - `leaves`: input one node with a skeleton; outputs the skeleton with placed leaves (and, if
 ///   the input carries a mesh, that mesh with the new leaves' cards appended).
 void registerMeshNodes(graph::NodeRegistry& registry);

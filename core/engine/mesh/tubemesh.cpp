@@ -26,8 +26,44 @@ struct Chains {
     std::size_t count() const { return lateral.size(); }
 };
 
+/// Greedy axis simplification: from the last kept node, extend the straight tube as far as
+/// every skipped node lies within \p tol of it (distance to the segment, and radius against the
+/// linearly interpolated one). The first and last nodes are always kept.
+void simplifyChain(std::vector<std::int32_t>& nodes, std::size_t first, const skel::Skeleton& s,
+                   const std::vector<float>& radius, double tol) {
+    const std::size_t m = nodes.size() - first;
+    if (m <= 2 || tol <= 0.0) return;
+    auto P = [&](std::size_t k) {
+        return glm::dvec3(s.position[static_cast<std::size_t>(nodes[first + k])]);
+    };
+    auto R = [&](std::size_t k) {
+        return static_cast<double>(radius[static_cast<std::size_t>(nodes[first + k])]);
+    };
+    auto fits = [&](std::size_t a, std::size_t b) {
+        const glm::dvec3 pa = P(a), d = P(b) - pa;
+        const double len2 = glm::dot(d, d);
+        for (std::size_t k = a + 1; k < b; ++k) {
+            const double t = len2 > 0.0 ? std::clamp(glm::dot(P(k) - pa, d) / len2, 0.0, 1.0) : 0.0;
+            if (glm::length(pa + t * d - P(k)) > tol) return false;
+            if (std::abs(R(a) + t * (R(b) - R(a)) - R(k)) > tol) return false;
+        }
+        return true;
+    };
+    std::vector<std::int32_t> kept{nodes[first]};
+    std::size_t a = 0;
+    while (a + 1 < m) {
+        std::size_t b = a + 1;
+        while (b + 1 < m && fits(a, b + 1))
+            ++b;
+        kept.push_back(nodes[first + b]);
+        a = b;
+    }
+    nodes.resize(first);
+    nodes.insert(nodes.end(), kept.begin(), kept.end());
+}
+
 Chains buildChains(const skel::Skeleton& s, const std::vector<float>& radius,
-                   double minBranchRadius) {
+                   double minBranchRadius, double simplifyTolerance) {
     const std::size_t n = s.size();
     std::vector<std::int32_t> cont(n, -1);
     std::vector<std::uint8_t> dropped(n, 0);
@@ -68,6 +104,7 @@ Chains buildChains(const skel::Skeleton& s, const std::vector<float>& radius,
             chains.nodes.resize(first);
             continue;
         }
+        simplifyChain(chains.nodes, first, s, radius, simplifyTolerance);
         chains.begin.push_back(static_cast<std::uint32_t>(chains.nodes.size()));
         chains.lateral.push_back(isStart[j] == 2 ? 1 : 0);
     }
@@ -87,8 +124,13 @@ struct Layout {
     std::size_t indices = 0;
 };
 
-Layout chainLayout(std::size_t rings, bool lateral, bool caps, int res) {
+Layout chainLayout(std::size_t rings, bool lateral, bool caps, int res, bool ribbon) {
     Layout l;
+    if (ribbon) {
+        l.vertices = rings * 2;
+        l.indices = (rings - 1) * 6;
+        return l;
+    }
     const std::size_t ringVerts = static_cast<std::size_t>(res) + 1;
     l.vertices = rings * ringVerts;
     l.indices = (rings - 1) * static_cast<std::size_t>(res) * 6;
@@ -310,6 +352,52 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     }
 }
 
+/// A flat strip along the chain, two vertices a node, facing \p camera.
+void meshRibbon(Writer& w, const skel::Skeleton& s, const std::vector<float>& radius,
+                const std::int32_t* nodes, std::size_t m, bool lateral, const glm::vec3& camera,
+                float widthScale) {
+    auto P = [&](std::size_t k) { return s.position[static_cast<std::size_t>(nodes[k])]; };
+    auto R = [&](std::size_t k) {
+        if (k == 0 && lateral)
+            return std::min(radius[static_cast<std::size_t>(nodes[1])],
+                            radius[static_cast<std::size_t>(nodes[0])]);
+        return radius[static_cast<std::size_t>(nodes[k])];
+    };
+    const glm::vec3 frameHeading =
+        skel::headingOf(s.orientation[static_cast<std::size_t>(nodes[lateral ? 1 : 0])]);
+    auto dir = [&](std::size_t k) {
+        return safeNormalize(P(k + 1) - P(k), frameHeading, kMinDirectionLength);
+    };
+    glm::vec3 dPrev = dir(0);
+    float v = 0.0f;
+    for (std::size_t k = 0; k < m; ++k) {
+        w.node = static_cast<std::uint32_t>(nodes[k == 0 && lateral ? 1 : k]);
+        const glm::vec3 p = P(k);
+        const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
+        const glm::vec3 t = k == 0       ? dNext
+                            : k + 1 == m ? dPrev
+                                         : safeNormalize(dPrev + dNext, dNext, kMinDirectionLength);
+        if (k > 0) {
+            const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
+            v += glm::length(p - P(k - 1)) / (2.0f * std::numbers::pi_v<float> * rAvg);
+        }
+        glm::vec3 view = camera - p;
+        view -= glm::dot(view, t) * t;
+        const glm::vec3 normal = safeNormalize(view, anyPerpendicular(t), kMinDirectionLength);
+        const glm::vec3 side = glm::cross(t, normal);
+        const float half = R(k) * widthScale;
+        w.flex = 1.0f - R(k) * w.invRMax;
+        w.vertex(p - half * side, normal, {0.0f, v});
+        w.vertex(p + half * side, normal, {1.0f, v});
+        if (k > 0) {
+            const std::size_t a = w.v - 4;
+            w.triangle(a, a + 1, a + 3);
+            w.triangle(a, a + 3, a + 2);
+        }
+        dPrev = dNext;
+    }
+}
+
 } // namespace
 
 std::vector<float> tubeRadii(const skel::Skeleton& s, const TubeSettings& settings) {
@@ -350,15 +438,24 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
     s.validate();
     const int res = settings.resolution;
     const std::vector<float> radius = tubeRadii(s, settings);
-    const Chains chains = buildChains(s, radius, settings.minBranchRadius);
+    requireRange("simplify tolerance", settings.simplifyTolerance, 0.0, 1e6);
+    const Chains chains =
+        buildChains(s, radius, settings.minBranchRadius, settings.simplifyTolerance);
     const std::size_t count = chains.count();
 
     std::vector<std::size_t> vOff(count + 1), iOff(count + 1);
     vOff[0] = out.positions.size();
     iOff[0] = out.indices.size();
+    requireRange("ribbon radius", settings.ribbonBelowRadius, 0.0, 1e6);
+    std::vector<std::uint8_t> ribbon(count, 0);
+    if (settings.ribbonBelowRadius > 0.0)
+        for (std::size_t c = 0; c < count; ++c) {
+            const std::int32_t own = chains.nodes[chains.begin[c] + (chains.lateral[c] ? 1 : 0)];
+            ribbon[c] = radius[static_cast<std::size_t>(own)] < settings.ribbonBelowRadius;
+        }
     for (std::size_t c = 0; c < count; ++c) {
         const Layout l = chainLayout(chains.begin[c + 1] - chains.begin[c], chains.lateral[c],
-                                     settings.caps, res);
+                                     settings.caps, res, ribbon[c] != 0);
         vOff[c + 1] = vOff[c] + l.vertices;
         iOff[c + 1] = iOff[c] + l.indices;
     }
@@ -441,7 +538,11 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                     const std::size_t m = chains.begin[c + 1] - chains.begin[c];
                     const bool lateral = chains.lateral[c] != 0;
                     w.order = s.order[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
-                    meshChain(w, s, radius, nodes, m, lateral, settings.caps, cs);
+                    if (ribbon[c])
+                        meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
+                                   static_cast<float>(settings.ribbonWidthScale));
+                    else
+                        meshChain(w, s, radius, nodes, m, lateral, settings.caps, cs);
                 }
 #pragma omp ordered
                 scratch.appendTo(out, nv, ni, wind, ids);

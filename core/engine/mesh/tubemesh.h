@@ -23,8 +23,18 @@ struct TubeSettings {
     /// Lateral branches whose base radius (after scaling) is below this are dropped with
     /// everything they carry (used by LOD to drop thin twigs); metres, 0 keeps everything.
     double minBranchRadius = 0.0;
-    bool windAttributes = false; ///< fill Mesh::branchOrder and Mesh::flexibility
-    bool nodeIds = false;        ///< fill Mesh::node (for colouring by node attributes)
+    /// Along each axis, nodes are skipped while the straight tube from the last kept node stays
+    /// within this distance of every skipped node (position and radius); metres, 0 keeps every
+    /// node. LOD sets it to a fraction of a pixel's footprint.
+    double simplifyTolerance = 0.0;
+    /// Axes whose own base radius (after scaling) is below this are drawn as flat ribbons, two
+    /// triangles a segment, turned toward ribbonCamera (LOD: branches a pixel or two wide look
+    /// the same from the camera at a third of the cost of the thinnest tube); metres, 0 = none.
+    double ribbonBelowRadius = 0.0;
+    glm::vec3 ribbonCamera{0.0f};  ///< in the skeleton's frame
+    double ribbonWidthScale = 1.0; ///< ribbon width = 2 · radius · this
+    bool windAttributes = false;   ///< fill Mesh::branchOrder and Mesh::flexibility
+    bool nodeIds = false;          ///< fill Mesh::node (for colouring by node attributes)
 };
 
 /// Smallest radius a ring gets (metres): zero-width branches would give degenerate triangles.

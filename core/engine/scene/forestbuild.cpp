@@ -317,6 +317,8 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 ctx.neighbourCount = near.size();
                 ctx.lightDirection = scene.lightDirection;
                 ctx.cameraDistance = glm::length(scene.camera - in.position);
+                ctx.leafScale = static_cast<float>(meshSettings[in.species].leafCards.sizeScale);
+                ctx.leafAspect = static_cast<float>(meshSettings[in.species].leafCards.aspect);
                 ctx.key = in.id + 1;
 
                 std::uint64_t cacheKey = 0;
@@ -352,11 +354,20 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     throw InvalidInput("species '" + species.name + "' produced no skeleton");
                 cpuGenerate[thread] += msSince(t);
 
-                if (options.adapt && !plan.hasAdaptNode && !plan.selfOrganizing &&
-                    (!obstacles.empty() || !near.empty())) {
+                if (options.adapt && (!plan.hasAdaptNode || plan.selfOrganizing) &&
+                    (!obstacles.empty() || (!near.empty() && !plan.selfOrganizing))) {
                     t = Clock::now();
                     env::AdaptParams params;
                     params.lightDirection = scene.lightDirection;
+                    params.leafScale = ctx.leafScale;
+                    params.leafAspect = ctx.leafAspect;
+                    // Stand-grown trees already competed with their neighbours and grew around
+                    // the obstacles: they are not bent, only cut where a shoot still went
+                    // through an obstacle (their markers and shadows stop most, not all).
+                    if (plan.selfOrganizing) {
+                        params.maxBend = 0.0f;
+                        near.clear();
+                    }
                     env::AdaptResult adapted =
                         env::adaptTree(*skeleton, obstacles, ctx.transform, params, near);
                     tree.adapt = adapted.stats;
@@ -364,6 +375,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     cpuAdapt[thread] += msSince(t);
                 }
 
+                tree.skeleton = skeleton;
                 tree.metrics = forest::measureTree(*skeleton, plan.wood, in.scale * in.growth);
                 if (!options.buildMeshes) {
                     tree.mesh = std::make_shared<const mesh::Mesh>();
@@ -377,6 +389,20 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     settings.useLod = true;
                     // LOD bands are in world metres; the mesh is built in the tree's frame.
                     settings.cameraDistance = ctx.cameraDistance;
+                    settings.hasCamera = true;
+                    settings.cameraLocal =
+                        glm::vec3(glm::inverse(ctx.transform) * glm::vec4(scene.camera, 1.0f));
+                    if (options.adapt && !obstacles.empty())
+                        settings.acceptLeafCard = [&obstacles, &ctx,
+                                                   &skeleton](const skel::Leaf& leaf) {
+                            const bool onNode = leaf.node >= 0 && static_cast<std::size_t>(
+                                                                      leaf.node) < skeleton->size();
+                            const glm::vec3 stem =
+                                onNode ? skeleton->position[static_cast<std::size_t>(leaf.node)]
+                                       : leaf.position;
+                            return !env::leafCardTouches(obstacles, ctx.transform, leaf, stem,
+                                                         ctx.leafScale, ctx.leafAspect);
+                        };
                 }
                 tree.mesh =
                     std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));

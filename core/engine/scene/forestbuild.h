@@ -15,6 +15,7 @@
 #include "engine/forest/placement.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
 
 namespace sylva::scene {
@@ -61,6 +62,8 @@ struct ForestTree {
     forest::Instance instance;
     std::string name; ///< "<species>_<id>"
     std::shared_ptr<const mesh::Mesh> mesh;
+    /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).
+    std::shared_ptr<const skel::Skeleton> skeleton;
     forest::TreeMetrics metrics;
     env::AdaptStats adapt;
 };

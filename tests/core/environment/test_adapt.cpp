@@ -285,13 +285,85 @@ TEST(Adapt, RecheckAllCatchesBranchesPushedIntoObstaclesByBending) {
          makeBoxMesh(glm::vec3(-1.3f, 2.5f, -1), glm::vec3(-1.05f, 3.5f, 1))});
     AdaptParams p = noRedistribution();
     p.recheckAll = false;
+    p.prune = false;
+    // The reference re-checks only the first colliders: b, pushed in by the bend, is missed.
     const AdaptResult only = adaptTree(s, scene, glm::mat4(1.0f), p);
     EXPECT_FALSE(hidden(only.skeleton, b));
     EXPECT_GT(only.stats.collidingAfter, 0u);
+    p.prune = true;
+    // With pruning on, the final check of the whole pose catches b all the same.
+    const AdaptResult caught = adaptTree(s, scene, glm::mat4(1.0f), p);
+    EXPECT_TRUE(hidden(caught.skeleton, b));
+    EXPECT_EQ(caught.stats.collidingAfter, 0u);
     p.recheckAll = true;
     const AdaptResult all = adaptTree(s, scene, glm::mat4(1.0f), p);
     EXPECT_TRUE(hidden(all.skeleton, b));
+    EXPECT_GT(all.stats.collidingAfterBend, caught.stats.collidingAfterBend);
     EXPECT_EQ(all.stats.collidingAfter, 0u);
+}
+
+TEST(Adapt, GrowthNeverPushesABranchIntoAnObstacle) {
+    // A branch through a wall is pruned; its length would make the trunk grow through a roof
+    // that the rest pose clears by 0.3 m. The trunk's growth is withdrawn and the other branch
+    // takes the whole length, so nothing collides and the length is still conserved.
+    skel::Skeleton s = trunk(12);
+    addBranch(s, 2, glm::vec3(0.45f, 0.02f, 0), 7, 1);                           // into the wall
+    const std::int32_t side = addBranch(s, 6, glm::vec3(-0.25f, 0.0f, 0), 4, 1); // free
+    for (CollisionBackend backend : {CollisionBackend::Embree, CollisionBackend::BruteForce}) {
+        const ObstacleScene scene(
+            {makeBoxMesh(glm::vec3(1.0f, 0, -3), glm::vec3(1.2f, 3, 3), "wall"),
+             makeBoxMesh(glm::vec3(-0.5f, 6.3f, -0.5f), glm::vec3(0.5f, 7.0f, 0.5f), "roof")},
+            backend);
+        AdaptParams p;
+        p.maxBend = 0.0f; // prune and grow only
+        p.lightDirection = glm::vec3(0.0f);
+        const AdaptResult r = adaptTree(s, scene, glm::mat4(1.0f), p);
+        ASSERT_GT(r.stats.prunedLength, 2.0);
+        EXPECT_GE(r.stats.growthRounds, 2u);
+        EXPECT_EQ(r.stats.collidingAfter, 0u);
+        for (std::size_t i = 1; i < s.size(); ++i) {
+            if (hidden(r.skeleton, static_cast<std::int32_t>(i))) continue;
+            EXPECT_FALSE(scene.occluded({r.skeleton.position[static_cast<std::size_t>(s.parent[i])],
+                                         r.skeleton.position[i]}))
+                << i;
+        }
+        EXPECT_LT(r.skeleton.position[kTop].y, 6.3f);
+        EXPECT_FALSE(hidden(r.skeleton, side));
+        EXPECT_NEAR(visibleLength(r.skeleton), restLength(s), 1e-4 * restLength(s));
+        // The side branch (1 m long at rest) took most of the 3.15 m.
+        EXPECT_LT(r.skeleton.position[static_cast<std::size_t>(side)].x, -1.0f - 1.5f);
+    }
+}
+
+TEST(Adapt, LeavesWhoseCardsTouchAnObstacleAreDropped) {
+    // The trunk stands 0.2 m from a wall and never touches it; two leaves hang on its top,
+    // one pointing at the wall (its 0.3 m card crosses the face), one away from it.
+    skel::Skeleton s = trunk(4);
+    const glm::vec3 top = s.position[4];
+    const glm::quat towardWall = glm::angleAxis(-glm::half_pi<float>(), glm::vec3(0, 0, 1));
+    const glm::quat awayFromWall = glm::angleAxis(glm::half_pi<float>(), glm::vec3(0, 0, 1));
+    ASSERT_GT(skel::headingOf(towardWall).x, 0.99f);
+    s.leaves.push_back({top, towardWall, 0.3f, 4});
+    s.leaves.push_back({top, awayFromWall, 0.3f, 4});
+    const ObstacleScene scene = wallAt(0.2f, 0.5f);
+    AdaptParams p;
+    const AdaptResult r = adaptTree(s, scene, glm::mat4(1.0f), p);
+    EXPECT_EQ(r.stats.collidingBefore, 0u);
+    EXPECT_EQ(r.stats.droppedLeaves, 1u);
+    ASSERT_EQ(r.skeleton.leaves.size(), 1u);
+    EXPECT_EQ(r.skeleton.leaves[0].orientation, awayFromWall);
+    // The card length is Leaf::size · leaf_scale: at 0.5 the card stops short of the wall.
+    p.leafScale = 0.5f;
+    EXPECT_EQ(adaptTree(s, scene, glm::mat4(1.0f), p).skeleton.leaves.size(), 2u);
+    // A card reaching the wall sideways (its width, leaf_aspect) counts as well.
+    p.leafScale = 1.0f;
+    s.leaves = {{top, glm::quat(1, 0, 0, 0), 0.3f, 4}}; // heading up, 0.5 · 0.3 wide along x
+    EXPECT_EQ(adaptTree(s, scene, glm::mat4(1.0f), p).skeleton.leaves.size(), 1u);
+    p.leafAspect = 2.0f; // 0.6 wide: its edge at x = 0.3 is inside the wall
+    EXPECT_EQ(adaptTree(s, scene, glm::mat4(1.0f), p).skeleton.leaves.size(), 0u);
+    // Pruning off keeps every leaf.
+    p.prune = false;
+    EXPECT_EQ(adaptTree(s, scene, glm::mat4(1.0f), p).skeleton.leaves.size(), 1u);
 }
 
 TEST(Adapt, WorksInWorldSpaceThroughTheTreeTransform) {

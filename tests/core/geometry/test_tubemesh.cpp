@@ -331,3 +331,84 @@ TEST(TubeMesh, NodeIdsNameTheNodeOfEveryVertex) {
         EXPECT_EQ(withLeaves.node[m.node.size() + 4 + c], mesh::Mesh::kNoNode);
     }
 }
+
+namespace {
+
+/// Distance from \p p to the polyline \p line.
+float distanceToPolyline(const glm::vec3& p, const std::vector<glm::vec3>& line) {
+    float best = 1e30f;
+    for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+        const glm::vec3 a = line[k], d = line[k + 1] - a;
+        const float t = std::clamp(glm::dot(p - a, d) / glm::dot(d, d), 0.0f, 1.0f);
+        best = std::min(best, glm::length(a + t * d - p));
+    }
+    return best;
+}
+
+} // namespace
+
+TEST(TubeMesh, SimplifiedAxesStayWithinTheTolerance) {
+    // A quarter circle of 60 nodes (radius 3 m) and a straight run of 20.
+    skel::Skeleton s;
+    const glm::quat up(1, 0, 0, 0);
+    s.addNode({0, 0, 0}, -1, 0.05f, 0, up);
+    for (int i = 1; i <= 20; ++i)
+        s.addNode({0, 0.1f * static_cast<float>(i), 0}, i - 1, 0.05f, 0, up);
+    for (int i = 1; i <= 60; ++i) {
+        const float a = static_cast<float>(i) / 60.0f * std::numbers::pi_v<float> / 2.0f;
+        s.addNode({3.0f - 3.0f * std::cos(a), 2.0f + 3.0f * std::sin(a), 0}, 19 + i, 0.05f, 0, up);
+    }
+    s.finalize();
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    const std::size_t ringVerts = static_cast<std::size_t>(settings.resolution) + 1;
+    EXPECT_EQ(mesh::buildTubeMesh(s, settings).vertexCount(), s.size() * ringVerts);
+    for (double tol : {0.001, 0.01, 0.05}) {
+        settings.simplifyTolerance = tol;
+        const mesh::Mesh m = mesh::buildTubeMesh(s, settings);
+        ASSERT_EQ(m.vertexCount() % ringVerts, 0u);
+        std::vector<glm::vec3> centres;
+        for (std::size_t r = 0; r < m.vertexCount() / ringVerts; ++r) {
+            glm::vec3 c(0.0f);
+            for (std::size_t j = 0; j < ringVerts - 1; ++j)
+                c += m.positions[r * ringVerts + j];
+            centres.push_back(c / static_cast<float>(ringVerts - 1));
+        }
+        EXPECT_LT(centres.size(), tol >= 0.01 ? s.size() / 4 : s.size()) << tol;
+        EXPECT_LT(glm::length(centres.front() - s.position.front()), 1e-5f);
+        EXPECT_LT(glm::length(centres.back() - s.position.back()), 1e-5f);
+        for (const glm::vec3& p : s.position)
+            EXPECT_LE(distanceToPolyline(p, centres), static_cast<float>(tol) + 1e-5f) << tol;
+    }
+}
+
+TEST(TubeMesh, ThinAxesBecomeRibbonsFacingTheCamera) {
+    skel::Skeleton s;
+    const glm::quat up(1, 0, 0, 0);
+    s.addNode({0, 0, 0}, -1, 0.2f, 0, up);
+    s.addNode({0, 2, 0}, 0, 0.15f, 0, up);
+    s.addNode({0, 4, 0}, 1, 0.1f, 0, up);
+    s.addNode({1, 2.5f, 0}, 1, 0.01f, 1, up);
+    s.addNode({2, 3, 0}, 3, 0.008f, 1, up);
+    s.finalize();
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    settings.ribbonBelowRadius = 0.05;
+    settings.ribbonCamera = {0.5f, 3, 20};
+    settings.ribbonWidthScale = 0.9;
+    settings.nodeIds = true;
+    const mesh::Mesh m = mesh::buildTubeMesh(s, settings);
+    // The trunk: three rings of 9; the lateral: its base at the fork and two nodes, 2 each.
+    ASSERT_EQ(m.vertexCount(), 3u * 9u + 3u * 2u);
+    EXPECT_EQ(m.triangleCount(), 2u * 16u + 2u * 2u);
+    for (std::size_t v = 27; v < m.vertexCount(); v += 2) {
+        const glm::vec3 mid = 0.5f * (m.positions[v] + m.positions[v + 1]);
+        const std::uint32_t node = m.node[v];
+        EXPECT_GT(glm::dot(m.normals[v], settings.ribbonCamera - mid), 0.0f);
+        // As wide as 2 r · scale, at right angles to the view.
+        const float r = std::min(s.radius[node], v == 27 ? s.radius[1] : s.radius[node]);
+        EXPECT_NEAR(glm::length(m.positions[v + 1] - m.positions[v]), 2.0f * r * 0.9f, 1e-5f);
+        EXPECT_NEAR(glm::dot(m.positions[v + 1] - m.positions[v], settings.ribbonCamera - mid),
+                    0.0f, 1e-4f);
+    }
+}

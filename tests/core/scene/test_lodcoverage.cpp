@@ -1,0 +1,163 @@
+// Issue 20: level of detail keeps what the camera sees. Each tree of the demo and benchmark
+// projects is drawn from the project camera at full detail and at its LOD; the two coverage
+// masks must overlap (intersection over union) by >= 0.9 on average and >= 0.8 for the worst
+// tree, while every tree beyond 50 m carries >= 5x fewer triangles than at full detail.
+//
+// Screen: projects have no screen size, so the test renders what the LOD assumes
+// (LodSettings: 1080 px high, 60 degree vertical field of view), 1920 x 1080. A pixel belongs to
+// a tree's mask when the tree touches it (conservative rasterization: what an anti-aliased
+// render shows any of the tree in). Pixel-centre sampling is reported too but not asserted: for
+// sub-pixel leaves and twigs it is noise, the very same mesh moved by half a pixel keeps only
+// about half of its pixels (the test prints that figure for each project).
+// SYLVA_LOD_PICTURES=<folder> also writes both renders of the whole forest (z-buffered, bark brown,
+// leaves green) as PPM files.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+#include "coverageraster.h"
+#include "document/project.h"
+#include "document/scenebuild.h"
+#include "engine/graph/graph.h"
+#include "engine/scene/forestbuild.h"
+
+using namespace sylva;
+
+namespace {
+
+const std::filesystem::path kDemo =
+    std::filesystem::path(SYLVA_PRESETS_DIR) / ".." / "resources" / "demo";
+
+struct Outcome {
+    std::size_t trees = 0, visible = 0, far = 0;
+    double meanIou = 0.0, worstIou = 1.0;
+    double meanIouCentres = 0.0; // the same with pixel-centre sampling (reported, not asserted)
+    // Full detail against itself drawn half a pixel to the side, both ways of sampling.
+    double shiftIou = 0.0, shiftIouCentres = 0.0;
+    std::uint32_t worstTree = 0;
+    double worstFarRatio = 1e30; // smallest full / LOD triangle ratio beyond 50 m
+    std::size_t fullTriangles = 0, lodTriangles = 0, farFull = 0, farLod = 0;
+};
+
+Outcome compare(const std::string& project, const std::string& pictureName) {
+    const doc::Project p = doc::loadProject(QString::fromStdString((kDemo / project).string()));
+    const scene::ForestScene s = doc::makeForestScene(p);
+    const test::RasterCamera cam =
+        test::RasterCamera::lookAt(p.cameraPosition, p.cameraTarget, 60.0, 1920, 1080);
+    const char* pictures = std::getenv("SYLVA_LOD_PICTURES");
+    test::Picture fullPicture(cam.width, cam.height), lodPicture(cam.width, cam.height);
+
+    // The same camera moved by half a pixel: how much the masks of the very same mesh change.
+    test::RasterCamera shifted = cam;
+    shifted.viewProj =
+        glm::translate(glm::mat4(1.0f), glm::vec3(1.0f / static_cast<float>(cam.width), 0, 0)) *
+        cam.viewProj;
+    struct Full {
+        test::Mask mask, centres;
+        std::size_t triangles = 0;
+    };
+    std::map<std::uint32_t, Full> full;
+    std::vector<std::uint8_t> scratch;
+    double shiftTouched = 0.0, shiftCentres = 0.0, sumCentres = 0.0;
+    std::size_t shiftCount = 0;
+    scene::ForestOptions options;
+    options.useLod = false;
+    scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
+        for (const scene::ForestTree& t : batch) {
+            const glm::mat4 model = t.instance.transform();
+            Full f{test::coverage(*t.mesh, model, cam, scratch),
+                   test::coverage(*t.mesh, model, cam, scratch, false), t.mesh->triangleCount()};
+            const double a = test::iou(f.mask, test::coverage(*t.mesh, model, shifted, scratch));
+            const double b =
+                test::iou(f.centres, test::coverage(*t.mesh, model, shifted, scratch, false));
+            if (a >= 0.0 && b >= 0.0) {
+                ++shiftCount;
+                shiftTouched += a;
+                shiftCentres += b;
+            }
+            full[t.instance.id] = std::move(f);
+            if (pictures) fullPicture.draw(*t.mesh, model, cam);
+        }
+    });
+
+    Outcome o;
+    double sum = 0.0;
+    options.useLod = true;
+    scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
+        for (const scene::ForestTree& t : batch) {
+            const glm::mat4 model = t.instance.transform();
+            const Full& f = full.at(t.instance.id);
+            ++o.trees;
+            o.fullTriangles += f.triangles;
+            o.lodTriangles += t.mesh->triangleCount();
+            const double distance = glm::length(s.camera - t.instance.position);
+            if (distance > 50.0) {
+                ++o.far;
+                o.farFull += f.triangles;
+                o.farLod += t.mesh->triangleCount();
+                o.worstFarRatio = std::min(
+                    o.worstFarRatio,
+                    static_cast<double>(f.triangles) /
+                        static_cast<double>(std::max<std::size_t>(1, t.mesh->triangleCount())));
+            }
+            if (pictures) lodPicture.draw(*t.mesh, model, cam);
+            const double v = test::iou(f.mask, test::coverage(*t.mesh, model, cam, scratch));
+            const double vc =
+                test::iou(f.centres, test::coverage(*t.mesh, model, cam, scratch, false));
+            if (std::getenv("SYLVA_LOD_VERBOSE"))
+                std::cout << "tree " << t.instance.id << " " << t.name << " d=" << distance
+                          << " iou=" << v << " centres " << vc << " px " << f.mask.size() << " tri "
+                          << f.triangles << " -> " << t.mesh->triangleCount() << "\n";
+            if (v < 0.0) continue; // off screen
+            ++o.visible;
+            sum += v;
+            sumCentres += std::max(vc, 0.0);
+            if (v < o.worstIou) {
+                o.worstIou = v;
+                o.worstTree = t.instance.id;
+            }
+        }
+    });
+    o.meanIou = o.visible ? sum / static_cast<double>(o.visible) : 0.0;
+    o.meanIouCentres = o.visible ? sumCentres / static_cast<double>(o.visible) : 0.0;
+    o.shiftIou = shiftCount ? shiftTouched / static_cast<double>(shiftCount) : 0.0;
+    o.shiftIouCentres = shiftCount ? shiftCentres / static_cast<double>(shiftCount) : 0.0;
+    if (pictures) {
+        fullPicture.writePpm(std::filesystem::path(pictures) / (pictureName + "-full.ppm"));
+        lodPicture.writePpm(std::filesystem::path(pictures) / (pictureName + "-lod.ppm"));
+    }
+    std::cout << project << ": " << o.trees << " trees (" << o.visible << " on screen), IoU mean "
+              << o.meanIou << ", worst " << o.worstIou << " (tree " << o.worstTree
+              << "); triangles " << o.fullTriangles << " full, " << o.lodTriangles
+              << " LOD; beyond 50 m: " << o.far << " trees, " << o.farFull << " -> " << o.farLod
+              << " triangles, worst tree " << o.worstFarRatio << "x fewer. Pixel centres: IoU mean "
+              << o.meanIouCentres << ". Full detail moved by half a pixel: IoU " << o.shiftIou
+              << " (pixel centres " << o.shiftIouCentres << ")\n";
+    return o;
+}
+
+void expectSilhouetteKept(const Outcome& o) {
+    EXPECT_GT(o.visible, 0u);
+    EXPECT_GE(o.meanIou, 0.9);
+    EXPECT_GE(o.worstIou, 0.8) << "tree " << o.worstTree;
+    EXPECT_GT(o.far, 0u);
+    EXPECT_GE(o.worstFarRatio, 5.0);
+}
+
+} // namespace
+
+class LodCoverage : public ::testing::Test {
+protected:
+    void SetUp() override { graph::registerBuiltinNodeTypes(); }
+};
+
+TEST_F(LodCoverage, DemoProject) {
+    expectSilhouetteKept(compare("forest.sylva", "demo"));
+}
+
+TEST_F(LodCoverage, BenchmarkProject) {
+    expectSilhouetteKept(compare("bench-1000.sylva", "bench"));
+}
