@@ -287,10 +287,8 @@ void ToolController::dab(const glm::vec3& centre) {
                             crownRadius(std::uint32_t(mDocument.speciesIndex(t.species))) *
                                 float(t.scale));
     for (int c = 0; c < candidates; ++c) {
-        // Uniform in the disc.
-        const float r = mBrush.radius * std::sqrt(float(rng.uniform()));
-        const float a = float(2.0 * M_PI * rng.uniform());
-        const glm::vec2 q(centre.x + r * std::cos(a), centre.z + r * std::sin(a));
+        // The species first, by weight, then up to kTries positions for it (reference 000
+        // tries 50): a big-crowned species is not squeezed out by the small ones' leftovers.
         double pickWeight = rng.uniform() * total;
         std::uint32_t s = mix.back().first;
         for (const auto& [index, weight] : mix) {
@@ -302,16 +300,24 @@ void ToolController::dab(const glm::vec3& centre) {
         }
         doc::ProjectInstance t;
         t.species = species[s].name;
-        t.position = {q.x, 0.0f, q.y};
         t.rotation = 360.0 * rng.uniform();
         t.scale = 0.95 + 0.1 * rng.uniform();
         t.seed = rng.next() % 1000000007ull;
-        // Reference 000's rule: no trunk inside another tree's crown cylinder (its core).
-        bool blocked = inObstacleFootprint(t.position);
-        for (const auto& [p, radius] : trunks)
-            blocked = blocked || glm::length(q - p) < radius;
-        if (blocked) continue;
-        trunks.emplace_back(q, crownRadius(s) * float(t.scale));
+        constexpr int kTries = 20;
+        bool placed = false;
+        for (int attempt = 0; attempt < kTries && !placed; ++attempt) {
+            const float r = mBrush.radius * std::sqrt(float(rng.uniform())); // uniform in the disc
+            const float a = float(2.0 * M_PI * rng.uniform());
+            const glm::vec2 q(centre.x + r * std::cos(a), centre.z + r * std::sin(a));
+            t.position = {q.x, 0.0f, q.y};
+            // Reference 000's rule: no trunk inside another tree's crown cylinder.
+            bool blocked = inObstacleFootprint(t.position);
+            for (const auto& [p, radius] : trunks)
+                blocked = blocked || glm::length(q - p) < radius;
+            placed = !blocked;
+        }
+        if (!placed) continue;
+        trunks.emplace_back(glm::vec2(t.position.x, t.position.z), crownRadius(s) * float(t.scale));
         mStroke.push_back(t);
     }
     // Preview: each new tree drawn with a grown tree of its species where there is one.

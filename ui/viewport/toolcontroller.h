@@ -68,6 +68,9 @@ public:
     /// Whether a trunk at \p position stands in an obstacle's footprint (what placement
     /// refuses), from the last generation's obstacles.
     bool inObstacleFootprint(const glm::vec3& position) const;
+    /// The crown radius the spacing rules use for a species: the median of its grown trees'
+    /// half crown widths in the last generation (2 m when it has none yet).
+    float crownRadius(std::uint32_t species) const;
 
     // ViewportTool
     bool press(QMouseEvent* event) override;
@@ -95,7 +98,6 @@ private:
     void dab(const glm::vec3& centre);
     void erase(const glm::vec3& centre);
     void nudge(float dx, float dz);
-    float crownRadius(std::uint32_t species) const;
     std::optional<glm::vec3> groundAt(const QPoint& pos) const;
 
     doc::Document& mDocument;
