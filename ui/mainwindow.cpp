@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <ctime>
+
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
@@ -286,6 +288,16 @@ void MainWindow::createMenus() {
     mExportAction = file->addAction(tr("&Export…"), this, &MainWindow::showExportDialog);
     mExportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     mExportAction->setEnabled(false);
+    mExportSelectionAction = file->addAction(tr("Export only the selection"));
+    mExportSelectionAction->setObjectName(QStringLiteral("actionExportSelection"));
+    mExportSelectionAction->setCheckable(true);
+    mExportSelectionAction->setToolTip(tr("File ▸ Export writes only the selected trees"));
+    mExportViewLodAction = file->addAction(tr("Export with the viewport camera's detail"));
+    mExportViewLodAction->setObjectName(QStringLiteral("actionExportViewLod"));
+    mExportViewLodAction->setCheckable(true);
+    mExportViewLodAction->setToolTip(
+        tr("File ▸ Export chooses each tree's level of detail for the viewport's camera instead "
+           "of the project's camera"));
     QAction* shot =
         file->addAction(tr("Save s&creenshot…"), this, &MainWindow::showScreenshotDialog);
     shot->setShortcut(QKeySequence(tr("Ctrl+Alt+S")));
@@ -1129,17 +1141,42 @@ bool MainWindow::saveWindowScreenshot(const QString& path) {
 }
 
 bool MainWindow::exportTo(const QString& path) {
-    const GenerationResult& result = lastResult();
-    if (result.exportTrees.empty()) {
+    return exportTo(path, {});
+}
+
+bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
+    const GenerationResult* source = &lastResult();
+    if (source->exportTrees.empty()) {
         reportError(tr("Nothing to export yet."));
         return false;
     }
     QApplication::setOverrideCursor(Qt::WaitCursor);
     QString error;
     std::size_t files = 0;
+    GenerationResult rebuilt;
+    std::vector<exporter::ExportTree> trees;
     try {
-        exporter::TreeExporter out(path.toStdString(), {false, result.compactObj});
-        out.add(result.exportTrees);
+        if (options.viewportCamera && !mPreview) {
+            // The same forest with the viewport's eye as the LOD reference.
+            doc::Project project = mDocument->project();
+            project.cameraPosition = mViewport->camera().eye();
+            project.cameraTarget = mViewport->camera().target();
+            rebuilt = generateProject(project, mDocument->path(), mDocument->treeIds(), nullptr);
+            if (!rebuilt.ok()) throw IoError(rebuilt.error.toStdString());
+            source = &rebuilt;
+        }
+        if (options.selectionOnly && !mPreview) {
+            const QList<doc::TreeId> ids = mDocument->selectedTrees();
+            for (std::size_t i = 0; i < source->trees.size() && i < source->exportTrees.size(); ++i)
+                if (source->trees[i].docId && ids.contains(source->trees[i].docId))
+                    trees.push_back(source->exportTrees[i]);
+            if (trees.empty())
+                throw InvalidInput("nothing to export: no hand-placed tree is selected");
+        } else {
+            trees = source->exportTrees;
+        }
+        exporter::TreeExporter out(path.toStdString(), {false, source->compactObj});
+        out.add(trees);
         files = out.commit().size();
     } catch (...) {
         error = errorText();
@@ -1149,11 +1186,10 @@ bool MainWindow::exportTo(const QString& path) {
         reportError(error);
         return false;
     }
-    statusBar()->showMessage(
-        tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(result.exportTrees.size()))
-            .arg(QDir::toNativeSeparators(path))
-            .arg(files),
-        10000);
+    statusBar()->showMessage(tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(trees.size()))
+                                 .arg(QDir::toNativeSeparators(path))
+                                 .arg(files),
+                             10000);
     return true;
 }
 
@@ -1173,7 +1209,7 @@ void MainWindow::showExportDialog() {
         const qsizetype star = filter.indexOf(QStringLiteral("*."));
         path += filter.mid(star + 1, filter.indexOf(QLatin1Char(')'), star) - star - 1);
     }
-    exportTo(path);
+    exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked()});
 }
 
 void MainWindow::showOpenDialog() {
@@ -1208,6 +1244,39 @@ void MainWindow::showPreferences() {
     form->addRow(buttons);
     if (dialog.exec() != QDialog::Accepted) return;
     setAutosaveInterval(minutes->value() * 60);
+}
+
+MainWindow::FrameStats MainWindow::measureFrames(int frames) {
+    auto cpuMs = [](clockid_t clock) {
+        timespec ts{};
+        clock_gettime(clock, &ts);
+        return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
+    };
+    FrameStats stats;
+    if (frames <= 0) return stats;
+    QElapsedTimer wall;
+    const double process0 = cpuMs(CLOCK_PROCESS_CPUTIME_ID);
+    const double gui0 = cpuMs(CLOCK_THREAD_CPUTIME_ID);
+    wall.start();
+    for (int i = 0; i < frames; ++i) {
+        QEventLoop loop;
+        QTimer guard;
+        guard.setSingleShot(true);
+        connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
+        connect(mViewport, &QOpenGLWidget::frameSwapped, &loop, &QEventLoop::quit);
+        mViewport->camera().orbit(4.0f, 0.0f);
+        mViewport->update();
+        guard.start(10000);
+        loop.exec();
+    }
+    const double ms = double(wall.nsecsElapsed()) * 1e-6;
+    stats.msPerFrame = ms / frames;
+    stats.fps = 1000.0 / stats.msPerFrame;
+    stats.cpuMsPerFrame = (cpuMs(CLOCK_PROCESS_CPUTIME_ID) - process0) / frames;
+    stats.guiCpuMsPerFrame = (cpuMs(CLOCK_THREAD_CPUTIME_ID) - gui0) / frames;
+    stats.treesDrawn = mViewport->drawnTrees();
+    stats.triangles = lastResult().triangleCount();
+    return stats;
 }
 
 void MainWindow::setAutosaveInterval(int seconds) {

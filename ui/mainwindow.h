@@ -101,6 +101,14 @@ public:
     /// Exports what is shown by \p path's extension, exactly as `sylva-cli tree` (a species) or
     /// `sylva-cli forest` (the document's project) writes it.
     bool exportTo(const QString& path);
+    /// What File ▸ Export takes from a project: only the selected trees, and the level of detail
+    /// chosen for the viewport's camera instead of the project's (the forest is built again
+    /// for it, as `sylva-cli forest` would with that camera).
+    struct ExportOptions {
+        bool selectionOnly = false;
+        bool viewportCamera = false;
+    };
+    bool exportTo(const QString& path, const ExportOptions& options);
 
     /// The species file previewed, or the document's file.
     QString currentPath() const;
@@ -124,6 +132,15 @@ public:
     /// Offers to restore an autosave left by a crash (askUser); with \p force, restores it
     /// without asking. True when one was restored.
     bool offerRecovery(bool force = false);
+
+    /// Orbits the view by a small step per frame for \p frames frames and measures them: frames
+    /// per second, wall and CPU milliseconds per frame (the whole process, which includes a
+    /// software renderer's threads, and the GUI thread alone), trees drawn.
+    struct FrameStats {
+        double fps = 0, msPerFrame = 0, cpuMsPerFrame = 0, guiCpuMsPerFrame = 0;
+        std::size_t treesDrawn = 0, triangles = 0;
+    };
+    FrameStats measureFrames(int frames);
 
     /// Edit ▸ Preferences: how often the autosave copy is written (kept in the settings).
     void setAutosaveInterval(int seconds);
@@ -188,6 +205,8 @@ private:
     QDoubleSpinBox* mBrushDensity = nullptr;
     QLineEdit* mBrushMix = nullptr;
     QActionGroup* mToolGroup = nullptr;
+    QAction* mExportSelectionAction = nullptr;
+    QAction* mExportViewLodAction = nullptr;
     std::map<QString, QDockWidget*> mDocks;
     QMenu* mPresetsMenu = nullptr;
     QMenu* mRecentMenu = nullptr;

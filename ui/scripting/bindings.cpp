@@ -442,12 +442,13 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             "Waits for the current generation; returns its statistics.")
         .def(
             "export",
-            [](DocumentApi&, const std::string& path) {
+            [](DocumentApi&, const std::string& path, bool selectionOnly, bool viewportCamera) {
                 generate();
-                if (!window().exportTo(QString::fromStdString(path)))
+                if (!window().exportTo(QString::fromStdString(path),
+                                       {selectionOnly, viewportCamera}))
                     throw IoError(window().lastError().toStdString());
             },
-            py::arg("path"));
+            py::arg("path"), py::arg("selection_only") = false, py::arg("viewport_camera") = false);
 
     py::class_<WindowApi>(m, "Window", "The editor's window.")
         .def(
@@ -504,6 +505,34 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             },
             py::arg("x"), py::arg("y"), py::arg("z"),
             "Where a world point is drawn, in global screen pixels (what xdotool takes), or None.")
+        .def(
+            "look_from",
+            [](WindowApi&, py::object eye, py::object target) {
+                window().viewport()->setViewFrom(toVec3(eye, "eye"), toVec3(target, "target"));
+                window().viewport()->frameScene();
+                window().viewport()->camera().lookFrom(toVec3(eye, "eye"),
+                                                       toVec3(target, "target"));
+                window().viewport()->update();
+            },
+            py::arg("eye"), py::arg("target"),
+            "Points the viewport's camera (a view, not the project camera: doc.set_camera).")
+        .def(
+            "measure_frames",
+            [](WindowApi&, int frames) {
+                if (frames < 1 || frames > 100000)
+                    throw InvalidInput("measure_frames takes 1 to 100000 frames");
+                const MainWindow::FrameStats f = window().measureFrames(frames);
+                py::dict d;
+                d["fps"] = f.fps;
+                d["ms_per_frame"] = f.msPerFrame;
+                d["cpu_ms_per_frame"] = f.cpuMsPerFrame;
+                d["gui_cpu_ms_per_frame"] = f.guiCpuMsPerFrame;
+                d["trees_drawn"] = f.treesDrawn;
+                d["triangles"] = f.triangles;
+                return d;
+            },
+            py::arg("frames") = 60,
+            "Orbits the view a little per frame and measures frames per second and CPU time.")
         .def(
             "regenerate_all", [](WindowApi&) { window().generator().regenerateAll(); },
             "Drops every cached tree and regrows the whole document (File > Reload).")

@@ -668,8 +668,29 @@ void Viewport::paintGL() {
                                reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
             }
         };
-        for (const ViewTree& t : mTrees) {
+        // Frustum culling: a tree whose world box lies outside one of the six planes is not
+        // drawn (a forest seen from inside draws only what is in front of the camera).
+        glm::vec4 planes[6];
+        const glm::mat4 m = glm::transpose(viewProj);
+        for (int k = 0; k < 3; ++k) {
+            planes[2 * k] = m[3] + m[k];
+            planes[2 * k + 1] = m[3] - m[k];
+        }
+        auto visible = [&planes](const Bounds& b) {
+            if (b.empty()) return false;
+            for (const glm::vec4& p : planes) {
+                const glm::vec3 far(p.x >= 0 ? b.hi.x : b.lo.x, p.y >= 0 ? b.hi.y : b.lo.y,
+                                    p.z >= 0 ? b.hi.z : b.lo.z);
+                if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
+            }
+            return true;
+        };
+        mDrawnTrees = 0;
+        for (std::size_t i = 0; i < mTrees.size(); ++i) {
+            const ViewTree& t = mTrees[i];
             if (!t.mesh || (t.id && mHidden.contains(t.id))) continue;
+            if (i < mTreeBounds.size() && !visible(mTreeBounds[i])) continue;
+            ++mDrawnTrees;
             drawTree(t, t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
         }
         for (const ViewTree& t : mPreview)

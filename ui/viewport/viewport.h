@@ -111,6 +111,8 @@ public:
     const QSet<std::uint32_t>& highlightedTrees() const { return mHighlighted; }
     /// Meshes uploaded to the GPU since construction (for tests: unchanged trees are not).
     std::size_t uploads() const { return mUploads; }
+    /// Trees drawn in the last frame: those whose box is outside the view are skipped.
+    std::size_t drawnTrees() const { return mDrawnTrees; }
 
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
@@ -210,6 +212,7 @@ private:
     bool mTreesDirty = false;
     QSet<std::uint32_t> mHighlighted, mHidden;
     std::size_t mUploads = 0;
+    std::size_t mDrawnTrees = 0;
 };
 
 } // namespace sylva::ui

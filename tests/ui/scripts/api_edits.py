@@ -89,5 +89,28 @@ doc.open(saved)
 assert doc.serialized() == text
 doc.export(os.path.join(out, "scripted.obj"))
 assert os.path.getsize(os.path.join(out, "scripted.obj")) > 1000
+
+
+def objects(path):
+    with open(path, encoding="utf-8") as f:
+        return sum(1 for line in f if line.startswith("o "))
+
+
+# Export only the selection; and with the level of detail of a far viewport camera.
+doc.select([doc.trees()[0].id])
+doc.export(os.path.join(out, "selected.obj"), selection_only=True)
+assert objects(os.path.join(out, "selected.obj")) == 1
+assert objects(os.path.join(out, "scripted.obj")) == doc.generate()["trees"]
+sylva.window().look_from((0, 300, 900), (0, 5, 0))
+doc.export(os.path.join(out, "far.obj"), viewport_camera=True)
+far, near = os.path.getsize(os.path.join(out, "far.obj")), os.path.getsize(os.path.join(out, "scripted.obj"))
+assert far < near / 2, (far, near)
+try:
+    doc.select([])
+    doc.export(os.path.join(out, "none.obj"), selection_only=True)
+except OSError as e:
+    assert "no hand-placed tree is selected" in str(e), str(e)
+else:
+    raise AssertionError("an empty selection exported")
 sylva.window().screenshot(os.path.join(out, "script_window.png"))
 print("api_edits: ok")

@@ -1,0 +1,33 @@
+# Frames per second of the editor's viewport (run on demand, not by ctest), orbiting the view:
+#   xvfb-run -a -s '-screen 0 1600x1000x24' build/release/app/editor/sylva \
+#       --script tests/bench/editor/frame_rate.py resources/demo/forest.sylva
+# Prints fps, wall and CPU milliseconds per frame (the process, which includes Mesa llvmpipe's
+# rasterizer threads, and the GUI thread), the trees drawn and the scene's triangles; then the
+# time from a released drag of the hand-placed tree to its re-adapted mesh on screen.
+import statistics
+import sylva
+
+doc = sylva.document()
+win = sylva.window()
+win.resize(1400, 900)
+stats = doc.generate()
+sylva.wait(0.5)
+win.measure_frames(5)  # warm up
+f = win.measure_frames(40)
+print(f"{doc.path.split('/')[-1]}: {stats['trees']} trees, {f['triangles']} triangles: "
+      f"{f['fps']:.1f} fps, {f['ms_per_frame']:.1f} ms/frame, CPU {f['cpu_ms_per_frame']:.1f} ms "
+      f"(GUI thread {f['gui_cpu_ms_per_frame']:.1f} ms), {f['trees_drawn']} trees drawn")
+trees = doc.trees()
+if trees:
+    tid = trees[0].id
+    x, y, z = trees[0].position
+    times, regrown = [], []
+    for i in range(10):
+        doc.set_tree(tid, position=(x + 0.05 * (i % 2), y, z))  # what a released drag pushes
+        r = doc.generate()
+        sylva.wait(0.2)
+        times.append(win.last_update_ms())
+        regrown.append(r["regrown"])
+    print(f"released move -> re-adapted tree on screen: median {statistics.median(times):.1f} ms "
+          f"[{min(times):.1f}-{max(times):.1f}], regrown {statistics.median(regrown):.0f}")
+sylva.quit(0)
