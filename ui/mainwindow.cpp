@@ -16,6 +16,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QEventLoop>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFileSystemWatcher>
@@ -698,6 +699,7 @@ bool MainWindow::saveAs(const QString& path) {
     }
     addRecent(path);
     mAutosave->discard();
+    mDocumentStamp = QFileInfo(mDocument->path()).lastModified(); // our own write
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(mDocument->path())),
                              10000);
     return true;
@@ -805,6 +807,9 @@ void MainWindow::onPreviewFinished() {
 
 void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
     if (change.what & doc::DocumentChange::Reset) {
+        const QFileInfo own(mDocument->path());
+        mDocumentStamp =
+            !mDocument->path().isEmpty() && own.exists() ? own.lastModified() : QDateTime();
         if (mWatcher.isRunning()) mWatcher.cancel();
         mPreview = false;
         mFrameNext = true;
@@ -823,14 +828,27 @@ void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
     if (mPreview) return;
     const GenerationResult& result = mGenerator->result();
     if (!ok) {
-        watchSources(doc::projectSourceFiles(mDocument->project()) << mDocument->path(), {});
+        QStringList sources = doc::projectSourceFiles(mDocument->project());
+        QList<QDateTime> stamps;
+        for (const QString& f : sources)
+            stamps << (QFileInfo::exists(f) ? QFileInfo(f).lastModified() : QDateTime());
+        if (!mDocument->path().isEmpty()) {
+            sources << mDocument->path();
+            stamps << mDocumentStamp;
+        }
+        watchSources(sources, stamps);
         reportError(error);
         Q_EMIT generationFinished(false);
         return;
     }
     QStringList sources = result.sources;
     QList<QDateTime> stamps = result.sourceStamps;
-    if (!mDocument->path().isEmpty()) sources << mDocument->path();
+    if (!mDocument->path().isEmpty()) {
+        // The project file with the time it had when it was opened or saved (or last seen
+        // changed): a change made while this generation ran is still noticed.
+        sources << mDocument->path();
+        stamps << mDocumentStamp;
+    }
     watchSources(sources, stamps);
     mLastError.clear();
     showDocument(mFrameNext);
@@ -1090,6 +1108,10 @@ void MainWindow::onSourcesTouched() {
     const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
     if (!mDocument->path().isEmpty() && changed.contains(own)) {
         // The project file itself: never throw unsaved edits away without asking.
+        mDocumentStamp = QFileInfo::exists(own) ? QFileInfo(own).lastModified() : QDateTime();
+        QFile file(own);
+        if (file.open(QIODevice::ReadOnly) && file.readAll() == mDocument->serialized())
+            return; // what the document holds: our own save (a script's doc.save, say)
         if (QFileInfo::exists(own) &&
             (!mDocument->isModified() ||
              askUser(tr("%1 changed on disk. Reload it and lose your unsaved edits?")

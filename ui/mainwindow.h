@@ -219,6 +219,7 @@ private:
     QTimer* mReloadTimer = nullptr;
     QStringList mSources;
     std::map<QString, QDateTime> mStamps;
+    QDateTime mDocumentStamp; ///< the project file's time when opened, saved or last seen
     QActionGroup* mColorGroup = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;

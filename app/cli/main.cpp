@@ -2,6 +2,7 @@
 #include "cliargs.h"
 #include "commands.h"
 
+#include "document/errormessage.h"
 #include "engine/util/error.h"
 #include "engine/util/memorypolicy.h"
 
@@ -71,20 +72,10 @@ int main(int argc, char** argv) {
     } catch (const UsageError& e) {
         std::fprintf(stderr, "sylva-cli: %s\n(see 'sylva-cli help')\n", e.what());
         return kBadUsage;
-    } catch (const sylva::InvalidInput& e) {
-        printError(e.what());
-        return kBadInput;
-    } catch (const sylva::LimitExceeded& e) {
-        printError(e.what());
-        return kBadInput;
-    } catch (const sylva::IoError& e) {
-        printError(e.what());
-        return kBadInput;
-    } catch (const std::bad_alloc&) {
-        printError("out of memory");
-        return kBadInput;
-    } catch (const std::exception& e) {
-        printError(e.what());
+    } catch (...) {
+        // The one mapping of exceptions to messages that the editor and Python share.
+        const sylva::doc::ErrorReport report = sylva::doc::describeError(std::current_exception());
+        printError(report.message);
         return kBadInput;
     }
 }

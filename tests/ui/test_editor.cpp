@@ -254,7 +254,7 @@ private Q_SLOTS:
         // The project file changes on disk while edits are pending: asked, No keeps them.
         mAnswer = MainWindow::Answer::No;
         QByteArray onDisk = readFile(mProject);
-        onDisk.replace("\"seed\": 7", "\"seed\": 8");
+        onDisk.replace("\"seed\": 7", "\"seed\": 9");
         QFile f(mProject);
         QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
         f.write(onDisk);
@@ -267,7 +267,7 @@ private Q_SLOTS:
         // Discard: the other file opens.
         mAnswer = MainWindow::Answer::Discard;
         QVERIFY(mWindow->openProject(mProject));
-        QCOMPARE(document().project().seed, std::uint64_t(8));
+        QCOMPARE(document().project().seed, std::uint64_t(9));
         QVERIFY(!document().isModified());
         settle();
     }
