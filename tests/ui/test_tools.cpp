@@ -320,6 +320,30 @@ private Q_SLOTS:
         QVERIFY(ticks > 3);
         QCOMPARE(document().serialized(), before);
     }
+
+    /// On a terrain project the Place tool plants on the terrain, not on the plane y = 0.
+    void placeOnTerrain() {
+        QVERIFY(
+            mWindow->openProject(QStringLiteral(SYLVA_TEST_DATA_DIR "/projects/terrain.sylva")));
+        settle();
+        const auto& ground = mWindow->generator().result().ground;
+        QVERIFY(ground && !ground->empty());
+        mWindow->tools().setTool(Tool::Place);
+        const glm::vec3 centre = 0.5f * (ground->lo() + ground->hi());
+        const QPoint at = screenOf(centre);
+        QVERIFY(at.x() >= 0);
+        const Ray ray = viewport()->rayAt(at);
+        const env::SegmentHit expected =
+            ground->intersect({ray.origin, ray.origin + 10000.0f * ray.direction});
+        QVERIFY(expected.hit);
+        QTest::mouseClick(viewport(), Qt::LeftButton, {}, at);
+        QCOMPARE(document().treeIds().size(), std::size_t(1));
+        const glm::vec3 p = document().tree(document().treeIds()[0]).position;
+        qInfo("planted at (%.2f, %.2f, %.2f) on the terrain", p.x, p.y, p.z);
+        QVERIFY(glm::length(p - expected.point) < 1e-3f);
+        QVERIFY(std::abs(p.y) > 0.05f); // the slope, not the plane
+        settle();
+    }
 };
 
 QTEST_MAIN(TestTools)

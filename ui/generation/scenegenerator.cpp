@@ -91,6 +91,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         result.mesh = std::make_shared<const mesh::Mesh>(
             surfaces(forest.obstacles.get(), forest.ground.get()));
         result.obstacles = forest.obstacles;
+        result.ground = forest.ground;
         result.compactObj = true; // sylva-cli forest's default
         result.hasCamera = true;
         result.cameraEye = project.cameraPosition;

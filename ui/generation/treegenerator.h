@@ -55,6 +55,8 @@ struct GenerationResult {
     std::vector<DrawnTree> trees; ///< a project's trees, in instance order
     /// A project's obstacles as built (for picking them and refusing trees in their footprint).
     std::shared_ptr<const env::ObstacleScene> obstacles;
+    /// A project's terrain (a terrain domain's mesh), where trees stand; null: the plane y = 0.
+    std::shared_ptr<const env::ObstacleScene> ground;
     std::map<std::string, double> stats;     ///< from the graph's output node
     std::map<std::string, double> timingsMs; ///< per stage, from the graph's output node
     double elapsedMs = 0.0;                  ///< load + evaluate, wall clock

@@ -86,7 +86,24 @@ void ToolController::setBrush(const Brush& brush) {
 }
 
 std::optional<glm::vec3> ToolController::groundAt(const QPoint& pos) const {
-    return hitPlane(mViewport.rayAt(pos), 0.0f);
+    const Ray ray = mViewport.rayAt(pos);
+    if (const auto& ground = mResult().ground; ground && !ground->empty()) {
+        // The terrain under the cursor, where trees stand in a terrain project.
+        const float reach = 10.0f * mViewport.camera().farPlane();
+        const env::SegmentHit hit =
+            ground->intersect({ray.origin, ray.origin + reach * ray.direction});
+        if (hit.hit) return hit.point;
+        return std::nullopt;
+    }
+    return hitPlane(ray, 0.0f);
+}
+
+float ToolController::groundHeight(float x, float z) const {
+    const auto& ground = mResult().ground;
+    if (!ground || ground->empty()) return 0.0f;
+    const env::SegmentHit h =
+        ground->intersect({{x, ground->hi().y + 1.0f, z}, {x, ground->lo().y - 1.0f, z}});
+    return h.hit ? h.point.y : 0.0f;
 }
 
 bool ToolController::inObstacleFootprint(const glm::vec3& p) const {
@@ -190,6 +207,8 @@ void ToolController::stepSelection(int step) {
 doc::ProjectInstance ToolController::draggedInstance(const Dragged& d) const {
     doc::ProjectInstance t = d.start;
     t.position += mDragMove;
+    if (mDragMove != glm::vec3(0.0f) && mResult().ground)
+        t.position.y = groundHeight(t.position.x, t.position.z); // stays on the terrain
     t.rotation += mDragDegrees;
     t.scale *= mDragScale;
     return t;
@@ -236,6 +255,7 @@ void ToolController::nudge(float dx, float dz) {
         for (doc::TreeId id : ids) {
             doc::ProjectInstance t = mDocument.tree(id);
             t.position += glm::vec3(dx, 0.0f, dz);
+            if (mResult().ground) t.position.y = groundHeight(t.position.x, t.position.z);
             if (inObstacleFootprint(t.position))
                 throw InvalidInput("a tree cannot stand inside an obstacle's footprint");
             mDocument.setTree(id, t);
@@ -309,7 +329,7 @@ void ToolController::dab(const glm::vec3& centre) {
             const float r = mBrush.radius * std::sqrt(float(rng.uniform())); // uniform in the disc
             const float a = float(2.0 * M_PI * rng.uniform());
             const glm::vec2 q(centre.x + r * std::cos(a), centre.z + r * std::sin(a));
-            t.position = {q.x, 0.0f, q.y};
+            t.position = {q.x, groundHeight(q.x, q.y), q.y};
             // Reference 000's rule: no trunk inside another tree's crown cylinder.
             bool blocked = inObstacleFootprint(t.position);
             for (const auto& [p, radius] : trunks)

@@ -99,6 +99,8 @@ private:
     void erase(const glm::vec3& centre);
     void nudge(float dx, float dz);
     std::optional<glm::vec3> groundAt(const QPoint& pos) const;
+    /// The terrain's height at (x, z), or 0 without terrain.
+    float groundHeight(float x, float z) const;
 
     doc::Document& mDocument;
     Viewport& mViewport;
