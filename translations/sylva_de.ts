@@ -517,10 +517,6 @@
         <translation>Be&amp;reich hinzufügen</translation>
     </message>
     <message>
-        <source>&amp;Frame all</source>
-        <translation>&amp;Alles einpassen</translation>
-    </message>
-    <message>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
     </message>
@@ -634,6 +630,138 @@
     <message>
         <source>Sylva projects (*.sylva)</source>
         <translation>Sylva-Projekte (*.sylva)</translation>
+    </message>
+    <message>
+        <source>Export only the selection</source>
+        <translation>Nur die Auswahl exportieren</translation>
+    </message>
+    <message>
+        <source>File ▸ Export writes only the selected trees</source>
+        <translation>Datei ▸ Exportieren schreibt nur die ausgewählten Bäume</translation>
+    </message>
+    <message>
+        <source>Export with the viewport camera&apos;s detail</source>
+        <translation>Mit dem Detailgrad der Ansichtskamera exportieren</translation>
+    </message>
+    <message>
+        <source>File ▸ Export chooses each tree&apos;s level of detail for the viewport&apos;s camera instead of the project&apos;s camera</source>
+        <translation>Datei ▸ Exportieren wählt den Detailgrad jedes Baums für die Kamera der Ansicht statt für die Kamera des Projekts</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>&amp;Frame selection or all</source>
+        <translation>&amp;Auswahl oder alles einpassen</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Select</source>
+        <translation>Auswählen</translation>
+    </message>
+    <message>
+        <source>Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a box); [ and ] step through the trees</source>
+        <translation>Klicken Sie auf einen Baum oder ein Hindernis, um das Objekt auszuwählen (Umschalt fügt hinzu, Strg schaltet die Auswahl um, Strg+Ziehen zieht einen Auswahlrahmen auf); [ und ] springen von Baum zu Baum</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow keys nudge). They re-adapt to the obstacles when you let go</source>
+        <translation>Ausgewählte Bäume über den Boden ziehen (Strg+Ziehen dreht, Umschalt+Ziehen skaliert; Pfeiltasten verschieben schrittweise). Beim Loslassen passen sie sich erneut an die Hindernisse an</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Pflanzen</translation>
+    </message>
+    <message>
+        <source>Click the ground to plant a tree of the chosen species</source>
+        <translation>Klicken Sie auf den Boden, um einen Baum der gewählten Art zu pflanzen</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Pinsel</translation>
+    </message>
+    <message>
+        <source>Paint trees of the species mix with the radius and density below; one stroke is one undo step</source>
+        <translation>Bäume der Artenmischung mit dem Radius und der Dichte unten malen; ein Pinselstrich lässt sich in einem Schritt rückgängig machen</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <translation>Radierer</translation>
+    </message>
+    <message>
+        <source>Remove the hand-placed trees the brush passes over</source>
+        <translation>Die von Hand platzierten Bäume entfernen, über die der Pinsel fährt</translation>
+    </message>
+    <message>
+        <source> Species: </source>
+        <translation> Art: </translation>
+    </message>
+    <message>
+        <source>The species the Place tool plants, and the Brush when no mix is given</source>
+        <translation>Die Art, die das Werkzeug „Pflanzen“ setzt und die der Pinsel malt, wenn keine Mischung angegeben ist</translation>
+    </message>
+    <message>
+        <source> Radius: </source>
+        <translation> Radius: </translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Brush and eraser radius, metres</source>
+        <translation>Radius von Pinsel und Radierer, in Metern</translation>
+    </message>
+    <message>
+        <source> Density: </source>
+        <translation> Dichte: </translation>
+    </message>
+    <message>
+        <source> /100 m²</source>
+        <translation> /100 m²</translation>
+    </message>
+    <message>
+        <source>Trees tried per 100 m² under the brush; spacing rules keep trunks out of each other&apos;s crowns and out of obstacles</source>
+        <translation>Pflanzversuche pro 100 m² unter dem Pinsel; Abstandsregeln halten die Stämme aus den Kronen der anderen Bäume und aus Hindernissen heraus</translation>
+    </message>
+    <message>
+        <source> Mix: </source>
+        <translation> Mischung: </translation>
+    </message>
+    <message>
+        <source>e.g. alder 70, ternary 30</source>
+        <translation>z. B. alder 70, ternary 30</translation>
+    </message>
+    <message>
+        <source>Species and weights the brush paints; empty: the chosen species</source>
+        <translation>Arten und Gewichte, die der Pinsel malt; leer: die gewählte Art</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>While there are unsaved edits, a recovery copy is written this often and a few seconds after the last edit. It never replaces your file.</source>
+        <translation>Solange ungespeicherte Änderungen vorliegen, wird in diesem Abstand und einige Sekunden nach der letzten Änderung eine Wiederherstellungskopie geschrieben. Sie ersetzt niemals Ihre Datei.</translation>
+    </message>
+    <message>
+        <source>Autosave every:</source>
+        <translation>Automatisch speichern alle:</translation>
+    </message>
+    <message>
+        <source>Recovery folder:</source>
+        <translation>Wiederherstellungsordner:</translation>
     </message>
 </context>
 <context>
@@ -960,6 +1088,40 @@
     <message>
         <source>; up to %1 m tall, DBH up to %2 cm; wood %3 m³, biomass %4 kg, CO₂ %5 kg</source>
         <translation>; bis zu %1 m hoch, BHD bis zu %2 cm; Holz %3 m³, Biomasse %4 kg, CO₂ %5 kg</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::ToolController</name>
+    <message>
+        <source>That tree was scattered by domain %1: its counts and extent are in Properties</source>
+        <translation>Dieser Baum wurde von Bereich %1 verteilt: Anzahlen und Ausdehnung des Bereichs finden Sie unter Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Move tree</source>
+        <translation>Baum verschieben</translation>
+    </message>
+    <message>
+        <source>Move trees</source>
+        <translation>Bäume verschieben</translation>
+    </message>
+    <message>
+        <source>Add a species first (Scene ▸ Add species from file…)</source>
+        <translation>Fügen Sie zuerst eine Art hinzu (Szene ▸ Art aus Datei hinzufügen…)</translation>
+    </message>
+    <message>
+        <source>A tree cannot stand inside an obstacle&apos;s footprint: the move was refused</source>
+        <translation>Ein Baum kann nicht auf der Grundfläche eines Hindernisses stehen: Das Verschieben wurde abgelehnt</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paint %n tree(s)</source>
+        <translation>
+            <numerusform>%n Baum malen</numerusform>
+            <numerusform>%n Bäume malen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A tree cannot stand inside an obstacle&apos;s footprint</source>
+        <translation>Ein Baum kann nicht auf der Grundfläche eines Hindernisses stehen</translation>
     </message>
 </context>
 <context>

@@ -25,15 +25,15 @@
     </message>
     <message>
         <source>%1: not available for this tree</source>
-        <translation>%1 : non disponible pour cet arbre</translation>
+        <translation>%1&#xa0;: non disponible pour cet arbre</translation>
     </message>
     <message>
         <source>%1: 0 (blue) – %2 (yellow)</source>
-        <translation>%1 : 0 (bleu) – %2 (jaune)</translation>
+        <translation>%1&#xa0;: 0 (bleu) – %2 (jaune)</translation>
     </message>
     <message>
         <source>; red: %1 internodes in branches below the shedding threshold %2, shed at the next cycle</source>
-        <translation>; rouge : %1 entre-nœuds dans des branches sous le seuil d&apos;élagage %2, élagués au cycle suivant</translation>
+        <translation>; rouge&#xa0;: %1 entre-nœuds dans des branches sous le seuil d&apos;élagage %2, élagués au cycle suivant</translation>
     </message>
     <message>
         <source>; no branch is below the shedding threshold %1</source>
@@ -166,7 +166,7 @@
     <name>QObject</name>
     <message>
         <source>%1: the species&apos; output node produced no mesh</source>
-        <translation>%1 : le nœud de sortie de l&apos;espèce n&apos;a produit aucun maillage</translation>
+        <translation>%1&#xa0;: le nœud de sortie de l&apos;espèce n&apos;a produit aucun maillage</translation>
     </message>
     <message numerus="yes">
         <source>%1 (%n trees)</source>
@@ -177,7 +177,7 @@
     </message>
     <message>
         <source>%1: the project has no trees and no obstacles</source>
-        <translation>%1 : le projet ne contient ni arbres ni obstacles</translation>
+        <translation>%1&#xa0;: le projet ne contient ni arbres ni obstacles</translation>
     </message>
 </context>
 <context>
@@ -188,7 +188,7 @@
     </message>
     <message>
         <source>Species or project (.sylva) to open (default: the ternary tree).</source>
-        <translation>Espèce ou projet (.sylva) à ouvrir (par défaut : l&apos;arbre ternaire).</translation>
+        <translation>Espèce ou projet (.sylva) à ouvrir (par défaut&#xa0;: l&apos;arbre ternaire).</translation>
     </message>
     <message>
         <source>Render the viewport to &lt;file&gt; (PNG) and exit.</source>
@@ -200,7 +200,7 @@
     </message>
     <message>
         <source>Colour the tree by &lt;mode&gt;: material, light, vigour, age or order.</source>
-        <translation>Colorer l&apos;arbre selon &lt;mode&gt; : material, light, vigour, age ou order.</translation>
+        <translation>Colorer l&apos;arbre selon &lt;mode&gt;&#xa0;: material, light, vigour, age ou order.</translation>
     </message>
     <message>
         <source>Run the Python script &lt;file&gt; in the editor (after opening the project, if one is given) and exit with its status.</source>
@@ -220,11 +220,11 @@
     </message>
     <message>
         <source>--size expects WxH between 16 and 8192, got &apos;%1&apos;</source>
-        <translation>--size attend LxH entre 16 et 8192, reçu « %1 »</translation>
+        <translation>--size attend LxH entre 16 et 8192, reçu «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <source>--color-by expects material, light, vigour, age or order, got &apos;%1&apos;</source>
-        <translation>--color-by attend material, light, vigour, age ou order, reçu « %1 »</translation>
+        <translation>--color-by attend material, light, vigour, age ou order, reçu «&#xa0;%1&#xa0;»</translation>
     </message>
 </context>
 <context>
@@ -235,23 +235,23 @@
     </message>
     <message>
         <source>Stop the generation; the last result stays</source>
-        <translation>Arrêter la génération ; le dernier résultat est conservé</translation>
+        <translation>Arrêter la génération&#xa0;; le dernier résultat est conservé</translation>
     </message>
     <message>
         <source>Generating: %1</source>
-        <translation>Génération : %1</translation>
+        <translation>Génération&#xa0;: %1</translation>
     </message>
     <message>
         <source>Regrowing: %1</source>
-        <translation>Nouvelle croissance : %1</translation>
+        <translation>Nouvelle croissance&#xa0;: %1</translation>
     </message>
     <message>
         <source>Generation cancelled; the last result stays</source>
-        <translation>Génération annulée ; le dernier résultat est conservé</translation>
+        <translation>Génération annulée&#xa0;; le dernier résultat est conservé</translation>
     </message>
     <message>
         <source>Updated in %1 ms (edit to screen, %2 tree(s) regrown)</source>
-        <translation>Mis à jour en %1 ms (de la modification à l&apos;affichage ; arbres recalculés : %2)</translation>
+        <translation>Mis à jour en %1 ms (de la modification à l&apos;affichage&#xa0;; arbres recalculés&#xa0;: %2)</translation>
     </message>
     <message>
         <source>Autosaved to %1</source>
@@ -414,10 +414,6 @@
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <source>&amp;Frame all</source>
-        <translation>&amp;Tout cadrer</translation>
-    </message>
-    <message>
         <source>Show &amp;grid</source>
         <translation>Afficher la &amp;grille</translation>
     </message>
@@ -483,11 +479,11 @@
     </message>
     <message>
         <source>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Procedural trees and forests for film and games: L-systems, space colonization and self-organizing trees, forests that react to the scene they stand in.&lt;/p&gt;&lt;p&gt;Scripting: Python (the Python Console, or &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Arbres et forêts procéduraux pour le cinéma et le jeu vidéo : L-systèmes, colonisation de l&apos;espace et arbres auto-organisés, des forêts qui réagissent à la scène dans laquelle elles se trouvent.&lt;/p&gt;&lt;p&gt;Scripts : Python (la console Python, ou &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
+        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Arbres et forêts procéduraux pour le cinéma et le jeu vidéo&#xa0;: L-systèmes, colonisation de l&apos;espace et arbres auto-organisés, des forêts qui réagissent à la scène dans laquelle elles se trouvent.&lt;/p&gt;&lt;p&gt;Scripts&#xa0;: Python (la console Python, ou &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Colouring by node attributes needs a single tree: the forest is shown in its materials</source>
-        <translation>La coloration selon les attributs des nœuds nécessite un seul arbre : la forêt est affichée avec ses matériaux</translation>
+        <translation>La coloration selon les attributs des nœuds nécessite un seul arbre&#xa0;: la forêt est affichée avec ses matériaux</translation>
     </message>
     <message>
         <source>No presets folder found (set SYLVA_PRESETS_DIR)</source>
@@ -515,11 +511,11 @@
     </message>
     <message>
         <source>Revert to the saved file and lose your edits?</source>
-        <translation>Revenir au fichier enregistré et perdre vos modifications ?</translation>
+        <translation>Revenir au fichier enregistré et perdre vos modifications&#xa0;?</translation>
     </message>
     <message>
         <source>No presets folder found: set SYLVA_PRESETS_DIR or open a species file with File ▸ Open species…</source>
-        <translation>Aucun dossier de préréglages trouvé : définissez SYLVA_PRESETS_DIR ou ouvrez un fichier d&apos;espèce avec Fichier ▸ Ouvrir une espèce ou un projet…</translation>
+        <translation>Aucun dossier de préréglages trouvé&#xa0;: définissez SYLVA_PRESETS_DIR ou ouvrez un fichier d&apos;espèce avec Fichier ▸ Ouvrir une espèce ou un projet…</translation>
     </message>
     <message>
         <source>Generated %1 in %2 ms</source>
@@ -546,7 +542,7 @@
     </message>
     <message>
         <source>%1 has unsaved edits. Save them first?</source>
-        <translation>%1 contient des modifications non enregistrées. Les enregistrer d&apos;abord ?</translation>
+        <translation>%1 contient des modifications non enregistrées. Les enregistrer d&apos;abord&#xa0;?</translation>
     </message>
     <message>
         <source>an untitled project</source>
@@ -554,11 +550,11 @@
     </message>
     <message>
         <source>Sylva found edits of %1 autosaved at %2 that were never saved (the editor did not close normally). Restore them?</source>
-        <translation>Sylva a trouvé des modifications de « %1 » enregistrées automatiquement le %2 mais jamais enregistrées (l&apos;éditeur ne s&apos;est pas fermé normalement). Les restaurer ?</translation>
+        <translation>Sylva a trouvé des modifications de «&#xa0;%1&#xa0;» enregistrées automatiquement le %2 mais jamais enregistrées (l&apos;éditeur ne s&apos;est pas fermé normalement). Les restaurer&#xa0;?</translation>
     </message>
     <message>
         <source>Restored the autosaved edits of %1</source>
-        <translation>Modifications de « %1 » enregistrées automatiquement restaurées</translation>
+        <translation>Modifications de «&#xa0;%1&#xa0;» enregistrées automatiquement restaurées</translation>
     </message>
     <message>
         <source>Add species</source>
@@ -570,7 +566,7 @@
     </message>
     <message>
         <source>Name in the project:</source>
-        <translation>Nom dans le projet :</translation>
+        <translation>Nom dans le projet&#xa0;:</translation>
     </message>
     <message>
         <source>Import obstacle</source>
@@ -582,7 +578,7 @@
     </message>
     <message>
         <source>%1 changed on disk. Reload it and lose your unsaved edits?</source>
-        <translation>%1 a été modifié sur le disque. Le recharger et perdre vos modifications non enregistrées ?</translation>
+        <translation>%1 a été modifié sur le disque. Le recharger et perdre vos modifications non enregistrées&#xa0;?</translation>
     </message>
     <message>
         <source>Could not read the viewport&apos;s image (no OpenGL context).</source>
@@ -635,6 +631,138 @@
         <source>Images (*.png *.jpg *.bmp)</source>
         <translation>Images (*.png *.jpg *.bmp)</translation>
     </message>
+    <message>
+        <source>Export only the selection</source>
+        <translation>Exporter uniquement la sélection</translation>
+    </message>
+    <message>
+        <source>File ▸ Export writes only the selected trees</source>
+        <translation>Fichier ▸ Exporter n&apos;écrit que les arbres sélectionnés</translation>
+    </message>
+    <message>
+        <source>Export with the viewport camera&apos;s detail</source>
+        <translation>Exporter avec le niveau de détail de la caméra de la vue</translation>
+    </message>
+    <message>
+        <source>File ▸ Export chooses each tree&apos;s level of detail for the viewport&apos;s camera instead of the project&apos;s camera</source>
+        <translation>Fichier ▸ Exporter choisit le niveau de détail de chaque arbre pour la caméra de la vue au lieu de la caméra du projet</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Préférences…</translation>
+    </message>
+    <message>
+        <source>&amp;Frame selection or all</source>
+        <translation>Cadrer la &amp;sélection ou tout</translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation>Outils</translation>
+    </message>
+    <message>
+        <source>Select</source>
+        <translation>Sélection</translation>
+    </message>
+    <message>
+        <source>Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a box); [ and ] step through the trees</source>
+        <translation>Cliquez sur un arbre ou un obstacle pour le sélectionner (Maj ajoute, Ctrl inverse la sélection, Ctrl+glisser trace un rectangle)&#xa0;; [ et ] parcourent les arbres</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Déplacer</translation>
+    </message>
+    <message>
+        <source>Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow keys nudge). They re-adapt to the obstacles when you let go</source>
+        <translation>Faites glisser les arbres sélectionnés sur le sol (Ctrl+glisser fait pivoter, Maj+glisser met à l&apos;échelle&#xa0;; les touches fléchées les décalent pas à pas). Ils se réadaptent aux obstacles quand vous relâchez</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Planter</translation>
+    </message>
+    <message>
+        <source>Click the ground to plant a tree of the chosen species</source>
+        <translation>Cliquez sur le sol pour planter un arbre de l&apos;espèce choisie</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Pinceau</translation>
+    </message>
+    <message>
+        <source>Paint trees of the species mix with the radius and density below; one stroke is one undo step</source>
+        <translation>Peindre des arbres du mélange d&apos;espèces avec le rayon et la densité ci-dessous&#xa0;; un coup de pinceau correspond à une étape d&apos;annulation</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <translation>Gomme</translation>
+    </message>
+    <message>
+        <source>Remove the hand-placed trees the brush passes over</source>
+        <translation>Supprimer les arbres placés à la main sur lesquels passe le pinceau</translation>
+    </message>
+    <message>
+        <source> Species: </source>
+        <translation> Espèce&#xa0;: </translation>
+    </message>
+    <message>
+        <source>The species the Place tool plants, and the Brush when no mix is given</source>
+        <translation>L&apos;espèce que plante l&apos;outil Planter, et que peint le pinceau si aucun mélange n&apos;est indiqué</translation>
+    </message>
+    <message>
+        <source> Radius: </source>
+        <translation> Rayon&#xa0;: </translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Brush and eraser radius, metres</source>
+        <translation>Rayon du pinceau et de la gomme, en mètres</translation>
+    </message>
+    <message>
+        <source> Density: </source>
+        <translation> Densité&#xa0;: </translation>
+    </message>
+    <message>
+        <source> /100 m²</source>
+        <translation> /100 m²</translation>
+    </message>
+    <message>
+        <source>Trees tried per 100 m² under the brush; spacing rules keep trunks out of each other&apos;s crowns and out of obstacles</source>
+        <translation>Arbres tentés par 100 m² sous le pinceau&#xa0;; des règles d&apos;espacement tiennent les troncs hors des houppiers des autres arbres et hors des obstacles</translation>
+    </message>
+    <message>
+        <source> Mix: </source>
+        <translation> Mélange&#xa0;: </translation>
+    </message>
+    <message>
+        <source>e.g. alder 70, ternary 30</source>
+        <translation>par ex. alder 70, ternary 30</translation>
+    </message>
+    <message>
+        <source>Species and weights the brush paints; empty: the chosen species</source>
+        <translation>Espèces et poids que peint le pinceau&#xa0;; vide&#xa0;: l&apos;espèce choisie</translation>
+    </message>
+    <message>
+        <source>Preferences</source>
+        <translation>Préférences</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>While there are unsaved edits, a recovery copy is written this often and a few seconds after the last edit. It never replaces your file.</source>
+        <translation>Tant qu&apos;il reste des modifications non enregistrées, une copie de récupération est écrite à cet intervalle et quelques secondes après la dernière modification. Elle ne remplace jamais votre fichier.</translation>
+    </message>
+    <message>
+        <source>Autosave every:</source>
+        <translation>Enregistrement automatique toutes les&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Recovery folder:</source>
+        <translation>Dossier de récupération&#xa0;:</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
@@ -647,7 +775,7 @@
     <name>sylva::ui::OutlinerModel</name>
     <message>
         <source>cannot read: %1</source>
-        <translation>lecture impossible : %1</translation>
+        <translation>lecture impossible&#xa0;: %1</translation>
     </message>
     <message>
         <source>Species (%1)</source>
@@ -675,7 +803,7 @@
     </message>
     <message>
         <source>Position %1, looking at %2: the LOD reference and the start view</source>
-        <translation>Position %1, visant %2 : la référence du LOD et la vue de départ</translation>
+        <translation>Position %1, visant %2&#xa0;: la référence du LOD et la vue de départ</translation>
     </message>
     <message>
         <source>Light direction %1</source>
@@ -687,7 +815,7 @@
     </message>
     <message>
         <source>From %1</source>
-        <translation>Source : %1</translation>
+        <translation>Source&#xa0;: %1</translation>
     </message>
     <message>
         <source>%1 #%2</source>
@@ -699,14 +827,14 @@
     </message>
     <message>
         <source>%1 %2: %3 trees</source>
-        <translation>%1 %2 : %3 arbres</translation>
+        <translation>%1 %2&#xa0;: %3 arbres</translation>
     </message>
 </context>
 <context>
     <name>sylva::ui::PropertiesPanel</name>
     <message>
         <source>Seed:</source>
-        <translation>Graine :</translation>
+        <translation>Graine&#xa0;:</translation>
     </message>
     <message>
         <source>Project</source>
@@ -714,11 +842,11 @@
     </message>
     <message>
         <source>File:</source>
-        <translation>Fichier :</translation>
+        <translation>Fichier&#xa0;:</translation>
     </message>
     <message>
         <source>The project seed: domain trees take their seeds from it and their ids</source>
-        <translation>La graine du projet : les arbres des zones calculent leur graine à partir de celle-ci et de leur identifiant</translation>
+        <translation>La graine du projet&#xa0;: les arbres des zones calculent leur graine à partir de celle-ci et de leur identifiant</translation>
     </message>
     <message>
         <source>not saved yet</source>
@@ -730,11 +858,11 @@
     </message>
     <message>
         <source>Species:</source>
-        <translation>Espèce :</translation>
+        <translation>Espèce&#xa0;:</translation>
     </message>
     <message>
         <source>Position:</source>
-        <translation>Position :</translation>
+        <translation>Position&#xa0;:</translation>
     </message>
     <message>
         <source> m</source>
@@ -746,7 +874,7 @@
     </message>
     <message>
         <source>Rotation:</source>
-        <translation>Rotation :</translation>
+        <translation>Rotation&#xa0;:</translation>
     </message>
     <message>
         <source>°</source>
@@ -758,7 +886,7 @@
     </message>
     <message>
         <source>Scale:</source>
-        <translation>Échelle :</translation>
+        <translation>Échelle&#xa0;:</translation>
     </message>
     <message>
         <source>Uniform size factor, 0.01 to 100</source>
@@ -766,7 +894,7 @@
     </message>
     <message>
         <source>Growth:</source>
-        <translation>Croissance :</translation>
+        <translation>Croissance&#xa0;:</translation>
     </message>
     <message>
         <source>Growth stage, 0.01 (sapling) to 1 (mature)</source>
@@ -774,7 +902,7 @@
     </message>
     <message>
         <source>The tree&apos;s own seed: another seed grows another tree of the species</source>
-        <translation>La graine propre à l&apos;arbre : une autre graine fait pousser un autre arbre de la même espèce</translation>
+        <translation>La graine propre à l&apos;arbre&#xa0;: une autre graine fait pousser un autre arbre de la même espèce</translation>
     </message>
     <message>
         <source>Obstacle %1</source>
@@ -782,11 +910,11 @@
     </message>
     <message>
         <source>Mesh:</source>
-        <translation>Maillage :</translation>
+        <translation>Maillage&#xa0;:</translation>
     </message>
     <message>
         <source>Translate:</source>
-        <translation>Translation :</translation>
+        <translation>Translation&#xa0;:</translation>
     </message>
     <message>
         <source>Moves the mesh, metres</source>
@@ -794,7 +922,7 @@
     </message>
     <message>
         <source>Rotate:</source>
-        <translation>Rotation :</translation>
+        <translation>Rotation&#xa0;:</translation>
     </message>
     <message>
         <source>Rotation about x, then y, then z, degrees</source>
@@ -810,7 +938,7 @@
     </message>
     <message>
         <source>Minimum x, z:</source>
-        <translation>Minimum x, z :</translation>
+        <translation>Minimum x, z&#xa0;:</translation>
     </message>
     <message>
         <source>Corner of the rectangle on the ground</source>
@@ -818,7 +946,7 @@
     </message>
     <message>
         <source>Maximum x, z:</source>
-        <translation>Maximum x, z :</translation>
+        <translation>Maximum x, z&#xa0;:</translation>
     </message>
     <message>
         <source>Opposite corner of the rectangle</source>
@@ -826,7 +954,7 @@
     </message>
     <message>
         <source>%1 trees:</source>
-        <translation>Arbres (%1) :</translation>
+        <translation>Arbres (%1)&#xa0;:</translation>
     </message>
     <message>
         <source>How many trees of this species the domain scatters</source>
@@ -838,11 +966,11 @@
     </message>
     <message>
         <source>Where the camera stands: the reference for level of detail</source>
-        <translation>Position de la caméra : la référence pour le niveau de détail</translation>
+        <translation>Position de la caméra&#xa0;: la référence pour le niveau de détail</translation>
     </message>
     <message>
         <source>Target:</source>
-        <translation>Cible :</translation>
+        <translation>Cible&#xa0;:</translation>
     </message>
     <message>
         <source>The point the camera looks at</source>
@@ -854,11 +982,11 @@
     </message>
     <message>
         <source>Direction:</source>
-        <translation>Direction :</translation>
+        <translation>Direction&#xa0;:</translation>
     </message>
     <message>
         <source>The direction sunlight travels (towards the ground: y &lt; 0); trees grow towards where it comes from</source>
-        <translation>La direction dans laquelle se propage la lumière du soleil (vers le sol : y &lt; 0) ; les arbres poussent vers sa provenance</translation>
+        <translation>La direction dans laquelle se propage la lumière du soleil (vers le sol&#xa0;: y &lt; 0)&#xa0;; les arbres poussent vers sa provenance</translation>
     </message>
     <message>
         <source>Species</source>
@@ -866,7 +994,7 @@
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; edit its parameters from the Python console (doc.set_param).</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Arbres placés à la main : %3. Renommez l&apos;espèce dans le synoptique ; modifiez ses paramètres depuis la console Python (doc.set_param).</translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Arbres placés à la main&#xa0;: %3. Renommez l&apos;espèce dans le synoptique&#xa0;; modifiez ses paramètres depuis la console Python (doc.set_param).</translation>
     </message>
     <message>
         <source>Stored in the project.</source>
@@ -874,61 +1002,61 @@
     </message>
     <message>
         <source>From %1 (stored in the project after its first edit).</source>
-        <translation>Source : %1 (stockée dans le projet après sa première modification).</translation>
+        <translation>Source&#xa0;: %1 (stockée dans le projet après sa première modification).</translation>
     </message>
 </context>
 <context>
     <name>sylva::ui::PythonConsole</name>
     <message>
         <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
-        <translation>Python %1 : sylva et doc = sylva.document() sont prêts. Essayez doc.trees() ou doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
+        <translation>Python %1&#xa0;: sylva et doc = sylva.document() sont prêts. Essayez doc.trees() ou doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
     </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>
     <message>
         <source>Species:</source>
-        <translation>Espèce :</translation>
+        <translation>Espèce&#xa0;:</translation>
     </message>
     <message>
         <source>File:</source>
-        <translation>Fichier :</translation>
+        <translation>Fichier&#xa0;:</translation>
     </message>
     <message>
         <source>Trees:</source>
-        <translation>Arbres :</translation>
+        <translation>Arbres&#xa0;:</translation>
     </message>
     <message>
         <source>Vertices:</source>
-        <translation>Sommets :</translation>
+        <translation>Sommets&#xa0;:</translation>
     </message>
     <message>
         <source>Triangles:</source>
-        <translation>Triangles :</translation>
+        <translation>Triangles&#xa0;:</translation>
     </message>
     <message>
         <source>Segments:</source>
-        <translation>Segments :</translation>
+        <translation>Segments&#xa0;:</translation>
     </message>
     <message>
         <source>Leaves:</source>
-        <translation>Feuilles :</translation>
+        <translation>Feuilles&#xa0;:</translation>
     </message>
     <message>
         <source>Height:</source>
-        <translation>Hauteur :</translation>
+        <translation>Hauteur&#xa0;:</translation>
     </message>
     <message>
         <source>Generation time:</source>
-        <translation>Temps de génération :</translation>
+        <translation>Temps de génération&#xa0;:</translation>
     </message>
     <message>
         <source>CO₂ stored:</source>
-        <translation>CO₂ stocké :</translation>
+        <translation>CO₂ stocké&#xa0;:</translation>
     </message>
     <message>
         <source>Selection:</source>
-        <translation>Sélection :</translation>
+        <translation>Sélection&#xa0;:</translation>
     </message>
     <message>
         <source>%1 m</source>
@@ -955,7 +1083,7 @@
     </message>
     <message>
         <source>; up to %1 m tall, DBH up to %2 cm; wood %3 m³, biomass %4 kg, CO₂ %5 kg</source>
-        <translation>; jusqu&apos;à %1 m de haut, DHP jusqu&apos;à %2 cm ; bois %3 m³, biomasse %4 kg, CO₂ %5 kg</translation>
+        <translation>; jusqu&apos;à %1 m de haut, DHP jusqu&apos;à %2 cm&#xa0;; bois %3 m³, biomasse %4 kg, CO₂ %5 kg</translation>
     </message>
     <message>
         <source>Generating %1…</source>
@@ -963,14 +1091,48 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::ToolController</name>
+    <message>
+        <source>That tree was scattered by domain %1: its counts and extent are in Properties</source>
+        <translation>Cet arbre a été dispersé par la zone %1&#xa0;: le nombre d&apos;arbres et l&apos;étendue de la zone se trouvent dans Propriétés</translation>
+    </message>
+    <message>
+        <source>Move tree</source>
+        <translation>Déplacer l&apos;arbre</translation>
+    </message>
+    <message>
+        <source>Move trees</source>
+        <translation>Déplacer les arbres</translation>
+    </message>
+    <message>
+        <source>Add a species first (Scene ▸ Add species from file…)</source>
+        <translation>Ajoutez d&apos;abord une espèce (Scène ▸ Ajouter une espèce depuis un fichier…)</translation>
+    </message>
+    <message>
+        <source>A tree cannot stand inside an obstacle&apos;s footprint: the move was refused</source>
+        <translation>Un arbre ne peut pas se trouver dans l&apos;emprise au sol d&apos;un obstacle&#xa0;: le déplacement a été refusé</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paint %n tree(s)</source>
+        <translation>
+            <numerusform>Peindre %n arbre</numerusform>
+            <numerusform>Peindre %n arbres</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>A tree cannot stand inside an obstacle&apos;s footprint</source>
+        <translation>Un arbre ne peut pas se trouver dans l&apos;emprise au sol d&apos;un obstacle</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::Viewport</name>
     <message>
         <source>OpenGL 3.3 core profile is not available (got %1.%2).</source>
-        <translation>Le profil core d&apos;OpenGL 3.3 n&apos;est pas disponible (obtenu : %1.%2).</translation>
+        <translation>Le profil core d&apos;OpenGL 3.3 n&apos;est pas disponible (obtenu&#xa0;: %1.%2).</translation>
     </message>
     <message>
         <source>The mesh has an index out of range; it is not drawn.</source>
-        <translation>Le maillage contient un indice hors limites ; il n&apos;est pas dessiné.</translation>
+        <translation>Le maillage contient un indice hors limites&#xa0;; il n&apos;est pas dessiné.</translation>
     </message>
 </context>
 </TS>
