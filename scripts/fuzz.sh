@@ -20,6 +20,7 @@ cmake --preset fuzz >/dev/null || exit 1
 cmake --build --preset fuzz -j "$JOBS" || exit 1
 
 summary=build/fuzz/fuzz-summary.txt
+export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0"
 failed=()
 for name in "${harnesses[@]}"; do
   bin=build/fuzz/tests/fuzz/fuzz_$name

@@ -8,6 +8,7 @@ set -uo pipefail
 bin=$1 name=$2 src=$3 work=$4 seconds=$5
 corpus=$src/corpus/$name regressions=$src/regressions/$name dict=$src/dicts/$name.dict
 limits=(-rss_limit_mb=2048 -timeout=10)
+export LSAN_OPTIONS="suppressions=$src/lsan.supp:print_suppressions=0"
 
 fail() {
   echo "run-fuzzer: $name: FAILED: $*" >&2
