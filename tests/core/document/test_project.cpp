@@ -172,6 +172,33 @@ TEST(Project, ImportsTheReferenceSceneDescription) {
     EXPECT_EQ(doc::serializeProject(doc::parseProject(saved, dir + "/scene.sylva")), saved);
 }
 
+// Found while fuzzing the import (fuzz_project, UBSan): two quantities of one species summed
+// past INT_MAX. Quantities are limited like a project's counts: [0, 1e8], also summed.
+TEST(Project, ReferenceSceneQuantitiesAreLimited) {
+    const QString dir = QDir::tempPath() + "/sylva-test-refscene";
+    QDir().mkpath(dir);
+    auto importError = [&](const char* json) -> std::string {
+        QFile f(dir + "/quantities.json");
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(json);
+        f.close();
+        try {
+            doc::importReferenceScene(dir + "/quantities.json");
+        } catch (const InvalidInput& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string sum = importError(
+        R"({"plants":[{"file":"a.txt","quantity":60000000},{"file":"a.txt","quantity":60000000}]})");
+    EXPECT_NE(sum.find("the quantities of \"a\" must be whole numbers in [0, 1e8], also summed"),
+              std::string::npos)
+        << sum;
+    EXPECT_NE(importError(R"({"plants":[{"file":"a.txt","quantity":-5}]})").find("[0, 1e8]"),
+              std::string::npos);
+    EXPECT_EQ(importError(R"({"plants":[{"file":"a.txt","quantity":100000000}]})"), "");
+}
+
 TEST(Project, InlineSpeciesGraphsBecomeSceneSpecies) {
     const char* json = R"({"format":"sylva-project","format_version":1,
       "species":[{"name":"bush","graph":{"nodes":[
