@@ -105,18 +105,38 @@ ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTrans
     // Points and lines are removed rather than triangulated: they have no area to collide with.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    // ValidateDataStructure runs before the other steps and refuses face indices past the
-    // vertex arrays, which some importers (PLY) pass through and the steps after it would follow
-    // out of bounds (found by fuzz_obstacle; tests/fuzz/regressions/obstacle).
-    const aiScene* scene = importer.ReadFile(
-        file.string(), aiProcess_ValidateDataStructure | aiProcess_Triangulate |
-                           aiProcess_PreTransformVertices | aiProcess_SortByPType |
-                           aiProcess_JoinIdenticalVertices);
-    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
+    // The file is read and validated first, the other steps run after: ValidateDataStructure
+    // refuses face indices past the vertex arrays, which some importers (PLY) pass through and
+    // the later steps would follow out of bounds; and the primitive types an importer claims are
+    // recomputed from the faces, as Triangulate asserts (aborts) when a mesh claims polygons it
+    // does not have or has a face without indices. Both found by fuzz_obstacle
+    // (tests/fuzz/regressions/obstacle).
+    const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
+    auto refuse = [&]() {
         std::string why = importer.GetErrorString();
         if (why.empty()) why = "unknown format or incomplete scene";
         throw InvalidInput("obstacle mesh " + quoted(file) + ": cannot read it: " + why);
+    };
+    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) refuse();
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        aiMesh* mesh = scene->mMeshes[m];
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const unsigned n = mesh->mFaces[f].mNumIndices;
+            if (n == 0) // Triangulate would count it as a triangle and assert too
+                throw InvalidInput("obstacle mesh " + quoted(file) + ": cannot read it: face " +
+                                   std::to_string(f) + " of mesh " + std::to_string(m) +
+                                   " has no vertices");
+            types |= n == 1   ? aiPrimitiveType_POINT
+                     : n == 2 ? aiPrimitiveType_LINE
+                     : n == 3 ? aiPrimitiveType_TRIANGLE
+                              : aiPrimitiveType_POLYGON;
+        }
+        mesh->mPrimitiveTypes = types;
     }
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                                         aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
+    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) refuse();
 
     std::size_t faces = 0;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m)

@@ -101,6 +101,19 @@ TEST(MeshFileCheck, RefusesFaceIndicesPastTheVertices) {
     EXPECT_NE(m.find("badindex.ply': cannot read it"), std::string::npos) << m;
 }
 
+// Found by fuzz_obstacle: a PLY face with no indices made Assimp's Triangulate step assert
+// (abort the process); it is refused with a message instead.
+TEST(MeshFileCheck, RefusesFacesWithoutVertices) {
+    const auto file = writeFile("emptyface.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
+                                                 "property float x\nproperty float y\n"
+                                                 "property float z\nelement face 2\n"
+                                                 "property list uchar int vertex_indices\n"
+                                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n"
+                                                 "3 0 1 2\n0\n");
+    const std::string m = messageOf<InvalidInput>(file, kMaxObstacleTriangles);
+    EXPECT_NE(m.find("emptyface.ply': cannot read it"), std::string::npos) << m;
+}
+
 // The limit on what a PLY header may declare: Assimp reserves memory for it before reading.
 TEST(MeshFileCheck, LimitsDeclaredPlyElementCounts) {
     const auto file = writeFile("huge.ply", "ply\nformat binary_little_endian 1.0\n"
