@@ -26,7 +26,8 @@ Rng generationRng(std::uint64_t seed, int gen) {
     msg += predicted == kNone ? std::string("more than ") + std::to_string(limit)
                               : std::to_string(predicted);
     msg += " modules, more than the symbol limit of " + std::to_string(limit) +
-           "; derive fewer generations or raise the limit";
+           "; derive fewer generations or raise the limit (the lsystem node's symbol_limit, "
+           "sylva-cli expand --limit; at most 2000000000)";
     throw LimitExceeded(msg);
 }
 

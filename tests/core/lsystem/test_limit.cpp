@@ -25,7 +25,8 @@ TEST(Limit, FastPathPredictsTheExactLength) {
     EXPECT_EQ(derive(g, options(9, std::nullopt, 512)).size(), 512u);
     EXPECT_EQ(limitMessage(g, 10, 512), "generation 10 would hold 1024 modules, more than the "
                                         "symbol limit of 512; derive fewer generations or raise "
-                                        "the limit");
+                                        "the limit (the lsystem node's symbol_limit, sylva-cli "
+                                        "expand --limit; at most 2000000000)");
     // A thousand generations stop at generation 10 without overflowing the counts.
     EXPECT_NE(limitMessage(g, 1000, 1000).find("generation 10 "), std::string::npos);
     // The default limit is 20 million: 2^25 > 2e7 fails at generation 25.
