@@ -31,7 +31,9 @@ for name in "${harnesses[@]}"; do
   [[ -d tests/fuzz/regressions/$name ]] && dirs+=("tests/fuzz/regressions/$name")
   echo "fuzz.sh: $name for $seconds s"
   start=$(date +%s)
-  OMP_NUM_THREADS=1 nice -n 19 "$bin" -rss_limit_mb=2048 -timeout=10 \
+  maxlen=8192 # as in run-fuzzer.sh: mutations stay small, large regressions are read whole
+  [[ $name == fbxfix ]] && maxlen=32768
+  OMP_NUM_THREADS=1 nice -n 19 "$bin" -rss_limit_mb=2048 -timeout=10 -max_len=$maxlen \
     -dict="tests/fuzz/dicts/$name.dict" -max_total_time="$seconds" -print_final_stats=1 \
     -artifact_prefix="$findings/" "${dirs[@]}" >"$log" 2>&1
   status=$?

@@ -38,8 +38,11 @@ dirs=("$work/corpus" "$corpus")
 [[ -d $regressions ]] && dirs+=("$regressions")
 dictopt=()
 [[ -f $dict ]] && dictopt=(-dict="$dict")
+# Mutations stay small (fast) even though some regressions are large; those are replayed whole.
+maxlen=8192
+[[ $name == fbxfix ]] && maxlen=32768
 echo "run-fuzzer: $name: fuzzing for $seconds s"
-if ! "$bin" "${limits[@]}" "${dictopt[@]}" -max_total_time="$seconds" -print_final_stats=1 \
+if ! "$bin" "${limits[@]}" "${dictopt[@]}" -max_len=$maxlen -max_total_time="$seconds" -print_final_stats=1 \
   -artifact_prefix="$work/artifacts/" "${dirs[@]}" >fuzz.log 2>&1; then
   tail -n 80 fuzz.log >&2
   found=$(ls "$work/artifacts" 2>/dev/null | head -n 1)
