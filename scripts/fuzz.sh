@@ -39,7 +39,7 @@ for name in "${harnesses[@]}"; do
   status=$?
   elapsed=$(($(date +%s) - start))
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
-  last=$(grep -E '^#[0-9]+ ' "$log" | tail -n 1)
+  last=$(grep -E '^#[0-9]+[[:space:]]' "$log" | tail -n 1)
   cov=$(grep -o 'cov: [0-9]*' <<<"$last" | grep -o '[0-9]*')
   ft=$(grep -o 'ft: [0-9]*' <<<"$last" | grep -o '[0-9]*')
   corp=$(grep -o 'corp: [0-9]*' <<<"$last" | grep -o '[0-9]*')
