@@ -152,6 +152,24 @@ TEST(UpgradeChain, RunsStepsInOrderAndOnlyFromTheFilesVersion) {
     EXPECT_THROW(doc::upgradeFormat(gap.objectRef(), "f", 3, {steps[1]}, "a", true), InvalidInput);
 }
 
+// Found by fuzz_species (UBSan): a format_version of 1e116 was converted to int. Versions are
+// whole numbers from 1 to 1e9; a larger one is an error, not a "newer file" warning.
+TEST(UpgradeChain, HugeVersionsAreRefused) {
+    for (const char* v : {"1e116", "4294967296", "1000000001"}) {
+        graph::Value root =
+            graph::Value::parseJson(std::string(R"({"format":"f","format_version":)") + v + "}");
+        try {
+            doc::upgradeFormat(root.objectRef(), "f", 1, {}, "a.json", false);
+            ADD_FAILURE() << v;
+        } catch (const InvalidInput& e) {
+            EXPECT_STREQ(e.what(),
+                         "a.json: \"format_version\" must be a whole number from 1 to 1000000000");
+        }
+    }
+    graph::Value newer = graph::Value::parseJson(R"({"format":"f","format_version":1000000000})");
+    EXPECT_EQ(doc::upgradeFormat(newer.objectRef(), "f", 1, {}, "a", false).warnings.size(), 1u);
+}
+
 TEST(Project, ImportsTheReferenceSceneDescription) {
     const QString dir = QDir::tempPath() + "/sylva-test-refscene";
     QDir().mkpath(dir);
