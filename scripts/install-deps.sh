@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages Sylva needs to build, test and run — only the missing ones.
+# Installs the Debian packages Sylva needs to build, test and run — only the missing ones
+# (clang, its runtime libraries and libomp build the libFuzzer harnesses of the fuzz preset).
 # Uses sudo when not root. Called by ./run.sh and ./test.sh; safe to run repeatedly.
 set -euo pipefail
 
@@ -11,6 +12,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth libgl1-mesa-dri clang-format
   python3-dev pybind11-dev python3-numpy python3-pytest
+  clang libclang-rt-14-dev libomp-dev
 )
 # Optional extras, installed best-effort (a test that needs one skips visibly without it):
 #   SYLVA_EXTRA_PACKAGES="blender python3-numpy f3d" ./test.sh

@@ -10,6 +10,11 @@ Args::Args(const std::vector<std::string>& argv, const std::vector<std::string>&
     auto isIn = [](const std::vector<std::string>& list, const std::string& s) {
         return std::find(list.begin(), list.end(), s) != list.end();
     };
+    // Help wins over any other mistake on the line, as in most tools.
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+        if (argv[i] == "--help" || argv[i] == "-h") throw HelpRequested();
+        if (isIn(valueOptions, argv[i])) ++i; // its value may be anything, even "-h"
+    }
     for (std::size_t i = 0; i < argv.size(); ++i) {
         const std::string& a = argv[i];
         if (a.size() < 2 || a[0] != '-' || (a[1] >= '0' && a[1] <= '9')) {

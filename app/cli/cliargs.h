@@ -16,10 +16,15 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// `--help` or `-h` among a command's options: main() prints that command's help, exit status 0.
+class HelpRequested {};
+
 /// A tiny argument reader: positional arguments plus options that may repeat.
 class Args {
 public:
     /// \p valueOptions take a value ("-o out.obj" or "--seed=3"); \p flags take none.
+    /// \throw HelpRequested when `--help` or `-h` is an option (not another option's value),
+    /// wherever it is; UsageError for an unknown option or a missing value.
     Args(const std::vector<std::string>& argv, const std::vector<std::string>& valueOptions,
          const std::vector<std::string>& flags);
 

@@ -1,5 +1,6 @@
 #include "cliargs.h"
 #include "commands.h"
+#include "usage.h"
 
 #include "engine/lsystem/derivation.h"
 #include "engine/lsystem/grammar.h"
@@ -13,8 +14,7 @@ namespace sylva::cli {
 
 int runExpand(const std::vector<std::string>& argv) {
     const Args args(argv, {"-n", "--generations", "--seed", "--limit"}, {});
-    if (args.positional().size() != 1)
-        throw UsageError("usage: sylva-cli expand <grammar> [-n GENERATIONS] [--seed S]");
+    if (args.positional().size() != 1) throw UsageError(commandUsageLine("expand"));
     const std::string& path = args.positional()[0];
     std::ifstream in(path, std::ios::binary);
     if (!in) throw IoError("cannot read " + path);

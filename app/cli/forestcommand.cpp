@@ -2,6 +2,7 @@
 #include "clishared.h"
 #include "commands.h"
 #include "terminalprogress.h"
+#include "usage.h"
 
 #include "document/project.h"
 #include "document/scenebuild.h"
@@ -43,10 +44,7 @@ int runForest(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
                      "--naive-placement", "--fsync", "--full-precision"});
-    if (args.positional().size() != 1)
-        throw UsageError(
-            "usage: sylva-cli forest <project.sylva> -o out.{obj,glb,fbx} "
-            "[--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--fsync] [--full-precision]");
+    if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
     if (!output) throw UsageError("forest needs an output file: -o out.obj");

@@ -1,5 +1,6 @@
 #include "cliargs.h"
 #include "commands.h"
+#include "usage.h"
 
 #include "document/speciesfile.h"
 #include "engine/export/lodexport.h"
@@ -17,9 +18,7 @@ using exporter::resourcesDir;
 
 int runLods(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--seed"}, {"--json", "--no-glb", "--no-obj"});
-    if (args.positional().size() != 1)
-        throw UsageError("usage: sylva-cli lods <species.json|grammar> -o <folder> [--seed S] "
-                         "[--json] [--no-glb] [--no-obj]");
+    if (args.positional().size() != 1) throw UsageError(commandUsageLine("lods"));
     auto dir = args.value("-o");
     if (!dir) dir = args.value("--output");
     if (!dir) throw UsageError("lods needs an output folder: -o <folder>");

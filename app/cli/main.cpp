@@ -1,6 +1,7 @@
 // sylva-cli: the headless front end of the Sylva engine (batch and farm use).
 #include "cliargs.h"
 #include "commands.h"
+#include "usage.h"
 
 #include "document/errormessage.h"
 #include "engine/util/error.h"
@@ -27,7 +28,9 @@ const char* kUsage =
     "       [--fsync] [--full-precision]\n"
     "  stats <project.sylva|species.json> [--json]       height, DBH, biomass, CO2\n"
     "  lods <species.json> -o <folder> [--json]          LOD chain for game engines\n"
-    "  help                                    show this text\n"
+    "  help [command]                          show this text, or one command's help\n"
+    "\n"
+    "'sylva-cli <command> --help' (or -h) shows a command's arguments and options.\n"
     "\n"
     "OBJ output: --fsync waits until the file is on disk before renaming it into place (atomic\n"
     "either way). Compact OBJ (0.1 mm positions, relative face indices, ~17 % smaller) is the\n"
@@ -57,6 +60,13 @@ int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 2, argv + argc);
     try {
         if (command == "help" || command == "--help" || command == "-h") {
+            if (args.size() == 1) {
+                const char* help = commandHelp(args[0]);
+                if (!help) throw UsageError("unknown command '" + args[0] + "'");
+                std::fputs(help, stdout);
+                return kOk;
+            }
+            if (!args.empty()) throw UsageError(command + " takes at most one command name");
             std::fputs(kUsage, stdout);
             return kOk;
         }
@@ -66,6 +76,9 @@ int main(int argc, char** argv) {
         if (command == "stats") return runStats(args);
         if (command == "lods") return runLods(args);
         throw UsageError("unknown command '" + command + "'");
+    } catch (const HelpRequested&) {
+        std::fputs(commandHelp(command), stdout);
+        return kOk;
     } catch (const sylva::Cancelled&) {
         std::fprintf(stderr, "sylva-cli: interrupted; no output written\n");
         return 130;

@@ -2,6 +2,7 @@
 #include "clishared.h"
 #include "commands.h"
 #include "terminalprogress.h"
+#include "usage.h"
 
 #include "document/project.h"
 #include "document/scenebuild.h"
@@ -36,9 +37,7 @@ void printTable(const forest::SceneMetrics& m, bool perTree) {
 
 int runStats(const std::vector<std::string>& argv) {
     const Args args(argv, {"--seed"}, {"--json"});
-    if (args.positional().size() != 1)
-        throw UsageError(
-            "usage: sylva-cli stats <project.sylva|species.json|grammar> [--json] [--seed S]");
+    if (args.positional().size() != 1) throw UsageError(commandUsageLine("stats"));
     const std::string path = args.positional()[0];
     const bool isProject = path.ends_with(".sylva") || path.ends_with(".scene.json");
     forest::SceneMetrics metrics;

@@ -1,6 +1,7 @@
 #include "cliargs.h"
 #include "clishared.h"
 #include "commands.h"
+#include "usage.h"
 
 #include "document/speciesfile.h"
 #include "engine/export/treeexport.h"
@@ -36,10 +37,7 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
 int runTree(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set"},
                     {"--stats", "--fsync", "--compact"});
-    if (args.positional().size() != 1)
-        throw UsageError(
-            "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{obj,glb,fbx} [-n N] "
-            "[--seed S] [--set node.param=value]... [--stats] [--fsync] [--compact]");
+    if (args.positional().size() != 1) throw UsageError(commandUsageLine("tree"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
     if (!output) throw UsageError("tree needs an output file: -o out.obj");

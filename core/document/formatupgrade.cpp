@@ -18,8 +18,9 @@ UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& forma
     auto version = root.find("format_version");
     if (version == root.end() || !version->second.isNumber() ||
         version->second.toNumber() != std::floor(version->second.toNumber()) ||
-        version->second.toNumber() < 1)
-        throw InvalidInput(where + "\"format_version\" must be a whole number >= 1");
+        version->second.toNumber() < 1 || version->second.toNumber() > 1e9) // fits an int
+        throw InvalidInput(where +
+                           "\"format_version\" must be a whole number from 1 to 1000000000");
 
     UpgradeReport report;
     report.fileVersion = static_cast<int>(version->second.toNumber());

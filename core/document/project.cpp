@@ -315,7 +315,13 @@ Project importReferenceScene(const QString& path) {
         s.name = plant.string(
             "name", QFileInfo(QString::fromStdString(s.file)).completeBaseName().toStdString());
         if (!p.findSpecies(s.name)) p.species.push_back(s);
-        domain.counts[s.name] += static_cast<int>(plant.integer("quantity", 1));
+        // Summed per species within the limit of a project's counts (an int overflowed here).
+        const std::int64_t quantity = plant.integer("quantity", 1);
+        int& count = domain.counts[s.name];
+        if (quantity < 0 || quantity > 100'000'000 - count)
+            throw InvalidInput(name + ": the quantities of \"" + s.name +
+                               "\" must be whole numbers in [0, 1e8], also summed");
+        count += static_cast<int>(quantity);
     }
     p.domains.push_back(domain);
     if (const Value* meshes = root.find("collision_meshes"))

@@ -101,6 +101,33 @@ bad_usage_exit_2)
   run_cli 2 expand "$DATA/lsystem/algae.lsys" --bogus
   run_cli 2 expand "$DATA/lsystem/algae.lsys" -n lots
   run_cli 2 ;;
+help_every_command)
+  # sylva-cli <command> --help (and -h, and help <command>) prints that command's help on
+  # stdout and exits 0, wherever --help stands and whatever else is on the line.
+  for cmd in expand tree forest stats lods; do
+    for form in "$cmd --help" "$cmd -h" "help $cmd" "$cmd $DATA/lsystem/bush.lsys --bogus --help"; do
+      # shellcheck disable=SC2086
+      run_cli 0 $form
+      head -n 1 out.txt | grep -q "^usage: sylva-cli $cmd " || fail "'$form' printed: $(cat out.txt)"
+      grep -q -- "-h, --help" out.txt || fail "'$form' does not list --help"
+      [[ ! -s err.txt ]] || fail "'$form' wrote to stderr: $(cat err.txt)"
+    done
+  done
+  run_cli 0 forest --help
+  for opt in --output --camera --threads --tile --stats --no-lod --no-adapt --no-neighbours \
+    --instance-tables --naive-placement --full-precision --fsync; do
+    grep -q -- "$opt" out.txt || fail "forest --help does not list $opt"
+  done
+  run_cli 0 tree --help
+  for opt in --output --generations --seed --set --stats --compact --fsync; do
+    grep -q -- "$opt" out.txt || fail "tree --help does not list $opt"
+  done
+  # -h as the value of an option is that value, not a request for help.
+  run_cli 2 tree -o -h
+  grep -q "usage: sylva-cli tree" err.txt || fail "no usage line: $(cat err.txt)"
+  run_cli 0 --help
+  grep -q "help \[command\]" out.txt || fail "general help: $(cat out.txt)"
+  run_cli 2 help frobnicate ;;
 runaway_limit)
   run_cli 1 expand "$DATA/lsystem/runaway.lsys"
   grep -qi "generation" err.txt || fail "limit message does not name the generation: $(cat err.txt)"

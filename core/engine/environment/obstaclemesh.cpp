@@ -12,6 +12,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/environment/meshfilecheck.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -85,7 +86,8 @@ ObstacleMesh makeObstacleMesh(std::string name, const std::vector<glm::vec3>& ve
     return mesh;
 }
 
-ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTransform& transform) {
+ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTransform& transform,
+                              std::size_t maxTriangles) {
     std::error_code ec;
     if (!std::filesystem::exists(file, ec))
         throw IoError("obstacle mesh " + quoted(file) + ": file not found");
@@ -97,19 +99,52 @@ ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTrans
         throw IoError("obstacle mesh " + quoted(file) + ": cannot open the file for reading");
     if (std::filesystem::file_size(file, ec) == 0)
         throw InvalidInput("obstacle mesh " + quoted(file) + ": the file is empty");
+    checkMeshFile(file, maxTriangles);
 
     Assimp::Importer importer;
     // Points and lines are removed rather than triangulated: they have no area to collide with.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene = importer.ReadFile(
-        file.string(), aiProcess_Triangulate | aiProcess_PreTransformVertices |
-                           aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
-    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
+    // The file is read and validated first, the other steps run after: ValidateDataStructure
+    // refuses face indices past the vertex arrays, which some importers (PLY) pass through and
+    // the later steps would follow out of bounds; and the primitive types an importer claims are
+    // recomputed from the faces, as Triangulate asserts (aborts) when a mesh claims polygons it
+    // does not have or has a face without indices. Both found by fuzz_obstacle
+    // (tests/fuzz/regressions/obstacle).
+    const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
+    auto refuse = [&]() {
         std::string why = importer.GetErrorString();
         if (why.empty()) why = "unknown format or incomplete scene";
         throw InvalidInput("obstacle mesh " + quoted(file) + ": cannot read it: " + why);
+    };
+    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) refuse();
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        aiMesh* mesh = scene->mMeshes[m];
+        unsigned types = 0;
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const unsigned n = mesh->mFaces[f].mNumIndices;
+            if (n == 0) // Triangulate would count it as a triangle and assert too
+                throw InvalidInput("obstacle mesh " + quoted(file) + ": cannot read it: face " +
+                                   std::to_string(f) + " of mesh " + std::to_string(m) +
+                                   " has no vertices");
+            types |= n == 1   ? aiPrimitiveType_POINT
+                     : n == 2 ? aiPrimitiveType_LINE
+                     : n == 3 ? aiPrimitiveType_TRIANGLE
+                              : aiPrimitiveType_POLYGON;
+        }
+        mesh->mPrimitiveTypes = types;
     }
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                                         aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
+    if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) refuse();
+
+    std::size_t faces = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+        faces += scene->mMeshes[m]->mNumFaces;
+    if (faces > maxTriangles)
+        throw LimitExceeded("obstacle mesh " + quoted(file) + " has " + std::to_string(faces) +
+                            " triangles, more than the limit of " + std::to_string(maxTriangles) +
+                            "; decimate the mesh");
 
     std::vector<glm::vec3> vertices;
     std::vector<glm::uvec3> triangles;

@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/environment/meshfilecheck.h"
+
 namespace sylva::env {
 
 /// Placement of an obstacle mesh in the scene: scale, then rotate about x, then y, then z
@@ -44,9 +46,13 @@ ObstacleMesh makeObstacleMesh(std::string name, const std::vector<glm::vec3>& ve
 /// ... whatever the installed Assimp reads), node transforms baked in, then \p transform applied.
 /// \throw IoError "obstacle mesh '<file>': file not found" or not readable.
 /// \throw InvalidInput "obstacle mesh '<file>': ..." when Assimp cannot parse it, or when it has
-/// no valid triangle (empty, only points/lines, or all degenerate).
+/// no valid triangle (empty, only points/lines, or all degenerate), or when checkMeshFile()
+/// refuses it (a malformed PLY header).
+/// \throw LimitExceeded "obstacle mesh '<file>' has N triangles, more than the limit of ..."
+/// past \p maxTriangles (kMaxObstacleTriangles unless a test asks for less).
 ObstacleMesh loadObstacleMesh(const std::filesystem::path& file,
-                              const MeshTransform& transform = {});
+                              const MeshTransform& transform = {},
+                              std::size_t maxTriangles = kMaxObstacleTriangles);
 
 /// A closed, outward-facing axis-aligned box (12 triangles); for tests and simple walls.
 ObstacleMesh makeBoxMesh(const glm::vec3& lo, const glm::vec3& hi, std::string name = "box");

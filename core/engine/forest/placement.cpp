@@ -177,7 +177,8 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
                 throw InvalidInput(where + ": unknown species '" + name + "' in counts");
             if (count > kMaxTrees || total + count > kMaxTrees)
                 throw LimitExceeded("a forest is limited to " + std::to_string(kMaxTrees) +
-                                    " trees");
+                                    " trees; lower the domains' counts or split the scene into "
+                                    "several projects");
             total += count;
             slotsPerDomain[d].insert(slotsPerDomain[d].end(), count, it->second);
         }

@@ -26,8 +26,18 @@ Rng generationRng(std::uint64_t seed, int gen) {
     msg += predicted == kNone ? std::string("more than ") + std::to_string(limit)
                               : std::to_string(predicted);
     msg += " modules, more than the symbol limit of " + std::to_string(limit) +
-           "; derive fewer generations or raise the limit";
+           "; derive fewer generations or raise the limit (the lsystem node's symbol_limit, "
+           "sylva-cli expand --limit; at most 2000000000)";
     throw LimitExceeded(msg);
+}
+
+[[noreturn]] void throwParamLimit(int gen, std::size_t symbolLimit) {
+    throw LimitExceeded("generation " + std::to_string(gen) + " would hold more than " +
+                        std::to_string(paramLimitOf(symbolLimit)) +
+                        " module parameters, twice the symbol limit of " +
+                        std::to_string(symbolLimit) +
+                        "; derive fewer generations or raise the limit (the lsystem node's "
+                        "symbol_limit, sylva-cli expand --limit; at most 2000000000)");
 }
 
 [[noreturn]] void throwEval(const Grammar& g, const Expression& e, const ExprError& err,
@@ -153,7 +163,7 @@ struct GroupInfo {
 class Deriver {
 public:
     Deriver(const Grammar& g, std::size_t limit, Progress& progress)
-        : mG(g), mLimit(limit), mProgress(progress) {
+        : mG(g), mLimit(limit), mParamLimit(paramLimitOf(limit)), mProgress(progress) {
         mInfo.resize(g.groups.size());
         for (std::size_t i = 0; i < g.groups.size(); ++i) {
             GroupInfo& info = mInfo[i];
@@ -256,6 +266,7 @@ public:
                                       cur.params.begin() + static_cast<std::ptrdiff_t>(mOffsets[i]),
                                       cur.params.begin() +
                                           static_cast<std::ptrdiff_t>(mOffsets[i] + arity));
+                    if (out.params.size() > mParamLimit) throwParamLimit(gen, mLimit);
                 }
                 if (out.symbols.size() > mLimit) throwLimit(gen, mLimit, kNone);
             }
@@ -380,11 +391,13 @@ private:
                 if (!e.evaluate(slots, rng, v, err)) throwEval(mG, e, err, rule, gen);
                 out.params.push_back(v);
             }
+            if (out.params.size() > mParamLimit) throwParamLimit(gen, mLimit);
         }
     }
 
     const Grammar& mG;
     std::size_t mLimit;
+    std::size_t mParamLimit;
     Progress& mProgress;
     std::vector<GroupInfo> mInfo;
     std::size_t mMaxLength[256] = {};

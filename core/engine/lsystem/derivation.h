@@ -11,6 +11,13 @@
 
 namespace sylva::lsys {
 
+/// Most module parameters (doubles) a generation may hold: twice the symbol limit, so that
+/// parametric words stay within memory too (20 million modules of 8 parameters each would take
+/// 3.4 GB before reaching the symbol limit).
+constexpr std::size_t paramLimitOf(std::size_t symbolLimit) {
+    return symbolLimit > SIZE_MAX / 2 ? SIZE_MAX : 2 * symbolLimit;
+}
+
 struct DeriveOptions {
     std::optional<int> generations;       ///< overrides Grammar::generations (>= 0)
     std::optional<std::uint64_t> seed;    ///< overrides Grammar::seed
@@ -21,7 +28,8 @@ struct DeriveOptions {
 /// Context-free deterministic grammars without parameters take a table-driven path whose next
 /// length is known exactly before any memory is spent; other grammars never hold more than
 /// `symbolLimit` modules either.
-/// \throw LimitExceeded naming the generation that would exceed `symbolLimit`.
+/// \throw LimitExceeded naming the generation that would exceed `symbolLimit` modules or
+///        paramLimitOf(symbolLimit) module parameters.
 /// \throw InvalidInput with a Diagnostic at the failing expression (division by zero, a
 ///        non-finite value) naming the rule.
 /// \throw Cancelled when \p progress asks to stop (checked between generations and every

@@ -325,6 +325,22 @@ private:
     Code parseUnary() {
         mS.skipSpaces();
         const int column = mS.column();
+        // Unary operators, '^', parentheses and call arguments all recurse through here: a
+        // grammar line of 200,000 '(' overflowed the stack, so nesting is limited.
+        if (mDepth >= kMaxExprNesting) {
+            mS.error(column, "expression is nested too deeply (more than " +
+                                 std::to_string(kMaxExprNesting) + " levels)");
+            mS.setPosition(mS.text().size());
+            mTooDeep = true;
+            return constant(0.0, column);
+        }
+        ++mDepth;
+        Code code = parseUnaryOperand(column);
+        --mDepth;
+        return code;
+    }
+
+    Code parseUnaryOperand(int column) {
         if (mS.peek() == '-' && mS.peek(1) != '>') {
             mS.advance();
             return combine(ExprOp::Neg, column, parseUnary(), {});
@@ -469,6 +485,7 @@ private:
     Code combine(ExprOp op, int column, Code a, Code b) {
         const bool binary = arityOf(op) == 2;
         if (isConst(a) && (!binary || isConst(b))) {
+            if (mTooDeep) return constant(0.0, column); // one message for the whole expression
             double v = 0.0;
             if (!apply(op, a[0].value, binary ? b[0].value : 0.0, v)) {
                 mS.error(column, "division by zero");
@@ -486,6 +503,8 @@ private:
 
     Scanner& mS;
     const ExprScope& mScope;
+    int mDepth = 0;        ///< parseUnary() levels on the C++ stack
+    bool mTooDeep = false; ///< kMaxExprNesting was reached (reported once)
 };
 
 bool compileExpression(Scanner& scanner, const ExprScope& scope, Expression& out) {

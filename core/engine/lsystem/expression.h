@@ -93,4 +93,8 @@ bool compileExpression(Scanner& scanner, const ExprScope& scope, Expression& out
 /// The largest operand stack an expression may need (expressions nested deeper are rejected).
 inline constexpr int kMaxExprStack = 64;
 
+/// The deepest nesting of parentheses, unary operators and '^' an expression may have (the
+/// compiler recurses once per level).
+inline constexpr int kMaxExprNesting = 256;
+
 } // namespace sylva::lsys

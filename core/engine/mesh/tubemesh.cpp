@@ -459,6 +459,13 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         vOff[c + 1] = vOff[c] + l.vertices;
         iOff[c + 1] = iOff[c] + l.indices;
     }
+    if (const std::size_t triangles = (iOff[count] - iOff[0]) / 3;
+        triangles > settings.maxTriangles)
+        throw LimitExceeded("tube mesh would have " + std::to_string(triangles) +
+                            " triangles, more than the limit of " +
+                            std::to_string(settings.maxTriangles) +
+                            "; lower the tube_mesh resolution or grow a smaller tree (fewer "
+                            "generations, cycles or attractors)");
     if (vOff[count] > std::numeric_limits<std::uint32_t>::max())
         throw LimitExceeded("tube mesh would have " + std::to_string(vOff[count]) +
                             " vertices; the limit of 32-bit indices is 4294967295");

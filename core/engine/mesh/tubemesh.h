@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
@@ -11,6 +13,11 @@ enum class ThicknessMode {
     Skeleton,  ///< the skeleton's radii (turtle width, pipe model)
     Branching, ///< t = i·m^b (reference 000 §4.4): b = branching points below the node
 };
+
+/// Most triangles one call of appendTubes() may add (about 3 GB of mesh): past it, it throws
+/// LimitExceeded before allocating. 20 million L-system segments at resolution 64 would ask for
+/// 2.6 billion.
+inline constexpr std::size_t kMaxTubeTriangles = 100'000'000;
 
 /// Parameters of the generalized-cylinder branch mesher.
 struct TubeSettings {
@@ -35,6 +42,7 @@ struct TubeSettings {
     double ribbonWidthScale = 1.0; ///< ribbon width = 2 · radius · this
     bool windAttributes = false;   ///< fill Mesh::branchOrder and Mesh::flexibility
     bool nodeIds = false;          ///< fill Mesh::node (for colouring by node attributes)
+    std::size_t maxTriangles = kMaxTubeTriangles; ///< lowered by tests only
 };
 
 /// Smallest radius a ring gets (metres): zero-width branches would give degenerate triangles.
@@ -51,6 +59,8 @@ inline constexpr float kMinTubeRadius = 1e-4f;
 /// Normals are smooth and tilted by the taper. Hidden nodes (kHidden) are skipped with their
 /// subtrees. Deterministic and parallel (OpenMP) with identical output on any thread count.
 /// \throw InvalidInput for a resolution outside 3..64 or an invalid skeleton.
+/// \throw LimitExceeded "tube mesh would have N triangles, more than the limit of 100000000;
+///        ..." past TubeSettings::maxTriangles.
 void appendTubes(Mesh& out, const skel::Skeleton& skeleton, const TubeSettings& settings,
                  Progress& progress = noProgress());
 

@@ -152,6 +152,24 @@ TEST(UpgradeChain, RunsStepsInOrderAndOnlyFromTheFilesVersion) {
     EXPECT_THROW(doc::upgradeFormat(gap.objectRef(), "f", 3, {steps[1]}, "a", true), InvalidInput);
 }
 
+// Found by fuzz_species (UBSan): a format_version of 1e116 was converted to int. Versions are
+// whole numbers from 1 to 1e9; a larger one is an error, not a "newer file" warning.
+TEST(UpgradeChain, HugeVersionsAreRefused) {
+    for (const char* v : {"1e116", "4294967296", "1000000001"}) {
+        graph::Value root =
+            graph::Value::parseJson(std::string(R"({"format":"f","format_version":)") + v + "}");
+        try {
+            doc::upgradeFormat(root.objectRef(), "f", 1, {}, "a.json", false);
+            ADD_FAILURE() << v;
+        } catch (const InvalidInput& e) {
+            EXPECT_STREQ(e.what(),
+                         "a.json: \"format_version\" must be a whole number from 1 to 1000000000");
+        }
+    }
+    graph::Value newer = graph::Value::parseJson(R"({"format":"f","format_version":1000000000})");
+    EXPECT_EQ(doc::upgradeFormat(newer.objectRef(), "f", 1, {}, "a", false).warnings.size(), 1u);
+}
+
 TEST(Project, ImportsTheReferenceSceneDescription) {
     const QString dir = QDir::tempPath() + "/sylva-test-refscene";
     QDir().mkpath(dir);
@@ -170,6 +188,33 @@ TEST(Project, ImportsTheReferenceSceneDescription) {
     // The imported project saves as a regular project and loads back the same.
     const QByteArray saved = doc::serializeProject(p);
     EXPECT_EQ(doc::serializeProject(doc::parseProject(saved, dir + "/scene.sylva")), saved);
+}
+
+// Found while fuzzing the import (fuzz_project, UBSan): two quantities of one species summed
+// past INT_MAX. Quantities are limited like a project's counts: [0, 1e8], also summed.
+TEST(Project, ReferenceSceneQuantitiesAreLimited) {
+    const QString dir = QDir::tempPath() + "/sylva-test-refscene";
+    QDir().mkpath(dir);
+    auto importError = [&](const char* json) -> std::string {
+        QFile f(dir + "/quantities.json");
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(json);
+        f.close();
+        try {
+            doc::importReferenceScene(dir + "/quantities.json");
+        } catch (const InvalidInput& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const std::string sum = importError(
+        R"({"plants":[{"file":"a.txt","quantity":60000000},{"file":"a.txt","quantity":60000000}]})");
+    EXPECT_NE(sum.find("the quantities of \"a\" must be whole numbers in [0, 1e8], also summed"),
+              std::string::npos)
+        << sum;
+    EXPECT_NE(importError(R"({"plants":[{"file":"a.txt","quantity":-5}]})").find("[0, 1e8]"),
+              std::string::npos);
+    EXPECT_EQ(importError(R"({"plants":[{"file":"a.txt","quantity":100000000}]})"), "");
 }
 
 TEST(Project, InlineSpeciesGraphsBecomeSceneSpecies) {

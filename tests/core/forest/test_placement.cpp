@@ -265,6 +265,17 @@ TEST(Placement, BadInputsGetTheirMessages) {
               std::string::npos);
     EXPECT_THROW(placeForest(species, {rectangle({0, 0}, {1, 1}, 60'000'000, 0)}, {}, params),
                  LimitExceeded);
+    // The limit of trees per forest names itself and what to do.
+    try {
+        placeForest(
+            species,
+            {rectangle({0, 0}, {1, 1}, 30'000'000, 0), rectangle({0, 0}, {1, 1}, 30'000'000, 0)},
+            {}, params);
+        ADD_FAILURE() << "expected LimitExceeded";
+    } catch (const LimitExceeded& e) {
+        EXPECT_STREQ(e.what(), "a forest is limited to 50000000 trees; lower the domains' counts "
+                               "or split the scene into several projects");
+    }
 }
 
 TEST(Tiles, UnionOfTheTilesEqualsTheWholeForest) {

@@ -70,6 +70,29 @@ TEST(TubeMesh, CountsOfAStraightBranch) {
     checkWellFormed(c);
 }
 
+// The limit on tube mesh triangles (kMaxTubeTriangles, 100 million): checked from the counts
+// before any memory is spent; FF without caps is 32 triangles.
+TEST(TubeMesh, TriangleLimit) {
+    EXPECT_EQ(mesh::TubeSettings{}.maxTriangles, mesh::kMaxTubeTriangles);
+    EXPECT_EQ(mesh::kMaxTubeTriangles, 100'000'000u);
+    const auto s = tree("FF");
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    settings.maxTriangles = 32;
+    EXPECT_EQ(mesh::buildTubeMesh(s, settings).triangleCount(), 32u);
+    settings.maxTriangles = 31;
+    mesh::Mesh out;
+    try {
+        mesh::appendTubes(out, s, settings);
+        FAIL() << "expected LimitExceeded";
+    } catch (const LimitExceeded& e) {
+        EXPECT_STREQ(e.what(), "tube mesh would have 32 triangles, more than the limit of 31; "
+                               "lower the tube_mesh resolution or grow a smaller tree (fewer "
+                               "generations, cycles or attractors)");
+    }
+    EXPECT_TRUE(out.positions.empty());
+}
+
 TEST(TubeMesh, RingsLieAtTheRadius) {
     const auto s = tree("F!(0.06)F");
     mesh::TubeSettings settings;

@@ -192,3 +192,28 @@ TEST(Expression, StopsAtDelimiters) {
     EXPECT_TRUE(s.atArrow());
     EXPECT_EQ(s.column(), 7);
 }
+
+// A grammar line of 200,000 '(' (or '-', or '2^') overflowed the stack of the recursive
+// compiler and crashed sylva-cli: nesting deeper than kMaxExprNesting is a diagnostic.
+TEST(Expression, NestingIsLimited) {
+    const std::string ok = std::string(200, '(') + "1" + std::string(200, ')');
+    EXPECT_EQ(eval(ok), 1.0);
+    EXPECT_EQ(eval(std::string(200, '-') + "3"), 3.0);
+    for (const std::string& deep :
+         {std::string(200'000, '(') + "1" + std::string(200'000, ')'),
+          std::string(200'000, '-') + "1", std::string(200'000, '!') + "1"}) {
+        Compiled c = compile(deep);
+        EXPECT_FALSE(c.ok);
+        ASSERT_EQ(c.diagnostics.size(), 1u);
+        EXPECT_EQ(c.diagnostics[0].message,
+                  "expression is nested too deeply (more than 256 levels)");
+        EXPECT_EQ(c.diagnostics[0].column, kMaxExprNesting + 1);
+    }
+    std::string pow;
+    for (int i = 0; i < 100'000; ++i)
+        pow += "2^";
+    Compiled p = compile(pow + "1");
+    EXPECT_FALSE(p.ok);
+    ASSERT_EQ(p.diagnostics.size(), 1u); // not one more per folded level
+    EXPECT_EQ(p.diagnostics[0].message, "expression is nested too deeply (more than 256 levels)");
+}

@@ -25,7 +25,8 @@ TEST(Limit, FastPathPredictsTheExactLength) {
     EXPECT_EQ(derive(g, options(9, std::nullopt, 512)).size(), 512u);
     EXPECT_EQ(limitMessage(g, 10, 512), "generation 10 would hold 1024 modules, more than the "
                                         "symbol limit of 512; derive fewer generations or raise "
-                                        "the limit");
+                                        "the limit (the lsystem node's symbol_limit, sylva-cli "
+                                        "expand --limit; at most 2000000000)");
     // A thousand generations stop at generation 10 without overflowing the counts.
     EXPECT_NE(limitMessage(g, 1000, 1000).find("generation 10 "), std::string::npos);
     // The default limit is 20 million: 2^25 > 2e7 fails at generation 25.
@@ -52,4 +53,18 @@ TEST(Limit, GeneralPathNeverHoldsMoreThanTheLimit) {
 TEST(Limit, TheAxiomCountsAsGenerationZero) {
     const Grammar g = parseGrammar("axiom: FFFF\n");
     EXPECT_NE(limitMessage(g, 0, 3).find("generation 0 would hold 4 modules"), std::string::npos);
+}
+
+// The parameter limit, twice the symbol limit: without it 20 million modules of 8 parameters
+// took 3.4 GB before the symbol limit stopped them.
+TEST(Limit, ModuleParametersAreLimitedToo) {
+    const Grammar g =
+        parseGrammar("axiom: A(1,2,3,4,5)\nA(a,b,c,d,e) -> A(a,b,c,d,e)A(a,b,c,d,e)\n");
+    EXPECT_EQ(paramLimitOf(100), 200u);
+    EXPECT_EQ(derive(g, options(5, std::nullopt, 100)).params.size(), 160u); // 32 modules
+    EXPECT_EQ(limitMessage(g, 6, 100),
+              "generation 6 would hold more than 200 module parameters, twice the symbol limit of "
+              "100; derive fewer generations or raise the limit (the lsystem node's symbol_limit, "
+              "sylva-cli expand --limit; at most 2000000000)");
+    EXPECT_EQ(derive(g, options(6, std::nullopt, 160)).size(), 64u); // 320 parameters fit
 }

@@ -1,0 +1,143 @@
+#include "engine/environment/meshfilecheck.h"
+
+#include <charconv>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/util/error.h"
+
+namespace sylva::env {
+
+namespace {
+
+constexpr std::size_t kMaxPlyHeaderBytes = 1 << 20;
+
+/// Bytes of a PLY scalar type, 0 for an unknown name.
+std::uint64_t plyTypeSize(const std::string& t) {
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if (t == "int" || t == "uint" || t == "int32" || t == "uint32" || t == "float" ||
+        t == "float32")
+        return 4;
+    if (t == "double" || t == "float64") return 8;
+    return 0;
+}
+
+struct PlyElement {
+    std::string name;
+    std::uint64_t count = 0;
+    std::uint64_t minBytes = 0; ///< scalars plus the count of each list (lists may be empty)
+    bool hasProperties = false;
+};
+
+void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax_t fileSize,
+              std::size_t maxItems) {
+    const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: PLY ";
+    auto fail = [&](const std::string& what) { throw InvalidInput(where + what); };
+    std::vector<PlyElement> elements;
+    bool binary = false, haveFormat = false;
+    std::string line;
+    for (int lineNo = 1;; ++lineNo) {
+        if (!std::getline(in, line)) fail("header has no end_header line");
+        // tellg() fails once getline() reached the end of the file (a last line without '\n').
+        const std::uintmax_t read = in.eof() ? fileSize : static_cast<std::uintmax_t>(in.tellg());
+        if (read > kMaxPlyHeaderBytes) fail("header is longer than 1 MiB");
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line);
+        std::string key, a, b, c, extra;
+        words >> key;
+        const std::string at = "header line " + std::to_string(lineNo) + ": ";
+        if (lineNo == 1) {
+            if (key != "ply" || (words >> extra)) fail("file does not start with a 'ply' line");
+        } else if (key == "end_header") {
+            break;
+        } else if (key == "comment" || key == "obj_info") {
+            continue;
+        } else if (key == "format") {
+            words >> a >> b;
+            if (haveFormat || b.empty() ||
+                (a != "ascii" && a != "binary_little_endian" && a != "binary_big_endian"))
+                fail(at + "expected one 'format ascii|binary_little_endian|binary_big_endian "
+                          "1.0' line");
+            haveFormat = true;
+            binary = a != "ascii";
+        } else if (key == "element") {
+            words >> a >> b;
+            PlyElement e;
+            e.name = a;
+            const auto res = std::from_chars(b.data(), b.data() + b.size(), e.count);
+            if (a.empty() || b.empty() || res.ec != std::errc() || res.ptr != b.data() + b.size())
+                fail(at + "expected 'element <name> <count>'");
+            if (e.count > maxItems)
+                throw LimitExceeded(where + "element '" + e.name + "' declares " + b +
+                                    " items, more than the limit of " + std::to_string(maxItems) +
+                                    "; decimate the mesh");
+            elements.push_back(e);
+        } else if (key == "property") {
+            if (elements.empty()) fail(at + "a property before any element");
+            words >> a >> b;
+            if (a == "list") {
+                words >> c;
+                if (plyTypeSize(b) == 0 || plyTypeSize(c) == 0 || c.empty() || !(words >> extra) ||
+                    extra.empty())
+                    fail(at + "expected 'property list <count type> <item type> <name>'");
+                elements.back().minBytes += plyTypeSize(b);
+            } else {
+                if (plyTypeSize(a) == 0 || b.empty())
+                    fail(at + "expected 'property <type> <name>' with a PLY type");
+                elements.back().minBytes += plyTypeSize(a);
+            }
+            elements.back().hasProperties = true;
+        } else {
+            fail(at + "unknown header keyword '" + key + "'");
+        }
+    }
+    if (!haveFormat) fail("header has no format line");
+
+    const std::uintmax_t headerBytes =
+        in.eof() ? fileSize : static_cast<std::uintmax_t>(in.tellg());
+    const std::uintmax_t body = fileSize - headerBytes;
+    if (binary) {
+        std::uintmax_t need = 0;
+        for (const PlyElement& e : elements)
+            need += e.count * e.minBytes; // both <= 1e7 * 1e6: no overflow
+        if (body < need)
+            fail("data is truncated: the header declares at least " + std::to_string(need) +
+                 " bytes, the file has " + std::to_string(body));
+    } else {
+        std::uintmax_t need = 0; // one line per item of an element with properties
+        for (const PlyElement& e : elements)
+            if (e.hasProperties) need += e.count;
+        std::uintmax_t lines = 0;
+        for (std::string l; lines < need && std::getline(in, l);)
+            if (l.find_first_not_of(" \t\r") != std::string::npos) ++lines;
+        if (lines < need)
+            fail("data is truncated: the header declares " + std::to_string(need) +
+                 " lines of items, the file has " + std::to_string(lines));
+    }
+}
+
+} // namespace
+
+void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        throw IoError("obstacle mesh '" + file.string() + "': cannot open the file for reading");
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    if (ec) throw IoError("obstacle mesh '" + file.string() + "': " + ec.message());
+    char magic[3] = {0, 0, 0};
+    in.read(magic, 3);
+    in.clear();
+    in.seekg(0);
+    std::string ext = file.extension().string();
+    for (char& ch : ext)
+        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    if (ext == ".ply" || std::string_view(magic, 3) == "ply") checkPly(file, in, size, maxItems);
+}
+
+} // namespace sylva::env

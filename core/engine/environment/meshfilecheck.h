@@ -1,0 +1,24 @@
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+
+namespace sylva::env {
+
+/// Most triangles an obstacle or terrain mesh may hold, and most items any element of a PLY
+/// header may declare (Assimp reserves memory for what a header declares before reading it).
+/// About 1 GB of collision data; decimate larger meshes before using them as obstacles.
+inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
+
+/// Checks the parts of a mesh file that Debian's Assimp 5.2.5 trusts without checking, before
+/// the file is handed to it (fuzzing found Assimp reading past a PLY header that has no
+/// `end_header`). Today: PLY files (by extension or by their `ply` first line) must have a
+/// well-formed header (format, element and property lines, `end_header`), element counts of at
+/// most \p maxItems, and at least as many data bytes (binary) or lines (ASCII) as the header
+/// declares. Other formats pass unchecked.
+/// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.
+/// \throw LimitExceeded when an element count exceeds \p maxItems.
+/// \throw IoError when the file cannot be read.
+void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems = kMaxObstacleTriangles);
+
+} // namespace sylva::env
