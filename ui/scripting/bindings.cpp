@@ -16,6 +16,7 @@
 #include "engine/mesh/mesh.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "python/bindings/convert.h"
 #include "python/bindings/engine.h"
 #include "ui/document/messagespanel.h"
 #include "ui/generation/documentgenerator.h"
@@ -40,60 +41,11 @@ doc::Document& document() {
     return window().document();
 }
 
-graph::Value toValue(const py::handle& o) {
-    if (o.is_none()) return {};
-    if (py::isinstance<py::bool_>(o)) return graph::Value(o.cast<bool>());
-    if (py::isinstance<py::int_>(o) || py::isinstance<py::float_>(o))
-        return graph::Value(o.cast<double>());
-    if (py::isinstance<py::str>(o)) return graph::Value(o.cast<std::string>());
-    if (py::isinstance<py::dict>(o)) {
-        graph::Value::Object obj;
-        for (const auto& [k, v] : o.cast<py::dict>())
-            obj[py::str(k).cast<std::string>()] = toValue(v);
-        return graph::Value(std::move(obj));
-    }
-    if (py::isinstance<py::sequence>(o)) {
-        graph::Value::Array arr;
-        for (const py::handle& v : o.cast<py::sequence>())
-            arr.push_back(toValue(v));
-        return graph::Value(std::move(arr));
-    }
-    throw InvalidInput("cannot use a Python " +
-                       py::str(py::type::of(o).attr("__name__")).cast<std::string>() +
-                       " as a parameter value");
-}
-
-py::object fromValue(const graph::Value& v) {
-    if (v.isNull()) return py::none();
-    if (v.isBool()) return py::bool_(v.toBool());
-    if (v.isNumber()) {
-        const double d = v.toNumber();
-        if (d == double(static_cast<long long>(d)) && std::abs(d) < 9e15)
-            return py::int_(static_cast<long long>(d));
-        return py::float_(d);
-    }
-    if (v.isString()) return py::str(v.toString());
-    if (v.isArray()) {
-        py::list l;
-        for (const graph::Value& x : v.toArray())
-            l.append(fromValue(x));
-        return l;
-    }
-    py::dict d;
-    for (const auto& [k, x] : v.toObject())
-        d[py::str(k)] = fromValue(x);
-    return d;
-}
-
-glm::vec3 toVec3(const py::handle& o, const char* what) {
-    const auto seq = o.cast<std::vector<double>>();
-    if (seq.size() != 3) throw InvalidInput(std::string(what) + " needs three numbers (x, y, z)");
-    return {float(seq[0]), float(seq[1]), float(seq[2])};
-}
-
-py::tuple fromVec3(const glm::vec3& v) {
-    return py::make_tuple(v.x, v.y, v.z);
-}
+// Python <-> parameter values and vectors: the same conversions as `import sylva`.
+using python::fromValue;
+using python::fromVec3;
+using python::toValue;
+using python::toVec3;
 
 /// A tree as scripts see it: a snapshot of its values.
 struct Tree {
