@@ -1089,6 +1089,18 @@
         <source>; up to %1 m tall, DBH up to %2 cm; wood %3 m³, biomass %4 kg, CO₂ %5 kg</source>
         <translation>; bis zu %1 m hoch, BHD bis zu %2 cm; Holz %3 m³, Biomasse %4 kg, CO₂ %5 kg</translation>
     </message>
+    <message>
+        <source>Wood, biomass:</source>
+        <translation>Holz, Biomasse:</translation>
+    </message>
+    <message>
+        <source>A project&apos;s wood volume and dry biomass, and the trees&apos; mean DBH</source>
+        <translation>Holzvolumen und Trockenbiomasse eines Projekts und der mittlere BHD der Bäume</translation>
+    </message>
+    <message>
+        <source>%1 m³, %2 t; mean DBH %3 cm</source>
+        <translation>%1 m³, %2 t; mittlerer BHD %3 cm</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::ToolController</name>

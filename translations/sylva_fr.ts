@@ -1089,6 +1089,18 @@
         <source>Generating %1…</source>
         <translation>Génération de %1…</translation>
     </message>
+    <message>
+        <source>Wood, biomass:</source>
+        <translation>Bois, biomasse :</translation>
+    </message>
+    <message>
+        <source>A project&apos;s wood volume and dry biomass, and the trees&apos; mean DBH</source>
+        <translation>Volume de bois et biomasse sèche d&apos;un projet, et DHP moyen des arbres</translation>
+    </message>
+    <message>
+        <source>%1 m³, %2 t; mean DBH %3 cm</source>
+        <translation>%1 m³, %2 t ; DHP moyen %3 cm</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::ToolController</name>

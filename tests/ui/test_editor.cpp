@@ -31,6 +31,7 @@
 #include "ui/document/messagespanel.h"
 #include "ui/document/outlinermodel.h"
 #include "ui/document/propertiespanel.h"
+#include "ui/document/statspanel.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/mainwindow.h"
 #include "ui/scripting/pythonconsole.h"
@@ -147,6 +148,15 @@ private Q_SLOTS:
     void titleShowsFileAndModifiedMarker() {
         QVERIFY(mWindow->windowTitle().contains(QStringLiteral("demo.sylva")));
         QVERIFY(!mWindow->isWindowModified());
+        // The scene's wood and biomass are the engine's sums over the trees.
+        const GenerationResult& r = mWindow->generator().result();
+        double wood = 0.0;
+        for (const DrawnTree& t : r.trees)
+            wood += t.metrics.woodVolumeM3;
+        QVERIFY(std::abs(r.stats.at("wood_m3") - wood) < 1e-9 * std::max(1.0, wood));
+        QVERIFY2(
+            mWindow->statsPanel()->value(QStringLiteral("statWood")).contains(QStringLiteral("m³")),
+            qPrintable(mWindow->statsPanel()->value(QStringLiteral("statWood"))));
     }
 
     /// Click a tree in the outliner, type a new x in the Properties panel: one "Move tree"

@@ -39,6 +39,8 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
     mHeight = add(tr("Height:"), QStringLiteral("statHeight"));
     mTime = add(tr("Generation time:"), QStringLiteral("statTime"));
     mCo2 = add(tr("CO₂ stored:"), QStringLiteral("statCo2"));
+    mWood = add(tr("Wood, biomass:"), QStringLiteral("statWood"));
+    mWood->setToolTip(tr("A project's wood volume and dry biomass, and the trees' mean DBH"));
     mSelection = add(tr("Selection:"), QStringLiteral("statSelection"));
     mSelection->setWordWrap(true);
 
@@ -73,6 +75,17 @@ void StatsPanel::showResult(const GenerationResult& result) {
     mCo2->setText(co2 == result.stats.end()
                       ? QStringLiteral("–")
                       : tr("%1 t").arg(locale.toString(co2->second / 1000.0, 'f', 1)));
+    const auto wood = result.stats.find("wood_m3");
+    const auto biomass = result.stats.find("biomass_kg");
+    const auto dbh = result.stats.find("mean_dbh_m");
+    mWood->setText(
+        wood == result.stats.end() || biomass == result.stats.end()
+            ? QStringLiteral("–")
+            : tr("%1 m³, %2 t; mean DBH %3 cm")
+                  .arg(locale.toString(wood->second, 'f', 1),
+                       locale.toString(biomass->second / 1000.0, 'f', 1),
+                       locale.toString(dbh == result.stats.end() ? 0.0 : dbh->second * 100, 'f',
+                                       1)));
     mStatus->clear();
     mStatus->setStyleSheet({});
 }

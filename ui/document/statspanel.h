@@ -47,6 +47,7 @@ private:
     QLabel* mHeight = nullptr;
     QLabel* mTime = nullptr;
     QLabel* mCo2 = nullptr;
+    QLabel* mWood = nullptr;
     QLabel* mStatus = nullptr;
     QLabel* mSelection = nullptr;
 };

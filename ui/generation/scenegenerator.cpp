@@ -102,6 +102,9 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         result.stats["colliding_trees"] = static_cast<double>(stats.collidingTrees);
         result.stats["pruned_nodes"] = static_cast<double>(stats.prunedNodes);
         result.stats["co2_kg"] = stats.metrics.co2Kg;
+        result.stats["wood_m3"] = stats.metrics.woodVolumeM3;
+        result.stats["biomass_kg"] = stats.metrics.dryBiomassKg;
+        result.stats["mean_dbh_m"] = stats.metrics.meanDbhM;
         result.stats["height"] = height;
         result.stats["regrown"] =
             static_cast<double>(caches ? caches->trees.misses() : stats.trees);
