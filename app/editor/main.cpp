@@ -194,12 +194,7 @@ int main(int argc, char* argv[]) {
         QTimer::singleShot(0, &window, [&window, script] {
             waitUntilShown(window);
             window.waitForGeneration();
-            const int status = sylva::ui::PythonHost::runScript(script);
-            window.setAskHandler([](const QString&, bool canSave) {
-                return canSave ? sylva::ui::MainWindow::Answer::Discard
-                               : sylva::ui::MainWindow::Answer::Yes;
-            });
-            QApplication::exit(status);
+            QApplication::exit(sylva::ui::PythonHost::runScript(script));
         });
     }
 

@@ -28,15 +28,18 @@ QString vec(const glm::vec3& v) {
 
 OutlinerModel::OutlinerModel(doc::Document& document, QObject* parent)
     : QAbstractItemModel(parent), mDocument(document) {
-    connect(&document, &doc::Document::changed, this, [this] {
+    connect(&document, &doc::Document::changed, this, [this](const doc::DocumentChange& c) {
         beginResetModel();
-        refresh();
+        // Node lists come from species files on disk: read again only when species changed,
+        // not at every step of a drag.
+        if (c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset)) readNodes();
+        pruneHidden();
         endResetModel();
     });
-    refresh();
+    readNodes();
 }
 
-void OutlinerModel::refresh() {
+void OutlinerModel::readNodes() {
     mNodes.clear();
     for (const doc::ProjectSpecies& s : mDocument.project().species) {
         QStringList nodes;
@@ -52,6 +55,9 @@ void OutlinerModel::refresh() {
         }
         mNodes.push_back(nodes);
     }
+}
+
+void OutlinerModel::pruneHidden() {
     QSet<doc::TreeId> alive;
     for (doc::TreeId id : mDocument.treeIds())
         if (mHidden.contains(id)) alive.insert(id);

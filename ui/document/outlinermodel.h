@@ -44,7 +44,8 @@ Q_SIGNALS:
     void editFailed(const QString& message);
 
 private:
-    void refresh();
+    void readNodes();
+    void pruneHidden();
     int groupSize(int group) const;
 
     doc::Document& mDocument;

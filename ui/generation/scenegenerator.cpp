@@ -54,12 +54,23 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                                  const std::vector<doc::TreeId>& treeIds, SceneCaches* caches,
                                  Progress& progress) {
     return runGuarded(path, [&](GenerationResult& result) {
-        // Watch every file the project reads; stamped before reading, so that a change during
-        // the generation is still seen.
-        result.sources << doc::projectSourceFiles(project);
+        // Watch every file the project reads, stamped before it is read (a change during the
+        // generation is still seen): the species and mesh files, then the files the species'
+        // graphs name (grammar files), known once makeForestScene has read the species.
+        for (const doc::ProjectSpecies& s : project.species)
+            if (!s.file.empty())
+                result.sources << QFileInfo(project.resolve(s.file)).absoluteFilePath();
+        for (const doc::ProjectObstacle& o : project.obstacles)
+            result.sources << QFileInfo(project.resolve(o.file)).absoluteFilePath();
+        for (const doc::PlacementDomain& d : project.domains)
+            if (!d.terrain.empty())
+                result.sources << QFileInfo(project.resolve(d.terrain)).absoluteFilePath();
         result.sources.removeDuplicates();
         stampSources(result);
         const scene::ForestScene forest = doc::makeForestScene(project);
+        for (const scene::SceneSpecies& s : forest.species)
+            doc::addSpeciesSourceFiles(s.graph, result.sources);
+        stampSources(result); // before buildForest reads the grammar files
         scene::ForestOptions options;
         if (caches) {
             options.cache = &caches->trees;

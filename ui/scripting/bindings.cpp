@@ -109,37 +109,8 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
     // `import sylva` from python3 (docs/python.md); the editor's document and window below.
     sylva::python::bindEngine(m);
     m.doc() = "Sylva's editor: its document (trees, species, obstacles, undo) and window.";
-    // The same messages the window shows, as the exceptions Python users expect.
-    py::register_exception_translator([](std::exception_ptr p) {
-        if (!p) return;
-        try {
-            std::rethrow_exception(p);
-        } catch (const py::error_already_set&) {
-            throw;
-        } catch (const py::builtin_exception&) {
-            throw;
-        } catch (const std::exception&) {
-            const doc::ErrorReport r = doc::describeError(p);
-            using K = doc::ErrorReport::Kind;
-            switch (r.kind) {
-            case K::Io:
-                PyErr_SetString(PyExc_OSError, r.message.c_str());
-                return;
-            case K::Cancelled:
-                PyErr_SetString(PyExc_KeyboardInterrupt, r.message.c_str());
-                return;
-            case K::OutOfMemory:
-                PyErr_SetString(PyExc_MemoryError, r.message.c_str());
-                return;
-            case K::Other:
-                PyErr_SetString(PyExc_RuntimeError, r.message.c_str());
-                return;
-            default:
-                PyErr_SetString(PyExc_ValueError, r.message.c_str());
-                return;
-            }
-        }
-    });
+    // Errors become ValueError / OSError / ... with the window's messages through the
+    // translator bindEngine registered (python/bindings/convert.cpp, over doc::describeError).
 
     py::class_<Tree>(m, "Tree", "A tree of the document (a snapshot of its values).")
         .def_readonly("id", &Tree::id)

@@ -130,11 +130,9 @@ float ToolController::crownRadius(std::uint32_t species) const {
 void ToolController::selectAt(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
     using K = doc::ItemRef::Kind;
     const Ray ray = mViewport.rayAt(pos);
-    const int index = mViewport.treeAt(pos);
-    float treeT = index >= 0 ? pickTree(ray, {mViewport.trees()[std::size_t(index)]},
-                                        {mViewport.treeBounds()[std::size_t(index)]})
-                                   .t
-                             : std::numeric_limits<float>::max();
+    const TreeHit pick = mViewport.pickAt(pos);
+    const int index = pick.index;
+    const float treeT = pick.t; // max() when no tree is hit
     std::optional<doc::ItemRef> item;
     if (index >= 0) {
         const doc::TreeId id = mViewport.trees()[std::size_t(index)].id;
@@ -295,16 +293,23 @@ void ToolController::dab(const glm::vec3& centre) {
     const float area = float(M_PI) * mBrush.radius * mBrush.radius;
     const int candidates = std::max(1, int(std::lround(mBrush.density * area / 100.0f)));
 
+    // Each species' crown radius once (it is a median over the forest's trees).
+    std::vector<float> radius(species.size());
+    for (std::size_t i = 0; i < species.size(); ++i)
+        radius[i] = crownRadius(std::uint32_t(i));
+    auto radiusOf = [&radius](std::size_t s) {
+        return s < radius.size() ? radius[s] : kDefaultCrownRadius;
+    };
     // Trunks already standing (drawn trees, and this stroke's), each with its crown's radius.
     std::vector<std::pair<glm::vec2, float>> trunks;
     for (const DrawnTree& t : mResult().trees) {
         const glm::vec3 p = positionOf(t.transform);
-        trunks.emplace_back(glm::vec2(p.x, p.z), crownRadius(t.species));
+        trunks.emplace_back(glm::vec2(p.x, p.z), radiusOf(t.species));
     }
     std::vector<ViewTree> preview;
     for (const doc::ProjectInstance& t : mStroke)
         trunks.emplace_back(glm::vec2(t.position.x, t.position.z),
-                            crownRadius(std::uint32_t(mDocument.speciesIndex(t.species))) *
+                            radiusOf(std::size_t(mDocument.speciesIndex(t.species))) *
                                 float(t.scale));
     for (int c = 0; c < candidates; ++c) {
         // The species first, by weight, then up to kTries positions for it (reference 000
@@ -337,7 +342,7 @@ void ToolController::dab(const glm::vec3& centre) {
             placed = !blocked;
         }
         if (!placed) continue;
-        trunks.emplace_back(glm::vec2(t.position.x, t.position.z), crownRadius(s) * float(t.scale));
+        trunks.emplace_back(glm::vec2(t.position.x, t.position.z), radiusOf(s) * float(t.scale));
         mStroke.push_back(t);
     }
     // Preview: each new tree drawn with a grown tree of its species where there is one.

@@ -442,11 +442,11 @@ std::optional<QPointF> Viewport::project(const glm::vec3& world) const {
     return QPointF((ndc.x + 1.0f) * 0.5f * float(width()), (1.0f - ndc.y) * 0.5f * float(height()));
 }
 
-int Viewport::treeAt(const QPointF& pos) const {
+TreeHit Viewport::pickAt(const QPointF& pos) const {
     std::vector<bool> hidden(mTrees.size(), false);
     for (std::size_t i = 0; i < mTrees.size(); ++i)
         hidden[i] = mTrees[i].id != 0 && mHidden.contains(mTrees[i].id);
-    return pickTree(rayAt(pos), mTrees, mTreeBounds, hidden).index;
+    return pickTree(rayAt(pos), mTrees, mTreeBounds, hidden);
 }
 
 void Viewport::frameBox(const glm::vec3& lo, const glm::vec3& hi) {

@@ -103,7 +103,9 @@ public:
     /// Where a world point is drawn, in widget pixels; none when behind the camera or outside.
     std::optional<QPointF> project(const glm::vec3& world) const;
     /// The index into trees() of the tree drawn at \p pos (its own triangles), or -1.
-    int treeAt(const QPointF& pos) const;
+    int treeAt(const QPointF& pos) const { return pickAt(pos).index; }
+    /// The same with the hit's distance from the eye (metres along rayAt(pos)).
+    TreeHit pickAt(const QPointF& pos) const;
     /// Frames a box (the selection): the camera aims at it and backs off until it fits.
     void frameBox(const glm::vec3& lo, const glm::vec3& hi);
 
