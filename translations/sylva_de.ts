@@ -1015,10 +1015,6 @@
 <context>
     <name>sylva::ui::StatsPanel</name>
     <message>
-        <source>Species:</source>
-        <translation>Art:</translation>
-    </message>
-    <message>
         <source>File:</source>
         <translation>Datei:</translation>
     </message>
@@ -1100,6 +1096,14 @@
     <message>
         <source>%1 m³, %2 t; mean DBH %3 cm</source>
         <translation>%1 m³, %2 t; mittlerer BHD %3 cm</translation>
+    </message>
+    <message>
+        <source>Showing:</source>
+        <translation>Angezeigt:</translation>
+    </message>
+    <message>
+        <source>The species previewed, or the project and its tree count</source>
+        <translation>Die in der Vorschau gezeigte Art, oder das Projekt und seine Baumanzahl</translation>
     </message>
 </context>
 <context>

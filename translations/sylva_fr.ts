@@ -1015,10 +1015,6 @@
 <context>
     <name>sylva::ui::StatsPanel</name>
     <message>
-        <source>Species:</source>
-        <translation>Espèce&#xa0;:</translation>
-    </message>
-    <message>
         <source>File:</source>
         <translation>Fichier&#xa0;:</translation>
     </message>
@@ -1091,7 +1087,7 @@
     </message>
     <message>
         <source>Wood, biomass:</source>
-        <translation>Bois, biomasse :</translation>
+        <translation>Bois, biomasse&#xa0;:</translation>
     </message>
     <message>
         <source>A project&apos;s wood volume and dry biomass, and the trees&apos; mean DBH</source>
@@ -1099,7 +1095,15 @@
     </message>
     <message>
         <source>%1 m³, %2 t; mean DBH %3 cm</source>
-        <translation>%1 m³, %2 t ; DHP moyen %3 cm</translation>
+        <translation>%1 m³, %2 t&#xa0;; DHP moyen %3 cm</translation>
+    </message>
+    <message>
+        <source>Showing:</source>
+        <translation>Affiché :</translation>
+    </message>
+    <message>
+        <source>The species previewed, or the project and its tree count</source>
+        <translation>L&apos;espèce en aperçu, ou le projet et son nombre d&apos;arbres</translation>
     </message>
 </context>
 <context>

@@ -32,6 +32,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPromise>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -232,7 +233,16 @@ void MainWindow::createDocks() {
     mProperties = new PropertiesPanel(*mDocument, this);
     mProperties->setObjectName(QStringLiteral("propertiesPanel"));
     connect(mProperties, &PropertiesPanel::failed, this, &MainWindow::reportError);
-    dock(QStringLiteral("propertiesDock"), tr("Properties"), mProperties, Qt::LeftDockWidgetArea);
+    // In a scroll area: a tree's editors are wider than the project's, and the dock (and with
+    // it the viewport) must not jump when the selection changes.
+    auto* propertiesScroll = new QScrollArea(this);
+    propertiesScroll->setWidget(mProperties);
+    propertiesScroll->setWidgetResizable(true);
+    propertiesScroll->setFrameShape(QFrame::NoFrame);
+    propertiesScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // editors fit the dock
+    propertiesScroll->setMinimumWidth(320); // room for x, y, z with units
+    dock(QStringLiteral("propertiesDock"), tr("Properties"), propertiesScroll,
+         Qt::LeftDockWidgetArea);
 
     mStats = new StatsPanel(this);
     dock(QStringLiteral("statsDock"), tr("Statistics"), mStats, Qt::RightDockWidgetArea);
@@ -255,7 +265,7 @@ void MainWindow::createDocks() {
     // The viewport gets the room; the panels around it start narrow and short.
     resizeDocks({mDocks[QStringLiteral("messagesDock")]}, {140}, Qt::Vertical);
     resizeDocks({mDocks[QStringLiteral("outlinerDock")], mDocks[QStringLiteral("statsDock")]},
-                {300, 280}, Qt::Horizontal);
+                {330, 280}, Qt::Horizontal);
 }
 
 void MainWindow::createMenus() {

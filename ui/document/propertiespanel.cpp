@@ -55,6 +55,8 @@ int PropertiesPanel::addSpins(const QString& label, int count, double lo, double
         box->setSuffix(suffix);
         box->setKeyboardTracking(false); // one edit per Enter, arrow click or focus change
         box->setAccelerated(true);
+        // Narrow enough for three in a row in the dock; the value's width, not the range's.
+        box->setMinimumWidth(56);
         box->setToolTip(count > 1 ? tooltip + QStringLiteral(" (%1)").arg(QLatin1String(kAxes[k]))
                                   : tooltip);
         box->setObjectName(QStringLiteral("spin%1").arg(first + k));

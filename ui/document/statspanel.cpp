@@ -28,7 +28,8 @@ StatsPanel::StatsPanel(QWidget* parent) : QWidget(parent) {
         form->addRow(label, value);
         return value;
     };
-    mSpecies = add(tr("Species:"), QStringLiteral("statSpecies"));
+    mSpecies = add(tr("Showing:"), QStringLiteral("statSpecies"));
+    mSpecies->setToolTip(tr("The species previewed, or the project and its tree count"));
     mSpecies->setWordWrap(true);
     mFile = add(tr("File:"), QStringLiteral("statFile"));
     mTrees = add(tr("Trees:"), QStringLiteral("statTrees"));
