@@ -29,11 +29,10 @@ SpeciesGraph species(bool leaves) {
     g.name = "bench";
     g.nodes.push_back(NodeDesc{"grow", "lsystem", Value::Object{{"grammar", kGrammar}}, {}});
     if (leaves) {
-        g.nodes.push_back(NodeDesc{"leaves", "leaves",
-                                   Value::Object{{"placement", "tips"}, {"tip_count", 2}},
-                                   {"grow"}});
-        g.nodes.push_back(NodeDesc{"mesh", "tube_mesh", Value::Object{{"resolution", 6}},
-                                   {"leaves"}});
+        g.nodes.push_back(NodeDesc{
+            "leaves", "leaves", Value::Object{{"placement", "tips"}, {"tip_count", 2}}, {"grow"}});
+        g.nodes.push_back(
+            NodeDesc{"mesh", "tube_mesh", Value::Object{{"resolution", 6}}, {"leaves"}});
     } else {
         g.nodes.push_back(
             NodeDesc{"mesh", "tube_mesh", Value::Object{{"resolution", 6}}, {"grow"}});
