@@ -75,7 +75,8 @@ LodSettings lodFromParams(const Value& p) {
 
 } // namespace
 
-TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed) {
+TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
+                                            const std::filesystem::path& baseDir) {
     TreeMeshSettings s;
     s.tubes.resolution = rangedInt(p, "resolution", 8, 3, 64);
     s.tubes.caps = p.boolean("caps", true);
@@ -100,6 +101,15 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed) 
     s.useLod = distance >= 0.0;
     s.cameraDistance = std::max(distance, 0.0);
     s.seed = seed;
+    auto texture = [&](const char* key) -> std::string {
+        const Value* v = p.find(key);
+        if (!v || v->isNull()) return {};
+        const std::filesystem::path file(v->toString(key));
+        if (file.empty() || file.is_absolute() || baseDir.empty()) return file.string();
+        return (baseDir / file).lexically_normal().string();
+    };
+    s.barkTexture = texture("bark_texture_file");
+    s.leafTexture = texture("leaf_texture_file");
     return s;
 }
 
@@ -109,7 +119,7 @@ NodeOutput evaluateTubeMesh(const NodeContext& ctx) {
     const skel::Skeleton& skeleton = inputSkeleton(ctx);
     TreeMeshSettings settings;
     try {
-        settings = treeMeshSettingsFromParams(ctx.params, mixSeed(ctx.seed, 0x7EAF));
+        settings = treeMeshSettingsFromParams(ctx.params, mixSeed(ctx.seed, 0x7EAF), ctx.baseDir);
     } catch (const InvalidInput& e) {
         ctx.fail(e.what());
     }
@@ -229,7 +239,9 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
                                   "lod_ribbon_pixels",
                                   "lod_leafy_twig_pixels",
                                   "lod_screen_height",
-                                  "lod_fov"}});
+                                  "lod_fov",
+                                  "bark_texture_file",
+                                  "leaf_texture_file"}});
     registry.add(graph::NodeType{"leaves",
                                  1,
                                  1,
