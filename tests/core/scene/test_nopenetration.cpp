@@ -29,6 +29,7 @@
 #include "engine/mesh/meshnodes.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/scene/forestbuild.h"
+#include "presetfile.h"
 
 using namespace sylva;
 
@@ -38,32 +39,7 @@ const std::filesystem::path kPresets = SYLVA_PRESETS_DIR;
 const std::filesystem::path kMeshes =
     std::filesystem::path(SYLVA_PRESETS_DIR) / ".." / "resources" / "demo" / "meshes";
 
-// Minimal species-file reader (the Qt-side loader lives in core/document).
-graph::SpeciesGraph loadPreset(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    const graph::Value root = graph::Value::parseJson(text.str(), path.string());
-    graph::SpeciesGraph g;
-    g.name = root.string("name", path.stem().string());
-    g.baseDir = path.parent_path();
-    g.sourceFile = path.string();
-    const graph::Value& graph = *root.find("graph");
-    for (const graph::Value& n : graph.find("nodes")->toArray()) {
-        graph::NodeDesc d;
-        d.id = n.string("id", "");
-        d.type = n.string("type", "");
-        if (const graph::Value* p = n.find("params")) d.params = *p;
-        if (const graph::Value* ins = n.find("inputs"))
-            for (const graph::Value& i : ins->toArray())
-                d.inputs.push_back(i.toString());
-        g.nodes.push_back(std::move(d));
-    }
-    g.output = graph.string("output", g.nodes.back().id);
-    if (const graph::Value* traits = root.find("traits"))
-        g.traits.crownRadius = traits->number("crown_radius", 0.0);
-    return g;
-}
+using sylva::testing::loadPreset;
 
 // --- Oracles (brute force over every triangle; nothing shared with the engine but the data) ---
 
