@@ -5,7 +5,7 @@
 #include "document/speciesfile.h"
 #include "engine/export/lodexport.h"
 #include "engine/export/treeexport.h"
-#include "engine/mesh/meshnodes.h"
+#include "engine/nodes/meshnodes.h"
 #include "engine/util/error.h"
 
 #include <QString>
@@ -35,7 +35,8 @@ int runLods(const std::vector<std::string>& argv) {
         species.skeletonSource(), seed.has_value(), seed ? static_cast<std::uint64_t>(*seed) : 0);
     if (!grown.skeleton) throw InvalidInput("the species produces no skeleton");
 
-    const mesh::TreeMeshSettings settings = mesh::treeMeshSettingsFromParams(out->params, 0);
+    const mesh::TreeMeshSettings settings =
+        mesh::treeMeshSettingsFromParams(out->params, 0, species.baseDir);
     exporter::LodExportOptions options;
     options.obj = !args.flag("--no-obj");
     options.glb = !args.flag("--no-glb");
