@@ -258,6 +258,11 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
                   "Axes thinner than this become camera-facing ribbons"),
            number("lod_screen_height", 1080.0, 1, 1e5, "px", "Viewport height the pixels refer to"),
            number("lod_fov", 60.0, 1, 179, "°", "Vertical field of view")});
+    group(tube.params, "Textures",
+          {other("bark_texture_file", ParamKind::File,
+                 "Bark PNG (tiles; u around, v along); none: Sylva's bark.png"),
+           other("leaf_texture_file", ParamKind::File,
+                 "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;

@@ -43,7 +43,7 @@ struct Grown {
 
 Grown grow(const std::filesystem::path& preset, std::uint64_t seed) {
     graph::registerBuiltinNodeTypes();
-    graph::Evaluator evaluator(testing::loadPreset(preset));
+    graph::Evaluator evaluator(sylva::testing::loadPreset(preset));
     const graph::NodeOutput& out = evaluator.evaluate(seed);
     Grown g;
     EXPECT_TRUE(out.mesh) << preset;
@@ -73,8 +73,9 @@ TEST(SpeciesLibrary, EverySpeciesHasFoliageAndItsOwnTexturesAndVariesBySeed) {
         ASSERT_TRUE(std::filesystem::exists(file)) << file;
         const Grown a = grow(file, 1), b = grow(file, 2);
         EXPECT_GT(a.barkTriangles, 0u) << species;
-        // Foliage that reads as a crown, not a few stray cards.
-        EXPECT_GE(a.leafTriangles, 400u) << species;
+        // Foliage that reads as a crown, not a few stray cards (the palm's 30 fronds are 60
+        // cards; every other species has thousands).
+        EXPECT_GE(a.leafTriangles, 100u) << species;
         ASSERT_EQ(a.barkTextures.size(), 1u) << species;
         ASSERT_EQ(a.leafTextures.size(), 1u) << species;
         const std::filesystem::path bark = *a.barkTextures.begin(), leaf = *a.leafTextures.begin();
