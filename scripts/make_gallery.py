@@ -105,8 +105,6 @@ def main():
             rows.append((sp, tris))
     if args.no_doc or args.only:
         return
-    with open(os.path.join(ROOT, "presets", "english-oak.json")):
-        pass
     lines = ["| species | seed %s |" % " | seed ".join(map(str, seeds)),
              "|---|" + "---|" * len(seeds)]
     for sp, tris in rows:

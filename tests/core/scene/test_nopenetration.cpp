@@ -164,6 +164,7 @@ struct PresetResult {
     std::size_t leafTested = 0, leafInside = 0;
     double height = 0.0, crownWidth = 0.0; // of the last tree
     double worstExcess = 0.0;              // largest depth - radius of a bark vertex, metres
+    double worstLeafDepth = 0.0;           // deepest leaf card vertex inside, metres
 };
 
 /// Grows \p preset's trees (its own parameters) beside the obstacles and checks them, at full
@@ -267,7 +268,10 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
                 const env::ObstacleMesh& om = scene.meshes()[k];
                 if (isLeaf[v]) {
                     ++r.leafTested;
-                    if (insideBrute(p, om) && depthBrute(p, om) > 1e-5) ++r.leafInside;
+                    if (!insideBrute(p, om)) continue;
+                    const double depth = depthBrute(p, om);
+                    r.worstLeafDepth = std::max(r.worstLeafDepth, depth);
+                    if (depth > 1e-5) ++r.leafInside;
                     continue;
                 }
                 ++r.barkTested;
@@ -306,7 +310,8 @@ void checkEveryPreset(bool lod) {
             << name << ": " << r.barkTooDeep << " of " << r.barkInside
             << " tube vertices inside are deeper than their radius (worst by " << r.worstExcess
             << " m)";
-        EXPECT_EQ(r.leafInside, 0u) << name << ": leaf card vertices inside an obstacle";
+        EXPECT_EQ(r.leafInside, 0u) << name << ": leaf card vertices inside an obstacle (deepest "
+                                    << r.worstLeafDepth << " m)";
         std::cout << name << ": colliding segments before " << r.collidingBefore << ", hidden "
                   << r.hiddenNodes << ", growth rounds <= " << r.maxGrowthRounds
                   << ", leaves dropped " << r.droppedLeaves << ", segments " << r.segments
