@@ -63,6 +63,25 @@ def render(build, species_file, png, size):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=env)
 
 
+# Close-ups in the editor's viewport (camera eye, target in metres): the bark and the leaf
+# cards at a size where their textures show.
+CLOSEUPS = [
+    ("silver-birch", (2.2, 3.2, 4.5), (0.0, 4.0, 0.0)),
+    ("english-oak", (3.5, 2.0, 6.0), (0.0, 3.2, 0.0)),
+]
+
+
+def closeup(build, species, eye, target, png, folder):
+    script = os.path.join(folder, "closeup.py")
+    with open(script, "w") as f:
+        f.write("import sylva\nwin = sylva.window()\nwin.look_from(%r, %r)\n"
+                "win.screenshot(%r, viewport_only=True)\n" % (eye, target, png))
+    cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24",
+           os.path.join(build, "app/editor/sylva"), "--size", "640x480", "--script", script,
+           seeded_copy(species, 1, folder)]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
+
+
 def triangles(build, species_file, folder):
     out = subprocess.run([os.path.join(build, "app/cli/sylva-cli"), "tree", species_file, "-o",
                           os.path.join(folder, "t.obj"), "--stats"],
@@ -71,10 +90,10 @@ def triangles(build, species_file, folder):
     return int(stats["triangles"]), float(stats.get("height", 0.0))
 
 
-def thumbnail(src, dst, thumb):
+def thumbnail(src, dst, thumb, colors=192):
     img = Image.open(src).convert("RGB")
     img.thumbnail((thumb, thumb), Image.LANCZOS)
-    img = img.quantize(colors=192, method=Image.MEDIANCUT, dither=Image.FLOYDSTEINBERG)
+    img = img.quantize(colors=colors, method=Image.MEDIANCUT, dither=Image.FLOYDSTEINBERG)
     img.save(dst, optimize=True)
 
 
@@ -103,6 +122,12 @@ def main():
                 tris.append(triangles(args.build, f, tmp))
                 print(sp, seed, tris[-1], file=sys.stderr)
             rows.append((sp, tris))
+        for sp, eye, target in CLOSEUPS:
+            if sp not in species:
+                continue
+            raw = os.path.join(tmp, "%s-closeup.png" % sp)
+            closeup(args.build, sp, eye, target, raw, tmp)
+            thumbnail(raw, os.path.join(args.out, "%s-closeup.png" % sp), 360, colors=96)
     if args.no_doc or args.only:
         return
     lines = ["| species | seed %s |" % " | seed ".join(map(str, seeds)),
