@@ -308,7 +308,7 @@ def strokes(x, t, segs, aspect):
     return mask
 
 
-def needle_tuft(name, w, h, base, seed, count=140, spread=48, length=(0.75, 0.98)):
+def needle_tuft(name, w, h, base, seed, count=220, spread=55, length=(0.75, 0.98)):
     """Scots pine: needles in a brush from the shoot at the bottom."""
     rng = np.random.default_rng(seed)
     x, t = canvas(w, h)
@@ -320,7 +320,7 @@ def needle_tuft(name, w, h, base, seed, count=140, spread=48, length=(0.75, 0.98
         ang = math.radians(rng.uniform(-spread, spread))
         L = rng.uniform(*length) * (1 - base_t * 0.6)
         x1 = math.sin(ang) * L * 0.8 / aspect
-        segs.append((0.0, base_t, np.clip(x1, -0.97, 0.97), min(0.99, base_t + math.cos(ang) * L * 0.75), 0.006))
+        segs.append((0.0, base_t, np.clip(x1, -0.97, 0.97), min(0.99, base_t + math.cos(ang) * L * 0.75), 0.0045))
     mask = strokes(x, t, segs, aspect)
     shade = 0.8 + 0.3 * np.kron(noise((h, w), 2, 8, seed), np.ones((SS, SS)))
     rgb = np.asarray(base) * shade[..., None] * (0.75 + 0.35 * t)[..., None]
@@ -506,7 +506,7 @@ def main():
     simple_leaf("lombardy-poplar_leaf.png", 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
 
     save_rgb("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
-    needle_tuft("scots-pine_leaf.png", 256, 256, (0.22, 0.36, 0.22), 162)
+    needle_tuft("scots-pine_leaf.png", 256, 256, (0.24, 0.38, 0.33), 162)
 
     save_rgb("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
     sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)
