@@ -82,6 +82,21 @@ def closeup(build, species, eye, target, png, folder):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
 
 
+def library(build, png, folder):
+    """The whole library in one project (resources/demo/library.sylva), seen from its camera."""
+    with open(os.path.join(ROOT, "resources/demo/library.sylva")) as f:
+        camera = json.load(f)["camera"]
+    script = os.path.join(folder, "library.py")
+    with open(script, "w") as f:
+        f.write("import sylva\nwin = sylva.window()\nwin.look_from(%r, %r)\n"
+                "win.screenshot(%r, viewport_only=True)\n"
+                % (tuple(camera["position"]), tuple(camera["target"]), png))
+    cmd = ["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24",
+           os.path.join(build, "app/editor/sylva"), "--size", "1200x600", "--script", script,
+           os.path.join(ROOT, "resources/demo/library.sylva")]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
+
+
 def triangles(build, species_file, folder):
     out = subprocess.run([os.path.join(build, "app/cli/sylva-cli"), "tree", species_file, "-o",
                           os.path.join(folder, "t.obj"), "--stats"],
@@ -128,6 +143,10 @@ def main():
             raw = os.path.join(tmp, "%s-closeup.png" % sp)
             closeup(args.build, sp, eye, target, raw, tmp)
             thumbnail(raw, os.path.join(args.out, "%s-closeup.png" % sp), 360, colors=96)
+        if not args.only:
+            raw = os.path.join(tmp, "library.png")
+            library(args.build, raw, tmp)
+            thumbnail(raw, os.path.join(args.out, "library.png"), 720, colors=128)
     if args.no_doc or args.only:
         return
     lines = ["| species | seed %s |" % " | seed ".join(map(str, seeds)),
