@@ -268,6 +268,10 @@ void MainWindow::createDocks() {
     // selected node's parameters on the right. Shown by Species ▸ Edit Species (or a double
     // click on a species in the outliner); closed they cost nothing.
     mWorkbench = new SpeciesWorkbench(*mDocument, this);
+    mSpeciesRegen = new QTimer(this);
+    mSpeciesRegen->setSingleShot(true);
+    mSpeciesRegen->setInterval(400);
+    connect(mSpeciesRegen, &QTimer::timeout, this, [this] { mGenerator->regenerate(); });
     mWorkbench->setObjectName(QStringLiteral("speciesWorkbench"));
     connect(mWorkbench, &SpeciesWorkbench::status, this,
             [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
@@ -831,7 +835,8 @@ const GenerationResult& MainWindow::lastResult() const {
 }
 
 bool MainWindow::isGenerating() const {
-    return mPreviewRunning || mGenerator->isBusy();
+    return mPreviewRunning || mGenerator->isBusy() ||
+           (mSpeciesRegen != nullptr && mSpeciesRegen->isActive());
 }
 
 bool MainWindow::waitForGeneration(int timeoutMs) {
@@ -901,6 +906,20 @@ void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
         // An edit of the document (a script adding a tree to a new project): show it.
         mPreview = false;
         mFrameNext = true;
+    } else if (change.what == doc::DocumentChange::Species && !change.species.isEmpty()) {
+        // A species edit: nothing to regrow when no tree grows from it; while the species
+        // editor is open, its preview goes first and the forest follows when the edits pause.
+        const std::string name = change.species.toStdString();
+        bool used = false;
+        for (const doc::ProjectInstance& t : mDocument->project().instances)
+            used = used || t.species == name;
+        for (const doc::PlacementDomain& d : mDocument->project().domains)
+            used = used || (d.counts.count(name) && d.counts.at(name) > 0);
+        if (!used) return;
+        if (mWorkbench && mWorkbench->isVisible()) {
+            mSpeciesRegen->start();
+            return;
+        }
     }
     mGenerator->regenerate();
 }

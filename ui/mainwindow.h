@@ -223,6 +223,7 @@ private:
     QAction* mAutoReloadAction = nullptr;
     QFileSystemWatcher* mFileWatcher = nullptr;
     QTimer* mReloadTimer = nullptr;
+    QTimer* mSpeciesRegen = nullptr; ///< the forest regrows when species edits pause
     QStringList mSources;
     std::map<QString, QDateTime> mStamps;
     QDateTime mDocumentStamp; ///< the project file's time when opened, saved or last seen

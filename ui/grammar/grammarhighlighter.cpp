@@ -22,10 +22,14 @@ bool isTurtle(QChar c) {
 
 GrammarHighlighter::GrammarHighlighter(QTextDocument* document)
     : QSyntaxHighlighter(document), mComment(makeFormat(QColor(110, 140, 110), false, true)),
-      mSetting(makeFormat(QColor(190, 120, 220), true)), mDefine(makeFormat(QColor(220, 150, 80), true)),
-      mArrow(makeFormat(QColor(230, 200, 90), true)), mContext(makeFormat(QColor(90, 190, 220), true)),
-      mCondition(makeFormat(QColor(220, 110, 110))), mTurtle(makeFormat(QColor(120, 200, 120), true)),
-      mModule(makeFormat(QColor(120, 170, 240), true)), mParameter(makeFormat(QColor(180, 180, 180))) {}
+      mSetting(makeFormat(QColor(190, 120, 220), true)),
+      mDefine(makeFormat(QColor(220, 150, 80), true)),
+      mArrow(makeFormat(QColor(230, 200, 90), true)),
+      mContext(makeFormat(QColor(90, 190, 220), true)),
+      mCondition(makeFormat(QColor(220, 110, 110))),
+      mTurtle(makeFormat(QColor(120, 200, 120), true)),
+      mModule(makeFormat(QColor(120, 170, 240), true)),
+      mParameter(makeFormat(QColor(180, 180, 180))) {}
 
 QTextCharFormat GrammarHighlighter::formatOf(const QString& kind) const {
     if (kind == QLatin1String("comment")) return mComment;

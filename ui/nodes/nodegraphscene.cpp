@@ -342,7 +342,7 @@ bool NodeGraphScene::attempt(const std::function<void()>& edit) {
     }
 }
 
-bool NodeGraphScene::addNode(const QString& type, const QPointF& at, const graph::Value& params) {
+bool NodeGraphScene::addNode(QString type, QPointF at, const graph::Value& params) {
     QString made;
     const bool ok = attempt([&] {
         made = QString::fromStdString(
@@ -357,7 +357,7 @@ bool NodeGraphScene::addNode(const QString& type, const QPointF& at, const graph
     return ok;
 }
 
-bool NodeGraphScene::connectNodes(const QString& from, const QString& to) {
+bool NodeGraphScene::connectNodes(QString from, QString to) {
     const bool ok = attempt([&] {
         mDocument.connectNodes(mSpecies.toStdString(), from.toStdString(), to.toStdString());
     });
@@ -365,7 +365,7 @@ bool NodeGraphScene::connectNodes(const QString& from, const QString& to) {
     return ok;
 }
 
-bool NodeGraphScene::disconnectNodes(const QString& from, const QString& to) {
+bool NodeGraphScene::disconnectNodes(QString from, QString to) {
     const bool ok = attempt([&] {
         mDocument.disconnectNodes(mSpecies.toStdString(), from.toStdString(), to.toStdString());
     });
@@ -373,7 +373,7 @@ bool NodeGraphScene::disconnectNodes(const QString& from, const QString& to) {
     return ok;
 }
 
-bool NodeGraphScene::makeOutput(const QString& id) {
+bool NodeGraphScene::makeOutput(QString id) {
     return attempt([&] { mDocument.setOutputNode(mSpecies.toStdString(), id.toStdString()); });
 }
 

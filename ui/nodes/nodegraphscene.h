@@ -96,16 +96,16 @@ public:
     void selectNode(const QString& id);
 
     // Actions (each one Document call; errors are reported through refused()).
-    bool addNode(const QString& type, const QPointF& at, const graph::Value& params = {});
-    bool connectNodes(const QString& from, const QString& to);
-    bool disconnectNodes(const QString& from, const QString& to);
+    bool addNode(QString type, QPointF at, const graph::Value& params = {});
+    bool connectNodes(QString from, QString to); // copies: the items naming them are rebuilt
+    bool disconnectNodes(QString from, QString to);
     /// Deletes the selected nodes and edges as one undo step.
     bool deleteSelection();
     /// The selected nodes (type, params, edges among them) as JSON for the clipboard.
     QString copySelection() const;
     /// Adds the nodes of a copySelection() text at \p at with fresh ids, one undo step.
     bool paste(const QString& text, const QPointF& at);
-    bool makeOutput(const QString& id);
+    bool makeOutput(QString id);
 
     /// The live preview's per-node results (compute time, error).
     void setRuns(const std::map<std::string, graph::Evaluator::NodeRun>& runs,

@@ -74,9 +74,13 @@ QMenu* NodeGraphView::makeAddMenu(const QPointF& scenePos) {
         typeActions << a;
     }
     connect(search, &QLineEdit::textChanged, menu, [typeActions](const QString& text) {
+        // Names first; when no name matches, what the types do ("leaf", "obstacle").
+        bool byName = false;
+        for (QAction* a : typeActions)
+            byName = byName || a->text().contains(text, Qt::CaseInsensitive);
         for (QAction* a : typeActions)
             a->setVisible(text.isEmpty() || a->text().contains(text, Qt::CaseInsensitive) ||
-                          a->toolTip().contains(text, Qt::CaseInsensitive));
+                          (!byName && a->toolTip().contains(text, Qt::CaseInsensitive)));
     });
     connect(search, &QLineEdit::returnPressed, menu, [menu, typeActions] {
         for (QAction* a : typeActions)
@@ -87,6 +91,21 @@ QMenu* NodeGraphView::makeAddMenu(const QPointF& scenePos) {
             }
     });
     return menu;
+}
+
+bool NodeGraphView::event(QEvent* event) {
+    // The editor's keys belong to the graph while it has focus, not to the window's shortcuts
+    // (Delete would delete the selected trees, Ctrl+C/V would do nothing).
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (key->key() == Qt::Key_Delete || key->key() == Qt::Key_Backspace ||
+            key->key() == Qt::Key_Tab || key->key() == Qt::Key_F || key->key() == Qt::Key_Home ||
+            key->matches(QKeySequence::Copy) || key->matches(QKeySequence::Paste)) {
+            event->accept();
+            return true;
+        }
+    }
+    return QGraphicsView::event(event);
 }
 
 bool NodeGraphView::focusNextPrevChild(bool next) {

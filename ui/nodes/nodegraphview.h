@@ -23,6 +23,7 @@ public:
     QMenu* makeAddMenu(const QPointF& scenePos);
 
 protected:
+    bool event(QEvent* event) override;
     void keyPressEvent(QKeyEvent* event) override;
     bool focusNextPrevChild(bool next) override;
     void wheelEvent(QWheelEvent* event) override;

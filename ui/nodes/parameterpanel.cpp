@@ -110,6 +110,9 @@ bool ParameterPanel::apply(const std::string& param, const Value& value, bool co
 
 void ParameterPanel::rebuild() {
     if (mBody) {
+        // Later: this may run inside one of its editors' signals.
+        mBody->hide();
+        mLayout->removeWidget(mBody);
         mBody->deleteLater();
         mBody = nullptr;
     }
@@ -184,6 +187,7 @@ void ParameterPanel::rebuild() {
     }
     bodyLayout->addStretch(1);
     mLayout->addWidget(mBody, 1);
+    mBody->show();
     refreshValues();
 }
 
@@ -226,6 +230,13 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
         spin->setObjectName(QStringLiteral("spin"));
         spin->setDecimals(decimalsFor(spec));
         spin->setRange(clampRange(spec.min), clampRange(spec.max));
+        // Without a default the node takes the value from elsewhere (the grammar's header):
+        // one step below the range reads "unset" and choosing it unsets the parameter.
+        const bool unsettable = def.isNull();
+        if (unsettable) {
+            spin->setMinimum(clampRange(spec.min) - spin->singleStep());
+            spin->setSpecialValueText(tr("unset"));
+        }
         spin->setKeyboardTracking(false);
         spin->setMinimumWidth(90);
         l->addWidget(spin);
@@ -235,6 +246,7 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
             slider = new QSlider(Qt::Horizontal, w);
             slider->setObjectName(QStringLiteral("slider"));
             slider->setRange(0, 1000);
+            slider->setMinimumWidth(70);
             l->addWidget(slider, 1);
             auto toValue = [lo, hi](int s) { return lo + (hi - lo) * s / 1000.0; };
             // A drag is one undo step: uncommitted while the handle moves, committed on release.
@@ -255,9 +267,11 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
             });
         }
         connect(spin, &QDoubleSpinBox::valueChanged, this,
-                [this, name](double v) { apply(name, Value(v)); });
-        mShow[name] = [spin, slider, def, lo, hi](const Value& v) {
-            const double x = numberOr(v, numberOr(def, lo));
+                [this, name, spin, unsettable](double v) {
+                    apply(name, unsettable && v <= spin->minimum() ? Value() : Value(v));
+                });
+        mShow[name] = [spin, slider, def, lo, hi, unsettable](const Value& v) {
+            const double x = numberOr(v, numberOr(def, unsettable ? spin->minimum() : lo));
             const QSignalBlocker b(spin);
             spin->setValue(x);
             QFont f = spin->font();
@@ -275,11 +289,17 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
         spin->setRange(int(std::max(clampRange(spec.min), -2e9)),
                        int(std::min(clampRange(spec.max), 2e9)));
         spin->setKeyboardTracking(false);
-        connect(spin, &QSpinBox::valueChanged, this,
-                [this, name](int v) { apply(name, Value(v)); });
-        mShow[name] = [spin, def, spec](const Value& v) {
+        const bool unsettable = def.isNull();
+        if (unsettable) {
+            spin->setMinimum(spin->minimum() - 1);
+            spin->setSpecialValueText(tr("unset"));
+        }
+        connect(spin, &QSpinBox::valueChanged, this, [this, name, spin, unsettable](int v) {
+            apply(name, unsettable && v == spin->minimum() ? Value() : Value(v));
+        });
+        mShow[name] = [spin, def](const Value& v) {
             const QSignalBlocker b(spin);
-            spin->setValue(int(numberOr(v, numberOr(def, clampRange(spec.min)))));
+            spin->setValue(int(numberOr(v, numberOr(def, spin->minimum()))));
             QFont f = spin->font();
             f.setItalic(v.isNull());
             spin->setFont(f);

@@ -306,6 +306,22 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 return p->editToScreenMs() > 0.0 ? p->editToScreenMs() : p->editToResultMs();
             },
             "Milliseconds from the last edit to the species preview's new mesh on screen.")
+        .def(
+            "preview_stats",
+            [](DocumentApi&) {
+                SpeciesPreview* p = window().workbench()->preview();
+                py::dict d;
+                d["edit_to_result_ms"] = p->editToResultMs();
+                d["edit_to_screen_ms"] = p->editToScreenMs();
+                d["evaluate_ms"] = p->result().evaluateMs;
+                py::dict runs;
+                for (const auto& [id, run] : p->result().runs)
+                    runs[py::str(id)] = py::make_tuple(run.ran, run.ms, run.evaluations);
+                d["nodes"] = runs;
+                return d;
+            },
+            "The last preview: edit → result and → screen, the evaluation alone, and per node "
+            "(ran, ms, evaluations).")
         .def("obstacles",
              [](DocumentApi&) {
                  py::list out;

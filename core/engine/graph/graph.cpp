@@ -429,9 +429,9 @@ const NodeOutput& Evaluator::evaluateNode(const std::string& nodeId, bool seedOv
                 entry = {};
                 throw;
             }
-            record.ms = std::chrono::duration<double, std::milli>(
-                            std::chrono::steady_clock::now() - start)
-                            .count();
+            record.ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
             record.ran = true;
             ++record.evaluations;
             // Accumulate the inputs' stats and timings that the node did not set itself, so the
