@@ -354,7 +354,7 @@ void ToolController::dab(const glm::vec3& centre) {
                 in.position = t.position;
                 in.rotation = float(glm::radians(t.rotation));
                 in.scale = float(t.scale);
-                preview.push_back({0, d.mesh, in.transform()});
+                preview.push_back({0, d.mesh, in.transform(), {}});
                 break;
             }
     }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -14,8 +15,10 @@
 
 #include <glm/glm.hpp>
 
+#include "ui/viewport/impostors.h"
 #include "ui/viewport/orbitcamera.h"
 #include "ui/viewport/picking.h"
+#include "ui/viewport/viewlod.h"
 
 class QOpenGLShaderProgram;
 
@@ -31,6 +34,8 @@ struct ViewTree {
     std::uint32_t id = 0; ///< the document's tree id; 0 for trees scattered by a domain
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};
+    /// What coarser levels are made from when the tree is small on screen (empty: none).
+    TreeLodSource lod;
 };
 
 /// What a tool (ui/viewport/toolcontroller.h) gets from the viewport. press() returns true
@@ -67,6 +72,16 @@ public:
     /// Requests an OpenGL 3.3 core profile with depth and 4x multisampling for every context.
     /// Call before constructing QApplication.
     static void installDefaultSurfaceFormat();
+    /// Edit ▸ Preferences' multisampling (QSettings "viewport/samples"): kAutoSamples, 0, 2, 4
+    /// or 8 samples a pixel. Automatic is 4 on a GPU and none on a software renderer (Mesa
+    /// llvmpipe draws a frame 2-3 times faster without it, docs/performance.md).
+    static constexpr int kAutoSamples = -1;
+    static int samplesPreference();
+    static void setSamplesPreference(int samples);
+    /// Puts the preference (or SYLVA_MSAA, which wins) into the default surface format that
+    /// new viewports take; automatic asks the driver which renderer it is. Call after
+    /// QApplication is made and named, before the first viewport. Returns the samples set.
+    static int applySamplesPreference();
 
     explicit Viewport(QWidget* parent = nullptr);
     ~Viewport() override;
@@ -115,6 +130,16 @@ public:
     std::size_t uploads() const { return mUploads; }
     /// Trees drawn in the last frame: those whose box is outside the view are skipped.
     std::size_t drawnTrees() const { return mDrawnTrees; }
+    /// Triangles drawn in the last frame (trees at their level of detail, obstacles, terrain).
+    std::size_t drawnTriangles() const { return mDrawnTriangles; }
+    /// Trees drawn at each level of detail in the last frame (0 = full).
+    const std::array<std::size_t, ViewLod::kLevels>& drawnPerLevel() const {
+        return mDrawnPerLevel;
+    }
+    /// The distance level of detail (ui/viewport/viewlod.h).
+    ViewLod& lod() { return *mLod; }
+    /// Trees whose coarser levels or impostor are still to be made (0: the view is final).
+    std::size_t lodPending() const { return mLod->pending() + mImpostorsWanted; }
 
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
@@ -202,6 +227,15 @@ private:
     };
     void syncTreeBuffers();
     void releaseTreeBuffers();
+    /// A tree to draw this frame: its index in mTrees, distance and level of detail.
+    struct TreeDraw {
+        std::size_t index = 0;
+        float distance = 0.0f;
+        int level = 0;
+    };
+    std::vector<TreeDraw> treesToDraw(const glm::mat4& viewProj) const;
+    void bakeImpostors(const std::vector<TreeDraw>& order);
+    void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight);
     void updateBounds();
     std::vector<ViewTree> mTrees;
     std::vector<ViewTree> mPreview;
@@ -215,6 +249,11 @@ private:
     QSet<std::uint32_t> mHighlighted, mHidden;
     std::size_t mUploads = 0;
     std::size_t mDrawnTrees = 0;
+    std::size_t mDrawnTriangles = 0;
+    std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
+    ViewLod* mLod = nullptr; ///< a child
+    Impostors mImpostors;
+    std::size_t mImpostorsWanted = 0; ///< at the last paint
 };
 
 } // namespace sylva::ui
