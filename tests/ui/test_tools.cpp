@@ -4,6 +4,7 @@
 // and its form byte for byte), a brush stroke of a 70/30 mix, the eraser, keys, and the window
 // processing events while a forest regrows. Screenshots of the selection and of a stroke.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
 
@@ -233,6 +234,64 @@ private Q_SLOTS:
         QVERIFY(std::memcmp(undone->positions.data(), beforePositions.data(),
                             beforePositions.size() * sizeof(glm::vec3)) == 0);
         QVERIFY(undoneTransform == beforeTransform);
+    }
+
+    /// The Move tool's handles: dragging along the ring turns the selected tree about its
+    /// trunk, dragging the box up scales it; each drag is one undo step (however many mouse
+    /// moves it took) and one undo gives back the exact document.
+    void handlesRotateAndScaleAndUndo() {
+        settle();
+        mWindow->tools().setTool(Tool::Move);
+        document().selectTrees({1});
+        QTest::qWait(50);
+        const auto h = mWindow->tools().handles();
+        QVERIFY(h.has_value());
+        const doc::Project before = document().project();
+        const doc::ProjectInstance start = document().tree(1);
+        QVERIFY(
+            viewport()->grabFramebuffer().save(outputPath(QStringLiteral("ui_tools_handles.png"))));
+
+        // A quarter turn along the ring, counter-clockwise seen from above.
+        std::vector<QPoint> ring;
+        for (int k = 0; k <= 9; ++k) {
+            const float a = glm::radians(10.0f * float(k));
+            ring.push_back(
+                screenOf(h->centre + h->radius * glm::vec3(std::cos(a), 0.0f, -std::sin(a))));
+        }
+        QCOMPARE(mWindow->tools().handleAt(ring.front()), ToolController::Handle::Ring);
+        const int steps = document().undoStack()->index();
+        drag(ring, {}, 4);
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Rotate tree"));
+        const doc::ProjectInstance turned = document().tree(1);
+        qInfo("ring drag: %.2f degrees", turned.rotation - start.rotation);
+        QVERIFY2(std::abs(turned.rotation - start.rotation - 90.0) < 5.0, "about a quarter turn");
+        QCOMPARE(turned.position, start.position);
+        QCOMPARE(turned.scale, start.scale);
+        settle();
+        document().undoStack()->undo();
+        QVERIFY(document().project() == before);
+        settle();
+
+        // The box, dragged 60 pixels up: larger by exp(0.005 · 60).
+        const QPoint box = screenOf(mWindow->tools().handles()->scaleHandle);
+        QCOMPARE(mWindow->tools().handleAt(box), ToolController::Handle::Scale);
+        drag(box, box - QPoint(0, 60), {}, 6);
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Scale tree"));
+        const doc::ProjectInstance scaled = document().tree(1);
+        QVERIFY(std::abs(scaled.scale / start.scale - std::exp(0.3)) < 1e-3);
+        QCOMPARE(scaled.position, start.position);
+        QCOMPARE(scaled.rotation, start.rotation);
+        settle();
+        document().undoStack()->undo();
+        QVERIFY(document().project() == before);
+        settle();
+
+        // Elsewhere than a handle a press still picks and drags trees; no handles in Select.
+        QCOMPARE(mWindow->tools().handleAt(QPoint(5, 5)), ToolController::Handle::None);
+        mWindow->tools().setTool(Tool::Select);
+        QVERIFY(!mWindow->tools().handles().has_value());
     }
 
     /// Arrow keys nudge the selection by 10 cm, one step each.

@@ -5,6 +5,10 @@
 
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include "engine/mesh/lod.h"
 #include "engine/mesh/mesh.h"
 
@@ -77,6 +81,7 @@ double ViewLod::equivalentHeights(double distance, double worldHeight, double fo
 }
 
 ViewLod::ViewLod(QObject* parent) : QObject(parent) {
+    mPool.setMaxThreadCount(1);
     mEnabled = qEnvironmentVariableIsSet("SYLVA_VIEW_LOD")
                    ? qEnvironmentVariableIntValue("SYLVA_VIEW_LOD") != 0
                    : true;
@@ -130,7 +135,11 @@ void ViewLod::startNext() {
     mRunningKeys.clear();
     for (const Job& job : chunk)
         mRunningKeys.insert(job.full.get());
-    mWatcher.setFuture(QtConcurrent::run([chunk = std::move(chunk), cancel = mCancel]() {
+    mWatcher.setFuture(QtConcurrent::run(&mPool, [chunk = std::move(chunk), cancel = mCancel]() {
+        // Behind the generation and the GUI: levels only make a view faster, an edit's new
+        // trees are what the user waits for. The pool's one thread keeps this niceness.
+        const auto tid = static_cast<id_t>(syscall(SYS_gettid));
+        if (getpriority(PRIO_PROCESS, tid) < 10) setpriority(PRIO_PROCESS, tid, 10);
         std::vector<Built> out;
         for (const Job& job : chunk) {
             if (cancel->load()) break;
@@ -177,8 +186,14 @@ void ViewLod::finished() {
         mLevels[b.full] = b;
         any = true;
     }
+    mReady = mReady || any;
     startNext();
-    if (any) Q_EMIT levelsReady();
+    // One repaint when all are made, not one a chunk: a repaint of a large forest costs the GUI
+    // thread as much as a frame, and the user is likely editing meanwhile.
+    if (!mRunning && mReady) {
+        mReady = false;
+        Q_EMIT levelsReady();
+    }
 }
 
 const mesh::Mesh* ViewLod::meshFor(const mesh::Mesh* full, int level, int* used) const {

@@ -11,6 +11,7 @@
 
 #include <QFutureWatcher>
 #include <QObject>
+#include <QThreadPool>
 
 #include <glm/glm.hpp>
 
@@ -88,7 +89,8 @@ public:
     void waitForIdle();
 
 Q_SIGNALS:
-    /// New levels are ready (emitted on the GUI thread): the viewport uploads and repaints.
+    /// New levels are ready (emitted on the GUI thread, once the queue is done): the viewport
+    /// uploads and repaints.
     void levelsReady();
 
 private:
@@ -108,10 +110,12 @@ private:
     std::map<const mesh::Mesh*, std::shared_ptr<const mesh::Mesh>> mAlive; ///< full meshes listed
     std::vector<Job> mQueue;
     bool mRunning = false;
+    bool mReady = false; ///< levels arrived since the last levelsReady()
     std::size_t mRunningCount = 0;
     std::set<const mesh::Mesh*> mRunningKeys;
     std::vector<std::pair<std::shared_ptr<const mesh::Mesh>, TreeLodSource>> mListed;
     std::shared_ptr<std::atomic<bool>> mCancel;
+    QThreadPool mPool; ///< one thread, niced
     QFutureWatcher<std::vector<Built>> mWatcher;
 };
 

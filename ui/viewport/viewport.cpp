@@ -363,15 +363,19 @@ void Viewport::initializeGL() {
     glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride,
                           reinterpret_cast<void*>(6 * sizeof(float)));
 
-    glBindVertexArray(mGridVao);
-    glBindBuffer(GL_ARRAY_BUFFER, mGridVbo);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
-                          reinterpret_cast<void*>(3 * sizeof(float)));
+    glGenVertexArrays(1, &mOverlayVao);
+    glGenBuffers(1, &mOverlayVbo);
+    for (const auto& [vao, vbo] :
+         {std::pair{mGridVao, mGridVbo}, std::pair{mOverlayVao, mOverlayVbo}}) {
+        glBindVertexArray(vao);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                              reinterpret_cast<void*>(3 * sizeof(float)));
+    }
     glBindVertexArray(0);
-
     mGlReady = true;
     mMeshDirty = true;
     mTreesDirty = true;
@@ -380,6 +384,9 @@ void Viewport::initializeGL() {
 
 void Viewport::releaseGl() {
     releaseTreeBuffers();
+    glDeleteVertexArrays(1, &mOverlayVao);
+    glDeleteBuffers(1, &mOverlayVbo);
+    mOverlayVao = mOverlayVbo = 0;
     mImpostors.release();
     glDeleteVertexArrays(1, &mMeshVao);
     glDeleteBuffers(1, &mMeshVbo);
@@ -741,7 +748,35 @@ void Viewport::paintGL() {
             mImpostors.end();
         }
     }
+    drawOverlay(viewProj);
     glBindVertexArray(0);
+}
+
+void Viewport::drawOverlay(const glm::mat4& viewProj) {
+    if (!mOverlay) return;
+    const std::vector<OverlayLine> lines = mOverlay();
+    if (lines.empty()) return;
+    std::vector<float> data;
+    data.reserve(lines.size() * 14);
+    for (const OverlayLine& l : lines)
+        for (const glm::vec3& p : {l.a, l.b})
+            data.insert(data.end(), {p.x, p.y, p.z, l.color.x, l.color.y, l.color.z, l.color.w});
+    // Handles stay visible through the trees and the ground they stand in.
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    mLineProgram->bind();
+    setUniform(*mLineProgram, "uViewProj", viewProj);
+    setUniform(*mLineProgram, "uCenter", glm::vec3(0.0f));
+    mLineProgram->setUniformValue("uExtent", 1e30f); // no fading
+    glBindVertexArray(mOverlayVao);
+    glBindBuffer(GL_ARRAY_BUFFER, mOverlayVbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_LINES, 0, GLsizei(data.size() / 7));
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
 }
 
 void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight) {

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -36,6 +37,12 @@ struct ViewTree {
     glm::mat4 transform{1.0f};
     /// What coarser levels are made from when the tree is small on screen (empty: none).
     TreeLodSource lod;
+};
+
+/// A line a tool draws over the scene (its handles), world space, not hidden by the scene.
+struct OverlayLine {
+    glm::vec3 a{0.0f}, b{0.0f};
+    glm::vec4 color{1.0f};
 };
 
 /// What a tool (ui/viewport/toolcontroller.h) gets from the viewport. press() returns true
@@ -125,6 +132,11 @@ public:
     void frameBox(const glm::vec3& lo, const glm::vec3& hi);
 
     void setTool(ViewportTool* tool) { mTool = tool; }
+    /// Lines drawn over the scene at every paint (a tool's handles), asked for at each paint.
+    void setOverlay(std::function<std::vector<OverlayLine>()> provider) {
+        mOverlay = std::move(provider);
+        update();
+    }
     const QSet<std::uint32_t>& highlightedTrees() const { return mHighlighted; }
     /// Meshes uploaded to the GPU since construction (for tests: unchanged trees are not).
     std::size_t uploads() const { return mUploads; }
@@ -241,6 +253,9 @@ private:
     std::vector<ViewTree> mPreview;
     std::vector<Bounds> mTreeBounds;
     ViewportTool* mTool = nullptr;
+    std::function<std::vector<OverlayLine>()> mOverlay;
+    GLuint mOverlayVao = 0, mOverlayVbo = 0;
+    void drawOverlay(const glm::mat4& viewProj);
     bool mToolDrag = false;
     QPoint mPressPos;
     bool mMovedSincePress = false;
