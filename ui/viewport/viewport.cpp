@@ -557,9 +557,11 @@ void Viewport::syncTreeBuffers() {
         all.push_back(t.mesh);
     for (const ViewTree& t : mPreview)
         all.push_back(t.mesh);
+    const std::size_t treeMeshes = all.size();
     for (std::shared_ptr<const mesh::Mesh>& level : mLod->allLevelMeshes())
         all.push_back(std::move(level));
-    for (const std::shared_ptr<const mesh::Mesh>& treeMesh : all) {
+    for (std::size_t k = 0; k < all.size(); ++k) {
+        const std::shared_ptr<const mesh::Mesh>& treeMesh = all[k];
         if (!treeMesh || treeMesh->empty() || kept.count(treeMesh.get())) continue;
         auto old = mGpuTrees.find(treeMesh.get());
         if (old != mGpuTrees.end()) {
@@ -589,7 +591,7 @@ void Viewport::syncTreeBuffers() {
                                   reinterpret_cast<void*>(std::uintptr_t(3 * a) * sizeof(float)));
         }
         glBindVertexArray(0);
-        ++mUploads;
+        ++(k < treeMeshes ? mUploads : mLevelUploads);
         kept.emplace(treeMesh.get(), std::move(gpu));
     }
     releaseTreeBuffers(); // those no tree draws any more

@@ -140,6 +140,8 @@ public:
     const QSet<std::uint32_t>& highlightedTrees() const { return mHighlighted; }
     /// Meshes uploaded to the GPU since construction (for tests: unchanged trees are not).
     std::size_t uploads() const { return mUploads; }
+    /// Coarser levels of detail uploaded (ui/viewport/viewlod.h), not counted in uploads().
+    std::size_t levelUploads() const { return mLevelUploads; }
     /// Trees drawn in the last frame: those whose box is outside the view are skipped.
     std::size_t drawnTrees() const { return mDrawnTrees; }
     /// Triangles drawn in the last frame (trees at their level of detail, obstacles, terrain).
@@ -263,6 +265,7 @@ private:
     bool mTreesDirty = false;
     QSet<std::uint32_t> mHighlighted, mHidden;
     std::size_t mUploads = 0;
+    std::size_t mLevelUploads = 0;
     std::size_t mDrawnTrees = 0;
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
