@@ -1150,7 +1150,7 @@ void MainWindow::reportError(const QString& message) {
 // --- output -----------------------------------------------------------------------------
 
 bool MainWindow::saveScreenshot(const QString& path) {
-    const QImage image = mViewport->grabFramebuffer();
+    const QImage image = mViewport->grabSharp();
     if (image.isNull()) {
         reportError(tr("Could not read the viewport's image (no OpenGL context)."));
         return false;

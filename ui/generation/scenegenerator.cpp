@@ -15,7 +15,7 @@
 #include "document/scenebuild.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
-#include "engine/mesh/meshnodes.h"
+#include "engine/nodes/meshnodes.h"
 #include "engine/scene/forestbuild.h"
 #include "engine/util/random.h"
 

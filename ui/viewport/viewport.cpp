@@ -11,6 +11,7 @@
 #include <QOpenGLShaderProgram>
 #include <QSettings>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -255,6 +256,13 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(160, 120);
+    mSharpTimer = new QTimer(this);
+    mSharpTimer->setSingleShot(true);
+    mSharpTimer->setInterval(kSharpAfterMs);
+    connect(mSharpTimer, &QTimer::timeout, this, [this] {
+        mSharpNext = true;
+        update();
+    });
     mLod = new ViewLod(this);
     connect(mLod, &ViewLod::levelsReady, this, [this] {
         mTreesDirty = true;
@@ -334,6 +342,19 @@ void Viewport::initializeGL() {
     mGlInfo = QStringLiteral("%1, OpenGL %2")
                   .arg(reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
                        reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+    {
+        // A software rasteriser's frame time grows with the pixels drawn; a GPU's hardly does.
+        const QString renderer =
+            QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).toLower();
+        bool software = false;
+        for (const char* name : {"llvmpipe", "softpipe", "swrast", "swiftshader"})
+            software = software || renderer.contains(QLatin1String(name));
+        mMotionScale = software && context()->format().samples() <= 1 ? 0.5f : 1.0f;
+        if (qEnvironmentVariableIsSet("SYLVA_MOTION_SCALE"))
+            mMotionScale =
+                std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
+        if (context()->format().samples() > 1) mMotionScale = 1.0f; // no blit into multisampled
+    }
     mMeshProgram = buildProgram(kMeshVertexShader, kMeshFragmentShader, mGlError);
     if (mMeshProgram) mLineProgram = buildProgram(kLineVertexShader, kLineFragmentShader, mGlError);
     if (mLineProgram)
@@ -384,6 +405,7 @@ void Viewport::initializeGL() {
 
 void Viewport::releaseGl() {
     releaseTreeBuffers();
+    releaseReducedTarget();
     glDeleteVertexArrays(1, &mOverlayVao);
     glDeleteBuffers(1, &mOverlayVbo);
     mOverlayVao = mOverlayVbo = 0;
@@ -468,6 +490,7 @@ void Viewport::setPreviewTrees(std::vector<ViewTree> trees) {
 void Viewport::setTreeTransform(std::size_t index, const glm::mat4& transform) {
     if (index >= mTrees.size()) return;
     mTrees[index].transform = transform;
+    mTransformsMoved = true;
     if (index < mTreeBounds.size() && mTrees[index].mesh)
         mTreeBounds[index] = worldBounds(*mTrees[index].mesh, transform);
     update();
@@ -675,6 +698,20 @@ void Viewport::paintGL() {
     const std::vector<TreeDraw> order = treesToDraw(viewProj);
     bakeImpostors(order);
 
+    // While the view moves, a software renderer draws fewer pixels (motionScale()); the sharp
+    // frame follows when it rests.
+    const bool moving = viewProj != mLastViewProj || mTransformsMoved;
+    mLastViewProj = viewProj;
+    mTransformsMoved = false;
+    const QSize full(int(std::lround(width() * devicePixelRatioF())),
+                     int(std::lround(height() * devicePixelRatioF())));
+    mLastReduced = false;
+    if (mMotionScale < 1.0f && moving && !mSharpNext) {
+        mLastReduced = bindReducedTarget(full);
+        mSharpTimer->start();
+    }
+    mSharpNext = false;
+
     glClearColor(kBackgroundBottom.x, kBackgroundBottom.y, kBackgroundBottom.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
@@ -752,6 +789,55 @@ void Viewport::paintGL() {
     }
     drawOverlay(viewProj);
     glBindVertexArray(0);
+    if (mLastReduced) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, mLowFbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+        glBlitFramebuffer(0, 0, mLowSize.width(), mLowSize.height(), 0, 0, full.width(),
+                          full.height(), GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+        glViewport(0, 0, full.width(), full.height());
+    }
+}
+
+bool Viewport::bindReducedTarget(const QSize& full) {
+    const QSize size(std::max(1, int(std::lround(float(full.width()) * mMotionScale))),
+                     std::max(1, int(std::lround(float(full.height()) * mMotionScale))));
+    if (!mLowFbo || size != mLowSize) {
+        releaseReducedTarget();
+        glGenFramebuffers(1, &mLowFbo);
+        glGenRenderbuffers(1, &mLowColor);
+        glGenRenderbuffers(1, &mLowDepth);
+        glBindRenderbuffer(GL_RENDERBUFFER, mLowColor);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.width(), size.height());
+        glBindRenderbuffer(GL_RENDERBUFFER, mLowDepth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.width(), size.height());
+        glBindFramebuffer(GL_FRAMEBUFFER, mLowFbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, mLowColor);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, mLowDepth);
+        mLowSize = size;
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            releaseReducedTarget();
+            glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+            mMotionScale = 1.0f; // not again
+            return false;
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, mLowFbo);
+    glViewport(0, 0, mLowSize.width(), mLowSize.height());
+    return true;
+}
+
+void Viewport::releaseReducedTarget() {
+    if (mLowFbo) glDeleteFramebuffers(1, &mLowFbo);
+    if (mLowColor) glDeleteRenderbuffers(1, &mLowColor);
+    if (mLowDepth) glDeleteRenderbuffers(1, &mLowDepth);
+    mLowFbo = mLowColor = mLowDepth = 0;
+    mLowSize = {};
+}
+
+QImage Viewport::grabSharp() {
+    mSharpNext = true;
+    return grabFramebuffer();
 }
 
 void Viewport::drawOverlay(const glm::mat4& viewProj) {

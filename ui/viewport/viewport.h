@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -22,6 +23,7 @@
 #include "ui/viewport/viewlod.h"
 
 class QOpenGLShaderProgram;
+class QTimer;
 
 namespace sylva::mesh {
 struct Mesh;
@@ -169,6 +171,17 @@ public:
     void setGridVisible(bool visible);
     bool isGridVisible() const { return mGridVisible; }
 
+    /// While the view moves (the camera or a dragged tree changed since the last frame) a
+    /// software renderer draws the scene at this fraction of the resolution and scales it up;
+    /// a sharp frame follows when the view rests (kSharpAfterMs). 1 on a graphics card, with
+    /// multisampling, or with SYLVA_MOTION_SCALE=1 (0.25 to 1).
+    float motionScale() const { return mMotionScale; }
+    static constexpr int kSharpAfterMs = 250;
+    /// The viewport's image at full resolution (for screenshots), whether the view moves.
+    QImage grabSharp();
+    /// Whether the last frame was drawn at the reduced resolution.
+    bool lastFrameReduced() const { return mLastReduced; }
+
     /// Renderer and version as reported by the driver, empty before initializeGL().
     QString glInfo() const { return mGlInfo; }
     /// Why rendering is not possible (no 3.3 context, a shader failed), empty when fine.
@@ -266,6 +279,17 @@ private:
     QSet<std::uint32_t> mHighlighted, mHidden;
     std::size_t mUploads = 0;
     std::size_t mLevelUploads = 0;
+    // Reduced resolution while the view moves (motionScale()).
+    float mMotionScale = 1.0f;
+    bool mLastReduced = false;
+    bool mSharpNext = false;
+    glm::mat4 mLastViewProj{0.0f};
+    bool mTransformsMoved = false;
+    QTimer* mSharpTimer = nullptr;
+    GLuint mLowFbo = 0, mLowColor = 0, mLowDepth = 0;
+    QSize mLowSize;
+    bool bindReducedTarget(const QSize& full);
+    void releaseReducedTarget();
     std::size_t mDrawnTrees = 0;
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
