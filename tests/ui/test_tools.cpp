@@ -294,6 +294,50 @@ private Q_SLOTS:
         QVERIFY(!mWindow->tools().handles().has_value());
     }
 
+    /// The viewport's distance LOD: seen from far away the trees are drawn with coarser levels
+    /// and impostors (fewer triangles than the scene holds), a click still picks the tree
+    /// under the cursor (picking tests the full mesh) and the selection is still tinted.
+    void viewLodFarAwayKeepsPicking() {
+        settle();
+        QCOMPARE(ViewLod::levelFor(0.5), 0);
+        QVERIFY(ViewLod::levelFor(ViewLod::levelHeights(ViewLod::kImpostorLevel)) ==
+                ViewLod::kImpostorLevel);
+        // Twice as far (or a screen half as high) is twice the equivalent distance.
+        QVERIFY(std::abs(ViewLod::equivalentHeights(200.0, 10.0, 1.0, 900.0) -
+                         2.0 * ViewLod::equivalentHeights(100.0, 10.0, 1.0, 900.0)) < 1e-9);
+        mWindow->tools().setTool(Tool::Select);
+        const auto [eye, target] =
+            std::pair{document().project().cameraPosition, document().project().cameraTarget};
+        viewport()->camera().lookFrom(target + 4.0f * (eye - target), target);
+        viewport()->update();
+        QTRY_VERIFY_WITH_TIMEOUT(viewport()->lodPending() == 0, kTimeoutMs);
+        viewport()->grabFramebuffer(); // a frame at the levels now made
+        QVERIFY(viewport()->grabSharp().save(outputPath(QStringLiteral("ui_tools_far_lod.png"))));
+        std::size_t triangles = 0;
+        for (const ViewTree& t : viewport()->trees())
+            triangles += t.mesh->triangleCount();
+        const auto& perLevel = viewport()->drawnPerLevel();
+        qInfo("far: trees per level %zu %zu %zu %zu, %zu of %zu tree triangles drawn", perLevel[0],
+              perLevel[1], perLevel[2], perLevel[3], viewport()->drawnTriangles(), triangles);
+        QVERIFY(perLevel[0] < viewport()->drawnTrees());
+        QVERIFY(viewport()->drawnTriangles() < triangles);
+
+        const QPoint at = screenOf(document().tree(1).position + glm::vec3(0, 1.0f, 0));
+        QVERIFY(at.x() >= 0);
+        const int index = viewport()->treeAt(at);
+        QVERIFY(index >= 0);
+        QTest::mouseClick(viewport(), Qt::LeftButton, {}, at);
+        if (const doc::TreeId id = viewport()->trees()[std::size_t(index)].id; id != 0) {
+            // The trunk may be behind another tree from here: whichever is drawn is picked.
+            QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{id});
+            QVERIFY(viewport()->highlightedTrees().contains(id));
+        }
+        document().selectTrees({});
+        viewport()->frameScene();
+        viewport()->camera().lookFrom(eye, target);
+        viewport()->update();
+    }
+
     /// Arrow keys nudge the selection by 10 cm, one step each.
     void arrowKeysNudge() {
         mWindow->tools().setTool(Tool::Select);

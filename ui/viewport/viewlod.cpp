@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -28,7 +29,7 @@ constexpr double kLevelHeights[ViewLod::kLevels] = {0.0, 2.5, 6.0, 20.0};
 // camera LOD already made the full mesh for (closer, it would hardly be coarser).
 constexpr double kReuseFactor = 1.25;
 constexpr int kLevelResolution[ViewLod::kLevels] = {0, 6, 4, 3};
-// A trees handed to the worker at a time: levels show up while the rest are still made.
+// Trees handed to the worker at a time: levels show up while the rest are still made.
 constexpr std::size_t kChunk = 8;
 
 float heightOf(const mesh::Mesh& m) {
@@ -173,7 +174,7 @@ void ViewLod::startNext() {
 }
 
 void ViewLod::finished() {
-    // A late signal of a future already taken by waitForIdle(), or one still running.
+    // A late signal of an earlier future, or one still running.
     if (!mRunning || !mWatcher.future().isFinished()) return;
     mRunning = false;
     mRunningKeys.clear();
@@ -215,13 +216,6 @@ std::vector<std::shared_ptr<const mesh::Mesh>> ViewLod::allLevelMeshes() const {
         for (int k = 1; k < kLevels; ++k)
             if (built.levels[std::size_t(k)]) out.push_back(built.levels[std::size_t(k)]);
     return out;
-}
-
-void ViewLod::waitForIdle() {
-    while (mRunning) {
-        mWatcher.waitForFinished();
-        finished();
-    }
 }
 
 } // namespace sylva::ui

@@ -85,8 +85,6 @@ public:
 
     /// Trees whose levels are still being made.
     std::size_t pending() const { return mQueue.size() + (mRunning ? mRunningCount : 0); }
-    /// Waits (processing no events) until nothing is pending; for tests and benchmarks.
-    void waitForIdle();
 
 Q_SIGNALS:
     /// New levels are ready (emitted on the GUI thread, once the queue is done): the viewport
