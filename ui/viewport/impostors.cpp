@@ -44,9 +44,12 @@ uniform sampler2D uPicture;
 uniform float uHighlight;
 out vec4 fragColor;
 void main() {
-    vec4 t = texture(uPicture, vUv);
-    if (t.a < 0.5) discard;
-    vec3 linear = pow(t.rgb, vec3(2.2));
+    // Coverage averages down the mipmaps: one level finer than the screen asks for and a
+    // threshold under a half keep sparse crowns about as dense as the meshes look at that size
+    // (without multisampling any leaf over a pixel's centre fills it) and bare branches open.
+    vec4 t = texture(uPicture, vUv, -1.0);
+    if (t.a < 0.35) discard;
+    vec3 linear = pow(t.rgb / t.a, vec3(2.2)); // the pictures are premultiplied (clear: 0)
     linear = mix(linear, vec3(1.0, 0.45, 0.05), uHighlight);
     fragColor = vec4(pow(linear, vec3(1.0 / 2.2)), 1.0);
 }
@@ -115,8 +118,9 @@ void Impostors::bake(const std::shared_ptr<const mesh::Mesh>& m, const DrawMesh&
     gl.glBindFramebuffer(GL_FRAMEBUFFER, mFbo);
     gl.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, card.texture, 0);
     gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, mDepth);
-    // Transparent, with a colour near the foliage's so that filtered edges do not darken.
-    gl.glClearColor(0.12f, 0.16f, 0.08f, 0.0f);
+    // Transparent black: the picture is premultiplied by its coverage, so that mipmaps average
+    // the tree's colours without the background's (the shader divides by alpha).
+    gl.glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     gl.glEnable(GL_DEPTH_TEST);
     gl.glDepthMask(GL_TRUE);

@@ -253,6 +253,8 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     format.setDepthBufferSize(24);
     if (format.samples() < 0) format.setSamples(QSurfaceFormat::defaultFormat().samples());
     setFormat(format);
+    // format() reports the context's format once it exists, whose samples are not the FBO's.
+    mSamples = format.samples();
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(160, 120);
@@ -349,11 +351,11 @@ void Viewport::initializeGL() {
         bool software = false;
         for (const char* name : {"llvmpipe", "softpipe", "swrast", "swiftshader"})
             software = software || renderer.contains(QLatin1String(name));
-        mMotionScale = software && context()->format().samples() <= 1 ? 0.5f : 1.0f;
+        mMotionScale = software && mSamples <= 1 ? 0.5f : 1.0f;
         if (qEnvironmentVariableIsSet("SYLVA_MOTION_SCALE"))
             mMotionScale =
                 std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
-        if (context()->format().samples() > 1) mMotionScale = 1.0f; // no blit into multisampled
+        if (mSamples > 1) mMotionScale = 1.0f; // no blit into a multisampled framebuffer
     }
     mMeshProgram = buildProgram(kMeshVertexShader, kMeshFragmentShader, mGlError);
     if (mMeshProgram) mLineProgram = buildProgram(kLineVertexShader, kLineFragmentShader, mGlError);

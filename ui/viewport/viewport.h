@@ -281,6 +281,7 @@ private:
     std::size_t mLevelUploads = 0;
     // Reduced resolution while the view moves (motionScale()).
     float mMotionScale = 1.0f;
+    int mSamples = 0; ///< multisampling of the widget's framebuffer, as requested
     bool mLastReduced = false;
     bool mSharpNext = false;
     glm::mat4 mLastViewProj{0.0f};
