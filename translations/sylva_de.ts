@@ -178,6 +178,10 @@
         <source>Move node %1</source>
         <translation>Knoten %1 verschieben</translation>
     </message>
+    <message>
+        <source>Apply preset %1</source>
+        <translation>Vorlage %1 anwenden</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -886,6 +890,10 @@
         <translation>Art &amp;bearbeiten…</translation>
     </message>
     <message>
+        <source>Preset Browser</source>
+        <translation>Vorlagenbrowser</translation>
+    </message>
+    <message>
         <source>Automatic (off on a software renderer)</source>
         <translation>Automatisch (aus bei Software-Rendering)</translation>
     </message>
@@ -1100,6 +1108,45 @@
     <message>
         <source>Apply</source>
         <translation>Anwenden</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PresetBrowser</name>
+    <message>
+        <source>Double-click a preset to apply it to the species</source>
+        <translation>Doppelklick auf eine Vorlage wendet sie auf die Art an</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Save species as preset…</source>
+        <translation>Art als Vorlage speichern…</translation>
+    </message>
+    <message>
+        <source>Save species as preset</source>
+        <translation>Art als Vorlage speichern</translation>
+    </message>
+    <message>
+        <source>Species (*.json)</source>
+        <translation>Arten (*.json)</translation>
+    </message>
+    <message>
+        <source>The project has no species to apply a preset to.</source>
+        <translation>Das Projekt hat keine Art, auf die eine Vorlage angewendet werden kann.</translation>
+    </message>
+    <message>
+        <source>Apply replaces the graph of species &lt;b&gt;%1&lt;/b&gt; (undoable).</source>
+        <translation>Anwenden ersetzt den Graphen der Art &lt;b&gt;%1&lt;/b&gt; (rückgängig machbar).</translation>
+    </message>
+    <message>
+        <source>Applied %1 to %2</source>
+        <translation>%1 auf %2 angewendet</translation>
+    </message>
+    <message>
+        <source>Saved %1 as %2</source>
+        <translation>%1 als %2 gespeichert</translation>
     </message>
 </context>
 <context>

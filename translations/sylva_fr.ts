@@ -178,6 +178,10 @@
         <source>Move node %1</source>
         <translation>Déplacer le nœud %1</translation>
     </message>
+    <message>
+        <source>Apply preset %1</source>
+        <translation>Appliquer le préréglage %1</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -886,6 +890,10 @@
         <translation>&amp;Modifier l’espèce…</translation>
     </message>
     <message>
+        <source>Preset Browser</source>
+        <translation>Navigateur de préréglages</translation>
+    </message>
+    <message>
         <source>Automatic (off on a software renderer)</source>
         <translation>Automatique (désactivé avec un rendu logiciel)</translation>
     </message>
@@ -1100,6 +1108,45 @@
     <message>
         <source>Apply</source>
         <translation>Appliquer</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PresetBrowser</name>
+    <message>
+        <source>Double-click a preset to apply it to the species</source>
+        <translation>Double-cliquez sur un préréglage pour l’appliquer à l’espèce</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Appliquer</translation>
+    </message>
+    <message>
+        <source>Save species as preset…</source>
+        <translation>Enregistrer l’espèce comme préréglage…</translation>
+    </message>
+    <message>
+        <source>Save species as preset</source>
+        <translation>Enregistrer l’espèce comme préréglage</translation>
+    </message>
+    <message>
+        <source>Species (*.json)</source>
+        <translation>Espèces (*.json)</translation>
+    </message>
+    <message>
+        <source>The project has no species to apply a preset to.</source>
+        <translation>Le projet n’a aucune espèce à laquelle appliquer un préréglage.</translation>
+    </message>
+    <message>
+        <source>Apply replaces the graph of species &lt;b&gt;%1&lt;/b&gt; (undoable).</source>
+        <translation>Appliquer remplace le graphe de l’espèce &lt;b&gt;%1&lt;/b&gt; (annulable).</translation>
+    </message>
+    <message>
+        <source>Applied %1 to %2</source>
+        <translation>%1 appliqué à %2</translation>
+    </message>
+    <message>
+        <source>Saved %1 as %2</source>
+        <translation>%1 enregistré sous %2</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,6 @@
 #include "ui/mainwindow.h"
+#include "ui/document/presetbrowser.h"
+#include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/parameterpanel.h"
 #include "ui/speciesworkbench.h"
 
@@ -189,7 +191,8 @@ MainWindow::~MainWindow() {
     if (PythonHost::window() == this) PythonHost::setWindow(nullptr);
     // The species editor talks to the document (a grammar burst is committed when its editor
     // loses focus): it goes first, while the document (an older child) still exists.
-    for (const QString& name : {QStringLiteral("speciesDock"), QStringLiteral("parametersDock")}) {
+    for (const QString& name : {QStringLiteral("speciesDock"), QStringLiteral("parametersDock"),
+                                QStringLiteral("presetBrowserDock")}) {
         delete mDocks[name];
         mDocks.erase(name);
     }
@@ -286,6 +289,16 @@ void MainWindow::createDocks() {
     dock(QStringLiteral("parametersDock"), tr("Node Parameters"), parametersScroll,
          Qt::RightDockWidgetArea)
         ->hide();
+    mPresetBrowser = new PresetBrowser(*mDocument, this);
+    mPresetBrowser->setObjectName(QStringLiteral("presetBrowser"));
+    connect(mPresetBrowser, &PresetBrowser::failed, this, &MainWindow::reportError);
+    connect(mPresetBrowser, &PresetBrowser::status, this,
+            [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
+    connect(mWorkbench->graphScene(), &NodeGraphScene::nodeSelected, mPresetBrowser,
+            [this] { mPresetBrowser->setTargetSpecies(mWorkbench->species()); });
+    dock(QStringLiteral("presetBrowserDock"), tr("Preset Browser"), mPresetBrowser,
+         Qt::RightDockWidgetArea)
+        ->hide();
 
     mMessages = new MessagesPanel(this);
     dock(QStringLiteral("messagesDock"), tr("Messages"), mMessages, Qt::BottomDockWidgetArea);
@@ -321,12 +334,16 @@ void MainWindow::editSpecies(const QString& species) {
         for (const char* name : {"statsDock"})
             if (QDockWidget* d = mDocks[QLatin1String(name)]; d && !d->isFloating())
                 tabifyDockWidget(d, parametersDock);
+        QDockWidget* presets = mDocks[QStringLiteral("presetBrowserDock")];
+        presets->show();
+        tabifyDockWidget(parametersDock, presets);
         resizeDocks({speciesDock}, {std::max(320, height() * 2 / 5)}, Qt::Vertical);
         resizeDocks({parametersDock}, {360}, Qt::Horizontal);
     }
     speciesDock->raise();
     parametersDock->raise();
     if (!species.isEmpty()) mWorkbench->setSpecies(species);
+    mPresetBrowser->setTargetSpecies(mWorkbench->species());
 }
 
 void MainWindow::createMenus() {

@@ -41,6 +41,7 @@ class PropertiesPanel;
 class PythonConsole;
 class StatsPanel;
 class SpeciesWorkbench;
+class PresetBrowser;
 class ToolController;
 class Viewport;
 
@@ -71,6 +72,7 @@ public:
     PythonConsole* console() const { return mConsole; }
     ToolController& tools() { return *mTools; }
     SpeciesWorkbench* workbench() const { return mWorkbench; }
+    PresetBrowser* presetBrowser() const { return mPresetBrowser; }
     /// Shows the species editor (graph, grammar, live preview, node parameters) on \p species
     /// (the one shown already when empty).
     void editSpecies(const QString& species = {});
@@ -201,6 +203,7 @@ private:
     Viewport* mViewport = nullptr;
     StatsPanel* mStats = nullptr;
     SpeciesWorkbench* mWorkbench = nullptr;
+    PresetBrowser* mPresetBrowser = nullptr;
     MessagesPanel* mMessages = nullptr;
     PropertiesPanel* mProperties = nullptr;
     OutlinerModel* mOutlinerModel = nullptr;

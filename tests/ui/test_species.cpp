@@ -14,6 +14,8 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QSet>
+#include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -24,6 +26,7 @@
 #include "document/document.h"
 #include "document/presetlibrary.h"
 #include "engine/mesh/mesh.h"
+#include "ui/document/presetbrowser.h"
 #include "ui/generation/speciespreview.h"
 #include "ui/grammar/grammareditor.h"
 #include "ui/mainwindow.h"
@@ -363,6 +366,58 @@ private Q_SLOTS:
         QVERIFY(resolution->maximum() == 64 && resolution->minimum() == 3);
         document().undoStack()->setIndex(steps);
         waitForPreview();
+    }
+
+    /// The preset browser: every preset with a thumbnail drawn by Sylva; a double click
+    /// applies one to the species (one undo step), undo gives the species back.
+    void presetBrowserAppliesAPreset() {
+        PresetBrowser* browser = mWindow->presetBrowser();
+        mWindow->findChild<QDockWidget*>(QStringLiteral("presetBrowserDock"))->raise();
+        QTRY_VERIFY(browser->isVisible());
+        QCOMPARE(browser->targetSpecies(), QStringLiteral("alder"));
+        QListWidget* list = browser->list();
+        QVERIFY(list->count() >= 12);
+        QTRY_VERIFY_WITH_TIMEOUT(browser->pendingThumbnails() == 0, kTimeoutMs);
+        // Thumbnails are drawings of the trees: not blank, not uniform.
+        for (int i = 0; i < list->count(); ++i) {
+            const QImage image =
+                list->item(i)->icon().pixmap(PresetBrowser::kThumbnailSize).toImage();
+            QSet<QRgb> colours;
+            for (int y = 0; y < image.height(); y += 4)
+                for (int x = 0; x < image.width(); x += 4)
+                    colours.insert(image.pixel(x, y));
+            QVERIFY2(colours.size() > 8, qPrintable(list->item(i)->text()));
+        }
+        const QByteArray original = document().serialized();
+        QListWidgetItem* ternary = nullptr;
+        for (int i = 0; i < list->count(); ++i)
+            if (list->item(i)
+                    ->data(Qt::UserRole)
+                    .toString()
+                    .endsWith(QStringLiteral("ternary-tree.json")))
+                ternary = list->item(i);
+        QVERIFY(ternary);
+        list->setCurrentItem(ternary);
+        list->scrollToItem(ternary);
+        QApplication::processEvents();
+        QSignalSpy failures(browser, &PresetBrowser::failed);
+        // A double click as the mouse makes it: press, release, then the double-click press.
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {},
+                          list->visualItemRect(ternary).center());
+        QTest::mouseDClick(list->viewport(), Qt::LeftButton, {},
+                           list->visualItemRect(ternary).center());
+        QVERIFY2(failures.isEmpty(),
+                 failures.isEmpty() ? "" : qPrintable(failures.front().front().toString()));
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Apply preset ternary-tree"));
+        QTRY_VERIFY(scene()->node(QStringLiteral("grow")));
+        QVERIFY(document().grammar("alder", "grow").find("Ternary") != std::string::npos ||
+                document().grammar("alder", "grow").find("ternary") != std::string::npos);
+        waitForPreview();
+        document().undoStack()->undo();
+        QCOMPARE(document().serialized(), original);
+        waitForPreview();
+        const QImage shot = browser->grab().toImage();
+        QVERIFY(shot.save(outputPath(QStringLiteral("ui_species_presets.png"))));
     }
 
     void screenshots() {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QImage>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOffscreenSurface>
@@ -16,7 +17,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/occlusion.h"
 
 namespace sylva::ui {
 
@@ -26,45 +29,72 @@ const char* const kMeshVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColor;
+layout(location = 3) in vec2 aUv;
+layout(location = 4) in float aOcclusion;
 uniform mat4 uViewProj;
 uniform mat4 uModel; // a tree's instance transform: rotation, uniform scale, translation
 out vec3 vNormal;
 out vec3 vWorld;
 out vec3 vColor;
+out vec2 vUv;
+out float vOcclusion;
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vNormal = mat3(uModel) * aNormal;
     vWorld = world.xyz;
     vColor = aColor;
+    vUv = aUv;
+    vOcclusion = aOcclusion;
     gl_Position = uViewProj * world;
 }
 )";
 
-// Lambert key light plus a hemisphere ambient (sky above, warm ground below). Normals are
-// flipped towards the viewer so that leaf cards and inconsistent windings light the same from
-// both sides.
+// Lambert key light plus a hemisphere ambient (sky above, warm ground below), both dimmed by
+// the crown's per-vertex occlusion. Normals are flipped towards the viewer so that leaf cards
+// and inconsistent windings light the same from both sides; a leaf lit from behind lets a
+// little light through. Textures are sRGB: decoded to linear before lighting. Leaf cards are
+// cut out by their texture's alpha, sharpened with the mipmap level so that far leaves keep
+// their area instead of fading away.
 const char* const kMeshFragmentShader = R"(#version 330 core
 in vec3 vNormal;
 in vec3 vWorld;
 in vec3 vColor;
+in vec2 vUv;
+in float vOcclusion;
 uniform vec3 uAlbedo;
 uniform bool uVertexColor; // colour by a node attribute instead of the material
+uniform bool uTextured;
+uniform bool uAlphaTest;   // a leaf card: cut out, translucent
+uniform sampler2D uTexture;
 uniform vec3 uLightDir;
 uniform vec3 uEye;
 uniform float uHighlight; // a selected tree: blended towards orange
 out vec4 fragColor;
 void main() {
+    vec4 tex = vec4(1.0);
+    if (uTextured) {
+        tex = texture(uTexture, vUv);
+        if (uAlphaTest) {
+            vec2 texel = vUv * vec2(textureSize(uTexture, 0));
+            float lod = 0.5 * log2(max(dot(dFdx(texel), dFdx(texel)), dot(dFdy(texel), dFdy(texel))));
+            if (tex.a * (1.0 + 0.25 * max(lod, 0.0)) < 0.5) discard;
+        }
+    }
     vec3 n = vNormal;
     float len = length(n);
     n = len > 1e-6 ? n / len : vec3(0.0, 1.0, 0.0);
     vec3 toEye = normalize(uEye - vWorld);
     if (dot(n, toEye) < 0.0) n = -n;
-    float diffuse = max(dot(n, uLightDir), 0.0);
+    float facing = dot(n, uLightDir);
+    float diffuse = max(facing, 0.0);
+    if (uAlphaTest) diffuse += 0.35 * max(-facing, 0.0);
     vec3 sky = vec3(0.62, 0.70, 0.85);
     vec3 ground = vec3(0.30, 0.25, 0.20);
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    vec3 albedo = uVertexColor ? vColor : uAlbedo;
-    vec3 color = albedo * (0.55 * ambient + 1.35 * vec3(1.0, 0.96, 0.90) * diffuse);
+    vec3 albedo = uVertexColor ? vColor : (uTextured ? pow(tex.rgb, vec3(2.2)) : uAlbedo);
+    float ao = clamp(vOcclusion, 0.0, 1.0);
+    vec3 color = albedo * (0.55 * ambient * ao +
+                           1.35 * vec3(1.0, 0.96, 0.90) * diffuse * (0.4 + 0.6 * ao));
     color = mix(color, vec3(1.0, 0.45, 0.05), uHighlight);
     fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
 }
@@ -143,17 +173,27 @@ void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4
 
 std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh);
 
-/// Position, normal and attribute colour per vertex (the colour zero when \p colors does not
-/// match), as the mesh shader reads them.
+/// Floats per vertex: position, normal, attribute colour, uv, crown occlusion.
+constexpr int kVertexFloats = 12;
+
+/// Position, normal, attribute colour (zero when \p colors does not match), uv (zero without
+/// uvs) and the crown's ambient occlusion per vertex, as the mesh shader reads them.
 std::vector<float> interleave(const mesh::Mesh& m, const std::vector<glm::vec3>& colors) {
     const std::size_t vertexCount = m.positions.size();
     const std::vector<glm::vec3> computed =
         m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
     const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
     const bool colored = colors.size() == vertexCount;
-    std::vector<float> interleaved(vertexCount * 9, 0.0f);
+    const bool hasUvs = m.uvs.size() == vertexCount;
+    const std::vector<float> occlusion = mesh::crownOcclusion(m);
+    std::vector<float> interleaved(vertexCount * kVertexFloats, 0.0f);
     for (std::size_t i = 0; i < vertexCount; ++i) {
-        float* v = &interleaved[i * 9];
+        float* v = &interleaved[i * kVertexFloats];
+        if (hasUvs) {
+            v[9] = m.uvs[i].x;
+            v[10] = m.uvs[i].y;
+        }
+        v[11] = occlusion[i];
         v[0] = m.positions[i].x;
         v[1] = m.positions[i].y;
         v[2] = m.positions[i].z;
@@ -375,16 +415,9 @@ void Viewport::initializeGL() {
     glBindVertexArray(mMeshVao);
     glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
-    // Position, normal, attribute colour (zero unless the view colours by an attribute).
-    constexpr GLsizei kStride = 9 * sizeof(float);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride,
-                          reinterpret_cast<void*>(3 * sizeof(float)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride,
-                          reinterpret_cast<void*>(6 * sizeof(float)));
+    // Position, normal, attribute colour (zero unless the view colours by an attribute), uv,
+    // occlusion.
+    setMeshAttributes();
 
     glGenVertexArrays(1, &mOverlayVao);
     glGenBuffers(1, &mOverlayVbo);
@@ -419,6 +452,9 @@ void Viewport::releaseGl() {
     glDeleteBuffers(1, &mGridVbo);
     glDeleteVertexArrays(1, &mEmptyVao);
     mMeshVao = mMeshVbo = mMeshIbo = mGridVao = mGridVbo = mEmptyVao = 0;
+    for (const auto& [path, id] : mTextures)
+        if (id) glDeleteTextures(1, &id);
+    mTextures.clear();
     mMeshProgram.reset();
     mLineProgram.reset();
     mBackgroundProgram.reset();
@@ -465,6 +501,64 @@ void Viewport::uploadMesh() {
     glBindVertexArray(0);
 
     mRanges = rangesOf(m);
+    bindTextures(m, mRanges);
+}
+
+void Viewport::setMeshAttributes() {
+    constexpr GLsizei kStride = kVertexFloats * sizeof(float);
+    const GLint sizes[] = {3, 3, 3, 2, 1};
+    std::uintptr_t offset = 0;
+    for (GLuint a = 0; a < 5; ++a) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, kStride,
+                              reinterpret_cast<void*>(offset * sizeof(float)));
+        offset += std::uintptr_t(sizes[a]);
+    }
+}
+
+void Viewport::bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges) {
+    // rangesOf() keeps the submeshes' order, skipping those that start past the indices.
+    std::size_t r = 0;
+    const auto total = static_cast<std::uint32_t>(m.indices.size());
+    for (const mesh::Submesh& s : m.submeshes) {
+        if (s.firstIndex >= total) continue;
+        if (r >= ranges.size()) break;
+        ranges[r].texture = textureFor(s.material, s.texture);
+        ranges[r].alphaTest = s.material == "leaf" && ranges[r].texture != 0;
+        ++r;
+    }
+    if (m.submeshes.empty() && !ranges.empty()) ranges[0].texture = textureFor("bark", {});
+}
+
+GLuint Viewport::textureFor(const std::string& material, const std::string& file) {
+    std::string path = file;
+    if (path.empty()) {
+        // Sylva's shipped textures for the two materials it makes; nothing for the rest.
+        if (material != "bark" && material != "leaf") return 0;
+        const std::filesystem::path dir = exporter::resourcesDir();
+        if (dir.empty()) return 0;
+        path = (dir / "textures" / (material + ".png")).string();
+    }
+    if (auto it = mTextures.find(path); it != mTextures.end()) return it->second;
+    GLuint id = 0;
+    QImage image(QString::fromStdString(path));
+    if (!image.isNull()) {
+        // OpenGL's first row is v = 0, the image's bottom (a leaf's stem).
+        image = image.convertToFormat(QImage::Format_RGBA8888).mirrored();
+        glGenTextures(1, &id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, image.constBits());
+        glGenerateMipmap(GL_TEXTURE_2D);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        const GLint wrap = material == "leaf" ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    mTextures.emplace(path, id); // a file that cannot be read is not tried again
+    return id;
 }
 
 void Viewport::setTrees(std::vector<ViewTree> trees, bool frame) {
@@ -597,6 +691,7 @@ void Viewport::syncTreeBuffers() {
         GpuMesh gpu;
         gpu.mesh = treeMesh;
         gpu.ranges = rangesOf(*treeMesh);
+        bindTextures(*treeMesh, gpu.ranges);
         glGenVertexArrays(1, &gpu.vao);
         glGenBuffers(1, &gpu.vbo);
         glGenBuffers(1, &gpu.ibo);
@@ -609,12 +704,7 @@ void Viewport::syncTreeBuffers() {
         glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                      GLsizeiptr(treeMesh->indices.size() * sizeof(std::uint32_t)),
                      treeMesh->indices.data(), GL_STATIC_DRAW);
-        constexpr GLsizei kStride = 9 * sizeof(float);
-        for (GLuint a = 0; a < 3; ++a) {
-            glEnableVertexAttribArray(a);
-            glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, kStride,
-                                  reinterpret_cast<void*>(std::uintptr_t(3 * a) * sizeof(float)));
-        }
+        setMeshAttributes();
         glBindVertexArray(0);
         ++(k < treeMeshes ? mUploads : mLevelUploads);
         kept.emplace(treeMesh.get(), std::move(gpu));
@@ -752,13 +842,12 @@ void Viewport::paintGL() {
         setUniform(*mMeshProgram, "uEye", mCamera.eye());
         setUniform(*mMeshProgram, "uLightDir", light);
         mMeshProgram->setUniformValue("uVertexColor", mUseVertexColors);
+        mMeshProgram->setUniformValue("uTexture", 0);
+        glActiveTexture(GL_TEXTURE0);
         glBindVertexArray(mMeshVao);
-        for (const DrawRange& r : mRanges) {
-            setUniform(*mMeshProgram, "uAlbedo", r.color);
-            glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                           reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+        drawRanges(mRanges);
+        for (const DrawRange& r : mRanges)
             mDrawnTriangles += r.indexCount / 3;
-        }
         mMeshProgram->setUniformValue("uVertexColor", false);
         // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
         std::vector<const TreeDraw*> cards;
@@ -875,12 +964,9 @@ void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, flo
     setUniform(*mMeshProgram, "uModel", transform);
     mMeshProgram->setUniformValue("uHighlight", highlight);
     glBindVertexArray(gpu->second.vao);
-    for (const DrawRange& r : gpu->second.ranges) {
-        setUniform(*mMeshProgram, "uAlbedo", r.color);
-        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                       reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+    drawRanges(gpu->second.ranges);
+    for (const DrawRange& r : gpu->second.ranges)
         mDrawnTriangles += r.indexCount / 3;
-    }
 }
 
 std::vector<Viewport::TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
@@ -942,6 +1028,8 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
         setUniform(*mMeshProgram, "uEye", eye);
         setUniform(*mMeshProgram, "uLightDir", light);
         mMeshProgram->setUniformValue("uVertexColor", false);
+        mMeshProgram->setUniformValue("uTexture", 0);
+        glActiveTexture(GL_TEXTURE0);
         const std::size_t triangles = mDrawnTriangles;
         drawTreeMesh(m, glm::mat4(1.0f), 0.0f);
         mDrawnTriangles = triangles;
@@ -960,6 +1048,18 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
     }
     glBindVertexArray(0);
     if (mImpostorsWanted > 0) update(); // the next frame takes the next ones
+}
+
+void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
+    for (const DrawRange& r : ranges) {
+        setUniform(*mMeshProgram, "uAlbedo", r.color);
+        mMeshProgram->setUniformValue("uTextured", r.texture != 0);
+        mMeshProgram->setUniformValue("uAlphaTest", r.alphaTest);
+        glBindTexture(GL_TEXTURE_2D, r.texture);
+        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                       reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

@@ -68,11 +68,13 @@ class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
 public:
-    /// A run of triangles drawn in one material colour.
+    /// A run of triangles drawn in one material: its colour, or its texture when it has one.
     struct DrawRange {
         glm::vec3 color;
         std::uint32_t firstIndex = 0;
         std::uint32_t indexCount = 0;
+        GLuint texture = 0;     ///< 0: the plain colour
+        bool alphaTest = false; ///< a leaf card cut out by the texture's alpha
     };
 
     /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
@@ -209,6 +211,13 @@ private:
     void releaseGl();
     void applyFrame();
     void uploadMesh();
+    void setMeshAttributes();
+    /// The textures of \p m's submeshes on \p ranges (rangesOf's order).
+    void bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges);
+    /// The GL texture of \p file (Sylva's shipped one for \p material when empty), loaded once;
+    /// 0 when there is none or it cannot be read.
+    GLuint textureFor(const std::string& material, const std::string& file);
+    void drawRanges(const std::vector<DrawRange>& ranges);
     void buildGrid();
     float aspect() const;
 
@@ -245,6 +254,7 @@ private:
     float mGridExtent = 0.0f;
     glm::vec3 mGridCenter{0.0f};
     std::vector<DrawRange> mRanges;
+    std::map<std::string, GLuint> mTextures; ///< by file path; 0 for files that did not load
 
     /// One tree mesh on the GPU, kept while some tree draws it.
     struct GpuMesh {
