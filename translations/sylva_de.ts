@@ -893,6 +893,34 @@
         <source>Preset Browser</source>
         <translation>Vorlagenbrowser</translation>
     </message>
+    <message>
+        <source>Automatic (off on a software renderer)</source>
+        <translation>Automatisch (aus bei Software-Rendering)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>2× multisampling</source>
+        <translation>2× Multisampling</translation>
+    </message>
+    <message>
+        <source>4× multisampling</source>
+        <translation>4× Multisampling</translation>
+    </message>
+    <message>
+        <source>8× multisampling</source>
+        <translation>8× Multisampling</translation>
+    </message>
+    <message>
+        <source>Smooths the edges in the 3D view. Without a graphics card (a software renderer) it makes every frame two to three times slower. Takes effect when Sylva starts next.</source>
+        <translation>Glättet die Kanten in der 3D-Ansicht. Ohne Grafikkarte (Software-Rendering) macht es jedes Bild zwei- bis dreimal langsamer. Wirkt ab dem nächsten Start von Sylva.</translation>
+    </message>
+    <message>
+        <source>Antialiasing:</source>
+        <translation>Kantenglättung:</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
@@ -1452,6 +1480,26 @@
     <message>
         <source>A tree cannot stand inside an obstacle&apos;s footprint</source>
         <translation>Ein Baum kann nicht auf der Grundfläche eines Hindernisses stehen</translation>
+    </message>
+    <message>
+        <source>A tree&apos;s scale must stay between 0.01 and 100: the change was refused</source>
+        <translation>Die Skalierung eines Baums muss zwischen 0,01 und 100 bleiben: die Änderung wurde abgelehnt</translation>
+    </message>
+    <message>
+        <source>Rotate tree</source>
+        <translation>Baum drehen</translation>
+    </message>
+    <message>
+        <source>Rotate trees</source>
+        <translation>Bäume drehen</translation>
+    </message>
+    <message>
+        <source>Scale tree</source>
+        <translation>Baum skalieren</translation>
+    </message>
+    <message>
+        <source>Scale trees</source>
+        <translation>Bäume skalieren</translation>
     </message>
 </context>
 <context>

@@ -979,7 +979,7 @@ void MainWindow::showDocument(bool frame) {
     std::vector<ViewTree> trees;
     trees.reserve(result.trees.size());
     for (const DrawnTree& t : result.trees)
-        trees.push_back({t.docId, t.mesh, t.transform});
+        trees.push_back({t.docId, t.mesh, t.transform, t.lod});
     if (frame) {
         mViewport->setViewFrom(result.cameraEye, result.cameraTarget);
     }
@@ -1258,7 +1258,7 @@ void MainWindow::reportError(const QString& message) {
 // --- output -----------------------------------------------------------------------------
 
 bool MainWindow::saveScreenshot(const QString& path) {
-    const QImage image = mViewport->grabFramebuffer();
+    const QImage image = mViewport->grabSharp();
     if (image.isNull()) {
         reportError(tr("Could not read the viewport's image (no OpenGL context)."));
         return false;
@@ -1378,12 +1378,25 @@ void MainWindow::showPreferences() {
     auto* folder = new QLabel(QDir::toNativeSeparators(mAutosave->folder()), &dialog);
     folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
     form->addRow(tr("Recovery folder:"), folder);
+    auto* samples = new QComboBox(&dialog);
+    samples->setObjectName(QStringLiteral("viewportSamples"));
+    samples->addItem(tr("Automatic (off on a software renderer)"), Viewport::kAutoSamples);
+    samples->addItem(tr("Off"), 0);
+    samples->addItem(tr("2× multisampling"), 2);
+    samples->addItem(tr("4× multisampling"), 4);
+    samples->addItem(tr("8× multisampling"), 8);
+    samples->setCurrentIndex(std::max(0, samples->findData(Viewport::samplesPreference())));
+    samples->setToolTip(tr("Smooths the edges in the 3D view. Without a graphics card (a "
+                           "software renderer) it makes every frame two to three times slower. "
+                           "Takes effect when Sylva starts next."));
+    form->addRow(tr("Antialiasing:"), samples);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
     connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     form->addRow(buttons);
     if (dialog.exec() != QDialog::Accepted) return;
     setAutosaveInterval(minutes->value() * 60);
+    Viewport::setSamplesPreference(samples->currentData().toInt());
 }
 
 MainWindow::FrameStats MainWindow::measureFrames(int frames) {
@@ -1416,6 +1429,9 @@ MainWindow::FrameStats MainWindow::measureFrames(int frames) {
     stats.guiCpuMsPerFrame = (cpuMs(CLOCK_THREAD_CPUTIME_ID) - gui0) / frames;
     stats.treesDrawn = mViewport->drawnTrees();
     stats.triangles = lastResult().triangleCount();
+    stats.trianglesDrawn = mViewport->drawnTriangles();
+    const auto& levels = mViewport->drawnPerLevel();
+    stats.treesPerLevel.assign(levels.begin(), levels.end());
     return stats;
 }
 

@@ -146,6 +146,8 @@ public:
     struct FrameStats {
         double fps = 0, msPerFrame = 0, cpuMsPerFrame = 0, guiCpuMsPerFrame = 0;
         std::size_t treesDrawn = 0, triangles = 0;
+        std::size_t trianglesDrawn = 0;         ///< in the last frame, at its LOD
+        std::vector<std::size_t> treesPerLevel; ///< in the last frame, level 0 = full
     };
     FrameStats measureFrames(int frames);
 
