@@ -1353,6 +1353,18 @@
         <source>Evaluation %1 ms</source>
         <translation>Auswertung %1 ms</translation>
     </message>
+    <message>
+        <source>Click a branch or a leaf to select the node that grew it</source>
+        <translation>Einen Ast oder ein Blatt anklicken, um den Knoten zu wählen, der ihn wachsen ließ</translation>
+    </message>
+    <message>
+        <source>A leaf card, grown by node %1</source>
+        <translation>Ein Blatt, gewachsen durch Knoten %1</translation>
+    </message>
+    <message>
+        <source>A branch, grown by node %1</source>
+        <translation>Ein Ast, gewachsen durch Knoten %1</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

@@ -1353,6 +1353,18 @@
         <source>Evaluation %1 ms</source>
         <translation>Évaluation %1 ms</translation>
     </message>
+    <message>
+        <source>Click a branch or a leaf to select the node that grew it</source>
+        <translation>Cliquez sur une branche ou une feuille pour choisir le nœud qui l’a fait pousser</translation>
+    </message>
+    <message>
+        <source>A leaf card, grown by node %1</source>
+        <translation>Une feuille, poussée par le nœud %1</translation>
+    </message>
+    <message>
+        <source>A branch, grown by node %1</source>
+        <translation>Une branche, poussée par le nœud %1</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

@@ -13,7 +13,13 @@
 #include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/nodegraphview.h"
 #include "ui/nodes/parameterpanel.h"
+#include "ui/viewport/picking.h"
 #include "ui/viewport/viewport.h"
+
+#include <QMouseEvent>
+#include <limits>
+
+#include "engine/mesh/mesh.h"
 
 namespace sylva::ui {
 
@@ -48,6 +54,8 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
     mPreviewView = new Viewport(this);
     mPreviewView->setObjectName(QStringLiteral("speciesPreview"));
     mPreviewView->setMinimumSize(200, 160);
+    mPreviewView->setToolTip(tr("Click a branch or a leaf to select the node that grew it"));
+    mPreviewView->installEventFilter(this);
     {
         // Without multisampling: under a software rasteriser (Mesa llvmpipe) 4× MSAA made the
         // preview's edit → screen time 2.7× longer (docs/performance.md); the preview is
@@ -108,6 +116,66 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
 
 QString SpeciesWorkbench::species() const {
     return mScene->species();
+}
+
+bool SpeciesWorkbench::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == mPreviewView && event->type() == QEvent::MouseButtonPress) {
+        mPressAt = static_cast<QMouseEvent*>(event)->position().toPoint();
+    } else if (watched == mPreviewView && event->type() == QEvent::MouseButtonRelease) {
+        auto* m = static_cast<QMouseEvent*>(event);
+        // A click, not the end of an orbit drag.
+        if (m->button() == Qt::LeftButton &&
+            (m->position().toPoint() - mPressAt).manhattanLength() <= 3)
+            selectNodeAt(m->position());
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+QString SpeciesWorkbench::selectNodeAt(const QPointF& pos) {
+    const std::shared_ptr<const mesh::Mesh> mesh = mPreview->result().mesh;
+    if (!mesh) return {};
+    const Ray ray = mPreviewView->rayAt(pos);
+    float best = std::numeric_limits<float>::max();
+    std::size_t hit = mesh->triangleCount();
+    for (std::size_t t = 0; t < mesh->triangleCount(); ++t) {
+        const auto d = intersect(ray, mesh->positions[mesh->indices[3 * t]],
+                                 mesh->positions[mesh->indices[3 * t + 1]],
+                                 mesh->positions[mesh->indices[3 * t + 2]]);
+        if (d && *d < best) {
+            best = *d;
+            hit = t;
+        }
+    }
+    if (hit == mesh->triangleCount()) return {};
+    bool leaf = false;
+    for (const mesh::Submesh& s : mesh->submeshes)
+        if (3 * hit >= s.firstIndex && 3 * hit < s.firstIndex + s.indexCount)
+            leaf = s.material.find("leaf") != std::string::npos;
+    // Walk from the output up its inputs: the first leaves node for a leaf card, and the
+    // generator (the node without inputs) for a branch or a grammar's own leaf.
+    QString leavesNode, generator;
+    try {
+        const graph::SpeciesGraph g = mDocument.engineSpecies(species().toStdString());
+        const graph::NodeDesc* n = g.findNode(g.output);
+        while (n) {
+            if (n->type == "leaves" && leavesNode.isEmpty())
+                leavesNode = QString::fromStdString(n->id);
+            if (n->inputs.empty()) {
+                generator = QString::fromStdString(n->id);
+                break;
+            }
+            n = g.findNode(n->inputs.front());
+        }
+    } catch (...) {
+        return {};
+    }
+    const QString node = leaf && !leavesNode.isEmpty() ? leavesNode : generator;
+    if (node.isEmpty()) return {};
+    mScene->selectNode(node);
+    Q_EMIT status(leaf ? tr("A leaf card, grown by node %1").arg(node)
+                       : tr("A branch, grown by node %1").arg(node),
+                  4000);
+    return node;
 }
 
 void SpeciesWorkbench::showEvent(QShowEvent* event) {

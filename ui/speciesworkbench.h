@@ -29,6 +29,10 @@ public:
 
     void setSpecies(const QString& species);
     QString species() const;
+    /// What a click on the preview at \p pos (widget pixels) hits: the node that grew it is
+    /// selected (a leaf card: the leaves node when there is one, else the generator; a branch:
+    /// the generator). Returns that node's id, "" for a miss.
+    QString selectNodeAt(const QPointF& pos);
 
     NodeGraphScene* graphScene() const { return mScene; }
     NodeGraphView* graphView() const { return mView; }
@@ -42,6 +46,7 @@ Q_SIGNALS:
     void status(const QString& text, int timeoutMs);
 
 protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
     void showEvent(QShowEvent* event) override;
     void hideEvent(QHideEvent* event) override;
 
@@ -60,6 +65,7 @@ private:
     SpeciesPreview* mPreview;
     Viewport* mPreviewView;
     bool mFramed = false;
+    QPoint mPressAt; ///< where a click on the preview began (a drag orbits instead)
 };
 
 } // namespace sylva::ui

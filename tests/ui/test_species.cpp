@@ -35,6 +35,7 @@
 #include "ui/nodes/nodegraphview.h"
 #include "ui/nodes/parameterpanel.h"
 #include "ui/speciesworkbench.h"
+#include "ui/viewport/viewport.h"
 
 using namespace sylva;
 using namespace sylva::ui;
@@ -309,6 +310,30 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(bench()->preview()->isBusy(), 2000);
         waitForPreview();
         QCOMPARE(bench()->preview()->result().skeleton->segmentCount(), full);
+    }
+
+    /// A click on a branch in the preview selects the node that grew it.
+    void clickInThePreviewSelectsTheNode() {
+        waitForPreview();
+        scene()->selectNode(QStringLiteral("mesh"));
+        Viewport* v = bench()->previewViewport();
+        // The trunk: the middle of the tree's base, projected into the preview.
+        const std::shared_ptr<const mesh::Mesh> m = bench()->preview()->result().mesh;
+        glm::vec3 lo(1e30f), hi(-1e30f);
+        for (const glm::vec3& p : m->positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        const auto at = v->project(glm::vec3(0.0f, lo.y + 0.12f * (hi.y - lo.y), 0.0f));
+        QVERIFY(at.has_value());
+        QCOMPARE(bench()->selectNodeAt(*at), QStringLiteral("grow"));
+        QCOMPARE(scene()->selectedNodeIds(), QStringList{QStringLiteral("grow")});
+        // The same by a mouse click (a press and a release without moving).
+        scene()->selectNode(QStringLiteral("mesh"));
+        QTest::mouseClick(v, Qt::LeftButton, {}, at->toPoint());
+        QCOMPARE(scene()->selectedNodeIds(), QStringList{QStringLiteral("grow")});
+        // The sky selects nothing new.
+        QCOMPARE(bench()->selectNodeAt(QPointF(3, 3)), QString());
     }
 
     void parameterChangeRerunsOnlyDownstream() {
