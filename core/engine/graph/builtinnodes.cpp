@@ -71,6 +71,10 @@ NodeOutput evaluateLsystem(const NodeContext& ctx) {
         requireRange("symbol_limit", limit, 1, 2e9);
         options.symbolLimit = static_cast<std::size_t>(limit);
     }
+    if (p.contains("time_limit")) {
+        options.timeLimitSeconds = p.number("time_limit", lsys::kDefaultDeriveTimeLimit);
+        requireRange("time_limit (s)", options.timeLimitSeconds, 1e-3, lsys::kMaxDeriveTimeLimit);
+    }
     const lsys::ModuleString word = lsys::derive(grammar, options, ctx.progress);
     out.timingsMs["expand"] = msSince(t0);
 
@@ -109,12 +113,13 @@ void registerBuiltinNodeTypes() {
     static std::once_flag once;
     std::call_once(once, [] {
         NodeRegistry& registry = NodeRegistry::instance();
-        registry.add(NodeType{"lsystem",
-                              0,
-                              0,
-                              evaluateLsystem,
-                              {"grammar", "grammar_file", "generations", "seed", "symbol_limit",
-                               "angle", "step", "width", "width_factor", "leaf_size"}});
+        registry.add(
+            NodeType{"lsystem",
+                     0,
+                     0,
+                     evaluateLsystem,
+                     {"grammar", "grammar_file", "generations", "seed", "symbol_limit",
+                      "time_limit", "angle", "step", "width", "width_factor", "leaf_size"}});
         // --- node registrations of other modules (one call each) ---
         mesh::registerMeshNodes(registry);
         env::registerAdaptNode(registry);
