@@ -334,7 +334,9 @@ void checkEveryPreset(bool lod) {
         EXPECT_EQ(r.leafInside, 0u) << name << ": leaf card vertices inside an obstacle";
         // Adaptation tests tubes of the bark radius, so without LOD no bark vertex is inside at
         // all (LOD widens far rings and simplifies axes: there only the depth bound holds).
-        if (!lod) EXPECT_EQ(r.barkInside, 0u) << name << ": tube vertices inside an obstacle";
+        if (!lod) {
+            EXPECT_EQ(r.barkInside, 0u) << name << ": tube vertices inside an obstacle";
+        }
         std::cout << name << ": colliding segments before " << r.collidingBefore << ", hidden "
                   << r.hiddenNodes << ", growth rounds <= " << r.maxGrowthRounds
                   << ", leaves dropped " << r.droppedLeaves << ", segments " << r.segments
