@@ -13,5 +13,6 @@ int runTree(const std::vector<std::string>& args);
 int runForest(const std::vector<std::string>& args);
 int runStats(const std::vector<std::string>& args);
 int runLods(const std::vector<std::string>& args);
+int runNodes(const std::vector<std::string>& args);
 
 } // namespace sylva::cli

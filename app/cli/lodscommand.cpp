@@ -5,7 +5,7 @@
 #include "document/speciesfile.h"
 #include "engine/export/lodexport.h"
 #include "engine/export/treeexport.h"
-#include "engine/mesh/meshnodes.h"
+#include "engine/nodes/meshnodes.h"
 #include "engine/util/error.h"
 
 #include <QString>

@@ -28,6 +28,7 @@ const char* kUsage =
     "       [--fsync] [--full-precision]\n"
     "  stats <project.sylva|species.json> [--json]       height, DBH, biomass, CO2\n"
     "  lods <species.json> -o <folder> [--json]          LOD chain for game engines\n"
+    "  nodes [type] [--markdown|--json]         node types and their parameters\n"
     "  help [command]                          show this text, or one command's help\n"
     "\n"
     "'sylva-cli <command> --help' (or -h) shows a command's arguments and options.\n"
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
         if (command == "forest") return runForest(args);
         if (command == "stats") return runStats(args);
         if (command == "lods") return runLods(args);
+        if (command == "nodes") return runNodes(args);
         throw UsageError("unknown command '" + command + "'");
     } catch (const HelpRequested&) {
         std::fputs(commandHelp(command), stdout);

@@ -85,6 +85,17 @@ constexpr CommandHelp kHelp[] = {
      "  --json                the levels as one JSON object instead of a table\n"
      "  --no-glb, --no-obj    skip the glTF file or the OBJ files\n"
      "  -h, --help            show this text\n"},
+    {"nodes",
+     "usage: sylva-cli nodes [type] [--markdown | --json]\n"
+     "\n"
+     "Lists the species graph's node types: what each takes and makes, and every parameter with\n"
+     "its type, default, range, unit and meaning (the paper's symbol where there is one). The\n"
+     "same table validates species files and builds the editor's parameter panels.\n"
+     "\n"
+     "options:\n"
+     "  --markdown            the tables of docs/species.md\n"
+     "  --json                one JSON array (for scripts and other tools)\n"
+     "  -h, --help            show this text\n"},
     {"help",
      "usage: sylva-cli help [command]\n"
      "\n"

@@ -1,7 +1,7 @@
 #include "document/scenebuild.h"
 
 #include "document/speciesfile.h"
-#include "engine/environment/adaptnode.h"
+#include "engine/nodes/adaptnode.h"
 #include "engine/util/error.h"
 
 #include <QFileInfo>

@@ -15,6 +15,22 @@ run_cli() {
 }
 
 case $case_name in
+nodes_reference)
+  # The node metadata is the one source: docs/species.md carries exactly what it prints.
+  run_cli 0 nodes --markdown && cp out.txt "$WORK/nodes.md"
+  docs="$DATA/../../docs/species.md"
+  sed -n '/<!-- nodes:begin/,/<!-- nodes:end/p' "$docs" | sed '1d;$d' > "$WORK/docs.md"
+  diff -u "$WORK/docs.md" "$WORK/nodes.md" || fail "docs/species.md differs from 'sylva-cli nodes --markdown' (regenerate it)"
+  for t in lsystem space_colonization self_organizing adapt tube_mesh leaves; do
+    grep -q "^### \`$t\`" "$WORK/nodes.md" || fail "no $t in the listing"
+  done
+  run_cli 0 nodes space_colonization && cp out.txt "$WORK/sc.txt"
+  grep -q "influence_distance.*d_i" "$WORK/sc.txt" || fail "space_colonization lacks d_i"
+  run_cli 0 nodes --json && cp out.txt "$WORK/nodes.json"
+  python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert {n['name'] for n in d} >= {'lsystem','adapt'}" "$WORK/nodes.json" || fail "nodes --json"
+  run_cli 2 nodes no_such_type
+  grep -q "known: adapt" err.txt || fail "unknown type message: $(cat err.txt)"
+  ;;
 expand_algae)
   run_cli 0 expand "$DATA/lsystem/algae.lsys"
   [[ $(cat out.txt) == "abaababaabaab" ]] || fail "got '$(cat out.txt)'"
@@ -104,7 +120,7 @@ bad_usage_exit_2)
 help_every_command)
   # sylva-cli <command> --help (and -h, and help <command>) prints that command's help on
   # stdout and exits 0, wherever --help stands and whatever else is on the line.
-  for cmd in expand tree forest stats lods; do
+  for cmd in expand tree forest stats lods nodes; do
     for form in "$cmd --help" "$cmd -h" "help $cmd" "$cmd $DATA/lsystem/bush.lsys --bogus --help"; do
       # shellcheck disable=SC2086
       run_cli 0 $form

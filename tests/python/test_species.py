@@ -83,10 +83,10 @@ def test_parameters_read_set_and_validated(presets):
         s.set_param("nope.x", 1)
     with pytest.raises(ValueError, match="node.param"):
         s.set_param("resolution", 1)
-    # out of range: the node's own check, when the tree grows
-    s.set_param("mesh.resolution", -3)
-    with pytest.raises(ValueError):
-        s.grow(seed=1)
+    # out of range: refused when set, with the range from the node metadata; nothing changes
+    with pytest.raises(ValueError, match=r"resolution must be in \[3, 64\], got -3"):
+        s.set_param("mesh.resolution", -3)
+    assert s.get_param("mesh.resolution") == 4
 
 
 def test_tree_export_equals_cli_bytes(presets, cli, tmp_path):

@@ -2,9 +2,11 @@
 
 #include "engine/util/error.h"
 
+#include <cmath>
 #include <functional>
 #include <mutex>
 #include <set>
+#include <sstream>
 
 namespace sylva::graph {
 
@@ -43,7 +45,162 @@ NodeRegistry& NodeRegistry::instance() {
 
 void NodeRegistry::add(NodeType type) {
     std::string name = type.name;
+    if (type.knownParams.empty())
+        for (const ParamSpec& p : type.params)
+            type.knownParams.push_back(p.name);
     mTypes[name] = std::move(type);
+}
+
+const ParamSpec* NodeType::findParam(const std::string& key) const {
+    for (const ParamSpec& p : params)
+        if (p.name == key) return &p;
+    return nullptr;
+}
+
+const char* portKindName(PortKind kind) {
+    return kind == PortKind::Mesh ? "mesh" : "skeleton";
+}
+
+namespace {
+
+std::string number(double v) {
+    // Whole numbers in full ("2000000", not "2e+06"): ranges are read by people.
+    if (v == static_cast<double>(static_cast<long long>(v)) && std::abs(v) < 1e16)
+        return std::to_string(static_cast<long long>(v));
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+} // namespace
+
+std::string ParamSpec::rangeText() const {
+    std::string text;
+    if (kind == ParamKind::Number || kind == ParamKind::Integer || kind == ParamKind::Vector) {
+        if (min <= -1e300 && max >= 1e300) return unit;
+        text = std::string(minOpen ? "(" : "[") + (min <= -1e300 ? "-inf" : number(min)) + ", " +
+               (max >= 1e300 ? "inf" : number(max)) + "]";
+    } else if (kind == ParamKind::Enum) {
+        for (const std::string& c : choices)
+            text += (text.empty() ? "" : " | ") + c;
+    }
+    if (!unit.empty()) text += (text.empty() ? "" : " ") + unit;
+    return text;
+}
+
+void checkParam(const ParamSpec& spec, const Value& value) {
+    if (value.isNull()) return; // unset: the node's default
+    auto inRange = [&](double v, const std::string& what) {
+        const bool below = spec.minOpen ? !(v > spec.min) : !(v >= spec.min);
+        if (below || !(v <= spec.max))
+            throw InvalidInput(what + " must be in " + spec.rangeText() + ", got " + number(v));
+    };
+    switch (spec.kind) {
+    case ParamKind::Number:
+        inRange(value.toNumber(spec.name), spec.name);
+        break;
+    case ParamKind::Integer: {
+        const double v = value.toNumber(spec.name);
+        if (v != static_cast<double>(static_cast<long long>(v)))
+            throw InvalidInput(spec.name + " must be a whole number, got " + number(v));
+        inRange(v, spec.name);
+        break;
+    }
+    case ParamKind::Bool:
+        if (!value.isBool())
+            throw InvalidInput(spec.name + " must be true or false, got " + value.toJson());
+        break;
+    case ParamKind::Enum: {
+        const std::string v = value.toString(spec.name);
+        bool ok = false;
+        for (const std::string& c : spec.choices)
+            ok = ok || c == v;
+        if (!ok)
+            throw InvalidInput(spec.name + " must be one of " + spec.rangeText() + ", got \"" + v +
+                               "\"");
+        break;
+    }
+    case ParamKind::Vector: {
+        if (value.isNumber()) {
+            inRange(value.toNumber(), spec.name);
+            break;
+        }
+        const Value::Array& a = value.toArray(spec.name);
+        if (a.size() != 3)
+            throw InvalidInput(spec.name + " must be [x, y, z], got " + value.toJson());
+        for (const Value& c : a)
+            inRange(c.toNumber(spec.name), spec.name + " component");
+        break;
+    }
+    case ParamKind::File:
+    case ParamKind::Text:
+        value.toString(spec.name);
+        break;
+    case ParamKind::Curve:
+        if (!value.isString()) value.toArray(spec.name);
+        break;
+    case ParamKind::Object:
+        break; // read and checked by the node itself
+    }
+}
+
+PortKind outputKind(const SpeciesGraph& graph, const std::string& id) {
+    std::set<std::string> seen;
+    std::string at = id;
+    while (true) {
+        const NodeDesc* n = graph.findNode(at);
+        if (!n) throw InvalidInput("unknown node '" + at + "'");
+        const NodeType* t = NodeRegistry::instance().find(n->type);
+        if (!t) throw InvalidInput("node '" + at + "' has unknown type '" + n->type + "'");
+        if (!t->outputFollowsInput || n->inputs.empty() || !seen.insert(at).second)
+            return t->output;
+        at = n->inputs.front();
+    }
+}
+
+std::string connectionError(const SpeciesGraph& graph, const std::string& from,
+                            const std::string& to) {
+    const NodeDesc* a = graph.findNode(from);
+    const NodeDesc* b = graph.findNode(to);
+    if (!a) return "there is no node '" + from + "'";
+    if (!b) return "there is no node '" + to + "'";
+    const NodeType* tb = NodeRegistry::instance().find(b->type);
+    if (!tb) return "node '" + to + "' has unknown type '" + b->type + "'";
+    if (tb->maxInputs == 0) return "'" + to + "' (" + b->type + ") takes no input: it grows a tree";
+    if (static_cast<int>(b->inputs.size()) >= tb->maxInputs)
+        return "'" + to + "' (" + b->type + ") already has its " +
+               (tb->maxInputs == 1 ? std::string("input")
+                                   : std::to_string(tb->maxInputs) + " inputs") +
+               "; disconnect it first";
+    PortKind kind;
+    try {
+        kind = outputKind(graph, from);
+    } catch (const InvalidInput& e) {
+        return e.what();
+    }
+    bool accepted = false;
+    for (PortKind k : tb->accepts)
+        accepted = accepted || k == kind;
+    if (!accepted) {
+        std::string list;
+        for (PortKind k : tb->accepts)
+            list += (list.empty() ? "" : " or ") + std::string(portKindName(k));
+        return "'" + to + "' (" + b->type + ") takes a " + list + ", but '" + from + "' (" +
+               a->type + ") gives a " + portKindName(kind);
+    }
+    // A cycle: `to` already feeds `from`, directly or through other nodes.
+    std::set<std::string> seen;
+    std::vector<std::string> stack{from};
+    while (!stack.empty()) {
+        const std::string id = stack.back();
+        stack.pop_back();
+        if (id == to) return "connecting '" + from + "' to '" + to + "' would make a cycle";
+        if (!seen.insert(id).second) continue;
+        if (const NodeDesc* n = graph.findNode(id))
+            for (const std::string& in : n->inputs)
+                stack.push_back(in);
+    }
+    return {};
 }
 
 const NodeType* NodeRegistry::find(const std::string& name) const {
@@ -59,7 +216,7 @@ std::vector<std::string> NodeRegistry::names() const {
 }
 
 Evaluator::Evaluator(SpeciesGraph graph) : mGraph(std::move(graph)) {
-    registerBuiltinNodeTypes();
+    registerBuiltinNodeTypes(); // engine/nodes: the built-in types (a link-time plug-in)
     validate();
 }
 
@@ -99,6 +256,14 @@ void Evaluator::validate() const {
                     throw InvalidInput(where + "node '" + n.id + "' (" + n.type +
                                        ") has no parameter '" + key + "' (known: " + list + ")");
                 }
+                if (const ParamSpec* spec = type->findParam(key)) {
+                    try {
+                        checkParam(*spec, value);
+                    } catch (const InvalidInput& e) {
+                        throw InvalidInput(where + "node '" + n.id + "' (" + n.type +
+                                           "): " + e.what());
+                    }
+                }
             }
         }
     }
@@ -109,6 +274,23 @@ void Evaluator::validate() const {
                                    in + "'");
     if (!ids.count(mGraph.output))
         throw InvalidInput(where + "output node '" + mGraph.output + "' does not exist");
+    for (const NodeDesc& n : mGraph.nodes) {
+        const NodeType* type = registry.find(n.type);
+        for (const std::string& in : n.inputs) {
+            const NodeDesc* from = mGraph.findNode(in);
+            const NodeType* fromType = registry.find(from->type);
+            // Pass-through inputs are checked where they start (cycles are found below).
+            if (fromType->outputFollowsInput) continue;
+            bool accepted = false;
+            for (PortKind k : type->accepts)
+                accepted = accepted || k == fromType->output;
+            if (!accepted)
+                throw InvalidInput(where + "node '" + n.id + "' (" + n.type + ") takes a " +
+                                   portKindName(type->accepts.front()) + " input, but '" + in +
+                                   "' (" + from->type + ") gives a " +
+                                   portKindName(fromType->output));
+        }
+    }
 
     // Cycle check: depth-first with colours.
     std::map<std::string, int> colour;

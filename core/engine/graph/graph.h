@@ -99,15 +99,68 @@ struct NodeContext {
     [[noreturn]] void fail(const std::string& message) const;
 };
 
-/// A node type: its name, the inputs it accepts, and its evaluate function.
+/// What a parameter holds, for validation and for the editor's typed panels.
+enum class ParamKind {
+    Number,  ///< a real number in [min, max]
+    Integer, ///< a whole number in [min, max]
+    Bool,
+    Enum,   ///< one of `choices`
+    Vector, ///< [x, y, z], each component in [min, max]
+    File,   ///< a path, relative to the species file
+    Curve,  ///< a list of [t, value] points (a profile), or a named shape
+    Text,   ///< multi-line text (an L-system grammar)
+    Object, ///< a structured value edited as JSON (an envelope, a list of obstacles)
+};
+
+/// One parameter of a node type: the single description that validation, `docs/species.md`,
+/// `sylva-cli nodes`, Python and the editor's panels all read.
+struct ParamSpec {
+    std::string name;
+    ParamKind kind = ParamKind::Number;
+    Value defaultValue;  ///< null: unset by default (the node works without it)
+    double min = -1e300; ///< Number, Integer, Vector components
+    double max = 1e300;
+    bool minOpen = false;             ///< the range excludes min, e.g. (0, 100]
+    std::string unit;                 ///< "m", "°", "px", "" (a count or a ratio)
+    std::string doc;                  ///< one line; names the paper's symbol where there is one
+    std::vector<std::string> choices; ///< Enum
+    std::string group;                ///< panel section ("Growth", "Bending", ...)
+
+    /// "[1, 2000000]" or "(0, 100] m": the allowed range as a user reads it.
+    std::string rangeText() const;
+};
+
+/// What flows along an edge of the species graph.
+enum class PortKind {
+    Skeleton, ///< branches (and grammar or placed leaves)
+    Mesh,     ///< a mesh, with the skeleton it was made from
+};
+const char* portKindName(PortKind kind);
+
+/// A node type: its name, the inputs it accepts, its parameters and its evaluate function.
 struct NodeType {
     std::string name;
     int minInputs = 0;
     int maxInputs = 0;
     std::function<NodeOutput(const NodeContext&)> evaluate;
     /// Parameter names this type understands; unknown keys in a species file are an error.
+    /// Filled from `params` by NodeRegistry::add() when left empty.
     std::vector<std::string> knownParams;
+    std::vector<ParamSpec> params;                     ///< every parameter, in panel order
+    std::string doc;                                   ///< one line: what the node does
+    std::string category;                              ///< "Generator", "Environment", "Geometry"
+    std::vector<PortKind> accepts{PortKind::Skeleton}; ///< kinds an input may carry
+    /// What the node yields; `Mesh` when it meshes, `Skeleton` for generators. A node whose
+    /// output is the same kind as its input (leaves) says so with outputFollowsInput.
+    PortKind output = PortKind::Skeleton;
+    bool outputFollowsInput = false;
+
+    const ParamSpec* findParam(const std::string& name) const;
 };
+
+/// Checks one parameter value against its spec (kind, range, choices); throws InvalidInput
+/// "<name> must be in [lo, hi] unit, got v" (the caller adds where: file and node).
+void checkParam(const ParamSpec& spec, const Value& value);
 
 /// The table of node types. registerBuiltinNodeTypes() fills it with every engine node
 /// (lsystem, tube_mesh, space_colonization, ...); tests may register their own.
@@ -122,8 +175,20 @@ private:
     std::map<std::string, NodeType> mTypes;
 };
 
-/// Registers every built-in node type once (idempotent, thread-safe).
+/// Registers every built-in node type once (idempotent, thread-safe). Defined by the node
+/// types' own folder (engine/nodes), which graph/ does not include: graph is the model and the
+/// evaluator, nodes are plug-ins to it.
 void registerBuiltinNodeTypes();
+
+/// The kind of value node \p id yields in \p graph (follows inputs for pass-through nodes).
+/// \throw InvalidInput for an unknown node or type.
+PortKind outputKind(const SpeciesGraph& graph, const std::string& id);
+
+/// Why an edge \p from → \p to (from's output into a new input of to) cannot be added: an
+/// unknown node, a node that takes no more inputs, a kind the input does not accept, or a
+/// cycle. Empty when the edge is allowed. The editor shows this to the user.
+std::string connectionError(const SpeciesGraph& graph, const std::string& from,
+                            const std::string& to);
 
 /// Evaluates a species graph. Each node is evaluated once per change: results are cached by a
 /// hash of (type, parameters, seed, input hashes), so changing one parameter re-runs only that

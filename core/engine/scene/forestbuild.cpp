@@ -1,9 +1,9 @@
 #include "engine/scene/forestbuild.h"
 
 #include "engine/growth/selforganizing.h"
-#include "engine/growth/selforganizingnode.h"
 #include "engine/mesh/lod.h"
-#include "engine/mesh/meshnodes.h"
+#include "engine/nodes/meshnodes.h"
+#include "engine/nodes/selforganizingnode.h"
 #include "engine/scene/treecache.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"

@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "engine/environment/adaptnode.h"
 #include "engine/graph/graph.h"
+#include "engine/nodes/adaptnode.h"
 #include "engine/util/error.h"
 
 using namespace sylva;
@@ -31,7 +31,7 @@ NodeOutput testTree(const NodeContext&) {
 
 SpeciesGraph graphWith(Value adaptParams) {
     registerBuiltinNodeTypes();
-    NodeRegistry::instance().add(NodeType{"test_tree", 0, 0, testTree, {}});
+    NodeRegistry::instance().add(NodeType{"test_tree", 0, 0, testTree, {}, {}, {}, {}});
     SpeciesGraph g;
     g.name = "test";
     g.nodes.push_back(NodeDesc{"gen", "test_tree", Value::Object{}, {}});
@@ -87,8 +87,7 @@ TEST(AdaptNode, BadParametersAndFilesGetTheirMessages) {
     }
     Value bend = wallAt(1.1);
     bend.objectRef()["max_bend"] = 3.0;
-    Evaluator bad(graphWith(bend));
-    EXPECT_THROW(bad.evaluate(), InvalidInput);
+    EXPECT_THROW(Evaluator(graphWith(bend)), InvalidInput); // refused by the node metadata
     Value key = Value::Object{
         {"obstacles", Value::Array{Value(Value::Object{{"file", "wall.obj"}, {"offset", 1.0}})}}};
     Evaluator badKey(graphWith(key));

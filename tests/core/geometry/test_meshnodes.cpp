@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/graph/graph.h"
-#include "engine/mesh/meshnodes.h"
+#include "engine/nodes/meshnodes.h"
 #include "engine/util/error.h"
 
 using namespace sylva;
@@ -46,9 +46,9 @@ TEST(MeshNodes, TubeMeshStatsAndPassThrough) {
 }
 
 TEST(MeshNodes, ResolutionOutOfRangeNamesTheRange) {
-    graph::Evaluator ev(species({{"resolution", Value(65)}}));
+    // Refused when the graph is built (the node metadata's range), before anything runs.
     try {
-        ev.evaluate();
+        graph::Evaluator ev(species({{"resolution", Value(65)}}));
         FAIL();
     } catch (const InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find("resolution must be in [3, 64]"), std::string::npos)
@@ -64,8 +64,7 @@ TEST(MeshNodes, LeavesNodeAndLod) {
     EXPECT_GT(a.stats.at("leaves"), 0.0);
     EXPECT_LT(b.stats.at("triangles"), a.stats.at("triangles"));
     EXPECT_EQ(b.stats.at("lod_band"), 2.0);
-    graph::Evaluator bad(species({{"thickness", Value("pipe")}}));
-    EXPECT_THROW(bad.evaluate(), InvalidInput);
+    EXPECT_THROW(graph::Evaluator(species({{"thickness", Value("pipe")}})), InvalidInput);
 }
 
 TEST(MeshNodes, SettingsFromParams) {

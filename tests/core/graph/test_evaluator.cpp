@@ -37,7 +37,10 @@ void registerTestTypes() {
                      out.stats["segments"] = static_cast<double>(n);
                      return out;
                  },
-                 {"length"}});
+                 {"length"},
+                 {},
+                 {},
+                 {}});
     NodeRegistry::instance().add(NodeType{"test_double",
                                           1,
                                           1,
@@ -51,6 +54,9 @@ void registerTestTypes() {
                                               out.timingsMs["double"] = 0.0;
                                               return out;
                                           },
+                                          {},
+                                          {},
+                                          {},
                                           {}});
 }
 

@@ -7,7 +7,7 @@
 
 #include "engine/graph/graph.h"
 #include "engine/growth/selforganizing.h"
-#include "engine/growth/selforganizingnode.h"
+#include "engine/nodes/selforganizingnode.h"
 #include "engine/util/error.h"
 
 using namespace sylva;

@@ -27,8 +27,8 @@
 #include "engine/environment/obstaclescene.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/lod.h"
-#include "engine/mesh/meshnodes.h"
 #include "engine/mesh/tubemesh.h"
+#include "engine/nodes/meshnodes.h"
 #include "engine/scene/forestbuild.h"
 
 using namespace sylva;

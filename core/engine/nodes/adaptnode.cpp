@@ -1,4 +1,4 @@
-#include "engine/environment/adaptnode.h"
+#include "engine/nodes/adaptnode.h"
 
 #include <chrono>
 #include <map>
@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "engine/graph/vectorparam.h"
+#include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
 
 namespace sylva::env {
@@ -171,13 +172,35 @@ AdaptParams adaptParamsFromValue(const Value& p) {
 }
 
 void registerAdaptNode(graph::NodeRegistry& registry) {
-    registry.add(graph::NodeType{"adapt",
-                                 1,
-                                 1,
-                                 evaluateAdapt,
-                                 {"max_bend", "bend_multiplier", "prune", "redistribute",
-                                  "recheck_all", "return_to_vertical", "light_direction",
-                                  "obstacles", "position", "rotation", "scale"}});
+    using namespace sylva::nodes;
+    graph::NodeType type;
+    type.name = "adapt";
+    type.doc = "Bends branches away from obstacles, prunes what still collides and regrows it";
+    type.category = "Environment";
+    type.minInputs = type.maxInputs = 1;
+    type.output = graph::PortKind::Skeleton;
+    type.evaluate = evaluateAdapt;
+    group(
+        type.params, "Bending",
+        {number("max_bend", 0.1, 0, 1.5707963267948966, "rad",
+                "Maximum bend: rotation at the root's first branch level (reference 000)"),
+         number("bend_multiplier", 0.9, 0, 1, "",
+                "Bend multiplier per branching level; deeper branches bend less (reference 000)"),
+         boolean("return_to_vertical", true,
+                 "Let the trunk bend back upright above the obstacles it touched"),
+         boolean("recheck_all", true, "Re-check every branch after bending, not only colliders")});
+    group(type.params, "Pruning",
+          {boolean("prune", true, "Hide branches that still collide after bending"),
+           boolean("redistribute", true, "Give the pruned length back to the visible branches"),
+           vector("light_direction", nullptr, -1e9, 1e9, "",
+                  "Direction light travels; redistribution favours branches facing it")});
+    group(type.params, "Placement (a species on its own)",
+          {other("obstacles", ParamKind::Object,
+                 "Obstacle meshes [{file, translate, rotate, scale}] (a scene gives its own)"),
+           vector("position", nullptr, -1e9, 1e9, "m", "Where the tree stands"),
+           number("rotation", 0.0, -1e6, 1e6, "°", "Turn about +Y"),
+           number("scale", 1.0, 1e-6, 1e6, "", "Uniform scale")});
+    registry.add(std::move(type));
 }
 
 } // namespace sylva::env

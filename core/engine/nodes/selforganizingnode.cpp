@@ -1,8 +1,9 @@
-#include "engine/growth/selforganizingnode.h"
+#include "engine/nodes/selforganizingnode.h"
 
 #include <chrono>
 #include <memory>
 
+#include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
 
 namespace sylva::growth {
@@ -115,6 +116,59 @@ void registerSelfOrganizingNode(graph::NodeRegistry& registry) {
     type.name = "self_organizing";
     type.minInputs = 0;
     type.maxInputs = 0;
+    type.doc = "Grows a tree by light and space over yearly cycles (Palubicki et al. 2009)";
+    type.category = "Generator";
+    type.output = graph::PortKind::Skeleton;
+    using namespace sylva::nodes;
+    group(type.params, "Growth",
+          {integer("cycles", 14, 1, 200, "Growth cycles (years)"),
+           integer("seed", 0, 0, kMaxSeed, "Seed of bud directions and markers"),
+           number("internode_length", 0.1, 0.001, 10, "m", "Length of one metamer"),
+           integer("max_shoot_length", 20, 1, 1000, "Most metamers one bud makes per cycle"),
+           number("max_internodes", 1e6, 1, 5e7, "",
+                  "Runaway guard: more internodes than this in one tree is an error")});
+    group(
+        type.params, "Resource allocation",
+        {choice("allocation", "borchert_honda", {"borchert_honda", "priority"},
+                "Borchert–Honda (λ) or the priority model (w_min, w_max, κ)"),
+         number("alpha", 2.0, 0, 100, "", "α: vigour at the base, v_base = α·Q_base", true),
+         number("lambda", 0.5, 0, 1, "", "λ: apical control; > 0.5 favours the main axis"),
+         number("w_min", 0.06, 0, 10, "", "Priority model: smallest weight (≤ w_max)"),
+         number("w_max", 1.0, 0, 10, "", "Priority model: largest weight", true),
+         number("kappa", 0.5, 0, 1, "", "κ: fraction of buds over which the weight falls", true)});
+    group(type.params, "Environment",
+          {choice("environment", "shadow_propagation", {"shadow_propagation", "space_colonization"},
+                  "How buds find light and space: shadow voxels or markers"),
+           number("shadow_a", 1.0, 0, 100, "", "a: shadow a bud casts into its own voxel", true),
+           number("shadow_b", 2.0, 1, 100, "", "b: attenuation base, Δs = a·b^(−q)", true),
+           integer("shadow_depth", 5, 0, 32, "q_max: voxels a shadow pyramid reaches down"),
+           number("full_exposure", 1.0, 0, 100, "", "C: light of an unshaded bud", true),
+           number("voxel_size", 1.0, 0.1, 100, "", "Shadow voxel edge, in internode lengths"),
+           number("perception_angle", 90.0, 1, 360, "°", "θ: apex angle of a bud's cone"),
+           number("perception_radius", 4.0, 0.5, 100, "",
+                  "r: reach of a bud's cone, in internode lengths"),
+           number("occupancy_radius", 2.0, 0.1, 100, "",
+                  "ρ: markers this close to a bud die, in internode lengths (≤ r)"),
+           integer("markers", 20000, 0, 5'000'000, "Markers in the crown envelope"),
+           number("crown_radius", 3.0, 1e-3, 500, "m", "Half-width of the crown envelope"),
+           number("crown_base", 1.0, 0, 500, "m", "Lowest point of the crown envelope"),
+           number("crown_top", 7.0, 0, 1000, "m", "Highest point of the crown envelope (> base)",
+                  true)});
+    group(type.params, "Shoot direction",
+          {number("branch_angle", 45.0, 0, 180, "°", "Angle of a lateral bud from its axis"),
+           number("divergence_angle", 137.5, 0, 360, "°", "Phyllotaxis roll between metamers"),
+           number("optimal_weight", 0.2, 0, 10, "", "ξ: weight of the optimal growth direction"),
+           number("tropism_weight", 0.05, -10, 10, "", "η: tropism (+Y) of the trunk; < 0 droops"),
+           number("lateral_tropism_weight", 0.05, -10, 10, "", "η of lateral branches"),
+           number("direction_noise", 0.02, 0, 1, "", "Weight of a random unit vector")});
+    group(type.params, "Shedding, thickness, leaves",
+          {number("shedding_threshold", 0.1, 0, 100, "",
+                  "Shed lateral branches whose light per internode falls below"),
+           number("tip_radius", 0.004, 0, 1, "m", "Radius of a shoot tip", true),
+           number("pipe_exponent", 2.5, 1, 4, "", "Pipe model exponent"),
+           number("leaf_size", 0.08, 0, 10, "m", "Leaf card length; 0: no leaves"),
+           integer("leaf_age", 2, 0, 200, "Metamers younger than this many cycles carry a leaf")});
+    // Kept in step with the reading table above (a test compares them).
     type.knownParams = selfOrganizingParamNames();
     type.evaluate = [](const graph::NodeContext& ctx) {
         SelfOrganizingParams params;

@@ -1,25 +1,17 @@
-// Registers the engine's node types. Each module provides a register function; this file is
-// the one place that knows them all, so adding a node type is one line here.
-#include "engine/graph/graph.h"
+// The `lsystem` node: grammar text → derived word → turtle skeleton.
+#include "engine/nodes/lsystemnode.h"
+
+#include <chrono>
+#include <fstream>
+#include <sstream>
 
 #include "engine/lsystem/derivation.h"
 #include "engine/lsystem/grammar.h"
 #include "engine/lsystem/turtle.h"
+#include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
 
-#include <chrono>
-#include <fstream>
-#include <mutex>
-#include <sstream>
-
-// --- node registrations of other modules (one include and one call each) ---
-#include "engine/environment/adaptnode.h"
-#include "engine/growth/selforganizingnode.h"
-#include "engine/growth/spacecolonizationnode.h"
-#include "engine/mesh/meshnodes.h"
-// --- end of node registrations' includes ---
-
-namespace sylva::graph {
+namespace sylva::nodes {
 
 namespace {
 
@@ -37,7 +29,7 @@ std::string readTextFile(const std::filesystem::path& path) {
 }
 
 /// `lsystem`: grammar text (inline `grammar` or `grammar_file`) → derived word → turtle skeleton.
-NodeOutput evaluateLsystem(const NodeContext& ctx) {
+graph::NodeOutput evaluateLsystem(const graph::NodeContext& ctx) {
     const Value& p = ctx.params;
     std::string text;
     std::string fileName;
@@ -52,7 +44,7 @@ NodeOutput evaluateLsystem(const NodeContext& ctx) {
         ctx.fail("needs a 'grammar' (inline text) or a 'grammar_file' parameter");
     }
 
-    NodeOutput out;
+    graph::NodeOutput out;
     auto t0 = std::chrono::steady_clock::now();
     const lsys::Grammar grammar = lsys::parseGrammar(text, fileName);
 
@@ -109,24 +101,37 @@ NodeOutput evaluateLsystem(const NodeContext& ctx) {
 
 } // namespace
 
-void registerBuiltinNodeTypes() {
-    static std::once_flag once;
-    std::call_once(once, [] {
-        NodeRegistry& registry = NodeRegistry::instance();
-        registry.add(
-            NodeType{"lsystem",
-                     0,
-                     0,
-                     evaluateLsystem,
-                     {"grammar", "grammar_file", "generations", "seed", "symbol_limit",
-                      "time_limit", "angle", "step", "width", "width_factor", "leaf_size"}});
-        // --- node registrations of other modules (one call each) ---
-        mesh::registerMeshNodes(registry);
-        env::registerAdaptNode(registry);
-        growth::registerSelfOrganizingNode(registry);
-        growth::registerSpaceColonizationNode(registry);
-        // --- end of node registrations ---
-    });
+void registerLsystemNode(graph::NodeRegistry& registry) {
+    graph::NodeType type;
+    type.name = "lsystem";
+    type.doc = "Derives an L-system grammar and interprets the word with a 3D turtle";
+    type.category = "Generator";
+    type.minInputs = type.maxInputs = 0;
+    type.output = graph::PortKind::Skeleton;
+    type.evaluate = evaluateLsystem;
+    group(type.params, "Grammar",
+          {other("grammar", ParamKind::Text,
+                 "The L-system: header, axiom and rules (docs/grammar.md); replaces grammar_file"),
+           other("grammar_file", ParamKind::File,
+                 "A grammar file, relative to the species file (used when grammar is unset)"),
+           integer("generations", nullptr, 0, 1000,
+                   "n: rewriting steps; unset: the grammar's `generations:`"),
+           integer("seed", nullptr, 0, kMaxSeed,
+                   "Seed of stochastic rules and rand(); unset: the grammar's `seed:`"),
+           number("symbol_limit", 20e6, 1, 2e9, "",
+                  "Derivation stops with an error past this many modules (runaway guard)"),
+           number("time_limit", lsys::kDefaultDeriveTimeLimit, 1e-3, lsys::kMaxDeriveTimeLimit,
+                  "s", "Derivation stops with an error after this many seconds (runaway guard)")});
+    group(type.params, "Turtle",
+          {number("angle", nullptr, -360, 360, "°",
+                  "δ: turn of + - & ^ \\ / without a parameter; unset: the grammar's `angle:`"),
+           number("step", nullptr, 0, 1e4, "m",
+                  "Length of F and f without a parameter; unset: the grammar's `step:`"),
+           number("width", nullptr, 0, 1e3, "m", "Initial branch diameter; unset: the grammar's"),
+           number("width_factor", nullptr, 0, 10, "",
+                  "What ! without a parameter multiplies the width by"),
+           number("leaf_size", nullptr, 0, 100, "m", "Length of the leaves J places")});
+    registry.add(std::move(type));
 }
 
-} // namespace sylva::graph
+} // namespace sylva::nodes

@@ -1,4 +1,4 @@
-#include "engine/growth/spacecolonizationnode.h"
+#include "engine/nodes/spacecolonizationnode.h"
 
 #include <chrono>
 #include <cmath>
@@ -7,6 +7,7 @@
 #include "engine/graph/vectorparam.h"
 #include "engine/growth/envelope.h"
 #include "engine/growth/spacecolonization.h"
+#include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
 
 namespace sylva::growth {
@@ -108,19 +109,34 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
     type.name = "space_colonization";
     type.minInputs = 0;
     type.maxInputs = 1;
-    type.knownParams = {"attractors",
-                        "envelope",
-                        "influence_distance",
-                        "kill_distance",
-                        "segment_length",
-                        "randomness",
-                        "tropism",
-                        "trunk_height",
-                        "root",
-                        "max_iterations",
-                        "pipe_exponent",
-                        "tip_radius",
-                        "seed"};
+    type.doc = "Grows a tree toward attraction points in a crown envelope (Runions et al. 2007)";
+    type.category = "Generator";
+    type.accepts = {graph::PortKind::Skeleton};
+    type.output = graph::PortKind::Skeleton;
+    using namespace sylva::nodes;
+    group(type.params, "Attraction points",
+          {integer("attractors", 3000, 1, 2'000'000,
+                   "N: attraction points sampled in the envelope (more: denser crown)"),
+           other("envelope", ParamKind::Object,
+                 "Crown envelope: {shape: sphere|ellipsoid|cone|cylinder|hemisphere|profile|mesh, "
+                 "center, radius, ...}; default a sphere of 4.5 m at (0, 6, 0)"),
+           integer("seed", 1, 0, kMaxSeed, "Seed of the points and of the random directions")});
+    group(type.params, "Growth",
+          {number("influence_distance", 3.0, 0, 1000, "m",
+                  "d_i: a point attracts its closest node within this distance", true),
+           number("kill_distance", 0.6, 0, 1000, "m",
+                  "d_k: a point dies once a node is this close; D < d_k < d_i", true),
+           number("segment_length", 0.2, 0, 100, "m", "D: length of every new segment", true),
+           number("randomness", 0.147, 0, 1, "", "Weight of a random unit vector per step"),
+           vector("tropism", vec(0, 0, 0), -1, 1, "",
+                  "g: bias added to each direction (gravity: (0, -g, 0)); |g| <= 1"),
+           integer("max_iterations", 1000, 1, 100000, "Growth steps at most")});
+    group(type.params, "Trunk and thickness",
+          {number("trunk_height", 2.0, 0, 1000, "m", "Straight trunk before colonizing"),
+           vector("root", vec(0, 0, 0), -1e6, 1e6, "m", "Trunk base (without an input skeleton)"),
+           number("pipe_exponent", 2.41, 1, 4, "",
+                  "Pipe model exponent: r^e = sum of the children's r^e"),
+           number("tip_radius", 0.01, 0, 10, "m", "Radius of branch tips", true)});
     type.evaluate = [](const graph::NodeContext& ctx) -> graph::NodeOutput {
         using Clock = std::chrono::steady_clock;
         const Value& p = ctx.params;

@@ -1,4 +1,4 @@
-#include "engine/mesh/meshnodes.h"
+#include "engine/nodes/meshnodes.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,6 +6,7 @@
 #include "engine/graph/graph.h"
 #include "engine/mesh/leafplacement.h"
 #include "engine/mesh/lod.h"
+#include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -67,6 +68,8 @@ LodSettings lodFromParams(const Value& p) {
     lod.minTwigPixels = ranged(p, "lod_min_twig_pixels", lod.minTwigPixels, 0.0, 1e3);
     lod.simplifyPixels = ranged(p, "lod_simplify_pixels", lod.simplifyPixels, 0.0, 1e3);
     lod.leafClusterPixels = ranged(p, "lod_leaf_cluster_pixels", lod.leafClusterPixels, 0.0, 1e3);
+    lod.ribbonPixels = ranged(p, "lod_ribbon_pixels", lod.ribbonPixels, 0.0, 1e3);
+    lod.leafyTwigPixels = ranged(p, "lod_leafy_twig_pixels", lod.leafyTwigPixels, 0.0, 1e3);
     lod.screenHeightPx = ranged(p, "lod_screen_height", lod.screenHeightPx, 1.0, 1e5);
     lod.fovYDegrees = ranged(p, "lod_fov", lod.fovYDegrees, 1.0, 179.0);
     validateLod(lod);
@@ -206,38 +209,78 @@ NodeOutput evaluateLeaves(const NodeContext& ctx) {
 } // namespace
 
 void registerMeshNodes(graph::NodeRegistry& registry) {
-    registry.add(graph::NodeType{"tube_mesh",
-                                 1,
-                                 1,
-                                 evaluateTubeMesh,
-                                 {"resolution",
-                                  "caps",
-                                  "thickness",
-                                  "initial_thickness",
-                                  "thickness_multiplier",
-                                  "radius_scale",
-                                  "wind_attributes",
-                                  "node_ids",
-                                  "leaves",
-                                  "leaf_aspect",
-                                  "leaf_scale",
-                                  "lod_distance",
-                                  "lod_bands",
-                                  "lod_min_twig_pixels",
-                                  "lod_simplify_pixels",
-                                  "lod_leaf_cluster_pixels",
-                                  "lod_ribbon_pixels",
-                                  "lod_leafy_twig_pixels",
-                                  "lod_screen_height",
-                                  "lod_fov"}});
-    registry.add(graph::NodeType{"leaves",
-                                 1,
-                                 1,
-                                 evaluateLeaves,
-                                 {"placement", "keep_grammar_leaves", "phyllotaxis", "whorl_count",
-                                  "size", "size_variation", "density", "tip_count",
-                                  "max_branch_radius", "petiole_angle", "normal_weight",
-                                  "up_weight", "light_weight", "light_direction", "leaf_aspect"}});
+    using namespace sylva::nodes;
+    graph::NodeType tube;
+    tube.name = "tube_mesh";
+    tube.doc = "Meshes the branches as tubes and the leaves as cards";
+    tube.category = "Geometry";
+    tube.minInputs = tube.maxInputs = 1;
+    tube.output = graph::PortKind::Mesh;
+    tube.evaluate = evaluateTubeMesh;
+    group(tube.params, "Tubes",
+          {integer("resolution", 8, 3, 64, "Sides of each branch tube"),
+           boolean("caps", true, "Close the tips of the tubes"),
+           choice("thickness", "skeleton", {"skeleton", "branching"},
+                  "Radii from the skeleton, or by branching (initial × multiplier per level)"),
+           number("initial_thickness", 0.2, 0, 1e3, "m", "Trunk radius (thickness: branching)"),
+           number("thickness_multiplier", 0.8, 1e-6, 1, "",
+                  "Radius factor per branching level (thickness: branching)"),
+           number("radius_scale", 1.0, 0, 1e3, "", "Multiplies every radius"),
+           boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
+           boolean("node_ids", false, "Write the skeleton node of each vertex")});
+    group(tube.params, "Leaves",
+          {boolean("leaves", true, "Draw the skeleton's leaves as cards"),
+           number("leaf_scale", 1.0, 1e-6, 100, "", "Multiplies every leaf card's length"),
+           number("leaf_aspect", 0.5, 1e-6, 4, "", "Leaf card width / length")});
+    group(tube.params, "Level of detail",
+          {number("lod_distance", -1.0, -1, 1e7, "m",
+                  "Camera distance the mesh is made for; -1: full detail"),
+           other("lod_bands", ParamKind::Object,
+                 "[[distance, resolution, leaf_fraction], ...] from near to far"),
+           number("lod_min_twig_pixels", 1.0, 0, 1e3, "px",
+                  "Drop a lateral subtree smaller than this on screen (leaves included)"),
+           number("lod_leafy_twig_pixels", 4.0, 0, 1e3, "px",
+                  "A leafy subtree smaller than this keeps its leaves, loses its bark"),
+           number("lod_simplify_pixels", 0.5, 0, 1e3, "px", "Straighten axes within this"),
+           number("lod_leaf_cluster_pixels", 2.0, 0, 1e3, "px",
+                  "Merge leaves within this into one card of the same area; 0: off"),
+           number("lod_ribbon_pixels", 2.0, 0, 1e3, "px",
+                  "Axes thinner than this become camera-facing ribbons"),
+           number("lod_screen_height", 1080.0, 1, 1e5, "px", "Viewport height the pixels refer to"),
+           number("lod_fov", 60.0, 1, 179, "°", "Vertical field of view")});
+    registry.add(std::move(tube));
+
+    graph::NodeType leaves;
+    leaves.name = "leaves";
+    leaves.doc = "Places leaves along young branches and at tips, by phyllotaxis";
+    leaves.category = "Geometry";
+    leaves.minInputs = leaves.maxInputs = 1;
+    leaves.accepts = {graph::PortKind::Skeleton, graph::PortKind::Mesh};
+    leaves.outputFollowsInput = true;
+    leaves.evaluate = evaluateLeaves;
+    group(leaves.params, "Where",
+          {choice("placement", "branches_and_tips",
+                  {"branches_and_tips", "branches", "tips", "grammar"},
+                  "Along young branches, at tips, both, or only the grammar's J leaves"),
+           boolean("keep_grammar_leaves", false, "Keep the grammar's J leaves as well"),
+           number("density", 8.0, 0, 1000, "1/m", "Leaves per metre of young branch"),
+           integer("tip_count", 3, 0, 32, "Leaves per branch tip"),
+           number("max_branch_radius", 0.02, 0, 1e3, "m", "Thicker branches carry no leaves")});
+    group(leaves.params, "Arrangement",
+          {choice("phyllotaxis", "spiral", {"spiral", "alternate", "opposite", "whorled"},
+                  "How leaves are arranged around the branch"),
+           integer("whorl_count", 3, 2, 12, "Leaves per whorl (phyllotaxis: whorled)"),
+           number("petiole_angle", 50.0, 0, 90, "°", "Angle between branch and leaf")});
+    group(leaves.params, "Size and orientation",
+          {number("size", 0.12, 1e-6, 100, "m", "Leaf card length"),
+           number("size_variation", 0.2, 0, 1, "", "Size × (1 ± variation)"),
+           number("leaf_aspect", 0.5, 1e-6, 4, "", "Card width / length"),
+           number("normal_weight", 0.4, 0, 1e3, "", "Card faces away from the branch"),
+           number("up_weight", 0.4, 0, 1e3, "", "Card faces up"),
+           number("light_weight", 0.2, 0, 1e3, "", "Card faces the light"),
+           vector("light_direction", vec(0.3, 1.0, 0.2), -1e9, 1e9, "",
+                  "Towards the light (normalised)")});
+    registry.add(std::move(leaves));
 }
 
 } // namespace sylva::mesh
