@@ -120,8 +120,8 @@ void registerLsystemNode(graph::NodeRegistry& registry) {
                    "Seed of stochastic rules and rand(); unset: the grammar's `seed:`"),
            number("symbol_limit", 20e6, 1, 2e9, "",
                   "Derivation stops with an error past this many modules (runaway guard)"),
-           number("time_limit", lsys::kDefaultDeriveTimeLimit, 1e-3, lsys::kMaxDeriveTimeLimit,
-                  "s", "Derivation stops with an error after this many seconds (runaway guard)")});
+           number("time_limit", lsys::kDefaultDeriveTimeLimit, 1e-3, lsys::kMaxDeriveTimeLimit, "s",
+                  "Derivation stops with an error after this many seconds (runaway guard)")});
     group(type.params, "Turtle",
           {number("angle", nullptr, -360, 360, "°",
                   "δ: turn of + - & ^ \\ / without a parameter; unset: the grammar's `angle:`"),
