@@ -154,12 +154,63 @@
         <source>Change domain</source>
         <translation>Bereich ändern</translation>
     </message>
+    <message>
+        <source>Add node %1</source>
+        <translation>Knoten %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Delete node %1</source>
+        <translation>Knoten %1 löschen</translation>
+    </message>
+    <message>
+        <source>Connect %1 to %2</source>
+        <translation>%1 mit %2 verbinden</translation>
+    </message>
+    <message>
+        <source>Disconnect %1 from %2</source>
+        <translation>%1 von %2 trennen</translation>
+    </message>
+    <message>
+        <source>Make %1 the output</source>
+        <translation>%1 zur Ausgabe machen</translation>
+    </message>
+    <message>
+        <source>Move node %1</source>
+        <translation>Knoten %1 verschieben</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
     <message>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
+    </message>
+</context>
+<context>
+    <name>NodeGraph</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>tree ▶</source>
+        <translation>Baum ▶</translation>
+    </message>
+    <message>
+        <source>✖ %1</source>
+        <translation>✖ %1</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 ms (cached)</source>
+        <translation>%1 ms (zwischengespeichert)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
     </message>
 </context>
 <context>
@@ -225,6 +276,61 @@
     <message>
         <source>Discard edits autosaved before a crash without asking.</source>
         <translation>Vor einem Absturz automatisch gespeicherte Änderungen ohne Rückfrage verwerfen.</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::GrammarEditor</name>
+    <message>
+        <source>Step through the derivation: the preview shows the tree after this many generations (the grammar keeps its own count)</source>
+        <translation>Schrittweise durch die Ableitung: die Vorschau zeigt den Baum nach so vielen Generationen (die Grammatik behält ihre eigene Anzahl)</translation>
+    </message>
+    <message>
+        <source>Animate</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Play the derivation from the axiom to the last generation</source>
+        <translation>Die Ableitung vom Axiom bis zur letzten Generation abspielen</translation>
+    </message>
+    <message>
+        <source>Symbols</source>
+        <translation>Symbole</translation>
+    </message>
+    <message>
+        <source>Generations:</source>
+        <translation>Generationen:</translation>
+    </message>
+    <message>
+        <source>&lt;table cellspacing=4&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; f&lt;/td&gt;&lt;td&gt;move forward drawing / without drawing (length, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;+ -&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turn left / right (angle, °)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;&amp;amp; ^&lt;/b&gt;&lt;/td&gt;&lt;td&gt;pitch down / up (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;\ /&lt;/b&gt;&lt;/td&gt;&lt;td&gt;roll left / right (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;|&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turn around&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;start / end a branch&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;!&lt;/b&gt;&lt;/td&gt;&lt;td&gt;width: set (diameter, m) or multiply by width_factor&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;$&lt;/b&gt; &lt;b&gt;%&lt;/b&gt;&lt;/td&gt;&lt;td&gt;roll left horizontal / cut the branch&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;J&lt;/b&gt;&lt;/td&gt;&lt;td&gt;a leaf (size, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;A B X …&lt;/td&gt;&lt;td&gt;other modules: state for the rules&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;a &amp;lt; B &amp;gt; c&lt;/td&gt;&lt;td&gt;context; &lt;b&gt;: cond&lt;/b&gt; before -&amp;gt;, &lt;b&gt;: weight&lt;/b&gt; after the successor&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=4&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; f&lt;/td&gt;&lt;td&gt;vorwärts mit / ohne Zeichnen (Länge, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;+ -&lt;/b&gt;&lt;/td&gt;&lt;td&gt;links / rechts drehen (Winkel, °)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;&amp;amp; ^&lt;/b&gt;&lt;/td&gt;&lt;td&gt;nach unten / oben neigen (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;\ /&lt;/b&gt;&lt;/td&gt;&lt;td&gt;links / rechts rollen (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;|&lt;/b&gt;&lt;/td&gt;&lt;td&gt;umkehren&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Ast beginnen / beenden&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;!&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Breite: setzen (Durchmesser, m) oder mit width_factor multiplizieren&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;$&lt;/b&gt; &lt;b&gt;%&lt;/b&gt;&lt;/td&gt;&lt;td&gt;waagrecht rollen / Ast abschneiden&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;J&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ein Blatt (Größe, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;A B X …&lt;/td&gt;&lt;td&gt;andere Module: Zustand für die Regeln&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;a &amp;lt; B &amp;gt; c&lt;/td&gt;&lt;td&gt;Kontext; &lt;b&gt;: Bedingung&lt;/b&gt; vor -&amp;gt;, &lt;b&gt;: Gewicht&lt;/b&gt; nach dem Nachfolger&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>Errors in the grammar: click one to jump to it</source>
+        <translation>Fehler in der Grammatik: anklicken, um dorthin zu springen</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>Select an lsystem node to edit its grammar.</source>
+        <translation>Einen lsystem-Knoten wählen, um seine Grammatik zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>Grammar of %1 · %2 (kept in the project)</source>
+        <translation>Grammatik von %1 · %2 (im Projekt gespeichert)</translation>
+    </message>
+    <message>
+        <source>Grammar of %1 · %2, read from %3; your edits are kept in the project, the file is not written</source>
+        <translation>Grammatik von %1 · %2, gelesen aus %3; Ihre Änderungen werden im Projekt gespeichert, die Datei wird nicht geschrieben</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>Zeile %1, Spalte %2: %3</translation>
+    </message>
+    <message>
+        <source>No errors</source>
+        <translation>Keine Fehler</translation>
     </message>
 </context>
 <context>
@@ -763,12 +869,94 @@
         <source>Recovery folder:</source>
         <translation>Wiederherstellungsordner:</translation>
     </message>
+    <message>
+        <source>Species Editor</source>
+        <translation>Arteditor</translation>
+    </message>
+    <message>
+        <source>Node Parameters</source>
+        <translation>Knotenparameter</translation>
+    </message>
+    <message>
+        <source>The project has no species to edit: add one from the Presets menu</source>
+        <translation>Das Projekt hat keine Art zum Bearbeiten: fügen Sie eine aus dem Menü Vorlagen hinzu</translation>
+    </message>
+    <message>
+        <source>&amp;Edit species…</source>
+        <translation>Art &amp;bearbeiten…</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
     <message>
         <source>Clear</source>
         <translation>Leeren</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::NodeGraphScene</name>
+    <message>
+        <source>Added %1</source>
+        <translation>%1 hinzugefügt</translation>
+    </message>
+    <message>
+        <source>Connected %1 to %2</source>
+        <translation>%1 mit %2 verbunden</translation>
+    </message>
+    <message>
+        <source>Disconnected %1 from %2</source>
+        <translation>%1 von %2 getrennt</translation>
+    </message>
+    <message>
+        <source>Delete connection</source>
+        <translation>Verbindung löschen</translation>
+    </message>
+    <message>
+        <source>Delete nodes</source>
+        <translation>Knoten löschen</translation>
+    </message>
+    <message>
+        <source>Deleted %1</source>
+        <translation>%1 gelöscht</translation>
+    </message>
+    <message>
+        <source>a connection</source>
+        <translation>eine Verbindung</translation>
+    </message>
+    <message>
+        <source>Paste nodes</source>
+        <translation>Knoten einfügen</translation>
+    </message>
+    <message>
+        <source>Pasted %1</source>
+        <translation>%1 eingefügt</translation>
+    </message>
+    <message>
+        <source>Move nodes</source>
+        <translation>Knoten verschieben</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::NodeGraphView</name>
+    <message>
+        <source>Species graph: drag from a node&apos;s right port to another node to connect; Tab or right click adds a node; Delete removes; Ctrl+C/Ctrl+V copy and paste; F frames all</source>
+        <translation>Artgraph: vom rechten Anschluss eines Knotens auf einen anderen ziehen, um zu verbinden; Tab oder Rechtsklick fügt einen Knoten hinzu; Entf löscht; Strg+C/Strg+V kopieren und einfügen; F zeigt alles</translation>
+    </message>
+    <message>
+        <source>Search node types…</source>
+        <translation>Knotentypen suchen…</translation>
+    </message>
+    <message>
+        <source>%1  —  %2</source>
+        <translation>%1  —  %2</translation>
+    </message>
+    <message>
+        <source>Make it the tree (output)</source>
+        <translation>Zum Baum machen (Ausgabe)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
     </message>
 </context>
 <context>
@@ -828,6 +1016,62 @@
     <message>
         <source>%1 %2: %3 trees</source>
         <translation>%1 %2: %3 Bäume</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::ParameterPanel</name>
+    <message>
+        <source>&lt;i&gt;Select a node in the species graph to edit its parameters.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Einen Knoten im Artgraph wählen, um seine Parameter zu bearbeiten.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; — %2&lt;br&gt;&lt;small&gt;%3&lt;/small&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; — %2&lt;br&gt;&lt;small&gt;%3&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>%1
+%2 · default %3%4</source>
+        <translation>%1
+%2 · Standard %3%4</translation>
+    </message>
+    <message>
+        <source>unset</source>
+        <translation>nicht gesetzt</translation>
+    </message>
+    <message>
+        <source> · range %1</source>
+        <translation> · Bereich %1</translation>
+    </message>
+    <message>
+        <source>Reset %1 to its default (%2)</source>
+        <translation>%1 auf den Standard zurücksetzen (%2)</translation>
+    </message>
+    <message>
+        <source>relative to the project</source>
+        <translation>relativ zum Projekt</translation>
+    </message>
+    <message>
+        <source>Choose a file</source>
+        <translation>Datei wählen</translation>
+    </message>
+    <message>
+        <source>Edit in the grammar editor</source>
+        <translation>Im Grammatikeditor bearbeiten</translation>
+    </message>
+    <message numerus="yes">
+        <source>Edit in the grammar editor (%n lines)</source>
+        <translation>
+            <numerusform>Im Grammatikeditor bearbeiten (%n Zeile)</numerusform>
+            <numerusform>Im Grammatikeditor bearbeiten (%n Zeilen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>unset (JSON)</source>
+        <translation>nicht gesetzt (JSON)</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
     </message>
 </context>
 <context>
@@ -1010,6 +1254,29 @@
     <message>
         <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
         <translation>Python %1: sylva und doc = sylva.document() sind bereit. Probieren Sie doc.trees() oder doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::SpeciesWorkbench</name>
+    <message>
+        <source>Species:</source>
+        <translation>Art:</translation>
+    </message>
+    <message>
+        <source>Preview: %1 ms from the edit</source>
+        <translation>Vorschau: %1 ms nach der Änderung</translation>
+    </message>
+    <message>
+        <source>Species preview: %1 ms from the edit to the new tree on screen</source>
+        <translation>Artvorschau: %1 ms von der Änderung bis zum neuen Baum auf dem Bildschirm</translation>
+    </message>
+    <message>
+        <source>Preview failed</source>
+        <translation>Vorschau fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Evaluation %1 ms</source>
+        <translation>Auswertung %1 ms</translation>
     </message>
 </context>
 <context>

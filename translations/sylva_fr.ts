@@ -154,12 +154,63 @@
         <source>Change domain</source>
         <translation>Modifier la zone</translation>
     </message>
+    <message>
+        <source>Add node %1</source>
+        <translation>Ajouter le nœud %1</translation>
+    </message>
+    <message>
+        <source>Delete node %1</source>
+        <translation>Supprimer le nœud %1</translation>
+    </message>
+    <message>
+        <source>Connect %1 to %2</source>
+        <translation>Relier %1 à %2</translation>
+    </message>
+    <message>
+        <source>Disconnect %1 from %2</source>
+        <translation>Détacher %1 de %2</translation>
+    </message>
+    <message>
+        <source>Make %1 the output</source>
+        <translation>Faire de %1 la sortie</translation>
+    </message>
+    <message>
+        <source>Move node %1</source>
+        <translation>Déplacer le nœud %1</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
     <message>
         <source>Untitled</source>
         <translation>Sans titre</translation>
+    </message>
+</context>
+<context>
+    <name>NodeGraph</name>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>tree ▶</source>
+        <translation>arbre ▶</translation>
+    </message>
+    <message>
+        <source>✖ %1</source>
+        <translation>✖ %1</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 ms (cached)</source>
+        <translation>%1 ms (en cache)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <translation>%1 → %2</translation>
     </message>
 </context>
 <context>
@@ -225,6 +276,61 @@
     <message>
         <source>--color-by expects material, light, vigour, age or order, got &apos;%1&apos;</source>
         <translation>--color-by attend material, light, vigour, age ou order, reçu «&#xa0;%1&#xa0;»</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::GrammarEditor</name>
+    <message>
+        <source>Step through the derivation: the preview shows the tree after this many generations (the grammar keeps its own count)</source>
+        <translation>Parcourir la dérivation pas à pas : l’aperçu montre l’arbre après ce nombre de générations (la grammaire garde le sien)</translation>
+    </message>
+    <message>
+        <source>Animate</source>
+        <translation>Animer</translation>
+    </message>
+    <message>
+        <source>Play the derivation from the axiom to the last generation</source>
+        <translation>Jouer la dérivation de l’axiome à la dernière génération</translation>
+    </message>
+    <message>
+        <source>Symbols</source>
+        <translation>Symboles</translation>
+    </message>
+    <message>
+        <source>Generations:</source>
+        <translation>Générations :</translation>
+    </message>
+    <message>
+        <source>&lt;table cellspacing=4&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; f&lt;/td&gt;&lt;td&gt;move forward drawing / without drawing (length, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;+ -&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turn left / right (angle, °)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;&amp;amp; ^&lt;/b&gt;&lt;/td&gt;&lt;td&gt;pitch down / up (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;\ /&lt;/b&gt;&lt;/td&gt;&lt;td&gt;roll left / right (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;|&lt;/b&gt;&lt;/td&gt;&lt;td&gt;turn around&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;start / end a branch&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;!&lt;/b&gt;&lt;/td&gt;&lt;td&gt;width: set (diameter, m) or multiply by width_factor&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;$&lt;/b&gt; &lt;b&gt;%&lt;/b&gt;&lt;/td&gt;&lt;td&gt;roll left horizontal / cut the branch&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;J&lt;/b&gt;&lt;/td&gt;&lt;td&gt;a leaf (size, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;A B X …&lt;/td&gt;&lt;td&gt;other modules: state for the rules&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;a &amp;lt; B &amp;gt; c&lt;/td&gt;&lt;td&gt;context; &lt;b&gt;: cond&lt;/b&gt; before -&amp;gt;, &lt;b&gt;: weight&lt;/b&gt; after the successor&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table cellspacing=4&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; f&lt;/td&gt;&lt;td&gt;avancer en traçant / sans tracer (longueur, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;+ -&lt;/b&gt;&lt;/td&gt;&lt;td&gt;tourner à gauche / droite (angle, °)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;&amp;amp; ^&lt;/b&gt;&lt;/td&gt;&lt;td&gt;piquer / cabrer (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;\ /&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rouler à gauche / droite (°)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;|&lt;/b&gt;&lt;/td&gt;&lt;td&gt;demi-tour&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[ ]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;début / fin d’une branche&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;!&lt;/b&gt;&lt;/td&gt;&lt;td&gt;largeur : fixer (diamètre, m) ou multiplier par width_factor&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;$&lt;/b&gt; &lt;b&gt;%&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rouler à l’horizontale / couper la branche&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;J&lt;/b&gt;&lt;/td&gt;&lt;td&gt;une feuille (taille, m)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;A B X …&lt;/td&gt;&lt;td&gt;autres modules : état pour les règles&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;a &amp;lt; B &amp;gt; c&lt;/td&gt;&lt;td&gt;contexte ; &lt;b&gt;: condition&lt;/b&gt; avant -&amp;gt;, &lt;b&gt;: poids&lt;/b&gt; après le successeur&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>Errors in the grammar: click one to jump to it</source>
+        <translation>Erreurs de la grammaire : cliquer pour y aller</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>Select an lsystem node to edit its grammar.</source>
+        <translation>Choisissez un nœud lsystem pour modifier sa grammaire.</translation>
+    </message>
+    <message>
+        <source>Grammar of %1 · %2 (kept in the project)</source>
+        <translation>Grammaire de %1 · %2 (gardée dans le projet)</translation>
+    </message>
+    <message>
+        <source>Grammar of %1 · %2, read from %3; your edits are kept in the project, the file is not written</source>
+        <translation>Grammaire de %1 · %2, lue dans %3 ; vos modifications sont gardées dans le projet, le fichier n’est pas écrit</translation>
+    </message>
+    <message>
+        <source>line %1, column %2: %3</source>
+        <translation>ligne %1, colonne %2 : %3</translation>
+    </message>
+    <message>
+        <source>No errors</source>
+        <translation>Aucune erreur</translation>
     </message>
 </context>
 <context>
@@ -763,12 +869,94 @@
         <source>Recovery folder:</source>
         <translation>Dossier de récupération&#xa0;:</translation>
     </message>
+    <message>
+        <source>Species Editor</source>
+        <translation>Éditeur d’espèces</translation>
+    </message>
+    <message>
+        <source>Node Parameters</source>
+        <translation>Paramètres du nœud</translation>
+    </message>
+    <message>
+        <source>The project has no species to edit: add one from the Presets menu</source>
+        <translation>Le projet n’a aucune espèce à modifier : ajoutez-en une depuis le menu Préréglages</translation>
+    </message>
+    <message>
+        <source>&amp;Edit species…</source>
+        <translation>&amp;Modifier l’espèce…</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
     <message>
         <source>Clear</source>
         <translation>Effacer</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::NodeGraphScene</name>
+    <message>
+        <source>Added %1</source>
+        <translation>%1 ajouté</translation>
+    </message>
+    <message>
+        <source>Connected %1 to %2</source>
+        <translation>%1 relié à %2</translation>
+    </message>
+    <message>
+        <source>Disconnected %1 from %2</source>
+        <translation>%1 détaché de %2</translation>
+    </message>
+    <message>
+        <source>Delete connection</source>
+        <translation>Supprimer la liaison</translation>
+    </message>
+    <message>
+        <source>Delete nodes</source>
+        <translation>Supprimer les nœuds</translation>
+    </message>
+    <message>
+        <source>Deleted %1</source>
+        <translation>%1 supprimé</translation>
+    </message>
+    <message>
+        <source>a connection</source>
+        <translation>une liaison</translation>
+    </message>
+    <message>
+        <source>Paste nodes</source>
+        <translation>Coller les nœuds</translation>
+    </message>
+    <message>
+        <source>Pasted %1</source>
+        <translation>%1 collé</translation>
+    </message>
+    <message>
+        <source>Move nodes</source>
+        <translation>Déplacer les nœuds</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::NodeGraphView</name>
+    <message>
+        <source>Species graph: drag from a node&apos;s right port to another node to connect; Tab or right click adds a node; Delete removes; Ctrl+C/Ctrl+V copy and paste; F frames all</source>
+        <translation>Graphe de l’espèce : tirer du port droit d’un nœud vers un autre pour les relier ; Tab ou clic droit ajoute un nœud ; Suppr supprime ; Ctrl+C/Ctrl+V copier-coller ; F cadre tout</translation>
+    </message>
+    <message>
+        <source>Search node types…</source>
+        <translation>Chercher un type de nœud…</translation>
+    </message>
+    <message>
+        <source>%1  —  %2</source>
+        <translation>%1  —  %2</translation>
+    </message>
+    <message>
+        <source>Make it the tree (output)</source>
+        <translation>En faire l’arbre (sortie)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
     </message>
 </context>
 <context>
@@ -828,6 +1016,62 @@
     <message>
         <source>%1 %2: %3 trees</source>
         <translation>%1 %2&#xa0;: %3 arbres</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::ParameterPanel</name>
+    <message>
+        <source>&lt;i&gt;Select a node in the species graph to edit its parameters.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;Choisissez un nœud du graphe pour modifier ses paramètres.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; — %2&lt;br&gt;&lt;small&gt;%3&lt;/small&gt;</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; — %2&lt;br&gt;&lt;small&gt;%3&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>%1
+%2 · default %3%4</source>
+        <translation>%1
+%2 · défaut %3%4</translation>
+    </message>
+    <message>
+        <source>unset</source>
+        <translation>non défini</translation>
+    </message>
+    <message>
+        <source> · range %1</source>
+        <translation> · plage %1</translation>
+    </message>
+    <message>
+        <source>Reset %1 to its default (%2)</source>
+        <translation>Remettre %1 à sa valeur par défaut (%2)</translation>
+    </message>
+    <message>
+        <source>relative to the project</source>
+        <translation>relatif au projet</translation>
+    </message>
+    <message>
+        <source>Choose a file</source>
+        <translation>Choisir un fichier</translation>
+    </message>
+    <message>
+        <source>Edit in the grammar editor</source>
+        <translation>Modifier dans l’éditeur de grammaire</translation>
+    </message>
+    <message numerus="yes">
+        <source>Edit in the grammar editor (%n lines)</source>
+        <translation>
+            <numerusform>Modifier dans l’éditeur de grammaire (%n ligne)</numerusform>
+            <numerusform>Modifier dans l’éditeur de grammaire (%n lignes)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>unset (JSON)</source>
+        <translation>non défini (JSON)</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Appliquer</translation>
     </message>
 </context>
 <context>
@@ -1013,6 +1257,29 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::SpeciesWorkbench</name>
+    <message>
+        <source>Species:</source>
+        <translation>Espèce :</translation>
+    </message>
+    <message>
+        <source>Preview: %1 ms from the edit</source>
+        <translation>Aperçu : %1 ms après la modification</translation>
+    </message>
+    <message>
+        <source>Species preview: %1 ms from the edit to the new tree on screen</source>
+        <translation>Aperçu de l’espèce : %1 ms de la modification au nouvel arbre à l’écran</translation>
+    </message>
+    <message>
+        <source>Preview failed</source>
+        <translation>Échec de l’aperçu</translation>
+    </message>
+    <message>
+        <source>Evaluation %1 ms</source>
+        <translation>Évaluation %1 ms</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::StatsPanel</name>
     <message>
         <source>File:</source>
@@ -1099,7 +1366,7 @@
     </message>
     <message>
         <source>Showing:</source>
-        <translation>Affiché :</translation>
+        <translation>Affiché&#xa0;:</translation>
     </message>
     <message>
         <source>The species previewed, or the project and its tree count</source>

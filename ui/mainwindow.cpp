@@ -1,4 +1,6 @@
 #include "ui/mainwindow.h"
+#include "ui/nodes/parameterpanel.h"
+#include "ui/speciesworkbench.h"
 
 #include <string>
 
@@ -14,6 +16,9 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDockWidget>
+
+#include <algorithm>
+
 #include <QDoubleSpinBox>
 #include <QEventLoop>
 #include <QFile>
@@ -182,6 +187,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() {
     if (PythonHost::window() == this) PythonHost::setWindow(nullptr);
+    // The species editor talks to the document (a grammar burst is committed when its editor
+    // loses focus): it goes first, while the document (an older child) still exists.
+    for (const QString& name : {QStringLiteral("speciesDock"), QStringLiteral("parametersDock")}) {
+        delete mDocks[name];
+        mDocks.erase(name);
+    }
+    mWorkbench = nullptr;
     // The worker only touches its own copies, but stopping it keeps shutdown quick.
     mWatcher.disconnect(this);
     mWatcher.cancel();
@@ -252,6 +264,29 @@ void MainWindow::createDocks() {
     mUndoView->setEmptyLabel(tr("<opened>"));
     dock(QStringLiteral("undoDock"), tr("Undo History"), mUndoView, Qt::RightDockWidgetArea);
 
+    // Tuning a species: the graph, the grammar and a live preview below the viewport, the
+    // selected node's parameters on the right. Shown by Species ▸ Edit Species (or a double
+    // click on a species in the outliner); closed they cost nothing.
+    mWorkbench = new SpeciesWorkbench(*mDocument, this);
+    mSpeciesRegen = new QTimer(this);
+    mSpeciesRegen->setSingleShot(true);
+    mSpeciesRegen->setInterval(400);
+    connect(mSpeciesRegen, &QTimer::timeout, this, [this] { mGenerator->regenerate(); });
+    mWorkbench->setObjectName(QStringLiteral("speciesWorkbench"));
+    connect(mWorkbench, &SpeciesWorkbench::status, this,
+            [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
+    auto* parametersScroll = new QScrollArea(this);
+    parametersScroll->setWidget(mWorkbench->parameters());
+    parametersScroll->setWidgetResizable(true);
+    parametersScroll->setFrameShape(QFrame::NoFrame);
+    parametersScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    parametersScroll->setMinimumWidth(340);
+    dock(QStringLiteral("speciesDock"), tr("Species Editor"), mWorkbench, Qt::BottomDockWidgetArea)
+        ->hide();
+    dock(QStringLiteral("parametersDock"), tr("Node Parameters"), parametersScroll,
+         Qt::RightDockWidgetArea)
+        ->hide();
+
     mMessages = new MessagesPanel(this);
     dock(QStringLiteral("messagesDock"), tr("Messages"), mMessages, Qt::BottomDockWidgetArea);
 
@@ -266,6 +301,32 @@ void MainWindow::createDocks() {
     resizeDocks({mDocks[QStringLiteral("messagesDock")]}, {140}, Qt::Vertical);
     resizeDocks({mDocks[QStringLiteral("outlinerDock")], mDocks[QStringLiteral("statsDock")]},
                 {330, 280}, Qt::Horizontal);
+}
+
+void MainWindow::editSpecies(const QString& species) {
+    if (species.isEmpty() && mDocument->project().species.empty()) {
+        reportError(tr("The project has no species to edit: add one from the Presets menu"));
+        return;
+    }
+    QDockWidget* speciesDock = mDocks[QStringLiteral("speciesDock")];
+    QDockWidget* parametersDock = mDocks[QStringLiteral("parametersDock")];
+    if (!speciesDock->isVisible()) {
+        // The editor takes the bottom's whole width (messages and console become tabs beside
+        // it) and the parameters the right's height (statistics and undo history likewise).
+        speciesDock->show();
+        parametersDock->show();
+        for (const char* name : {"messagesDock", "consoleDock"})
+            if (QDockWidget* d = mDocks[QLatin1String(name)]; d && !d->isFloating())
+                tabifyDockWidget(d, speciesDock);
+        for (const char* name : {"statsDock"})
+            if (QDockWidget* d = mDocks[QLatin1String(name)]; d && !d->isFloating())
+                tabifyDockWidget(d, parametersDock);
+        resizeDocks({speciesDock}, {std::max(320, height() * 2 / 5)}, Qt::Vertical);
+        resizeDocks({parametersDock}, {360}, Qt::Horizontal);
+    }
+    speciesDock->raise();
+    parametersDock->raise();
+    if (!species.isEmpty()) mWorkbench->setSpecies(species);
 }
 
 void MainWindow::createMenus() {
@@ -346,6 +407,21 @@ void MainWindow::createMenus() {
     QMenu* scene = menuBar()->addMenu(tr("&Scene"));
     scene->setObjectName(QStringLiteral("sceneMenu"));
     scene->addAction(tr("Add &species from file…"), this, &MainWindow::showAddSpeciesDialog);
+    QAction* editSpeciesAction = scene->addAction(tr("&Edit species…"), this, [this] {
+        // The selected species, else the species of the selected tree, else the shown one.
+        QString name;
+        for (const doc::ItemRef& item : mDocument->selection()) {
+            if (item.kind == doc::ItemRef::Kind::Species &&
+                item.id < mDocument->project().species.size())
+                name = QString::fromStdString(mDocument->project().species[item.id].name);
+        }
+        if (name.isEmpty())
+            for (doc::TreeId id : mDocument->selectedTrees())
+                name = QString::fromStdString(mDocument->tree(id).species);
+        editSpecies(name);
+    });
+    editSpeciesAction->setObjectName(QStringLiteral("actionEditSpecies"));
+    editSpeciesAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     QAction* addTree = scene->addAction(tr("Add &tree"), this, &MainWindow::addTreeAtTarget);
     addTree->setObjectName(QStringLiteral("actionAddTree"));
     addTree->setShortcut(QKeySequence(tr("Ctrl+T")));
@@ -759,7 +835,8 @@ const GenerationResult& MainWindow::lastResult() const {
 }
 
 bool MainWindow::isGenerating() const {
-    return mPreviewRunning || mGenerator->isBusy();
+    return mPreviewRunning || mGenerator->isBusy() ||
+           (mSpeciesRegen != nullptr && mSpeciesRegen->isActive());
 }
 
 bool MainWindow::waitForGeneration(int timeoutMs) {
@@ -829,6 +906,20 @@ void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
         // An edit of the document (a script adding a tree to a new project): show it.
         mPreview = false;
         mFrameNext = true;
+    } else if (change.what == doc::DocumentChange::Species && !change.species.isEmpty()) {
+        // A species edit: nothing to regrow when no tree grows from it; while the species
+        // editor is open, its preview goes first and the forest follows when the edits pause.
+        const std::string name = change.species.toStdString();
+        bool used = false;
+        for (const doc::ProjectInstance& t : mDocument->project().instances)
+            used = used || t.species == name;
+        for (const doc::PlacementDomain& d : mDocument->project().domains)
+            used = used || (d.counts.count(name) && d.counts.at(name) > 0);
+        if (!used) return;
+        if (mWorkbench && mWorkbench->isVisible()) {
+            mSpeciesRegen->start();
+            return;
+        }
     }
     mGenerator->regenerate();
 }

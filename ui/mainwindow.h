@@ -40,6 +40,7 @@ class OutlinerModel;
 class PropertiesPanel;
 class PythonConsole;
 class StatsPanel;
+class SpeciesWorkbench;
 class ToolController;
 class Viewport;
 
@@ -69,6 +70,10 @@ public:
     PropertiesPanel* properties() const { return mProperties; }
     PythonConsole* console() const { return mConsole; }
     ToolController& tools() { return *mTools; }
+    SpeciesWorkbench* workbench() const { return mWorkbench; }
+    /// Shows the species editor (graph, grammar, live preview, node parameters) on \p species
+    /// (the one shown already when empty).
+    void editSpecies(const QString& species = {});
 
     /// Opens a project into the document (openProject) or a species file as a preview;
     /// generationFinished() tells when it is shown. Errors never throw: they go to the status
@@ -193,6 +198,7 @@ private:
     DocumentGenerator* mGenerator = nullptr;
     Viewport* mViewport = nullptr;
     StatsPanel* mStats = nullptr;
+    SpeciesWorkbench* mWorkbench = nullptr;
     MessagesPanel* mMessages = nullptr;
     PropertiesPanel* mProperties = nullptr;
     OutlinerModel* mOutlinerModel = nullptr;
@@ -217,6 +223,7 @@ private:
     QAction* mAutoReloadAction = nullptr;
     QFileSystemWatcher* mFileWatcher = nullptr;
     QTimer* mReloadTimer = nullptr;
+    QTimer* mSpeciesRegen = nullptr; ///< the forest regrows when species edits pause
     QStringList mSources;
     std::map<QString, QDateTime> mStamps;
     QDateTime mDocumentStamp; ///< the project file's time when opened, saved or last seen

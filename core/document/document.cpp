@@ -292,6 +292,19 @@ Value Document::param(const std::string& species, const std::string& path) const
     return v ? *v : Value();
 }
 
+graph::SpeciesGraph Document::engineSpecies(const std::string& name) const {
+    const int i = speciesIndex(name);
+    if (i < 0) throw InvalidInput("unknown species '" + name + "'");
+    const ProjectSpecies s = inlined(mProject.species[static_cast<std::size_t>(i)]);
+    Value::Object root{{"format", "sylva-species"},
+                       {"format_version", kSpeciesFormatVersion},
+                       {"name", s.name},
+                       {"graph", *s.graph}};
+    if (s.traits) root["traits"] = *s.traits;
+    return speciesFromValue(Value(std::move(root)), QString::fromStdString(s.name),
+                            mProject.baseDir);
+}
+
 void Document::validateSpecies(const ProjectSpecies& s) const {
     Value::Object root{{"format", "sylva-species"},
                        {"format_version", kSpeciesFormatVersion},
@@ -320,12 +333,197 @@ void Document::setParam(const std::string& species, const std::string& path, con
         params[key] = value;
     if (key == "grammar" && !value.isNull()) params.erase("grammar_file");
     validateSpecies(edited); // unknown parameter, bad graph: nothing changes
-    if (edited == old) return;
+    // An unchanged value that commits still goes on: it closes a drag or a burst of typing (it
+    // merges into the open step, or is dropped as obsolete).
+    if (edited == old && !commit) return;
     mUndo.push(cmd::changeSpecies(*this, i, old, edited, QString::fromStdString(node), commit,
                                   key == "grammar"
                                       ? QCoreApplication::translate("Commands", "Edit grammar")
                                       : QCoreApplication::translate("Commands", "Change %1")
                                             .arg(QString::fromStdString(path))));
+}
+
+void Document::editGraph(const std::string& species, const QString& node, const QString& label,
+                         bool commit, const std::function<void(Value&)>& edit) {
+    const int i = speciesIndex(species);
+    if (i < 0) throw InvalidInput("unknown species '" + species + "'");
+    const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
+    ProjectSpecies edited = inlined(old);
+    edit(*edited.graph);
+    validateSpecies(edited); // a graph the engine refuses: nothing changes
+    if (edited == old) return;
+    mUndo.push(cmd::changeSpecies(*this, i, old, edited, node, commit, label));
+}
+
+namespace {
+
+Value::Array& nodesOf(Value& graph) {
+    return graph.objectRef()["nodes"].arrayRef();
+}
+
+std::vector<std::string> inputsOf(const Value& node) {
+    std::vector<std::string> out;
+    if (const Value* in = node.find("inputs"); in && in->isArray())
+        for (const Value& v : in->toArray())
+            out.push_back(v.toString("an input id"));
+    return out;
+}
+
+void setInputs(Value& node, const std::vector<std::string>& inputs) {
+    Value::Array a;
+    for (const std::string& s : inputs)
+        a.emplace_back(s);
+    if (a.empty())
+        node.objectRef().erase("inputs");
+    else
+        node.objectRef()["inputs"] = Value(std::move(a));
+}
+
+Value& nodeOrThrow(Value& graph, const std::string& species, const std::string& id) {
+    Value* n = findNode(graph, id);
+    if (!n) throw InvalidInput("species '" + species + "' has no node '" + id + "'");
+    return *n;
+}
+
+graph::SpeciesGraph engineGraph(const Value& graph) {
+    graph::SpeciesGraph g;
+    for (const Value& n : graph.toObject().at("nodes").toArray()) {
+        graph::NodeDesc d;
+        d.id = n.string("id", "");
+        d.type = n.string("type", "");
+        d.inputs = inputsOf(n);
+        g.nodes.push_back(std::move(d));
+    }
+    g.output = graph.string("output", g.nodes.empty() ? "" : g.nodes.back().id);
+    return g;
+}
+
+} // namespace
+
+std::string Document::addNode(const std::string& species, const std::string& type,
+                              const Value& params, const std::string& id, glm::vec2 position) {
+    graph::registerBuiltinNodeTypes();
+    if (!graph::NodeRegistry::instance().find(type)) {
+        std::string known;
+        for (const std::string& n : graph::NodeRegistry::instance().names())
+            known += (known.empty() ? "" : ", ") + n;
+        throw InvalidInput("unknown node type '" + type + "' (known: " + known + ")");
+    }
+    const Value current = speciesGraph(species);
+    std::string newId = id;
+    if (newId.empty()) {
+        newId = type;
+        for (int k = 2; findNode(const_cast<Value&>(current), newId); ++k)
+            newId = type + std::to_string(k);
+    } else if (findNode(const_cast<Value&>(current), newId)) {
+        throw InvalidInput("species '" + species + "' already has a node '" + newId + "'");
+    }
+    editGraph(
+        species, QString::fromStdString(newId),
+        QCoreApplication::translate("Commands", "Add node %1").arg(QString::fromStdString(newId)),
+        true, [&](Value& g) {
+            Value::Object node{
+                {"id", newId},
+                {"type", type},
+                {"params", params.isNull() ? Value(Value::Object{}) : params},
+                {"editor_position", Value(Value::Array{double(position.x), double(position.y)})}};
+            nodesOf(g).emplace_back(std::move(node));
+        });
+    return newId;
+}
+
+void Document::removeNode(const std::string& species, const std::string& id) {
+    editGraph(
+        species, QString::fromStdString(id),
+        QCoreApplication::translate("Commands", "Delete node %1").arg(QString::fromStdString(id)),
+        true, [&](Value& g) {
+            nodeOrThrow(g, species, id);
+            if (g.string("output", "") == id)
+                throw InvalidInput("'" + id +
+                                   "' is the species' output (the tree); make another node "
+                                   "the output first");
+            Value::Array& nodes = nodesOf(g);
+            for (auto it = nodes.begin(); it != nodes.end();) {
+                if (it->string("id", "") == id) {
+                    it = nodes.erase(it);
+                    continue;
+                }
+                std::vector<std::string> in = inputsOf(*it);
+                std::erase(in, id);
+                setInputs(*it, in);
+                ++it;
+            }
+        });
+}
+
+void Document::connectNodes(const std::string& species, const std::string& from,
+                            const std::string& to) {
+    editGraph(species, QString::fromStdString(to),
+              QCoreApplication::translate("Commands", "Connect %1 to %2")
+                  .arg(QString::fromStdString(from), QString::fromStdString(to)),
+              true, [&](Value& g) {
+                  graph::registerBuiltinNodeTypes();
+                  Value& target = nodeOrThrow(g, species, to);
+                  nodeOrThrow(g, species, from);
+                  std::vector<std::string> in = inputsOf(target);
+                  if (std::find(in.begin(), in.end(), from) != in.end()) return; // already
+                  const graph::NodeType* t =
+                      graph::NodeRegistry::instance().find(target.string("type", ""));
+                  // A node with one input has it replaced: drop the old edge before checking.
+                  if (t && t->maxInputs == 1 && in.size() == 1) in.clear();
+                  setInputs(target, in);
+                  const std::string why = graph::connectionError(engineGraph(g), from, to);
+                  if (!why.empty()) throw InvalidInput(why);
+                  in.push_back(from);
+                  setInputs(target, in);
+              });
+}
+
+void Document::disconnectNodes(const std::string& species, const std::string& from,
+                               const std::string& to) {
+    editGraph(species, QString::fromStdString(to),
+              QCoreApplication::translate("Commands", "Disconnect %1 from %2")
+                  .arg(QString::fromStdString(from), QString::fromStdString(to)),
+              true, [&](Value& g) {
+                  Value& target = nodeOrThrow(g, species, to);
+                  std::vector<std::string> in = inputsOf(target);
+                  if (std::find(in.begin(), in.end(), from) == in.end())
+                      throw InvalidInput("'" + from + "' is not connected to '" + to + "'");
+                  std::erase(in, from);
+                  setInputs(target, in);
+              });
+}
+
+void Document::setOutputNode(const std::string& species, const std::string& id) {
+    editGraph(species, QString::fromStdString(id),
+              QCoreApplication::translate("Commands", "Make %1 the output")
+                  .arg(QString::fromStdString(id)),
+              true, [&](Value& g) {
+                  nodeOrThrow(g, species, id);
+                  g.objectRef()["output"] = Value(id);
+              });
+}
+
+void Document::moveNode(const std::string& species, const std::string& id, glm::vec2 position,
+                        bool commit) {
+    editGraph(
+        species, QString::fromStdString(id) + QStringLiteral("#position"),
+        QCoreApplication::translate("Commands", "Move node %1").arg(QString::fromStdString(id)),
+        commit, [&](Value& g) {
+            nodeOrThrow(g, species, id).objectRef()["editor_position"] =
+                Value(Value::Array{double(position.x), double(position.y)});
+        });
+}
+
+std::optional<glm::vec2> Document::nodePosition(const std::string& species,
+                                                const std::string& id) const {
+    Value g = speciesGraph(species);
+    const Value* n = findNode(g, id);
+    if (!n) throw InvalidInput("species '" + species + "' has no node '" + id + "'");
+    const Value* p = n->find("editor_position");
+    if (!p || !p->isArray() || p->toArray().size() != 2) return std::nullopt;
+    return glm::vec2(static_cast<float>(p->toArray()[0].toNumber()),
+                     static_cast<float>(p->toArray()[1].toNumber()));
 }
 
 void Document::setGrammar(const std::string& species, const std::string& node,

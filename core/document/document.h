@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include <QUndoStack>
 
 #include "document/project.h"
+#include "engine/graph/graph.h"
 
 namespace sylva::doc {
 
@@ -106,6 +108,8 @@ public:
     /// The species' graph as JSON ({"nodes": [...], "output": ...}), read from its file when it
     /// is not inline. \throw InvalidInput / IoError.
     graph::Value speciesGraph(const std::string& name) const;
+    /// The species as the engine evaluates it (relative files resolve from the project).
+    graph::SpeciesGraph engineSpecies(const std::string& name) const;
     /// A parameter "node.param" of a species (null when unset).
     graph::Value param(const std::string& species, const std::string& path) const;
     /// Sets "node.param". A species read from a file becomes inline in the project on its first
@@ -119,6 +123,32 @@ public:
                     bool commit = true);
     /// The grammar text of an lsystem node (inline, or read from its grammar_file).
     std::string grammar(const std::string& species, const std::string& node) const;
+
+    // --- species graphs (the node editor; each call is one undo step) ----------------------
+    /// Adds a node of \p type (with \p params; an id made from the type when \p id is empty)
+    /// at \p position in the node editor. Returns its id. \throw InvalidInput for an unknown
+    /// type, a taken id or bad parameters.
+    std::string addNode(const std::string& species, const std::string& type,
+                        const graph::Value& params = graph::Value::Object{},
+                        const std::string& id = {}, glm::vec2 position = glm::vec2(0.0f));
+    /// Removes a node and the edges from it. \throw InvalidInput for the output node, or when
+    /// a node the tree needs would lose its only input.
+    void removeNode(const std::string& species, const std::string& id);
+    /// Feeds \p from's result into \p to. A node that takes one input has it replaced.
+    /// \throw InvalidInput with engine's reason (graph::connectionError): a kind the input does
+    /// not take, a cycle, an unknown node.
+    void connectNodes(const std::string& species, const std::string& from, const std::string& to);
+    /// Removes the edge \p from → \p to. \throw InvalidInput when the tree needs that input.
+    void disconnectNodes(const std::string& species, const std::string& from,
+                         const std::string& to);
+    /// Makes \p id the node whose result is the tree.
+    void setOutputNode(const std::string& species, const std::string& id);
+    /// Where a node is drawn in the node editor (stored in the project, not used by growth).
+    /// With \p commit false (a drag in progress) successive moves merge into one undo step.
+    void moveNode(const std::string& species, const std::string& id, glm::vec2 position,
+                  bool commit = true);
+    /// A node's position in the node editor; nullopt when it has none yet (laid out by depth).
+    std::optional<glm::vec2> nodePosition(const std::string& species, const std::string& id) const;
 
     // --- obstacles, domains, settings ----------------------------------------------------
     void addObstacle(const ProjectObstacle& obstacle);
@@ -171,6 +201,9 @@ private:
                     QString node = {});
     void validateTree(const ProjectInstance& tree) const;
     ProjectSpecies inlined(const ProjectSpecies& species) const;
+    /// Inlines the species, applies \p edit to its graph JSON, validates and pushes one command.
+    void editGraph(const std::string& species, const QString& node, const QString& label,
+                   bool commit, const std::function<void(graph::Value& graph)>& edit);
     void validateSpecies(const ProjectSpecies& species) const;
     void pruneSelection();
 

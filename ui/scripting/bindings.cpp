@@ -13,6 +13,7 @@
 #include "document/autosave.h"
 #include "document/document.h"
 #include "document/errormessage.h"
+#include "engine/lsystem/grammar.h"
 #include "engine/mesh/mesh.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -20,8 +21,11 @@
 #include "python/bindings/engine.h"
 #include "ui/document/messagespanel.h"
 #include "ui/generation/documentgenerator.h"
+#include "ui/generation/speciespreview.h"
 #include "ui/mainwindow.h"
+#include "ui/nodes/nodegraphscene.h"
 #include "ui/scripting/pythonhost.h"
+#include "ui/speciesworkbench.h"
 #include "ui/viewport/toolcontroller.h"
 #include "ui/viewport/viewport.h"
 
@@ -235,8 +239,89 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "set_grammar",
             [](DocumentApi&, const std::string& species, const std::string& node,
-               const std::string& text) { document().setGrammar(species, node, text); },
-            py::arg("species"), py::arg("node"), py::arg("text"))
+               const std::string& text) {
+                // The edit is kept even with errors (as in the editor); the diagnostics say what
+                // is wrong, as (line, column, message) tuples.
+                document().setGrammar(species, node, text);
+                py::list out;
+                for (const Diagnostic& d : lsys::checkGrammar(text, node).diagnostics)
+                    out.append(py::make_tuple(d.line, d.column, d.message));
+                return out;
+            },
+            py::arg("species"), py::arg("node"), py::arg("text"),
+            "Sets an lsystem node's grammar; returns its diagnostics [(line, column, message)].")
+        .def(
+            "graph",
+            [](DocumentApi&, const std::string& species) {
+                return fromValue(document().speciesGraph(species));
+            },
+            py::arg("species"),
+            "The species graph: {'nodes': [{'id', 'type', 'params', 'inputs', ...}], 'output'}.")
+        .def(
+            "add_node",
+            [](DocumentApi&, const std::string& species, const std::string& type, py::object params,
+               const std::string& id, std::optional<std::pair<float, float>> at) {
+                return document().addNode(
+                    species, type,
+                    params.is_none() ? graph::Value(graph::Value::Object{}) : toValue(params), id,
+                    at ? glm::vec2(at->first, at->second) : glm::vec2(0.0f));
+            },
+            py::arg("species"), py::arg("type"), py::arg("params") = py::none(), py::arg("id") = "",
+            py::arg("position") = py::none(), "Adds a node; returns its id.")
+        .def(
+            "remove_node",
+            [](DocumentApi&, const std::string& species, const std::string& id) {
+                document().removeNode(species, id);
+            },
+            py::arg("species"), py::arg("id"))
+        .def(
+            "connect",
+            [](DocumentApi&, const std::string& species, const std::string& from,
+               const std::string& to) { document().connectNodes(species, from, to); },
+            py::arg("species"), py::arg("source"), py::arg("target"),
+            "Feeds source's result into target (replacing a single input); ValueError says why "
+            "a connection is refused.")
+        .def(
+            "disconnect",
+            [](DocumentApi&, const std::string& species, const std::string& from,
+               const std::string& to) { document().disconnectNodes(species, from, to); },
+            py::arg("species"), py::arg("source"), py::arg("target"))
+        .def(
+            "set_output",
+            [](DocumentApi&, const std::string& species, const std::string& id) {
+                document().setOutputNode(species, id);
+            },
+            py::arg("species"), py::arg("id"))
+        .def(
+            "move_node",
+            [](DocumentApi&, const std::string& species, const std::string& id, float x, float y) {
+                document().moveNode(species, id, glm::vec2(x, y));
+            },
+            py::arg("species"), py::arg("id"), py::arg("x"), py::arg("y"))
+        .def(
+            "preview_ms",
+            [](DocumentApi&) {
+                // The species editor's last edit → new preview mesh on screen (0 before any).
+                SpeciesPreview* p = window().workbench()->preview();
+                return p->editToScreenMs() > 0.0 ? p->editToScreenMs() : p->editToResultMs();
+            },
+            "Milliseconds from the last edit to the species preview's new mesh on screen.")
+        .def(
+            "preview_stats",
+            [](DocumentApi&) {
+                SpeciesPreview* p = window().workbench()->preview();
+                py::dict d;
+                d["edit_to_result_ms"] = p->editToResultMs();
+                d["edit_to_screen_ms"] = p->editToScreenMs();
+                d["evaluate_ms"] = p->result().evaluateMs;
+                py::dict runs;
+                for (const auto& [id, run] : p->result().runs)
+                    runs[py::str(id)] = py::make_tuple(run.ran, run.ms, run.evaluations);
+                d["nodes"] = runs;
+                return d;
+            },
+            "The last preview: edit → result and → screen, the evaluation alone, and per node "
+            "(ran, ms, evaluations).")
         .def("obstacles",
              [](DocumentApi&) {
                  py::list out;
@@ -385,6 +470,34 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             },
             py::arg("path"), py::arg("viewport_only") = false)
         .def("resize", [](WindowApi&, int w, int h) { window().resize(w, h); })
+        .def(
+            "edit_species",
+            [](WindowApi&, const std::string& species) {
+                if (!species.empty() && document().speciesIndex(species) < 0)
+                    throw InvalidInput("unknown species '" + species + "'");
+                window().editSpecies(QString::fromStdString(species));
+            },
+            py::arg("species") = "",
+            "Shows the species editor (graph, grammar, preview, node parameters) on a species.")
+        .def(
+            "select_node",
+            [](WindowApi&, const std::string& id) {
+                window().workbench()->graphScene()->selectNode(QString::fromStdString(id));
+            },
+            py::arg("id"), "Selects a node in the species editor (its parameters and grammar).")
+        .def(
+            "wait_for_preview",
+            [](WindowApi&, double timeout) {
+                SpeciesPreview* p = window().workbench()->preview();
+                QElapsedTimer t;
+                t.start();
+                while (p->isBusy() && t.elapsed() < timeout * 1000.0)
+                    QApplication::processEvents(QEventLoop::AllEvents, 20);
+                for (int k = 0; k < 5; ++k)
+                    QApplication::processEvents(QEventLoop::AllEvents, 20);
+                return !p->isBusy();
+            },
+            py::arg("timeout") = 60.0, "Waits until the species preview is up to date.")
         .def(
             "set_tool",
             [](WindowApi&, const std::string& name) {

@@ -2,6 +2,7 @@
 
 #include "engine/util/error.h"
 
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <mutex>
@@ -237,7 +238,7 @@ void Evaluator::validate() const {
                                "' (known: " + known + ")");
         }
         const int inputs = static_cast<int>(n.inputs.size());
-        if (inputs < type->minInputs || inputs > type->maxInputs)
+        if (inputs > type->maxInputs)
             throw InvalidInput(where + "node '" + n.id + "' (" + n.type + ") takes " +
                                std::to_string(type->minInputs) + ".." +
                                std::to_string(type->maxInputs) + " inputs, got " +
@@ -274,6 +275,28 @@ void Evaluator::validate() const {
                                    in + "'");
     if (!ids.count(mGraph.output))
         throw InvalidInput(where + "output node '" + mGraph.output + "' does not exist");
+    // Nodes the output does not depend on are never evaluated: a node being wired up in the
+    // editor may still lack its input. Those the tree needs must have all of theirs.
+    {
+        std::set<std::string> needed;
+        std::vector<std::string> stack{mGraph.output};
+        while (!stack.empty()) {
+            const std::string id = stack.back();
+            stack.pop_back();
+            if (!needed.insert(id).second) continue;
+            for (const std::string& in : mGraph.findNode(id)->inputs)
+                stack.push_back(in);
+        }
+        for (const NodeDesc& n : mGraph.nodes) {
+            const NodeType* type = registry.find(n.type);
+            if (needed.count(n.id) && static_cast<int>(n.inputs.size()) < type->minInputs)
+                throw InvalidInput(where + "node '" + n.id + "' (" + n.type + ") takes " +
+                                   std::to_string(type->minInputs) + ".." +
+                                   std::to_string(type->maxInputs) + " inputs, got " +
+                                   std::to_string(n.inputs.size()) +
+                                   "; the tree needs it, so connect its input");
+        }
+    }
     for (const NodeDesc& n : mGraph.nodes) {
         const NodeType* type = registry.find(n.type);
         for (const std::string& in : n.inputs) {
@@ -376,6 +399,10 @@ const NodeOutput& Evaluator::evaluateNode(const std::string& nodeId, bool seedOv
     // Post-order evaluation; the cache key chains through the inputs, so an edit upstream
     // invalidates exactly the nodes downstream of it.
     std::map<std::string, std::uint64_t> keys;
+    for (auto& [id, r] : mRuns) {
+        r.ran = false;
+        r.error.clear();
+    }
     std::function<std::uint64_t(const std::string&)> run =
         [&](const std::string& id) -> std::uint64_t {
         if (auto it = keys.find(id); it != keys.end()) return it->second;
@@ -392,7 +419,21 @@ const NodeOutput& Evaluator::evaluateNode(const std::string& nodeId, bool seedOv
             for (const std::string& in : node.inputs)
                 ctx.inputs.push_back(mCache[in].output.get());
             const NodeType* type = NodeRegistry::instance().find(node.type);
-            auto output = std::make_shared<NodeOutput>(type->evaluate(ctx));
+            NodeRun& record = mRuns[id];
+            const auto start = std::chrono::steady_clock::now();
+            std::shared_ptr<NodeOutput> output;
+            try {
+                output = std::make_shared<NodeOutput>(type->evaluate(ctx));
+            } catch (const std::exception& e) {
+                record.error = e.what();
+                entry = {};
+                throw;
+            }
+            record.ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            record.ran = true;
+            ++record.evaluations;
             // Accumulate the inputs' stats and timings that the node did not set itself, so the
             // output node reports the whole pipeline.
             for (const NodeOutput* in : ctx.inputs) {

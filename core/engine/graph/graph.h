@@ -198,7 +198,8 @@ public:
     explicit Evaluator(SpeciesGraph graph);
 
     const SpeciesGraph& graph() const { return mGraph; }
-    /// Checks ids, types, inputs, cycles and the output node; throws InvalidInput.
+    /// Checks ids, types, parameters (against the metadata), port kinds, cycles and the output
+    /// node; nodes the output does not depend on may still lack inputs. Throws InvalidInput.
     void validate() const;
 
     /// Sets node.param (a --set override or an editor edit). Throws InvalidInput for an
@@ -222,6 +223,16 @@ public:
     /// How many node evaluations ran (cache misses) since construction; for tests.
     std::size_t evaluations() const { return mEvaluations; }
 
+    /// What the last evaluation did at one node: the editor shows each node's compute time and
+    /// error state.
+    struct NodeRun {
+        double ms = 0.0;             ///< time of the node's own last computation
+        bool ran = false;            ///< computed by the last evaluate() (else cached or unused)
+        std::size_t evaluations = 0; ///< computations since construction (cache misses)
+        std::string error;           ///< the node's error in the last evaluate(), if it failed
+    };
+    const std::map<std::string, NodeRun>& runs() const { return mRuns; }
+
 private:
     struct CacheEntry {
         std::uint64_t key = 0;
@@ -233,6 +244,7 @@ private:
 
     SpeciesGraph mGraph;
     std::map<std::string, CacheEntry> mCache;
+    std::map<std::string, NodeRun> mRuns;
     std::size_t mEvaluations = 0;
 };
 

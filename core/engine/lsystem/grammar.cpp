@@ -96,6 +96,21 @@ public:
     GrammarParser(const std::string& fileName) : mFile(fileName) { mGrammar.fileName = fileName; }
 
     Grammar run(std::string_view text) {
+        parse(text);
+        if (!mDiagnostics.empty()) throw InvalidInput(std::move(mDiagnostics));
+        return std::move(mGrammar);
+    }
+
+    /// Like run(), but hands every diagnostic back instead of throwing (the grammar is only
+    /// usable when there is none).
+    Grammar runCollecting(std::string_view text, std::vector<Diagnostic>& diagnostics) {
+        parse(text);
+        diagnostics = std::move(mDiagnostics);
+        return std::move(mGrammar);
+    }
+
+private:
+    void parse(std::string_view text) {
         std::vector<std::string_view> lines;
         std::size_t start = 0;
         while (start <= text.size()) {
@@ -119,11 +134,8 @@ public:
             }
         }
         finish();
-        if (!mDiagnostics.empty()) throw InvalidInput(std::move(mDiagnostics));
-        return std::move(mGrammar);
     }
 
-private:
     // ---- line level -------------------------------------------------------------------------
 
     static bool detectLegacy(const std::vector<std::string_view>& lines) {
@@ -775,6 +787,13 @@ private:
 Grammar parseGrammar(std::string_view text, const std::string& fileName) {
     GrammarParser parser(fileName);
     return parser.run(text);
+}
+
+GrammarCheck checkGrammar(std::string_view text, const std::string& fileName) {
+    GrammarCheck check;
+    GrammarParser parser(fileName);
+    check.grammar = parser.runCollecting(text, check.diagnostics);
+    return check;
 }
 
 } // namespace sylva::lsys

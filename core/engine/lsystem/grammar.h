@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/lsystem/expression.h"
+#include "engine/util/error.h"
 
 namespace sylva::lsys {
 
@@ -91,5 +92,17 @@ int turtleMaxArity(char symbol);
 /// angle is in radians and converted). Collects all diagnostics (file, line, column) and
 /// throws sylva::InvalidInput with them if there is any.
 Grammar parseGrammar(std::string_view text, const std::string& fileName = "");
+
+/// What checkGrammar() found: every diagnostic (file, 1-based line and column, message) in
+/// text order, and the grammar, usable only when there are none.
+struct GrammarCheck {
+    Grammar grammar;
+    std::vector<Diagnostic> diagnostics;
+    bool ok() const { return diagnostics.empty(); }
+};
+
+/// Parses like parseGrammar() but never throws for a malformed grammar: errors are normal while
+/// typing, so the editor lists them all (squiggles, a list) as the user types.
+GrammarCheck checkGrammar(std::string_view text, const std::string& fileName = "");
 
 } // namespace sylva::lsys

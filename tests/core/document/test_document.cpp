@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -193,6 +195,83 @@ TEST_F(DocumentTest, SpeciesEditInlinesTheSpeciesAndKeepsItsFiles) {
     EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Edit grammar");
     mDoc.undoStack()->setIndex(0);
     EXPECT_FALSE(mDoc.project().species[0].file.empty());
+}
+
+// The node editor's edits: each is one undo step, refused edits say why and change nothing,
+// and undoing all of them gives back the exact file.
+TEST_F(DocumentTest, GraphEditsAreCheckedAndUndoable) {
+    const QByteArray original = bytes();
+    const int steps = mDoc.undoStack()->count();
+    // alder: grow (lsystem) → mesh (tube_mesh, the output).
+    const std::string leaves =
+        mDoc.addNode("alder", "leaves", graph::Value::Object{{"size", 0.2}}, {}, {120.0f, 40.0f});
+    EXPECT_EQ(leaves, "leaves");
+    EXPECT_EQ(mDoc.addNode("alder", "leaves"), "leaves2"); // a fresh id from the type
+    EXPECT_EQ(mDoc.nodePosition("alder", "leaves"), glm::vec2(120.0f, 40.0f));
+    EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Add node leaves2");
+    mDoc.undoStack()->undo();
+
+    // Refused, with the engine's reason, and nothing changes.
+    const QByteArray beforeRefusals = bytes();
+    auto refusal = [&](const std::function<void()>& edit) -> std::string {
+        try {
+            edit();
+        } catch (const InvalidInput& e) {
+            return e.what();
+        }
+        return "accepted";
+    };
+    EXPECT_NE(refusal([&] { mDoc.connectNodes("alder", "mesh", "grow"); }).find("takes no input"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] { mDoc.addNode("alder", "no_such_type"); }).find("known: adapt"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] {
+                  mDoc.addNode("alder", "tube_mesh", graph::Value::Object{{"resolution", 99}});
+              }).find("resolution must be in [3, 64]"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] { mDoc.removeNode("alder", "mesh"); }).find("output"), std::string::npos);
+    EXPECT_NE(
+        refusal([&] { mDoc.disconnectNodes("alder", "grow", "mesh"); }).find("the tree needs it"),
+        std::string::npos);
+    EXPECT_NE(refusal([&] { mDoc.removeNode("alder", "grow"); }).find("the tree needs it"),
+              std::string::npos);
+    EXPECT_EQ(bytes(), beforeRefusals);
+
+    // Wire grow → leaves → mesh: mesh's one input is replaced by leaves.
+    mDoc.connectNodes("alder", "grow", "leaves");
+    mDoc.connectNodes("alder", "leaves", "mesh");
+    graph::Value g = mDoc.speciesGraph("alder");
+    for (const graph::Value& n : g.toObject().at("nodes").toArray()) {
+        if (n.string("id", "") == "mesh") {
+            EXPECT_EQ(n.find("inputs")->toJson(), "[\"leaves\"]");
+        }
+    }
+    // A mesh into a node that takes a skeleton is refused.
+    mDoc.addNode("alder", "adapt", graph::Value::Object{}, "bend");
+    mDoc.connectNodes("alder", "grow", "bend");
+    EXPECT_NE(refusal([&] { mDoc.connectNodes("alder", "mesh", "bend"); }).find("takes a skeleton"),
+              std::string::npos);
+    // Dragging a node: one undo step however many moves.
+    const int before = mDoc.undoStack()->count();
+    for (int k = 0; k < 10; ++k)
+        mDoc.moveNode("alder", "bend", {float(k), 2.0f * float(k)}, k == 9);
+    EXPECT_EQ(mDoc.undoStack()->count(), before + 1);
+    EXPECT_EQ(mDoc.nodePosition("alder", "bend"), glm::vec2(9.0f, 18.0f));
+    mDoc.removeNode("alder", "bend");
+    mDoc.setOutputNode("alder", "mesh");
+    EXPECT_EQ(mDoc.param("alder", "leaves.size").toNumber(), 0.2);
+
+    // Saved and reloaded: the graph and the positions come back.
+    mDoc.save();
+    Document again;
+    again.open(mSaved);
+    EXPECT_EQ(again.speciesGraph("alder").toJson(), mDoc.speciesGraph("alder").toJson());
+    EXPECT_EQ(again.nodePosition("alder", "leaves"), glm::vec2(120.0f, 40.0f));
+
+    mDoc.undoStack()->setIndex(steps);
+    EXPECT_EQ(bytes(), original);
+    mDoc.undoStack()->setIndex(mDoc.undoStack()->count());
+    EXPECT_EQ(mDoc.speciesGraph("alder").toJson(), again.speciesGraph("alder").toJson());
 }
 
 TEST_F(DocumentTest, RandomEditsUndoneAndRedoneGiveTheExactBytes) {

@@ -196,3 +196,39 @@ TEST(GrammarDiagnostics, CollectsAllDiagnostics) {
                                "the axiom");
     }
 }
+
+// The editor checks a grammar as the user types: every error comes back with its position,
+// nothing is thrown, and a good grammar parses exactly as parseGrammar() parses it.
+TEST(Grammar, CheckCollectsEveryDiagnosticWithoutThrowing) {
+    const std::string text = "axiom: F\n"
+                             "F -> F[+F\n" // line 2: unbalanced bracket
+                             "angle: 25\n"
+                             "X(a -> F\n"          // line 4: unclosed parameter list
+                             "generations: abc\n"; // line 5: not a number
+    sylva::lsys::GrammarCheck check;
+    ASSERT_NO_THROW(check = sylva::lsys::checkGrammar(text, "t.lsys"));
+    EXPECT_FALSE(check.ok());
+    ASSERT_EQ(check.diagnostics.size(), 3u);
+    EXPECT_EQ(check.diagnostics[0].line, 2);
+    EXPECT_EQ(check.diagnostics[1].line, 4);
+    EXPECT_EQ(check.diagnostics[2].line, 5);
+    EXPECT_EQ(check.diagnostics[0].column, 7);
+    EXPECT_EQ(check.diagnostics[1].column, 5);
+    EXPECT_EQ(check.diagnostics[2].column, 14);
+    for (const auto& d : check.diagnostics) {
+        EXPECT_EQ(d.file, "t.lsys");
+        EXPECT_FALSE(d.message.empty());
+        EXPECT_GT(d.column, 0);
+    }
+    // The same diagnostics parseGrammar throws.
+    try {
+        sylva::lsys::parseGrammar(text, "t.lsys");
+        FAIL();
+    } catch (const sylva::InvalidInput& e) {
+        ASSERT_EQ(e.diagnostics().size(), 3u);
+        EXPECT_EQ(e.diagnostics()[1].message, check.diagnostics[1].message);
+    }
+    const auto good = sylva::lsys::checkGrammar("axiom: F\nF -> F[+F]F\n");
+    EXPECT_TRUE(good.ok());
+    EXPECT_EQ(good.grammar.rules.size(), 1u);
+}

@@ -18,6 +18,9 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 echo "-- api_edits.py"
 "$SYLVA" --discard-autosave --script "$HERE/api_edits.py" "$DEMO" || fail "api_edits.py"
 
+echo "-- api_species.py"
+"$SYLVA" --discard-autosave --script "$HERE/api_species.py" "$DEMO" || fail "api_species.py"
+
 echo "-- exit_status.py"
 status=0
 "$SYLVA" --script "$HERE/exit_status.py" || status=$?

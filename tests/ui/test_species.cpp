@@ -1,0 +1,386 @@
+// Tuning a species as a user does, in the real window: the node graph edited with the mouse and
+// keys (add from the Tab menu, connect by dragging from a port, a refused connection that says
+// why, disconnect, delete, copy and paste) and every edit undone to the exact file; a grammar
+// error typed in the grammar editor listed with its line within the debounce time and
+// underlined; a parameter change through the panel that re-runs only the nodes downstream; a
+// slider drag that is one undo step. Screenshots of the three editors.
+#include <memory>
+
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
+#include <QMouseEvent>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextBlock>
+
+#include "document/document.h"
+#include "document/presetlibrary.h"
+#include "engine/mesh/mesh.h"
+#include "ui/generation/speciespreview.h"
+#include "ui/grammar/grammareditor.h"
+#include "ui/mainwindow.h"
+#include "ui/nodes/nodegraphscene.h"
+#include "ui/nodes/nodegraphview.h"
+#include "ui/nodes/parameterpanel.h"
+#include "ui/speciesworkbench.h"
+
+using namespace sylva;
+using namespace sylva::ui;
+
+namespace {
+
+constexpr int kTimeoutMs = 120000;
+
+QString outputPath(const QString& name) {
+    return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
+}
+
+std::vector<std::string> inputsOf(const graph::Value& g, const std::string& id) {
+    std::vector<std::string> out;
+    for (const graph::Value& n : g.toObject().at("nodes").toArray())
+        if (n.string("id", "") == id)
+            if (const graph::Value* in = n.find("inputs"))
+                for (const graph::Value& v : in->toArray())
+                    out.push_back(v.toString());
+    return out;
+}
+
+bool hasNode(const graph::Value& g, const std::string& id) {
+    for (const graph::Value& n : g.toObject().at("nodes").toArray())
+        if (n.string("id", "") == id) return true;
+    return false;
+}
+
+} // namespace
+
+class TestSpecies : public QObject {
+    Q_OBJECT
+
+private:
+    std::unique_ptr<MainWindow> mWindow;
+    QTemporaryDir mDir;
+
+    doc::Document& document() { return mWindow->document(); }
+    SpeciesWorkbench* bench() { return mWindow->workbench(); }
+    NodeGraphScene* scene() { return bench()->graphScene(); }
+    NodeGraphView* view() { return bench()->graphView(); }
+    graph::Value alder() { return document().speciesGraph("alder"); }
+
+    void waitForPreview() {
+        QTRY_VERIFY_WITH_TIMEOUT(!bench()->preview()->isBusy(), kTimeoutMs);
+        QTest::qWait(30);
+    }
+
+    QPoint at(const QPointF& scenePos) { return view()->mapFromScene(scenePos); }
+
+    /// Press, move in steps (buttons held) and release in the node editor's viewport.
+    void drag(const QPoint& from, const QPoint& to) {
+        QWidget* v = view()->viewport();
+        QTest::mousePress(v, Qt::LeftButton, {}, from);
+        for (int i = 1; i <= 8; ++i) {
+            const QPoint p = from + (to - from) * i / 8;
+            QMouseEvent move(QEvent::MouseMove, p, v->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                             {});
+            QApplication::sendEvent(v, &move);
+        }
+        QTest::mouseRelease(v, Qt::LeftButton, {}, to);
+        QApplication::processEvents();
+    }
+
+    /// Drags a connection from \p from's output port onto \p to's body.
+    void connectByMouse(const QString& from, const QString& to) {
+        NodeItem* a = scene()->node(from);
+        NodeItem* b = scene()->node(to);
+        QVERIFY(a && b);
+        drag(at(a->outputPort()), at(b->sceneBoundingRect().center()));
+    }
+
+private Q_SLOTS:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY(mDir.isValid());
+        doc::Document demo;
+        demo.open(QDir(doc::PresetLibrary::directory()).filePath("../resources/demo/forest.sylva"));
+        const QString project = mDir.filePath(QStringLiteral("demo.sylva"));
+        demo.save(project);
+        mWindow = std::make_unique<MainWindow>();
+        mWindow->setAskHandler([](const QString&, bool) { return MainWindow::Answer::Discard; });
+        mWindow->resize(1400, 950);
+        mWindow->show();
+        QVERIFY(QTest::qWaitForWindowExposed(mWindow.get()));
+        QApplication::setActiveWindow(mWindow.get());
+        QVERIFY(mWindow->openProject(project));
+        QVERIFY(mWindow->waitForGeneration(kTimeoutMs));
+        mWindow->editSpecies(QStringLiteral("alder"));
+        QTRY_VERIFY(bench()->isVisible());
+        waitForPreview();
+        view()->frameAll();
+    }
+
+    void cleanupTestCase() { mWindow.reset(); }
+
+    void graphShowsTheSpecies() {
+        QCOMPARE(scene()->species(), QStringLiteral("alder"));
+        QVERIFY(scene()->node(QStringLiteral("grow")));
+        QVERIFY(scene()->node(QStringLiteral("mesh")));
+        QCOMPARE(scene()->edges().size(), 1);
+        // The generator is selected at once: its parameters and its grammar are shown.
+        QCOMPARE(bench()->parameters()->node(), QStringLiteral("grow"));
+        QCOMPARE(bench()->grammar()->node(), QStringLiteral("grow"));
+        QVERIFY(bench()->grammar()->textEdit()->toPlainText().contains(QStringLiteral("axiom")));
+        // Each node shows its compute time from the preview.
+        const auto& runs = bench()->preview()->result().runs;
+        QVERIFY(runs.count("grow") && runs.count("mesh"));
+        QVERIFY(bench()->preview()->result().mesh);
+        QVERIFY(bench()->preview()->editToResultMs() > 0.0);
+    }
+
+    void editTheGraphWithMouseAndKeys() {
+        const QByteArray original = document().serialized();
+        const int steps = document().undoStack()->index();
+
+        // Tab opens the searchable add menu; typing filters it and Enter adds the node.
+        view()->setFocus();
+        QCursor::setPos(view()->viewport()->mapToGlobal(view()->viewport()->rect().center()));
+        QTest::keyClick(view(), Qt::Key_Tab);
+        QMenu* menu = nullptr;
+        QTRY_VERIFY((menu = qobject_cast<QMenu*>(QApplication::activePopupWidget())));
+        auto* search = menu->findChild<QLineEdit*>(QStringLiteral("addNodeSearch"));
+        QVERIFY(search);
+        QTest::keyClicks(search, QStringLiteral("leav"));
+        int visible = 0;
+        for (QAction* a : menu->actions())
+            visible += a->isVisible() && a->data().isValid() ? 1 : 0;
+        QCOMPARE(visible, 1); // only "leaves" matches
+        QTest::keyClick(search, Qt::Key_Return);
+        QTRY_VERIFY(hasNode(alder(), "leaves"));
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        QApplication::processEvents();
+        NodeItem* leaves = scene()->node(QStringLiteral("leaves"));
+        QVERIFY(leaves);
+        leaves->setPos(scene()->node(QStringLiteral("grow"))->pos() + QPointF(0, 120));
+        view()->frameAll();
+
+        // Connect by dragging from grow's output port onto leaves.
+        connectByMouse(QStringLiteral("grow"), QStringLiteral("leaves"));
+        QCOMPARE(inputsOf(alder(), "leaves"), std::vector<std::string>{"grow"});
+        // leaves into mesh: mesh's one input is replaced.
+        connectByMouse(QStringLiteral("leaves"), QStringLiteral("mesh"));
+        QCOMPARE(inputsOf(alder(), "mesh"), std::vector<std::string>{"leaves"});
+        QCOMPARE(scene()->edges().size(), 2);
+
+        // A refused connection says why, and changes nothing.
+        const QByteArray beforeRefusal = document().serialized();
+        connectByMouse(QStringLiteral("mesh"), QStringLiteral("grow"));
+        auto* refusal = bench()->findChild<QLabel*>(QStringLiteral("graphRefusal"));
+        QVERIFY(refusal->text().contains(QStringLiteral("takes no input")));
+        QCOMPARE(document().serialized(), beforeRefusal);
+
+        // An adapt node (from the scene's API), connected, then picked up by its input end and
+        // dropped on empty space: disconnected.
+        QVERIFY(scene()->addNode(QStringLiteral("adapt"),
+                                 scene()->node(QStringLiteral("mesh"))->pos() + QPointF(0, 140)));
+        view()->frameAll();
+        connectByMouse(QStringLiteral("grow"), QStringLiteral("adapt"));
+        QCOMPARE(inputsOf(alder(), "adapt"), std::vector<std::string>{"grow"});
+        NodeItem* adapt = scene()->node(QStringLiteral("adapt"));
+        const QPointF empty = adapt->sceneBoundingRect().bottomRight() + QPointF(60, 60);
+        drag(at(adapt->inputPort()), at(empty));
+        QVERIFY(inputsOf(alder(), "adapt").empty());
+        // Disconnecting what the tree needs is refused, with the reason.
+        NodeItem* mesh = scene()->node(QStringLiteral("mesh"));
+        drag(at(mesh->inputPort()), at(mesh->sceneBoundingRect().bottomRight() + QPointF(40, 90)));
+        QCOMPARE(inputsOf(alder(), "mesh"), std::vector<std::string>{"leaves"});
+        QVERIFY(refusal->text().contains(QStringLiteral("the tree needs it")));
+
+        // Click a node and press Delete.
+        adapt = scene()->node(QStringLiteral("adapt"));
+        QTest::mouseClick(view()->viewport(), Qt::LeftButton, {},
+                          at(adapt->sceneBoundingRect().center()));
+        QCOMPARE(scene()->selectedNodeIds(), QStringList{QStringLiteral("adapt")});
+        QTest::keyClick(view(), Qt::Key_Delete);
+        QVERIFY(!hasNode(alder(), "adapt"));
+
+        // Copy and paste leaves: a fresh id, same parameters.
+        scene()->selectNode(QStringLiteral("leaves"));
+        QTest::keyClick(view(), Qt::Key_C, Qt::ControlModifier);
+        QTest::keyClick(view(), Qt::Key_V, Qt::ControlModifier);
+        QVERIFY(hasNode(alder(), "leaves2"));
+
+        // Moving a node with the mouse is one step and is saved.
+        NodeItem* pasted = scene()->node(QStringLiteral("leaves2"));
+        const int beforeMove = document().undoStack()->index();
+        const QPoint grab = at(pasted->sceneBoundingRect().center() + QPointF(0, 10));
+        drag(grab, grab + QPoint(60, 30));
+        QTRY_COMPARE(document().undoStack()->index(), beforeMove + 1);
+        QVERIFY(document().nodePosition("alder", "leaves2").has_value());
+
+        // Undo everything: the exact file; redo everything: the edited graph again.
+        const QByteArray edited = document().serialized();
+        QKeySequence undo(QKeySequence::Undo);
+        while (document().undoStack()->index() > steps)
+            document().undoStack()->undo();
+        QCOMPARE(document().serialized(), original);
+        QTRY_COMPARE(scene()->edges().size(), 1);
+        while (document().undoStack()->canRedo())
+            document().undoStack()->redo();
+        QCOMPARE(document().serialized(), edited);
+        document().undoStack()->setIndex(steps);
+        QCOMPARE(document().serialized(), original);
+        waitForPreview();
+    }
+
+    void grammarErrorIsListedWhileTyping() {
+        scene()->selectNode(QStringLiteral("grow"));
+        GrammarEditor* g = bench()->grammar();
+        QCOMPARE(g->node(), QStringLiteral("grow"));
+        const QString original = g->textEdit()->toPlainText();
+        const int steps = document().undoStack()->index();
+        const int lines = g->textEdit()->document()->blockCount();
+        g->textEdit()->setFocus();
+        g->textEdit()->moveCursor(QTextCursor::End);
+        QTest::keyClick(g->textEdit(), Qt::Key_Return);
+        QTest::keyClicks(g->textEdit(), QStringLiteral("Q -> F[+F"));
+        const int errorLine = g->textEdit()->textCursor().blockNumber() + 1;
+        QVERIFY(errorLine >= lines);
+        // Listed within the debounce time (plus a little for the event loop), with its line.
+        QTest::qWait(GrammarEditor::kDiagnosticsDelayMs + 150);
+        QVERIFY(!g->diagnostics().empty());
+        QCOMPARE(g->diagnostics().front().line, errorLine);
+        QVERIFY(g->diagnosticsList()->item(0)->text().startsWith(
+            QStringLiteral("line %1,").arg(errorLine)));
+        // The squiggle is on that line, as an extra selection (the text is not edited).
+        const QList<QTextEdit::ExtraSelection> marks = g->textEdit()->extraSelections();
+        QCOMPARE(marks.size(), 1);
+        QCOMPARE(marks.front().cursor.blockNumber(), errorLine - 1);
+        QCOMPARE(marks.front().format.underlineStyle(), QTextCharFormat::WaveUnderline);
+        QVERIFY(g->textEdit()->toPlainText().endsWith(QStringLiteral("Q -> F[+F")));
+        // Click the error: the cursor jumps to it.
+        g->textEdit()->moveCursor(QTextCursor::Start);
+        QListWidgetItem* item = g->diagnosticsList()->item(0);
+        QTest::mouseClick(g->diagnosticsList()->viewport(), Qt::LeftButton, {},
+                          g->diagnosticsList()->visualItemRect(item).center());
+        QCOMPARE(g->textEdit()->textCursor().blockNumber(), errorLine - 1);
+        // The burst is one undo step that gives the grammar back.
+        g->commitBurst();
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        document().undoStack()->undo();
+        QCOMPARE(QString::fromStdString(document().grammar("alder", "grow")), original);
+        QTRY_COMPARE(g->textEdit()->toPlainText(), original);
+        QTRY_VERIFY(g->diagnostics().empty());
+        waitForPreview();
+    }
+
+    void parameterChangeRerunsOnlyDownstream() {
+        waitForPreview();
+        SpeciesPreview* preview = bench()->preview();
+        const auto before = preview->evaluationCounts();
+        const std::size_t vertices = preview->result().mesh->vertexCount();
+        scene()->selectNode(QStringLiteral("mesh"));
+        QCOMPARE(bench()->parameters()->node(), QStringLiteral("mesh"));
+        auto* resolution =
+            qobject_cast<QSpinBox*>(bench()->parameters()->editor(QStringLiteral("resolution")));
+        QVERIFY(resolution);
+        QCOMPARE(resolution->value(), 8);
+        resolution->setValue(5);
+        QCOMPARE(document().param("alder", "mesh.resolution").toNumber(), 5.0);
+        QTRY_VERIFY_WITH_TIMEOUT(preview->isBusy() || preview->evaluationCounts() != before,
+                                 kTimeoutMs);
+        waitForPreview();
+        auto after = preview->evaluationCounts();
+        qDebug() << "counts before" << before.at("grow") << before.at("mesh") << "after"
+                 << after["grow"] << after["mesh"] << preview->result().error;
+        QCOMPARE(after["mesh"], before.at("mesh") + 1);
+        QCOMPARE(after["grow"], before.at("grow")); // upstream: kept
+        QVERIFY(preview->result().mesh->vertexCount() < vertices);
+        QVERIFY(preview->editToResultMs() > 0.0);
+        // A refused value says why and changes nothing.
+        QVERIFY(document().param("alder", "mesh.resolution").toNumber() == 5.0);
+        document().undoStack()->undo();
+        waitForPreview();
+        QCOMPARE(resolution->value(), 8);
+        // An upstream parameter re-runs both.
+        const auto mid = preview->evaluationCounts();
+        document().setParam("alder", "grow.angle", 30.0);
+        QTRY_VERIFY_WITH_TIMEOUT(preview->evaluationCounts()["grow"] == mid.at("grow") + 1,
+                                 kTimeoutMs);
+        waitForPreview();
+        QCOMPARE(preview->evaluationCounts()["mesh"], mid.at("mesh") + 1);
+        document().undoStack()->undo();
+        waitForPreview();
+    }
+
+    void sliderDragIsOneUndoStep() {
+        scene()->selectNode(QStringLiteral("mesh"));
+        QWidget* editor = bench()->parameters()->editor(QStringLiteral("radius_scale"));
+        QVERIFY(editor);
+        auto* slider = editor->findChild<QSlider*>(QStringLiteral("slider"));
+        QVERIFY(slider);
+        mWindow->findChild<QDockWidget*>(QStringLiteral("parametersDock"))->raise();
+        QTRY_VERIFY(slider->isVisible());
+        const int steps = document().undoStack()->index();
+        const QByteArray original = document().serialized();
+        // Drag the handle with the mouse from its place to the right.
+        const int x0 = QStyle::sliderPositionFromValue(slider->minimum(), slider->maximum(),
+                                                       slider->value(), slider->width() - 10) +
+                       5;
+        const QPoint from(x0, slider->height() / 2);
+        QTest::mousePress(slider, Qt::LeftButton, {}, from);
+        for (int i = 1; i <= 10; ++i) {
+            const QPoint p = from + QPoint(i * 4, 0);
+            QMouseEvent move(QEvent::MouseMove, p, slider->mapToGlobal(p), Qt::NoButton,
+                             Qt::LeftButton, {});
+            QApplication::sendEvent(slider, &move);
+        }
+        QTest::mouseRelease(slider, Qt::LeftButton, {}, from + QPoint(40, 0));
+        QVERIFY(document().param("alder", "mesh.radius_scale").isNumber());
+        QVERIFY(document().param("alder", "mesh.radius_scale").toNumber() > 1.0);
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        document().undoStack()->undo();
+        QCOMPARE(document().serialized(), original);
+        // Reset to default removes the value.
+        document().setParam("alder", "mesh.radius_scale", 2.0);
+        // The reset button beside the editor (in the same row).
+        auto* reset = bench()
+                          ->parameters()
+                          ->editor(QStringLiteral("radius_scale"))
+                          ->parentWidget()
+                          ->findChild<QWidget*>(QStringLiteral("reset_radius_scale"));
+        QVERIFY(reset && reset->isEnabled());
+        QTest::mouseClick(reset, Qt::LeftButton);
+        QVERIFY(document().param("alder", "mesh.radius_scale").isNull());
+        // A value the engine refuses is shown with the range and changes nothing.
+        auto* resolution =
+            qobject_cast<QSpinBox*>(bench()->parameters()->editor(QStringLiteral("resolution")));
+        QVERIFY(resolution->maximum() == 64 && resolution->minimum() == 3);
+        document().undoStack()->setIndex(steps);
+        waitForPreview();
+    }
+
+    void screenshots() {
+        scene()->selectNode(QStringLiteral("grow"));
+        view()->frameAll();
+        waitForPreview();
+        QTest::qWait(200);
+        QVERIFY(mWindow->saveWindowScreenshot(outputPath(QStringLiteral("ui_species_window.png"))));
+        QVERIFY(view()->grab().save(outputPath(QStringLiteral("ui_species_graph.png"))));
+        QVERIFY(
+            bench()->grammar()->grab().save(outputPath(QStringLiteral("ui_species_grammar.png"))));
+        scene()->selectNode(QStringLiteral("mesh"));
+        QTest::qWait(200); // the new editors are laid out by the event loop
+        QVERIFY(bench()->parameters()->grab().save(
+            outputPath(QStringLiteral("ui_species_parameters.png"))));
+    }
+};
+
+QTEST_MAIN(TestSpecies)
+
+#include "test_species.moc"

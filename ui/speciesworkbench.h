@@ -1,0 +1,65 @@
+#pragma once
+
+#include <QWidget>
+
+#include "document/document.h"
+
+class QComboBox;
+class QLabel;
+class QSplitter;
+
+namespace sylva::ui {
+
+class GrammarEditor;
+class NodeGraphScene;
+class NodeGraphView;
+class ParameterPanel;
+class SpeciesPreview;
+class Viewport;
+
+/// Where a species is tuned: its node graph, the grammar of the selected lsystem node, and a live
+/// preview of one tree with each node's compute time; the selected node's parameters are in a
+/// ParameterPanel the window docks beside it. Every widget edits the one Document (one undo
+/// history with the scene); the preview re-evaluates only the nodes an edit touched.
+class SpeciesWorkbench : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit SpeciesWorkbench(doc::Document& document, QWidget* parent = nullptr);
+
+    void setSpecies(const QString& species);
+    QString species() const;
+
+    NodeGraphScene* graphScene() const { return mScene; }
+    NodeGraphView* graphView() const { return mView; }
+    ParameterPanel* parameters() const { return mParameters; }
+    GrammarEditor* grammar() const { return mGrammar; }
+    SpeciesPreview* preview() const { return mPreview; }
+    Viewport* previewViewport() const { return mPreviewView; }
+
+Q_SIGNALS:
+    /// A line for the status bar ("Preview 23 ms", a refused connection's reason).
+    void status(const QString& text, int timeoutMs);
+
+protected:
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+
+private:
+    void refillSpecies();
+    void onPreviewFinished();
+
+    doc::Document& mDocument;
+    QComboBox* mSpeciesCombo;
+    QLabel* mPreviewLabel;
+    QLabel* mRefusal;
+    NodeGraphScene* mScene;
+    NodeGraphView* mView;
+    ParameterPanel* mParameters;
+    GrammarEditor* mGrammar;
+    SpeciesPreview* mPreview;
+    Viewport* mPreviewView;
+    bool mFramed = false;
+};
+
+} // namespace sylva::ui
