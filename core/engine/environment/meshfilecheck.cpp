@@ -128,7 +128,8 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
 /// polygons asked for 16 GB) and, given an index list with a token that is not a number, walks
 /// off its counts and asked for 2.4 GB (both found by fuzz_obstacle). Every `count="N"` must be
 /// at most 9·maxItems (a float array of three corners of three coordinates per triangle) and
-/// the index lists (`<p>`, `<v>`, `<vcount>`) hold whole numbers only.
+/// the index lists (`<p>`, `<v>`, `<vcount>`) hold whole numbers only. A count that is not a
+/// whole number from 1 crashed Assimp (SEGV, found by fuzz_obstacle too).
 void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::size_t maxItems) {
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: Collada ";
@@ -140,11 +141,21 @@ void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::siz
         maxItems > UINT64_MAX / 9 ? UINT64_MAX : 9 * static_cast<std::uint64_t>(maxItems);
     for (std::size_t at = text.find("count=\""); at != std::string::npos;
          at = text.find("count=\"", at + 7)) {
+        if (at > 0 && text[at - 1] != ' ' && text[at - 1] != '\t' && text[at - 1] != '\n' &&
+            text[at - 1] != '\r')
+            continue; // another attribute ending in "count" (vcount, …) is not one
         const char* begin = text.data() + at + 7;
         const char* end = text.data() + text.size();
         std::uint64_t n = 0;
         const auto [ptr, ec] = std::from_chars(begin, end, n);
-        if (ptr == begin) continue; // not a number: Assimp reads it as 0
+        // Assimp reads what is not a number (or 0) as an empty array and then follows it: a
+        // float_array of count "z192", "", "-192" or "0" holding 192 values crashed it (SEGV).
+        if (ptr == begin || ptr == end || *ptr != '"' || (ec == std::errc() && n == 0)) {
+            const std::size_t close = text.find('"', at + 7);
+            throw InvalidInput(where + "count=\"" +
+                               text.substr(at + 7, std::min<std::size_t>(close - at - 7, 32)) +
+                               "\" at line " + lineOf(at) + " is not a whole number from 1");
+        }
         if (ec == std::errc::result_out_of_range || n > maxCount)
             throw LimitExceeded(where + "count=\"" + std::string(begin, ptr) + "\" at line " +
                                 lineOf(at) + " is more than the limit of " +

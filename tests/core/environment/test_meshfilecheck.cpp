@@ -200,3 +200,20 @@ TEST(MeshFileCheck, ColladaCountsAndIndexListsAreChecked) {
               std::string::npos)
         << huge;
 }
+
+// Found by fuzz_obstacle (tests/fuzz/regressions/obstacle/crash-dae-count-not-a-number): a
+// float_array whose count is not a whole number from 1 ("z192"; "0", "" and "-192" too) but
+// holds values crashed Assimp 5.2.5 (SEGV). Refused before Assimp reads the file.
+TEST(MeshFileCheck, ColladaCountsAreWholeNumbersFromOne) {
+    const std::string cube = colladaCube();
+    for (const std::string bad : {"z108", "0", "", "-108", "1e3"}) {
+        std::string text = cube;
+        text.replace(text.find("count=\"108\""), 11, "count=\"" + bad + "\"");
+        const std::string m =
+            messageOf<InvalidInput>(writeFile("badcount.dae", text), kMaxObstacleTriangles);
+        EXPECT_NE(m.find("cannot read it: Collada count=\"" + bad +
+                         "\" at line 5 is not a whole number from 1"),
+                  std::string::npos)
+            << m;
+    }
+}
