@@ -178,6 +178,10 @@
         <source>Move node %1</source>
         <translation>Knoten %1 verschieben</translation>
     </message>
+    <message>
+        <source>Apply preset %1</source>
+        <translation>Vorlage %1 anwenden</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -885,6 +889,38 @@
         <source>&amp;Edit species…</source>
         <translation>Art &amp;bearbeiten…</translation>
     </message>
+    <message>
+        <source>Preset Browser</source>
+        <translation>Vorlagenbrowser</translation>
+    </message>
+    <message>
+        <source>Automatic (off on a software renderer)</source>
+        <translation>Automatisch (aus bei Software-Rendering)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>2× multisampling</source>
+        <translation>2× Multisampling</translation>
+    </message>
+    <message>
+        <source>4× multisampling</source>
+        <translation>4× Multisampling</translation>
+    </message>
+    <message>
+        <source>8× multisampling</source>
+        <translation>8× Multisampling</translation>
+    </message>
+    <message>
+        <source>Smooths the edges in the 3D view. Without a graphics card (a software renderer) it makes every frame two to three times slower. Takes effect when Sylva starts next.</source>
+        <translation>Glättet die Kanten in der 3D-Ansicht. Ohne Grafikkarte (Software-Rendering) macht es jedes Bild zwei- bis dreimal langsamer. Wirkt ab dem nächsten Start von Sylva.</translation>
+    </message>
+    <message>
+        <source>Antialiasing:</source>
+        <translation>Kantenglättung:</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
@@ -1072,6 +1108,45 @@
     <message>
         <source>Apply</source>
         <translation>Anwenden</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PresetBrowser</name>
+    <message>
+        <source>Double-click a preset to apply it to the species</source>
+        <translation>Doppelklick auf eine Vorlage wendet sie auf die Art an</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Save species as preset…</source>
+        <translation>Art als Vorlage speichern…</translation>
+    </message>
+    <message>
+        <source>Save species as preset</source>
+        <translation>Art als Vorlage speichern</translation>
+    </message>
+    <message>
+        <source>Species (*.json)</source>
+        <translation>Arten (*.json)</translation>
+    </message>
+    <message>
+        <source>The project has no species to apply a preset to.</source>
+        <translation>Das Projekt hat keine Art, auf die eine Vorlage angewendet werden kann.</translation>
+    </message>
+    <message>
+        <source>Apply replaces the graph of species &lt;b&gt;%1&lt;/b&gt; (undoable).</source>
+        <translation>Anwenden ersetzt den Graphen der Art &lt;b&gt;%1&lt;/b&gt; (rückgängig machbar).</translation>
+    </message>
+    <message>
+        <source>Applied %1 to %2</source>
+        <translation>%1 auf %2 angewendet</translation>
+    </message>
+    <message>
+        <source>Saved %1 as %2</source>
+        <translation>%1 als %2 gespeichert</translation>
     </message>
 </context>
 <context>
@@ -1405,6 +1480,26 @@
     <message>
         <source>A tree cannot stand inside an obstacle&apos;s footprint</source>
         <translation>Ein Baum kann nicht auf der Grundfläche eines Hindernisses stehen</translation>
+    </message>
+    <message>
+        <source>A tree&apos;s scale must stay between 0.01 and 100: the change was refused</source>
+        <translation>Die Skalierung eines Baums muss zwischen 0,01 und 100 bleiben: die Änderung wurde abgelehnt</translation>
+    </message>
+    <message>
+        <source>Rotate tree</source>
+        <translation>Baum drehen</translation>
+    </message>
+    <message>
+        <source>Rotate trees</source>
+        <translation>Bäume drehen</translation>
+    </message>
+    <message>
+        <source>Scale tree</source>
+        <translation>Baum skalieren</translation>
+    </message>
+    <message>
+        <source>Scale trees</source>
+        <translation>Bäume skalieren</translation>
     </message>
 </context>
 <context>

@@ -178,6 +178,10 @@
         <source>Move node %1</source>
         <translation>Déplacer le nœud %1</translation>
     </message>
+    <message>
+        <source>Apply preset %1</source>
+        <translation>Appliquer le préréglage %1</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -885,6 +889,38 @@
         <source>&amp;Edit species…</source>
         <translation>&amp;Modifier l’espèce…</translation>
     </message>
+    <message>
+        <source>Preset Browser</source>
+        <translation>Navigateur de préréglages</translation>
+    </message>
+    <message>
+        <source>Automatic (off on a software renderer)</source>
+        <translation>Automatique (désactivé avec un rendu logiciel)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Désactivé</translation>
+    </message>
+    <message>
+        <source>2× multisampling</source>
+        <translation>Multiéchantillonnage 2×</translation>
+    </message>
+    <message>
+        <source>4× multisampling</source>
+        <translation>Multiéchantillonnage 4×</translation>
+    </message>
+    <message>
+        <source>8× multisampling</source>
+        <translation>Multiéchantillonnage 8×</translation>
+    </message>
+    <message>
+        <source>Smooths the edges in the 3D view. Without a graphics card (a software renderer) it makes every frame two to three times slower. Takes effect when Sylva starts next.</source>
+        <translation>Lisse les contours dans la vue 3D. Sans carte graphique (rendu logiciel), chaque image devient deux à trois fois plus lente. Prend effet au prochain démarrage de Sylva.</translation>
+    </message>
+    <message>
+        <source>Antialiasing:</source>
+        <translation>Anticrénelage&#xa0;:</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
@@ -1072,6 +1108,45 @@
     <message>
         <source>Apply</source>
         <translation>Appliquer</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PresetBrowser</name>
+    <message>
+        <source>Double-click a preset to apply it to the species</source>
+        <translation>Double-cliquez sur un préréglage pour l’appliquer à l’espèce</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Appliquer</translation>
+    </message>
+    <message>
+        <source>Save species as preset…</source>
+        <translation>Enregistrer l’espèce comme préréglage…</translation>
+    </message>
+    <message>
+        <source>Save species as preset</source>
+        <translation>Enregistrer l’espèce comme préréglage</translation>
+    </message>
+    <message>
+        <source>Species (*.json)</source>
+        <translation>Espèces (*.json)</translation>
+    </message>
+    <message>
+        <source>The project has no species to apply a preset to.</source>
+        <translation>Le projet n’a aucune espèce à laquelle appliquer un préréglage.</translation>
+    </message>
+    <message>
+        <source>Apply replaces the graph of species &lt;b&gt;%1&lt;/b&gt; (undoable).</source>
+        <translation>Appliquer remplace le graphe de l’espèce &lt;b&gt;%1&lt;/b&gt; (annulable).</translation>
+    </message>
+    <message>
+        <source>Applied %1 to %2</source>
+        <translation>%1 appliqué à %2</translation>
+    </message>
+    <message>
+        <source>Saved %1 as %2</source>
+        <translation>%1 enregistré sous %2</translation>
     </message>
 </context>
 <context>
@@ -1405,6 +1480,26 @@
     <message>
         <source>A tree cannot stand inside an obstacle&apos;s footprint</source>
         <translation>Un arbre ne peut pas se trouver dans l&apos;emprise au sol d&apos;un obstacle</translation>
+    </message>
+    <message>
+        <source>A tree&apos;s scale must stay between 0.01 and 100: the change was refused</source>
+        <translation>L’échelle d’un arbre doit rester entre 0,01 et 100&#xa0;: la modification a été refusée</translation>
+    </message>
+    <message>
+        <source>Rotate tree</source>
+        <translation>Tourner l’arbre</translation>
+    </message>
+    <message>
+        <source>Rotate trees</source>
+        <translation>Tourner les arbres</translation>
+    </message>
+    <message>
+        <source>Scale tree</source>
+        <translation>Mettre l’arbre à l’échelle</translation>
+    </message>
+    <message>
+        <source>Scale trees</source>
+        <translation>Mettre les arbres à l’échelle</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,6 @@
 #include "ui/mainwindow.h"
+#include "ui/document/presetbrowser.h"
+#include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/parameterpanel.h"
 #include "ui/speciesworkbench.h"
 
@@ -189,7 +191,8 @@ MainWindow::~MainWindow() {
     if (PythonHost::window() == this) PythonHost::setWindow(nullptr);
     // The species editor talks to the document (a grammar burst is committed when its editor
     // loses focus): it goes first, while the document (an older child) still exists.
-    for (const QString& name : {QStringLiteral("speciesDock"), QStringLiteral("parametersDock")}) {
+    for (const QString& name : {QStringLiteral("speciesDock"), QStringLiteral("parametersDock"),
+                                QStringLiteral("presetBrowserDock")}) {
         delete mDocks[name];
         mDocks.erase(name);
     }
@@ -286,6 +289,16 @@ void MainWindow::createDocks() {
     dock(QStringLiteral("parametersDock"), tr("Node Parameters"), parametersScroll,
          Qt::RightDockWidgetArea)
         ->hide();
+    mPresetBrowser = new PresetBrowser(*mDocument, this);
+    mPresetBrowser->setObjectName(QStringLiteral("presetBrowser"));
+    connect(mPresetBrowser, &PresetBrowser::failed, this, &MainWindow::reportError);
+    connect(mPresetBrowser, &PresetBrowser::status, this,
+            [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
+    connect(mWorkbench->graphScene(), &NodeGraphScene::nodeSelected, mPresetBrowser,
+            [this] { mPresetBrowser->setTargetSpecies(mWorkbench->species()); });
+    dock(QStringLiteral("presetBrowserDock"), tr("Preset Browser"), mPresetBrowser,
+         Qt::RightDockWidgetArea)
+        ->hide();
 
     mMessages = new MessagesPanel(this);
     dock(QStringLiteral("messagesDock"), tr("Messages"), mMessages, Qt::BottomDockWidgetArea);
@@ -321,12 +334,16 @@ void MainWindow::editSpecies(const QString& species) {
         for (const char* name : {"statsDock"})
             if (QDockWidget* d = mDocks[QLatin1String(name)]; d && !d->isFloating())
                 tabifyDockWidget(d, parametersDock);
+        QDockWidget* presets = mDocks[QStringLiteral("presetBrowserDock")];
+        presets->show();
+        tabifyDockWidget(parametersDock, presets);
         resizeDocks({speciesDock}, {std::max(320, height() * 2 / 5)}, Qt::Vertical);
         resizeDocks({parametersDock}, {360}, Qt::Horizontal);
     }
     speciesDock->raise();
     parametersDock->raise();
     if (!species.isEmpty()) mWorkbench->setSpecies(species);
+    mPresetBrowser->setTargetSpecies(mWorkbench->species());
 }
 
 void MainWindow::createMenus() {
@@ -962,7 +979,7 @@ void MainWindow::showDocument(bool frame) {
     std::vector<ViewTree> trees;
     trees.reserve(result.trees.size());
     for (const DrawnTree& t : result.trees)
-        trees.push_back({t.docId, t.mesh, t.transform});
+        trees.push_back({t.docId, t.mesh, t.transform, t.lod});
     if (frame) {
         mViewport->setViewFrom(result.cameraEye, result.cameraTarget);
     }
@@ -1241,7 +1258,7 @@ void MainWindow::reportError(const QString& message) {
 // --- output -----------------------------------------------------------------------------
 
 bool MainWindow::saveScreenshot(const QString& path) {
-    const QImage image = mViewport->grabFramebuffer();
+    const QImage image = mViewport->grabSharp();
     if (image.isNull()) {
         reportError(tr("Could not read the viewport's image (no OpenGL context)."));
         return false;
@@ -1361,12 +1378,25 @@ void MainWindow::showPreferences() {
     auto* folder = new QLabel(QDir::toNativeSeparators(mAutosave->folder()), &dialog);
     folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
     form->addRow(tr("Recovery folder:"), folder);
+    auto* samples = new QComboBox(&dialog);
+    samples->setObjectName(QStringLiteral("viewportSamples"));
+    samples->addItem(tr("Automatic (off on a software renderer)"), Viewport::kAutoSamples);
+    samples->addItem(tr("Off"), 0);
+    samples->addItem(tr("2× multisampling"), 2);
+    samples->addItem(tr("4× multisampling"), 4);
+    samples->addItem(tr("8× multisampling"), 8);
+    samples->setCurrentIndex(std::max(0, samples->findData(Viewport::samplesPreference())));
+    samples->setToolTip(tr("Smooths the edges in the 3D view. Without a graphics card (a "
+                           "software renderer) it makes every frame two to three times slower. "
+                           "Takes effect when Sylva starts next."));
+    form->addRow(tr("Antialiasing:"), samples);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
     connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     form->addRow(buttons);
     if (dialog.exec() != QDialog::Accepted) return;
     setAutosaveInterval(minutes->value() * 60);
+    Viewport::setSamplesPreference(samples->currentData().toInt());
 }
 
 MainWindow::FrameStats MainWindow::measureFrames(int frames) {
@@ -1399,6 +1429,9 @@ MainWindow::FrameStats MainWindow::measureFrames(int frames) {
     stats.guiCpuMsPerFrame = (cpuMs(CLOCK_THREAD_CPUTIME_ID) - gui0) / frames;
     stats.treesDrawn = mViewport->drawnTrees();
     stats.triangles = lastResult().triangleCount();
+    stats.trianglesDrawn = mViewport->drawnTriangles();
+    const auto& levels = mViewport->drawnPerLevel();
+    stats.treesPerLevel.assign(levels.begin(), levels.end());
     return stats;
 }
 

@@ -41,6 +41,7 @@ class PropertiesPanel;
 class PythonConsole;
 class StatsPanel;
 class SpeciesWorkbench;
+class PresetBrowser;
 class ToolController;
 class Viewport;
 
@@ -71,6 +72,7 @@ public:
     PythonConsole* console() const { return mConsole; }
     ToolController& tools() { return *mTools; }
     SpeciesWorkbench* workbench() const { return mWorkbench; }
+    PresetBrowser* presetBrowser() const { return mPresetBrowser; }
     /// Shows the species editor (graph, grammar, live preview, node parameters) on \p species
     /// (the one shown already when empty).
     void editSpecies(const QString& species = {});
@@ -144,6 +146,8 @@ public:
     struct FrameStats {
         double fps = 0, msPerFrame = 0, cpuMsPerFrame = 0, guiCpuMsPerFrame = 0;
         std::size_t treesDrawn = 0, triangles = 0;
+        std::size_t trianglesDrawn = 0;         ///< in the last frame, at its LOD
+        std::vector<std::size_t> treesPerLevel; ///< in the last frame, level 0 = full
     };
     FrameStats measureFrames(int frames);
 
@@ -199,6 +203,7 @@ private:
     Viewport* mViewport = nullptr;
     StatsPanel* mStats = nullptr;
     SpeciesWorkbench* mWorkbench = nullptr;
+    PresetBrowser* mPresetBrowser = nullptr;
     MessagesPanel* mMessages = nullptr;
     PropertiesPanel* mProperties = nullptr;
     OutlinerModel* mOutlinerModel = nullptr;

@@ -35,7 +35,8 @@ int runLods(const std::vector<std::string>& argv) {
         species.skeletonSource(), seed.has_value(), seed ? static_cast<std::uint64_t>(*seed) : 0);
     if (!grown.skeleton) throw InvalidInput("the species produces no skeleton");
 
-    const mesh::TreeMeshSettings settings = mesh::treeMeshSettingsFromParams(out->params, 0);
+    const mesh::TreeMeshSettings settings =
+        mesh::treeMeshSettingsFromParams(out->params, 0, species.baseDir);
     exporter::LodExportOptions options;
     options.obj = !args.flag("--no-obj");
     options.glb = !args.flag("--no-glb");

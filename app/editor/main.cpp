@@ -92,6 +92,7 @@ int main(int argc, char* argv[]) {
     QApplication::setApplicationName(QStringLiteral("Sylva"));
     QApplication::setOrganizationName(QStringLiteral("Sylva"));
     QApplication::setApplicationVersion(QStringLiteral(SYLVA_VERSION));
+    sylva::ui::Viewport::applySamplesPreference();
     installTranslators(app);
 
     QCommandLineParser parser;

@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QSaveFile>
 
 #include "document/commands/scenecommands.h"
 #include "document/commands/speciescommands.h"
@@ -341,6 +342,55 @@ void Document::setParam(const std::string& species, const std::string& path, con
                                       ? QCoreApplication::translate("Commands", "Edit grammar")
                                       : QCoreApplication::translate("Commands", "Change %1")
                                             .arg(QString::fromStdString(path))));
+}
+
+void Document::applyPreset(const std::string& species, const QString& file) {
+    const int i = speciesIndex(species);
+    if (i < 0) throw InvalidInput("unknown species '" + species + "'");
+    const graph::SpeciesGraph g = loadSpecies(file);
+    const Value root = Value::parseJson(serializeSpecies(g).toStdString(), file.toStdString());
+    const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
+    ProjectSpecies applied;
+    applied.name = old.name;
+    applied.graph = *root.find("graph");
+    applied.traits = *root.find("traits");
+    rebaseGraphFiles(*applied.graph, QString::fromStdString(g.baseDir.string()), mProject.baseDir);
+    validateSpecies(applied);
+    if (applied == old) return;
+    mUndo.push(cmd::changeSpecies(*this, i, old, applied, {}, true,
+                                  QCoreApplication::translate("Commands", "Apply preset %1")
+                                      .arg(QFileInfo(file).completeBaseName())));
+}
+
+void Document::saveSpeciesAs(const std::string& species, const QString& path) const {
+    const int i = speciesIndex(species);
+    if (i < 0) throw InvalidInput("unknown species '" + species + "'");
+    const ProjectSpecies s = inlined(mProject.species[static_cast<std::size_t>(i)]);
+    Value graphValue = *s.graph;
+    // Self-contained: a grammar file's text goes into the file; other files are rebased.
+    for (Value& n : graphValue.objectRef()["nodes"].arrayRef()) {
+        Value& params = n.objectRef()["params"];
+        if (const Value* file = params.find("grammar_file"); file && file->isString()) {
+            const std::string text = grammar(species, n.string("id", ""));
+            params.objectRef().erase("grammar_file");
+            params.objectRef()["grammar"] = Value(text);
+        }
+        n.objectRef().erase("editor_position");
+    }
+    rebaseGraphFiles(graphValue, mProject.baseDir, QFileInfo(path).absolutePath());
+    Value::Object root{{"format", "sylva-species"},
+                       {"format_version", kSpeciesFormatVersion},
+                       {"name", s.name},
+                       {"graph", graphValue}};
+    if (s.traits) root["traits"] = *s.traits;
+    QSaveFile out(path);
+    if (!out.open(QIODevice::WriteOnly))
+        throw IoError("cannot write " + path.toStdString() + ": " +
+                      out.errorString().toStdString());
+    out.write(QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n"));
+    if (!out.commit())
+        throw IoError("cannot write " + path.toStdString() + ": " +
+                      out.errorString().toStdString());
 }
 
 void Document::editGraph(const std::string& species, const QString& node, const QString& label,

@@ -124,6 +124,14 @@ public:
     /// The grammar text of an lsystem node (inline, or read from its grammar_file).
     std::string grammar(const std::string& species, const std::string& node) const;
 
+    /// Replaces a species' graph and traits with those of a species file (a preset), keeping
+    /// its name; one undo step. Relative files in the preset resolve from the project.
+    /// \throw InvalidInput / IoError for an unreadable or invalid file (nothing changes).
+    void applyPreset(const std::string& species, const QString& file);
+    /// Writes a species as a self-contained species file at \p path (atomically): grammar files
+    /// are inlined, other relative files rebased to the new folder. \throw IoError.
+    void saveSpeciesAs(const std::string& species, const QString& path) const;
+
     // --- species graphs (the node editor; each call is one undo step) ----------------------
     /// Adds a node of \p type (with \p params; an id made from the type when \p id is empty)
     /// at \p position in the node editor. Returns its id. \throw InvalidInput for an unknown

@@ -4,6 +4,7 @@
 // and its form byte for byte), a brush stroke of a 70/30 mix, the eraser, keys, and the window
 // processing events while a forest regrows. Screenshots of the selection and of a stroke.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
 
@@ -233,6 +234,108 @@ private Q_SLOTS:
         QVERIFY(std::memcmp(undone->positions.data(), beforePositions.data(),
                             beforePositions.size() * sizeof(glm::vec3)) == 0);
         QVERIFY(undoneTransform == beforeTransform);
+    }
+
+    /// The Move tool's handles: dragging along the ring turns the selected tree about its
+    /// trunk, dragging the box up scales it; each drag is one undo step (however many mouse
+    /// moves it took) and one undo gives back the exact document.
+    void handlesRotateAndScaleAndUndo() {
+        settle();
+        mWindow->tools().setTool(Tool::Move);
+        document().selectTrees({1});
+        QTest::qWait(50);
+        const auto h = mWindow->tools().handles();
+        QVERIFY(h.has_value());
+        const doc::Project before = document().project();
+        const doc::ProjectInstance start = document().tree(1);
+        QVERIFY(
+            viewport()->grabFramebuffer().save(outputPath(QStringLiteral("ui_tools_handles.png"))));
+
+        // A quarter turn along the ring, counter-clockwise seen from above.
+        std::vector<QPoint> ring;
+        for (int k = 0; k <= 9; ++k) {
+            const float a = glm::radians(10.0f * float(k));
+            ring.push_back(
+                screenOf(h->centre + h->radius * glm::vec3(std::cos(a), 0.0f, -std::sin(a))));
+        }
+        QCOMPARE(mWindow->tools().handleAt(ring.front()), ToolController::Handle::Ring);
+        const int steps = document().undoStack()->index();
+        drag(ring, {}, 4);
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Rotate tree"));
+        const doc::ProjectInstance turned = document().tree(1);
+        qInfo("ring drag: %.2f degrees", turned.rotation - start.rotation);
+        QVERIFY2(std::abs(turned.rotation - start.rotation - 90.0) < 5.0, "about a quarter turn");
+        QCOMPARE(turned.position, start.position);
+        QCOMPARE(turned.scale, start.scale);
+        settle();
+        document().undoStack()->undo();
+        QVERIFY(document().project() == before);
+        settle();
+
+        // The box, dragged 60 pixels up: larger by exp(0.005 · 60).
+        const QPoint box = screenOf(mWindow->tools().handles()->scaleHandle);
+        QCOMPARE(mWindow->tools().handleAt(box), ToolController::Handle::Scale);
+        drag(box, box - QPoint(0, 60), {}, 6);
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Scale tree"));
+        const doc::ProjectInstance scaled = document().tree(1);
+        QVERIFY(std::abs(scaled.scale / start.scale - std::exp(0.3)) < 1e-3);
+        QCOMPARE(scaled.position, start.position);
+        QCOMPARE(scaled.rotation, start.rotation);
+        settle();
+        document().undoStack()->undo();
+        QVERIFY(document().project() == before);
+        settle();
+
+        // Elsewhere than a handle a press still picks and drags trees; no handles in Select.
+        QCOMPARE(mWindow->tools().handleAt(QPoint(5, 5)), ToolController::Handle::None);
+        mWindow->tools().setTool(Tool::Select);
+        QVERIFY(!mWindow->tools().handles().has_value());
+    }
+
+    /// The viewport's distance LOD: seen from far away the trees are drawn with coarser levels
+    /// and impostors (fewer triangles than the scene holds), a click still picks the tree
+    /// under the cursor (picking tests the full mesh) and the selection is still tinted.
+    void viewLodFarAwayKeepsPicking() {
+        settle();
+        QCOMPARE(ViewLod::levelFor(0.5), 0);
+        QVERIFY(ViewLod::levelFor(ViewLod::levelHeights(ViewLod::kImpostorLevel)) ==
+                ViewLod::kImpostorLevel);
+        // Twice as far (or a screen half as high) is twice the equivalent distance.
+        QVERIFY(std::abs(ViewLod::equivalentHeights(200.0, 10.0, 1.0, 900.0) -
+                         2.0 * ViewLod::equivalentHeights(100.0, 10.0, 1.0, 900.0)) < 1e-9);
+        mWindow->tools().setTool(Tool::Select);
+        const auto [eye, target] =
+            std::pair{document().project().cameraPosition, document().project().cameraTarget};
+        viewport()->camera().lookFrom(target + 4.0f * (eye - target), target);
+        viewport()->update();
+        QTRY_VERIFY_WITH_TIMEOUT(viewport()->lodPending() == 0, kTimeoutMs);
+        viewport()->grabFramebuffer(); // a frame at the levels now made
+        QVERIFY(viewport()->grabSharp().save(outputPath(QStringLiteral("ui_tools_far_lod.png"))));
+        std::size_t triangles = 0;
+        for (const ViewTree& t : viewport()->trees())
+            triangles += t.mesh->triangleCount();
+        const auto& perLevel = viewport()->drawnPerLevel();
+        qInfo("far: trees per level %zu %zu %zu %zu, %zu of %zu tree triangles drawn", perLevel[0],
+              perLevel[1], perLevel[2], perLevel[3], viewport()->drawnTriangles(), triangles);
+        QVERIFY(perLevel[0] < viewport()->drawnTrees());
+        QVERIFY(viewport()->drawnTriangles() < triangles);
+
+        const QPoint at = screenOf(document().tree(1).position + glm::vec3(0, 1.0f, 0));
+        QVERIFY(at.x() >= 0);
+        const int index = viewport()->treeAt(at);
+        QVERIFY(index >= 0);
+        QTest::mouseClick(viewport(), Qt::LeftButton, {}, at);
+        if (const doc::TreeId id = viewport()->trees()[std::size_t(index)].id; id != 0) {
+            // The trunk may be behind another tree from here: whichever is drawn is picked.
+            QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{id});
+            QVERIFY(viewport()->highlightedTrees().contains(id));
+        }
+        document().selectTrees({});
+        viewport()->frameScene();
+        viewport()->camera().lookFrom(eye, target);
+        viewport()->update();
     }
 
     /// Arrow keys nudge the selection by 10 cm, one step each.

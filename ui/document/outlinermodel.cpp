@@ -32,16 +32,26 @@ OutlinerModel::OutlinerModel(doc::Document& document, QObject* parent)
         beginResetModel();
         // Node lists come from species files on disk: read again only when species changed,
         // not at every step of a drag.
-        if (c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset)) readNodes();
+        // A parameter or graph edit of one species re-reads that one (species files are parsed
+        // again for each read, and a slider drag edits many times a second).
+        const int one = mDocument.speciesIndex(c.species.toStdString());
+        if (c.what == doc::DocumentChange::Species && one >= 0 &&
+            mNodes.size() == mDocument.project().species.size())
+            readNodes(one);
+        else if (c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset))
+            readNodes();
         pruneHidden();
         endResetModel();
     });
     readNodes();
 }
 
-void OutlinerModel::readNodes() {
-    mNodes.clear();
-    for (const doc::ProjectSpecies& s : mDocument.project().species) {
+void OutlinerModel::readNodes(int only) {
+    const auto& all = mDocument.project().species;
+    if (only < 0) mNodes.assign(all.size(), QStringList());
+    for (std::size_t k = 0; k < all.size(); ++k) {
+        if (only >= 0 && int(k) != only) continue;
+        const doc::ProjectSpecies& s = all[k];
         QStringList nodes;
         try {
             const graph::Value g = mDocument.speciesGraph(s.name);
@@ -53,7 +63,7 @@ void OutlinerModel::readNodes() {
         } catch (const std::exception& e) {
             nodes << tr("cannot read: %1").arg(QString::fromUtf8(e.what()));
         }
-        mNodes.push_back(nodes);
+        mNodes[k] = nodes;
     }
 }
 

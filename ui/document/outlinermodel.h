@@ -44,7 +44,8 @@ Q_SIGNALS:
     void editFailed(const QString& message);
 
 private:
-    void readNodes();
+    /// Reads the node lists of every species, or of species \p only.
+    void readNodes(int only = -1);
     void pruneHidden();
     int groupSize(int group) const;
 

@@ -2,6 +2,8 @@
 
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <omp.h>
+
 #include "document/errormessage.h"
 #include "engine/util/error.h"
 #include "engine/util/progress.h"
@@ -9,6 +11,20 @@
 namespace sylva::ui {
 
 namespace {
+
+/// One OpenMP thread for the preview's evaluation (restored after): the editor's 2-core budget
+/// is shared with the forest's regrowth and the drawing, and two spinning OpenMP threads on a
+/// busy machine took 12 ms where one takes 3 (docs/performance.md).
+class SingleThreaded {
+public:
+    SingleThreaded() : mPrevious(omp_get_max_threads()) { omp_set_num_threads(1); }
+    ~SingleThreaded() { omp_set_num_threads(mPrevious); }
+    SingleThreaded(const SingleThreaded&) = delete;
+    SingleThreaded& operator=(const SingleThreaded&) = delete;
+
+private:
+    int mPrevious;
+};
 
 class FlagProgress : public Progress {
 public:
@@ -119,6 +135,7 @@ void SpeciesPreview::start() {
             QElapsedTimer timer;
             timer.start();
             std::shared_ptr<graph::Evaluator> ev = evaluator;
+            const SingleThreaded oneThread;
             try {
                 graph::registerBuiltinNodeTypes();
                 // The long-lived evaluator keeps every node's result: setGraph() drops only what

@@ -16,6 +16,7 @@
 #include "engine/export/treeexport.h"
 #include "engine/forest/metrics.h"
 #include "engine/util/progress.h"
+#include "ui/viewport/viewlod.h"
 
 namespace sylva::mesh {
 struct Mesh;
@@ -41,6 +42,7 @@ struct DrawnTree {
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};
     forest::TreeMetrics metrics;
+    TreeLodSource lod; ///< what the viewport makes coarser levels from
 };
 
 /// What one generation run produced. Plain data: it is handed from the worker thread to the UI

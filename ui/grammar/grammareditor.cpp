@@ -147,6 +147,8 @@ GrammarEditor::GrammarEditor(doc::Document& document, QWidget* parent)
     mList->setToolTip(tr("Errors in the grammar: click one to jump to it"));
     layout->addWidget(mList, 1);
 
+    mDebounce.setObjectName(QStringLiteral("diagnosticsTimer"));
+    mDebounce.setParent(this); // findable (it is a member, deleted with the editor)
     mDebounce.setSingleShot(true);
     mDebounce.setInterval(kDiagnosticsDelayMs);
     mBurst.setSingleShot(true);

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QEventLoop>
 #include <QTimer>
 
@@ -565,10 +566,35 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 d["gui_cpu_ms_per_frame"] = f.guiCpuMsPerFrame;
                 d["trees_drawn"] = f.treesDrawn;
                 d["triangles"] = f.triangles;
+                d["triangles_drawn"] = f.trianglesDrawn;
+                d["trees_per_level"] = f.treesPerLevel;
                 return d;
             },
             py::arg("frames") = 60,
             "Orbits the view a little per frame and measures frames per second and CPU time.")
+        .def(
+            "wait_view_lod",
+            [](WindowApi&, double seconds) {
+                QElapsedTimer clock;
+                clock.start();
+                Viewport* v = window().viewport();
+                v->update();
+                QCoreApplication::processEvents();
+                while (v->lodPending() > 0 && clock.elapsed() < qint64(seconds * 1000.0))
+                    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+                QCoreApplication::processEvents();
+                return v->lodPending() == 0;
+            },
+            py::arg("timeout") = 120.0,
+            "Waits (the window stays live) until the viewport's coarser levels of detail are "
+            "made; False when some are still being made after timeout seconds.")
+        .def(
+            "set_view_lod",
+            [](WindowApi&, bool on) {
+                window().viewport()->lod().setEnabled(on);
+                window().viewport()->update();
+            },
+            py::arg("on"), "Turns the viewport's distance level of detail on or off.")
         .def(
             "regenerate_all", [](WindowApi&) { window().generator().regenerateAll(); },
             "Drops every cached tree and regrows the whole document (File > Reload).")

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <QKeyEvent>
+#include <QLineF>
 #include <QMouseEvent>
 #include <QRubberBand>
 
@@ -22,6 +23,8 @@ constexpr float kNudge = 0.1f;           ///< metres per arrow key (Shift: 10×)
 constexpr float kDegreesPerPixel = 0.5f; ///< Ctrl+drag rotation
 constexpr float kScalePerPixel = 0.005f; ///< Shift+drag scale, exponential
 constexpr float kDefaultCrownRadius = 2.0f;
+constexpr float kHandlePixels = 9.0f; ///< how near the cursor must be to take a handle
+constexpr int kRingSegments = 72;
 
 glm::vec3 positionOf(const glm::mat4& transform) {
     return glm::vec3(transform[3]);
@@ -58,12 +61,14 @@ ToolController::ToolController(doc::Document& document, Viewport& viewport,
     : QObject(parent), mDocument(document), mViewport(viewport), mResult(std::move(result)) {
     mBand = new QRubberBand(QRubberBand::Rectangle, &viewport);
     viewport.setTool(this);
+    viewport.setOverlay([this] { return handleLines(); });
 }
 
 void ToolController::setTool(Tool tool) {
     if (tool == mTool) return;
     mTool = tool;
     mViewport.setPreviewTrees({});
+    mViewport.update(); // the Move tool's handles come or go
     Q_EMIT toolChanged(tool);
 }
 
@@ -214,27 +219,41 @@ doc::ProjectInstance ToolController::draggedInstance(const Dragged& d) const {
 
 void ToolController::dragTo(const QPoint& pos, Qt::KeyboardModifiers modifiers) {
     const QPoint delta = pos - mPress;
-    const auto ground = hitPlane(mViewport.rayAt(pos), mDragHeight);
-    // One gesture does one thing: move, or (Ctrl) rotate, or (Shift) scale, each tree about
-    // its own trunk.
+    // One gesture does one thing: move, or rotate (the ring, or Ctrl), or scale (the box, or
+    // Shift), each tree about its own trunk.
+    mDragMode = mDragHandle == Handle::Ring       ? DragMode::Rotate
+                : mDragHandle == Handle::Scale    ? DragMode::Scale
+                : modifiers & Qt::ControlModifier ? DragMode::Rotate
+                : modifiers & Qt::ShiftModifier   ? DragMode::Scale
+                                                  : DragMode::Move;
     mDragMove = glm::vec3(0.0f);
     mDragDegrees = 0.0;
     mDragScale = 1.0;
-    if (modifiers & Qt::ControlModifier)
+    if (mDragHandle == Handle::Ring) {
+        if (const auto angle = ringAngle(pos)) {
+            // Unwrapped, so that a drag all the way round turns a full turn.
+            double step = *angle - mRingLast;
+            step -= 2.0 * M_PI * std::round(step / (2.0 * M_PI));
+            mRingTotal += step;
+            mRingLast = *angle;
+        }
+        mDragDegrees = mRingTotal * 180.0 / M_PI;
+    } else if (mDragMode == DragMode::Rotate) {
         mDragDegrees = kDegreesPerPixel * delta.x();
-    else if (modifiers & Qt::ShiftModifier)
-        mDragScale = std::exp(-double(kScalePerPixel) * delta.y());
-    else if (ground)
+    } else if (mDragMode == DragMode::Scale) {
+        mDragScale = std::exp(-double(kScalePerPixel) * delta.y()); // up: larger
+    } else if (const auto ground = hitPlane(mViewport.rayAt(pos), mDragHeight)) {
         mDragMove = glm::vec3(ground->x - mDragStart.x, 0.0f, ground->z - mDragStart.z);
+    }
     for (const Dragged& d : mDragged) {
         glm::mat4 m = d.startTransform;
         const glm::vec3 base = positionOf(m);
-        if (modifiers & Qt::ControlModifier) {
+        if (mDragMode == DragMode::Rotate) {
             const float angle = glm::radians(float(mDragDegrees));
             m = glm::translate(glm::mat4(1.0f), base) *
                 glm::rotate(glm::mat4(1.0f), angle, glm::vec3(0, 1, 0)) *
                 glm::translate(glm::mat4(1.0f), -base) * m;
-        } else if (modifiers & Qt::ShiftModifier) {
+        } else if (mDragMode == DragMode::Scale) {
             const auto k = float(mDragScale);
             m = glm::translate(glm::mat4(1.0f), base) * glm::scale(glm::mat4(1.0f), glm::vec3(k)) *
                 glm::translate(glm::mat4(1.0f), -base) * m;
@@ -243,6 +262,112 @@ void ToolController::dragTo(const QPoint& pos, Qt::KeyboardModifiers modifiers) 
         }
         mViewport.setTreeTransform(d.viewIndex, m); // the mesh follows; nothing regrows
     }
+}
+
+// --- handles -------------------------------------------------------------------------------
+
+std::optional<ToolController::Handles> ToolController::handles() const {
+    if (mTool != Tool::Move) return std::nullopt;
+    if (mDragHandle != Handle::None) return mDragHandles; // they stay put while dragged
+    const QList<doc::TreeId> selected = mDocument.selectedTrees();
+    if (selected.isEmpty()) return std::nullopt;
+    const std::vector<ViewTree>& trees = mViewport.trees();
+    const std::vector<Bounds>& bounds = mViewport.treeBounds();
+    std::vector<std::size_t> shown;
+    for (std::size_t i = 0; i < trees.size() && i < bounds.size(); ++i)
+        if (trees[i].id != 0 && selected.contains(trees[i].id) && !bounds[i].empty())
+            shown.push_back(i);
+    if (shown.empty()) return std::nullopt;
+    Handles h;
+    float top = std::numeric_limits<float>::lowest();
+    h.centre = glm::vec3(0.0f);
+    float ground = std::numeric_limits<float>::max();
+    for (std::size_t i : shown) {
+        const glm::vec3 p = positionOf(trees[i].transform);
+        h.centre += p / float(shown.size());
+        ground = std::min(ground, p.y);
+        top = std::max(top, bounds[i].hi.y);
+    }
+    h.centre.y = ground;
+    // Around the crowns: the farthest trunk plus that tree's crown half-width.
+    h.radius = 1.0f;
+    for (std::size_t i : shown) {
+        const glm::vec3 p = positionOf(trees[i].transform);
+        const glm::vec3 size = bounds[i].hi - bounds[i].lo;
+        const float crown = 0.4f * std::max(size.x, size.z);
+        h.radius =
+            std::max(h.radius, glm::length(glm::vec2(p.x - h.centre.x, p.z - h.centre.z)) + crown);
+    }
+    h.scaleHandle = {h.centre.x, top + 0.1f * std::max(top - ground, 1.0f), h.centre.z};
+    return h;
+}
+
+std::optional<double> ToolController::ringAngle(const QPoint& pos) const {
+    const auto p = hitPlane(mViewport.rayAt(pos), mDragHandles.centre.y);
+    if (!p) return std::nullopt;
+    return std::atan2(-(p->z - mDragHandles.centre.z), p->x - mDragHandles.centre.x);
+}
+
+ToolController::Handle ToolController::handleAt(const QPoint& pos) const {
+    const auto h = handles();
+    if (!h) return Handle::None;
+    const QPointF cursor(pos);
+    if (const auto box = mViewport.project(h->scaleHandle);
+        box && QLineF(*box, cursor).length() <= 1.5 * kHandlePixels)
+        return Handle::Scale;
+    std::optional<QPointF> previous;
+    for (int k = 0; k <= kRingSegments; ++k) {
+        const double a = 2.0 * M_PI * k / kRingSegments;
+        const auto p =
+            mViewport.project(h->centre + h->radius * glm::vec3(std::cos(a), 0.0f, -std::sin(a)));
+        if (p && previous) {
+            // Distance from the cursor to the segment previous → p.
+            const QPointF d = *p - *previous;
+            const double len2 = QPointF::dotProduct(d, d);
+            const double t =
+                len2 > 0 ? std::clamp(QPointF::dotProduct(cursor - *previous, d) / len2, 0.0, 1.0)
+                         : 0.0;
+            if (QLineF(*previous + t * d, cursor).length() <= kHandlePixels) return Handle::Ring;
+        }
+        previous = p;
+    }
+    return Handle::None;
+}
+
+std::vector<OverlayLine> ToolController::handleLines() const {
+    const auto h = handles();
+    if (!h) return {};
+    std::vector<OverlayLine> lines;
+    const glm::vec4 ringColor = mDragHandle == Handle::Ring ? glm::vec4(1.0f, 0.95f, 0.4f, 1.0f)
+                                                            : glm::vec4(1.0f, 0.70f, 0.1f, 0.95f);
+    const glm::vec4 boxColor = mDragHandle == Handle::Scale ? glm::vec4(0.6f, 1.0f, 1.0f, 1.0f)
+                                                            : glm::vec4(0.2f, 0.8f, 1.0f, 0.95f);
+    // Two rings a little apart read as one thicker line (core profile lines are one pixel).
+    for (const float r : {h->radius, 1.015f * h->radius})
+        for (int k = 0; k < kRingSegments; ++k) {
+            const double a0 = 2.0 * M_PI * k / kRingSegments;
+            const double a1 = 2.0 * M_PI * (k + 1) / kRingSegments;
+            lines.push_back({h->centre + r * glm::vec3(std::cos(a0), 0.0f, -std::sin(a0)),
+                             h->centre + r * glm::vec3(std::cos(a1), 0.0f, -std::sin(a1)),
+                             ringColor});
+        }
+    // The scale box: a stem from the crowns' top and a cube a few pixels wide.
+    const float size =
+        0.012f * glm::length(mViewport.camera().eye() - h->scaleHandle); // about 10 px
+    const glm::vec3 c = h->scaleHandle;
+    lines.push_back({glm::vec3(c.x, h->centre.y, c.z), c - glm::vec3(0, size, 0),
+                     glm::vec4(boxColor.x, boxColor.y, boxColor.z, 0.5f)});
+    for (int axis = 0; axis < 3; ++axis)
+        for (int i = 0; i < 4; ++i) {
+            glm::vec3 a(0.0f);
+            a[(axis + 1) % 3] = (i & 1) ? size : -size;
+            a[(axis + 2) % 3] = (i & 2) ? size : -size;
+            glm::vec3 b = a;
+            a[axis] = -size;
+            b[axis] = size;
+            lines.push_back({c + a, c + b, boxColor});
+        }
+    return lines;
 }
 
 void ToolController::nudge(float dx, float dz) {
@@ -354,7 +479,7 @@ void ToolController::dab(const glm::vec3& centre) {
                 in.position = t.position;
                 in.rotation = float(glm::radians(t.rotation));
                 in.scale = float(t.scale);
-                preview.push_back({0, d.mesh, in.transform()});
+                preview.push_back({0, d.mesh, in.transform(), {}});
                 break;
             }
     }
@@ -379,6 +504,24 @@ void ToolController::erase(const glm::vec3& centre) {
 
 // --- events ------------------------------------------------------------------------------
 
+bool ToolController::startDrag(doc::TreeId hit) {
+    mDragged.clear();
+    for (doc::TreeId id : mDocument.selectedTrees())
+        for (std::size_t i = 0; i < mViewport.trees().size(); ++i)
+            if (mViewport.trees()[i].id == id)
+                mDragged.push_back({id, i, mDocument.tree(id), mViewport.trees()[i].transform});
+    mDragHeight = float(mDocument.tree(hit).position.y);
+    const auto start = hitPlane(mViewport.rayAt(mPress), mDragHeight);
+    mDragMove = glm::vec3(0.0f);
+    mDragDegrees = 0.0;
+    mDragScale = 1.0;
+    mDragMode = DragMode::Move;
+    if (mDragged.empty()) return false;
+    // A handle's drag needs no ground point under the press (the box is in the sky).
+    mDragStart = start ? *start : glm::vec3(0.0f);
+    return start.has_value() || handleAt(mPress) != Handle::None;
+}
+
 bool ToolController::press(QMouseEvent* event) {
     mPress = mLast = event->position().toPoint();
     switch (mTool) {
@@ -388,23 +531,26 @@ bool ToolController::press(QMouseEvent* event) {
         mBand->show();
         return true;
     case Tool::Move: {
+        mDragHandle = Handle::None;
+        if (const Handle handle = handleAt(mPress); handle != Handle::None) {
+            mDragHandles = *handles();
+            const QList<doc::TreeId> selected = mDocument.selectedTrees();
+            if (selected.isEmpty() || !startDrag(selected.front())) return false;
+            if (handle == Handle::Ring) {
+                const auto angle = ringAngle(mPress);
+                if (!angle) return false;
+                mRingLast = *angle;
+                mRingTotal = 0.0;
+            }
+            mDragHandle = handle;
+            mViewport.update();
+            return true;
+        }
         const int index = mViewport.treeAt(mPress);
         if (index < 0 || mViewport.trees()[std::size_t(index)].id == 0) return false;
         const doc::TreeId hit = mViewport.trees()[std::size_t(index)].id;
         if (!mDocument.selectedTrees().contains(hit)) mDocument.selectTrees({hit});
-        mDragged.clear();
-        for (doc::TreeId id : mDocument.selectedTrees())
-            for (std::size_t i = 0; i < mViewport.trees().size(); ++i)
-                if (mViewport.trees()[i].id == id)
-                    mDragged.push_back({id, i, mDocument.tree(id), mViewport.trees()[i].transform});
-        mDragHeight = float(mDocument.tree(hit).position.y);
-        const auto start = hitPlane(mViewport.rayAt(mPress), mDragHeight);
-        if (!start || mDragged.empty()) return false;
-        mDragStart = *start;
-        mDragMove = glm::vec3(0.0f);
-        mDragDegrees = 0.0;
-        mDragScale = 1.0;
-        return true;
+        return startDrag(hit);
     }
     case Tool::Place:
         return false;
@@ -455,14 +601,19 @@ void ToolController::release(QMouseEvent* event) {
         finishRubberBand();
         break;
     case Tool::Move: {
+        mDragHandle = Handle::None;
+        mViewport.update(); // the handles follow the trees again
         std::vector<std::pair<doc::TreeId, doc::ProjectInstance>> moved;
         for (const Dragged& d : mDragged) {
             const doc::ProjectInstance t = draggedInstance(d);
-            if (t.scale < 0.01 || t.scale > 100 || inObstacleFootprint(t.position)) {
+            const bool badScale = t.scale < 0.01 || t.scale > 100;
+            if (badScale || inObstacleFootprint(t.position)) {
                 for (const Dragged& back : mDragged)
                     mViewport.setTreeTransform(back.viewIndex, back.startTransform);
-                Q_EMIT message(tr("A tree cannot stand inside an obstacle's footprint: the move "
-                                  "was refused"));
+                Q_EMIT message(badScale ? tr("A tree's scale must stay between 0.01 and 100: "
+                                             "the change was refused")
+                                        : tr("A tree cannot stand inside an obstacle's "
+                                             "footprint: the move was refused"));
                 mDragged.clear();
                 return;
             }
@@ -472,7 +623,11 @@ void ToolController::release(QMouseEvent* event) {
         if (moved.empty()) return;
         // One undo step; the document then regrows the moved trees and the neighbours whose
         // crowns they now touch, adapted to the obstacles and to each other.
-        mDocument.undoStack()->beginMacro(moved.size() == 1 ? tr("Move tree") : tr("Move trees"));
+        const bool one = moved.size() == 1;
+        mDocument.undoStack()->beginMacro(
+            mDragMode == DragMode::Rotate  ? (one ? tr("Rotate tree") : tr("Rotate trees"))
+            : mDragMode == DragMode::Scale ? (one ? tr("Scale tree") : tr("Scale trees"))
+                                           : (one ? tr("Move tree") : tr("Move trees")));
         for (const auto& [id, t] : moved)
             mDocument.setTree(id, t);
         mDocument.undoStack()->endMacro();

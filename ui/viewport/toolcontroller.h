@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,7 +27,9 @@ struct GenerationResult;
 ///   and adds the hand-placed trees inside it; a domain's tree selects its domain, an obstacle
 ///   the obstacle; `[` and `]` step through the trees.
 /// - Move: drag a selected tree (all selected trees move together) along the ground with a live
-///   preview; Ctrl+drag rotates, Shift+drag scales; arrow keys nudge 10 cm (Shift: 1 m). The
+///   preview; the ring drawn on the ground around the selection turns each tree about its
+///   trunk when dragged along, the box above it scales them when dragged up or down (Ctrl+drag
+///   and Shift+drag on a tree do the same); arrow keys nudge 10 cm (Shift: 1 m). The
 ///   release is one undo step, after which the document regrows and re-adapts the moved trees
 ///   and the neighbours whose crowns they now touch. A tree dropped into an obstacle's
 ///   footprint is refused with a message and goes back.
@@ -63,6 +66,20 @@ public:
     void setBrush(const Brush& brush);
     const Brush& brush() const { return mBrush; }
 
+    /// The Move tool's handles for the selected hand-placed trees: a ring on the ground around
+    /// them and a box above the tallest. None in other tools or without such a selection.
+    struct Handles {
+        glm::vec3 centre{0.0f};      ///< the selected trunks' mean position
+        float radius = 1.0f;         ///< the ring's, metres
+        glm::vec3 scaleHandle{0.0f}; ///< the box's centre, above the crowns
+    };
+    std::optional<Handles> handles() const;
+    enum class Handle { None, Ring, Scale };
+    /// The handle drawn within a few pixels of \p pos (widget pixels).
+    Handle handleAt(const QPoint& pos) const;
+    /// The handles as lines for the viewport to draw over the scene.
+    std::vector<OverlayLine> handleLines() const;
+
     /// Selects the previous (\p step -1) or next (+1) hand-placed tree in document order.
     void stepSelection(int step);
     /// Whether a trunk at \p position stands in an obstacle's footprint (what placement
@@ -93,7 +110,12 @@ private:
     };
     void selectAt(const QPoint& pos, Qt::KeyboardModifiers modifiers);
     void finishRubberBand();
+    enum class DragMode { Move, Rotate, Scale };
     void dragTo(const QPoint& pos, Qt::KeyboardModifiers modifiers);
+    bool startDrag(doc::TreeId hit);
+    /// The angle (radians, about +y as glm::rotate turns) of the ground under \p pos around
+    /// the ring's centre, or none when the ray misses the ground plane.
+    std::optional<double> ringAngle(const QPoint& pos) const;
     doc::ProjectInstance draggedInstance(const Dragged& d) const;
     void dab(const glm::vec3& centre);
     void erase(const glm::vec3& centre);
@@ -118,6 +140,10 @@ private:
     glm::vec3 mDragMove{0.0f}; ///< the drag so far: a move, or a rotation, or a scale
     double mDragDegrees = 0.0;
     double mDragScale = 1.0;
+    DragMode mDragMode = DragMode::Move;
+    Handle mDragHandle = Handle::None; ///< the handle being dragged
+    Handles mDragHandles;              ///< the handles as they were when the drag began
+    double mRingLast = 0.0, mRingTotal = 0.0;
     std::vector<doc::ProjectInstance> mStroke; ///< a brush stroke's trees, added on release
     QList<doc::TreeId> mErased;
     glm::vec3 mLastDab{1e30f};

@@ -3,17 +3,23 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QImage>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QOpenGLShaderProgram>
+#include <QSettings>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/occlusion.h"
 
 namespace sylva::ui {
 
@@ -23,45 +29,72 @@ const char* const kMeshVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aColor;
+layout(location = 3) in vec2 aUv;
+layout(location = 4) in float aOcclusion;
 uniform mat4 uViewProj;
 uniform mat4 uModel; // a tree's instance transform: rotation, uniform scale, translation
 out vec3 vNormal;
 out vec3 vWorld;
 out vec3 vColor;
+out vec2 vUv;
+out float vOcclusion;
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vNormal = mat3(uModel) * aNormal;
     vWorld = world.xyz;
     vColor = aColor;
+    vUv = aUv;
+    vOcclusion = aOcclusion;
     gl_Position = uViewProj * world;
 }
 )";
 
-// Lambert key light plus a hemisphere ambient (sky above, warm ground below). Normals are
-// flipped towards the viewer so that leaf cards and inconsistent windings light the same from
-// both sides.
+// Lambert key light plus a hemisphere ambient (sky above, warm ground below), both dimmed by
+// the crown's per-vertex occlusion. Normals are flipped towards the viewer so that leaf cards
+// and inconsistent windings light the same from both sides; a leaf lit from behind lets a
+// little light through. Textures are sRGB: decoded to linear before lighting. Leaf cards are
+// cut out by their texture's alpha, sharpened with the mipmap level so that far leaves keep
+// their area instead of fading away.
 const char* const kMeshFragmentShader = R"(#version 330 core
 in vec3 vNormal;
 in vec3 vWorld;
 in vec3 vColor;
+in vec2 vUv;
+in float vOcclusion;
 uniform vec3 uAlbedo;
 uniform bool uVertexColor; // colour by a node attribute instead of the material
+uniform bool uTextured;
+uniform bool uAlphaTest;   // a leaf card: cut out, translucent
+uniform sampler2D uTexture;
 uniform vec3 uLightDir;
 uniform vec3 uEye;
 uniform float uHighlight; // a selected tree: blended towards orange
 out vec4 fragColor;
 void main() {
+    vec4 tex = vec4(1.0);
+    if (uTextured) {
+        tex = texture(uTexture, vUv);
+        if (uAlphaTest) {
+            vec2 texel = vUv * vec2(textureSize(uTexture, 0));
+            float lod = 0.5 * log2(max(dot(dFdx(texel), dFdx(texel)), dot(dFdy(texel), dFdy(texel))));
+            if (tex.a * (1.0 + 0.25 * max(lod, 0.0)) < 0.5) discard;
+        }
+    }
     vec3 n = vNormal;
     float len = length(n);
     n = len > 1e-6 ? n / len : vec3(0.0, 1.0, 0.0);
     vec3 toEye = normalize(uEye - vWorld);
     if (dot(n, toEye) < 0.0) n = -n;
-    float diffuse = max(dot(n, uLightDir), 0.0);
+    float facing = dot(n, uLightDir);
+    float diffuse = max(facing, 0.0);
+    if (uAlphaTest) diffuse += 0.35 * max(-facing, 0.0);
     vec3 sky = vec3(0.62, 0.70, 0.85);
     vec3 ground = vec3(0.30, 0.25, 0.20);
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    vec3 albedo = uVertexColor ? vColor : uAlbedo;
-    vec3 color = albedo * (0.55 * ambient + 1.35 * vec3(1.0, 0.96, 0.90) * diffuse);
+    vec3 albedo = uVertexColor ? vColor : (uTextured ? pow(tex.rgb, vec3(2.2)) : uAlbedo);
+    float ao = clamp(vOcclusion, 0.0, 1.0);
+    vec3 color = albedo * (0.55 * ambient * ao +
+                           1.35 * vec3(1.0, 0.96, 0.90) * diffuse * (0.4 + 0.6 * ao));
     color = mix(color, vec3(1.0, 0.45, 0.05), uHighlight);
     fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
 }
@@ -140,17 +173,27 @@ void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4
 
 std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh);
 
-/// Position, normal and attribute colour per vertex (the colour zero when \p colors does not
-/// match), as the mesh shader reads them.
+/// Floats per vertex: position, normal, attribute colour, uv, crown occlusion.
+constexpr int kVertexFloats = 12;
+
+/// Position, normal, attribute colour (zero when \p colors does not match), uv (zero without
+/// uvs) and the crown's ambient occlusion per vertex, as the mesh shader reads them.
 std::vector<float> interleave(const mesh::Mesh& m, const std::vector<glm::vec3>& colors) {
     const std::size_t vertexCount = m.positions.size();
     const std::vector<glm::vec3> computed =
         m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
     const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
     const bool colored = colors.size() == vertexCount;
-    std::vector<float> interleaved(vertexCount * 9, 0.0f);
+    const bool hasUvs = m.uvs.size() == vertexCount;
+    const std::vector<float> occlusion = mesh::crownOcclusion(m);
+    std::vector<float> interleaved(vertexCount * kVertexFloats, 0.0f);
     for (std::size_t i = 0; i < vertexCount; ++i) {
-        float* v = &interleaved[i * 9];
+        float* v = &interleaved[i * kVertexFloats];
+        if (hasUvs) {
+            v[9] = m.uvs[i].x;
+            v[10] = m.uvs[i].y;
+        }
+        v[11] = occlusion[i];
         v[0] = m.positions[i].x;
         v[1] = m.positions[i].y;
         v[2] = m.positions[i].z;
@@ -210,6 +253,39 @@ void Viewport::installDefaultSurfaceFormat() {
     QSurfaceFormat::setDefaultFormat(format);
 }
 
+int Viewport::samplesPreference() {
+    const int samples = QSettings().value(QStringLiteral("viewport/samples"), kAutoSamples).toInt();
+    return samples == 0 || samples == 2 || samples == 4 || samples == 8 ? samples : kAutoSamples;
+}
+
+void Viewport::setSamplesPreference(int samples) {
+    QSettings().setValue(QStringLiteral("viewport/samples"), samples);
+}
+
+int Viewport::applySamplesPreference() {
+    int samples = samplesPreference();
+    if (qEnvironmentVariableIsSet("SYLVA_MSAA"))
+        samples = std::max(0, qEnvironmentVariableIntValue("SYLVA_MSAA"));
+    if (samples == kAutoSamples) {
+        samples = 4;
+        QOpenGLContext probe;
+        QOffscreenSurface surface;
+        surface.create();
+        if (probe.create() && probe.makeCurrent(&surface)) {
+            const auto* renderer =
+                reinterpret_cast<const char*>(probe.functions()->glGetString(GL_RENDERER));
+            const QString name = QString::fromLatin1(renderer ? renderer : "").toLower();
+            for (const char* software : {"llvmpipe", "softpipe", "swrast", "swiftshader"})
+                if (name.contains(QLatin1String(software))) samples = 0;
+            probe.doneCurrent();
+        }
+    }
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setSamples(samples);
+    QSurfaceFormat::setDefaultFormat(format);
+    return samples;
+}
+
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
     format.setVersion(3, 3);
@@ -217,9 +293,23 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     format.setDepthBufferSize(24);
     if (format.samples() < 0) format.setSamples(QSurfaceFormat::defaultFormat().samples());
     setFormat(format);
+    // format() reports the context's format once it exists, whose samples are not the FBO's.
+    mSamples = format.samples();
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(160, 120);
+    mSharpTimer = new QTimer(this);
+    mSharpTimer->setSingleShot(true);
+    mSharpTimer->setInterval(kSharpAfterMs);
+    connect(mSharpTimer, &QTimer::timeout, this, [this] {
+        mSharpNext = true;
+        update();
+    });
+    mLod = new ViewLod(this);
+    connect(mLod, &ViewLod::levelsReady, this, [this] {
+        mTreesDirty = true;
+        update();
+    });
 }
 
 Viewport::~Viewport() {
@@ -294,12 +384,26 @@ void Viewport::initializeGL() {
     mGlInfo = QStringLiteral("%1, OpenGL %2")
                   .arg(reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
                        reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+    {
+        // A software rasteriser's frame time grows with the pixels drawn; a GPU's hardly does.
+        const QString renderer =
+            QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).toLower();
+        bool software = false;
+        for (const char* name : {"llvmpipe", "softpipe", "swrast", "swiftshader"})
+            software = software || renderer.contains(QLatin1String(name));
+        mMotionScale = software && mSamples <= 1 ? 0.5f : 1.0f;
+        if (qEnvironmentVariableIsSet("SYLVA_MOTION_SCALE"))
+            mMotionScale =
+                std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
+        if (mSamples > 1) mMotionScale = 1.0f; // no blit into a multisampled framebuffer
+    }
     mMeshProgram = buildProgram(kMeshVertexShader, kMeshFragmentShader, mGlError);
     if (mMeshProgram) mLineProgram = buildProgram(kLineVertexShader, kLineFragmentShader, mGlError);
     if (mLineProgram)
         mBackgroundProgram =
             buildProgram(kBackgroundVertexShader, kBackgroundFragmentShader, mGlError);
     if (!mBackgroundProgram) return;
+    if (!mImpostors.initialize(this, mGlError)) return;
 
     glGenVertexArrays(1, &mMeshVao);
     glGenBuffers(1, &mMeshVbo);
@@ -311,26 +415,23 @@ void Viewport::initializeGL() {
     glBindVertexArray(mMeshVao);
     glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
-    // Position, normal, attribute colour (zero unless the view colours by an attribute).
-    constexpr GLsizei kStride = 9 * sizeof(float);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride, nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride,
-                          reinterpret_cast<void*>(3 * sizeof(float)));
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride,
-                          reinterpret_cast<void*>(6 * sizeof(float)));
+    // Position, normal, attribute colour (zero unless the view colours by an attribute), uv,
+    // occlusion.
+    setMeshAttributes();
 
-    glBindVertexArray(mGridVao);
-    glBindBuffer(GL_ARRAY_BUFFER, mGridVbo);
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
-                          reinterpret_cast<void*>(3 * sizeof(float)));
+    glGenVertexArrays(1, &mOverlayVao);
+    glGenBuffers(1, &mOverlayVbo);
+    for (const auto& [vao, vbo] :
+         {std::pair{mGridVao, mGridVbo}, std::pair{mOverlayVao, mOverlayVbo}}) {
+        glBindVertexArray(vao);
+        glBindBuffer(GL_ARRAY_BUFFER, vbo);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                              reinterpret_cast<void*>(3 * sizeof(float)));
+    }
     glBindVertexArray(0);
-
     mGlReady = true;
     mMeshDirty = true;
     mTreesDirty = true;
@@ -339,6 +440,11 @@ void Viewport::initializeGL() {
 
 void Viewport::releaseGl() {
     releaseTreeBuffers();
+    releaseReducedTarget();
+    glDeleteVertexArrays(1, &mOverlayVao);
+    glDeleteBuffers(1, &mOverlayVbo);
+    mOverlayVao = mOverlayVbo = 0;
+    mImpostors.release();
     glDeleteVertexArrays(1, &mMeshVao);
     glDeleteBuffers(1, &mMeshVbo);
     glDeleteBuffers(1, &mMeshIbo);
@@ -346,6 +452,9 @@ void Viewport::releaseGl() {
     glDeleteBuffers(1, &mGridVbo);
     glDeleteVertexArrays(1, &mEmptyVao);
     mMeshVao = mMeshVbo = mMeshIbo = mGridVao = mGridVbo = mEmptyVao = 0;
+    for (const auto& [path, id] : mTextures)
+        if (id) glDeleteTextures(1, &id);
+    mTextures.clear();
     mMeshProgram.reset();
     mLineProgram.reset();
     mBackgroundProgram.reset();
@@ -392,11 +501,74 @@ void Viewport::uploadMesh() {
     glBindVertexArray(0);
 
     mRanges = rangesOf(m);
+    bindTextures(m, mRanges);
+}
+
+void Viewport::setMeshAttributes() {
+    constexpr GLsizei kStride = kVertexFloats * sizeof(float);
+    const GLint sizes[] = {3, 3, 3, 2, 1};
+    std::uintptr_t offset = 0;
+    for (GLuint a = 0; a < 5; ++a) {
+        glEnableVertexAttribArray(a);
+        glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, kStride,
+                              reinterpret_cast<void*>(offset * sizeof(float)));
+        offset += std::uintptr_t(sizes[a]);
+    }
+}
+
+void Viewport::bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges) {
+    // rangesOf() keeps the submeshes' order, skipping those that start past the indices.
+    std::size_t r = 0;
+    const auto total = static_cast<std::uint32_t>(m.indices.size());
+    for (const mesh::Submesh& s : m.submeshes) {
+        if (s.firstIndex >= total) continue;
+        if (r >= ranges.size()) break;
+        ranges[r].texture = textureFor(s.material, s.texture);
+        ranges[r].alphaTest = s.material == "leaf" && ranges[r].texture != 0;
+        ++r;
+    }
+    if (m.submeshes.empty() && !ranges.empty()) ranges[0].texture = textureFor("bark", {});
+}
+
+GLuint Viewport::textureFor(const std::string& material, const std::string& file) {
+    std::string path = file;
+    if (path.empty()) {
+        // Sylva's shipped textures for the two materials it makes; nothing for the rest.
+        if (material != "bark" && material != "leaf") return 0;
+        const std::filesystem::path dir = exporter::resourcesDir();
+        if (dir.empty()) return 0;
+        path = (dir / "textures" / (material + ".png")).string();
+    }
+    if (auto it = mTextures.find(path); it != mTextures.end()) return it->second;
+    GLuint id = 0;
+    QImage image(QString::fromStdString(path));
+    if (!image.isNull()) {
+        // OpenGL's first row is v = 0, the image's bottom (a leaf's stem).
+        image = image.convertToFormat(QImage::Format_RGBA8888).mirrored();
+        glGenTextures(1, &id);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
+                     GL_UNSIGNED_BYTE, image.constBits());
+        glGenerateMipmap(GL_TEXTURE_2D);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        const GLint wrap = material == "leaf" ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    mTextures.emplace(path, id); // a file that cannot be read is not tried again
+    return id;
 }
 
 void Viewport::setTrees(std::vector<ViewTree> trees, bool frame) {
     mTrees = std::move(trees);
     mTreesDirty = true;
+    std::vector<std::pair<std::shared_ptr<const mesh::Mesh>, TreeLodSource>> sources;
+    sources.reserve(mTrees.size());
+    for (const ViewTree& t : mTrees)
+        sources.emplace_back(t.mesh, t.lod);
+    mLod->setTrees(sources);
     updateBounds();
     if (frame) {
         applyFrame();
@@ -414,6 +586,7 @@ void Viewport::setPreviewTrees(std::vector<ViewTree> trees) {
 void Viewport::setTreeTransform(std::size_t index, const glm::mat4& transform) {
     if (index >= mTrees.size()) return;
     mTrees[index].transform = transform;
+    mTransformsMoved = true;
     if (index < mTreeBounds.size() && mTrees[index].mesh)
         mTreeBounds[index] = worldBounds(*mTrees[index].mesh, transform);
     update();
@@ -498,47 +671,47 @@ void Viewport::updateBounds() {
 void Viewport::syncTreeBuffers() {
     mTreesDirty = false;
     std::map<const mesh::Mesh*, GpuMesh> kept;
-    std::vector<const ViewTree*> all;
+    std::vector<std::shared_ptr<const mesh::Mesh>> all;
     for (const ViewTree& t : mTrees)
-        all.push_back(&t);
+        all.push_back(t.mesh);
     for (const ViewTree& t : mPreview)
-        all.push_back(&t);
-    for (const ViewTree* tp : all) {
-        const ViewTree& t = *tp;
-        if (!t.mesh || t.mesh->empty() || kept.count(t.mesh.get())) continue;
-        auto old = mGpuTrees.find(t.mesh.get());
+        all.push_back(t.mesh);
+    const std::size_t treeMeshes = all.size();
+    for (std::shared_ptr<const mesh::Mesh>& level : mLod->allLevelMeshes())
+        all.push_back(std::move(level));
+    for (std::size_t k = 0; k < all.size(); ++k) {
+        const std::shared_ptr<const mesh::Mesh>& treeMesh = all[k];
+        if (!treeMesh || treeMesh->empty() || kept.count(treeMesh.get())) continue;
+        auto old = mGpuTrees.find(treeMesh.get());
         if (old != mGpuTrees.end()) {
             kept.insert(mGpuTrees.extract(old));
             continue;
         }
-        if (!indicesInRange(*t.mesh)) continue;
+        if (!indicesInRange(*treeMesh)) continue;
         GpuMesh gpu;
-        gpu.mesh = t.mesh;
-        gpu.ranges = rangesOf(*t.mesh);
+        gpu.mesh = treeMesh;
+        gpu.ranges = rangesOf(*treeMesh);
+        bindTextures(*treeMesh, gpu.ranges);
         glGenVertexArrays(1, &gpu.vao);
         glGenBuffers(1, &gpu.vbo);
         glGenBuffers(1, &gpu.ibo);
         glBindVertexArray(gpu.vao);
         glBindBuffer(GL_ARRAY_BUFFER, gpu.vbo);
-        const std::vector<float> data = interleave(*t.mesh, {});
+        const std::vector<float> data = interleave(*treeMesh, {});
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
                      GL_STATIC_DRAW);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.ibo);
         glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                     GLsizeiptr(t.mesh->indices.size() * sizeof(std::uint32_t)),
-                     t.mesh->indices.data(), GL_STATIC_DRAW);
-        constexpr GLsizei kStride = 9 * sizeof(float);
-        for (GLuint a = 0; a < 3; ++a) {
-            glEnableVertexAttribArray(a);
-            glVertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, kStride,
-                                  reinterpret_cast<void*>(std::uintptr_t(3 * a) * sizeof(float)));
-        }
+                     GLsizeiptr(treeMesh->indices.size() * sizeof(std::uint32_t)),
+                     treeMesh->indices.data(), GL_STATIC_DRAW);
+        setMeshAttributes();
         glBindVertexArray(0);
-        ++mUploads;
-        kept.emplace(t.mesh.get(), std::move(gpu));
+        ++(k < treeMeshes ? mUploads : mLevelUploads);
+        kept.emplace(treeMesh.get(), std::move(gpu));
     }
     releaseTreeBuffers(); // those no tree draws any more
     mGpuTrees = std::move(kept);
+    mImpostors.retain([this](const mesh::Mesh* m) { return mGpuTrees.count(m) > 0; });
 }
 
 void Viewport::releaseTreeBuffers() {
@@ -609,6 +782,28 @@ void Viewport::paintGL() {
     if (mTreesDirty) syncTreeBuffers();
     if (mGridExtent <= 0.0f) buildGrid();
 
+    const glm::mat4 viewProj = mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix();
+    // A key light that follows the camera (above, to the left, from the front) keeps the tree
+    // readable from every side.
+    const glm::vec3 light =
+        glm::normalize(-0.5f * mCamera.forward() + 0.8f * mCamera.up() - 0.6f * mCamera.right());
+    const std::vector<TreeDraw> order = treesToDraw(viewProj);
+    bakeImpostors(order);
+
+    // While the view moves, a software renderer draws fewer pixels (motionScale()); the sharp
+    // frame follows when it rests.
+    const bool moving = viewProj != mLastViewProj || mTransformsMoved;
+    mLastViewProj = viewProj;
+    mTransformsMoved = false;
+    const QSize full(int(std::lround(width() * devicePixelRatioF())),
+                     int(std::lround(height() * devicePixelRatioF())));
+    mLastReduced = false;
+    if (mMotionScale < 1.0f && moving && !mSharpNext) {
+        mLastReduced = bindReducedTarget(full);
+        mSharpTimer->start();
+    }
+    mSharpNext = false;
+
     glClearColor(kBackgroundBottom.x, kBackgroundBottom.y, kBackgroundBottom.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
@@ -620,7 +815,6 @@ void Viewport::paintGL() {
     glBindVertexArray(mEmptyVao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
-    const glm::mat4 viewProj = mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
 
@@ -637,66 +831,235 @@ void Viewport::paintGL() {
     }
 
     glDepthMask(GL_TRUE);
+    mDrawnTriangles = 0;
+    mDrawnTrees = 0;
+    mDrawnPerLevel.fill(0);
     if (!mRanges.empty() || !mGpuTrees.empty()) {
         mMeshProgram->bind();
         setUniform(*mMeshProgram, "uModel", glm::mat4(1.0f));
         mMeshProgram->setUniformValue("uHighlight", 0.0f);
         setUniform(*mMeshProgram, "uViewProj", viewProj);
         setUniform(*mMeshProgram, "uEye", mCamera.eye());
-        // A key light that follows the camera (above, to the left, from the front) keeps the
-        // tree readable from every side.
-        const glm::vec3 light = glm::normalize(-0.5f * mCamera.forward() + 0.8f * mCamera.up() -
-                                               0.6f * mCamera.right());
         setUniform(*mMeshProgram, "uLightDir", light);
         mMeshProgram->setUniformValue("uVertexColor", mUseVertexColors);
+        mMeshProgram->setUniformValue("uTexture", 0);
+        glActiveTexture(GL_TEXTURE0);
         glBindVertexArray(mMeshVao);
-        for (const DrawRange& r : mRanges) {
-            setUniform(*mMeshProgram, "uAlbedo", r.color);
-            glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                           reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
-        }
+        drawRanges(mRanges);
+        for (const DrawRange& r : mRanges)
+            mDrawnTriangles += r.indexCount / 3;
         mMeshProgram->setUniformValue("uVertexColor", false);
-        auto drawTree = [&](const ViewTree& t, float highlight) {
-            auto gpu = mGpuTrees.find(t.mesh.get());
-            if (gpu == mGpuTrees.end()) return;
-            setUniform(*mMeshProgram, "uModel", t.transform);
-            mMeshProgram->setUniformValue("uHighlight", highlight);
-            glBindVertexArray(gpu->second.vao);
-            for (const DrawRange& r : gpu->second.ranges) {
-                setUniform(*mMeshProgram, "uAlbedo", r.color);
-                glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                               reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
-            }
-        };
-        // Frustum culling: a tree whose world box lies outside one of the six planes is not
-        // drawn (a forest seen from inside draws only what is in front of the camera).
-        glm::vec4 planes[6];
-        const glm::mat4 m = glm::transpose(viewProj);
-        for (int k = 0; k < 3; ++k) {
-            planes[2 * k] = m[3] + m[k];
-            planes[2 * k + 1] = m[3] - m[k];
-        }
-        auto visible = [&planes](const Bounds& b) {
-            if (b.empty()) return false;
-            for (const glm::vec4& p : planes) {
-                const glm::vec3 far(p.x >= 0 ? b.hi.x : b.lo.x, p.y >= 0 ? b.hi.y : b.lo.y,
-                                    p.z >= 0 ? b.hi.z : b.lo.z);
-                if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
-            }
-            return true;
-        };
-        mDrawnTrees = 0;
-        for (std::size_t i = 0; i < mTrees.size(); ++i) {
-            const ViewTree& t = mTrees[i];
-            if (!t.mesh || (t.id && mHidden.contains(t.id))) continue;
-            if (i < mTreeBounds.size() && !visible(mTreeBounds[i])) continue;
+        // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
+        std::vector<const TreeDraw*> cards;
+        for (const TreeDraw& d : order) {
+            const ViewTree& t = mTrees[d.index];
+            const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
             ++mDrawnTrees;
-            drawTree(t, t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
+            if (d.level == ViewLod::kImpostorLevel && mImpostors.has(t.mesh.get())) {
+                cards.push_back(&d);
+                continue;
+            }
+            int used = 0;
+            const mesh::Mesh* drawn = mLod->meshFor(t.mesh.get(), d.level, &used);
+            ++mDrawnPerLevel[std::size_t(used)];
+            drawTreeMesh(*drawn, t.transform, highlight);
         }
         for (const ViewTree& t : mPreview)
-            if (t.mesh) drawTree(t, 0.25f);
+            if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f);
+        if (!cards.empty()) {
+            mImpostors.begin(viewProj);
+            for (const TreeDraw* d : cards) {
+                const ViewTree& t = mTrees[d->index];
+                mImpostors.draw(t.mesh.get(), t.transform,
+                                t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
+                ++mDrawnPerLevel[ViewLod::kImpostorLevel];
+                mDrawnTriangles += 4;
+            }
+            mImpostors.end();
+        }
+    }
+    drawOverlay(viewProj);
+    glBindVertexArray(0);
+    if (mLastReduced) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, mLowFbo);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
+        glBlitFramebuffer(0, 0, mLowSize.width(), mLowSize.height(), 0, 0, full.width(),
+                          full.height(), GL_COLOR_BUFFER_BIT, GL_LINEAR);
+        glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+        glViewport(0, 0, full.width(), full.height());
+    }
+}
+
+bool Viewport::bindReducedTarget(const QSize& full) {
+    const QSize size(std::max(1, int(std::lround(float(full.width()) * mMotionScale))),
+                     std::max(1, int(std::lround(float(full.height()) * mMotionScale))));
+    if (!mLowFbo || size != mLowSize) {
+        releaseReducedTarget();
+        glGenFramebuffers(1, &mLowFbo);
+        glGenRenderbuffers(1, &mLowColor);
+        glGenRenderbuffers(1, &mLowDepth);
+        glBindRenderbuffer(GL_RENDERBUFFER, mLowColor);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.width(), size.height());
+        glBindRenderbuffer(GL_RENDERBUFFER, mLowDepth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.width(), size.height());
+        glBindFramebuffer(GL_FRAMEBUFFER, mLowFbo);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, mLowColor);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, mLowDepth);
+        mLowSize = size;
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            releaseReducedTarget();
+            glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+            mMotionScale = 1.0f; // not again
+            return false;
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, mLowFbo);
+    glViewport(0, 0, mLowSize.width(), mLowSize.height());
+    return true;
+}
+
+void Viewport::releaseReducedTarget() {
+    if (mLowFbo) glDeleteFramebuffers(1, &mLowFbo);
+    if (mLowColor) glDeleteRenderbuffers(1, &mLowColor);
+    if (mLowDepth) glDeleteRenderbuffers(1, &mLowDepth);
+    mLowFbo = mLowColor = mLowDepth = 0;
+    mLowSize = {};
+}
+
+QImage Viewport::grabSharp() {
+    mSharpNext = true;
+    return grabFramebuffer();
+}
+
+void Viewport::drawOverlay(const glm::mat4& viewProj) {
+    if (!mOverlay) return;
+    const std::vector<OverlayLine> lines = mOverlay();
+    if (lines.empty()) return;
+    std::vector<float> data;
+    data.reserve(lines.size() * 14);
+    for (const OverlayLine& l : lines)
+        for (const glm::vec3& p : {l.a, l.b})
+            data.insert(data.end(), {p.x, p.y, p.z, l.color.x, l.color.y, l.color.z, l.color.w});
+    // Handles stay visible through the trees and the ground they stand in.
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    mLineProgram->bind();
+    setUniform(*mLineProgram, "uViewProj", viewProj);
+    setUniform(*mLineProgram, "uCenter", glm::vec3(0.0f));
+    mLineProgram->setUniformValue("uExtent", 1e30f); // no fading
+    glBindVertexArray(mOverlayVao);
+    glBindBuffer(GL_ARRAY_BUFFER, mOverlayVbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
+                 GL_STREAM_DRAW);
+    glDrawArrays(GL_LINES, 0, GLsizei(data.size() / 7));
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight) {
+    auto gpu = mGpuTrees.find(&m);
+    if (gpu == mGpuTrees.end()) return;
+    setUniform(*mMeshProgram, "uModel", transform);
+    mMeshProgram->setUniformValue("uHighlight", highlight);
+    glBindVertexArray(gpu->second.vao);
+    drawRanges(gpu->second.ranges);
+    for (const DrawRange& r : gpu->second.ranges)
+        mDrawnTriangles += r.indexCount / 3;
+}
+
+std::vector<Viewport::TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
+    // Frustum culling: a tree whose world box lies outside one of the six planes is not drawn
+    // (a forest seen from inside draws only what is in front of the camera).
+    glm::vec4 planes[6];
+    const glm::mat4 m = glm::transpose(viewProj);
+    for (int k = 0; k < 3; ++k) {
+        planes[2 * k] = m[3] + m[k];
+        planes[2 * k + 1] = m[3] - m[k];
+    }
+    auto visible = [&planes](const Bounds& b) {
+        if (b.empty()) return false;
+        for (const glm::vec4& p : planes) {
+            const glm::vec3 far(p.x >= 0 ? b.hi.x : b.lo.x, p.y >= 0 ? b.hi.y : b.lo.y,
+                                p.z >= 0 ? b.hi.z : b.lo.z);
+            if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
+        }
+        return true;
+    };
+    // The level of detail of a tree follows its height on screen (ui/viewport/viewlod.h);
+    // picking keeps the full mesh.
+    const glm::vec3 eye = mCamera.eye();
+    const double viewportPx = double(height()) * devicePixelRatioF();
+    std::vector<TreeDraw> order;
+    order.reserve(mTrees.size());
+    for (std::size_t i = 0; i < mTrees.size(); ++i) {
+        const ViewTree& t = mTrees[i];
+        if (!t.mesh || (t.id && mHidden.contains(t.id))) continue;
+        TreeDraw d;
+        d.index = i;
+        if (i < mTreeBounds.size()) {
+            const Bounds& b = mTreeBounds[i];
+            if (!visible(b)) continue;
+            d.distance = glm::length(0.5f * (b.lo + b.hi) - eye);
+            if (mLod->isEnabled())
+                d.level = ViewLod::levelFor(
+                    ViewLod::equivalentHeights(double(d.distance), double(b.hi.y - b.lo.y),
+                                               double(mCamera.fovY()), viewportPx));
+        }
+        order.push_back(d);
+    }
+    std::sort(order.begin(), order.end(), [](const TreeDraw& a, const TreeDraw& b) {
+        return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
+    });
+    return order;
+}
+
+void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
+    // A few pictures a frame, so that a forest coming into view does not stall one frame; the
+    // trees still waiting are drawn with their coarsest mesh meanwhile.
+    constexpr std::size_t kBakesPerFrame = 24;
+    std::size_t baked = 0;
+    mImpostorsWanted = 0;
+    const Impostors::DrawMesh draw = [this](const mesh::Mesh& m, const glm::mat4& viewProj,
+                                            const glm::vec3& eye, const glm::vec3& light) {
+        mMeshProgram->bind();
+        setUniform(*mMeshProgram, "uViewProj", viewProj);
+        setUniform(*mMeshProgram, "uEye", eye);
+        setUniform(*mMeshProgram, "uLightDir", light);
+        mMeshProgram->setUniformValue("uVertexColor", false);
+        mMeshProgram->setUniformValue("uTexture", 0);
+        glActiveTexture(GL_TEXTURE0);
+        const std::size_t triangles = mDrawnTriangles;
+        drawTreeMesh(m, glm::mat4(1.0f), 0.0f);
+        mDrawnTriangles = triangles;
+    };
+    const glm::ivec4 viewport(0, 0, int(std::lround(width() * devicePixelRatioF())),
+                              int(std::lround(height() * devicePixelRatioF())));
+    for (const TreeDraw& d : order) {
+        const ViewTree& t = mTrees[d.index];
+        if (d.level != ViewLod::kImpostorLevel || mImpostors.has(t.mesh.get())) continue;
+        if (baked == kBakesPerFrame) {
+            ++mImpostorsWanted;
+            continue;
+        }
+        mImpostors.bake(t.mesh, draw, defaultFramebufferObject(), viewport);
+        ++baked;
     }
     glBindVertexArray(0);
+    if (mImpostorsWanted > 0) update(); // the next frame takes the next ones
+}
+
+void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
+    for (const DrawRange& r : ranges) {
+        setUniform(*mMeshProgram, "uAlbedo", r.color);
+        mMeshProgram->setUniformValue("uTextured", r.texture != 0);
+        mMeshProgram->setUniformValue("uAlphaTest", r.alphaTest);
+        glBindTexture(GL_TEXTURE_2D, r.texture);
+        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                       reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

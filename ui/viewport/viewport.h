@@ -1,11 +1,14 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -14,10 +17,13 @@
 
 #include <glm/glm.hpp>
 
+#include "ui/viewport/impostors.h"
 #include "ui/viewport/orbitcamera.h"
 #include "ui/viewport/picking.h"
+#include "ui/viewport/viewlod.h"
 
 class QOpenGLShaderProgram;
+class QTimer;
 
 namespace sylva::mesh {
 struct Mesh;
@@ -31,6 +37,14 @@ struct ViewTree {
     std::uint32_t id = 0; ///< the document's tree id; 0 for trees scattered by a domain
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};
+    /// What coarser levels are made from when the tree is small on screen (empty: none).
+    TreeLodSource lod;
+};
+
+/// A line a tool draws over the scene (its handles), world space, not hidden by the scene.
+struct OverlayLine {
+    glm::vec3 a{0.0f}, b{0.0f};
+    glm::vec4 color{1.0f};
 };
 
 /// What a tool (ui/viewport/toolcontroller.h) gets from the viewport. press() returns true
@@ -54,11 +68,13 @@ class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
 public:
-    /// A run of triangles drawn in one material colour.
+    /// A run of triangles drawn in one material: its colour, or its texture when it has one.
     struct DrawRange {
         glm::vec3 color;
         std::uint32_t firstIndex = 0;
         std::uint32_t indexCount = 0;
+        GLuint texture = 0;     ///< 0: the plain colour
+        bool alphaTest = false; ///< a leaf card cut out by the texture's alpha
     };
 
     /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
@@ -67,6 +83,16 @@ public:
     /// Requests an OpenGL 3.3 core profile with depth and 4x multisampling for every context.
     /// Call before constructing QApplication.
     static void installDefaultSurfaceFormat();
+    /// Edit ▸ Preferences' multisampling (QSettings "viewport/samples"): kAutoSamples, 0, 2, 4
+    /// or 8 samples a pixel. Automatic is 4 on a GPU and none on a software renderer (Mesa
+    /// llvmpipe draws a frame 2-3 times faster without it, docs/performance.md).
+    static constexpr int kAutoSamples = -1;
+    static int samplesPreference();
+    static void setSamplesPreference(int samples);
+    /// Puts the preference (or SYLVA_MSAA, which wins) into the default surface format that
+    /// new viewports take; automatic asks the driver which renderer it is. Call after
+    /// QApplication is made and named, before the first viewport. Returns the samples set.
+    static int applySamplesPreference();
 
     explicit Viewport(QWidget* parent = nullptr);
     ~Viewport() override;
@@ -110,11 +136,28 @@ public:
     void frameBox(const glm::vec3& lo, const glm::vec3& hi);
 
     void setTool(ViewportTool* tool) { mTool = tool; }
+    /// Lines drawn over the scene at every paint (a tool's handles), asked for at each paint.
+    void setOverlay(std::function<std::vector<OverlayLine>()> provider) {
+        mOverlay = std::move(provider);
+        update();
+    }
     const QSet<std::uint32_t>& highlightedTrees() const { return mHighlighted; }
     /// Meshes uploaded to the GPU since construction (for tests: unchanged trees are not).
     std::size_t uploads() const { return mUploads; }
+    /// Coarser levels of detail uploaded (ui/viewport/viewlod.h), not counted in uploads().
+    std::size_t levelUploads() const { return mLevelUploads; }
     /// Trees drawn in the last frame: those whose box is outside the view are skipped.
     std::size_t drawnTrees() const { return mDrawnTrees; }
+    /// Triangles drawn in the last frame (trees at their level of detail, obstacles, terrain).
+    std::size_t drawnTriangles() const { return mDrawnTriangles; }
+    /// Trees drawn at each level of detail in the last frame (0 = full).
+    const std::array<std::size_t, ViewLod::kLevels>& drawnPerLevel() const {
+        return mDrawnPerLevel;
+    }
+    /// The distance level of detail (ui/viewport/viewlod.h).
+    ViewLod& lod() { return *mLod; }
+    /// Trees whose coarser levels or impostor are still to be made (0: the view is final).
+    std::size_t lodPending() const { return mLod->pending() + mImpostorsWanted; }
 
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
@@ -129,6 +172,17 @@ public:
 
     void setGridVisible(bool visible);
     bool isGridVisible() const { return mGridVisible; }
+
+    /// While the view moves (the camera or a dragged tree changed since the last frame) a
+    /// software renderer draws the scene at this fraction of the resolution and scales it up;
+    /// a sharp frame follows when the view rests (kSharpAfterMs). 1 on a graphics card, with
+    /// multisampling, or with SYLVA_MOTION_SCALE=1 (0.25 to 1).
+    float motionScale() const { return mMotionScale; }
+    static constexpr int kSharpAfterMs = 250;
+    /// The viewport's image at full resolution (for screenshots), whether the view moves.
+    QImage grabSharp();
+    /// Whether the last frame was drawn at the reduced resolution.
+    bool lastFrameReduced() const { return mLastReduced; }
 
     /// Renderer and version as reported by the driver, empty before initializeGL().
     QString glInfo() const { return mGlInfo; }
@@ -157,6 +211,13 @@ private:
     void releaseGl();
     void applyFrame();
     void uploadMesh();
+    void setMeshAttributes();
+    /// The textures of \p m's submeshes on \p ranges (rangesOf's order).
+    void bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges);
+    /// The GL texture of \p file (Sylva's shipped one for \p material when empty), loaded once;
+    /// 0 when there is none or it cannot be read.
+    GLuint textureFor(const std::string& material, const std::string& file);
+    void drawRanges(const std::vector<DrawRange>& ranges);
     void buildGrid();
     float aspect() const;
 
@@ -193,6 +254,7 @@ private:
     float mGridExtent = 0.0f;
     glm::vec3 mGridCenter{0.0f};
     std::vector<DrawRange> mRanges;
+    std::map<std::string, GLuint> mTextures; ///< by file path; 0 for files that did not load
 
     /// One tree mesh on the GPU, kept while some tree draws it.
     struct GpuMesh {
@@ -202,11 +264,23 @@ private:
     };
     void syncTreeBuffers();
     void releaseTreeBuffers();
+    /// A tree to draw this frame: its index in mTrees, distance and level of detail.
+    struct TreeDraw {
+        std::size_t index = 0;
+        float distance = 0.0f;
+        int level = 0;
+    };
+    std::vector<TreeDraw> treesToDraw(const glm::mat4& viewProj) const;
+    void bakeImpostors(const std::vector<TreeDraw>& order);
+    void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight);
     void updateBounds();
     std::vector<ViewTree> mTrees;
     std::vector<ViewTree> mPreview;
     std::vector<Bounds> mTreeBounds;
     ViewportTool* mTool = nullptr;
+    std::function<std::vector<OverlayLine>()> mOverlay;
+    GLuint mOverlayVao = 0, mOverlayVbo = 0;
+    void drawOverlay(const glm::mat4& viewProj);
     bool mToolDrag = false;
     QPoint mPressPos;
     bool mMovedSincePress = false;
@@ -214,7 +288,25 @@ private:
     bool mTreesDirty = false;
     QSet<std::uint32_t> mHighlighted, mHidden;
     std::size_t mUploads = 0;
+    std::size_t mLevelUploads = 0;
+    // Reduced resolution while the view moves (motionScale()).
+    float mMotionScale = 1.0f;
+    int mSamples = 0; ///< multisampling of the widget's framebuffer, as requested
+    bool mLastReduced = false;
+    bool mSharpNext = false;
+    glm::mat4 mLastViewProj{0.0f};
+    bool mTransformsMoved = false;
+    QTimer* mSharpTimer = nullptr;
+    GLuint mLowFbo = 0, mLowColor = 0, mLowDepth = 0;
+    QSize mLowSize;
+    bool bindReducedTarget(const QSize& full);
+    void releaseReducedTarget();
     std::size_t mDrawnTrees = 0;
+    std::size_t mDrawnTriangles = 0;
+    std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
+    ViewLod* mLod = nullptr; ///< a child
+    Impostors mImpostors;
+    std::size_t mImpostorsWanted = 0; ///< at the last paint
 };
 
 } // namespace sylva::ui

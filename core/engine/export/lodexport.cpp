@@ -34,7 +34,9 @@ LodChainFiles writeLodChain(const std::filesystem::path& dir, const std::string&
     if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());
 
     LodChainFiles files;
-    const std::vector<Material> materials = defaultMaterials();
+    std::vector<Material> materials = defaultMaterials();
+    for (const mesh::LodChainLevel& level : chain)
+        addMaterialsOf(level.mesh, materials);
     for (std::size_t i = 0; i < chain.size(); ++i) {
         LodFileLevel level;
         level.name = base + "_LOD" + std::to_string(i);
@@ -55,6 +57,7 @@ LodChainFiles writeLodChain(const std::filesystem::path& dir, const std::string&
     if (options.glb) {
         SceneDesc scene;
         scene.materials = materials;
+        scene.textureSource = options.textureSource;
         for (std::size_t i = 0; i < chain.size(); ++i) {
             scene.meshes.push_back({files.levels[i].name, &chain[i].mesh});
             SceneInstance node;

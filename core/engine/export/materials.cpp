@@ -4,6 +4,9 @@
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
+#include <algorithm>
+#include <cctype>
+
 namespace sylva::exporter {
 
 std::vector<Material> defaultMaterials(const std::string& textureFolder) {
@@ -12,6 +15,44 @@ std::vector<Material> defaultMaterials(const std::string& textureFolder) {
         {"bark", {0.36f, 0.27f, 0.20f}, prefix + "bark.png", false, false},
         {"leaf", {0.22f, 0.45f, 0.14f}, prefix + "leaf.png", true, true},
     };
+}
+
+std::string materialName(const mesh::Submesh& submesh) {
+    if (submesh.texture.empty()) return submesh.material;
+    const std::string stem = std::filesystem::path(submesh.texture).stem().string();
+    std::string name;
+    for (char c : stem)
+        name += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+    return name.empty() ? submesh.material : name;
+}
+
+void addMaterialsOf(const mesh::Mesh& mesh, std::vector<Material>& materials,
+                    const std::string& textureFolder) {
+    const std::string prefix = textureFolder.empty() ? std::string() : textureFolder + "/";
+    for (const mesh::Submesh& s : mesh.submeshes) {
+        if (s.texture.empty()) continue;
+        const std::string name = materialName(s);
+        if (std::any_of(materials.begin(), materials.end(),
+                        [&](const Material& m) { return m.name == name; }))
+            continue;
+        const bool leaf = s.material == "leaf";
+        Material m;
+        m.name = name;
+        m.diffuse = leaf ? glm::vec3(0.22f, 0.45f, 0.14f) : glm::vec3(0.36f, 0.27f, 0.20f);
+        m.diffuseTexture = prefix + std::filesystem::path(s.texture).filename().string();
+        m.twoSided = leaf;
+        m.alphaMask = leaf;
+        m.sourceFile = s.texture;
+        materials.push_back(std::move(m));
+    }
+}
+
+std::filesystem::path textureSourceOf(const Material& material,
+                                      const std::filesystem::path& shippedDir) {
+    if (material.diffuseTexture.empty()) return {};
+    if (!material.sourceFile.empty()) return material.sourceFile;
+    if (shippedDir.empty()) return {};
+    return shippedDir / std::filesystem::path(material.diffuseTexture).filename();
 }
 
 namespace {
@@ -51,8 +92,8 @@ std::size_t copyTextures(const std::vector<Material>& materials,
     for (const Material& m : materials) {
         if (m.diffuseTexture.empty()) continue;
         const std::filesystem::path rel(m.diffuseTexture);
-        const std::filesystem::path from = sourceDir / rel.filename();
-        if (!std::filesystem::exists(from)) continue;
+        const std::filesystem::path from = textureSourceOf(m, sourceDir);
+        if (from.empty() || !std::filesystem::exists(from)) continue;
         const std::filesystem::path to = exportDir / rel;
         std::error_code ec;
         std::filesystem::create_directories(to.parent_path(), ec);

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/mesh/mesh.h"
+
 namespace sylva::exporter {
 
 /// A material as the exporters write it (OBJ's MTL, glTF/FBX through Assimp).
@@ -15,11 +17,29 @@ struct Material {
     std::string diffuseTexture; ///< path relative to the exported file, "" for none
     bool twoSided = false;      ///< leaf cards are seen from both sides
     bool alphaMask = false;     ///< cut out by the texture's alpha (leaf silhouettes)
+    /// Where the texture is read from (absolute, or relative to the working folder) to copy or
+    /// embed it; empty: Sylva's shipped textures folder, by diffuseTexture's file name.
+    std::string sourceFile{};
 };
 
 /// Sylva's bark and leaf materials, their textures under \p textureFolder (relative to the
 /// exported file; the PNGs ship in resources/textures/).
 std::vector<Material> defaultMaterials(const std::string& textureFolder = "textures");
+
+/// The material name exporters give \p submesh: its material ("bark", "leaf") when it has no
+/// texture of its own, else the texture's file stem ("english-oak_bark").
+std::string materialName(const mesh::Submesh& submesh);
+
+/// Appends to \p materials (if not there yet, by name) one material per textured submesh of
+/// \p mesh: the kind's colour and flags (a leaf is two-sided and alpha-masked), its texture as
+/// \p textureFolder/<file name>, read from Submesh::texture.
+void addMaterialsOf(const mesh::Mesh& mesh, std::vector<Material>& materials,
+                    const std::string& textureFolder = "textures");
+
+/// The file a material's texture is read from: sourceFile, else \p shippedDir / the file name
+/// of diffuseTexture; empty when the material has no texture.
+std::filesystem::path textureSourceOf(const Material& material,
+                                      const std::filesystem::path& shippedDir);
 
 /// MTL text: one `newmtl` per material with Kd, map_Kd and (for alphaMask) map_d.
 std::string formatMtl(const std::vector<Material>& materials);
@@ -27,7 +47,7 @@ std::string formatMtl(const std::vector<Material>& materials);
 /// Writes formatMtl() atomically. \throw IoError
 void writeMtlFile(const std::filesystem::path& path, const std::vector<Material>& materials);
 
-/// Copies every material texture from \p sourceDir (looked up by file name) into
+/// Copies every material texture (textureSourceOf, \p sourceDir being the shipped textures) into
 /// \p exportDir / texture path, creating folders. Missing sources are skipped; returns how many
 /// files were copied. \throw IoError when a copy fails.
 std::size_t copyTextures(const std::vector<Material>& materials,

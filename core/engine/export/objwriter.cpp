@@ -1,5 +1,7 @@
 #include "engine/export/objwriter.h"
 
+#include "engine/export/materials.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -261,7 +263,7 @@ void formatTask(TextBuffer& w, const Task& t, const ObjOptions& o) {
                 switches.emplace_back(0, "bark");
             else
                 for (const mesh::Submesh& s : m.submeshes)
-                    switches.emplace_back(s.firstIndex / 3, s.material);
+                    switches.emplace_back(s.firstIndex / 3, materialName(s));
         }
         // The text of a corner ("v/vt/vn") depends only on its vertex, and a tube mesh's
         // triangles reuse nearby vertices: corners are formatted once into a small

@@ -1,7 +1,10 @@
 #include "engine/export/sceneexport.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <unordered_map>
@@ -88,7 +91,30 @@ aiMesh* makeMesh(const mesh::Mesh& m, std::uint32_t first, std::uint32_t count,
     return out;
 }
 
-std::unique_ptr<aiScene> buildScene(const SceneDesc& desc) {
+// The texture's bytes as an embedded Assimp texture (compressed: mHeight 0, the PNG as is);
+// nullptr when the file cannot be read (the material then keeps its file reference).
+aiTexture* embeddedTexture(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return nullptr;
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (bytes.empty()) return nullptr;
+    auto* tex = new aiTexture();
+    tex->mWidth = static_cast<unsigned>(bytes.size());
+    tex->mHeight = 0;
+    // The format hint is the extension without its dot, lower case ("png", "jpg").
+    const std::string ext = file.extension().string();
+    std::size_t n = 0;
+    for (std::size_t i = 1; i < ext.size() && n + 1 < HINTMAXTEXTURELEN; ++i)
+        tex->achFormatHint[n++] =
+            static_cast<char>(std::tolower(static_cast<unsigned char>(ext[i])));
+    tex->achFormatHint[n] = '\0';
+    tex->pcData = reinterpret_cast<aiTexel*>(new unsigned char[bytes.size()]);
+    std::memcpy(tex->pcData, bytes.data(), bytes.size());
+    tex->mFilename = aiString(file.filename().string());
+    return tex;
+}
+
+std::unique_ptr<aiScene> buildScene(const SceneDesc& desc, bool embedTextures) {
     auto scene = std::make_unique<aiScene>();
     std::vector<Material> materials = desc.materials;
     std::unordered_map<std::string, unsigned> materialIndex;
@@ -105,13 +131,12 @@ std::unique_ptr<aiScene> buildScene(const SceneDesc& desc) {
             parts.push_back({"bark", 0, static_cast<std::uint32_t>(sm.mesh->indices.size())});
         for (const mesh::Submesh& part : parts) {
             if (part.indexCount == 0) continue;
-            auto it = materialIndex.find(part.material);
+            const std::string name = materialName(part);
+            auto it = materialIndex.find(name);
             if (it == materialIndex.end()) {
                 // A material nobody described still gets a plain entry so nothing is dropped.
-                materials.push_back({part.material, glm::vec3(0.8f), "", false, false});
-                it = materialIndex
-                         .emplace(part.material, static_cast<unsigned>(materials.size() - 1))
-                         .first;
+                materials.push_back({name, glm::vec3(0.8f), "", false, false});
+                it = materialIndex.emplace(name, static_cast<unsigned>(materials.size() - 1)).first;
             }
             meshParts[mi].push_back(static_cast<unsigned>(meshes.size()));
             meshes.push_back(makeMesh(*sm.mesh, part.firstIndex, part.indexCount, it->second,
@@ -121,6 +146,31 @@ std::unique_ptr<aiScene> buildScene(const SceneDesc& desc) {
     scene->mNumMeshes = static_cast<unsigned>(meshes.size());
     scene->mMeshes = new aiMesh*[std::max<std::size_t>(meshes.size(), 1)];
     std::copy(meshes.begin(), meshes.end(), scene->mMeshes);
+
+    if (embedTextures) {
+        // Each texture file once; the materials name it "*<index>" (Assimp's embedded form).
+        std::vector<aiTexture*> textures;
+        std::map<std::string, unsigned> textureIndex;
+        for (Material& m : materials) {
+            const std::filesystem::path file = textureSourceOf(m, desc.textureSource);
+            if (file.empty()) continue;
+            auto found = textureIndex.find(file.string());
+            if (found == textureIndex.end()) {
+                aiTexture* tex = embeddedTexture(file);
+                if (!tex) continue;
+                found = textureIndex.emplace(file.string(), static_cast<unsigned>(textures.size()))
+                            .first;
+                textures.push_back(tex);
+            }
+            m.diffuseTexture = std::to_string(found->second);
+            m.diffuseTexture.insert(m.diffuseTexture.begin(), '*');
+        }
+        scene->mNumTextures = static_cast<unsigned>(textures.size());
+        if (!textures.empty()) {
+            scene->mTextures = new aiTexture*[textures.size()];
+            std::copy(textures.begin(), textures.end(), scene->mTextures);
+        }
+    }
 
     scene->mNumMaterials = static_cast<unsigned>(materials.size());
     scene->mMaterials = new aiMaterial*[std::max<std::size_t>(materials.size(), 1)];
@@ -219,7 +269,9 @@ private:
 } // namespace
 
 void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneFormat format) {
-    const std::unique_ptr<aiScene> scene = buildScene(desc);
+    // A .glb and an .fbx are single files: their textures go inside. A text glTF keeps
+    // references to the textures/ folder beside it.
+    const std::unique_ptr<aiScene> scene = buildScene(desc, format != SceneFormat::Gltf);
     const char* id = format == SceneFormat::Glb        ? "glb2"
                      : format == SceneFormat::Gltf     ? "gltf2"
                      : format == SceneFormat::FbxAscii ? "fbxa"

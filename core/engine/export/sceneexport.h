@@ -32,6 +32,8 @@ struct SceneDesc {
     std::vector<SceneMesh> meshes;
     std::vector<SceneInstance> instances;
     std::vector<Material> materials = defaultMaterials();
+    /// Sylva's shipped textures (bark.png, leaf.png), for materials without a sourceFile.
+    std::filesystem::path textureSource;
 };
 
 enum class SceneFormat {
@@ -50,9 +52,11 @@ enum class SceneFormat {
 SceneFormat sceneFormatFor(const std::filesystem::path& path);
 
 /// Exports through Assimp's exporter. Each Mesh becomes one Assimp mesh per submesh (bark,
-/// leaf), each with its material and texture references; every instance is one node that
-/// references its mesh's Assimp meshes (shared, not copied). Written to memory first and then
-/// atomically to disk, so no half-written file appears. \throw InvalidInput, IoError
+/// leaf), each with its material (materialName) and texture: embedded in .glb and .fbx (read
+/// from textureSourceOf; a file that cannot be read stays a reference), referenced by .gltf; every
+/// instance is one node that references its mesh's Assimp meshes (shared, not copied). Written to
+/// memory first and then atomically to disk, so no half-written file appears. \throw InvalidInput,
+/// IoError
 void writeScene(const std::filesystem::path& path, const SceneDesc& scene, SceneFormat format);
 
 /// Instance table rows as JSON: {"format":"sylva-instances","format_version":1,"instances":

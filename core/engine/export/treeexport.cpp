@@ -65,6 +65,7 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
         std::vector<ObjObject> objects;
         objects.reserve(trees.size());
         for (const ExportTree& t : trees) {
+            addMaterialsOf(*t.mesh, mObjMaterials);
             glm::mat4 m = glm::translate(glm::mat4(1.0f), t.position);
             m = glm::rotate(m, t.rotationY, glm::vec3(0, 1, 0));
             m = glm::scale(m, glm::vec3(t.scale));
@@ -80,6 +81,7 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
                 mKeepAlive.push_back(t.mesh);
                 mScene.meshes.push_back({t.name, t.mesh.get()});
             }
+            if (added) addMaterialsOf(*t.mesh, mScene.materials);
             const std::size_t meshIndex = it->second;
             SceneInstance instance;
             instance.name = t.name;
@@ -94,18 +96,24 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
 
 std::vector<fs::path> TreeExporter::commit() {
     std::vector<fs::path> written{mPath};
+    const SceneFormat sceneFormat = mObj ? SceneFormat::Glb : sceneFormatFor(mPath);
     const fs::path dir = mPath.parent_path().empty() ? fs::path(".") : mPath.parent_path();
     if (mObj) {
         const fs::path mtl = dir / (mPath.stem().string() + ".mtl");
-        writeMtlFile(mtl, defaultMaterials());
+        writeMtlFile(mtl, mObjMaterials);
         mObjWriter->commit();
         written.push_back(mtl);
     } else {
-        writeScene(mPath, mScene, sceneFormatFor(mPath));
+        mScene.textureSource = resourcesDir() / "textures";
+        writeScene(mPath, mScene, sceneFormat);
     }
-    if (const fs::path res = resourcesDir(); !res.empty())
-        if (copyTextures(defaultMaterials(), res / "textures", dir) > 0)
+    // OBJ and text glTF reference their textures beside them; .glb and .fbx carry them inside.
+    if (mObj || sceneFormat == SceneFormat::Gltf) {
+        const fs::path res = resourcesDir();
+        if (copyTextures(mObj ? mObjMaterials : mScene.materials,
+                         res.empty() ? fs::path() : res / "textures", dir) > 0)
             written.push_back(dir / "textures");
+    }
     if (mInstanceTables) {
         const fs::path json = dir / (mPath.stem().string() + ".instances.json");
         const fs::path csv = dir / (mPath.stem().string() + ".instances.csv");

@@ -32,8 +32,9 @@ struct ObjChoices {
 
 /// Writes trees by the output's extension (what `sylva-cli tree`/`forest` and the editor's
 /// File ▸ Export write): `.obj` streams batch by batch (plus `<name>.mtl` and
-/// the bark/leaf textures in `textures/` beside it); `.glb`, `.gltf` and `.fbx` go through
-/// Assimp with one node per tree. Nothing appears at the path before commit() succeeds.
+/// the bark/leaf textures, the species' own included, in `textures/` beside it); `.glb`,
+/// `.gltf` and `.fbx` go through Assimp with one node per tree (.glb and .fbx with the textures
+/// embedded, .gltf with them in `textures/`). Nothing appears at the path before commit() succeeds.
 class TreeExporter {
 public:
     /// \param obj how the OBJ stream is written; the other files are small and always
@@ -54,6 +55,7 @@ private:
     std::vector<std::shared_ptr<const mesh::Mesh>> mKeepAlive;
     std::unordered_map<const mesh::Mesh*, std::size_t> mMeshIndex; ///< into mScene.meshes
     SceneDesc mScene;
+    std::vector<Material> mObjMaterials = defaultMaterials();
 };
 
 /// \p speciesName as an object name for OBJ/glTF/FBX: letters, digits and '-' kept, anything

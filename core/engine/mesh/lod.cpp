@@ -227,8 +227,17 @@ double ringWidthCompensation(int base, int res) {
 
 } // namespace
 
-Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
-                   Progress& progress) {
+namespace {
+Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {
+    for (Submesh& s : mesh.submeshes) {
+        if (s.material == "bark") s.texture = settings.barkTexture;
+        if (s.material == "leaf") s.texture = settings.leafTexture;
+    }
+    return mesh;
+}
+
+Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
+                             Progress& progress) {
     TubeSettings tubes = settings.tubes;
     double leafFraction = 1.0;
     Mesh mesh;
@@ -270,6 +279,14 @@ Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& setti
         appendLeafCards(mesh, leaves, settings.leafCards, &kept);
     }
     return mesh;
+}
+} // namespace
+
+Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
+                   Progress& progress) {
+    Mesh mesh = buildUntexturedTreeMesh(skeleton, settings, progress);
+    if (settings.barkTexture.empty() && settings.leafTexture.empty()) return mesh;
+    return withTextures(std::move(mesh), settings);
 }
 
 std::vector<LodChainLevel> buildLodChain(const skel::Skeleton& skeleton,

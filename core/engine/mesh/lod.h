@@ -108,6 +108,9 @@ struct TreeMeshSettings {
     std::function<bool(const skel::Leaf&)> acceptLeafCard;
     LodSettings lod;
     std::uint64_t seed = 0; ///< leaf thinning
+    /// Diffuse textures of the bark and leaf submeshes (Submesh::texture); empty: the defaults.
+    std::string barkTexture;
+    std::string leafTexture;
 };
 
 /// Bark tubes plus leaf cards, at the level of detail the settings ask for.

@@ -13,6 +13,9 @@ struct Submesh {
     std::string material;         ///< "bark", "leaf", ...
     std::uint32_t firstIndex = 0; ///< into Mesh::indices
     std::uint32_t indexCount = 0;
+    /// The diffuse texture of this run (a PNG path, absolute or as the species file gave it);
+    /// empty: the material's default (Sylva's shipped bark.png / leaf.png).
+    std::string texture{};
 };
 
 /// Indexed triangle mesh, the output of meshing nodes and the input of exporters and the

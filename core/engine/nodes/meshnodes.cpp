@@ -78,7 +78,8 @@ LodSettings lodFromParams(const Value& p) {
 
 } // namespace
 
-TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed) {
+TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
+                                            const std::filesystem::path& baseDir) {
     TreeMeshSettings s;
     s.tubes.resolution = rangedInt(p, "resolution", 8, 3, 64);
     s.tubes.caps = p.boolean("caps", true);
@@ -103,6 +104,15 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed) 
     s.useLod = distance >= 0.0;
     s.cameraDistance = std::max(distance, 0.0);
     s.seed = seed;
+    auto texture = [&](const char* key) -> std::string {
+        const Value* v = p.find(key);
+        if (!v || v->isNull()) return {};
+        const std::filesystem::path file(v->toString(key));
+        if (file.empty() || file.is_absolute() || baseDir.empty()) return file.string();
+        return (baseDir / file).lexically_normal().string();
+    };
+    s.barkTexture = texture("bark_texture_file");
+    s.leafTexture = texture("leaf_texture_file");
     return s;
 }
 
@@ -112,7 +122,7 @@ NodeOutput evaluateTubeMesh(const NodeContext& ctx) {
     const skel::Skeleton& skeleton = inputSkeleton(ctx);
     TreeMeshSettings settings;
     try {
-        settings = treeMeshSettingsFromParams(ctx.params, mixSeed(ctx.seed, 0x7EAF));
+        settings = treeMeshSettingsFromParams(ctx.params, mixSeed(ctx.seed, 0x7EAF), ctx.baseDir);
     } catch (const InvalidInput& e) {
         ctx.fail(e.what());
     }
@@ -248,6 +258,11 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
                   "Axes thinner than this become camera-facing ribbons"),
            number("lod_screen_height", 1080.0, 1, 1e5, "px", "Viewport height the pixels refer to"),
            number("lod_fov", 60.0, 1, 179, "°", "Vertical field of view")});
+    group(tube.params, "Textures",
+          {other("bark_texture_file", ParamKind::File,
+                 "Bark PNG (tiles; u around, v along); none: Sylva's bark.png"),
+           other("leaf_texture_file", ParamKind::File,
+                 "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;

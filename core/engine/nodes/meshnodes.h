@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 
 #include "engine/mesh/lod.h"
 
@@ -17,14 +18,18 @@ namespace sylva::mesh {
 ///   initial_thickness, thickness_multiplier, radius_scale, leaves, leaf_aspect, leaf_scale,
 ///   wind_attributes, node_ids (Mesh::node, for colouring by node attributes), lod_distance (-1 =
 ///   off), lod_bands, lod_min_twig_pixels, lod_simplify_pixels, lod_leaf_cluster_pixels,
-///   lod_ribbon_pixels, lod_leafy_twig_pixels, lod_screen_height, lod_fov. Stats: vertices,
+///   lod_ribbon_pixels, lod_leafy_twig_pixels, lod_screen_height, lod_fov, bark_texture_file,
+///   leaf_texture_file (PNGs relative to the species file; Submesh::texture). Stats: vertices,
 ///   triangles; timing: mesh.
 /// - `leaves`: input one node with a skeleton; outputs the skeleton with placed leaves (and, if
 ///   the input carries a mesh, that mesh with the new leaves' cards appended).
 void registerMeshNodes(graph::NodeRegistry& registry);
 
 /// The tube_mesh node's parameters as settings, for callers that mesh outside the graph (LOD
-/// chains, forests). \p seed drives leaf thinning. \throw InvalidInput naming the parameter.
-TreeMeshSettings treeMeshSettingsFromParams(const graph::Value& params, std::uint64_t seed);
+/// chains, forests). \p seed drives leaf thinning; \p baseDir resolves relative texture files
+/// (bark_texture_file, leaf_texture_file), normally the species file's folder.
+/// \throw InvalidInput naming the parameter.
+TreeMeshSettings treeMeshSettingsFromParams(const graph::Value& params, std::uint64_t seed,
+                                            const std::filesystem::path& baseDir = {});
 
 } // namespace sylva::mesh

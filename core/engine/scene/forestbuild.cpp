@@ -294,7 +294,8 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             perThread.push_back(std::make_unique<graph::Evaluator>(s.graph));
     std::vector<mesh::TreeMeshSettings> meshSettings;
     for (const SpeciesPlan& plan : plans)
-        meshSettings.push_back(mesh::treeMeshSettingsFromParams(plan.meshNode->params, 0));
+        meshSettings.push_back(mesh::treeMeshSettingsFromParams(
+            plan.meshNode->params, 0, scene.species[meshSettings.size()].graph.baseDir));
 
     const env::ObstacleScene& obstacles = scene.obstacles ? *scene.obstacles : emptyScene();
     std::vector<double> cpuGenerate(static_cast<std::size_t>(threads), 0.0), cpuAdapt(cpuGenerate),

@@ -4,6 +4,8 @@
 #include "document/autosave.h"
 #include "document/document.h"
 #include "document/filerefs.h"
+#include "document/presetlibrary.h"
+#include "document/speciesfile.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -272,6 +274,72 @@ TEST_F(DocumentTest, GraphEditsAreCheckedAndUndoable) {
     EXPECT_EQ(bytes(), original);
     mDoc.undoStack()->setIndex(mDoc.undoStack()->count());
     EXPECT_EQ(mDoc.speciesGraph("alder").toJson(), again.speciesGraph("alder").toJson());
+}
+
+// Presets: each one applies to a species of the project (one undo step, its files still found
+// from the project), saves back as a self-contained species file that loads to the same graph,
+// and undo gives back the exact project.
+TEST_F(DocumentTest, EveryPresetAppliesAndRoundTrips) {
+    const QByteArray original = bytes();
+    QTemporaryDir out;
+    ASSERT_TRUE(out.isValid());
+    const QList<doc::PresetInfo> presets =
+        doc::PresetLibrary::list(QStringLiteral(SYLVA_SOURCE_DIR "/presets"));
+    ASSERT_GE(presets.size(), 12);
+    // A parameter the way the engine reads it: file parameters as absolute paths.
+    auto resolved = [](const graph::NodeDesc& n, const std::string& key) {
+        const graph::Value* v = n.params.find(key);
+        if (v && v->isString() && doc::isFileParam(key)) // rebased: the same file
+            return graph::Value(
+                QFileInfo(QString::fromStdString(v->toString())).fileName().toStdString());
+        return v ? *v : graph::Value();
+    };
+    for (const doc::PresetInfo& p : presets) {
+        SCOPED_TRACE(p.path.toStdString());
+        const graph::SpeciesGraph preset = doc::loadSpecies(p.path);
+        mDoc.applyPreset("alder", p.path);
+        EXPECT_EQ(mDoc.undoStack()->undoText(),
+                  QStringLiteral("Apply preset %1").arg(QFileInfo(p.path).completeBaseName()));
+        const graph::SpeciesGraph applied = mDoc.engineSpecies("alder");
+        ASSERT_EQ(applied.nodes.size(), preset.nodes.size());
+        EXPECT_EQ(applied.output, preset.output);
+        for (std::size_t k = 0; k < preset.nodes.size(); ++k) {
+            const graph::NodeDesc& a = applied.nodes[k];
+            const graph::NodeDesc& b = preset.nodes[k];
+            EXPECT_EQ(a.id, b.id);
+            EXPECT_EQ(a.type, b.type);
+            EXPECT_EQ(a.inputs, b.inputs);
+            for (const auto& [key, value] : b.params.toObject())
+                EXPECT_EQ(resolved(a, key).toJson(), resolved(b, key).toJson()) << key;
+            if (a.type == "lsystem") {
+                // The grammar is still found (from the project's folder) and is the preset's.
+                EXPECT_EQ(mDoc.grammar("alder", a.id), [&] {
+                    if (const graph::Value* g = b.params.find("grammar")) return g->toString();
+                    QFile f(QDir(QString::fromStdString(preset.baseDir.string()))
+                                .filePath(QString::fromStdString(
+                                    b.params.find("grammar_file")->toString())));
+                    EXPECT_TRUE(f.open(QIODevice::ReadOnly));
+                    return f.readAll().toStdString();
+                }());
+            }
+        }
+        // Saved as a preset: self-contained, and it loads to the same graph.
+        const QString saved = out.filePath(QFileInfo(p.path).fileName());
+        mDoc.saveSpeciesAs("alder", saved);
+        const graph::SpeciesGraph again = doc::loadSpecies(saved);
+        ASSERT_EQ(again.nodes.size(), applied.nodes.size());
+        for (std::size_t k = 0; k < again.nodes.size(); ++k) {
+            EXPECT_EQ(again.nodes[k].type, applied.nodes[k].type);
+            EXPECT_EQ(again.nodes[k].inputs, applied.nodes[k].inputs);
+            EXPECT_FALSE(again.nodes[k].params.contains("grammar_file"));
+            if (again.nodes[k].type == "lsystem") {
+                EXPECT_EQ(again.nodes[k].params.find("grammar")->toString(),
+                          mDoc.grammar("alder", applied.nodes[k].id));
+            }
+        }
+        mDoc.undoStack()->undo();
+        EXPECT_EQ(bytes(), original);
+    }
 }
 
 TEST_F(DocumentTest, RandomEditsUndoneAndRedoneGiveTheExactBytes) {

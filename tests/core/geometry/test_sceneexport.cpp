@@ -14,6 +14,7 @@
 #include "engine/export/materials.h"
 #include "engine/export/objwriter.h"
 #include "engine/export/sceneexport.h"
+#include "engine/export/treeexport.h"
 #include "engine/graph/value.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/lod.h"
@@ -232,6 +233,84 @@ TEST(SceneExport, TexturesAreCopied) {
     EXPECT_EQ(n, 2u);
     EXPECT_TRUE(std::filesystem::exists(dir / "textures" / "bark.png"));
     EXPECT_TRUE(std::filesystem::exists(dir / "textures" / "leaf.png"));
+    std::filesystem::remove_all(dir);
+}
+
+namespace {
+
+// A tree whose bark and leaves carry a species' own textures (the English oak's PNGs).
+std::shared_ptr<const mesh::Mesh> texturedTree() {
+    auto m = std::make_shared<mesh::Mesh>(leafyMesh(3, 6));
+    const std::filesystem::path presets = SYLVA_TEST_DATA_DIR "/../../presets/textures";
+    for (mesh::Submesh& s : m->submeshes)
+        s.texture = (presets / ("english-oak_" + s.material + ".png")).string();
+    return m;
+}
+
+std::string readText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// Every material of \p s whose name starts with "english-oak_" resolves its diffuse texture to
+// one embedded in the file: a PNG (compressed, mHeight 0, PNG signature). Returns how many.
+std::size_t embeddedSpeciesTextures(const aiScene* s) {
+    std::size_t found = 0;
+    for (unsigned i = 0; i < s->mNumMaterials; ++i) {
+        aiString name, tex;
+        s->mMaterials[i]->Get(AI_MATKEY_NAME, name);
+        if (std::string(name.C_Str()).rfind("english-oak_", 0) != 0) continue;
+        EXPECT_EQ(s->mMaterials[i]->GetTexture(aiTextureType_DIFFUSE, 0, &tex), AI_SUCCESS)
+            << name.C_Str();
+        const aiTexture* embedded = s->GetEmbeddedTexture(tex.C_Str());
+        EXPECT_NE(embedded, nullptr) << name.C_Str() << " -> " << tex.C_Str();
+        if (!embedded) continue;
+        EXPECT_EQ(embedded->mHeight, 0u);
+        EXPECT_GT(embedded->mWidth, 1000u); // bytes of the PNG
+        const auto* bytes = reinterpret_cast<const unsigned char*>(embedded->pcData);
+        EXPECT_EQ(std::string(reinterpret_cast<const char*>(bytes) + 1, 3), "PNG");
+        ++found;
+    }
+    return found;
+}
+
+} // namespace
+
+// Issue #20: exports carry the species' textures. OBJ: the MTL names them (map_Kd, map_d for
+// the cut-out leaves) and the files lie in textures/ beside it; GLB and FBX: embedded.
+TEST(SceneExport, SpeciesTexturesTravelWithObjGlbAndFbx) {
+    const auto dir = tempDir("species_textures");
+    const auto tree = texturedTree();
+    {
+        exporter::TreeExporter obj(dir / "oak.obj");
+        obj.add({{"oak", tree, glm::vec3(0.0f), 0.0f, 1.0f}});
+        obj.commit();
+        const std::string mtl = readText(dir / "oak.mtl");
+        EXPECT_NE(mtl.find("newmtl english-oak_bark\n"), std::string::npos) << mtl;
+        EXPECT_NE(mtl.find("map_Kd textures/english-oak_bark.png"), std::string::npos) << mtl;
+        EXPECT_NE(mtl.find("map_Kd textures/english-oak_leaf.png"), std::string::npos) << mtl;
+        EXPECT_NE(mtl.find("map_d textures/english-oak_leaf.png"), std::string::npos) << mtl;
+        EXPECT_TRUE(std::filesystem::exists(dir / "textures" / "english-oak_bark.png"));
+        EXPECT_TRUE(std::filesystem::exists(dir / "textures" / "english-oak_leaf.png"));
+        const std::string text = readText(dir / "oak.obj");
+        EXPECT_NE(text.find("usemtl english-oak_leaf"), std::string::npos);
+        Assimp::Importer importer;
+        const aiScene* s = importer.ReadFile((dir / "oak.obj").string(), 0);
+        ASSERT_NE(s, nullptr) << importer.GetErrorString();
+        EXPECT_TRUE(materialNames(s).count("english-oak_leaf"));
+    }
+    for (const char* name : {"oak.glb", "oak.fbx"}) {
+        exporter::TreeExporter scene(dir / name);
+        scene.add({{"oak", tree, glm::vec3(0.0f), 0.0f, 1.0f}});
+        scene.commit();
+        Assimp::Importer importer;
+        const aiScene* s = importer.ReadFile((dir / name).string(), 0);
+        ASSERT_NE(s, nullptr) << name << ": " << importer.GetErrorString();
+        EXPECT_GE(s->mNumTextures, 2u) << name;
+        EXPECT_EQ(embeddedSpeciesTextures(s), 2u) << name;
+    }
     std::filesystem::remove_all(dir);
 }
 

@@ -53,6 +53,9 @@ const Preset kPresets[] = {
     {"abop-1.27-stochastic.lsys", 0.5, 3.0, 0},
     {"ternary-tree.lsys", 8.0, 20.0, 0},
     {"alder.lsys", 15.0, 21.0, 0},
+    {"norway-spruce.lsys", 10.0, 18.0, 0},
+    {"scots-pine.lsys", 11.0, 18.0, 0},
+    {"weeping-willow.lsys", 5.0, 11.0, 0},
 };
 
 } // namespace

@@ -30,6 +30,7 @@
 #include "engine/mesh/tubemesh.h"
 #include "engine/nodes/meshnodes.h"
 #include "engine/scene/forestbuild.h"
+#include "presetfile.h"
 
 using namespace sylva;
 
@@ -39,32 +40,7 @@ const std::filesystem::path kPresets = SYLVA_PRESETS_DIR;
 const std::filesystem::path kMeshes =
     std::filesystem::path(SYLVA_PRESETS_DIR) / ".." / "resources" / "demo" / "meshes";
 
-// Minimal species-file reader (the Qt-side loader lives in core/document).
-graph::SpeciesGraph loadPreset(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    const graph::Value root = graph::Value::parseJson(text.str(), path.string());
-    graph::SpeciesGraph g;
-    g.name = root.string("name", path.stem().string());
-    g.baseDir = path.parent_path();
-    g.sourceFile = path.string();
-    const graph::Value& graph = *root.find("graph");
-    for (const graph::Value& n : graph.find("nodes")->toArray()) {
-        graph::NodeDesc d;
-        d.id = n.string("id", "");
-        d.type = n.string("type", "");
-        if (const graph::Value* p = n.find("params")) d.params = *p;
-        if (const graph::Value* ins = n.find("inputs"))
-            for (const graph::Value& i : ins->toArray())
-                d.inputs.push_back(i.toString());
-        g.nodes.push_back(std::move(d));
-    }
-    g.output = graph.string("output", g.nodes.back().id);
-    if (const graph::Value* traits = root.find("traits"))
-        g.traits.crownRadius = traits->number("crown_radius", 0.0);
-    return g;
-}
+using sylva::testing::loadPreset;
 
 // --- Oracles (brute force over every triangle; nothing shared with the engine but the data) ---
 
@@ -189,6 +165,7 @@ struct PresetResult {
     std::size_t leafTested = 0, leafInside = 0;
     double height = 0.0, crownWidth = 0.0; // of the last tree
     double worstExcess = 0.0;              // largest depth - radius of a bark vertex, metres
+    double worstLeafDepth = 0.0;           // deepest leaf card vertex inside, metres
 };
 
 /// Grows \p preset's trees (its own parameters) beside the obstacles and checks them, at full
@@ -292,7 +269,10 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
                 const env::ObstacleMesh& om = scene.meshes()[k];
                 if (isLeaf[v]) {
                     ++r.leafTested;
-                    if (insideBrute(p, om) && depthBrute(p, om) > 1e-5) ++r.leafInside;
+                    if (!insideBrute(p, om)) continue;
+                    const double depth = depthBrute(p, om);
+                    r.worstLeafDepth = std::max(r.worstLeafDepth, depth);
+                    if (depth > 1e-5) ++r.leafInside;
                     continue;
                 }
                 ++r.barkTested;
@@ -331,7 +311,8 @@ void checkEveryPreset(bool lod) {
             << name << ": " << r.barkTooDeep << " of " << r.barkInside
             << " tube vertices inside are deeper than their radius (worst by " << r.worstExcess
             << " m)";
-        EXPECT_EQ(r.leafInside, 0u) << name << ": leaf card vertices inside an obstacle";
+        EXPECT_EQ(r.leafInside, 0u) << name << ": leaf card vertices inside an obstacle (deepest "
+                                    << r.worstLeafDepth << " m)";
         // Adaptation tests tubes of the bark radius, so without LOD no bark vertex is inside at
         // all (LOD widens far rings and simplifies axes: there only the depth bound holds).
         if (!lod) {

@@ -1,0 +1,528 @@
+#!/usr/bin/python3
+"""Generates the bark and leaf textures of Sylva's species library (presets/*.json).
+
+Every image is drawn here from noise and simple shapes; nothing is downloaded, so the PNGs are
+ours to give away (CC0, see README.md). Deterministic: the same script writes the same bytes.
+
+  <species>_bark.png  256x256 RGB, tiles in both directions (u around the branch, v along it)
+  <species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0), tip at the top
+
+Needs Debian's python3-numpy and python3-pil. Run from anywhere: /usr/bin/python3 make_textures.py
+"""
+import math
+import os
+
+import numpy as np
+from PIL import Image
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+BARK = 256
+
+
+# ----------------------------------------------------------------------------- noise helpers
+
+def noise(shape, sx, sy, seed):
+    """Periodic smooth noise in 0..1: white noise low-passed in the frequency domain (so it
+    tiles), sx and sy the feature size in pixels across (x) and along (y)."""
+    rng = np.random.default_rng(seed)
+    h, w = shape
+    white = rng.standard_normal((h, w))
+    ky = np.fft.fftfreq(h)[:, None]
+    kx = np.fft.fftfreq(w)[None, :]
+    filt = np.exp(-((kx * sx) ** 2 + (ky * sy) ** 2) * 2.0 * math.pi ** 2 / 4.0)
+    out = np.real(np.fft.ifft2(np.fft.fft2(white) * filt))
+    out -= out.min()
+    return out / max(out.max(), 1e-9)
+
+
+def cells(shape, count, seed, stretch=(1.0, 1.0)):
+    """Periodic Worley noise: distance to the nearest and second nearest of \p count random
+    points (wrapping), in pixels; stretch squeezes the cells across (x) and along (y)."""
+    rng = np.random.default_rng(seed)
+    h, w = shape
+    pts = rng.random((count, 2)) * [w, h]
+    yy, xx = np.mgrid[0:h, 0:w].astype(np.float32)
+    d1 = np.full((h, w), 1e9, np.float32)
+    d2 = np.full((h, w), 1e9, np.float32)
+    ident = np.zeros((h, w), np.int32)
+    for i, (px, py) in enumerate(pts):
+        dx = np.abs(xx - px)
+        dx = np.minimum(dx, w - dx) / stretch[0]
+        dy = np.abs(yy - py)
+        dy = np.minimum(dy, h - dy) / stretch[1]
+        d = np.sqrt(dx * dx + dy * dy)
+        closer = d < d1
+        d2 = np.where(closer, d1, np.minimum(d2, d))
+        ident = np.where(closer, i, ident)
+        d1 = np.where(closer, d, d1)
+    return d1, d2, ident
+
+
+def colorize(shade, dark, light):
+    """shade 0..1 → RGB between two sRGB colours (0..1)."""
+    s = np.clip(shade, 0.0, 1.0)[..., None]
+    return np.asarray(dark) * (1 - s) + np.asarray(light) * s
+
+
+def save_rgb(name, rgb):
+    img = Image.fromarray((np.clip(rgb, 0, 1) * 255 + 0.5).astype(np.uint8), "RGB")
+    img.save(os.path.join(HERE, name), optimize=True)
+
+
+# ----------------------------------------------------------------------------- barks
+
+def bark_furrowed(seed, dark, light, ridges=6, depth=1.0, warp=0.35, cracks=0.5):
+    """Deep vertical furrows whose ridges wander and break into blocks (oak, poplar, willow)."""
+    shape = (BARK, BARK)
+    u = np.arange(BARK)[None, :] / BARK
+    n1 = noise(shape, 40, 120, seed)
+    n2 = noise(shape, 10, 40, seed + 1)
+    n3 = noise(shape, 3, 3, seed + 2)
+    phase = ridges * u + warp * 4 * (n1 - 0.5) + 0.6 * (n2 - 0.5)
+    ridge = np.abs(np.sin(math.pi * phase)) ** 0.7
+    crack = noise(shape, 12, 4, seed + 3)
+    crack = np.clip((crack - (1 - 0.25 * cracks)) * 8, 0, 1)
+    shade = 0.25 + depth * 0.6 * ridge + 0.25 * (n3 - 0.5) - 0.5 * crack * ridge
+    return colorize(shade, dark, light)
+
+
+def bark_smooth(seed, base, mottle, lenticels=0.0, rings=0.0):
+    """Smooth bark with a soft mottling (beech, hedge and shrub stems)."""
+    shape = (BARK, BARK)
+    m = noise(shape, 30, 30, seed)
+    f = noise(shape, 3, 6, seed + 1)
+    shade = 0.6 + 0.35 * (m - 0.5) * mottle * 2 + 0.12 * (f - 0.5)
+    rgb = colorize(shade, np.asarray(base) * 0.55, np.asarray(base) * 1.15)
+    if lenticels > 0:
+        l = noise(shape, 6, 1.2, seed + 2)
+        mark = np.clip((l - (1 - 0.2 * lenticels)) * 10, 0, 1)[..., None]
+        rgb = rgb * (1 - 0.45 * mark)
+    if rings > 0:
+        v = np.arange(BARK)[:, None] / BARK
+        ring = np.abs(np.sin(math.pi * (5 * v + 0.3 * noise(shape, 60, 8, seed + 3))))
+        rgb = rgb * (1 - rings * 0.2 * (ring < 0.08)[..., None])
+    return rgb
+
+
+def bark_birch():
+    shape = (BARK, BARK)
+    base = colorize(0.85 + 0.15 * noise(shape, 20, 20, 11), (0.74, 0.72, 0.68), (0.95, 0.94, 0.91))
+    # Horizontal dark lenticels, the birch's signature.
+    l = noise(shape, 14, 1.5, 12)
+    lent = np.clip((l - 0.72) * 9, 0, 1)
+    # Black diamond patches and rough dark bands.
+    patch = noise(shape, 45, 25, 13)
+    patch = np.clip((patch - 0.7) * 6, 0, 1) * (0.7 + 0.3 * noise(shape, 4, 2, 14))
+    peel = np.clip((noise(shape, 25, 4, 15) - 0.8) * 6, 0, 1)
+    rgb = base * (1 - 0.75 * lent[..., None])
+    rgb = rgb * (1 - 0.85 * patch[..., None]) + 0.03 * patch[..., None]
+    rgb = rgb * (1 - 0.15 * peel[..., None]) + np.asarray((0.05, 0.02, 0.0)) * peel[..., None]
+    return rgb
+
+
+def bark_plates(seed, plate, crack_col, count=60, stretch=(1.0, 2.2), flaky=0.5):
+    """Plates split by cracks (Scots pine's flakes, spruce scales)."""
+    shape = (BARK, BARK)
+    d1, d2, ident = cells(shape, count, seed, stretch)
+    edge = np.clip((d2 - d1) / 4.0, 0, 1) ** 0.6
+    rng = np.random.default_rng(seed + 5)
+    tint = rng.random(count)[ident]
+    f = noise(shape, 2, 6, seed + 1)
+    shade = (0.55 + 0.35 * tint * flaky + 0.2 * (f - 0.5)) * edge
+    rgb = colorize(shade, crack_col, plate)
+    return rgb
+
+
+def bark_palm():
+    shape = (BARK, BARK)
+    v = np.arange(BARK)[:, None] / BARK
+    u = np.arange(BARK)[None, :] / BARK
+    wob = noise(shape, 60, 30, 41)
+    # Leaf scars: rings every 1/6 of the tile with a ragged edge.
+    ring = (6 * v + 0.25 * (wob - 0.5)) % 1.0
+    scar = np.clip(1 - np.abs(ring - 0.5) * 5, 0, 1) ** 2
+    fibre = noise(shape, 1.5, 14, 42)
+    shade = 0.45 + 0.35 * fibre + 0.25 * (1 - scar) - 0.1 * np.sin(2 * math.pi * u * 3) ** 2 * 0
+    rgb = colorize(shade * (1 - 0.45 * scar), (0.18, 0.14, 0.10), (0.66, 0.58, 0.46))
+    return rgb
+
+
+def bark_stringy(seed, dark, light):
+    """Fibrous vertical strips (cypress)."""
+    shape = (BARK, BARK)
+    s = noise(shape, 2.5, 50, seed)
+    w = noise(shape, 20, 80, seed + 1)
+    u = np.arange(BARK)[None, :] / BARK
+    strip = np.abs(np.sin(math.pi * (14 * u + 2.5 * (w - 0.5)))) ** 0.5
+    shade = 0.3 + 0.45 * s + 0.3 * strip
+    return colorize(shade, dark, light)
+
+
+# ----------------------------------------------------------------------------- leaves
+
+SS = 3  # supersampling for smooth cut-out edges
+
+
+def canvas(w, h):
+    """Coordinates of a leaf card: x in -1..1 across, t in 0..1 from the stem (bottom row of
+    the image) to the tip (top row)."""
+    ys, xs = np.mgrid[0:h * SS, 0:w * SS].astype(np.float32)
+    x = (xs + 0.5) / (w * SS) * 2 - 1
+    t = 1 - (ys + 0.5) / (h * SS)
+    return x, t
+
+
+def finish_leaf(name, w, h, mask, rgb):
+    """Downsamples the supersampled mask and colour, bleeds the colour under the transparent
+    texels (no dark fringe when mipmapped) and writes the RGBA PNG."""
+    mask = mask.astype(np.float32)
+    a = mask.reshape(h, SS, w, SS).mean(axis=(1, 3))
+    c = (rgb * mask[..., None]).reshape(h, SS, w, SS, 3).sum(axis=(1, 3))
+    wsum = mask.reshape(h, SS, w, SS).sum(axis=(1, 3))[..., None]
+    mean = c.sum(axis=(0, 1)) / max(wsum.sum(), 1)
+    col = np.where(wsum > 0, c / np.maximum(wsum, 1e-6), mean)
+    # Bleed: a few passes of averaging covered neighbours into uncovered texels.
+    filled = wsum[..., 0] > 0
+    for _ in range(6):
+        acc = np.zeros_like(col)
+        cnt = np.zeros(filled.shape, np.float32)
+        for dy, dx in ((0, 1), (0, -1), (1, 0), (-1, 0)):
+            sh = np.roll(np.roll(col, dy, 0), dx, 1)
+            sf = np.roll(np.roll(filled, dy, 0), dx, 1)
+            acc += sh * sf[..., None]
+            cnt += sf
+        grow = (~filled) & (cnt > 0)
+        col[grow] = acc[grow] / cnt[grow][:, None]
+        filled = filled | grow
+    col[~filled] = mean
+    rgba = np.concatenate([col, a[..., None]], axis=-1)
+    img = Image.fromarray((np.clip(rgba, 0, 1) * 255 + 0.5).astype(np.uint8), "RGBA")
+    img.save(os.path.join(HERE, name), optimize=True)
+
+
+def blade_shading(x, t, width, base, seed, veins=8, vein_angle=0.6, midrib=0.03, gloss=0.1):
+    """Colour of a simple blade: midrib, side veins, darker rim, noise."""
+    h, w = x.shape
+    n = noise((h // SS, w // SS), 6, 6, seed)
+    n = np.kron(n, np.ones((SS, SS)))
+    rel = np.abs(x) / np.maximum(width, 1e-3)
+    shade = 0.85 + 0.25 * (n - 0.5) + gloss * (1 - rel)
+    shade *= 0.8 + 0.2 * np.clip((1 - rel) / 0.15, 0, 1)
+    rgb = np.asarray(base) * shade[..., None]
+    vein = np.abs(x) < midrib
+    phase = (t - vein_angle * np.abs(x)) * veins
+    side = (np.abs(phase - np.round(phase)) < 0.05) & (rel < 0.9)
+    light = np.asarray(base) * 1.35 + 0.05
+    rgb = np.where((vein | side)[..., None], 0.55 * rgb + 0.45 * light, rgb)
+    return rgb
+
+
+def simple_leaf(name, w, h, width_fn, base, seed, stem=0.08, **shading):
+    x, t = canvas(w, h)
+    k = np.clip((t - stem) / (1 - stem), 0, 1)
+    width = width_fn(k, x)
+    mask = ((np.abs(x) < width) & (t > stem)) | ((t <= stem + 0.01) & (np.abs(x) < 0.05))
+    rgb = blade_shading(x, k, width, base, seed, **shading)
+    finish_leaf(name, w, h, mask, rgb)
+
+
+def oak_width(k, x):
+    outline = 0.95 * np.sin(math.pi * np.clip(k, 0, 1) ** 1.25) ** 0.7
+    lobes = 0.55 + 0.45 * np.abs(np.cos(math.pi * 4.5 * k)) ** 0.6
+    return outline * lobes
+
+
+def birch_width(k, x):
+    outline = 0.95 * np.sin(math.pi * np.clip(k, 0, 1) ** 0.7) ** 0.9 * (1 - 0.3 * k)
+    teeth = 1 - 0.07 * np.abs(np.sin(math.pi * 22 * k))
+    return outline * teeth
+
+
+def beech_width(k, x):
+    outline = 0.9 * np.sin(math.pi * np.clip(k, 0, 1) ** 0.9) ** 0.8
+    return outline * (1 - 0.04 * np.abs(np.sin(math.pi * 8 * k)))
+
+
+def willow_width(k, x):
+    return 0.9 * np.sin(math.pi * np.clip(k, 0, 1) ** 0.9) ** 1.3 * (1 - 0.03 * np.abs(np.sin(math.pi * 30 * k)))
+
+
+def poplar_width(k, x):
+    # Rhombic: widest at a third, straight flanks to a pointed tip.
+    wide = np.where(k < 0.3, np.sin(0.5 * math.pi * np.clip(k, 0, 0.3) / 0.3) ** 0.8, (1 - k) / 0.7)
+    return 0.95 * wide * (1 - 0.05 * np.abs(np.sin(math.pi * 16 * k)))
+
+
+def maple_leaf(name, w, h, base, seed):
+    x, t = canvas(w, h)
+    cx, cy = 0.0, 0.42
+    px, py = x, (t - cy) * 2.0  # the card is twice as tall as wide → square leaf space
+    r = np.hypot(px, py)
+    theta = np.arctan2(px, py)  # 0 = up
+    mask = np.zeros(x.shape, bool)
+    for ang, length, width in ((0, 1.0, 0.26), (-60, 0.95, 0.25), (60, 0.95, 0.25),
+                               (-120, 0.6, 0.22), (120, 0.6, 0.22)):
+        a = math.radians(ang)
+        dx, dy = math.sin(a), math.cos(a)
+        along = px * dx + py * dy
+        across = px * dy - py * dx
+        s = np.clip(along / length, 0, 1)
+        half = width * np.clip(np.sin(math.pi * np.clip(s, 0, 1) ** 0.6), 0, 1) ** 0.9
+        # A pair of side teeth on each lobe.
+        half = half * (1 + 0.6 * np.exp(-((s - 0.6) / 0.07) ** 2))
+        mask |= (along > 0) & (along < length) & (np.abs(across) < half)
+    mask |= r < 0.28
+    stem = (np.abs(x) < 0.035) & (t < cy) & (t > 0.0)
+    mask |= stem
+    # Palmate veins: lines from the centre towards each lobe tip.
+    rgb = np.asarray(base) * (0.85 + 0.15 * np.kron(noise((h, w), 6, 6, seed), np.ones((SS, SS))))[..., None]
+    vein = np.zeros(x.shape, bool)
+    for ang in (0, -60, 60, -120, 120):
+        a = math.radians(ang)
+        across = px * math.cos(a) - py * math.sin(a)
+        along = px * math.sin(a) + py * math.cos(a)
+        vein |= (np.abs(across) < 0.025) & (along > 0)
+    rgb = np.where(vein[..., None], rgb * 0.6 + 0.4 * (np.asarray(base) * 1.4 + 0.05), rgb)
+    rgb = rgb * (0.8 + 0.2 * np.clip(1 - r / 1.1, 0, 1))[..., None] + 0.05
+    finish_leaf(name, w, h, mask, rgb)
+
+
+def strokes(x, t, segs, aspect):
+    """Mask of line segments [(x0, t0, x1, t1, half_width)] in card space (aspect = w/h)."""
+    mask = np.zeros(x.shape, bool)
+    X = x * aspect  # make distances isotropic: x spans 2*aspect, t spans 1 → scale
+    for (x0, t0, x1, t1, hw) in segs:
+        ax, ay = x0 * aspect, t0
+        bx, by = x1 * aspect, t1
+        vx, vy = bx - ax, by - ay
+        ll = vx * vx + vy * vy
+        lo_x, hi_x = min(ax, bx) - hw, max(ax, bx) + hw
+        lo_y, hi_y = min(ay, by) - hw, max(ay, by) + hw
+        sel = (X >= lo_x) & (X <= hi_x) & (t >= lo_y) & (t <= hi_y)
+        if not sel.any():
+            continue
+        px, py = X[sel] - ax, t[sel] - ay
+        s = np.clip((px * vx + py * vy) / max(ll, 1e-12), 0, 1)
+        d = np.hypot(px - s * vx, py - s * vy)
+        mask[sel] |= d < hw
+    return mask
+
+
+def needle_tuft(name, w, h, base, seed, count=220, spread=55, length=(0.75, 0.98)):
+    """Scots pine: needles in a brush from the shoot at the bottom."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = w / h * 0.5 * 2  # x spans 2 units across w, t spans 1 over h
+    aspect = (w / h) / 2.0
+    segs = [(0.0, 0.0, 0.0, 0.35, 0.02)]
+    for _ in range(count):
+        base_t = rng.uniform(0.05, 0.45)
+        ang = math.radians(rng.uniform(-spread, spread))
+        L = rng.uniform(*length) * (1 - base_t * 0.6)
+        x1 = math.sin(ang) * L * 0.8 / aspect
+        segs.append((0.0, base_t, np.clip(x1, -0.97, 0.97), min(0.99, base_t + math.cos(ang) * L * 0.75), 0.0045))
+    mask = strokes(x, t, segs, aspect)
+    shade = 0.8 + 0.3 * np.kron(noise((h, w), 2, 8, seed), np.ones((SS, SS)))
+    rgb = np.asarray(base) * shade[..., None] * (0.75 + 0.35 * t)[..., None]
+    finish_leaf(name, w, h, mask, rgb)
+
+
+def sprig(name, w, h, base, seed, needle=0.18, density=70, angle=55, twig=(0.40, 0.27, 0.17)):
+    """Spruce: a twig with short stiff needles on both sides and side shoots."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = (w / h) / 2.0
+    axes = [(0.0, 0.0, 0.0, 0.98, 1.0)]
+    for k in range(3):
+        t0 = 0.25 + 0.22 * k
+        for side in (-1, 1):
+            L = 0.45 - 0.1 * k
+            a = math.radians(48)
+            axes.append((0.0, t0, side * math.sin(a) * L / aspect * 0.5, t0 + math.cos(a) * L, 0.7))
+    twigs, needles = [], []
+    for (x0, t0, x1, t1, scale) in axes:
+        twigs.append((x0, t0, x1, t1, 0.012))
+        dx, dt = (x1 - x0) * aspect * 2, t1 - t0
+        L = math.hypot(dx, dt)
+        ux, ut = dx / L, dt / L
+        n = int(density * L)
+        for i in range(n):
+            s = (i + rng.random()) / n
+            px, pt = x0 * aspect * 2 + dx * s, t0 + dt * s
+            for side in (-1, 1):
+                a = math.radians(angle + rng.uniform(-15, 15)) * side
+                vx = ux * math.cos(a) - ut * math.sin(a)
+                vt = ux * math.sin(a) + ut * math.cos(a)
+                nl = needle * scale * (1 - 0.4 * s) * rng.uniform(0.8, 1.1)
+                needles.append((px / (aspect * 2), pt, (px + vx * nl) / (aspect * 2), pt + vt * nl, 0.008))
+    mt = strokes(x, t, twigs, aspect)
+    mn = strokes(x, t, needles, aspect)
+    shade = 0.8 + 0.35 * np.kron(noise((h, w), 3, 3, seed), np.ones((SS, SS)))
+    rgb = np.asarray(base) * shade[..., None] * (0.8 + 0.3 * t)[..., None]
+    rgb = np.where(mt[..., None], np.asarray(twig), rgb)
+    finish_leaf(name, w, h, mt | mn, rgb)
+
+
+def frond(name, w, h, base, seed):
+    """Palm frond: a curved rachis with long leaflets drooping to both sides."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = (w / h) / 2.0
+    segs = [(0.0, 0.0, 0.0, 1.0, 0.012)]
+    leaflets = []
+    n = 46
+    for i in range(n):
+        s = 0.08 + 0.9 * i / n
+        L = 0.42 * math.sin(math.pi * min(1.0, (s - 0.05) / 0.95)) ** 0.6 + 0.05
+        for side in (-1, 1):
+            a = math.radians(rng.uniform(38, 52))
+            x1 = side * math.sin(a) * L / aspect * 0.5
+            t1 = s + math.cos(a) * L * 0.9 - 0.05
+            xm, tm = x1 * 0.55, s + (t1 - s) * 0.65
+            leaflets.append((0.0, s, xm, tm, 0.011))
+            leaflets.append((xm, tm, x1, t1, 0.008))
+    mr = strokes(x, t, segs, aspect)
+    ml = strokes(x, t, leaflets, aspect)
+    shade = 0.8 + 0.3 * np.kron(noise((h, w), 2, 10, seed), np.ones((SS, SS)))
+    rgb = np.asarray(base) * shade[..., None] * (0.75 + 0.4 * np.abs(x))[..., None]
+    rgb = np.where(mr[..., None], np.asarray((0.55, 0.55, 0.30)), rgb)
+    finish_leaf(name, w, h, mr | ml, rgb)
+
+
+def scale_spray(name, w, h, base, seed):
+    """Cypress: a dense flattened spray of scale-leaf shoots, forking as it goes."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = (w / h) / 2.0
+    segs = []
+
+    def branch(x0, t0, ang, L, width, depth):
+        x1 = float(np.clip(x0 + math.sin(ang) * L / aspect, -0.97, 0.97))
+        t1 = float(np.clip(t0 + math.cos(ang) * L, 0.0, 0.99))
+        segs.append((x0, t0, x1, t1, width))
+        if depth == 0:
+            return
+        side = 1 if rng.random() < 0.5 else -1
+        for f in (0.2, 0.38, 0.56, 0.74, 0.9):
+            xs, ts = x0 + (x1 - x0) * f, t0 + (t1 - t0) * f
+            side = -side
+            branch(xs, ts, ang + side * math.radians(rng.uniform(35, 50)), L * 0.42 * (1.1 - 0.5 * f),
+                   width * 0.75, depth - 1)
+
+    branch(0.0, 0.0, 0.0, 0.97, 0.016, 3)
+    mask = strokes(x, t, segs, aspect)
+    shade = 0.75 + 0.4 * np.kron(noise((h, w), 1.5, 1.5, seed), np.ones((SS, SS)))
+    rgb = np.asarray(base) * shade[..., None] * (0.8 + 0.3 * t)[..., None]
+    finish_leaf(name, w, h, mask, rgb)
+
+
+def ellipse_leaf_mask(x, t, aspect, cx, ct, ang, L, W):
+    """An elliptic leaf from (cx, ct) pointing at angle ang (radians from up), length L."""
+    X = (x - cx) * aspect
+    T = t - ct
+    along = X * math.sin(ang) + T * math.cos(ang)
+    across = X * math.cos(ang) - T * math.sin(ang)
+    s = along / L
+    half = W * np.clip(np.sin(math.pi * np.clip(s, 0, 1)), 0, 1) ** 0.8
+    return (s > 0) & (s < 1) & (np.abs(across) < half), along, across
+
+
+def rhododendron(name, w, h, leaf_col, flower_col, seed):
+    """Flowering shrub: a whorl of leathery leaves under a rounded truss of pink flowers."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = (w / h) / 2.0
+    mask = np.zeros(x.shape, bool)
+    rgb = np.zeros(x.shape + (3,), np.float32)
+    for ang in (-75, -45, -18, 18, 45, 75):
+        m, along, across = ellipse_leaf_mask(x, t, aspect, 0.0, 0.1, math.radians(ang), 0.6, 0.09)
+        vein = np.abs(across) < 0.008
+        col = np.asarray(leaf_col) * (0.85 + 0.2 * (along / 0.55))[..., None]
+        col = np.where(vein[..., None], col * 1.3 + 0.05, col)
+        rgb = np.where(m[..., None], col, rgb)
+        mask |= m
+    # Flower truss: a dome of five-petalled flowers.
+    for i in range(26):
+        fx = rng.uniform(-0.6, 0.6)
+        ft = 0.6 + rng.uniform(-0.15, 0.3) * (1 - abs(fx))
+        X = (x - fx) * aspect
+        T = t - ft
+        r = np.hypot(X, T)
+        th = np.arctan2(X, T) + rng.uniform(0, 6.28)
+        petal = 0.075 * (0.75 + 0.25 * np.abs(np.cos(2.5 * th)))
+        m = r < petal
+        col = np.asarray(flower_col) * (0.75 + 0.35 * np.clip(r / petal, 0, 1))[..., None]
+        col = np.where((r < 0.018)[..., None], np.asarray((0.95, 0.85, 0.45)), col)
+        rgb = np.where(m[..., None], col, rgb)
+        mask |= m
+    stem = strokes(x, t, [(0.0, 0.0, 0.0, 0.15, 0.015)], aspect)
+    rgb = np.where((stem & ~mask)[..., None], np.asarray((0.35, 0.28, 0.2)), rgb)
+    finish_leaf(name, w, h, mask | stem, rgb)
+
+
+def privet(name, w, h, base, seed):
+    """Hedge (privet): a shoot with pairs of small opposite oval leaves, densely set."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = (w / h) / 2.0
+    mask = strokes(x, t, [(0.0, 0.0, 0.0, 0.9, 0.012)], aspect)
+    rgb = np.zeros(x.shape + (3,), np.float32) + np.asarray((0.35, 0.3, 0.2))
+    for k in range(6):
+        ct = 0.08 + 0.145 * k
+        for side in (-1, 1):
+            ang = side * math.radians(rng.uniform(40, 70)) * (1 - 0.05 * k)
+            L = 0.3 * (1 - 0.06 * k)
+            m, along, across = ellipse_leaf_mask(x, t, aspect, 0.0, ct, ang, L, 0.06 * (1 - 0.05 * k))
+            shade = 0.8 + 0.3 * rng.random() + 0.15 * (along / L)
+            col = np.asarray(base) * shade[..., None]
+            col = np.where((np.abs(across) < 0.006)[..., None], col * 1.35 + 0.04, col)
+            rgb = np.where(m[..., None], col, rgb)
+            mask |= m
+    m, along, across = ellipse_leaf_mask(x, t, aspect, 0.0, 0.86, 0.0, 0.14, 0.035)
+    rgb = np.where(m[..., None], np.asarray(base) * 1.25, rgb)
+    mask |= m
+    finish_leaf(name, w, h, mask, rgb)
+
+
+# ----------------------------------------------------------------------------- the library
+
+def main():
+    save_rgb("english-oak_bark.png", bark_furrowed(101, (0.09, 0.08, 0.07), (0.50, 0.46, 0.40), ridges=5, cracks=0.9))
+    simple_leaf("english-oak_leaf.png", 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
+
+    save_rgb("silver-birch_bark.png", bark_birch())
+    simple_leaf("silver-birch_leaf.png", 128, 256, birch_width, (0.36, 0.55, 0.14), 112, stem=0.12, veins=8, vein_angle=0.5)
+
+    save_rgb("european-beech_bark.png", bark_smooth(121, (0.56, 0.57, 0.55), 1.0, lenticels=0.3, rings=0.6))
+    simple_leaf("european-beech_leaf.png", 128, 256, beech_width, (0.26, 0.46, 0.11), 122, stem=0.07, veins=7, vein_angle=0.35, gloss=0.2)
+
+    save_rgb("norway-maple_bark.png", bark_furrowed(131, (0.16, 0.14, 0.12), (0.48, 0.44, 0.38), ridges=11, depth=0.6, warp=0.2, cracks=0.2))
+    maple_leaf("norway-maple_leaf.png", 256, 256, (0.24, 0.48, 0.10), 132)
+
+    save_rgb("weeping-willow_bark.png", bark_furrowed(141, (0.13, 0.11, 0.09), (0.50, 0.45, 0.36), ridges=7, warp=0.8, cracks=0.4))
+    simple_leaf("weeping-willow_leaf.png", 64, 256, willow_width, (0.47, 0.60, 0.22), 142, stem=0.03, veins=12, vein_angle=0.2)
+
+    save_rgb("lombardy-poplar_bark.png", bark_furrowed(151, (0.10, 0.10, 0.09), (0.42, 0.41, 0.38), ridges=8, warp=0.3, cracks=0.6))
+    simple_leaf("lombardy-poplar_leaf.png", 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
+
+    save_rgb("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
+    needle_tuft("scots-pine_leaf.png", 256, 256, (0.24, 0.38, 0.33), 162)
+
+    save_rgb("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
+    sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)
+
+    save_rgb("date-palm_bark.png", bark_palm())
+    frond("date-palm_leaf.png", 128, 256, (0.30, 0.48, 0.16), 182)
+
+    save_rgb("italian-cypress_bark.png", bark_stringy(191, (0.16, 0.12, 0.10), (0.55, 0.46, 0.38)))
+    scale_spray("italian-cypress_leaf.png", 128, 256, (0.13, 0.28, 0.11), 192)
+
+    save_rgb("rhododendron_bark.png", bark_smooth(201, (0.42, 0.34, 0.27), 0.8, lenticels=0.2))
+    rhododendron("rhododendron_leaf.png", 256, 256, (0.12, 0.27, 0.08), (0.85, 0.35, 0.62), 202)
+
+    save_rgb("privet-hedge_bark.png", bark_smooth(211, (0.45, 0.42, 0.36), 0.6, lenticels=0.6))
+    privet("privet-hedge_leaf.png", 128, 256, (0.16, 0.36, 0.08), 212)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,120 @@
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include <QFutureWatcher>
+#include <QObject>
+#include <QThreadPool>
+
+#include <glm/glm.hpp>
+
+namespace sylva::mesh {
+struct Mesh;
+struct TreeMeshSettings;
+} // namespace sylva::mesh
+namespace sylva::skel {
+struct Skeleton;
+}
+
+namespace sylva::ui {
+
+/// What the viewport needs to make coarser meshes of a tree than the one it draws near: the
+/// skeleton the mesh was made from and the species' meshing settings (seeded as the forest
+/// seeds the tree). Trees without one are always drawn at full detail.
+struct TreeLodSource {
+    std::shared_ptr<const skel::Skeleton> skeleton;
+    std::shared_ptr<const mesh::TreeMeshSettings> settings;
+    /// The camera distance (tree frame, metres) the full mesh was already built for by the
+    /// project's camera LOD; levels that would not be coarser than that reuse the full mesh.
+    double builtDistance = 0.0;
+};
+
+/// The viewport's distance level of detail (issue 18). Each tree gets kLevels levels: level 0
+/// is the mesh the generation made; the levels up to kImpostorLevel are made by the engine's
+/// silhouette-keeping camera LOD (mesh::buildTreeMesh with a camera distance) for a tree seen
+/// smaller and smaller on screen, on a worker thread, once per mesh (a tree that did not change
+/// keeps its levels); the last is an impostor.
+/// The viewport picks a level per tree and frame from the tree's projected height
+/// (levelFor()); picking and the selection still use the full mesh.
+class ViewLod : public QObject {
+    Q_OBJECT
+
+public:
+    static constexpr int kLevels = 4;
+    /// The farthest level is no mesh but crossed cards (ui/viewport/impostors.h), which the
+    /// viewport makes on the GUI thread; meshFor() gives the level below it.
+    static constexpr int kImpostorLevel = kLevels - 1;
+    /// The camera distance, in tree heights, for which level \p level (1..kLevels-1) is built,
+    /// at the LOD's reference view (1080 px high, 60° field of view): the tree then spans
+    /// about 935 / levelHeights(level) pixels.
+    static double levelHeights(int level);
+    /// The level to draw for a tree seen as small as the reference view shows it from
+    /// \p equivalentHeights tree heights away (see equivalentHeights()): the coarsest level
+    /// built for no more than that distance.
+    static int levelFor(double equivalentHeights);
+    /// How far, in tree heights, the reference view would be from a tree \p worldHeight metres
+    /// high to show it as large as a camera \p distance metres away with a vertical field of
+    /// view \p fovY (radians) shows it on a viewport \p viewportHeightPx pixels high.
+    static double equivalentHeights(double distance, double worldHeight, double fovY,
+                                    double viewportHeightPx);
+
+    explicit ViewLod(QObject* parent = nullptr);
+    ~ViewLod() override;
+
+    /// Off: every tree is drawn at full detail and nothing is built (SYLVA_VIEW_LOD=0 too).
+    void setEnabled(bool enabled);
+    bool isEnabled() const { return mEnabled; }
+
+    /// The trees now in the view, by their full mesh and source: levels of meshes no longer
+    /// listed are dropped, those of new meshes are scheduled in the order given.
+    void
+    setTrees(const std::vector<std::pair<std::shared_ptr<const mesh::Mesh>, TreeLodSource>>& trees);
+
+    /// The mesh to draw for the tree whose full mesh is \p full at \p level: the coarsest built
+    /// level not above \p level, else \p full itself; \p used (when given) gets its level.
+    const mesh::Mesh* meshFor(const mesh::Mesh* full, int level, int* used = nullptr) const;
+    /// Every distinct mesh of every level (for the GPU buffers).
+    std::vector<std::shared_ptr<const mesh::Mesh>> allLevelMeshes() const;
+
+    /// Trees whose levels are still being made.
+    std::size_t pending() const { return mQueue.size() + (mRunning ? mRunningCount : 0); }
+
+Q_SIGNALS:
+    /// New levels are ready (emitted on the GUI thread, once the queue is done): the viewport
+    /// uploads and repaints.
+    void levelsReady();
+
+private:
+    struct Job {
+        std::shared_ptr<const mesh::Mesh> full;
+        TreeLodSource source;
+    };
+    struct Built {
+        const mesh::Mesh* full = nullptr;
+        std::array<std::shared_ptr<const mesh::Mesh>, kLevels> levels;
+    };
+    void startNext();
+    void finished();
+
+    bool mEnabled = true;
+    std::map<const mesh::Mesh*, Built> mLevels; ///< keyed by the full mesh
+    std::map<const mesh::Mesh*, std::shared_ptr<const mesh::Mesh>> mAlive; ///< full meshes listed
+    std::vector<Job> mQueue;
+    bool mRunning = false;
+    bool mReady = false; ///< levels arrived since the last levelsReady()
+    std::size_t mRunningCount = 0;
+    std::set<const mesh::Mesh*> mRunningKeys;
+    std::vector<std::pair<std::shared_ptr<const mesh::Mesh>, TreeLodSource>> mListed;
+    std::shared_ptr<std::atomic<bool>> mCancel;
+    QThreadPool mPool; ///< one thread, niced
+    QFutureWatcher<std::vector<Built>> mWatcher;
+};
+
+} // namespace sylva::ui
