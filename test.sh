@@ -2,7 +2,8 @@
 # Installs what is missing, builds, and runs every test through ctest:
 #   1. Release build with -Werror: engine GoogleTests, QtTest suites under xvfb-run, CLI
 #      end-to-end tests, the clang-format check; benchmarks are built, not run.
-#   2. The engine tests again under AddressSanitizer + UndefinedBehaviorSanitizer.
+#   2. The engine and document-core tests (label engine) again under AddressSanitizer +
+#      UndefinedBehaviorSanitizer.
 #   3. The libFuzzer harnesses (clang, ASan + UBSan; ctest label fuzz): each replays its corpus
 #      and every past crash (tests/fuzz/regressions), then fuzzes for SYLVA_FUZZ_SECONDS (20 s).
 #      scripts/fuzz.sh runs them longer.

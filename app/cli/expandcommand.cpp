@@ -13,7 +13,7 @@
 namespace sylva::cli {
 
 int runExpand(const std::vector<std::string>& argv) {
-    const Args args(argv, {"-n", "--generations", "--seed", "--limit"}, {});
+    const Args args(argv, {"-n", "--generations", "--seed", "--limit", "--time-limit"}, {});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("expand"));
     const std::string& path = args.positional()[0];
     std::ifstream in(path, std::ios::binary);
@@ -30,6 +30,8 @@ int runExpand(const std::vector<std::string>& argv) {
         options.seed = static_cast<std::uint64_t>(*seed);
     if (auto limit = args.integer("--limit", 1, 2'000'000'000))
         options.symbolLimit = static_cast<std::size_t>(*limit);
+    if (auto seconds = args.integer("--time-limit", 1, 86400))
+        options.timeLimitSeconds = static_cast<double>(*seconds);
 
     const std::string word = lsys::formatModules(lsys::derive(grammar, options));
     std::fwrite(word.data(), 1, word.size(), stdout);

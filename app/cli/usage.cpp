@@ -15,6 +15,7 @@ struct CommandHelp {
 constexpr CommandHelp kHelp[] = {
     {"expand",
      "usage: sylva-cli expand <grammar> [-n GENERATIONS] [--seed S] [--limit SYMBOLS]\n"
+     "                        [--time-limit SECONDS]\n"
      "\n"
      "Prints the derived L-system word on one line.\n"
      "\n"
@@ -23,6 +24,8 @@ constexpr CommandHelp kHelp[] = {
      "  --seed S              seed of stochastic rules and rand() (default: the grammar's seed:)\n"
      "  --limit SYMBOLS       most modules a generation may hold, 1..2000000000\n"
      "                        (default 20000000; past it the command fails with exit status 1)\n"
+     "  --time-limit SECONDS  most seconds the derivation may take, 1..86400 (default 300;\n"
+     "                        past it the command fails with exit status 1)\n"
      "  -h, --help            show this text\n"},
     {"tree",
      "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{obj,glb,gltf,fbx} [options]\n"

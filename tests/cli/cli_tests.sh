@@ -148,6 +148,12 @@ runaway_limit)
   run_cli 1 expand "$DATA/lsystem/runaway.lsys"
   grep -qi "generation" err.txt || fail "limit message does not name the generation: $(cat err.txt)"
   grep -qi "limit" err.txt || fail "message does not mention the limit: $(cat err.txt)" ;;
+time_limit)
+  run_cli 1 expand "$DATA/lsystem/slow.lsys" --time-limit 1
+  grep -q "took more than its time limit of 1 s (stopped in generation" err.txt ||
+    fail "no time limit message: $(cat err.txt)"
+  grep -q "sylva-cli expand --time-limit" err.txt || fail "does not say how to raise it"
+  run_cli 2 expand "$DATA/lsystem/slow.lsys" --time-limit 0 ;;
 no_partial_output)
   run_cli 1 tree "$DATA/lsystem/runaway.lsys" -o big.obj
   [[ ! -e big.obj ]] || fail "a failed run left big.obj"
@@ -210,7 +216,10 @@ forest_threads_identical)
   mkdir -p one two
   run_cli 0 forest "$DATA/projects/small.sylva" -o one/f.obj --threads 1
   run_cli 0 forest "$DATA/projects/small.sylva" -o two/f.obj --threads 2
-  cmp -s one/f.obj two/f.obj || fail "1 and 2 threads give different forests" ;;
+  cmp -s one/f.obj two/f.obj || fail "1 and 2 threads give different forests"
+  run_cli 2 forest "$DATA/projects/small.sylva" -o three/f.obj --threads 0
+  grep -q "threads must be a whole number in \[1, 1024\], got '0'" err.txt ||
+    fail "no --threads limit message: $(cat err.txt)" ;;
 forest_tiles_union)
   run_cli 0 forest "$DATA/projects/small.sylva" -o whole.obj
   : > tiles.txt

@@ -1,6 +1,7 @@
 // Fuzzes obstacle mesh import through our Assimp wrapper (loadObstacleMesh): the first byte
-// picks the format ('p' PLY, 's' STL, anything else OBJ), the rest is the file. Any file loads
-// as a mesh of valid triangles inside its bounds, or throws InvalidInput / LimitExceeded.
+// picks the format ('p' PLY, 's' STL, 'G' glTF, 'B' binary glTF, 'F' FBX, 'D' Collada DAE,
+// anything else OBJ), the rest is the file. Any file loads as a mesh of valid triangles inside
+// its bounds, or throws InvalidInput / LimitExceeded / IoError (a glTF naming a missing buffer).
 #include "fuzztempfile.h"
 
 #include "engine/environment/obstaclemesh.h"
@@ -13,7 +14,29 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size < 1 || size > 64 * 1024) return 0; // small inputs: the formats, not their size
-    const char* extension = data[0] == 'p' ? ".ply" : data[0] == 's' ? ".stl" : ".obj";
+    const char* extension = ".obj";
+    switch (data[0]) {
+    case 'p':
+        extension = ".ply";
+        break;
+    case 's':
+        extension = ".stl";
+        break;
+    case 'G':
+        extension = ".gltf";
+        break;
+    case 'B':
+        extension = ".glb";
+        break;
+    case 'F':
+        extension = ".fbx";
+        break;
+    case 'D':
+        extension = ".dae";
+        break;
+    default:
+        break;
+    }
     const auto file = sylva::fuzz::writeTempInput(data + 1, size - 1, extension);
     try {
         const sylva::env::ObstacleMesh mesh = sylva::env::loadObstacleMesh(file);
@@ -28,6 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
     } catch (const sylva::InvalidInput&) {
     } catch (const sylva::LimitExceeded&) {
+    } catch (const sylva::IoError&) {
     }
     return 0;
 }

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <limits>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
@@ -113,10 +114,15 @@ struct Hit {
 
 class Collider {
 public:
-    Collider(const ObstacleScene& scene, std::span<const CrownVolume> crowns, AdaptStats& stats)
-        : mScene(scene), mCrowns(crowns), mStats(stats) {}
+    /// \p bark: per node, the world-space radius of the tube of the segment ending there (empty
+    /// for axes only, as for leaf cards).
+    Collider(const ObstacleScene& scene, std::span<const CrownVolume> crowns,
+             std::span<const float> bark, AdaptStats& stats)
+        : mScene(scene), mCrowns(crowns), mBark(bark), mStats(stats) {}
 
-    /// Segments ending at \p nodes (world positions \p w); hits with their obstacle tops.
+    /// Segments ending at \p nodes (world positions \p w); hits with their obstacle tops. A
+    /// segment whose axis misses but whose tube touches an obstacle hits at the obstacle's point
+    /// nearest to it.
     std::vector<Hit> intersect(const skel::Skeleton& s, const std::vector<glm::vec3>& w,
                                const std::vector<std::size_t>& nodes) {
         std::vector<Segment> segs = segments(s, w, nodes);
@@ -128,11 +134,14 @@ public:
             Hit h;
             h.node = nodes[k];
             bool any = false;
-            if (hits[k].hit) {
+            SegmentHit hit = hits[k];
+            if (!hit.hit && !mBark.empty() && mBark[nodes[k]] > 0.0f)
+                hit = mScene.nearest(segs[k], mBark[nodes[k]]);
+            if (hit.hit) {
                 any = true;
-                h.point = hits[k].point;
+                h.point = hit.point;
                 glm::vec3 v0, v1, v2;
-                mScene.triangle(hits[k].mesh, hits[k].triangle, v0, v1, v2);
+                mScene.triangle(hit.mesh, hit.triangle, v0, v1, v2);
                 h.top = std::max({v0.y, v1.y, v2.y});
             }
             for (const CrownVolume& c : mCrowns) {
@@ -152,7 +161,14 @@ public:
                                        const std::vector<std::size_t>& nodes) {
         std::vector<Segment> segs = segments(s, w, nodes);
         std::vector<std::uint8_t> out(segs.size(), 0);
-        mScene.occluded(segs, out);
+        if (mBark.empty()) {
+            mScene.occluded(segs, out);
+        } else {
+            std::vector<float> radii(nodes.size());
+            for (std::size_t k = 0; k < nodes.size(); ++k)
+                radii[k] = mBark[nodes[k]];
+            mScene.touches(segs, radii, out);
+        }
         mStats.segmentsTested += segs.size();
         for (std::size_t k = 0; k < segs.size(); ++k)
             for (std::size_t c = 0; c < mCrowns.size() && out[k] == 0; ++c)
@@ -160,7 +176,7 @@ public:
         return out;
     }
 
-    /// Which of \p segs (world space) touch anything.
+    /// Which of \p segs (world space, axes only) touch anything.
     std::vector<std::uint8_t> occluded(const std::vector<Segment>& segs) {
         std::vector<std::uint8_t> out(segs.size(), 0);
         mScene.occluded(segs, out);
@@ -182,6 +198,7 @@ private:
 
     const ObstacleScene& mScene;
     std::span<const CrownVolume> mCrowns;
+    std::span<const float> mBark;
     AdaptStats& mStats;
 };
 
@@ -256,6 +273,10 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
     requireRange("leaf_scale", params.leafScale, 1e-6, 100.0);
     requireRange("leaf_aspect", params.leafAspect, 1e-6, 4.0);
     rest.validate();
+    if (!params.barkRadii.empty() && params.barkRadii.size() != rest.size())
+        throw InvalidInput("adaptTree: " + std::to_string(params.barkRadii.size()) +
+                           " bark radii for a skeleton of " + std::to_string(rest.size()) +
+                           " nodes");
 
     AdaptResult result;
     result.skeleton = rest;
@@ -272,13 +293,28 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
     if (n < 2) return result;
 
     std::vector<glm::vec3> world = toWorld(rest.position, treeTransform);
+    const float worldScale = maxScale(treeTransform);
+    // Per segment (by its end node), the world radius of its tube: the larger of its two rings.
+    std::vector<float> bark(n, 0.0f);
+    float maxBark = 0.0f;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t p = rest.parent[i];
+        if (p < 0) continue;
+        const auto radiusAt = [&](std::size_t k) {
+            const float r = params.barkRadii.empty() ? rest.radius[k] : params.barkRadii[k];
+            return std::isfinite(r) ? std::max(r, 0.0f) : 0.0f;
+        };
+        bark[i] = std::max(radiusAt(static_cast<std::size_t>(p)), radiusAt(i)) * worldScale;
+        maxBark = std::max(maxBark, bark[i]);
+    }
     glm::vec3 lo = world[0], hi = world[0];
     for (const glm::vec3& p : world) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
+    lo -= glm::vec3(maxBark);
+    hi += glm::vec3(maxBark);
     // Leaf cards reach beyond their nodes.
-    const float worldScale = maxScale(treeTransform);
     for (const skel::Leaf& leaf : rest.leaves) {
         const glm::vec3 a(treeTransform * glm::vec4(leaf.position, 1.0f));
         const glm::vec3 r(leafReach(leaf, params) * worldScale);
@@ -297,8 +333,8 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
     const bool nearObstacles = scene.overlapsBounds(lo, hi);
     if (crowns.empty() && !nearObstacles) return result;
 
-    Collider collider(scene, crowns, stats);
-    Collider leafCollider(scene, {}, stats);
+    Collider collider(scene, crowns, bark, stats);
+    Collider leafCollider(scene, {}, {}, stats);
     std::vector<std::size_t> allSegments;
     allSegments.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -543,6 +579,8 @@ AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
             flo = glm::min(flo, p);
             fhi = glm::max(fhi, p);
         }
+        flo -= glm::vec3(maxBark);
+        fhi += glm::vec3(maxBark);
         for (const skel::Leaf& leaf : out.leaves) {
             const glm::vec3 a(treeTransform * glm::vec4(leaf.position, 1.0f));
             const glm::vec3 r(leafReach(leaf, params) * worldScale);

@@ -41,6 +41,12 @@ struct AdaptParams {
     /// whose card or stem touches an obstacle is dropped. Card length = Leaf::size · leafScale.
     float leafScale = 1.0f;  ///< (0, 100]
     float leafAspect = 0.5f; ///< card width / length, (0, 4]
+    /// Bark: per node of the rest skeleton, the radius of the ring the mesher draws there, in
+    /// the skeleton's units (mesh::tubeRadii for the species' tube_mesh settings). Empty: the
+    /// skeleton's own radii. A segment collides when the tube of the larger of its two radii
+    /// around it (a capsule) touches an obstacle, so no bark, not only no branch axis, ends
+    /// inside one. Zero radii test the axes only.
+    std::span<const float> barkRadii;
 };
 
 /// What adaptation did to one tree. Lengths are in the skeleton's own units (metres before the
@@ -80,10 +86,13 @@ struct AdaptResult {
 /// length goes to the other segments) and, with prune on, a segment that collides without any
 /// growth is hidden, until nothing visible collides. Leaves hanging on hidden nodes are dropped,
 /// the others follow their node; a leaf whose card or stem touches an obstacle is dropped too.
-/// With prune on, no visible segment and no leaf card of the result crosses an obstacle's
-/// surface, so a tree rooted outside the obstacles keeps no branch inside one. Trees whose
+/// Segments are tested as tubes of their bark radius (AdaptParams::barkRadii), leaf cards as
+/// their edges and diagonals. With prune on, no visible segment's tube comes nearer to an
+/// obstacle than its bark radius and no leaf card crosses an obstacle's surface, so a tree rooted
+/// outside the obstacles keeps no bark and no leaf inside one. Trees whose
 /// bounds (leaf cards included) touch no obstacle are returned unchanged after one bounds test.
-/// \throw InvalidInput for parameters out of range or an invalid skeleton.
+/// \throw InvalidInput for parameters out of range, an invalid skeleton or barkRadii of another
+/// size than the skeleton.
 AdaptResult adaptTree(const skel::Skeleton& rest, const ObstacleScene& scene,
                       const glm::mat4& treeTransform, const AdaptParams& params,
                       std::span<const CrownVolume> neighbours = {});

@@ -1,8 +1,11 @@
 #include "engine/environment/meshfilecheck.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -121,6 +124,61 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
     }
 }
 
+/// Collada: Assimp 5.2.5 reserves what a `count` attribute declares (a polylist of 2·10^9
+/// polygons asked for 16 GB) and, given an index list with a token that is not a number, walks
+/// off its counts and asked for 2.4 GB (both found by fuzz_obstacle). Every `count="N"` must be
+/// at most 9·maxItems (a float array of three corners of three coordinates per triangle) and
+/// the index lists (`<p>`, `<v>`, `<vcount>`) hold whole numbers only. A count that is not a
+/// whole number from 1 crashed Assimp (SEGV, found by fuzz_obstacle too).
+void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::size_t maxItems) {
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: Collada ";
+    const auto lineOf = [&](std::size_t at) {
+        return std::to_string(
+            1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+    };
+    const std::uint64_t maxCount =
+        maxItems > UINT64_MAX / 9 ? UINT64_MAX : 9 * static_cast<std::uint64_t>(maxItems);
+    for (std::size_t at = text.find("count=\""); at != std::string::npos;
+         at = text.find("count=\"", at + 7)) {
+        if (at > 0 && text[at - 1] != ' ' && text[at - 1] != '\t' && text[at - 1] != '\n' &&
+            text[at - 1] != '\r')
+            continue; // another attribute ending in "count" (vcount, …) is not one
+        const char* begin = text.data() + at + 7;
+        const char* end = text.data() + text.size();
+        std::uint64_t n = 0;
+        const auto [ptr, ec] = std::from_chars(begin, end, n);
+        // Assimp reads what is not a number (or 0) as an empty array and then follows it: a
+        // float_array of count "z192", "", "-192" or "0" holding 192 values crashed it (SEGV).
+        if (ptr == begin || ptr == end || *ptr != '"' || (ec == std::errc() && n == 0)) {
+            const std::size_t close = text.find('"', at + 7);
+            throw InvalidInput(where + "count=\"" +
+                               text.substr(at + 7, std::min<std::size_t>(close - at - 7, 32)) +
+                               "\" at line " + lineOf(at) + " is not a whole number from 1");
+        }
+        if (ec == std::errc::result_out_of_range || n > maxCount)
+            throw LimitExceeded(where + "count=\"" + std::string(begin, ptr) + "\" at line " +
+                                lineOf(at) + " is more than the limit of " +
+                                std::to_string(maxCount) + " items (9 per triangle of " +
+                                std::to_string(maxItems) + "); decimate the mesh");
+    }
+    for (const char* tag : {"<p>", "<p ", "<v>", "<v ", "<vcount>", "<vcount "}) {
+        for (std::size_t at = text.find(tag); at != std::string::npos;
+             at = text.find(tag, at + 1)) {
+            std::size_t i = text.find('>', at);
+            if (i == std::string::npos) break;
+            for (++i; i < text.size() && text[i] != '<'; ++i) {
+                const char c = text[i];
+                if ((c >= '0' && c <= '9') || c == ' ' || c == '\t' || c == '\n' || c == '\r')
+                    continue;
+                const std::string name(tag + 1, std::strlen(tag) - 2);
+                throw InvalidInput(where + "the index list <" + name + "> at line " + lineOf(i) +
+                                   " holds something that is not a whole number");
+            }
+        }
+    }
+}
+
 } // namespace
 
 void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
@@ -137,7 +195,18 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
     std::string ext = file.extension().string();
     for (char& ch : ext)
         if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
-    if (ext == ".ply" || std::string_view(magic, 3) == "ply") checkPly(file, in, size, maxItems);
+    if (ext == ".ply" || std::string_view(magic, 3) == "ply") {
+        checkPly(file, in, size, maxItems);
+        return;
+    }
+    // Collada by extension or by its root element near the start (Assimp also sniffs content).
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    in.clear();
+    in.seekg(0);
+    if (ext == ".dae" || head.find("<COLLADA") != std::string::npos)
+        checkCollada(file, in, maxItems);
 }
 
 } // namespace sylva::env

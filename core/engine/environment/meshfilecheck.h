@@ -15,9 +15,14 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// `end_header`). Today: PLY files (by extension or by their `ply` first line) must have a
 /// well-formed header (format, element and property lines, `end_header`), element counts of at
 /// most \p maxItems, and at least as many data bytes (binary) or lines (ASCII) as the header
-/// declares. Other formats pass unchecked.
+/// declares. Collada files (by extension or a `<COLLADA` root element) must declare every
+/// `count` as a whole number from 1 to 9·maxItems and hold only whole numbers in their index
+/// lists (`<p>`, `<v>`, `<vcount>`): Assimp reserves what counts declare, crashed on a count of
+/// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. Other formats
+/// pass unchecked.
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.
-/// \throw LimitExceeded when an element count exceeds \p maxItems.
+/// \throw LimitExceeded when a PLY element count exceeds \p maxItems or a Collada count
+/// 9·\p maxItems.
 /// \throw IoError when the file cannot be read.
 void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems = kMaxObstacleTriangles);
 

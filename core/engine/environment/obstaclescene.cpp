@@ -1,10 +1,13 @@
 #include "engine/environment/obstaclescene.h"
 
+#include "engine/util/closestpoint.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include <embree3/rtcore.h>
 #include <omp.h>
@@ -29,6 +32,78 @@ bool mollerTrumbore(const glm::dvec3& orig, const glm::dvec3& dir, const glm::dv
     if (v < 0.0 || u + v > 1.0) return false;
     t = glm::dot(e2, q) * inv;
     return true;
+}
+
+namespace {
+
+/// Ericson 5.1.9: closest points of the segments p1q1 (parameter s) and p2q2 (parameter t).
+double segmentSegmentDistance2(const glm::dvec3& p1, const glm::dvec3& q1, const glm::dvec3& p2,
+                               const glm::dvec3& q2, double& s, double& t, glm::dvec3& c2) {
+    const glm::dvec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+    const double a = glm::dot(d1, d1), e = glm::dot(d2, d2), f = glm::dot(d2, r);
+    constexpr double eps = 1e-300;
+    if (a <= eps && e <= eps) {
+        s = t = 0.0;
+    } else if (a <= eps) {
+        s = 0.0;
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = glm::dot(d1, r);
+        if (e <= eps) {
+            t = 0.0;
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = glm::dot(d1, d2), denom = a * e - b * b;
+            s = denom > eps ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0.0) {
+                t = 0.0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1.0) {
+                t = 1.0;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    const glm::dvec3 c1 = p1 + d1 * s;
+    c2 = p2 + d2 * t;
+    const glm::dvec3 d = c1 - c2;
+    return glm::dot(d, d);
+}
+
+} // namespace
+
+double segmentTriangleDistance2(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& v0,
+                                const glm::dvec3& v1, const glm::dvec3& v2, glm::dvec3& onTriangle,
+                                double& t) {
+    double ct, u, v;
+    if (p0 != p1 && mollerTrumbore(p0, p1 - p0, v0, v1, v2, ct, u, v) && ct >= 0.0 && ct <= 1.0) {
+        t = ct;
+        onTriangle = (1.0 - u - v) * v0 + u * v1 + v * v2;
+        return 0.0;
+    }
+    // Not crossing: the closest pair has an endpoint of the segment or a point of an edge.
+    double best = std::numeric_limits<double>::infinity();
+    const auto consider = [&](double d2, const glm::dvec3& q, double at) {
+        if (d2 < best) {
+            best = d2;
+            onTriangle = q;
+            t = at;
+        }
+    };
+    const glm::dvec3 q0 = closestPointOnTriangle(p0, v0, v1, v2);
+    consider(glm::dot(p0 - q0, p0 - q0), q0, 0.0);
+    const glm::dvec3 q1 = closestPointOnTriangle(p1, v0, v1, v2);
+    consider(glm::dot(p1 - q1, p1 - q1), q1, 1.0);
+    const glm::dvec3* corners[3] = {&v0, &v1, &v2};
+    for (int k = 0; k < 3; ++k) {
+        double s, e;
+        glm::dvec3 q;
+        const double d2 =
+            segmentSegmentDistance2(p0, p1, *corners[k], *corners[(k + 1) % 3], s, e, q);
+        consider(d2, q, s);
+    }
+    return best;
 }
 
 namespace {
@@ -102,6 +177,82 @@ struct ObstacleScene::Impl {
             const glm::uvec3& tri = mesh.triangles[best.triangle];
             best.normal = glm::normalize(glm::cross(mesh.vertices[tri.y] - mesh.vertices[tri.x],
                                                     mesh.vertices[tri.z] - mesh.vertices[tri.x]));
+        }
+        return best;
+    }
+
+    /// The candidate triangle (mesh m, triangle i) for nearest(): keeps the closest within r.
+    void considerNearest(const Segment& s, double r2, std::uint32_t m, std::uint32_t i,
+                         SegmentHit& best, double& bestD2) const {
+        const ObstacleMesh& mesh = meshes[m];
+        const glm::uvec3& tri = mesh.triangles[i];
+        glm::dvec3 q;
+        double t;
+        const double d2 = segmentTriangleDistance2(
+            glm::dvec3(s.a), glm::dvec3(s.b), glm::dvec3(mesh.vertices[tri.x]),
+            glm::dvec3(mesh.vertices[tri.y]), glm::dvec3(mesh.vertices[tri.z]), q, t);
+        // Ties go to the lower (mesh, triangle): the answer does not depend on visiting order.
+        if (d2 > r2 || d2 > bestD2 ||
+            (d2 == bestD2 && best.hit && std::tie(m, i) > std::tie(best.mesh, best.triangle)))
+            return;
+        bestD2 = d2;
+        best.hit = true;
+        best.t = static_cast<float>(t);
+        best.point = glm::vec3(q);
+        best.mesh = m;
+        best.triangle = i;
+    }
+
+    SegmentHit nearest(const Segment& s, float radius) const {
+        SegmentHit best;
+        double bestD2 = std::numeric_limits<double>::infinity();
+        const double r = std::max(0.0, static_cast<double>(radius));
+        const double r2 = r * r;
+        const glm::vec3 pad(static_cast<float>(r) * 1.0001f + 1e-6f);
+        const glm::vec3 lo = glm::min(s.a, s.b) - pad, hi = glm::max(s.a, s.b) + pad;
+        if (backend == CollisionBackend::Embree && scene) {
+            struct Query {
+                const Impl* self;
+                const Segment* s;
+                double r2;
+                SegmentHit* best;
+                double* bestD2;
+            } q{this, &s, r2, &best, &bestD2};
+            const glm::vec3 mid = 0.5f * (s.a + s.b);
+            RTCPointQuery pq;
+            pq.x = mid.x;
+            pq.y = mid.y;
+            pq.z = mid.z;
+            pq.time = 0.0f;
+            pq.radius = 0.5f * glm::length(s.b - s.a) + pad.x;
+            RTCPointQueryContext ctx;
+            rtcInitPointQueryContext(&ctx);
+            rtcPointQuery(
+                scene.get(), &pq, &ctx,
+                [](RTCPointQueryFunctionArguments* args) -> bool {
+                    auto* q = static_cast<Query*>(args->userPtr);
+                    q->self->considerNearest(*q->s, q->r2, q->self->geomToMesh[args->geomID],
+                                             args->primID, *q->best, *q->bestD2);
+                    return false;
+                },
+                &q);
+        } else {
+            for (std::size_t m = 0; m < meshes.size(); ++m) {
+                const ObstacleMesh& mesh = meshes[m];
+                if (mesh.empty() || !glm::all(glm::lessThanEqual(lo, mesh.hi)) ||
+                    !glm::all(glm::lessThanEqual(mesh.lo, hi)))
+                    continue;
+                for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+                    considerNearest(s, r2, static_cast<std::uint32_t>(m),
+                                    static_cast<std::uint32_t>(i), best, bestD2);
+            }
+        }
+        if (best.hit) {
+            const ObstacleMesh& mesh = meshes[best.mesh];
+            const glm::uvec3& tri = mesh.triangles[best.triangle];
+            const glm::vec3 n = glm::cross(mesh.vertices[tri.y] - mesh.vertices[tri.x],
+                                           mesh.vertices[tri.z] - mesh.vertices[tri.x]);
+            best.normal = glm::length(n) > 0.0f ? glm::normalize(n) : glm::vec3(0.0f);
         }
         return best;
     }
@@ -250,6 +401,27 @@ SegmentHit ObstacleScene::intersect(const Segment& s) const {
 bool ObstacleScene::occluded(const Segment& s) const {
     return mImpl->backend == CollisionBackend::Embree ? mImpl->embreeOccluded(s)
                                                       : mImpl->bruteIntersect(s, true).hit;
+}
+
+SegmentHit ObstacleScene::nearest(const Segment& s, float radius) const {
+    return mImpl->nearest(s, radius);
+}
+
+bool ObstacleScene::touches(const Segment& s, float radius) const {
+    if (occluded(s)) return true;
+    return radius > 0.0f && nearest(s, radius).hit;
+}
+
+void ObstacleScene::touches(std::span<const Segment> segments, std::span<const float> radii,
+                            std::span<std::uint8_t> out) const {
+    if (out.size() != segments.size() || radii.size() != segments.size())
+        throw std::invalid_argument("ObstacleScene::touches: sizes differ");
+    const auto n = static_cast<std::ptrdiff_t>(segments.size());
+#pragma omp parallel for schedule(static) if (n > 1024 && !omp_in_parallel())
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        out[k] = touches(segments[k], radii[k]) ? 1 : 0;
+    }
 }
 
 void ObstacleScene::intersect(std::span<const Segment> segments, std::span<SegmentHit> out) const {

@@ -38,6 +38,15 @@ enum class CollisionBackend { Embree, BruteForce };
 bool mollerTrumbore(const glm::dvec3& orig, const glm::dvec3& dir, const glm::dvec3& v0,
                     const glm::dvec3& v1, const glm::dvec3& v2, double& t, double& u, double& v);
 
+/// Squared distance between the segment [p0, p1] and the triangle (v0, v1, v2), in double
+/// precision: 0 when the segment crosses the triangle, otherwise the least of the endpoints'
+/// distances to the triangle and the segment's distances to the triangle's edges. The closest
+/// point on the triangle is written to \p onTriangle and the segment's parameter (0 at p0) to
+/// \p t.
+double segmentTriangleDistance2(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& v0,
+                                const glm::dvec3& v1, const glm::dvec3& v2, glm::dvec3& onTriangle,
+                                double& t);
+
 /// The static obstacles of a scene with an acceleration structure built once (an Embree BVH).
 /// Immutable after construction; every query is const and safe to call from many threads.
 class ObstacleScene {
@@ -70,6 +79,19 @@ public:
     SegmentHit intersect(const Segment& s) const;
     /// Whether the segment touches any triangle (cheaper than intersect()).
     bool occluded(const Segment& s) const;
+    /// The obstacle point closest to the segment among the triangles within \p radius of it
+    /// (metres, >= 0): whether a tube (a capsule) of that radius around the segment touches an
+    /// obstacle. hit == false when none; otherwise point is on the triangle, t the segment's
+    /// parameter of the closest approach and normal the triangle's. With radius 0 it answers
+    /// like occluded() (up to floating-point ties on edges). Branch tubes and trunks use it so
+    /// that bark, not only the branch axis, stays out of obstacles.
+    SegmentHit nearest(const Segment& s, float radius) const;
+    /// Whether a tube of \p radius around the segment touches any triangle: occluded(s) or
+    /// nearest(s, radius).hit.
+    bool touches(const Segment& s, float radius) const;
+    /// touches() for many segments with one radius each; \p out[i] is 1 when segment i touches.
+    void touches(std::span<const Segment> segments, std::span<const float> radii,
+                 std::span<std::uint8_t> out) const;
     /// intersect() for many segments, in parallel (OpenMP) when called outside a parallel
     /// region; \p out must have segments.size() entries. Results do not depend on threads.
     void intersect(std::span<const Segment> segments, std::span<SegmentHit> out) const;

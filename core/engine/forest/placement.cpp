@@ -147,6 +147,8 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
     requireRange("growth_spread", params.growthSpread, 0.0, 1e6);
     std::map<std::string, std::uint32_t> speciesIndex;
     for (std::size_t i = 0; i < species.size(); ++i) {
+        requireRange(("trunk radius of '" + species[i].name + "'").c_str(), species[i].trunkRadius,
+                     0.0, 1e3);
         requireRange(("crown radius of '" + species[i].name + "'").c_str(), species[i].crownRadius,
                      0.0, 1e4);
         speciesIndex.emplace(species[i].name, static_cast<std::uint32_t>(i));
@@ -257,7 +259,8 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
                 if (params.obstacles != nullptr && !params.obstacles->empty()) {
                     const env::Segment vertical{{q.x, params.obstacles->lo().y - 1.0f, q.y},
                                                 {q.x, params.obstacles->hi().y + 1.0f, q.y}};
-                    if (params.obstacles->occluded(vertical)) {
+                    const float trunk = species[sp].trunkRadius * inst.scale * inst.growth;
+                    if (params.obstacles->touches(vertical, trunk)) {
                         ++result.rejectedTries;
                         continue;
                     }

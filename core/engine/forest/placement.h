@@ -16,6 +16,10 @@ namespace sylva::forest {
 struct SpeciesSpec {
     std::string name;
     float crownRadius = 2.0f; ///< metres at scale 1 and full growth: the bounding cylinder
+    /// The trunk's bark radius at its base, metres at scale 1 and full growth: a tree stands no
+    /// nearer to an obstacle than this (times its scale and growth), so its bark does not start
+    /// inside one. 0: only the trunk's axis is kept out of obstacles.
+    float trunkRadius = 0.0f;
 };
 
 enum class DomainShape { Rectangle, Polygon };
@@ -61,7 +65,8 @@ struct PlacementParams {
     /// where it misses are rejected. nullptr: flat ground at y = 0.
     const env::ObstacleScene* ground = nullptr;
     /// Obstacles whose footprints are avoided: a position is rejected when the vertical line
-    /// through it meets any obstacle triangle. nullptr: none.
+    /// through it comes nearer to an obstacle triangle than the tree's trunk radius
+    /// (SpeciesSpec::trunkRadius · scale · growth). nullptr: none.
     const env::ObstacleScene* obstacles = nullptr;
 };
 

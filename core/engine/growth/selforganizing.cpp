@@ -95,7 +95,10 @@ SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
                                                    SimulationOptions options)
     : mTrees(std::move(trees)), mObstacles(std::move(obstacles)), mOptions(options) {
     if (mTrees.empty()) throw InvalidInput("a stand needs at least one tree");
-    if (mTrees.size() > 65535) throw LimitExceeded("a stand holds at most 65,535 trees");
+    if (mTrees.size() > 65535)
+        throw LimitExceeded("a stand of self-organizing trees holds at most 65,535 trees, got " +
+                            std::to_string(mTrees.size()) +
+                            "; lower the domains' counts or split the scene into several projects");
     if (mObstacles.size() % 3 != 0)
         throw InvalidInput("obstacle triangles need 3 points each, got " +
                            std::to_string(mObstacles.size()) + " points");

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <limits>
+#include <string>
 
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -30,6 +33,29 @@ Rng generationRng(std::uint64_t seed, int gen) {
            "sylva-cli expand --limit; at most 2000000000)";
     throw LimitExceeded(msg);
 }
+
+/// Wall-clock budget of one derivation, checked where cancellation is.
+class Deadline {
+public:
+    explicit Deadline(double seconds)
+        : mSeconds(seconds), mEnd(std::chrono::steady_clock::now() +
+                                  std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                      std::chrono::duration<double>(seconds))) {}
+    void check(int gen) const {
+        if (std::chrono::steady_clock::now() <= mEnd) return;
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", mSeconds);
+        throw LimitExceeded(
+            "the derivation took more than its time limit of " + std::string(seconds) +
+            " s (stopped in generation " + std::to_string(gen) +
+            "); derive fewer generations or raise the limit (the lsystem node's time_limit, "
+            "sylva-cli expand --time-limit; at most 86400 s)");
+    }
+
+private:
+    double mSeconds;
+    std::chrono::steady_clock::time_point mEnd;
+};
 
 [[noreturn]] void throwParamLimit(int gen, std::size_t symbolLimit) {
     throw LimitExceeded("generation " + std::to_string(gen) + " would hold more than " +
@@ -66,7 +92,7 @@ bool fastPathApplies(const Grammar& g) {
 }
 
 void deriveFast(const Grammar& g, ModuleString& cur, int generations, std::size_t limit,
-                Progress& progress) {
+                const Deadline& deadline, Progress& progress) {
     struct Entry {
         std::uint32_t offset;
         std::uint32_t length;
@@ -107,6 +133,7 @@ void deriveFast(const Grammar& g, ModuleString& cur, int generations, std::size_
     std::string next;
     for (int gen = 1; gen <= generations; ++gen) {
         progress.checkCancelled();
+        deadline.check(gen);
         std::uint64_t nextHistogram[256] = {};
         for (unsigned c = 0; c < 256; ++c) {
             if (!histogram[c]) continue;
@@ -162,8 +189,9 @@ struct GroupInfo {
 
 class Deriver {
 public:
-    Deriver(const Grammar& g, std::size_t limit, Progress& progress)
-        : mG(g), mLimit(limit), mParamLimit(paramLimitOf(limit)), mProgress(progress) {
+    Deriver(const Grammar& g, std::size_t limit, const Deadline& deadline, Progress& progress)
+        : mG(g), mLimit(limit), mParamLimit(paramLimitOf(limit)), mDeadline(deadline),
+          mProgress(progress) {
         mInfo.resize(g.groups.size());
         for (std::size_t i = 0; i < g.groups.size(); ++i) {
             GroupInfo& info = mInfo[i];
@@ -226,7 +254,10 @@ public:
 
         double slots[64];
         for (std::size_t i = 0; i < mN; ++i) {
-            if ((i & (kCancelCheckInterval - 1)) == 0) mProgress.checkCancelled();
+            if ((i & (kCancelCheckInterval - 1)) == 0) {
+                mProgress.checkCancelled();
+                mDeadline.check(gen);
+            }
             const unsigned char c = static_cast<unsigned char>(mSym[i]);
             const auto& groups = mG.groupsBySymbol[c];
             const int arity = parametric ? cur.paramCounts[i] : 0;
@@ -398,6 +429,7 @@ private:
     const Grammar& mG;
     std::size_t mLimit;
     std::size_t mParamLimit;
+    const Deadline& mDeadline;
     Progress& mProgress;
     std::vector<GroupInfo> mInfo;
     std::size_t mMaxLength[256] = {};
@@ -417,16 +449,21 @@ ModuleString derive(const Grammar& g, const DeriveOptions& opt, Progress& p) {
     if (generations < 0)
         throw InvalidInput("generations must be >= 0, got " + std::to_string(generations));
     const std::uint64_t seed = opt.seed.value_or(g.seed);
-    Deriver deriver(g, opt.symbolLimit, p);
+    if (!(opt.timeLimitSeconds > 0.0 && opt.timeLimitSeconds <= kMaxDeriveTimeLimit))
+        throw InvalidInput("the derivation's time limit must be in (0, 86400] seconds, got " +
+                           std::to_string(opt.timeLimitSeconds));
+    const Deadline deadline(opt.timeLimitSeconds);
+    Deriver deriver(g, opt.symbolLimit, deadline, p);
     ModuleString cur;
     deriver.axiom(cur, seed);
     if (fastPathApplies(g)) {
-        deriveFast(g, cur, generations, opt.symbolLimit, p);
+        deriveFast(g, cur, generations, opt.symbolLimit, deadline, p);
         return cur;
     }
     ModuleString next;
     for (int gen = 1; gen <= generations; ++gen) {
         p.checkCancelled();
+        deadline.check(gen);
         deriver.generation(cur, next, seed, gen);
         std::swap(cur, next);
         p.report(static_cast<double>(gen) / generations, "expand");

@@ -63,6 +63,10 @@ graph::NodeOutput evaluateLsystem(const graph::NodeContext& ctx) {
         requireRange("symbol_limit", limit, 1, 2e9);
         options.symbolLimit = static_cast<std::size_t>(limit);
     }
+    if (p.contains("time_limit")) {
+        options.timeLimitSeconds = p.number("time_limit", lsys::kDefaultDeriveTimeLimit);
+        requireRange("time_limit (s)", options.timeLimitSeconds, 1e-3, lsys::kMaxDeriveTimeLimit);
+    }
     const lsys::ModuleString word = lsys::derive(grammar, options, ctx.progress);
     out.timingsMs["expand"] = msSince(t0);
 
@@ -115,7 +119,9 @@ void registerLsystemNode(graph::NodeRegistry& registry) {
            integer("seed", nullptr, 0, kMaxSeed,
                    "Seed of stochastic rules and rand(); unset: the grammar's `seed:`"),
            number("symbol_limit", 20e6, 1, 2e9, "",
-                  "Derivation stops with an error past this many modules (runaway guard)")});
+                  "Derivation stops with an error past this many modules (runaway guard)"),
+           number("time_limit", lsys::kDefaultDeriveTimeLimit, 1e-3, lsys::kMaxDeriveTimeLimit, "s",
+                  "Derivation stops with an error after this many seconds (runaway guard)")});
     group(type.params, "Turtle",
           {number("angle", nullptr, -360, 360, "°",
                   "δ: turn of + - & ^ \\ / without a parameter; unset: the grammar's `angle:`"),

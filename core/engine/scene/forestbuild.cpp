@@ -143,7 +143,8 @@ const env::ObstacleScene& emptyScene() {
 
 } // namespace
 
-CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed) {
+CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed,
+                        const mesh::TubeSettings* tubes) {
     graph::Evaluator evaluator(species);
     const graph::NodeOutput& result = evaluator.evaluateNode(species.skeletonSource(), true, seed);
     CrownShape crown;
@@ -157,6 +158,9 @@ CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed) 
         top = std::max(top, d.y);
         if (s.order[i] > 0) bottom = std::min(bottom, d.y);
     }
+    const std::vector<float> rings = tubes ? mesh::tubeRadii(s, *tubes) : s.radius;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (i == 0 || s.parent[i] == 0) crown.trunk = std::max(crown.trunk, rings[i]);
     crown.radius = std::max(radius, 0.05f);
     crown.top = std::max(top, 0.05f);
     crown.bottom =
@@ -186,9 +190,15 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         const std::uint64_t crownKey = mixSeed(speciesKeys.back(), crownSeed);
         std::optional<CrownShape> cached;
         if (options.cache) cached = options.cache->findCrown(crownKey);
-        plans.back().crown = cached ? *cached : measureCrown(scene.species[i].graph, crownSeed);
+        const mesh::TubeSettings tubes =
+            mesh::treeMeshSettingsFromParams(plans.back().meshNode->params, 0).tubes;
+        plans.back().crown =
+            cached ? *cached : measureCrown(scene.species[i].graph, crownSeed, &tubes);
         if (options.cache && !cached) options.cache->storeCrown(crownKey, plans.back().crown);
-        specs.push_back({scene.species[i].name, plans.back().crown.radius});
+        // Trunks vary from tree to tree: placement keeps half again the sample's bark radius
+        // from obstacles (adaptation cannot move a root whose bark starts inside one).
+        specs.push_back({scene.species[i].name, plans.back().crown.radius,
+                         std::min(1.5f * plans.back().crown.trunk, 1e3f)});
     }
     stats.wallMs["species"] = msSince(t0);
 
@@ -362,6 +372,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     params.lightDirection = scene.lightDirection;
                     params.leafScale = ctx.leafScale;
                     params.leafAspect = ctx.leafAspect;
+                    const std::vector<float> bark =
+                        mesh::tubeRadii(*skeleton, meshSettings[in.species].tubes);
+                    params.barkRadii = bark;
                     // Stand-grown trees already competed with their neighbours and grew around
                     // the obstacles: they are not bent, only cut where a shoot still went
                     // through an obstacle (their markers and shadows stop most, not all).

@@ -15,6 +15,7 @@
 #include "engine/forest/placement.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/tubemesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
 
@@ -84,11 +85,15 @@ struct ForestStats {
 using TreeSink = std::function<void(const std::vector<ForestTree>& batch)>;
 
 /// Crown radius (m) and crown height band of a species at scale 1, measured on one sample tree
-/// when the species' traits do not give a radius.
+/// when the species' traits do not give a radius; and the trunk's bark radius at its base (m,
+/// the larger of the root's and its trunk child's rings as \p tubes draws them, or the
+/// skeleton's radii without \p tubes).
 struct CrownShape {
     float radius = 1.0f, bottom = 0.0f, top = 1.0f;
+    float trunk = 0.0f;
 };
-CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed);
+CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed,
+                        const mesh::TubeSettings* tubes = nullptr);
 
 /// Builds a forest: places the trees (hand-placed ones first, then the domains'), selects the
 /// tile, and for each of its trees evaluates the species graph with the tree's seed, adapts the

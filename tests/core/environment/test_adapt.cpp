@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include "engine/environment/adapt.h"
+#include "engine/mesh/tubemesh.h"
 #include "engine/util/error.h"
 
 using namespace sylva;
@@ -347,6 +348,9 @@ TEST(Adapt, LeavesWhoseCardsTouchAnObstacleAreDropped) {
     s.leaves.push_back({top, awayFromWall, 0.3f, 4});
     const ObstacleScene scene = wallAt(0.2f, 0.5f);
     AdaptParams p;
+    // Axes only: the trunk's 0.2 m bark would touch the wall (BarkStaysOutOfObstacles...).
+    const std::vector<float> axes(s.size(), 0.0f);
+    p.barkRadii = axes;
     const AdaptResult r = adaptTree(s, scene, glm::mat4(1.0f), p);
     EXPECT_EQ(r.stats.collidingBefore, 0u);
     EXPECT_EQ(r.stats.droppedLeaves, 1u);
@@ -461,4 +465,49 @@ TEST(Adapt, ManyTreesInParallelMatchOneByOne) {
     EXPECT_THROW(
         adaptTrees(rest, std::span<const glm::mat4>(transforms).first(3), scene, AdaptParams{}),
         InvalidInput);
+}
+
+// Bark, not only axes: a branch whose axis passes 5 cm above a box while its bark (10 cm
+// radius) dips into it. Tested as axes (zero bark radii) nothing collides; tested as tubes the
+// branch collides, and no vertex of the adapted tree's tube mesh is inside the box.
+TEST(Adapt, BarkStaysOutOfObstaclesNotOnlyAxes) {
+    skel::Skeleton s;
+    s.addNode(glm::vec3(0.0f), -1, 0.15f, 0, glm::quat(1, 0, 0, 0));
+    const std::int32_t fork = addBranch(s, 0, glm::vec3(0, 0.5f, 0), 4, 0, 0.15f); // y = 2
+    addBranch(s, fork, glm::vec3(0, 0.5f, 0), 2, 0, 0.12f);
+    addBranch(s, fork, glm::vec3(0.25f, 0, 0), 6, 1, 0.1f); // to x = 1.5 at y = 2
+    const glm::vec3 lo(0.5f, 0.0f, -1.0f), hi(1.0f, 1.95f, 1.0f);
+    const ObstacleScene scene({makeBoxMesh(lo, hi)});
+    const glm::mat4 m(1.0f);
+
+    AdaptParams axes;
+    const std::vector<float> zero(s.size(), 0.0f);
+    axes.barkRadii = zero;
+    EXPECT_EQ(adaptTree(s, scene, m, axes).stats.collidingBefore, 0u);
+
+    {
+        const AdaptParams bark; // the skeleton's radii
+        const AdaptResult r = adaptTree(s, scene, m, bark);
+        EXPECT_GT(r.stats.collidingBefore, 0u);
+        EXPECT_EQ(r.stats.collidingAfter, 0u);
+        const mesh::Mesh tubes = mesh::buildTubeMesh(r.skeleton, mesh::TubeSettings{});
+        ASSERT_FALSE(tubes.positions.empty());
+        std::size_t inside = 0;
+        for (const glm::vec3& p : tubes.positions)
+            inside +=
+                glm::all(glm::greaterThan(p, lo + 1e-5f)) && glm::all(glm::lessThan(p, hi - 1e-5f));
+        EXPECT_EQ(inside, 0u);
+        // The same skeleton unadapted has tube vertices inside the box: the test can fail.
+        const mesh::Mesh rest = mesh::buildTubeMesh(s, mesh::TubeSettings{});
+        std::size_t restInside = 0;
+        for (const glm::vec3& p : rest.positions)
+            restInside +=
+                glm::all(glm::greaterThan(p, lo + 1e-5f)) && glm::all(glm::lessThan(p, hi - 1e-5f));
+        EXPECT_GT(restInside, 0u);
+    }
+    // Bark radii of another size than the skeleton are refused.
+    AdaptParams wrong;
+    const std::vector<float> three(3, 0.1f);
+    wrong.barkRadii = three;
+    EXPECT_THROW(adaptTree(s, scene, m, wrong), InvalidInput);
 }

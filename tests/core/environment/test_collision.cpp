@@ -195,3 +195,72 @@ TEST(ObstacleScene, BatchQueriesMatchSingleOnOneAndTwoThreads) {
     std::vector<SegmentHit> wrong(3);
     EXPECT_THROW(scene.intersect(segs, wrong), std::invalid_argument);
 }
+
+// Tubes (capsules) against triangles: the distance by hand, the BVH query against a scan of
+// every triangle, and a dense sampling of the capsule as a third opinion.
+TEST(SegmentTriangleDistance, ByHand) {
+    const glm::dvec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+    glm::dvec3 q;
+    double t = -1.0;
+    // Crossing the triangle: 0, at the crossing.
+    EXPECT_EQ(segmentTriangleDistance2({0.2, 0.2, -1}, {0.2, 0.2, 1}, a, b, c, q, t), 0.0);
+    EXPECT_DOUBLE_EQ(t, 0.5);
+    EXPECT_NEAR(glm::length(q - glm::dvec3(0.2, 0.2, 0)), 0.0, 1e-12);
+    // Above the face, parallel to it: its height.
+    EXPECT_DOUBLE_EQ(segmentTriangleDistance2({0.1, 0.1, 0.5}, {0.3, 0.2, 0.5}, a, b, c, q, t),
+                     0.25);
+    // Beside an edge, crossing past it: the edges' distance (the segment x = -0.5 in z).
+    EXPECT_DOUBLE_EQ(segmentTriangleDistance2({-0.5, 0.5, -1}, {-0.5, 0.5, 1}, a, b, c, q, t),
+                     0.25);
+    EXPECT_NEAR(t, 0.5, 1e-12);
+    // Off a corner: the corner.
+    EXPECT_DOUBLE_EQ(segmentTriangleDistance2({2, -1, 0}, {2, -1, 3}, a, b, c, q, t), 2.0);
+    EXPECT_EQ(q, b);
+}
+
+TEST(ObstacleScene, NearestAgreesWithScanAndSampling) {
+    const std::vector<ObstacleMesh> meshes = randomMeshes(7);
+    std::vector<ObstacleMesh> copy = meshes;
+    const ObstacleScene embree(std::move(copy), CollisionBackend::Embree);
+    copy = meshes;
+    const ObstacleScene brute(std::move(copy), CollisionBackend::BruteForce);
+    Rng rng(11);
+    int touching = 0, free = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Segment s{randomPoint(rng, -7.0f, 7.0f), randomPoint(rng, -7.0f, 7.0f)};
+        const float r = rng.uniformf(0.0f, 0.5f);
+        const SegmentHit e = embree.nearest(s, r), b = brute.nearest(s, r);
+        ASSERT_EQ(e.hit, b.hit) << i;
+        EXPECT_EQ(embree.touches(s, r), e.hit || embree.occluded(s)) << i;
+        if (!e.hit) {
+            ++free;
+            continue;
+        }
+        ++touching;
+        EXPECT_EQ(e.mesh, b.mesh) << i;
+        EXPECT_EQ(e.triangle, b.triangle) << i;
+        EXPECT_EQ(e.point, b.point) << i;
+        // The point is on the obstacle and within r of the segment.
+        const glm::vec3 onSeg = s.a + e.t * (s.b - s.a);
+        EXPECT_LE(glm::length(e.point - onSeg), r * 1.0001f + 1e-5f) << i;
+    }
+    EXPECT_GT(touching, 100);
+    EXPECT_GT(free, 100);
+}
+
+TEST(ObstacleScene, TubeTouchingABoxByHand) {
+    const ObstacleScene box({makeBoxMesh(glm::vec3(0, 0, 0), glm::vec3(2, 2, 2))});
+    // A vertical segment 0.1 m beside the face x = 0: its axis misses, a tube of 0.1 touches
+    // (within float rounding), one of 0.09 does not.
+    const Segment s{{-0.1f, 0.5f, 1.0f}, {-0.1f, 1.5f, 1.0f}};
+    EXPECT_FALSE(box.occluded(s));
+    EXPECT_TRUE(box.touches(s, 0.1001f));
+    EXPECT_FALSE(box.touches(s, 0.09f));
+    const SegmentHit h = box.nearest(s, 0.2f);
+    ASSERT_TRUE(h.hit);
+    EXPECT_NEAR(h.point.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(h.point.z, 1.0f, 1e-6f);
+    // Radius 0 answers like occluded().
+    EXPECT_FALSE(box.touches(s, 0.0f));
+    EXPECT_TRUE(box.touches({{-1, 1, 1}, {1, 1, 1}}, 0.0f));
+}

@@ -135,3 +135,85 @@ TEST(MeshFileCheck, LimitsObstacleTriangles) {
         << m;
     EXPECT_EQ(loadObstacleMesh(file, {}, 3).triangleCount(), 3u);
 }
+
+namespace {
+
+/// A Collada cube (12 triangles) as Assimp exports it: a polylist with an index list <p>.
+std::string colladaCube(const std::string& polylistCount = "12", const std::string& index = "25") {
+    std::string p;
+    for (int i = 0; i < 36; ++i)
+        p += (i == 25 ? index : std::to_string(i)) + " ";
+    std::string v, positions;
+    for (int i = 0; i < 12; ++i)
+        v += "3 ";
+    const float c[8][3] = {{-1, 0, -1}, {1, 0, -1}, {1, 2, -1}, {-1, 2, -1},
+                           {-1, 0, 1},  {1, 0, 1},  {1, 2, 1},  {-1, 2, 1}};
+    const int tri[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                            {3, 6, 2}, {3, 7, 6}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+    for (const auto& t : tri)
+        for (int k : t)
+            for (int a = 0; a < 3; ++a)
+                positions += std::to_string(static_cast<int>(c[k][a])) + " ";
+    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+           "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+           "<asset><unit name=\"meter\" meter=\"1\"/><up_axis>Y_UP</up_axis></asset>\n"
+           "<library_geometries><geometry id=\"g\"><mesh>\n"
+           "<source id=\"s\"><float_array id=\"a\" count=\"108\">" +
+           positions +
+           "</float_array>\n"
+           "<technique_common><accessor count=\"36\" source=\"#a\" stride=\"3\">"
+           "<param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/>"
+           "<param name=\"Z\" type=\"float\"/></accessor></technique_common></source>\n"
+           "<vertices id=\"v\"><input semantic=\"POSITION\" source=\"#s\"/></vertices>\n"
+           "<polylist count=\"" +
+           polylistCount + "\"><input offset=\"0\" semantic=\"VERTEX\" source=\"#v\"/>\n<vcount>" +
+           v + "</vcount>\n<p>" + p +
+           "</p>\n</polylist></mesh></geometry></library_geometries>\n"
+           "<library_visual_scenes><visual_scene id=\"scene\"><node id=\"n\">"
+           "<instance_geometry url=\"#g\"/></node></visual_scene></library_visual_scenes>\n"
+           "<scene><instance_visual_scene url=\"#scene\"/></scene>\n</COLLADA>\n";
+}
+
+} // namespace
+
+// Found by fuzz_obstacle (tests/fuzz/regressions/obstacle/oom-dae-index-list-not-a-number): a
+// token that is not a number in a Collada index list made Assimp 5.2.5 ask for 2.4 GB; and a
+// polylist declaring 2·10^9 polygons made it reserve 16 GB. Both are refused before Assimp reads
+// the file; the well-formed cube loads.
+TEST(MeshFileCheck, ColladaCountsAndIndexListsAreChecked) {
+    EXPECT_EQ(loadObstacleMesh(writeFile("cube.dae", colladaCube())).triangleCount(), 12u);
+    const std::string bad = messageOf<InvalidInput>(
+        writeFile("badindex.dae", colladaCube("12", "x6")), kMaxObstacleTriangles);
+    EXPECT_NE(bad.find("cannot read it: Collada the index list <p> at line 10 holds something that "
+                       "is not a whole number"),
+              std::string::npos)
+        << bad;
+    // By its content too, whatever the extension says.
+    EXPECT_NE(messageOf<InvalidInput>(writeFile("badindex.xml", colladaCube("12", "\xc5\xca")),
+                                      kMaxObstacleTriangles)
+                  .find("not a whole number"),
+              std::string::npos);
+    const std::string huge = messageOf<LimitExceeded>(
+        writeFile("huge.dae", colladaCube("2000000000")), kMaxObstacleTriangles);
+    EXPECT_NE(huge.find("cannot read it: Collada count=\"2000000000\" at line 8 is more than the "
+                        "limit of 90000000 items (9 per triangle of 10000000); decimate the mesh"),
+              std::string::npos)
+        << huge;
+}
+
+// Found by fuzz_obstacle (tests/fuzz/regressions/obstacle/crash-dae-count-not-a-number): a
+// float_array whose count is not a whole number from 1 ("z192"; "0", "" and "-192" too) but
+// holds values crashed Assimp 5.2.5 (SEGV). Refused before Assimp reads the file.
+TEST(MeshFileCheck, ColladaCountsAreWholeNumbersFromOne) {
+    const std::string cube = colladaCube();
+    for (const std::string bad : {"z108", "0", "", "-108", "1e3"}) {
+        std::string text = cube;
+        text.replace(text.find("count=\"108\""), 11, "count=\"" + bad + "\"");
+        const std::string m =
+            messageOf<InvalidInput>(writeFile("badcount.dae", text), kMaxObstacleTriangles);
+        EXPECT_NE(m.find("cannot read it: Collada count=\"" + bad +
+                         "\" at line 5 is not a whole number from 1"),
+                  std::string::npos)
+            << m;
+    }
+}

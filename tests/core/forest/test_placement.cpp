@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <omp.h>
@@ -206,6 +207,35 @@ TEST(Placement, AvoidsObstacleFootprintsAndStandsOnTheGround) {
     }
     expectSame(r, placeForest(species, {rectangle({-50, -50}, {50, 50}, 100, 100)}, {}, params,
                               PlacementMethod::Naive));
+}
+
+// A trunk of bark radius r stands at least r (times its scale and growth) from an obstacle, so
+// its bark does not start inside one; with no trunk radius only the axis is kept out.
+TEST(Placement, TrunksKeepTheirBarkRadiusFromObstacles) {
+    auto species = twoSpecies();
+    const env::ObstacleScene obstacles({env::makeBoxMesh({-10, 0, -5}, {10, 8, 5}, "house")});
+    PlacementParams params;
+    params.seed = 5;
+    params.obstacles = &obstacles;
+    const auto gap = [](const Instance& i) {
+        const float dx = std::max({-10.0f - i.position.x, 0.0f, i.position.x - 10.0f});
+        const float dz = std::max({-5.0f - i.position.z, 0.0f, i.position.z - 5.0f});
+        return std::sqrt(dx * dx + dz * dz);
+    };
+    const std::vector<Domain> domains = {rectangle({-14, -9}, {14, 9}, 400, 400)};
+    float nearest = 1e9f;
+    for (const Instance& i : placeForest(species, domains, {}, params).instances)
+        nearest = std::min(nearest, gap(i));
+    EXPECT_LT(nearest, 0.5f); // without a trunk radius trees stand right at the walls
+    for (SpeciesSpec& s : species)
+        s.trunkRadius = 0.5f;
+    const PlacementResult r = placeForest(species, domains, {}, params);
+    EXPECT_GT(r.instances.size(), 20u);
+    for (const Instance& i : r.instances)
+        EXPECT_GE(gap(i), 0.5f * i.scale * i.growth) << i.position.x << ", " << i.position.z;
+    expectSame(r, placeForest(species, domains, {}, params, PlacementMethod::Naive));
+    species[0].trunkRadius = -1.0f;
+    EXPECT_THROW(placeForest(species, domains, {}, params), InvalidInput);
 }
 
 TEST(Placement, HandPlacedInstancesComeFirstAndBlock) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 using sylva::graph::Value;
 
 TEST(Value, JsonRoundTripIsCanonical) {
@@ -80,4 +82,18 @@ TEST(Value, LooseParsing) {
     EXPECT_TRUE(Value::parseLoose("3").isNumber());
     EXPECT_TRUE(Value::parseLoose("[1,2]").isArray());
     EXPECT_EQ(Value::parseLoose("ternary.lsys").toString(), "ternary.lsys");
+}
+
+// Species, projects and --set values nest at most 256 levels (the reader is recursive).
+TEST(Value, JsonNestingIsLimited) {
+    EXPECT_NO_THROW(Value::parseJson(std::string(200, '[') + std::string(200, ']')));
+    try {
+        Value::parseJson(std::string(300, '[') + std::string(300, ']'), "deep.json");
+        FAIL() << "no limit";
+    } catch (const sylva::InvalidInput& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("JSON nested too deeply"), std::string::npos) << m;
+        EXPECT_NE(m.find("deep.json:1:"), std::string::npos) << m;
+    }
+    EXPECT_THROW(Value::parseJson(std::string(100000, '[')), sylva::InvalidInput);
 }

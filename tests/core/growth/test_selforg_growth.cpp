@@ -298,3 +298,18 @@ TEST(SelfOrgGrowth, ValidationNamesTheRange) {
     EXPECT_THROW(growStand({}, {}), InvalidInput);
     EXPECT_THROW(growStand({{glm::vec3(0), p, 1}}, {glm::vec3(0), glm::vec3(1)}), InvalidInput);
 }
+
+// A stand holds at most 65,535 trees (node ids keep the tree in 16 bits): one more is refused
+// before anything grows, with a message saying what to do.
+TEST(SelfOrganizing, StandsAreLimitedTo65535Trees) {
+    const SelfOrganizingParams p = test::vigorousParams(2);
+    const std::vector<StandTree> trees(65536, StandTree{glm::vec3(0), p, 1});
+    try {
+        growStand(trees, {});
+        FAIL() << "no limit";
+    } catch (const LimitExceeded& e) {
+        EXPECT_STREQ(e.what(), "a stand of self-organizing trees holds at most 65,535 trees, got "
+                               "65536; lower the domains' counts or split the scene into several "
+                               "projects");
+    }
+}

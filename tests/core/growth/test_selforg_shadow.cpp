@@ -1,10 +1,13 @@
 // The shadow propagation environment: pyramid values by hand, incremental == full.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include <omp.h>
 
 #include "engine/growth/selforganizing.h"
 #include "engine/growth/shadowgrid.h"
+#include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "selforgparams.h"
 
@@ -232,5 +235,21 @@ TEST(SelfOrgShadow, NeighbourhoodMatchesVoxelLookups) {
                     ASSERT_EQ(n[(y + 1) * 9 + (x + 1) * 3 + (z + 1)], expect)
                         << c.x << "," << c.y << "," << c.z << " + " << x << "," << y << "," << z;
                 }
+    }
+}
+
+// The shadow grid's limit (2^31 voxels) is checked before the grid grows: two sources 2000
+// voxels apart on every axis would need 8·10^9 voxels.
+TEST(ShadowGrid, GrowingPastTheVoxelLimitThrowsBeforeAllocating) {
+    ShadowGrid g(0.01f, 0.0f, 2);
+    const ShadowKernel k = ShadowKernel::make(1.0, 2.0, 2);
+    g.addPyramid({0, 10, 0}, k);
+    try {
+        g.addPyramid({2000, 2000, 2000}, k);
+        FAIL() << "no limit";
+    } catch (const sylva::LimitExceeded& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("shadow grid would need "), std::string::npos) << m;
+        EXPECT_NE(m.find(" voxels; use a larger voxel_size"), std::string::npos) << m;
     }
 }

@@ -124,6 +124,7 @@ TEST(GrammarDiagnostics, SyntaxErrors) {
     expectOneDiagnostic("axiom: F\nangle: 1\nangle: 2\n", {3, 1, "given twice (first at line 2)"});
     expectOneDiagnostic("axiom: F\ngenerations: 2.5\n", {2, 14, "whole number"});
     expectOneDiagnostic("axiom: F\ngenerations: -1\n", {2, 14, "whole number"});
+    expectOneDiagnostic("axiom: F\ngenerations: 1001\n", {2, 14, "from 0 to 1000"});
     expectOneDiagnostic("axiom: F\nseed: -3\n", {2, 7, "seed must be a whole number"});
     expectOneDiagnostic("axiom: F\nstep: 0\n", {2, 7, "step must be > 0"});
     expectOneDiagnostic("axiom: F\nseed: rand(1, 2)\n", {2, 7, "seed must be a whole number"});

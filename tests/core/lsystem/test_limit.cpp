@@ -1,6 +1,8 @@
 // The symbol limit: predicted before the memory is spent, naming the generation.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "lsystemtest.h"
 
 using namespace sylva;
@@ -67,4 +69,48 @@ TEST(Limit, ModuleParametersAreLimitedToo) {
               "100; derive fewer generations or raise the limit (the lsystem node's symbol_limit, "
               "sylva-cli expand --limit; at most 2000000000)");
     EXPECT_EQ(derive(g, options(6, std::nullopt, 160)).size(), 64u); // 320 parameters fit
+}
+
+// The time limit: within the symbol limit a grammar can rewrite 20 million modules for 1000
+// generations (hours). These grammars would take seconds to minutes; with a limit of a
+// millisecond (or a microsecond) they stop with LimitExceeded naming the limit and how to
+// raise it, on the general path and on the fast path.
+TEST(Limit, DerivationStopsAtItsTimeLimit) {
+    const Grammar g =
+        parseGrammar("axiom: A(0)\nA(x) : x < 16 -> A(x+1)A(x+1)\nA(x) : x >= 16 -> A(x+1)\n");
+    DeriveOptions o;
+    o.generations = 1000; // 65,536 modules rewritten 984 times
+    o.timeLimitSeconds = 1e-3;
+    try {
+        derive(g, o);
+        FAIL() << "no time limit";
+    } catch (const LimitExceeded& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("the derivation took more than its time limit of 0.001 s (stopped in "
+                         "generation "),
+                  std::string::npos)
+            << m;
+        EXPECT_NE(m.find("derive fewer generations or raise the limit (the lsystem node's "
+                         "time_limit, sylva-cli expand --time-limit; at most 86400 s)"),
+                  std::string::npos)
+            << m;
+    }
+    const Grammar fast = parseGrammar("axiom: F\nF -> FF\n");
+    o.generations = 24;
+    o.timeLimitSeconds = 1e-6;
+    EXPECT_THROW(derive(fast, o), LimitExceeded);
+    // A derivation within its limit gives the same word as without one.
+    o.generations = 10;
+    o.timeLimitSeconds = kMaxDeriveTimeLimit;
+    EXPECT_EQ(derive(fast, o).size(), 1024u);
+    EXPECT_EQ(DeriveOptions{}.timeLimitSeconds, 300.0);
+}
+
+TEST(Limit, TimeLimitOutOfRangeIsInvalid) {
+    const Grammar g = parseGrammar("axiom: F\n");
+    for (double seconds : {0.0, -1.0, 86401.0, std::nan("")}) {
+        DeriveOptions o;
+        o.timeLimitSeconds = seconds;
+        EXPECT_THROW(derive(g, o), InvalidInput) << seconds;
+    }
 }
