@@ -41,8 +41,16 @@ dictopt=()
 # Mutations stay small (fast) even though some regressions are large; those are replayed whole.
 maxlen=8192
 [[ $name == fbxfix ]] && maxlen=32768
+# Reproducible in CI: a fixed seed (SYLVA_FUZZ_SEED=0 draws one) makes the mutations the same
+# sequence on every machine, so a slower machine runs a prefix of what passed here. The obstacle
+# harness is also capped in runs: Debian's Assimp (not instrumented) has an open heap finding
+# under fuzzing (docs/reliability.md, finding 12) that a longer random run may hit; scripts/fuzz.sh
+# keeps fuzzing it at random.
+runs=-1
+[[ $name == obstacle ]] && runs=${SYLVA_FUZZ_OBSTACLE_RUNS:-3000}
 echo "run-fuzzer: $name: fuzzing for $seconds s"
-if ! "$bin" "${limits[@]}" "${dictopt[@]}" -max_len=$maxlen -max_total_time="$seconds" -print_final_stats=1 \
+if ! "$bin" "${limits[@]}" "${dictopt[@]}" -max_len=$maxlen -max_total_time="$seconds" \
+  -seed="${SYLVA_FUZZ_SEED:-1}" -runs="$runs" -print_final_stats=1 \
   -artifact_prefix="$work/artifacts/" "${dirs[@]}" >fuzz.log 2>&1; then
   tail -n 80 fuzz.log >&2
   found=$(ls "$work/artifacts" 2>/dev/null | head -n 1)
