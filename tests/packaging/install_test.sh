@@ -15,7 +15,17 @@ deb=$(realpath "$1")
 mode=$2
 [[ -f $deb ]] || fail "no package $deb"
 [[ $(id -u) == 0 ]] || fail "needs root (apt-get install)"
-mirror=${SYLVA_DEBIAN_MIRROR:-http://deb.debian.org/debian}
+# The mirror this machine's apt uses (a CI machine may point at its own), else Debian's.
+machine_mirror() {
+  local uri=""
+  if [[ -f /etc/apt/sources.list.d/debian.sources ]]; then
+    uri=$(awk '/^URIs:/ {print $2; exit}' /etc/apt/sources.list.d/debian.sources)
+  elif [[ -f /etc/apt/sources.list ]]; then
+    uri=$(awk '$1 == "deb" && $0 ~ /bookworm( |$)/ {print $2; exit}' /etc/apt/sources.list)
+  fi
+  echo "${uri:-http://deb.debian.org/debian}"
+}
+mirror=${SYLVA_DEBIAN_MIRROR:-$(machine_mirror)}
 start=$(date +%s)
 step() { echo "install_test: $1 ($(( $(date +%s) - start )) s)"; }
 
@@ -46,7 +56,7 @@ case $mode in
   debootstrap --variant=minbase bookworm "$root" "$mirror" > "$root.debootstrap.log" 2>&1 ||
     { tail -20 "$root.debootstrap.log"; fail "debootstrap"; }
   step "fresh Debian 12 (debootstrap minbase) in $root, $(du -shx "$root" | cut -f1)"
-  mount -t proc proc "$root/proc"
+  mount -t proc proc "$root/proc" || echo "install_test: warning: cannot mount /proc in the root"
   trap 'umount "$root/proc" 2>/dev/null || true' EXIT
   cp "$deb" "$root/tmp/"
   in_root() { chroot "$root" /usr/bin/env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
