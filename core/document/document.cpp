@@ -39,6 +39,14 @@ Value* findNode(Value& graph, const std::string& id) {
     return nullptr;
 }
 
+const Value* findNode(const Value& graph, const std::string& id) {
+    const Value* nodes = graph.find("nodes");
+    if (!nodes || !nodes->isArray()) return nullptr;
+    for (const Value& n : nodes->toArray())
+        if (n.isObject() && n.string("id", "") == id) return &n;
+    return nullptr;
+}
+
 } // namespace
 
 Document::Document(QObject* parent) : QObject(parent) {
@@ -293,10 +301,7 @@ Value Document::param(const std::string& species, const std::string& path) const
     return v ? *v : Value();
 }
 
-graph::SpeciesGraph Document::engineSpecies(const std::string& name) const {
-    const int i = speciesIndex(name);
-    if (i < 0) throw InvalidInput("unknown species '" + name + "'");
-    const ProjectSpecies s = inlined(mProject.species[static_cast<std::size_t>(i)]);
+graph::SpeciesGraph Document::toEngine(const ProjectSpecies& s) const {
     Value::Object root{{"format", "sylva-species"},
                        {"format_version", kSpeciesFormatVersion},
                        {"name", s.name},
@@ -306,42 +311,35 @@ graph::SpeciesGraph Document::engineSpecies(const std::string& name) const {
                             mProject.baseDir);
 }
 
+graph::SpeciesGraph Document::engineSpecies(const std::string& name) const {
+    const int i = speciesIndex(name);
+    if (i < 0) throw InvalidInput("unknown species '" + name + "'");
+    return toEngine(inlined(mProject.species[static_cast<std::size_t>(i)]));
+}
+
 void Document::validateSpecies(const ProjectSpecies& s) const {
-    Value::Object root{{"format", "sylva-species"},
-                       {"format_version", kSpeciesFormatVersion},
-                       {"name", s.name},
-                       {"graph", *s.graph}};
-    if (s.traits) root["traits"] = *s.traits;
     graph::registerBuiltinNodeTypes();
-    graph::Evaluator(
-        speciesFromValue(Value(std::move(root)), QString::fromStdString(s.name), mProject.baseDir))
-        .validate();
+    graph::Evaluator(toEngine(s)).validate();
 }
 
 void Document::setParam(const std::string& species, const std::string& path, const Value& value,
                         bool commit) {
     const auto [node, key] = splitParamPath(path);
-    const int i = speciesIndex(species);
-    if (i < 0) throw InvalidInput("unknown species '" + species + "'");
-    const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
-    ProjectSpecies edited = inlined(old);
-    Value* n = findNode(*edited.graph, node);
-    if (!n) throw InvalidInput("species '" + species + "' has no node '" + node + "'");
-    Value::Object& params = n->objectRef()["params"].objectRef();
-    if (value.isNull())
-        params.erase(key);
-    else
-        params[key] = value;
-    if (key == "grammar" && !value.isNull()) params.erase("grammar_file");
-    validateSpecies(edited); // unknown parameter, bad graph: nothing changes
-    // An unchanged value that commits still goes on: it closes a drag or a burst of typing (it
-    // merges into the open step, or is dropped as obsolete).
-    if (edited == old && !commit) return;
-    mUndo.push(cmd::changeSpecies(*this, i, old, edited, QString::fromStdString(node), commit,
-                                  key == "grammar"
-                                      ? QCoreApplication::translate("Commands", "Edit grammar")
-                                      : QCoreApplication::translate("Commands", "Change %1")
-                                            .arg(QString::fromStdString(path))));
+    editGraph(species, QString::fromStdString(node),
+              key == "grammar" ? QCoreApplication::translate("Commands", "Edit grammar")
+                               : QCoreApplication::translate("Commands", "Change %1")
+                                     .arg(QString::fromStdString(path)),
+              commit, [&](Value& g) {
+                  Value* n = findNode(g, node);
+                  if (!n)
+                      throw InvalidInput("species '" + species + "' has no node '" + node + "'");
+                  Value::Object& params = n->objectRef()["params"].objectRef();
+                  if (value.isNull())
+                      params.erase(key);
+                  else
+                      params[key] = value;
+                  if (key == "grammar" && !value.isNull()) params.erase("grammar_file");
+              });
 }
 
 void Document::applyPreset(const std::string& species, const QString& file) {
@@ -400,8 +398,10 @@ void Document::editGraph(const std::string& species, const QString& node, const 
     const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
     ProjectSpecies edited = inlined(old);
     edit(*edited.graph);
-    validateSpecies(edited); // a graph the engine refuses: nothing changes
-    if (edited == old) return;
+    validateSpecies(edited); // unknown parameter, a graph the engine refuses: nothing changes
+    // An unchanged value that commits still goes on: it closes a drag or a burst of typing (it
+    // merges into the open step, or is dropped as obsolete).
+    if (edited == old && !commit) return;
     mUndo.push(cmd::changeSpecies(*this, i, old, edited, node, commit, label));
 }
 
@@ -435,19 +435,6 @@ Value& nodeOrThrow(Value& graph, const std::string& species, const std::string& 
     return *n;
 }
 
-graph::SpeciesGraph engineGraph(const Value& graph) {
-    graph::SpeciesGraph g;
-    for (const Value& n : graph.toObject().at("nodes").toArray()) {
-        graph::NodeDesc d;
-        d.id = n.string("id", "");
-        d.type = n.string("type", "");
-        d.inputs = inputsOf(n);
-        g.nodes.push_back(std::move(d));
-    }
-    g.output = graph.string("output", g.nodes.empty() ? "" : g.nodes.back().id);
-    return g;
-}
-
 } // namespace
 
 std::string Document::addNode(const std::string& species, const std::string& type,
@@ -463,9 +450,9 @@ std::string Document::addNode(const std::string& species, const std::string& typ
     std::string newId = id;
     if (newId.empty()) {
         newId = type;
-        for (int k = 2; findNode(const_cast<Value&>(current), newId); ++k)
+        for (int k = 2; findNode(current, newId); ++k)
             newId = type + std::to_string(k);
-    } else if (findNode(const_cast<Value&>(current), newId)) {
+    } else if (findNode(current, newId)) {
         throw InvalidInput("species '" + species + "' already has a node '" + newId + "'");
     }
     editGraph(
@@ -522,7 +509,10 @@ void Document::connectNodes(const std::string& species, const std::string& from,
                   // A node with one input has it replaced: drop the old edge before checking.
                   if (t && t->maxInputs == 1 && in.size() == 1) in.clear();
                   setInputs(target, in);
-                  const std::string why = graph::connectionError(engineGraph(g), from, to);
+                  ProjectSpecies probe;
+                  probe.name = species;
+                  probe.graph = g;
+                  const std::string why = graph::connectionError(toEngine(probe), from, to);
                   if (!why.empty()) throw InvalidInput(why);
                   in.push_back(from);
                   setInputs(target, in);

@@ -209,6 +209,8 @@ private:
                     QString node = {});
     void validateTree(const ProjectInstance& tree) const;
     ProjectSpecies inlined(const ProjectSpecies& species) const;
+    /// An inline species as the engine reads it (files resolve from the project's folder).
+    graph::SpeciesGraph toEngine(const ProjectSpecies& species) const;
     /// Inlines the species, applies \p edit to its graph JSON, validates and pushes one command.
     void editGraph(const std::string& species, const QString& node, const QString& label,
                    bool commit, const std::function<void(graph::Value& graph)>& edit);

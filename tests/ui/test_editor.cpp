@@ -36,6 +36,7 @@
 #include "ui/mainwindow.h"
 #include "ui/scripting/pythonconsole.h"
 #include "ui/viewport/viewport.h"
+#include "uitest.h"
 
 using namespace sylva;
 using namespace sylva::ui;
@@ -44,9 +45,7 @@ namespace {
 
 constexpr int kTimeoutMs = 120000;
 
-QString outputPath(const QString& name) {
-    return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
-}
+using sylva::ui::test::outputPath;
 
 /// Answers the next modal dialog: a file dialog gets \p file and is accepted; another dialog
 /// is handed to \p other.

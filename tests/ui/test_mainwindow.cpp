@@ -30,6 +30,7 @@
 #include "ui/mainwindow.h"
 #include "ui/viewport/orbitcamera.h"
 #include "ui/viewport/viewport.h"
+#include "uitest.h"
 
 using namespace sylva::ui;
 using sylva::doc::PresetLibrary;
@@ -39,9 +40,7 @@ namespace {
 constexpr int kGenerationTimeoutMs = 120000;
 const QSize kViewportSize(640, 480);
 
-QString outputPath(const QString& name) {
-    return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
-}
+using sylva::ui::test::outputPath;
 
 /// Bark is a warm brown (red > green > blue, green about half way between); leaves are green
 /// dominant. Neither the blue-grey background, the neutral grid nor its red and blue axis

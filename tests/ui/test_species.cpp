@@ -14,6 +14,8 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QPlainTextEdit>
+#include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
 #include <QSlider>
@@ -36,6 +38,7 @@
 #include "ui/nodes/parameterpanel.h"
 #include "ui/speciesworkbench.h"
 #include "ui/viewport/viewport.h"
+#include "uitest.h"
 
 using namespace sylva;
 using namespace sylva::ui;
@@ -44,9 +47,7 @@ namespace {
 
 constexpr int kTimeoutMs = 120000;
 
-QString outputPath(const QString& name) {
-    return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
-}
+using sylva::ui::test::outputPath;
 
 std::vector<std::string> inputsOf(const graph::Value& g, const std::string& id) {
     std::vector<std::string> out;
@@ -88,15 +89,7 @@ private:
 
     /// Press, move in steps (buttons held) and release in the node editor's viewport.
     void drag(const QPoint& from, const QPoint& to) {
-        QWidget* v = view()->viewport();
-        QTest::mousePress(v, Qt::LeftButton, {}, from);
-        for (int i = 1; i <= 8; ++i) {
-            const QPoint p = from + (to - from) * i / 8;
-            QMouseEvent move(QEvent::MouseMove, p, v->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                             {});
-            QApplication::sendEvent(v, &move);
-        }
-        QTest::mouseRelease(v, Qt::LeftButton, {}, to);
+        test::dragThrough(view()->viewport(), {from, to}, {}, 8);
         QApplication::processEvents();
     }
 
@@ -230,7 +223,6 @@ private Q_SLOTS:
 
         // Undo everything: the exact file; redo everything: the edited graph again.
         const QByteArray edited = document().serialized();
-        QKeySequence undo(QKeySequence::Undo);
         while (document().undoStack()->index() > steps)
             document().undoStack()->undo();
         QCOMPARE(document().serialized(), original);
@@ -353,13 +345,10 @@ private Q_SLOTS:
                                  kTimeoutMs);
         waitForPreview();
         auto after = preview->evaluationCounts();
-        qDebug() << "counts before" << before.at("grow") << before.at("mesh") << "after"
-                 << after["grow"] << after["mesh"] << preview->result().error;
         QCOMPARE(after["mesh"], before.at("mesh") + 1);
         QCOMPARE(after["grow"], before.at("grow")); // upstream: kept
         QVERIFY(preview->result().mesh->vertexCount() < vertices);
         QVERIFY(preview->editToResultMs() > 0.0);
-        // A refused value says why and changes nothing.
         QVERIFY(document().param("alder", "mesh.resolution").toNumber() == 5.0);
         document().undoStack()->undo();
         waitForPreview();
@@ -390,14 +379,7 @@ private Q_SLOTS:
                                                        slider->value(), slider->width() - 10) +
                        5;
         const QPoint from(x0, slider->height() / 2);
-        QTest::mousePress(slider, Qt::LeftButton, {}, from);
-        for (int i = 1; i <= 10; ++i) {
-            const QPoint p = from + QPoint(i * 4, 0);
-            QMouseEvent move(QEvent::MouseMove, p, slider->mapToGlobal(p), Qt::NoButton,
-                             Qt::LeftButton, {});
-            QApplication::sendEvent(slider, &move);
-        }
-        QTest::mouseRelease(slider, Qt::LeftButton, {}, from + QPoint(40, 0));
+        test::dragThrough(slider, {from, from + QPoint(40, 0)});
         QVERIFY(document().param("alder", "mesh.radius_scale").isNumber());
         QVERIFY(document().param("alder", "mesh.radius_scale").toNumber() > 1.0);
         QCOMPARE(document().undoStack()->index(), steps + 1);
@@ -414,10 +396,18 @@ private Q_SLOTS:
         QVERIFY(reset && reset->isEnabled());
         QTest::mouseClick(reset, Qt::LeftButton);
         QVERIFY(document().param("alder", "mesh.radius_scale").isNull());
-        // A value the engine refuses is shown with the range and changes nothing.
+        // The spin box offers the metadata's range only.
         auto* resolution =
             qobject_cast<QSpinBox*>(bench()->parameters()->editor(QStringLiteral("resolution")));
         QVERIFY(resolution->maximum() == 64 && resolution->minimum() == 3);
+        // A value that cannot be read is refused with the reason and changes nothing.
+        const QByteArray beforeBad = document().serialized();
+        QWidget* bands = bench()->parameters()->editor(QStringLiteral("lod_bands"));
+        bands->findChild<QPlainTextEdit*>(QStringLiteral("json"))
+            ->setPlainText(QStringLiteral("[[60, 3"));
+        QTest::mouseClick(bands->findChild<QPushButton*>(), Qt::LeftButton);
+        QVERIFY(!bench()->parameters()->errorText().isEmpty());
+        QCOMPARE(document().serialized(), beforeBad);
         document().undoStack()->setIndex(steps);
         waitForPreview();
     }

@@ -26,6 +26,7 @@
 #include "ui/viewport/picking.h"
 #include "ui/viewport/toolcontroller.h"
 #include "ui/viewport/viewport.h"
+#include "uitest.h"
 
 using namespace sylva;
 using namespace sylva::ui;
@@ -35,9 +36,7 @@ namespace {
 
 constexpr int kTimeoutMs = 120000;
 
-QString outputPath(const QString& name) {
-    return QDir(QStringLiteral(SYLVA_UI_TEST_OUTPUT_DIR)).filePath(name);
-}
+using sylva::ui::test::outputPath;
 
 /// The mesh of the tree with document id \p id in the last generation.
 std::shared_ptr<const mesh::Mesh> meshOf(MainWindow& w, doc::TreeId id, glm::mat4* transform) {
@@ -75,16 +74,7 @@ private:
     /// A press, moves through \p path (\p steps per leg) and a release of the left button.
     void drag(const std::vector<QPoint>& path, Qt::KeyboardModifiers modifiers = {},
               int steps = 10) {
-        QWidget* v = viewport();
-        QTest::mousePress(v, Qt::LeftButton, modifiers, path.front());
-        for (std::size_t leg = 1; leg < path.size(); ++leg)
-            for (int i = 1; i <= steps; ++i) {
-                const QPoint p = path[leg - 1] + (path[leg] - path[leg - 1]) * i / steps;
-                QMouseEvent move(QEvent::MouseMove, p, v->mapToGlobal(p), Qt::NoButton,
-                                 Qt::LeftButton, modifiers);
-                QApplication::sendEvent(v, &move);
-            }
-        QTest::mouseRelease(v, Qt::LeftButton, modifiers, path.back());
+        test::dragThrough(viewport(), path, modifiers, steps);
     }
     void drag(const QPoint& from, const QPoint& to, Qt::KeyboardModifiers modifiers = {},
               int steps = 10) {

@@ -248,21 +248,26 @@ void GrammarEditor::loadFromDocument(bool keepCursor) {
         }
         mDirty = false;
     }
-    // The header's generations set the slider's range.
     const lsys::GrammarCheck check = lsys::checkGrammar(text.toStdString(), mNode.toStdString());
     mDiagnostics = check.diagnostics;
+    updateGenerations(check, true);
+    showDiagnostics();
+}
+
+void GrammarEditor::updateGenerations(const lsys::GrammarCheck& check, bool reset) {
+    // The slider runs to the node's `generations`, else the grammar header's (kept while the
+    // grammar does not parse).
     int generations = check.ok() ? check.grammar.generations : mGenerations;
     const graph::Value n =
         mDocument.param(mSpecies.toStdString(), mNode.toStdString() + ".generations");
     if (n.isNumber()) generations = int(n.toNumber());
-    mGenerations = std::clamp(generations, 0, 1000);
-    {
-        const QSignalBlocker b(mStep);
-        mStep->setRange(0, mGenerations);
-        mStep->setValue(mGenerations);
-        mStepLabel->setText(tr("%1 / %2").arg(mGenerations).arg(mGenerations));
-    }
-    showDiagnostics();
+    generations = std::clamp(generations, 0, 1000);
+    if (!reset && generations == mGenerations) return; // typing keeps the step shown
+    mGenerations = generations;
+    const QSignalBlocker b(mStep);
+    mStep->setRange(0, mGenerations);
+    mStep->setValue(mGenerations);
+    mStepLabel->setText(tr("%1 / %2").arg(mGenerations).arg(mGenerations));
 }
 
 void GrammarEditor::checkNow() {
@@ -270,17 +275,7 @@ void GrammarEditor::checkNow() {
     const std::string text = mEdit->toPlainText().toStdString();
     const lsys::GrammarCheck check = lsys::checkGrammar(text, mNode.toStdString());
     mDiagnostics = check.diagnostics;
-    if (check.ok() && check.grammar.generations != mGenerations) {
-        const graph::Value n =
-            mDocument.param(mSpecies.toStdString(), mNode.toStdString() + ".generations");
-        if (!n.isNumber()) {
-            mGenerations = check.grammar.generations;
-            const QSignalBlocker b(mStep);
-            mStep->setRange(0, mGenerations);
-            mStep->setValue(mGenerations);
-            mStepLabel->setText(tr("%1 / %2").arg(mGenerations).arg(mGenerations));
-        }
-    }
+    updateGenerations(check, false);
     showDiagnostics();
     if (mDirty && !mSpecies.isEmpty()) {
         // The edit is kept even with errors (the preview reports them), as the user typed it;

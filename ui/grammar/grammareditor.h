@@ -15,6 +15,10 @@ class QPushButton;
 class QSlider;
 class QToolButton;
 
+namespace sylva::lsys {
+struct GrammarCheck;
+}
+
 namespace sylva::ui {
 
 class GrammarHighlighter;
@@ -78,6 +82,8 @@ Q_SIGNALS:
 
 private:
     void loadFromDocument(bool keepCursor);
+    /// Sets the generations slider's range (and puts it at the end when \p reset or changed).
+    void updateGenerations(const lsys::GrammarCheck& check, bool reset);
     void showDiagnostics();
     void jumpTo(int line, int column);
 

@@ -282,8 +282,10 @@ void NodeGraphScene::rebuild() {
                              t ? QString::fromStdString(t->category) : QString(),
                              t && t->maxInputs > 0, id == output);
             QPointF at;
-            if (auto p = mDocument.nodePosition(mSpecies.toStdString(), id)) {
-                at = QPointF(p->x, p->y);
+            // The position stored in the node (the graph was read once above).
+            const graph::Value* p = n.find("editor_position");
+            if (p && p->isArray() && p->toArray().size() == 2) {
+                at = QPointF(p->toArray()[0].toNumber(), p->toArray()[1].toNumber());
             } else {
                 const int d = depthOf(id, 0);
                 at = QPointF(d * 230.0, rowsAtDepth[d]++ * 96.0);
