@@ -1365,6 +1365,14 @@
         <source>A branch, grown by node %1</source>
         <translation>Ein Ast, gewachsen durch Knoten %1</translation>
     </message>
+    <message>
+        <source>&lt;b&gt;Graph&lt;/b&gt; — how the species grows: Tab adds a node, drag from a right port to a node to connect, Delete removes</source>
+        <translation>&lt;b&gt;Graph&lt;/b&gt; — wie die Art wächst: Tab fügt einen Knoten hinzu, vom rechten Anschluss auf einen Knoten ziehen verbindet, Entf löscht</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Preview&lt;/b&gt; — one tree; click a branch to select the node that grew it</source>
+        <translation>&lt;b&gt;Vorschau&lt;/b&gt; — ein Baum; einen Ast anklicken wählt den Knoten, der ihn wachsen ließ</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

@@ -1365,6 +1365,14 @@
         <source>A branch, grown by node %1</source>
         <translation>Une branche, poussée par le nœud %1</translation>
     </message>
+    <message>
+        <source>&lt;b&gt;Graph&lt;/b&gt; — how the species grows: Tab adds a node, drag from a right port to a node to connect, Delete removes</source>
+        <translation>&lt;b&gt;Graphe&lt;/b&gt; — comment l’espèce pousse : Tab ajoute un nœud, tirer d’un port droit vers un nœud les relie, Suppr supprime</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Preview&lt;/b&gt; — one tree; click a branch to select the node that grew it</source>
+        <translation>&lt;b&gt;Aperçu&lt;/b&gt; — un arbre ; cliquer une branche choisit le nœud qui l’a fait pousser</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

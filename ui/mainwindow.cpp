@@ -282,7 +282,7 @@ void MainWindow::createDocks() {
     parametersScroll->setWidget(mWorkbench->parameters());
     parametersScroll->setWidgetResizable(true);
     parametersScroll->setFrameShape(QFrame::NoFrame);
-    parametersScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    parametersScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded); // never cut off
     parametersScroll->setMinimumWidth(340);
     dock(QStringLiteral("speciesDock"), tr("Species Editor"), mWorkbench, Qt::BottomDockWidgetArea)
         ->hide();

@@ -65,10 +65,27 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
         mPreviewView->setFormat(format);
     }
 
+    // Each pane says what it is and how to use it, for someone who has never seen it.
+    auto captioned = [this](const QString& caption, QWidget* widget) {
+        auto* pane = new QWidget(this);
+        auto* l = new QVBoxLayout(pane);
+        l->setContentsMargins(0, 0, 0, 0);
+        l->setSpacing(2);
+        auto* label = new QLabel(caption, pane);
+        label->setWordWrap(true);
+        label->setStyleSheet(QStringLiteral("color: #707070"));
+        l->addWidget(label);
+        l->addWidget(widget, 1);
+        return pane;
+    };
     auto* split = new QSplitter(Qt::Horizontal, this);
-    split->addWidget(mView);
+    split->addWidget(captioned(tr("<b>Graph</b> — how the species grows: Tab adds a node, drag "
+                                  "from a right port to a node to connect, Delete removes"),
+                               mView));
     split->addWidget(mGrammar);
-    split->addWidget(mPreviewView);
+    split->addWidget(captioned(tr("<b>Preview</b> — one tree; click a branch to select the node "
+                                  "that grew it"),
+                               mPreviewView));
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 3);
     split->setStretchFactor(2, 2);

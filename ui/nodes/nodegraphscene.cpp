@@ -236,6 +236,9 @@ void NodeGraphScene::selectNode(const QString& id) {
 void NodeGraphScene::rebuild() {
     mRebuilding = true;
     const QStringList selected = selectedNodeIds();
+    QStringList before;
+    for (const auto& [id, item] : mNodes)
+        before << id;
     if (mDragLine) {
         removeItem(mDragLine);
         delete mDragLine;
@@ -310,6 +313,10 @@ void NodeGraphScene::rebuild() {
         if (NodeItem* n = node(id)) n->setSelected(true);
     setRuns(mRuns, mErrorNode, mError);
     mRebuilding = false;
+    QStringList after;
+    for (const auto& [id, item] : mNodes)
+        after << id;
+    Q_EMIT rebuilt(after != before);
 }
 
 void NodeGraphScene::setRuns(const std::map<std::string, graph::Evaluator::NodeRun>& runs,

@@ -117,6 +117,8 @@ public:
 
 Q_SIGNALS:
     void nodeSelected(const QString& id); ///< "" when none
+    /// The items were made again from the document; \p nodesChanged when nodes came or went.
+    void rebuilt(bool nodesChanged);
     void refused(const QString& why);
     void acted(const QString& what); ///< a successful edit, for the status bar
 

@@ -22,6 +22,10 @@ NodeGraphView::NodeGraphView(NodeGraphScene* scene, QWidget* parent)
     setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
     setFocusPolicy(Qt::StrongFocus);
     setSceneRect(-5000, -5000, 10000, 10000);
+    // A node added or removed stays in view until the user zooms or pans himself.
+    connect(scene, &NodeGraphScene::rebuilt, this, [this](bool nodesChanged) {
+        if (nodesChanged && !mUserZoomed) frameAll();
+    });
     setToolTip(tr("Species graph: drag from a node's right port to another node to connect; Tab "
                   "or right click adds a node; Delete removes; Ctrl+C/Ctrl+V copy and paste; F "
                   "frames all"));

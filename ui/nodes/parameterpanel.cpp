@@ -148,6 +148,8 @@ void ParameterPanel::rebuild() {
             group = new QGroupBox(QString::fromStdString(spec.group), mBody);
             form = new QFormLayout(group);
             form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+            // A narrow dock puts long names above their editors instead of cutting them off.
+            form->setRowWrapPolicy(QFormLayout::WrapLongRows);
             bodyLayout->addWidget(group);
         }
         QWidget* editor = makeEditor(spec);
@@ -238,7 +240,7 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
             spin->setSpecialValueText(tr("unset"));
         }
         spin->setKeyboardTracking(false);
-        spin->setMinimumWidth(90);
+        spin->setMinimumWidth(80);
         l->addWidget(spin);
         QSlider* slider = nullptr;
         const double lo = clampRange(spec.min), hi = clampRange(spec.max);
@@ -246,7 +248,7 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
             slider = new QSlider(Qt::Horizontal, w);
             slider->setObjectName(QStringLiteral("slider"));
             slider->setRange(0, 1000);
-            slider->setMinimumWidth(70);
+            slider->setMinimumWidth(50);
             l->addWidget(slider, 1);
             auto toValue = [lo, hi](int s) { return lo + (hi - lo) * s / 1000.0; };
             // A drag is one undo step: uncommitted while the handle moves, committed on release.

@@ -532,7 +532,19 @@ bool ToolController::press(QMouseEvent* event) {
         return true;
     case Tool::Move: {
         mDragHandle = Handle::None;
-        if (const Handle handle = handleAt(mPress); handle != Handle::None) {
+        Handle handle = handleAt(mPress);
+        if (handle == Handle::Ring) {
+            // The ring lies on the ground: where a selected tree is drawn in front of it (its
+            // trunk crosses the ring's far side on screen), the press grabs the tree.
+            const TreeHit tree = mViewport.pickAt(mPress);
+            const Ray ray = mViewport.rayAt(mPress);
+            const auto onRing = hitPlane(ray, handles()->centre.y);
+            if (tree.index >= 0 && onRing &&
+                mDocument.selectedTrees().contains(mViewport.trees()[std::size_t(tree.index)].id) &&
+                tree.t * glm::length(ray.direction) < glm::length(*onRing - ray.origin))
+                handle = Handle::None;
+        }
+        if (handle != Handle::None) {
             mDragHandles = *handles();
             const QList<doc::TreeId> selected = mDocument.selectedTrees();
             if (selected.isEmpty() || !startDrag(selected.front())) return false;
