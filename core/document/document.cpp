@@ -324,7 +324,10 @@ void Document::validateSpecies(const ProjectSpecies& s) const {
 
 void Document::setParam(const std::string& species, const std::string& path, const Value& value,
                         bool commit) {
-    const auto [node, key] = splitParamPath(path);
+    // Named copies, not structured bindings: clang 14 (the fuzz build) cannot capture bindings.
+    const auto parts = splitParamPath(path);
+    const std::string node = parts.first;
+    const std::string key = parts.second;
     editGraph(species, QString::fromStdString(node),
               key == "grammar" ? QCoreApplication::translate("Commands", "Edit grammar")
                                : QCoreApplication::translate("Commands", "Change %1")
