@@ -402,6 +402,18 @@ private Q_SLOTS:
     /// Cancel leaves the document as it was.
     void windowStaysLiveDuringRegrowth() {
         settle();
+        // Enough fresh trees that the regrowth takes far longer than a few timer periods even on
+        // an idle machine (the demo alone regrows in ~30 ms, too close to the 5 ms ticks).
+        const std::string species = document().tree(document().treeIds().front()).species;
+        const int added = 64;
+        for (int i = 0; i < added; ++i) {
+            doc::ProjectInstance t;
+            t.species = species;
+            t.position = {300.0f + 8.0f * float(i % 8), 0.0f, 300.0f + 8.0f * float(i / 8)};
+            t.seed = 9000 + std::uint64_t(i);
+            document().addTree(t);
+        }
+        settle();
         int ticks = 0;
         QTimer timer;
         connect(&timer, &QTimer::timeout, [&ticks] { ++ticks; });
@@ -412,6 +424,9 @@ private Q_SLOTS:
         qInfo("%d timer ticks during the regrowth", ticks);
         QVERIFY(ticks > 3);
         QCOMPARE(document().serialized(), before);
+        for (int i = 0; i < added; ++i)
+            document().undoStack()->undo();
+        settle();
     }
 
     /// On a terrain project the Place tool plants on the terrain, not on the plane y = 0.
