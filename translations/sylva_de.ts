@@ -336,6 +336,10 @@
         <source>No errors</source>
         <translation>Keine Fehler</translation>
     </message>
+    <message>
+        <source>The rule that grew the branch you clicked in the preview</source>
+        <translation>Die Regel, die den in der Vorschau angeklickten Ast erzeugt hat</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MainWindow</name>
@@ -1370,8 +1374,12 @@
         <translation>&lt;b&gt;Graph&lt;/b&gt; — wie die Art wächst: Tab fügt einen Knoten hinzu, vom rechten Anschluss auf einen Knoten ziehen verbindet, Entf löscht</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Preview&lt;/b&gt; — one tree; click a branch to select the node that grew it</source>
-        <translation>&lt;b&gt;Vorschau&lt;/b&gt; — ein Baum; einen Ast anklicken wählt den Knoten, der ihn wachsen ließ</translation>
+        <source>&lt;b&gt;Preview&lt;/b&gt; — one tree; click a branch to select the node that grew it and see its grammar rule</source>
+        <translation>&lt;b&gt;Vorschau&lt;/b&gt; — ein Baum; einen Ast anklicken wählt den Knoten, der ihn erzeugt hat, und zeigt seine Grammatikregel</translation>
+    </message>
+    <message>
+        <source>A branch, grown by node %1: the rule on line %2</source>
+        <translation>Ein Ast, erzeugt vom Knoten %1: die Regel in Zeile %2</translation>
     </message>
 </context>
 <context>

@@ -336,6 +336,10 @@
         <source>No errors</source>
         <translation>Aucune erreur</translation>
     </message>
+    <message>
+        <source>The rule that grew the branch you clicked in the preview</source>
+        <translation>La règle qui a produit la branche cliquée dans l’aperçu</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MainWindow</name>
@@ -1370,8 +1374,12 @@
         <translation>&lt;b&gt;Graphe&lt;/b&gt; — comment l’espèce pousse : Tab ajoute un nœud, tirer d’un port droit vers un nœud les relie, Suppr supprime</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Preview&lt;/b&gt; — one tree; click a branch to select the node that grew it</source>
-        <translation>&lt;b&gt;Aperçu&lt;/b&gt; — un arbre ; cliquer une branche choisit le nœud qui l’a fait pousser</translation>
+        <source>&lt;b&gt;Preview&lt;/b&gt; — one tree; click a branch to select the node that grew it and see its grammar rule</source>
+        <translation>&lt;b&gt;Aperçu&lt;/b&gt; — un arbre ; cliquez sur une branche pour sélectionner le nœud qui l’a produite et voir sa règle de grammaire</translation>
+    </message>
+    <message>
+        <source>A branch, grown by node %1: the rule on line %2</source>
+        <translation>Une branche, produite par le nœud %1 : la règle de la ligne %2</translation>
     </message>
 </context>
 <context>

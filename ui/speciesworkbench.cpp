@@ -84,7 +84,7 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
                                mView));
     split->addWidget(mGrammar);
     split->addWidget(captioned(tr("<b>Preview</b> — one tree; click a branch to select the node "
-                                  "that grew it"),
+                                  "that grew it and see its grammar rule"),
                                mPreviewView));
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 3);
@@ -148,6 +148,30 @@ bool SpeciesWorkbench::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
+int SpeciesWorkbench::sourceLineAt(const glm::vec3& point) const {
+    const std::shared_ptr<const skel::Skeleton> sk = mPreview->result().skeleton;
+    if (!sk || sk->sourceLine.size() != sk->size()) return 0;
+    // The drawn segment whose tube surface is closest to the point (the point lies on a tube:
+    // its distance to the axis minus the radius is about zero there).
+    float best = std::numeric_limits<float>::max();
+    int line = 0;
+    for (std::size_t i = 0; i < sk->size(); ++i) {
+        const std::int32_t p = sk->parent[i];
+        if (p < 0 || (sk->flags[i] & skel::kHidden)) continue;
+        const glm::vec3 a = sk->position[static_cast<std::size_t>(p)], b = sk->position[i];
+        const glm::vec3 ab = b - a;
+        const float len2 = glm::dot(ab, ab);
+        const float t = len2 > 0.0f ? std::clamp(glm::dot(point - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+        const float radius = glm::mix(sk->radius[static_cast<std::size_t>(p)], sk->radius[i], t);
+        const float d = std::abs(glm::length(point - (a + t * ab)) - radius);
+        if (d < best) {
+            best = d;
+            line = sk->sourceLine[i];
+        }
+    }
+    return line;
+}
+
 QString SpeciesWorkbench::selectNodeAt(const QPointF& pos) {
     const std::shared_ptr<const mesh::Mesh> mesh = mPreview->result().mesh;
     if (!mesh) return {};
@@ -189,9 +213,17 @@ QString SpeciesWorkbench::selectNodeAt(const QPointF& pos) {
     const QString node = leaf && !leavesNode.isEmpty() ? leavesNode : generator;
     if (node.isEmpty()) return {};
     mScene->selectNode(node);
-    Q_EMIT status(leaf ? tr("A leaf card, grown by node %1").arg(node)
-                       : tr("A branch, grown by node %1").arg(node),
-                  4000);
+    // A branch of an L-system: the rule that wrote it (the preview traces rule lines).
+    const int line = leaf ? 0 : sourceLineAt(ray.origin + best * ray.direction);
+    if (line > 0 && node == mGrammar->node()) {
+        mGrammar->highlightLine(line);
+        Q_EMIT status(tr("A branch, grown by node %1: the rule on line %2").arg(node).arg(line),
+                      6000);
+    } else {
+        Q_EMIT status(leaf ? tr("A leaf card, grown by node %1").arg(node)
+                           : tr("A branch, grown by node %1").arg(node),
+                      4000);
+    }
     return node;
 }
 

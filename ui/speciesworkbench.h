@@ -2,6 +2,8 @@
 
 #include <QWidget>
 
+#include <glm/glm.hpp>
+
 #include "document/document.h"
 
 class QComboBox;
@@ -32,7 +34,11 @@ public:
     /// What a click on the preview at \p pos (widget pixels) hits: the node that grew it is
     /// selected (a leaf card: the leaves node when there is one, else the generator; a branch:
     /// the generator). Returns that node's id, "" for a miss.
+    /// For an L-system branch, the grammar editor also highlights the rule that wrote it.
     QString selectNodeAt(const QPointF& pos);
+    /// The source line (an L-system rule's) of the drawn branch nearest \p point, in the preview's
+    /// world space; 0 when the preview's skeleton carries no source lines.
+    int sourceLineAt(const glm::vec3& point) const;
 
     NodeGraphScene* graphScene() const { return mScene; }
     NodeGraphView* graphView() const { return mView; }

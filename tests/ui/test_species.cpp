@@ -328,6 +328,53 @@ private Q_SLOTS:
         QCOMPARE(bench()->selectNodeAt(QPointF(3, 3)), QString());
     }
 
+    /// A click on an L-system branch highlights the rule that wrote it: a trunk from one rule,
+    /// a side branch from another, at places known from the grammar (step 1, angle 90°).
+    void clickOnABranchHighlightsItsRule() {
+        waitForPreview();
+        const QByteArray original = document().serialized();
+        document().setGrammar("alder", "grow",
+                              "generations: 3\nangle: 90\nwidth: 0.3\naxiom: T\n"
+                              "T -> FFFFB\nB -> [+C]\nC -> FFF\n",
+                              true);
+        QTRY_VERIFY_WITH_TIMEOUT(bench()->preview()->isBusy(), 2000);
+        waitForPreview();
+        QCOMPARE(bench()->preview()->result().skeleton->segmentCount(), std::size_t(7));
+        bench()->previewViewport()->frameScene();
+        QTest::qWait(50);
+        Viewport* v = bench()->previewViewport();
+        GrammarEditor* g = bench()->grammar();
+        // The trunk (0, 0..4, 0) comes from line 5, the branch (0..-3, 4, 0) from line 7.
+        const auto trunk = v->project(glm::vec3(0.0f, 2.0f, 0.0f));
+        const auto branch = v->project(glm::vec3(-2.0f, 4.0f, 0.0f));
+        QVERIFY(trunk && branch);
+        QTest::mouseClick(v, Qt::LeftButton, {}, trunk->toPoint());
+        QCOMPARE(scene()->selectedNodeIds(), QStringList{QStringLiteral("grow")});
+        QCOMPARE(g->node(), QStringLiteral("grow"));
+        QCOMPARE(g->highlightedLine(), 5);
+        QCOMPARE(g->textEdit()->textCursor().blockNumber(), 4);
+        QTest::mouseClick(v, Qt::LeftButton, {}, branch->toPoint());
+        QCOMPARE(g->highlightedLine(), 7);
+        // The band is drawn as an extra selection on that line, not as an edit.
+        bool banded = false;
+        for (const QTextEdit::ExtraSelection& e : g->textEdit()->extraSelections())
+            banded |= e.format.property(QTextFormat::FullWidthSelection).toBool() &&
+                      e.cursor.blockNumber() == 6;
+        QVERIFY(banded);
+        QTest::qWait(50);
+        mWindow->grab().save(outputPath(QStringLiteral("species-rule-highlight.png")));
+        // Typing removes the band (its line may have moved).
+        g->textEdit()->setFocus();
+        QTest::keyClick(g->textEdit(), Qt::Key_End);
+        QTest::keyClicks(g->textEdit(), QStringLiteral(" "));
+        QCOMPARE(g->highlightedLine(), 0);
+        g->commitBurst();
+        while (document().serialized() != original && document().undoStack()->canUndo())
+            document().undoStack()->undo();
+        QCOMPARE(document().serialized(), original);
+        waitForPreview();
+    }
+
     void parameterChangeRerunsOnlyDownstream() {
         waitForPreview();
         SpeciesPreview* preview = bench()->preview();

@@ -144,6 +144,8 @@ void SpeciesPreview::start() {
                     ev->setGraph(std::move(species));
                 else
                     ev = std::make_shared<graph::Evaluator>(std::move(species));
+                // Rule lines per branch, for the editor's click-to-rule.
+                ev->setTraceSources(true);
                 FlagProgress progress(cancel);
                 const graph::NodeOutput& o = ev->evaluate(seed, progress);
                 r.mesh = o.mesh;

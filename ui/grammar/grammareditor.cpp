@@ -160,6 +160,7 @@ GrammarEditor::GrammarEditor(doc::Document& document, QWidget* parent)
     connect(mEdit, &QPlainTextEdit::textChanged, this, [this] {
         if (mLoading) return;
         mDirty = true;
+        mHighlightedLine = 0; // the lines move; the next check redraws the marks without it
         mDebounce.start();
         mBurst.start();
     });
@@ -202,6 +203,7 @@ void GrammarEditor::setNode(const QString& species, const QString& node) {
     if (mDirty) commitBurst();
     mSpecies = species;
     mNode = node;
+    mHighlightedLine = 0;
     loadFromDocument(false);
 }
 
@@ -346,7 +348,27 @@ void GrammarEditor::showDiagnostics() {
         marks << mark;
     }
     if (mDiagnostics.empty() && isEnabled()) new QListWidgetItem(tr("No errors"), mList);
+    if (const QTextBlock block = document->findBlockByNumber(mHighlightedLine - 1);
+        mHighlightedLine > 0 && block.isValid()) {
+        QTextEdit::ExtraSelection band;
+        band.cursor = QTextCursor(block);
+        band.format.setBackground(QColor(255, 200, 60, 70));
+        band.format.setProperty(QTextFormat::FullWidthSelection, true);
+        band.format.setToolTip(tr("The rule that grew the branch you clicked in the preview"));
+        marks.prepend(band); // under the squiggles
+    }
     mEdit->setExtraSelections(marks);
+}
+
+void GrammarEditor::highlightLine(int line) {
+    mHighlightedLine = line;
+    showDiagnostics();
+    if (line <= 0) return;
+    const QTextBlock block = mEdit->document()->findBlockByNumber(line - 1);
+    if (!block.isValid()) return;
+    QTextCursor c(block);
+    mEdit->setTextCursor(c);
+    mEdit->centerCursor();
 }
 
 void GrammarEditor::jumpTo(int line, int column) {

@@ -72,6 +72,10 @@ public:
     void checkNow();
     /// Ends the current burst of typing: the next keystroke starts a new undo step.
     void commitBurst();
+    /// Marks \p line (1-based; a rule the user clicked in the preview) with a full-width band and
+    /// scrolls to it; 0 removes the mark. Typing removes it too (the lines move).
+    void highlightLine(int line);
+    int highlightedLine() const { return mHighlightedLine; }
 
 Q_SIGNALS:
     /// The generations slider moved: the preview derives \p generations steps (-1: the
@@ -105,6 +109,7 @@ private:
     bool mDirty = false; ///< typed since the last push to the document
     bool mOpenBurst = false;
     int mGenerations = 0;
+    int mHighlightedLine = 0;
 };
 
 } // namespace sylva::ui

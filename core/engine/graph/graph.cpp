@@ -66,7 +66,7 @@ namespace {
 
 std::string number(double v) {
     // Whole numbers in full ("2000000", not "2e+06"): ranges are read by people.
-    if (v == static_cast<double>(static_cast<long long>(v)) && std::abs(v) < 1e16)
+    if (std::abs(v) < 1e16 && v == std::trunc(v)) // the bound first: no out-of-range cast
         return std::to_string(static_cast<long long>(v));
     std::ostringstream s;
     s << v;
@@ -102,9 +102,11 @@ void checkParam(const ParamSpec& spec, const Value& value) {
         break;
     case ParamKind::Integer: {
         const double v = value.toNumber(spec.name);
-        if (v != static_cast<double>(static_cast<long long>(v)))
-            throw InvalidInput(spec.name + " must be a whole number, got " + number(v));
+        // The range first: a huge value is out of range, and converting it to an integer type
+        // to test wholeness would be undefined (fuzz finding 13).
         inRange(v, spec.name);
+        if (v != std::trunc(v))
+            throw InvalidInput(spec.name + " must be a whole number, got " + number(v));
         break;
     }
     case ParamKind::Bool:
@@ -344,6 +346,12 @@ void Evaluator::setParam(const std::string& nodeId, const std::string& key, Valu
     setGraph(std::move(copy));
 }
 
+void Evaluator::setTraceSources(bool on) {
+    if (on == mTraceSources) return;
+    mTraceSources = on;
+    mCache.clear();
+}
+
 void Evaluator::setGraph(SpeciesGraph graph) {
     SpeciesGraph previous = std::move(mGraph);
     mGraph = std::move(graph);
@@ -414,8 +422,8 @@ const NodeOutput& Evaluator::evaluateNode(const std::string& nodeId, bool seedOv
         CacheEntry& entry = mCache[id];
         if (!entry.output || entry.key != key) {
             progress.checkCancelled();
-            NodeContext ctx{node,           node.params,       {},       seed, seedOverridden,
-                            mGraph.baseDir, mGraph.sourceFile, progress, mTree};
+            NodeContext ctx{node,           node.params,       {},       seed,  seedOverridden,
+                            mGraph.baseDir, mGraph.sourceFile, progress, mTree, mTraceSources};
             for (const std::string& in : node.inputs)
                 ctx.inputs.push_back(mCache[in].output.get());
             const NodeType* type = NodeRegistry::instance().find(node.type);

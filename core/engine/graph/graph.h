@@ -92,6 +92,9 @@ struct NodeContext {
     const std::string& sourceFile;
     Progress& progress;
     const TreeContext* tree = nullptr; ///< set when the species grows as part of a scene
+    /// Generators record where each skeleton node came from (Skeleton::sourceLine); set by
+    /// Evaluator::setTraceSources for the species editor's preview.
+    bool traceSources = false;
 
     /// Resolves a path parameter against baseDir.
     std::filesystem::path resolve(const std::string& relative) const;
@@ -220,6 +223,12 @@ public:
                                    Progress& progress = noProgress(),
                                    const std::string& nodeId = {});
 
+    /// Generators that can (lsystem) record where each skeleton node came from
+    /// (Skeleton::sourceLine), so the editor can show the rule behind a clicked branch. Off by
+    /// default (it costs the derivation its fast path); changing it drops the cached results.
+    void setTraceSources(bool on);
+    bool traceSources() const { return mTraceSources; }
+
     /// How many node evaluations ran (cache misses) since construction; for tests.
     std::size_t evaluations() const { return mEvaluations; }
 
@@ -241,6 +250,7 @@ private:
     std::uint64_t nodeKey(const NodeDesc& node, std::uint64_t seed, bool seedOverridden,
                           const std::vector<std::uint64_t>& inputKeys) const;
     const TreeContext* mTree = nullptr; ///< during evaluateTree() only
+    bool mTraceSources = false;
 
     SpeciesGraph mGraph;
     std::map<std::string, CacheEntry> mCache;

@@ -189,9 +189,10 @@ struct GroupInfo {
 
 class Deriver {
 public:
-    Deriver(const Grammar& g, std::size_t limit, const Deadline& deadline, Progress& progress)
+    Deriver(const Grammar& g, std::size_t limit, const Deadline& deadline, Progress& progress,
+            bool trace)
         : mG(g), mLimit(limit), mParamLimit(paramLimitOf(limit)), mDeadline(deadline),
-          mProgress(progress) {
+          mProgress(progress), mTrace(trace) {
         mInfo.resize(g.groups.size());
         for (std::size_t i = 0; i < g.groups.size(); ++i) {
             GroupInfo& info = mInfo[i];
@@ -223,6 +224,7 @@ public:
         Rng rng = generationRng(seed, 0);
         if (mG.axiom.modules.size() > mLimit) throwLimit(0, mLimit, mG.axiom.modules.size());
         append(out, mG.axiom, nullptr, nullptr, rng, 0);
+        if (mTrace) out.origins.assign(out.symbols.size(), mG.axiomLine);
     }
 
     void generation(const ModuleString& cur, ModuleString& out, std::uint64_t seed, int gen) {
@@ -286,11 +288,13 @@ public:
                     rule = &mG.rules[static_cast<std::size_t>(info.group->rules[k])];
                 }
                 append(out, rule->successor, rule, slots, rng, gen);
+                if (mTrace) out.origins.resize(out.symbols.size(), rule->line);
                 applied = true;
                 break;
             }
             if (!applied) {
                 out.symbols.push_back(static_cast<char>(c));
+                if (mTrace) out.origins.push_back(cur.origins[i]);
                 if (parametric) {
                     out.paramCounts.push_back(static_cast<std::uint8_t>(arity));
                     out.params.insert(out.params.end(),
@@ -431,6 +435,7 @@ private:
     std::size_t mParamLimit;
     const Deadline& mDeadline;
     Progress& mProgress;
+    bool mTrace;
     std::vector<GroupInfo> mInfo;
     std::size_t mMaxLength[256] = {};
     const ModuleString* mCur = nullptr;
@@ -453,10 +458,10 @@ ModuleString derive(const Grammar& g, const DeriveOptions& opt, Progress& p) {
         throw InvalidInput("the derivation's time limit must be in (0, 86400] seconds, got " +
                            std::to_string(opt.timeLimitSeconds));
     const Deadline deadline(opt.timeLimitSeconds);
-    Deriver deriver(g, opt.symbolLimit, deadline, p);
+    Deriver deriver(g, opt.symbolLimit, deadline, p, opt.traceRules);
     ModuleString cur;
     deriver.axiom(cur, seed);
-    if (fastPathApplies(g)) {
+    if (fastPathApplies(g) && !opt.traceRules) {
         deriveFast(g, cur, generations, opt.symbolLimit, deadline, p);
         return cur;
     }

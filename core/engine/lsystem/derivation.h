@@ -33,6 +33,10 @@ struct DeriveOptions {
     /// every million modules), so the result never depends on it: a derivation either finishes
     /// with the same word or throws.
     double timeLimitSeconds = kDefaultDeriveTimeLimit;
+    /// Record which rule wrote each module (ModuleString::origins), so the editor can show the
+    /// rule behind a clicked branch. Same word; takes the general path (a few times slower for
+    /// the grammars the table-driven path serves).
+    bool traceRules = false;
 };
 
 /// Rewrites the axiom `generations` times (ABOP rule choice, see docs/grammar.md).

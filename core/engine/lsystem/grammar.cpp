@@ -98,6 +98,7 @@ public:
     Grammar run(std::string_view text) {
         parse(text);
         if (!mDiagnostics.empty()) throw InvalidInput(std::move(mDiagnostics));
+        mGrammar.axiomLine = mAxiomLine;
         return std::move(mGrammar);
     }
 
@@ -106,6 +107,7 @@ public:
     Grammar runCollecting(std::string_view text, std::vector<Diagnostic>& diagnostics) {
         parse(text);
         diagnostics = std::move(mDiagnostics);
+        mGrammar.axiomLine = mAxiomLine;
         return std::move(mGrammar);
     }
 

@@ -67,6 +67,7 @@ struct Grammar {
     double width = 0.1;         ///< initial width, i.e. branch diameter (metres)
     double widthFactor = 0.7;   ///< what ! without a parameter multiplies the width by
     std::uint64_t seed = 0;     ///< seed of stochastic rules and rand()
+    int axiomLine = 0;          ///< 1-based line of the axiom in its file
 
     // Internal representation (filled by parseGrammar, read by derive()).
     ModuleTemplate axiom;

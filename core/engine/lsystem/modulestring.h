@@ -14,6 +14,10 @@ struct ModuleString {
     std::string symbols;
     std::vector<std::uint8_t> paramCounts;
     std::vector<double> params;
+    /// Only when derived with DeriveOptions::traceRules (else empty): per module, the 1-based
+    /// grammar line of the rule that last wrote it, or of the axiom for a module no rule wrote. A
+    /// module no rule rewrites keeps its line from one generation to the next.
+    std::vector<std::int32_t> origins;
 
     std::size_t size() const { return symbols.size(); }
     bool hasParams() const { return !paramCounts.empty(); }
@@ -21,6 +25,7 @@ struct ModuleString {
         symbols.clear();
         paramCounts.clear();
         params.clear();
+        origins.clear();
     }
 };
 

@@ -8,6 +8,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "engine/util/error.h"
 #include "engine/util/hugepages.h"
 
 namespace sylva::lsys {
@@ -147,7 +148,7 @@ struct Saved {
 #define SYLVA_TURTLE_NO_SLP
 #endif
 
-template <bool HasParams>
+template <bool HasParams, bool Traced>
 SYLVA_TURTLE_NO_SLP void run(const ModuleString& word, const TurtleSettings& settings,
                              Progress& progress, skel::Skeleton& skeleton) {
     const char* sym = word.symbols.data();
@@ -197,6 +198,7 @@ SYLVA_TURTLE_NO_SLP void run(const ModuleString& word, const TurtleSettings& set
             if (node < 0) node = appendNode(skeleton, glm::vec3(position), -1, r, order, q);
             position += forward(frame, len);
             node = appendNode(skeleton, glm::vec3(position), node, r, order, q);
+            if constexpr (Traced) skeleton.sourceLine.resize(skeleton.size(), word.origins[i]);
             break;
         }
         case 'f': {
@@ -311,10 +313,15 @@ skel::Skeleton interpret(const ModuleString& word, const TurtleSettings& setting
     adviseHugePages(skeleton.order);
     adviseHugePages(skeleton.flags);
     adviseHugePages(skeleton.orientation);
+    const bool traced = !word.origins.empty();
+    if (traced && word.origins.size() != word.size())
+        throw InvalidInput("the word's rule origins do not match its modules");
     if (word.hasParams())
-        run<true>(word, settings, progress, skeleton);
+        traced ? run<true, true>(word, settings, progress, skeleton)
+               : run<true, false>(word, settings, progress, skeleton);
     else
-        run<false>(word, settings, progress, skeleton);
+        traced ? run<false, true>(word, settings, progress, skeleton)
+               : run<false, false>(word, settings, progress, skeleton);
     progress.report(1.0, "interpret");
     return skeleton;
 }

@@ -35,7 +35,9 @@ struct TurtleSettings {
 /// is width/2 at the time of the F; the root takes the width at its creation. A leaf (`J`)
 /// hangs on the current node (-1 before the first F) with the turtle's current frame.
 /// Symbols without a turtle meaning are skipped; an unmatched `]` is ignored (the grammar
-/// checks balance). Throws Cancelled when \p progress asks to stop.
+/// checks balance). Throws Cancelled when \p progress asks to stop. When the word carries rule
+/// origins (DeriveOptions::traceRules), Skeleton::sourceLine gets the line of the rule that
+/// wrote each node's F (a root takes the line of the F that created it).
 skel::Skeleton interpret(const ModuleString& word, const TurtleSettings& settings,
                          Progress& progress = noProgress());
 

@@ -67,6 +67,7 @@ graph::NodeOutput evaluateLsystem(const graph::NodeContext& ctx) {
         options.timeLimitSeconds = p.number("time_limit", lsys::kDefaultDeriveTimeLimit);
         requireRange("time_limit (s)", options.timeLimitSeconds, 1e-3, lsys::kMaxDeriveTimeLimit);
     }
+    options.traceRules = ctx.traceSources;
     const lsys::ModuleString word = lsys::derive(grammar, options, ctx.progress);
     out.timingsMs["expand"] = msSince(t0);
 

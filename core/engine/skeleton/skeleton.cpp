@@ -26,6 +26,7 @@ void Skeleton::clear() {
     light.clear();
     vigour.clear();
     age.clear();
+    sourceLine.clear();
     shedThreshold = 0.0f;
 }
 
@@ -69,6 +70,8 @@ void Skeleton::validate() const {
     if ((!light.empty() && light.size() != n) || (!vigour.empty() && vigour.size() != n) ||
         (!age.empty() && age.size() != n))
         throw InvalidInput("skeleton growth records (light, vigour, age) differ in size");
+    if (!sourceLine.empty() && sourceLine.size() != n)
+        throw InvalidInput("skeleton source lines differ in size from its nodes");
     for (std::size_t i = 0; i < n; ++i)
         if (parent[i] >= static_cast<std::int32_t>(i) || parent[i] < -1)
             throw InvalidInput("skeleton node " + std::to_string(i) +

@@ -57,6 +57,10 @@ struct Skeleton {
     std::vector<float> light;
     std::vector<float> vigour;
     std::vector<std::uint16_t> age;
+    /// Optional provenance (empty unless the generator was asked to trace it; else one entry per
+    /// node): the 1-based line of the generator's source text that made the node; for an
+    /// L-system, the rule that wrote its F (or the axiom's line). The species editor highlights it.
+    std::vector<std::int32_t> sourceLine;
     /// Light per internode below which a lateral branch is shed (self-organizing trees; 0 when
     /// the generator sheds nothing). Nodes below it now carry kStarved.
     float shedThreshold = 0.0f;

@@ -3,6 +3,8 @@
 // touched and what is downstream; the naive way builds a new Evaluator (everything again).
 //   - a parameter of the last node (tube_mesh resolution, leaf_scale): only the mesher runs;
 //   - a parameter of the generator (the lsystem's angle): everything downstream runs;
+//   - the generator edit with rule tracing, as the editor's preview runs it (the derivation takes
+//     its general path so every branch knows its rule: the click-to-rule feature);
 //   - the same edits evaluated from scratch, for comparison.
 // Counters: segments, triangles. docs/performance.md has the figures (targets: ≤ 10 ms for a
 // last-node parameter, ≤ 50 ms for an edit to a 20,000-segment tree).
@@ -50,10 +52,11 @@ void report(benchmark::State& state, const NodeOutput& out) {
 
 /// Alternates \p node.\p key between two values and evaluates: the edit → mesh time.
 void editAndEvaluate(benchmark::State& state, const std::string& node, const std::string& key,
-                     Value a, Value b, bool incremental) {
+                     Value a, Value b, bool incremental, bool traced = false) {
     registerBuiltinNodeTypes();
     omp_set_num_threads(static_cast<int>(state.range(1)));
     Evaluator kept(species(state.range(0) != 0));
+    kept.setTraceSources(traced);
     kept.evaluate(1);
     bool flip = false;
     const NodeOutput* out = nullptr;
@@ -88,6 +91,9 @@ void BM_PreviewResolutionEdit(benchmark::State& state) {
 void BM_PreviewGeneratorEdit(benchmark::State& state) {
     editAndEvaluate(state, "grow", "angle", Value(28.0), Value(30.0), true);
 }
+void BM_PreviewGeneratorEdit_Traced(benchmark::State& state) {
+    editAndEvaluate(state, "grow", "angle", Value(28.0), Value(30.0), true, true);
+}
 void BM_PreviewGeneratorEdit_Naive(benchmark::State& state) {
     editAndEvaluate(state, "grow", "angle", Value(28.0), Value(30.0), false);
 }
@@ -102,6 +108,9 @@ BENCHMARK(BM_PreviewLastNodeEdit_Naive)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PreviewResolutionEdit)->ArgsProduct({{0, 1}, {1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PreviewGeneratorEdit)->ArgsProduct({{0, 1}, {1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PreviewGeneratorEdit_Traced)
+    ->ArgsProduct({{0, 1}, {1, 2}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PreviewGeneratorEdit_Naive)
     ->ArgsProduct({{0, 1}, {1, 2}})
     ->Unit(benchmark::kMillisecond);

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/lsystem/derivation.h"
+#include "engine/lsystem/grammar.h"
 #include "engine/lsystem/turtle.h"
+#include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "referenceturtle.h"
 #include "testwords.h"
@@ -305,4 +308,25 @@ TEST(Turtle, MatchesStraightforwardTurtleExactly) {
     settings.angleDegrees = 25.7;
     expectSameSkeleton(interpret(abop, settings),
                        sylva::lsys::reference::interpretReference(abop, settings), "abop");
+}
+
+TEST(Turtle, SourceLinesFollowTheRuleOfEachF) {
+    // Generation 2 of "A -> F[+F]B" (line 2), "B -> F" (line 3): F[+F]F, the last F from line 3.
+    const sylva::lsys::Grammar g = sylva::lsys::parseGrammar("axiom: A\nA -> F[+F]B\nB -> F\n");
+    sylva::lsys::DeriveOptions o;
+    o.generations = 2;
+    o.traceRules = true;
+    const sylva::lsys::ModuleString word = sylva::lsys::derive(g, o);
+    const auto traced = interpret(word, {});
+    // Root and first F, the branch's F, the last F.
+    EXPECT_EQ(traced.sourceLine, (std::vector<std::int32_t>{2, 2, 2, 3}));
+    EXPECT_NO_THROW(traced.validate());
+    o.traceRules = false;
+    const auto plain = interpret(sylva::lsys::derive(g, o), {});
+    EXPECT_TRUE(plain.sourceLine.empty());
+    EXPECT_EQ(plain.position, traced.position);
+    // Origins that do not match the word are refused, not read past their end.
+    sylva::lsys::ModuleString broken = word;
+    broken.origins.pop_back();
+    EXPECT_THROW(interpret(broken, {}), sylva::InvalidInput);
 }

@@ -166,3 +166,24 @@ TEST(BuiltinNodes, SelfOrganizingTreesCarryTheirGrowthRecords) {
     for (float l : s.light)
         EXPECT_GE(l, 0.0f);
 }
+
+TEST(Evaluator, TracedSourcesReachTheMesherThroughAdapt) {
+    registerBuiltinNodeTypes();
+    SpeciesGraph g;
+    g.name = "traced";
+    g.nodes = {
+        NodeDesc{"grow",
+                 "lsystem",
+                 Value::Object{{"grammar", "axiom: A\nA -> F[+F]B\nB -> F\n"}, {"generations", 2}},
+                 {}},
+        NodeDesc{"adapt", "adapt", Value::Object{}, {"grow"}},
+        NodeDesc{"mesh", "tube_mesh", Value::Object{}, {"adapt"}}};
+    g.output = "mesh";
+    Evaluator e(std::move(g));
+    EXPECT_TRUE(e.evaluate(1).skeleton->sourceLine.empty()); // off by default
+    const std::size_t before = e.evaluations();
+    e.setTraceSources(true);
+    const auto& s = *e.evaluate(1).skeleton;
+    EXPECT_EQ(e.evaluations(), before + 3); // the cache was dropped: every node ran again
+    EXPECT_EQ(s.sourceLine, (std::vector<std::int32_t>{2, 2, 2, 3}));
+}

@@ -132,6 +132,23 @@ TEST_F(NodeMetadata, ValidationRefusesOutOfRangeWithTheRange) {
                  sylva::InvalidInput); // (0, 100]: zero is out
 }
 
+// Fuzz finding 13: an integer parameter far beyond any integer type (5e105 attractors) is refused
+// with its range, without converting it to an integer first (undefined behaviour under UBSan).
+TEST_F(NodeMetadata, HugeIntegersAreRefusedWithTheirRange) {
+    const ParamSpec& attractors =
+        *NodeRegistry::instance().find("space_colonization")->findParam("attractors");
+    for (const double huge : {5.00444e105, -1e300, 1e19}) {
+        try {
+            checkParam(attractors, Value(huge));
+            ADD_FAILURE() << "accepted " << huge;
+        } catch (const sylva::InvalidInput& e) {
+            EXPECT_NE(std::string(e.what()).find("[1, 2000000]"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW(checkParam(attractors, Value(1.5)), sylva::InvalidInput); // in range, not whole
+    EXPECT_NO_THROW(checkParam(attractors, Value(2000000.0)));
+}
+
 // The defaults the metadata states are the ones the code uses: a graph with every parameter
 // set to its stated default grows the same tree as one that leaves them unset.
 TEST_F(NodeMetadata, StatedDefaultsAreTheCodesDefaults) {
