@@ -283,6 +283,13 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::CurveEditor</name>
+    <message>
+        <source>Drag a point to shape the curve; double-click to add a point; right-click or Delete removes one</source>
+        <translation>Einen Punkt ziehen formt die Kurve; Doppelklick fügt einen Punkt hinzu; Rechtsklick oder Entf entfernt einen</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::GrammarEditor</name>
     <message>
         <source>Step through the derivation: the preview shows the tree after this many generations (the grammar keeps its own count)</source>
@@ -1112,6 +1119,70 @@
     <message>
         <source>Apply</source>
         <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>height, base → top</source>
+        <translation>Höhe, Basis → Spitze</translation>
+    </message>
+    <message>
+        <source>radius (× the envelope radius)</source>
+        <translation>Radius (× Hüllradius)</translation>
+    </message>
+    <message>
+        <source>Crown profile:</source>
+        <translation>Kronenprofil:</translation>
+    </message>
+    <message>
+        <source>Make the envelope a profile (a solid of revolution you can draw), starting from one of Weber and Penn&apos;s crown shapes</source>
+        <translation>Die Hülle zu einem Profil machen (einem zeichenbaren Rotationskörper), ausgehend von einer der Kronenformen von Weber und Penn</translation>
+    </message>
+    <message>
+        <source>start from a shape…</source>
+        <translation>von einer Form ausgehen…</translation>
+    </message>
+    <message>
+        <source>conical</source>
+        <translation>kegelförmig</translation>
+    </message>
+    <message>
+        <source>spherical</source>
+        <translation>kugelförmig</translation>
+    </message>
+    <message>
+        <source>hemispherical</source>
+        <translation>halbkugelförmig</translation>
+    </message>
+    <message>
+        <source>cylindrical</source>
+        <translation>zylindrisch</translation>
+    </message>
+    <message>
+        <source>tapered cylindrical</source>
+        <translation>verjüngt zylindrisch</translation>
+    </message>
+    <message>
+        <source>flame</source>
+        <translation>flammenförmig</translation>
+    </message>
+    <message>
+        <source>inverse conical</source>
+        <translation>umgekehrt kegelförmig</translation>
+    </message>
+    <message>
+        <source>tend flame</source>
+        <translation>zur Flamme neigend</translation>
+    </message>
+    <message>
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Drag points; double-click adds one; right-click removes one.</source>
+        <translation>Punkte ziehen; Doppelklick fügt einen hinzu; Rechtsklick entfernt einen.</translation>
     </message>
 </context>
 <context>

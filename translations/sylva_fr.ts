@@ -283,6 +283,13 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::CurveEditor</name>
+    <message>
+        <source>Drag a point to shape the curve; double-click to add a point; right-click or Delete removes one</source>
+        <translation>Faites glisser un point pour modeler la courbe ; double-clic pour ajouter un point ; clic droit ou Suppr pour en retirer un</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::GrammarEditor</name>
     <message>
         <source>Step through the derivation: the preview shows the tree after this many generations (the grammar keeps its own count)</source>
@@ -1112,6 +1119,70 @@
     <message>
         <source>Apply</source>
         <translation>Appliquer</translation>
+    </message>
+    <message>
+        <source>height, base → top</source>
+        <translation>hauteur, base → sommet</translation>
+    </message>
+    <message>
+        <source>radius (× the envelope radius)</source>
+        <translation>rayon (× rayon de l’enveloppe)</translation>
+    </message>
+    <message>
+        <source>Crown profile:</source>
+        <translation>Profil de houppier :</translation>
+    </message>
+    <message>
+        <source>Make the envelope a profile (a solid of revolution you can draw), starting from one of Weber and Penn&apos;s crown shapes</source>
+        <translation>Faire de l’enveloppe un profil (un solide de révolution que l’on dessine), à partir d’une des formes de houppier de Weber et Penn</translation>
+    </message>
+    <message>
+        <source>start from a shape…</source>
+        <translation>partir d’une forme…</translation>
+    </message>
+    <message>
+        <source>conical</source>
+        <translation>conique</translation>
+    </message>
+    <message>
+        <source>spherical</source>
+        <translation>sphérique</translation>
+    </message>
+    <message>
+        <source>hemispherical</source>
+        <translation>hémisphérique</translation>
+    </message>
+    <message>
+        <source>cylindrical</source>
+        <translation>cylindrique</translation>
+    </message>
+    <message>
+        <source>tapered cylindrical</source>
+        <translation>cylindrique effilé</translation>
+    </message>
+    <message>
+        <source>flame</source>
+        <translation>en flamme</translation>
+    </message>
+    <message>
+        <source>inverse conical</source>
+        <translation>conique inversé</translation>
+    </message>
+    <message>
+        <source>tend flame</source>
+        <translation>tendant vers la flamme</translation>
+    </message>
+    <message>
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>valeur</translation>
+    </message>
+    <message>
+        <source>Drag points; double-click adds one; right-click removes one.</source>
+        <translation>Faites glisser les points ; double-clic pour en ajouter un ; clic droit pour en retirer un.</translation>
     </message>
 </context>
 <context>

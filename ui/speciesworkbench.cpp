@@ -276,7 +276,24 @@ void SpeciesWorkbench::onPreviewFinished() {
     const PreviewResult& r = mPreview->result();
     mScene->setRuns(r.runs, r.errorNode, r.error);
     if (r.mesh) {
-        mPreviewView->setMesh(r.mesh, !mFramed);
+        // Frame the first tree of a species, and again when an edit (a preset, a larger crown)
+        // makes the tree outgrow what was framed; a smaller tree (the generations slider
+        // stepping back) keeps the view, so stepping does not jump.
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (const glm::vec3& p : r.mesh->positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        const bool outgrown =
+            !r.mesh->positions.empty() &&
+            (glm::any(glm::lessThan(lo, mFramedLo - 0.25f * (mFramedHi - mFramedLo))) ||
+             glm::any(glm::greaterThan(hi, mFramedHi + 0.25f * (mFramedHi - mFramedLo))));
+        const bool frame = !mFramed || outgrown;
+        mPreviewView->setMesh(r.mesh, frame);
+        if (frame && !r.mesh->positions.empty()) {
+            mFramedLo = lo;
+            mFramedHi = hi;
+        }
         mFramed = true;
     }
     if (!r.error.isEmpty()) {

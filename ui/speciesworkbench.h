@@ -71,6 +71,7 @@ private:
     SpeciesPreview* mPreview;
     Viewport* mPreviewView;
     bool mFramed = false;
+    glm::vec3 mFramedLo{0.0f}, mFramedHi{0.0f}; ///< the bounds the preview was last framed on
     QPoint mPressAt; ///< where a click on the preview began (a drag orbits instead)
 };
 

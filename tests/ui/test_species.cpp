@@ -6,7 +6,9 @@
 // slider drag that is one undo step. Screenshots of the three editors.
 #include <memory>
 
+#include <QAbstractItemView>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QLabel>
@@ -33,6 +35,7 @@
 #include "ui/generation/speciespreview.h"
 #include "ui/grammar/grammareditor.h"
 #include "ui/mainwindow.h"
+#include "ui/nodes/curveeditor.h"
 #include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/nodegraphview.h"
 #include "ui/nodes/parameterpanel.h"
@@ -372,6 +375,104 @@ private Q_SLOTS:
         while (document().serialized() != original && document().undoStack()->canUndo())
             document().undoStack()->undo();
         QCOMPARE(document().serialized(), original);
+        waitForPreview();
+    }
+
+    /// A crown envelope's profile is drawn and edited as a curve: start from a Weber-Penn shape,
+    /// drag a point (one undo step), double-click to add, right-click and Delete to remove; undo
+    /// of all of it gives back the exact document.
+    void envelopeProfileIsEditedAsACurve() {
+        waitForPreview();
+        const QByteArray original = document().serialized();
+        const QString presets = doc::PresetLibrary::directory();
+        auto* dock = mWindow->findChild<QDockWidget*>(QStringLiteral("parametersDock"));
+        QVERIFY(dock);
+        dock->raise(); // tabified with the statistics: the panel must be on top to be used
+        // A named profile (a string) is shown with the engine's own samples.
+        document().applyPreset("alder", QDir(presets).filePath("italian-cypress.json"));
+        scene()->selectNode(QStringLiteral("grow"));
+        QWidget* env = bench()->parameters()->editor(QStringLiteral("envelope"));
+        QVERIFY(env);
+        auto* curve = env->findChild<CurveEditor*>(QStringLiteral("curve"));
+        QVERIFY(curve);
+        QTRY_VERIFY(curve->isVisible());
+        QCOMPARE(curve->points().size(), std::size_t(33));
+
+        // A sphere has no curve until it becomes a profile of the same place and size.
+        document().applyPreset("alder", QDir(presets).filePath("sc-round.json"));
+        scene()->selectNode(QStringLiteral("crown"));
+        env = bench()->parameters()->editor(QStringLiteral("envelope"));
+        curve = env->findChild<CurveEditor*>(QStringLiteral("curve"));
+        auto* shapes = env->findChild<QComboBox*>(QStringLiteral("profileShape"));
+        QVERIFY(curve && shapes);
+        QVERIFY(!curve->isVisible());
+        const int steps = document().undoStack()->index();
+        // Open the list and click "flame", as a user would.
+        const int flameRow = shapes->findData(QStringLiteral("flame"));
+        QVERIFY(flameRow > 0);
+        shapes->showPopup();
+        QAbstractItemView* list = shapes->view();
+        QTRY_VERIFY(list->isVisible());
+        const QRect item = list->visualRect(list->model()->index(flameRow, 0));
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, item.center());
+        QTRY_VERIFY(!list->isVisible());
+        QCOMPARE(document().undoStack()->index(), steps + 1);
+        auto envelope = [this] {
+            const graph::SpeciesGraph g = document().engineSpecies("alder");
+            return g.findNode("crown")->params.find("envelope")->toJson();
+        };
+        const std::string flame = envelope();
+        // The sphere of radius 4.5 at (0, 6, 0): base 4.5 lower, 9 high.
+        QVERIFY2(flame.find("\"center\":[0,1.5,0]") != std::string::npos, flame.c_str());
+        QVERIFY2(flame.find("\"height\":9") != std::string::npos, flame.c_str());
+        QVERIFY2(flame.find("\"radius\":4.5") != std::string::npos, flame.c_str());
+        QTRY_VERIFY(curve->isVisible());
+        QCOMPARE(curve->points().size(), std::size_t(9));
+        QCOMPARE(curve->points().front().x(), 0.0);
+        QCOMPARE(curve->points().back().x(), 1.0);
+        QTest::qWait(20);
+
+        // Drag the middle point 25 px outwards: wider there, as one undo step.
+        const QPointF middle = curve->points()[4];
+        const QPoint from = curve->toScreen(middle).toPoint();
+        test::dragThrough(curve, {from, from + QPoint(25, 0)});
+        QCOMPARE(document().undoStack()->index(), steps + 2);
+        QVERIFY(curve->points()[4].y() > middle.y() + 0.05);
+        QVERIFY(std::abs(curve->points()[4].x() - middle.x()) < 0.02);
+        const graph::Value dragged = graph::Value::parseJson(envelope());
+        const graph::Value::Array& profile = dragged.find("profile")->toArray();
+        QCOMPARE(profile.size(), std::size_t(9));
+        QCOMPARE(profile[4].toArray()[1].toNumber(), curve->points()[4].y());
+        waitForPreview();
+        bench()->previewViewport()->frameScene(); // an earlier test zoomed in by hand
+        QTest::qWait(50);
+        mWindow->grab().save(outputPath(QStringLiteral("ui_species_curve.png")));
+        env->parentWidget()->grab().save(outputPath(QStringLiteral("ui_species_curve_panel.png")));
+
+        // Double-click between two points adds one; right-click removes it; Delete too.
+        const QPointF a = curve->toScreen(curve->points()[1]),
+                      b = curve->toScreen(curve->points()[2]);
+        const QPoint between = ((a + b) / 2.0).toPoint() + QPoint(0, 0);
+        QTest::mouseDClick(curve, Qt::LeftButton, {}, between);
+        QCOMPARE(curve->points().size(), std::size_t(10));
+        QCOMPARE(document().undoStack()->index(), steps + 3);
+        QTest::mouseClick(curve, Qt::RightButton, {}, between);
+        QCOMPARE(curve->points().size(), std::size_t(9));
+        QCOMPARE(document().undoStack()->index(), steps + 4);
+        QTest::mouseClick(curve, Qt::LeftButton, {}, curve->toScreen(curve->points()[6]).toPoint());
+        QCOMPARE(curve->selected(), 6);
+        QTest::keyClick(curve, Qt::Key_Delete);
+        QCOMPARE(curve->points().size(), std::size_t(8));
+        // The first and last points stay (t = 0 and t = 1).
+        QTest::mouseClick(curve, Qt::RightButton, {},
+                          curve->toScreen(curve->points()[0]).toPoint());
+        QCOMPARE(curve->points().size(), std::size_t(8));
+        QCOMPARE(document().undoStack()->index(), steps + 5);
+
+        while (document().serialized() != original && document().undoStack()->canUndo())
+            document().undoStack()->undo();
+        QCOMPARE(document().serialized(), original);
+        scene()->selectNode(QStringLiteral("grow"));
         waitForPreview();
     }
 

@@ -19,16 +19,113 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "document/errormessage.h"
+#include "engine/growth/envelope.h"
+#include "ui/nodes/curveeditor.h"
 
 namespace sylva::ui {
-
-namespace {
 
 using graph::ParamKind;
 using graph::ParamSpec;
 using graph::Value;
+
+namespace {
+
+/// A profile's points from a Value: a list of [t, value] pairs, or a Weber-Penn shape name.
+std::vector<QPointF> profilePoints(const Value* v) {
+    std::vector<QPointF> points;
+    if (!v) return points;
+    try {
+        if (v->isString()) {
+            for (const glm::vec2& q : growth::Envelope::weberPennProfile(v->toString()))
+                points.emplace_back(q.x, q.y);
+            return points;
+        }
+        for (const Value& pair : v->toArray("profile")) {
+            const Value::Array& a = pair.toArray("profile point");
+            if (a.size() == 2) points.emplace_back(a[0].toNumber("t"), a[1].toNumber("value"));
+        }
+    } catch (...) {
+        points.clear(); // not a profile the curve can show: the JSON above still can
+    }
+    return points;
+}
+
+Value profileValue(const std::vector<QPointF>& points) {
+    Value::Array list;
+    for (const QPointF& p : points)
+        list.push_back(Value(Value::Array{Value(p.x()), Value(p.y())}));
+    return Value(std::move(list));
+}
+
+/// A Weber-Penn shape sampled at 9 heights: few enough points to drag.
+std::vector<QPointF> sampledShape(const std::string& name) {
+    const std::vector<glm::vec2> dense = growth::Envelope::weberPennProfile(name);
+    std::vector<QPointF> points;
+    for (int k = 0; k <= 8; ++k) {
+        const float t = float(k) / 8.0f;
+        auto hi = std::lower_bound(dense.begin(), dense.end(), t,
+                                   [](const glm::vec2& q, float x) { return q.x < x; });
+        float v = dense.back().y;
+        if (hi == dense.begin())
+            v = dense.front().y;
+        else if (hi != dense.end()) {
+            const glm::vec2 a = *(hi - 1), b = *hi;
+            v = b.x > a.x ? a.y + (b.y - a.y) * (t - a.x) / (b.x - a.x) : b.y;
+        }
+        points.emplace_back(t, std::round(double(v) * 1000.0) / 1000.0);
+    }
+    return points;
+}
+
+/// \p envelope as a profile envelope of the same place and size (a sphere of radius r becomes a
+/// profile 2r high from its bottom), with \p points as its profile.
+Value asProfileEnvelope(const Value& envelope, const std::vector<QPointF>& points) {
+    Value::Object o = envelope.isObject() ? envelope.toObject() : Value::Object{};
+    const std::string shape = envelope.isObject() ? envelope.string("shape", "sphere") : "sphere";
+    auto vec = [&](const char* key, glm::dvec3 fallback) {
+        const Value* v = envelope.isObject() ? envelope.find(key) : nullptr;
+        if (v && v->isArray() && v->toArray().size() == 3) {
+            const Value::Array& a = v->toArray();
+            return glm::dvec3(a[0].toNumber(), a[1].toNumber(), a[2].toNumber());
+        }
+        return fallback;
+    };
+    auto num = [&](const char* key, double fallback) {
+        return envelope.isObject() ? envelope.number(key, fallback) : fallback;
+    };
+    glm::dvec3 base = vec("center", {0, 6, 0});
+    double radius = 3.0, height = 6.0;
+    if (shape == "sphere") {
+        radius = num("radius", 4.5);
+        base.y -= radius;
+        height = 2.0 * radius;
+    } else if (shape == "ellipsoid") {
+        const glm::dvec3 radii = vec("radii", {4, 3, 4});
+        radius = std::max(radii.x, radii.z);
+        base.y -= radii.y;
+        height = 2.0 * radii.y;
+    } else if (shape == "hemisphere") {
+        radius = num("radius", 4.5);
+        height = radius;
+    } else if (shape == "cone" || shape == "cylinder" || shape == "profile") {
+        radius = num("radius", shape == "cylinder" ? 2.0 : 3.0);
+        height = num("height", 6.0);
+    } else { // a mesh: a profile of the default size where the crown usually is
+        base = {0, 2, 0};
+    }
+    auto round3 = [](double v) { return std::round(v * 1000.0) / 1000.0; };
+    return Value(Value::Object{
+        {"shape", Value("profile")},
+        {"center",
+         Value(Value::Array{Value(round3(base.x)), Value(round3(base.y)), Value(round3(base.z))})},
+        {"radius", Value(round3(radius))},
+        {"height", Value(round3(height))},
+        {"profile", profileValue(points)}});
+}
 
 double clampRange(double v) {
     return std::clamp(v, -1e9, 1e9);
@@ -220,6 +317,81 @@ void ParameterPanel::refreshValues() {
     }
 }
 
+void ParameterPanel::addProfileEditor(const ParamSpec& spec, QWidget* box, QVBoxLayout* layout,
+                                      QPlainTextEdit* json) {
+    const std::string name = spec.name;
+    const bool envelope = spec.kind != ParamKind::Curve;
+    auto* curve = new CurveEditor(box);
+    curve->setObjectName(QStringLiteral("curve"));
+    auto current = std::make_shared<Value>();
+    if (envelope) {
+        // A crown envelope: its profile drawn as the crown it makes, and the Weber-Penn shapes to
+        // start from (any envelope becomes a profile of the same place and size).
+        curve->setOrientation(CurveEditor::Orientation::Silhouette);
+        curve->setAxisLabels(tr("height, base → top"), tr("radius (× the envelope radius)"));
+        auto* row = new QHBoxLayout;
+        row->addWidget(new QLabel(tr("Crown profile:"), box));
+        auto* shapes = new QComboBox(box);
+        shapes->setObjectName(QStringLiteral("profileShape"));
+        shapes->setToolTip(tr("Make the envelope a profile (a solid of revolution you can "
+                              "draw), starting from one of Weber and Penn's crown shapes"));
+        shapes->addItem(tr("start from a shape…"));
+        const std::pair<const char*, QString> names[] = {
+            {"conical", tr("conical")},
+            {"spherical", tr("spherical")},
+            {"hemispherical", tr("hemispherical")},
+            {"cylindrical", tr("cylindrical")},
+            {"tapered_cylindrical", tr("tapered cylindrical")},
+            {"flame", tr("flame")},
+            {"inverse_conical", tr("inverse conical")},
+            {"tend_flame", tr("tend flame")}};
+        for (const auto& [id, label] : names)
+            shapes->addItem(label, QString::fromLatin1(id));
+        row->addWidget(shapes, 1);
+        layout->addLayout(row);
+        connect(shapes, &QComboBox::activated, this, [this, name, shapes, current](int index) {
+            if (index <= 0) return;
+            const std::string shape = shapes->itemData(index).toString().toStdString();
+            shapes->setCurrentIndex(0);
+            apply(name, asProfileEnvelope(*current, sampledShape(shape)));
+        });
+    } else {
+        curve->setAxisLabels(tr("t"), tr("value"));
+    }
+    layout->addWidget(curve);
+    auto* hint =
+        new QLabel(tr("Drag points; double-click adds one; right-click removes one."), box);
+    hint->setWordWrap(true);
+    hint->setStyleSheet(QStringLiteral("color: gray;"));
+    layout->addWidget(hint);
+    connect(curve, &CurveEditor::edited, this, [this, name, curve, current, envelope](bool final) {
+        if (!envelope) {
+            apply(name, profileValue(curve->points()), final);
+            return;
+        }
+        Value v = *current;
+        if (!v.isObject() || v.string("shape", "") != "profile") {
+            v = asProfileEnvelope(v, curve->points());
+        } else {
+            v.objectRef()["profile"] = profileValue(curve->points());
+        }
+        apply(name, v, final);
+    });
+    mShow[name] = [json, curve, hint, current, envelope](const Value& v) {
+        *current = v;
+        if (!json->hasFocus())
+            json->setPlainText(v.isNull() ? QString() : QString::fromStdString(v.toJson()));
+        std::vector<QPointF> points;
+        if (!envelope)
+            points = profilePoints(&v);
+        else if (v.isObject() && v.string("shape", "") == "profile")
+            points = profilePoints(v.find("profile"));
+        curve->setVisible(!points.empty() || !envelope);
+        hint->setVisible(curve->isVisible());
+        if (!points.empty()) curve->setPoints(std::move(points));
+    };
+}
+
 QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
     const std::string name = spec.name;
     const Value def = spec.defaultValue;
@@ -343,7 +515,11 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
             s->setRange(std::max(clampRange(spec.min), -1e6), std::min(clampRange(spec.max), 1e6));
             s->setKeyboardTracking(false);
             s->setPrefix(QStringLiteral("xyz").mid(k, 1) + QStringLiteral(" "));
-            l->addWidget(s);
+            // Sized for the values people type, not for the widest of the range (±1e6 made
+            // the panel scroll sideways): the three share the row.
+            s->setMinimumWidth(64);
+            s->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+            l->addWidget(s, 1);
             spins.push_back(s);
         }
         for (QDoubleSpinBox* s : spins)
@@ -427,6 +603,10 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
                 mError->show();
             }
         });
+        if (spec.kind == ParamKind::Curve || name == "envelope") {
+            addProfileEditor(spec, w, l, edit);
+            return w;
+        }
         mShow[name] = [edit](const Value& v) {
             if (edit->hasFocus()) return;
             edit->setPlainText(v.isNull() ? QString() : QString::fromStdString(v.toJson()));

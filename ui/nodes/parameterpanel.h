@@ -11,6 +11,7 @@
 
 class QFormLayout;
 class QLabel;
+class QPlainTextEdit;
 class QVBoxLayout;
 
 namespace sylva::ui {
@@ -44,6 +45,10 @@ private:
     void refreshValues();
     bool apply(const std::string& param, const graph::Value& value, bool commit = true);
     QWidget* makeEditor(const graph::ParamSpec& spec);
+    /// Adds a curve editor under an object's (or a curve's) JSON: a Curve parameter's points, or
+    /// a crown envelope's profile with the Weber-Penn shapes to start from.
+    void addProfileEditor(const graph::ParamSpec& spec, QWidget* box, QVBoxLayout* layout,
+                          QPlainTextEdit* json);
 
     doc::Document& mDocument;
     QString mSpecies, mNode;
