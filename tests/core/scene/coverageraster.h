@@ -32,6 +32,21 @@ struct RasterCamera {
         c.viewProj = proj * glm::lookAt(eye, target, glm::vec3(0, 1, 0));
         return c;
     }
+
+    /// The same camera and pixel size on a canvas \p guard pixels larger on every side (a guard
+    /// band): a tree the frame cuts is drawn whole. Frame pixel (x, y) is (x + guard, y + guard).
+    RasterCamera guarded(int guard) const {
+        RasterCamera c = *this;
+        c.width = width + 2 * guard;
+        c.height = height + 2 * guard;
+        // Normalised device coordinates shrink so the frame keeps its pixel size in the centre.
+        c.viewProj =
+            glm::scale(glm::mat4(1.0f),
+                       glm::vec3(static_cast<float>(width) / static_cast<float>(c.width),
+                                 static_cast<float>(height) / static_cast<float>(c.height), 1.0f)) *
+            viewProj;
+        return c;
+    }
 };
 
 /// Calls fn(x, y, depth, triangle) for every pixel whose centre lies in a triangle of \p mesh
