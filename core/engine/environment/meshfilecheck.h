@@ -18,8 +18,9 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// declares. Collada files (by extension or a `<COLLADA` root element) must declare every
 /// `count` as a whole number from 1 to 9·maxItems and hold only whole numbers in their index
 /// lists (`<p>`, `<v>`, `<vcount>`): Assimp reserves what counts declare, crashed on a count of
-/// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. Other formats
-/// pass unchecked.
+/// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. OBJ files (by
+/// extension) must not hold a line element (`l`) of a single vertex: Assimp then writes past a
+/// vertex array. Other formats pass unchecked.
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.
 /// \throw LimitExceeded when a PLY element count exceeds \p maxItems or a Collada count
 /// 9·\p maxItems.

@@ -126,6 +126,27 @@ TEST(MeshFileCheck, LimitsDeclaredPlyElementCounts) {
 }
 
 // The limit on obstacle mesh triangles, whatever the format.
+// Fuzz finding 12: Assimp 5.2.5 sizes an OBJ mesh's vertices by its faces' index count (none for
+// a line of one vertex) but copies that vertex anyway, so a later line wrote past the array. Such
+// a line is refused with its line number; lines of two or more vertices still load.
+TEST(MeshFileCheck, RefusesObjLinesOfOneVertex) {
+    const std::string vertices = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+    const auto bad = writeFile("oneline.obj", vertices + "l 1\nl 1\nl 1 2 3 4\nf 1 2 3\n");
+    const std::string m = messageOf<InvalidInput>(bad, kMaxObstacleTriangles);
+    EXPECT_NE(m.find("oneline.obj': cannot read it: OBJ line element at line 5 names one vertex"),
+              std::string::npos)
+        << m;
+    // A reference with texture coordinates counts as one vertex; a comment is not one.
+    const auto slash = writeFile("slash.obj", vertices + "l 2/1 # 3\nf 1 2 3\n");
+    EXPECT_NE(messageOf<InvalidInput>(slash, kMaxObstacleTriangles).find("line 5 names one"),
+              std::string::npos);
+    // Continued lines are one line, as Assimp reads them: "l 1 \\" + "2" names two vertices.
+    const auto joined = writeFile("joined.obj", vertices + "l 1 \\\n2\nf 1 2 3\n");
+    EXPECT_EQ(loadObstacleMesh(joined, {}, kMaxObstacleTriangles).triangleCount(), 1u);
+    const auto good = writeFile("lines.obj", vertices + "l 1 2\nl 1 2 3 4\nf 1 2 3\nf 1 3 4\n");
+    EXPECT_EQ(loadObstacleMesh(good, {}, kMaxObstacleTriangles).triangleCount(), 2u);
+}
+
 TEST(MeshFileCheck, LimitsObstacleTriangles) {
     const auto file = writeFile("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\n"
                                             "f 1 3 4\nf 1 2 4\n");
