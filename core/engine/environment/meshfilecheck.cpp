@@ -129,7 +129,8 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
 /// off its counts and asked for 2.4 GB (both found by fuzz_obstacle). Every `count="N"` must be
 /// at most 9·maxItems (a float array of three corners of three coordinates per triangle) and
 /// the index lists (`<p>`, `<v>`, `<vcount>`) hold whole numbers only. A count that is not a
-/// whole number from 1 crashed Assimp (SEGV, found by fuzz_obstacle too).
+/// whole number from 1 crashed Assimp (SEGV, found by fuzz_obstacle too), and so did a data array
+/// without a count (SEGV, fuzz finding 14).
 void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::size_t maxItems) {
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: Collada ";
@@ -161,6 +162,30 @@ void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::siz
                                 lineOf(at) + " is more than the limit of " +
                                 std::to_string(maxCount) + " items (9 per triangle of " +
                                 std::to_string(maxItems) + "); decimate the mesh");
+    }
+    // A data array without a `count` attribute (one mutated to `cmunt`) made Assimp read
+    // through a null pointer (SEGV, found by fuzz_obstacle): every array must declare its count.
+    for (const char* tag : {"<float_array", "<int_array", "<Name_array", "<IDREF_array",
+                            "<bool_array", "<SIDREF_array", "<token_array"}) {
+        const std::size_t length = std::strlen(tag);
+        for (std::size_t at = text.find(tag); at != std::string::npos;
+             at = text.find(tag, at + length)) {
+            const char after = at + length < text.size() ? text[at + length] : '>';
+            if (after != ' ' && after != '\t' && after != '\n' && after != '\r' && after != '>' &&
+                after != '/')
+                continue; // a longer element name
+            const std::size_t close = text.find('>', at);
+            const std::string open =
+                text.substr(at, close == std::string::npos ? std::string::npos : close - at);
+            bool counted = false;
+            for (std::size_t c = open.find("count=\""); c != std::string::npos && !counted;
+                 c = open.find("count=\"", c + 7))
+                counted = c > 0 && (open[c - 1] == ' ' || open[c - 1] == '\t' ||
+                                    open[c - 1] == '\n' || open[c - 1] == '\r');
+            if (!counted)
+                throw InvalidInput(where + tag + "> at line " + lineOf(at) +
+                                   " has no count attribute");
+        }
     }
     for (const char* tag : {"<p>", "<p ", "<v>", "<v ", "<vcount>", "<vcount "}) {
         for (std::size_t at = text.find(tag); at != std::string::npos;

@@ -16,7 +16,8 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// well-formed header (format, element and property lines, `end_header`), element counts of at
 /// most \p maxItems, and at least as many data bytes (binary) or lines (ASCII) as the header
 /// declares. Collada files (by extension or a `<COLLADA` root element) must declare every
-/// `count` as a whole number from 1 to 9·maxItems and hold only whole numbers in their index
+/// `count` as a whole number from 1 to 9·maxItems (every data array must declare one) and hold
+/// only whole numbers in their index
 /// lists (`<p>`, `<v>`, `<vcount>`): Assimp reserves what counts declare, crashed on a count of
 /// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. OBJ files (by
 /// extension) must not hold a line element (`l`) of a single vertex: Assimp then writes past a

@@ -225,6 +225,25 @@ TEST(MeshFileCheck, ColladaCountsAndIndexListsAreChecked) {
 // Found by fuzz_obstacle (tests/fuzz/regressions/obstacle/crash-dae-count-not-a-number): a
 // float_array whose count is not a whole number from 1 ("z192"; "0", "" and "-192" too) but
 // holds values crashed Assimp 5.2.5 (SEGV). Refused before Assimp reads the file.
+// Fuzz finding 14: a float_array whose count attribute was mutated away ("cmunt") made Assimp
+// 5.2.5 read through a null pointer (SEGV). Every data array must declare its count; the accessor
+// and the polylist without one are read safely (Assimp refuses or ignores them).
+TEST(MeshFileCheck, ColladaDataArraysMustDeclareACount) {
+    std::string text = colladaCube();
+    text.replace(text.find("count=\"108\""), 5, "cmunt");
+    const std::string m =
+        messageOf<InvalidInput>(writeFile("nocount.dae", text), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("cannot read it: Collada <float_array> at line 5 has no count attribute"),
+              std::string::npos)
+        << m;
+    // An attribute that merely ends in "count" is not one.
+    text = colladaCube();
+    text.replace(text.find("count=\"108\""), 11, "xcount=\"108\"");
+    EXPECT_NE(messageOf<InvalidInput>(writeFile("xcount.dae", text), kMaxObstacleTriangles)
+                  .find("has no count attribute"),
+              std::string::npos);
+}
+
 TEST(MeshFileCheck, ColladaCountsAreWholeNumbersFromOne) {
     const std::string cube = colladaCube();
     for (const std::string bad : {"z108", "0", "", "-108", "1e3"}) {
