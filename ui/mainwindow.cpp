@@ -1432,6 +1432,7 @@ MainWindow::FrameStats MainWindow::measureFrames(int frames) {
     stats.trianglesDrawn = mViewport->drawnTriangles();
     const auto& levels = mViewport->drawnPerLevel();
     stats.treesPerLevel.assign(levels.begin(), levels.end());
+    stats.motionTrees = mViewport->drawnMotion();
     return stats;
 }
 

@@ -148,6 +148,7 @@ public:
         std::size_t treesDrawn = 0, triangles = 0;
         std::size_t trianglesDrawn = 0;         ///< in the last frame, at its LOD
         std::vector<std::size_t> treesPerLevel; ///< in the last frame, level 0 = full
+        std::size_t motionTrees = 0;            ///< in the last frame, drawn at their motion level
     };
     FrameStats measureFrames(int frames);
 

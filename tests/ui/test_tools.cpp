@@ -284,6 +284,31 @@ private Q_SLOTS:
         QVERIFY(!mWindow->tools().handles().has_value());
     }
 
+    /// While the view moves under a software renderer (reduced-resolution frames), trees draw
+    /// their motion level (fewer triangles); the sharp frame at rest draws their levels again.
+    void motionLevelsWhileTheViewMoves() {
+        settle();
+        QTRY_VERIFY_WITH_TIMEOUT(viewport()->lodPending() == 0, kTimeoutMs);
+        if (viewport()->motionScale() >= 1.0f)
+            QSKIP("a hardware renderer draws full frames while the view moves");
+        viewport()->grabSharp();
+        const std::size_t rest = viewport()->drawnTriangles();
+        QVERIFY(!viewport()->lastFrameReduced());
+        QCOMPARE(viewport()->drawnMotion(), std::size_t(0));
+        viewport()->camera().orbit(3.0f, 0.0f);
+        viewport()->grabFramebuffer(); // the view moved since the last frame
+        QVERIFY(viewport()->lastFrameReduced());
+        qInfo("moving: %zu of %zu trees at their motion level, %zu triangles (%zu at rest)",
+              viewport()->drawnMotion(), viewport()->drawnTrees(), viewport()->drawnTriangles(),
+              rest);
+        QVERIFY(viewport()->drawnMotion() > 0);
+        QVERIFY(viewport()->drawnTriangles() < rest);
+        viewport()->camera().orbit(-3.0f, 0.0f);
+        viewport()->grabSharp();
+        QCOMPARE(viewport()->drawnMotion(), std::size_t(0));
+        QCOMPARE(viewport()->drawnTriangles(), rest);
+    }
+
     /// The viewport's distance LOD: seen from far away the trees are drawn with coarser levels
     /// and impostors (fewer triangles than the scene holds), a click still picks the tree
     /// under the cursor (picking tests the full mesh) and the selection is still tinted.

@@ -568,6 +568,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 d["triangles"] = f.triangles;
                 d["triangles_drawn"] = f.trianglesDrawn;
                 d["trees_per_level"] = f.treesPerLevel;
+                d["motion_trees"] = f.motionTrees;
                 return d;
             },
             py::arg("frames") = 60,

@@ -167,6 +167,17 @@ void ViewLod::startNext() {
                     // A level that cannot be made leaves the finer one in its place.
                 }
             }
+            // The motion level: the camera LOD for kMotionFactor times the distance of the
+            // finest mesh drawn at rest (the project camera's, or level 1's), kept only where it
+            // saves at least a quarter of the triangles.
+            try {
+                const double finest = std::max(job.source.builtDistance, kLevelHeights[1] * height);
+                auto m = buildLevel(job.source, kMotionFactor * finest, kLevelResolution[2]);
+                if (m->triangleCount() * 4 < job.full->triangleCount() * 3)
+                    built.motion = std::move(m);
+            } catch (...) {
+                // Without one the tree moves at its resting level.
+            }
             out.push_back(std::move(built));
         }
         return out;
@@ -197,24 +208,35 @@ void ViewLod::finished() {
     }
 }
 
-const mesh::Mesh* ViewLod::meshFor(const mesh::Mesh* full, int level, int* used) const {
+const mesh::Mesh* ViewLod::meshFor(const mesh::Mesh* full, int level, int* used, bool moving,
+                                   bool* usedMotion) const {
     if (used) *used = 0;
-    if (level <= 0 || !mEnabled) return full;
+    if (usedMotion) *usedMotion = false;
+    if ((level <= 0 && !moving) || !mEnabled) return full;
     auto it = mLevels.find(full);
     if (it == mLevels.end()) return full;
+    const mesh::Mesh* chosen = full;
     for (int k = std::min(level, kLevels - 1); k > 0; --k)
         if (it->second.levels[std::size_t(k)]) {
             if (used) *used = k;
-            return it->second.levels[std::size_t(k)].get();
+            chosen = it->second.levels[std::size_t(k)].get();
+            break;
         }
-    return full;
+    const mesh::Mesh* motion = it->second.motion.get();
+    if (moving && motion && motion->triangleCount() < chosen->triangleCount()) {
+        if (usedMotion) *usedMotion = true;
+        return motion;
+    }
+    return chosen;
 }
 
 std::vector<std::shared_ptr<const mesh::Mesh>> ViewLod::allLevelMeshes() const {
     std::vector<std::shared_ptr<const mesh::Mesh>> out;
-    for (const auto& [key, built] : mLevels)
+    for (const auto& [key, built] : mLevels) {
         for (int k = 1; k < kLevels; ++k)
             if (built.levels[std::size_t(k)]) out.push_back(built.levels[std::size_t(k)]);
+        if (built.motion) out.push_back(built.motion);
+    }
     return out;
 }
 

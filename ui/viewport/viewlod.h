@@ -79,7 +79,14 @@ public:
 
     /// The mesh to draw for the tree whose full mesh is \p full at \p level: the coarsest built
     /// level not above \p level, else \p full itself; \p used (when given) gets its level.
-    const mesh::Mesh* meshFor(const mesh::Mesh* full, int level, int* used = nullptr) const;
+    /// \p moving (a frame drawn while the view moves, under a software renderer): the tree's
+    /// motion level instead when it has fewer triangles; \p usedMotion (when given) says so.
+    const mesh::Mesh* meshFor(const mesh::Mesh* full, int level, int* used = nullptr,
+                              bool moving = false, bool* usedMotion = nullptr) const;
+    /// How much farther than its own finest level a tree's motion level is made: while the view
+    /// moves, a software renderer draws every tree as if it were this many times as far (the
+    /// sharp frame at rest draws the levels above).
+    static constexpr double kMotionFactor = 2.0;
     /// Every distinct mesh of every level (for the GPU buffers).
     std::vector<std::shared_ptr<const mesh::Mesh>> allLevelMeshes() const;
 
@@ -99,6 +106,7 @@ private:
     struct Built {
         const mesh::Mesh* full = nullptr;
         std::array<std::shared_ptr<const mesh::Mesh>, kLevels> levels;
+        std::shared_ptr<const mesh::Mesh> motion; ///< drawn while the view moves, if made
     };
     void startNext();
     void finished();

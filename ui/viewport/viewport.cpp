@@ -33,15 +33,18 @@ layout(location = 3) in vec2 aUv;
 layout(location = 4) in float aOcclusion;
 uniform mat4 uViewProj;
 uniform mat4 uModel; // a tree's instance transform: rotation, uniform scale, translation
+uniform vec3 uEye;
 out vec3 vNormal;
-out vec3 vWorld;
 out vec3 vColor;
 out vec2 vUv;
 out float vOcclusion;
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
-    vNormal = mat3(uModel) * aNormal;
-    vWorld = world.xyz;
+    // Normals turned towards the viewer here, per vertex, so that leaf cards and inconsistent
+    // windings light the same from both sides: a software renderer interpolates three fewer
+    // values per pixel than if the fragment shader did it from the world position.
+    vec3 n = mat3(uModel) * aNormal;
+    vNormal = dot(n, uEye - world.xyz) < 0.0 ? -n : n;
     vColor = aColor;
     vUv = aUv;
     vOcclusion = aOcclusion;
@@ -50,14 +53,14 @@ void main() {
 )";
 
 // Lambert key light plus a hemisphere ambient (sky above, warm ground below), both dimmed by
-// the crown's per-vertex occlusion. Normals are flipped towards the viewer so that leaf cards
-// and inconsistent windings light the same from both sides; a leaf lit from behind lets a
-// little light through. Textures are sRGB: decoded to linear before lighting. Leaf cards are
+// the crown's per-vertex occlusion. Normals come turned towards the viewer (vertex shader); a
+// leaf lit from behind lets a little light through. Textures are sRGB: decoded to linear before
+// lighting, with gamma 2 (a square and a square root: under a software renderer two pow() per
+// pixel cost 5 % of a frame, and the difference to 2.2 does not show). Leaf cards are
 // cut out by their texture's alpha, sharpened with the mipmap level so that far leaves keep
 // their area instead of fading away.
 const char* const kMeshFragmentShader = R"(#version 330 core
 in vec3 vNormal;
-in vec3 vWorld;
 in vec3 vColor;
 in vec2 vUv;
 in float vOcclusion;
@@ -67,7 +70,6 @@ uniform bool uTextured;
 uniform bool uAlphaTest;   // a leaf card: cut out, translucent
 uniform sampler2D uTexture;
 uniform vec3 uLightDir;
-uniform vec3 uEye;
 uniform float uHighlight; // a selected tree: blended towards orange
 out vec4 fragColor;
 void main() {
@@ -83,20 +85,18 @@ void main() {
     vec3 n = vNormal;
     float len = length(n);
     n = len > 1e-6 ? n / len : vec3(0.0, 1.0, 0.0);
-    vec3 toEye = normalize(uEye - vWorld);
-    if (dot(n, toEye) < 0.0) n = -n;
     float facing = dot(n, uLightDir);
     float diffuse = max(facing, 0.0);
     if (uAlphaTest) diffuse += 0.35 * max(-facing, 0.0);
     vec3 sky = vec3(0.62, 0.70, 0.85);
     vec3 ground = vec3(0.30, 0.25, 0.20);
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    vec3 albedo = uVertexColor ? vColor : (uTextured ? pow(tex.rgb, vec3(2.2)) : uAlbedo);
+    vec3 albedo = uVertexColor ? vColor : (uTextured ? tex.rgb * tex.rgb : uAlbedo);
     float ao = clamp(vOcclusion, 0.0, 1.0);
     vec3 color = albedo * (0.55 * ambient * ao +
                            1.35 * vec3(1.0, 0.96, 0.90) * diffuse * (0.4 + 0.6 * ao));
     color = mix(color, vec3(1.0, 0.45, 0.05), uHighlight);
-    fragColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
+    fragColor = vec4(sqrt(color), 1.0);
 }
 )";
 
@@ -833,6 +833,7 @@ void Viewport::paintGL() {
     glDepthMask(GL_TRUE);
     mDrawnTriangles = 0;
     mDrawnTrees = 0;
+    mDrawnMotion = 0;
     mDrawnPerLevel.fill(0);
     if (!mRanges.empty() || !mGpuTrees.empty()) {
         mMeshProgram->bind();
@@ -860,8 +861,13 @@ void Viewport::paintGL() {
                 continue;
             }
             int used = 0;
-            const mesh::Mesh* drawn = mLod->meshFor(t.mesh.get(), d.level, &used);
+            bool motion = false;
+            // A frame drawn at reduced resolution while the view moves also draws the trees'
+            // motion levels; the sharp frame that follows draws them at rest.
+            const mesh::Mesh* drawn =
+                mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
             ++mDrawnPerLevel[std::size_t(used)];
+            mDrawnMotion += motion ? 1 : 0;
             drawTreeMesh(*drawn, t.transform, highlight);
         }
         for (const ViewTree& t : mPreview)

@@ -148,6 +148,9 @@ public:
     std::size_t levelUploads() const { return mLevelUploads; }
     /// Trees drawn in the last frame: those whose box is outside the view are skipped.
     std::size_t drawnTrees() const { return mDrawnTrees; }
+    /// Trees the last frame drew at their motion level (the view was moving).
+    std::size_t drawnMotion() const { return mDrawnMotion; }
+
     /// Triangles drawn in the last frame (trees at their level of detail, obstacles, terrain).
     std::size_t drawnTriangles() const { return mDrawnTriangles; }
     /// Trees drawn at each level of detail in the last frame (0 = full).
@@ -304,6 +307,7 @@ private:
     std::size_t mDrawnTrees = 0;
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
+    std::size_t mDrawnMotion = 0;
     ViewLod* mLod = nullptr; ///< a child
     Impostors mImpostors;
     std::size_t mImpostorsWanted = 0; ///< at the last paint
