@@ -15,6 +15,8 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLineEdit>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
@@ -381,6 +383,12 @@ private Q_SLOTS:
         mWindow->console()->submit(QStringLiteral("print(len(doc.trees()), 'tree(s) placed')"));
         settle();
         const QString path = outputPath(QStringLiteral("ui_editor_window.png"));
+        // A short dock scrolls its properties instead of squeezing the rows (the selected
+        // tree's rows were once squeezed into the height of the project's page).
+        auto* properties = qobject_cast<QScrollArea*>(
+            mWindow->findChild<QDockWidget*>(QStringLiteral("propertiesDock"))->widget());
+        QVERIFY(properties);
+        QVERIFY(properties->widget()->height() >= properties->widget()->minimumSizeHint().height());
         QVERIFY(mWindow->saveWindowScreenshot(path));
         const QImage image(path);
         QCOMPARE(image.size(), mWindow->size() * mWindow->devicePixelRatio());

@@ -288,6 +288,10 @@ void PropertiesPanel::rebuild() {
                     .arg(trees));
         };
     }
+    // Shown now, not by the layout's queued show, so that the size the scroll area gives the
+    // panel counts the new rows: otherwise they were squeezed into the old page's height.
+    mBody->show();
+    updateGeometry();
     refresh();
 }
 
