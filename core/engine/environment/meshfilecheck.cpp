@@ -204,45 +204,6 @@ void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::siz
     }
 }
 
-/// OBJ: Debian's Assimp 5.2.5 sizes a mesh's vertex array by the indices its faces count, which
-/// for a line element (`l`) is two per segment, none for a line of one vertex; yet it still
-/// copies that vertex. A later line then writes its duplicated vertices past the end of the
-/// array (upstream's oss-fuzz 54187, fixed after 5.2.5), which is how fuzz finding 12 found the
-/// heap's metadata overwritten. A line element must name at least two vertices. Lines joined by
-/// a trailing backslash count as one, as Assimp reads them.
-void checkObj(const std::filesystem::path& file, std::ifstream& in) {
-    const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: OBJ ";
-    std::string line, joined;
-    std::size_t number = 0, startedAt = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        if (joined.empty()) startedAt = number;
-        if (!line.empty() && line.back() == '\\') {
-            line.pop_back();
-            joined += line;
-            joined += ' ';
-            continue;
-        }
-        joined += line;
-        std::size_t i = joined.find_first_not_of(" \t");
-        if (i != std::string::npos && joined[i] == 'l' && i + 1 < joined.size() &&
-            (joined[i + 1] == ' ' || joined[i + 1] == '\t')) {
-            // Vertex references: tokens that start like a number (what Assimp reads as one).
-            std::size_t refs = 0;
-            std::istringstream tokens(joined.substr(i + 1));
-            for (std::string t; tokens >> t;) {
-                if (t[0] == '#') break;
-                if ((t[0] >= '0' && t[0] <= '9') || t[0] == '-' || t[0] == '+') ++refs;
-            }
-            if (refs == 1)
-                throw InvalidInput(where + "line element at line " + std::to_string(startedAt) +
-                                   " names one vertex; a line needs at least two");
-        }
-        joined.clear();
-    }
-}
-
 } // namespace
 
 void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
@@ -271,8 +232,23 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
     in.seekg(0);
     if (ext == ".dae" || head.find("<COLLADA") != std::string::npos)
         checkCollada(file, in, maxItems);
-    else if (ext == ".obj")
-        checkObj(file, in);
+}
+
+std::string withoutObjLinesAndPoints(std::string text) {
+    // Where Assimp 5.2.5 starts a line (IOStreamBuffer::getNextDataLine): after any of \r, \n,
+    // \0 and \f, and at the start of the file (after a UTF-8 byte order mark). A line that starts
+    // with 'l' or 'p' is read as a line or point element whatever follows (ObjFileParser::
+    // parseFile); marking it '#' makes it a comment. Lines continued with a backslash are also
+    // marked after their line end: that only turns more of a line into a comment, never less.
+    auto lineEnd = [](char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; };
+    std::size_t start = 0;
+    if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
+        static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF)
+        start = 3;
+    for (std::size_t i = start; i < text.size(); ++i)
+        if ((i == start || lineEnd(text[i - 1])) && (text[i] == 'l' || text[i] == 'p'))
+            text[i] = '#';
+    return text;
 }
 
 } // namespace sylva::env

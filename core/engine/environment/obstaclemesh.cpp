@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <system_error>
@@ -111,7 +113,23 @@ ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTrans
     // recomputed from the faces, as Triangulate asserts (aborts) when a mesh claims polygons it
     // does not have or has a face without indices. Both found by fuzz_obstacle
     // (tests/fuzz/regressions/obstacle).
-    const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
+    std::string ext = file.extension().string();
+    for (char& ch : ext)
+        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    const aiScene* scene = nullptr;
+    if (ext == ".obj") {
+        // Without its line and point elements (no area; and Assimp's line elements are unsafe):
+        // read from memory, so materials (mtllib) are not looked for, which obstacles do not use.
+        std::ifstream in(file, std::ios::binary);
+        const std::string text = withoutObjLinesAndPoints(
+            std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+        if (!in.good() && !in.eof())
+            throw IoError("obstacle mesh " + quoted(file) + ": cannot read the file");
+        scene = importer.ReadFileFromMemory(text.data(), text.size(),
+                                            aiProcess_ValidateDataStructure, "obj");
+    } else {
+        scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
+    }
     auto refuse = [&]() {
         std::string why = importer.GetErrorString();
         if (why.empty()) why = "unknown format or incomplete scene";
