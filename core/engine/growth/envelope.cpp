@@ -4,10 +4,6 @@
 #include <cmath>
 #include <numbers>
 
-#include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -200,41 +196,6 @@ Envelope Envelope::mesh(std::vector<glm::vec3> positions, std::vector<std::uint3
     e.mHi = volume->boundsMax();
     e.mMesh = std::move(volume);
     return e;
-}
-
-Envelope Envelope::loadMesh(const std::filesystem::path& file, float scale,
-                            const glm::vec3& offset) {
-    const std::string name = file.string();
-    requirePositive("scale", scale);
-    requireFinite("offset", offset);
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec))
-        throw IoError("cannot read envelope mesh '" + name + "': no such file");
-    Assimp::Importer importer;
-    const aiScene* scene =
-        importer.ReadFile(name, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                    aiProcess_PreTransformVertices | aiProcess_SortByPType);
-    if (scene == nullptr)
-        throw IoError("cannot read envelope mesh '" + name + "': " + importer.GetErrorString());
-    std::vector<glm::vec3> positions;
-    std::vector<std::uint32_t> indices;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh* mesh = scene->mMeshes[m];
-        const auto base = static_cast<std::uint32_t>(positions.size());
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-            const aiVector3D& p = mesh->mVertices[v];
-            positions.push_back(glm::vec3(p.x, p.y, p.z) * scale + offset);
-        }
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            const aiFace& face = mesh->mFaces[f];
-            if (face.mNumIndices != 3) continue;
-            for (int k = 0; k < 3; ++k)
-                indices.push_back(base + face.mIndices[k]);
-        }
-    }
-    if (indices.empty())
-        throw IoError("cannot use envelope mesh '" + name + "': it contains no triangles");
-    return mesh(std::move(positions), std::move(indices), name);
 }
 
 float Envelope::profileAt(float t) const {

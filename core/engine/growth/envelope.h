@@ -46,11 +46,8 @@ public:
     /// \param name for messages (the file name).
     static Envelope mesh(std::vector<glm::vec3> positions, std::vector<std::uint32_t> indices,
                          const std::string& name);
-    /// Loads every mesh of \p file with Assimp, scales by \p scale about the origin and then
-    /// moves it by \p offset. \throw IoError naming the file if it is missing, unreadable or
-    /// has no triangles.
-    static Envelope loadMesh(const std::filesystem::path& file, float scale = 1.0f,
-                             const glm::vec3& offset = glm::vec3(0.0f));
+    // A mesh file becomes an envelope in the space-colonization node (nodes::loadEnvelopeMesh),
+    // which reads it as obstacles are read.
 
     EnvelopeShape shape() const { return mShape; }
     bool contains(const glm::vec3& p) const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "engine/environment/obstaclemesh.h"
 #include "engine/graph/vectorparam.h"
 #include "engine/growth/envelope.h"
 #include "engine/growth/spacecolonization.h"
@@ -44,6 +45,32 @@ float positive(const Value& obj, const std::string& key, double fallback, double
 }
 
 } // namespace
+
+Envelope loadEnvelopeMesh(const std::filesystem::path& file, float scale, const glm::vec3& offset) {
+    if (!(scale > 0.0f) || !std::isfinite(scale))
+        throw InvalidInput("envelope scale must be a positive number, got " +
+                           std::to_string(scale));
+    if (!std::isfinite(offset.x) || !std::isfinite(offset.y) || !std::isfinite(offset.z))
+        throw InvalidInput("envelope offset must be finite");
+    env::MeshTransform transform;
+    transform.scale = glm::vec3(scale);
+    transform.translate = offset;
+    env::ObstacleMesh mesh;
+    try {
+        mesh = env::loadObstacleMesh(file, transform);
+    } catch (const IoError& e) {
+        throw IoError(std::string("envelope: ") + e.what());
+    } catch (const LimitExceeded& e) {
+        throw LimitExceeded(std::string("envelope: ") + e.what());
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(std::string("envelope: ") + e.what());
+    }
+    std::vector<std::uint32_t> indices;
+    indices.reserve(3 * mesh.triangles.size());
+    for (const glm::uvec3& t : mesh.triangles)
+        indices.insert(indices.end(), {t.x, t.y, t.z});
+    return Envelope::mesh(std::move(mesh.vertices), std::move(indices), file.string());
+}
 
 Envelope envelopeFromParams(const Value& env, const graph::NodeContext& ctx) {
     const std::string what = "envelope";
@@ -97,8 +124,8 @@ Envelope envelopeFromParams(const Value& env, const graph::NodeContext& ctx) {
         const Value* file = env.find("file");
         if (file == nullptr) throw InvalidInput("envelope.file is required for shape 'mesh'");
         const glm::vec3 offset = vec3Param(env, "offset", glm::vec3(0.0f), what + ".offset");
-        return Envelope::loadMesh(ctx.resolve(file->toString("envelope.file")),
-                                  positive(env, "scale", 1, 1e6, what), offset);
+        return loadEnvelopeMesh(ctx.resolve(file->toString("envelope.file")),
+                                positive(env, "scale", 1, 1e6, what), offset);
     }
     }
     throw InvalidInput("unknown envelope shape");

@@ -1,5 +1,9 @@
 #pragma once
 
+#include <filesystem>
+
+#include <glm/glm.hpp>
+
 #include "engine/graph/graph.h"
 
 namespace sylva::growth {
@@ -16,5 +20,12 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry);
 /// through \p ctx. Exposed for tests and the editor's envelope preview.
 class Envelope;
 Envelope envelopeFromParams(const graph::Value& envelope, const graph::NodeContext& ctx);
+
+/// A mesh envelope from \p file, scaled by \p scale about the origin and then moved by \p offset:
+/// read as obstacle meshes are (env::loadObstacleMesh: the file checks Debian's Assimp needs, OBJ
+/// without its line and point elements, the triangle limit), since a species file from elsewhere
+/// names it. \throw IoError or InvalidInput naming the file.
+Envelope loadEnvelopeMesh(const std::filesystem::path& file, float scale = 1.0f,
+                          const glm::vec3& offset = glm::vec3(0.0f));
 
 } // namespace sylva::growth

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/growth/envelope.h"
+#include "engine/nodes/spacecolonizationnode.h"
 #include "engine/util/error.h"
 
 using namespace sylva;
@@ -85,13 +86,13 @@ TEST(Envelope, BadShapesAreRejected) {
 }
 
 TEST(Envelope, MeshFromFileMatchesAnalyticInside) {
-    const Envelope cube = Envelope::loadMesh(kData + "cube.obj");
+    const Envelope cube = growth::loadEnvelopeMesh(kData + "cube.obj");
     expectSamplesInside(cube, [](glm::vec3 p) {
         return std::abs(p.x) <= 1 && p.y >= 0 && p.y <= 2 && std::abs(p.z) <= 1;
     });
     // The non-convex L prism, with scale and offset, tested on a lattice that hits edges and
     // vertices exactly (watertight parity) and on random points.
-    const Envelope l = Envelope::loadMesh(kData + "l-prism.obj", 2.0f, {10, 0, 0});
+    const Envelope l = growth::loadEnvelopeMesh(kData + "l-prism.obj", 2.0f, {10, 0, 0});
     auto insideL = [](glm::vec3 p) {
         const float x = (p.x - 10) / 2, y = p.y / 2, z = p.z / 2;
         if (std::abs(z) > 1) return false;
@@ -126,15 +127,15 @@ TEST(Envelope, MeshFromFileMatchesAnalyticInside) {
 
 TEST(Envelope, MeshLoadErrorsNameTheFile) {
     try {
-        Envelope::loadMesh(kData + "missing.obj");
+        growth::loadEnvelopeMesh(kData + "missing.obj");
         FAIL();
     } catch (const IoError& e) {
         EXPECT_NE(std::string(e.what()).find("missing.obj"), std::string::npos);
     }
     try {
-        Envelope::loadMesh(kData + "empty.obj");
+        growth::loadEnvelopeMesh(kData + "empty.obj");
         FAIL();
-    } catch (const IoError& e) {
+    } catch (const InvalidInput& e) { // read as obstacles are: "the file is empty"
         EXPECT_NE(std::string(e.what()).find("empty.obj"), std::string::npos);
     }
     // An open mesh (one triangle) has no inside to sample.
