@@ -1452,6 +1452,10 @@
         <source>A branch, grown by node %1: the rule on line %2</source>
         <translation>Ein Ast, erzeugt vom Knoten %1: die Regel in Zeile %2</translation>
     </message>
+    <message>
+        <source>A branch of the clicked tree, grown by node %1: the rule on line %2 (the preview shows that tree, before adaptation)</source>
+        <translation>Ein Ast des angeklickten Baums, erzeugt vom Knoten %1: die Regel in Zeile %2 (die Vorschau zeigt diesen Baum vor der Anpassung)</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

@@ -1452,6 +1452,10 @@
         <source>A branch, grown by node %1: the rule on line %2</source>
         <translation>Une branche, produite par le nœud %1 : la règle de la ligne %2</translation>
     </message>
+    <message>
+        <source>A branch of the clicked tree, grown by node %1: the rule on line %2 (the preview shows that tree, before adaptation)</source>
+        <translation>Une branche de l’arbre cliqué, produite par le nœud %1 : la règle de la ligne %2 (l’aperçu montre cet arbre avant adaptation)</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

@@ -121,6 +121,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     mTools = new ToolController(
         *mDocument, *mViewport,
         [this]() -> const GenerationResult& { return mGenerator->result(); }, this);
+    connect(mTools, &ToolController::treeBranchClicked, this,
+            [this](std::uint32_t id, const glm::vec3& local) {
+                // With the species editor open, a click on a tree also shows what grew it.
+                const auto dock = mDocks.find(QStringLiteral("speciesDock"));
+                if (!mWorkbench || dock == mDocks.end() || !dock->second->isVisible() ||
+                    mDocument->treeIndex(id) < 0)
+                    return;
+                const doc::ProjectInstance& t = mDocument->tree(id);
+                mWorkbench->showBranchOf(QString::fromStdString(t.species), t.seed, local);
+            });
     connect(mTools, &ToolController::message, this, [this](const QString& text) {
         mMessages->add(MessagesPanel::Severity::Warning, text);
         statusBar()->showMessage(text, 10000);

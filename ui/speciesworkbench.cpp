@@ -148,6 +148,55 @@ bool SpeciesWorkbench::eventFilter(QObject* watched, QEvent* event) {
     return QWidget::eventFilter(watched, event);
 }
 
+std::pair<QString, QString> SpeciesWorkbench::growingNodes() const {
+    // Walk from the output up its inputs: the first leaves node for a leaf card, and the
+    // generator (the node without inputs) for a branch or a grammar's own leaf.
+    QString leavesNode, generator;
+    try {
+        const graph::SpeciesGraph g = mDocument.engineSpecies(species().toStdString());
+        const graph::NodeDesc* n = g.findNode(g.output);
+        while (n) {
+            if (n->type == "leaves" && leavesNode.isEmpty())
+                leavesNode = QString::fromStdString(n->id);
+            if (n->inputs.empty()) {
+                generator = QString::fromStdString(n->id);
+                break;
+            }
+            n = g.findNode(n->inputs.front());
+        }
+    } catch (...) {
+        return {};
+    }
+    return {leavesNode, generator};
+}
+
+void SpeciesWorkbench::showBranchOf(const QString& species, std::uint64_t seed,
+                                    const glm::vec3& local) {
+    setSpecies(species);
+    mPendingBranch = local;
+    mPreview->setSeed(seed); // the preview grows that very tree
+    if (!mPreview->isBusy()) resolvePendingBranch();
+}
+
+void SpeciesWorkbench::resolvePendingBranch() {
+    if (!mPendingBranch) return;
+    const glm::vec3 point = *mPendingBranch;
+    mPendingBranch.reset();
+    const QString generator = growingNodes().second;
+    if (generator.isEmpty()) return;
+    mScene->selectNode(generator);
+    const int line = sourceLineAt(point);
+    if (line > 0 && generator == mGrammar->node()) {
+        mGrammar->highlightLine(line);
+        Q_EMIT status(
+            tr("A branch of the clicked tree, grown by node %1: the rule on line %2 (the preview "
+               "shows that tree, before adaptation)")
+                .arg(generator)
+                .arg(line),
+            6000);
+    }
+}
+
 int SpeciesWorkbench::sourceLineAt(const glm::vec3& point) const {
     const std::shared_ptr<const skel::Skeleton> sk = mPreview->result().skeleton;
     if (!sk || sk->sourceLine.size() != sk->size()) return 0;
@@ -192,24 +241,7 @@ QString SpeciesWorkbench::selectNodeAt(const QPointF& pos) {
     for (const mesh::Submesh& s : mesh->submeshes)
         if (3 * hit >= s.firstIndex && 3 * hit < s.firstIndex + s.indexCount)
             leaf = s.material.find("leaf") != std::string::npos;
-    // Walk from the output up its inputs: the first leaves node for a leaf card, and the
-    // generator (the node without inputs) for a branch or a grammar's own leaf.
-    QString leavesNode, generator;
-    try {
-        const graph::SpeciesGraph g = mDocument.engineSpecies(species().toStdString());
-        const graph::NodeDesc* n = g.findNode(g.output);
-        while (n) {
-            if (n->type == "leaves" && leavesNode.isEmpty())
-                leavesNode = QString::fromStdString(n->id);
-            if (n->inputs.empty()) {
-                generator = QString::fromStdString(n->id);
-                break;
-            }
-            n = g.findNode(n->inputs.front());
-        }
-    } catch (...) {
-        return {};
-    }
+    const auto [leavesNode, generator] = growingNodes();
     const QString node = leaf && !leavesNode.isEmpty() ? leavesNode : generator;
     if (node.isEmpty()) return {};
     mScene->selectNode(node);
@@ -304,6 +336,7 @@ void SpeciesWorkbench::onPreviewFinished() {
         mPreviewLabel->setToolTip(tr("Evaluation %1 ms").arg(r.evaluateMs, 0, 'f', 1));
     }
     mPreviewView->update();
+    if (!mPreview->isBusy()) resolvePendingBranch();
 }
 
 } // namespace sylva::ui

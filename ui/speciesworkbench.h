@@ -2,6 +2,9 @@
 
 #include <QWidget>
 
+#include <optional>
+#include <utility>
+
 #include <glm/glm.hpp>
 
 #include "document/document.h"
@@ -39,6 +42,11 @@ public:
     /// The source line (an L-system rule's) of the drawn branch nearest \p point, in the preview's
     /// world space; 0 when the preview's skeleton carries no source lines.
     int sourceLineAt(const glm::vec3& point) const;
+    /// A branch of a tree of the scene was clicked at \p local (the tree's own coordinates): the
+    /// preview grows that tree (\p species, \p seed) and, once it has, the generator is selected
+    /// and, for an L-system, the rule behind the nearest branch is marked. The scene's tree may be
+    /// adapted to obstacles; the preview's is not, so a bent branch is matched where it grew.
+    void showBranchOf(const QString& species, std::uint64_t seed, const glm::vec3& local);
 
     NodeGraphScene* graphScene() const { return mScene; }
     NodeGraphView* graphView() const { return mView; }
@@ -59,6 +67,9 @@ protected:
 private:
     void refillSpecies();
     void onPreviewFinished();
+    /// The leaves node and the generator the output is grown from ("" where there is none).
+    std::pair<QString, QString> growingNodes() const;
+    void resolvePendingBranch();
 
     doc::Document& mDocument;
     QComboBox* mSpeciesCombo;
@@ -73,6 +84,7 @@ private:
     bool mFramed = false;
     glm::vec3 mFramedLo{0.0f}, mFramedHi{0.0f}; ///< the bounds the preview was last framed on
     QPoint mPressAt; ///< where a click on the preview began (a drag orbits instead)
+    std::optional<glm::vec3> mPendingBranch; ///< a scene click waiting for its tree's preview
 };
 
 } // namespace sylva::ui

@@ -40,6 +40,7 @@
 #include "ui/nodes/nodegraphview.h"
 #include "ui/nodes/parameterpanel.h"
 #include "ui/speciesworkbench.h"
+#include "ui/viewport/toolcontroller.h"
 #include "ui/viewport/viewport.h"
 #include "uitest.h"
 
@@ -375,6 +376,75 @@ private Q_SLOTS:
         while (document().serialized() != original && document().undoStack()->canUndo())
             document().undoStack()->undo();
         QCOMPARE(document().serialized(), original);
+        waitForPreview();
+    }
+
+    /// With the species editor open, a click on a hand-placed tree in the scene grows that tree
+    /// in the preview, selects its generator and marks the rule behind the branch clicked.
+    void clickOnATreeInTheSceneMarksItsRule() {
+        waitForPreview();
+        const QByteArray original = document().serialized();
+        document().setGrammar("alder", "grow",
+                              "generations: 3\nangle: 90\nwidth: 0.3\naxiom: T\n"
+                              "T -> FFFFB\nB -> [+C]\nC -> FFF\n",
+                              true);
+        QVERIFY(mWindow->waitForGeneration(kTimeoutMs));
+        waitForPreview();
+        doc::TreeId id = 0;
+        for (const doc::TreeId t : document().treeIds())
+            if (document().tree(t).species == "alder") id = t;
+        QVERIFY(id != 0);
+        Viewport* v = mWindow->viewport();
+        glm::mat4 transform(1.0f);
+        int index = -1;
+        for (std::size_t i = 0; i < v->trees().size(); ++i)
+            if (v->trees()[i].id == id) {
+                transform = v->trees()[i].transform;
+                index = int(i);
+            }
+        QVERIFY(index >= 0);
+        // Look at that tree closely, so that no other stands in front.
+        glm::vec3 lo(1e30f), hi(-1e30f);
+        for (const glm::vec3& p : v->trees()[std::size_t(index)].mesh->positions) {
+            const glm::vec3 w(transform * glm::vec4(p, 1.0f));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+        }
+        v->frameBox(lo, hi);
+        v->update();
+        QTest::qWait(50);
+        auto screenOf = [&](const glm::vec3& local) {
+            const auto at = v->project(glm::vec3(transform * glm::vec4(local, 1.0f)));
+            return at ? at->toPoint() : QPoint(-1, -1);
+        };
+        mWindow->tools().setTool(ToolController::Tool::Select);
+        GrammarEditor* g = bench()->grammar();
+        scene()->selectNode(QStringLiteral("mesh"));
+        // The trunk (line 5), then the side branch (line 7), as the grammar places them.
+        const QPoint trunk = screenOf({0.0f, 2.0f, 0.0f});
+        QCOMPARE(v->treeAt(trunk), index);
+        QTest::mouseClick(v, Qt::LeftButton, {}, trunk);
+        QTRY_COMPARE(g->highlightedLine(), 5);
+        QCOMPARE(scene()->selectedNodeIds(), QStringList{QStringLiteral("grow")});
+        QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{id});
+        // From above, where the other trees' trunks do not hide it; the first point along the
+        // branch that this tree's own triangles are hit at.
+        const glm::vec3 top(transform * glm::vec4(-1.5f, 4.0f, 0.0f, 1.0f));
+        v->camera().lookFrom(top + glm::vec3(0.0f, 12.0f, 0.5f), top);
+        v->update();
+        QTest::qWait(50);
+        QPoint branch(-1, -1);
+        for (float x = 0.4f; x < 2.9f && branch.x() < 0; x += 0.1f)
+            if (const QPoint p = screenOf({-x, 4.0f, 0.0f}); v->treeAt(p) == index) branch = p;
+        QVERIFY(branch.x() >= 0);
+        QTest::mouseClick(v, Qt::LeftButton, {}, branch);
+        QTRY_COMPARE(g->highlightedLine(), 7);
+        mWindow->grab().save(outputPath(QStringLiteral("species-scene-click-rule.png")));
+        document().selectTrees({});
+        while (document().serialized() != original && document().undoStack()->canUndo())
+            document().undoStack()->undo();
+        QCOMPARE(document().serialized(), original);
+        QVERIFY(mWindow->waitForGeneration(kTimeoutMs));
         waitForPreview();
     }
 

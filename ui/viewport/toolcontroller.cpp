@@ -180,6 +180,12 @@ void ToolController::selectAt(const QPoint& pos, Qt::KeyboardModifiers modifiers
         if (item) selection << *item;
     }
     mDocument.setSelection(selection);
+    if (!(modifiers & (Qt::ControlModifier | Qt::ShiftModifier)) && item && item->kind == K::Tree) {
+        const glm::mat4& transform = mViewport.trees()[std::size_t(index)].transform;
+        const glm::vec3 world = ray.origin + treeT * ray.direction;
+        Q_EMIT treeBranchClicked(item->id,
+                                 glm::vec3(glm::inverse(transform) * glm::vec4(world, 1.0f)));
+    }
 }
 
 void ToolController::finishRubberBand() {

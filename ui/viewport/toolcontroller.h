@@ -100,6 +100,9 @@ Q_SIGNALS:
     void toolChanged(sylva::ui::ToolController::Tool tool);
     /// Something the user should read (a refused drop, an empty species list).
     void message(const QString& text);
+    /// A plain click (Select tool) hit hand-placed tree \p id at \p local (the tree's own
+    /// coordinates, before its placement): the species editor shows the node and rule behind it.
+    void treeBranchClicked(std::uint32_t id, const glm::vec3& local);
 
 private:
     struct Dragged {
