@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <string>
 
@@ -91,9 +92,14 @@ void ShadowGrid::resize(const glm::ivec3& lo, const glm::ivec3& hi) {
     const glm::ivec3 dim = hi - lo + 1;
     const std::size_t count = static_cast<std::size_t>(dim.x) * static_cast<std::size_t>(dim.y) *
                               static_cast<std::size_t>(dim.z);
-    if (count > (std::size_t{1} << 31))
-        throw LimitExceeded("shadow grid would need " + std::to_string(count) +
-                            " voxels; use a larger voxel_size");
+    if (count > kMaxShadowVoxels)
+        throw LimitExceeded(
+            "shadow grid would need " + std::to_string(count) + " voxels (" +
+            std::to_string(dim.x) + " x " + std::to_string(dim.y) + " x " + std::to_string(dim.z) +
+            " of " + std::to_string(mVoxelSize) + " m), more than the limit of " +
+            std::to_string(kMaxShadowVoxels) +
+            " (1.3 GB); use a larger voxel_size, or fewer cycles or a lower max_internodes when "
+            "shoots grow far beyond the crown");
     // Bud lookups land anywhere in a grid of tens of MB: with 4 KiB pages nearly every one is
     // a TLB miss too. Huge pages are advised before the zero fill touches the memory.
     std::vector<std::int32_t> values;
@@ -160,6 +166,9 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     int firstSource = 0;
     std::size_t layers = 0;
     bool nothing = false;
+    // An exception must not leave the parallel region (that terminates the process): the grid's
+    // limit is caught here and thrown again after it (fuzz finding 17 found the limit reached).
+    std::exception_ptr failure;
 #pragma omp parallel num_threads(threads)
     {
         const auto t = static_cast<std::size_t>(omp_get_thread_num());
@@ -183,9 +192,13 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
             // omp_get_max_threads() (one thread when called inside another parallel region).
             mPart.resize(nt);
             // Pyramids are clipped only below the floor; the grid's margin covers them sideways.
-            reserveAround(lo);
-            reserveAround(hi);
-            nothing = hi.y < mFloor;
+            try {
+                reserveAround(lo);
+                reserveAround(hi);
+            } catch (...) {
+                failure = std::current_exception();
+            }
+            nothing = failure || hi.y < mFloor;
             firstSource = std::max(lo.y, mFloor);
             layers = nothing ? 0 : static_cast<std::size_t>(hi.y - firstSource + 1);
         }
@@ -240,6 +253,7 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
                 mSorted[part.count[b]++] = {s.voxel.x, s.voxel.z, s.weight, s.kernel};
             }
     }
+    if (failure) std::rethrow_exception(failure);
     if (nothing) return;
 
     // Each output layer gathers the pyramid slices (squares) of the sources up to maxDepth

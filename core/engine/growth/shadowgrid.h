@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -32,6 +33,13 @@ struct ShadowSource {
 /// a horizontal margin of q_max voxels around every source, so no pyramid is ever clipped
 /// sideways and growing the grid is a plain copy; pyramids are clipped only below the floor.
 /// Values are fixed point (1/kScale), which makes incremental updates exact.
+/// Most voxels a shadow grid may hold: 2^28 (268 million, 1.3 GB at five bytes a voxel: the
+/// grid and its blocked flags), e.g. 300 × 300 × 360 m at voxel_size 0.5; the library's largest
+/// self-organizing preset needs 146 million (the grid grows by half its size when a bud leaves
+/// it). It was 2^31 (10.7 GB) until fuzzing found a shrub whose short-lived shoots reached 190 m
+/// and made the grid 580 million voxels (3.7 GB) for a 16 m tree.
+inline constexpr std::size_t kMaxShadowVoxels = std::size_t{1} << 28;
+
 class ShadowGrid {
 public:
     static constexpr double kScale = 16384.0;

@@ -238,9 +238,26 @@ TEST(SelfOrgShadow, NeighbourhoodMatchesVoxelLookups) {
     }
 }
 
-// The shadow grid's limit (2^31 voxels) is checked before the grid grows: two sources 2000
-// voxels apart on every axis would need 8·10^9 voxels.
+// The shadow grid's limit (2^28 voxels) is checked before the grid grows: two sources 2000
+// voxels apart on every axis would need 8·10^9 voxels; 700 apart (3.4·10^8) too, which the old
+// limit of 2^31 allowed (1.7 GB and the copy).
 TEST(ShadowGrid, GrowingPastTheVoxelLimitThrowsBeforeAllocating) {
+    {
+        ShadowGrid g(0.01f, 0.0f, 2);
+        const ShadowKernel k = ShadowKernel::make(1.0, 2.0, 2);
+        g.addPyramid({0, 10, 0}, k);
+        EXPECT_THROW(g.addPyramid({700, 700, 700}, k), sylva::LimitExceeded);
+    }
+    {
+        // A batch large enough to be sorted on every thread: the limit is reached inside the
+        // parallel region and must come out as the exception, not end the process (finding 17).
+        ShadowGrid g(0.01f, 0.0f, 2);
+        const std::vector<ShadowKernel> kernels = {ShadowKernel::make(1.0, 2.0, 2)};
+        std::vector<ShadowSource> sources(5000);
+        for (std::size_t i = 0; i < sources.size(); ++i)
+            sources[i].voxel = glm::ivec3(int(i % 700), 10 + int(i % 690), int(i % 701));
+        EXPECT_THROW(g.applyBatch(sources, kernels), sylva::LimitExceeded);
+    }
     ShadowGrid g(0.01f, 0.0f, 2);
     const ShadowKernel k = ShadowKernel::make(1.0, 2.0, 2);
     g.addPyramid({0, 10, 0}, k);
@@ -250,6 +267,8 @@ TEST(ShadowGrid, GrowingPastTheVoxelLimitThrowsBeforeAllocating) {
     } catch (const sylva::LimitExceeded& e) {
         const std::string m = e.what();
         EXPECT_NE(m.find("shadow grid would need "), std::string::npos) << m;
-        EXPECT_NE(m.find(" voxels; use a larger voxel_size"), std::string::npos) << m;
+        EXPECT_NE(m.find("more than the limit of 268435456 (1.3 GB); use a larger voxel_size"),
+                  std::string::npos)
+            << m;
     }
 }
