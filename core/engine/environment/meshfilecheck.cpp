@@ -234,19 +234,21 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
         checkCollada(file, in, maxItems);
 }
 
-std::string withoutObjLinesAndPoints(std::string text) {
+std::string objGeometryOnly(std::string text) {
     // Where Assimp 5.2.5 starts a line (IOStreamBuffer::getNextDataLine): after any of \r, \n,
     // \0 and \f, and at the start of the file (after a UTF-8 byte order mark). A line that starts
     // with 'l' or 'p' is read as a line or point element whatever follows (ObjFileParser::
-    // parseFile); marking it '#' makes it a comment. Lines continued with a backslash are also
-    // marked after their line end: that only turns more of a line into a comment, never less.
+    // parseFile), one that starts with 'm' as a material library (`mtllib`) or merging group;
+    // marking it '#' makes it a comment. Lines continued with a backslash are also marked after
+    // their line end: that only turns more of a line into a comment, never less.
     auto lineEnd = [](char c) { return c == '\r' || c == '\n' || c == '\0' || c == '\f'; };
     std::size_t start = 0;
     if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
         static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF)
         start = 3;
     for (std::size_t i = start; i < text.size(); ++i)
-        if ((i == start || lineEnd(text[i - 1])) && (text[i] == 'l' || text[i] == 'p'))
+        if ((i == start || lineEnd(text[i - 1])) &&
+            (text[i] == 'l' || text[i] == 'p' || text[i] == 'm'))
             text[i] = '#';
     return text;
 }

@@ -21,18 +21,20 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// only whole numbers in their index
 /// lists (`<p>`, `<v>`, `<vcount>`): Assimp reserves what counts declare, crashed on a count of
 /// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. Other formats
-/// pass unchecked (OBJ files go through withoutObjLinesAndPoints() instead).
+/// pass unchecked (OBJ files go through objGeometryOnly() instead).
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.
 /// \throw LimitExceeded when a PLY element count exceeds \p maxItems or a Collada count
 /// 9·\p maxItems.
 /// \throw IoError when the file cannot be read.
 void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems = kMaxObstacleTriangles);
 
-/// The text of an OBJ file with its line (`l`) and point (`p`) elements made comments, as
-/// Debian's Assimp 5.2.5 would split it into lines. Obstacles keep only triangles, so nothing is
-/// lost; and Assimp's line elements are unsafe: one of a single vertex takes a vertex slot
-/// without counting an index, and a later line then writes past the vertex array (fuzz findings
-/// 12 and 15; upstream oss-fuzz 54187, fixed after 5.2.5).
-std::string withoutObjLinesAndPoints(std::string text);
+/// The text of an OBJ file with its line (`l`) and point (`p`) elements and its material
+/// libraries (`mtllib`, and `mg`) made comments, as Debian's Assimp 5.2.5 would split it into
+/// lines. Obstacles keep only triangles, so nothing is lost. Assimp's line elements are unsafe:
+/// one of a single vertex takes a vertex slot without counting an index, and a later line then
+/// writes past the vertex array (fuzz findings 12 and 15; upstream oss-fuzz 54187, fixed after
+/// 5.2.5). A file read from memory reads its own text as the material library that `mtllib`
+/// names, and the MTL parser wrote past a buffer on an OBJ's text (finding 18).
+std::string objGeometryOnly(std::string text);
 
 } // namespace sylva::env

@@ -118,10 +118,10 @@ ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTrans
         if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
     const aiScene* scene = nullptr;
     if (ext == ".obj") {
-        // Without its line and point elements (no area; and Assimp's line elements are unsafe):
-        // read from memory, so materials (mtllib) are not looked for, which obstacles do not use.
+        // Without its line and point elements (no area; and Assimp's line elements are unsafe)
+        // and its material libraries (obstacles use none), read from memory.
         std::ifstream in(file, std::ios::binary);
-        const std::string text = withoutObjLinesAndPoints(
+        const std::string text = objGeometryOnly(
             std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
         if (!in.good() && !in.eof())
             throw IoError("obstacle mesh " + quoted(file) + ": cannot read the file");

@@ -131,14 +131,16 @@ TEST(MeshFileCheck, LimitsDeclaredPlyElementCounts) {
 // past the array (valgrind: an invalid 8-byte write). Line and point elements never reach Assimp:
 // every line Assimp would start with 'l' or 'p' becomes a comment, however the fuzzer dressed it.
 TEST(MeshFileCheck, ObjLinesAndPointsNeverReachAssimp) {
-    EXPECT_EQ(withoutObjLinesAndPoints("l 1\nv 0 0 0\np 1\n"), "# 1\nv 0 0 0\n# 1\n");
+    EXPECT_EQ(objGeometryOnly("l 1\nv 0 0 0\np 1\n"), "# 1\nv 0 0 0\n# 1\n");
     // Lines end at \r, \n, \0 and \f for Assimp; what follows is a new line.
     using namespace std::string_literals;
-    EXPECT_EQ(withoutObjLinesAndPoints("v 1 2 3\rl 1\0l\x16\x31 2\fp 1"s),
+    EXPECT_EQ(objGeometryOnly("v 1 2 3\rl 1\0l\x16\x31 2\fp 1"s),
               "v 1 2 3\r# 1\0#\x16\x31 2\f# 1"s);
+    // Material libraries too (finding 18: read from memory, Assimp parsed the OBJ's own text as
+    // its MTL file and wrote past a buffer).
+    EXPECT_EQ(objGeometryOnly("mtllib a.mtl\nmg 1\nusemtl a\n"), "#tllib a.mtl\n#g 1\nusemtl a\n");
     // After a byte order mark too; an 'l' inside a line is left alone.
-    EXPECT_EQ(withoutObjLinesAndPoints("\xEF\xBB\xBFl 1\nvl 1 # l\n"),
-              "\xEF\xBB\xBF# 1\nvl 1 # l\n");
+    EXPECT_EQ(objGeometryOnly("\xEF\xBB\xBFl 1\nvl 1 # l\n"), "\xEF\xBB\xBF# 1\nvl 1 # l\n");
     // The file that made Assimp write past its vertex array now loads its one face.
     const std::string vertices = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
     const auto bad = writeFile("oneline.obj", vertices + "l 1\nl 1\nl 1 2 3 4\nf 1 2 3\n");
