@@ -71,6 +71,11 @@ bool hasNode(const graph::Value& g, const std::string& id) {
 
 } // namespace
 
+/// A trunk from line 5 (0..4 m up) and one side branch from line 7 (0..-3 m along x at 4 m):
+/// step 1, angle 90°, so where each rule's branch stands is known without growing it.
+constexpr const char* kTwoRuleGrammar = "generations: 3\nangle: 90\nwidth: 0.3\naxiom: T\n"
+                                        "T -> FFFFB\nB -> [+C]\nC -> FFF\n";
+
 class TestSpecies : public QObject {
     Q_OBJECT
 
@@ -337,10 +342,7 @@ private Q_SLOTS:
     void clickOnABranchHighlightsItsRule() {
         waitForPreview();
         const QByteArray original = document().serialized();
-        document().setGrammar("alder", "grow",
-                              "generations: 3\nangle: 90\nwidth: 0.3\naxiom: T\n"
-                              "T -> FFFFB\nB -> [+C]\nC -> FFF\n",
-                              true);
+        document().setGrammar("alder", "grow", kTwoRuleGrammar, true);
         QTRY_VERIFY_WITH_TIMEOUT(bench()->preview()->isBusy(), 2000);
         waitForPreview();
         QCOMPARE(bench()->preview()->result().skeleton->segmentCount(), std::size_t(7));
@@ -384,10 +386,7 @@ private Q_SLOTS:
     void clickOnATreeInTheSceneMarksItsRule() {
         waitForPreview();
         const QByteArray original = document().serialized();
-        document().setGrammar("alder", "grow",
-                              "generations: 3\nangle: 90\nwidth: 0.3\naxiom: T\n"
-                              "T -> FFFFB\nB -> [+C]\nC -> FFF\n",
-                              true);
+        document().setGrammar("alder", "grow", kTwoRuleGrammar, true);
         QVERIFY(mWindow->waitForGeneration(kTimeoutMs));
         waitForPreview();
         doc::TreeId id = 0;
