@@ -95,13 +95,11 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
             [this](const QString& s) { setSpecies(s); });
     connect(&mDocument, &doc::Document::changed, this, [this](const doc::DocumentChange& c) {
         if (c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset)) refillSpecies();
+        // A reset (open, save under a new name, revert) empties the panels, which handled it
+        // first; the graph keeps its selection when its species is still there, so show it.
+        if (c.what & doc::DocumentChange::Reset) showSelectionInPanels();
     });
-    connect(mScene, &NodeGraphScene::nodeSelected, this, [this](const QString& id) {
-        mParameters->setNode(species(), id);
-        QString type;
-        if (NodeItem* n = mScene->node(id)) type = n->nodeType();
-        if (type == QLatin1String("lsystem")) mGrammar->setNode(species(), id);
-    });
+    connect(mScene, &NodeGraphScene::nodeSelected, this, [this] { showSelectionInPanels(); });
     connect(mScene, &NodeGraphScene::refused, this, [this](const QString& why) {
         mRefusal->setText(why);
         Q_EMIT status(why, 8000);
@@ -257,6 +255,14 @@ QString SpeciesWorkbench::selectNodeAt(const QPointF& pos) {
                       4000);
     }
     return node;
+}
+
+void SpeciesWorkbench::showSelectionInPanels() {
+    const QStringList ids = mScene->selectedNodeIds();
+    const QString id = ids.isEmpty() ? QString() : ids.front();
+    mParameters->setNode(species(), id);
+    NodeItem* n = mScene->node(id);
+    if (n && n->nodeType() == QLatin1String("lsystem")) mGrammar->setNode(species(), id);
 }
 
 void SpeciesWorkbench::showEvent(QShowEvent* event) {

@@ -66,6 +66,8 @@ protected:
 
 private:
     void refillSpecies();
+    /// Shows the graph's selected node in the parameter panel (and an L-system's grammar).
+    void showSelectionInPanels();
     void onPreviewFinished();
     /// The leaves node and the generator the output is grown from ("" where there is none).
     std::pair<QString, QString> growingNodes() const;

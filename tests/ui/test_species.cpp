@@ -150,6 +150,19 @@ private Q_SLOTS:
         QVERIFY(bench()->preview()->editToResultMs() > 0.0);
     }
 
+    void savingUnderANewNameKeepsThePanels() {
+        // Save As in another folder resets the document (paths are rewritten for it); the panels
+        // empty on a reset, and must show the node the graph still has selected.
+        QCOMPARE(scene()->selectedNodeIds(), QStringList{QStringLiteral("grow")});
+        QVERIFY(QDir(mDir.path()).mkpath(QStringLiteral("elsewhere")));
+        QVERIFY(mWindow->saveAs(mDir.filePath(QStringLiteral("elsewhere/renamed.sylva"))));
+        QCOMPARE(scene()->selectedNodeIds(), QStringList{QStringLiteral("grow")});
+        QCOMPARE(bench()->parameters()->node(), QStringLiteral("grow"));
+        QCOMPARE(bench()->grammar()->node(), QStringLiteral("grow"));
+        QVERIFY(bench()->grammar()->textEdit()->toPlainText().contains(QStringLiteral("axiom")));
+        waitForPreview();
+    }
+
     void editTheGraphWithMouseAndKeys() {
         const QByteArray original = document().serialized();
         const int steps = document().undoStack()->index();
