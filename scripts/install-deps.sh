@@ -10,7 +10,7 @@ PACKAGES=(
   libqt6opengl6-dev libgl-dev libglm-dev
   libassimp-dev assimp-utils libembree-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth libgl1-mesa-dri clang-format
+  xvfb xauth xdotool libgl1-mesa-dri clang-format
   python3-dev pybind11-dev python3-numpy python3-pytest
   clang libclang-rt-14-dev libomp-dev
 )

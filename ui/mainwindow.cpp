@@ -37,6 +37,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPainter>
 #include <QProgressBar>
 #include <QPromise>
 #include <QScrollArea>
@@ -176,7 +177,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         syncOutlinerSelection();
         mStats->showSelection(*mDocument, mGenerator->result());
     });
-    connect(mViewport, &QOpenGLWidget::frameSwapped, this, [this] {
+    connect(mViewport, &Viewport::frameSwapped, this, [this] {
         if (!mAwaitingFrame) return;
         mAwaitingFrame = false;
         mEditToScreenMs = mGenerator->msSinceResultRequest();
@@ -1282,7 +1283,15 @@ bool MainWindow::saveScreenshot(const QString& path) {
 }
 
 bool MainWindow::saveWindowScreenshot(const QString& path) {
-    const QPixmap image = grab();
+    QPixmap image = grab();
+    {
+        // The 3D views draw into native windows, which a widget grab does not see.
+        QPainter painter(&image);
+        for (Viewport* view : findChildren<Viewport*>())
+            if (view->isVisible() && view->window() == this)
+                painter.drawImage(QRect(view->mapTo(this, QPoint(0, 0)), view->size()),
+                                  view->grabSharp());
+    }
     if (image.isNull() || !image.save(path)) {
         reportError(tr("Could not write %1.").arg(QDir::toNativeSeparators(path)));
         return false;
@@ -1426,7 +1435,7 @@ MainWindow::FrameStats MainWindow::measureFrames(int frames) {
         QTimer guard;
         guard.setSingleShot(true);
         connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
-        connect(mViewport, &QOpenGLWidget::frameSwapped, &loop, &QEventLoop::quit);
+        connect(mViewport, &Viewport::frameSwapped, &loop, &QEventLoop::quit);
         mViewport->camera().orbit(4.0f, 0.0f);
         mViewport->update();
         guard.start(10000);

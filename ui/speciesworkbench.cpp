@@ -119,7 +119,7 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
                                       generations < 0 ? graph::Value() : graph::Value(generations));
             });
     connect(mPreview, &SpeciesPreview::finished, this, &SpeciesWorkbench::onPreviewFinished);
-    connect(mPreviewView, &QOpenGLWidget::frameSwapped, mPreview, &SpeciesPreview::markShown);
+    connect(mPreviewView, &Viewport::frameSwapped, mPreview, &SpeciesPreview::markShown);
     connect(mPreview, &SpeciesPreview::shown, this, [this](double ms) {
         mPreviewLabel->setText(tr("Preview: %1 ms from the edit").arg(ms, 0, 'f', 0));
         Q_EMIT status(

@@ -37,6 +37,7 @@
 #include "ui/generation/documentgenerator.h"
 #include "ui/mainwindow.h"
 #include "ui/scripting/pythonconsole.h"
+#include "ui/speciesworkbench.h"
 #include "ui/viewport/viewport.h"
 #include "uitest.h"
 
@@ -392,6 +393,21 @@ private Q_SLOTS:
         QVERIFY(mWindow->saveWindowScreenshot(path));
         const QImage image(path);
         QCOMPARE(image.size(), mWindow->size() * mWindow->devicePixelRatio());
+        // The 3D views draw into native windows, which a widget grab leaves blank: the
+        // screenshot holds what each view draws.
+        for (Viewport* view : {mWindow->viewport(), mWindow->workbench()->previewViewport()}) {
+            const QImage drawn = view->grabSharp().convertToFormat(QImage::Format_RGB32);
+            QVERIFY(!drawn.isNull());
+            const QRect where(view->mapTo(mWindow.get(), QPoint(0, 0)) * image.devicePixelRatio(),
+                              drawn.size());
+            const QImage shot = image.copy(where).convertToFormat(QImage::Format_RGB32);
+            int differ = 0;
+            for (int y = 0; y < drawn.height(); y += 4)
+                for (int x = 0; x < drawn.width(); x += 4)
+                    differ += qAbs(qGray(shot.pixel(x, y)) - qGray(drawn.pixel(x, y))) > 24;
+            QVERIFY2(differ * 16 < drawn.width() * drawn.height() / 50,
+                     qPrintable(view->objectName()));
+        }
     }
 };
 

@@ -153,6 +153,66 @@ private Q_SLOTS:
         QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{1});
     }
 
+    /// Ctrl+drag draws a rubber band over the scene (in the OpenGL view: a widget over the
+    /// view's native window would be hidden) and selects the hand-placed trees inside it.
+    void rubberBandIsDrawnAndSelects() {
+        mWindow->tools().setTool(Tool::Select);
+        document().selectTrees({});
+        const QPoint trunk = screenOf(document().tree(1).position + glm::vec3(0, 1.0f, 0));
+        QVERIFY(trunk.x() >= 0);
+        const QPoint from = trunk - QPoint(60, 50), to = trunk + QPoint(60, 30);
+        const QImage before = viewport()->grabFramebuffer();
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::ControlModifier, from);
+        for (int i = 1; i <= 8; ++i) {
+            const QPoint p = from + (to - from) * i / 8;
+            QMouseEvent move(QEvent::MouseMove, p, viewport()->mapToGlobal(p), Qt::NoButton,
+                             Qt::LeftButton, Qt::ControlModifier);
+            QApplication::sendEvent(viewport(), &move);
+        }
+        QCOMPARE(viewport()->band(), QRect(from, to).normalized());
+        const QImage during = viewport()->grabFramebuffer();
+        QVERIFY(!during.isNull());
+        // Inside the band the picture is tinted blue; outside it is what it was.
+        const qreal dpr = during.devicePixelRatio();
+        auto at = [dpr](const QImage& image, QPoint p) {
+            return QColor(image.pixel(int(p.x() * dpr), int(p.y() * dpr)));
+        };
+        const QPoint inside = from + QPoint(10, 10), outside = from - QPoint(20, 20);
+        QVERIFY2(at(during, inside).blue() - at(during, inside).red() >
+                     at(before, inside).blue() - at(before, inside).red(),
+                 "the band's fill is not drawn");
+        QCOMPARE(at(during, outside), at(before, outside));
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::ControlModifier, to);
+        QVERIFY(viewport()->band().isEmpty());
+        QVERIFY(document().selectedTrees().contains(1));
+        document().selectTrees({});
+    }
+
+    /// Input as the window system delivers it: to the view's native OpenGL window, which
+    /// hands it to the viewport widget; keys still reach the main window's shortcuts.
+    void inputThroughTheViewsWindow() {
+        mWindow->tools().setTool(Tool::Select);
+        document().selectTrees({});
+        QWindow* surface = viewport()->surface();
+        QVERIFY(surface && surface->isExposed());
+        const QPoint trunk = screenOf(document().tree(1).position + glm::vec3(0, 1.0f, 0));
+        QTest::mouseClick(surface, Qt::LeftButton, {}, trunk);
+        QTRY_COMPARE(document().selectedTrees(), QList<doc::TreeId>{1});
+        QTRY_COMPARE(QApplication::activeWindow(), static_cast<QWidget*>(mWindow.get()));
+        QVERIFY(viewport()->hasFocus());
+        const QByteArray before = document().serialized();
+        QTest::keyClick(surface, Qt::Key_Delete); // Edit ▸ Delete's shortcut
+        auto has1 = [this] {
+            const std::vector<doc::TreeId> ids = document().treeIds();
+            return std::find(ids.begin(), ids.end(), doc::TreeId(1)) != ids.end();
+        };
+        QTRY_VERIFY(!has1());
+        QTest::keyClick(surface, Qt::Key_Z, Qt::ControlModifier); // Edit ▸ Undo's
+        QTRY_VERIFY(has1());
+        QCOMPARE(document().serialized(), before);
+        settle();
+    }
+
     /// The Place tool: a click on the ground plants a tree of the chosen species there.
     void clickPlacesATree() {
         mWindow->tools().setTool(Tool::Place);

@@ -6,7 +6,6 @@
 #include <QKeyEvent>
 #include <QLineF>
 #include <QMouseEvent>
-#include <QRubberBand>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -59,7 +58,6 @@ bool ToolController::fromName(const QString& text, Tool& tool) {
 ToolController::ToolController(doc::Document& document, Viewport& viewport,
                                std::function<const GenerationResult&()> result, QObject* parent)
     : QObject(parent), mDocument(document), mViewport(viewport), mResult(std::move(result)) {
-    mBand = new QRubberBand(QRubberBand::Rectangle, &viewport);
     viewport.setTool(this);
     viewport.setOverlay([this] { return handleLines(); });
 }
@@ -189,7 +187,7 @@ void ToolController::selectAt(const QPoint& pos, Qt::KeyboardModifiers modifiers
 }
 
 void ToolController::finishRubberBand() {
-    mBand->hide();
+    mViewport.setBand({});
     const QRect rect = QRect(mPress, mLast).normalized();
     QList<doc::ItemRef> selection = mDocument.selection();
     for (const ViewTree& t : mViewport.trees()) {
@@ -533,8 +531,7 @@ bool ToolController::press(QMouseEvent* event) {
     switch (mTool) {
     case Tool::Select:
         if (!(event->modifiers() & Qt::ControlModifier)) return false;
-        mBand->setGeometry(QRect(mPress, QSize()));
-        mBand->show();
+        mViewport.setBand(QRect(mPress, QSize(1, 1)));
         return true;
     case Tool::Move: {
         mDragHandle = Handle::None;
@@ -595,7 +592,7 @@ void ToolController::move(QMouseEvent* event) {
     mLast = event->position().toPoint();
     switch (mTool) {
     case Tool::Select:
-        mBand->setGeometry(QRect(mPress, mLast).normalized());
+        mViewport.setBand(QRect(mPress, mLast).normalized());
         break;
     case Tool::Move:
         dragTo(mLast, event->modifiers());

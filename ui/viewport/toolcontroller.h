@@ -12,8 +12,6 @@
 #include "document/document.h"
 #include "ui/viewport/viewport.h"
 
-class QRubberBand;
-
 namespace sylva::ui {
 
 struct GenerationResult;
@@ -136,7 +134,6 @@ private:
 
     // gesture state
     QPoint mPress, mLast;
-    QRubberBand* mBand = nullptr;
     std::vector<Dragged> mDragged;
     glm::vec3 mDragStart{0.0f};
     float mDragHeight = 0.0f;

@@ -169,11 +169,11 @@ void ViewLod::startNext() {
             }
             // The motion level: the camera LOD for kMotionFactor times the distance of the
             // finest mesh drawn at rest (the project camera's, or level 1's), kept only where it
-            // saves at least a quarter of the triangles.
+            // saves at least a tenth of the triangles.
             try {
                 const double finest = std::max(job.source.builtDistance, kLevelHeights[1] * height);
                 auto m = buildLevel(job.source, kMotionFactor * finest, kLevelResolution[2]);
-                if (m->triangleCount() * 4 < job.full->triangleCount() * 3)
+                if (m->triangleCount() * 10 < job.full->triangleCount() * 9)
                     built.motion = std::move(m);
             } catch (...) {
                 // Without one the tree moves at its resting level.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QApplication>
+#include <QCoreApplication>
 #include <QImage>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -10,11 +12,14 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QOpenGLShaderProgram>
+#include <QOpenGLWindow>
 #include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "engine/export/treeexport.h"
@@ -59,39 +64,45 @@ void main() {
 // pixel cost 5 % of a frame, and the difference to 2.2 does not show). Leaf cards are
 // cut out by their texture's alpha, sharpened with the mipmap level so that far leaves keep
 // their area instead of fading away.
-const char* const kMeshFragmentShader = R"(#version 330 core
+// The shader is compiled in four variants (MeshVariant: TEXTURED, CUTOUT, both, neither)
+// rather than branching on uniforms: a software renderer (Mesa llvmpipe) runs both sides of a
+// branch with masks, and a shader that can discard loses the early depth test for every
+// triangle drawn with it, so bark paid for the leaves' texture lookup and cut-out.
+const char* const kMeshFragmentShader = R"(
 in vec3 vNormal;
 in vec3 vColor;
 in vec2 vUv;
 in float vOcclusion;
 uniform vec3 uAlbedo;
 uniform bool uVertexColor; // colour by a node attribute instead of the material
-uniform bool uTextured;
-uniform bool uAlphaTest;   // a leaf card: cut out, translucent
 uniform sampler2D uTexture;
 uniform vec3 uLightDir;
 uniform float uHighlight; // a selected tree: blended towards orange
 out vec4 fragColor;
 void main() {
-    vec4 tex = vec4(1.0);
-    if (uTextured) {
-        tex = texture(uTexture, vUv);
-        if (uAlphaTest) {
-            vec2 texel = vUv * vec2(textureSize(uTexture, 0));
-            float lod = 0.5 * log2(max(dot(dFdx(texel), dFdx(texel)), dot(dFdy(texel), dFdy(texel))));
-            if (tex.a * (1.0 + 0.25 * max(lod, 0.0)) < 0.5) discard;
-        }
-    }
+#ifdef TEXTURED
+    vec4 tex = texture(uTexture, vUv);
+#ifdef CUTOUT
+    vec2 texel = vUv * vec2(textureSize(uTexture, 0));
+    float lod = 0.5 * log2(max(dot(dFdx(texel), dFdx(texel)), dot(dFdy(texel), dFdy(texel))));
+    if (tex.a * (1.0 + 0.25 * max(lod, 0.0)) < 0.5) discard;
+#endif
+    vec3 material = tex.rgb * tex.rgb;
+#else
+    vec3 material = uAlbedo;
+#endif
     vec3 n = vNormal;
     float len = length(n);
     n = len > 1e-6 ? n / len : vec3(0.0, 1.0, 0.0);
     float facing = dot(n, uLightDir);
     float diffuse = max(facing, 0.0);
-    if (uAlphaTest) diffuse += 0.35 * max(-facing, 0.0);
+#ifdef CUTOUT
+    diffuse += 0.35 * max(-facing, 0.0); // a leaf card: translucent
+#endif
     vec3 sky = vec3(0.62, 0.70, 0.85);
     vec3 ground = vec3(0.30, 0.25, 0.20);
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    vec3 albedo = uVertexColor ? vColor : (uTextured ? tex.rgb * tex.rgb : uAlbedo);
+    vec3 albedo = uVertexColor ? vColor : material;
     float ao = clamp(vOcclusion, 0.0, 1.0);
     vec3 color = albedo * (0.55 * ambient * ao +
                            1.35 * vec3(1.0, 0.96, 0.90) * diffuse * (0.4 + 0.6 * ao));
@@ -251,6 +262,12 @@ void Viewport::installDefaultSurfaceFormat() {
                           ? std::max(0, qEnvironmentVariableIntValue("SYLVA_MSAA"))
                           : 4);
     QSurfaceFormat::setDefaultFormat(format);
+    // Without a window manager that paces frames (_NET_WM_FRAME_DRAWN), Qt waits 5 ms after
+    // each QWindow::requestUpdate() before it paints: at 30 fps that is a sixth of a frame.
+    // The view draws as soon as the event loop is idle instead (updates asked for meanwhile
+    // still make one frame). Set QT_QPA_UPDATE_IDLE_TIME to choose otherwise.
+    if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME"))
+        qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
 }
 
 int Viewport::samplesPreference() {
@@ -286,15 +303,79 @@ int Viewport::applySamplesPreference() {
     return samples;
 }
 
-Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+/// The native OpenGL window a Viewport draws into: paints with the viewport's GL code and
+/// hands its input to the viewport widget (which the rest of the editor talks to).
+class ViewportSurface : public QOpenGLWindow {
+public:
+    explicit ViewportSurface(Viewport& view) : QOpenGLWindow(NoPartialUpdate), mView(view) {
+        // Keyboard focus stays with the widget: shortcuts and the widget's key handling work
+        // as for any widget, and a click does not take focus from the main window.
+        setFlag(Qt::WindowDoesNotAcceptFocus);
+    }
+
+protected:
+    void initializeGL() override { mView.initializeGL(); }
+    void resizeGL(int w, int h) override { mView.resizeGL(w, h); }
+    void paintGL() override { mView.paintGL(); }
+
+    bool event(QEvent* event) override {
+        switch (event->type()) {
+        case QEvent::MouseMove: // QApplication drops hover moves the widget does not track,
+                                // after starting its tooltip's timer
+        case QEvent::MouseButtonPress:
+        case QEvent::MouseButtonRelease:
+        case QEvent::MouseButtonDblClick:
+        case QEvent::Wheel:
+        case QEvent::KeyPress:
+        case QEvent::KeyRelease:
+        case QEvent::Enter:
+        case QEvent::Leave:
+            // The window fills the widget from its top left corner: the positions hold.
+            if (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::KeyPress)
+                activateMainWindow();
+            QCoreApplication::sendEvent(&mView, event);
+            return true;
+        case QEvent::FocusIn:
+            // Should the window get the keyboard anyway, give it back to the main window and
+            // the view's widget: with a window that is not a widget's as the focus window,
+            // Qt matches no widget's shortcut (Delete, Ctrl+Z did nothing).
+            activateMainWindow();
+            mView.setFocus(Qt::MouseFocusReason);
+            return true;
+        default:
+            return QOpenGLWindow::event(event);
+        }
+    }
+
+private:
+    /// A click in the view makes its main window the active one (the one keys go to), as a
+    /// click in a widget does: without that, an X server without a window manager (Xvfb)
+    /// sends keys to the window under the pointer, this one, and Qt matches no shortcut.
+    void activateMainWindow() {
+        QWidget* top = mView.window();
+        if (top && QApplication::activeWindow() != top) top->activateWindow();
+    }
+
+    Viewport& mView;
+};
+
+Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
     if (format.samples() < 0) format.setSamples(QSurfaceFormat::defaultFormat().samples());
-    setFormat(format);
     // format() reports the context's format once it exists, whose samples are not the FBO's.
     mSamples = format.samples();
+    mSurface = new ViewportSurface(*this);
+    mSurface->setFormat(format);
+    QWidget* container = QWidget::createWindowContainer(mSurface, this);
+    container->setFocusPolicy(Qt::NoFocus);
+    mSurface->setFlag(Qt::WindowDoesNotAcceptFocus); // again: embedding resets the flags
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(container);
+    connect(mSurface, &QOpenGLWindow::frameSwapped, this, &Viewport::frameSwapped);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(160, 120);
@@ -318,6 +399,65 @@ Viewport::~Viewport() {
         releaseGl();
         doneCurrent();
     }
+}
+
+void Viewport::update() {
+    mSurface->update();
+}
+
+void Viewport::makeCurrent() {
+    mSurface->makeCurrent();
+}
+
+void Viewport::doneCurrent() {
+    mSurface->doneCurrent();
+}
+
+QOpenGLContext* Viewport::context() const {
+    return mSurface->context();
+}
+
+GLuint Viewport::defaultFramebufferObject() const {
+    return mSurface->defaultFramebufferObject();
+}
+
+QSurfaceFormat Viewport::format() const {
+    return mSurface->format();
+}
+
+void Viewport::setFormat(const QSurfaceFormat& format) {
+    mSurface->setFormat(format);
+    mSamples = format.samples();
+}
+
+QWindow* Viewport::surface() const {
+    return mSurface;
+}
+
+QImage Viewport::grabFramebuffer() {
+    // A window's back buffer holds nothing defined after a swap: draw a frame into it and
+    // read it back without swapping (what is on screen is left as it is).
+    if (!isVisible() || !mSurface->isExposed()) return {};
+    mSurface->makeCurrent();
+    if (!context()) return {};
+    paintGL();
+    const int w = int(std::lround(width() * devicePixelRatioF()));
+    const int h = int(std::lround(height() * devicePixelRatioF()));
+    QImage image(w, h, QImage::Format_RGBA8888);
+    QOpenGLFunctions* f = context()->functions();
+    f->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+    f->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    f->glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
+    mSurface->doneCurrent();
+    image = image.mirrored().convertToFormat(QImage::Format_RGB32);
+    image.setDevicePixelRatio(devicePixelRatioF());
+    return image;
+}
+
+bool Viewport::event(QEvent* event) {
+    // The cursor a tool sets on the widget is the window's too.
+    if (event->type() == QEvent::CursorChange) mSurface->setCursor(cursor());
+    return QWidget::event(event);
 }
 
 void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame) {
@@ -391,14 +531,23 @@ void Viewport::initializeGL() {
         bool software = false;
         for (const char* name : {"llvmpipe", "softpipe", "swrast", "swiftshader"})
             software = software || renderer.contains(QLatin1String(name));
+        mSoftware = software;
         mMotionScale = software && mSamples <= 1 ? 0.5f : 1.0f;
         if (qEnvironmentVariableIsSet("SYLVA_MOTION_SCALE"))
             mMotionScale =
                 std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
         if (mSamples > 1) mMotionScale = 1.0f; // no blit into a multisampled framebuffer
     }
-    mMeshProgram = buildProgram(kMeshVertexShader, kMeshFragmentShader, mGlError);
-    if (mMeshProgram) mLineProgram = buildProgram(kLineVertexShader, kLineFragmentShader, mGlError);
+    bool meshOk = true;
+    for (int v = 0; v < kMeshVariants && meshOk; ++v) {
+        QByteArray fragment("#version 330 core\n");
+        if (v & kMeshTextured) fragment += "#define TEXTURED 1\n";
+        if (v & kMeshCutout) fragment += "#define CUTOUT 1\n";
+        fragment += kMeshFragmentShader;
+        mMeshPrograms[v] = buildProgram(kMeshVertexShader, fragment.constData(), mGlError);
+        meshOk = mMeshPrograms[v] != nullptr;
+    }
+    if (meshOk) mLineProgram = buildProgram(kLineVertexShader, kLineFragmentShader, mGlError);
     if (mLineProgram)
         mBackgroundProgram =
             buildProgram(kBackgroundVertexShader, kBackgroundFragmentShader, mGlError);
@@ -455,7 +604,8 @@ void Viewport::releaseGl() {
     for (const auto& [path, id] : mTextures)
         if (id) glDeleteTextures(1, &id);
     mTextures.clear();
-    mMeshProgram.reset();
+    for (auto& program : mMeshPrograms)
+        program.reset();
     mLineProgram.reset();
     mBackgroundProgram.reset();
     mGlReady = false;
@@ -797,6 +947,8 @@ void Viewport::paintGL() {
     mTransformsMoved = false;
     const QSize full(int(std::lround(width() * devicePixelRatioF())),
                      int(std::lround(height() * devicePixelRatioF())));
+    glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+    glViewport(0, 0, full.width(), full.height());
     mLastReduced = false;
     if (mMotionScale < 1.0f && moving && !mSharpNext) {
         mLastReduced = bindReducedTarget(full);
@@ -836,22 +988,22 @@ void Viewport::paintGL() {
     mDrawnMotion = 0;
     mDrawnPerLevel.fill(0);
     if (!mRanges.empty() || !mGpuTrees.empty()) {
-        mMeshProgram->bind();
-        setUniform(*mMeshProgram, "uModel", glm::mat4(1.0f));
-        mMeshProgram->setUniformValue("uHighlight", 0.0f);
-        setUniform(*mMeshProgram, "uViewProj", viewProj);
-        setUniform(*mMeshProgram, "uEye", mCamera.eye());
-        setUniform(*mMeshProgram, "uLightDir", light);
-        mMeshProgram->setUniformValue("uVertexColor", mUseVertexColors);
-        mMeshProgram->setUniformValue("uTexture", 0);
+        MeshUniforms u;
+        u.viewProj = viewProj;
+        u.eye = mCamera.eye();
+        u.light = light;
+        u.vertexColor = mUseVertexColors;
+        setMeshUniforms(u);
         glActiveTexture(GL_TEXTURE0);
         glBindVertexArray(mMeshVao);
         drawRanges(mRanges);
         for (const DrawRange& r : mRanges)
             mDrawnTriangles += r.indexCount / 3;
-        mMeshProgram->setUniformValue("uVertexColor", false);
+        u.vertexColor = false;
+        setMeshUniforms(u);
         // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
         std::vector<const TreeDraw*> cards;
+        std::size_t flushedAt = mDrawnTriangles;
         for (const TreeDraw& d : order) {
             const ViewTree& t = mTrees[d.index];
             const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
@@ -869,6 +1021,13 @@ void Viewport::paintGL() {
             ++mDrawnPerLevel[std::size_t(used)];
             mDrawnMotion += motion ? 1 : 0;
             drawTreeMesh(*drawn, t.transform, highlight);
+            // Mesa llvmpipe transforms and bins on this thread and rasterises on its own
+            // threads only when the frame is flushed: a flush every kFlushTriangles hands them
+            // the nearer trees while this thread goes on with the farther ones.
+            if (mSoftware && mDrawnTriangles - flushedAt >= kFlushTriangles) {
+                glFlush();
+                flushedAt = mDrawnTriangles;
+            }
         }
         for (const ViewTree& t : mPreview)
             if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f);
@@ -885,6 +1044,7 @@ void Viewport::paintGL() {
         }
     }
     drawOverlay(viewProj);
+    drawBand();
     glBindVertexArray(0);
     if (mLastReduced) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, mLowFbo);
@@ -937,6 +1097,34 @@ QImage Viewport::grabSharp() {
     return grabFramebuffer();
 }
 
+void Viewport::setBand(const QRect& band) {
+    if (band == mBand) return;
+    mBand = band;
+    update();
+}
+
+void Viewport::drawBand() {
+    if (mBand.isEmpty()) return;
+    // In widget pixels, y down; a translucent fill inside a sharp outline.
+    const glm::mat4 pixels =
+        glm::ortho(0.0f, float(std::max(1, width())), float(std::max(1, height())), 0.0f);
+    const float x0 = float(mBand.left()), y0 = float(mBand.top());
+    const float x1 = float(mBand.right() + 1), y1 = float(mBand.bottom() + 1);
+    const glm::vec4 fill(0.25f, 0.55f, 0.95f, 0.18f), edge(0.25f, 0.55f, 0.95f, 0.95f);
+    std::vector<float> data;
+    auto vertex = [&data](float x, float y, const glm::vec4& c) {
+        data.insert(data.end(), {x, y, 0.0f, c.x, c.y, c.z, c.w});
+    };
+    for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x1, y1}, {x0, y0}, {x1, y1}, {x0, y1}})
+        vertex(x, y, fill);
+    const std::pair<float, float> corners[] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    for (int k = 0; k < 4; ++k) {
+        vertex(corners[k].first, corners[k].second, edge);
+        vertex(corners[(k + 1) % 4].first, corners[(k + 1) % 4].second, edge);
+    }
+    drawOnTop(data, pixels, 6);
+}
+
 void Viewport::drawOverlay(const glm::mat4& viewProj) {
     if (!mOverlay) return;
     const std::vector<OverlayLine> lines = mOverlay();
@@ -946,7 +1134,12 @@ void Viewport::drawOverlay(const glm::mat4& viewProj) {
     for (const OverlayLine& l : lines)
         for (const glm::vec3& p : {l.a, l.b})
             data.insert(data.end(), {p.x, p.y, p.z, l.color.x, l.color.y, l.color.z, l.color.w});
-    // Handles stay visible through the trees and the ground they stand in.
+    drawOnTop(data, viewProj, 0);
+}
+
+void Viewport::drawOnTop(const std::vector<float>& data, const glm::mat4& viewProj,
+                         int triangleVertices) {
+    // Handles and the band stay visible through the trees and the ground they stand in.
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -958,7 +1151,9 @@ void Viewport::drawOverlay(const glm::mat4& viewProj) {
     glBindBuffer(GL_ARRAY_BUFFER, mOverlayVbo);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
                  GL_STREAM_DRAW);
-    glDrawArrays(GL_LINES, 0, GLsizei(data.size() / 7));
+    const auto vertices = GLsizei(data.size() / 7);
+    if (triangleVertices > 0) glDrawArrays(GL_TRIANGLES, 0, triangleVertices);
+    glDrawArrays(GL_LINES, triangleVertices, vertices - triangleVertices);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
@@ -967,8 +1162,10 @@ void Viewport::drawOverlay(const glm::mat4& viewProj) {
 void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight) {
     auto gpu = mGpuTrees.find(&m);
     if (gpu == mGpuTrees.end()) return;
-    setUniform(*mMeshProgram, "uModel", transform);
-    mMeshProgram->setUniformValue("uHighlight", highlight);
+    MeshUniforms u = mMeshUniforms;
+    u.model = transform;
+    u.highlight = highlight;
+    setMeshUniforms(u);
     glBindVertexArray(gpu->second.vao);
     drawRanges(gpu->second.ranges);
     for (const DrawRange& r : gpu->second.ranges)
@@ -1029,12 +1226,11 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
     mImpostorsWanted = 0;
     const Impostors::DrawMesh draw = [this](const mesh::Mesh& m, const glm::mat4& viewProj,
                                             const glm::vec3& eye, const glm::vec3& light) {
-        mMeshProgram->bind();
-        setUniform(*mMeshProgram, "uViewProj", viewProj);
-        setUniform(*mMeshProgram, "uEye", eye);
-        setUniform(*mMeshProgram, "uLightDir", light);
-        mMeshProgram->setUniformValue("uVertexColor", false);
-        mMeshProgram->setUniformValue("uTexture", 0);
+        MeshUniforms u;
+        u.viewProj = viewProj;
+        u.eye = eye;
+        u.light = light;
+        setMeshUniforms(u);
         glActiveTexture(GL_TEXTURE0);
         const std::size_t triangles = mDrawnTriangles;
         drawTreeMesh(m, glm::mat4(1.0f), 0.0f);
@@ -1056,11 +1252,35 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
     if (mImpostorsWanted > 0) update(); // the next frame takes the next ones
 }
 
+void Viewport::setMeshUniforms(const MeshUniforms& uniforms) {
+    mMeshUniforms = uniforms;
+    ++mMeshUniformsStamp;
+}
+
+QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
+    QOpenGLShaderProgram& program = *mMeshPrograms[std::size_t(variant)];
+    program.bind();
+    std::uint64_t& stamp = mMeshProgramStamps[std::size_t(variant)];
+    if (stamp != mMeshUniformsStamp) {
+        // Only what changed since this variant was last used is stale; setting all is cheap.
+        const MeshUniforms& u = mMeshUniforms;
+        setUniform(program, "uViewProj", u.viewProj);
+        setUniform(program, "uModel", u.model);
+        setUniform(program, "uEye", u.eye);
+        setUniform(program, "uLightDir", u.light);
+        program.setUniformValue("uVertexColor", u.vertexColor);
+        program.setUniformValue("uHighlight", u.highlight);
+        program.setUniformValue("uTexture", 0);
+        stamp = mMeshUniformsStamp;
+    }
+    return program;
+}
+
 void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
     for (const DrawRange& r : ranges) {
-        setUniform(*mMeshProgram, "uAlbedo", r.color);
-        mMeshProgram->setUniformValue("uTextured", r.texture != 0);
-        mMeshProgram->setUniformValue("uAlphaTest", r.alphaTest);
+        QOpenGLShaderProgram& program =
+            useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0));
+        setUniform(program, "uAlbedo", r.color);
         glBindTexture(GL_TEXTURE_2D, r.texture);
         glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
@@ -1163,7 +1383,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         event->accept();
         return;
     }
-    QOpenGLWidget::keyPressEvent(event);
+    QWidget::keyPressEvent(event);
 }
 
 } // namespace sylva::ui

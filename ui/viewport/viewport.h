@@ -10,10 +10,12 @@
 
 #include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
-#include <QOpenGLWidget>
 #include <QPoint>
+#include <QRect>
 #include <QSet>
 #include <QString>
+#include <QSurfaceFormat>
+#include <QWidget>
 
 #include <glm/glm.hpp>
 
@@ -22,6 +24,7 @@
 #include "ui/viewport/picking.h"
 #include "ui/viewport/viewlod.h"
 
+class QOpenGLContext;
 class QOpenGLShaderProgram;
 class QTimer;
 
@@ -61,10 +64,20 @@ public:
     virtual bool key(QKeyEvent* event) = 0;
 };
 
+class ViewportSurface;
+
 /// The 3D view: draws a mesh (bark and leaf submeshes) over a gradient background and a ground
 /// grid with OpenGL 3.3 core, and lets the user orbit (left drag), pan (right or middle drag,
 /// or Shift + left drag), zoom (wheel) and frame the tree (F).
-class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+///
+/// A widget that holds a native OpenGL window (QOpenGLWindow in a window container) rather
+/// than a QOpenGLWidget: a QOpenGLWidget makes Qt compose the whole main window with OpenGL
+/// on every repaint of any widget in it, which under a software renderer costs more than
+/// drawing an empty view (docs/performance.md). The window passes its mouse, wheel and key
+/// events to this widget, so tools, tests and event filters see the widget as before, and
+/// keyboard focus and shortcuts stay with the widgets. The OpenGL calls below (update(),
+/// makeCurrent(), grabFramebuffer() …) keep QOpenGLWidget's names.
+class Viewport : public QWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
 public:
@@ -80,8 +93,9 @@ public:
     /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
     static glm::vec3 materialColor(const std::string& material);
 
-    /// Requests an OpenGL 3.3 core profile with depth and 4x multisampling for every context.
-    /// Call before constructing QApplication.
+    /// Requests an OpenGL 3.3 core profile with depth and 4x multisampling for every context,
+    /// and frames drawn as soon as the event loop is idle (QT_QPA_UPDATE_IDLE_TIME=0 unless
+    /// set). Call before constructing QApplication.
     static void installDefaultSurfaceFormat();
     /// Edit ▸ Preferences' multisampling (QSettings "viewport/samples"): kAutoSamples, 0, 2, 4
     /// or 8 samples a pixel. Automatic is 4 on a GPU and none on a software renderer (Mesa
@@ -141,6 +155,9 @@ public:
         mOverlay = std::move(provider);
         update();
     }
+    /// A rubber band (widget pixels) drawn over the scene; an empty rectangle removes it.
+    void setBand(const QRect& band);
+    QRect band() const { return mBand; }
     const QSet<std::uint32_t>& highlightedTrees() const { return mHighlighted; }
     /// Meshes uploaded to the GPU since construction (for tests: unchanged trees are not).
     std::size_t uploads() const { return mUploads; }
@@ -194,13 +211,35 @@ public:
 
     QSize sizeHint() const override { return {960, 720}; }
 
+    /// Schedules a frame of the OpenGL window (hides QWidget::update, which would repaint
+    /// only the container).
+    void update();
+    /// Makes the view's context current on its window (for GL work outside paintGL()).
+    void makeCurrent();
+    void doneCurrent();
+    /// The view's context, null until the window was first shown.
+    QOpenGLContext* context() const;
+    /// The framebuffer paintGL() draws into.
+    GLuint defaultFramebufferObject() const;
+    /// Draws a frame and reads it back (without showing it), as QOpenGLWidget's does.
+    QImage grabFramebuffer();
+    /// The surface format asked for (set before the view is first shown).
+    QSurfaceFormat format() const;
+    void setFormat(const QSurfaceFormat& format);
+    /// The native window the view draws into (for screenshots of the whole main window).
+    QWindow* surface() const;
+
 Q_SIGNALS:
     void cameraChanged();
+    /// A frame is on screen.
+    void frameSwapped();
 
 protected:
-    void initializeGL() override;
-    void resizeGL(int width, int height) override;
-    void paintGL() override;
+    friend class ViewportSurface;
+    void initializeGL();
+    void resizeGL(int width, int height);
+    void paintGL();
+    bool event(QEvent* event) override;
 
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
@@ -241,10 +280,32 @@ private:
     DragMode mDrag = DragMode::None;
     QPoint mLastMouse;
 
+    ViewportSurface* mSurface = nullptr;
+    bool mSoftware = false; ///< a software renderer (Mesa llvmpipe …)
+    /// Triangles between the flushes of a frame under a software renderer (see paintGL()).
+    static constexpr std::size_t kFlushTriangles = 40000;
+    QRect mBand;
     bool mGlReady = false;
     QString mGlInfo;
     QString mGlError;
-    std::unique_ptr<QOpenGLShaderProgram> mMeshProgram;
+    /// The mesh shader's variants (a bit set): compiled apart so that bark does not pay for
+    /// the leaves' texture and cut-out, and keeps the early depth test.
+    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshVariants = 4;
+    /// What every mesh variant shares in a draw; a variant is brought up to date when used.
+    struct MeshUniforms {
+        glm::mat4 viewProj{1.0f};
+        glm::mat4 model{1.0f};
+        glm::vec3 eye{0.0f};
+        glm::vec3 light{0.0f, 1.0f, 0.0f};
+        bool vertexColor = false;
+        float highlight = 0.0f;
+    };
+    void setMeshUniforms(const MeshUniforms& uniforms);
+    QOpenGLShaderProgram& useMeshProgram(int variant);
+    std::array<std::unique_ptr<QOpenGLShaderProgram>, kMeshVariants> mMeshPrograms;
+    std::array<std::uint64_t, kMeshVariants> mMeshProgramStamps{};
+    MeshUniforms mMeshUniforms;
+    std::uint64_t mMeshUniformsStamp = 1;
     std::unique_ptr<QOpenGLShaderProgram> mLineProgram;
     std::unique_ptr<QOpenGLShaderProgram> mBackgroundProgram;
     GLuint mMeshVao = 0;
@@ -284,6 +345,10 @@ private:
     std::function<std::vector<OverlayLine>()> mOverlay;
     GLuint mOverlayVao = 0, mOverlayVbo = 0;
     void drawOverlay(const glm::mat4& viewProj);
+    void drawBand();
+    /// Draws position + colour vertices (7 floats each) over the scene, blended, without the
+    /// depth test: the first \p triangleVertices as triangles, the rest as lines.
+    void drawOnTop(const std::vector<float>& data, const glm::mat4& viewProj, int triangleVertices);
     bool mToolDrag = false;
     QPoint mPressPos;
     bool mMovedSincePress = false;
