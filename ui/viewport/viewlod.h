@@ -86,7 +86,7 @@ public:
     /// How much farther than its own finest level a tree's motion level is made: while the view
     /// moves, a software renderer draws every tree as if it were this many times as far (the
     /// sharp frame at rest draws the levels above).
-    static constexpr double kMotionFactor = 2.0;
+    static constexpr double kMotionFactor = 3.0;
     /// Every distinct mesh of every level (for the GPU buffers).
     std::vector<std::shared_ptr<const mesh::Mesh>> allLevelMeshes() const;
 

@@ -983,6 +983,7 @@ void Viewport::paintGL() {
     }
 
     glDepthMask(GL_TRUE);
+    mUnflushed = 0;
     mDrawnTriangles = 0;
     mDrawnTrees = 0;
     mDrawnMotion = 0;
@@ -1003,7 +1004,6 @@ void Viewport::paintGL() {
         setMeshUniforms(u);
         // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
         std::vector<const TreeDraw*> cards;
-        std::size_t flushedAt = mDrawnTriangles;
         for (const TreeDraw& d : order) {
             const ViewTree& t = mTrees[d.index];
             const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
@@ -1021,13 +1021,6 @@ void Viewport::paintGL() {
             ++mDrawnPerLevel[std::size_t(used)];
             mDrawnMotion += motion ? 1 : 0;
             drawTreeMesh(*drawn, t.transform, highlight);
-            // Mesa llvmpipe transforms and bins on this thread and rasterises on its own
-            // threads only when the frame is flushed: a flush every kFlushTriangles hands them
-            // the nearer trees while this thread goes on with the farther ones.
-            if (mSoftware && mDrawnTriangles - flushedAt >= kFlushTriangles) {
-                glFlush();
-                flushedAt = mDrawnTriangles;
-            }
         }
         for (const ViewTree& t : mPreview)
             if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f);
@@ -1282,8 +1275,28 @@ void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
             useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0));
         setUniform(program, "uAlbedo", r.color);
         glBindTexture(GL_TEXTURE_2D, r.texture);
-        glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                       reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+        if (!mSoftware) {
+            glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                           reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
+            continue;
+        }
+        // Mesa llvmpipe transforms and bins on this thread and rasterises on its own threads
+        // only when the frame is flushed, so a frame used one core at a time: a flush every
+        // kFlushTriangles hands them what is drawn so far (the nearer trees, or the first
+        // part of one large mesh) while this thread goes on with the rest.
+        std::size_t first = r.firstIndex, left = r.indexCount / 3;
+        while (left > 0) {
+            const std::size_t n = std::min(left, kFlushTriangles - mUnflushed);
+            glDrawElements(GL_TRIANGLES, GLsizei(3 * n), GL_UNSIGNED_INT,
+                           reinterpret_cast<void*>(std::uintptr_t(first) * 4u));
+            first += 3 * n;
+            left -= n;
+            mUnflushed += n;
+            if (mUnflushed >= kFlushTriangles) {
+                glFlush();
+                mUnflushed = 0;
+            }
+        }
     }
     glBindTexture(GL_TEXTURE_2D, 0);
 }

@@ -282,8 +282,9 @@ private:
 
     ViewportSurface* mSurface = nullptr;
     bool mSoftware = false; ///< a software renderer (Mesa llvmpipe …)
-    /// Triangles between the flushes of a frame under a software renderer (see paintGL()).
+    /// Triangles between the flushes of a frame under a software renderer (drawRanges()).
     static constexpr std::size_t kFlushTriangles = 40000;
+    std::size_t mUnflushed = 0; ///< triangles drawn since the last flush
     QRect mBand;
     bool mGlReady = false;
     QString mGlInfo;
