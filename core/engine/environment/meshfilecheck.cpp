@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/graph/value.h"
 #include "engine/util/error.h"
 
 namespace sylva::env {
@@ -204,6 +205,80 @@ void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::siz
     }
 }
 
+/// Binary glTF (GLB): Debian's Assimp 5.2.5 allocates the JSON chunk's declared length (plus
+/// one byte) before comparing it with the file: a 2 KB file declaring a 4 GB chunk ran out of
+/// memory (fuzz finding 19). The header's lengths must fit in the file.
+void checkGlb(const std::filesystem::path& file, std::ifstream& in, std::uintmax_t size) {
+    const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: binary glTF ";
+    auto le32 = [](const unsigned char* b) {
+        return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
+               std::uint32_t(b[3]) << 24;
+    };
+    if (size < 20) throw InvalidInput(where + "is shorter than its 20-byte header");
+    unsigned char header[20];
+    in.read(reinterpret_cast<char*>(header), sizeof header);
+    if (!in) throw IoError("obstacle mesh '" + file.string() + "': cannot read the file");
+    const std::uint32_t version = le32(header + 4);
+    const std::uint32_t length = le32(header + 8);
+    const std::uint32_t json = le32(header + 12); // version 2: the JSON chunk; 1: the content
+    if (version != 1 && version != 2)
+        throw InvalidInput(where + "version " + std::to_string(version) + " is not 1 or 2");
+    if (length > size)
+        throw InvalidInput(where + "declares " + std::to_string(length) + " bytes, the file has " +
+                           std::to_string(size));
+    if (json > size - 20)
+        throw InvalidInput(where + "JSON chunk declares " + std::to_string(json) +
+                           " bytes, more than the " + std::to_string(size - 20) +
+                           " the file holds after its header");
+    if (version != 2) return;
+    // The binary chunk, if any, follows the JSON chunk at a multiple of 4 bytes.
+    const std::uint64_t next = 20 + ((std::uint64_t(json) + 3) & ~std::uint64_t(3));
+    if (next + 8 > size) return;
+    unsigned char chunk[8];
+    in.seekg(static_cast<std::streamoff>(next));
+    in.read(reinterpret_cast<char*>(chunk), sizeof chunk);
+    if (!in) throw IoError("obstacle mesh '" + file.string() + "': cannot read the file");
+    if (le32(chunk) > size - next - 8)
+        throw InvalidInput(where + "binary chunk declares " + std::to_string(le32(chunk)) +
+                           " bytes, more than the " + std::to_string(size - next - 8) +
+                           " the file holds after it");
+}
+
+/// glTF: Debian's Assimp 5.2.5 builds a line loop's closing segment and a triangle fan's
+/// triangles from the faces it made before, which are empty where an index was out of range:
+/// it read through a null pointer (fuzz finding 20: a binary glTF whose triangles were
+/// relabelled as a line loop). Obstacles need triangles; primitives drawn as line loops (mode
+/// 2) or triangle fans (6) are refused with the mesh that has them. The JSON must parse.
+void checkGltfJson(const std::filesystem::path& file, const std::string& json) {
+    const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: glTF ";
+    graph::Value doc;
+    try {
+        doc = graph::Value::parseJson(json, file.string());
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(where + "JSON is not valid: " + e.what());
+    }
+    const graph::Value* meshes = doc.isObject() ? doc.find("meshes") : nullptr;
+    if (!meshes || !meshes->isArray()) return;
+    for (std::size_t m = 0; m < meshes->toArray().size(); ++m) {
+        const graph::Value& mesh = meshes->toArray()[m];
+        const graph::Value* primitives = mesh.isObject() ? mesh.find("primitives") : nullptr;
+        if (!primitives || !primitives->isArray()) continue;
+        for (std::size_t p = 0; p < primitives->toArray().size(); ++p) {
+            const graph::Value& primitive = primitives->toArray()[p];
+            const graph::Value* mode = primitive.isObject() ? primitive.find("mode") : nullptr;
+            if (!mode || !mode->isNumber()) continue;
+            const double v = mode->toNumber();
+            if (v == 2 || v == 6)
+                throw InvalidInput(where + "meshes[" + std::to_string(m) + "].primitives[" +
+                                   std::to_string(p) + "] is drawn as " +
+                                   (v == 2 ? "a line loop" : "a triangle fan") + " (mode " +
+                                   (v == 2 ? "2" : "6") +
+                                   "), which the importer cannot read safely; export the "
+                                   "obstacle as triangles");
+        }
+    }
+}
+
 } // namespace
 
 void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
@@ -213,10 +288,27 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(file, ec);
     if (ec) throw IoError("obstacle mesh '" + file.string() + "': " + ec.message());
-    char magic[3] = {0, 0, 0};
-    in.read(magic, 3);
+    char magic[4] = {0, 0, 0, 0};
+    in.read(magic, 4);
     in.clear();
     in.seekg(0);
+    if (std::string_view(magic, 4) == "glTF") {
+        checkGlb(file, in, size); // by content: Assimp sniffs the magic whatever the extension
+        // The JSON chunk (version 2) or content (version 1), now known to fit in the file.
+        unsigned char length[4];
+        in.clear();
+        in.seekg(12);
+        in.read(reinterpret_cast<char*>(length), 4);
+        const std::size_t jsonBytes = std::size_t(length[0]) | std::size_t(length[1]) << 8 |
+                                      std::size_t(length[2]) << 16 | std::size_t(length[3]) << 24;
+        std::string json(jsonBytes, '\0');
+        in.seekg(20);
+        in.read(json.data(), static_cast<std::streamsize>(json.size()));
+        if (!in) throw IoError("obstacle mesh '" + file.string() + "': cannot read the file");
+        json.erase(json.find_last_not_of(std::string(" \0", 2)) + 1); // the chunk's padding
+        checkGltfJson(file, json);
+        return;
+    }
     std::string ext = file.extension().string();
     for (char& ch : ext)
         if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
@@ -232,6 +324,12 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
     in.seekg(0);
     if (ext == ".dae" || head.find("<COLLADA") != std::string::npos)
         checkCollada(file, in, maxItems);
+    else if (ext == ".gltf" ||
+             head.substr(std::min(head.size(), head.find_first_not_of(" \t\r\n\xEF\xBB\xBF")), 1) ==
+                 "{")
+        // A glTF by extension, or anything that looks like JSON (Assimp sniffs the content of
+        // a file whose extension it does not know).
+        checkGltfJson(file, std::string(std::istreambuf_iterator<char>(in), {}));
 }
 
 std::string objGeometryOnly(std::string text) {

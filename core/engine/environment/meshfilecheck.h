@@ -20,8 +20,14 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// `count` as a whole number from 1 to 9·maxItems (every data array must declare one) and hold
 /// only whole numbers in their index
 /// lists (`<p>`, `<v>`, `<vcount>`): Assimp reserves what counts declare, crashed on a count of
-/// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. Other formats
-/// pass unchecked (OBJ files go through objGeometryOnly() instead).
+/// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. Binary glTF
+/// files (a `glTF` magic, whatever the extension) must be version 1 or 2 and declare a total
+/// length and JSON and binary chunk lengths that fit in the file: Assimp allocates the JSON
+/// chunk's length before checking it (4 GB for a 2 KB file). glTF JSON (binary, `.gltf`, or
+/// any file that starts like JSON) must parse and draw no primitive as a line loop or a
+/// triangle fan (modes 2 and 6): Assimp builds those from earlier faces and read through a
+/// null pointer when one was empty. Other formats pass unchecked (OBJ files go through
+/// objGeometryOnly() instead).
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.
 /// \throw LimitExceeded when a PLY element count exceeds \p maxItems or a Collada count
 /// 9·\p maxItems.

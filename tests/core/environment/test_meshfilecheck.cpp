@@ -263,3 +263,110 @@ TEST(MeshFileCheck, ColladaCountsAreWholeNumbersFromOne) {
             << m;
     }
 }
+
+namespace {
+
+void putLe32(std::string& bytes, std::size_t at, std::uint32_t v) {
+    for (int k = 0; k < 4; ++k)
+        bytes[at + std::size_t(k)] = static_cast<char>((v >> (8 * k)) & 0xffu);
+}
+
+/// A binary glTF 2.0 file of one triangle: header, JSON chunk, binary chunk (three positions);
+/// \p mode is put into the primitive when given.
+std::string glbTriangle(const std::string& mode = {}) {
+    std::string json =
+        R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],)"
+        R"("meshes":[{"primitives":[{)" +
+        (mode.empty() ? std::string() : R"("mode":)" + mode + ",") +
+        R"("attributes":{"POSITION":0}}]}],"accessors":[{)"
+        R"("bufferView":0,"componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],)"
+        R"("min":[0,0,0]}],"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36}],)"
+        R"("buffers":[{"byteLength":36}]})";
+    json.resize((json.size() + 3) / 4 * 4, ' ');
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    std::string bin(reinterpret_cast<const char*>(positions), sizeof positions);
+    std::string out(12, '\0');
+    out.replace(0, 4, "glTF");
+    putLe32(out, 4, 2);
+    std::string chunk(8, '\0');
+    putLe32(chunk, 0, std::uint32_t(json.size()));
+    chunk.replace(4, 4, "JSON");
+    out += chunk + json;
+    putLe32(chunk, 0, std::uint32_t(bin.size()));
+    chunk.replace(4, 4, std::string("BIN\0", 4));
+    out += chunk + bin;
+    putLe32(out, 8, std::uint32_t(out.size()));
+    return out;
+}
+
+} // namespace
+
+// Fuzz finding 19 (tests/fuzz/regressions/obstacle/oom-glb-json-chunk-4gb*): Debian's Assimp
+// 5.2.5 allocates a binary glTF's declared JSON chunk length before comparing it with the file;
+// a 2 KB file declaring 4 GB ran out of memory. The lengths must fit in the file.
+TEST(MeshFileCheck, BinaryGltfLengthsMustFitTheFile) {
+    const std::string good = glbTriangle();
+    EXPECT_NO_THROW(checkMeshFile(writeFile("triangle.glb", good)));
+    EXPECT_EQ(loadObstacleMesh(writeFile("triangle.glb", good)).triangleCount(), 1u);
+
+    std::string json = good;
+    putLe32(json, 12, 0xfffc0078u); // the fuzzer's JSON chunk length
+    std::string m = messageOf<InvalidInput>(writeFile("hugejson.glb", json), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("cannot read it: binary glTF JSON chunk declares 4294705272 bytes, more than "
+                     "the " +
+                     std::to_string(good.size() - 20) + " the file holds after its header"),
+              std::string::npos)
+        << m;
+    // By its magic whatever the extension, as Assimp sniffs it.
+    EXPECT_THROW(checkMeshFile(writeFile("hugejson.obj", json)), InvalidInput);
+
+    std::string bin = good;
+    putLe32(bin, bin.size() - 36 - 8, 0x7fffffffu); // the binary chunk's length
+    m = messageOf<InvalidInput>(writeFile("hugebin.glb", bin), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("binary chunk declares 2147483647 bytes, more than the 36"), std::string::npos)
+        << m;
+
+    std::string total = good;
+    putLe32(total, 8, 0xffffffffu);
+    m = messageOf<InvalidInput>(writeFile("hugetotal.glb", total), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("binary glTF declares 4294967295 bytes, the file has " +
+                     std::to_string(good.size())),
+              std::string::npos)
+        << m;
+
+    std::string version = good;
+    putLe32(version, 4, 7);
+    m = messageOf<InvalidInput>(writeFile("v7.glb", version), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("binary glTF version 7 is not 1 or 2"), std::string::npos) << m;
+    EXPECT_THROW(checkMeshFile(writeFile("short.glb", good.substr(0, 16))), InvalidInput);
+}
+
+// Fuzz finding 20 (tests/fuzz/regressions/obstacle/crash-glb-line-loop): Debian's Assimp 5.2.5
+// read through a null pointer on a binary glTF whose triangles were relabelled as a line loop
+// (it closes the loop with the first face, empty when an index was out of range; triangle fans
+// reuse earlier faces the same way). Obstacles need triangles: those modes are refused.
+TEST(MeshFileCheck, GltfLineLoopsAndFansAreRefused) {
+    EXPECT_EQ(loadObstacleMesh(writeFile("mode4.glb", glbTriangle("4"))).triangleCount(), 1u);
+    for (const auto& [mode, what] :
+         {std::pair{"2", "a line loop (mode 2)"}, std::pair{"6", "a triangle fan (mode 6)"}}) {
+        const std::string m = messageOf<InvalidInput>(writeFile("mode.glb", glbTriangle(mode)),
+                                                      kMaxObstacleTriangles);
+        EXPECT_NE(m.find(std::string("cannot read it: glTF meshes[0].primitives[0] is drawn as ") +
+                         what + ", which the importer cannot read safely"),
+                  std::string::npos)
+            << m;
+    }
+    // A text glTF (by extension, or JSON content under another name) likewise.
+    const std::string text = R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[)"
+                             R"({"mode":4,"attributes":{}},{"mode":2,"attributes":{}}]}]})";
+    EXPECT_NE(messageOf<InvalidInput>(writeFile("loop.gltf", text), kMaxObstacleTriangles)
+                  .find("meshes[0].primitives[1] is drawn as a line loop"),
+              std::string::npos);
+    EXPECT_THROW(checkMeshFile(writeFile("loop.mesh", "\n  " + text)), InvalidInput);
+    // JSON that does not parse is refused with where it breaks.
+    std::string broken = glbTriangle();
+    broken[20] = '[';
+    const std::string m =
+        messageOf<InvalidInput>(writeFile("broken.glb", broken), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("cannot read it: glTF JSON is not valid"), std::string::npos) << m;
+}
