@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -244,12 +245,133 @@ void checkGlb(const std::filesystem::path& file, std::ifstream& in, std::uintmax
                            " the file holds after it");
 }
 
+/// glTF: Debian's Assimp 5.2.5 reads an accessor's elements without checking that they lie in
+/// its buffer view, nor the view in its buffer: an accessor whose byteOffset was mutated from 0
+/// to 1 read past a 720-byte buffer (fuzz finding 21). Every accessor (sparse ones are
+/// refused), buffer view and buffer must fit in what holds it, as the specification requires;
+/// a buffer must fit in its data (the binary chunk of a GLB, a data URI, a file beside it).
+void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
+                     std::uint64_t glbBinary) {
+    const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: glTF ";
+    if (!doc.isObject()) throw InvalidInput(where + "JSON is not an object");
+    auto list = [&doc](const char* name) -> const graph::Value::Array& {
+        static const graph::Value::Array none;
+        const graph::Value* v = doc.find(name);
+        return v && v->isArray() ? v->toArray() : none;
+    };
+    // A whole number in [0, limit]; \p fallback when absent.
+    auto whole = [&where](const graph::Value& object, const char* key, const std::string& what,
+                          std::uint64_t fallback, std::uint64_t limit) -> std::uint64_t {
+        const graph::Value* v = object.isObject() ? object.find(key) : nullptr;
+        if (!v) return fallback;
+        const double d = v->isNumber() ? v->toNumber() : -1.0;
+        if (!(d >= 0.0 && d <= double(limit) && d == std::floor(d)))
+            throw InvalidInput(where + what + "." + key + " must be a whole number from 0 to " +
+                               std::to_string(limit));
+        return std::uint64_t(d);
+    };
+    constexpr std::uint64_t kMax = 0xffffffffu;
+    const graph::Value::Array& buffers = list("buffers");
+    std::vector<std::uint64_t> bufferBytes;
+    for (std::size_t i = 0; i < buffers.size(); ++i) {
+        const std::string what = "buffers[" + std::to_string(i) + "]";
+        const std::uint64_t bytes = whole(buffers[i], "byteLength", what, kMax + 1, kMax);
+        if (bytes > kMax) throw InvalidInput(where + what + " has no byteLength");
+        std::uint64_t available = 0;
+        const graph::Value* uri = buffers[i].isObject() ? buffers[i].find("uri") : nullptr;
+        if (!uri) {
+            available = i == 0 ? glbBinary : 0; // a GLB's binary chunk
+        } else if (!uri->isString()) {
+            throw InvalidInput(where + what + ".uri is not a string");
+        } else if (uri->toString().rfind("data:", 0) == 0) {
+            const std::string& u = uri->toString();
+            const std::size_t comma = u.find(',');
+            std::size_t chars = comma == std::string::npos ? 0 : u.size() - comma - 1;
+            while (chars > 0 && u[comma + chars] == '=')
+                --chars;
+            available = chars * 3 / 4;
+        } else {
+            std::error_code ec;
+            available = std::filesystem::file_size(file.parent_path() / uri->toString(), ec);
+            if (ec) available = kMax + 1; // missing: Assimp refuses it (IoError)
+        }
+        if (bytes > available)
+            throw InvalidInput(where + what + " declares " + std::to_string(bytes) +
+                               " bytes, more than its data holds (" + std::to_string(available) +
+                               ")");
+        bufferBytes.push_back(bytes);
+    }
+    const graph::Value::Array& views = list("bufferViews");
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> viewBytes; // length, stride (0: none)
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        const std::string what = "bufferViews[" + std::to_string(i) + "]";
+        const std::uint64_t buffer = whole(views[i], "buffer", what, kMax + 1, kMax);
+        if (buffer >= bufferBytes.size())
+            throw InvalidInput(where + what + " names no buffer of the file");
+        const std::uint64_t offset = whole(views[i], "byteOffset", what, 0, kMax);
+        const std::uint64_t length = whole(views[i], "byteLength", what, kMax + 1, kMax);
+        if (length > kMax || offset + length > bufferBytes[buffer])
+            throw InvalidInput(where + what + " does not fit in buffers[" + std::to_string(buffer) +
+                               "]");
+        const std::uint64_t stride = whole(views[i], "byteStride", what, 0, 252);
+        if (stride != 0 && stride < 4) throw InvalidInput(where + what + ".byteStride is below 4");
+        viewBytes.emplace_back(length, stride);
+    }
+    const graph::Value::Array& accessors = list("accessors");
+    for (std::size_t i = 0; i < accessors.size(); ++i) {
+        const graph::Value& a = accessors[i];
+        const std::string what = "accessors[" + std::to_string(i) + "]";
+        if (a.isObject() && a.find("sparse"))
+            throw InvalidInput(where + what +
+                               " is sparse, which obstacles do not support; "
+                               "export the mesh without sparse accessors");
+        const std::uint64_t type = whole(a, "componentType", what, 0, kMax);
+        const std::uint64_t component = type == 5120 || type == 5121   ? 1
+                                        : type == 5122 || type == 5123 ? 2
+                                        : type == 5125 || type == 5126 ? 4
+                                                                       : 0;
+        if (component == 0)
+            throw InvalidInput(where + what + ".componentType " + std::to_string(type) +
+                               " is not one of glTF's");
+        const graph::Value* t = a.isObject() ? a.find("type") : nullptr;
+        const std::string name = t && t->isString() ? t->toString() : std::string();
+        const std::uint64_t components = name == "SCALAR" ? 1
+                                         : name == "VEC2" ? 2
+                                         : name == "VEC3" ? 3
+                                         : name == "VEC4" ? 4
+                                         : name == "MAT2" ? 4
+                                         : name == "MAT3" ? 9
+                                         : name == "MAT4" ? 16
+                                                          : 0;
+        if (components == 0)
+            throw InvalidInput(where + what + ".type '" + name + "' is not one of glTF's");
+        const std::uint64_t count = whole(a, "count", what, 0, kMax);
+        if (count == 0) throw InvalidInput(where + what + ".count must be at least 1");
+        if (!a.find("bufferView")) continue; // all zeros
+        const std::uint64_t view = whole(a, "bufferView", what, 0, kMax);
+        if (view >= viewBytes.size())
+            throw InvalidInput(where + what + " names no buffer view of the file");
+        const std::uint64_t element = component * components;
+        const std::uint64_t stride = viewBytes[view].second ? viewBytes[view].second : element;
+        const std::uint64_t offset = whole(a, "byteOffset", what, 0, kMax);
+        if (offset + (count - 1) * stride + element > viewBytes[view].first)
+            throw InvalidInput(
+                where + what + " (" + std::to_string(count) + " × " + std::to_string(element) +
+                " bytes from byte " + std::to_string(offset) + ") does not fit in bufferViews[" +
+                std::to_string(view) + "] (" + std::to_string(viewBytes[view].first) + " bytes)");
+    }
+}
+
 /// glTF: Debian's Assimp 5.2.5 builds a line loop's closing segment and a triangle fan's
 /// triangles from the faces it made before, which are empty where an index was out of range:
 /// it read through a null pointer (fuzz finding 20: a binary glTF whose triangles were
 /// relabelled as a line loop). Obstacles need triangles; primitives drawn as line loops (mode
 /// 2) or triangle fans (6) are refused with the mesh that has them. The JSON must parse.
-void checkGltfJson(const std::filesystem::path& file, const std::string& json) {
+void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
+                     std::uint64_t glbBinary);
+
+void checkGltfJson(const std::filesystem::path& file, const std::string& json,
+                   std::uint64_t glbBinary = 0) {
     const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: glTF ";
     graph::Value doc;
     try {
@@ -257,6 +379,7 @@ void checkGltfJson(const std::filesystem::path& file, const std::string& json) {
     } catch (const InvalidInput& e) {
         throw InvalidInput(where + "JSON is not valid: " + e.what());
     }
+    checkGltfBounds(file, doc, glbBinary);
     const graph::Value* meshes = doc.isObject() ? doc.find("meshes") : nullptr;
     if (!meshes || !meshes->isArray()) return;
     for (std::size_t m = 0; m < meshes->toArray().size(); ++m) {
@@ -306,7 +429,19 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
         in.read(json.data(), static_cast<std::streamsize>(json.size()));
         if (!in) throw IoError("obstacle mesh '" + file.string() + "': cannot read the file");
         json.erase(json.find_last_not_of(std::string(" \0", 2)) + 1); // the chunk's padding
-        checkGltfJson(file, json);
+        // The binary chunk (checkGlb() found it to fit), which a buffer without a uri reads.
+        std::uint64_t binary = 0;
+        const std::uint64_t next = 20 + ((std::uint64_t(jsonBytes) + 3) & ~std::uint64_t(3));
+        if (next + 8 <= size) {
+            unsigned char chunk[8];
+            in.clear();
+            in.seekg(static_cast<std::streamoff>(next));
+            in.read(reinterpret_cast<char*>(chunk), 8);
+            if (in)
+                binary = std::uint64_t(chunk[0]) | std::uint64_t(chunk[1]) << 8 |
+                         std::uint64_t(chunk[2]) << 16 | std::uint64_t(chunk[3]) << 24;
+        }
+        checkGltfJson(file, json, binary);
         return;
     }
     std::string ext = file.extension().string();

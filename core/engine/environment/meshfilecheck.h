@@ -24,9 +24,11 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// files (a `glTF` magic, whatever the extension) must be version 1 or 2 and declare a total
 /// length and JSON and binary chunk lengths that fit in the file: Assimp allocates the JSON
 /// chunk's length before checking it (4 GB for a 2 KB file). glTF JSON (binary, `.gltf`, or
-/// any file that starts like JSON) must parse and draw no primitive as a line loop or a
-/// triangle fan (modes 2 and 6): Assimp builds those from earlier faces and read through a
-/// null pointer when one was empty. Other formats pass unchecked (OBJ files go through
+/// any file that starts like JSON) must parse, draw no primitive as a line loop or a
+/// triangle fan (modes 2 and 6: Assimp builds those from earlier faces and read through a
+/// null pointer when one was empty), and keep every accessor inside its buffer view, every
+/// view inside its buffer and every buffer inside its data (Assimp read past a buffer);
+/// sparse accessors are refused. Other formats pass unchecked (OBJ files go through
 /// objGeometryOnly() instead).
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.
 /// \throw LimitExceeded when a PLY element count exceeds \p maxItems or a Collada count

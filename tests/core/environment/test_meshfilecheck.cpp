@@ -370,3 +370,35 @@ TEST(MeshFileCheck, GltfLineLoopsAndFansAreRefused) {
         messageOf<InvalidInput>(writeFile("broken.glb", broken), kMaxObstacleTriangles);
     EXPECT_NE(m.find("cannot read it: glTF JSON is not valid"), std::string::npos) << m;
 }
+
+// Fuzz finding 21 (tests/fuzz/regressions/obstacle/overflow-glb-accessor-offset): an accessor's
+// byteOffset mutated from 0 to 1 made Debian's Assimp 5.2.5 read one byte past a 720-byte
+// buffer (ASan: heap-buffer-overflow). Accessors, buffer views and buffers must fit.
+TEST(MeshFileCheck, GltfAccessorsViewsAndBuffersMustFit) {
+    auto edited = [](const std::string& from, const std::string& to) {
+        std::string glb = glbTriangle();
+        const std::size_t at = glb.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        glb.replace(at, from.size(), to); // same length: the chunk lengths stay right
+        return glb;
+    };
+    auto refusal = [](const std::string& glb) {
+        return messageOf<InvalidInput>(writeFile("bounds.glb", glb), kMaxObstacleTriangles);
+    };
+    std::string m = refusal(edited(R"("count":3,"type":"VEC3")", R"("count":4,"type":"VEC3")"));
+    EXPECT_NE(m.find("glTF accessors[0] (4 × 12 bytes from byte 0) does not fit in "
+                     "bufferViews[0] (36 bytes)"),
+              std::string::npos)
+        << m;
+    m = refusal(edited(R"("byteOffset":0,"byteLength":36)", R"("byteOffset":1,"byteLength":36)"));
+    EXPECT_NE(m.find("glTF bufferViews[0] does not fit in buffers[0]"), std::string::npos) << m;
+    m = refusal(edited(R"("buffers":[{"byteLength":36}])", R"("buffers":[{"byteLength":99}])"));
+    EXPECT_NE(m.find("glTF buffers[0] declares 99 bytes, more than its data holds (36)"),
+              std::string::npos)
+        << m;
+    m = refusal(edited(R"("componentType":5126)", R"("componentType":5127)"));
+    EXPECT_NE(m.find("accessors[0].componentType 5127 is not one of glTF's"), std::string::npos)
+        << m;
+    m = refusal(edited(R"("type":"VEC3")", R"("type":"VEC9")"));
+    EXPECT_NE(m.find("accessors[0].type 'VEC9' is not one of glTF's"), std::string::npos) << m;
+}
