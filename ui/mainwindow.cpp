@@ -145,8 +145,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     mReloadTimer = new QTimer(this);
     mReloadTimer->setSingleShot(true);
     mReloadTimer->setInterval(250);
-    connect(mFileWatcher, &QFileSystemWatcher::fileChanged, mReloadTimer,
-            qOverload<>(&QTimer::start));
+    connect(mFileWatcher, &QFileSystemWatcher::fileChanged, this, [this](const QString& path) {
+        // A file replaced by a rename (a save) loses its watch when the old file is finally
+        // deleted, which can come after the reload timer has already looked (the old file was
+        // still open somewhere): watch the new one at once, or later edits in place go unseen.
+        if (!mFileWatcher->files().contains(path) && QFileInfo::exists(path))
+            mFileWatcher->addPath(path);
+        mReloadTimer->start();
+    });
     connect(mFileWatcher, &QFileSystemWatcher::directoryChanged, mReloadTimer,
             qOverload<>(&QTimer::start));
     connect(mReloadTimer, &QTimer::timeout, this, &MainWindow::onSourcesTouched);
@@ -1222,13 +1228,14 @@ void MainWindow::onSourcesTouched() {
     for (const auto& [file, stamp] : mStamps) {
         const QFileInfo info(file);
         if ((info.exists() ? info.lastModified() : QDateTime()) != stamp) changed << file;
+        // A file that came back (saved by rename) is watched again, changed or not.
+        if (info.exists() && !mFileWatcher->files().contains(file)) mFileWatcher->addPath(file);
     }
     if (changed.isEmpty()) return;
     // Seen: the next change is compared with the files as they are now.
     for (auto& [file, stamp] : mStamps) {
         const QFileInfo info(file);
         stamp = info.exists() ? info.lastModified() : QDateTime();
-        if (info.exists() && !mFileWatcher->files().contains(file)) mFileWatcher->addPath(file);
     }
     if (mPreview) {
         reload();

@@ -287,6 +287,32 @@ private Q_SLOTS:
         settle();
     }
 
+    /// A save replaces the project file by a rename; when the old file is deleted only after
+    /// the reload timer looked (something still had it open), its watch went with it, and an
+    /// edit made in place afterwards went unseen until the next regrowth renewed the watches.
+    void editOnDiskAfterASaveIsSeen() {
+        QVERIFY(mWindow->openProject(mProject));
+        settle();
+        QFile held(mProject);
+        QVERIFY(held.open(QIODevice::ReadOnly)); // keeps the old file alive past the rename
+        QVERIFY(mWindow->save());
+        QTest::qWait(600); // the reload timer (250 ms) fires while the old file lives
+        held.close();      // now it is deleted, and its watch removed
+        QTest::qWait(300);
+        QVERIFY(!document().isModified()); // no edits pending: the change reloads at once
+        QByteArray onDisk = readFile(mProject);
+        const QByteArray seed = "\"seed\": " + QByteArray::number(document().project().seed);
+        QVERIFY2(onDisk.contains(seed), onDisk.constData());
+        onDisk.replace(seed, "\"seed\": 4242");
+        QFile f(mProject);
+        QVERIFY(f.open(QIODevice::ReadWrite)); // in place: the folder does not change
+        f.write(onDisk);
+        f.resize(onDisk.size());
+        f.close();
+        QTRY_COMPARE_WITH_TIMEOUT(document().project().seed, std::uint64_t(4242), 15000);
+        settle();
+    }
+
     /// The Python console evaluates, edits the document through its commands, runs
     /// multi-line statements and shows tracebacks.
     void consoleEvaluatesAndShowsTracebacks() {
