@@ -380,6 +380,22 @@ void checkGltfJson(const std::filesystem::path& file, const std::string& json,
         throw InvalidInput(where + "JSON is not valid: " + e.what());
     }
     checkGltfBounds(file, doc, glbBinary);
+    // A skin without inverse bind matrices (identity, by the specification) made Assimp 5.2.5
+    // read through a null pointer (fuzz finding 22): required, and an accessor of the file.
+    if (const graph::Value* skins = doc.find("skins"); skins && skins->isArray()) {
+        const graph::Value* accessors = doc.find("accessors");
+        const std::size_t count =
+            accessors && accessors->isArray() ? accessors->toArray().size() : 0;
+        for (std::size_t k = 0; k < skins->toArray().size(); ++k) {
+            const graph::Value& skin = skins->toArray()[k];
+            const graph::Value* ibm = skin.isObject() ? skin.find("inverseBindMatrices") : nullptr;
+            if (!ibm || !ibm->isNumber() || ibm->toNumber() < 0 ||
+                ibm->toNumber() >= double(count) || ibm->toNumber() != std::floor(ibm->toNumber()))
+                throw InvalidInput(where + "skins[" + std::to_string(k) +
+                                   "] names no accessor of inverse bind matrices, which the "
+                                   "importer needs; export the obstacle without its skin");
+        }
+    }
     const graph::Value* meshes = doc.isObject() ? doc.find("meshes") : nullptr;
     if (!meshes || !meshes->isArray()) return;
     for (std::size_t m = 0; m < meshes->toArray().size(); ++m) {

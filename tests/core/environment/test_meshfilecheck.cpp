@@ -402,3 +402,18 @@ TEST(MeshFileCheck, GltfAccessorsViewsAndBuffersMustFit) {
     m = refusal(edited(R"("type":"VEC3")", R"("type":"VEC9")"));
     EXPECT_NE(m.find("accessors[0].type 'VEC9' is not one of glTF's"), std::string::npos) << m;
 }
+
+// Fuzz finding 22 (tests/fuzz/regressions/obstacle/crash-gltf-skin-without-inverse-bind-matrices):
+// a skin without inverseBindMatrices (valid glTF: identity) made Debian's Assimp 5.2.5 read
+// through a null pointer. Obstacles need no skin: such files are refused, saying why.
+TEST(MeshFileCheck, GltfSkinsNeedInverseBindMatrices) {
+    const std::string head = R"({"asset":{"version":"2.0"},"nodes":[{"name":"joint"}],)";
+    const std::string m = messageOf<InvalidInput>(
+        writeFile("skin.gltf", head + R"("skins":[{"joints":[0]}]})"), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("cannot read it: glTF skins[0] names no accessor of inverse bind matrices"),
+              std::string::npos)
+        << m;
+    EXPECT_THROW(checkMeshFile(writeFile(
+                     "skin.gltf", head + R"("skins":[{"joints":[0],"inverseBindMatrices":3}]})")),
+                 InvalidInput);
+}
