@@ -28,8 +28,9 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// triangle fan (modes 2 and 6: Assimp builds those from earlier faces and read through a
 /// null pointer when one was empty), and keep every accessor inside its buffer view, every
 /// view inside its buffer and every buffer inside its data (Assimp read past a buffer);
-/// sparse accessors, and skins without inverse bind matrices, are refused. Other formats pass unchecked (OBJ files go through
-/// objGeometryOnly() instead).
+/// sparse accessors, and skins without inverse bind matrices, are refused. Other formats pass
+/// unchecked (OBJ files go through objGeometryOnly() instead).
+///
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.
 /// \throw LimitExceeded when a PLY element count exceeds \p maxItems or a Collada count
 /// 9·\p maxItems.
