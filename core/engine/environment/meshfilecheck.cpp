@@ -347,6 +347,13 @@ void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
             throw InvalidInput(where + what + ".type '" + name + "' is not one of glTF's");
         const std::uint64_t count = whole(a, "count", what, 0, kMax);
         if (count == 0) throw InvalidInput(where + what + ".count must be at least 1");
+        // Assimp allocates an accessor's elements before reading them (zeros when it names
+        // no buffer view): at most three a triangle of the triangle limit.
+        if (count > 3 * kMaxObstacleTriangles)
+            throw LimitExceeded(
+                where + what + ".count " + std::to_string(count) + " is more than the limit of " +
+                std::to_string(3 * kMaxObstacleTriangles) + " (three per triangle of " +
+                std::to_string(kMaxObstacleTriangles) + "); decimate the mesh");
         if (!a.find("bufferView")) continue; // all zeros
         const std::uint64_t view = whole(a, "bufferView", what, 0, kMax);
         if (view >= viewBytes.size())
@@ -404,16 +411,35 @@ void checkGltfJson(const std::filesystem::path& file, const std::string& json,
         if (!primitives || !primitives->isArray()) continue;
         for (std::size_t p = 0; p < primitives->toArray().size(); ++p) {
             const graph::Value& primitive = primitives->toArray()[p];
+            const std::string what =
+                "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
             const graph::Value* mode = primitive.isObject() ? primitive.find("mode") : nullptr;
-            if (!mode || !mode->isNumber()) continue;
-            const double v = mode->toNumber();
-            if (v == 2 || v == 6)
-                throw InvalidInput(where + "meshes[" + std::to_string(m) + "].primitives[" +
-                                   std::to_string(p) + "] is drawn as " +
-                                   (v == 2 ? "a line loop" : "a triangle fan") + " (mode " +
-                                   (v == 2 ? "2" : "6") +
-                                   "), which the importer cannot read safely; export the "
+            const double v = mode && mode->isNumber() ? mode->toNumber() : 4.0;
+            if (v == 2 || v == 3 || v == 6)
+                throw InvalidInput(where + what + " is drawn as " +
+                                   (v == 2   ? "a line loop (mode 2)"
+                                    : v == 3 ? "a line strip (mode 3)"
+                                             : "a triangle fan (mode 6)") +
+                                   ", which the importer cannot read safely; export the "
                                    "obstacle as triangles");
+            // A strip of fewer vertices than a triangle: Assimp counts its faces as count - 2
+            // in unsigned arithmetic and asked for 64 GB (finding 23, a line strip of none).
+            if (v == 5) {
+                const graph::Value* indices = primitive.find("indices");
+                const graph::Value* attributes = primitive.find("attributes");
+                const graph::Value* position =
+                    attributes && attributes->isObject() ? attributes->find("POSITION") : nullptr;
+                const graph::Value* source = indices ? indices : position;
+                const graph::Value* accessors = doc.find("accessors");
+                const graph::Value* count = nullptr;
+                if (source && source->isNumber() && accessors && accessors->isArray() &&
+                    source->toNumber() >= 0 &&
+                    source->toNumber() < double(accessors->toArray().size()))
+                    count = accessors->toArray()[std::size_t(source->toNumber())].find("count");
+                if (!count || !count->isNumber() || count->toNumber() < 3)
+                    throw InvalidInput(where + what +
+                                       " is a triangle strip of fewer than 3 vertices");
+            }
         }
     }
 }

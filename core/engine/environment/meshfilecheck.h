@@ -25,8 +25,9 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// length and JSON and binary chunk lengths that fit in the file: Assimp allocates the JSON
 /// chunk's length before checking it (4 GB for a 2 KB file). glTF JSON (binary, `.gltf`, or
 /// any file that starts like JSON) must parse, draw no primitive as a line loop or a
-/// triangle fan (modes 2 and 6: Assimp builds those from earlier faces and read through a
-/// null pointer when one was empty), and keep every accessor inside its buffer view, every
+/// triangle fan or a line strip (modes 2, 6, 3: Assimp builds those from earlier faces, read
+/// through a null pointer when one was empty, and asked for 64 GB for an empty strip), nor a
+/// triangle strip of fewer than 3 vertices, and keep every accessor inside its buffer view, every
 /// view inside its buffer and every buffer inside its data (Assimp read past a buffer);
 /// sparse accessors, and skins without inverse bind matrices, are refused. Other formats pass
 /// unchecked (OBJ files go through objGeometryOnly() instead).

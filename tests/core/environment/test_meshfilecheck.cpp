@@ -348,7 +348,8 @@ TEST(MeshFileCheck, BinaryGltfLengthsMustFitTheFile) {
 TEST(MeshFileCheck, GltfLineLoopsAndFansAreRefused) {
     EXPECT_EQ(loadObstacleMesh(writeFile("mode4.glb", glbTriangle("4"))).triangleCount(), 1u);
     for (const auto& [mode, what] :
-         {std::pair{"2", "a line loop (mode 2)"}, std::pair{"6", "a triangle fan (mode 6)"}}) {
+         {std::pair{"2", "a line loop (mode 2)"}, std::pair{"3", "a line strip (mode 3)"},
+          std::pair{"6", "a triangle fan (mode 6)"}}) {
         const std::string m = messageOf<InvalidInput>(writeFile("mode.glb", glbTriangle(mode)),
                                                       kMaxObstacleTriangles);
         EXPECT_NE(m.find(std::string("cannot read it: glTF meshes[0].primitives[0] is drawn as ") +
@@ -399,6 +400,13 @@ TEST(MeshFileCheck, GltfAccessorsViewsAndBuffersMustFit) {
     m = refusal(edited(R"("componentType":5126)", R"("componentType":5127)"));
     EXPECT_NE(m.find("accessors[0].componentType 5127 is not one of glTF's"), std::string::npos)
         << m;
+    // An accessor without a buffer view is zeros, which Assimp allocates: limited.
+    const std::string zeros = R"({"asset":{"version":"2.0"},"accessors":[{"componentType":5126,)"
+                              R"("count":4000000000,"type":"VEC3"}]})";
+    m = messageOf<LimitExceeded>(writeFile("zeros.gltf", zeros), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("accessors[0].count 4000000000 is more than the limit of 30000000"),
+              std::string::npos)
+        << m;
     m = refusal(edited(R"("type":"VEC3")", R"("type":"VEC9")"));
     EXPECT_NE(m.find("accessors[0].type 'VEC9' is not one of glTF's"), std::string::npos) << m;
 }
@@ -416,4 +424,19 @@ TEST(MeshFileCheck, GltfSkinsNeedInverseBindMatrices) {
     EXPECT_THROW(checkMeshFile(writeFile(
                      "skin.gltf", head + R"("skins":[{"joints":[0],"inverseBindMatrices":3}]})")),
                  InvalidInput);
+}
+
+// Fuzz finding 23 (tests/fuzz/regressions/obstacle/oom-glb-strip-without-vertices): a line strip
+// whose attributes were mutated away made Debian's Assimp 5.2.5 count count - 1 faces in
+// unsigned arithmetic and ask for 64 GB; triangle strips (count - 2) likewise. Line strips are
+// refused (above), triangle strips need at least one triangle.
+TEST(MeshFileCheck, GltfTriangleStripsNeedThreeVertices) {
+    EXPECT_EQ(loadObstacleMesh(writeFile("strip.glb", glbTriangle("5"))).triangleCount(), 1u);
+    const std::string text = R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[)"
+                             R"({"mode":5,"attributes":{}}]}]})";
+    const std::string m =
+        messageOf<InvalidInput>(writeFile("strip.gltf", text), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("meshes[0].primitives[0] is a triangle strip of fewer than 3 vertices"),
+              std::string::npos)
+        << m;
 }
