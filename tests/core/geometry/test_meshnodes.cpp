@@ -82,3 +82,29 @@ TEST(MeshNodes, SettingsFromParams) {
     EXPECT_TRUE(s.useLod);
     EXPECT_EQ(mesh::selectLod(s.lod, s.cameraDistance).resolution, 4);
 }
+
+// The default LOD bands (8, 5, 3 sides) were finer than a species of 6 sides near the camera:
+// the bench species' tree had 393,652 triangles at the camera LOD for 5 to 20 m against
+// 301,800 without it. They are capped at the species' resolution; explicit bands are kept.
+TEST(MeshNodes, DefaultLodIsNeverFinerThanTheSpecies) {
+    const mesh::TreeMeshSettings six =
+        mesh::treeMeshSettingsFromParams(Value(Value::Object{{"resolution", Value(6)}}), 1);
+    ASSERT_EQ(six.lod.bands.size(), 3u);
+    EXPECT_EQ(six.lod.bands[0].resolution, 6);
+    EXPECT_EQ(six.lod.bands[1].resolution, 5);
+    EXPECT_EQ(six.lod.bands[2].resolution, 3);
+    for (const int resolution : {3, 4, 6, 8, 12}) {
+        graph::Evaluator full(species({{"resolution", Value(resolution)}}, true));
+        graph::Evaluator near(
+            species({{"resolution", Value(resolution)}, {"lod_distance", Value(1)}}, true));
+        EXPECT_LE(near.evaluate().stats.at("triangles"), full.evaluate().stats.at("triangles"))
+            << resolution;
+    }
+    // Bands given explicitly are the artist's: kept even when finer.
+    const mesh::TreeMeshSettings explicitBands = mesh::treeMeshSettingsFromParams(
+        Value(Value::Object{
+            {"resolution", Value(4)},
+            {"lod_bands", Value(Value::Array{Value(Value::Array{Value(0), Value(9)})})}}),
+        1);
+    EXPECT_EQ(explicitBands.lod.bands[0].resolution, 9);
+}
