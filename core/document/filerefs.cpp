@@ -23,6 +23,22 @@ std::string relativeTo(const QString& baseDir, const QString& absolute) {
 
 namespace {
 
+/// Calls \p f on every file reference of \p value's members: those named as files, also
+/// inside nested objects and arrays (a mesh envelope's `{"shape": "mesh", "file": …}`, an adapt
+/// node's obstacles), which a save under another folder once left pointing nowhere.
+template <typename F> void forEachFileIn(Value& value, F& f) {
+    if (value.isObject()) {
+        for (auto& [key, member] : value.objectRef())
+            if (isFileParam(key) && member.isString())
+                f(member);
+            else
+                forEachFileIn(member, f);
+    } else if (value.isArray()) {
+        for (Value& element : value.arrayRef())
+            forEachFileIn(element, f);
+    }
+}
+
 template <typename F> void forEachFileParam(Value& graph, F&& f) {
     if (!graph.isObject()) return;
     Value::Object& g = graph.objectRef();
@@ -32,8 +48,7 @@ template <typename F> void forEachFileParam(Value& graph, F&& f) {
         if (!node.isObject()) continue;
         auto params = node.objectRef().find("params");
         if (params == node.objectRef().end() || !params->second.isObject()) continue;
-        for (auto& [key, value] : params->second.objectRef())
-            if (isFileParam(key) && value.isString()) f(value);
+        forEachFileIn(params->second, f);
     }
 }
 

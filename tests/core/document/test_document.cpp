@@ -286,13 +286,30 @@ TEST_F(DocumentTest, EveryPresetAppliesAndRoundTrips) {
     const QList<doc::PresetInfo> presets =
         doc::PresetLibrary::list(QStringLiteral(SYLVA_SOURCE_DIR "/presets"));
     ASSERT_GE(presets.size(), 12);
-    // A parameter the way the engine reads it: file parameters as absolute paths.
-    auto resolved = [](const graph::NodeDesc& n, const std::string& key) {
-        const graph::Value* v = n.params.find(key);
-        if (v && v->isString() && doc::isFileParam(key)) // rebased: the same file
+    // A parameter with its file references (also nested: a mesh envelope's) by file name:
+    // rebased to the project's folder, they name the same files.
+    std::function<graph::Value(const graph::Value&, const std::string&)> fileNames =
+        [&fileNames](const graph::Value& v, const std::string& key) -> graph::Value {
+        if (v.isString() && doc::isFileParam(key))
             return graph::Value(
-                QFileInfo(QString::fromStdString(v->toString())).fileName().toStdString());
-        return v ? *v : graph::Value();
+                QFileInfo(QString::fromStdString(v.toString())).fileName().toStdString());
+        if (v.isObject()) {
+            graph::Value::Object out;
+            for (const auto& [k, member] : v.toObject())
+                out[k] = fileNames(member, k);
+            return graph::Value(std::move(out));
+        }
+        if (v.isArray()) {
+            graph::Value::Array out;
+            for (const graph::Value& element : v.toArray())
+                out.push_back(fileNames(element, {}));
+            return graph::Value(std::move(out));
+        }
+        return v;
+    };
+    auto resolved = [&fileNames](const graph::NodeDesc& n, const std::string& key) {
+        const graph::Value* v = n.params.find(key);
+        return v ? fileNames(*v, key) : graph::Value();
     };
     for (const doc::PresetInfo& p : presets) {
         SCOPED_TRACE(p.path.toStdString());
@@ -526,4 +543,19 @@ TEST(FileRefs, SourceFilesOfTheDemo) {
     EXPECT_TRUE(has("meshes/boulder.obj"));
     EXPECT_TRUE(doc::isFileParam("grammar_file"));
     EXPECT_FALSE(doc::isFileParam("profile"));
+}
+
+// A species graph kept in the project names files inside nested parameters too (a mesh
+// envelope, an adapt node's obstacles): a save under another folder must move them as well,
+// or the saved project points nowhere.
+TEST(FileRefs, NestedFilesAreRebased) {
+    graph::Value g = graph::Value::parseJson(R"({"nodes":[{"id":"grow","type":"space_colonization",
+        "params":{"envelope":{"shape":"mesh","file":"meshes/crown.obj"},"grammar_file":"g.lsys",
+        "obstacles":[{"file":"rock.obj","scale":2}],"profile":"keep/me"}}]})");
+    doc::rebaseGraphFiles(g, QStringLiteral("/p/a"), QStringLiteral("/p/b"));
+    const graph::Value& params = g.find("nodes")->toArray()[0].find("params")[0];
+    EXPECT_EQ(params.find("envelope")->find("file")->toString(), "../a/meshes/crown.obj");
+    EXPECT_EQ(params.find("grammar_file")->toString(), "../a/g.lsys");
+    EXPECT_EQ(params.find("obstacles")->toArray()[0].find("file")->toString(), "../a/rock.obj");
+    EXPECT_EQ(params.find("profile")->toString(), "keep/me"); // not a file
 }
