@@ -980,8 +980,17 @@ void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
     QList<QDateTime> stamps = result.sourceStamps;
     if (!mDocument->path().isEmpty()) {
         // The project file with the time it had when it was opened or saved (or last seen
-        // changed): a change made while this generation ran is still noticed.
-        sources << mDocument->path();
+        // changed): a change made while this generation ran is still noticed. The generation
+        // lists the file too, stamped when it started (it reads the document, not the file):
+        // that stamp would hide an edit made on disk before it started (a flaky test under
+        // load found it), so it goes.
+        const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
+        for (qsizetype i = sources.size() - 1; i >= 0; --i)
+            if (QFileInfo(sources[i]).absoluteFilePath() == own) {
+                sources.removeAt(i);
+                if (i < stamps.size()) stamps.removeAt(i);
+            }
+        sources << own;
         stamps << mDocumentStamp;
     }
     watchSources(sources, stamps);
