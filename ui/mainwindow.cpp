@@ -985,11 +985,10 @@ void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
         // that stamp would hide an edit made on disk before it started (a flaky test under
         // load found it), so it goes.
         const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
-        for (qsizetype i = sources.size() - 1; i >= 0; --i)
-            if (QFileInfo(sources[i]).absoluteFilePath() == own) {
-                sources.removeAt(i);
-                if (i < stamps.size()) stamps.removeAt(i);
-            }
+        if (const qsizetype i = sources.indexOf(own); i >= 0) { // listed once, absolute
+            sources.removeAt(i);
+            if (i < stamps.size()) stamps.removeAt(i);
+        }
         sources << own;
         stamps << mDocumentStamp;
     }

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include <QApplication>
-#include <QCoreApplication>
 #include <QImage>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -64,7 +63,7 @@ void main() {
 // pixel cost 5 % of a frame, and the difference to 2.2 does not show). Leaf cards are
 // cut out by their texture's alpha, sharpened with the mipmap level so that far leaves keep
 // their area instead of fading away.
-// The shader is compiled in four variants (MeshVariant: TEXTURED, CUTOUT, both, neither)
+// The shader is compiled in four variants (kMeshTextured, kMeshCutout, both, neither)
 // rather than branching on uniforms: a software renderer (Mesa llvmpipe) runs both sides of a
 // branch with masks, and a shader that can discard loses the early depth test for every
 // triangle drawn with it, so bark paid for the leaves' texture lookup and cut-out.
@@ -307,11 +306,7 @@ int Viewport::applySamplesPreference() {
 /// hands its input to the viewport widget (which the rest of the editor talks to).
 class ViewportSurface : public QOpenGLWindow {
 public:
-    explicit ViewportSurface(Viewport& view) : QOpenGLWindow(NoPartialUpdate), mView(view) {
-        // Keyboard focus stays with the widget: shortcuts and the widget's key handling work
-        // as for any widget, and a click does not take focus from the main window.
-        setFlag(Qt::WindowDoesNotAcceptFocus);
-    }
+    explicit ViewportSurface(Viewport& view) : QOpenGLWindow(NoPartialUpdate), mView(view) {}
 
 protected:
     void initializeGL() override { mView.initializeGL(); }
@@ -371,7 +366,10 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     mSurface->setFormat(format);
     QWidget* container = QWidget::createWindowContainer(mSurface, this);
     container->setFocusPolicy(Qt::NoFocus);
-    mSurface->setFlag(Qt::WindowDoesNotAcceptFocus); // again: embedding resets the flags
+    // Keyboard focus stays with the widget: shortcuts and the widget's key handling work as
+    // for any widget, and a click does not take focus from the main window. Set once
+    // embedded: the container sets the window's flags.
+    mSurface->setFlag(Qt::WindowDoesNotAcceptFocus);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(container);

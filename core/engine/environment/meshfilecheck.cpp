@@ -209,7 +209,14 @@ void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::siz
 /// Binary glTF (GLB): Debian's Assimp 5.2.5 allocates the JSON chunk's declared length (plus
 /// one byte) before comparing it with the file: a 2 KB file declaring a 4 GB chunk ran out of
 /// memory (fuzz finding 19). The header's lengths must fit in the file.
-void checkGlb(const std::filesystem::path& file, std::ifstream& in, std::uintmax_t size) {
+/// What checkGlb() read of a binary glTF: its JSON chunk (version 2; the content of version
+/// 1) and the length of its binary chunk (0 when it has none).
+struct GlbChunks {
+    std::string json;
+    std::uint64_t binaryBytes = 0;
+};
+
+GlbChunks checkGlb(const std::filesystem::path& file, std::ifstream& in, std::uintmax_t size) {
     const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: binary glTF ";
     auto le32 = [](const unsigned char* b) {
         return std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
@@ -231,10 +238,15 @@ void checkGlb(const std::filesystem::path& file, std::ifstream& in, std::uintmax
         throw InvalidInput(where + "JSON chunk declares " + std::to_string(json) +
                            " bytes, more than the " + std::to_string(size - 20) +
                            " the file holds after its header");
-    if (version != 2) return;
+    GlbChunks out;
+    out.json.resize(json);
+    in.read(out.json.data(), static_cast<std::streamsize>(out.json.size()));
+    if (!in) throw IoError("obstacle mesh '" + file.string() + "': cannot read the file");
+    out.json.erase(out.json.find_last_not_of(std::string(" \0", 2)) + 1); // the padding
+    if (version != 2) return out;
     // The binary chunk, if any, follows the JSON chunk at a multiple of 4 bytes.
     const std::uint64_t next = 20 + ((std::uint64_t(json) + 3) & ~std::uint64_t(3));
-    if (next + 8 > size) return;
+    if (next + 8 > size) return out;
     unsigned char chunk[8];
     in.seekg(static_cast<std::streamoff>(next));
     in.read(reinterpret_cast<char*>(chunk), sizeof chunk);
@@ -243,6 +255,8 @@ void checkGlb(const std::filesystem::path& file, std::ifstream& in, std::uintmax
         throw InvalidInput(where + "binary chunk declares " + std::to_string(le32(chunk)) +
                            " bytes, more than the " + std::to_string(size - next - 8) +
                            " the file holds after it");
+    out.binaryBytes = le32(chunk);
+    return out;
 }
 
 /// glTF: Debian's Assimp 5.2.5 reads an accessor's elements without checking that they lie in
@@ -458,32 +472,9 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
     in.clear();
     in.seekg(0);
     if (std::string_view(magic, 4) == "glTF") {
-        checkGlb(file, in, size); // by content: Assimp sniffs the magic whatever the extension
-        // The JSON chunk (version 2) or content (version 1), now known to fit in the file.
-        unsigned char length[4];
-        in.clear();
-        in.seekg(12);
-        in.read(reinterpret_cast<char*>(length), 4);
-        const std::size_t jsonBytes = std::size_t(length[0]) | std::size_t(length[1]) << 8 |
-                                      std::size_t(length[2]) << 16 | std::size_t(length[3]) << 24;
-        std::string json(jsonBytes, '\0');
-        in.seekg(20);
-        in.read(json.data(), static_cast<std::streamsize>(json.size()));
-        if (!in) throw IoError("obstacle mesh '" + file.string() + "': cannot read the file");
-        json.erase(json.find_last_not_of(std::string(" \0", 2)) + 1); // the chunk's padding
-        // The binary chunk (checkGlb() found it to fit), which a buffer without a uri reads.
-        std::uint64_t binary = 0;
-        const std::uint64_t next = 20 + ((std::uint64_t(jsonBytes) + 3) & ~std::uint64_t(3));
-        if (next + 8 <= size) {
-            unsigned char chunk[8];
-            in.clear();
-            in.seekg(static_cast<std::streamoff>(next));
-            in.read(reinterpret_cast<char*>(chunk), 8);
-            if (in)
-                binary = std::uint64_t(chunk[0]) | std::uint64_t(chunk[1]) << 8 |
-                         std::uint64_t(chunk[2]) << 16 | std::uint64_t(chunk[3]) << 24;
-        }
-        checkGltfJson(file, json, binary);
+        // By content: Assimp sniffs the magic whatever the extension.
+        const GlbChunks glb = checkGlb(file, in, size);
+        checkGltfJson(file, glb.json, glb.binaryBytes);
         return;
     }
     std::string ext = file.extension().string();
