@@ -8,6 +8,7 @@
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "ui/viewport/attributecolors.h"
+#include "ui/viewport/vertexdata.h"
 
 using namespace sylva;
 using namespace sylva::ui;
@@ -156,6 +157,37 @@ private Q_SLOTS:
         const AttributeColoring none = colorByAttribute(m, bare, ColorBy::Light);
         QVERIFY(none.colors.empty());
         QVERIFY(none.legend.contains(QStringLiteral("not available")));
+    }
+
+    /// The vertices the viewport uploads (made on the preview's worker): the layout by hand,
+    /// smooth normals for a mesh without any, and a triangle with a bad index left out of them.
+    void verticesAsTheViewportUploadsThem() {
+        mesh::Mesh m;
+        m.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 3}};
+        m.uvs = {{0, 0}, {1, 0}, {0, 1}, {0.5f, 0.25f}};
+        // One triangle in the xy plane (area 2, wound for +z) and one in the xz plane (area 3,
+        // wound for +y); the third names vertex 9, which does not exist.
+        m.indices = {0, 1, 2, 0, 3, 1, 0, 1, 9};
+        const std::vector<glm::vec3> colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+        const std::vector<float> v = interleaveVertices(m, colors);
+        QCOMPARE(v.size(), std::size_t(4 * kVertexFloats));
+        auto at = [&](std::size_t vertex, int k) { return v[vertex * kVertexFloats + k]; };
+        // Vertex 1: position, normal = 4·(0,0,1) + 6·(0,1,0) (cross products, unnormalised:
+        // the shader normalises), colour, uv, occlusion (1: no leaves, nothing shades it).
+        const float expected[kVertexFloats] = {2, 0, 0, 0, 6, 4, 0, 1, 0, 1, 0, 1};
+        for (int k = 0; k < kVertexFloats; ++k)
+            QCOMPARE(at(1, k), expected[k]);
+        QCOMPARE(at(2, 5), 4.0f); // vertex 2: only the first triangle
+        QCOMPARE(at(2, 4), 0.0f);
+        QCOMPARE(at(3, 9), 0.5f);
+        QCOMPARE(at(3, 10), 0.25f);
+        // Colours that do not match the vertices are left at zero; given normals are kept.
+        m.normals.assign(4, glm::vec3(0, 1, 0));
+        const std::vector<float> plain = interleaveVertices(m, {{1, 1, 1}});
+        for (std::size_t i = 0; i < 4; ++i) {
+            QCOMPARE(plain[i * kVertexFloats + 4], 1.0f);
+            QCOMPARE(plain[i * kVertexFloats + 6], 0.0f);
+        }
     }
 };
 

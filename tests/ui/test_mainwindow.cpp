@@ -236,6 +236,60 @@ private Q_SLOTS:
         QVERIFY2(px.box.height() > tree.height() / 2, "the tree is not framed (too small)");
     }
 
+    /// The bark's back faces are culled (issue 19: a third of a software renderer's frame) and
+    /// the picture does not change; what may be seen from behind is never culled.
+    void backFacesOfTheBarkAreCulled() {
+        Viewport* viewport = mWindow->viewport();
+        viewport->frameScene();
+        QVERIFY(viewport->backFaceCulling()); // the default
+        const QImage culled = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        viewport->setBackFaceCulling(false);
+        const QImage all = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        qint64 differ = 0;
+        for (int y = 0; y < culled.height(); ++y)
+            for (int x = 0; x < culled.width(); ++x)
+                differ += channelDifference(culled.pixel(x, y), all.pixel(x, y)) > 24;
+        qInfo("pixels that differ with and without culling: %lld", differ);
+        QVERIFY2(differ * 1000 < qint64(culled.width()) * culled.height(),
+                 "culling the bark's back faces changed the picture");
+
+        // A square at the view's centre, wound clockwise as the camera sees it: its back face.
+        const std::shared_ptr<const sylva::mesh::Mesh> tree = viewport->mesh();
+        const OrbitCamera& cam = viewport->camera();
+        const float half = 0.2f * glm::length(cam.eye() - cam.target());
+        const glm::vec3 t = cam.target(), r = half * cam.right(), u = half * cam.up();
+        auto square = [&](const std::string& material, bool ribbons) {
+            auto m = std::make_shared<sylva::mesh::Mesh>();
+            m->positions = {t - r - u, t + r - u, t + r + u, t - r + u};
+            m->normals.assign(4, -cam.forward());
+            m->uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+            m->indices = {0, 2, 1, 0, 3, 2};
+            m->submeshes.push_back({material, 0, 6});
+            m->cameraRibbons = ribbons;
+            return m;
+        };
+        viewport->setMesh(std::make_shared<sylva::mesh::Mesh>(), false);
+        const QImage empty = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        auto drawnPixels = [&](const std::string& material, bool ribbons) {
+            viewport->setMesh(square(material, ribbons), false);
+            const QImage image = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+            qint64 n = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    n += channelDifference(image.pixel(x, y), empty.pixel(x, y)) > 24;
+            return n;
+        };
+        const qint64 whole = drawnPixels("bark", false); // culling off: drawn
+        QVERIFY2(whole > 10000, qPrintable(QString::number(whole)));
+        viewport->setBackFaceCulling(true);
+        QCOMPARE(drawnPixels("bark", false), qint64(0)); // a tube's back face: culled
+        QCOMPARE(drawnPixels("bark", true), whole);      // camera ribbons: two-sided
+        QVERIFY(drawnPixels("leaf", false) > whole / 2); // leaf cards (cut out): two-sided
+        // A user's mesh (grey: a few pixels are as dark as the sky there): two-sided.
+        QVERIFY(drawnPixels("obstacle", false) > whole * 9 / 10);
+        viewport->setMesh(tree, false);
+    }
+
     void statsShowTheGeneratedTree() {
         const GenerationResult& result = mWindow->lastResult();
         QVERIFY(result.ok());

@@ -41,6 +41,7 @@
 #include "ui/nodes/parameterpanel.h"
 #include "ui/speciesworkbench.h"
 #include "ui/viewport/toolcontroller.h"
+#include "ui/viewport/vertexdata.h"
 #include "ui/viewport/viewport.h"
 #include "uitest.h"
 
@@ -578,6 +579,10 @@ private Q_SLOTS:
         QCOMPARE(after["mesh"], before.at("mesh") + 1);
         QCOMPARE(after["grow"], before.at("grow")); // upstream: kept
         QVERIFY(preview->result().mesh->vertexCount() < vertices);
+        // The vertices to upload come made by the worker, for this mesh.
+        QVERIFY(preview->result().vertices);
+        QCOMPARE(preview->result().vertices->size(),
+                 preview->result().mesh->vertexCount() * std::size_t(kVertexFloats));
         QVERIFY(preview->editToResultMs() > 0.0);
         QVERIFY(document().param("alder", "mesh.resolution").toNumber() == 5.0);
         document().undoStack()->undo();

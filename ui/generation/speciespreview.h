@@ -19,6 +19,9 @@ namespace sylva::ui {
 struct PreviewResult {
     QString species;
     std::shared_ptr<const mesh::Mesh> mesh;
+    /// The mesh's vertices as the viewport uploads them (ui/viewport/vertexdata.h), made on the
+    /// worker.
+    std::shared_ptr<const std::vector<float>> vertices;
     std::shared_ptr<const skel::Skeleton> skeleton;
     std::map<std::string, graph::Evaluator::NodeRun> runs; ///< per node: time, ran, error
     std::map<std::string, double> stats;

@@ -597,6 +597,16 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             },
             py::arg("on"), "Turns the viewport's distance level of detail on or off.")
         .def(
+            "set_back_face_culling",
+            [](WindowApi&, bool on) {
+                window().viewport()->setBackFaceCulling(on);
+                if (Viewport* preview = window().workbench()->previewViewport())
+                    preview->setBackFaceCulling(on);
+            },
+            py::arg("on"),
+            "Culls the back faces of the bark tubes in the viewport and the species preview (on "
+            "by default; off only to compare: the picture is the same).")
+        .def(
             "regenerate_all", [](WindowApi&) { window().generator().regenerateAll(); },
             "Drops every cached tree and regrows the whole document (File > Reload).")
         .def(

@@ -23,7 +23,7 @@
 
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
-#include "engine/mesh/occlusion.h"
+#include "ui/viewport/vertexdata.h"
 
 namespace sylva::ui {
 
@@ -181,62 +181,10 @@ void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4
                             QMatrix4x4(glm::value_ptr(m)).transposed());
 }
 
-std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh);
-
-/// Floats per vertex: position, normal, attribute colour, uv, crown occlusion.
-constexpr int kVertexFloats = 12;
-
-/// Position, normal, attribute colour (zero when \p colors does not match), uv (zero without
-/// uvs) and the crown's ambient occlusion per vertex, as the mesh shader reads them.
-std::vector<float> interleave(const mesh::Mesh& m, const std::vector<glm::vec3>& colors) {
-    const std::size_t vertexCount = m.positions.size();
-    const std::vector<glm::vec3> computed =
-        m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
-    const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
-    const bool colored = colors.size() == vertexCount;
-    const bool hasUvs = m.uvs.size() == vertexCount;
-    const std::vector<float> occlusion = mesh::crownOcclusion(m);
-    std::vector<float> interleaved(vertexCount * kVertexFloats, 0.0f);
-    for (std::size_t i = 0; i < vertexCount; ++i) {
-        float* v = &interleaved[i * kVertexFloats];
-        if (hasUvs) {
-            v[9] = m.uvs[i].x;
-            v[10] = m.uvs[i].y;
-        }
-        v[11] = occlusion[i];
-        v[0] = m.positions[i].x;
-        v[1] = m.positions[i].y;
-        v[2] = m.positions[i].z;
-        v[3] = normals[i].x;
-        v[4] = normals[i].y;
-        v[5] = normals[i].z;
-        if (colored) {
-            v[6] = colors[i].x;
-            v[7] = colors[i].y;
-            v[8] = colors[i].z;
-        }
-    }
-    return interleaved;
-}
-
 bool indicesInRange(const mesh::Mesh& m) {
     for (std::uint32_t index : m.indices)
         if (index >= m.positions.size()) return false;
     return true;
-}
-
-std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh) {
-    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
-    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-        const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
-        // Area-weighted: the unnormalised cross product.
-        const glm::vec3 n = glm::cross(mesh.positions[b] - mesh.positions[a],
-                                       mesh.positions[c] - mesh.positions[a]);
-        normals[a] += n;
-        normals[b] += n;
-        normals[c] += n;
-    }
-    return normals;
 }
 
 } // namespace
@@ -458,8 +406,10 @@ bool Viewport::event(QEvent* event) {
     return QWidget::event(event);
 }
 
-void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame) {
+void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame,
+                       std::shared_ptr<const std::vector<float>> vertices) {
     mMesh = std::move(mesh);
+    mMeshVertices = std::move(vertices);
     mVertexColors.clear();
     mMeshDirty = true;
     updateBounds();
@@ -620,7 +570,12 @@ std::vector<Viewport::DrawRange> rangesOf(const mesh::Mesh& m) {
     for (const mesh::Submesh& s : m.submeshes) {
         if (s.firstIndex >= total) continue;
         const std::uint32_t count = std::min(s.indexCount, total - s.firstIndex);
-        ranges.push_back({Viewport::materialColor(s.material), s.firstIndex, count - count % 3});
+        Viewport::DrawRange r{Viewport::materialColor(s.material), s.firstIndex, count - count % 3};
+        // Sylva's bark tubes are closed and wound counter-clockwise seen from outside, so their
+        // back faces are never seen: culling them spares the rasteriser half the triangles
+        // (a third of a software renderer's frame). Ribbons made for one camera are not.
+        r.twoSided = s.material != "bark" || m.cameraRibbons;
+        ranges.push_back(r);
     }
     return ranges;
 }
@@ -637,7 +592,13 @@ void Viewport::uploadMesh() {
         return;
     }
     const bool colored = mVertexColors.size() == m.positions.size();
-    const std::vector<float> interleaved = interleave(m, mVertexColors);
+    // The vertices made beside the mesh on a worker, when they fit and no attribute colours
+    // replace theirs; else made here.
+    std::vector<float> made;
+    const bool prepared = !colored && mMeshVertices &&
+                          mMeshVertices->size() == m.positions.size() * std::size_t(kVertexFloats);
+    if (!prepared) made = interleaveVertices(m, mVertexColors);
+    const std::vector<float>& interleaved = prepared ? *mMeshVertices : made;
     mUseVertexColors = colored;
     glBindVertexArray(mMeshVao);
     glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
@@ -845,7 +806,7 @@ void Viewport::syncTreeBuffers() {
         glGenBuffers(1, &gpu.ibo);
         glBindVertexArray(gpu.vao);
         glBindBuffer(GL_ARRAY_BUFFER, gpu.vbo);
-        const std::vector<float> data = interleave(*treeMesh, {});
+        const std::vector<float> data = interleaveVertices(*treeMesh, {});
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
                      GL_STATIC_DRAW);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.ibo);
@@ -1273,6 +1234,10 @@ void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
             useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0));
         setUniform(program, "uAlbedo", r.color);
         glBindTexture(GL_TEXTURE_2D, r.texture);
+        if (r.twoSided || !mCullBackFaces)
+            glDisable(GL_CULL_FACE);
+        else
+            glEnable(GL_CULL_FACE);
         if (!mSoftware) {
             glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                            reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
@@ -1297,6 +1262,7 @@ void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
         }
     }
     glBindTexture(GL_TEXTURE_2D, 0);
+    glDisable(GL_CULL_FACE);
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

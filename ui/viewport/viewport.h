@@ -88,6 +88,9 @@ public:
         std::uint32_t indexCount = 0;
         GLuint texture = 0;     ///< 0: the plain colour
         bool alphaTest = false; ///< a leaf card cut out by the texture's alpha
+        /// Drawn from both sides: everything but Sylva's closed bark tubes (leaf cards, camera
+        /// ribbons, obstacles, foreign meshes); the tubes' back faces are culled.
+        bool twoSided = true;
     };
 
     /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
@@ -112,8 +115,11 @@ public:
     ~Viewport() override;
 
     /// Shows \p mesh (nullptr clears the view) in its materials' colours. With \p frame the
-    /// camera frames its bounds.
-    void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true);
+    /// camera frames its bounds. \p vertices: the mesh's vertices as interleaveVertices()
+    /// makes them (ui/viewport/vertexdata.h), when the caller made them on a worker; else the
+    /// viewport makes them when it uploads.
+    void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true,
+                 std::shared_ptr<const std::vector<float>> vertices = nullptr);
     /// Colours the mesh per vertex (linear RGB, one per vertex, e.g. attributeColors()), or by
     /// its materials again when \p colors is empty or does not match the mesh.
     void setVertexColors(std::vector<glm::vec3> colors);
@@ -193,6 +199,14 @@ public:
     void setGridVisible(bool visible);
     bool isGridVisible() const { return mGridVisible; }
 
+    /// Culls the back faces of Sylva's bark tubes (on by default; DrawRange::twoSided says
+    /// what never is). Off only for comparisons: the picture is the same.
+    void setBackFaceCulling(bool on) {
+        mCullBackFaces = on;
+        update();
+    }
+    bool backFaceCulling() const { return mCullBackFaces; }
+
     /// While the view moves (the camera or a dragged tree changed since the last frame) a
     /// software renderer draws the scene at this fraction of the resolution and scales it up;
     /// a sharp frame follows when the view rests (kSharpAfterMs). 1 on a graphics card, with
@@ -266,6 +280,7 @@ private:
     std::size_t vertexCount() const;
 
     std::shared_ptr<const mesh::Mesh> mMesh;
+    std::shared_ptr<const std::vector<float>> mMeshVertices; ///< made on a worker, or none
     std::vector<glm::vec3> mVertexColors;
     bool mUseVertexColors = false; ///< what the uploaded buffer holds
     glm::vec3 mBoundsLo{-0.5f, 0.0f, -0.5f};
@@ -281,7 +296,8 @@ private:
     QPoint mLastMouse;
 
     ViewportSurface* mSurface = nullptr;
-    bool mSoftware = false; ///< a software renderer (Mesa llvmpipe …)
+    bool mSoftware = false;     ///< a software renderer (Mesa llvmpipe …)
+    bool mCullBackFaces = true; ///< of the bark (setBackFaceCulling())
     /// Triangles between the flushes of a frame under a software renderer (drawRanges()).
     static constexpr std::size_t kFlushTriangles = 40000;
     std::size_t mUnflushed = 0; ///< triangles drawn since the last flush

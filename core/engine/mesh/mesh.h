@@ -37,6 +37,9 @@ struct Mesh {
     /// per-node attributes (light, vigour, age, order).
     std::vector<std::uint32_t> node;
     static constexpr std::uint32_t kNoNode = 0xffffffffu;
+    /// The bark holds flat ribbons turned to one camera (the camera LOD's thinnest twigs): a
+    /// viewer must draw this bark from both sides (closed tubes alone can cull back faces).
+    bool cameraRibbons = false;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }

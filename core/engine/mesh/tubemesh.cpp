@@ -452,6 +452,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         for (std::size_t c = 0; c < count; ++c) {
             const std::int32_t own = chains.nodes[chains.begin[c] + (chains.lateral[c] ? 1 : 0)];
             ribbon[c] = radius[static_cast<std::size_t>(own)] < settings.ribbonBelowRadius;
+            if (ribbon[c]) out.cameraRibbons = true;
         }
     for (std::size_t c = 0; c < count; ++c) {
         const Layout l = chainLayout(chains.begin[c + 1] - chains.begin[c], chains.lateral[c],

@@ -4,7 +4,8 @@
 # Prints fps, wall and CPU milliseconds per frame (the process, which includes Mesa llvmpipe's
 # rasterizer threads, and the GUI thread), the trees drawn and the scene's triangles, from the
 # project's camera and from three times as far; with the viewport's level of detail (issue 18)
-# and without it (the same binary, window.set_view_lod(False)); then the time from a released
+# and without it (the same binary, window.set_view_lod(False)), and with the bark's back faces
+# drawn (window.set_back_face_culling(False)); then the time from a released
 # drag of the hand-placed tree to its re-adapted mesh on screen.
 import statistics
 import time
@@ -46,6 +47,11 @@ for view, where in (("project camera", eye), ("3x farther", far)):
         win.look_from(where, target)
         measure(view + ", LOD off")
         win.set_view_lod(True)
+    if hasattr(win, "set_back_face_culling"):  # the bark's back faces culled (the default)
+        win.set_back_face_culling(False)
+        win.look_from(where, target)
+        measure(view + (", LOD" if has_lod else "") + ", back faces drawn")
+        win.set_back_face_culling(True)
 win.look_from(eye, target)
 if has_lod:
     win.wait_view_lod()

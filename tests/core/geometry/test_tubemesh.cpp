@@ -420,7 +420,13 @@ TEST(TubeMesh, ThinAxesBecomeRibbonsFacingTheCamera) {
     settings.ribbonCamera = {0.5f, 3, 20};
     settings.ribbonWidthScale = 0.9;
     settings.nodeIds = true;
+    // The ribbon faces one camera only: the mesh says so, so that viewers keep it two-sided
+    // (the viewport culls the back faces of closed tubes alone).
+    settings.ribbonBelowRadius = 0.005;
+    EXPECT_FALSE(mesh::buildTubeMesh(s, settings).cameraRibbons);
+    settings.ribbonBelowRadius = 0.05;
     const mesh::Mesh m = mesh::buildTubeMesh(s, settings);
+    EXPECT_TRUE(m.cameraRibbons);
     // The trunk: three rings of 9; the lateral: its base at the fork and two nodes, 2 each.
     ASSERT_EQ(m.vertexCount(), 3u * 9u + 3u * 2u);
     EXPECT_EQ(m.triangleCount(), 2u * 16u + 2u * 2u);

@@ -1,0 +1,61 @@
+#include "ui/viewport/vertexdata.h"
+
+#include <cstdint>
+
+#include "engine/mesh/mesh.h"
+#include "engine/mesh/occlusion.h"
+
+namespace sylva::ui {
+
+namespace {
+
+std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh) {
+    std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
+    const std::size_t n = mesh.positions.size();
+    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+        const std::uint32_t a = mesh.indices[i], b = mesh.indices[i + 1], c = mesh.indices[i + 2];
+        if (a >= n || b >= n || c >= n) continue;
+        // Area-weighted: the unnormalised cross product.
+        const glm::vec3 nrm = glm::cross(mesh.positions[b] - mesh.positions[a],
+                                         mesh.positions[c] - mesh.positions[a]);
+        normals[a] += nrm;
+        normals[b] += nrm;
+        normals[c] += nrm;
+    }
+    return normals;
+}
+
+} // namespace
+
+std::vector<float> interleaveVertices(const mesh::Mesh& m, const std::vector<glm::vec3>& colors) {
+    const std::size_t vertexCount = m.positions.size();
+    const std::vector<glm::vec3> computed =
+        m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
+    const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
+    const bool colored = colors.size() == vertexCount;
+    const bool hasUvs = m.uvs.size() == vertexCount;
+    const std::vector<float> occlusion = mesh::crownOcclusion(m);
+    std::vector<float> interleaved(vertexCount * kVertexFloats, 0.0f);
+    for (std::size_t i = 0; i < vertexCount; ++i) {
+        float* v = &interleaved[i * kVertexFloats];
+        if (hasUvs) {
+            v[9] = m.uvs[i].x;
+            v[10] = m.uvs[i].y;
+        }
+        v[11] = occlusion[i];
+        v[0] = m.positions[i].x;
+        v[1] = m.positions[i].y;
+        v[2] = m.positions[i].z;
+        v[3] = normals[i].x;
+        v[4] = normals[i].y;
+        v[5] = normals[i].z;
+        if (colored) {
+            v[6] = colors[i].x;
+            v[7] = colors[i].y;
+            v[8] = colors[i].z;
+        }
+    }
+    return interleaved;
+}
+
+} // namespace sylva::ui
