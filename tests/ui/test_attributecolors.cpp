@@ -169,24 +169,22 @@ private Q_SLOTS:
         // wound for +y); the third names vertex 9, which does not exist.
         m.indices = {0, 1, 2, 0, 3, 1, 0, 1, 9};
         const std::vector<glm::vec3> colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
-        const std::vector<float> v = interleaveVertices(m, colors);
-        QCOMPARE(v.size(), std::size_t(4 * kVertexFloats));
-        auto at = [&](std::size_t vertex, int k) { return v[vertex * kVertexFloats + k]; };
-        // Vertex 1: position, normal = 4·(0,0,1) + 6·(0,1,0) (cross products, unnormalised:
-        // the shader normalises), colour, uv, occlusion (1: no leaves, nothing shades it).
-        const float expected[kVertexFloats] = {2, 0, 0, 0, 6, 4, 0, 1, 0, 1, 0, 1};
-        for (int k = 0; k < kVertexFloats; ++k)
-            QCOMPARE(at(1, k), expected[k]);
-        QCOMPARE(at(2, 5), 4.0f); // vertex 2: only the first triangle
-        QCOMPARE(at(2, 4), 0.0f);
-        QCOMPARE(at(3, 9), 0.5f);
-        QCOMPARE(at(3, 10), 0.25f);
+        const std::vector<ViewVertex> v = interleaveVertices(m, colors);
+        QCOMPARE(v.size(), std::size_t(4));
+        // Vertex 1: normal = 4·(0,0,1) + 6·(0,1,0) (the cross products, area-weighted; the
+        // shader normalises), its colour, uv and occlusion (1: no leaves, nothing shades it).
+        QCOMPARE(v[1].position, glm::vec3(2, 0, 0));
+        QCOMPARE(v[1].normal, glm::vec3(0, 6, 4));
+        QCOMPARE(v[1].color, glm::vec3(0, 1, 0));
+        QCOMPARE(v[1].uv, glm::vec2(1, 0));
+        QCOMPARE(v[1].occlusion, 1.0f);
+        QCOMPARE(v[2].normal, glm::vec3(0, 0, 4)); // the first triangle only
+        QCOMPARE(v[3].uv, glm::vec2(0.5f, 0.25f));
         // Colours that do not match the vertices are left at zero; given normals are kept.
         m.normals.assign(4, glm::vec3(0, 1, 0));
-        const std::vector<float> plain = interleaveVertices(m, {{1, 1, 1}});
-        for (std::size_t i = 0; i < 4; ++i) {
-            QCOMPARE(plain[i * kVertexFloats + 4], 1.0f);
-            QCOMPARE(plain[i * kVertexFloats + 6], 0.0f);
+        for (const ViewVertex& p : interleaveVertices(m, {{1, 1, 1}})) {
+            QCOMPARE(p.normal, glm::vec3(0, 1, 0));
+            QCOMPARE(p.color, glm::vec3(0.0f));
         }
     }
 };

@@ -7,7 +7,6 @@
 #include "document/errormessage.h"
 #include "engine/util/error.h"
 #include "engine/util/progress.h"
-#include "ui/viewport/vertexdata.h"
 
 namespace sylva::ui {
 
@@ -129,51 +128,51 @@ void SpeciesPreview::start() {
     const std::uint64_t seed = mSeed;
     const QString name = mSpecies;
     auto cancel = mCancel;
-    mWatcher.setFuture(
-        QtConcurrent::run([evaluator, species = std::move(species), seed, name, cancel]() mutable {
-            PreviewResult r;
-            r.species = name;
-            QElapsedTimer timer;
-            timer.start();
-            std::shared_ptr<graph::Evaluator> ev = evaluator;
-            const SingleThreaded oneThread;
-            try {
-                graph::registerBuiltinNodeTypes();
-                // The long-lived evaluator keeps every node's result: setGraph() drops only what
-                // the edit changed.
-                if (ev)
-                    ev->setGraph(std::move(species));
-                else
-                    ev = std::make_shared<graph::Evaluator>(std::move(species));
-                // Rule lines per branch, for the editor's click-to-rule.
-                ev->setTraceSources(true);
-                FlagProgress progress(cancel);
-                const graph::NodeOutput& o = ev->evaluate(seed, progress);
-                r.mesh = o.mesh;
-                r.skeleton = o.skeleton;
-                r.stats = o.stats;
-            } catch (...) {
-                const doc::ErrorReport report =
-                    doc::describeError(std::current_exception(), name.toStdString());
-                if (report.kind == doc::ErrorReport::Kind::Cancelled)
-                    r.cancelled = true;
-                else
-                    r.error = QString::fromStdString(report.message);
-            }
-            if (ev) {
-                r.runs = ev->runs();
-                for (const auto& [id, run] : r.runs)
-                    if (!run.error.empty()) r.errorNode = QString::fromStdString(id);
-            }
-            r.evaluateMs = double(timer.nsecsElapsed()) * 1e-6;
-            // The vertices as the viewport uploads them, made here rather than on the GUI
-            // thread (6 ms for a 300k-triangle tree): the GUI thread only copies them.
-            if (r.mesh && !cancel->load())
-                r.vertices =
-                    std::make_shared<const std::vector<float>>(interleaveVertices(*r.mesh, {}));
-            r.evaluator = std::move(ev); // handed back: the GUI thread keeps it for the next edit
-            return r;
-        }));
+    mWatcher.setFuture(QtConcurrent::run([evaluator, species = std::move(species), seed, name,
+                                          cancel]() mutable {
+        PreviewResult r;
+        r.species = name;
+        QElapsedTimer timer;
+        timer.start();
+        std::shared_ptr<graph::Evaluator> ev = evaluator;
+        const SingleThreaded oneThread;
+        try {
+            graph::registerBuiltinNodeTypes();
+            // The long-lived evaluator keeps every node's result: setGraph() drops only what
+            // the edit changed.
+            if (ev)
+                ev->setGraph(std::move(species));
+            else
+                ev = std::make_shared<graph::Evaluator>(std::move(species));
+            // Rule lines per branch, for the editor's click-to-rule.
+            ev->setTraceSources(true);
+            FlagProgress progress(cancel);
+            const graph::NodeOutput& o = ev->evaluate(seed, progress);
+            r.mesh = o.mesh;
+            r.skeleton = o.skeleton;
+            r.stats = o.stats;
+        } catch (...) {
+            const doc::ErrorReport report =
+                doc::describeError(std::current_exception(), name.toStdString());
+            if (report.kind == doc::ErrorReport::Kind::Cancelled)
+                r.cancelled = true;
+            else
+                r.error = QString::fromStdString(report.message);
+        }
+        if (ev) {
+            r.runs = ev->runs();
+            for (const auto& [id, run] : r.runs)
+                if (!run.error.empty()) r.errorNode = QString::fromStdString(id);
+        }
+        r.evaluateMs = double(timer.nsecsElapsed()) * 1e-6;
+        // The vertices as the viewport uploads them, made here rather than on the GUI
+        // thread (6 ms for a 300k-triangle tree): the GUI thread only copies them.
+        if (r.mesh && !cancel->load())
+            r.vertices =
+                std::make_shared<const std::vector<ViewVertex>>(interleaveVertices(*r.mesh, {}));
+        r.evaluator = std::move(ev); // handed back: the GUI thread keeps it for the next edit
+        return r;
+    }));
 }
 
 void SpeciesPreview::onFinished() {

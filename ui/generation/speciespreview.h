@@ -12,6 +12,7 @@
 
 #include "document/document.h"
 #include "engine/graph/graph.h"
+#include "ui/viewport/vertexdata.h"
 
 namespace sylva::ui {
 
@@ -21,7 +22,7 @@ struct PreviewResult {
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The mesh's vertices as the viewport uploads them (ui/viewport/vertexdata.h), made on the
     /// worker.
-    std::shared_ptr<const std::vector<float>> vertices;
+    std::shared_ptr<const std::vector<ViewVertex>> vertices;
     std::shared_ptr<const skel::Skeleton> skeleton;
     std::map<std::string, graph::Evaluator::NodeRun> runs; ///< per node: time, ran, error
     std::map<std::string, double> stats;

@@ -1,7 +1,5 @@
 #include "ui/viewport/vertexdata.h"
 
-#include <cstdint>
-
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/occlusion.h"
 
@@ -27,7 +25,8 @@ std::vector<glm::vec3> smoothNormals(const mesh::Mesh& mesh) {
 
 } // namespace
 
-std::vector<float> interleaveVertices(const mesh::Mesh& m, const std::vector<glm::vec3>& colors) {
+std::vector<ViewVertex> interleaveVertices(const mesh::Mesh& m,
+                                           const std::vector<glm::vec3>& colors) {
     const std::size_t vertexCount = m.positions.size();
     const std::vector<glm::vec3> computed =
         m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
@@ -35,27 +34,11 @@ std::vector<float> interleaveVertices(const mesh::Mesh& m, const std::vector<glm
     const bool colored = colors.size() == vertexCount;
     const bool hasUvs = m.uvs.size() == vertexCount;
     const std::vector<float> occlusion = mesh::crownOcclusion(m);
-    std::vector<float> interleaved(vertexCount * kVertexFloats, 0.0f);
-    for (std::size_t i = 0; i < vertexCount; ++i) {
-        float* v = &interleaved[i * kVertexFloats];
-        if (hasUvs) {
-            v[9] = m.uvs[i].x;
-            v[10] = m.uvs[i].y;
-        }
-        v[11] = occlusion[i];
-        v[0] = m.positions[i].x;
-        v[1] = m.positions[i].y;
-        v[2] = m.positions[i].z;
-        v[3] = normals[i].x;
-        v[4] = normals[i].y;
-        v[5] = normals[i].z;
-        if (colored) {
-            v[6] = colors[i].x;
-            v[7] = colors[i].y;
-            v[8] = colors[i].z;
-        }
-    }
-    return interleaved;
+    std::vector<ViewVertex> out(vertexCount);
+    for (std::size_t i = 0; i < vertexCount; ++i)
+        out[i] = {m.positions[i], normals[i], colored ? colors[i] : glm::vec3(0.0f),
+                  hasUvs ? m.uvs[i] : glm::vec2(0.0f), occlusion[i]};
+    return out;
 }
 
 } // namespace sylva::ui

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include <QApplication>
 #include <QImage>
@@ -407,7 +408,7 @@ bool Viewport::event(QEvent* event) {
 }
 
 void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame,
-                       std::shared_ptr<const std::vector<float>> vertices) {
+                       std::shared_ptr<const std::vector<ViewVertex>> vertices) {
     mMesh = std::move(mesh);
     mMeshVertices = std::move(vertices);
     mVertexColors.clear();
@@ -594,15 +595,14 @@ void Viewport::uploadMesh() {
     const bool colored = mVertexColors.size() == m.positions.size();
     // The vertices made beside the mesh on a worker, when they fit and no attribute colours
     // replace theirs; else made here.
-    std::vector<float> made;
-    const bool prepared = !colored && mMeshVertices &&
-                          mMeshVertices->size() == m.positions.size() * std::size_t(kVertexFloats);
+    std::vector<ViewVertex> made;
+    const bool prepared = !colored && mMeshVertices && mMeshVertices->size() == m.positions.size();
     if (!prepared) made = interleaveVertices(m, mVertexColors);
-    const std::vector<float>& interleaved = prepared ? *mMeshVertices : made;
+    const std::vector<ViewVertex>& interleaved = prepared ? *mMeshVertices : made;
     mUseVertexColors = colored;
     glBindVertexArray(mMeshVao);
     glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(float)),
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(ViewVertex)),
                  interleaved.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(std::uint32_t)),
@@ -614,15 +614,15 @@ void Viewport::uploadMesh() {
 }
 
 void Viewport::setMeshAttributes() {
-    constexpr GLsizei kStride = kVertexFloats * sizeof(float);
-    const GLint sizes[] = {3, 3, 3, 2, 1};
-    std::uintptr_t offset = 0;
-    for (GLuint a = 0; a < 5; ++a) {
+    constexpr GLsizei kStride = sizeof(ViewVertex);
+    auto at = [](std::size_t offset) { return reinterpret_cast<void*>(offset); };
+    for (GLuint a = 0; a < 5; ++a)
         glEnableVertexAttribArray(a);
-        glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, kStride,
-                              reinterpret_cast<void*>(offset * sizeof(float)));
-        offset += std::uintptr_t(sizes[a]);
-    }
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, position)));
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, normal)));
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, color)));
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, uv)));
+    glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, occlusion)));
 }
 
 void Viewport::bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges) {
@@ -806,8 +806,8 @@ void Viewport::syncTreeBuffers() {
         glGenBuffers(1, &gpu.ibo);
         glBindVertexArray(gpu.vao);
         glBindBuffer(GL_ARRAY_BUFFER, gpu.vbo);
-        const std::vector<float> data = interleaveVertices(*treeMesh, {});
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
+        const std::vector<ViewVertex> data = interleaveVertices(*treeMesh, {});
+        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(ViewVertex)), data.data(),
                      GL_STATIC_DRAW);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.ibo);
         glBufferData(GL_ELEMENT_ARRAY_BUFFER,

@@ -22,6 +22,7 @@
 #include "ui/viewport/impostors.h"
 #include "ui/viewport/orbitcamera.h"
 #include "ui/viewport/picking.h"
+#include "ui/viewport/vertexdata.h"
 #include "ui/viewport/viewlod.h"
 
 class QOpenGLContext;
@@ -119,7 +120,7 @@ public:
     /// makes them (ui/viewport/vertexdata.h), when the caller made them on a worker; else the
     /// viewport makes them when it uploads.
     void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true,
-                 std::shared_ptr<const std::vector<float>> vertices = nullptr);
+                 std::shared_ptr<const std::vector<ViewVertex>> vertices = nullptr);
     /// Colours the mesh per vertex (linear RGB, one per vertex, e.g. attributeColors()), or by
     /// its materials again when \p colors is empty or does not match the mesh.
     void setVertexColors(std::vector<glm::vec3> colors);
@@ -280,7 +281,7 @@ private:
     std::size_t vertexCount() const;
 
     std::shared_ptr<const mesh::Mesh> mMesh;
-    std::shared_ptr<const std::vector<float>> mMeshVertices; ///< made on a worker, or none
+    std::shared_ptr<const std::vector<ViewVertex>> mMeshVertices; ///< made on a worker, or none
     std::vector<glm::vec3> mVertexColors;
     bool mUseVertexColors = false; ///< what the uploaded buffer holds
     glm::vec3 mBoundsLo{-0.5f, 0.0f, -0.5f};

@@ -5,7 +5,10 @@
 //   - a parameter of the generator (the lsystem's angle): everything downstream runs;
 //   - the generator edit with rule tracing, as the editor's preview runs it (the derivation takes
 //     its general path so every branch knows its rule: the click-to-rule feature);
-//   - the same edits evaluated from scratch, for comparison.
+//   - the same edits evaluated from scratch, for comparison;
+//   - the vertices the viewport uploads for the new mesh (ui/viewport/vertexdata.h), which the
+//     preview's worker makes after the evaluation (the editor's species_preview.py compares that
+//     with making them on the GUI thread).
 // Counters: segments, triangles. docs/performance.md has the figures (targets: ≤ 10 ms for a
 // last-node parameter, ≤ 50 ms for an edit to a 20,000-segment tree).
 #include <benchmark/benchmark.h>
@@ -14,6 +17,7 @@
 
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
+#include "ui/viewport/vertexdata.h"
 
 using namespace sylva::graph;
 
@@ -98,7 +102,22 @@ void BM_PreviewGeneratorEdit_Naive(benchmark::State& state) {
     editAndEvaluate(state, "grow", "angle", Value(28.0), Value(30.0), false);
 }
 
+void BM_PreviewViewVertices(benchmark::State& state) {
+    registerBuiltinNodeTypes();
+    omp_set_num_threads(1);
+    Evaluator ev(species(true));
+    const sylva::mesh::Mesh& m = *ev.evaluate(1).mesh;
+    for (auto _ : state) {
+        const auto v = sylva::ui::interleaveVertices(m, {});
+        benchmark::DoNotOptimize(v.data());
+    }
+    state.counters["vertices"] = static_cast<double>(m.vertexCount());
+    state.counters["bytes"] = static_cast<double>(m.vertexCount() * sizeof(sylva::ui::ViewVertex));
+}
+
 } // namespace
+
+BENCHMARK(BM_PreviewViewVertices)->Unit(benchmark::kMillisecond);
 
 // Arguments: leaves (1: a leaves node adds leaf cards, 0: bare branches), OpenMP threads (the
 // editor's preview uses 1: on a shared 2-core machine two spinning threads are slower).
