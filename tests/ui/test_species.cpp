@@ -149,6 +149,15 @@ private Q_SLOTS:
         QVERIFY(runs.count("grow") && runs.count("mesh"));
         QVERIFY(bench()->preview()->result().mesh);
         QVERIFY(bench()->preview()->editToResultMs() > 0.0);
+        // A file parameter's field may be too narrow for its path: the tooltip has all of it,
+        // then what the parameter is.
+        QWidget* file = bench()->parameters()->editor(QStringLiteral("grammar_file"));
+        QVERIFY(file);
+        auto* path = file->findChild<QLineEdit*>();
+        QVERIFY(path && path->text().endsWith(QStringLiteral("alder.lsys")));
+        QVERIFY2(path->toolTip().startsWith(path->text() + QStringLiteral("\n\n")) &&
+                     path->toolTip().endsWith(file->toolTip()),
+                 qPrintable(path->toolTip()));
     }
 
     void savingUnderANewNameKeepsThePanels() {

@@ -558,9 +558,14 @@ QWidget* ParameterPanel::makeEditor(const ParamSpec& spec) {
             const QString f = QFileDialog::getOpenFileName(this, tr("Choose a file"));
             if (!f.isEmpty()) apply(name, Value(f.toStdString()));
         });
-        mShow[name] = [edit](const Value& v) {
+        mShow[name] = [edit, w](const Value& v) {
             const QSignalBlocker b(edit);
             edit->setText(v.isString() ? QString::fromStdString(v.toString()) : QString());
+            // A long path shows its end (the file's name) in the field: the whole path heads
+            // the field's tooltip, above the parameter's explanation (the row's tooltip).
+            edit->setToolTip(edit->text().isEmpty()
+                                 ? QString()
+                                 : QStringLiteral("%1\n\n%2").arg(edit->text(), w->toolTip()));
         };
         return w;
     }
