@@ -31,7 +31,7 @@
 
 namespace {
 
-void installTranslators(QApplication& app) {
+void installTranslators(QCoreApplication& app) {
     // View ▸ Language overrides the system locale.
     const QString chosen = QSettings().value(QStringLiteral("language")).toString();
     const QLocale locale = chosen.isEmpty() ? QLocale() : QLocale(chosen);
@@ -39,10 +39,10 @@ void installTranslators(QApplication& app) {
     auto* qt = new QTranslator(&app);
     if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(qt);
+        QCoreApplication::installTranslator(qt);
     auto* sylva = new QTranslator(&app);
     if (sylva->load(locale, QStringLiteral("sylva"), QStringLiteral("_"), QStringLiteral(":/i18n")))
-        QApplication::installTranslator(sylva);
+        QCoreApplication::installTranslator(sylva);
 }
 
 bool parseSize(const QString& text, QSize& size) {
@@ -83,9 +83,78 @@ void fail(const QString& message) {
     std::fprintf(stderr, "sylva: %s\n", message.toLocal8Bit().constData());
 }
 
+/// The editor's command line; made once the application exists (its texts are translated).
+struct EditorOptions {
+    explicit EditorOptions(QCommandLineParser& parser) {
+        parser.setApplicationDescription(
+            QCoreApplication::translate("main", "Sylva, the procedural tree editor."));
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addPositionalArgument(
+            QStringLiteral("species"),
+            QCoreApplication::translate(
+                "main", "Species or project (.sylva) to open (default: the ternary tree)."),
+            QStringLiteral("[species.json|project.sylva]"));
+        for (const QCommandLineOption* o :
+             {&script, &restore, &discard, &screenshot, &size, &colorBy})
+            parser.addOption(*o);
+    }
+    const QCommandLineOption screenshot{
+        QStringLiteral("screenshot"),
+        QCoreApplication::translate("main", "Render the viewport to <file> (PNG) and exit."),
+        QStringLiteral("file")};
+    const QCommandLineOption size{
+        QStringLiteral("size"),
+        QCoreApplication::translate("main", "Viewport size in pixels, e.g. 1024x768."),
+        QStringLiteral("WxH")};
+    const QCommandLineOption colorBy{
+        QStringLiteral("color-by"),
+        QCoreApplication::translate(
+            "main", "Colour the tree by <mode>: material, light, vigour, age or order."),
+        QStringLiteral("mode")};
+    const QCommandLineOption script{
+        QStringLiteral("script"),
+        QCoreApplication::translate("main",
+                                    "Run the Python script <file> in the editor (after opening "
+                                    "the project, if one is given) and exit with its status."),
+        QStringLiteral("file")};
+    const QCommandLineOption restore{
+        QStringLiteral("restore"),
+        QCoreApplication::translate("main",
+                                    "Restore edits autosaved before a crash without asking.")};
+    const QCommandLineOption discard{
+        QStringLiteral("discard-autosave"),
+        QCoreApplication::translate("main",
+                                    "Discard edits autosaved before a crash without asking.")};
+};
+
+/// Whether the command line only asks for text (--help, --version): then it is answered
+/// without a window system, so that `sylva --help` works on a machine with no display.
+/// (--help-all lists the window system's options too, so it goes through QApplication.)
+bool answeredWithoutDisplay(int argc, char* argv[]) {
+    bool textOnly = false;
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray a(argv[i]);
+        if (a == "--") break;
+        if (a == "-h" || a == "--help" || a == "-?" || a == "-v" || a == "--version")
+            textOnly = true;
+    }
+    if (!textOnly) return false;
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("Sylva"));
+    QCoreApplication::setOrganizationName(QStringLiteral("Sylva"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SYLVA_VERSION));
+    installTranslators(app);
+    QCommandLineParser parser;
+    const EditorOptions options(parser);
+    parser.process(app); // prints the help or the version (or the error) and exits
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
+    if (answeredWithoutDisplay(argc, argv)) return 0;
     sylva::keepFreedMemory(); // re-generation on every edit reuses the previous tree's pages
     sylva::ui::Viewport::installDefaultSurfaceFormat();
     QApplication app(argc, argv);
@@ -96,46 +165,7 @@ int main(int argc, char* argv[]) {
     installTranslators(app);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QApplication::translate("main", "Sylva, the procedural tree editor."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addPositionalArgument(
-        QStringLiteral("species"),
-        QApplication::translate("main",
-                                "Species or project (.sylva) to open (default: the ternary tree)."),
-        QStringLiteral("[species.json|project.sylva]"));
-    const QCommandLineOption screenshotOption(
-        QStringLiteral("screenshot"),
-        QApplication::translate("main", "Render the viewport to <file> (PNG) and exit."),
-        QStringLiteral("file"));
-    const QCommandLineOption sizeOption(
-        QStringLiteral("size"),
-        QApplication::translate("main", "Viewport size in pixels, e.g. 1024x768."),
-        QStringLiteral("WxH"));
-    const QCommandLineOption colorByOption(
-        QStringLiteral("color-by"),
-        QApplication::translate(
-            "main", "Colour the tree by <mode>: material, light, vigour, age or order."),
-        QStringLiteral("mode"));
-    const QCommandLineOption scriptOption(
-        QStringLiteral("script"),
-        QApplication::translate("main",
-                                "Run the Python script <file> in the editor (after opening the "
-                                "project, if one is given) and exit with its status."),
-        QStringLiteral("file"));
-    const QCommandLineOption restoreOption(
-        QStringLiteral("restore"),
-        QApplication::translate("main", "Restore edits autosaved before a crash without asking."));
-    const QCommandLineOption discardOption(
-        QStringLiteral("discard-autosave"),
-        QApplication::translate("main", "Discard edits autosaved before a crash without asking."));
-    parser.addOption(scriptOption);
-    parser.addOption(restoreOption);
-    parser.addOption(discardOption);
-    parser.addOption(screenshotOption);
-    parser.addOption(sizeOption);
-    parser.addOption(colorByOption);
+    const EditorOptions options(parser);
     parser.process(app);
 
     const QStringList positional = parser.positionalArguments();
@@ -143,19 +173,19 @@ int main(int argc, char* argv[]) {
         fail(QApplication::translate("main", "expected at most one species or project file"));
         return 2;
     }
-    const bool screenshotMode = parser.isSet(screenshotOption);
+    const bool screenshotMode = parser.isSet(options.screenshot);
     QSize size = screenshotMode ? QSize(960, 720) : QSize();
-    if (parser.isSet(sizeOption) && !parseSize(parser.value(sizeOption), size)) {
+    if (parser.isSet(options.size) && !parseSize(parser.value(options.size), size)) {
         fail(QApplication::translate("main", "--size expects WxH between 16 and 8192, got '%1'")
-                 .arg(parser.value(sizeOption)));
+                 .arg(parser.value(options.size)));
         return 2;
     }
 
     sylva::ui::ColorBy colorBy = sylva::ui::ColorBy::Material;
-    if (parser.isSet(colorByOption) && !parseColorBy(parser.value(colorByOption), colorBy)) {
+    if (parser.isSet(options.colorBy) && !parseColorBy(parser.value(options.colorBy), colorBy)) {
         fail(QApplication::translate(
                  "main", "--color-by expects material, light, vigour, age or order, got '%1'")
-                 .arg(parser.value(colorByOption)));
+                 .arg(parser.value(options.colorBy)));
         return 2;
     }
 
@@ -171,14 +201,14 @@ int main(int argc, char* argv[]) {
         });
     }
 
-    const bool scriptMode = parser.isSet(scriptOption);
+    const bool scriptMode = parser.isSet(options.script);
     // A crash left autosaved edits: restore them (asked, or as the options say) before
     // anything else is opened.
     bool restored = false;
-    if (parser.isSet(discardOption))
+    if (parser.isSet(options.discard))
         window.autosave().discard();
-    else if (!screenshotMode && (parser.isSet(restoreOption) || !scriptMode))
-        restored = window.offerRecovery(parser.isSet(restoreOption));
+    else if (!screenshotMode && (parser.isSet(options.restore) || !scriptMode))
+        restored = window.offerRecovery(parser.isSet(options.restore));
 
     if (!positional.isEmpty())
         window.openSpecies(QFileInfo(positional.first()).absoluteFilePath());
@@ -186,7 +216,7 @@ int main(int argc, char* argv[]) {
         window.openDefaultPreset();
 
     if (scriptMode) {
-        const QString script = QFileInfo(parser.value(scriptOption)).absoluteFilePath();
+        const QString script = QFileInfo(parser.value(options.script)).absoluteFilePath();
         // Scripts decide for themselves: no dialog waits for a person.
         window.setAskHandler([](const QString&, bool canSave) {
             return canSave ? sylva::ui::MainWindow::Answer::Discard
@@ -200,7 +230,7 @@ int main(int argc, char* argv[]) {
     }
 
     if (screenshotMode) {
-        const QString output = QFileInfo(parser.value(screenshotOption)).absoluteFilePath();
+        const QString output = QFileInfo(parser.value(options.screenshot)).absoluteFilePath();
         QObject::connect(&window, &sylva::ui::MainWindow::generationFinished, &app,
                          [&window, output](bool ok) {
                              if (!ok) {
