@@ -12,32 +12,12 @@ namespace sylva::doc {
 
 using graph::Value;
 
-bool isFileParam(const std::string& key) {
-    return key == "file" || (key.size() > 5 && key.compare(key.size() - 5, 5, "_file") == 0);
-}
-
 std::string relativeTo(const QString& baseDir, const QString& absolute) {
     if (baseDir.isEmpty()) return absolute.toStdString();
     return QDir(baseDir).relativeFilePath(absolute).toStdString();
 }
 
 namespace {
-
-/// Calls \p f on every file reference of \p value's members: those named as files, also
-/// inside nested objects and arrays (a mesh envelope's `{"shape": "mesh", "file": …}`, an adapt
-/// node's obstacles), which a save under another folder once left pointing nowhere.
-template <typename F> void forEachFileIn(Value& value, F& f) {
-    if (value.isObject()) {
-        for (auto& [key, member] : value.objectRef())
-            if (isFileParam(key) && member.isString())
-                f(member);
-            else
-                forEachFileIn(member, f);
-    } else if (value.isArray()) {
-        for (Value& element : value.arrayRef())
-            forEachFileIn(element, f);
-    }
-}
 
 template <typename F> void forEachFileParam(Value& graph, F&& f) {
     if (!graph.isObject()) return;
@@ -48,7 +28,7 @@ template <typename F> void forEachFileParam(Value& graph, F&& f) {
         if (!node.isObject()) continue;
         auto params = node.objectRef().find("params");
         if (params == node.objectRef().end() || !params->second.isObject()) continue;
-        forEachFileIn(params->second, f);
+        graph::forEachFileIn(params->second, f);
     }
 }
 
@@ -98,14 +78,13 @@ bool isProjectFile(const QString& path) {
 
 void addSpeciesSourceFiles(const graph::SpeciesGraph& graph, QStringList& out) {
     for (const graph::NodeDesc& node : graph.nodes) {
-        if (!node.params.isObject()) continue;
-        for (const auto& [key, value] : node.params.toObject()) {
-            if (!isFileParam(key) || !value.isString()) continue;
+        Value params = node.params; // forEachFileIn() walks a mutable value
+        graph::forEachFileIn(params, [&](const Value& value) {
             std::filesystem::path p(value.toString());
             if (p.is_relative() && !graph.baseDir.empty()) p = graph.baseDir / p;
             const QString file = QFileInfo(QString::fromStdString(p.string())).absoluteFilePath();
             if (!out.contains(file)) out << file;
-        }
+        });
     }
 }
 

@@ -6,14 +6,11 @@
 #include <QStringList>
 
 #include "document/project.h"
+#include "engine/graph/fileparams.h"
 #include "engine/graph/graph.h"
 #include "engine/graph/value.h"
 
 namespace sylva::doc {
-
-/// Whether a node parameter names a file (`file`, `grammar_file`, `*_file`): the one place that
-/// decides it, for path rewriting and for watching a species' sources.
-bool isFileParam(const std::string& key);
 
 /// \p absolute written relative to \p baseDir (as project files store paths); absolute when
 /// \p baseDir is empty.
@@ -32,8 +29,8 @@ Project rebaseProject(const Project& project, const QString& newBaseDir);
 /// implementation's scene description) rather than a species or grammar.
 bool isProjectFile(const QString& path);
 
-/// Appends to \p out the files that \p graph's nodes read (isFileParam parameters), resolved
-/// against the graph's folder: absolute, no duplicates.
+/// Appends to \p out the files that \p graph's nodes read (graph::isFileParam parameters, nested
+/// ones too), resolved against the graph's folder: absolute, no duplicates.
 void addSpeciesSourceFiles(const graph::SpeciesGraph& graph, QStringList& out);
 
 /// The files a project reads, absolute: species files, their graphs' file parameters (grammar

@@ -234,6 +234,22 @@ private Q_SLOTS:
         settle();
     }
 
+    /// Save As into another folder keeps every tree (the species and meshes are the same files,
+    /// named by other relative paths): nothing regrows.
+    void saveAsElsewhereKeepsTheTrees() {
+        settle();
+        QVERIFY(QDir().mkpath(mDir.filePath(QStringLiteral("elsewhere"))));
+        for (const QString& path :
+             {mDir.filePath(QStringLiteral("elsewhere/moved.sylva")), mProject}) {
+            QSignalSpy generated(mWindow.get(), &MainWindow::generationFinished);
+            QVERIFY(mWindow->saveAs(path));
+            QTRY_VERIFY_WITH_TIMEOUT(generated.count() >= 1, 20000);
+            settle();
+            QCOMPARE(mWindow->generator().result().stats.at("regrown"), 0.0);
+            QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+        }
+    }
+
     /// A corrupt file says where it is broken and keeps the open document.
     void corruptFileKeepsTheDocument() {
         const QByteArray before = document().serialized();

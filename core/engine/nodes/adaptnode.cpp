@@ -32,12 +32,15 @@ glm::vec3 vec3OrUniform(const Value& v, const std::string& what) {
 std::string cacheKey(const std::vector<ObstacleSpec>& specs) {
     std::string key;
     for (const ObstacleSpec& s : specs) {
-        std::error_code ec;
-        const auto size = std::filesystem::file_size(s.file, ec);
-        const auto time = std::filesystem::last_write_time(s.file, ec);
-        key += std::filesystem::absolute(s.file, ec).string() + '|' +
-               std::to_string(ec ? 0 : size) + '|' +
-               std::to_string(time.time_since_epoch().count()) + '|';
+        std::error_code sizeError, timeError, pathError;
+        const auto size = std::filesystem::file_size(s.file, sizeError);
+        const auto time = std::filesystem::last_write_time(s.file, timeError);
+        // One spelling per file (a project saved in another folder names it through another
+        // relative path): the same scene, so the trees adapted to it are kept.
+        std::filesystem::path file = std::filesystem::weakly_canonical(s.file, pathError);
+        if (pathError) file = std::filesystem::absolute(s.file, pathError).lexically_normal();
+        key += file.string() + '|' + std::to_string(sizeError ? 0 : size) + '|' +
+               std::to_string(timeError ? 0 : time.time_since_epoch().count()) + '|';
         const MeshTransform& t = s.transform;
         for (const glm::vec3* v : {&t.translate, &t.rotateDeg, &t.scale})
             for (int k = 0; k < 3; ++k)

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "engine/graph/fileparams.h"
+
 namespace sylva::scene {
 
 namespace {
@@ -32,14 +34,17 @@ std::uint64_t speciesHash(const graph::SpeciesGraph& g) {
     Fnv h;
     h.text(g.name);
     h.text(g.output);
-    h.text(g.baseDir.string());
+    // Not the folder itself: the files the parameters name, each spelled one way. A project
+    // saved into another folder names the same species file, grammar and meshes through other
+    // relative paths, and must not regrow its trees for that; another file is another tree.
+    // (The folder matters only through them: graph::isFileParam is the rule for both.)
     h.pod(g.traits.woodDensity);
     h.pod(g.traits.carbonFraction);
     h.pod(g.traits.crownRadius);
     for (const graph::NodeDesc& n : g.nodes) {
         h.text(n.id);
         h.text(n.type);
-        h.text(n.params.toJson());
+        h.text(graph::withCanonicalFiles(n.params, g.baseDir).toJson());
         for (const std::string& input : n.inputs)
             h.text(input);
         h.text("|");

@@ -12,12 +12,13 @@ namespace sylva::scene {
 
 /// Finished trees kept between builds of one scene, so that an editor's regeneration after an
 /// edit regrows only the trees whose inputs changed. A tree's key hashes everything its result
-/// depends on: the species graph (nodes, parameters, inputs, traits, folder), the instance (id,
-/// position, rotation, scale, growth stage, seed), the neighbouring crowns it adapts to, the
-/// obstacles' identity (ForestOptions::obstaclesKey), the light, the camera distance when LOD
-/// is on, and the build options. Files a graph reads (grammar files) are not hashed: call
-/// clear() when one changes on disk. Self-organizing trees grow together in one stand and are
-/// never cached. Thread-safe: buildForest reads and writes it from its worker threads.
+/// depends on: the species graph (nodes, parameters with the files they name made absolute and
+/// canonical, inputs, traits; not the folder, so a project saved elsewhere keeps its trees), the
+/// instance (id, position, rotation, scale, growth stage, seed), the neighbouring crowns it
+/// adapts to, the obstacles' identity (ForestOptions::obstaclesKey), the light, the camera
+/// distance when LOD is on, and the build options. Files a graph reads (grammar files) are not
+/// hashed: call clear() when one changes on disk. Self-organizing trees grow together in one stand
+/// and are never cached. Thread-safe: buildForest reads and writes it from its worker threads.
 class TreeCache {
 public:
     /// Starts a build: counters reset; entries not used by this build are dropped by

@@ -290,7 +290,7 @@ TEST_F(DocumentTest, EveryPresetAppliesAndRoundTrips) {
     // rebased to the project's folder, they name the same files.
     std::function<graph::Value(const graph::Value&, const std::string&)> fileNames =
         [&fileNames](const graph::Value& v, const std::string& key) -> graph::Value {
-        if (v.isString() && doc::isFileParam(key))
+        if (v.isString() && graph::isFileParam(key))
             return graph::Value(
                 QFileInfo(QString::fromStdString(v.toString())).fileName().toStdString());
         if (v.isObject()) {
@@ -541,8 +541,8 @@ TEST(FileRefs, SourceFilesOfTheDemo) {
     EXPECT_TRUE(has("presets/lsystem/alder.lsys"));
     EXPECT_TRUE(has("meshes/wall.obj"));
     EXPECT_TRUE(has("meshes/boulder.obj"));
-    EXPECT_TRUE(doc::isFileParam("grammar_file"));
-    EXPECT_FALSE(doc::isFileParam("profile"));
+    EXPECT_TRUE(graph::isFileParam("grammar_file"));
+    EXPECT_FALSE(graph::isFileParam("profile"));
 }
 
 // A species graph kept in the project names files inside nested parameters too (a mesh

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
 
 using namespace sylva;
 
@@ -80,4 +81,39 @@ TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
     EXPECT_LT(cache.misses(), trees / 2);
     expectSame(fourth, build(moved, nullptr));
     EXPECT_LE(cache.size(), trees); // only the last build's trees are kept
+}
+
+TEST(TreeCache, SpeciesAreKeyedByTheFilesTheyNameNotByTheirFolder) {
+    // A project saved into another folder names the same species file, grammar and meshes by
+    // other relative paths (its inline species' paths are rebased): its trees are the same and
+    // must not regrow. Another file is another species.
+    const std::filesystem::path tmp = std::filesystem::temp_directory_path();
+    auto species = [](const std::filesystem::path& dir, const std::string& grammar,
+                      const std::string& obstacle) {
+        graph::SpeciesGraph g;
+        g.name = "alder";
+        g.output = "grow";
+        g.baseDir = dir;
+        graph::Value::Object adapt{{"obstacles", graph::Value::Array{graph::Value::Object{
+                                                     {"file", obstacle}, {"scale", 2.0}}}}};
+        g.nodes.push_back({"grow", "lsystem", graph::Value::Object{{"grammar_file", grammar}}, {}});
+        g.nodes.push_back({"adapt", "adapt", graph::Value(adapt), {"grow"}});
+        return g;
+    };
+    const std::uint64_t there =
+        scene::speciesHash(species(tmp / "project", "../presets/alder.lsys", "meshes/wall.obj"));
+    // The same files named from another folder, and through a roundabout spelling of it.
+    EXPECT_EQ(scene::speciesHash(species(tmp / "elsewhere" / "deeper", "../../presets/alder.lsys",
+                                         "../../project/meshes/wall.obj")),
+              there);
+    EXPECT_EQ(scene::speciesHash(species(tmp / "x" / ".." / "project", "../presets/alder.lsys",
+                                         "meshes/wall.obj")),
+              there);
+    // The same relative names from another folder are other files: another species.
+    EXPECT_NE(
+        scene::speciesHash(species(tmp / "elsewhere", "../presets/alder.lsys", "meshes/wall.obj")),
+        there);
+    EXPECT_NE(
+        scene::speciesHash(species(tmp / "project", "../presets/alder.lsys", "meshes/boulder.obj")),
+        there);
 }

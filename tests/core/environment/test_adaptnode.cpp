@@ -111,4 +111,9 @@ TEST(AdaptNode, ObstacleScenesAreCachedByFileAndTransform) {
     EXPECT_NE(a.get(), c.get());
     EXPECT_NEAR(c->lo().x, 0.9f, 1e-6f);
     EXPECT_NE(env::loadObstacleScene({{wall, {}}}, false).get(), a.get());
+    // The same file spelled through another folder (a project saved elsewhere names it by
+    // another relative path) is the same scene.
+    const std::filesystem::path roundabout =
+        std::filesystem::path(SYLVA_TEST_DATA_DIR) / "obstacles" / ".." / "obstacles" / "wall.obj";
+    EXPECT_EQ(env::loadObstacleScene({{roundabout, {}}}).get(), a.get());
 }
