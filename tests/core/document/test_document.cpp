@@ -559,3 +559,22 @@ TEST(FileRefs, NestedFilesAreRebased) {
     EXPECT_EQ(params.find("obstacles")->toArray()[0].find("file")->toString(), "../a/rock.obj");
     EXPECT_EQ(params.find("profile")->toString(), "keep/me"); // not a file
 }
+
+// The files an editor watches for a species include those named inside nested parameters (an
+// adapt node's obstacles, a mesh envelope): an edit to such a mesh on disk regrows the trees.
+TEST(FileRefs, NestedFilesAreWatched) {
+    graph::SpeciesGraph g;
+    g.baseDir = "/p/a";
+    g.nodes.push_back({"grow",
+                       "space_colonization",
+                       graph::Value::parseJson(R"({"envelope":{"shape":"mesh",
+                           "file":"meshes/crown.obj"},"grammar_file":"g.lsys",
+                           "obstacles":[{"file":"/q/rock.obj","scale":2}],"profile":"keep/me"})"),
+                       {}});
+    QStringList files;
+    doc::addSpeciesSourceFiles(g, files);
+    files.sort();
+    EXPECT_EQ(files,
+              QStringList({QStringLiteral("/p/a/g.lsys"), QStringLiteral("/p/a/meshes/crown.obj"),
+                           QStringLiteral("/q/rock.obj")}));
+}
