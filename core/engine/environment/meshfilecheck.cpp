@@ -4,9 +4,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -52,10 +55,18 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
         const std::uintmax_t read = in.eof() ? fileSize : static_cast<std::uintmax_t>(in.tellg());
         if (read > kMaxPlyHeaderBytes) fail("header is longer than 1 MiB");
         if (!line.empty() && line.back() == '\r') line.pop_back();
+        const std::string at = "header line " + std::to_string(lineNo) + ": ";
+        // Assimp also ends a header line at \r, \0 and \f, so such a byte could hide a line from
+        // this check (an element inside a comment): a header is text, these bytes are refused.
+        for (const char ch : line)
+            if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t') {
+                char hex[8];
+                std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned>(ch));
+                fail(at + "holds the control character " + hex + "; the header must be text");
+            }
         std::istringstream words(line);
         std::string key, a, b, c, extra;
         words >> key;
-        const std::string at = "header line " + std::to_string(lineNo) + ": ";
         if (lineNo == 1) {
             if (key != "ply" || (words >> extra)) fail("file does not start with a 'ply' line");
         } else if (key == "end_header") {
@@ -81,6 +92,18 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
                 throw LimitExceeded(where + "element '" + e.name + "' declares " + b +
                                     " items, more than the limit of " + std::to_string(maxItems) +
                                     "; decimate the mesh");
+            // Assimp sizes its vertex (face) arrays by the first vertex (face or tristrips)
+            // element and writes the items of a later one at their index, past the arrays of a
+            // smaller first one (fuzz finding 24: heap metadata overwritten).
+            const auto faces = [](const std::string& name) {
+                return name == "face" || name == "tristrips";
+            };
+            for (const PlyElement& earlier : elements)
+                if ((e.name == "vertex" && earlier.name == "vertex") ||
+                    (faces(e.name) && faces(earlier.name)))
+                    fail(at + "a second " + (e.name == "vertex" ? "vertex" : "face") +
+                         " element ('" + earlier.name + "' came first); a mesh has one " +
+                         "vertex element and one face or tristrips element");
             elements.push_back(e);
         } else if (key == "property") {
             if (elements.empty()) fail(at + "a property before any element");
@@ -124,6 +147,190 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
             fail("data is truncated: the header declares " + std::to_string(need) +
                  " lines of items, the file has " + std::to_string(lines));
     }
+}
+
+/// Most values in one vertex of a Collada index list (an `<input>`'s offset is below it).
+constexpr std::uint64_t kMaxColladaInputOffsets = 64;
+
+/// Collada accessors (fuzz finding 25): Debian's Assimp 5.2.5 reads an accessor's items
+/// (`offset + index × stride + param`) from its data array without comparing them with the
+/// array's length: an `offset` mutated to 400000000 read far past it (SEGV), a longer accessor
+/// read past the end, and one naming a `Name_array` read its empty number array (SEGV). The
+/// element tags are read as XML writes them (quotes of either kind, spaces around `=`), comments
+/// skipped. Obstacles are static geometry: skins (`<controller>`) and animations, the only users
+/// of name arrays, are refused with the name arrays themselves; every accessor naming a
+/// `float_array` of the file must fit in it; every primitive needs a VERTEX input.
+void checkColladaAccessors(const std::string& text, const std::string& where,
+                           const std::function<std::string(std::size_t)>& lineOf,
+                           std::uint64_t maxCount) {
+    struct Tag {
+        std::string name;
+        std::vector<std::pair<std::string, std::string>> attributes;
+        std::size_t at = 0;
+        bool closing = false, selfClosing = false;
+        const std::string* attribute(const char* key) const {
+            for (const auto& [k, v] : attributes)
+                if (k == key) return &v;
+            return nullptr;
+        }
+    };
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    std::vector<Tag> tags;
+    for (std::size_t i = text.find('<'); i != std::string::npos; i = text.find('<', i)) {
+        if (text.compare(i, 4, "<!--") == 0) { // comments, and CDATA, hold no elements
+            const std::size_t end = text.find("-->", i + 4);
+            i = end == std::string::npos ? text.size() : end + 3;
+            continue;
+        }
+        if (text.compare(i, 9, "<![CDATA[") == 0) {
+            const std::size_t end = text.find("]]>", i + 9);
+            i = end == std::string::npos ? text.size() : end + 3;
+            continue;
+        }
+        Tag tag;
+        tag.at = i++;
+        if (i < text.size() && text[i] == '/') {
+            tag.closing = true;
+            ++i;
+        }
+        while (i < text.size() && !space(text[i]) && text[i] != '>' && text[i] != '/' &&
+               text[i] != '<')
+            tag.name += text[i++];
+        for (;;) { // attributes: name [spaces] = [spaces] 'value' or "value"
+            while (i < text.size() && space(text[i]))
+                ++i;
+            if (i >= text.size() || text[i] == '>' || text[i] == '<') break;
+            if (text[i] == '/') {
+                tag.selfClosing = true;
+                ++i;
+                continue;
+            }
+            std::string key;
+            while (i < text.size() && !space(text[i]) && text[i] != '=' && text[i] != '>' &&
+                   text[i] != '/' && text[i] != '<')
+                key += text[i++];
+            while (i < text.size() && space(text[i]))
+                ++i;
+            if (i >= text.size() || text[i] != '=') {
+                if (key.empty()) ++i; // a stray byte
+                continue;
+            }
+            ++i;
+            while (i < text.size() && space(text[i]))
+                ++i;
+            if (i >= text.size() || (text[i] != '"' && text[i] != '\'')) continue;
+            const std::size_t close = text.find(text[i], i + 1);
+            if (close == std::string::npos) break;
+            tag.attributes.emplace_back(key, text.substr(i + 1, close - i - 1));
+            i = close + 1;
+        }
+        tags.push_back(std::move(tag));
+    }
+
+    // An attribute's value as a whole number from `least` to `most`, or `fallback` when absent.
+    auto whole = [&](const Tag& tag, const char* key, std::uint64_t least, std::uint64_t most,
+                     std::uint64_t fallback) {
+        const std::string* value = tag.attribute(key);
+        if (!value) return fallback;
+        std::uint64_t n = 0;
+        const auto [ptr, ec] = std::from_chars(value->data(), value->data() + value->size(), n);
+        if (value->empty() || ec != std::errc() || ptr != value->data() + value->size() ||
+            n < least || n > most)
+            throw InvalidInput(where + "<" + tag.name + "> at line " + lineOf(tag.at) + ": " + key +
+                               "=\"" + value->substr(0, 32) + "\" is not a whole number from " +
+                               std::to_string(least) + " to " + std::to_string(most));
+        return n;
+    };
+    std::map<std::string, std::uint64_t> arrays; // float_array id -> its count (the least)
+    for (const Tag& tag : tags) {
+        if (tag.closing) continue;
+        if (tag.name == "controller" || tag.name == "animation" || tag.name == "Name_array" ||
+            tag.name == "IDREF_array")
+            throw InvalidInput(where + "<" + tag.name + "> at line " + lineOf(tag.at) +
+                               ": obstacles are static geometry; export the obstacle without "
+                               "its skin and animations");
+        if (tag.name == "accessor")
+            whole(tag, "count", 1, maxCount, 0); // the scan above read count="…" only
+        // An input's offset picks its index in each vertex's tuple of the index list: Assimp
+        // reads it as a signed number (-1 read before the list) and reserves the list times
+        // (offset + 1) (offset="100000000": out of memory). Exporters use a handful.
+        if (tag.name == "input") whole(tag, "offset", 0, kMaxColladaInputOffsets - 1, 0);
+        if (tag.name == "float_array") {
+            const std::string* id = tag.attribute("id");
+            const std::uint64_t count = whole(tag, "count", 1, maxCount, 0);
+            const std::string key = id ? *id : std::string();
+            const auto [it, fresh] = arrays.emplace(key, count);
+            if (!fresh) it->second = std::min(it->second, count);
+        }
+    }
+    // Each accessor with its params (Assimp counts every <param> below it, at any depth).
+    std::vector<std::pair<const Tag*, std::uint64_t>> open; // accessors not closed yet
+    auto check = [&](const Tag& accessor, std::uint64_t params) {
+        const std::string* source = accessor.attribute("source");
+        if (!source || source->empty() || (*source)[0] != '#') return; // Assimp refuses it
+        const auto array = arrays.find(source->substr(1));
+        if (array == arrays.end()) return; // Assimp refuses a source it cannot resolve
+        const std::uint64_t count = whole(accessor, "count", 1, maxCount, 0);
+        const std::uint64_t offset = whole(accessor, "offset", 0, maxCount, 0);
+        const std::uint64_t stride = whole(accessor, "stride", 0, maxCount, 1);
+        if (count == 0) return; // Assimp reads no item of it
+        // All at most 9·10^7: no overflow in 64 bits.
+        const std::uint64_t end =
+            offset + (count - 1) * stride + std::max<std::uint64_t>(params, 1);
+        if (end > array->second)
+            throw InvalidInput(where + "<accessor> at line " + lineOf(accessor.at) + " reads " +
+                               std::to_string(end) + " values (offset " + std::to_string(offset) +
+                               ", count " + std::to_string(count) + ", stride " +
+                               std::to_string(stride) + ", " + std::to_string(params) +
+                               " params) from '" + array->first + "', which holds " +
+                               std::to_string(array->second));
+    };
+    for (const Tag& tag : tags) {
+        if (tag.closing) {
+            if (tag.name == "accessor" && !open.empty()) {
+                check(*open.back().first, open.back().second);
+                open.pop_back();
+            }
+            continue;
+        }
+        if (tag.name == "param")
+            for (auto& accessor : open)
+                ++accessor.second;
+        if (tag.name == "accessor") {
+            if (tag.selfClosing)
+                check(tag, 0);
+            else
+                open.emplace_back(&tag, 0);
+        }
+    }
+    for (const auto& [accessor, params] : open) // never closed: Assimp's parser refuses it
+        check(*accessor, params);
+
+    // A primitive without a VERTEX input leaves Assimp's per-vertex offset at SIZE_MAX, and it
+    // reads its index list at base − 1 (valgrind: 8 bytes before the list).
+    auto primitive = [](const std::string& name) {
+        return name == "triangles" || name == "polylist" || name == "polygons" || name == "lines" ||
+               name == "linestrips" || name == "tristrips" || name == "trifans";
+    };
+    std::vector<std::pair<const Tag*, bool>> primitives; // open ones, and whether they have it
+    auto noVertex = [&](const Tag& tag) {
+        return InvalidInput(where + "<" + tag.name + "> at line " + lineOf(tag.at) +
+                            " has no input of semantic VERTEX");
+    };
+    for (const Tag& tag : tags) {
+        if (tag.closing && primitive(tag.name) && !primitives.empty()) {
+            if (!primitives.back().second) throw noVertex(*primitives.back().first);
+            primitives.pop_back();
+        } else if (!tag.closing && primitive(tag.name)) {
+            if (tag.selfClosing) throw noVertex(tag);
+            primitives.emplace_back(&tag, false);
+        } else if (!tag.closing && tag.name == "input" && !primitives.empty()) {
+            const std::string* semantic = tag.attribute("semantic");
+            if (semantic && *semantic == "VERTEX") primitives.back().second = true;
+        }
+    }
+    for (const auto& [tag, vertex] : primitives)
+        if (!vertex) throw noVertex(*tag);
 }
 
 /// Collada: Assimp 5.2.5 reserves what a `count` attribute declares (a polylist of 2·10^9
@@ -204,6 +411,7 @@ void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::siz
             }
         }
     }
+    checkColladaAccessors(text, where, lineOf, maxCount);
 }
 
 /// Binary glTF (GLB): Debian's Assimp 5.2.5 allocates the JSON chunk's declared length (plus

@@ -15,14 +15,19 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// the file is handed to it (fuzzing found Assimp reading past a PLY header that has no
 /// `end_header`). Today: PLY files (by extension or by their `ply` first line) must have a
 /// well-formed header (format, element and property lines, `end_header`), element counts of at
-/// most \p maxItems, and at least as many data bytes (binary) or lines (ASCII) as the header
-/// declares. Collada files (by extension or a `<COLLADA` root element) must declare every
-/// `count` as a whole number from 1 to 9·maxItems (every data array must declare one) and hold
-/// only whole numbers in their index
+/// most \p maxItems, at most one `vertex` element and one `face` or `tristrips` element (Assimp
+/// sizes its arrays by the first and wrote a later, larger one past them: fuzz finding 24), no
+/// control characters in the header (Assimp also ends a line at `\r`, `\0` and `\f`), and at
+/// least as many data bytes (binary) or lines (ASCII) as the header declares. Collada files (by
+/// extension or a `<COLLADA` root element) must declare every `count` as a whole number from 1
+/// to 9·maxItems (every data array must declare one) and hold only whole numbers in their index
 /// lists (`<p>`, `<v>`, `<vcount>`): Assimp reserves what counts declare, crashed on a count of
-/// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. Binary glTF
-/// files (a `glTF` magic, whatever the extension) must be version 1 or 2 and declare a total
-/// length and JSON and binary chunk lengths that fit in the file: Assimp allocates the JSON
+/// 0 or not a number, and asked for 2.4 GB for a stray token in an index list. Every Collada
+/// accessor must fit in the `float_array` it names (`offset + (count − 1)·stride + params`, each a
+/// whole number: Assimp reads them unchecked, SEGV on a large offset), and skins, animations and
+/// name arrays are refused (obstacles are static; an accessor over a name array crashed Assimp).
+/// Binary glTF files (a `glTF` magic, whatever the extension) must be version 1 or 2 and declare a
+/// total length and JSON and binary chunk lengths that fit in the file: Assimp allocates the JSON
 /// chunk's length before checking it (4 GB for a 2 KB file). glTF JSON (binary, `.gltf`, or
 /// any file that starts like JSON) must parse, draw no primitive as a line loop or a
 /// triangle fan or a line strip (modes 2, 6, 3: Assimp builds those from earlier faces, read

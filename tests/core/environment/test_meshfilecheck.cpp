@@ -114,6 +114,70 @@ TEST(MeshFileCheck, RefusesFacesWithoutVertices) {
     EXPECT_NE(m.find("emptyface.ply': cannot read it"), std::string::npos) << m;
 }
 
+// Fuzz finding 24: Assimp 5.2.5 sizes its vertex arrays by the first vertex element and writes
+// every item of a later vertex element at its index, past the arrays of a smaller first one
+// (valgrind: invalid writes just after Assimp's vertex array; ASan, later: heap metadata
+// overwritten). Faces likewise (face and tristrips elements share the face array). The check
+// refuses a second element of either kind before Assimp reads the file.
+TEST(MeshFileCheck, PlyHasOneVertexElementAndOneFaceElement) {
+    const std::string start = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                              "property float y\nproperty float z\nelement face 1\n"
+                              "property list uchar int vertex_indices\n";
+    const std::string triangle = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    struct Case {
+        const char* name;
+        std::string elements, items, message;
+    };
+    const Case cases[] = {
+        {"twovertex.ply",
+         "element vertex 5\nproperty float x\nproperty float y\nproperty float z\n",
+         "0 0 1\n1 0 1\n0 1 1\n1 1 1\n2 2 2\n",
+         "twovertex.ply': cannot read it: PLY header line 9: a second vertex element"},
+        {"twoface.ply", "element face 2\nproperty list uchar int vertex_indices\n",
+         "3 0 1 2\n3 0 2 1\n", "PLY header line 9: a second face element ('face' came first)"},
+        {"facestrips.ply", "element tristrips 1\nproperty list int int vertex_indices\n",
+         "3 0 1 2\n", "PLY header line 9: a second face element ('face' came first)"},
+    };
+    for (const Case& c : cases) {
+        const auto file =
+            writeFile(c.name, start + c.elements + "end_header\n" + triangle + c.items);
+        const std::string m = messageOf<InvalidInput>(file, kMaxObstacleTriangles);
+        EXPECT_NE(m.find(c.message), std::string::npos) << m;
+    }
+    // Other elements may repeat (Assimp reads them into no mesh array).
+    const auto other = writeFile("edges.ply", start +
+                                                  "element edge 1\nproperty int vertex1\n"
+                                                  "element edge 1\nproperty int vertex1\n"
+                                                  "end_header\n" +
+                                                  triangle + "0\n1\n");
+    EXPECT_NO_THROW(checkMeshFile(other));
+}
+
+// Assimp 5.2.5 also ends a PLY header line at \r, \0 and \f: "comment x\relement vertex 5" is a
+// comment for a line-by-line check and a second vertex element for Assimp (the regression
+// overflow-ply-second-vertex-element-in-comment wrote past the vertex array). Header lines are
+// text: control characters other than a tab (and a \r before the \n) are refused.
+TEST(MeshFileCheck, PlyHeaderControlCharactersAreRefused) {
+    for (const char hidden : {'\r', '\0', '\f', '\v'}) {
+        const auto file = writeFile("hidden.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"
+                                                  "property float x\nproperty float y\n"
+                                                  "property float z\ncomment x" +
+                                                      std::string(1, hidden) +
+                                                      "element vertex 5\nend_header\n"
+                                                      "0 0 0\n1 0 0\n0 1 0\n");
+        const std::string m = messageOf<InvalidInput>(file, kMaxObstacleTriangles);
+        EXPECT_NE(m.find("PLY header line 7: holds the control character 0x"), std::string::npos)
+            << m;
+    }
+    // Windows line ends stay fine.
+    std::string crlf;
+    for (const char c : kQuadHeader + kQuadBody) {
+        if (c == '\n') crlf += '\r';
+        crlf += c;
+    }
+    EXPECT_EQ(loadObstacleMesh(writeFile("crlf.ply", crlf)).triangleCount(), 2u);
+}
+
 // The limit on what a PLY header may declare: Assimp reserves memory for it before reading.
 TEST(MeshFileCheck, LimitsDeclaredPlyElementCounts) {
     const auto file = writeFile("huge.ply", "ply\nformat binary_little_endian 1.0\n"
@@ -262,6 +326,56 @@ TEST(MeshFileCheck, ColladaCountsAreWholeNumbersFromOne) {
                   std::string::npos)
             << m;
     }
+}
+
+// Fuzz finding 25 (valgrind, then by hand): Assimp 5.2.5 reads an accessor's items from its data
+// array unchecked. An offset mutated to 400000000 (SEGV), an accessor longer than its array (reads
+// past it: the mesh then varies from run to run), and one naming a Name_array (its number array
+// is empty: SEGV) are refused; so are skins and animations, the only users of name arrays, and
+// attributes XML allows in forms the plain scan misses (single quotes, spaces around '='). An
+// input's offset is read as a signed number (-1 read before the index list) and multiplies the
+// list Assimp reserves (100000000: out of memory): a whole number below 64. A primitive without
+// a VERTEX input made Assimp read before its index list (valgrind).
+TEST(MeshFileCheck, ColladaAccessorsMustFitTheirArrays) {
+    const std::string cube = colladaCube();
+    const std::string accessor = "<accessor count=\"36\" source=\"#a\" stride=\"3\">";
+    struct Case {
+        std::string from, to, message;
+    };
+    const Case cases[] = {
+        {accessor, "<accessor count=\"36\" offset=\"400000000\" source=\"#a\" stride=\"3\">",
+         "Collada <accessor> at line 6: offset=\"400000000\" is not a whole number from 0 to "
+         "90000000"},
+        {accessor, "<accessor count=\"37\" source=\"#a\" stride=\"3\">",
+         "Collada <accessor> at line 6 reads 111 values (offset 0, count 37, stride 3, 3 params) "
+         "from 'a', which holds 108"},
+        {accessor, "<accessor count=\"36\" offset = '1' source=\"#a\" stride=\"3\">",
+         "reads 109 values (offset 1"},
+        {accessor, "<accessor count='0' source=\"#a\" stride=\"3\">",
+         "Collada <accessor> at line 6: count=\"0\" is not a whole number from 1"},
+        {"<float_array id=\"a\" count=\"108\">", "<Name_array id=\"a\" count=\"108\">",
+         "Collada <Name_array> at line 5: obstacles are static geometry"},
+        {"<input offset=\"0\"", "<input offset=\"-1\"",
+         "Collada <input> at line 8: offset=\"-1\" is not a whole number from 0 to 63"},
+        {"semantic=\"VERTEX\"", "semantic=\"VE/TEX\"",
+         "Collada <polylist> at line 8 has no input of semantic VERTEX"},
+        {"<library_geometries>",
+         "<library_controllers><controller id=\"c\"/></library_controllers>"
+         "<library_geometries>",
+         "Collada <controller> at line 4: obstacles are static geometry; export the obstacle "
+         "without its skin and animations"},
+    };
+    for (const Case& c : cases) {
+        std::string text = cube;
+        text.replace(text.find(c.from), c.from.size(), c.to);
+        const std::string m =
+            messageOf<InvalidInput>(writeFile("accessor.dae", text), kMaxObstacleTriangles);
+        EXPECT_NE(m.find(c.message), std::string::npos) << m;
+    }
+    // Comments hold no elements; the cube still loads.
+    std::string text = cube;
+    text.replace(text.find(accessor), 0, "<!-- <accessor count=\"99\" source=\"#a\"/> -->");
+    EXPECT_EQ(loadObstacleMesh(writeFile("commented.dae", text)).triangleCount(), 12u);
 }
 
 namespace {
