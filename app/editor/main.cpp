@@ -83,6 +83,13 @@ void fail(const QString& message) {
     std::fprintf(stderr, "sylva: %s\n", message.toLocal8Bit().constData());
 }
 
+/// The name, organisation (settings) and version of the running application.
+void nameApplication() {
+    QCoreApplication::setApplicationName(QStringLiteral("Sylva"));
+    QCoreApplication::setOrganizationName(QStringLiteral("Sylva"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SYLVA_VERSION));
+}
+
 /// The editor's command line; made once the application exists (its texts are translated).
 struct EditorOptions {
     explicit EditorOptions(QCommandLineParser& parser) {
@@ -141,9 +148,7 @@ bool answeredWithoutDisplay(int argc, char* argv[]) {
     }
     if (!textOnly) return false;
     QCoreApplication app(argc, argv);
-    QCoreApplication::setApplicationName(QStringLiteral("Sylva"));
-    QCoreApplication::setOrganizationName(QStringLiteral("Sylva"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(SYLVA_VERSION));
+    nameApplication();
     installTranslators(app);
     QCommandLineParser parser;
     const EditorOptions options(parser);
@@ -158,9 +163,7 @@ int main(int argc, char* argv[]) {
     sylva::keepFreedMemory(); // re-generation on every edit reuses the previous tree's pages
     sylva::ui::Viewport::installDefaultSurfaceFormat();
     QApplication app(argc, argv);
-    QApplication::setApplicationName(QStringLiteral("Sylva"));
-    QApplication::setOrganizationName(QStringLiteral("Sylva"));
-    QApplication::setApplicationVersion(QStringLiteral(SYLVA_VERSION));
+    nameApplication();
     sylva::ui::Viewport::applySamplesPreference();
     installTranslators(app);
 
