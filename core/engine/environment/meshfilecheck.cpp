@@ -159,14 +159,17 @@ constexpr std::uint64_t kMaxColladaInputOffsets = 64;
 /// element tags are read as XML writes them (quotes of either kind, spaces around `=`), comments
 /// skipped. Obstacles are static geometry: skins (`<controller>`) and animations, the only users
 /// of name arrays, are refused with the name arrays themselves; every accessor naming a
-/// `float_array` of the file must fit in it; every primitive needs a VERTEX input.
-void checkColladaAccessors(const std::string& text, const std::string& where,
-                           const std::function<std::string(std::size_t)>& lineOf,
-                           std::uint64_t maxCount) {
+/// `float_array` of the file must fit in it. The primitives' index lists hold whole numbers only,
+/// and each comes after its primitive's VERTEX input (and a polylist's `<vcount>`), as Assimp
+/// needs them when it reads the list.
+void checkColladaElements(const std::string& text, const std::string& where,
+                          const std::function<std::string(std::size_t)>& lineOf,
+                          std::uint64_t maxCount) {
     struct Tag {
         std::string name;
         std::vector<std::pair<std::string, std::string>> attributes;
-        std::size_t at = 0;
+        std::size_t at = 0;  // its '<'
+        std::size_t end = 0; // just after its '>'
         bool closing = false, selfClosing = false;
         const std::string* attribute(const char* key) const {
             for (const auto& [k, v] : attributes)
@@ -224,6 +227,7 @@ void checkColladaAccessors(const std::string& text, const std::string& where,
             tag.attributes.emplace_back(key, text.substr(i + 1, close - i - 1));
             i = close + 1;
         }
+        tag.end = i < text.size() && text[i] == '>' ? i + 1 : i;
         tags.push_back(std::move(tag));
     }
 
@@ -306,40 +310,81 @@ void checkColladaAccessors(const std::string& text, const std::string& where,
     for (const auto& [accessor, params] : open) // never closed: Assimp's parser refuses it
         check(*accessor, params);
 
-    // A primitive without a VERTEX input leaves Assimp's per-vertex offset at SIZE_MAX, and it
-    // reads its index list at base − 1 (valgrind: 8 bytes before the list).
+    // Index lists (<p>, <v>, <vcount>) hold whole numbers and nothing else up to their end tag.
+    // Assimp reads a list's first run of text only, and, given a token that is not a number,
+    // walks off its counts (2.4 GB asked for, found by fuzz_obstacle); a comment before the token
+    // hid it from a plain scan of the text (3 GB asked for, found with finding 26).
+    for (const Tag& tag : tags) {
+        if (tag.closing || tag.selfClosing ||
+            (tag.name != "p" && tag.name != "v" && tag.name != "vcount"))
+            continue;
+        std::size_t i = tag.end;
+        for (; i < text.size() && text[i] != '<'; ++i) {
+            const char c = text[i];
+            if ((c >= '0' && c <= '9') || space(c)) continue;
+            throw InvalidInput(where + "the index list <" + tag.name + "> at line " + lineOf(i) +
+                               " holds something that is not a whole number");
+        }
+        const std::string endTag = "</" + tag.name;
+        const std::size_t after = i + endTag.size();
+        if (text.compare(i, endTag.size(), endTag) != 0 ||
+            (after < text.size() && text[after] != '>' && !space(text[after])))
+            throw InvalidInput(where + "the index list <" + tag.name + "> at line " +
+                               lineOf(tag.at) +
+                               " holds markup (a comment, CDATA or an element) where only whole "
+                               "numbers belong");
+    }
+
+    // Assimp reads a primitive's children in document order and assembles each index list <p>
+    // with what it has read before it. Without a VERTEX input before it, its per-vertex offset is
+    // SIZE_MAX and it reads the list at base − 1 (valgrind: 8 bytes before the list, finding 25
+    // and again with the input after the list). A polylist's <p> before its <vcount> (or without
+    // one) reads the polygon sizes from an empty array (SEGV at address 0, fuzz finding 26).
     auto primitive = [](const std::string& name) {
         return name == "triangles" || name == "polylist" || name == "polygons" || name == "lines" ||
                name == "linestrips" || name == "tristrips" || name == "trifans";
     };
-    std::vector<std::pair<const Tag*, bool>> primitives; // open ones, and whether they have it
-    auto noVertex = [&](const Tag& tag) {
+    struct Open {
+        const Tag* tag;
+        bool vertex = false, vcount = false;
+    };
+    std::vector<Open> primitives; // the open ones, innermost last
+    auto noVertex = [&](const Tag& tag, const std::string& before) {
         return InvalidInput(where + "<" + tag.name + "> at line " + lineOf(tag.at) +
-                            " has no input of semantic VERTEX");
+                            " has no input of semantic VERTEX" + before);
     };
     for (const Tag& tag : tags) {
         if (tag.closing && primitive(tag.name) && !primitives.empty()) {
-            if (!primitives.back().second) throw noVertex(*primitives.back().first);
+            if (!primitives.back().vertex) throw noVertex(*primitives.back().tag, "");
             primitives.pop_back();
         } else if (!tag.closing && primitive(tag.name)) {
-            if (tag.selfClosing) throw noVertex(tag);
-            primitives.emplace_back(&tag, false);
-        } else if (!tag.closing && tag.name == "input" && !primitives.empty()) {
+            if (tag.selfClosing) throw noVertex(tag, "");
+            primitives.push_back({&tag});
+        } else if (!tag.closing && !primitives.empty()) {
+            Open& open = primitives.back();
             const std::string* semantic = tag.attribute("semantic");
-            if (semantic && *semantic == "VERTEX") primitives.back().second = true;
+            if (tag.name == "input" && semantic && *semantic == "VERTEX") open.vertex = true;
+            if (tag.name == "vcount") open.vcount = true;
+            if (tag.name != "p") continue;
+            const std::string list = " before its index list <p> at line " + lineOf(tag.at);
+            if (!open.vertex) throw noVertex(*open.tag, list);
+            if (open.tag->name == "polylist" && !open.vcount)
+                throw InvalidInput(where + "<polylist> at line " + lineOf(open.tag->at) +
+                                   " has no <vcount> (the number of corners of each polygon)" +
+                                   list);
         }
     }
-    for (const auto& [tag, vertex] : primitives)
-        if (!vertex) throw noVertex(*tag);
+    for (const Open& open : primitives)
+        if (!open.vertex) throw noVertex(*open.tag, "");
 }
 
 /// Collada: Assimp 5.2.5 reserves what a `count` attribute declares (a polylist of 2·10^9
 /// polygons asked for 16 GB) and, given an index list with a token that is not a number, walks
 /// off its counts and asked for 2.4 GB (both found by fuzz_obstacle). Every `count="N"` must be
 /// at most 9·maxItems (a float array of three corners of three coordinates per triangle) and
-/// the index lists (`<p>`, `<v>`, `<vcount>`) hold whole numbers only. A count that is not a
-/// whole number from 1 crashed Assimp (SEGV, found by fuzz_obstacle too), and so did a data array
-/// without a count (SEGV, fuzz finding 14).
+/// the index lists (`<p>`, `<v>`, `<vcount>`) hold whole numbers only (checkColladaElements). A
+/// count that is not a whole number from 1 crashed Assimp (SEGV, found by fuzz_obstacle too), and
+/// so did a data array without a count (SEGV, fuzz finding 14).
 void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::size_t maxItems) {
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: Collada ";
@@ -396,22 +441,7 @@ void checkCollada(const std::filesystem::path& file, std::ifstream& in, std::siz
                                    " has no count attribute");
         }
     }
-    for (const char* tag : {"<p>", "<p ", "<v>", "<v ", "<vcount>", "<vcount "}) {
-        for (std::size_t at = text.find(tag); at != std::string::npos;
-             at = text.find(tag, at + 1)) {
-            std::size_t i = text.find('>', at);
-            if (i == std::string::npos) break;
-            for (++i; i < text.size() && text[i] != '<'; ++i) {
-                const char c = text[i];
-                if ((c >= '0' && c <= '9') || c == ' ' || c == '\t' || c == '\n' || c == '\r')
-                    continue;
-                const std::string name(tag + 1, std::strlen(tag) - 2);
-                throw InvalidInput(where + "the index list <" + name + "> at line " + lineOf(i) +
-                                   " holds something that is not a whole number");
-            }
-        }
-    }
-    checkColladaAccessors(text, where, lineOf, maxCount);
+    checkColladaElements(text, where, lineOf, maxCount);
 }
 
 /// Binary glTF (GLB): Debian's Assimp 5.2.5 allocates the JSON chunk's declared length (plus

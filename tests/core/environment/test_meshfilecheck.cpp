@@ -378,6 +378,60 @@ TEST(MeshFileCheck, ColladaAccessorsMustFitTheirArrays) {
     EXPECT_EQ(loadObstacleMesh(writeFile("commented.dae", text)).triangleCount(), 12u);
 }
 
+// Fuzz finding 26: Assimp 5.2.5 assembles a primitive's index list <p> with what it has read of
+// the primitive before it. A polylist whose <p> comes without a <vcount> before it read the
+// polygon sizes from an empty array (SEGV at address 0); a VERTEX input after the list read before
+// it (valgrind); and a comment in an index list hid a token that is not a number from the scan of
+// its text (Assimp then asked for 3 GB). All three are refused; the cube's parts in Assimp's
+// order, and a strip after its inputs, still load.
+TEST(MeshFileCheck, ColladaIndexListsComeAfterWhatTheyNeed) {
+    const std::string cube = colladaCube();
+    const std::string vertex = "<input offset=\"0\" semantic=\"VERTEX\" source=\"#v\"/>";
+    const std::size_t vcountAt = cube.find("<vcount>");
+    const std::string vcount = cube.substr(vcountAt, cube.find("<p>") - vcountAt);
+    struct Case {
+        std::string from, to, message;
+        bool moved = false; // `from` leaves its place: each case moves it after the list
+    };
+    const Case cases[] = {
+        {vcount, "",
+         "Collada <polylist> at line 8 has no <vcount> (the number of corners of each polygon) "
+         "before its index list <p> at line 9"},
+        {vcount, "</p>" + vcount, "has no <vcount> (the number of corners of each polygon) before",
+         true},
+        {"<vcount>", "<p/><vcount>", "has no <vcount> (the number of corners of each polygon)"},
+        {vertex, "",
+         "Collada <polylist> at line 8 has no input of semantic VERTEX before its "
+         "index list <p> at line 10"},
+        {vertex, "</p>" + vertex, "has no input of semantic VERTEX before its index list <p>",
+         true},
+        {"<p>0 ", "<p><!-- a comment -->0 x ",
+         "Collada the index list <p> at line 10 holds markup (a comment, CDATA or an element) "
+         "where only whole numbers belong"},
+        {"<p>0 ", "<p><![CDATA[0 ]]>", "holds markup"},
+        {"<vcount>3 ", "<vcount>3 <!-- -->", "the index list <vcount> at line 9 holds markup"},
+    };
+    for (const Case& c : cases) {
+        std::string text = cube;
+        if (c.moved) {
+            text.erase(text.find(c.from), c.from.size());
+            text.replace(text.find("</p>"), 4, c.to);
+        } else {
+            text.replace(text.find(c.from), c.from.size(), c.to);
+        }
+        const std::string m =
+            messageOf<InvalidInput>(writeFile("order.dae", text), kMaxObstacleTriangles);
+        EXPECT_NE(m.find(c.message), std::string::npos) << c.to << "\n" << m;
+    }
+    // A strip of 4 corners (2 triangles) after its input, its list ending "</p >", loads.
+    std::string strip = cube;
+    const std::size_t from = strip.find("<polylist");
+    const std::size_t to = strip.find("</polylist>") + std::string("</polylist>").size();
+    strip.replace(from, to - from,
+                  "<tristrips count=\"1\">" + vertex + "<p>0 1 2 3</p ></tristrips>");
+    EXPECT_EQ(loadObstacleMesh(writeFile("strip.dae", strip)).triangleCount(), 2u);
+}
+
 namespace {
 
 void putLe32(std::string& bytes, std::size_t at, std::uint32_t v) {
