@@ -62,8 +62,11 @@ int main(int argc, char** argv) {
     try {
         if (command == "help" || command == "--help" || command == "-h") {
             if (args.size() == 1) {
-                const char* help = commandHelp(args[0]);
-                if (!help) throw UsageError("unknown command '" + args[0] + "'");
+                // `help --help` asks for help's own usage, like every other command.
+                const std::string& name =
+                    args[0] == "--help" || args[0] == "-h" ? std::string("help") : args[0];
+                const char* help = commandHelp(name);
+                if (!help) throw UsageError("unknown command '" + name + "'");
                 std::fputs(help, stdout);
                 return kOk;
             }

@@ -99,7 +99,10 @@ constexpr CommandHelp kHelp[] = {
     {"help",
      "usage: sylva-cli help [command]\n"
      "\n"
-     "Lists the commands, or shows one command's help (the same as sylva-cli <command> --help).\n"},
+     "Lists the commands, or shows one command's help (the same as sylva-cli <command> --help).\n"
+     "\n"
+     "options:\n"
+     "  -h, --help            show this text\n"},
 };
 
 } // namespace

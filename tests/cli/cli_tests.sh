@@ -129,6 +129,12 @@ help_every_command)
       [[ ! -s err.txt ]] || fail "'$form' wrote to stderr: $(cat err.txt)"
     done
   done
+  for form in "help --help" "help -h"; do # help is a command too
+    # shellcheck disable=SC2086
+    run_cli 0 $form
+    head -n 1 out.txt | grep -q "^usage: sylva-cli help " || fail "'$form' printed: $(cat out.txt)"
+    grep -q -- "-h, --help" out.txt || fail "'$form' does not list --help"
+  done
   run_cli 0 forest --help
   for opt in --output --camera --threads --tile --stats --no-lod --no-adapt --no-neighbours \
     --instance-tables --naive-placement --full-precision --fsync; do
