@@ -183,6 +183,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         syncOutlinerSelection();
         mStats->showSelection(*mDocument, mGenerator->result());
     });
+    connect(mViewport, &Viewport::status, this,
+            [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
     connect(mViewport, &Viewport::frameSwapped, this, [this] {
         if (!mAwaitingFrame) return;
         mAwaitingFrame = false;

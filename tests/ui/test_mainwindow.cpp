@@ -290,6 +290,43 @@ private Q_SLOTS:
         viewport->setMesh(tree, false);
     }
 
+    /// A leaf texture whose header declares 20000 × 20000 pixels (a few bytes on disk): the
+    /// leaves are drawn without it, nothing is decoded, and the status bar says why.
+    void oversizedTextureIsReportedAndDrawnWithout() {
+        Viewport* viewport = mWindow->viewport();
+        const std::shared_ptr<const sylva::mesh::Mesh> tree = viewport->mesh();
+        const QString huge = outputPath(QStringLiteral("ui_smoke_huge_leaf.ppm"));
+        QFile file(huge);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("P6\n20000 20000\n255\n");
+        file.write(QByteArray(30, '\x7f'));
+        file.close();
+        const OrbitCamera& cam = viewport->camera();
+        const float half = 0.2f * glm::length(cam.eye() - cam.target());
+        const glm::vec3 t = cam.target(), r = half * cam.right(), u = half * cam.up();
+        auto m = std::make_shared<sylva::mesh::Mesh>();
+        m->positions = {t - r - u, t + r - u, t + r + u, t - r + u};
+        m->normals.assign(4, -cam.forward());
+        m->uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        m->indices = {0, 1, 2, 0, 2, 3};
+        m->submeshes.push_back({"leaf", 0, 6, huge.toStdString()});
+        const QStringList before = viewport->textureProblems();
+        viewport->setMesh(m, false);
+        const QImage image = viewport->grabFramebuffer();
+        QVERIFY(!image.isNull());
+        const QStringList problems = viewport->textureProblems();
+        QCOMPARE(problems.size(), before.size() + 1);
+        QVERIFY2(problems.last().contains(QStringLiteral("ui_smoke_huge_leaf.ppm is 20000 × 20000 "
+                                                         "pixels")),
+                 qPrintable(problems.last()));
+        QTRY_VERIFY(mWindow->statusBar()->currentMessage().contains(
+            QStringLiteral("ui_smoke_huge_leaf.ppm")));
+        // Asked again (the next frame): the file is not read again, nor reported twice.
+        viewport->grabFramebuffer();
+        QCOMPARE(viewport->textureProblems().size(), before.size() + 1);
+        viewport->setMesh(tree, false);
+    }
+
     void statsShowTheGeneratedTree() {
         const GenerationResult& result = mWindow->lastResult();
         QVERIFY(result.ok());

@@ -24,6 +24,7 @@
 
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "ui/viewport/textureimage.h"
 #include "ui/viewport/vertexdata.h"
 
 namespace sylva::ui {
@@ -650,7 +651,19 @@ GLuint Viewport::textureFor(const std::string& material, const std::string& file
     }
     if (auto it = mTextures.find(path); it != mTextures.end()) return it->second;
     GLuint id = 0;
-    QImage image(QString::fromStdString(path));
+    GLint gpuSide = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &gpuSide);
+    TextureImage read = readTextureImage(QString::fromStdString(path),
+                                         gpuSide > 0 ? std::min(gpuSide, kMaxViewTextureSide)
+                                                     : kMaxViewTextureSide);
+    if (!read.problem.isEmpty()) {
+        mTextureProblems << read.problem;
+        // Not from inside a frame: the status bar repaints.
+        QMetaObject::invokeMethod(
+            this, [this, text = read.problem] { Q_EMIT status(text, 15000); },
+            Qt::QueuedConnection);
+    }
+    QImage image = std::move(read.image);
     if (!image.isNull()) {
         // OpenGL's first row is v = 0, the image's bottom (a leaf's stem).
         image = image.convertToFormat(QImage::Format_RGBA8888).mirrored();

@@ -14,6 +14,7 @@
 #include <QRect>
 #include <QSet>
 #include <QString>
+#include <QStringList>
 #include <QSurfaceFormat>
 #include <QWidget>
 
@@ -223,6 +224,10 @@ public:
     QString glInfo() const { return mGlInfo; }
     /// Why rendering is not possible (no 3.3 context, a shader failed), empty when fine.
     QString glError() const { return mGlError; }
+    /// Why texture files were drawn without their texture (unreadable, or larger than
+    /// kMaxTexturePixels), one line each, in the order they were met; each is also emitted as
+    /// status().
+    QStringList textureProblems() const { return mTextureProblems; }
 
     QSize sizeHint() const override { return {960, 720}; }
 
@@ -248,6 +253,8 @@ Q_SIGNALS:
     void cameraChanged();
     /// A frame is on screen.
     void frameSwapped();
+    /// A message for the status bar (a texture drawn without its file), shown for \p ms.
+    void status(const QString& text, int ms);
 
 protected:
     friend class ViewportSurface;
@@ -306,6 +313,7 @@ private:
     bool mGlReady = false;
     QString mGlInfo;
     QString mGlError;
+    QStringList mTextureProblems;
     /// The mesh shader's variants (a bit set): compiled apart so that bark does not pay for
     /// the leaves' texture and cut-out, and keeps the early depth test.
     static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshVariants = 4;
