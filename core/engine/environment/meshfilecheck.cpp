@@ -347,12 +347,33 @@ void checkColladaElements(const std::string& text, const std::string& where,
     struct Open {
         const Tag* tag;
         bool vertex = false, vcount = false;
+        std::uint64_t offsets = 1; // values per vertex in the index list, as far as read
+        std::uint64_t corners = 0; // the polygon sizes of its <vcount>s, summed
+        std::uint64_t count = 0;   // its count attribute (0: absent)
     };
     std::vector<Open> primitives; // the open ones, innermost last
     auto noVertex = [&](const Tag& tag, const std::string& before) {
         return InvalidInput(where + "<" + tag.name + "> at line " + lineOf(tag.at) +
                             " has no input of semantic VERTEX" + before);
     };
+    // The whole numbers of an index list, as Assimp reads them (strtoul10: 32 bits, wrapping).
+    auto numbersOf = [&](const Tag& list, std::uint64_t most, auto&& each) {
+        if (list.selfClosing) return std::uint64_t{0};
+        std::uint64_t n = 0;
+        for (std::size_t i = list.end; i < text.size() && text[i] != '<' && n < most;) {
+            if (space(text[i])) {
+                ++i;
+                continue;
+            }
+            std::uint32_t value = 0;
+            for (; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i)
+                value = value * 10 + static_cast<std::uint32_t>(text[i] - '0');
+            each(value);
+            ++n;
+        }
+        return n;
+    };
+    constexpr std::uint64_t kSaturated = std::uint64_t{1} << 40; // above any file's numbers
     for (const Tag& tag : tags) {
         if (tag.closing && primitive(tag.name) && !primitives.empty()) {
             if (!primitives.back().vertex) throw noVertex(*primitives.back().tag, "");
@@ -360,11 +381,23 @@ void checkColladaElements(const std::string& text, const std::string& where,
         } else if (!tag.closing && primitive(tag.name)) {
             if (tag.selfClosing) throw noVertex(tag, "");
             primitives.push_back({&tag});
+            primitives.back().count = whole(tag, "count", 0, maxCount, 0);
         } else if (!tag.closing && !primitives.empty()) {
             Open& open = primitives.back();
             const std::string* semantic = tag.attribute("semantic");
-            if (tag.name == "input" && semantic && *semantic == "VERTEX") open.vertex = true;
-            if (tag.name == "vcount") open.vcount = true;
+            if (tag.name == "input") {
+                if (semantic && *semantic == "VERTEX") open.vertex = true;
+                if (tag.attribute("offset"))
+                    open.offsets = std::max(
+                        open.offsets, whole(tag, "offset", 0, kMaxColladaInputOffsets - 1, 0) + 1);
+            }
+            if (tag.name == "vcount") {
+                open.vcount = true;
+                if (open.count > 0) // Assimp reads `count` sizes, and none without a count
+                    numbersOf(tag, open.count, [&](std::uint32_t corners) {
+                        open.corners = std::min(kSaturated, open.corners + corners);
+                    });
+            }
             if (tag.name != "p") continue;
             const std::string list = " before its index list <p> at line " + lineOf(tag.at);
             if (!open.vertex) throw noVertex(*open.tag, list);
@@ -372,6 +405,27 @@ void checkColladaElements(const std::string& text, const std::string& where,
                 throw InvalidInput(where + "<polylist> at line " + lineOf(open.tag->at) +
                                    " has no <vcount> (the number of corners of each polygon)" +
                                    list);
+            // Assimp reserves the index list it expects before reading it: 3 × count for
+            // triangles, 2 × count for lines, the corners for a polylist, times the values per
+            // vertex; count="89999999" asked for 2.2 GB, a <vcount> of 4294967295 for 34 GB.
+            // A list shorter than that is an error to Assimp too (but lines, whose count it
+            // corrects: SketchUp writes it wrong), so it is refused before the reservation.
+            const std::string& kind = open.tag->name;
+            const std::uint64_t corners = kind == "triangles"                    ? 3 * open.count
+                                          : kind == "lines"                      ? 2 * open.count
+                                          : kind == "polylist" && open.count > 0 ? open.corners
+                                                                                 : 0;
+            const std::uint64_t expected = corners * open.offsets;
+            const std::uint64_t numbers = numbersOf(tag, kSaturated, [](std::uint32_t) {});
+            const std::uint64_t tolerated =
+                kind == "lines" ? std::max<std::uint64_t>(numbers, 1u << 20) : numbers;
+            if (expected > tolerated)
+                throw InvalidInput(where + "<" + kind + "> at line " + lineOf(open.tag->at) +
+                                   " declares " + std::to_string(corners) + " corners of " +
+                                   std::to_string(open.offsets) + " value(s) each (" +
+                                   std::to_string(expected) +
+                                   " numbers), but its index list <p> at line " + lineOf(tag.at) +
+                                   " holds " + std::to_string(numbers));
         }
     }
     for (const Open& open : primitives)
