@@ -20,8 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const unsigned errors = VALGRIND_COUNT_ERRORS;
     if (errors != seen) {
         seen = errors;
-        const std::string name = std::string(folder ? folder : ".") + "/valgrind-error-" +
-                                 std::to_string(++saved);
+        const std::string name =
+            std::string(folder ? folder : ".") + "/valgrind-error-" + std::to_string(++saved);
         if (std::FILE* f = std::fopen(name.c_str(), "wb")) {
             std::fwrite(data, 1, size, f);
             std::fclose(f);
