@@ -183,8 +183,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         syncOutlinerSelection();
         mStats->showSelection(*mDocument, mGenerator->result());
     });
-    connect(mViewport, &Viewport::status, this,
-            [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
     connect(mViewport, &Viewport::frameSwapped, this, [this] {
         if (!mAwaitingFrame) return;
         mAwaitingFrame = false;
@@ -297,6 +295,12 @@ void MainWindow::createDocks() {
     mWorkbench->setObjectName(QStringLiteral("speciesWorkbench"));
     connect(mWorkbench, &SpeciesWorkbench::status, this,
             [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
+    // A texture drawn without its file, in the scene or in the species preview.
+    for (Viewport* view : {mViewport, mWorkbench->previewViewport()})
+        connect(view, &Viewport::warning, this, [this](const QString& text) {
+            mMessages->add(MessagesPanel::Severity::Warning, text);
+            statusBar()->showMessage(text, 15000);
+        });
     auto* parametersScroll = new QScrollArea(this);
     parametersScroll->setWidget(mWorkbench->parameters());
     parametersScroll->setWidgetResizable(true);

@@ -56,7 +56,6 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
     mPreviewView->setMinimumSize(200, 160);
     mPreviewView->setToolTip(tr("Click a branch or a leaf to select the node that grew it"));
     mPreviewView->installEventFilter(this);
-    connect(mPreviewView, &Viewport::status, this, &SpeciesWorkbench::status);
     {
         // Without multisampling: under a software rasteriser (Mesa llvmpipe) 4× MSAA made the
         // preview's edit → screen time 2.7× longer (docs/performance.md); the preview is

@@ -26,6 +26,7 @@
 
 #include "document/presetlibrary.h"
 #include "engine/mesh/mesh.h"
+#include "ui/document/messagespanel.h"
 #include "ui/document/statspanel.h"
 #include "ui/mainwindow.h"
 #include "ui/viewport/orbitcamera.h"
@@ -291,7 +292,8 @@ private Q_SLOTS:
     }
 
     /// A leaf texture whose header declares 20000 × 20000 pixels (a few bytes on disk): the
-    /// leaves are drawn without it, nothing is decoded, and the status bar says why.
+    /// leaves are drawn without it, nothing is decoded, and the status bar and the Messages
+    /// panel say why.
     void oversizedTextureIsReportedAndDrawnWithout() {
         Viewport* viewport = mWindow->viewport();
         const std::shared_ptr<const sylva::mesh::Mesh> tree = viewport->mesh();
@@ -321,6 +323,10 @@ private Q_SLOTS:
                  qPrintable(problems.last()));
         QTRY_VERIFY(mWindow->statusBar()->currentMessage().contains(
             QStringLiteral("ui_smoke_huge_leaf.ppm")));
+        MessagesPanel* messages = mWindow->messages();
+        QVERIFY(messages->count() > 0);
+        QVERIFY2(messages->message(messages->count() - 1).contains(QStringLiteral("20000 × 20000")),
+                 qPrintable(messages->message(messages->count() - 1)));
         // Asked again (the next frame): the file is not read again, nor reported twice.
         viewport->grabFramebuffer();
         QCOMPARE(viewport->textureProblems().size(), before.size() + 1);

@@ -660,8 +660,7 @@ GLuint Viewport::textureFor(const std::string& material, const std::string& file
         mTextureProblems << read.problem;
         // Not from inside a frame: the status bar repaints.
         QMetaObject::invokeMethod(
-            this, [this, text = read.problem] { Q_EMIT status(text, 15000); },
-            Qt::QueuedConnection);
+            this, [this, text = read.problem] { Q_EMIT warning(text); }, Qt::QueuedConnection);
     }
     QImage image = std::move(read.image);
     if (!image.isNull()) {

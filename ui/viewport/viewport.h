@@ -226,7 +226,7 @@ public:
     QString glError() const { return mGlError; }
     /// Why texture files were drawn without their texture (unreadable, or larger than
     /// kMaxTexturePixels), one line each, in the order they were met; each is also emitted as
-    /// status().
+    /// warning().
     QStringList textureProblems() const { return mTextureProblems; }
 
     QSize sizeHint() const override { return {960, 720}; }
@@ -253,8 +253,9 @@ Q_SIGNALS:
     void cameraChanged();
     /// A frame is on screen.
     void frameSwapped();
-    /// A message for the status bar (a texture drawn without its file), shown for \p ms.
-    void status(const QString& text, int ms);
+    /// Something the user should know about the picture (a texture drawn without its file);
+    /// emitted once per file, after the frame that met it.
+    void warning(const QString& text);
 
 protected:
     friend class ViewportSurface;
