@@ -151,6 +151,11 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
 
 /// Most values in one vertex of a Collada index list (an `<input>`'s offset is below it).
 constexpr std::uint64_t kMaxColladaInputOffsets = 64;
+/// Most nodes of a Collada scene once its instanced nodes are copied in (Assimp copies each
+/// `<instance_node>`'s subtree, about 1.1 KB a node), and the deepest such hierarchy (Assimp
+/// builds it recursively: 20,000 nested nodes overflowed the stack, 5,000 did not).
+constexpr std::uint64_t kMaxColladaSceneNodes = 100000;
+constexpr std::uint64_t kMaxColladaNodeDepth = 1000;
 
 /// Collada accessors (fuzz finding 25): Debian's Assimp 5.2.5 reads an accessor's items
 /// (`offset + index × stride + param`) from its data array without comparing them with the
@@ -430,6 +435,97 @@ void checkColladaElements(const std::string& text, const std::string& where,
     }
     for (const Open& open : primitives)
         if (!open.vertex) throw noVertex(*open.tag, "");
+
+    // The scene graph as Assimp builds it (finding 28, by reading): each <node> with its
+    // child nodes and the nodes its <instance_node>s name, copied in recursively. A node that
+    // instances itself or an ancestor recursed until the stack overflowed; a chain of nodes
+    // instancing the next one twice copies 2^depth nodes; 20,000 nested nodes overflowed the
+    // stack too. Refused: cycles, more than kMaxColladaSceneNodes nodes once copied, and
+    // hierarchies deeper than kMaxColladaNodeDepth.
+    struct Node {
+        const Tag* tag;
+        std::vector<std::size_t> children;  // nested nodes
+        std::vector<std::string> instances; // ids its <instance_node>s name
+    };
+    std::vector<Node> nodes;
+    std::multimap<std::string, std::size_t> byId;
+    std::vector<std::size_t> openNodes;
+    for (const Tag& tag : tags) {
+        // A <visual_scene> is a node to Assimp too, and can be instanced.
+        const bool isNode = tag.name == "node" || tag.name == "visual_scene";
+        if (isNode && tag.closing) {
+            if (!openNodes.empty()) openNodes.pop_back();
+        } else if (isNode) {
+            const std::size_t index = nodes.size();
+            nodes.push_back({&tag, {}, {}});
+            if (!openNodes.empty()) nodes[openNodes.back()].children.push_back(index);
+            // Assimp finds an instanced node by its id, else by its name or id in the scene
+            // (absent: "", a visual scene's name "Scene"): each may be the one.
+            const std::string* id = tag.attribute("id");
+            const std::string* name = tag.attribute("name");
+            byId.emplace(id ? *id : std::string(), index);
+            byId.emplace(name ? *name : tag.name == "node" ? std::string() : "Scene", index);
+            if (!tag.selfClosing) openNodes.push_back(index);
+        } else if (tag.name == "instance_node" && !tag.closing && !openNodes.empty()) {
+            const std::string* url = tag.attribute("url");
+            if (url && !url->empty() && (*url)[0] == '#')
+                nodes[openNodes.back()].instances.push_back(url->substr(1));
+        }
+    }
+    // Post-order over the graph without recursion (a file may hold deep chains): the copied
+    // size and depth of each node, a node met again while open being a cycle.
+    enum class State : std::uint8_t { New, Open, Done };
+    std::vector<State> state(nodes.size(), State::New);
+    std::vector<std::uint64_t> size(nodes.size(), 0), depth(nodes.size(), 0);
+    std::vector<std::vector<std::size_t>> next(nodes.size());
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        next[n] = nodes[n].children;
+        for (const std::string& id : nodes[n].instances) {
+            const auto [from, to] = byId.equal_range(id);
+            for (auto it = from; it != to; ++it)
+                next[n].push_back(it->second);
+        }
+    }
+    for (std::size_t root = 0; root < nodes.size(); ++root) {
+        if (state[root] != State::New) continue;
+        std::vector<std::pair<std::size_t, std::size_t>> stack{{root, 0}}; // node, next edge
+        state[root] = State::Open;
+        while (!stack.empty()) {
+            auto& [n, edge] = stack.back();
+            if (edge < next[n].size()) {
+                const std::size_t m = next[n][edge++];
+                if (state[m] == State::Open)
+                    throw InvalidInput(where + "<node> at line " + lineOf(nodes[m].tag->at) +
+                                       " contains itself through <instance_node> (at line " +
+                                       lineOf(nodes[n].tag->at) +
+                                       "'s node): the scene graph must not loop");
+                if (state[m] == State::New) {
+                    state[m] = State::Open;
+                    stack.emplace_back(m, 0);
+                }
+                continue;
+            }
+            std::uint64_t total = 1, deepest = 0;
+            for (const std::size_t m : next[n]) {
+                total = std::min(total + size[m], kMaxColladaSceneNodes + 1);
+                deepest = std::max(deepest, depth[m]);
+            }
+            size[n] = total;
+            depth[n] = deepest + 1;
+            state[n] = State::Done;
+            if (total > kMaxColladaSceneNodes)
+                throw LimitExceeded(where + "<node> at line " + lineOf(nodes[n].tag->at) +
+                                    " holds more than " + std::to_string(kMaxColladaSceneNodes) +
+                                    " nodes once its <instance_node>s are copied in; an "
+                                    "obstacle needs its geometry, not a scene of that size");
+            if (depth[n] > kMaxColladaNodeDepth)
+                throw LimitExceeded(where + "<node> at line " + lineOf(nodes[n].tag->at) +
+                                    " starts a hierarchy more than " +
+                                    std::to_string(kMaxColladaNodeDepth) +
+                                    " nodes deep; flatten the obstacle's hierarchy");
+            stack.pop_back();
+        }
+    }
 }
 
 /// Collada: Assimp 5.2.5 reserves what a `count` attribute declares (a polylist of 2·10^9

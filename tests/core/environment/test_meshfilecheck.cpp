@@ -661,3 +661,71 @@ TEST(MeshFileCheck, GltfTriangleStripsNeedThreeVertices) {
               std::string::npos)
         << m;
 }
+
+// Finding 28 (by reading Assimp 5.2.5's Collada loader): it builds the scene by copying each
+// <instance_node>'s node in, recursively. A node that instances itself or its parent recursed
+// until the stack overflowed (ASan: stack-overflow); a chain of 30 nodes each instancing the next
+// twice (2^30 copies) ran out of time and memory; 20,000 nested nodes overflowed the stack
+// without instancing. Refused; 50 instances of one rock load as 50 rocks.
+TEST(MeshFileCheck, ColladaSceneGraphsAreBounded) {
+    const std::string cube = colladaCube();
+    const std::string node = "<node id=\"n\"><instance_geometry url=\"#g\"/></node>";
+    ASSERT_NE(cube.find(node), std::string::npos);
+    auto scene = [&](const std::string& library, const std::string& nodes) {
+        std::string text = cube;
+        text.replace(text.find(node), node.size(), nodes);
+        text.replace(text.find("<library_visual_scenes>"), 0, library);
+        return writeFile("scene.dae", text);
+    };
+    const std::string self = messageOf<InvalidInput>(
+        scene("",
+              "<node id=\"n\"><instance_geometry url=\"#g\"/><instance_node url=\"#n\"/></node>"),
+        kMaxObstacleTriangles);
+    EXPECT_NE(self.find("Collada <node> at line 12 contains itself through <instance_node> (at "
+                        "line 12's node): the scene graph must not loop"),
+              std::string::npos)
+        << self;
+    // Through the parent, and through the visual scene (a node to Assimp), by name.
+    for (const std::string nodes :
+         {"<node id=\"n\"><node id=\"m\"><instance_node url=\"#n\"/></node></node>",
+          "<node id=\"n\"><instance_node url=\"#Scene\"/></node>"})
+        EXPECT_NE(messageOf<InvalidInput>(scene("", nodes), kMaxObstacleTriangles)
+                      .find("the scene graph must not loop"),
+                  std::string::npos)
+            << nodes;
+
+    std::string chain = "<library_nodes>";
+    for (int i = 0; i < 30; ++i)
+        chain += "<node id=\"L" + std::to_string(i) + "\"><instance_node url=\"#L" +
+                 std::to_string(i + 1) + "\"/><instance_node url=\"#L" + std::to_string(i + 1) +
+                 "\"/></node>";
+    chain += "<node id=\"L30\"><instance_geometry url=\"#g\"/></node></library_nodes>";
+    const std::string doubling = messageOf<LimitExceeded>(
+        scene(chain, "<node id=\"n\"><instance_node url=\"#L0\"/></node>"), kMaxObstacleTriangles);
+    EXPECT_NE(doubling.find("holds more than 100000 nodes once its <instance_node>s are copied in"),
+              std::string::npos)
+        << doubling;
+
+    std::string deep;
+    for (int i = 0; i < 1000; ++i)
+        deep += "<node>";
+    deep += "<instance_geometry url=\"#g\"/>";
+    for (int i = 0; i < 1000; ++i)
+        deep += "</node>";
+    const std::string tooDeep = messageOf<LimitExceeded>(scene("", deep), kMaxObstacleTriangles);
+    EXPECT_NE(tooDeep.find("starts a hierarchy more than 1000 nodes deep; flatten the obstacle's "
+                           "hierarchy"),
+              std::string::npos)
+        << tooDeep;
+
+    std::string rocks;
+    for (int i = 0; i < 50; ++i)
+        rocks += "<node id=\"r" + std::to_string(i) + "\"><translate>" + std::to_string(3 * i) +
+                 " 0 0</translate><instance_node url=\"#rock\"/></node>";
+    const ObstacleMesh fifty = loadObstacleMesh(
+        scene("<library_nodes><node id=\"rock\"><instance_geometry url=\"#g\"/></node>"
+              "</library_nodes>",
+              rocks));
+    EXPECT_EQ(fifty.triangleCount(), 50u * 12u);
+    EXPECT_NEAR(fifty.hi.x - fifty.lo.x, 3.0f * 49 + 2.0f, 1e-3f);
+}
