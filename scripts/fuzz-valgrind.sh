@@ -19,6 +19,7 @@ mkdir -p "$out" "$findings" "$corpus"
 bin=$out/fuzz_obstacle_valgrind
 sources=(tests/fuzz/obstacle_fuzzer.cpp tests/fuzz/valgrind/counting_wrapper.cpp
   core/engine/environment/obstaclemesh.cpp core/engine/environment/meshfilecheck.cpp
+  core/engine/environment/fbxcheck.cpp core/engine/environment/scenegraphwalk.cpp
   core/engine/graph/value.cpp core/engine/util/error.cpp core/engine/util/atomicfile.cpp)
 if [[ ! -x $bin ]] || [[ -n $(find "${sources[@]}" core/engine/environment core/engine/util -newer "$bin" 2>/dev/null | head -n 1) ]]; then
   echo "fuzz-valgrind.sh: building $bin"

@@ -15,6 +15,8 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/environment/fbxcheck.h"
+#include "engine/environment/scenegraphwalk.h"
 #include "engine/graph/value.h"
 #include "engine/util/error.h"
 
@@ -151,11 +153,6 @@ void checkPly(const std::filesystem::path& file, std::ifstream& in, std::uintmax
 
 /// Most values in one vertex of a Collada index list (an `<input>`'s offset is below it).
 constexpr std::uint64_t kMaxColladaInputOffsets = 64;
-/// Most nodes of a Collada scene once its instanced nodes are copied in (Assimp copies each
-/// `<instance_node>`'s subtree, about 1.1 KB a node), and the deepest such hierarchy (Assimp
-/// builds it recursively: 20,000 nested nodes overflowed the stack, 5,000 did not).
-constexpr std::uint64_t kMaxColladaSceneNodes = 100000;
-constexpr std::uint64_t kMaxColladaNodeDepth = 1000;
 
 /// Collada accessors (fuzz finding 25): Debian's Assimp 5.2.5 reads an accessor's items
 /// (`offset + index × stride + param`) from its data array without comparing them with the
@@ -440,8 +437,8 @@ void checkColladaElements(const std::string& text, const std::string& where,
     // child nodes and the nodes its <instance_node>s name, copied in recursively. A node that
     // instances itself or an ancestor recursed until the stack overflowed; a chain of nodes
     // instancing the next one twice copies 2^depth nodes; 20,000 nested nodes overflowed the
-    // stack too. Refused: cycles, more than kMaxColladaSceneNodes nodes once copied, and
-    // hierarchies deeper than kMaxColladaNodeDepth.
+    // stack too. Refused: cycles, more than kMaxSceneNodes nodes once copied, and
+    // hierarchies deeper than kMaxSceneDepth (scenegraphwalk.h).
     struct Node {
         const Tag* tag;
         std::vector<std::size_t> children;  // nested nodes
@@ -472,13 +469,10 @@ void checkColladaElements(const std::string& text, const std::string& where,
                 nodes[openNodes.back()].instances.push_back(url->substr(1));
         }
     }
-    // Post-order over the graph without recursion (a file may hold deep chains): the copied
-    // size and depth of each node, a node met again while open being a cycle.
-    enum class State : std::uint8_t { New, Open, Done };
-    std::vector<State> state(nodes.size(), State::New);
-    std::vector<std::uint64_t> size(nodes.size(), 0), depth(nodes.size(), 0);
     std::vector<std::vector<std::size_t>> next(nodes.size());
+    std::vector<std::size_t> roots(nodes.size());
     for (std::size_t n = 0; n < nodes.size(); ++n) {
+        roots[n] = n; // a library's nodes too: each may be instanced
         next[n] = nodes[n].children;
         for (const std::string& id : nodes[n].instances) {
             const auto [from, to] = byId.equal_range(id);
@@ -486,45 +480,24 @@ void checkColladaElements(const std::string& text, const std::string& where,
                 next[n].push_back(it->second);
         }
     }
-    for (std::size_t root = 0; root < nodes.size(); ++root) {
-        if (state[root] != State::New) continue;
-        std::vector<std::pair<std::size_t, std::size_t>> stack{{root, 0}}; // node, next edge
-        state[root] = State::Open;
-        while (!stack.empty()) {
-            auto& [n, edge] = stack.back();
-            if (edge < next[n].size()) {
-                const std::size_t m = next[n][edge++];
-                if (state[m] == State::Open)
-                    throw InvalidInput(where + "<node> at line " + lineOf(nodes[m].tag->at) +
-                                       " contains itself through <instance_node> (at line " +
-                                       lineOf(nodes[n].tag->at) +
-                                       "'s node): the scene graph must not loop");
-                if (state[m] == State::New) {
-                    state[m] = State::Open;
-                    stack.emplace_back(m, 0);
-                }
-                continue;
-            }
-            std::uint64_t total = 1, deepest = 0;
-            for (const std::size_t m : next[n]) {
-                total = std::min(total + size[m], kMaxColladaSceneNodes + 1);
-                deepest = std::max(deepest, depth[m]);
-            }
-            size[n] = total;
-            depth[n] = deepest + 1;
-            state[n] = State::Done;
-            if (total > kMaxColladaSceneNodes)
-                throw LimitExceeded(where + "<node> at line " + lineOf(nodes[n].tag->at) +
-                                    " holds more than " + std::to_string(kMaxColladaSceneNodes) +
-                                    " nodes once its <instance_node>s are copied in; an "
-                                    "obstacle needs its geometry, not a scene of that size");
-            if (depth[n] > kMaxColladaNodeDepth)
-                throw LimitExceeded(where + "<node> at line " + lineOf(nodes[n].tag->at) +
-                                    " starts a hierarchy more than " +
-                                    std::to_string(kMaxColladaNodeDepth) +
-                                    " nodes deep; flatten the obstacle's hierarchy");
-            stack.pop_back();
-        }
+    const SceneGraphProblem problem = walkSceneGraph(next, roots);
+    if (problem.kind == SceneGraphProblem::Kind::None) return;
+    const std::string at = "<node> at line " + lineOf(nodes[problem.node].tag->at);
+    switch (problem.kind) {
+    case SceneGraphProblem::Kind::None:
+        break;
+    case SceneGraphProblem::Kind::Loop:
+        throw InvalidInput(where + at + " contains itself through <instance_node> (at line " +
+                           lineOf(nodes[problem.from].tag->at) +
+                           "'s node): the scene graph must not loop");
+    case SceneGraphProblem::Kind::TooManyNodes:
+        throw LimitExceeded(where + at + " holds more than " + std::to_string(kMaxSceneNodes) +
+                            " nodes once its <instance_node>s are copied in; an obstacle needs "
+                            "its geometry, not a scene of that size");
+    case SceneGraphProblem::Kind::TooDeep:
+        throw LimitExceeded(where + at + " starts a hierarchy more than " +
+                            std::to_string(kMaxSceneDepth) +
+                            " nodes deep; flatten the obstacle's hierarchy");
     }
 }
 
@@ -878,6 +851,19 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
     head.resize(static_cast<std::size_t>(in.gcount()));
     in.clear();
     in.seekg(0);
+    // FBX by extension, magic, or (an extension Assimp does not know) "fbx" near the start, as
+    // Assimp sniffs it.
+    std::string lowered = head.substr(0, 200);
+    for (char& ch : lowered)
+        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    const bool knownExtension = ext == ".obj" || ext == ".stl" || ext == ".dae" || ext == ".gltf" ||
+                                ext == ".glb" || ext == ".fbx";
+    if (ext == ".fbx" || head.compare(0, 18, "Kaydara FBX Binary") == 0 ||
+        (!knownExtension && lowered.find("fbx") != std::string::npos)) {
+        const std::string bytes(std::istreambuf_iterator<char>(in), {});
+        checkFbx(bytes, "obstacle mesh '" + file.string() + "': cannot read it: ");
+        return;
+    }
     if (ext == ".dae" || head.find("<COLLADA") != std::string::npos)
         checkCollada(file, in, maxItems);
     else if (ext == ".gltf" ||

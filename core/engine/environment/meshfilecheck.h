@@ -34,7 +34,11 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// through a null pointer when one was empty, and asked for 64 GB for an empty strip), nor a
 /// triangle strip of fewer than 3 vertices, and keep every accessor inside its buffer view, every
 /// view inside its buffer and every buffer inside its data (Assimp read past a buffer);
-/// sparse accessors, and skins without inverse bind matrices, are refused. Other formats pass
+/// sparse accessors, and skins without inverse bind matrices, are refused. A Collada index list
+/// must come after its primitive's VERTEX input (and a polylist's `<vcount>`), hold whole
+/// numbers only, and not be shorter than its primitive declares; a Collada scene graph
+/// (`<instance_node>`) and an FBX file's model links (checkFbx(), by extension, magic or
+/// content) must not loop and stay within kMaxSceneNodes and kMaxSceneDepth. Other formats pass
 /// unchecked (OBJ files go through objGeometryOnly() instead).
 ///
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.

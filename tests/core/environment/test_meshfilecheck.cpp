@@ -3,7 +3,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/environment/meshfilecheck.h"
 #include "engine/environment/obstaclemesh.h"
@@ -728,4 +731,121 @@ TEST(MeshFileCheck, ColladaSceneGraphsAreBounded) {
               rocks));
     EXPECT_EQ(fifty.triangleCount(), 50u * 12u);
     EXPECT_NEAR(fifty.hi.x - fifty.lo.x, 3.0f * 49 + 2.0f, 1e-3f);
+}
+
+namespace {
+
+std::string readWhole(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+/// A binary FBX 7.5 record (64-bit header words): name, properties (already encoded), children.
+std::string fbxRecord(std::size_t at, const std::string& name, const std::string& properties,
+                      std::size_t propertyCount, const std::vector<std::string>& children) {
+    const auto word = [](std::uint64_t v) {
+        std::string out;
+        out.append(reinterpret_cast<const char*>(&v), 8);
+        return out;
+    };
+    // Children are laid out after this header, name and properties; each needs its own offset.
+    const std::size_t headerLength = 3 * 8 + 1 + name.size() + properties.size();
+    std::string body;
+    for (const std::string& child : children)
+        body += child;
+    if (!children.empty()) body += std::string(25, '\0'); // the null record closing the list
+    const std::uint64_t end = at + headerLength + body.size();
+    return word(end) + word(propertyCount) + word(properties.size()) +
+           static_cast<char>(name.size()) + name + properties + body;
+}
+
+std::string fbxLong(std::int64_t v) {
+    std::string out(1, 'L');
+    out.append(reinterpret_cast<const char*>(&v), 8);
+    return out;
+}
+std::string fbxString(const std::string& s) {
+    const auto n = static_cast<std::uint32_t>(s.size());
+    std::string out(1, 'S');
+    out.append(reinterpret_cast<const char*>(&n), 4);
+    out.append(s);
+    return out;
+}
+
+} // namespace
+
+// Finding 29 (by reading Assimp 5.2.5's FBX converter, after 28): it converts the models from
+// the root down their parent links (`C: "OO", child, parent`) recursively. A model that is its
+// own parent, or its parent's parent, recursed until the stack overflowed (ASan: stack-overflow);
+// 100,000 nested ASCII scopes overflowed it in the tokenizer. Refused, in ASCII and binary
+// files; the ASCII cube (and binary files Sylva writes, SceneExport) load as before.
+TEST(MeshFileCheck, FbxModelLinksAndScopesAreBounded) {
+    const std::filesystem::path data = std::filesystem::path(SYLVA_TEST_DATA_DIR) / "obstacles";
+    const std::string cube = readWhole(data / "cube-ascii.fbx");
+    ASSERT_EQ(loadObstacleMesh(data / "cube-ascii.fbx").triangleCount(), 12u);
+    const std::string links = "\tC: \"OO\", 1000002, 1000003\n";
+    ASSERT_NE(cube.find(links), std::string::npos);
+    std::string self = cube;
+    self.replace(self.find(links), links.size(), links + "\tC: \"OO\", 1000003, 1000003\n");
+    const std::string m =
+        messageOf<InvalidInput>(writeFile("self.fbx", self), kMaxObstacleTriangles);
+    EXPECT_NE(m.find("cannot read it: FBX model 1000003 is its own ancestor (a parent link from "
+                     "model 1000003 closes a loop): the scene graph must not loop"),
+              std::string::npos)
+        << m;
+    // An object-property link ("OP") is not a parent link: the cube loads.
+    std::string property = cube;
+    property.replace(property.find(links), links.size(),
+                     links + "\tC: \"OP\", 1000003, 1000003, \"Lcl Translation\"\n");
+    EXPECT_EQ(loadObstacleMesh(writeFile("property.fbx", property)).triangleCount(), 12u);
+
+    std::string deep = cube;
+    std::string nest;
+    for (int i = 0; i < 300; ++i)
+        nest += "A: {";
+    for (int i = 0; i < 300; ++i)
+        nest += "}";
+    deep += "\n" + nest + "\n";
+    const std::string d =
+        messageOf<LimitExceeded>(writeFile("deep.fbx", deep), kMaxObstacleTriangles);
+    EXPECT_NE(d.find("FBX scopes nested more than 256 deep"), std::string::npos) << d;
+
+    // Binary: two models, each the other's parent, under the root.
+    const std::string magic = std::string("Kaydara FBX Binary  \0\x1a\0", 23);
+    const std::uint32_t version = 7500;
+    std::string binary = magic + std::string(reinterpret_cast<const char*>(&version), 4);
+    auto model = [&](std::size_t at, std::int64_t id) {
+        return fbxRecord(at, "Model", fbxLong(id) + fbxString("Model::m") + fbxString("Null"), 3,
+                         {});
+    };
+    auto connection = [&](std::size_t at, std::int64_t child, std::int64_t parent) {
+        return fbxRecord(at, "C", fbxString("OO") + fbxLong(child) + fbxLong(parent), 3, {});
+    };
+    // Offsets are absolute: lay the records out one after the other.
+    std::size_t at = binary.size();
+    const std::size_t objectsHeader = 3 * 8 + 1 + std::string("Objects").size();
+    const std::string m1 = model(at + objectsHeader, 1);
+    const std::string m2 = model(at + objectsHeader + m1.size(), 2);
+    const std::string objects = fbxRecord(at, "Objects", "", 0, {m1, m2});
+    binary += objects;
+    at = binary.size();
+    const std::size_t connectionsHeader = 3 * 8 + 1 + std::string("Connections").size();
+    std::vector<std::string> cs;
+    std::size_t c = at + connectionsHeader;
+    for (const auto& [child, parent] : {std::pair{1, 0}, std::pair{2, 1}, std::pair{1, 2}}) {
+        cs.push_back(connection(c, child, parent));
+        c += cs.back().size();
+    }
+    binary += fbxRecord(at, "Connections", "", 0, cs);
+    binary += std::string(25, '\0'); // the footer starts with a null record
+    const std::string b =
+        messageOf<InvalidInput>(writeFile("loop-binary.fbx", binary), kMaxObstacleTriangles);
+    EXPECT_NE(b.find("FBX model 1 is its own ancestor (a parent link from model 2 closes a loop)"),
+              std::string::npos)
+        << b;
+    // A record that ends past the file: refused as Assimp's tokenizer refuses it.
+    std::string cut = binary.substr(0, binary.size() - 60);
+    const std::string t =
+        messageOf<InvalidInput>(writeFile("cut-binary.fbx", cut), kMaxObstacleTriangles);
+    EXPECT_NE(t.find("binary FBX record at byte"), std::string::npos) << t;
 }
