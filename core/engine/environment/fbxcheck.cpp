@@ -266,27 +266,13 @@ void checkFbx(std::string_view bytes, const std::string& where) {
         if (child == index.end() || parent == index.end()) continue; // not a model: not followed
         next[parent->second].push_back(child->second);
     }
-    const SceneGraphProblem problem = walkSceneGraph(next, {0});
-    const std::string model = problem.node == 0 ? std::string("the scene's root")
-                                                : "model " + std::to_string(ids[problem.node]);
-    switch (problem.kind) {
-    case SceneGraphProblem::Kind::None:
-        return;
-    case SceneGraphProblem::Kind::Loop:
-        throw InvalidInput(where + "FBX " + model + " is its own ancestor (a parent link from " +
-                           (problem.from == 0 ? std::string("the root")
-                                              : "model " + std::to_string(ids[problem.from])) +
-                           " closes a loop): the scene graph must not loop");
-    case SceneGraphProblem::Kind::TooManyNodes:
-        throw LimitExceeded(where + "FBX " + model + " holds more than " +
-                            std::to_string(kMaxSceneNodes) +
-                            " models once the models with several parents are copied under each; "
-                            "an obstacle needs its geometry, not a scene of that size");
-    case SceneGraphProblem::Kind::TooDeep:
-        throw LimitExceeded(where + "FBX " + model + " starts a hierarchy more than " +
-                            std::to_string(kMaxSceneDepth) +
-                            " models deep; flatten the obstacle's hierarchy");
-    }
+    throwSceneGraphProblem(
+        walkSceneGraph(next, {0}), where,
+        [&](std::size_t n) {
+            return n == 0 ? std::string("the FBX scene's root")
+                          : "FBX model " + std::to_string(ids[n]);
+        },
+        "the models with several parents are copied under each");
 }
 
 } // namespace sylva::env

@@ -37,8 +37,9 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// sparse accessors, and skins without inverse bind matrices, are refused. A Collada index list
 /// must come after its primitive's VERTEX input (and a polylist's `<vcount>`), hold whole
 /// numbers only, and not be shorter than its primitive declares; a Collada scene graph
-/// (`<instance_node>`) and an FBX file's model links (checkFbx(), by extension, magic or
-/// content) must not loop and stay within kMaxSceneNodes and kMaxSceneDepth. Other formats pass
+/// (`<instance_node>`), a glTF node hierarchy and an FBX file's model links (checkFbx(), by
+/// extension, magic or content) must not loop and stay within kMaxSceneNodes and
+/// kMaxSceneDepth. Other formats pass
 /// unchecked (OBJ files go through objGeometryOnly() instead).
 ///
 /// \throw InvalidInput "obstacle mesh '<file>': PLY ..." naming what is wrong.

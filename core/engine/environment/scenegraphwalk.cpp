@@ -1,5 +1,7 @@
 #include "engine/environment/scenegraphwalk.h"
 
+#include "engine/util/error.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -43,6 +45,26 @@ SceneGraphProblem walkSceneGraph(const std::vector<std::vector<std::size_t>>& ne
         }
     }
     return {};
+}
+
+void throwSceneGraphProblem(const SceneGraphProblem& problem, const std::string& where,
+                            const std::function<std::string(std::size_t)>& name,
+                            const std::string& copies) {
+    switch (problem.kind) {
+    case SceneGraphProblem::Kind::None:
+        return;
+    case SceneGraphProblem::Kind::Loop:
+        throw InvalidInput(where + name(problem.node) + " is its own ancestor (through " +
+                           name(problem.from) + "): the scene graph must not loop");
+    case SceneGraphProblem::Kind::TooManyNodes:
+        throw LimitExceeded(where + name(problem.node) + " holds more than " +
+                            std::to_string(kMaxSceneNodes) + " nodes once " + copies +
+                            "; an obstacle needs its geometry, not a scene of that size");
+    case SceneGraphProblem::Kind::TooDeep:
+        throw LimitExceeded(where + name(problem.node) + " starts a hierarchy more than " +
+                            std::to_string(kMaxSceneDepth) +
+                            " deep; flatten the obstacle's hierarchy");
+    }
 }
 
 } // namespace sylva::env

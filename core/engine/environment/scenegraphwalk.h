@@ -2,6 +2,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace sylva::env {
@@ -31,5 +33,12 @@ SceneGraphProblem walkSceneGraph(const std::vector<std::vector<std::size_t>>& ne
                                  const std::vector<std::size_t>& roots,
                                  std::uint64_t maxNodes = kMaxSceneNodes,
                                  std::uint64_t maxDepth = kMaxSceneDepth);
+
+/// Throws the error for \p problem, nothing for Kind::None: InvalidInput for a loop,
+/// LimitExceeded for the limits. \p where starts the message, \p name names a node ("<node> at
+/// line 12", "nodes[3]"), \p copies says what is copied ("its <instance_node>s are copied in").
+void throwSceneGraphProblem(const SceneGraphProblem& problem, const std::string& where,
+                            const std::function<std::string(std::size_t)>& name,
+                            const std::string& copies);
 
 } // namespace sylva::env
