@@ -44,20 +44,55 @@ std::optional<std::uint64_t> asciiId(std::string_view token) {
 /// the line's end; quoted strings; `{`, `}`, `,`; a token followed by `:` is a key).
 FbxLinks readAscii(std::string_view text, const std::string& where) {
     text = text.substr(0, text.find('\0'));
+    // Elements, read as the tokens come (a file holds millions of numbers; none is kept): a key,
+    // its data, and maybe a scope; `Objects { Model: id, … }` and `Connections { C: "OO",
+    // child, parent }` at the top level.
     enum class Kind { Key, Data, Open, Close };
-    struct Token {
-        Kind kind;
-        std::string_view text;
-        std::size_t line;
-    };
-    std::vector<Token> tokens;
+    FbxLinks links;
+    std::vector<std::string_view> open; // the keys of the open scopes
+    std::string_view key;               // the element being read, if any
+    std::vector<std::string_view> data; // its first three data tokens
     std::size_t line = 1;
+    auto finish = [&] {
+        if (key.empty() || open.size() != 1) return;
+        if (open[0] == "Objects" && key == "Model" && !data.empty()) {
+            if (const auto id = asciiId(data[0])) links.models.push_back(*id);
+        } else if (open[0] == "Connections" && key == "C" && data.size() >= 3) {
+            const auto child = asciiId(data[1]), parent = asciiId(data[2]);
+            if (child && parent)
+                links.connections.push_back({data[0] == "\"OP\"", *child, *parent});
+        }
+    };
+    auto token = [&](Kind kind, std::string_view t) {
+        switch (kind) {
+        case Kind::Key:
+            finish();
+            key = t;
+            data.clear();
+            break;
+        case Kind::Data:
+            if (!key.empty() && data.size() < 3) data.push_back(t);
+            break;
+        case Kind::Open:
+            finish();
+            open.push_back(key);
+            if (open.size() > kMaxFbxNesting) throw tooDeep(where, "line " + std::to_string(line));
+            key = {};
+            data.clear();
+            break;
+        case Kind::Close:
+            finish();
+            if (!open.empty()) open.pop_back();
+            key = {};
+            data.clear();
+            break;
+        }
+    };
     const auto lineEnd = [](char c) { return c == '\r' || c == '\n' || c == '\f'; };
     const auto space = [&](char c) { return c == ' ' || c == '\t' || c == '\v' || lineEnd(c); };
     std::size_t begin = std::string_view::npos;
     auto flush = [&](std::size_t end, Kind kind) {
-        if (begin != std::string_view::npos)
-            tokens.push_back({kind, text.substr(begin, end - begin), line});
+        if (begin != std::string_view::npos) token(kind, text.substr(begin, end - begin));
         begin = std::string_view::npos;
     };
     bool comment = false;
@@ -72,7 +107,7 @@ FbxLinks readAscii(std::string_view text, const std::string& where) {
             const std::size_t end = close == std::string_view::npos ? text.size() : close + 1;
             for (std::size_t k = i; k < end; ++k)
                 line += text[k] == '\n';
-            tokens.push_back({Kind::Data, text.substr(i, end - i), line});
+            token(Kind::Data, text.substr(i, end - i));
             i = end - 1;
             continue;
         }
@@ -81,7 +116,7 @@ FbxLinks readAscii(std::string_view text, const std::string& where) {
             comment = true;
         } else if (c == '{' || c == '}') {
             flush(i, Kind::Data);
-            tokens.push_back({c == '{' ? Kind::Open : Kind::Close, text.substr(i, 1), line});
+            token(c == '{' ? Kind::Open : Kind::Close, text.substr(i, 1));
         } else if (c == ',') {
             flush(i, Kind::Data);
         } else if (c == ':') {
@@ -105,49 +140,6 @@ FbxLinks readAscii(std::string_view text, const std::string& where) {
         }
     }
     flush(text.size(), Kind::Data);
-
-    // Elements: a key, its data, and maybe a scope; `Objects { Model: id, … }` and
-    // `Connections { C: "OO", child, parent }` at the top level.
-    FbxLinks links;
-    std::vector<std::string_view> open; // the keys of the open scopes
-    std::string_view key;               // the element being read, if any
-    std::vector<std::string_view> data;
-    auto finish = [&] {
-        if (key.empty() || open.size() != 1) return;
-        if (open[0] == "Objects" && key == "Model" && !data.empty()) {
-            if (const auto id = asciiId(data[0])) links.models.push_back(*id);
-        } else if (open[0] == "Connections" && key == "C" && data.size() >= 3) {
-            const auto child = asciiId(data[1]), parent = asciiId(data[2]);
-            if (child && parent)
-                links.connections.push_back({data[0] == "\"OP\"", *child, *parent});
-        }
-    };
-    for (const Token& t : tokens) {
-        switch (t.kind) {
-        case Kind::Key:
-            finish();
-            key = t.text;
-            data.clear();
-            break;
-        case Kind::Data:
-            if (!key.empty()) data.push_back(t.text);
-            break;
-        case Kind::Open:
-            finish();
-            open.push_back(key);
-            if (open.size() > kMaxFbxNesting)
-                throw tooDeep(where, "line " + std::to_string(t.line));
-            key = {};
-            data.clear();
-            break;
-        case Kind::Close:
-            finish();
-            if (!open.empty()) open.pop_back();
-            key = {};
-            data.clear();
-            break;
-        }
-    }
     finish();
     return links;
 }
