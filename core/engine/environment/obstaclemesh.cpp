@@ -5,9 +5,12 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <set>
 #include <string>
 #include <system_error>
+#include <vector>
 
+#include <assimp/BaseImporter.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -36,6 +39,34 @@ bool finite(const glm::vec3& v) {
 
 std::string quoted(const std::filesystem::path& file) {
     return "'" + file.string() + "'";
+}
+
+/// Leaves \p importer only the importers that claim the end of \p name (lower case) as one of
+/// their extensions (as Assimp matches them: `mesh.xml` too); returns how many remain. Assimp
+/// picks a file's importer by its extension, but when every importer of the extension refuses
+/// the file it tries all of its ~40 importers on the content: a `.glb` whose magic was moved was
+/// read by the OpenGEX importer (its first bytes held "indexarray"), which read past its buffer
+/// (fuzz finding 31). The formats that reach Assimp are the ones the file names. Unregistered
+/// importers are deleted here (Assimp's UnregisterLoader only forgets them).
+std::size_t keepImportersOf(Assimp::Importer& importer, const std::string& name) {
+    std::vector<Assimp::BaseImporter*> others;
+    for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+        Assimp::BaseImporter* candidate = importer.GetImporter(i);
+        std::set<std::string> extensions;
+        candidate->GetExtensionList(extensions);
+        bool claims = false;
+        for (std::string e : extensions) {
+            for (char& ch : e)
+                if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+            e = "." + e;
+            claims = claims || (name.size() > e.size() &&
+                                name.compare(name.size() - e.size(), e.size(), e) == 0);
+        }
+        if (!claims) others.push_back(candidate);
+    }
+    for (Assimp::BaseImporter* other : others)
+        if (importer.UnregisterLoader(other) == AI_SUCCESS) delete other;
+    return importer.GetImporterCount();
 }
 
 } // namespace
@@ -116,6 +147,14 @@ ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTrans
     std::string ext = file.extension().string();
     for (char& ch : ext)
         if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    std::string name = ext == ".obj" ? std::string("memory.obj") : file.filename().string();
+    for (char& ch : name)
+        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    if (ext.size() < 2 || keepImportersOf(importer, name) == 0)
+        throw InvalidInput(
+            "obstacle mesh " + quoted(file) + ": cannot read it: no importer reads " +
+            (ext.size() < 2 ? std::string("files without an extension") : "'" + ext + "' files") +
+            "; use OBJ, PLY, STL, glTF (.gltf, .glb), FBX or Collada (.dae)");
     const aiScene* scene = nullptr;
     if (ext == ".obj") {
         // Without its line and point elements (no area; and Assimp's line elements are unsafe)
