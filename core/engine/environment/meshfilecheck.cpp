@@ -857,9 +857,7 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
         checkGltfJson(file, glb.json, glb.binaryBytes);
         return;
     }
-    std::string ext = file.extension().string();
-    for (char& ch : ext)
-        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    const std::string ext = lowerAscii(file.extension().string());
     if (ext == ".ply" || std::string_view(magic, 3) == "ply") {
         checkPly(file, in, size, maxItems);
         return;
@@ -872,9 +870,7 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
     in.seekg(0);
     // FBX by extension, magic, or (an extension Assimp does not know) "fbx" near the start, as
     // Assimp sniffs it.
-    std::string lowered = head.substr(0, 200);
-    for (char& ch : lowered)
-        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    const std::string lowered = lowerAscii(head.substr(0, 200));
     const bool knownExtension = ext == ".obj" || ext == ".stl" || ext == ".dae" || ext == ".gltf" ||
                                 ext == ".glb" || ext == ".fbx";
     if (ext == ".fbx" || head.compare(0, 18, "Kaydara FBX Binary") == 0 ||
@@ -891,6 +887,12 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
         // A glTF by extension, or anything that looks like JSON (Assimp sniffs the content of
         // a file whose extension it does not know).
         checkGltfJson(file, readAll(in));
+}
+
+std::string lowerAscii(std::string text) {
+    for (char& ch : text)
+        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    return text;
 }
 
 std::string objGeometryOnly(std::string text) {

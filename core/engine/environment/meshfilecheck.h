@@ -48,6 +48,9 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// \throw IoError when the file cannot be read.
 void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems = kMaxObstacleTriangles);
 
+/// \p text with A–Z made a–z (file names and extensions, as Assimp compares them).
+std::string lowerAscii(std::string text);
+
 /// The text of an OBJ file with its line (`l`) and point (`p`) elements and its material
 /// libraries (`mtllib`, and `mg`) made comments, as Debian's Assimp 5.2.5 would split it into
 /// lines. Obstacles keep only triangles, so nothing is lost. Assimp's line elements are unsafe:

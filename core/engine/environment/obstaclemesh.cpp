@@ -55,10 +55,9 @@ std::size_t keepImportersOf(Assimp::Importer& importer, const std::string& name)
         std::set<std::string> extensions;
         candidate->GetExtensionList(extensions);
         bool claims = false;
-        for (std::string e : extensions) {
-            for (char& ch : e)
-                if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
-            e = "." + e;
+        for (const std::string& extension : extensions) {
+            std::string e(1, '.');
+            e += lowerAscii(extension);
             claims = claims || (name.size() > e.size() &&
                                 name.compare(name.size() - e.size(), e.size(), e) == 0);
         }
@@ -144,12 +143,9 @@ ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTrans
     // recomputed from the faces, as Triangulate asserts (aborts) when a mesh claims polygons it
     // does not have or has a face without indices. Both found by fuzz_obstacle
     // (tests/fuzz/regressions/obstacle).
-    std::string ext = file.extension().string();
-    for (char& ch : ext)
-        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
-    std::string name = ext == ".obj" ? std::string("memory.obj") : file.filename().string();
-    for (char& ch : name)
-        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+    const std::string ext = lowerAscii(file.extension().string());
+    const std::string name =
+        ext == ".obj" ? std::string("memory.obj") : lowerAscii(file.filename().string());
     if (ext.size() < 2 || keepImportersOf(importer, name) == 0)
         throw InvalidInput(
             "obstacle mesh " + quoted(file) + ": cannot read it: no importer reads " +
