@@ -58,7 +58,9 @@ QString Autosave::recoveryFile() const {
 }
 
 void Autosave::onEdit() {
-    if (!mDocument.isModified()) return;
+    // Not gated on isModified(): an edit's change signal comes from its command's redo(),
+    // before the undo stack moves its index, so the first edit after opening or saving still
+    // reads as unmodified here. saveNow() asks again when the timer fires.
     mIdle.start();
     if (!mPeriodic.isActive()) mPeriodic.start();
 }

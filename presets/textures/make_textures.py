@@ -1,22 +1,58 @@
 #!/usr/bin/python3
-"""Generates the bark and leaf textures of Sylva's species library (presets/*.json).
+"""Generates every texture Sylva ships: the species library's (presets/*.json) and the default
+bark and leaf of species without textures of their own (resources/textures).
 
 Every image is drawn here from noise and simple shapes; nothing is downloaded, so the PNGs are
-ours to give away (CC0, see README.md). Deterministic: the same script writes the same bytes.
+ours to give away (CC0, see README.md). Deterministic: the same script writes the same bytes,
+whatever the numpy version's PNG-unrelated details, because the PNG writer is our own few lines
+(zlib level 9, no row filters), not an imaging library's encoder.
 
-  <species>_bark.png  256x256 RGB, tiles in both directions (u around the branch, v along it)
-  <species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0), tip at the top
+  presets/textures/<species>_bark.png  256x256 RGB, tiles in both directions (u around the
+                                       branch, v along it)
+  presets/textures/<species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0)
+  resources/textures/bark.png          256x256 RGB, the default bark
+  resources/textures/leaf.png          256x512 RGBA, the default pointed leaf with veins
 
-Needs Debian's python3-numpy and python3-pil. Run from anywhere: /usr/bin/python3 make_textures.py
+Needs Debian's python3-numpy. Run from anywhere: /usr/bin/python3 presets/textures/make_textures.py
+(--library or --defaults writes only one of the two sets).
 """
 import math
 import os
+import random
+import struct
+import sys
+import zlib
 
 import numpy as np
-from PIL import Image
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULTS = os.path.join(os.path.dirname(os.path.dirname(HERE)), "resources", "textures")
 BARK = 256
+
+
+# ----------------------------------------------------------------------------- PNG
+
+def write_png(path, pixels):
+    """Writes an 8-bit RGB or RGBA image (uint8 array, rows top to bottom) as PNG."""
+    h, w, channels = pixels.shape
+    color_type = 6 if channels == 4 else 2
+    raw = b"".join(b"\x00" + pixels[y].tobytes() for y in range(h))
+
+    def chunk(tag, data):
+        return (struct.pack(">I", len(data)) + tag + data +
+                struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF))
+
+    png = b"\x89PNG\r\n\x1a\n"
+    png += chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, color_type, 0, 0, 0))
+    png += chunk(b"IDAT", zlib.compress(raw, 9))
+    png += chunk(b"IEND", b"")
+    with open(path, "wb") as f:
+        f.write(png)
+
+
+def to_bytes(image):
+    """0..1 floats → uint8, rounded."""
+    return (np.clip(image, 0, 1) * 255 + 0.5).astype(np.uint8)
 
 
 # ----------------------------------------------------------------------------- noise helpers
@@ -65,8 +101,7 @@ def colorize(shade, dark, light):
 
 
 def save_rgb(name, rgb):
-    img = Image.fromarray((np.clip(rgb, 0, 1) * 255 + 0.5).astype(np.uint8), "RGB")
-    img.save(os.path.join(HERE, name), optimize=True)
+    write_png(os.path.join(HERE, name), to_bytes(rgb))
 
 
 # ----------------------------------------------------------------------------- barks
@@ -196,8 +231,7 @@ def finish_leaf(name, w, h, mask, rgb):
         filled = filled | grow
     col[~filled] = mean
     rgba = np.concatenate([col, a[..., None]], axis=-1)
-    img = Image.fromarray((np.clip(rgba, 0, 1) * 255 + 0.5).astype(np.uint8), "RGBA")
-    img.save(os.path.join(HERE, name), optimize=True)
+    write_png(os.path.join(HERE, name), to_bytes(rgba))
 
 
 def blade_shading(x, t, width, base, seed, veins=8, vein_angle=0.6, midrib=0.03, gloss=0.1):
@@ -484,9 +518,98 @@ def privet(name, w, h, base, seed):
     finish_leaf(name, w, h, mask, rgb)
 
 
+# ----------------------------------------------------------------------------- the defaults
+# The bark and leaf of species without textures of their own (the demo's alders among them).
+# Drawn texel by texel with Python's own random stream: this is the drawing the demo's exports
+# were made with, kept as it is so they stay byte-identical.
+
+def periodic_noise(rng, cells_x, cells_y):
+    """Smooth value noise that tiles with the given number of cells."""
+    grid = [[rng.random() for _ in range(cells_x)] for _ in range(cells_y)]
+
+    def sample(u, v):
+        x = (u % 1.0) * cells_x
+        y = (v % 1.0) * cells_y
+        x0, y0 = int(x), int(y)
+        fx, fy = x - x0, y - y0
+        fx = fx * fx * (3 - 2 * fx)
+        fy = fy * fy * (3 - 2 * fy)
+        x1, y1 = (x0 + 1) % cells_x, (y0 + 1) % cells_y
+        a = grid[y0][x0] * (1 - fx) + grid[y0][x1] * fx
+        b = grid[y1][x0] * (1 - fx) + grid[y1][x1] * fx
+        return a * (1 - fy) + b * fy
+
+    return sample
+
+
+def default_bark(path, size=256):
+    rng = random.Random(42)
+    n1 = periodic_noise(rng, 8, 4)
+    n2 = periodic_noise(rng, 32, 16)
+    n3 = periodic_noise(rng, 64, 64)
+    rows = []
+    for y in range(size):
+        v = y / size
+        row = []
+        for x in range(size):
+            u = x / size
+            # Vertical ridges whose phase wanders along v: furrowed bark.
+            warp = 0.35 * n1(u, v) + 0.1 * n2(u, v)
+            ridge = abs(math.sin(math.pi * (6 * u + 2 * warp)))
+            ridge = ridge ** 0.6
+            crack = 1.0 if n2(u * 1.0, v * 2.0) > 0.78 else 0.0
+            shade = 0.45 + 0.45 * ridge + 0.15 * (n3(u, v) - 0.5) - 0.25 * crack * (1 - ridge)
+            shade = max(0.05, min(1.0, shade))
+            r = int(255 * min(1.0, 0.42 * shade + 0.04))
+            g = int(255 * min(1.0, 0.31 * shade + 0.03))
+            b = int(255 * min(1.0, 0.22 * shade + 0.02))
+            row += [r, g, b]
+        rows.append(row)
+    write_png(path, np.array(rows, np.uint8).reshape(size, size, 3))
+
+
+def default_leaf(path, width=256, height=512):
+    rng = random.Random(7)
+    n = periodic_noise(rng, 16, 32)
+    rows = []
+    for y in range(height):
+        t = 1.0 - (y + 0.5) / height  # 0 at the bottom row (stem), 1 at the top (tip)
+        row = []
+        for x in range(width):
+            s = (x + 0.5) / width * 2.0 - 1.0  # -1..1 across
+            # Half width of the blade along its length: zero at stem and tip, widest at 40 %.
+            blade = 0.0
+            if 0.06 < t < 0.98:
+                k = (t - 0.06) / 0.92
+                blade = 0.95 * math.sin(math.pi * k ** 0.8) ** 0.9
+            inside = abs(s) < blade
+            stem = t <= 0.08 and abs(s) < 0.035
+            if not inside and not stem:
+                row += [40, 80, 30, 0]
+                continue
+            # Midrib and side veins at 45 degrees.
+            vein = 0.0
+            if abs(s) < 0.03:
+                vein = 1.0
+            else:
+                phase = (t - 0.6 * abs(s)) * 14.0
+                d = abs(phase - round(phase))
+                if d < 0.06 and abs(s) < blade * 0.92:
+                    vein = 0.6
+            edge = min(1.0, (blade - abs(s)) / 0.08) if inside else 1.0
+            shade = 0.75 + 0.2 * (n(x / width, y / height) - 0.5) + 0.1 * (1 - abs(s))
+            shade *= 0.85 + 0.15 * edge
+            r = 0.16 * shade + 0.25 * vein
+            g = 0.42 * shade + 0.25 * vein
+            b = 0.10 * shade + 0.12 * vein
+            row += [int(255 * min(1.0, r)), int(255 * min(1.0, g)), int(255 * min(1.0, b)), 255]
+        rows.append(row)
+    write_png(path, np.array(rows, np.uint8).reshape(height, width, 4))
+
+
 # ----------------------------------------------------------------------------- the library
 
-def main():
+def library():
     save_rgb("english-oak_bark.png", bark_furrowed(101, (0.09, 0.08, 0.07), (0.50, 0.46, 0.40), ridges=5, cracks=0.9))
     simple_leaf("english-oak_leaf.png", 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
 
@@ -524,5 +647,17 @@ def main():
     privet("privet-hedge_leaf.png", 128, 256, (0.16, 0.36, 0.08), 212)
 
 
+def main(argv):
+    which = set(argv[1:]) or {"--library", "--defaults"}
+    unknown = which - {"--library", "--defaults"}
+    if unknown:
+        sys.exit("usage: make_textures.py [--library] [--defaults]")
+    if "--library" in which:
+        library()
+    if "--defaults" in which:
+        default_bark(os.path.join(DEFAULTS, "bark.png"))
+        default_leaf(os.path.join(DEFAULTS, "leaf.png"))
+
+
 if __name__ == "__main__":
-    main()
+    main(sys.argv)

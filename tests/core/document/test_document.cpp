@@ -15,8 +15,11 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QElapsedTimer>
+#include <QEventLoop>
 #include <QFile>
 #include <QTemporaryDir>
+#include <QThread>
 
 using namespace sylva;
 using doc::Document;
@@ -527,6 +530,40 @@ TEST_F(DocumentTest, AutosaveCopyRestoresEveryEdit) {
     next.saveNow();
     fresh.save();
     EXPECT_FALSE(next.pending().has_value());
+}
+
+// The first edit after opening, and the first after a save, reach the recovery file a few
+// seconds later like every other edit (the idle timer used to start only when the document
+// already read as modified, which the first edit's change signal arrives before).
+TEST_F(DocumentTest, AutosaveWritesTheFirstEditAfterOpeningAndAfterSaving) {
+    const QString folder = QDir(mDir.path()).filePath("recovery");
+    doc::Autosave autosave(mDoc, folder);
+    autosave.setIdleDelay(20);
+    int writes = 0;
+    QObject::connect(&autosave, &doc::Autosave::saved, [&] { ++writes; });
+    auto waitForWrite = [&](int before) {
+        QElapsedTimer clock;
+        clock.start();
+        while (writes == before && clock.elapsed() < 5000) {
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+            QThread::msleep(5);
+        }
+        return writes > before;
+    };
+    ASSERT_FALSE(mDoc.isModified());
+    mDoc.addTree(alder(4, 4)); // one edit, the first since opening
+    ASSERT_TRUE(waitForWrite(0)) << "the first edit after opening was not autosaved";
+    EXPECT_TRUE(QFileInfo::exists(autosave.recoveryFile()));
+
+    mDoc.save(); // clean: the copy goes
+    EXPECT_FALSE(QFileInfo::exists(autosave.recoveryFile()));
+    const int afterSave = writes;
+    mDoc.setSeed(4321); // the first edit after the save
+    ASSERT_TRUE(waitForWrite(afterSave)) << "the first edit after saving was not autosaved";
+    Document fresh;
+    doc::Autosave next(fresh, folder);
+    next.restore();
+    EXPECT_EQ(fresh.serialized(), bytes());
 }
 
 TEST(FileRefs, SourceFilesOfTheDemo) {
