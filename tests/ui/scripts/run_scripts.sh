@@ -44,4 +44,13 @@ ls "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" >/dev/null || fail "no auto
 echo "-- check_restored.py (--restore)"
 "$SYLVA" --restore --script "$HERE/check_restored.py" || fail "check_restored.py"
 [ ! -e "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" ] || fail "the copy outlived a normal exit"
-echo "script tests: 6 passed, 0 failed"
+
+echo "-- one_edit_then_crash.py (the first edit alone, SIGKILL)"
+status=0
+"$SYLVA" --discard-autosave --script "$HERE/one_edit_then_crash.py" "$DEMO" || status=$?
+[ "$status" -eq 137 ] || fail "the editor was not killed (status $status)"
+ls "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" >/dev/null ||
+  fail "the first edit after opening was not autosaved"
+echo "-- check_one_edit_restored.py (--restore)"
+"$SYLVA" --restore --script "$HERE/check_one_edit_restored.py" || fail "check_one_edit_restored.py"
+echo "script tests: 8 passed, 0 failed"
