@@ -182,6 +182,22 @@
         <source>Apply preset %1</source>
         <translation>Vorlage %1 anwenden</translation>
     </message>
+    <message>
+        <source>Delete connection</source>
+        <translation>Verbindung löschen</translation>
+    </message>
+    <message>
+        <source>Delete nodes</source>
+        <translation>Knoten löschen</translation>
+    </message>
+    <message>
+        <source>Paste nodes</source>
+        <translation>Knoten einfügen</translation>
+    </message>
+    <message>
+        <source>Move nodes</source>
+        <translation>Knoten verschieben</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -955,14 +971,6 @@
         <translation>%1 von %2 getrennt</translation>
     </message>
     <message>
-        <source>Delete connection</source>
-        <translation>Verbindung löschen</translation>
-    </message>
-    <message>
-        <source>Delete nodes</source>
-        <translation>Knoten löschen</translation>
-    </message>
-    <message>
         <source>Deleted %1</source>
         <translation>%1 gelöscht</translation>
     </message>
@@ -971,16 +979,8 @@
         <translation>eine Verbindung</translation>
     </message>
     <message>
-        <source>Paste nodes</source>
-        <translation>Knoten einfügen</translation>
-    </message>
-    <message>
         <source>Pasted %1</source>
         <translation>%1 eingefügt</translation>
-    </message>
-    <message>
-        <source>Move nodes</source>
-        <translation>Knoten verschieben</translation>
     </message>
 </context>
 <context>

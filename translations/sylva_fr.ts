@@ -182,6 +182,22 @@
         <source>Apply preset %1</source>
         <translation>Appliquer le préréglage %1</translation>
     </message>
+    <message>
+        <source>Delete connection</source>
+        <translation>Supprimer la liaison</translation>
+    </message>
+    <message>
+        <source>Delete nodes</source>
+        <translation>Supprimer les nœuds</translation>
+    </message>
+    <message>
+        <source>Paste nodes</source>
+        <translation>Coller les nœuds</translation>
+    </message>
+    <message>
+        <source>Move nodes</source>
+        <translation>Déplacer les nœuds</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -955,14 +971,6 @@
         <translation>%1 détaché de %2</translation>
     </message>
     <message>
-        <source>Delete connection</source>
-        <translation>Supprimer la liaison</translation>
-    </message>
-    <message>
-        <source>Delete nodes</source>
-        <translation>Supprimer les nœuds</translation>
-    </message>
-    <message>
         <source>Deleted %1</source>
         <translation>%1 supprimé</translation>
     </message>
@@ -971,16 +979,8 @@
         <translation>une liaison</translation>
     </message>
     <message>
-        <source>Paste nodes</source>
-        <translation>Coller les nœuds</translation>
-    </message>
-    <message>
         <source>Pasted %1</source>
         <translation>%1 collé</translation>
-    </message>
-    <message>
-        <source>Move nodes</source>
-        <translation>Déplacer les nœuds</translation>
     </message>
 </context>
 <context>

@@ -2,17 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include "document/commands/scenecommands.h"
 #include "document/commands/speciescommands.h"
 #include "document/commands/treecommands.h"
 #include "document/filerefs.h"
 #include "document/speciesfile.h"
+#include "document/speciesgraphedit.h"
 #include "engine/graph/graph.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -20,34 +21,6 @@
 namespace sylva::doc {
 
 using graph::Value;
-
-namespace {
-
-std::pair<std::string, std::string> splitParamPath(const std::string& path) {
-    const auto dot = path.find('.');
-    if (dot == std::string::npos || dot == 0 || dot + 1 == path.size())
-        throw InvalidInput("a parameter is named \"node.param\", got \"" + path + "\"");
-    return {path.substr(0, dot), path.substr(dot + 1)};
-}
-
-Value* findNode(Value& graph, const std::string& id) {
-    Value::Object& g = graph.objectRef();
-    auto nodes = g.find("nodes");
-    if (nodes == g.end() || !nodes->second.isArray()) return nullptr;
-    for (Value& n : nodes->second.arrayRef())
-        if (n.isObject() && n.string("id", "") == id) return &n;
-    return nullptr;
-}
-
-const Value* findNode(const Value& graph, const std::string& id) {
-    const Value* nodes = graph.find("nodes");
-    if (!nodes || !nodes->isArray()) return nullptr;
-    for (const Value& n : nodes->toArray())
-        if (n.isObject() && n.string("id", "") == id) return &n;
-    return nullptr;
-}
-
-} // namespace
 
 Document::Document(QObject* parent) : QObject(parent) {
     connect(&mUndo, &QUndoStack::cleanChanged, this, &Document::titleChanged);
@@ -274,15 +247,7 @@ void Document::removeSpecies(const std::string& name) {
 
 ProjectSpecies Document::inlined(const ProjectSpecies& s) const {
     if (s.graph) return s;
-    const QString file = mProject.resolve(s.file);
-    const graph::SpeciesGraph g = loadSpecies(file);
-    const Value root = Value::parseJson(serializeSpecies(g).toStdString(), file.toStdString());
-    ProjectSpecies out;
-    out.name = s.name;
-    out.graph = *root.find("graph");
-    out.traits = *root.find("traits");
-    rebaseGraphFiles(*out.graph, QString::fromStdString(g.baseDir.string()), mProject.baseDir);
-    return out;
+    return inlineSpeciesFile(s.name, mProject.resolve(s.file), mProject.baseDir);
 }
 
 Value Document::speciesGraph(const std::string& name) const {
@@ -293,22 +258,11 @@ Value Document::speciesGraph(const std::string& name) const {
 
 Value Document::param(const std::string& species, const std::string& path) const {
     const auto [node, key] = splitParamPath(path);
-    Value g = speciesGraph(species);
-    const Value* n = findNode(g, node);
-    if (!n) throw InvalidInput("species '" + species + "' has no node '" + node + "'");
-    const Value* params = n->find("params");
-    const Value* v = params ? params->find(key) : nullptr;
-    return v ? *v : Value();
+    return nodeParam(speciesGraph(species), species, node, key);
 }
 
 graph::SpeciesGraph Document::toEngine(const ProjectSpecies& s) const {
-    Value::Object root{{"format", "sylva-species"},
-                       {"format_version", kSpeciesFormatVersion},
-                       {"name", s.name},
-                       {"graph", *s.graph}};
-    if (s.traits) root["traits"] = *s.traits;
-    return speciesFromValue(Value(std::move(root)), QString::fromStdString(s.name),
-                            mProject.baseDir);
+    return speciesFromGraph(s.name, *s.graph, s.traits, mProject.baseDir);
 }
 
 graph::SpeciesGraph Document::engineSpecies(const std::string& name) const {
@@ -332,30 +286,14 @@ void Document::setParam(const std::string& species, const std::string& path, con
               key == "grammar" ? QCoreApplication::translate("Commands", "Edit grammar")
                                : QCoreApplication::translate("Commands", "Change %1")
                                      .arg(QString::fromStdString(path)),
-              commit, [&](Value& g) {
-                  Value* n = findNode(g, node);
-                  if (!n)
-                      throw InvalidInput("species '" + species + "' has no node '" + node + "'");
-                  Value::Object& params = n->objectRef()["params"].objectRef();
-                  if (value.isNull())
-                      params.erase(key);
-                  else
-                      params[key] = value;
-                  if (key == "grammar" && !value.isNull()) params.erase("grammar_file");
-              });
+              commit, [&](Value& g) { setNodeParam(g, species, node, key, value); });
 }
 
 void Document::applyPreset(const std::string& species, const QString& file) {
     const int i = speciesIndex(species);
     if (i < 0) throw InvalidInput("unknown species '" + species + "'");
-    const graph::SpeciesGraph g = loadSpecies(file);
-    const Value root = Value::parseJson(serializeSpecies(g).toStdString(), file.toStdString());
     const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
-    ProjectSpecies applied;
-    applied.name = old.name;
-    applied.graph = *root.find("graph");
-    applied.traits = *root.find("traits");
-    rebaseGraphFiles(*applied.graph, QString::fromStdString(g.baseDir.string()), mProject.baseDir);
+    const ProjectSpecies applied = inlineSpeciesFile(old.name, file, mProject.baseDir);
     validateSpecies(applied);
     if (applied == old) return;
     mUndo.push(cmd::changeSpecies(*this, i, old, applied, {}, true,
@@ -367,40 +305,25 @@ void Document::saveSpeciesAs(const std::string& species, const QString& path) co
     const int i = speciesIndex(species);
     if (i < 0) throw InvalidInput("unknown species '" + species + "'");
     const ProjectSpecies s = inlined(mProject.species[static_cast<std::size_t>(i)]);
-    Value graphValue = *s.graph;
     // Self-contained: a grammar file's text goes into the file; other files are rebased.
-    for (Value& n : graphValue.objectRef()["nodes"].arrayRef()) {
-        Value& params = n.objectRef()["params"];
-        if (const Value* file = params.find("grammar_file"); file && file->isString()) {
-            const std::string text = grammar(species, n.string("id", ""));
-            params.objectRef().erase("grammar_file");
-            params.objectRef()["grammar"] = Value(text);
-        }
-        n.objectRef().erase("editor_position");
-    }
+    Value graphValue =
+        standaloneGraph(*s.graph, [&](const std::string& node) { return grammar(species, node); });
     rebaseGraphFiles(graphValue, mProject.baseDir, QFileInfo(path).absolutePath());
-    Value::Object root{{"format", "sylva-species"},
-                       {"format_version", kSpeciesFormatVersion},
-                       {"name", s.name},
-                       {"graph", graphValue}};
-    if (s.traits) root["traits"] = *s.traits;
-    QSaveFile out(path);
-    if (!out.open(QIODevice::WriteOnly))
-        throw IoError("cannot write " + path.toStdString() + ": " +
-                      out.errorString().toStdString());
-    out.write(QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n"));
-    if (!out.commit())
-        throw IoError("cannot write " + path.toStdString() + ": " +
-                      out.errorString().toStdString());
+    writeSpeciesFile(path, speciesEnvelope(s.name, std::move(graphValue), s.traits));
 }
 
 void Document::editGraph(const std::string& species, const QString& node, const QString& label,
                          bool commit, const std::function<void(Value&)>& edit) {
+    editSpecies(species, node, label, commit, [&](ProjectSpecies& s) { edit(*s.graph); });
+}
+
+void Document::editSpecies(const std::string& species, const QString& node, const QString& label,
+                           bool commit, const std::function<void(ProjectSpecies&)>& edit) {
     const int i = speciesIndex(species);
     if (i < 0) throw InvalidInput("unknown species '" + species + "'");
     const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
     ProjectSpecies edited = inlined(old);
-    edit(*edited.graph);
+    edit(edited);
     validateSpecies(edited); // unknown parameter, a graph the engine refuses: nothing changes
     // An unchanged value that commits still goes on: it closes a drag or a burst of typing (it
     // merges into the open step, or is dropped as obsolete).
@@ -408,67 +331,17 @@ void Document::editGraph(const std::string& species, const QString& node, const 
     mUndo.push(cmd::changeSpecies(*this, i, old, edited, node, commit, label));
 }
 
-namespace {
-
-Value::Array& nodesOf(Value& graph) {
-    return graph.objectRef()["nodes"].arrayRef();
-}
-
-std::vector<std::string> inputsOf(const Value& node) {
-    std::vector<std::string> out;
-    if (const Value* in = node.find("inputs"); in && in->isArray())
-        for (const Value& v : in->toArray())
-            out.push_back(v.toString("an input id"));
-    return out;
-}
-
-void setInputs(Value& node, const std::vector<std::string>& inputs) {
-    Value::Array a;
-    for (const std::string& s : inputs)
-        a.emplace_back(s);
-    if (a.empty())
-        node.objectRef().erase("inputs");
-    else
-        node.objectRef()["inputs"] = Value(std::move(a));
-}
-
-Value& nodeOrThrow(Value& graph, const std::string& species, const std::string& id) {
-    Value* n = findNode(graph, id);
-    if (!n) throw InvalidInput("species '" + species + "' has no node '" + id + "'");
-    return *n;
-}
-
-} // namespace
-
 std::string Document::addNode(const std::string& species, const std::string& type,
                               const Value& params, const std::string& id, glm::vec2 position) {
-    graph::registerBuiltinNodeTypes();
-    if (!graph::NodeRegistry::instance().find(type)) {
-        std::string known;
-        for (const std::string& n : graph::NodeRegistry::instance().names())
-            known += (known.empty() ? "" : ", ") + n;
-        throw InvalidInput("unknown node type '" + type + "' (known: " + known + ")");
-    }
+    requireNodeType(type);
     const Value current = speciesGraph(species);
-    std::string newId = id;
-    if (newId.empty()) {
-        newId = type;
-        for (int k = 2; findNode(current, newId); ++k)
-            newId = type + std::to_string(k);
-    } else if (findNode(current, newId)) {
+    const std::string newId = id.empty() ? freshNodeId(current, type) : id;
+    if (findGraphNode(current, newId))
         throw InvalidInput("species '" + species + "' already has a node '" + newId + "'");
-    }
     editGraph(
         species, QString::fromStdString(newId),
         QCoreApplication::translate("Commands", "Add node %1").arg(QString::fromStdString(newId)),
-        true, [&](Value& g) {
-            Value::Object node{
-                {"id", newId},
-                {"type", type},
-                {"params", params.isNull() ? Value(Value::Object{}) : params},
-                {"editor_position", Value(Value::Array{double(position.x), double(position.y)})}};
-            nodesOf(g).emplace_back(std::move(node));
-        });
+        true, [&](Value& g) { addGraphNode(g, species, newId, type, params, position); });
     return newId;
 }
 
@@ -476,24 +349,7 @@ void Document::removeNode(const std::string& species, const std::string& id) {
     editGraph(
         species, QString::fromStdString(id),
         QCoreApplication::translate("Commands", "Delete node %1").arg(QString::fromStdString(id)),
-        true, [&](Value& g) {
-            nodeOrThrow(g, species, id);
-            if (g.string("output", "") == id)
-                throw InvalidInput("'" + id +
-                                   "' is the species' output (the tree); make another node "
-                                   "the output first");
-            Value::Array& nodes = nodesOf(g);
-            for (auto it = nodes.begin(); it != nodes.end();) {
-                if (it->string("id", "") == id) {
-                    it = nodes.erase(it);
-                    continue;
-                }
-                std::vector<std::string> in = inputsOf(*it);
-                std::erase(in, id);
-                setInputs(*it, in);
-                ++it;
-            }
-        });
+        true, [&](Value& g) { removeGraphNode(g, species, id); });
 }
 
 void Document::connectNodes(const std::string& species, const std::string& from,
@@ -501,25 +357,7 @@ void Document::connectNodes(const std::string& species, const std::string& from,
     editGraph(species, QString::fromStdString(to),
               QCoreApplication::translate("Commands", "Connect %1 to %2")
                   .arg(QString::fromStdString(from), QString::fromStdString(to)),
-              true, [&](Value& g) {
-                  graph::registerBuiltinNodeTypes();
-                  Value& target = nodeOrThrow(g, species, to);
-                  nodeOrThrow(g, species, from);
-                  std::vector<std::string> in = inputsOf(target);
-                  if (std::find(in.begin(), in.end(), from) != in.end()) return; // already
-                  const graph::NodeType* t =
-                      graph::NodeRegistry::instance().find(target.string("type", ""));
-                  // A node with one input has it replaced: drop the old edge before checking.
-                  if (t && t->maxInputs == 1 && in.size() == 1) in.clear();
-                  setInputs(target, in);
-                  ProjectSpecies probe;
-                  probe.name = species;
-                  probe.graph = g;
-                  const std::string why = graph::connectionError(toEngine(probe), from, to);
-                  if (!why.empty()) throw InvalidInput(why);
-                  in.push_back(from);
-                  setInputs(target, in);
-              });
+              true, [&](Value& g) { connectGraphNodes(g, species, from, to, mProject.baseDir); });
 }
 
 void Document::disconnectNodes(const std::string& species, const std::string& from,
@@ -527,24 +365,14 @@ void Document::disconnectNodes(const std::string& species, const std::string& fr
     editGraph(species, QString::fromStdString(to),
               QCoreApplication::translate("Commands", "Disconnect %1 from %2")
                   .arg(QString::fromStdString(from), QString::fromStdString(to)),
-              true, [&](Value& g) {
-                  Value& target = nodeOrThrow(g, species, to);
-                  std::vector<std::string> in = inputsOf(target);
-                  if (std::find(in.begin(), in.end(), from) == in.end())
-                      throw InvalidInput("'" + from + "' is not connected to '" + to + "'");
-                  std::erase(in, from);
-                  setInputs(target, in);
-              });
+              true, [&](Value& g) { disconnectGraphNodes(g, species, from, to); });
 }
 
 void Document::setOutputNode(const std::string& species, const std::string& id) {
     editGraph(species, QString::fromStdString(id),
               QCoreApplication::translate("Commands", "Make %1 the output")
                   .arg(QString::fromStdString(id)),
-              true, [&](Value& g) {
-                  nodeOrThrow(g, species, id);
-                  g.objectRef()["output"] = Value(id);
-              });
+              true, [&](Value& g) { setGraphOutput(g, species, id); });
 }
 
 void Document::moveNode(const std::string& species, const std::string& id, glm::vec2 position,
@@ -552,21 +380,94 @@ void Document::moveNode(const std::string& species, const std::string& id, glm::
     editGraph(
         species, QString::fromStdString(id) + QStringLiteral("#position"),
         QCoreApplication::translate("Commands", "Move node %1").arg(QString::fromStdString(id)),
-        commit, [&](Value& g) {
-            nodeOrThrow(g, species, id).objectRef()["editor_position"] =
-                Value(Value::Array{double(position.x), double(position.y)});
-        });
+        commit, [&](Value& g) { setNodeEditorPosition(g, species, id, position); });
+}
+
+void Document::moveNodes(const std::string& species,
+                         const std::vector<std::pair<std::string, glm::vec2>>& positions) {
+    if (positions.size() == 1) return moveNode(species, positions[0].first, positions[0].second);
+    if (positions.empty()) return;
+    editGraph(species, {}, QCoreApplication::translate("Commands", "Move nodes"), true,
+              [&](Value& g) {
+                  for (const auto& [id, position] : positions)
+                      setNodeEditorPosition(g, species, id, position);
+              });
+}
+
+void Document::removeNodes(const std::string& species, const std::vector<std::string>& ids,
+                           const std::vector<std::pair<std::string, std::string>>& edges) {
+    if (ids.empty() && edges.empty()) return;
+    const auto among = [&ids](const std::string& id) {
+        return std::find(ids.begin(), ids.end(), id) != ids.end();
+    };
+    editSpecies(species, {},
+                ids.empty() ? QCoreApplication::translate("Commands", "Delete connection")
+                            : QCoreApplication::translate("Commands", "Delete nodes"),
+                true, [&](ProjectSpecies& s) {
+                    Value& g = *s.graph;
+                    // Step by step, each step checked as if it were its own edit: a step the
+                    // tree cannot do without refuses the whole deletion.
+                    for (const auto& [from, to] : edges)
+                        if (!among(from) && !among(to)) {
+                            disconnectGraphNodes(g, species, from, to);
+                            validateSpecies(s);
+                        }
+                    for (const std::string& id : ids) {
+                        removeGraphNode(g, species, id);
+                        validateSpecies(s);
+                    }
+                });
+}
+
+std::vector<std::string> Document::pasteNodes(const std::string& species, const Value::Array& nodes,
+                                              glm::dvec2 at) {
+    if (nodes.empty()) return {};
+    // Keep the copied layout, moved so that its top-left corner is at \p at; nodes without a
+    // position go down a diagonal from it.
+    glm::dvec2 corner(1e9, 1e9);
+    for (const Value& n : nodes)
+        if (const std::optional<glm::dvec2> p = nodeEditorPosition(n))
+            corner = glm::min(corner, *p);
+    if (corner.x > 1e8) corner = glm::dvec2(0.0);
+    std::vector<std::string> made;
+    editSpecies(species, {}, QCoreApplication::translate("Commands", "Paste nodes"), true,
+                [&](ProjectSpecies& s) {
+                    Value& g = *s.graph;
+                    made.clear();
+                    std::map<std::string, std::string> ids;
+                    int k = 0;
+                    for (const Value& n : nodes) {
+                        glm::dvec2 pos = at + glm::dvec2(30.0 * k, 30.0 * k);
+                        if (const std::optional<glm::dvec2> p = nodeEditorPosition(n))
+                            pos = at + *p - corner;
+                        ++k;
+                        const std::string type = n.string("type", "");
+                        requireNodeType(type);
+                        const std::string id = freshNodeId(g, type);
+                        addGraphNode(g, species, id, type,
+                                     n.find("params") ? *n.find("params") : Value(Value::Object{}),
+                                     glm::vec2(pos));
+                        validateSpecies(s);
+                        ids[n.string("id", "")] = id;
+                        made.push_back(id);
+                    }
+                    for (const Value& n : nodes)
+                        for (const std::string& in : nodeInputs(n))
+                            if (ids.count(in)) {
+                                connectGraphNodes(g, species, ids[in], ids[n.string("id", "")],
+                                                  mProject.baseDir);
+                                validateSpecies(s);
+                            }
+                });
+    return made;
 }
 
 std::optional<glm::vec2> Document::nodePosition(const std::string& species,
                                                 const std::string& id) const {
     Value g = speciesGraph(species);
-    const Value* n = findNode(g, id);
-    if (!n) throw InvalidInput("species '" + species + "' has no node '" + id + "'");
-    const Value* p = n->find("editor_position");
-    if (!p || !p->isArray() || p->toArray().size() != 2) return std::nullopt;
-    return glm::vec2(static_cast<float>(p->toArray()[0].toNumber()),
-                     static_cast<float>(p->toArray()[1].toNumber()));
+    const std::optional<glm::dvec2> p = nodeEditorPosition(graphNode(g, species, id));
+    if (!p) return std::nullopt;
+    return glm::vec2(*p);
 }
 
 void Document::setGrammar(const std::string& species, const std::string& node,

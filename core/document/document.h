@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <QList>
@@ -155,6 +157,19 @@ public:
     /// With \p commit false (a drag in progress) successive moves merge into one undo step.
     void moveNode(const std::string& species, const std::string& id, glm::vec2 position,
                   bool commit = true);
+    /// Moves several nodes as one undo step (one node: moveNode).
+    void moveNodes(const std::string& species,
+                   const std::vector<std::pair<std::string, glm::vec2>>& positions);
+    /// Deletes the edges \p edges (those not touching a deleted node) and then the nodes \p ids
+    /// as one undo step, all or nothing. \throw InvalidInput as removeNode and disconnectNodes.
+    void removeNodes(const std::string& species, const std::vector<std::string>& ids,
+                     const std::vector<std::pair<std::string, std::string>>& edges = {});
+    /// Adds copies of \p nodes (the node editor's clipboard: id, type, params, inputs,
+    /// editor_position) with fresh ids, and the edges among them, as one undo step, all or
+    /// nothing. The copied layout is kept with its top-left corner at \p at. Returns the new
+    /// ids in the order of \p nodes. \throw InvalidInput as addNode and connectNodes.
+    std::vector<std::string> pasteNodes(const std::string& species,
+                                        const graph::Value::Array& nodes, glm::dvec2 at);
     /// A node's position in the node editor; nullopt when it has none yet (laid out by depth).
     std::optional<glm::vec2> nodePosition(const std::string& species, const std::string& id) const;
 
@@ -214,6 +229,9 @@ private:
     /// Inlines the species, applies \p edit to its graph JSON, validates and pushes one command.
     void editGraph(const std::string& species, const QString& node, const QString& label,
                    bool commit, const std::function<void(graph::Value& graph)>& edit);
+    /// The same with the whole inlined species (an edit of several steps validates each).
+    void editSpecies(const std::string& species, const QString& node, const QString& label,
+                     bool commit, const std::function<void(ProjectSpecies& species)>& edit);
     void validateSpecies(const ProjectSpecies& species) const;
     void pruneSelection();
 

@@ -21,14 +21,7 @@ scene::ForestScene makeForestScene(const Project& project) {
         scene::SceneSpecies species;
         species.name = ps.name;
         if (ps.graph) {
-            graph::Value::Object rootObject{{"format", "sylva-species"},
-                                            {"format_version", kSpeciesFormatVersion},
-                                            {"name", ps.name},
-                                            {"graph", *ps.graph}};
-            if (ps.traits) rootObject["traits"] = *ps.traits;
-            const graph::Value root(std::move(rootObject));
-            species.graph =
-                speciesFromValue(root, QString::fromStdString(ps.name), project.baseDir);
+            species.graph = speciesFromGraph(ps.name, *ps.graph, ps.traits, project.baseDir);
         } else {
             species.graph = loadSpecies(project.resolve(ps.file));
         }

@@ -5,6 +5,7 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QSaveFile>
 
 namespace sylva::doc {
 
@@ -120,15 +121,38 @@ QByteArray serializeSpecies(const graph::SpeciesGraph& g) {
         }
         nodes.emplace_back(std::move(o));
     }
-    Value root(
-        Value::Object{{"format", "sylva-species"},
-                      {"format_version", kSpeciesFormatVersion},
-                      {"name", g.name},
-                      {"graph", Value::Object{{"nodes", std::move(nodes)}, {"output", g.output}}},
-                      {"traits", Value::Object{{"wood_density", g.traits.woodDensity},
-                                               {"carbon_fraction", g.traits.carbonFraction},
-                                               {"crown_radius", g.traits.crownRadius}}}});
+    const Value root =
+        speciesEnvelope(g.name, Value::Object{{"nodes", std::move(nodes)}, {"output", g.output}},
+                        Value(Value::Object{{"wood_density", g.traits.woodDensity},
+                                            {"carbon_fraction", g.traits.carbonFraction},
+                                            {"crown_radius", g.traits.crownRadius}}));
     return QByteArray::fromStdString(root.toJson() + "\n");
+}
+
+Value speciesEnvelope(const std::string& name, Value graph, const std::optional<Value>& traits) {
+    Value::Object root{{"format", "sylva-species"},
+                       {"format_version", kSpeciesFormatVersion},
+                       {"name", name},
+                       {"graph", std::move(graph)}};
+    if (traits) root["traits"] = *traits;
+    return Value(std::move(root));
+}
+
+graph::SpeciesGraph speciesFromGraph(const std::string& name, const Value& graph,
+                                     const std::optional<Value>& traits, const QString& baseDir) {
+    return speciesFromValue(speciesEnvelope(name, graph, traits), QString::fromStdString(name),
+                            baseDir);
+}
+
+void writeSpeciesFile(const QString& path, const Value& root) {
+    QSaveFile out(path);
+    if (!out.open(QIODevice::WriteOnly))
+        throw IoError("cannot write " + path.toStdString() + ": " +
+                      out.errorString().toStdString());
+    out.write(QByteArray::fromStdString(root.toPrettyJson() + "\n"));
+    if (!out.commit())
+        throw IoError("cannot write " + path.toStdString() + ": " +
+                      out.errorString().toStdString());
 }
 
 } // namespace sylva::doc

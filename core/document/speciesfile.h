@@ -1,5 +1,8 @@
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include <QString>
 
 #include "engine/graph/graph.h"
@@ -24,5 +27,20 @@ graph::SpeciesGraph speciesFromValue(graph::Value root, const QString& fileName,
 
 /// Serialises a graph back to species JSON (stable key order).
 QByteArray serializeSpecies(const graph::SpeciesGraph& graph);
+
+/// The species file's envelope around a graph as JSON: "format", "format_version", "name",
+/// "graph" and, when given, "traits". The one builder of it: species files, the document's
+/// inline species, "Save species as" and projects all wrap a graph with it.
+graph::Value speciesEnvelope(const std::string& name, graph::Value graph,
+                             const std::optional<graph::Value>& traits);
+
+/// An inline species (a project's graph JSON and traits) as the engine reads it; relative files
+/// resolve from \p baseDir. \throw InvalidInput as parseSpecies.
+graph::SpeciesGraph speciesFromGraph(const std::string& name, const graph::Value& graph,
+                                     const std::optional<graph::Value>& traits,
+                                     const QString& baseDir);
+
+/// Writes species JSON (an envelope) to \p path atomically, pretty-printed. \throw IoError.
+void writeSpeciesFile(const QString& path, const graph::Value& root);
 
 } // namespace sylva::doc

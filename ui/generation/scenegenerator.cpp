@@ -1,7 +1,6 @@
 #include "ui/generation/scenegenerator.h"
 
 #include <algorithm>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,9 +12,7 @@
 #include "document/filerefs.h"
 #include "document/project.h"
 #include "document/scenebuild.h"
-#include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
-#include "engine/nodes/meshnodes.h"
 #include "engine/scene/forestbuild.h"
 #include "engine/util/random.h"
 
@@ -80,18 +77,6 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             caches->obstacles = forest.obstacles;
             caches->ground = forest.ground;
         }
-        // The species' meshing settings, for the viewport's coarser levels (ui/viewport/viewlod.h).
-        std::vector<std::optional<mesh::TreeMeshSettings>> meshSettings;
-        for (const scene::SceneSpecies& s : forest.species) {
-            meshSettings.emplace_back();
-            const graph::NodeDesc* out = s.graph.findNode(s.graph.output);
-            if (!out || out->type != "tube_mesh") continue;
-            try {
-                meshSettings.back() = mesh::treeMeshSettingsFromParams(out->params, 0);
-            } catch (const std::exception&) {
-                // buildForest reports it; the trees are then drawn at full detail only
-            }
-        }
         double height = 0.0;
         const scene::ForestStats stats = scene::buildForest(
             forest, options,
@@ -105,17 +90,12 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                     drawn.mesh = tree.mesh;
                     drawn.transform = tree.instance.transform();
                     drawn.metrics = tree.metrics;
-                    if (tree.instance.species < meshSettings.size() &&
-                        meshSettings[tree.instance.species] && tree.skeleton) {
-                        auto settings = std::make_shared<mesh::TreeMeshSettings>(
-                            *meshSettings[tree.instance.species]);
-                        settings->seed = mixSeed(tree.instance.seed, 0x7EAF); // as the forest
+                    // The viewport's coarser levels (ui/viewport/viewlod.h) start from what the
+                    // forest made this mesh with.
+                    if (tree.meshSettings && tree.skeleton) {
                         drawn.lod.skeleton = tree.skeleton;
-                        drawn.lod.settings = std::move(settings);
-                        drawn.lod.builtDistance =
-                            options.useLod
-                                ? double(glm::length(forest.camera - tree.instance.position))
-                                : 0.0;
+                        drawn.lod.settings = tree.meshSettings;
+                        drawn.lod.builtDistance = tree.meshCameraDistance;
                     }
                     height = std::max(height, tree.metrics.heightM);
                     result.trees.push_back(std::move(drawn));

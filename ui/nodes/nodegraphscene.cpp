@@ -10,6 +10,7 @@
 #include <set>
 
 #include "document/errormessage.h"
+#include "document/speciesgraphedit.h"
 #include "engine/util/error.h"
 
 namespace sylva::ui {
@@ -25,12 +26,14 @@ QColor categoryColor(const QString& category) {
     return QColor(90, 90, 90);
 }
 
-std::vector<std::string> inputsOf(const graph::Value& node) {
-    std::vector<std::string> out;
-    if (const graph::Value* in = node.find("inputs"); in && in->isArray())
-        for (const graph::Value& v : in->toArray())
-            if (v.isString()) out.push_back(v.toString());
-    return out;
+/// The node's inputs as drawn: a hand-written project may name one by a number, which every
+/// edit of the species refuses with its reason; the node is drawn without its edges meanwhile.
+std::vector<std::string> drawnInputs(const graph::Value& node) {
+    try {
+        return doc::nodeInputs(node);
+    } catch (const InvalidInput&) {
+        return {};
+    }
 }
 
 } // namespace
@@ -259,9 +262,7 @@ void NodeGraphScene::rebuild() {
         graph::registerBuiltinNodeTypes();
         const graph::NodeRegistry& registry = graph::NodeRegistry::instance();
         const std::string output = g.string("output", "");
-        const graph::Value* list = g.find("nodes");
-        const graph::Value::Array empty;
-        const graph::Value::Array& nodes = list && list->isArray() ? list->toArray() : empty;
+        const graph::Value::Array& nodes = doc::graphNodes(g);
         // Nodes without a stored position are laid out by depth (longest path from a source).
         std::map<std::string, int> depth;
         std::function<int(const std::string&, int)> depthOf = [&](const std::string& id,
@@ -270,7 +271,7 @@ void NodeGraphScene::rebuild() {
             int d = 0;
             for (const graph::Value& n : nodes)
                 if (n.string("id", "") == id && guard < 64)
-                    for (const std::string& in : inputsOf(n))
+                    for (const std::string& in : drawnInputs(n))
                         d = std::max(d, depthOf(in, guard + 1) + 1);
             depth[id] = d;
             return d;
@@ -286,9 +287,8 @@ void NodeGraphScene::rebuild() {
                              t && t->maxInputs > 0, id == output);
             QPointF at;
             // The position stored in the node (the graph was read once above).
-            const graph::Value* p = n.find("editor_position");
-            if (p && p->isArray() && p->toArray().size() == 2) {
-                at = QPointF(p->toArray()[0].toNumber(), p->toArray()[1].toNumber());
+            if (const std::optional<glm::dvec2> p = doc::nodeEditorPosition(n)) {
+                at = QPointF(p->x, p->y);
             } else {
                 const int d = depthOf(id, 0);
                 at = QPointF(d * 230.0, rowsAtDepth[d]++ * 96.0);
@@ -299,7 +299,7 @@ void NodeGraphScene::rebuild() {
         }
         for (const graph::Value& n : nodes) {
             NodeItem* to = node(QString::fromStdString(n.string("id", "")));
-            for (const std::string& in : inputsOf(n))
+            for (const std::string& in : drawnInputs(n))
                 if (NodeItem* from = node(QString::fromStdString(in))) {
                     auto* e = new EdgeItem(from, to);
                     e->setToolTip(QCoreApplication::translate("NodeGraph", "%1 → %2")
@@ -387,28 +387,16 @@ bool NodeGraphScene::makeOutput(QString id) {
 }
 
 bool NodeGraphScene::deleteSelection() {
-    QList<QPair<QString, QString>> edges;
+    std::vector<std::pair<std::string, std::string>> edges;
     for (QGraphicsItem* item : selectedItems())
         if (auto* e = dynamic_cast<EdgeItem*>(item))
-            edges << qMakePair(e->from()->id(), e->to()->id());
+            edges.emplace_back(e->from()->id().toStdString(), e->to()->id().toStdString());
     const QStringList ids = selectedNodeIds();
-    if (edges.isEmpty() && ids.isEmpty()) return false;
-    QUndoStack* stack = mDocument.undoStack();
-    const int before = stack->index();
-    stack->beginMacro(ids.isEmpty() ? tr("Delete connection") : tr("Delete nodes"));
-    const bool ok = attempt([&] {
-        for (const auto& [from, to] : edges)
-            if (!ids.contains(from) && !ids.contains(to))
-                mDocument.disconnectNodes(mSpecies.toStdString(), from.toStdString(),
-                                          to.toStdString());
-        for (const QString& id : ids)
-            mDocument.removeNode(mSpecies.toStdString(), id.toStdString());
-    });
-    stack->endMacro();
-    if (!ok && stack->index() > before) {
-        stack->undo(); // all or nothing
-        rebuild();
-    }
+    if (edges.empty() && ids.isEmpty()) return false;
+    std::vector<std::string> nodeIds;
+    for (const QString& id : ids)
+        nodeIds.push_back(id.toStdString());
+    const bool ok = attempt([&] { mDocument.removeNodes(mSpecies.toStdString(), nodeIds, edges); });
     if (ok)
         Q_EMIT acted(tr("Deleted %1").arg(ids.isEmpty() ? tr("a connection") : ids.join(u", ")));
     return ok;
@@ -433,7 +421,7 @@ QString NodeGraphScene::copySelection() const {
                                                  ? *n.find("params")
                                                  : graph::Value(graph::Value::Object{})}};
         graph::Value::Array inputs;
-        for (const std::string& in : inputsOf(n))
+        for (const std::string& in : drawnInputs(n))
             if (ids.contains(QString::fromStdString(in))) inputs.emplace_back(in);
         copy["inputs"] = graph::Value(std::move(inputs));
         if (NodeItem* item = node(id))
@@ -454,49 +442,18 @@ bool NodeGraphScene::paste(const QString& text, const QPointF& at) {
     }
     const graph::Value* list = v.find("sylva_nodes");
     if (!list || !list->isArray() || list->toArray().empty()) return false;
-    // Keep the copied layout, moved so that its top-left corner is at the cursor.
-    QPointF corner(1e9, 1e9);
-    for (const graph::Value& n : list->toArray())
-        if (const graph::Value* p = n.find("editor_position"); p && p->isArray())
-            corner = QPointF(std::min(corner.x(), p->toArray()[0].toNumber()),
-                             std::min(corner.y(), p->toArray()[1].toNumber()));
-    if (corner.x() > 1e8) corner = QPointF(0, 0);
-    QUndoStack* stack = mDocument.undoStack();
-    const int before = stack->index();
     QStringList made;
-    stack->beginMacro(tr("Paste nodes"));
     const bool ok = attempt([&] {
-        std::map<std::string, std::string> ids;
-        int k = 0;
-        for (const graph::Value& n : list->toArray()) {
-            QPointF pos = at + QPointF(30.0 * k, 30.0 * k);
-            if (const graph::Value* p = n.find("editor_position"); p && p->isArray())
-                pos = at + QPointF(p->toArray()[0].toNumber(), p->toArray()[1].toNumber()) - corner;
-            ++k;
-            const std::string id = mDocument.addNode(
-                mSpecies.toStdString(), n.string("type", ""),
-                n.find("params") ? *n.find("params") : graph::Value(graph::Value::Object{}), {},
-                glm::vec2(float(pos.x()), float(pos.y())));
-            ids[n.string("id", "")] = id;
+        for (const std::string& id : mDocument.pasteNodes(mSpecies.toStdString(), list->toArray(),
+                                                          glm::dvec2(at.x(), at.y())))
             made << QString::fromStdString(id);
-        }
-        for (const graph::Value& n : list->toArray())
-            for (const std::string& in : inputsOf(n))
-                if (ids.count(in))
-                    mDocument.connectNodes(mSpecies.toStdString(), ids[in],
-                                           ids[n.string("id", "")]);
     });
-    stack->endMacro();
-    if (!ok && stack->index() > before) {
-        stack->undo();
-        rebuild();
-        return false;
-    }
+    if (!ok) return false;
     clearSelection();
     for (const QString& id : made)
         if (NodeItem* n = node(id)) n->setSelected(true);
     Q_EMIT acted(tr("Pasted %1").arg(made.join(u", ")));
-    return ok;
+    return true;
 }
 
 void NodeGraphScene::nodeMoved(const QString& id) {
@@ -508,17 +465,11 @@ void NodeGraphScene::nodeMoved(const QString& id) {
         if (auto* n = dynamic_cast<NodeItem*>(s)) moved << n;
     if (!moved.contains(item)) moved << item;
     // Ids and positions first: each command rebuilds the scene (and deletes these items).
-    QList<QPair<QString, QPointF>> targets;
+    std::vector<std::pair<std::string, glm::vec2>> targets;
     for (NodeItem* n : moved)
-        targets << qMakePair(n->id(), n->pos());
-    QUndoStack* stack = mDocument.undoStack();
-    if (moved.size() > 1) stack->beginMacro(tr("Move nodes"));
-    attempt([&] {
-        for (const auto& [nodeId, p] : targets)
-            mDocument.moveNode(mSpecies.toStdString(), nodeId.toStdString(),
-                               glm::vec2(float(p.x()), float(p.y())));
-    });
-    if (moved.size() > 1) stack->endMacro();
+        targets.emplace_back(n->id().toStdString(),
+                             glm::vec2(float(n->pos().x()), float(n->pos().y())));
+    attempt([&] { mDocument.moveNodes(mSpecies.toStdString(), targets); });
 }
 
 void NodeGraphScene::mousePressEvent(QGraphicsSceneMouseEvent* event) {

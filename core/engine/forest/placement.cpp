@@ -11,6 +11,7 @@
 
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
 
 namespace sylva::forest {
 
@@ -218,7 +219,7 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
     for (std::size_t d = 0; d < domains.size(); ++d) {
         const Domain& dom = domains[d];
         std::vector<std::uint32_t>& slots = slotsPerDomain[d];
-        Rng rng(mixSeed(mixSeed(params.seed, 0xD0A1ull), d));
+        Rng rng(mixSeed(mixSeed(params.seed, salt::kDomainSlots), d));
         // Interleave the species so that no species is squeezed into what the others left.
         for (std::size_t i = slots.size(); i > 1; --i)
             std::swap(slots[i - 1], slots[rng.below(i)]);
@@ -230,7 +231,7 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
             inst.id = static_cast<std::uint32_t>(result.instances.size());
             inst.species = sp;
             inst.seed = mixSeed(params.seed, inst.id);
-            Rng own(mixSeed(inst.seed, 0x0A11ull));
+            Rng own(mixSeed(inst.seed, salt::kPlacedTree));
             inst.rotation = own.uniformf(0.0f, glm::two_pi<float>());
             inst.scale = 1.0f + own.uniformf(-params.scaleVariation, params.scaleVariation);
             const float x = own.uniformf(0.0f, params.growthSpread);

@@ -6,6 +6,7 @@
 
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
 
 namespace sylva::growth {
 
@@ -242,7 +243,7 @@ bool Envelope::contains(const glm::vec3& p) const {
 std::vector<glm::vec3> Envelope::sample(std::size_t count, std::uint64_t seed) const {
     std::vector<glm::vec3> points;
     points.reserve(count);
-    Rng rng(mixSeed(seed, 0x656e76656c6f7065ull)); // "envelope"
+    Rng rng(mixSeed(seed, salt::kEnvelope));
     // Generous: a sphere fills 52% of its box, a thin cone or mesh far less.
     const std::size_t maxTries = 1000 * count + 100000;
     const glm::dvec3 lo(mLo);

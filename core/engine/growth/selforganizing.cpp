@@ -14,6 +14,7 @@
 #include "engine/util/error.h"
 #include "engine/util/randomvector.h"
 #include "engine/util/safenormalize.h"
+#include "engine/util/seedsalts.h"
 
 namespace sylva::growth {
 
@@ -134,7 +135,7 @@ SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
         mAlloc.push_back({sp.alpha, sp.lambda, sp.wMin, sp.wMax, sp.kappa});
         mShedThreshold.push_back(sp.sheddingThreshold);
         mTotalCycles = std::max(mTotalCycles, sp.cycles);
-        mRng.emplace_back(mixSeed(tree.seed, 0x5e1f));
+        mRng.emplace_back(mixSeed(tree.seed, salt::kSelfOrganizingTree));
         mLateralTurn.push_back(glm::angleAxis(radians(sp.branchAngle), glm::vec3(0, 0, 1)));
         mRoll.push_back(glm::angleAxis(radians(sp.divergenceAngle), glm::vec3(0, 1, 0)));
         mCosHalfCone.push_back(
@@ -183,7 +184,7 @@ SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
         float cell = std::numeric_limits<float>::max();
         for (std::size_t t = 0; t < mTrees.size(); ++t) {
             const SelfOrganizingParams& sp = mTrees[t].params;
-            Rng rng(mixSeed(mTrees[t].seed, 0x3a7c));
+            Rng rng(mixSeed(mTrees[t].seed, salt::kSelfOrganizingMarkers));
             const glm::vec3 radii(static_cast<float>(sp.crownRadius),
                                   static_cast<float>(0.5 * (sp.crownTop - sp.crownBase)),
                                   static_cast<float>(sp.crownRadius));
@@ -547,8 +548,9 @@ std::int32_t SelfOrganizingSimulation::makeShoot(const Growing& g, glm::vec3* en
     const SelfOrganizingParams& sp = mTrees[t].params;
     // Every bud draws from a stream of its own (tree seed, cycle, bud), so shoots can be made
     // in any order on any number of threads.
-    Rng rng(mixSeed(mixSeed(mTrees[t].seed, 0x5400u + static_cast<std::uint64_t>(mCycle)),
-                    2 * from + (g.lateral ? 1 : 0)));
+    Rng rng(mixSeed(
+        mixSeed(mTrees[t].seed, salt::kSelfOrganizingCycle + static_cast<std::uint64_t>(mCycle)),
+        2 * from + (g.lateral ? 1 : 0)));
     const int n = g.planned;
     const float len = static_cast<float>(sp.internodeLength * std::min(g.vigour / n, 2.0));
     glm::quat frame = g.lateral ? mM.frame[from] * mLateralTurn[t] : mM.frame[from];

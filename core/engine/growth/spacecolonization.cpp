@@ -17,6 +17,7 @@
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/safenormalize.h"
+#include "engine/util/seedsalts.h"
 
 namespace sylva::growth {
 
@@ -412,7 +413,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     std::vector<int> lastGrown;
     std::vector<std::uint32_t> attracted;
 
-    Rng rng(mixSeed(params.seed, 0x636f6c6f6e697a65ull)); // "colonize"
+    Rng rng(mixSeed(params.seed, salt::kSpaceColonization));
     std::size_t firstNew = 0;
     for (int iteration = 0;; ++iteration) {
         progress.checkCancelled();

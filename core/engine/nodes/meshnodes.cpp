@@ -9,6 +9,7 @@
 #include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
 
 namespace sylva::mesh {
 
@@ -128,7 +129,8 @@ NodeOutput evaluateTubeMesh(const NodeContext& ctx) {
     const skel::Skeleton& skeleton = inputSkeleton(ctx);
     TreeMeshSettings settings;
     try {
-        settings = treeMeshSettingsFromParams(ctx.params, mixSeed(ctx.seed, 0x7EAF), ctx.baseDir);
+        settings =
+            treeMeshSettingsFromParams(ctx.params, mixSeed(ctx.seed, salt::kTreeMesh), ctx.baseDir);
     } catch (const InvalidInput& e) {
         ctx.fail(e.what());
     }
@@ -194,7 +196,7 @@ NodeOutput evaluateLeaves(const NodeContext& ctx) {
             if (a.size() != 3) throw InvalidInput("light_direction must be [x, y, z]");
             placement.lightDirection = {a[0].toNumber(), a[1].toNumber(), a[2].toNumber()};
         }
-        placement.seed = mixSeed(ctx.seed, 0x1EAF);
+        placement.seed = mixSeed(ctx.seed, salt::kLeafPlacement);
         leaves = placeLeaves(skeleton, placement);
     } catch (const InvalidInput& e) {
         ctx.fail(e.what());

@@ -7,6 +7,7 @@
 #include "engine/scene/treecache.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
 
 #include <algorithm>
 #include <chrono>
@@ -185,7 +186,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     if (options.cache) options.cache->beginBuild();
     for (std::size_t i = 0; i < scene.species.size(); ++i) {
         plans.push_back(planSpecies(scene.species[i]));
-        const std::uint64_t crownSeed = mixSeed(scene.seed, 0xC0000 + i);
+        const std::uint64_t crownSeed = mixSeed(scene.seed, salt::kCrownSample + i);
         speciesKeys.push_back(options.cache ? speciesHash(scene.species[i].graph) : 0);
         const std::uint64_t crownKey = mixSeed(speciesKeys.back(), crownSeed);
         std::optional<CrownShape> cached;
@@ -398,8 +399,10 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 }
                 t = Clock::now();
                 mesh::TreeMeshSettings settings = meshSettings[in.species];
-                settings.seed = mixSeed(in.seed, 0x7EAF);
+                settings.seed = mixSeed(in.seed, salt::kTreeMesh);
+                tree.meshSettings = std::make_shared<const mesh::TreeMeshSettings>(settings);
                 if (options.useLod) {
+                    tree.meshCameraDistance = ctx.cameraDistance;
                     settings.useLod = true;
                     // LOD bands are in world metres; the mesh is built in the tree's frame.
                     settings.cameraDistance = ctx.cameraDistance;

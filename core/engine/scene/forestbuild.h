@@ -14,6 +14,7 @@
 #include "engine/forest/metrics.h"
 #include "engine/forest/placement.h"
 #include "engine/graph/graph.h"
+#include "engine/mesh/lod.h"
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/skeleton/skeleton.h"
@@ -65,6 +66,14 @@ struct ForestTree {
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).
     std::shared_ptr<const skel::Skeleton> skeleton;
+    /// How `mesh` was made, so that a viewer can make coarser meshes of the same tree without
+    /// deriving anything again: the species' meshing settings seeded for this tree, before the
+    /// camera's level of detail was applied (no project camera, every leaf card). Null when no
+    /// mesh was built (ForestOptions::buildMeshes false).
+    std::shared_ptr<const mesh::TreeMeshSettings> meshSettings;
+    /// The distance (m) from the project camera the mesh's level of detail was chosen for; 0
+    /// when the forest was built without the camera LOD (ForestOptions::useLod false).
+    double meshCameraDistance = 0.0;
     forest::TreeMetrics metrics;
     env::AdaptStats adapt;
 };

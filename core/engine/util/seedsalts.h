@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdint>
+
+/// The salts each stage mixes into a seed (`mixSeed(seed, salt)`) so that its random stream is
+/// its own: one name per salt, in one place. A stage and anyone who repeats its stream (the
+/// forest meshing a tree as its tube_mesh node would) use the same constant. Changing a value
+/// changes every output that draws from it: they are part of the byte-identical guarantee.
+namespace sylva::salt {
+
+/// Leaf thinning of a tree's mesh (the tube_mesh node, the forest's meshing of each tree).
+inline constexpr std::uint64_t kTreeMesh = 0x7EAF;
+/// Leaf placement of the `leaves` node.
+inline constexpr std::uint64_t kLeafPlacement = 0x1EAF;
+/// Space colonization's attraction points ("colonize").
+inline constexpr std::uint64_t kSpaceColonization = 0x636f6c6f6e697a65ull;
+/// Points sampled inside a crown envelope ("envelope").
+inline constexpr std::uint64_t kEnvelope = 0x656e76656c6f7065ull;
+/// A self-organizing tree's own stream (bud fates over the whole growth).
+inline constexpr std::uint64_t kSelfOrganizingTree = 0x5e1f;
+/// A self-organizing tree's space-colonization markers in its crown.
+inline constexpr std::uint64_t kSelfOrganizingMarkers = 0x3a7c;
+/// A self-organizing growth cycle: the cycle number is added, then each bud mixes its own index.
+inline constexpr std::uint64_t kSelfOrganizingCycle = 0x5400;
+/// A forest's sample tree of each species (crown measurement): the species index is added.
+inline constexpr std::uint64_t kCrownSample = 0xC0000;
+/// The shuffle of species slots within one placement domain (the domain index is mixed in).
+inline constexpr std::uint64_t kDomainSlots = 0xD0A1;
+/// A placed tree's rotation, scale and growth stage, from its own seed.
+inline constexpr std::uint64_t kPlacedTree = 0x0A11;
+
+} // namespace sylva::salt

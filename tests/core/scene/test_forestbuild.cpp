@@ -1,0 +1,110 @@
+// A forest's trees carry how their meshes were made (issue 29), so a viewer makes coarser
+// levels of the same tree from them without deriving anything again: the carried settings and
+// camera distance give back the very mesh the forest made.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <set>
+
+#include "engine/mesh/lod.h"
+#include "engine/scene/forestbuild.h"
+#include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
+#include "presetfile.h"
+
+using namespace sylva;
+
+namespace {
+
+scene::ForestScene smallForest() {
+    graph::registerBuiltinNodeTypes();
+    scene::ForestScene s;
+    s.seed = 7;
+    scene::SceneSpecies beech;
+    beech.name = "beech";
+    beech.graph = sylva::testing::loadPreset(std::filesystem::path(SYLVA_PRESETS_DIR) /
+                                             "european-beech.json");
+    s.species.push_back(std::move(beech));
+    forest::Domain d;
+    d.min = {-20.0f, -20.0f};
+    d.max = {20.0f, 20.0f};
+    d.counts = {{"beech", 3}};
+    s.domains.push_back(d);
+    s.camera = {0.0f, 10.0f, 60.0f};
+    return s;
+}
+
+std::vector<scene::ForestTree> build(const scene::ForestScene& s,
+                                     const scene::ForestOptions& options) {
+    std::vector<scene::ForestTree> trees;
+    scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
+        trees.insert(trees.end(), batch.begin(), batch.end());
+    });
+    return trees;
+}
+
+bool sameMesh(const mesh::Mesh& a, const mesh::Mesh& b) {
+    return a.positions.size() == b.positions.size() && a.indices == b.indices &&
+           std::memcmp(a.positions.data(), b.positions.data(),
+                       a.positions.size() * sizeof(glm::vec3)) == 0 &&
+           a.submeshes.size() == b.submeshes.size();
+}
+
+} // namespace
+
+TEST(ForestBuild, TreesCarryTheSettingsAndDistanceTheirMeshWasMadeWith) {
+    const scene::ForestScene s = smallForest();
+    const std::vector<scene::ForestTree> trees = build(s, {});
+    ASSERT_EQ(trees.size(), 3u);
+    for (const scene::ForestTree& tree : trees) {
+        ASSERT_TRUE(tree.meshSettings) << tree.name;
+        ASSERT_TRUE(tree.skeleton) << tree.name;
+        EXPECT_EQ(tree.meshSettings->seed, mixSeed(tree.instance.seed, salt::kTreeMesh));
+        // Before the camera: a viewer applies its own level of detail.
+        EXPECT_FALSE(tree.meshSettings->hasCamera);
+        EXPECT_FALSE(tree.meshSettings->acceptLeafCard);
+        // Textures resolved from the species file's folder, as the forest drew them.
+        EXPECT_TRUE(std::filesystem::path(tree.meshSettings->barkTexture).is_absolute())
+            << tree.meshSettings->barkTexture;
+        const double distance = glm::length(s.camera - tree.instance.position);
+        EXPECT_DOUBLE_EQ(tree.meshCameraDistance, distance);
+
+        // The carried settings at the carried distance make the forest's mesh again.
+        mesh::TreeMeshSettings again = *tree.meshSettings;
+        again.useLod = true;
+        again.cameraDistance = tree.meshCameraDistance;
+        again.hasCamera = true;
+        again.cameraLocal =
+            glm::vec3(glm::inverse(tree.instance.transform()) * glm::vec4(s.camera, 1.0f));
+        EXPECT_TRUE(sameMesh(mesh::buildTreeMesh(*tree.skeleton, again), *tree.mesh)) << tree.name;
+    }
+}
+
+TEST(ForestBuild, WithoutTheCameraLodTheSettingsAloneMakeTheMesh) {
+    scene::ForestOptions options;
+    options.useLod = false;
+    for (const scene::ForestTree& tree : build(smallForest(), options)) {
+        ASSERT_TRUE(tree.meshSettings);
+        EXPECT_EQ(tree.meshCameraDistance, 0.0);
+        EXPECT_TRUE(sameMesh(mesh::buildTreeMesh(*tree.skeleton, *tree.meshSettings), *tree.mesh))
+            << tree.name;
+    }
+    options.buildMeshes = false;
+    for (const scene::ForestTree& tree : build(smallForest(), options))
+        EXPECT_FALSE(tree.meshSettings) << tree.name;
+}
+
+TEST(SeedSalts, EverySaltIsItsOwn) {
+    const std::set<std::uint64_t> salts{salt::kTreeMesh,
+                                        salt::kLeafPlacement,
+                                        salt::kSpaceColonization,
+                                        salt::kEnvelope,
+                                        salt::kSelfOrganizingTree,
+                                        salt::kSelfOrganizingMarkers,
+                                        salt::kSelfOrganizingCycle,
+                                        salt::kCrownSample,
+                                        salt::kDomainSlots,
+                                        salt::kPlacedTree};
+    EXPECT_EQ(salts.size(), 10u);
+}
