@@ -9,6 +9,7 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QLayout>
 #include <QTimer>
 
 #include "document/autosave.h"
@@ -64,6 +65,21 @@ struct Tree {
 Tree treeOf(doc::TreeId id) {
     const doc::ProjectInstance& t = document().tree(id);
     return {id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed};
+}
+
+/// Lays the window out as it will be shown. A script runs as soon as the window is visible,
+/// before the event loop has applied the layout requests of its docks: the viewport was still
+/// 557 px wide (later 393), and a point drawn at x=537 was reported at x=619, where an outside
+/// tool's click missed it. Layouts post more requests while they are applied (docks,
+/// splitters), hence the few passes.
+void layOut(MainWindow& w) {
+    if (!w.isVisible()) w.show();
+    w.ensurePolished();
+    for (int pass = 0; pass < 3; ++pass) {
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        if (QLayout* l = w.layout()) l->activate();
+    }
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
 }
 
 void pump(double seconds) {
@@ -301,12 +317,17 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             py::arg("species"), py::arg("id"), py::arg("x"), py::arg("y"))
         .def(
             "preview_ms",
-            [](DocumentApi&) {
-                // The species editor's last edit → new preview mesh on screen (0 before any).
+            [](DocumentApi&) -> py::object {
+                // The species editor's last edit → new preview mesh on screen. A measured time is
+                // never exactly 0; 0 means no preview ran (the species editor was never open),
+                // which must not read as "instant".
                 SpeciesPreview* p = window().workbench()->preview();
-                return p->editToScreenMs() > 0.0 ? p->editToScreenMs() : p->editToResultMs();
+                if (p->editToScreenMs() > 0.0) return py::float_(p->editToScreenMs());
+                if (p->editToResultMs() > 0.0) return py::float_(p->editToResultMs());
+                return py::none();
             },
-            "Milliseconds from the last edit to the species preview's new mesh on screen.")
+            "Milliseconds from the last edit to the species preview's new mesh on screen; None "
+            "when no preview ran.")
         .def(
             "preview_stats",
             [](DocumentApi&) {
@@ -534,6 +555,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "project",
             [](WindowApi&, float x, float y, float z) -> py::object {
+                layOut(window());
                 Viewport* v = window().viewport();
                 const auto p = v->project({x, y, z});
                 if (!p) return py::none();
@@ -541,7 +563,8 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 return py::make_tuple(global.x(), global.y());
             },
             py::arg("x"), py::arg("y"), py::arg("z"),
-            "Where a world point is drawn, in global screen pixels (what xdotool takes), or None.")
+            "Where a world point is drawn, in global screen pixels (what xdotool takes), or None; "
+            "for the window as it is shown (its layout is applied first).")
         .def(
             "look_from",
             [](WindowApi&, py::object eye, py::object target) {
