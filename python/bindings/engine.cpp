@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "convert.h"
+#include "project.h"
 #include "types.h"
 
 #include "engine/graph/graph.h"
@@ -21,6 +22,7 @@ void bindEngine(py::module_& m) {
     m.def("presets_dir", &presetsDir, "the folder of the shipped species presets (*.json)");
     m.def("resources_dir", &resourcesDir, "the folder of the shipped textures (textures/)");
     bindSpecies(m);
+    bindTree(m);
     bindForest(m);
 }
 

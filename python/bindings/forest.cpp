@@ -9,6 +9,7 @@
 #include <QFileInfo>
 
 #include "convert.h"
+#include "project.h"
 #include "types.h"
 
 #include "document/filerefs.h"
@@ -22,7 +23,6 @@
 #include "engine/graph/graph.h"
 #include "engine/scene/forestbuild.h"
 #include "engine/util/error.h"
-#include "engine/util/random.h"
 
 namespace sylva::python {
 
@@ -34,39 +34,6 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
-
-/// A project file's content plus what only lives in memory: obstacles and a ground given as
-/// arrays (they are not saved).
-struct Project {
-    doc::Project project;
-    std::vector<env::ObstacleMesh> arrayObstacles;
-    std::optional<env::ObstacleMesh> ground;
-    std::map<std::string, int> groundCounts;
-
-    scene::ForestScene makeScene() const {
-        scene::ForestScene s = doc::makeForestScene(project);
-        if (!arrayObstacles.empty()) {
-            std::vector<env::ObstacleMesh> all;
-            if (s.obstacles) all = s.obstacles->meshes();
-            all.insert(all.end(), arrayObstacles.begin(), arrayObstacles.end());
-            s.obstacles = std::make_shared<const env::ObstacleScene>(std::move(all));
-        }
-        if (ground) {
-            if (s.ground)
-                throw InvalidInput("the project has a terrain domain already; it cannot have a "
-                                   "ground from arrays as well");
-            s.ground =
-                std::make_shared<const env::ObstacleScene>(std::vector<env::ObstacleMesh>{*ground});
-            forest::Domain d;
-            d.min = {ground->lo.x, ground->lo.z};
-            d.max = {ground->hi.x, ground->hi.z};
-            for (const auto& [name, count] : groundCounts)
-                d.counts.emplace_back(name, static_cast<std::size_t>(count));
-            s.domains.push_back(std::move(d));
-        }
-        return s;
-    }
-};
 
 struct ForestTreeRef {
     std::shared_ptr<const std::vector<scene::ForestTree>> all;
@@ -232,15 +199,6 @@ env::ObstacleMesh meshFromArrays(const std::string& name, const py::object& vert
     return env::makeObstacleMesh(name, v, f, t.matrix());
 }
 
-env::MeshTransform transformFrom(const py::object& translate, const py::object& rotate,
-                                 const py::object& scale) {
-    env::MeshTransform t;
-    if (!translate.is_none()) t.translate = toVec3(translate, "translate");
-    if (!rotate.is_none()) t.rotateDeg = toVec3(rotate, "rotate");
-    if (!scale.is_none()) t.scale = toVec3(scale, "scale");
-    return t;
-}
-
 } // namespace
 
 void bindForest(py::module_& m) {
@@ -366,29 +324,32 @@ void bindForest(py::module_& m) {
             "camera position for the level of detail (metres)")
         .def_property_readonly("base_dir",
                                [](const Project& p) { return p.project.baseDir.toStdString(); })
-        .def_property_readonly("species",
-                               [](const Project& p) {
-                                   std::vector<std::string> names;
-                                   for (const doc::ProjectSpecies& s : p.project.species)
-                                       names.push_back(s.name);
-                                   return names;
-                               })
+        .def_property_readonly("species", [](const Project& p) { return speciesNames(p.project); })
         .def_property_readonly("domains",
-                               [](const Project& p) {
-                                   py::list out;
-                                   for (const doc::PlacementDomain& d : p.project.domains) {
-                                       py::dict o;
-                                       o["shape"] = d.shape;
-                                       o["min"] = py::make_tuple(d.min.x, d.min.y);
-                                       o["max"] = py::make_tuple(d.max.x, d.max.y);
-                                       o["counts"] = d.counts;
-                                       out.append(o);
-                                   }
-                                   return out;
-                               })
+                               [](const Project& p) { return domainsList(p.project.domains); })
         .def_property_readonly(
             "tree_count", [](const Project& p) { return p.project.instances.size(); },
             "hand-placed trees")
+        .def(
+            "trees",
+            [](const Project& p) {
+                std::vector<Tree> out;
+                for (std::size_t i = 0; i < p.project.instances.size(); ++i)
+                    out.push_back(treeOf(i, p.project.instances[i]));
+                return out;
+            },
+            "the hand-placed trees (Tree, id = index)")
+        .def(
+            "tree",
+            [](const Project& p, std::size_t index) {
+                if (index >= p.project.instances.size())
+                    throw InvalidInput("there is no tree " + std::to_string(index));
+                return treeOf(index, p.project.instances[index]);
+            },
+            py::arg("index"))
+        .def_property_readonly(
+            "obstacles", [](const Project& p) { return obstaclesList(p.project.obstacles); },
+            "the obstacle files (dicts: file, translate, rotate, scale); arrays are not listed")
         .def("add_species", &addSpecies, py::arg("name"), py::arg("species"),
              "a species from a file path (kept as a reference), a Species or a dict (inline)")
         .def(
@@ -406,12 +367,8 @@ void bindForest(py::module_& m) {
                     if (d.polygon.size() < 3)
                         throw InvalidInput("a polygon needs at least three corners");
                 } else {
-                    const auto lo = min.cast<std::vector<float>>();
-                    const auto hi = max.cast<std::vector<float>>();
-                    if (lo.size() != 2 || hi.size() != 2)
-                        throw InvalidInput("min and max are (x, z) pairs");
-                    d.min = {lo[0], lo[1]};
-                    d.max = {hi[0], hi[1]};
+                    d.min = toXZ(min, "min");
+                    d.max = toXZ(max, "max");
                     if (!(d.min.x < d.max.x && d.min.y < d.max.y))
                         throw InvalidInput("a domain's min must be below its max in x and z");
                 }
@@ -441,16 +398,9 @@ void bindForest(py::module_& m) {
                double scale, std::optional<std::uint64_t> seed, double growth) {
                 if (!p.project.findSpecies(species))
                     throw InvalidInput("the project has no species '" + species + "'");
-                doc::ProjectInstance t;
-                t.species = species;
-                t.position = toVec3(position, "position");
-                t.rotation = rotation;
-                t.scale = scale;
-                t.growth = growth;
-                t.seed =
-                    seed ? *seed
-                         : mixSeed(p.project.seed, p.project.instances.size() + 1) % 1000000007ull;
-                p.project.instances.push_back(t);
+                p.project.instances.push_back(newTree(p.project, p.project.instances.size(),
+                                                      species, position, rotation, scale, seed,
+                                                      growth));
                 return p.project.instances.size() - 1;
             },
             py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
@@ -461,7 +411,6 @@ void bindForest(py::module_& m) {
             [](Project& p, const py::object& file, const py::object& vertices,
                const py::object& triangles, const py::object& translate, const py::object& rotate,
                const py::object& scale, const py::object& name) {
-                const env::MeshTransform t = transformFrom(translate, rotate, scale);
                 if (!file.is_none()) {
                     if (!vertices.is_none() || !triangles.is_none())
                         throw InvalidInput("an obstacle is a file or arrays, not both");
@@ -469,9 +418,7 @@ void bindForest(py::module_& m) {
                     o.file = QFileInfo(QString::fromStdString(toPath(file)))
                                  .absoluteFilePath()
                                  .toStdString();
-                    o.translate = t.translate;
-                    o.rotate = t.rotateDeg;
-                    o.scale = t.scale;
+                    applyTransform(o, translate, rotate, scale);
                     p.project.obstacles.push_back(o);
                     return;
                 }
@@ -480,7 +427,8 @@ void bindForest(py::module_& m) {
                 const std::string label =
                     name.is_none() ? "obstacle " + std::to_string(p.arrayObstacles.size() + 1)
                                    : name.cast<std::string>();
-                p.arrayObstacles.push_back(meshFromArrays(label, vertices, triangles, t));
+                p.arrayObstacles.push_back(meshFromArrays(label, vertices, triangles,
+                                                          transformFrom(translate, rotate, scale)));
             },
             py::arg("file") = py::none(), py::arg("vertices") = py::none(),
             py::arg("triangles") = py::none(), py::arg("translate") = py::none(),

@@ -10,15 +10,14 @@
 namespace py = pybind11;
 
 namespace {
-// The editor's own names in the same module (ui/scripting/bindings.cpp): none may clash.
-struct Tree {};
+// The editor's own names in the same module (ui/scripting/bindings.cpp): none may clash with
+// bindEngine's (its trees are bindEngine's sylva.Tree).
 struct DocumentApi {};
 struct WindowApi {};
 } // namespace
 
 PYBIND11_EMBEDDED_MODULE(sylva, m) {
     sylva::python::bindEngine(m);
-    py::class_<Tree>(m, "Tree");
     py::class_<DocumentApi>(m, "Document");
     py::class_<WindowApi>(m, "Window");
     m.def("document", [] { return DocumentApi{}; });

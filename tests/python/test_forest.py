@@ -119,6 +119,33 @@ def test_project_in_memory_with_a_ground(data, presets):
         p.save("/tmp/never-written.sylva")
 
 
+def test_project_parts_read_as_the_editor_reads_them(data, tmp_path):
+    # sylva.Tree, the obstacle and domain dicts: the types the editor's document gives too.
+    p = sylva.Project(seed=4)
+    p.add_species("bush", data / "lsystem" / "bush.lsys")
+    p.add_domain({"bush": 3}, min=(-5, -6), max=(5, 6))
+    first = p.add_tree("bush", (1, 0, 2), rotation=30, scale=1.5, growth=0.5, seed=9)
+    second = p.add_tree("bush", (3, 0, 4))
+    assert (first, second) == (0, 1)
+    trees = p.trees()
+    assert all(isinstance(t, sylva.Tree) for t in trees)
+    t = p.tree(0)
+    assert (t.id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed) == (
+        0, "bush", (1.0, 0.0, 2.0), 30.0, 1.5, 0.5, 9)
+    assert trees[1].seed > 0  # derived from the project seed, as the editor does
+    with pytest.raises(ValueError, match="there is no tree 2"):
+        p.tree(2)
+    assert p.domains == [{"shape": "rectangle", "min": (-5.0, -6.0), "max": (5.0, 6.0),
+                          "counts": {"bush": 3}}]
+    with pytest.raises(ValueError, match=r"min needs two numbers \(x, z\)"):
+        p.add_domain({"bush": 1}, min=(0, 0, 0))
+    p.add_obstacle(file=tmp_path / "wall.obj", translate=(0, 0, 3), scale=(2, 1, 1))
+    p.add_obstacle(vertices=[[0, 0, 0], [1, 0, 0], [0, 1, 0]], triangles=[[0, 1, 2]])
+    assert p.obstacle_count == 2
+    assert p.obstacles == [{"file": str(tmp_path / "wall.obj"), "translate": (0.0, 0.0, 3.0),
+                            "rotate": (0.0, 0.0, 0.0), "scale": (2.0, 1.0, 1.0)}]
+
+
 def big_project(data, trees=600):
     p = sylva.Project(seed=1)
     p.add_species("bush", data / "lsystem" / "bush.lsys")

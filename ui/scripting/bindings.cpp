@@ -9,6 +9,7 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QLayout>
 #include <QTimer>
 
 #include "document/autosave.h"
@@ -17,9 +18,9 @@
 #include "engine/lsystem/grammar.h"
 #include "engine/mesh/mesh.h"
 #include "engine/util/error.h"
-#include "engine/util/random.h"
 #include "python/bindings/convert.h"
 #include "python/bindings/engine.h"
+#include "python/bindings/project.h"
 #include "ui/document/messagespanel.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/generation/speciespreview.h"
@@ -46,24 +47,33 @@ doc::Document& document() {
     return window().document();
 }
 
-// Python <-> parameter values and vectors: the same conversions as `import sylva`.
+// Python <-> parameter values, vectors and project parts: the same conversions as
+// `import sylva`.
 using python::fromValue;
 using python::fromVec3;
 using python::toValue;
 using python::toVec3;
 
-/// A tree as scripts see it: a snapshot of its values.
-struct Tree {
-    doc::TreeId id = 0;
-    std::string species;
-    glm::vec3 position{0.0f};
-    double rotation = 0, scale = 1, growth = 1;
-    std::uint64_t seed = 0;
-};
+// The project's parts as `import sylva` gives and takes them (python/bindings/project.h).
+using python::Tree;
 
 Tree treeOf(doc::TreeId id) {
-    const doc::ProjectInstance& t = document().tree(id);
-    return {id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed};
+    return python::treeOf(id, document().tree(id));
+}
+
+/// Lays the window out as it will be shown. A script runs as soon as the window is visible,
+/// before the event loop has applied the layout requests of its docks: the viewport was still
+/// 557 px wide (later 393), and a point drawn at x=537 was reported at x=619, where an outside
+/// tool's click missed it. Layouts post more requests while they are applied (docks,
+/// splitters), hence the few passes.
+void layOut(MainWindow& w) {
+    if (!w.isVisible()) w.show();
+    w.ensurePolished();
+    for (int pass = 0; pass < 3; ++pass) {
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        if (QLayout* l = w.layout()) l->activate();
+    }
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
 }
 
 void pump(double seconds) {
@@ -110,26 +120,13 @@ void linkSylvaModule() {}
 } // namespace sylva::ui
 
 PYBIND11_EMBEDDED_MODULE(sylva, m) {
-    // The engine's functions (load_species, grow, load_project, build_forest, ...), the same as
-    // `import sylva` from python3 (docs/python.md); the editor's document and window below.
+    // The engine and its project types (load_species, grow, Project, Tree, load_project,
+    // build_forest, ...), the same as `import sylva` from python3 (docs/python.md); only the
+    // editor's document (with undo) and window below, over the same types and conversions.
     sylva::python::bindEngine(m);
     m.doc() = "Sylva's editor: its document (trees, species, obstacles, undo) and window.";
     // Errors become ValueError / OSError / ... with the window's messages through the
     // translator bindEngine registered (python/bindings/convert.cpp, over doc::describeError).
-
-    py::class_<Tree>(m, "Tree", "A tree of the document (a snapshot of its values).")
-        .def_readonly("id", &Tree::id)
-        .def_readonly("species", &Tree::species)
-        .def_property_readonly("position", [](const Tree& t) { return fromVec3(t.position); })
-        .def_readonly("rotation", &Tree::rotation, "degrees about +Y")
-        .def_readonly("scale", &Tree::scale)
-        .def_readonly("growth", &Tree::growth)
-        .def_readonly("seed", &Tree::seed)
-        .def("__repr__", [](const Tree& t) {
-            return "<Tree " + std::to_string(t.id) + " " + t.species + " at (" +
-                   std::to_string(t.position.x) + ", " + std::to_string(t.position.y) + ", " +
-                   std::to_string(t.position.z) + ")>";
-        });
 
     py::class_<DocumentApi>(m, "Document", "The open project; every edit is one undo step.")
         .def(
@@ -149,6 +146,10 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def("new", [](DocumentApi&) { document().newProject(); })
         .def_property_readonly("path", [](DocumentApi&) { return document().path().toStdString(); })
         .def_property_readonly("modified", [](DocumentApi&) { return document().isModified(); })
+        .def(
+            "project", [](DocumentApi&) { return python::projectFrom(document().project()); },
+            "A copy of the open project as a sylva.Project (build_forest, export_forest, ... as "
+            "in python3); edits to it do not reach the document.")
         .def("trees",
              [](DocumentApi&) {
                  std::vector<Tree> out;
@@ -161,20 +162,14 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "add_tree",
             [](DocumentApi&, const std::string& species, py::object position, double rotation,
-               double scale, std::optional<std::uint64_t> seed) {
-                doc::ProjectInstance t;
-                t.species = species;
-                t.position = toVec3(position, "position");
-                t.rotation = rotation;
-                t.scale = scale;
-                t.seed = seed
-                             ? *seed
-                             : mixSeed(document().project().seed, document().treeIds().size() + 1) %
-                                   1000000007ull;
-                return document().addTree(t);
+               double scale, std::optional<std::uint64_t> seed, double growth) {
+                return document().addTree(python::newTree(document().project(),
+                                                          document().treeIds().size(), species,
+                                                          position, rotation, scale, seed, growth));
             },
             py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
-            py::arg("scale") = 1.0, py::arg("seed") = py::none())
+            py::arg("scale") = 1.0, py::arg("seed") = py::none(), py::arg("growth") = 1.0,
+            "A hand-placed tree (as sylva.Project.add_tree); returns its id.")
         .def(
             "set_tree",
             [](DocumentApi&, doc::TreeId id, py::object position, std::optional<double> rotation,
@@ -203,13 +198,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 return std::vector<doc::TreeId>(out.begin(), out.end());
             },
             py::arg("ids"))
-        .def("species",
-             [](DocumentApi&) {
-                 std::vector<std::string> names;
-                 for (const doc::ProjectSpecies& s : document().project().species)
-                     names.push_back(s.name);
-                 return names;
-             })
+        .def("species", [](DocumentApi&) { return python::speciesNames(document().project()); })
         .def(
             "add_species",
             [](DocumentApi&, const std::string& name, const std::string& file) {
@@ -301,12 +290,17 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             py::arg("species"), py::arg("id"), py::arg("x"), py::arg("y"))
         .def(
             "preview_ms",
-            [](DocumentApi&) {
-                // The species editor's last edit → new preview mesh on screen (0 before any).
+            [](DocumentApi&) -> py::object {
+                // The species editor's last edit → new preview mesh on screen. A measured time is
+                // never exactly 0; 0 means no preview ran (the species editor was never open),
+                // which must not read as "instant".
                 SpeciesPreview* p = window().workbench()->preview();
-                return p->editToScreenMs() > 0.0 ? p->editToScreenMs() : p->editToResultMs();
+                if (p->editToScreenMs() > 0.0) return py::float_(p->editToScreenMs());
+                if (p->editToResultMs() > 0.0) return py::float_(p->editToResultMs());
+                return py::none();
             },
-            "Milliseconds from the last edit to the species preview's new mesh on screen.")
+            "Milliseconds from the last edit to the species preview's new mesh on screen; None "
+            "when no preview ran.")
         .def(
             "preview_stats",
             [](DocumentApi&) {
@@ -324,27 +318,14 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             "The last preview: edit → result and → screen, the evaluation alone, and per node "
             "(ran, ms, evaluations).")
         .def("obstacles",
-             [](DocumentApi&) {
-                 py::list out;
-                 for (const doc::ProjectObstacle& o : document().project().obstacles) {
-                     py::dict d;
-                     d["file"] = o.file;
-                     d["translate"] = fromVec3(o.translate);
-                     d["rotate"] = fromVec3(o.rotate);
-                     d["scale"] = fromVec3(o.scale);
-                     out.append(d);
-                 }
-                 return out;
-             })
+             [](DocumentApi&) { return python::obstaclesList(document().project().obstacles); })
         .def(
             "add_obstacle",
             [](DocumentApi&, const std::string& file, py::object translate, py::object rotate,
                py::object scale) {
                 doc::ProjectObstacle o;
                 o.file = file;
-                if (!translate.is_none()) o.translate = toVec3(translate, "translate");
-                if (!rotate.is_none()) o.rotate = toVec3(rotate, "rotate");
-                if (!scale.is_none()) o.scale = toVec3(scale, "scale");
+                python::applyTransform(o, translate, rotate, scale);
                 document().addObstacle(o);
                 return document().project().obstacles.size() - 1;
             },
@@ -357,27 +338,14 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 if (index < 0 || index >= int(all.size()))
                     throw InvalidInput("there is no obstacle " + std::to_string(index));
                 doc::ProjectObstacle o = all[std::size_t(index)];
-                if (!translate.is_none()) o.translate = toVec3(translate, "translate");
-                if (!rotate.is_none()) o.rotate = toVec3(rotate, "rotate");
-                if (!scale.is_none()) o.scale = toVec3(scale, "scale");
+                python::applyTransform(o, translate, rotate, scale);
                 document().setObstacle(index, o);
             },
             py::arg("index"), py::arg("translate") = py::none(), py::arg("rotate") = py::none(),
             py::arg("scale") = py::none())
         .def("remove_obstacle", [](DocumentApi&, int index) { document().removeObstacle(index); })
         .def("domains",
-             [](DocumentApi&) {
-                 py::list out;
-                 for (const doc::PlacementDomain& d : document().project().domains) {
-                     py::dict o;
-                     o["shape"] = d.shape;
-                     o["min"] = py::make_tuple(d.min.x, d.min.y);
-                     o["max"] = py::make_tuple(d.max.x, d.max.y);
-                     o["counts"] = d.counts;
-                     out.append(o);
-                 }
-                 return out;
-             })
+             [](DocumentApi&) { return python::domainsList(document().project().domains); })
         .def(
             "set_domain",
             [](DocumentApi&, int index, std::optional<std::map<std::string, int>> counts,
@@ -387,16 +355,8 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                     throw InvalidInput("there is no domain " + std::to_string(index));
                 doc::PlacementDomain d = all[std::size_t(index)];
                 if (counts) d.counts = *counts;
-                if (!min.is_none()) {
-                    auto v = min.cast<std::vector<float>>();
-                    if (v.size() != 2) throw InvalidInput("min needs two numbers (x, z)");
-                    d.min = {v[0], v[1]};
-                }
-                if (!max.is_none()) {
-                    auto v = max.cast<std::vector<float>>();
-                    if (v.size() != 2) throw InvalidInput("max needs two numbers (x, z)");
-                    d.max = {v[0], v[1]};
-                }
+                if (!min.is_none()) d.min = python::toXZ(min, "min");
+                if (!max.is_none()) d.max = python::toXZ(max, "max");
                 document().setDomain(index, d);
             },
             py::arg("index"), py::arg("counts") = py::none(), py::arg("min") = py::none(),
@@ -534,6 +494,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "project",
             [](WindowApi&, float x, float y, float z) -> py::object {
+                layOut(window());
                 Viewport* v = window().viewport();
                 const auto p = v->project({x, y, z});
                 if (!p) return py::none();
@@ -541,7 +502,8 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 return py::make_tuple(global.x(), global.y());
             },
             py::arg("x"), py::arg("y"), py::arg("z"),
-            "Where a world point is drawn, in global screen pixels (what xdotool takes), or None.")
+            "Where a world point is drawn, in global screen pixels (what xdotool takes), or None; "
+            "for the window as it is shown (its layout is applied first).")
         .def(
             "look_from",
             [](WindowApi&, py::object eye, py::object target) {

@@ -24,6 +24,21 @@ assert stats["trees"] == 44, stats
 # Only what the edits touched regrew (the new tree and the domain trees placement moved).
 assert stats["regrown"] < stats["trees"], stats
 
+# The document's trees are `import sylva`'s sylva.Tree, and doc.project() is a sylva.Project
+# (a copy) with the same trees, species, obstacles and domains.
+assert isinstance(doc.tree(tid), sylva.Tree)
+snapshot = doc.project()
+assert isinstance(snapshot, sylva.Project)
+assert snapshot.species == doc.species()
+assert snapshot.domains == doc.domains() and snapshot.obstacles == doc.obstacles()
+assert [(t.species, t.position, t.seed) for t in snapshot.trees()] == [
+    (t.species, t.position, t.seed) for t in doc.trees()]
+assert snapshot.tree_count == len(doc.trees())
+grown = doc.add_tree("ternary", (8, 0, 8), growth=0.5)  # the same arguments as Project.add_tree
+assert doc.tree(grown).growth == 0.5
+doc.undo()
+assert grown not in [t.id for t in doc.trees()]
+
 # Bad input: the window's message, and nothing changed.
 before = doc.serialized()
 for bad, expect in [

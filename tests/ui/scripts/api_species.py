@@ -13,6 +13,9 @@ assert g["output"] == "mesh", g
 assert [n["id"] for n in g["nodes"]] == ["grow", "mesh"], g
 assert g["nodes"][1]["inputs"] == ["grow"], g
 
+# No preview has run yet (the species editor is closed): no time, rather than 0 ("instant").
+assert doc.preview_ms() is None, doc.preview_ms()
+
 win.edit_species("alder")
 assert win.wait_for_preview(120)
 first = doc.preview_stats()

@@ -1,0 +1,137 @@
+#include "project.h"
+
+#include <QDir>
+
+#include "document/scenebuild.h"
+#include "engine/environment/obstaclescene.h"
+#include "engine/forest/placement.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+
+namespace sylva::python {
+
+scene::ForestScene Project::makeScene() const {
+    scene::ForestScene s = doc::makeForestScene(project);
+    if (!arrayObstacles.empty()) {
+        std::vector<env::ObstacleMesh> all;
+        if (s.obstacles) all = s.obstacles->meshes();
+        all.insert(all.end(), arrayObstacles.begin(), arrayObstacles.end());
+        s.obstacles = std::make_shared<const env::ObstacleScene>(std::move(all));
+    }
+    if (ground) {
+        if (s.ground)
+            throw InvalidInput("the project has a terrain domain already; it cannot have a "
+                               "ground from arrays as well");
+        s.ground =
+            std::make_shared<const env::ObstacleScene>(std::vector<env::ObstacleMesh>{*ground});
+        forest::Domain d;
+        d.min = {ground->lo.x, ground->lo.z};
+        d.max = {ground->hi.x, ground->hi.z};
+        for (const auto& [name, count] : groundCounts)
+            d.counts.emplace_back(name, static_cast<std::size_t>(count));
+        s.domains.push_back(std::move(d));
+    }
+    return s;
+}
+
+Project projectFrom(const doc::Project& project) {
+    Project p;
+    p.project = project;
+    if (p.project.baseDir.isEmpty()) p.project.baseDir = QDir::currentPath();
+    return p;
+}
+
+Tree treeOf(std::uint64_t id, const doc::ProjectInstance& t) {
+    return {id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed};
+}
+
+doc::ProjectInstance newTree(const doc::Project& project, std::size_t treesBefore,
+                             const std::string& species, const py::handle& position,
+                             double rotation, double scale, std::optional<std::uint64_t> seed,
+                             double growth) {
+    doc::ProjectInstance t;
+    t.species = species;
+    t.position = toVec3(position, "position");
+    t.rotation = rotation;
+    t.scale = scale;
+    t.growth = growth;
+    t.seed = seed ? *seed : mixSeed(project.seed, treesBefore + 1) % 1000000007ull;
+    return t;
+}
+
+std::vector<std::string> speciesNames(const doc::Project& project) {
+    std::vector<std::string> names;
+    for (const doc::ProjectSpecies& s : project.species)
+        names.push_back(s.name);
+    return names;
+}
+
+py::list obstaclesList(const std::vector<doc::ProjectObstacle>& obstacles) {
+    py::list out;
+    for (const doc::ProjectObstacle& o : obstacles) {
+        py::dict d;
+        d["file"] = o.file;
+        d["translate"] = fromVec3(o.translate);
+        d["rotate"] = fromVec3(o.rotate);
+        d["scale"] = fromVec3(o.scale);
+        out.append(d);
+    }
+    return out;
+}
+
+void applyTransform(doc::ProjectObstacle& o, const py::handle& translate, const py::handle& rotate,
+                    const py::handle& scale) {
+    if (!translate.is_none()) o.translate = toVec3(translate, "translate");
+    if (!rotate.is_none()) o.rotate = toVec3(rotate, "rotate");
+    if (!scale.is_none()) o.scale = toVec3(scale, "scale");
+}
+
+env::MeshTransform transformFrom(const py::handle& translate, const py::handle& rotate,
+                                 const py::handle& scale) {
+    doc::ProjectObstacle o;
+    applyTransform(o, translate, rotate, scale);
+    env::MeshTransform t;
+    t.translate = o.translate;
+    t.rotateDeg = o.rotate;
+    t.scale = o.scale;
+    return t;
+}
+
+py::list domainsList(const std::vector<doc::PlacementDomain>& domains) {
+    py::list out;
+    for (const doc::PlacementDomain& d : domains) {
+        py::dict o;
+        o["shape"] = d.shape;
+        o["min"] = py::make_tuple(d.min.x, d.min.y);
+        o["max"] = py::make_tuple(d.max.x, d.max.y);
+        o["counts"] = d.counts;
+        out.append(o);
+    }
+    return out;
+}
+
+glm::vec2 toXZ(const py::handle& o, const char* what) {
+    const auto v = o.cast<std::vector<float>>();
+    if (v.size() != 2) throw InvalidInput(std::string(what) + " needs two numbers (x, z)");
+    return {v[0], v[1]};
+}
+
+void bindTree(py::module_& m) {
+    py::class_<Tree>(m, "Tree",
+                     "A hand-placed tree of a project or of the editor's document (a snapshot "
+                     "of its values).")
+        .def_readonly("id", &Tree::id, "the document's tree id, or the index in a Project")
+        .def_readonly("species", &Tree::species)
+        .def_property_readonly("position", [](const Tree& t) { return fromVec3(t.position); })
+        .def_readonly("rotation", &Tree::rotation, "degrees about +Y")
+        .def_readonly("scale", &Tree::scale)
+        .def_readonly("growth", &Tree::growth)
+        .def_readonly("seed", &Tree::seed)
+        .def("__repr__", [](const Tree& t) {
+            return "<Tree " + std::to_string(t.id) + " " + t.species + " at (" +
+                   std::to_string(t.position.x) + ", " + std::to_string(t.position.y) + ", " +
+                   std::to_string(t.position.z) + ")>";
+        });
+}
+
+} // namespace sylva::python
