@@ -1,32 +1,21 @@
 #include "ui/mainwindow.h"
-#include "ui/document/presetbrowser.h"
-#include "ui/nodes/nodegraphscene.h"
-#include "ui/nodes/parameterpanel.h"
-#include "ui/speciesworkbench.h"
 
+#include <algorithm>
 #include <string>
 
 #include <QAction>
-#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDesktopServices>
 #include <QDialog>
 #include <QDir>
 #include <QDockWidget>
-
-#include <algorithm>
-
 #include <QEventLoop>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QHeaderView>
 #include <QImage>
-#include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -39,7 +28,6 @@
 #include <QToolButton>
 #include <QTreeView>
 #include <QUndoView>
-#include <QUrl>
 
 #include "document/autosave.h"
 #include "document/errormessage.h"
@@ -47,30 +35,37 @@
 #include "document/presetlibrary.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
-#include "engine/util/error.h"
-#include "engine/util/random.h"
+#include "ui/document/documentactions.h"
 #include "ui/document/messagespanel.h"
 #include "ui/document/outlinermodel.h"
+#include "ui/document/outlinerview.h"
+#include "ui/document/presetbrowser.h"
+#include "ui/document/presetsmenu.h"
 #include "ui/document/propertiespanel.h"
 #include "ui/document/sourcewatcher.h"
 #include "ui/document/statspanel.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/generation/exportshown.h"
 #include "ui/generation/scenegenerator.h"
+#include "ui/helpmenu.h"
+#include "ui/languagemenu.h"
+#include "ui/nodes/nodegraphscene.h"
+#include "ui/nodes/parameterpanel.h"
 #include "ui/preferencesdialog.h"
+#include "ui/recentfilesmenu.h"
 #include "ui/scripting/pythonconsole.h"
 #include "ui/scripting/pythonhost.h"
+#include "ui/speciesworkbench.h"
+#include "ui/viewport/colorbymenu.h"
 #include "ui/viewport/toolcontroller.h"
 #include "ui/viewport/tooloptionsbar.h"
 #include "ui/viewport/viewport.h"
 
 namespace sylva::ui {
 
-using doc::PresetInfo;
 using doc::PresetLibrary;
 
 namespace {
-constexpr int kMaxRecent = 8;
 QString errorText() {
     return QString::fromStdString(doc::describeError(std::current_exception()).message);
 }
@@ -155,7 +150,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         for (doc::TreeId id : mDocument->selectedTrees())
             ids.insert(id);
         mViewport->setHighlightedTrees(ids);
-        syncOutlinerSelection();
         mStats->showSelection(*mDocument, mGenerator->result());
     });
     connect(mViewport, &Viewport::frameSwapped, this, [this] {
@@ -207,30 +201,7 @@ void MainWindow::createDocks() {
     };
 
     mOutlinerModel = new OutlinerModel(*mDocument, this);
-    mOutliner = new QTreeView(this);
-    mOutliner->setObjectName(QStringLiteral("outlinerView"));
-    mOutliner->setModel(mOutlinerModel);
-    mOutliner->setHeaderHidden(true);
-    mOutliner->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    mOutliner->setEditTriggers(QAbstractItemView::EditKeyPressed |
-                               QAbstractItemView::DoubleClicked);
-    mOutliner->setContextMenuPolicy(Qt::ActionsContextMenu);
-    connect(mOutlinerModel, &QAbstractItemModel::modelReset, this, [this] {
-        for (int g : {OutlinerModel::SpeciesGroup, OutlinerModel::TreesGroup,
-                      OutlinerModel::DomainsGroup, OutlinerModel::ObstaclesGroup})
-            mOutliner->expand(mOutlinerModel->groupIndex(OutlinerModel::Group(g)));
-        syncOutlinerSelection();
-    });
-    connect(mOutliner->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
-        if (mSyncingSelection) return;
-        QList<doc::ItemRef> items;
-        for (const QModelIndex& i : mOutliner->selectionModel()->selectedIndexes())
-            if (auto item = mOutlinerModel->itemAt(i); item && !items.contains(*item))
-                items << *item;
-        mSyncingSelection = true;
-        mDocument->setSelection(items);
-        mSyncingSelection = false;
-    });
+    mOutliner = new OutlinerView(*mDocument, mOutlinerModel, this);
     connect(mOutlinerModel, &OutlinerModel::hiddenTreesChanged, mViewport,
             &Viewport::setHiddenTrees);
     connect(mOutlinerModel, &OutlinerModel::editFailed, this, &MainWindow::reportError);
@@ -344,6 +315,9 @@ void MainWindow::editSpecies(const QString& species) {
 }
 
 void MainWindow::createMenus() {
+    mDocumentActions = new DocumentActions(
+        *mDocument, [this] { return mViewport->camera().target(); }, this);
+    connect(mDocumentActions, &DocumentActions::failed, this, &MainWindow::reportError);
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->setObjectName(QStringLiteral("fileMenu"));
     QAction* newAction = file->addAction(tr("&New project"), this, &MainWindow::newDocument);
@@ -353,10 +327,9 @@ void MainWindow::createMenus() {
         file->addAction(tr("&Open species or project…"), this, &MainWindow::showOpenDialog);
     open->setObjectName(QStringLiteral("actionOpen"));
     open->setShortcut(QKeySequence::Open);
-    mRecentMenu = file->addMenu(tr("Open &recent"));
-    mRecentMenu->setObjectName(QStringLiteral("recentMenu"));
-    connect(mRecentMenu, &QMenu::aboutToShow, this, &MainWindow::populateRecentMenu);
-    populateRecentMenu();
+    auto* recent = new RecentFilesMenu(this);
+    connect(recent, &RecentFilesMenu::openRequested, this, &MainWindow::openSpecies);
+    file->addMenu(recent);
     QAction* saveAction = file->addAction(tr("&Save"), this, &MainWindow::save);
     saveAction->setObjectName(QStringLiteral("actionSave"));
     saveAction->setShortcut(QKeySequence::Save);
@@ -403,17 +376,10 @@ void MainWindow::createMenus() {
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
-    QAction* del = edit->addAction(tr("&Delete"), this, &MainWindow::deleteSelection);
-    del->setObjectName(QStringLiteral("actionDelete"));
-    del->setShortcut(QKeySequence::Delete);
-    QAction* dup = edit->addAction(tr("D&uplicate"), this, &MainWindow::duplicateSelection);
-    dup->setObjectName(QStringLiteral("actionDuplicate"));
-    dup->setShortcut(QKeySequence(tr("Ctrl+D")));
-    QAction* all = edit->addAction(tr("Select &all trees"), this, &MainWindow::selectAllTrees);
-    all->setObjectName(QStringLiteral("actionSelectAll"));
-    all->setShortcut(QKeySequence::SelectAll);
-    mOutliner->addAction(del);
-    mOutliner->addAction(dup);
+    edit->addActions({mDocumentActions->deleteAction(), mDocumentActions->duplicateAction(),
+                      mDocumentActions->selectAllAction()});
+    mOutliner->addAction(mDocumentActions->deleteAction());
+    mOutliner->addAction(mDocumentActions->duplicateAction());
     edit->addSeparator();
     QAction* prefs = edit->addAction(tr("&Preferences…"), this, &MainWindow::showPreferences);
     prefs->setObjectName(QStringLiteral("actionPreferences"));
@@ -421,7 +387,7 @@ void MainWindow::createMenus() {
 
     QMenu* scene = menuBar()->addMenu(tr("&Scene"));
     scene->setObjectName(QStringLiteral("sceneMenu"));
-    scene->addAction(tr("Add &species from file…"), this, &MainWindow::showAddSpeciesDialog);
+    scene->addAction(mDocumentActions->addSpeciesAction());
     QAction* editSpeciesAction = scene->addAction(tr("&Edit species…"), this, [this] {
         // The selected species, else the species of the selected tree, else the shown one.
         QString name;
@@ -437,26 +403,14 @@ void MainWindow::createMenus() {
     });
     editSpeciesAction->setObjectName(QStringLiteral("actionEditSpecies"));
     editSpeciesAction->setShortcut(QKeySequence(tr("Ctrl+E")));
-    QAction* addTree = scene->addAction(tr("Add &tree"), this, &MainWindow::addTreeAtTarget);
-    addTree->setObjectName(QStringLiteral("actionAddTree"));
-    addTree->setShortcut(QKeySequence(tr("Ctrl+T")));
-    scene->addAction(tr("Import &obstacle…"), this, &MainWindow::showImportObstacleDialog);
-    scene->addAction(tr("Add &domain"), this, [this] {
-        try {
-            doc::PlacementDomain d;
-            d.min = {-20.0f, -20.0f};
-            d.max = {20.0f, 20.0f};
-            mDocument->addDomain(d);
-        } catch (...) {
-            reportError(errorText());
-        }
-    });
+    scene->addActions({mDocumentActions->addTreeAction(), mDocumentActions->importObstacleAction(),
+                       mDocumentActions->addDomainAction()});
 
-    mPresetsMenu = menuBar()->addMenu(tr("&Presets"));
-    mPresetsMenu->setObjectName(QStringLiteral("presetsMenu"));
-    mPresetGroup = new QActionGroup(this);
-    connect(mPresetsMenu, &QMenu::aboutToShow, this, &MainWindow::populatePresetsMenu);
-    populatePresetsMenu();
+    auto* presets =
+        new PresetsMenu([this] { return mPreview.isActive() ? mPreview.path() : QString(); }, this);
+    connect(presets, &PresetsMenu::openRequested, this, &MainWindow::openSpecies);
+    mPresetsMenu = presets;
+    menuBar()->addMenu(presets);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     mViewMenu = view;
@@ -473,66 +427,17 @@ void MainWindow::createMenus() {
     // Shortcuts of the View menu act while the viewport has focus, like the F key itself.
     mViewport->addAction(frame);
     mViewport->addAction(grid);
-    QMenu* color = view->addMenu(tr("&Colour by"));
-    color->setObjectName(QStringLiteral("colorMenu"));
-    mColorGroup = new QActionGroup(this);
-    const std::pair<ColorBy, QString> modes[] = {{ColorBy::Material, tr("&Material")},
-                                                 {ColorBy::Light, tr("&Light (per internode)")},
-                                                 {ColorBy::Vigour, tr("&Vigour")},
-                                                 {ColorBy::Age, tr("&Age")},
-                                                 {ColorBy::BranchOrder, tr("Branch &order")}};
-    for (const auto& [mode, label] : modes) {
-        QAction* action = color->addAction(label);
-        action->setCheckable(true);
-        action->setChecked(mode == mColorBy);
-        action->setData(static_cast<int>(mode));
-        mColorGroup->addAction(action);
-        connect(action, &QAction::triggered, this, [this, mode = mode] { setColorBy(mode); });
-    }
+    mColorMenu = new ColorByMenu(mColorBy, this);
+    connect(mColorMenu, &ColorByMenu::chosen, this, &MainWindow::setColorBy);
+    view->addMenu(mColorMenu);
     view->addSeparator();
     QMenu* docks = view->addMenu(tr("&Panels"));
     docks->setObjectName(QStringLiteral("panelsMenu"));
     for (const auto& [name, d] : mDocks)
         docks->addAction(d->toggleViewAction());
-    QMenu* language = view->addMenu(tr("&Language"));
-    language->setObjectName(QStringLiteral("languageMenu"));
-    auto* languages = new QActionGroup(this);
-    const QString current = QSettings().value(QStringLiteral("language")).toString();
-    const std::pair<QString, QString> choices[] = {
-        {QString(), tr("System default")},
-        {QStringLiteral("en"), QStringLiteral("English")},
-        {QStringLiteral("de"), QStringLiteral("Deutsch")},
-        {QStringLiteral("fr"), QStringLiteral("Français")}};
-    for (const auto& [code, label] : choices) {
-        QAction* a = language->addAction(label);
-        a->setCheckable(true);
-        a->setChecked(code == current);
-        languages->addAction(a);
-        connect(a, &QAction::triggered, this, [this, code = code] {
-            QSettings().setValue(QStringLiteral("language"), code);
-            QMessageBox::information(this, tr("Language"),
-                                     tr("Sylva will use the new language when it starts again."));
-        });
-    }
+    view->addMenu(new LanguageMenu(this));
 
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->setObjectName(QStringLiteral("helpMenu"));
-    help->addAction(tr("&Documentation"), this, [] {
-        QDir docs(PresetLibrary::directory());
-        const QString folder = docs.cdUp() && docs.cd(QStringLiteral("docs"))
-                                   ? docs.absolutePath()
-                                   : QStringLiteral("/usr/share/doc/sylva");
-        QDesktopServices::openUrl(QUrl::fromLocalFile(QDir(folder).filePath("editor.md")));
-    });
-    help->addAction(tr("&About Sylva"), this, [this] {
-        QMessageBox::about(
-            this, tr("About Sylva"),
-            tr("<h3>Sylva %1</h3><p>Procedural trees and forests for film and games: "
-               "L-systems, space colonization and self-organizing trees, forests that react to "
-               "the scene they stand in.</p><p>Scripting: Python (the Python Console, or "
-               "<tt>sylva --script file.py</tt>).</p>")
-                .arg(QApplication::applicationVersion()));
-    });
+    menuBar()->addMenu(new HelpMenu(this));
 }
 
 void MainWindow::createToolBar() {
@@ -558,8 +463,7 @@ void MainWindow::frameSelectionOrAll() {
 
 void MainWindow::setColorBy(ColorBy mode) {
     mColorBy = mode;
-    for (QAction* action : mColorGroup->actions())
-        action->setChecked(action->data().toInt() == static_cast<int>(mode));
+    mColorMenu->setMode(mode);
     applyColoring();
 }
 
@@ -567,11 +471,7 @@ void MainWindow::applyColoring() {
     const GenerationResult& result = lastResult();
     const skel::Skeleton* skeleton = mPreview.isActive() ? result.skeleton.get() : nullptr;
     // Attributes this tree has; the others are greyed out. A forest has no one skeleton.
-    for (QAction* action : mColorGroup->actions()) {
-        const auto mode = static_cast<ColorBy>(action->data().toInt());
-        action->setEnabled(mode == ColorBy::Material ||
-                           (skeleton && hasAttribute(*skeleton, mode)) || !result.mesh);
-    }
+    mColorMenu->enableFor(skeleton, result.mesh != nullptr);
     if (!result.mesh) return;
     if (!skeleton) {
         mViewport->setVertexColors({});
@@ -584,53 +484,6 @@ void MainWindow::applyColoring() {
     mViewport->setVertexColors(std::move(coloring.colors));
     // The legend names the ramp's range, or says that this tree lacks the attribute.
     if (mColorBy != ColorBy::Material) statusBar()->showMessage(coloring.legend);
-}
-
-void MainWindow::populatePresetsMenu() {
-    mPresetsMenu->clear();
-    for (QAction* action : mPresetGroup->actions())
-        mPresetGroup->removeAction(action);
-    const QString dir = PresetLibrary::directory();
-    const QList<PresetInfo> presets = PresetLibrary::list(dir);
-    if (presets.isEmpty()) {
-        QAction* none = mPresetsMenu->addAction(
-            dir.isEmpty() ? tr("No presets folder found (set SYLVA_PRESETS_DIR)")
-                          : tr("No presets in %1").arg(QDir::toNativeSeparators(dir)));
-        none->setEnabled(false);
-        return;
-    }
-    for (const PresetInfo& preset : presets) {
-        QAction* action = mPresetsMenu->addAction(preset.name);
-        action->setData(preset.path);
-        action->setToolTip(preset.path);
-        action->setCheckable(true);
-        action->setChecked(mPreview.isActive() &&
-                           QFileInfo(preset.path) == QFileInfo(mPreview.path()));
-        mPresetGroup->addAction(action);
-        connect(action, &QAction::triggered, this,
-                [this, path = preset.path] { openSpecies(path); });
-    }
-}
-
-void MainWindow::populateRecentMenu() {
-    mRecentMenu->clear();
-    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
-    for (const QString& path : recent) {
-        QAction* a = mRecentMenu->addAction(QDir::toNativeSeparators(path));
-        connect(a, &QAction::triggered, this, [this, path] { openSpecies(path); });
-    }
-    if (recent.isEmpty()) mRecentMenu->addAction(tr("No recent files"))->setEnabled(false);
-}
-
-void MainWindow::addRecent(const QString& path) {
-    QSettings settings;
-    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    recent.removeAll(absolute);
-    recent.prepend(absolute);
-    while (recent.size() > kMaxRecent)
-        recent.removeLast();
-    settings.setValue(QStringLiteral("recentFiles"), recent);
 }
 
 // --- opening, saving --------------------------------------------------------------------
@@ -658,7 +511,7 @@ bool MainWindow::openProject(const QString& path) {
         reportError(errorText());
         return false;
     }
-    addRecent(path);
+    RecentFilesMenu::add(path);
     mMessages->add(MessagesPanel::Severity::Info,
                    tr("Opened %1").arg(QDir::toNativeSeparators(mDocument->path())));
     return true;
@@ -685,7 +538,7 @@ bool MainWindow::saveAs(const QString& path) {
         reportError(errorText());
         return false;
     }
-    addRecent(path);
+    RecentFilesMenu::add(path);
     mAutosave->discard();
     mDocumentStamp = QFileInfo(mDocument->path()).lastModified(); // our own write
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(mDocument->path())),
@@ -948,101 +801,6 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
     event->accept();
-}
-
-// --- scene edits from menus ------------------------------------------------------------
-
-void MainWindow::deleteSelection() {
-    try {
-        const QList<doc::ItemRef> selection = mDocument->selection();
-        QList<doc::TreeId> trees = mDocument->selectedTrees();
-        if (!trees.isEmpty()) {
-            mDocument->removeTrees(trees);
-            return;
-        }
-        for (const doc::ItemRef& item : selection) {
-            if (item.kind == doc::ItemRef::Kind::Obstacle) mDocument->removeObstacle(int(item.id));
-            if (item.kind == doc::ItemRef::Kind::Domain) mDocument->removeDomain(int(item.id));
-            if (item.kind == doc::ItemRef::Kind::Species)
-                mDocument->removeSpecies(mDocument->project().species[item.id].name);
-            return; // indices of the rest changed
-        }
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::duplicateSelection() {
-    try {
-        const QList<doc::TreeId> copies = mDocument->duplicateTrees(mDocument->selectedTrees());
-        if (!copies.isEmpty()) mDocument->selectTrees(copies);
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::selectAllTrees() {
-    mDocument->selectTrees(
-        QList<doc::TreeId>(mDocument->treeIds().begin(), mDocument->treeIds().end()));
-}
-
-void MainWindow::addTreeAtTarget() {
-    try {
-        if (mDocument->project().species.empty())
-            throw InvalidInput("add a species first (Scene ▸ Add species from file…)");
-        doc::ProjectInstance t;
-        t.species = mDocument->project().species.front().name;
-        const glm::vec3 target = mViewport->camera().target();
-        t.position = {target.x, 0.0f, target.z};
-        t.seed =
-            mixSeed(mDocument->project().seed, mDocument->treeIds().size() + 1) % 1000000007ull;
-        mDocument->selectTrees({mDocument->addTree(t)});
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::showAddSpeciesDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Add species"), PresetLibrary::directory(),
-        tr("Species and grammars (*.json *.lsys *.txt);;All files (*)"));
-    if (path.isEmpty()) return;
-    bool ok = false;
-    const QString name =
-        QInputDialog::getText(this, tr("Add species"), tr("Name in the project:"),
-                              QLineEdit::Normal, QFileInfo(path).completeBaseName(), &ok);
-    if (!ok) return;
-    try {
-        mDocument->addSpecies(name.trimmed().toStdString(), path);
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::showImportObstacleDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Import obstacle"), QFileInfo(mDocument->path()).absolutePath(),
-        tr("Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)"));
-    if (path.isEmpty()) return;
-    try {
-        doc::ProjectObstacle o;
-        o.file = path.toStdString();
-        mDocument->addObstacle(o);
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::syncOutlinerSelection() {
-    if (mSyncingSelection) return;
-    mSyncingSelection = true;
-    QItemSelection selection;
-    for (const doc::ItemRef& item : mDocument->selection()) {
-        const QModelIndex i = mOutlinerModel->indexOf(item);
-        if (i.isValid()) selection.select(i, i);
-    }
-    mOutliner->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
-    mSyncingSelection = false;
 }
 
 // --- files on disk ----------------------------------------------------------------------

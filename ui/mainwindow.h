@@ -31,6 +31,8 @@ class Autosave;
 
 namespace sylva::ui {
 
+class ColorByMenu;
+class DocumentActions;
 class DocumentGenerator;
 class MessagesPanel;
 class OutlinerModel;
@@ -159,9 +161,6 @@ private:
     void createMenus();
     void createToolBar();
     void frameSelectionOrAll();
-    void populatePresetsMenu();
-    void populateRecentMenu();
-    void addRecent(const QString& path);
     void onPreviewGenerated(const GenerationResult& run);
     void onDocumentGenerated(bool ok, const QString& error);
     void onDocumentChanged(const doc::DocumentChange& change);
@@ -174,15 +173,8 @@ private:
     void showPreferences();
     void showScreenshotDialog();
     void showExportDialog();
-    void showImportObstacleDialog();
-    void showAddSpeciesDialog();
-    void addTreeAtTarget();
-    void deleteSelection();
-    void duplicateSelection();
-    void selectAllTrees();
     void applyColoring();
     void onSourcesChanged(const QStringList& changed);
-    void syncOutlinerSelection();
     void setBusy(bool busy);
 
     doc::Document* mDocument = nullptr;
@@ -200,25 +192,23 @@ private:
     PythonConsole* mConsole = nullptr;
     ToolController* mTools = nullptr;
     ToolOptionsBar* mToolBar = nullptr;
+    DocumentActions* mDocumentActions = nullptr;
     QAction* mExportSelectionAction = nullptr;
     QAction* mExportViewLodAction = nullptr;
     std::map<QString, QDockWidget*> mDocks;
     QMenu* mPresetsMenu = nullptr;
-    QMenu* mRecentMenu = nullptr;
     QMenu* mViewMenu = nullptr;
-    QActionGroup* mPresetGroup = nullptr;
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
     QAction* mAutoReloadAction = nullptr;
     SourceWatcher* mSourceWatcher = nullptr; ///< the files the shown result was read from
     QTimer* mSpeciesRegen = nullptr;         ///< the forest regrows when species edits pause
     QDateTime mDocumentStamp; ///< the project file's time when opened, saved or last seen
-    QActionGroup* mColorGroup = nullptr;
+    ColorByMenu* mColorMenu = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;
     QProgressBar* mBusy = nullptr;
     QToolButton* mCancel = nullptr;
-    bool mSyncingSelection = false;
 
     /// A species file shown instead of the document (a member: it stops before the window's
     /// children go).

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFormLayout>
@@ -17,37 +16,32 @@ namespace sylva::ui {
 PreferencesDialog::PreferencesDialog(int autosaveMs, const QString& recoveryFolder, int samples,
                                      QWidget* parent)
     : QDialog(parent) {
-    // The strings keep the window's translation context, where they were translated first.
     setObjectName(QStringLiteral("preferencesDialog"));
-    setWindowTitle(QCoreApplication::translate("MainWindow", "Preferences"));
+    setWindowTitle(tr("Preferences"));
     auto* form = new QFormLayout(this);
     mMinutes = new QSpinBox(this);
     mMinutes->setObjectName(QStringLiteral("autosaveMinutes"));
     mMinutes->setRange(1, 60);
-    mMinutes->setSuffix(QCoreApplication::translate("MainWindow", " min"));
+    mMinutes->setSuffix(tr(" min"));
     mMinutes->setValue(std::max(1, autosaveMs / 60000));
-    mMinutes->setToolTip(QCoreApplication::translate(
-        "MainWindow", "While there are unsaved edits, a recovery copy is written this often "
-                      "and a few seconds after the last edit. It never replaces your file."));
-    form->addRow(QCoreApplication::translate("MainWindow", "Autosave every:"), mMinutes);
+    mMinutes->setToolTip(tr("While there are unsaved edits, a recovery copy is written this often "
+                            "and a few seconds after the last edit. It never replaces your file."));
+    form->addRow(tr("Autosave every:"), mMinutes);
     auto* folder = new QLabel(QDir::toNativeSeparators(recoveryFolder), this);
     folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    form->addRow(QCoreApplication::translate("MainWindow", "Recovery folder:"), folder);
+    form->addRow(tr("Recovery folder:"), folder);
     mSamples = new QComboBox(this);
     mSamples->setObjectName(QStringLiteral("viewportSamples"));
-    mSamples->addItem(
-        QCoreApplication::translate("MainWindow", "Automatic (off on a software renderer)"),
-        Viewport::kAutoSamples);
-    mSamples->addItem(QCoreApplication::translate("MainWindow", "Off"), 0);
-    mSamples->addItem(QCoreApplication::translate("MainWindow", "2× multisampling"), 2);
-    mSamples->addItem(QCoreApplication::translate("MainWindow", "4× multisampling"), 4);
-    mSamples->addItem(QCoreApplication::translate("MainWindow", "8× multisampling"), 8);
+    mSamples->addItem(tr("Automatic (off on a software renderer)"), Viewport::kAutoSamples);
+    mSamples->addItem(tr("Off"), 0);
+    mSamples->addItem(tr("2× multisampling"), 2);
+    mSamples->addItem(tr("4× multisampling"), 4);
+    mSamples->addItem(tr("8× multisampling"), 8);
     mSamples->setCurrentIndex(std::max(0, mSamples->findData(samples)));
-    mSamples->setToolTip(QCoreApplication::translate(
-        "MainWindow", "Smooths the edges in the 3D view. Without a graphics card (a "
-                      "software renderer) it makes every frame two to three times slower. "
-                      "Takes effect when Sylva starts next."));
-    form->addRow(QCoreApplication::translate("MainWindow", "Antialiasing:"), mSamples);
+    mSamples->setToolTip(tr("Smooths the edges in the 3D view. Without a graphics card (a "
+                            "software renderer) it makes every frame two to three times slower. "
+                            "Takes effect when Sylva starts next."));
+    form->addRow(tr("Antialiasing:"), mSamples);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);

@@ -2,7 +2,6 @@
 
 #include <QActionGroup>
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QKeySequence>
 #include <QLabel>
@@ -36,42 +35,28 @@ std::vector<std::pair<std::string, double>> parseBrushMix(const QString& text,
     return mix;
 }
 
-// The strings keep the window's translation context, where they were translated first.
 ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, QWidget* parent)
     : QToolBar(parent), mTools(tools), mDocument(document) {
-    setWindowTitle(QCoreApplication::translate("MainWindow", "Tools"));
+    setWindowTitle(tr("Tools"));
     setObjectName(QStringLiteral("toolsToolBar"));
     mToolGroup = new QActionGroup(this);
     const struct {
         ToolController::Tool tool;
         QString label, key, tip;
     } toolList[] = {
-        {ToolController::Tool::Select, QCoreApplication::translate("MainWindow", "Select"),
-         QStringLiteral("V"),
-         QCoreApplication::translate(
-             "MainWindow",
-             "Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a "
-             "box); [ and ] step through the trees")},
-        {ToolController::Tool::Move, QCoreApplication::translate("MainWindow", "Move"),
-         QStringLiteral("M"),
-         QCoreApplication::translate(
-             "MainWindow",
-             "Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow "
-             "keys nudge). They re-adapt to the obstacles when you let go")},
-        {ToolController::Tool::Place, QCoreApplication::translate("MainWindow", "Place"),
-         QStringLiteral("P"),
-         QCoreApplication::translate("MainWindow",
-                                     "Click the ground to plant a tree of the chosen species")},
-        {ToolController::Tool::Brush, QCoreApplication::translate("MainWindow", "Brush"),
-         QStringLiteral("B"),
-         QCoreApplication::translate(
-             "MainWindow",
-             "Paint trees of the species mix with the radius and density below; one stroke is "
-             "one undo step")},
-        {ToolController::Tool::Erase, QCoreApplication::translate("MainWindow", "Erase"),
-         QStringLiteral("E"),
-         QCoreApplication::translate("MainWindow",
-                                     "Remove the hand-placed trees the brush passes over")},
+        {ToolController::Tool::Select, tr("Select"), QStringLiteral("V"),
+         tr("Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a "
+            "box); [ and ] step through the trees")},
+        {ToolController::Tool::Move, tr("Move"), QStringLiteral("M"),
+         tr("Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow "
+            "keys nudge). They re-adapt to the obstacles when you let go")},
+        {ToolController::Tool::Place, tr("Place"), QStringLiteral("P"),
+         tr("Click the ground to plant a tree of the chosen species")},
+        {ToolController::Tool::Brush, tr("Brush"), QStringLiteral("B"),
+         tr("Paint trees of the species mix with the radius and density below; one stroke is "
+            "one undo step")},
+        {ToolController::Tool::Erase, tr("Erase"), QStringLiteral("E"),
+         tr("Remove the hand-placed trees the brush passes over")},
     };
     for (const auto& t : toolList) {
         QAction* a = addAction(t.label);
@@ -88,12 +73,11 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
             a->setChecked(a->objectName() == QStringLiteral("tool_") + ToolController::name(tool));
     });
     addSeparator();
-    addWidget(new QLabel(QCoreApplication::translate("MainWindow", " Species: "), this));
+    addWidget(new QLabel(tr(" Species: "), this));
     mSpecies = new QComboBox(this);
     mSpecies->setObjectName(QStringLiteral("toolSpecies"));
-    mSpecies->setToolTip(QCoreApplication::translate(
-        "MainWindow", "The species the Place tool plants, and the Brush when no mix "
-                      "is given"));
+    mSpecies->setToolTip(tr("The species the Place tool plants, and the Brush when no mix "
+                            "is given"));
     mSpecies->setMinimumContentsLength(10);
     addWidget(mSpecies);
     connect(mSpecies, &QComboBox::currentTextChanged, this, [this](const QString& name) {
@@ -103,32 +87,28 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
     connect(&mDocument, &doc::Document::changed, this, [this](const doc::DocumentChange& c) {
         if (c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset)) syncSpecies();
     });
-    addWidget(new QLabel(QCoreApplication::translate("MainWindow", " Radius: "), this));
+    addWidget(new QLabel(tr(" Radius: "), this));
     mRadius = new QDoubleSpinBox(this);
     mRadius->setObjectName(QStringLiteral("brushRadius"));
     mRadius->setRange(0.5, 100);
     mRadius->setValue(mTools.brush().radius);
-    mRadius->setSuffix(QCoreApplication::translate("MainWindow", " m"));
-    mRadius->setToolTip(
-        QCoreApplication::translate("MainWindow", "Brush and eraser radius, metres"));
+    mRadius->setSuffix(tr(" m"));
+    mRadius->setToolTip(tr("Brush and eraser radius, metres"));
     addWidget(mRadius);
-    addWidget(new QLabel(QCoreApplication::translate("MainWindow", " Density: "), this));
+    addWidget(new QLabel(tr(" Density: "), this));
     mDensity = new QDoubleSpinBox(this);
     mDensity->setObjectName(QStringLiteral("brushDensity"));
     mDensity->setRange(0.01, 50);
     mDensity->setValue(mTools.brush().density);
-    mDensity->setSuffix(QCoreApplication::translate("MainWindow", " /100 m²"));
-    mDensity->setToolTip(QCoreApplication::translate(
-        "MainWindow", "Trees tried per 100 m² under the brush; spacing rules keep "
-                      "trunks out of each other's crowns and out of obstacles"));
+    mDensity->setSuffix(tr(" /100 m²"));
+    mDensity->setToolTip(tr("Trees tried per 100 m² under the brush; spacing rules keep "
+                            "trunks out of each other's crowns and out of obstacles"));
     addWidget(mDensity);
-    addWidget(new QLabel(QCoreApplication::translate("MainWindow", " Mix: "), this));
+    addWidget(new QLabel(tr(" Mix: "), this));
     mMix = new QLineEdit(this);
     mMix->setObjectName(QStringLiteral("brushMix"));
-    mMix->setPlaceholderText(
-        QCoreApplication::translate("MainWindow", "e.g. alder 70, ternary 30"));
-    mMix->setToolTip(QCoreApplication::translate(
-        "MainWindow", "Species and weights the brush paints; empty: the chosen species"));
+    mMix->setPlaceholderText(tr("e.g. alder 70, ternary 30"));
+    mMix->setToolTip(tr("Species and weights the brush paints; empty: the chosen species"));
     mMix->setMinimumWidth(160);
     addWidget(mMix);
     connect(mRadius, &QDoubleSpinBox::valueChanged, this, &ToolOptionsBar::applyBrushSettings);
