@@ -643,7 +643,7 @@ void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
         const QFileInfo own(mDocument->path());
         mDocumentStamp =
             !mDocument->path().isEmpty() && own.exists() ? own.lastModified() : QDateTime();
-        if (mPreview.isRunning()) mPreview.cancel();
+        mPreview.cancelIfRunning();
         mPreview.leave();
         mFrameNext = true;
         mStats->showGenerating(mDocument->displayName());

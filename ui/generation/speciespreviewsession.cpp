@@ -19,7 +19,7 @@ SpeciesPreviewSession::~SpeciesPreviewSession() {
 }
 
 void SpeciesPreviewSession::start(const QString& path) {
-    if (mWatcher.isRunning()) mWatcher.cancel(); // superseded; its result is dropped
+    cancelIfRunning(); // superseded; its result is dropped
     mActive = true;
     mPath = path;
     mRunning = true;
@@ -31,6 +31,10 @@ void SpeciesPreviewSession::start(const QString& path) {
 
 void SpeciesPreviewSession::cancel() {
     mWatcher.cancel();
+}
+
+void SpeciesPreviewSession::cancelIfRunning() {
+    if (mWatcher.isRunning()) mWatcher.cancel();
 }
 
 void SpeciesPreviewSession::stop() {

@@ -22,8 +22,10 @@ public:
     /// Enters the preview of \p path and generates it; a run still going is superseded (its
     /// result dropped).
     void start(const QString& path);
-    /// Asks the running job to stop; dropped() follows. The last good result stays.
+    /// Asks the job to stop; dropped() follows. The last good result stays.
     void cancel();
+    /// cancel() while the job still runs; a job that already ended hands out its result.
+    void cancelIfRunning();
     /// Leaves the preview mode (the document is shown again); a running job goes on.
     void leave() { mActive = false; }
     /// Stops the running job and waits for it, without a signal (the window closes).
