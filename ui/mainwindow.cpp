@@ -670,9 +670,7 @@ void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
     const GenerationResult& result = mGenerator->result();
     if (!ok) {
         QStringList sources = doc::projectSourceFiles(mDocument->project());
-        QList<QDateTime> stamps;
-        for (const QString& f : sources)
-            stamps << (QFileInfo::exists(f) ? QFileInfo(f).lastModified() : QDateTime());
+        QList<QDateTime> stamps = modificationTimes(sources);
         if (!mDocument->path().isEmpty()) {
             sources << mDocument->path();
             stamps << mDocumentStamp;
@@ -684,20 +682,9 @@ void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
     }
     QStringList sources = result.sources;
     QList<QDateTime> stamps = result.sourceStamps;
-    if (!mDocument->path().isEmpty()) {
-        // The project file with the time it had when it was opened or saved (or last seen
-        // changed): a change made while this generation ran is still noticed. The generation
-        // lists the file too, stamped when it started (it reads the document, not the file):
-        // that stamp would hide an edit made on disk before it started (a flaky test under
-        // load found it), so it goes.
-        const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
-        if (const qsizetype i = sources.indexOf(own); i >= 0) { // listed once, absolute
-            sources.removeAt(i);
-            if (i < stamps.size()) stamps.removeAt(i);
-        }
-        sources << own;
-        stamps << mDocumentStamp;
-    }
+    if (!mDocument->path().isEmpty()) // stamped when opened or saved, not by the generation
+        listProjectFileLast(sources, stamps, QFileInfo(mDocument->path()).absoluteFilePath(),
+                            mDocumentStamp);
     mSourceWatcher->watch(sources, stamps);
     mLastError.clear();
     showDocument(mFrameNext);

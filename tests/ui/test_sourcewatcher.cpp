@@ -101,6 +101,23 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(changed.size(), 2, 5000);
     }
 
+    void theProjectFileGoesLastWithItsOwnStamp() {
+        const QDateTime opened = stampOf(file("species.json")).addSecs(-5);
+        QStringList sources{file("grammar.lsys"), file("species.json"), file("other.txt")};
+        QList<QDateTime> stamps = modificationTimes(sources);
+        QCOMPARE(stamps.size(), 3);
+        QCOMPARE(stamps[0], stampOf(file("grammar.lsys")));
+        QCOMPARE(modificationTimes({file("missing")}), QList<QDateTime>{QDateTime()});
+        listProjectFileLast(sources, stamps, file("species.json"), opened);
+        QCOMPARE(sources,
+                 QStringList({file("grammar.lsys"), file("other.txt"), file("species.json")}));
+        QCOMPARE(stamps.back(), opened);
+        QCOMPARE(stamps[1], stampOf(file("other.txt")));
+        listProjectFileLast(sources, stamps, file("new.sylva"), opened); // not listed yet
+        QCOMPARE(sources.size(), 4);
+        QCOMPARE(sources.back(), file("new.sylva"));
+    }
+
     void disabledItLooksAtNothing() {
         SourceWatcher watcher;
         watcher.setSettleMs(50);

@@ -12,6 +12,23 @@ QDateTime modified(const QFileInfo& info) {
 }
 } // namespace
 
+QList<QDateTime> modificationTimes(const QStringList& files) {
+    QList<QDateTime> stamps;
+    for (const QString& f : files)
+        stamps << modified(QFileInfo(f));
+    return stamps;
+}
+
+void listProjectFileLast(QStringList& sources, QList<QDateTime>& stamps, const QString& projectFile,
+                         const QDateTime& stamp) {
+    if (const qsizetype i = sources.indexOf(projectFile); i >= 0) { // listed once
+        sources.removeAt(i);
+        if (i < stamps.size()) stamps.removeAt(i);
+    }
+    sources << projectFile;
+    stamps << stamp;
+}
+
 SourceWatcher::SourceWatcher(QObject* parent) : QObject(parent) {
     // A change (or a save by rename, which shows as a change of the folder) starts a short
     // timer, so that an editor's several writes make one report.

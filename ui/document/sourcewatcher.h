@@ -50,4 +50,15 @@ private:
     bool mEnabled = true;
 };
 
+/// Each of \p files' modification time now (invalid: missing).
+QList<QDateTime> modificationTimes(const QStringList& files);
+
+/// Lists the project file \p projectFile (absolute) once, last in \p sources, with \p stamp:
+/// the time it had when it was opened or saved (or last seen changed), so that a change made
+/// while a generation ran is still noticed. A generation lists the file too, stamped when it
+/// started (it reads the document, not the file): that stamp would hide an edit made on disk
+/// before it started (a flaky test under load found it), so it goes.
+void listProjectFileLast(QStringList& sources, QList<QDateTime>& stamps, const QString& projectFile,
+                         const QDateTime& stamp);
+
 } // namespace sylva::ui
