@@ -376,6 +376,41 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::FileDialogs</name>
+    <message>
+        <source>Open species or project</source>
+        <translation>Art oder Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
+        <translation>Arten, Grammatiken und Projekte (*.json *.lsys *.txt *.sylva);;Projekte (*.sylva);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save project as</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <source>Sylva projects (*.sylva)</source>
+        <translation>Sylva-Projekte (*.sylva)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx)</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Bildschirmfoto speichern</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.bmp)</source>
+        <translation>Bilder (*.png *.jpg *.bmp)</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::GrammarEditor</name>
     <message>
         <source>Step through the derivation: the preview shows the tree after this many generations (the grammar keeps its own count)</source>
@@ -535,28 +570,12 @@
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <source>Save screenshot</source>
-        <translation>Bildschirmfoto speichern</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.bmp)</source>
-        <translation>Bilder (*.png *.jpg *.bmp)</translation>
-    </message>
-    <message>
         <source>&amp;Open species or project…</source>
         <translation>Art oder Projekt &amp;öffnen…</translation>
     </message>
     <message>
         <source>Colouring by node attributes needs a single tree: the forest is shown in its materials</source>
         <translation>Das Einfärben nach Knotenattributen braucht einen einzelnen Baum: Der Wald wird in seinen Materialien gezeigt</translation>
-    </message>
-    <message>
-        <source>Open species or project</source>
-        <translation>Art oder Projekt öffnen</translation>
-    </message>
-    <message>
-        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
-        <translation>Arten, Grammatiken und Projekte (*.json *.lsys *.txt *.sylva);;Projekte (*.sylva);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>&amp;Export…</source>
@@ -576,14 +595,6 @@
             <numerusform>%n Baum nach %1 exportiert (%2 Dateien)</numerusform>
             <numerusform>%n Bäume nach %1 exportiert (%2 Dateien)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Exportieren</translation>
-    </message>
-    <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx)</translation>
     </message>
     <message>
         <source>Reload &amp;automatically</source>
@@ -735,14 +746,6 @@
     <message>
         <source>%1 changed on disk. Reload it and lose your unsaved edits?</source>
         <translation>%1 wurde auf der Festplatte geändert. Neu laden und ungespeicherte Änderungen verwerfen?</translation>
-    </message>
-    <message>
-        <source>Save project as</source>
-        <translation>Projekt speichern unter</translation>
-    </message>
-    <message>
-        <source>Sylva projects (*.sylva)</source>
-        <translation>Sylva-Projekte (*.sylva)</translation>
     </message>
     <message>
         <source>Export only the selection</source>

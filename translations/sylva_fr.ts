@@ -376,6 +376,41 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::FileDialogs</name>
+    <message>
+        <source>Open species or project</source>
+        <translation>Ouvrir une espèce ou un projet</translation>
+    </message>
+    <message>
+        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
+        <translation>Espèces, grammaires et projets (*.json *.lsys *.txt *.sylva);;Projets (*.sylva);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Save project as</source>
+        <translation>Enregistrer le projet sous</translation>
+    </message>
+    <message>
+        <source>Sylva projects (*.sylva)</source>
+        <translation>Projets Sylva (*.sylva)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx)</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Enregistrer une capture d&apos;écran</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.bmp)</source>
+        <translation>Images (*.png *.jpg *.bmp)</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::GrammarEditor</name>
     <message>
         <source>Step through the derivation: the preview shows the tree after this many generations (the grammar keeps its own count)</source>
@@ -711,38 +746,6 @@
             <numerusform>%n arbre exporté vers %1 (%2 fichiers)</numerusform>
             <numerusform>%n arbres exportés vers %1 (%2 fichiers)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Exporter</translation>
-    </message>
-    <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx)</translation>
-    </message>
-    <message>
-        <source>Open species or project</source>
-        <translation>Ouvrir une espèce ou un projet</translation>
-    </message>
-    <message>
-        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
-        <translation>Espèces, grammaires et projets (*.json *.lsys *.txt *.sylva);;Projets (*.sylva);;Tous les fichiers (*)</translation>
-    </message>
-    <message>
-        <source>Save project as</source>
-        <translation>Enregistrer le projet sous</translation>
-    </message>
-    <message>
-        <source>Sylva projects (*.sylva)</source>
-        <translation>Projets Sylva (*.sylva)</translation>
-    </message>
-    <message>
-        <source>Save screenshot</source>
-        <translation>Enregistrer une capture d&apos;écran</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.bmp)</source>
-        <translation>Images (*.png *.jpg *.bmp)</translation>
     </message>
     <message>
         <source>Export only the selection</source>

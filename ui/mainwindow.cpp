@@ -11,7 +11,6 @@
 #include <QDockWidget>
 #include <QEventLoop>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
 #include <QKeySequence>
@@ -44,6 +43,7 @@
 #include "ui/document/propertiespanel.h"
 #include "ui/document/sourcewatcher.h"
 #include "ui/document/statspanel.h"
+#include "ui/filedialogs.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/generation/exportshown.h"
 #include "ui/generation/scenegenerator.h"
@@ -911,31 +911,13 @@ bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
 }
 
 void MainWindow::showExportDialog() {
-    const QString suggested =
-        QFileInfo(currentPath().isEmpty() ? QStringLiteral("forest") : currentPath())
-            .completeBaseName() +
-        QStringLiteral(".obj");
-    QString filter;
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Export"), suggested,
-        tr("Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)"),
-        &filter);
-    if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) {
-        // No extension typed: the chosen filter's.
-        const qsizetype star = filter.indexOf(QStringLiteral("*."));
-        path += filter.mid(star + 1, filter.indexOf(QLatin1Char(')'), star) - star - 1);
-    }
-    exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked()});
+    const QString path = FileDialogs::exportFile(this, currentPath());
+    if (!path.isEmpty())
+        exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked()});
 }
 
 void MainWindow::showOpenDialog() {
-    QString dir = currentPath().isEmpty() ? PresetLibrary::directory()
-                                          : QFileInfo(currentPath()).absolutePath();
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open species or project"), dir,
-        tr("Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;"
-           "All files (*)"));
+    const QString path = FileDialogs::open(this, currentPath());
     if (!path.isEmpty()) openSpecies(path);
 }
 
@@ -959,22 +941,12 @@ void MainWindow::setAutosaveInterval(int seconds) {
 }
 
 void MainWindow::showSaveAsDialog() {
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Save project as"),
-        mDocument->path().isEmpty() ? QStringLiteral("forest.sylva") : mDocument->path(),
-        tr("Sylva projects (*.sylva)"));
-    if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".sylva");
-    saveAs(path);
+    const QString path = FileDialogs::saveProject(this, mDocument->path());
+    if (!path.isEmpty()) saveAs(path);
 }
 
 void MainWindow::showScreenshotDialog() {
-    const QString suggested =
-        QFileInfo(currentPath().isEmpty() ? QStringLiteral("sylva") : currentPath())
-            .completeBaseName() +
-        ".png";
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save screenshot"), suggested,
-                                                      tr("Images (*.png *.jpg *.bmp)"));
+    const QString path = FileDialogs::screenshot(this, currentPath());
     if (!path.isEmpty()) saveScreenshot(path);
 }
 
