@@ -299,10 +299,131 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::ColorByMenu</name>
+    <message>
+        <source>&amp;Colour by</source>
+        <translation>&amp;Einfärben nach</translation>
+    </message>
+    <message>
+        <source>&amp;Material</source>
+        <translation>&amp;Material</translation>
+    </message>
+    <message>
+        <source>&amp;Light (per internode)</source>
+        <translation>&amp;Licht (pro Internodium)</translation>
+    </message>
+    <message>
+        <source>&amp;Vigour</source>
+        <translation>&amp;Wuchskraft</translation>
+    </message>
+    <message>
+        <source>&amp;Age</source>
+        <translation>&amp;Alter</translation>
+    </message>
+    <message>
+        <source>Branch &amp;order</source>
+        <translation>Ast&amp;ordnung</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::CurveEditor</name>
     <message>
         <source>Drag a point to shape the curve; double-click to add a point; right-click or Delete removes one</source>
         <translation>Einen Punkt ziehen formt die Kurve; Doppelklick fügt einen Punkt hinzu; Rechtsklick oder Entf entfernt einen</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::DocumentActions</name>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Duplizieren</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>Select &amp;all trees</source>
+        <translation>&amp;Alle Bäume auswählen</translation>
+    </message>
+    <message>
+        <source>Add &amp;species from file…</source>
+        <translation>&amp;Art aus Datei hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Add &amp;tree</source>
+        <translation>&amp;Baum hinzufügen</translation>
+    </message>
+    <message>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <source>Import &amp;obstacle…</source>
+        <translation>&amp;Hindernis importieren…</translation>
+    </message>
+    <message>
+        <source>Add &amp;domain</source>
+        <translation>Be&amp;reich hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add species</source>
+        <translation>Art hinzufügen</translation>
+    </message>
+    <message>
+        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
+        <translation>Arten und Grammatiken (*.json *.lsys *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Name in the project:</source>
+        <translation>Name im Projekt:</translation>
+    </message>
+    <message>
+        <source>Import obstacle</source>
+        <translation>Hindernis importieren</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)</source>
+        <translation>Netze (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::FileDialogs</name>
+    <message>
+        <source>Open species or project</source>
+        <translation>Art oder Projekt öffnen</translation>
+    </message>
+    <message>
+        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
+        <translation>Arten, Grammatiken und Projekte (*.json *.lsys *.txt *.sylva);;Projekte (*.sylva);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save project as</source>
+        <translation>Projekt speichern unter</translation>
+    </message>
+    <message>
+        <source>Sylva projects (*.sylva)</source>
+        <translation>Sylva-Projekte (*.sylva)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx)</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Bildschirmfoto speichern</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.bmp)</source>
+        <translation>Bilder (*.png *.jpg *.bmp)</translation>
     </message>
 </context>
 <context>
@@ -365,6 +486,48 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::HelpMenu</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Dokumentation</translation>
+    </message>
+    <message>
+        <source>&amp;About Sylva</source>
+        <translation>&amp;Über Sylva</translation>
+    </message>
+    <message>
+        <source>About Sylva</source>
+        <translation>Über Sylva</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Procedural trees and forests for film and games: L-systems, space colonization and self-organizing trees, forests that react to the scene they stand in.&lt;/p&gt;&lt;p&gt;Scripting: Python (the Python Console, or &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Prozedurale Bäume und Wälder für Film und Spiele: L-Systeme, Space Colonization und selbstorganisierende Bäume, Wälder, die auf die Szene reagieren, in der sie stehen.&lt;/p&gt;&lt;p&gt;Skripting: Python (die Python-Konsole oder &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Systemstandard</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>Sylva will use the new language when it starts again.</source>
+        <translation>Sylva verwendet die neue Sprache beim nächsten Start.</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::MainWindow</name>
     <message>
         <source>Sylva</source>
@@ -391,24 +554,12 @@
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <source>&amp;Presets</source>
-        <translation>&amp;Vorlagen</translation>
-    </message>
-    <message>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>Show &amp;grid</source>
         <translation>&amp;Gitter anzeigen</translation>
-    </message>
-    <message>
-        <source>No presets folder found (set SYLVA_PRESETS_DIR)</source>
-        <translation>Kein Vorlagenordner gefunden (SYLVA_PRESETS_DIR setzen)</translation>
-    </message>
-    <message>
-        <source>No presets in %1</source>
-        <translation>Keine Vorlagen in %1</translation>
     </message>
     <message>
         <source>Generating %1…</source>
@@ -435,52 +586,12 @@
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <source>Save screenshot</source>
-        <translation>Bildschirmfoto speichern</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.bmp)</source>
-        <translation>Bilder (*.png *.jpg *.bmp)</translation>
-    </message>
-    <message>
-        <source>&amp;Colour by</source>
-        <translation>&amp;Einfärben nach</translation>
-    </message>
-    <message>
-        <source>&amp;Material</source>
-        <translation>&amp;Material</translation>
-    </message>
-    <message>
-        <source>&amp;Light (per internode)</source>
-        <translation>&amp;Licht (pro Internodium)</translation>
-    </message>
-    <message>
-        <source>&amp;Vigour</source>
-        <translation>&amp;Wuchskraft</translation>
-    </message>
-    <message>
-        <source>&amp;Age</source>
-        <translation>&amp;Alter</translation>
-    </message>
-    <message>
-        <source>Branch &amp;order</source>
-        <translation>Ast&amp;ordnung</translation>
-    </message>
-    <message>
         <source>&amp;Open species or project…</source>
         <translation>Art oder Projekt &amp;öffnen…</translation>
     </message>
     <message>
         <source>Colouring by node attributes needs a single tree: the forest is shown in its materials</source>
         <translation>Das Einfärben nach Knotenattributen braucht einen einzelnen Baum: Der Wald wird in seinen Materialien gezeigt</translation>
-    </message>
-    <message>
-        <source>Open species or project</source>
-        <translation>Art oder Projekt öffnen</translation>
-    </message>
-    <message>
-        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
-        <translation>Arten, Grammatiken und Projekte (*.json *.lsys *.txt *.sylva);;Projekte (*.sylva);;Alle Dateien (*)</translation>
     </message>
     <message>
         <source>&amp;Export…</source>
@@ -500,14 +611,6 @@
             <numerusform>%n Baum nach %1 exportiert (%2 Dateien)</numerusform>
             <numerusform>%n Bäume nach %1 exportiert (%2 Dateien)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Exportieren</translation>
-    </message>
-    <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx)</translation>
     </message>
     <message>
         <source>Reload &amp;automatically</source>
@@ -570,10 +673,6 @@
         <translation>Neues &amp;Projekt</translation>
     </message>
     <message>
-        <source>Open &amp;recent</source>
-        <translation>&amp;Zuletzt geöffnet</translation>
-    </message>
-    <message>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
@@ -614,88 +713,12 @@
         <translation>Ctrl+Y</translation>
     </message>
     <message>
-        <source>&amp;Delete</source>
-        <translation>&amp;Löschen</translation>
-    </message>
-    <message>
-        <source>D&amp;uplicate</source>
-        <translation>&amp;Duplizieren</translation>
-    </message>
-    <message>
-        <source>Ctrl+D</source>
-        <translation>Ctrl+D</translation>
-    </message>
-    <message>
-        <source>Select &amp;all trees</source>
-        <translation>&amp;Alle Bäume auswählen</translation>
-    </message>
-    <message>
         <source>&amp;Scene</source>
         <translation>&amp;Szene</translation>
     </message>
     <message>
-        <source>Add &amp;species from file…</source>
-        <translation>&amp;Art aus Datei hinzufügen…</translation>
-    </message>
-    <message>
-        <source>Add &amp;tree</source>
-        <translation>&amp;Baum hinzufügen</translation>
-    </message>
-    <message>
-        <source>Ctrl+T</source>
-        <translation>Ctrl+T</translation>
-    </message>
-    <message>
-        <source>Import &amp;obstacle…</source>
-        <translation>&amp;Hindernis importieren…</translation>
-    </message>
-    <message>
-        <source>Add &amp;domain</source>
-        <translation>Be&amp;reich hinzufügen</translation>
-    </message>
-    <message>
         <source>&amp;Panels</source>
         <translation>&amp;Bedienfelder</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprache</translation>
-    </message>
-    <message>
-        <source>System default</source>
-        <translation>Systemstandard</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Sprache</translation>
-    </message>
-    <message>
-        <source>Sylva will use the new language when it starts again.</source>
-        <translation>Sylva verwendet die neue Sprache beim nächsten Start.</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>&amp;Hilfe</translation>
-    </message>
-    <message>
-        <source>&amp;Documentation</source>
-        <translation>&amp;Dokumentation</translation>
-    </message>
-    <message>
-        <source>&amp;About Sylva</source>
-        <translation>&amp;Über Sylva</translation>
-    </message>
-    <message>
-        <source>About Sylva</source>
-        <translation>Über Sylva</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Procedural trees and forests for film and games: L-systems, space colonization and self-organizing trees, forests that react to the scene they stand in.&lt;/p&gt;&lt;p&gt;Scripting: Python (the Python Console, or &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Prozedurale Bäume und Wälder für Film und Spiele: L-Systeme, Space Colonization und selbstorganisierende Bäume, Wälder, die auf die Szene reagieren, in der sie stehen.&lt;/p&gt;&lt;p&gt;Skripting: Python (die Python-Konsole oder &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>No recent files</source>
-        <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
         <source>Opened %1</source>
@@ -737,36 +760,8 @@
         <translation>Automatisch gesicherte Änderungen an %1 wiederhergestellt</translation>
     </message>
     <message>
-        <source>Add species</source>
-        <translation>Art hinzufügen</translation>
-    </message>
-    <message>
-        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
-        <translation>Arten und Grammatiken (*.json *.lsys *.txt);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>Name in the project:</source>
-        <translation>Name im Projekt:</translation>
-    </message>
-    <message>
-        <source>Import obstacle</source>
-        <translation>Hindernis importieren</translation>
-    </message>
-    <message>
-        <source>Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)</source>
-        <translation>Netze (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>%1 changed on disk. Reload it and lose your unsaved edits?</source>
         <translation>%1 wurde auf der Festplatte geändert. Neu laden und ungespeicherte Änderungen verwerfen?</translation>
-    </message>
-    <message>
-        <source>Save project as</source>
-        <translation>Projekt speichern unter</translation>
-    </message>
-    <message>
-        <source>Sylva projects (*.sylva)</source>
-        <translation>Sylva-Projekte (*.sylva)</translation>
     </message>
     <message>
         <source>Export only the selection</source>
@@ -793,114 +788,6 @@
         <translation>&amp;Auswahl oder alles einpassen</translation>
     </message>
     <message>
-        <source>Tools</source>
-        <translation>Werkzeuge</translation>
-    </message>
-    <message>
-        <source>Select</source>
-        <translation>Auswählen</translation>
-    </message>
-    <message>
-        <source>Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a box); [ and ] step through the trees</source>
-        <translation>Klicken Sie auf einen Baum oder ein Hindernis, um das Objekt auszuwählen (Umschalt fügt hinzu, Strg schaltet die Auswahl um, Strg+Ziehen zieht einen Auswahlrahmen auf); [ und ] springen von Baum zu Baum</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>Verschieben</translation>
-    </message>
-    <message>
-        <source>Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow keys nudge). They re-adapt to the obstacles when you let go</source>
-        <translation>Ausgewählte Bäume über den Boden ziehen (Strg+Ziehen dreht, Umschalt+Ziehen skaliert; Pfeiltasten verschieben schrittweise). Beim Loslassen passen sie sich erneut an die Hindernisse an</translation>
-    </message>
-    <message>
-        <source>Place</source>
-        <translation>Pflanzen</translation>
-    </message>
-    <message>
-        <source>Click the ground to plant a tree of the chosen species</source>
-        <translation>Klicken Sie auf den Boden, um einen Baum der gewählten Art zu pflanzen</translation>
-    </message>
-    <message>
-        <source>Brush</source>
-        <translation>Pinsel</translation>
-    </message>
-    <message>
-        <source>Paint trees of the species mix with the radius and density below; one stroke is one undo step</source>
-        <translation>Bäume der Artenmischung mit dem Radius und der Dichte unten malen; ein Pinselstrich lässt sich in einem Schritt rückgängig machen</translation>
-    </message>
-    <message>
-        <source>Erase</source>
-        <translation>Radierer</translation>
-    </message>
-    <message>
-        <source>Remove the hand-placed trees the brush passes over</source>
-        <translation>Die von Hand platzierten Bäume entfernen, über die der Pinsel fährt</translation>
-    </message>
-    <message>
-        <source> Species: </source>
-        <translation> Art: </translation>
-    </message>
-    <message>
-        <source>The species the Place tool plants, and the Brush when no mix is given</source>
-        <translation>Die Art, die das Werkzeug „Pflanzen“ setzt und die der Pinsel malt, wenn keine Mischung angegeben ist</translation>
-    </message>
-    <message>
-        <source> Radius: </source>
-        <translation> Radius: </translation>
-    </message>
-    <message>
-        <source> m</source>
-        <translation> m</translation>
-    </message>
-    <message>
-        <source>Brush and eraser radius, metres</source>
-        <translation>Radius von Pinsel und Radierer, in Metern</translation>
-    </message>
-    <message>
-        <source> Density: </source>
-        <translation> Dichte: </translation>
-    </message>
-    <message>
-        <source> /100 m²</source>
-        <translation> /100 m²</translation>
-    </message>
-    <message>
-        <source>Trees tried per 100 m² under the brush; spacing rules keep trunks out of each other&apos;s crowns and out of obstacles</source>
-        <translation>Pflanzversuche pro 100 m² unter dem Pinsel; Abstandsregeln halten die Stämme aus den Kronen der anderen Bäume und aus Hindernissen heraus</translation>
-    </message>
-    <message>
-        <source> Mix: </source>
-        <translation> Mischung: </translation>
-    </message>
-    <message>
-        <source>e.g. alder 70, ternary 30</source>
-        <translation>z. B. alder 70, ternary 30</translation>
-    </message>
-    <message>
-        <source>Species and weights the brush paints; empty: the chosen species</source>
-        <translation>Arten und Gewichte, die der Pinsel malt; leer: die gewählte Art</translation>
-    </message>
-    <message>
-        <source>Preferences</source>
-        <translation>Einstellungen</translation>
-    </message>
-    <message>
-        <source> min</source>
-        <translation> min</translation>
-    </message>
-    <message>
-        <source>While there are unsaved edits, a recovery copy is written this often and a few seconds after the last edit. It never replaces your file.</source>
-        <translation>Solange ungespeicherte Änderungen vorliegen, wird in diesem Abstand und einige Sekunden nach der letzten Änderung eine Wiederherstellungskopie geschrieben. Sie ersetzt niemals Ihre Datei.</translation>
-    </message>
-    <message>
-        <source>Autosave every:</source>
-        <translation>Automatisch speichern alle:</translation>
-    </message>
-    <message>
-        <source>Recovery folder:</source>
-        <translation>Wiederherstellungsordner:</translation>
-    </message>
-    <message>
         <source>Species Editor</source>
         <translation>Arteditor</translation>
     </message>
@@ -919,34 +806,6 @@
     <message>
         <source>Preset Browser</source>
         <translation>Vorlagenbrowser</translation>
-    </message>
-    <message>
-        <source>Automatic (off on a software renderer)</source>
-        <translation>Automatisch (aus bei Software-Rendering)</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>Aus</translation>
-    </message>
-    <message>
-        <source>2× multisampling</source>
-        <translation>2× Multisampling</translation>
-    </message>
-    <message>
-        <source>4× multisampling</source>
-        <translation>4× Multisampling</translation>
-    </message>
-    <message>
-        <source>8× multisampling</source>
-        <translation>8× Multisampling</translation>
-    </message>
-    <message>
-        <source>Smooths the edges in the 3D view. Without a graphics card (a software renderer) it makes every frame two to three times slower. Takes effect when Sylva starts next.</source>
-        <translation>Glättet die Kanten in der 3D-Ansicht. Ohne Grafikkarte (Software-Rendering) macht es jedes Bild zwei- bis dreimal langsamer. Wirkt ab dem nächsten Start von Sylva.</translation>
-    </message>
-    <message>
-        <source>Antialiasing:</source>
-        <translation>Kantenglättung:</translation>
     </message>
 </context>
 <context>
@@ -1186,6 +1045,57 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>While there are unsaved edits, a recovery copy is written this often and a few seconds after the last edit. It never replaces your file.</source>
+        <translation>Solange ungespeicherte Änderungen vorliegen, wird in diesem Abstand und einige Sekunden nach der letzten Änderung eine Wiederherstellungskopie geschrieben. Sie ersetzt niemals Ihre Datei.</translation>
+    </message>
+    <message>
+        <source>Autosave every:</source>
+        <translation>Automatisch speichern alle:</translation>
+    </message>
+    <message>
+        <source>Recovery folder:</source>
+        <translation>Wiederherstellungsordner:</translation>
+    </message>
+    <message>
+        <source>Automatic (off on a software renderer)</source>
+        <translation>Automatisch (aus bei Software-Rendering)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>2× multisampling</source>
+        <translation>2× Multisampling</translation>
+    </message>
+    <message>
+        <source>4× multisampling</source>
+        <translation>4× Multisampling</translation>
+    </message>
+    <message>
+        <source>8× multisampling</source>
+        <translation>8× Multisampling</translation>
+    </message>
+    <message>
+        <source>Smooths the edges in the 3D view. Without a graphics card (a software renderer) it makes every frame two to three times slower. Takes effect when Sylva starts next.</source>
+        <translation>Glättet die Kanten in der 3D-Ansicht. Ohne Grafikkarte (Software-Rendering) macht es jedes Bild zwei- bis dreimal langsamer. Wirkt ab dem nächsten Start von Sylva.</translation>
+    </message>
+    <message>
+        <source>Antialiasing:</source>
+        <translation>Kantenglättung:</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::PresetBrowser</name>
     <message>
         <source>Double-click a preset to apply it to the species</source>
@@ -1222,6 +1132,21 @@
     <message>
         <source>Saved %1 as %2</source>
         <translation>%1 als %2 gespeichert</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PresetsMenu</name>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Vorlagen</translation>
+    </message>
+    <message>
+        <source>No presets folder found (set SYLVA_PRESETS_DIR)</source>
+        <translation>Kein Vorlagenordner gefunden (SYLVA_PRESETS_DIR setzen)</translation>
+    </message>
+    <message>
+        <source>No presets in %1</source>
+        <translation>Keine Vorlagen in %1</translation>
     </message>
 </context>
 <context>
@@ -1404,6 +1329,17 @@
     <message>
         <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
         <translation>Python %1: sylva und doc = sylva.document() sind bereit. Probieren Sie doc.trees() oder doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::RecentFilesMenu</name>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>No recent files</source>
+        <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
 </context>
 <context>
@@ -1603,6 +1539,97 @@
     <message>
         <source>Scale trees</source>
         <translation>Bäume skalieren</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::ToolOptionsBar</name>
+    <message>
+        <source>Tools</source>
+        <translation>Werkzeuge</translation>
+    </message>
+    <message>
+        <source>Select</source>
+        <translation>Auswählen</translation>
+    </message>
+    <message>
+        <source>Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a box); [ and ] step through the trees</source>
+        <translation>Klicken Sie auf einen Baum oder ein Hindernis, um das Objekt auszuwählen (Umschalt fügt hinzu, Strg schaltet die Auswahl um, Strg+Ziehen zieht einen Auswahlrahmen auf); [ und ] springen von Baum zu Baum</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow keys nudge). They re-adapt to the obstacles when you let go</source>
+        <translation>Ausgewählte Bäume über den Boden ziehen (Strg+Ziehen dreht, Umschalt+Ziehen skaliert; Pfeiltasten verschieben schrittweise). Beim Loslassen passen sie sich erneut an die Hindernisse an</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Pflanzen</translation>
+    </message>
+    <message>
+        <source>Click the ground to plant a tree of the chosen species</source>
+        <translation>Klicken Sie auf den Boden, um einen Baum der gewählten Art zu pflanzen</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Pinsel</translation>
+    </message>
+    <message>
+        <source>Paint trees of the species mix with the radius and density below; one stroke is one undo step</source>
+        <translation>Bäume der Artenmischung mit dem Radius und der Dichte unten malen; ein Pinselstrich lässt sich in einem Schritt rückgängig machen</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <translation>Radierer</translation>
+    </message>
+    <message>
+        <source>Remove the hand-placed trees the brush passes over</source>
+        <translation>Die von Hand platzierten Bäume entfernen, über die der Pinsel fährt</translation>
+    </message>
+    <message>
+        <source> Species: </source>
+        <translation> Art: </translation>
+    </message>
+    <message>
+        <source>The species the Place tool plants, and the Brush when no mix is given</source>
+        <translation>Die Art, die das Werkzeug „Pflanzen“ setzt und die der Pinsel malt, wenn keine Mischung angegeben ist</translation>
+    </message>
+    <message>
+        <source> Radius: </source>
+        <translation> Radius: </translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Brush and eraser radius, metres</source>
+        <translation>Radius von Pinsel und Radierer, in Metern</translation>
+    </message>
+    <message>
+        <source> Density: </source>
+        <translation> Dichte: </translation>
+    </message>
+    <message>
+        <source> /100 m²</source>
+        <translation> /100 m²</translation>
+    </message>
+    <message>
+        <source>Trees tried per 100 m² under the brush; spacing rules keep trunks out of each other&apos;s crowns and out of obstacles</source>
+        <translation>Pflanzversuche pro 100 m² unter dem Pinsel; Abstandsregeln halten die Stämme aus den Kronen der anderen Bäume und aus Hindernissen heraus</translation>
+    </message>
+    <message>
+        <source> Mix: </source>
+        <translation> Mischung: </translation>
+    </message>
+    <message>
+        <source>e.g. alder 70, ternary 30</source>
+        <translation>z. B. alder 70, ternary 30</translation>
+    </message>
+    <message>
+        <source>Species and weights the brush paints; empty: the chosen species</source>
+        <translation>Arten und Gewichte, die der Pinsel malt; leer: die gewählte Art</translation>
     </message>
 </context>
 <context>

@@ -299,10 +299,131 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::ColorByMenu</name>
+    <message>
+        <source>&amp;Colour by</source>
+        <translation>&amp;Colorer selon</translation>
+    </message>
+    <message>
+        <source>&amp;Material</source>
+        <translation>&amp;Matériau</translation>
+    </message>
+    <message>
+        <source>&amp;Light (per internode)</source>
+        <translation>&amp;Lumière (par entre-nœud)</translation>
+    </message>
+    <message>
+        <source>&amp;Vigour</source>
+        <translation>&amp;Vigueur</translation>
+    </message>
+    <message>
+        <source>&amp;Age</source>
+        <translation>Â&amp;ge</translation>
+    </message>
+    <message>
+        <source>Branch &amp;order</source>
+        <translation>&amp;Ordre des branches</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::CurveEditor</name>
     <message>
         <source>Drag a point to shape the curve; double-click to add a point; right-click or Delete removes one</source>
         <translation>Faites glisser un point pour modeler la courbe ; double-clic pour ajouter un point ; clic droit ou Suppr pour en retirer un</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::DocumentActions</name>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Dupliquer</translation>
+    </message>
+    <message>
+        <source>Ctrl+D</source>
+        <translation>Ctrl+D</translation>
+    </message>
+    <message>
+        <source>Select &amp;all trees</source>
+        <translation>Sélectionner &amp;tous les arbres</translation>
+    </message>
+    <message>
+        <source>Add &amp;species from file…</source>
+        <translation>Ajouter une &amp;espèce depuis un fichier…</translation>
+    </message>
+    <message>
+        <source>Add &amp;tree</source>
+        <translation>Ajouter un &amp;arbre</translation>
+    </message>
+    <message>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <source>Import &amp;obstacle…</source>
+        <translation>Importer un &amp;obstacle…</translation>
+    </message>
+    <message>
+        <source>Add &amp;domain</source>
+        <translation>Ajouter une &amp;zone</translation>
+    </message>
+    <message>
+        <source>Add species</source>
+        <translation>Ajouter une espèce</translation>
+    </message>
+    <message>
+        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
+        <translation>Espèces et grammaires (*.json *.lsys *.txt);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Name in the project:</source>
+        <translation>Nom dans le projet&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Import obstacle</source>
+        <translation>Importer un obstacle</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)</source>
+        <translation>Maillages (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;Tous les fichiers (*)</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::FileDialogs</name>
+    <message>
+        <source>Open species or project</source>
+        <translation>Ouvrir une espèce ou un projet</translation>
+    </message>
+    <message>
+        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
+        <translation>Espèces, grammaires et projets (*.json *.lsys *.txt *.sylva);;Projets (*.sylva);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Save project as</source>
+        <translation>Enregistrer le projet sous</translation>
+    </message>
+    <message>
+        <source>Sylva projects (*.sylva)</source>
+        <translation>Projets Sylva (*.sylva)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx)</translation>
+    </message>
+    <message>
+        <source>Save screenshot</source>
+        <translation>Enregistrer une capture d&apos;écran</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.bmp)</source>
+        <translation>Images (*.png *.jpg *.bmp)</translation>
     </message>
 </context>
 <context>
@@ -362,6 +483,48 @@
     <message>
         <source>The rule that grew the branch you clicked in the preview</source>
         <translation>La règle qui a produit la branche cliquée dans l’aperçu</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::HelpMenu</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aide</translation>
+    </message>
+    <message>
+        <source>&amp;Documentation</source>
+        <translation>&amp;Documentation</translation>
+    </message>
+    <message>
+        <source>&amp;About Sylva</source>
+        <translation>À &amp;propos de Sylva</translation>
+    </message>
+    <message>
+        <source>About Sylva</source>
+        <translation>À propos de Sylva</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Procedural trees and forests for film and games: L-systems, space colonization and self-organizing trees, forests that react to the scene they stand in.&lt;/p&gt;&lt;p&gt;Scripting: Python (the Python Console, or &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Arbres et forêts procéduraux pour le cinéma et le jeu vidéo&#xa0;: L-systèmes, colonisation de l&apos;espace et arbres auto-organisés, des forêts qui réagissent à la scène dans laquelle elles se trouvent.&lt;/p&gt;&lt;p&gt;Scripts&#xa0;: Python (la console Python, ou &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Langue</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Langue du système</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Langue</translation>
+    </message>
+    <message>
+        <source>Sylva will use the new language when it starts again.</source>
+        <translation>Sylva utilisera la nouvelle langue au prochain démarrage.</translation>
     </message>
 </context>
 <context>
@@ -435,10 +598,6 @@
         <translation>&amp;Ouvrir une espèce ou un projet…</translation>
     </message>
     <message>
-        <source>Open &amp;recent</source>
-        <translation>Fichiers ré&amp;cents</translation>
-    </message>
-    <message>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
@@ -503,48 +662,8 @@
         <translation>Ctrl+Y</translation>
     </message>
     <message>
-        <source>&amp;Delete</source>
-        <translation>&amp;Supprimer</translation>
-    </message>
-    <message>
-        <source>D&amp;uplicate</source>
-        <translation>&amp;Dupliquer</translation>
-    </message>
-    <message>
-        <source>Ctrl+D</source>
-        <translation>Ctrl+D</translation>
-    </message>
-    <message>
-        <source>Select &amp;all trees</source>
-        <translation>Sélectionner &amp;tous les arbres</translation>
-    </message>
-    <message>
         <source>&amp;Scene</source>
         <translation>&amp;Scène</translation>
-    </message>
-    <message>
-        <source>Add &amp;species from file…</source>
-        <translation>Ajouter une &amp;espèce depuis un fichier…</translation>
-    </message>
-    <message>
-        <source>Add &amp;tree</source>
-        <translation>Ajouter un &amp;arbre</translation>
-    </message>
-    <message>
-        <source>Ctrl+T</source>
-        <translation>Ctrl+T</translation>
-    </message>
-    <message>
-        <source>Import &amp;obstacle…</source>
-        <translation>Importer un &amp;obstacle…</translation>
-    </message>
-    <message>
-        <source>Add &amp;domain</source>
-        <translation>Ajouter une &amp;zone</translation>
-    </message>
-    <message>
-        <source>&amp;Presets</source>
-        <translation>&amp;Préréglages</translation>
     </message>
     <message>
         <source>&amp;View</source>
@@ -555,84 +674,12 @@
         <translation>Afficher la &amp;grille</translation>
     </message>
     <message>
-        <source>&amp;Colour by</source>
-        <translation>&amp;Colorer selon</translation>
-    </message>
-    <message>
-        <source>&amp;Material</source>
-        <translation>&amp;Matériau</translation>
-    </message>
-    <message>
-        <source>&amp;Light (per internode)</source>
-        <translation>&amp;Lumière (par entre-nœud)</translation>
-    </message>
-    <message>
-        <source>&amp;Vigour</source>
-        <translation>&amp;Vigueur</translation>
-    </message>
-    <message>
-        <source>&amp;Age</source>
-        <translation>Â&amp;ge</translation>
-    </message>
-    <message>
-        <source>Branch &amp;order</source>
-        <translation>&amp;Ordre des branches</translation>
-    </message>
-    <message>
         <source>&amp;Panels</source>
         <translation>&amp;Panneaux</translation>
     </message>
     <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Langue</translation>
-    </message>
-    <message>
-        <source>System default</source>
-        <translation>Langue du système</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Langue</translation>
-    </message>
-    <message>
-        <source>Sylva will use the new language when it starts again.</source>
-        <translation>Sylva utilisera la nouvelle langue au prochain démarrage.</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>&amp;Aide</translation>
-    </message>
-    <message>
-        <source>&amp;Documentation</source>
-        <translation>&amp;Documentation</translation>
-    </message>
-    <message>
-        <source>&amp;About Sylva</source>
-        <translation>À &amp;propos de Sylva</translation>
-    </message>
-    <message>
-        <source>About Sylva</source>
-        <translation>À propos de Sylva</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Procedural trees and forests for film and games: L-systems, space colonization and self-organizing trees, forests that react to the scene they stand in.&lt;/p&gt;&lt;p&gt;Scripting: Python (the Python Console, or &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Sylva %1&lt;/h3&gt;&lt;p&gt;Arbres et forêts procéduraux pour le cinéma et le jeu vidéo&#xa0;: L-systèmes, colonisation de l&apos;espace et arbres auto-organisés, des forêts qui réagissent à la scène dans laquelle elles se trouvent.&lt;/p&gt;&lt;p&gt;Scripts&#xa0;: Python (la console Python, ou &lt;tt&gt;sylva --script file.py&lt;/tt&gt;).&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>Colouring by node attributes needs a single tree: the forest is shown in its materials</source>
         <translation>La coloration selon les attributs des nœuds nécessite un seul arbre&#xa0;: la forêt est affichée avec ses matériaux</translation>
-    </message>
-    <message>
-        <source>No presets folder found (set SYLVA_PRESETS_DIR)</source>
-        <translation>Aucun dossier de préréglages trouvé (définissez SYLVA_PRESETS_DIR)</translation>
-    </message>
-    <message>
-        <source>No presets in %1</source>
-        <translation>Aucun préréglage dans %1</translation>
-    </message>
-    <message>
-        <source>No recent files</source>
-        <translation>Aucun fichier récent</translation>
     </message>
     <message>
         <source>Generating %1…</source>
@@ -694,26 +741,6 @@
         <translation>Modifications de «&#xa0;%1&#xa0;» enregistrées automatiquement restaurées</translation>
     </message>
     <message>
-        <source>Add species</source>
-        <translation>Ajouter une espèce</translation>
-    </message>
-    <message>
-        <source>Species and grammars (*.json *.lsys *.txt);;All files (*)</source>
-        <translation>Espèces et grammaires (*.json *.lsys *.txt);;Tous les fichiers (*)</translation>
-    </message>
-    <message>
-        <source>Name in the project:</source>
-        <translation>Nom dans le projet&#xa0;:</translation>
-    </message>
-    <message>
-        <source>Import obstacle</source>
-        <translation>Importer un obstacle</translation>
-    </message>
-    <message>
-        <source>Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)</source>
-        <translation>Maillages (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;Tous les fichiers (*)</translation>
-    </message>
-    <message>
         <source>%1 changed on disk. Reload it and lose your unsaved edits?</source>
         <translation>%1 a été modifié sur le disque. Le recharger et perdre vos modifications non enregistrées&#xa0;?</translation>
     </message>
@@ -735,38 +762,6 @@
             <numerusform>%n arbre exporté vers %1 (%2 fichiers)</numerusform>
             <numerusform>%n arbres exportés vers %1 (%2 fichiers)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation>Exporter</translation>
-    </message>
-    <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx)</translation>
-    </message>
-    <message>
-        <source>Open species or project</source>
-        <translation>Ouvrir une espèce ou un projet</translation>
-    </message>
-    <message>
-        <source>Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;All files (*)</source>
-        <translation>Espèces, grammaires et projets (*.json *.lsys *.txt *.sylva);;Projets (*.sylva);;Tous les fichiers (*)</translation>
-    </message>
-    <message>
-        <source>Save project as</source>
-        <translation>Enregistrer le projet sous</translation>
-    </message>
-    <message>
-        <source>Sylva projects (*.sylva)</source>
-        <translation>Projets Sylva (*.sylva)</translation>
-    </message>
-    <message>
-        <source>Save screenshot</source>
-        <translation>Enregistrer une capture d&apos;écran</translation>
-    </message>
-    <message>
-        <source>Images (*.png *.jpg *.bmp)</source>
-        <translation>Images (*.png *.jpg *.bmp)</translation>
     </message>
     <message>
         <source>Export only the selection</source>
@@ -793,114 +788,6 @@
         <translation>Cadrer la &amp;sélection ou tout</translation>
     </message>
     <message>
-        <source>Tools</source>
-        <translation>Outils</translation>
-    </message>
-    <message>
-        <source>Select</source>
-        <translation>Sélection</translation>
-    </message>
-    <message>
-        <source>Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a box); [ and ] step through the trees</source>
-        <translation>Cliquez sur un arbre ou un obstacle pour le sélectionner (Maj ajoute, Ctrl inverse la sélection, Ctrl+glisser trace un rectangle)&#xa0;; [ et ] parcourent les arbres</translation>
-    </message>
-    <message>
-        <source>Move</source>
-        <translation>Déplacer</translation>
-    </message>
-    <message>
-        <source>Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow keys nudge). They re-adapt to the obstacles when you let go</source>
-        <translation>Faites glisser les arbres sélectionnés sur le sol (Ctrl+glisser fait pivoter, Maj+glisser met à l&apos;échelle&#xa0;; les touches fléchées les décalent pas à pas). Ils se réadaptent aux obstacles quand vous relâchez</translation>
-    </message>
-    <message>
-        <source>Place</source>
-        <translation>Planter</translation>
-    </message>
-    <message>
-        <source>Click the ground to plant a tree of the chosen species</source>
-        <translation>Cliquez sur le sol pour planter un arbre de l&apos;espèce choisie</translation>
-    </message>
-    <message>
-        <source>Brush</source>
-        <translation>Pinceau</translation>
-    </message>
-    <message>
-        <source>Paint trees of the species mix with the radius and density below; one stroke is one undo step</source>
-        <translation>Peindre des arbres du mélange d&apos;espèces avec le rayon et la densité ci-dessous&#xa0;; un coup de pinceau correspond à une étape d&apos;annulation</translation>
-    </message>
-    <message>
-        <source>Erase</source>
-        <translation>Gomme</translation>
-    </message>
-    <message>
-        <source>Remove the hand-placed trees the brush passes over</source>
-        <translation>Supprimer les arbres placés à la main sur lesquels passe le pinceau</translation>
-    </message>
-    <message>
-        <source> Species: </source>
-        <translation> Espèce&#xa0;: </translation>
-    </message>
-    <message>
-        <source>The species the Place tool plants, and the Brush when no mix is given</source>
-        <translation>L&apos;espèce que plante l&apos;outil Planter, et que peint le pinceau si aucun mélange n&apos;est indiqué</translation>
-    </message>
-    <message>
-        <source> Radius: </source>
-        <translation> Rayon&#xa0;: </translation>
-    </message>
-    <message>
-        <source> m</source>
-        <translation> m</translation>
-    </message>
-    <message>
-        <source>Brush and eraser radius, metres</source>
-        <translation>Rayon du pinceau et de la gomme, en mètres</translation>
-    </message>
-    <message>
-        <source> Density: </source>
-        <translation> Densité&#xa0;: </translation>
-    </message>
-    <message>
-        <source> /100 m²</source>
-        <translation> /100 m²</translation>
-    </message>
-    <message>
-        <source>Trees tried per 100 m² under the brush; spacing rules keep trunks out of each other&apos;s crowns and out of obstacles</source>
-        <translation>Arbres tentés par 100 m² sous le pinceau&#xa0;; des règles d&apos;espacement tiennent les troncs hors des houppiers des autres arbres et hors des obstacles</translation>
-    </message>
-    <message>
-        <source> Mix: </source>
-        <translation> Mélange&#xa0;: </translation>
-    </message>
-    <message>
-        <source>e.g. alder 70, ternary 30</source>
-        <translation>par ex. alder 70, ternary 30</translation>
-    </message>
-    <message>
-        <source>Species and weights the brush paints; empty: the chosen species</source>
-        <translation>Espèces et poids que peint le pinceau&#xa0;; vide&#xa0;: l&apos;espèce choisie</translation>
-    </message>
-    <message>
-        <source>Preferences</source>
-        <translation>Préférences</translation>
-    </message>
-    <message>
-        <source> min</source>
-        <translation> min</translation>
-    </message>
-    <message>
-        <source>While there are unsaved edits, a recovery copy is written this often and a few seconds after the last edit. It never replaces your file.</source>
-        <translation>Tant qu&apos;il reste des modifications non enregistrées, une copie de récupération est écrite à cet intervalle et quelques secondes après la dernière modification. Elle ne remplace jamais votre fichier.</translation>
-    </message>
-    <message>
-        <source>Autosave every:</source>
-        <translation>Enregistrement automatique toutes les&#xa0;:</translation>
-    </message>
-    <message>
-        <source>Recovery folder:</source>
-        <translation>Dossier de récupération&#xa0;:</translation>
-    </message>
-    <message>
         <source>Species Editor</source>
         <translation>Éditeur d’espèces</translation>
     </message>
@@ -919,34 +806,6 @@
     <message>
         <source>Preset Browser</source>
         <translation>Navigateur de préréglages</translation>
-    </message>
-    <message>
-        <source>Automatic (off on a software renderer)</source>
-        <translation>Automatique (désactivé avec un rendu logiciel)</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>Désactivé</translation>
-    </message>
-    <message>
-        <source>2× multisampling</source>
-        <translation>Multiéchantillonnage 2×</translation>
-    </message>
-    <message>
-        <source>4× multisampling</source>
-        <translation>Multiéchantillonnage 4×</translation>
-    </message>
-    <message>
-        <source>8× multisampling</source>
-        <translation>Multiéchantillonnage 8×</translation>
-    </message>
-    <message>
-        <source>Smooths the edges in the 3D view. Without a graphics card (a software renderer) it makes every frame two to three times slower. Takes effect when Sylva starts next.</source>
-        <translation>Lisse les contours dans la vue 3D. Sans carte graphique (rendu logiciel), chaque image devient deux à trois fois plus lente. Prend effet au prochain démarrage de Sylva.</translation>
-    </message>
-    <message>
-        <source>Antialiasing:</source>
-        <translation>Anticrénelage&#xa0;:</translation>
     </message>
 </context>
 <context>
@@ -1186,6 +1045,57 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Préférences</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>While there are unsaved edits, a recovery copy is written this often and a few seconds after the last edit. It never replaces your file.</source>
+        <translation>Tant qu&apos;il reste des modifications non enregistrées, une copie de récupération est écrite à cet intervalle et quelques secondes après la dernière modification. Elle ne remplace jamais votre fichier.</translation>
+    </message>
+    <message>
+        <source>Autosave every:</source>
+        <translation>Enregistrement automatique toutes les&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Recovery folder:</source>
+        <translation>Dossier de récupération&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Automatic (off on a software renderer)</source>
+        <translation>Automatique (désactivé avec un rendu logiciel)</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Désactivé</translation>
+    </message>
+    <message>
+        <source>2× multisampling</source>
+        <translation>Multiéchantillonnage 2×</translation>
+    </message>
+    <message>
+        <source>4× multisampling</source>
+        <translation>Multiéchantillonnage 4×</translation>
+    </message>
+    <message>
+        <source>8× multisampling</source>
+        <translation>Multiéchantillonnage 8×</translation>
+    </message>
+    <message>
+        <source>Smooths the edges in the 3D view. Without a graphics card (a software renderer) it makes every frame two to three times slower. Takes effect when Sylva starts next.</source>
+        <translation>Lisse les contours dans la vue 3D. Sans carte graphique (rendu logiciel), chaque image devient deux à trois fois plus lente. Prend effet au prochain démarrage de Sylva.</translation>
+    </message>
+    <message>
+        <source>Antialiasing:</source>
+        <translation>Anticrénelage&#xa0;:</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::PresetBrowser</name>
     <message>
         <source>Double-click a preset to apply it to the species</source>
@@ -1222,6 +1132,21 @@
     <message>
         <source>Saved %1 as %2</source>
         <translation>%1 enregistré sous %2</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::PresetsMenu</name>
+    <message>
+        <source>&amp;Presets</source>
+        <translation>&amp;Préréglages</translation>
+    </message>
+    <message>
+        <source>No presets folder found (set SYLVA_PRESETS_DIR)</source>
+        <translation>Aucun dossier de préréglages trouvé (définissez SYLVA_PRESETS_DIR)</translation>
+    </message>
+    <message>
+        <source>No presets in %1</source>
+        <translation>Aucun préréglage dans %1</translation>
     </message>
 </context>
 <context>
@@ -1404,6 +1329,17 @@
     <message>
         <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
         <translation>Python %1&#xa0;: sylva et doc = sylva.document() sont prêts. Essayez doc.trees() ou doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::RecentFilesMenu</name>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Fichiers ré&amp;cents</translation>
+    </message>
+    <message>
+        <source>No recent files</source>
+        <translation>Aucun fichier récent</translation>
     </message>
 </context>
 <context>
@@ -1603,6 +1539,97 @@
     <message>
         <source>Scale trees</source>
         <translation>Mettre les arbres à l’échelle</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::ToolOptionsBar</name>
+    <message>
+        <source>Tools</source>
+        <translation>Outils</translation>
+    </message>
+    <message>
+        <source>Select</source>
+        <translation>Sélection</translation>
+    </message>
+    <message>
+        <source>Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a box); [ and ] step through the trees</source>
+        <translation>Cliquez sur un arbre ou un obstacle pour le sélectionner (Maj ajoute, Ctrl inverse la sélection, Ctrl+glisser trace un rectangle)&#xa0;; [ et ] parcourent les arbres</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>Déplacer</translation>
+    </message>
+    <message>
+        <source>Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow keys nudge). They re-adapt to the obstacles when you let go</source>
+        <translation>Faites glisser les arbres sélectionnés sur le sol (Ctrl+glisser fait pivoter, Maj+glisser met à l&apos;échelle&#xa0;; les touches fléchées les décalent pas à pas). Ils se réadaptent aux obstacles quand vous relâchez</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Planter</translation>
+    </message>
+    <message>
+        <source>Click the ground to plant a tree of the chosen species</source>
+        <translation>Cliquez sur le sol pour planter un arbre de l&apos;espèce choisie</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Pinceau</translation>
+    </message>
+    <message>
+        <source>Paint trees of the species mix with the radius and density below; one stroke is one undo step</source>
+        <translation>Peindre des arbres du mélange d&apos;espèces avec le rayon et la densité ci-dessous&#xa0;; un coup de pinceau correspond à une étape d&apos;annulation</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <translation>Gomme</translation>
+    </message>
+    <message>
+        <source>Remove the hand-placed trees the brush passes over</source>
+        <translation>Supprimer les arbres placés à la main sur lesquels passe le pinceau</translation>
+    </message>
+    <message>
+        <source> Species: </source>
+        <translation> Espèce&#xa0;: </translation>
+    </message>
+    <message>
+        <source>The species the Place tool plants, and the Brush when no mix is given</source>
+        <translation>L&apos;espèce que plante l&apos;outil Planter, et que peint le pinceau si aucun mélange n&apos;est indiqué</translation>
+    </message>
+    <message>
+        <source> Radius: </source>
+        <translation> Rayon&#xa0;: </translation>
+    </message>
+    <message>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <source>Brush and eraser radius, metres</source>
+        <translation>Rayon du pinceau et de la gomme, en mètres</translation>
+    </message>
+    <message>
+        <source> Density: </source>
+        <translation> Densité&#xa0;: </translation>
+    </message>
+    <message>
+        <source> /100 m²</source>
+        <translation> /100 m²</translation>
+    </message>
+    <message>
+        <source>Trees tried per 100 m² under the brush; spacing rules keep trunks out of each other&apos;s crowns and out of obstacles</source>
+        <translation>Arbres tentés par 100 m² sous le pinceau&#xa0;; des règles d&apos;espacement tiennent les troncs hors des houppiers des autres arbres et hors des obstacles</translation>
+    </message>
+    <message>
+        <source> Mix: </source>
+        <translation> Mélange&#xa0;: </translation>
+    </message>
+    <message>
+        <source>e.g. alder 70, ternary 30</source>
+        <translation>par ex. alder 70, ternary 30</translation>
+    </message>
+    <message>
+        <source>Species and weights the brush paints; empty: the chosen species</source>
+        <translation>Espèces et poids que peint le pinceau&#xa0;; vide&#xa0;: l&apos;espèce choisie</translation>
     </message>
 </context>
 <context>

@@ -1,86 +1,71 @@
 #include "ui/mainwindow.h"
-#include "ui/document/presetbrowser.h"
-#include "ui/nodes/nodegraphscene.h"
-#include "ui/nodes/parameterpanel.h"
-#include "ui/speciesworkbench.h"
-
-#include <string>
-
-#include <ctime>
-
-#include <QAction>
-#include <QActionGroup>
-#include <QApplication>
-#include <QCloseEvent>
-#include <QComboBox>
-#include <QDesktopServices>
-#include <QDialog>
-#include <QDialogButtonBox>
-#include <QDir>
-#include <QDockWidget>
 
 #include <algorithm>
+#include <string>
 
-#include <QDoubleSpinBox>
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDialog>
+#include <QDir>
+#include <QDockWidget>
 #include <QEventLoop>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QFileSystemWatcher>
-#include <QFormLayout>
-#include <QHeaderView>
 #include <QImage>
-#include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
-#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
 #include <QProgressBar>
-#include <QPromise>
 #include <QScrollArea>
 #include <QSettings>
-#include <QSignalBlocker>
-#include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
-#include <QToolBar>
 #include <QToolButton>
 #include <QTreeView>
 #include <QUndoView>
-#include <QUrl>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include "document/autosave.h"
 #include "document/errormessage.h"
 #include "document/filerefs.h"
 #include "document/presetlibrary.h"
-#include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
-#include "engine/util/error.h"
-#include "engine/util/random.h"
+#include "ui/document/documentactions.h"
 #include "ui/document/messagespanel.h"
 #include "ui/document/outlinermodel.h"
+#include "ui/document/outlinerview.h"
+#include "ui/document/presetbrowser.h"
+#include "ui/document/presetsmenu.h"
 #include "ui/document/propertiespanel.h"
+#include "ui/document/sourcewatcher.h"
 #include "ui/document/statspanel.h"
+#include "ui/filedialogs.h"
 #include "ui/generation/documentgenerator.h"
-#include "ui/generation/promiseprogress.h"
+#include "ui/generation/exportshown.h"
 #include "ui/generation/scenegenerator.h"
+#include "ui/helpmenu.h"
+#include "ui/languagemenu.h"
+#include "ui/nodes/nodegraphscene.h"
+#include "ui/nodes/parameterpanel.h"
+#include "ui/preferencesdialog.h"
+#include "ui/recentfilesmenu.h"
 #include "ui/scripting/pythonconsole.h"
 #include "ui/scripting/pythonhost.h"
+#include "ui/speciesworkbench.h"
+#include "ui/viewport/colorbymenu.h"
 #include "ui/viewport/toolcontroller.h"
+#include "ui/viewport/tooloptionsbar.h"
 #include "ui/viewport/viewport.h"
 
 namespace sylva::ui {
 
-using doc::PresetInfo;
 using doc::PresetLibrary;
 
 namespace {
-constexpr int kMaxRecent = 8;
 QString errorText() {
     return QString::fromStdString(doc::describeError(std::current_exception()).message);
 }
@@ -108,8 +93,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     mCancel->setToolTip(tr("Stop the generation; the last result stays"));
     mCancel->setVisible(false);
     connect(mCancel, &QToolButton::clicked, this, [this] {
-        if (mPreview)
-            mWatcher.cancel();
+        if (mPreview.isActive())
+            mPreview.cancel();
         else
             mGenerator->cancel();
     });
@@ -136,33 +121,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         mMessages->add(MessagesPanel::Severity::Warning, text);
         statusBar()->showMessage(text, 10000);
     });
+    mSourceWatcher = new SourceWatcher(this);
     createMenus();
     createToolBar();
 
-    // Files of the shown result: a change (or a save by rename, which shows as a change of the
-    // folder) starts a short timer, so that an editor's several writes make one reload.
-    mFileWatcher = new QFileSystemWatcher(this);
-    mReloadTimer = new QTimer(this);
-    mReloadTimer->setSingleShot(true);
-    mReloadTimer->setInterval(250);
-    connect(mFileWatcher, &QFileSystemWatcher::fileChanged, this, [this](const QString& path) {
-        // A file replaced by a rename (a save) loses its watch when the old file is finally
-        // deleted, which can come after the reload timer has already looked (the old file was
-        // still open somewhere): watch the new one at once, or later edits in place go unseen.
-        if (!mFileWatcher->files().contains(path) && QFileInfo::exists(path))
-            mFileWatcher->addPath(path);
-        mReloadTimer->start();
-    });
-    connect(mFileWatcher, &QFileSystemWatcher::directoryChanged, mReloadTimer,
-            qOverload<>(&QTimer::start));
-    connect(mReloadTimer, &QTimer::timeout, this, &MainWindow::onSourcesTouched);
+    // Files of the shown result changed on disk: the policy (reload, or ask first) is ours.
+    connect(mSourceWatcher, &SourceWatcher::changed, this, &MainWindow::onSourcesChanged);
 
-    connect(&mWatcher, &QFutureWatcher<GenerationResult>::finished, this,
-            &MainWindow::onPreviewFinished);
-    connect(&mWatcher, &QFutureWatcher<GenerationResult>::progressTextChanged, this,
-            [this](const QString& stage) {
-                statusBar()->showMessage(tr("Generating: %1").arg(stage));
-            });
+    connect(&mPreview, &SpeciesPreviewSession::dropped, this, [this] { setBusy(false); });
+    connect(&mPreview, &SpeciesPreviewSession::generated, this, &MainWindow::onPreviewGenerated);
+    connect(&mPreview, &SpeciesPreviewSession::progressed, this, [this](const QString& stage) {
+        statusBar()->showMessage(tr("Generating: %1").arg(stage));
+    });
     connect(mGenerator, &DocumentGenerator::started, this, [this] { setBusy(true); });
     connect(mGenerator, &DocumentGenerator::progressed, this, [this](const QString& stage) {
         statusBar()->showMessage(tr("Regrowing: %1").arg(stage));
@@ -180,7 +150,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         for (doc::TreeId id : mDocument->selectedTrees())
             ids.insert(id);
         mViewport->setHighlightedTrees(ids);
-        syncOutlinerSelection();
         mStats->showSelection(*mDocument, mGenerator->result());
     });
     connect(mViewport, &Viewport::frameSwapped, this, [this] {
@@ -215,9 +184,8 @@ MainWindow::~MainWindow() {
     }
     mWorkbench = nullptr;
     // The worker only touches its own copies, but stopping it keeps shutdown quick.
-    mWatcher.disconnect(this);
-    mWatcher.cancel();
-    mWatcher.waitForFinished();
+    mPreview.disconnect(this);
+    mPreview.stop();
     mGenerator->disconnect(this);
 }
 
@@ -233,30 +201,7 @@ void MainWindow::createDocks() {
     };
 
     mOutlinerModel = new OutlinerModel(*mDocument, this);
-    mOutliner = new QTreeView(this);
-    mOutliner->setObjectName(QStringLiteral("outlinerView"));
-    mOutliner->setModel(mOutlinerModel);
-    mOutliner->setHeaderHidden(true);
-    mOutliner->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    mOutliner->setEditTriggers(QAbstractItemView::EditKeyPressed |
-                               QAbstractItemView::DoubleClicked);
-    mOutliner->setContextMenuPolicy(Qt::ActionsContextMenu);
-    connect(mOutlinerModel, &QAbstractItemModel::modelReset, this, [this] {
-        for (int g : {OutlinerModel::SpeciesGroup, OutlinerModel::TreesGroup,
-                      OutlinerModel::DomainsGroup, OutlinerModel::ObstaclesGroup})
-            mOutliner->expand(mOutlinerModel->groupIndex(OutlinerModel::Group(g)));
-        syncOutlinerSelection();
-    });
-    connect(mOutliner->selectionModel(), &QItemSelectionModel::selectionChanged, this, [this] {
-        if (mSyncingSelection) return;
-        QList<doc::ItemRef> items;
-        for (const QModelIndex& i : mOutliner->selectionModel()->selectedIndexes())
-            if (auto item = mOutlinerModel->itemAt(i); item && !items.contains(*item))
-                items << *item;
-        mSyncingSelection = true;
-        mDocument->setSelection(items);
-        mSyncingSelection = false;
-    });
+    mOutliner = new OutlinerView(*mDocument, mOutlinerModel, this);
     connect(mOutlinerModel, &OutlinerModel::hiddenTreesChanged, mViewport,
             &Viewport::setHiddenTrees);
     connect(mOutlinerModel, &OutlinerModel::editFailed, this, &MainWindow::reportError);
@@ -370,6 +315,9 @@ void MainWindow::editSpecies(const QString& species) {
 }
 
 void MainWindow::createMenus() {
+    mDocumentActions = new DocumentActions(
+        *mDocument, [this] { return mViewport->camera().target(); }, this);
+    connect(mDocumentActions, &DocumentActions::failed, this, &MainWindow::reportError);
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->setObjectName(QStringLiteral("fileMenu"));
     QAction* newAction = file->addAction(tr("&New project"), this, &MainWindow::newDocument);
@@ -379,10 +327,9 @@ void MainWindow::createMenus() {
         file->addAction(tr("&Open species or project…"), this, &MainWindow::showOpenDialog);
     open->setObjectName(QStringLiteral("actionOpen"));
     open->setShortcut(QKeySequence::Open);
-    mRecentMenu = file->addMenu(tr("Open &recent"));
-    mRecentMenu->setObjectName(QStringLiteral("recentMenu"));
-    connect(mRecentMenu, &QMenu::aboutToShow, this, &MainWindow::populateRecentMenu);
-    populateRecentMenu();
+    auto* recent = new RecentFilesMenu(this);
+    connect(recent, &RecentFilesMenu::openRequested, this, &MainWindow::openSpecies);
+    file->addMenu(recent);
     QAction* saveAction = file->addAction(tr("&Save"), this, &MainWindow::save);
     saveAction->setObjectName(QStringLiteral("actionSave"));
     saveAction->setShortcut(QKeySequence::Save);
@@ -397,6 +344,7 @@ void MainWindow::createMenus() {
     mAutoReloadAction = file->addAction(tr("Reload &automatically"));
     mAutoReloadAction->setCheckable(true);
     mAutoReloadAction->setChecked(true);
+    connect(mAutoReloadAction, &QAction::toggled, mSourceWatcher, &SourceWatcher::setEnabled);
     mExportAction = file->addAction(tr("&Export…"), this, &MainWindow::showExportDialog);
     mExportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
     mExportAction->setEnabled(false);
@@ -428,17 +376,10 @@ void MainWindow::createMenus() {
     edit->addAction(undo);
     edit->addAction(redo);
     edit->addSeparator();
-    QAction* del = edit->addAction(tr("&Delete"), this, &MainWindow::deleteSelection);
-    del->setObjectName(QStringLiteral("actionDelete"));
-    del->setShortcut(QKeySequence::Delete);
-    QAction* dup = edit->addAction(tr("D&uplicate"), this, &MainWindow::duplicateSelection);
-    dup->setObjectName(QStringLiteral("actionDuplicate"));
-    dup->setShortcut(QKeySequence(tr("Ctrl+D")));
-    QAction* all = edit->addAction(tr("Select &all trees"), this, &MainWindow::selectAllTrees);
-    all->setObjectName(QStringLiteral("actionSelectAll"));
-    all->setShortcut(QKeySequence::SelectAll);
-    mOutliner->addAction(del);
-    mOutliner->addAction(dup);
+    edit->addActions({mDocumentActions->deleteAction(), mDocumentActions->duplicateAction(),
+                      mDocumentActions->selectAllAction()});
+    mOutliner->addAction(mDocumentActions->deleteAction());
+    mOutliner->addAction(mDocumentActions->duplicateAction());
     edit->addSeparator();
     QAction* prefs = edit->addAction(tr("&Preferences…"), this, &MainWindow::showPreferences);
     prefs->setObjectName(QStringLiteral("actionPreferences"));
@@ -446,7 +387,7 @@ void MainWindow::createMenus() {
 
     QMenu* scene = menuBar()->addMenu(tr("&Scene"));
     scene->setObjectName(QStringLiteral("sceneMenu"));
-    scene->addAction(tr("Add &species from file…"), this, &MainWindow::showAddSpeciesDialog);
+    scene->addAction(mDocumentActions->addSpeciesAction());
     QAction* editSpeciesAction = scene->addAction(tr("&Edit species…"), this, [this] {
         // The selected species, else the species of the selected tree, else the shown one.
         QString name;
@@ -462,26 +403,14 @@ void MainWindow::createMenus() {
     });
     editSpeciesAction->setObjectName(QStringLiteral("actionEditSpecies"));
     editSpeciesAction->setShortcut(QKeySequence(tr("Ctrl+E")));
-    QAction* addTree = scene->addAction(tr("Add &tree"), this, &MainWindow::addTreeAtTarget);
-    addTree->setObjectName(QStringLiteral("actionAddTree"));
-    addTree->setShortcut(QKeySequence(tr("Ctrl+T")));
-    scene->addAction(tr("Import &obstacle…"), this, &MainWindow::showImportObstacleDialog);
-    scene->addAction(tr("Add &domain"), this, [this] {
-        try {
-            doc::PlacementDomain d;
-            d.min = {-20.0f, -20.0f};
-            d.max = {20.0f, 20.0f};
-            mDocument->addDomain(d);
-        } catch (...) {
-            reportError(errorText());
-        }
-    });
+    scene->addActions({mDocumentActions->addTreeAction(), mDocumentActions->importObstacleAction(),
+                       mDocumentActions->addDomainAction()});
 
-    mPresetsMenu = menuBar()->addMenu(tr("&Presets"));
-    mPresetsMenu->setObjectName(QStringLiteral("presetsMenu"));
-    mPresetGroup = new QActionGroup(this);
-    connect(mPresetsMenu, &QMenu::aboutToShow, this, &MainWindow::populatePresetsMenu);
-    populatePresetsMenu();
+    auto* presets =
+        new PresetsMenu([this] { return mPreview.isActive() ? mPreview.path() : QString(); }, this);
+    connect(presets, &PresetsMenu::openRequested, this, &MainWindow::openSpecies);
+    mPresetsMenu = presets;
+    menuBar()->addMenu(presets);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     mViewMenu = view;
@@ -498,179 +427,23 @@ void MainWindow::createMenus() {
     // Shortcuts of the View menu act while the viewport has focus, like the F key itself.
     mViewport->addAction(frame);
     mViewport->addAction(grid);
-    QMenu* color = view->addMenu(tr("&Colour by"));
-    color->setObjectName(QStringLiteral("colorMenu"));
-    mColorGroup = new QActionGroup(this);
-    const std::pair<ColorBy, QString> modes[] = {{ColorBy::Material, tr("&Material")},
-                                                 {ColorBy::Light, tr("&Light (per internode)")},
-                                                 {ColorBy::Vigour, tr("&Vigour")},
-                                                 {ColorBy::Age, tr("&Age")},
-                                                 {ColorBy::BranchOrder, tr("Branch &order")}};
-    for (const auto& [mode, label] : modes) {
-        QAction* action = color->addAction(label);
-        action->setCheckable(true);
-        action->setChecked(mode == mColorBy);
-        action->setData(static_cast<int>(mode));
-        mColorGroup->addAction(action);
-        connect(action, &QAction::triggered, this, [this, mode = mode] { setColorBy(mode); });
-    }
+    mColorMenu = new ColorByMenu(mColorBy, this);
+    connect(mColorMenu, &ColorByMenu::chosen, this, &MainWindow::setColorBy);
+    view->addMenu(mColorMenu);
     view->addSeparator();
     QMenu* docks = view->addMenu(tr("&Panels"));
     docks->setObjectName(QStringLiteral("panelsMenu"));
     for (const auto& [name, d] : mDocks)
         docks->addAction(d->toggleViewAction());
-    QMenu* language = view->addMenu(tr("&Language"));
-    language->setObjectName(QStringLiteral("languageMenu"));
-    auto* languages = new QActionGroup(this);
-    const QString current = QSettings().value(QStringLiteral("language")).toString();
-    const std::pair<QString, QString> choices[] = {
-        {QString(), tr("System default")},
-        {QStringLiteral("en"), QStringLiteral("English")},
-        {QStringLiteral("de"), QStringLiteral("Deutsch")},
-        {QStringLiteral("fr"), QStringLiteral("Français")}};
-    for (const auto& [code, label] : choices) {
-        QAction* a = language->addAction(label);
-        a->setCheckable(true);
-        a->setChecked(code == current);
-        languages->addAction(a);
-        connect(a, &QAction::triggered, this, [this, code = code] {
-            QSettings().setValue(QStringLiteral("language"), code);
-            QMessageBox::information(this, tr("Language"),
-                                     tr("Sylva will use the new language when it starts again."));
-        });
-    }
+    view->addMenu(new LanguageMenu(this));
 
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->setObjectName(QStringLiteral("helpMenu"));
-    help->addAction(tr("&Documentation"), this, [] {
-        QDir docs(PresetLibrary::directory());
-        const QString folder = docs.cdUp() && docs.cd(QStringLiteral("docs"))
-                                   ? docs.absolutePath()
-                                   : QStringLiteral("/usr/share/doc/sylva");
-        QDesktopServices::openUrl(QUrl::fromLocalFile(QDir(folder).filePath("editor.md")));
-    });
-    help->addAction(tr("&About Sylva"), this, [this] {
-        QMessageBox::about(
-            this, tr("About Sylva"),
-            tr("<h3>Sylva %1</h3><p>Procedural trees and forests for film and games: "
-               "L-systems, space colonization and self-organizing trees, forests that react to "
-               "the scene they stand in.</p><p>Scripting: Python (the Python Console, or "
-               "<tt>sylva --script file.py</tt>).</p>")
-                .arg(QApplication::applicationVersion()));
-    });
+    menuBar()->addMenu(new HelpMenu(this));
 }
 
 void MainWindow::createToolBar() {
-    QToolBar* bar = addToolBar(tr("Tools"));
-    bar->setObjectName(QStringLiteral("toolsToolBar"));
-    mToolGroup = new QActionGroup(this);
-    const struct {
-        ToolController::Tool tool;
-        QString label, key, tip;
-    } tools[] = {
-        {ToolController::Tool::Select, tr("Select"), QStringLiteral("V"),
-         tr("Click a tree or obstacle to select it (Shift adds, Ctrl toggles, Ctrl+drag draws a "
-            "box); [ and ] step through the trees")},
-        {ToolController::Tool::Move, tr("Move"), QStringLiteral("M"),
-         tr("Drag selected trees along the ground (Ctrl+drag rotates, Shift+drag scales; arrow "
-            "keys nudge). They re-adapt to the obstacles when you let go")},
-        {ToolController::Tool::Place, tr("Place"), QStringLiteral("P"),
-         tr("Click the ground to plant a tree of the chosen species")},
-        {ToolController::Tool::Brush, tr("Brush"), QStringLiteral("B"),
-         tr("Paint trees of the species mix with the radius and density below; one stroke is "
-            "one undo step")},
-        {ToolController::Tool::Erase, tr("Erase"), QStringLiteral("E"),
-         tr("Remove the hand-placed trees the brush passes over")},
-    };
-    for (const auto& t : tools) {
-        QAction* a = bar->addAction(t.label);
-        a->setObjectName(QStringLiteral("tool_") + ToolController::name(t.tool));
-        a->setCheckable(true);
-        a->setChecked(t.tool == mTools->tool());
-        a->setShortcut(QKeySequence(t.key));
-        a->setToolTip(QStringLiteral("%1 (%2): %3").arg(t.label, t.key, t.tip));
-        mToolGroup->addAction(a);
-        connect(a, &QAction::triggered, this, [this, tool = t.tool] { mTools->setTool(tool); });
-    }
-    connect(mTools, &ToolController::toolChanged, this, [this](ToolController::Tool tool) {
-        for (QAction* a : mToolGroup->actions())
-            a->setChecked(a->objectName() == QStringLiteral("tool_") + ToolController::name(tool));
-    });
-    bar->addSeparator();
-    bar->addWidget(new QLabel(tr(" Species: "), bar));
-    mToolSpecies = new QComboBox(bar);
-    mToolSpecies->setObjectName(QStringLiteral("toolSpecies"));
-    mToolSpecies->setToolTip(tr("The species the Place tool plants, and the Brush when no mix "
-                                "is given"));
-    mToolSpecies->setMinimumContentsLength(10);
-    bar->addWidget(mToolSpecies);
-    connect(mToolSpecies, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-        mTools->setPlaceSpecies(name.toStdString());
-        applyBrushSettings();
-    });
-    connect(mDocument, &doc::Document::changed, this, [this](const doc::DocumentChange& c) {
-        if (!(c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset))) return;
-        const QString current = mToolSpecies->currentText();
-        QSignalBlocker block(mToolSpecies);
-        mToolSpecies->clear();
-        for (const doc::ProjectSpecies& sp : mDocument->project().species)
-            mToolSpecies->addItem(QString::fromStdString(sp.name));
-        if (!current.isEmpty()) mToolSpecies->setCurrentText(current);
-        mTools->setPlaceSpecies(mToolSpecies->currentText().toStdString());
-    });
-    bar->addWidget(new QLabel(tr(" Radius: "), bar));
-    mBrushRadius = new QDoubleSpinBox(bar);
-    mBrushRadius->setObjectName(QStringLiteral("brushRadius"));
-    mBrushRadius->setRange(0.5, 100);
-    mBrushRadius->setValue(mTools->brush().radius);
-    mBrushRadius->setSuffix(tr(" m"));
-    mBrushRadius->setToolTip(tr("Brush and eraser radius, metres"));
-    bar->addWidget(mBrushRadius);
-    bar->addWidget(new QLabel(tr(" Density: "), bar));
-    mBrushDensity = new QDoubleSpinBox(bar);
-    mBrushDensity->setObjectName(QStringLiteral("brushDensity"));
-    mBrushDensity->setRange(0.01, 50);
-    mBrushDensity->setValue(mTools->brush().density);
-    mBrushDensity->setSuffix(tr(" /100 m²"));
-    mBrushDensity->setToolTip(tr("Trees tried per 100 m² under the brush; spacing rules keep "
-                                 "trunks out of each other's crowns and out of obstacles"));
-    bar->addWidget(mBrushDensity);
-    bar->addWidget(new QLabel(tr(" Mix: "), bar));
-    mBrushMix = new QLineEdit(bar);
-    mBrushMix->setObjectName(QStringLiteral("brushMix"));
-    mBrushMix->setPlaceholderText(tr("e.g. alder 70, ternary 30"));
-    mBrushMix->setToolTip(tr("Species and weights the brush paints; empty: the chosen species"));
-    mBrushMix->setMinimumWidth(160);
-    bar->addWidget(mBrushMix);
-    connect(mBrushRadius, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyBrushSettings);
-    connect(mBrushDensity, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyBrushSettings);
-    connect(mBrushMix, &QLineEdit::editingFinished, this, &MainWindow::applyBrushSettings);
-}
-
-void MainWindow::applyBrushSettings() {
-    ToolController::Brush brush;
-    brush.radius = float(mBrushRadius->value());
-    brush.density = float(mBrushDensity->value());
-    const QString text = mBrushMix->text().trimmed();
-    try {
-        if (text.isEmpty()) {
-            if (!mToolSpecies->currentText().isEmpty())
-                brush.mix.emplace_back(mToolSpecies->currentText().toStdString(), 1.0);
-        } else {
-            for (const QString& part : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
-                const QStringList words = part.simplified().split(QLatin1Char(' '));
-                bool ok = words.size() == 2;
-                const double weight = ok ? words[1].toDouble(&ok) : 0.0;
-                if (!ok)
-                    throw InvalidInput("the mix is \"species weight, species weight\", got \"" +
-                                       part.trimmed().toStdString() + "\"");
-                brush.mix.emplace_back(words[0].toStdString(), weight);
-            }
-        }
-        mTools->setBrush(brush);
-    } catch (...) {
-        reportError(errorText());
-    }
+    mToolBar = new ToolOptionsBar(*mTools, *mDocument, this);
+    connect(mToolBar, &ToolOptionsBar::failed, this, &MainWindow::reportError);
+    addToolBar(mToolBar);
 }
 
 void MainWindow::frameSelectionOrAll() {
@@ -690,20 +463,15 @@ void MainWindow::frameSelectionOrAll() {
 
 void MainWindow::setColorBy(ColorBy mode) {
     mColorBy = mode;
-    for (QAction* action : mColorGroup->actions())
-        action->setChecked(action->data().toInt() == static_cast<int>(mode));
+    mColorMenu->setMode(mode);
     applyColoring();
 }
 
 void MainWindow::applyColoring() {
     const GenerationResult& result = lastResult();
-    const skel::Skeleton* skeleton = mPreview ? result.skeleton.get() : nullptr;
+    const skel::Skeleton* skeleton = mPreview.isActive() ? result.skeleton.get() : nullptr;
     // Attributes this tree has; the others are greyed out. A forest has no one skeleton.
-    for (QAction* action : mColorGroup->actions()) {
-        const auto mode = static_cast<ColorBy>(action->data().toInt());
-        action->setEnabled(mode == ColorBy::Material ||
-                           (skeleton && hasAttribute(*skeleton, mode)) || !result.mesh);
-    }
+    mColorMenu->enableFor(skeleton, result.mesh != nullptr);
     if (!result.mesh) return;
     if (!skeleton) {
         mViewport->setVertexColors({});
@@ -718,52 +486,6 @@ void MainWindow::applyColoring() {
     if (mColorBy != ColorBy::Material) statusBar()->showMessage(coloring.legend);
 }
 
-void MainWindow::populatePresetsMenu() {
-    mPresetsMenu->clear();
-    for (QAction* action : mPresetGroup->actions())
-        mPresetGroup->removeAction(action);
-    const QString dir = PresetLibrary::directory();
-    const QList<PresetInfo> presets = PresetLibrary::list(dir);
-    if (presets.isEmpty()) {
-        QAction* none = mPresetsMenu->addAction(
-            dir.isEmpty() ? tr("No presets folder found (set SYLVA_PRESETS_DIR)")
-                          : tr("No presets in %1").arg(QDir::toNativeSeparators(dir)));
-        none->setEnabled(false);
-        return;
-    }
-    for (const PresetInfo& preset : presets) {
-        QAction* action = mPresetsMenu->addAction(preset.name);
-        action->setData(preset.path);
-        action->setToolTip(preset.path);
-        action->setCheckable(true);
-        action->setChecked(mPreview && QFileInfo(preset.path) == QFileInfo(mPreviewPath));
-        mPresetGroup->addAction(action);
-        connect(action, &QAction::triggered, this,
-                [this, path = preset.path] { openSpecies(path); });
-    }
-}
-
-void MainWindow::populateRecentMenu() {
-    mRecentMenu->clear();
-    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
-    for (const QString& path : recent) {
-        QAction* a = mRecentMenu->addAction(QDir::toNativeSeparators(path));
-        connect(a, &QAction::triggered, this, [this, path] { openSpecies(path); });
-    }
-    if (recent.isEmpty()) mRecentMenu->addAction(tr("No recent files"))->setEnabled(false);
-}
-
-void MainWindow::addRecent(const QString& path) {
-    QSettings settings;
-    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-    const QString absolute = QFileInfo(path).absoluteFilePath();
-    recent.removeAll(absolute);
-    recent.prepend(absolute);
-    while (recent.size() > kMaxRecent)
-        recent.removeLast();
-    settings.setValue(QStringLiteral("recentFiles"), recent);
-}
-
 // --- opening, saving --------------------------------------------------------------------
 
 void MainWindow::openSpecies(const QString& path) {
@@ -771,18 +493,11 @@ void MainWindow::openSpecies(const QString& path) {
         if (!openProject(path)) Q_EMIT generationFinished(false);
         return;
     }
-    if (mWatcher.isRunning()) mWatcher.cancel(); // superseded; its result is dropped
-    mPreview = true;
-    mPreviewPath = path;
     const QString name = QFileInfo(path).fileName();
     mStats->showGenerating(name);
     statusBar()->showMessage(tr("Generating %1…").arg(name));
     setBusy(true);
-    mPreviewRunning = true;
-    mWatcher.setFuture(QtConcurrent::run([path](QPromise<GenerationResult>& promise) {
-        PromiseProgress progress(promise);
-        promise.addResult(generateTree(path, progress));
-    }));
+    mPreview.start(path);
 }
 
 bool MainWindow::openProject(const QString& path) {
@@ -796,7 +511,7 @@ bool MainWindow::openProject(const QString& path) {
         reportError(errorText());
         return false;
     }
-    addRecent(path);
+    RecentFilesMenu::add(path);
     mMessages->add(MessagesPanel::Severity::Info,
                    tr("Opened %1").arg(QDir::toNativeSeparators(mDocument->path())));
     return true;
@@ -823,7 +538,7 @@ bool MainWindow::saveAs(const QString& path) {
         reportError(errorText());
         return false;
     }
-    addRecent(path);
+    RecentFilesMenu::add(path);
     mAutosave->discard();
     mDocumentStamp = QFileInfo(mDocument->path()).lastModified(); // our own write
     statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(mDocument->path())),
@@ -859,23 +574,23 @@ bool MainWindow::openDefaultPreset() {
 }
 
 void MainWindow::reload() {
-    if (mPreview) {
-        openSpecies(mPreviewPath);
+    if (mPreview.isActive()) {
+        openSpecies(mPreview.path());
         return;
     }
     mGenerator->regenerateAll();
 }
 
 QString MainWindow::currentPath() const {
-    return mPreview ? mPreviewPath : mDocument->path();
+    return mPreview.isActive() ? mPreview.path() : mDocument->path();
 }
 
 const GenerationResult& MainWindow::lastResult() const {
-    return mPreview ? mPreviewResult : mGenerator->result();
+    return mPreview.isActive() ? mPreview.result() : mGenerator->result();
 }
 
 bool MainWindow::isGenerating() const {
-    return mPreviewRunning || mGenerator->isBusy() ||
+    return mPreview.isRunning() || mGenerator->isBusy() ||
            (mSpeciesRegen != nullptr && mSpeciesRegen->isActive());
 }
 
@@ -898,34 +613,25 @@ void MainWindow::setBusy(bool busy) {
     mCancel->setVisible(busy);
 }
 
-void MainWindow::onPreviewFinished() {
-    const QFuture<GenerationResult> future = mWatcher.future();
-    mPreviewRunning = mWatcher.isRunning(); // a newer preview may already run
-    if (future.isCanceled() || future.resultCount() == 0) {
-        setBusy(false);
-        return; // superseded by a newer run, or cancelled
-    }
-    GenerationResult result = future.result();
+void MainWindow::onPreviewGenerated(const GenerationResult& run) {
     setBusy(false);
-    if (result.cancelled) return;
-    watchSources(result.sources, result.sourceStamps);
-    if (!result.ok()) {
-        reportError(result.error);
+    mSourceWatcher->watch(run.sources, run.sourceStamps);
+    if (!run.ok()) {
+        reportError(run.error);
         Q_EMIT generationFinished(false);
         return;
     }
     mLastError.clear();
-    mPreviewResult = std::move(result);
+    const GenerationResult& result = mPreview.result();
     mViewport->clearViewFrom();
     mViewport->setTrees({});
-    mViewport->setMesh(mPreviewResult.mesh, true);
-    mExportAction->setEnabled(!mPreviewResult.exportTrees.empty());
-    mStats->showResult(mPreviewResult);
+    mViewport->setMesh(result.mesh, true);
+    mExportAction->setEnabled(!result.exportTrees.empty());
+    mStats->showResult(result);
     updateTitle();
-    statusBar()->showMessage(tr("Generated %1 in %2 ms")
-                                 .arg(mPreviewResult.speciesName)
-                                 .arg(mPreviewResult.elapsedMs, 0, 'f', 1),
-                             10000);
+    statusBar()->showMessage(
+        tr("Generated %1 in %2 ms").arg(result.speciesName).arg(result.elapsedMs, 0, 'f', 1),
+        10000);
     applyColoring();
     if (!mViewport->glError().isEmpty()) statusBar()->showMessage(mViewport->glError());
     mGlLabel->setText(mViewport->glInfo());
@@ -937,25 +643,19 @@ void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
         const QFileInfo own(mDocument->path());
         mDocumentStamp =
             !mDocument->path().isEmpty() && own.exists() ? own.lastModified() : QDateTime();
-        if (mWatcher.isRunning()) mWatcher.cancel();
-        mPreview = false;
+        mPreview.cancelIfRunning();
+        mPreview.leave();
         mFrameNext = true;
         mStats->showGenerating(mDocument->displayName());
         updateTitle();
-    } else if (mPreview) {
+    } else if (mPreview.isActive()) {
         // An edit of the document (a script adding a tree to a new project): show it.
-        mPreview = false;
+        mPreview.leave();
         mFrameNext = true;
     } else if (change.what == doc::DocumentChange::Species && !change.species.isEmpty()) {
         // A species edit: nothing to regrow when no tree grows from it; while the species
         // editor is open, its preview goes first and the forest follows when the edits pause.
-        const std::string name = change.species.toStdString();
-        bool used = false;
-        for (const doc::ProjectInstance& t : mDocument->project().instances)
-            used = used || t.species == name;
-        for (const doc::PlacementDomain& d : mDocument->project().domains)
-            used = used || (d.counts.count(name) && d.counts.at(name) > 0);
-        if (!used) return;
+        if (!mDocument->project().usesSpecies(change.species.toStdString())) return;
         if (mWorkbench && mWorkbench->isVisible()) {
             mSpeciesRegen->start();
             return;
@@ -966,39 +666,26 @@ void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
 
 void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
     setBusy(false);
-    if (mPreview) return;
+    if (mPreview.isActive()) return;
     const GenerationResult& result = mGenerator->result();
     if (!ok) {
         QStringList sources = doc::projectSourceFiles(mDocument->project());
-        QList<QDateTime> stamps;
-        for (const QString& f : sources)
-            stamps << (QFileInfo::exists(f) ? QFileInfo(f).lastModified() : QDateTime());
+        QList<QDateTime> stamps = modificationTimes(sources);
         if (!mDocument->path().isEmpty()) {
             sources << mDocument->path();
             stamps << mDocumentStamp;
         }
-        watchSources(sources, stamps);
+        mSourceWatcher->watch(sources, stamps);
         reportError(error);
         Q_EMIT generationFinished(false);
         return;
     }
     QStringList sources = result.sources;
     QList<QDateTime> stamps = result.sourceStamps;
-    if (!mDocument->path().isEmpty()) {
-        // The project file with the time it had when it was opened or saved (or last seen
-        // changed): a change made while this generation ran is still noticed. The generation
-        // lists the file too, stamped when it started (it reads the document, not the file):
-        // that stamp would hide an edit made on disk before it started (a flaky test under
-        // load found it), so it goes.
-        const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
-        if (const qsizetype i = sources.indexOf(own); i >= 0) { // listed once, absolute
-            sources.removeAt(i);
-            if (i < stamps.size()) stamps.removeAt(i);
-        }
-        sources << own;
-        stamps << mDocumentStamp;
-    }
-    watchSources(sources, stamps);
+    if (!mDocument->path().isEmpty()) // stamped when opened or saved, not by the generation
+        listProjectFileLast(sources, stamps, QFileInfo(mDocument->path()).absoluteFilePath(),
+                            mDocumentStamp);
+    mSourceWatcher->watch(sources, stamps);
     mLastError.clear();
     showDocument(mFrameNext);
     mFrameNext = false;
@@ -1028,8 +715,8 @@ void MainWindow::showDocument(bool frame) {
 }
 
 void MainWindow::updateTitle() {
-    if (mPreview) {
-        setWindowTitle(tr("%1 (preview) — Sylva").arg(mPreviewResult.speciesName));
+    if (mPreview.isActive()) {
+        setWindowTitle(tr("%1 (preview) — Sylva").arg(mPreview.result().speciesName));
         setWindowModified(false);
         return;
     }
@@ -1103,101 +790,6 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->accept();
 }
 
-// --- scene edits from menus ------------------------------------------------------------
-
-void MainWindow::deleteSelection() {
-    try {
-        const QList<doc::ItemRef> selection = mDocument->selection();
-        QList<doc::TreeId> trees = mDocument->selectedTrees();
-        if (!trees.isEmpty()) {
-            mDocument->removeTrees(trees);
-            return;
-        }
-        for (const doc::ItemRef& item : selection) {
-            if (item.kind == doc::ItemRef::Kind::Obstacle) mDocument->removeObstacle(int(item.id));
-            if (item.kind == doc::ItemRef::Kind::Domain) mDocument->removeDomain(int(item.id));
-            if (item.kind == doc::ItemRef::Kind::Species)
-                mDocument->removeSpecies(mDocument->project().species[item.id].name);
-            return; // indices of the rest changed
-        }
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::duplicateSelection() {
-    try {
-        const QList<doc::TreeId> copies = mDocument->duplicateTrees(mDocument->selectedTrees());
-        if (!copies.isEmpty()) mDocument->selectTrees(copies);
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::selectAllTrees() {
-    mDocument->selectTrees(
-        QList<doc::TreeId>(mDocument->treeIds().begin(), mDocument->treeIds().end()));
-}
-
-void MainWindow::addTreeAtTarget() {
-    try {
-        if (mDocument->project().species.empty())
-            throw InvalidInput("add a species first (Scene ▸ Add species from file…)");
-        doc::ProjectInstance t;
-        t.species = mDocument->project().species.front().name;
-        const glm::vec3 target = mViewport->camera().target();
-        t.position = {target.x, 0.0f, target.z};
-        t.seed =
-            mixSeed(mDocument->project().seed, mDocument->treeIds().size() + 1) % 1000000007ull;
-        mDocument->selectTrees({mDocument->addTree(t)});
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::showAddSpeciesDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Add species"), PresetLibrary::directory(),
-        tr("Species and grammars (*.json *.lsys *.txt);;All files (*)"));
-    if (path.isEmpty()) return;
-    bool ok = false;
-    const QString name =
-        QInputDialog::getText(this, tr("Add species"), tr("Name in the project:"),
-                              QLineEdit::Normal, QFileInfo(path).completeBaseName(), &ok);
-    if (!ok) return;
-    try {
-        mDocument->addSpecies(name.trimmed().toStdString(), path);
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::showImportObstacleDialog() {
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Import obstacle"), QFileInfo(mDocument->path()).absolutePath(),
-        tr("Meshes (*.obj *.ply *.stl *.fbx *.gltf *.glb *.dae *.3ds *.off);;All files (*)"));
-    if (path.isEmpty()) return;
-    try {
-        doc::ProjectObstacle o;
-        o.file = path.toStdString();
-        mDocument->addObstacle(o);
-    } catch (...) {
-        reportError(errorText());
-    }
-}
-
-void MainWindow::syncOutlinerSelection() {
-    if (mSyncingSelection) return;
-    mSyncingSelection = true;
-    QItemSelection selection;
-    for (const doc::ItemRef& item : mDocument->selection()) {
-        const QModelIndex i = mOutlinerModel->indexOf(item);
-        if (i.isValid()) selection.select(i, i);
-    }
-    mOutliner->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect);
-    mSyncingSelection = false;
-}
-
 // --- files on disk ----------------------------------------------------------------------
 
 void MainWindow::setAutoReload(bool on) {
@@ -1208,50 +800,15 @@ bool MainWindow::autoReload() const {
     return mAutoReloadAction->isChecked();
 }
 
-void MainWindow::watchSources(const QStringList& sources, const QList<QDateTime>& stamps) {
-    if (!mFileWatcher->files().isEmpty()) mFileWatcher->removePaths(mFileWatcher->files());
-    if (!mFileWatcher->directories().isEmpty())
-        mFileWatcher->removePaths(mFileWatcher->directories());
-    mSources = sources;
-    mSources.removeDuplicates();
-    mSources.removeAll(QString());
-    mStamps.clear();
-    QStringList folders;
-    bool changedMeanwhile = false;
-    for (qsizetype i = 0; i < mSources.size(); ++i) {
-        const QFileInfo info(mSources[i]);
-        const QDateTime now = info.exists() ? info.lastModified() : QDateTime();
-        // The time the file had when it was read; a file changed since is reloaded at once.
-        const qsizetype k = sources.indexOf(mSources[i]);
-        const QDateTime read = k >= 0 && k < stamps.size() ? stamps[k] : now;
-        mStamps[mSources[i]] = read;
-        changedMeanwhile = changedMeanwhile || now != read;
-        if (info.exists()) mFileWatcher->addPath(mSources[i]);
-        if (!folders.contains(info.absolutePath())) folders << info.absolutePath();
-    }
-    for (const QString& folder : folders)
-        if (QFileInfo(folder).isDir()) mFileWatcher->addPath(folder);
-    if (changedMeanwhile) mReloadTimer->start();
+QStringList MainWindow::watchedFiles() const {
+    return mSourceWatcher->files();
 }
 
-void MainWindow::onSourcesTouched() {
-    if (!autoReload()) return;
-    // A folder changes for other files too: reload only when one of ours changed, appeared or
-    // went (a save by rename replaces the file, and the watch on the old one is gone).
-    QStringList changed;
-    for (const auto& [file, stamp] : mStamps) {
-        const QFileInfo info(file);
-        if ((info.exists() ? info.lastModified() : QDateTime()) != stamp) changed << file;
-        // A file that came back (saved by rename) is watched again, changed or not.
-        if (info.exists() && !mFileWatcher->files().contains(file)) mFileWatcher->addPath(file);
-    }
-    if (changed.isEmpty()) return;
-    // Seen: the next change is compared with the files as they are now.
-    for (auto& [file, stamp] : mStamps) {
-        const QFileInfo info(file);
-        stamp = info.exists() ? info.lastModified() : QDateTime();
-    }
-    if (mPreview) {
+// The policy for files changed on disk (SourceWatcher says which): a preview is generated again,
+// the project's own file reloads (asking first when there are unsaved edits), and any other
+// source regrows the forest.
+void MainWindow::onSourcesChanged(const QStringList& changed) {
+    if (mPreview.isActive()) {
         reload();
         return;
     }
@@ -1325,39 +882,19 @@ bool MainWindow::exportTo(const QString& path) {
 }
 
 bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
-    const GenerationResult* source = &lastResult();
-    if (source->exportTrees.empty()) {
+    const GenerationResult& shown = lastResult();
+    if (shown.exportTrees.empty()) {
         reportError(tr("Nothing to export yet."));
         return false;
     }
     QApplication::setOverrideCursor(Qt::WaitCursor);
     QString error;
-    std::size_t files = 0;
-    GenerationResult rebuilt;
-    std::vector<exporter::ExportTree> trees;
+    ExportCount count;
     try {
-        if (options.viewportCamera && !mPreview) {
-            // The same forest with the viewport's eye as the LOD reference.
-            doc::Project project = mDocument->project();
-            project.cameraPosition = mViewport->camera().eye();
-            project.cameraTarget = mViewport->camera().target();
-            rebuilt = generateProject(project, mDocument->path(), mDocument->treeIds(), nullptr);
-            if (!rebuilt.ok()) throw IoError(rebuilt.error.toStdString());
-            source = &rebuilt;
-        }
-        if (options.selectionOnly && !mPreview) {
-            const QList<doc::TreeId> ids = mDocument->selectedTrees();
-            for (std::size_t i = 0; i < source->trees.size() && i < source->exportTrees.size(); ++i)
-                if (source->trees[i].docId && ids.contains(source->trees[i].docId))
-                    trees.push_back(source->exportTrees[i]);
-            if (trees.empty())
-                throw InvalidInput("nothing to export: no hand-placed tree is selected");
-        } else {
-            trees = source->exportTrees;
-        }
-        exporter::TreeExporter out(path.toStdString(), {false, source->compactObj});
-        out.add(trees);
-        files = out.commit().size();
+        count = exportShown(path,
+                            {shown, mPreview.isActive() ? nullptr : mDocument,
+                             mViewport->camera().eye(), mViewport->camera().target()},
+                            options);
     } catch (...) {
         error = errorText();
     }
@@ -1366,113 +903,35 @@ bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
         reportError(error);
         return false;
     }
-    statusBar()->showMessage(tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(trees.size()))
+    statusBar()->showMessage(tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(count.trees))
                                  .arg(QDir::toNativeSeparators(path))
-                                 .arg(files),
+                                 .arg(count.files),
                              10000);
     return true;
 }
 
 void MainWindow::showExportDialog() {
-    const QString suggested =
-        QFileInfo(currentPath().isEmpty() ? QStringLiteral("forest") : currentPath())
-            .completeBaseName() +
-        QStringLiteral(".obj");
-    QString filter;
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Export"), suggested,
-        tr("Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)"),
-        &filter);
-    if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) {
-        // No extension typed: the chosen filter's.
-        const qsizetype star = filter.indexOf(QStringLiteral("*."));
-        path += filter.mid(star + 1, filter.indexOf(QLatin1Char(')'), star) - star - 1);
-    }
-    exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked()});
+    const QString path = FileDialogs::exportFile(this, currentPath());
+    if (!path.isEmpty())
+        exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked()});
 }
 
 void MainWindow::showOpenDialog() {
-    QString dir = currentPath().isEmpty() ? PresetLibrary::directory()
-                                          : QFileInfo(currentPath()).absolutePath();
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open species or project"), dir,
-        tr("Species, grammars and projects (*.json *.lsys *.txt *.sylva);;Projects (*.sylva);;"
-           "All files (*)"));
+    const QString path = FileDialogs::open(this, currentPath());
     if (!path.isEmpty()) openSpecies(path);
 }
 
 void MainWindow::showPreferences() {
-    QDialog dialog(this);
-    dialog.setObjectName(QStringLiteral("preferencesDialog"));
-    dialog.setWindowTitle(tr("Preferences"));
-    auto* form = new QFormLayout(&dialog);
-    auto* minutes = new QSpinBox(&dialog);
-    minutes->setObjectName(QStringLiteral("autosaveMinutes"));
-    minutes->setRange(1, 60);
-    minutes->setSuffix(tr(" min"));
-    minutes->setValue(std::max(1, mAutosave->interval() / 60000));
-    minutes->setToolTip(tr("While there are unsaved edits, a recovery copy is written this often "
-                           "and a few seconds after the last edit. It never replaces your file."));
-    form->addRow(tr("Autosave every:"), minutes);
-    auto* folder = new QLabel(QDir::toNativeSeparators(mAutosave->folder()), &dialog);
-    folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    form->addRow(tr("Recovery folder:"), folder);
-    auto* samples = new QComboBox(&dialog);
-    samples->setObjectName(QStringLiteral("viewportSamples"));
-    samples->addItem(tr("Automatic (off on a software renderer)"), Viewport::kAutoSamples);
-    samples->addItem(tr("Off"), 0);
-    samples->addItem(tr("2× multisampling"), 2);
-    samples->addItem(tr("4× multisampling"), 4);
-    samples->addItem(tr("8× multisampling"), 8);
-    samples->setCurrentIndex(std::max(0, samples->findData(Viewport::samplesPreference())));
-    samples->setToolTip(tr("Smooths the edges in the 3D view. Without a graphics card (a "
-                           "software renderer) it makes every frame two to three times slower. "
-                           "Takes effect when Sylva starts next."));
-    form->addRow(tr("Antialiasing:"), samples);
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
-    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-    form->addRow(buttons);
+    PreferencesDialog dialog(mAutosave->interval(), mAutosave->folder(),
+                             Viewport::samplesPreference(), this);
     if (dialog.exec() != QDialog::Accepted) return;
-    setAutosaveInterval(minutes->value() * 60);
-    Viewport::setSamplesPreference(samples->currentData().toInt());
+    setAutosaveInterval(dialog.autosaveSeconds());
+    Viewport::setSamplesPreference(dialog.samples());
 }
 
 MainWindow::FrameStats MainWindow::measureFrames(int frames) {
-    auto cpuMs = [](clockid_t clock) {
-        timespec ts{};
-        clock_gettime(clock, &ts);
-        return double(ts.tv_sec) * 1e3 + double(ts.tv_nsec) * 1e-6;
-    };
-    FrameStats stats;
-    if (frames <= 0) return stats;
-    QElapsedTimer wall;
-    const double process0 = cpuMs(CLOCK_PROCESS_CPUTIME_ID);
-    const double gui0 = cpuMs(CLOCK_THREAD_CPUTIME_ID);
-    wall.start();
-    for (int i = 0; i < frames; ++i) {
-        QEventLoop loop;
-        QTimer guard;
-        guard.setSingleShot(true);
-        connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
-        connect(mViewport, &Viewport::frameSwapped, &loop, &QEventLoop::quit);
-        mViewport->camera().orbit(4.0f, 0.0f);
-        mViewport->update();
-        guard.start(10000);
-        loop.exec();
-    }
-    const double ms = double(wall.nsecsElapsed()) * 1e-6;
-    stats.msPerFrame = ms / frames;
-    stats.fps = 1000.0 / stats.msPerFrame;
-    stats.cpuMsPerFrame = (cpuMs(CLOCK_PROCESS_CPUTIME_ID) - process0) / frames;
-    stats.guiCpuMsPerFrame = (cpuMs(CLOCK_THREAD_CPUTIME_ID) - gui0) / frames;
-    stats.treesDrawn = mViewport->drawnTrees();
-    stats.triangles = lastResult().triangleCount();
-    stats.trianglesDrawn = mViewport->drawnTriangles();
-    const auto& levels = mViewport->drawnPerLevel();
-    stats.treesPerLevel.assign(levels.begin(), levels.end());
-    stats.motionTrees = mViewport->drawnMotion();
+    FrameStats stats = FrameMeter(*mViewport).measure(frames);
+    if (frames > 0) stats.triangles = lastResult().triangleCount();
     return stats;
 }
 
@@ -1482,22 +941,12 @@ void MainWindow::setAutosaveInterval(int seconds) {
 }
 
 void MainWindow::showSaveAsDialog() {
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Save project as"),
-        mDocument->path().isEmpty() ? QStringLiteral("forest.sylva") : mDocument->path(),
-        tr("Sylva projects (*.sylva)"));
-    if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".sylva");
-    saveAs(path);
+    const QString path = FileDialogs::saveProject(this, mDocument->path());
+    if (!path.isEmpty()) saveAs(path);
 }
 
 void MainWindow::showScreenshotDialog() {
-    const QString suggested =
-        QFileInfo(currentPath().isEmpty() ? QStringLiteral("sylva") : currentPath())
-            .completeBaseName() +
-        ".png";
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save screenshot"), suggested,
-                                                      tr("Images (*.png *.jpg *.bmp)"));
+    const QString path = FileDialogs::screenshot(this, currentPath());
     if (!path.isEmpty()) saveScreenshot(path);
 }
 

@@ -4,20 +4,17 @@
 #include <map>
 
 #include <QDateTime>
-#include <QElapsedTimer>
-#include <QFutureWatcher>
 #include <QMainWindow>
 #include <QString>
 
 #include "document/document.h"
+#include "ui/generation/exportshown.h"
+#include "ui/generation/speciespreviewsession.h"
 #include "ui/generation/treegenerator.h"
 #include "ui/viewport/attributecolors.h"
+#include "ui/viewport/framemeter.h"
 
 class QAction;
-class QComboBox;
-class QDoubleSpinBox;
-class QLineEdit;
-class QFileSystemWatcher;
 class QTimer;
 class QDockWidget;
 class QActionGroup;
@@ -34,6 +31,8 @@ class Autosave;
 
 namespace sylva::ui {
 
+class ColorByMenu;
+class DocumentActions;
 class DocumentGenerator;
 class MessagesPanel;
 class OutlinerModel;
@@ -42,16 +41,20 @@ class PythonConsole;
 class StatsPanel;
 class SpeciesWorkbench;
 class PresetBrowser;
+class SourceWatcher;
 class ToolController;
+class ToolOptionsBar;
 class Viewport;
 
 /// The editor's main window. It only assembles the rooms of `ui/`: the document (core/document:
 /// the project, its undo history, autosave) with its views (outliner, properties, undo history,
-/// statistics, messages), the generation worker, the viewport and the Python console. Every
-/// edit, from a widget, a menu or a script, goes through the document.
+/// statistics, messages), the generation worker, the viewport with its tool options and frame
+/// meter, the preview session, the source watcher, the preferences and the Python console, and
+/// holds the policy that joins them (what to show, when to ask, when to reload). Every edit,
+/// from a widget, a menu or a script, goes through the document.
 ///
-/// A species or grammar file opens as a preview of that one species (as `sylva-cli tree` makes
-/// it); a project opens into the document and is edited there.
+/// A species or grammar file opens as a preview of that one species (SpeciesPreviewSession, as
+/// `sylva-cli tree` makes it); a project opens into the document and is edited there.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -100,7 +103,7 @@ public:
     /// asks before reloading.
     void setAutoReload(bool on);
     bool autoReload() const;
-    QStringList watchedFiles() const { return mSources; }
+    QStringList watchedFiles() const;
     /// Saves the viewport's current image; false (with a message) on failure.
     bool saveScreenshot(const QString& path);
     /// Saves an image of the whole window, docks and menus included.
@@ -108,13 +111,8 @@ public:
     /// Exports what is shown by \p path's extension, exactly as `sylva-cli tree` (a species) or
     /// `sylva-cli forest` (the document's project) writes it.
     bool exportTo(const QString& path);
-    /// What File ▸ Export takes from a project: only the selected trees, and the level of detail
-    /// chosen for the viewport's camera instead of the project's (the forest is built again
-    /// for it, as `sylva-cli forest` would with that camera).
-    struct ExportOptions {
-        bool selectionOnly = false;
-        bool viewportCamera = false;
-    };
+    /// What File ▸ Export takes from a project (exportShown's options).
+    using ExportOptions = ui::ExportOptions;
     bool exportTo(const QString& path, const ExportOptions& options);
 
     /// The species file previewed, or the document's file.
@@ -123,7 +121,7 @@ public:
     const GenerationResult& lastResult() const;
     QString lastError() const { return mLastError; }
     bool isGenerating() const;
-    bool isPreview() const { return mPreview; }
+    bool isPreview() const { return mPreview.isActive(); }
     /// Waits (running the event loop) until the current generation ends; false on timeout.
     bool waitForGeneration(int timeoutMs = 600000);
     /// Milliseconds from the last edit to its new meshes drawn on screen.
@@ -140,16 +138,9 @@ public:
     /// without asking. True when one was restored.
     bool offerRecovery(bool force = false);
 
-    /// Orbits the view by a small step per frame for \p frames frames and measures them: frames
-    /// per second, wall and CPU milliseconds per frame (the whole process, which includes a
-    /// software renderer's threads, and the GUI thread alone), trees drawn.
-    struct FrameStats {
-        double fps = 0, msPerFrame = 0, cpuMsPerFrame = 0, guiCpuMsPerFrame = 0;
-        std::size_t treesDrawn = 0, triangles = 0;
-        std::size_t trianglesDrawn = 0;         ///< in the last frame, at its LOD
-        std::vector<std::size_t> treesPerLevel; ///< in the last frame, level 0 = full
-        std::size_t motionTrees = 0;            ///< in the last frame, drawn at their motion level
-    };
+    /// Orbits the view by a small step per frame for \p frames frames and measures them
+    /// (FrameMeter), with the shown result's triangle count.
+    using FrameStats = ui::FrameStats;
     FrameStats measureFrames(int frames);
 
     /// Edit ▸ Preferences: how often the autosave copy is written (kept in the settings).
@@ -170,11 +161,7 @@ private:
     void createMenus();
     void createToolBar();
     void frameSelectionOrAll();
-    void applyBrushSettings();
-    void populatePresetsMenu();
-    void populateRecentMenu();
-    void addRecent(const QString& path);
-    void onPreviewFinished();
+    void onPreviewGenerated(const GenerationResult& run);
     void onDocumentGenerated(bool ok, const QString& error);
     void onDocumentChanged(const doc::DocumentChange& change);
     void showDocument(bool frame);
@@ -186,16 +173,8 @@ private:
     void showPreferences();
     void showScreenshotDialog();
     void showExportDialog();
-    void showImportObstacleDialog();
-    void showAddSpeciesDialog();
-    void addTreeAtTarget();
-    void deleteSelection();
-    void duplicateSelection();
-    void selectAllTrees();
     void applyColoring();
-    void watchSources(const QStringList& sources, const QList<QDateTime>& stamps);
-    void onSourcesTouched();
-    void syncOutlinerSelection();
+    void onSourcesChanged(const QStringList& changed);
     void setBusy(bool busy);
 
     doc::Document* mDocument = nullptr;
@@ -212,39 +191,28 @@ private:
     QUndoView* mUndoView = nullptr;
     PythonConsole* mConsole = nullptr;
     ToolController* mTools = nullptr;
-    QComboBox* mToolSpecies = nullptr;
-    QDoubleSpinBox* mBrushRadius = nullptr;
-    QDoubleSpinBox* mBrushDensity = nullptr;
-    QLineEdit* mBrushMix = nullptr;
-    QActionGroup* mToolGroup = nullptr;
+    ToolOptionsBar* mToolBar = nullptr;
+    DocumentActions* mDocumentActions = nullptr;
     QAction* mExportSelectionAction = nullptr;
     QAction* mExportViewLodAction = nullptr;
     std::map<QString, QDockWidget*> mDocks;
     QMenu* mPresetsMenu = nullptr;
-    QMenu* mRecentMenu = nullptr;
     QMenu* mViewMenu = nullptr;
-    QActionGroup* mPresetGroup = nullptr;
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
     QAction* mAutoReloadAction = nullptr;
-    QFileSystemWatcher* mFileWatcher = nullptr;
-    QTimer* mReloadTimer = nullptr;
-    QTimer* mSpeciesRegen = nullptr; ///< the forest regrows when species edits pause
-    QStringList mSources;
-    std::map<QString, QDateTime> mStamps;
+    SourceWatcher* mSourceWatcher = nullptr; ///< the files the shown result was read from
+    QTimer* mSpeciesRegen = nullptr;         ///< the forest regrows when species edits pause
     QDateTime mDocumentStamp; ///< the project file's time when opened, saved or last seen
-    QActionGroup* mColorGroup = nullptr;
+    ColorByMenu* mColorMenu = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;
     QProgressBar* mBusy = nullptr;
     QToolButton* mCancel = nullptr;
-    bool mSyncingSelection = false;
 
-    bool mPreview = false;                     ///< a species file is shown instead of the document
-    QFutureWatcher<GenerationResult> mWatcher; ///< the preview's generation
-    bool mPreviewRunning = false;              ///< until onPreviewFinished() took its result
-    QString mPreviewPath;
-    GenerationResult mPreviewResult;
+    /// A species file shown instead of the document (a member: it stops before the window's
+    /// children go).
+    SpeciesPreviewSession mPreview;
     QString mLastError;
     bool mFrameNext = false; ///< frame (or look from the project camera) at the next result
     double mEditToScreenMs = 0.0;

@@ -143,6 +143,15 @@ const ProjectSpecies* Project::findSpecies(const std::string& name) const {
     return nullptr;
 }
 
+bool Project::usesSpecies(const std::string& name) const {
+    for (const ProjectInstance& t : instances)
+        if (t.species == name) return true;
+    for (const PlacementDomain& d : domains)
+        if (const auto count = d.counts.find(name); count != d.counts.end() && count->second > 0)
+            return true;
+    return false;
+}
+
 Project parseProject(const QByteArray& json, const QString& fileName, LoadReport* report) {
     const std::string file = fileName.toStdString();
     const std::string where = file.empty() ? std::string() : file + ": ";

@@ -74,6 +74,9 @@ struct Project {
     QString baseDir; ///< folder of the project file (not saved)
     QString resolve(const std::string& relative) const;
     const ProjectSpecies* findSpecies(const std::string& name) const;
+    /// Whether any tree grows from species \p name: a hand-placed tree of it, or a domain that
+    /// scatters at least one. An edit of a species nobody uses regrows nothing.
+    bool usesSpecies(const std::string& name) const;
     bool operator==(const Project&) const = default;
 };
 

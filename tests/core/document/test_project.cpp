@@ -234,3 +234,24 @@ TEST(Project, InlineSpeciesGraphsBecomeSceneSpecies) {
     EXPECT_NEAR(s.handPlaced[0].rotation, 3.14159265f / 2.0f, 1e-6f);
     EXPECT_EQ(s.handPlaced[0].seed, 4u);
 }
+
+// An edit of a species regrows the forest only when a tree grows from it (the editor asks this).
+TEST(Project, UsesSpeciesOfItsTreesAndOfDomainsThatScatterThem) {
+    doc::Project p;
+    for (const char* name : {"alder", "birch", "oak", "pine"}) {
+        doc::ProjectSpecies species;
+        species.name = name;
+        p.species.push_back(species);
+    }
+    doc::ProjectInstance tree;
+    tree.species = "alder";
+    p.instances.push_back(tree);
+    doc::PlacementDomain domain;
+    domain.counts = {{"birch", 3}, {"oak", 0}};
+    p.domains.push_back(domain);
+    EXPECT_TRUE(p.usesSpecies("alder"));  // a hand-placed tree
+    EXPECT_TRUE(p.usesSpecies("birch"));  // scattered by a domain
+    EXPECT_FALSE(p.usesSpecies("oak"));   // a domain that scatters none
+    EXPECT_FALSE(p.usesSpecies("pine"));  // in the project, on no tree
+    EXPECT_FALSE(p.usesSpecies("maple")); // not in the project at all
+}

@@ -1,0 +1,100 @@
+// exportShown without a window: what is shown written as sylva-cli would, only the selection,
+// the forest rebuilt for another camera, and a species preview ignoring the project's options.
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "document/document.h"
+#include "engine/util/error.h"
+#include "ui/generation/exportshown.h"
+#include "ui/generation/scenegenerator.h"
+
+using namespace sylva;
+using namespace sylva::ui;
+
+namespace {
+
+QString dataFile(const char* name) {
+    return QDir(QStringLiteral(SYLVA_TEST_DATA_DIR)).filePath(QLatin1String(name));
+}
+
+QByteArray readFile(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace
+
+class TestExportShown : public QObject {
+    Q_OBJECT
+
+private:
+    QTemporaryDir mDir;
+    doc::Document mDocument;
+    GenerationResult mShown;
+
+    /// forest.obj in its own folder \p name: the files name each other ("mtllib forest.mtl"),
+    /// so exports compare byte for byte.
+    QString out(const char* name) const {
+        QDir(mDir.path()).mkpath(QLatin1String(name));
+        return QDir(mDir.filePath(QLatin1String(name))).filePath(QStringLiteral("forest.obj"));
+    }
+    ShownScene shown(const glm::vec3& eye = glm::vec3(0.0f),
+                     const glm::vec3& target = glm::vec3(0.0f)) const {
+        return {mShown, &mDocument, eye, target};
+    }
+
+private Q_SLOTS:
+    void initTestCase() {
+        mDocument.open(dataFile("projects/small.sylva"));
+        mShown =
+            generateProject(mDocument.project(), mDocument.path(), mDocument.treeIds(), nullptr);
+        QVERIFY2(mShown.ok(), qPrintable(mShown.error));
+        QVERIFY(mShown.exportTrees.size() > 1);
+    }
+
+    void writesEveryShownTree() {
+        const ExportCount count = exportShown(out("all"), shown());
+        QCOMPARE(count.trees, mShown.exportTrees.size());
+        QVERIFY(count.files >= 2); // the OBJ and its materials
+        QVERIFY(readFile(out("all")).contains("\nf "));
+    }
+
+    void onlyTheSelectedTrees() {
+        mDocument.selectTrees({mDocument.treeIds().front()});
+        const ExportCount count = exportShown(out("one"), shown(), {true, false});
+        QCOMPARE(count.trees, std::size_t(1));
+        QVERIFY(readFile(out("one")).size() < readFile(out("all")).size());
+        // Nothing hand-placed selected: a message, and no file.
+        mDocument.selectTrees({});
+        QVERIFY_THROWS_EXCEPTION(InvalidInput, exportShown(out("none"), shown(), {true, false}));
+        QVERIFY(!QFileInfo::exists(out("none")));
+    }
+
+    void rebuildsForTheViewportCamera() {
+        // The project's own camera builds the very forest that is shown.
+        const doc::Project& p = mDocument.project();
+        exportShown(out("project-camera"), shown(p.cameraPosition, p.cameraTarget), {false, true});
+        QCOMPARE(readFile(out("project-camera")), readFile(out("all")));
+        // A camera far away chooses coarser levels.
+        exportShown(out("far"), shown({0.0f, 50.0f, 3000.0f}, glm::vec3(0.0f)), {false, true});
+        QVERIFY(readFile(out("far")).size() < readFile(out("all")).size());
+    }
+
+    void aPreviewIgnoresTheProjectsOptions() {
+        mDocument.selectTrees({});
+        const ShownScene preview{mShown, nullptr, glm::vec3(0.0f), glm::vec3(0.0f)};
+        const ExportCount count = exportShown(out("preview"), preview, {true, true});
+        QCOMPARE(count.trees, mShown.exportTrees.size());
+        QCOMPARE(readFile(out("preview")), readFile(out("all")));
+    }
+
+    void aFileThatCannotBeWrittenThrows() {
+        QVERIFY_THROWS_EXCEPTION(std::exception,
+                                 exportShown(QStringLiteral("/proc/no-such-dir/t.obj"), shown()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestExportShown)
+#include "test_exportshown.moc"
