@@ -24,8 +24,8 @@
 
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "ui/generation/vertexdata.h"
 #include "ui/viewport/textureimage.h"
-#include "ui/viewport/vertexdata.h"
 
 namespace sylva::ui {
 

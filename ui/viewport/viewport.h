@@ -20,10 +20,10 @@
 
 #include <glm/glm.hpp>
 
+#include "ui/generation/vertexdata.h"
 #include "ui/viewport/impostors.h"
 #include "ui/viewport/orbitcamera.h"
 #include "ui/viewport/picking.h"
-#include "ui/viewport/vertexdata.h"
 #include "ui/viewport/viewlod.h"
 
 class QOpenGLContext;
@@ -118,7 +118,7 @@ public:
 
     /// Shows \p mesh (nullptr clears the view) in its materials' colours. With \p frame the
     /// camera frames its bounds. \p vertices: the mesh's vertices as interleaveVertices()
-    /// makes them (ui/viewport/vertexdata.h), when the caller made them on a worker; else the
+    /// makes them (ui/generation/vertexdata.h), when the caller made them on a worker; else the
     /// viewport makes them when it uploads.
     void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true,
                  std::shared_ptr<const std::vector<ViewVertex>> vertices = nullptr);
