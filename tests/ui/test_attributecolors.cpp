@@ -7,8 +7,8 @@
 
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
+#include "ui/generation/vertexdata.h"
 #include "ui/viewport/attributecolors.h"
-#include "ui/viewport/vertexdata.h"
 
 using namespace sylva;
 using namespace sylva::ui;

@@ -33,6 +33,7 @@
 #include "engine/mesh/mesh.h"
 #include "ui/document/presetbrowser.h"
 #include "ui/generation/speciespreview.h"
+#include "ui/generation/vertexdata.h"
 #include "ui/grammar/grammareditor.h"
 #include "ui/mainwindow.h"
 #include "ui/nodes/curveeditor.h"
@@ -41,7 +42,6 @@
 #include "ui/nodes/parameterpanel.h"
 #include "ui/speciesworkbench.h"
 #include "ui/viewport/toolcontroller.h"
-#include "ui/viewport/vertexdata.h"
 #include "ui/viewport/viewport.h"
 #include "uitest.h"
 

@@ -12,7 +12,7 @@
 
 #include "document/document.h"
 #include "engine/graph/graph.h"
-#include "ui/viewport/vertexdata.h"
+#include "ui/generation/vertexdata.h"
 
 namespace sylva::ui {
 
@@ -20,7 +20,7 @@ namespace sylva::ui {
 struct PreviewResult {
     QString species;
     std::shared_ptr<const mesh::Mesh> mesh;
-    /// The mesh's vertices as the viewport uploads them (ui/viewport/vertexdata.h), made on the
+    /// The mesh's vertices as the viewport uploads them (ui/generation/vertexdata.h), made on the
     /// worker.
     std::shared_ptr<const std::vector<ViewVertex>> vertices;
     std::shared_ptr<const skel::Skeleton> skeleton;

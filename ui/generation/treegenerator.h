@@ -16,7 +16,7 @@
 #include "engine/export/treeexport.h"
 #include "engine/forest/metrics.h"
 #include "engine/util/progress.h"
-#include "ui/viewport/viewlod.h"
+#include "ui/generation/treelodsource.h"
 
 namespace sylva::mesh {
 struct Mesh;

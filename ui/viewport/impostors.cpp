@@ -2,76 +2,20 @@
 
 #include <algorithm>
 
-#include <QMatrix4x4>
 #include <QOpenGLShaderProgram>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "engine/mesh/mesh.h"
+#include "ui/viewport/shaderprogram.h"
 
 namespace sylva::ui {
 
-namespace {
-
-// Two crossed cards from the vertex id alone: card 0 in the tree's xy plane (the front
-// picture, left half of the texture), card 1 in its zy plane (the side picture, right half).
-const char* const kCardVertexShader = R"(#version 330 core
-uniform mat4 uViewProj;
-uniform mat4 uModel;
-uniform vec3 uLo;
-uniform vec3 uHi;
-out vec2 vUv;
-void main() {
-    const vec2 corners[6] = vec2[6](vec2(0, 0), vec2(1, 0), vec2(1, 1),
-                                    vec2(0, 0), vec2(1, 1), vec2(0, 1));
-    int card = gl_VertexID / 6;
-    vec2 st = corners[gl_VertexID % 6];
-    vec3 c = 0.5 * (uLo + uHi);
-    float y = mix(uLo.y, uHi.y, st.y);
-    vec3 p = card == 0 ? vec3(mix(uLo.x, uHi.x, st.x), y, c.z)
-                       : vec3(c.x, y, mix(uLo.z, uHi.z, st.x));
-    vUv = vec2(0.5 * float(card) + 0.5 * st.x, st.y);
-    gl_Position = uViewProj * uModel * vec4(p, 1.0);
-}
-)";
-
-// The pictures are already shaded and sRGB-encoded; the selection blends towards orange in
-// linear space as the mesh shader does.
-const char* const kCardFragmentShader = R"(#version 330 core
-in vec2 vUv;
-uniform sampler2D uPicture;
-uniform float uHighlight;
-out vec4 fragColor;
-void main() {
-    // Coverage averages down the mipmaps: one level finer than the screen asks for and a
-    // threshold under a half keep sparse crowns about as dense as the meshes look at that size
-    // (without multisampling any leaf over a pixel's centre fills it) and bare branches open.
-    vec4 t = texture(uPicture, vUv, -1.0);
-    if (t.a < 0.35) discard;
-    vec3 linear = pow(t.rgb / t.a, vec3(2.2)); // the pictures are premultiplied (clear: 0)
-    linear = mix(linear, vec3(1.0, 0.45, 0.05), uHighlight);
-    fragColor = vec4(pow(linear, vec3(1.0 / 2.2)), 1.0);
-}
-)";
-
-void setMatrix(QOpenGLShaderProgram& program, const char* name, const glm::mat4& m) {
-    program.setUniformValue(program.uniformLocation(name),
-                            QMatrix4x4(glm::value_ptr(m)).transposed());
-}
-
-} // namespace
-
 bool Impostors::initialize(QOpenGLFunctions_3_3_Core* gl, QString& error) {
     mGl = gl;
-    mProgram = std::make_unique<QOpenGLShaderProgram>();
-    if (!mProgram->addShaderFromSourceCode(QOpenGLShader::Vertex, kCardVertexShader) ||
-        !mProgram->addShaderFromSourceCode(QOpenGLShader::Fragment, kCardFragmentShader) ||
-        !mProgram->link()) {
-        error = QStringLiteral("shader error: ") + mProgram->log();
-        mProgram.reset();
-        return false;
-    }
+    // Two crossed cards drawn from the vertex id alone (shaders/card.vert).
+    mProgram = buildShaderProgram(QStringLiteral("card.vert"), QStringLiteral("card.frag"), error);
+    if (!mProgram) return false;
     gl->glGenVertexArrays(1, &mVao);
     return true;
 }
@@ -163,7 +107,7 @@ void Impostors::retain(const std::function<bool(const mesh::Mesh*)>& keep) {
 
 void Impostors::begin(const glm::mat4& viewProj) {
     mProgram->bind();
-    setMatrix(*mProgram, "uViewProj", viewProj);
+    setUniform(*mProgram, "uViewProj", viewProj);
     mProgram->setUniformValue("uPicture", 0);
     mGl->glActiveTexture(GL_TEXTURE0);
     mGl->glBindVertexArray(mVao);
@@ -174,7 +118,7 @@ void Impostors::begin(const glm::mat4& viewProj) {
 void Impostors::draw(const mesh::Mesh* m, const glm::mat4& transform, float highlight) {
     auto it = mCards.find(m);
     if (it == mCards.end()) return;
-    setMatrix(*mProgram, "uModel", transform);
+    setUniform(*mProgram, "uModel", transform);
     mProgram->setUniformValue("uLo", it->second.lo.x, it->second.lo.y, it->second.lo.z);
     mProgram->setUniformValue("uHi", it->second.hi.x, it->second.hi.y, it->second.hi.z);
     mProgram->setUniformValue("uHighlight", highlight);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -10,11 +11,18 @@
 #include <QPoint>
 
 #include "document/document.h"
+#include "ui/viewport/tools/movetool.h"
+#include "ui/viewport/tools/toolcontext.h"
 #include "ui/viewport/viewport.h"
 
 namespace sylva::ui {
 
 struct GenerationResult;
+class SceneTool;
+class SelectTool;
+class PlaceTool;
+class BrushTool;
+class EraseTool;
 
 /// The viewport's tools (a toolbar and shortcuts, docs/editor.md). Each gesture becomes document
 /// edits (one undo step per gesture); the camera keeps working with every tool (left drag
@@ -38,6 +46,10 @@ struct GenerationResult;
 ///   obstacle's footprint, random rotation and ±5 % scale. One stroke is one undo step and the
 ///   forest regrows once, when the stroke ends.
 /// - Erase: removes the hand-placed trees the brush passes over; one stroke, one step.
+///
+/// Each tool is its own class (ui/viewport/tools/: SelectTool, MoveTool, PlaceTool, BrushTool,
+/// EraseTool, over a ToolContext they share); this class keeps the current one, hands it the
+/// viewport's gestures and handles the keys every tool shares.
 class ToolController : public QObject, public ViewportTool {
     Q_OBJECT
 
@@ -47,32 +59,25 @@ public:
     /// "select", "move", "place", "brush", "erase" (the script names); false for another.
     static bool fromName(const QString& name, Tool& tool);
 
-    struct Brush {
-        float radius = 6.0f;                             ///< metres, 0.5 to 100
-        float density = 1.5f;                            ///< trees per 100 m², 0.01 to 50
-        std::vector<std::pair<std::string, double>> mix; ///< species and weight; empty: all alike
-    };
+    using Brush = BrushSettings;
 
     ToolController(doc::Document& document, Viewport& viewport,
                    std::function<const GenerationResult&()> result, QObject* parent = nullptr);
+    ~ToolController() override;
 
     Tool tool() const { return mTool; }
     void setTool(Tool tool);
     /// The species the Place tool drops (the first species when empty or unknown).
-    void setPlaceSpecies(const std::string& species) { mPlaceSpecies = species; }
+    void setPlaceSpecies(const std::string& species);
     std::string placeSpecies() const;
     void setBrush(const Brush& brush);
-    const Brush& brush() const { return mBrush; }
+    const Brush& brush() const { return mContext.brush; }
 
     /// The Move tool's handles for the selected hand-placed trees: a ring on the ground around
     /// them and a box above the tallest. None in other tools or without such a selection.
-    struct Handles {
-        glm::vec3 centre{0.0f};      ///< the selected trunks' mean position
-        float radius = 1.0f;         ///< the ring's, metres
-        glm::vec3 scaleHandle{0.0f}; ///< the box's centre, above the crowns
-    };
+    using Handles = MoveTool::Handles;
     std::optional<Handles> handles() const;
-    enum class Handle { None, Ring, Scale };
+    using Handle = MoveTool::Handle;
     /// The handle drawn within a few pixels of \p pos (widget pixels).
     Handle handleAt(const QPoint& pos) const;
     /// The handles as lines for the viewport to draw over the scene.
@@ -103,51 +108,17 @@ Q_SIGNALS:
     void treeBranchClicked(std::uint32_t id, const glm::vec3& local);
 
 private:
-    struct Dragged {
-        doc::TreeId id = 0;
-        std::size_t viewIndex = 0;
-        doc::ProjectInstance start;
-        glm::mat4 startTransform{1.0f};
-    };
-    void selectAt(const QPoint& pos, Qt::KeyboardModifiers modifiers);
-    void finishRubberBand();
-    enum class DragMode { Move, Rotate, Scale };
-    void dragTo(const QPoint& pos, Qt::KeyboardModifiers modifiers);
-    bool startDrag(doc::TreeId hit);
-    /// The angle (radians, about +y as glm::rotate turns) of the ground under \p pos around
-    /// the ring's centre, or none when the ray misses the ground plane.
-    std::optional<double> ringAngle(const QPoint& pos) const;
-    doc::ProjectInstance draggedInstance(const Dragged& d) const;
-    void dab(const glm::vec3& centre);
-    void erase(const glm::vec3& centre);
-    void nudge(float dx, float dz);
-    std::optional<glm::vec3> groundAt(const QPoint& pos) const;
-    /// The terrain's height at (x, z), or 0 without terrain.
-    float groundHeight(float x, float z) const;
+    /// The current tool's class.
+    SceneTool& current();
 
-    doc::Document& mDocument;
     Viewport& mViewport;
-    std::function<const GenerationResult&()> mResult;
     Tool mTool = Tool::Select;
-    std::string mPlaceSpecies;
-    Brush mBrush;
-
-    // gesture state
-    QPoint mPress, mLast;
-    std::vector<Dragged> mDragged;
-    glm::vec3 mDragStart{0.0f};
-    float mDragHeight = 0.0f;
-    glm::vec3 mDragMove{0.0f}; ///< the drag so far: a move, or a rotation, or a scale
-    double mDragDegrees = 0.0;
-    double mDragScale = 1.0;
-    DragMode mDragMode = DragMode::Move;
-    Handle mDragHandle = Handle::None; ///< the handle being dragged
-    Handles mDragHandles;              ///< the handles as they were when the drag began
-    double mRingLast = 0.0, mRingTotal = 0.0;
-    std::vector<doc::ProjectInstance> mStroke; ///< a brush stroke's trees, added on release
-    QList<doc::TreeId> mErased;
-    glm::vec3 mLastDab{1e30f};
-    std::uint64_t mStrokes = 0;
+    ToolContext mContext;
+    std::unique_ptr<SelectTool> mSelect;
+    std::unique_ptr<MoveTool> mMove;
+    std::unique_ptr<PlaceTool> mPlace;
+    std::unique_ptr<BrushTool> mBrush;
+    std::unique_ptr<EraseTool> mErase;
 };
 
 } // namespace sylva::ui

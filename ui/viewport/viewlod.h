@@ -15,26 +15,13 @@
 
 #include <glm/glm.hpp>
 
+#include "ui/generation/treelodsource.h"
+
 namespace sylva::mesh {
 struct Mesh;
-struct TreeMeshSettings;
-} // namespace sylva::mesh
-namespace sylva::skel {
-struct Skeleton;
 }
 
 namespace sylva::ui {
-
-/// What the viewport needs to make coarser meshes of a tree than the one it draws near: the
-/// skeleton the mesh was made from and the species' meshing settings (seeded as the forest
-/// seeds the tree). Trees without one are always drawn at full detail.
-struct TreeLodSource {
-    std::shared_ptr<const skel::Skeleton> skeleton;
-    std::shared_ptr<const mesh::TreeMeshSettings> settings;
-    /// The camera distance (tree frame, metres) the full mesh was already built for by the
-    /// project's camera LOD; levels that would not be coarser than that reuse the full mesh.
-    double builtDistance = 0.0;
-};
 
 /// The viewport's distance level of detail (issue 18). Each tree gets kLevels levels: level 0
 /// is the mesh the generation made; the levels up to kImpostorLevel are made by the engine's

@@ -3,306 +3,51 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
-#include <QApplication>
-#include <QImage>
 #include <QKeyEvent>
 #include <QMouseEvent>
-#include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QOpenGLShaderProgram>
-#include <QOpenGLWindow>
-#include <QSettings>
-#include <QSurfaceFormat>
 #include <QTimer>
-#include <QVBoxLayout>
 #include <QWheelEvent>
 
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtc/type_ptr.hpp>
 
-#include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
-#include "ui/viewport/textureimage.h"
-#include "ui/viewport/vertexdata.h"
+#include "ui/viewport/shaderprogram.h"
+#include "ui/viewport/viewportsurface.h"
 
 namespace sylva::ui {
 
 namespace {
 
-const char* const kMeshVertexShader = R"(#version 330 core
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec3 aColor;
-layout(location = 3) in vec2 aUv;
-layout(location = 4) in float aOcclusion;
-uniform mat4 uViewProj;
-uniform mat4 uModel; // a tree's instance transform: rotation, uniform scale, translation
-uniform vec3 uEye;
-out vec3 vNormal;
-out vec3 vColor;
-out vec2 vUv;
-out float vOcclusion;
-void main() {
-    vec4 world = uModel * vec4(aPosition, 1.0);
-    // Normals turned towards the viewer here, per vertex, so that leaf cards and inconsistent
-    // windings light the same from both sides: a software renderer interpolates three fewer
-    // values per pixel than if the fragment shader did it from the world position.
-    vec3 n = mat3(uModel) * aNormal;
-    vNormal = dot(n, uEye - world.xyz) < 0.0 ? -n : n;
-    vColor = aColor;
-    vUv = aUv;
-    vOcclusion = aOcclusion;
-    gl_Position = uViewProj * world;
-}
-)";
-
-// Lambert key light plus a hemisphere ambient (sky above, warm ground below), both dimmed by
-// the crown's per-vertex occlusion. Normals come turned towards the viewer (vertex shader); a
-// leaf lit from behind lets a little light through. Textures are sRGB: decoded to linear before
-// lighting, with gamma 2 (a square and a square root: under a software renderer two pow() per
-// pixel cost 5 % of a frame, and the difference to 2.2 does not show). Leaf cards are
-// cut out by their texture's alpha, sharpened with the mipmap level so that far leaves keep
-// their area instead of fading away.
-// The shader is compiled in four variants (kMeshTextured, kMeshCutout, both, neither)
-// rather than branching on uniforms: a software renderer (Mesa llvmpipe) runs both sides of a
-// branch with masks, and a shader that can discard loses the early depth test for every
-// triangle drawn with it, so bark paid for the leaves' texture lookup and cut-out.
-const char* const kMeshFragmentShader = R"(
-in vec3 vNormal;
-in vec3 vColor;
-in vec2 vUv;
-in float vOcclusion;
-uniform vec3 uAlbedo;
-uniform bool uVertexColor; // colour by a node attribute instead of the material
-uniform sampler2D uTexture;
-uniform vec3 uLightDir;
-uniform float uHighlight; // a selected tree: blended towards orange
-out vec4 fragColor;
-void main() {
-#ifdef TEXTURED
-    vec4 tex = texture(uTexture, vUv);
-#ifdef CUTOUT
-    vec2 texel = vUv * vec2(textureSize(uTexture, 0));
-    float lod = 0.5 * log2(max(dot(dFdx(texel), dFdx(texel)), dot(dFdy(texel), dFdy(texel))));
-    if (tex.a * (1.0 + 0.25 * max(lod, 0.0)) < 0.5) discard;
-#endif
-    vec3 material = tex.rgb * tex.rgb;
-#else
-    vec3 material = uAlbedo;
-#endif
-    vec3 n = vNormal;
-    float len = length(n);
-    n = len > 1e-6 ? n / len : vec3(0.0, 1.0, 0.0);
-    float facing = dot(n, uLightDir);
-    float diffuse = max(facing, 0.0);
-#ifdef CUTOUT
-    diffuse += 0.35 * max(-facing, 0.0); // a leaf card: translucent
-#endif
-    vec3 sky = vec3(0.62, 0.70, 0.85);
-    vec3 ground = vec3(0.30, 0.25, 0.20);
-    vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    vec3 albedo = uVertexColor ? vColor : material;
-    float ao = clamp(vOcclusion, 0.0, 1.0);
-    vec3 color = albedo * (0.55 * ambient * ao +
-                           1.35 * vec3(1.0, 0.96, 0.90) * diffuse * (0.4 + 0.6 * ao));
-    color = mix(color, vec3(1.0, 0.45, 0.05), uHighlight);
-    fragColor = vec4(sqrt(color), 1.0);
-}
-)";
-
-const char* const kLineVertexShader = R"(#version 330 core
-layout(location = 0) in vec3 aPosition;
-layout(location = 1) in vec4 aColor;
-uniform mat4 uViewProj;
-out vec4 vColor;
-out vec3 vWorld;
-void main() {
-    vColor = aColor;
-    vWorld = aPosition;
-    gl_Position = uViewProj * vec4(aPosition, 1.0);
-}
-)";
-
-// The grid fades out towards its rim so that it has no hard edge.
-const char* const kLineFragmentShader = R"(#version 330 core
-in vec4 vColor;
-in vec3 vWorld;
-uniform vec3 uCenter;
-uniform float uExtent;
-out vec4 fragColor;
-void main() {
-    float r = length(vWorld.xz - uCenter.xz) / uExtent;
-    fragColor = vec4(vColor.rgb, vColor.a * (1.0 - smoothstep(0.55, 1.0, r)));
-}
-)";
-
-// One triangle that covers the screen; no vertex buffer needed.
-const char* const kBackgroundVertexShader = R"(#version 330 core
-out float vT;
-void main() {
-    vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
-    vT = 0.5 * p.y + 0.5;
-    gl_Position = vec4(p, 0.0, 1.0);
-}
-)";
-
-const char* const kBackgroundFragmentShader = R"(#version 330 core
-in float vT;
-uniform vec3 uTop;
-uniform vec3 uBottom;
-out vec4 fragColor;
-void main() {
-    fragColor = vec4(mix(uBottom, uTop, clamp(vT, 0.0, 1.0)), 1.0);
-}
-)";
-
 // sRGB colours of the background gradient.
 constexpr glm::vec3 kBackgroundTop{0.42f, 0.53f, 0.68f};
 constexpr glm::vec3 kBackgroundBottom{0.84f, 0.86f, 0.88f};
 
-std::unique_ptr<QOpenGLShaderProgram> buildProgram(const char* vertex, const char* fragment,
-                                                   QString& error) {
-    auto program = std::make_unique<QOpenGLShaderProgram>();
-    if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertex) ||
-        !program->addShaderFromSourceCode(QOpenGLShader::Fragment, fragment) || !program->link()) {
-        error = QStringLiteral("shader error: ") + program->log();
-        return nullptr;
-    }
-    return program;
-}
-
-void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::vec3& v) {
-    program.setUniformValue(name, v.x, v.y, v.z);
-}
-
-void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4& m) {
-    // glm is column-major like OpenGL, so the raw array goes through unchanged.
-    program.setUniformValue(program.uniformLocation(name),
-                            QMatrix4x4(glm::value_ptr(m)).transposed());
-}
-
-bool indicesInRange(const mesh::Mesh& m) {
-    for (std::uint32_t index : m.indices)
-        if (index >= m.positions.size()) return false;
-    return true;
-}
-
 } // namespace
 
 glm::vec3 Viewport::materialColor(const std::string& material) {
-    if (material == "leaf" || material == "leaves" || material == "foliage")
-        return {0.11f, 0.30f, 0.06f};
-    if (material == "bark" || material.empty()) return {0.17f, 0.10f, 0.055f};
-    if (material == "ground") return {0.10f, 0.09f, 0.05f}; // a project's terrain
-    return {0.35f, 0.35f, 0.35f};                           // obstacles and anything else
+    return TreeBuffers::materialColor(material);
 }
 
 void Viewport::installDefaultSurfaceFormat() {
-    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
-    format.setRenderableType(QSurfaceFormat::OpenGL);
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    // SYLVA_MSAA=0 turns multisampling off: a software renderer (Mesa llvmpipe) draws a
-    // frame about twice as fast without it (docs/performance.md).
-    format.setSamples(qEnvironmentVariableIsSet("SYLVA_MSAA")
-                          ? std::max(0, qEnvironmentVariableIntValue("SYLVA_MSAA"))
-                          : 4);
-    QSurfaceFormat::setDefaultFormat(format);
-    // Without a window manager that paces frames (_NET_WM_FRAME_DRAWN), Qt waits 5 ms after
-    // each QWindow::requestUpdate() before it paints: at 30 fps that is a sixth of a frame.
-    // The view draws as soon as the event loop is idle instead (updates asked for meanwhile
-    // still make one frame). Set QT_QPA_UPDATE_IDLE_TIME to choose otherwise.
-    if (!qEnvironmentVariableIsSet("QT_QPA_UPDATE_IDLE_TIME"))
-        qputenv("QT_QPA_UPDATE_IDLE_TIME", "0");
+    ViewportSurface::installDefaultSurfaceFormat();
 }
 
 int Viewport::samplesPreference() {
-    const int samples = QSettings().value(QStringLiteral("viewport/samples"), kAutoSamples).toInt();
-    return samples == 0 || samples == 2 || samples == 4 || samples == 8 ? samples : kAutoSamples;
+    return ViewportSurface::samplesPreference();
 }
 
 void Viewport::setSamplesPreference(int samples) {
-    QSettings().setValue(QStringLiteral("viewport/samples"), samples);
+    ViewportSurface::setSamplesPreference(samples);
 }
 
 int Viewport::applySamplesPreference() {
-    int samples = samplesPreference();
-    if (qEnvironmentVariableIsSet("SYLVA_MSAA"))
-        samples = std::max(0, qEnvironmentVariableIntValue("SYLVA_MSAA"));
-    if (samples == kAutoSamples) {
-        samples = 4;
-        QOpenGLContext probe;
-        QOffscreenSurface surface;
-        surface.create();
-        if (probe.create() && probe.makeCurrent(&surface)) {
-            const auto* renderer =
-                reinterpret_cast<const char*>(probe.functions()->glGetString(GL_RENDERER));
-            const QString name = QString::fromLatin1(renderer ? renderer : "").toLower();
-            for (const char* software : {"llvmpipe", "softpipe", "swrast", "swiftshader"})
-                if (name.contains(QLatin1String(software))) samples = 0;
-            probe.doneCurrent();
-        }
-    }
-    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
-    format.setSamples(samples);
-    QSurfaceFormat::setDefaultFormat(format);
-    return samples;
+    return ViewportSurface::applySamplesPreference();
 }
-
-/// The native OpenGL window a Viewport draws into: paints with the viewport's GL code and
-/// hands its input to the viewport widget (which the rest of the editor talks to).
-class ViewportSurface : public QOpenGLWindow {
-public:
-    explicit ViewportSurface(Viewport& view) : QOpenGLWindow(NoPartialUpdate), mView(view) {}
-
-protected:
-    void initializeGL() override { mView.initializeGL(); }
-    void resizeGL(int w, int h) override { mView.resizeGL(w, h); }
-    void paintGL() override { mView.paintGL(); }
-
-    bool event(QEvent* event) override {
-        switch (event->type()) {
-        case QEvent::MouseMove: // QApplication drops hover moves the widget does not track,
-                                // after starting its tooltip's timer
-        case QEvent::MouseButtonPress:
-        case QEvent::MouseButtonRelease:
-        case QEvent::MouseButtonDblClick:
-        case QEvent::Wheel:
-        case QEvent::KeyPress:
-        case QEvent::KeyRelease:
-        case QEvent::Enter:
-        case QEvent::Leave:
-            // The window fills the widget from its top left corner: the positions hold.
-            if (event->type() == QEvent::MouseButtonPress || event->type() == QEvent::KeyPress)
-                activateMainWindow();
-            QCoreApplication::sendEvent(&mView, event);
-            return true;
-        case QEvent::FocusIn:
-            // Should the window get the keyboard anyway, give it back to the main window and
-            // the view's widget: with a window that is not a widget's as the focus window,
-            // Qt matches no widget's shortcut (Delete, Ctrl+Z did nothing).
-            activateMainWindow();
-            mView.setFocus(Qt::MouseFocusReason);
-            return true;
-        default:
-            return QOpenGLWindow::event(event);
-        }
-    }
-
-private:
-    /// A click in the view makes its main window the active one (the one keys go to), as a
-    /// click in a widget does: without that, an X server without a window manager (Xvfb)
-    /// sends keys to the window under the pointer, this one, and Qt matches no shortcut.
-    void activateMainWindow() {
-        QWidget* top = mView.window();
-        if (top && QApplication::activeWindow() != top) top->activateWindow();
-    }
-
-    Viewport& mView;
-};
 
 Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
@@ -312,17 +57,10 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     if (format.samples() < 0) format.setSamples(QSurfaceFormat::defaultFormat().samples());
     // format() reports the context's format once it exists, whose samples are not the FBO's.
     mSamples = format.samples();
-    mSurface = new ViewportSurface(*this);
-    mSurface->setFormat(format);
-    QWidget* container = QWidget::createWindowContainer(mSurface, this);
-    container->setFocusPolicy(Qt::NoFocus);
-    // Keyboard focus stays with the widget: shortcuts and the widget's key handling work as
-    // for any widget, and a click does not take focus from the main window. Set once
-    // embedded: the container sets the window's flags.
-    mSurface->setFlag(Qt::WindowDoesNotAcceptFocus);
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(container);
+    mSurface =
+        ViewportSurface::embed(*this, format,
+                               {[this] { initializeGL(); },
+                                [this](int w, int h) { resizeGL(w, h); }, [this] { paintGL(); }});
     connect(mSurface, &QOpenGLWindow::frameSwapped, this, &Viewport::frameSwapped);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -383,23 +121,7 @@ QWindow* Viewport::surface() const {
 }
 
 QImage Viewport::grabFramebuffer() {
-    // A window's back buffer holds nothing defined after a swap: draw a frame into it and
-    // read it back without swapping (what is on screen is left as it is).
-    if (!isVisible() || !mSurface->isExposed()) return {};
-    mSurface->makeCurrent();
-    if (!context()) return {};
-    paintGL();
-    const int w = int(std::lround(width() * devicePixelRatioF()));
-    const int h = int(std::lround(height() * devicePixelRatioF()));
-    QImage image(w, h, QImage::Format_RGBA8888);
-    QOpenGLFunctions* f = context()->functions();
-    f->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
-    f->glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    f->glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
-    mSurface->doneCurrent();
-    image = image.mirrored().convertToFormat(QImage::Format_RGB32);
-    image.setDevicePixelRatio(devicePixelRatioF());
-    return image;
+    return mSurface->grabFrame();
 }
 
 bool Viewport::event(QEvent* event) {
@@ -446,7 +168,7 @@ void Viewport::applyFrame() {
         mCamera.frame(mBoundsLo, mBoundsHi, aspect());
     if (mViewFrom) mCamera.lookFrom(mViewEye, mViewTarget);
     mAutoFramed = true;
-    mGridExtent = 0.0f; // rebuilt for the new scene size at the next paint
+    mGrid.invalidate(); // rebuilt for the new scene size at the next paint
 }
 
 void Viewport::setViewFrom(const glm::vec3& eye, const glm::vec3& target) {
@@ -474,86 +196,55 @@ void Viewport::initializeGL() {
     mGlInfo = QStringLiteral("%1, OpenGL %2")
                   .arg(reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
                        reinterpret_cast<const char*>(glGetString(GL_VERSION)));
-    {
-        // A software rasteriser's frame time grows with the pixels drawn; a GPU's hardly does.
-        const QString renderer =
-            QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).toLower();
-        bool software = false;
-        for (const char* name : {"llvmpipe", "softpipe", "swrast", "swiftshader"})
-            software = software || renderer.contains(QLatin1String(name));
-        mSoftware = software;
-        mMotionScale = software && mSamples <= 1 ? 0.5f : 1.0f;
-        if (qEnvironmentVariableIsSet("SYLVA_MOTION_SCALE"))
-            mMotionScale =
-                std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
-        if (mSamples > 1) mMotionScale = 1.0f; // no blit into a multisampled framebuffer
-    }
+    // A software rasteriser's frame time grows with the pixels drawn; a GPU's hardly does.
+    mSoftware = ViewportSurface::isSoftwareRenderer(
+        QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
+    mMotionScale = mSoftware && mSamples <= 1 ? 0.5f : 1.0f;
+    if (qEnvironmentVariableIsSet("SYLVA_MOTION_SCALE"))
+        mMotionScale =
+            std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
+    if (mSamples > 1) mMotionScale = 1.0f; // no blit into a multisampled framebuffer
+
+    // The mesh shader's variants: shaders/mesh.frag with TEXTURED and CUTOUT defined or not.
     bool meshOk = true;
     for (int v = 0; v < kMeshVariants && meshOk; ++v) {
-        QByteArray fragment("#version 330 core\n");
-        if (v & kMeshTextured) fragment += "#define TEXTURED 1\n";
-        if (v & kMeshCutout) fragment += "#define CUTOUT 1\n";
-        fragment += kMeshFragmentShader;
-        mMeshPrograms[v] = buildProgram(kMeshVertexShader, fragment.constData(), mGlError);
+        QByteArray defines;
+        if (v & kMeshTextured) defines += "#define TEXTURED 1\n";
+        if (v & kMeshCutout) defines += "#define CUTOUT 1\n";
+        mMeshPrograms[v] = buildShaderProgram(QStringLiteral("mesh.vert"),
+                                              QStringLiteral("mesh.frag"), mGlError, defines);
         meshOk = mMeshPrograms[v] != nullptr;
     }
-    if (meshOk) mLineProgram = buildProgram(kLineVertexShader, kLineFragmentShader, mGlError);
+    if (meshOk)
+        mLineProgram =
+            buildShaderProgram(QStringLiteral("line.vert"), QStringLiteral("line.frag"), mGlError);
     if (mLineProgram)
-        mBackgroundProgram =
-            buildProgram(kBackgroundVertexShader, kBackgroundFragmentShader, mGlError);
+        mBackgroundProgram = buildShaderProgram(QStringLiteral("background.vert"),
+                                                QStringLiteral("background.frag"), mGlError);
     if (!mBackgroundProgram) return;
     if (!mImpostors.initialize(this, mGlError)) return;
 
-    glGenVertexArrays(1, &mMeshVao);
-    glGenBuffers(1, &mMeshVbo);
-    glGenBuffers(1, &mMeshIbo);
-    glGenVertexArrays(1, &mGridVao);
-    glGenBuffers(1, &mGridVbo);
+    mBuffers.initialize(this, [this](const QString& problem) {
+        // Not from inside a frame: the status bar repaints.
+        QMetaObject::invokeMethod(
+            this, [this, problem] { Q_EMIT warning(problem); }, Qt::QueuedConnection);
+    });
+    mGrid.initialize(this);
     glGenVertexArrays(1, &mEmptyVao);
-
-    glBindVertexArray(mMeshVao);
-    glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
-    // Position, normal, attribute colour (zero unless the view colours by an attribute), uv,
-    // occlusion.
-    setMeshAttributes();
-
-    glGenVertexArrays(1, &mOverlayVao);
-    glGenBuffers(1, &mOverlayVbo);
-    for (const auto& [vao, vbo] :
-         {std::pair{mGridVao, mGridVbo}, std::pair{mOverlayVao, mOverlayVbo}}) {
-        glBindVertexArray(vao);
-        glBindBuffer(GL_ARRAY_BUFFER, vbo);
-        glEnableVertexAttribArray(0);
-        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-        glEnableVertexAttribArray(1);
-        glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
-                              reinterpret_cast<void*>(3 * sizeof(float)));
-    }
-    glBindVertexArray(0);
+    mOverlays.initialize(this);
     mGlReady = true;
     mMeshDirty = true;
     mTreesDirty = true;
-    mGridExtent = 0.0f;
 }
 
 void Viewport::releaseGl() {
-    releaseTreeBuffers();
-    releaseReducedTarget();
-    glDeleteVertexArrays(1, &mOverlayVao);
-    glDeleteBuffers(1, &mOverlayVbo);
-    mOverlayVao = mOverlayVbo = 0;
+    mBuffers.release();
+    mReduced.release();
+    mOverlays.release();
     mImpostors.release();
-    glDeleteVertexArrays(1, &mMeshVao);
-    glDeleteBuffers(1, &mMeshVbo);
-    glDeleteBuffers(1, &mMeshIbo);
-    glDeleteVertexArrays(1, &mGridVao);
-    glDeleteBuffers(1, &mGridVbo);
+    mGrid.release();
     glDeleteVertexArrays(1, &mEmptyVao);
-    mMeshVao = mMeshVbo = mMeshIbo = mGridVao = mGridVbo = mEmptyVao = 0;
-    for (const auto& [path, id] : mTextures)
-        if (id) glDeleteTextures(1, &id);
-    mTextures.clear();
+    mEmptyVao = 0;
     for (auto& program : mMeshPrograms)
         program.reset();
     mLineProgram.reset();
@@ -561,125 +252,12 @@ void Viewport::releaseGl() {
     mGlReady = false;
 }
 
-namespace {
-std::vector<Viewport::DrawRange> rangesOf(const mesh::Mesh& m) {
-    std::vector<Viewport::DrawRange> ranges;
-    const auto total = static_cast<std::uint32_t>(m.indices.size());
-    if (m.submeshes.empty()) {
-        ranges.push_back({Viewport::materialColor("bark"), 0, total});
-        return ranges;
-    }
-    for (const mesh::Submesh& s : m.submeshes) {
-        if (s.firstIndex >= total) continue;
-        const std::uint32_t count = std::min(s.indexCount, total - s.firstIndex);
-        Viewport::DrawRange r{Viewport::materialColor(s.material), s.firstIndex, count - count % 3};
-        // Sylva's bark tubes are closed and wound counter-clockwise seen from outside, so their
-        // back faces are never seen: culling them spares the rasteriser half the triangles
-        // (a third of a software renderer's frame). Ribbons made for one camera are not.
-        r.twoSided = s.material != "bark" || m.cameraRibbons;
-        ranges.push_back(r);
-    }
-    return ranges;
-}
-} // namespace
-
 void Viewport::uploadMesh() {
     mMeshDirty = false;
-    mRanges.clear();
-    if (!mMesh || mMesh->empty() || mMesh->indices.empty()) return;
-    const mesh::Mesh& m = *mMesh;
+    const std::vector<ViewVertex>* prepared = mMeshVertices ? mMeshVertices.get() : nullptr;
     // A bad index would make the driver read out of bounds; refuse the mesh instead.
-    if (!indicesInRange(m)) {
+    if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared))
         mGlError = tr("The mesh has an index out of range; it is not drawn.");
-        return;
-    }
-    const bool colored = mVertexColors.size() == m.positions.size();
-    // The vertices made beside the mesh on a worker, when they fit and no attribute colours
-    // replace theirs; else made here.
-    std::vector<ViewVertex> made;
-    const bool prepared = !colored && mMeshVertices && mMeshVertices->size() == m.positions.size();
-    if (!prepared) made = interleaveVertices(m, mVertexColors);
-    const std::vector<ViewVertex>& interleaved = prepared ? *mMeshVertices : made;
-    mUseVertexColors = colored;
-    glBindVertexArray(mMeshVao);
-    glBindBuffer(GL_ARRAY_BUFFER, mMeshVbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(ViewVertex)),
-                 interleaved.data(), GL_STATIC_DRAW);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mMeshIbo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(std::uint32_t)),
-                 m.indices.data(), GL_STATIC_DRAW);
-    glBindVertexArray(0);
-
-    mRanges = rangesOf(m);
-    bindTextures(m, mRanges);
-}
-
-void Viewport::setMeshAttributes() {
-    constexpr GLsizei kStride = sizeof(ViewVertex);
-    auto at = [](std::size_t offset) { return reinterpret_cast<void*>(offset); };
-    for (GLuint a = 0; a < 5; ++a)
-        glEnableVertexAttribArray(a);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, position)));
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, normal)));
-    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, color)));
-    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, uv)));
-    glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, occlusion)));
-}
-
-void Viewport::bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges) {
-    // rangesOf() keeps the submeshes' order, skipping those that start past the indices.
-    std::size_t r = 0;
-    const auto total = static_cast<std::uint32_t>(m.indices.size());
-    for (const mesh::Submesh& s : m.submeshes) {
-        if (s.firstIndex >= total) continue;
-        if (r >= ranges.size()) break;
-        ranges[r].texture = textureFor(s.material, s.texture);
-        ranges[r].alphaTest = s.material == "leaf" && ranges[r].texture != 0;
-        ++r;
-    }
-    if (m.submeshes.empty() && !ranges.empty()) ranges[0].texture = textureFor("bark", {});
-}
-
-GLuint Viewport::textureFor(const std::string& material, const std::string& file) {
-    std::string path = file;
-    if (path.empty()) {
-        // Sylva's shipped textures for the two materials it makes; nothing for the rest.
-        if (material != "bark" && material != "leaf") return 0;
-        const std::filesystem::path dir = exporter::resourcesDir();
-        if (dir.empty()) return 0;
-        path = (dir / "textures" / (material + ".png")).string();
-    }
-    if (auto it = mTextures.find(path); it != mTextures.end()) return it->second;
-    GLuint id = 0;
-    GLint gpuSide = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &gpuSide);
-    TextureImage read = readTextureImage(QString::fromStdString(path),
-                                         gpuSide > 0 ? std::min(gpuSide, kMaxViewTextureSide)
-                                                     : kMaxViewTextureSide);
-    if (!read.problem.isEmpty()) {
-        mTextureProblems << read.problem;
-        // Not from inside a frame: the status bar repaints.
-        QMetaObject::invokeMethod(
-            this, [this, text = read.problem] { Q_EMIT warning(text); }, Qt::QueuedConnection);
-    }
-    QImage image = std::move(read.image);
-    if (!image.isNull()) {
-        // OpenGL's first row is v = 0, the image's bottom (a leaf's stem).
-        image = image.convertToFormat(QImage::Format_RGBA8888).mirrored();
-        glGenTextures(1, &id);
-        glBindTexture(GL_TEXTURE_2D, id);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
-                     GL_UNSIGNED_BYTE, image.constBits());
-        glGenerateMipmap(GL_TEXTURE_2D);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        const GLint wrap = material == "leaf" ? GL_CLAMP_TO_EDGE : GL_REPEAT;
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
-    mTextures.emplace(path, id); // a file that cannot be read is not tried again
-    return id;
 }
 
 void Viewport::setTrees(std::vector<ViewTree> trees, bool frame) {
@@ -747,7 +325,7 @@ void Viewport::frameBox(const glm::vec3& lo, const glm::vec3& hi) {
     mViewFrom = false;
     mCamera.frame(lo, hi, aspect());
     mAutoFramed = false;
-    mGridExtent = 0.0f;
+    mGrid.invalidate();
     update();
     Q_EMIT cameraChanged();
 }
@@ -791,7 +369,6 @@ void Viewport::updateBounds() {
 
 void Viewport::syncTreeBuffers() {
     mTreesDirty = false;
-    std::map<const mesh::Mesh*, GpuMesh> kept;
     std::vector<std::shared_ptr<const mesh::Mesh>> all;
     for (const ViewTree& t : mTrees)
         all.push_back(t.mesh);
@@ -800,88 +377,8 @@ void Viewport::syncTreeBuffers() {
     const std::size_t treeMeshes = all.size();
     for (std::shared_ptr<const mesh::Mesh>& level : mLod->allLevelMeshes())
         all.push_back(std::move(level));
-    for (std::size_t k = 0; k < all.size(); ++k) {
-        const std::shared_ptr<const mesh::Mesh>& treeMesh = all[k];
-        if (!treeMesh || treeMesh->empty() || kept.count(treeMesh.get())) continue;
-        auto old = mGpuTrees.find(treeMesh.get());
-        if (old != mGpuTrees.end()) {
-            kept.insert(mGpuTrees.extract(old));
-            continue;
-        }
-        if (!indicesInRange(*treeMesh)) continue;
-        GpuMesh gpu;
-        gpu.mesh = treeMesh;
-        gpu.ranges = rangesOf(*treeMesh);
-        bindTextures(*treeMesh, gpu.ranges);
-        glGenVertexArrays(1, &gpu.vao);
-        glGenBuffers(1, &gpu.vbo);
-        glGenBuffers(1, &gpu.ibo);
-        glBindVertexArray(gpu.vao);
-        glBindBuffer(GL_ARRAY_BUFFER, gpu.vbo);
-        const std::vector<ViewVertex> data = interleaveVertices(*treeMesh, {});
-        glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(ViewVertex)), data.data(),
-                     GL_STATIC_DRAW);
-        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.ibo);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                     GLsizeiptr(treeMesh->indices.size() * sizeof(std::uint32_t)),
-                     treeMesh->indices.data(), GL_STATIC_DRAW);
-        setMeshAttributes();
-        glBindVertexArray(0);
-        ++(k < treeMeshes ? mUploads : mLevelUploads);
-        kept.emplace(treeMesh.get(), std::move(gpu));
-    }
-    releaseTreeBuffers(); // those no tree draws any more
-    mGpuTrees = std::move(kept);
-    mImpostors.retain([this](const mesh::Mesh* m) { return mGpuTrees.count(m) > 0; });
-}
-
-void Viewport::releaseTreeBuffers() {
-    for (auto& [key, gpu] : mGpuTrees) {
-        glDeleteVertexArrays(1, &gpu.vao);
-        glDeleteBuffers(1, &gpu.vbo);
-        glDeleteBuffers(1, &gpu.ibo);
-    }
-    mGpuTrees.clear();
-}
-
-void Viewport::buildGrid() {
-    const float radius = mCamera.sceneRadius();
-    // A power-of-ten spacing that gives a few dozen lines across the framed scene.
-    const float step = std::pow(10.0f, std::floor(std::log10(std::max(radius, 1e-3f) * 0.5f)));
-    const int half = std::max(5, int(std::ceil(2.0f * radius / step)));
-    mGridExtent = float(half) * step;
-    const glm::vec3 centre = 0.5f * (mBoundsLo + mBoundsHi);
-    const float cx = std::round(centre.x / step) * step;
-    const float cz = std::round(centre.z / step) * step;
-    const float y = std::min(0.0f, mBoundsLo.y);
-    mGridCenter = glm::vec3(cx, y, cz);
-
-    std::vector<float> data;
-    data.reserve(std::size_t(4 * half + 2) * 2 * 7);
-    auto line = [&](glm::vec3 a, glm::vec3 b, glm::vec4 c) {
-        for (const glm::vec3& p : {a, b})
-            data.insert(data.end(), {p.x, p.y, p.z, c.x, c.y, c.z, c.w});
-    };
-    const glm::vec4 minor(0.30f, 0.33f, 0.37f, 0.30f);
-    const glm::vec4 major(0.25f, 0.27f, 0.31f, 0.60f);
-    for (int i = -half; i <= half; ++i) {
-        const float x = cx + float(i) * step;
-        const float z = cz + float(i) * step;
-        const long long gx = std::llround(x / step);
-        const long long gz = std::llround(z / step);
-        const glm::vec4 cX =
-            gx == 0 ? glm::vec4(0.30f, 0.42f, 0.75f, 0.85f) : (gx % 10 == 0 ? major : minor);
-        const glm::vec4 cZ =
-            gz == 0 ? glm::vec4(0.75f, 0.30f, 0.28f, 0.85f) : (gz % 10 == 0 ? major : minor);
-        // Line of constant x runs along z (the z axis when x == 0), and vice versa.
-        line({x, y, cz - mGridExtent}, {x, y, cz + mGridExtent}, cX);
-        line({cx - mGridExtent, y, z}, {cx + mGridExtent, y, z}, cZ);
-    }
-    glBindBuffer(GL_ARRAY_BUFFER, mGridVbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
-                 GL_STATIC_DRAW);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    mGridVertexCount = GLsizei(data.size() / 7);
+    mBuffers.sync(all, treeMeshes, mUploads, mLevelUploads);
+    mImpostors.retain([this](const mesh::Mesh* m) { return mBuffers.find(m) != nullptr; });
 }
 
 void Viewport::resizeGL(int width, int height) {
@@ -901,7 +398,7 @@ void Viewport::paintGL() {
     }
     if (mMeshDirty) uploadMesh();
     if (mTreesDirty) syncTreeBuffers();
-    if (mGridExtent <= 0.0f) buildGrid();
+    if (!mGrid.isBuilt()) mGrid.build(mCamera.sceneRadius(), mBoundsLo, mBoundsHi);
 
     const glm::mat4 viewProj = mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix();
     // A key light that follows the camera (above, to the left, from the front) keeps the tree
@@ -922,7 +419,8 @@ void Viewport::paintGL() {
     glViewport(0, 0, full.width(), full.height());
     mLastReduced = false;
     if (mMotionScale < 1.0f && moving && !mSharpNext) {
-        mLastReduced = bindReducedTarget(full);
+        mLastReduced = mReduced.bind(this, full, mMotionScale, defaultFramebufferObject());
+        if (!mLastReduced) mMotionScale = 1.0f; // the driver refused it: not again
         mSharpTimer->start();
     }
     mSharpNext = false;
@@ -941,17 +439,7 @@ void Viewport::paintGL() {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
 
-    if (mGridVisible && mGridVertexCount > 0) {
-        glEnable(GL_BLEND);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        mLineProgram->bind();
-        setUniform(*mLineProgram, "uViewProj", viewProj);
-        setUniform(*mLineProgram, "uCenter", mGridCenter);
-        mLineProgram->setUniformValue("uExtent", mGridExtent);
-        glBindVertexArray(mGridVao);
-        glDrawArrays(GL_LINES, 0, mGridVertexCount);
-        glDisable(GL_BLEND);
-    }
+    if (mGridVisible) mGrid.draw(*mLineProgram, viewProj);
 
     glDepthMask(GL_TRUE);
     mUnflushed = 0;
@@ -959,17 +447,18 @@ void Viewport::paintGL() {
     mDrawnTrees = 0;
     mDrawnMotion = 0;
     mDrawnPerLevel.fill(0);
-    if (!mRanges.empty() || !mGpuTrees.empty()) {
+    const std::vector<DrawRange>& sceneRanges = mBuffers.sceneRanges();
+    if (!sceneRanges.empty() || mBuffers.hasTrees()) {
         MeshUniforms u;
         u.viewProj = viewProj;
         u.eye = mCamera.eye();
         u.light = light;
-        u.vertexColor = mUseVertexColors;
+        u.vertexColor = mBuffers.sceneVertexColors();
         setMeshUniforms(u);
         glActiveTexture(GL_TEXTURE0);
-        glBindVertexArray(mMeshVao);
-        drawRanges(mRanges);
-        for (const DrawRange& r : mRanges)
+        glBindVertexArray(mBuffers.sceneVao());
+        drawRanges(sceneRanges);
+        for (const DrawRange& r : sceneRanges)
             mDrawnTriangles += r.indexCount / 3;
         u.vertexColor = false;
         setMeshUniforms(u);
@@ -1007,53 +496,10 @@ void Viewport::paintGL() {
             mImpostors.end();
         }
     }
-    drawOverlay(viewProj);
-    drawBand();
+    if (mOverlay) mOverlays.drawLines(*mLineProgram, mOverlay(), viewProj);
+    mOverlays.drawBand(*mLineProgram, mBand, size());
     glBindVertexArray(0);
-    if (mLastReduced) {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, mLowFbo);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
-        glBlitFramebuffer(0, 0, mLowSize.width(), mLowSize.height(), 0, 0, full.width(),
-                          full.height(), GL_COLOR_BUFFER_BIT, GL_LINEAR);
-        glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
-        glViewport(0, 0, full.width(), full.height());
-    }
-}
-
-bool Viewport::bindReducedTarget(const QSize& full) {
-    const QSize size(std::max(1, int(std::lround(float(full.width()) * mMotionScale))),
-                     std::max(1, int(std::lround(float(full.height()) * mMotionScale))));
-    if (!mLowFbo || size != mLowSize) {
-        releaseReducedTarget();
-        glGenFramebuffers(1, &mLowFbo);
-        glGenRenderbuffers(1, &mLowColor);
-        glGenRenderbuffers(1, &mLowDepth);
-        glBindRenderbuffer(GL_RENDERBUFFER, mLowColor);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, size.width(), size.height());
-        glBindRenderbuffer(GL_RENDERBUFFER, mLowDepth);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size.width(), size.height());
-        glBindFramebuffer(GL_FRAMEBUFFER, mLowFbo);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, mLowColor);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, mLowDepth);
-        mLowSize = size;
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            releaseReducedTarget();
-            glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
-            mMotionScale = 1.0f; // not again
-            return false;
-        }
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, mLowFbo);
-    glViewport(0, 0, mLowSize.width(), mLowSize.height());
-    return true;
-}
-
-void Viewport::releaseReducedTarget() {
-    if (mLowFbo) glDeleteFramebuffers(1, &mLowFbo);
-    if (mLowColor) glDeleteRenderbuffers(1, &mLowColor);
-    if (mLowDepth) glDeleteRenderbuffers(1, &mLowDepth);
-    mLowFbo = mLowColor = mLowDepth = 0;
-    mLowSize = {};
+    if (mLastReduced) mReduced.blit(full, defaultFramebufferObject());
 }
 
 QImage Viewport::grabSharp() {
@@ -1067,119 +513,31 @@ void Viewport::setBand(const QRect& band) {
     update();
 }
 
-void Viewport::drawBand() {
-    if (mBand.isEmpty()) return;
-    // In widget pixels, y down; a translucent fill inside a sharp outline.
-    const glm::mat4 pixels =
-        glm::ortho(0.0f, float(std::max(1, width())), float(std::max(1, height())), 0.0f);
-    const float x0 = float(mBand.left()), y0 = float(mBand.top());
-    const float x1 = float(mBand.right() + 1), y1 = float(mBand.bottom() + 1);
-    const glm::vec4 fill(0.25f, 0.55f, 0.95f, 0.18f), edge(0.25f, 0.55f, 0.95f, 0.95f);
-    std::vector<float> data;
-    auto vertex = [&data](float x, float y, const glm::vec4& c) {
-        data.insert(data.end(), {x, y, 0.0f, c.x, c.y, c.z, c.w});
-    };
-    for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x1, y1}, {x0, y0}, {x1, y1}, {x0, y1}})
-        vertex(x, y, fill);
-    const std::pair<float, float> corners[] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-    for (int k = 0; k < 4; ++k) {
-        vertex(corners[k].first, corners[k].second, edge);
-        vertex(corners[(k + 1) % 4].first, corners[(k + 1) % 4].second, edge);
-    }
-    drawOnTop(data, pixels, 6);
-}
-
-void Viewport::drawOverlay(const glm::mat4& viewProj) {
-    if (!mOverlay) return;
-    const std::vector<OverlayLine> lines = mOverlay();
-    if (lines.empty()) return;
-    std::vector<float> data;
-    data.reserve(lines.size() * 14);
-    for (const OverlayLine& l : lines)
-        for (const glm::vec3& p : {l.a, l.b})
-            data.insert(data.end(), {p.x, p.y, p.z, l.color.x, l.color.y, l.color.z, l.color.w});
-    drawOnTop(data, viewProj, 0);
-}
-
-void Viewport::drawOnTop(const std::vector<float>& data, const glm::mat4& viewProj,
-                         int triangleVertices) {
-    // Handles and the band stay visible through the trees and the ground they stand in.
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    mLineProgram->bind();
-    setUniform(*mLineProgram, "uViewProj", viewProj);
-    setUniform(*mLineProgram, "uCenter", glm::vec3(0.0f));
-    mLineProgram->setUniformValue("uExtent", 1e30f); // no fading
-    glBindVertexArray(mOverlayVao);
-    glBindBuffer(GL_ARRAY_BUFFER, mOverlayVbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
-                 GL_STREAM_DRAW);
-    const auto vertices = GLsizei(data.size() / 7);
-    if (triangleVertices > 0) glDrawArrays(GL_TRIANGLES, 0, triangleVertices);
-    glDrawArrays(GL_LINES, triangleVertices, vertices - triangleVertices);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-}
-
 void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight) {
-    auto gpu = mGpuTrees.find(&m);
-    if (gpu == mGpuTrees.end()) return;
+    const TreeBuffers::GpuMesh* gpu = mBuffers.find(&m);
+    if (!gpu) return;
     MeshUniforms u = mMeshUniforms;
     u.model = transform;
     u.highlight = highlight;
     setMeshUniforms(u);
-    glBindVertexArray(gpu->second.vao);
-    drawRanges(gpu->second.ranges);
-    for (const DrawRange& r : gpu->second.ranges)
+    glBindVertexArray(gpu->vao);
+    drawRanges(gpu->ranges);
+    for (const DrawRange& r : gpu->ranges)
         mDrawnTriangles += r.indexCount / 3;
 }
 
-std::vector<Viewport::TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
-    // Frustum culling: a tree whose world box lies outside one of the six planes is not drawn
-    // (a forest seen from inside draws only what is in front of the camera).
-    glm::vec4 planes[6];
-    const glm::mat4 m = glm::transpose(viewProj);
-    for (int k = 0; k < 3; ++k) {
-        planes[2 * k] = m[3] + m[k];
-        planes[2 * k + 1] = m[3] - m[k];
-    }
-    auto visible = [&planes](const Bounds& b) {
-        if (b.empty()) return false;
-        for (const glm::vec4& p : planes) {
-            const glm::vec3 far(p.x >= 0 ? b.hi.x : b.lo.x, p.y >= 0 ? b.hi.y : b.lo.y,
-                                p.z >= 0 ? b.hi.z : b.lo.z);
-            if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
-        }
-        return true;
-    };
-    // The level of detail of a tree follows its height on screen (ui/viewport/viewlod.h);
-    // picking keeps the full mesh.
-    const glm::vec3 eye = mCamera.eye();
-    const double viewportPx = double(height()) * devicePixelRatioF();
-    std::vector<TreeDraw> order;
-    order.reserve(mTrees.size());
-    for (std::size_t i = 0; i < mTrees.size(); ++i) {
-        const ViewTree& t = mTrees[i];
-        if (!t.mesh || (t.id && mHidden.contains(t.id))) continue;
-        TreeDraw d;
-        d.index = i;
-        if (i < mTreeBounds.size()) {
-            const Bounds& b = mTreeBounds[i];
-            if (!visible(b)) continue;
-            d.distance = glm::length(0.5f * (b.lo + b.hi) - eye);
-            if (mLod->isEnabled())
-                d.level = ViewLod::levelFor(
-                    ViewLod::equivalentHeights(double(d.distance), double(b.hi.y - b.lo.y),
-                                               double(mCamera.fovY()), viewportPx));
-        }
-        order.push_back(d);
-    }
-    std::sort(order.begin(), order.end(), [](const TreeDraw& a, const TreeDraw& b) {
-        return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
-    });
-    return order;
+std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
+    std::vector<bool> drawn(mTrees.size());
+    for (std::size_t i = 0; i < mTrees.size(); ++i)
+        drawn[i] = mTrees[i].mesh && !(mTrees[i].id && mHidden.contains(mTrees[i].id));
+    DrawListView view;
+    view.viewProj = viewProj;
+    view.eye = mCamera.eye();
+    view.fovY = mCamera.fovY();
+    view.viewportHeightPx = double(height()) * devicePixelRatioF();
+    view.levels = mLod->isEnabled();
+    // Picking keeps the full mesh; only drawing follows the level of detail.
+    return buildDrawList(view, mTrees.size(), drawn, mTreeBounds);
 }
 
 void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {

@@ -20,11 +20,17 @@
 
 #include <glm/glm.hpp>
 
+#include "ui/generation/vertexdata.h"
+#include "ui/viewport/drawlist.h"
+#include "ui/viewport/grid.h"
 #include "ui/viewport/impostors.h"
 #include "ui/viewport/orbitcamera.h"
+#include "ui/viewport/overlays.h"
 #include "ui/viewport/picking.h"
-#include "ui/viewport/vertexdata.h"
+#include "ui/viewport/reducedtarget.h"
+#include "ui/viewport/treebuffers.h"
 #include "ui/viewport/viewlod.h"
+#include "ui/viewport/viewportsurface.h"
 
 class QOpenGLContext;
 class QOpenGLShaderProgram;
@@ -46,12 +52,6 @@ struct ViewTree {
     TreeLodSource lod;
 };
 
-/// A line a tool draws over the scene (its handles), world space, not hidden by the scene.
-struct OverlayLine {
-    glm::vec3 a{0.0f}, b{0.0f};
-    glm::vec4 color{1.0f};
-};
-
 /// What a tool (ui/viewport/toolcontroller.h) gets from the viewport. press() returns true
 /// when the tool takes the drag (the camera then does not move); move() and release() follow
 /// for that drag only. click() comes for a press and release of the left button that did not
@@ -66,8 +66,6 @@ public:
     virtual bool key(QKeyEvent* event) = 0;
 };
 
-class ViewportSurface;
-
 /// The 3D view: draws a mesh (bark and leaf submeshes) over a gradient background and a ground
 /// grid with OpenGL 3.3 core, and lets the user orbit (left drag), pan (right or middle drag,
 /// or Shift + left drag), zoom (wheel) and frame the tree (F).
@@ -79,21 +77,16 @@ class ViewportSurface;
 /// events to this widget, so tools, tests and event filters see the widget as before, and
 /// keyboard focus and shortcuts stay with the widgets. The OpenGL calls below (update(),
 /// makeCurrent(), grabFramebuffer() …) keep QOpenGLWidget's names.
+///
+/// This class holds the scene, the camera, input and the frame's order; its jobs live beside
+/// it: the native window and surface format (viewportsurface), the GLSL (shaders/, loaded by
+/// shaderprogram), the GPU buffers and textures (treebuffers), what to draw at which level
+/// (drawlist, pure), the grid, the overlays and rubber band, the reduced-resolution target.
 class Viewport : public QWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
 public:
-    /// A run of triangles drawn in one material: its colour, or its texture when it has one.
-    struct DrawRange {
-        glm::vec3 color;
-        std::uint32_t firstIndex = 0;
-        std::uint32_t indexCount = 0;
-        GLuint texture = 0;     ///< 0: the plain colour
-        bool alphaTest = false; ///< a leaf card cut out by the texture's alpha
-        /// Drawn from both sides: everything but Sylva's closed bark tubes (leaf cards, camera
-        /// ribbons, obstacles, foreign meshes); the tubes' back faces are culled.
-        bool twoSided = true;
-    };
+    using DrawRange = sylva::ui::DrawRange;
 
     /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
     static glm::vec3 materialColor(const std::string& material);
@@ -105,7 +98,7 @@ public:
     /// Edit ▸ Preferences' multisampling (QSettings "viewport/samples"): kAutoSamples, 0, 2, 4
     /// or 8 samples a pixel. Automatic is 4 on a GPU and none on a software renderer (Mesa
     /// llvmpipe draws a frame 2-3 times faster without it, docs/performance.md).
-    static constexpr int kAutoSamples = -1;
+    static constexpr int kAutoSamples = ViewportSurface::kAutoSamples;
     static int samplesPreference();
     static void setSamplesPreference(int samples);
     /// Puts the preference (or SYLVA_MSAA, which wins) into the default surface format that
@@ -118,7 +111,7 @@ public:
 
     /// Shows \p mesh (nullptr clears the view) in its materials' colours. With \p frame the
     /// camera frames its bounds. \p vertices: the mesh's vertices as interleaveVertices()
-    /// makes them (ui/viewport/vertexdata.h), when the caller made them on a worker; else the
+    /// makes them (ui/generation/vertexdata.h), when the caller made them on a worker; else the
     /// viewport makes them when it uploads.
     void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true,
                  std::shared_ptr<const std::vector<ViewVertex>> vertices = nullptr);
@@ -227,7 +220,7 @@ public:
     /// Why texture files were drawn without their texture (unreadable, or larger than
     /// kMaxTexturePixels), one line each, in the order they were met; each is also emitted as
     /// warning().
-    QStringList textureProblems() const { return mTextureProblems; }
+    QStringList textureProblems() const { return mBuffers.textureProblems(); }
 
     QSize sizeHint() const override { return {960, 720}; }
 
@@ -258,7 +251,6 @@ Q_SIGNALS:
     void warning(const QString& text);
 
 protected:
-    friend class ViewportSurface;
     void initializeGL();
     void resizeGL(int width, int height);
     void paintGL();
@@ -276,14 +268,7 @@ private:
     void releaseGl();
     void applyFrame();
     void uploadMesh();
-    void setMeshAttributes();
-    /// The textures of \p m's submeshes on \p ranges (rangesOf's order).
-    void bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges);
-    /// The GL texture of \p file (Sylva's shipped one for \p material when empty), loaded once;
-    /// 0 when there is none or it cannot be read.
-    GLuint textureFor(const std::string& material, const std::string& file);
     void drawRanges(const std::vector<DrawRange>& ranges);
-    void buildGrid();
     float aspect() const;
 
     std::size_t vertexCount() const;
@@ -291,7 +276,6 @@ private:
     std::shared_ptr<const mesh::Mesh> mMesh;
     std::shared_ptr<const std::vector<ViewVertex>> mMeshVertices; ///< made on a worker, or none
     std::vector<glm::vec3> mVertexColors;
-    bool mUseVertexColors = false; ///< what the uploaded buffer holds
     glm::vec3 mBoundsLo{-0.5f, 0.0f, -0.5f};
     glm::vec3 mBoundsHi{0.5f, 1.0f, 0.5f};
     OrbitCamera mCamera;
@@ -314,7 +298,6 @@ private:
     bool mGlReady = false;
     QString mGlInfo;
     QString mGlError;
-    QStringList mTextureProblems;
     /// The mesh shader's variants (a bit set): compiled apart so that bark does not pay for
     /// the leaves' texture and cut-out, and keeps the early depth test.
     static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshVariants = 4;
@@ -335,32 +318,13 @@ private:
     std::uint64_t mMeshUniformsStamp = 1;
     std::unique_ptr<QOpenGLShaderProgram> mLineProgram;
     std::unique_ptr<QOpenGLShaderProgram> mBackgroundProgram;
-    GLuint mMeshVao = 0;
-    GLuint mMeshVbo = 0;
-    GLuint mMeshIbo = 0;
-    GLuint mGridVao = 0;
-    GLuint mGridVbo = 0;
-    GLuint mEmptyVao = 0;
-    GLsizei mGridVertexCount = 0;
-    float mGridExtent = 0.0f;
-    glm::vec3 mGridCenter{0.0f};
-    std::vector<DrawRange> mRanges;
-    std::map<std::string, GLuint> mTextures; ///< by file path; 0 for files that did not load
+    GLuint mEmptyVao = 0; ///< the background's (its triangle comes from the vertex ids)
+    TreeBuffers mBuffers;
+    Grid mGrid;
+    Overlays mOverlays;
 
-    /// One tree mesh on the GPU, kept while some tree draws it.
-    struct GpuMesh {
-        std::shared_ptr<const mesh::Mesh> mesh;
-        GLuint vao = 0, vbo = 0, ibo = 0;
-        std::vector<DrawRange> ranges;
-    };
     void syncTreeBuffers();
-    void releaseTreeBuffers();
-    /// A tree to draw this frame: its index in mTrees, distance and level of detail.
-    struct TreeDraw {
-        std::size_t index = 0;
-        float distance = 0.0f;
-        int level = 0;
-    };
+    /// The trees to draw this frame, nearest first, with their levels (ui/viewport/drawlist.h).
     std::vector<TreeDraw> treesToDraw(const glm::mat4& viewProj) const;
     void bakeImpostors(const std::vector<TreeDraw>& order);
     void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight);
@@ -370,16 +334,9 @@ private:
     std::vector<Bounds> mTreeBounds;
     ViewportTool* mTool = nullptr;
     std::function<std::vector<OverlayLine>()> mOverlay;
-    GLuint mOverlayVao = 0, mOverlayVbo = 0;
-    void drawOverlay(const glm::mat4& viewProj);
-    void drawBand();
-    /// Draws position + colour vertices (7 floats each) over the scene, blended, without the
-    /// depth test: the first \p triangleVertices as triangles, the rest as lines.
-    void drawOnTop(const std::vector<float>& data, const glm::mat4& viewProj, int triangleVertices);
     bool mToolDrag = false;
     QPoint mPressPos;
     bool mMovedSincePress = false;
-    std::map<const mesh::Mesh*, GpuMesh> mGpuTrees;
     bool mTreesDirty = false;
     QSet<std::uint32_t> mHighlighted, mHidden;
     std::size_t mUploads = 0;
@@ -392,10 +349,7 @@ private:
     glm::mat4 mLastViewProj{0.0f};
     bool mTransformsMoved = false;
     QTimer* mSharpTimer = nullptr;
-    GLuint mLowFbo = 0, mLowColor = 0, mLowDepth = 0;
-    QSize mLowSize;
-    bool bindReducedTarget(const QSize& full);
-    void releaseReducedTarget();
+    ReducedTarget mReduced;
     std::size_t mDrawnTrees = 0;
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};

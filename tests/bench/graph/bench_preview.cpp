@@ -6,7 +6,7 @@
 //   - the generator edit with rule tracing, as the editor's preview runs it (the derivation takes
 //     its general path so every branch knows its rule: the click-to-rule feature);
 //   - the same edits evaluated from scratch, for comparison;
-//   - the vertices the viewport uploads for the new mesh (ui/viewport/vertexdata.h), which the
+//   - the vertices the viewport uploads for the new mesh (ui/generation/vertexdata.h), which the
 //     preview's worker makes after the evaluation (the editor's species_preview.py compares that
 //     with making them on the GUI thread).
 // Counters: segments, triangles. docs/performance.md has the figures (targets: ≤ 10 ms for a
@@ -17,7 +17,7 @@
 
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
-#include "ui/viewport/vertexdata.h"
+#include "ui/generation/vertexdata.h"
 
 using namespace sylva::graph;
 

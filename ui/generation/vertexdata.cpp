@@ -1,4 +1,4 @@
-#include "ui/viewport/vertexdata.h"
+#include "ui/generation/vertexdata.h"
 
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/occlusion.h"

@@ -1,0 +1,60 @@
+#include "ui/viewport/drawlist.h"
+
+#include <algorithm>
+
+#include "ui/viewport/viewlod.h"
+
+namespace sylva::ui {
+
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj) {
+    std::array<glm::vec4, 6> planes;
+    const glm::mat4 m = glm::transpose(viewProj);
+    for (int k = 0; k < 3; ++k) {
+        planes[std::size_t(2 * k)] = m[3] + m[k];
+        planes[std::size_t(2 * k + 1)] = m[3] - m[k];
+    }
+    return planes;
+}
+
+bool intersectsFrustum(const std::array<glm::vec4, 6>& planes, const Bounds& b) {
+    if (b.empty()) return false;
+    for (const glm::vec4& p : planes) {
+        // The box's corner farthest along the plane's normal.
+        const glm::vec3 far(p.x >= 0 ? b.hi.x : b.lo.x, p.y >= 0 ? b.hi.y : b.lo.y,
+                            p.z >= 0 ? b.hi.z : b.lo.z);
+        if (glm::dot(glm::vec3(p), far) + p.w < 0.0f) return false;
+    }
+    return true;
+}
+
+std::vector<TreeDraw> buildDrawList(const DrawListView& view, std::size_t count,
+                                    const std::vector<bool>& drawn,
+                                    const std::vector<Bounds>& bounds) {
+    // Frustum culling: a tree whose world box lies outside one of the six planes is not drawn
+    // (a forest seen from inside draws only what is in front of the camera).
+    const std::array<glm::vec4, 6> planes = frustumPlanes(view.viewProj);
+    std::vector<TreeDraw> order;
+    order.reserve(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (i >= drawn.size() || !drawn[i]) continue;
+        TreeDraw d;
+        d.index = i;
+        if (i < bounds.size()) {
+            const Bounds& b = bounds[i];
+            if (!intersectsFrustum(planes, b)) continue;
+            d.distance = glm::length(0.5f * (b.lo + b.hi) - view.eye);
+            // The level of detail follows the tree's height on screen (ui/viewport/viewlod.h).
+            if (view.levels)
+                d.level = ViewLod::levelFor(
+                    ViewLod::equivalentHeights(double(d.distance), double(b.hi.y - b.lo.y),
+                                               double(view.fovY), view.viewportHeightPx));
+        }
+        order.push_back(d);
+    }
+    std::sort(order.begin(), order.end(), [](const TreeDraw& a, const TreeDraw& b) {
+        return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
+    });
+    return order;
+}
+
+} // namespace sylva::ui

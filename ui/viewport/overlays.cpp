@@ -1,0 +1,87 @@
+#include "ui/viewport/overlays.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <QOpenGLShaderProgram>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "ui/viewport/shaderprogram.h"
+
+namespace sylva::ui {
+
+void Overlays::initialize(QOpenGLFunctions_3_3_Core* gl) {
+    mGl = gl;
+    mGl->glGenVertexArrays(1, &mVao);
+    mGl->glGenBuffers(1, &mVbo);
+    mGl->glBindVertexArray(mVao);
+    mGl->glBindBuffer(GL_ARRAY_BUFFER, mVbo);
+    setLineVertexAttributes(*mGl);
+    mGl->glBindVertexArray(0);
+}
+
+void Overlays::release() {
+    if (!mGl) return;
+    mGl->glDeleteVertexArrays(1, &mVao);
+    mGl->glDeleteBuffers(1, &mVbo);
+    mVao = mVbo = 0;
+    mGl = nullptr;
+}
+
+void Overlays::drawBand(QOpenGLShaderProgram& program, const QRect& band, const QSize& widget) {
+    if (band.isEmpty()) return;
+    // In widget pixels, y down; a translucent fill inside a sharp outline.
+    const glm::mat4 pixels = glm::ortho(0.0f, float(std::max(1, widget.width())),
+                                        float(std::max(1, widget.height())), 0.0f);
+    const float x0 = float(band.left()), y0 = float(band.top());
+    const float x1 = float(band.right() + 1), y1 = float(band.bottom() + 1);
+    const glm::vec4 fill(0.25f, 0.55f, 0.95f, 0.18f), edge(0.25f, 0.55f, 0.95f, 0.95f);
+    std::vector<float> data;
+    auto vertex = [&data](float x, float y, const glm::vec4& c) {
+        data.insert(data.end(), {x, y, 0.0f, c.x, c.y, c.z, c.w});
+    };
+    for (const auto& [x, y] : {std::pair{x0, y0}, {x1, y0}, {x1, y1}, {x0, y0}, {x1, y1}, {x0, y1}})
+        vertex(x, y, fill);
+    const std::pair<float, float> corners[] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    for (int k = 0; k < 4; ++k) {
+        vertex(corners[k].first, corners[k].second, edge);
+        vertex(corners[(k + 1) % 4].first, corners[(k + 1) % 4].second, edge);
+    }
+    drawOnTop(program, data, pixels, 6);
+}
+
+void Overlays::drawLines(QOpenGLShaderProgram& program, const std::vector<OverlayLine>& lines,
+                         const glm::mat4& viewProj) {
+    if (lines.empty()) return;
+    std::vector<float> data;
+    data.reserve(lines.size() * 14);
+    for (const OverlayLine& l : lines)
+        for (const glm::vec3& p : {l.a, l.b})
+            data.insert(data.end(), {p.x, p.y, p.z, l.color.x, l.color.y, l.color.z, l.color.w});
+    drawOnTop(program, data, viewProj, 0);
+}
+
+void Overlays::drawOnTop(QOpenGLShaderProgram& program, const std::vector<float>& data,
+                         const glm::mat4& viewProj, int triangleVertices) {
+    // Handles and the band stay visible through the trees and the ground they stand in.
+    mGl->glDisable(GL_DEPTH_TEST);
+    mGl->glEnable(GL_BLEND);
+    mGl->glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    program.bind();
+    setUniform(program, "uViewProj", viewProj);
+    setUniform(program, "uCenter", glm::vec3(0.0f));
+    program.setUniformValue("uExtent", 1e30f); // no fading
+    mGl->glBindVertexArray(mVao);
+    mGl->glBindBuffer(GL_ARRAY_BUFFER, mVbo);
+    mGl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(float)), data.data(),
+                      GL_STREAM_DRAW);
+    const auto vertices = GLsizei(data.size() / 7);
+    if (triangleVertices > 0) mGl->glDrawArrays(GL_TRIANGLES, 0, triangleVertices);
+    mGl->glDrawArrays(GL_LINES, triangleVertices, vertices - triangleVertices);
+    mGl->glBindBuffer(GL_ARRAY_BUFFER, 0);
+    mGl->glDisable(GL_BLEND);
+    mGl->glEnable(GL_DEPTH_TEST);
+}
+
+} // namespace sylva::ui

@@ -1,0 +1,73 @@
+#include "ui/viewport/shaderprogram.h"
+
+#include <QFile>
+#include <QMatrix4x4>
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLShaderProgram>
+
+#include <glm/gtc/type_ptr.hpp>
+
+// The resources of a static library are registered by the objects Qt's CMake links into every
+// executable; initialising them by name as well costs nothing and keeps the shaders found
+// should a program link sylva_ui some other way. Outside any namespace, as Q_INIT_RESOURCE
+// requires.
+static void initShaderResources() {
+    Q_INIT_RESOURCE(sylva_viewport_shaders);
+}
+
+namespace sylva::ui {
+
+QByteArray shaderSource(const QString& name) {
+    static const bool initialised = [] {
+        initShaderResources();
+        return true;
+    }();
+    (void)initialised;
+    QFile file(QStringLiteral(":/sylva/shaders/") + name);
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return file.readAll();
+}
+
+std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
+                                                         const QString& fragment, QString& error,
+                                                         const QByteArray& defines) {
+    const QByteArray vertexSource = shaderSource(vertex);
+    QByteArray fragmentSource = shaderSource(fragment);
+    if (vertexSource.isEmpty() || fragmentSource.isEmpty()) {
+        error =
+            QStringLiteral("shader error: missing shader resource %1 or %2").arg(vertex, fragment);
+        return nullptr;
+    }
+    if (!defines.isEmpty()) {
+        const qsizetype afterVersion = fragmentSource.indexOf('\n') + 1;
+        fragmentSource.insert(afterVersion, defines);
+    }
+    auto program = std::make_unique<QOpenGLShaderProgram>();
+    if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertexSource) ||
+        !program->addShaderFromSourceCode(QOpenGLShader::Fragment, fragmentSource) ||
+        !program->link()) {
+        error = QStringLiteral("shader error: ") + program->log();
+        return nullptr;
+    }
+    return program;
+}
+
+void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::vec3& v) {
+    program.setUniformValue(name, v.x, v.y, v.z);
+}
+
+void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4& m) {
+    // glm is column-major like OpenGL, so the raw array goes through unchanged.
+    program.setUniformValue(program.uniformLocation(name),
+                            QMatrix4x4(glm::value_ptr(m)).transposed());
+}
+
+void setLineVertexAttributes(QOpenGLFunctions_3_3_Core& gl) {
+    gl.glEnableVertexAttribArray(0);
+    gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+    gl.glEnableVertexAttribArray(1);
+    gl.glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                             reinterpret_cast<void*>(3 * sizeof(float)));
+}
+
+} // namespace sylva::ui

@@ -1,0 +1,8 @@
+#version 330 core
+// One triangle that covers the screen; no vertex buffer needed.
+out float vT;
+void main() {
+    vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+    vT = 0.5 * p.y + 0.5;
+    gl_Position = vec4(p, 0.0, 1.0);
+}

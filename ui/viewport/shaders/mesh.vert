@@ -1,0 +1,27 @@
+#version 330 core
+// The viewport's mesh shader (trees, obstacles, terrain); attributes as ViewVertex
+// (ui/generation/vertexdata.h) lays them out.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec3 aColor;
+layout(location = 3) in vec2 aUv;
+layout(location = 4) in float aOcclusion;
+uniform mat4 uViewProj;
+uniform mat4 uModel; // a tree's instance transform: rotation, uniform scale, translation
+uniform vec3 uEye;
+out vec3 vNormal;
+out vec3 vColor;
+out vec2 vUv;
+out float vOcclusion;
+void main() {
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    // Normals turned towards the viewer here, per vertex, so that leaf cards and inconsistent
+    // windings light the same from both sides: a software renderer interpolates three fewer
+    // values per pixel than if the fragment shader did it from the world position.
+    vec3 n = mat3(uModel) * aNormal;
+    vNormal = dot(n, uEye - world.xyz) < 0.0 ? -n : n;
+    vColor = aColor;
+    vUv = aUv;
+    vOcclusion = aOcclusion;
+    gl_Position = uViewProj * world;
+}

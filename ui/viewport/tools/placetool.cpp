@@ -1,0 +1,44 @@
+#include "ui/viewport/tools/placetool.h"
+
+#include <QCoreApplication>
+#include <QMouseEvent>
+
+#include "document/document.h"
+#include "engine/util/random.h"
+
+namespace sylva::ui {
+
+std::string PlaceTool::species() const {
+    const auto& species = mContext.document.project().species;
+    if (species.empty()) return {};
+    for (const doc::ProjectSpecies& s : species)
+        if (s.name == mSpecies) return s.name;
+    return species.front().name;
+}
+
+void PlaceTool::click(QMouseEvent* event) {
+    doc::Document& document = mContext.document;
+    const QPoint pos = event->position().toPoint();
+    const std::string name = species();
+    if (name.empty()) {
+        mContext.message(QCoreApplication::translate(
+            "sylva::ui::ToolController", "Add a species first (Scene ▸ Add species from file…)"));
+        return;
+    }
+    const auto g = mContext.groundAt(pos);
+    if (!g) return;
+    if (mContext.inObstacleFootprint(*g)) {
+        mContext.message(QCoreApplication::translate(
+            "sylva::ui::ToolController", "A tree cannot stand inside an obstacle's footprint"));
+        return;
+    }
+    Rng rng(mixSeed(document.project().seed, document.treeIds().size() + 104729));
+    doc::ProjectInstance t;
+    t.species = name;
+    t.position = *g;
+    t.rotation = 360.0 * rng.uniform();
+    t.seed = rng.next() % 1000000007ull;
+    document.selectTrees({document.addTree(t)});
+}
+
+} // namespace sylva::ui

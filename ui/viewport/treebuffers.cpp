@@ -1,0 +1,230 @@
+#include "ui/viewport/treebuffers.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <filesystem>
+
+#include <QImage>
+
+#include "engine/export/treeexport.h"
+#include "engine/mesh/mesh.h"
+#include "ui/viewport/textureimage.h"
+
+namespace sylva::ui {
+
+namespace {
+
+std::vector<DrawRange> rangesOf(const mesh::Mesh& m) {
+    std::vector<DrawRange> ranges;
+    const auto total = static_cast<std::uint32_t>(m.indices.size());
+    if (m.submeshes.empty()) {
+        ranges.push_back({TreeBuffers::materialColor("bark"), 0, total});
+        return ranges;
+    }
+    for (const mesh::Submesh& s : m.submeshes) {
+        if (s.firstIndex >= total) continue;
+        const std::uint32_t count = std::min(s.indexCount, total - s.firstIndex);
+        DrawRange r{TreeBuffers::materialColor(s.material), s.firstIndex, count - count % 3};
+        // Sylva's bark tubes are closed and wound counter-clockwise seen from outside, so their
+        // back faces are never seen: culling them spares the rasteriser half the triangles
+        // (a third of a software renderer's frame). Ribbons made for one camera are not.
+        r.twoSided = s.material != "bark" || m.cameraRibbons;
+        ranges.push_back(r);
+    }
+    return ranges;
+}
+
+} // namespace
+
+glm::vec3 TreeBuffers::materialColor(const std::string& material) {
+    if (material == "leaf" || material == "leaves" || material == "foliage")
+        return {0.11f, 0.30f, 0.06f};
+    if (material == "bark" || material.empty()) return {0.17f, 0.10f, 0.055f};
+    if (material == "ground") return {0.10f, 0.09f, 0.05f}; // a project's terrain
+    return {0.35f, 0.35f, 0.35f};                           // obstacles and anything else
+}
+
+bool TreeBuffers::indicesInRange(const mesh::Mesh& m) {
+    for (std::uint32_t index : m.indices)
+        if (index >= m.positions.size()) return false;
+    return true;
+}
+
+void TreeBuffers::initialize(QOpenGLFunctions_3_3_Core* gl,
+                             std::function<void(const QString&)> problem) {
+    mGl = gl;
+    mProblem = std::move(problem);
+    mGl->glGenVertexArrays(1, &mSceneVao);
+    mGl->glGenBuffers(1, &mSceneVbo);
+    mGl->glGenBuffers(1, &mSceneIbo);
+    mGl->glBindVertexArray(mSceneVao);
+    mGl->glBindBuffer(GL_ARRAY_BUFFER, mSceneVbo);
+    mGl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mSceneIbo);
+    // Position, normal, attribute colour (zero unless the view colours by an attribute), uv,
+    // occlusion.
+    setMeshAttributes();
+    mGl->glBindVertexArray(0);
+}
+
+void TreeBuffers::release() {
+    if (!mGl) return;
+    releaseTrees();
+    mGl->glDeleteVertexArrays(1, &mSceneVao);
+    mGl->glDeleteBuffers(1, &mSceneVbo);
+    mGl->glDeleteBuffers(1, &mSceneIbo);
+    mSceneVao = mSceneVbo = mSceneIbo = 0;
+    mSceneRanges.clear();
+    for (const auto& [path, id] : mTextures)
+        if (id) mGl->glDeleteTextures(1, &id);
+    mTextures.clear();
+    mGl = nullptr;
+}
+
+bool TreeBuffers::uploadScene(const mesh::Mesh* mesh, const std::vector<glm::vec3>& colors,
+                              const std::vector<ViewVertex>* prepared) {
+    mSceneRanges.clear();
+    if (!mesh || mesh->empty() || mesh->indices.empty()) return true;
+    const mesh::Mesh& m = *mesh;
+    if (!indicesInRange(m)) return false;
+    const bool colored = colors.size() == m.positions.size();
+    // The vertices made beside the mesh on a worker, when they fit and no attribute colours
+    // replace theirs; else made here.
+    std::vector<ViewVertex> made;
+    const bool usePrepared = !colored && prepared && prepared->size() == m.positions.size();
+    if (!usePrepared) made = interleaveVertices(m, colors);
+    const std::vector<ViewVertex>& interleaved = usePrepared ? *prepared : made;
+    mSceneVertexColors = colored;
+    mGl->glBindVertexArray(mSceneVao);
+    mGl->glBindBuffer(GL_ARRAY_BUFFER, mSceneVbo);
+    mGl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(interleaved.size() * sizeof(ViewVertex)),
+                      interleaved.data(), GL_STATIC_DRAW);
+    mGl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mSceneIbo);
+    mGl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(std::uint32_t)),
+                      m.indices.data(), GL_STATIC_DRAW);
+    mGl->glBindVertexArray(0);
+
+    mSceneRanges = rangesOf(m);
+    bindTextures(m, mSceneRanges);
+    return true;
+}
+
+void TreeBuffers::setMeshAttributes() {
+    constexpr GLsizei kStride = sizeof(ViewVertex);
+    auto at = [](std::size_t offset) { return reinterpret_cast<void*>(offset); };
+    for (GLuint a = 0; a < 5; ++a)
+        mGl->glEnableVertexAttribArray(a);
+    mGl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, kStride,
+                               at(offsetof(ViewVertex, position)));
+    mGl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, normal)));
+    mGl->glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, color)));
+    mGl->glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, uv)));
+    mGl->glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, kStride,
+                               at(offsetof(ViewVertex, occlusion)));
+}
+
+void TreeBuffers::bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges) {
+    // rangesOf() keeps the submeshes' order, skipping those that start past the indices.
+    std::size_t r = 0;
+    const auto total = static_cast<std::uint32_t>(m.indices.size());
+    for (const mesh::Submesh& s : m.submeshes) {
+        if (s.firstIndex >= total) continue;
+        if (r >= ranges.size()) break;
+        ranges[r].texture = textureFor(s.material, s.texture);
+        ranges[r].alphaTest = s.material == "leaf" && ranges[r].texture != 0;
+        ++r;
+    }
+    if (m.submeshes.empty() && !ranges.empty()) ranges[0].texture = textureFor("bark", {});
+}
+
+GLuint TreeBuffers::textureFor(const std::string& material, const std::string& file) {
+    std::string path = file;
+    if (path.empty()) {
+        // Sylva's shipped textures for the two materials it makes; nothing for the rest.
+        if (material != "bark" && material != "leaf") return 0;
+        const std::filesystem::path dir = exporter::resourcesDir();
+        if (dir.empty()) return 0;
+        path = (dir / "textures" / (material + ".png")).string();
+    }
+    if (auto it = mTextures.find(path); it != mTextures.end()) return it->second;
+    GLuint id = 0;
+    GLint gpuSide = 0;
+    mGl->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &gpuSide);
+    TextureImage read = readTextureImage(QString::fromStdString(path),
+                                         gpuSide > 0 ? std::min(gpuSide, kMaxViewTextureSide)
+                                                     : kMaxViewTextureSide);
+    if (!read.problem.isEmpty()) {
+        mTextureProblems << read.problem;
+        if (mProblem) mProblem(read.problem);
+    }
+    QImage image = std::move(read.image);
+    if (!image.isNull()) {
+        // OpenGL's first row is v = 0, the image's bottom (a leaf's stem).
+        image = image.convertToFormat(QImage::Format_RGBA8888).mirrored();
+        mGl->glGenTextures(1, &id);
+        mGl->glBindTexture(GL_TEXTURE_2D, id);
+        mGl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
+                          GL_UNSIGNED_BYTE, image.constBits());
+        mGl->glGenerateMipmap(GL_TEXTURE_2D);
+        mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        const GLint wrap = material == "leaf" ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+        mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+        mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+        mGl->glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    mTextures.emplace(path, id); // a file that cannot be read is not tried again
+    return id;
+}
+
+void TreeBuffers::sync(const std::vector<std::shared_ptr<const mesh::Mesh>>& meshes,
+                       std::size_t treeMeshes, std::size_t& uploads, std::size_t& levelUploads) {
+    std::map<const mesh::Mesh*, GpuMesh> kept;
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        const std::shared_ptr<const mesh::Mesh>& treeMesh = meshes[k];
+        if (!treeMesh || treeMesh->empty() || kept.count(treeMesh.get())) continue;
+        auto old = mGpuTrees.find(treeMesh.get());
+        if (old != mGpuTrees.end()) {
+            kept.insert(mGpuTrees.extract(old));
+            continue;
+        }
+        if (!indicesInRange(*treeMesh)) continue;
+        GpuMesh gpu;
+        gpu.mesh = treeMesh;
+        gpu.ranges = rangesOf(*treeMesh);
+        bindTextures(*treeMesh, gpu.ranges);
+        mGl->glGenVertexArrays(1, &gpu.vao);
+        mGl->glGenBuffers(1, &gpu.vbo);
+        mGl->glGenBuffers(1, &gpu.ibo);
+        mGl->glBindVertexArray(gpu.vao);
+        mGl->glBindBuffer(GL_ARRAY_BUFFER, gpu.vbo);
+        const std::vector<ViewVertex> data = interleaveVertices(*treeMesh, {});
+        mGl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(ViewVertex)),
+                          data.data(), GL_STATIC_DRAW);
+        mGl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.ibo);
+        mGl->glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                          GLsizeiptr(treeMesh->indices.size() * sizeof(std::uint32_t)),
+                          treeMesh->indices.data(), GL_STATIC_DRAW);
+        setMeshAttributes();
+        mGl->glBindVertexArray(0);
+        ++(k < treeMeshes ? uploads : levelUploads);
+        kept.emplace(treeMesh.get(), std::move(gpu));
+    }
+    releaseTrees(); // those no tree draws any more
+    mGpuTrees = std::move(kept);
+}
+
+const TreeBuffers::GpuMesh* TreeBuffers::find(const mesh::Mesh* m) const {
+    auto it = mGpuTrees.find(m);
+    return it == mGpuTrees.end() ? nullptr : &it->second;
+}
+
+void TreeBuffers::releaseTrees() {
+    for (auto& [key, gpu] : mGpuTrees) {
+        mGl->glDeleteVertexArrays(1, &gpu.vao);
+        mGl->glDeleteBuffers(1, &gpu.vbo);
+        mGl->glDeleteBuffers(1, &gpu.ibo);
+    }
+    mGpuTrees.clear();
+}
+
+} // namespace sylva::ui
