@@ -20,7 +20,7 @@ bin=$out/fuzz_obstacle_valgrind
 sources=(tests/fuzz/obstacle_fuzzer.cpp tests/fuzz/valgrind/counting_wrapper.cpp
   core/engine/environment/obstaclemesh.cpp core/engine/environment/meshfilecheck.cpp
   core/engine/environment/fbxcheck.cpp core/engine/environment/scenegraphwalk.cpp
-  core/engine/graph/value.cpp core/engine/util/error.cpp core/engine/util/atomicfile.cpp)
+  core/engine/util/value.cpp core/engine/util/error.cpp core/engine/util/atomicfile.cpp)
 if [[ ! -x $bin ]] || [[ -n $(find "${sources[@]}" core/engine/environment core/engine/util -newer "$bin" 2>/dev/null | head -n 1) ]]; then
   echo "fuzz-valgrind.sh: building $bin"
   nice -n 19 clang++ -std=c++20 -O1 -gdwarf-4 -fsanitize=fuzzer -DGLM_ENABLE_EXPERIMENTAL \

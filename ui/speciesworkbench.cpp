@@ -116,7 +116,7 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
     connect(mGrammar, &GrammarEditor::stepChanged, this,
             [this](const QString&, const QString& node, int generations) {
                 mPreview->setOverride(node, "generations",
-                                      generations < 0 ? graph::Value() : graph::Value(generations));
+                                      generations < 0 ? sylva::Value() : sylva::Value(generations));
             });
     connect(mPreview, &SpeciesPreview::finished, this, &SpeciesWorkbench::onPreviewFinished);
     connect(mPreviewView, &Viewport::frameSwapped, mPreview, &SpeciesPreview::markShown);

@@ -7,8 +7,8 @@
 #include "document/project.h"
 #include "document/scenebuild.h"
 #include "engine/export/treeexport.h"
-#include "engine/forest/placement.h"
-#include "engine/scene/forestbuild.h"
+#include "engine/forest/forestbuild.h"
+#include "engine/placement/placement.h"
 #include "engine/util/error.h"
 
 #include <QFile>
@@ -50,10 +50,10 @@ int runForest(const std::vector<std::string>& argv) {
     if (!output) throw UsageError("forest needs an output file: -o out.obj");
     if (auto threads = args.integer("--threads", 1, 1024))
         omp_set_num_threads(static_cast<int>(*threads));
-    scene::ForestOptions options;
+    forest::ForestOptions options;
     if (auto tile = args.value("--tile")) {
         try {
-            std::tie(options.tile, options.tileCount) = forest::parseTileSpec(*tile);
+            std::tie(options.tile, options.tileCount) = placement::parseTileSpec(*tile);
         } catch (const InvalidInput& e) {
             throw UsageError(e.what());
         }
@@ -61,11 +61,11 @@ int runForest(const std::vector<std::string>& argv) {
     options.useLod = !args.flag("--no-lod");
     options.adapt = !args.flag("--no-adapt");
     options.neighbours = !args.flag("--no-neighbours");
-    if (args.flag("--naive-placement")) options.placement = forest::PlacementMethod::Naive;
+    if (args.flag("--naive-placement")) options.placement = placement::PlacementMethod::Naive;
 
     const auto start = Clock::now();
     const doc::Project project = loadProjectOrScene(args.positional()[0]);
-    scene::ForestScene forestScene = doc::makeForestScene(project);
+    forest::ForestScene forestScene = doc::makeForestScene(project);
     if (auto camera = args.value("--camera")) forestScene.camera = parseVec3(*camera, "--camera");
     const double loadMs = msSince(start);
 
@@ -75,15 +75,15 @@ int runForest(const std::vector<std::string>& argv) {
     TreeExporter exporter(*output, {args.flag("--fsync"), !args.flag("--full-precision")});
     exporter.setInstanceTables(args.flag("--instance-tables"));
     double writeMs = 0;
-    scene::ForestStats stats;
+    forest::ForestStats stats;
     try {
-        stats = scene::buildForest(
+        stats = forest::buildForest(
             forestScene, options,
-            [&](const std::vector<scene::ForestTree>& batch) {
+            [&](const std::vector<forest::ForestTree>& batch) {
                 const auto t = Clock::now();
                 std::vector<ExportTree> trees;
                 trees.reserve(batch.size());
-                for (const scene::ForestTree& tree : batch)
+                for (const forest::ForestTree& tree : batch)
                     trees.push_back({tree.name, tree.mesh, tree.instance.position,
                                      tree.instance.rotation,
                                      tree.instance.scale * tree.instance.growth});
@@ -101,7 +101,7 @@ int runForest(const std::vector<std::string>& argv) {
         return kInterrupted;
     }
     progress.finish();
-    for (const forest::Shortfall& s : stats.shortfalls)
+    for (const placement::Shortfall& s : stats.shortfalls)
         std::fprintf(
             stderr, "sylva-cli: warning: domain %zu: placed %zu of %zu '%s' (no room left)\n",
             s.domain + 1, s.placed, s.requested, forestScene.species[s.species].name.c_str());
@@ -122,7 +122,7 @@ int runForest(const std::vector<std::string>& argv) {
         appendJsonNumber(json, "colliding_trees", static_cast<double>(stats.collidingTrees));
         appendJsonNumber(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
         std::size_t missing = 0;
-        for (const forest::Shortfall& s : stats.shortfalls)
+        for (const placement::Shortfall& s : stats.shortfalls)
             missing += s.requested - s.placed;
         appendJsonNumber(json, "shortfall", static_cast<double>(missing));
         json += "\"metrics\":" + metricsJson(stats.metrics) + ",";

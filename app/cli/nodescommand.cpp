@@ -90,8 +90,8 @@ void printText(const NodeType& t) {
     }
 }
 
-graph::Value toJson(const NodeType& t) {
-    using graph::Value;
+sylva::Value toJson(const NodeType& t) {
+    using sylva::Value;
     Value::Array params;
     for (const ParamSpec& p : t.params) {
         Value::Object o{{"name", p.name},
@@ -146,10 +146,10 @@ int runNodes(const std::vector<std::string>& argv) {
         names = {args.positional()[0]};
     }
     if (args.flag("--json")) {
-        graph::Value::Array all;
+        sylva::Value::Array all;
         for (const std::string& n : names)
             all.push_back(toJson(*registry.find(n)));
-        std::printf("%s\n", graph::Value(std::move(all)).toPrettyJson().c_str());
+        std::printf("%s\n", sylva::Value(std::move(all)).toPrettyJson().c_str());
         return kOk;
     }
     for (const std::string& n : names) {

@@ -7,8 +7,8 @@
 #include "document/project.h"
 #include "document/scenebuild.h"
 #include "document/speciesfile.h"
+#include "engine/forest/forestbuild.h"
 #include "engine/forest/metrics.h"
-#include "engine/scene/forestbuild.h"
 #include "engine/util/error.h"
 
 #include <QString>
@@ -44,13 +44,13 @@ int runStats(const std::vector<std::string>& argv) {
     std::string perTree; // JSON objects, one per tree of a project
     if (isProject) {
         const doc::Project project = loadProjectOrScene(path);
-        scene::ForestOptions options;
+        forest::ForestOptions options;
         options.buildMeshes = false;
         TerminalProgress progress;
-        const scene::ForestStats stats = scene::buildForest(
+        const forest::ForestStats stats = forest::buildForest(
             doc::makeForestScene(project), options,
-            [&](const std::vector<scene::ForestTree>& batch) {
-                for (const scene::ForestTree& t : batch) {
+            [&](const std::vector<forest::ForestTree>& batch) {
+                for (const forest::ForestTree& t : batch) {
                     forest::SceneMetrics one;
                     one.add(t.metrics);
                     std::string obj = metricsJson(one);

@@ -29,7 +29,7 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
         dot + 1 == eq)
         throw UsageError("--set expects node.param=value, got '" + assignment + "'");
     evaluator.setParam(assignment.substr(0, dot), assignment.substr(dot + 1, eq - dot - 1),
-                       graph::Value::parseLoose(assignment.substr(eq + 1)));
+                       sylva::Value::parseLoose(assignment.substr(eq + 1)));
 }
 
 } // namespace
@@ -52,7 +52,7 @@ int runTree(const std::vector<std::string>& argv) {
         bool any = false;
         for (const graph::NodeDesc& node : evaluator.graph().nodes)
             if (node.type == "lsystem") {
-                evaluator.setParam(node.id, "generations", graph::Value(static_cast<double>(*n)));
+                evaluator.setParam(node.id, "generations", sylva::Value(static_cast<double>(*n)));
                 any = true;
             }
         if (!any)

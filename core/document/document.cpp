@@ -20,7 +20,7 @@
 
 namespace sylva::doc {
 
-using graph::Value;
+using sylva::Value;
 
 Document::Document(QObject* parent) : QObject(parent) {
     connect(&mUndo, &QUndoStack::cleanChanged, this, &Document::titleChanged);

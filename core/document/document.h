@@ -109,16 +109,16 @@ public:
     void removeSpecies(const std::string& name);
     /// The species' graph as JSON ({"nodes": [...], "output": ...}), read from its file when it
     /// is not inline. \throw InvalidInput / IoError.
-    graph::Value speciesGraph(const std::string& name) const;
+    sylva::Value speciesGraph(const std::string& name) const;
     /// The species as the engine evaluates it (relative files resolve from the project).
     graph::SpeciesGraph engineSpecies(const std::string& name) const;
     /// A parameter "node.param" of a species (null when unset).
-    graph::Value param(const std::string& species, const std::string& path) const;
+    sylva::Value param(const std::string& species, const std::string& path) const;
     /// Sets "node.param". A species read from a file becomes inline in the project on its first
     /// edit (the file itself is never written: other projects may use it); its relative file
     /// parameters are rewritten for the project's folder. \throw InvalidInput for an unknown
     /// species, node or parameter, or a graph that no longer validates.
-    void setParam(const std::string& species, const std::string& path, const graph::Value& value,
+    void setParam(const std::string& species, const std::string& path, const sylva::Value& value,
                   bool commit = true);
     /// Sets an lsystem node's grammar text (inline; replaces a grammar_file).
     void setGrammar(const std::string& species, const std::string& node, const std::string& text,
@@ -139,7 +139,7 @@ public:
     /// at \p position in the node editor. Returns its id. \throw InvalidInput for an unknown
     /// type, a taken id or bad parameters.
     std::string addNode(const std::string& species, const std::string& type,
-                        const graph::Value& params = graph::Value::Object{},
+                        const sylva::Value& params = sylva::Value::Object{},
                         const std::string& id = {}, glm::vec2 position = glm::vec2(0.0f));
     /// Removes a node and the edges from it. \throw InvalidInput for the output node, or when
     /// a node the tree needs would lose its only input.
@@ -169,7 +169,7 @@ public:
     /// nothing. The copied layout is kept with its top-left corner at \p at. Returns the new
     /// ids in the order of \p nodes. \throw InvalidInput as addNode and connectNodes.
     std::vector<std::string> pasteNodes(const std::string& species,
-                                        const graph::Value::Array& nodes, glm::dvec2 at);
+                                        const sylva::Value::Array& nodes, glm::dvec2 at);
     /// A node's position in the node editor; nullopt when it has none yet (laid out by depth).
     std::optional<glm::vec2> nodePosition(const std::string& species, const std::string& id) const;
 
@@ -228,7 +228,7 @@ private:
     graph::SpeciesGraph toEngine(const ProjectSpecies& species) const;
     /// Inlines the species, applies \p edit to its graph JSON, validates and pushes one command.
     void editGraph(const std::string& species, const QString& node, const QString& label,
-                   bool commit, const std::function<void(graph::Value& graph)>& edit);
+                   bool commit, const std::function<void(sylva::Value& graph)>& edit);
     /// The same with the whole inlined species (an edit of several steps validates each).
     void editSpecies(const std::string& species, const QString& node, const QString& label,
                      bool commit, const std::function<void(ProjectSpecies& species)>& edit);

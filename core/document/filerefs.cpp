@@ -10,7 +10,7 @@
 
 namespace sylva::doc {
 
-using graph::Value;
+using sylva::Value;
 
 std::string relativeTo(const QString& baseDir, const QString& absolute) {
     if (baseDir.isEmpty()) return absolute.toStdString();

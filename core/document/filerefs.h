@@ -8,7 +8,7 @@
 #include "document/project.h"
 #include "engine/graph/fileparams.h"
 #include "engine/graph/graph.h"
-#include "engine/graph/value.h"
+#include "engine/util/value.h"
 
 namespace sylva::doc {
 
@@ -18,7 +18,7 @@ std::string relativeTo(const QString& baseDir, const QString& absolute);
 
 /// Rewrites the relative file parameters of an inline graph ({"nodes": [...]}) read against
 /// \p fromDir so that they resolve the same against \p toDir.
-void rebaseGraphFiles(graph::Value& graph, const QString& fromDir, const QString& toDir);
+void rebaseGraphFiles(sylva::Value& graph, const QString& fromDir, const QString& toDir);
 
 /// The project with every relative path (species files, inline graphs' file parameters,
 /// obstacle meshes, terrains) rewritten for \p newBaseDir, and baseDir set to it. Unchanged when

@@ -6,7 +6,7 @@
 
 namespace sylva::doc {
 
-UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& formatName, int current,
+UpgradeReport upgradeFormat(sylva::Value::Object& root, const std::string& formatName, int current,
                             const std::vector<UpgradeStep>& steps, const std::string& fileName,
                             bool refuseNewer) {
     const std::string where = fileName.empty() ? std::string() : fileName + ": ";
@@ -41,7 +41,7 @@ UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& forma
         step->apply(root);
         report.applied.push_back(step->description);
     }
-    root["format_version"] = graph::Value(current);
+    root["format_version"] = sylva::Value(current);
     return report;
 }
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/graph/value.h"
+#include "engine/util/value.h"
 
 namespace sylva::doc {
 
@@ -14,7 +14,7 @@ namespace sylva::doc {
 struct UpgradeStep {
     int from = 0;
     std::string description;
-    std::function<void(graph::Value::Object&)> apply;
+    std::function<void(sylva::Value::Object&)> apply;
 };
 
 /// Result of running a chain.
@@ -28,7 +28,7 @@ struct UpgradeReport {
 /// Throws InvalidInput (naming \p fileName) when the format name is wrong or the version is
 /// missing/invalid. A file newer than \p current is refused when \p refuseNewer, otherwise it
 /// loads with a warning (unknown keys are ignored).
-UpgradeReport upgradeFormat(graph::Value::Object& root, const std::string& formatName, int current,
+UpgradeReport upgradeFormat(sylva::Value::Object& root, const std::string& formatName, int current,
                             const std::vector<UpgradeStep>& steps, const std::string& fileName,
                             bool refuseNewer);
 

@@ -15,8 +15,8 @@ namespace sylva::doc {
 
 namespace {
 
-using graph::Value;
 using graph::vec3Of;
+using sylva::Value;
 
 const std::vector<std::string> kKnownKeys = {
     "format",  "format_version", "app_version", "seed",   "species",

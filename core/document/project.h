@@ -12,7 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "document/formatupgrade.h"
-#include "engine/graph/value.h"
+#include "engine/util/value.h"
 
 namespace sylva::doc {
 
@@ -23,9 +23,9 @@ inline constexpr int kProjectFormatVersion = 1;
 struct ProjectSpecies {
     std::string name;
     std::string file;                  ///< relative to the project file; empty when inline
-    std::optional<graph::Value> graph; ///< inline {"nodes": [...], "output": ...}
+    std::optional<sylva::Value> graph; ///< inline {"nodes": [...], "output": ...}
     /// Inline species only: the species file's "traits" (wood density, carbon, crown radius).
-    std::optional<graph::Value> traits;
+    std::optional<sylva::Value> traits;
     bool operator==(const ProjectSpecies&) const = default;
 };
 
@@ -69,7 +69,7 @@ struct Project {
     glm::vec3 cameraPosition{0.0f, 20.0f, 80.0f}, cameraTarget{0.0f};
     glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
     /// Keys this version does not know, kept so that saving never drops another tool's data.
-    graph::Value::Object extra;
+    sylva::Value::Object extra;
 
     QString baseDir; ///< folder of the project file (not saved)
     QString resolve(const std::string& relative) const;

@@ -10,15 +10,15 @@
 
 namespace sylva::doc {
 
-scene::ForestScene makeForestScene(const Project& project) {
-    scene::ForestScene s;
+forest::ForestScene makeForestScene(const Project& project) {
+    forest::ForestScene s;
     s.seed = project.seed;
     s.camera = project.cameraPosition;
     s.lightDirection = project.lightDirection;
 
     std::map<std::string, std::uint32_t> speciesIndex;
     for (const ProjectSpecies& ps : project.species) {
-        scene::SceneSpecies species;
+        forest::SceneSpecies species;
         species.name = ps.name;
         if (ps.graph) {
             species.graph = speciesFromGraph(ps.name, *ps.graph, ps.traits, project.baseDir);
@@ -41,9 +41,9 @@ scene::ForestScene makeForestScene(const Project& project) {
     if (!obstacles.empty()) s.obstacles = env::loadObstacleScene(obstacles);
 
     for (const PlacementDomain& d : project.domains) {
-        forest::Domain domain;
+        placement::Domain domain;
         if (d.shape == "polygon") {
-            domain.shape = forest::DomainShape::Polygon;
+            domain.shape = placement::DomainShape::Polygon;
             domain.polygon = d.polygon;
         } else if (d.shape == "terrain") {
             // Trees go where a ray down meets the terrain, within the terrain's footprint.
@@ -63,7 +63,7 @@ scene::ForestScene makeForestScene(const Project& project) {
 
     std::uint32_t id = 0;
     for (const ProjectInstance& pi : project.instances) {
-        forest::Instance in;
+        placement::Instance in;
         in.id = id++;
         in.species = speciesIndex.at(pi.species);
         in.position = pi.position;

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "document/project.h"
-#include "engine/scene/forestbuild.h"
+#include "engine/forest/forestbuild.h"
 
 namespace sylva::doc {
 
@@ -9,6 +9,6 @@ namespace sylva::doc {
 /// inline graph), every obstacle mesh (with its transform) into one Embree scene, and the
 /// terrain of a terrain domain as the ground. Paths resolve against the project's folder.
 /// \throw InvalidInput / IoError naming the file that is missing, unreadable or empty.
-scene::ForestScene makeForestScene(const Project& project);
+forest::ForestScene makeForestScene(const Project& project);
 
 } // namespace sylva::doc

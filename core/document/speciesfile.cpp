@@ -11,7 +11,7 @@ namespace sylva::doc {
 
 namespace {
 
-using graph::Value;
+using sylva::Value;
 
 /// Species format upgrades (none yet: version 1 is the first). Add steps here, never checks in
 /// the parser below.
@@ -42,7 +42,7 @@ graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName
                             baseDir);
 }
 
-graph::SpeciesGraph speciesFromValue(graph::Value root, const QString& fileName,
+graph::SpeciesGraph speciesFromValue(sylva::Value root, const QString& fileName,
                                      const QString& baseDir) {
     const std::string file = fileName.toStdString();
     const std::string where = file.empty() ? std::string() : file + ": ";

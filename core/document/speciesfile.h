@@ -22,7 +22,7 @@ graph::SpeciesGraph parseSpecies(const QByteArray& json, const QString& fileName
                                  const QString& baseDir);
 
 /// The same from JSON already parsed (e.g. a graph inlined in a project file).
-graph::SpeciesGraph speciesFromValue(graph::Value root, const QString& fileName,
+graph::SpeciesGraph speciesFromValue(sylva::Value root, const QString& fileName,
                                      const QString& baseDir);
 
 /// Serialises a graph back to species JSON (stable key order).
@@ -31,16 +31,16 @@ QByteArray serializeSpecies(const graph::SpeciesGraph& graph);
 /// The species file's envelope around a graph as JSON: "format", "format_version", "name",
 /// "graph" and, when given, "traits". The one builder of it: species files, the document's
 /// inline species, "Save species as" and projects all wrap a graph with it.
-graph::Value speciesEnvelope(const std::string& name, graph::Value graph,
-                             const std::optional<graph::Value>& traits);
+sylva::Value speciesEnvelope(const std::string& name, sylva::Value graph,
+                             const std::optional<sylva::Value>& traits);
 
 /// An inline species (a project's graph JSON and traits) as the engine reads it; relative files
 /// resolve from \p baseDir. \throw InvalidInput as parseSpecies.
-graph::SpeciesGraph speciesFromGraph(const std::string& name, const graph::Value& graph,
-                                     const std::optional<graph::Value>& traits,
+graph::SpeciesGraph speciesFromGraph(const std::string& name, const sylva::Value& graph,
+                                     const std::optional<sylva::Value>& traits,
                                      const QString& baseDir);
 
 /// Writes species JSON (an envelope) to \p path atomically, pretty-printed. \throw IoError.
-void writeSpeciesFile(const QString& path, const graph::Value& root);
+void writeSpeciesFile(const QString& path, const sylva::Value& root);
 
 } // namespace sylva::doc

@@ -9,7 +9,7 @@
 
 namespace sylva::doc {
 
-using graph::Value;
+using sylva::Value;
 
 namespace {
 

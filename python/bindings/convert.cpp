@@ -14,33 +14,33 @@ namespace sylva::python {
 
 namespace fs = std::filesystem;
 
-graph::Value toValue(const py::handle& o) {
+sylva::Value toValue(const py::handle& o) {
     if (o.is_none()) return {};
-    if (py::isinstance<py::bool_>(o)) return graph::Value(o.cast<bool>());
+    if (py::isinstance<py::bool_>(o)) return sylva::Value(o.cast<bool>());
     if (py::isinstance<py::int_>(o) || py::isinstance<py::float_>(o))
-        return graph::Value(o.cast<double>());
-    if (py::isinstance<py::str>(o)) return graph::Value(o.cast<std::string>());
+        return sylva::Value(o.cast<double>());
+    if (py::isinstance<py::str>(o)) return sylva::Value(o.cast<std::string>());
     if (py::isinstance<py::dict>(o)) {
-        graph::Value::Object obj;
+        sylva::Value::Object obj;
         for (const auto& [k, v] : o.cast<py::dict>())
             obj[py::str(k).cast<std::string>()] = toValue(v);
-        return graph::Value(std::move(obj));
+        return sylva::Value(std::move(obj));
     }
     // numpy scalars and arrays: through their Python equivalents.
     if (py::hasattr(o, "tolist") && !py::isinstance<py::sequence>(o))
         return toValue(o.attr("tolist")());
     if (py::isinstance<py::sequence>(o) || py::isinstance<py::array>(o)) {
-        graph::Value::Array arr;
+        sylva::Value::Array arr;
         for (const py::handle& v : o)
             arr.push_back(toValue(v));
-        return graph::Value(std::move(arr));
+        return sylva::Value(std::move(arr));
     }
     throw InvalidInput("cannot use a Python " +
                        py::str(py::type::of(o).attr("__name__")).cast<std::string>() +
                        " as a parameter value");
 }
 
-py::object fromValue(const graph::Value& v) {
+py::object fromValue(const sylva::Value& v) {
     if (v.isNull()) return py::none();
     if (v.isBool()) return py::bool_(v.toBool());
     if (v.isNumber()) {
@@ -52,7 +52,7 @@ py::object fromValue(const graph::Value& v) {
     if (v.isString()) return py::str(v.toString());
     if (v.isArray()) {
         py::list l;
-        for (const graph::Value& x : v.toArray())
+        for (const sylva::Value& x : v.toArray())
             l.append(fromValue(x));
         return l;
     }

@@ -13,8 +13,8 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/graph/value.h"
 #include "engine/util/progress.h"
+#include "engine/util/value.h"
 
 namespace sylva::python {
 
@@ -22,9 +22,9 @@ namespace py = pybind11;
 
 /// A Python value (None, bool, int, float, str, dict, list/tuple) as a parameter value.
 /// \throw InvalidInput for anything else.
-graph::Value toValue(const py::handle& o);
+sylva::Value toValue(const py::handle& o);
 /// The reverse; whole numbers become ints.
-py::object fromValue(const graph::Value& v);
+py::object fromValue(const sylva::Value& v);
 
 /// Three numbers (a tuple, list or numpy array) → vec3. \throw InvalidInput naming \p what.
 glm::vec3 toVec3(const py::handle& o, const char* what);

@@ -19,9 +19,9 @@
 #include "engine/environment/obstaclemesh.h"
 #include "engine/environment/obstaclescene.h"
 #include "engine/export/treeexport.h"
-#include "engine/forest/placement.h"
+#include "engine/forest/forestbuild.h"
 #include "engine/graph/graph.h"
-#include "engine/scene/forestbuild.h"
+#include "engine/placement/placement.h"
 #include "engine/util/error.h"
 
 namespace sylva::python {
@@ -36,20 +36,20 @@ double msSince(Clock::time_point t) {
 }
 
 struct ForestTreeRef {
-    std::shared_ptr<const std::vector<scene::ForestTree>> all;
+    std::shared_ptr<const std::vector<forest::ForestTree>> all;
     std::size_t index = 0;
     std::string species;
-    const scene::ForestTree& tree() const { return (*all)[index]; }
+    const forest::ForestTree& tree() const { return (*all)[index]; }
 };
 
 struct Forest {
-    std::shared_ptr<const std::vector<scene::ForestTree>> trees;
+    std::shared_ptr<const std::vector<forest::ForestTree>> trees;
     std::vector<std::string> speciesNames;
     py::dict stats;
 };
 
 struct BuildOptions {
-    scene::ForestOptions options;
+    forest::ForestOptions options;
     std::optional<glm::vec3> camera;
 };
 
@@ -63,11 +63,11 @@ BuildOptions buildOptions(const py::object& camera, bool lod, bool adapt, bool n
     if (!tile.is_none()) {
         if (py::isinstance<py::str>(tile)) {
             std::tie(b.options.tile, b.options.tileCount) =
-                forest::parseTileSpec(tile.cast<std::string>());
+                placement::parseTileSpec(tile.cast<std::string>());
         } else {
             const auto t = tile.cast<std::pair<int, int>>();
             std::tie(b.options.tile, b.options.tileCount) =
-                forest::parseTileSpec(std::to_string(t.first) + "/" + std::to_string(t.second));
+                placement::parseTileSpec(std::to_string(t.first) + "/" + std::to_string(t.second));
         }
     }
     if (threads) {
@@ -79,8 +79,8 @@ BuildOptions buildOptions(const py::object& camera, bool lod, bool adapt, bool n
     return b;
 }
 
-py::dict statsDict(const scene::ForestStats& stats, const scene::ForestScene& s,
-                   const scene::ForestOptions& o) {
+py::dict statsDict(const forest::ForestStats& stats, const forest::ForestScene& s,
+                   const forest::ForestOptions& o) {
     py::dict d;
     d["trees"] = stats.trees;
     d["trees_in_scene"] = stats.treesInScene;
@@ -93,7 +93,7 @@ py::dict statsDict(const scene::ForestStats& stats, const scene::ForestScene& s,
     d["pruned_nodes"] = stats.prunedNodes;
     std::size_t missing = 0;
     py::list shortfalls;
-    for (const forest::Shortfall& sf : stats.shortfalls) {
+    for (const placement::Shortfall& sf : stats.shortfalls) {
         missing += sf.requested - sf.placed;
         py::dict x;
         x["domain"] = sf.domain;
@@ -122,8 +122,8 @@ py::dict statsDict(const scene::ForestStats& stats, const scene::ForestScene& s,
     return d;
 }
 
-void warnShortfalls(const scene::ForestStats& stats, const scene::ForestScene& s) {
-    for (const forest::Shortfall& sf : stats.shortfalls)
+void warnShortfalls(const forest::ForestStats& stats, const forest::ForestScene& s) {
+    for (const placement::Shortfall& sf : stats.shortfalls)
         PyErr_WarnEx(PyExc_UserWarning,
                      ("domain " + std::to_string(sf.domain + 1) + ": placed " +
                       std::to_string(sf.placed) + " of " + std::to_string(sf.requested) + " '" +
@@ -132,19 +132,19 @@ void warnShortfalls(const scene::ForestStats& stats, const scene::ForestScene& s
                      1);
 }
 
-exporter::ExportTree exportTree(const scene::ForestTree& t) {
+exporter::ExportTree exportTree(const forest::ForestTree& t) {
     return {t.name, t.mesh, t.instance.position, t.instance.rotation,
             t.instance.scale * t.instance.growth};
 }
 
-std::vector<std::string> writeForest(const std::vector<scene::ForestTree>& trees,
+std::vector<std::string> writeForest(const std::vector<forest::ForestTree>& trees,
                                      const std::string& path, bool fullPrecision, bool fsync,
                                      bool instanceTables) {
     exporter::TreeExporter exporter(path, {fsync, !fullPrecision});
     exporter.setInstanceTables(instanceTables);
     std::vector<exporter::ExportTree> batch;
     batch.reserve(trees.size());
-    for (const scene::ForestTree& t : trees)
+    for (const forest::ForestTree& t : trees)
         batch.push_back(exportTree(t));
     exporter.add(batch);
     std::vector<std::string> written;
@@ -167,12 +167,12 @@ void addSpecies(Project& p, const std::string& name, const py::object& source) {
     } else {
         // A Species or a dict: inline, file parameters rewritten for the project's folder.
         const graph::SpeciesGraph g = speciesGraphFrom(source);
-        graph::Value root = graph::Value::parseJson(doc::serializeSpecies(g).toStdString());
-        graph::Value inlineGraph = *root.find("graph");
+        sylva::Value root = sylva::Value::parseJson(doc::serializeSpecies(g).toStdString());
+        sylva::Value inlineGraph = *root.find("graph");
         doc::rebaseGraphFiles(inlineGraph, QString::fromStdString(g.baseDir.string()),
                               p.project.baseDir);
         ps.graph = std::move(inlineGraph);
-        if (const graph::Value* traits = root.find("traits")) ps.traits = *traits;
+        if (const sylva::Value* traits = root.find("traits")) ps.traits = *traits;
     }
     p.project.species.push_back(std::move(ps));
 }
@@ -465,17 +465,17 @@ void bindForest(py::module_& m) {
                bool adapt, bool neighbours, const py::object& tile, std::optional<int> threads) {
                 const BuildOptions b = buildOptions(camera, lod, adapt, neighbours, tile, threads);
                 PyProgress prog(progress);
-                auto trees = std::make_shared<std::vector<scene::ForestTree>>();
-                scene::ForestScene s;
-                scene::ForestStats stats;
+                auto trees = std::make_shared<std::vector<forest::ForestTree>>();
+                forest::ForestScene s;
+                forest::ForestStats stats;
                 withoutGil(prog, [&] {
                     const auto t0 = Clock::now();
                     s = p.makeScene();
                     if (b.camera) s.camera = *b.camera;
                     const double loadMs = msSince(t0);
-                    stats = scene::buildForest(
+                    stats = forest::buildForest(
                         s, b.options,
-                        [&](const std::vector<scene::ForestTree>& batch) {
+                        [&](const std::vector<forest::ForestTree>& batch) {
                             trees->insert(trees->end(), batch.begin(), batch.end());
                         },
                         prog);
@@ -484,7 +484,7 @@ void bindForest(py::module_& m) {
                 warnShortfalls(stats, s);
                 Forest f;
                 f.trees = trees;
-                for (const scene::SceneSpecies& sp : s.species)
+                for (const forest::SceneSpecies& sp : s.species)
                     f.speciesNames.push_back(sp.name);
                 f.stats = statsDict(stats, s, b.options);
                 return f;
@@ -503,8 +503,8 @@ void bindForest(py::module_& m) {
                 const BuildOptions b = buildOptions(camera, lod, adapt, neighbours, tile, threads);
                 const std::string out = toPath(path);
                 PyProgress prog(progress);
-                scene::ForestScene s;
-                scene::ForestStats stats;
+                forest::ForestScene s;
+                forest::ForestStats stats;
                 withoutGil(prog, [&] {
                     const auto t0 = Clock::now();
                     s = p.makeScene();
@@ -513,12 +513,12 @@ void bindForest(py::module_& m) {
                     exporter::TreeExporter exporter(out, {fsync, !fullPrecision});
                     exporter.setInstanceTables(instanceTables);
                     double writeMs = 0;
-                    stats = scene::buildForest(
+                    stats = forest::buildForest(
                         s, b.options,
-                        [&](const std::vector<scene::ForestTree>& batch) {
+                        [&](const std::vector<forest::ForestTree>& batch) {
                             const auto t = Clock::now();
                             std::vector<exporter::ExportTree> trees;
-                            for (const scene::ForestTree& tree : batch)
+                            for (const forest::ForestTree& tree : batch)
                                 trees.push_back(exportTree(tree));
                             exporter.add(trees);
                             writeMs += msSince(t);

@@ -4,14 +4,14 @@
 
 #include "document/scenebuild.h"
 #include "engine/environment/obstaclescene.h"
-#include "engine/forest/placement.h"
+#include "engine/placement/placement.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
 namespace sylva::python {
 
-scene::ForestScene Project::makeScene() const {
-    scene::ForestScene s = doc::makeForestScene(project);
+forest::ForestScene Project::makeScene() const {
+    forest::ForestScene s = doc::makeForestScene(project);
     if (!arrayObstacles.empty()) {
         std::vector<env::ObstacleMesh> all;
         if (s.obstacles) all = s.obstacles->meshes();
@@ -24,7 +24,7 @@ scene::ForestScene Project::makeScene() const {
                                "ground from arrays as well");
         s.ground =
             std::make_shared<const env::ObstacleScene>(std::vector<env::ObstacleMesh>{*ground});
-        forest::Domain d;
+        placement::Domain d;
         d.min = {ground->lo.x, ground->lo.z};
         d.max = {ground->hi.x, ground->hi.z};
         for (const auto& [name, count] : groundCounts)

@@ -14,7 +14,7 @@
 
 #include "document/project.h"
 #include "engine/environment/obstaclemesh.h"
-#include "engine/scene/forestbuild.h"
+#include "engine/forest/forestbuild.h"
 
 namespace sylva::python {
 
@@ -28,7 +28,7 @@ struct Project {
 
     /// The scene `sylva-cli forest` would build, with the array obstacles and ground added.
     /// \throw InvalidInput when a terrain domain and an array ground are both given.
-    scene::ForestScene makeScene() const;
+    forest::ForestScene makeScene() const;
 };
 
 /// A copy of \p project as a sylva.Project (the editor's document as `import sylva` sees a

@@ -64,7 +64,7 @@ py::dict nodeDict(const graph::NodeDesc& n) {
 
 py::object speciesDict(const graph::SpeciesGraph& g) {
     const QByteArray json = doc::serializeSpecies(g);
-    return fromValue(graph::Value::parseJson(json.toStdString()));
+    return fromValue(sylva::Value::parseJson(json.toStdString()));
 }
 
 Species loadSpeciesFrom(const py::object& source, const py::object& baseDir) {
@@ -288,7 +288,7 @@ void bindSpecies(py::module_& m) {
                 if (!n)
                     throw InvalidInput("no node '" + node + "' in species '" + s.graph().name +
                                        "'");
-                const graph::Value* v = n->params.isObject() ? n->params.find(key) : nullptr;
+                const sylva::Value* v = n->params.isObject() ? n->params.find(key) : nullptr;
                 return v ? fromValue(*v) : py::object(py::none());
             },
             py::arg("path"), "a parameter's value by \"node.param\" (None when unset)")

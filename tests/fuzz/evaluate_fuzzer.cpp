@@ -60,12 +60,12 @@ void clampWork(sylva::graph::SpeciesGraph& species) {
         for (const Clamp& c : kClamps) {
             if (node.type != c.type) continue;
             auto it = params.find(c.param);
-            if (it == params.end() && c.whenAbsent) params[c.param] = sylva::graph::Value(c.hi);
+            if (it == params.end() && c.whenAbsent) params[c.param] = sylva::Value(c.hi);
             if (it == params.end() || !it->second.isNumber()) continue;
             const double v = it->second.toNumber();
             if (std::isnan(v)) continue; // refused by the node's own check
-            if (v < c.lo) it->second = sylva::graph::Value(c.lo);
-            if (v > c.hi) it->second = sylva::graph::Value(c.hi);
+            if (v < c.lo) it->second = sylva::Value(c.lo);
+            if (v > c.hi) it->second = sylva::Value(c.hi);
         }
     }
 }

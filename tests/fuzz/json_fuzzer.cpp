@@ -1,8 +1,8 @@
-// Fuzzes the engine's JSON reader (graph::Value, behind species and project files): any text
+// Fuzzes the engine's JSON reader (sylva::Value, behind species and project files): any text
 // parses or throws InvalidInput, and what parses prints to canonical JSON that parses back to
 // an equal value and prints identically again (compact and indented forms).
-#include "engine/graph/value.h"
 #include "engine/util/error.h"
+#include "engine/util/value.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -10,7 +10,7 @@
 #include <string>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using sylva::graph::Value;
+    using sylva::Value;
     const std::string text(reinterpret_cast<const char*>(data), size);
     Value value;
     try {

@@ -8,9 +8,9 @@
 
 #include "document/project.h"
 #include "document/scenebuild.h"
+#include "engine/forest/forestbuild.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
-#include "engine/scene/forestbuild.h"
 #include "ui/generation/scenegenerator.h"
 
 using namespace sylva;
@@ -49,10 +49,10 @@ private Q_SLOTS:
 
         // Oracle: the engine's own build of the same project.
         graph::registerBuiltinNodeTypes();
-        const scene::ForestScene forest = doc::makeForestScene(doc::loadProject(path));
-        std::vector<scene::ForestTree> trees;
-        const scene::ForestStats stats = scene::buildForest(
-            forest, scene::ForestOptions{}, [&](const std::vector<scene::ForestTree>& batch) {
+        const forest::ForestScene forest = doc::makeForestScene(doc::loadProject(path));
+        std::vector<forest::ForestTree> trees;
+        const forest::ForestStats stats = forest::buildForest(
+            forest, forest::ForestOptions{}, [&](const std::vector<forest::ForestTree>& batch) {
                 trees.insert(trees.end(), batch.begin(), batch.end());
             });
         QCOMPARE(r.stats.at("trees"), double(trees.size()));
@@ -60,7 +60,7 @@ private Q_SLOTS:
         QCOMPARE(r.stats.at("colliding_trees"), double(stats.collidingTrees));
         QCOMPARE(int(trees.size()), 41); // 25 bushes + 15 shrubs + 1 placed by hand
         std::size_t treeVertices = 0, treeTriangles = 0;
-        for (const scene::ForestTree& t : trees) {
+        for (const forest::ForestTree& t : trees) {
             QVERIFY2(t.mesh, t.name.c_str());
             treeVertices += t.mesh->vertexCount();
             treeTriangles += t.mesh->triangleCount();

@@ -54,18 +54,18 @@ constexpr int kTimeoutMs = 120000;
 
 using sylva::ui::test::outputPath;
 
-std::vector<std::string> inputsOf(const graph::Value& g, const std::string& id) {
+std::vector<std::string> inputsOf(const sylva::Value& g, const std::string& id) {
     std::vector<std::string> out;
-    for (const graph::Value& n : g.toObject().at("nodes").toArray())
+    for (const sylva::Value& n : g.toObject().at("nodes").toArray())
         if (n.string("id", "") == id)
-            if (const graph::Value* in = n.find("inputs"))
-                for (const graph::Value& v : in->toArray())
+            if (const sylva::Value* in = n.find("inputs"))
+                for (const sylva::Value& v : in->toArray())
                     out.push_back(v.toString());
     return out;
 }
 
-bool hasNode(const graph::Value& g, const std::string& id) {
-    for (const graph::Value& n : g.toObject().at("nodes").toArray())
+bool hasNode(const sylva::Value& g, const std::string& id) {
+    for (const sylva::Value& n : g.toObject().at("nodes").toArray())
         if (n.string("id", "") == id) return true;
     return false;
 }
@@ -88,7 +88,7 @@ private:
     SpeciesWorkbench* bench() { return mWindow->workbench(); }
     NodeGraphScene* scene() { return bench()->graphScene(); }
     NodeGraphView* view() { return bench()->graphView(); }
-    graph::Value alder() { return document().speciesGraph("alder"); }
+    sylva::Value alder() { return document().speciesGraph("alder"); }
 
     void waitForPreview() {
         QTRY_VERIFY_WITH_TIMEOUT(!bench()->preview()->isBusy(), kTimeoutMs);
@@ -531,8 +531,8 @@ private Q_SLOTS:
         QCOMPARE(document().undoStack()->index(), steps + 2);
         QVERIFY(curve->points()[4].y() > middle.y() + 0.05);
         QVERIFY(std::abs(curve->points()[4].x() - middle.x()) < 0.02);
-        const graph::Value dragged = graph::Value::parseJson(envelope());
-        const graph::Value::Array& profile = dragged.find("profile")->toArray();
+        const sylva::Value dragged = sylva::Value::parseJson(envelope());
+        const sylva::Value::Array& profile = dragged.find("profile")->toArray();
         QCOMPARE(profile.size(), std::size_t(9));
         QCOMPARE(profile[4].toArray()[1].toNumber(), curve->points()[4].y());
         waitForPreview();

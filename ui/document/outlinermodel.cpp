@@ -54,9 +54,9 @@ void OutlinerModel::readNodes(int only) {
         const doc::ProjectSpecies& s = all[k];
         QStringList nodes;
         try {
-            const graph::Value g = mDocument.speciesGraph(s.name);
-            if (const graph::Value* list = g.find("nodes"); list && list->isArray())
-                for (const graph::Value& n : list->toArray())
+            const sylva::Value g = mDocument.speciesGraph(s.name);
+            if (const sylva::Value* list = g.find("nodes"); list && list->isArray())
+                for (const sylva::Value& n : list->toArray())
                     nodes << QStringLiteral("%1 (%2)").arg(
                         QString::fromStdString(n.string("id", "?")),
                         QString::fromStdString(n.string("type", "?")));

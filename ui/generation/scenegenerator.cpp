@@ -12,8 +12,8 @@
 #include "document/filerefs.h"
 #include "document/project.h"
 #include "document/scenebuild.h"
+#include "engine/forest/forestbuild.h"
 #include "engine/mesh/mesh.h"
-#include "engine/scene/forestbuild.h"
 #include "engine/util/random.h"
 
 namespace sylva::ui {
@@ -66,11 +66,11 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                 result.sources << QFileInfo(project.resolve(d.terrain)).absoluteFilePath();
         result.sources.removeDuplicates();
         stampSources(result);
-        const scene::ForestScene forest = doc::makeForestScene(project);
-        for (const scene::SceneSpecies& s : forest.species)
+        const forest::ForestScene forest = doc::makeForestScene(project);
+        for (const forest::SceneSpecies& s : forest.species)
             doc::addSpeciesSourceFiles(s.graph, result.sources);
         stampSources(result); // before buildForest reads the grammar files
-        scene::ForestOptions options;
+        forest::ForestOptions options;
         if (caches) {
             options.cache = &caches->trees;
             options.obstaclesKey = pointerKey(forest.obstacles.get(), forest.ground.get());
@@ -78,10 +78,10 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             caches->ground = forest.ground;
         }
         double height = 0.0;
-        const scene::ForestStats stats = scene::buildForest(
+        const forest::ForestStats stats = forest::buildForest(
             forest, options,
-            [&](const std::vector<scene::ForestTree>& batch) {
-                for (const scene::ForestTree& tree : batch) {
+            [&](const std::vector<forest::ForestTree>& batch) {
+                for (const forest::ForestTree& tree : batch) {
                     DrawnTree drawn;
                     drawn.instanceId = tree.instance.id;
                     drawn.species = tree.instance.species;

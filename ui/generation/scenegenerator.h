@@ -7,7 +7,7 @@
 
 #include "document/document.h"
 #include "document/filerefs.h"
-#include "engine/scene/treecache.h"
+#include "engine/forest/treecache.h"
 #include "engine/util/progress.h"
 #include "ui/generation/treegenerator.h"
 
@@ -23,7 +23,7 @@ using doc::isProjectFile;
 /// their inputs are unchanged) and the obstacle scenes they were adapted to. Used by one
 /// generation at a time.
 struct SceneCaches {
-    scene::TreeCache trees;
+    forest::TreeCache trees;
     std::shared_ptr<const env::ObstacleScene> obstacles, ground; ///< kept alive for the keys
 };
 

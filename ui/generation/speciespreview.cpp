@@ -73,7 +73,7 @@ void SpeciesPreview::setSeed(std::uint64_t seed) {
 }
 
 void SpeciesPreview::setOverride(const QString& node, const std::string& key,
-                                 const graph::Value& value) {
+                                 const sylva::Value& value) {
     const auto k = std::make_pair(node, key);
     if (value.isNull())
         mOverrides.erase(k);

@@ -54,7 +54,7 @@ public:
     void setSeed(std::uint64_t seed);
     /// A preview-only parameter (the grammar editor's generations slider): \p node's \p key
     /// is \p value in the preview, not in the document. A null value removes it.
-    void setOverride(const QString& node, const std::string& key, const graph::Value& value);
+    void setOverride(const QString& node, const std::string& key, const sylva::Value& value);
     /// Evaluates the species' current graph (after an edit); newest wins.
     void refresh();
     bool isBusy() const { return mRunning || mPending; }
@@ -82,7 +82,7 @@ private:
     doc::Document& mDocument;
     QString mSpecies;
     std::uint64_t mSeed = 1;
-    std::map<std::pair<QString, std::string>, graph::Value> mOverrides;
+    std::map<std::pair<QString, std::string>, sylva::Value> mOverrides;
     /// Evaluators by species name; used by one job at a time (the running one owns it).
     std::map<QString, std::shared_ptr<graph::Evaluator>> mEvaluators;
     QFutureWatcher<PreviewResult> mWatcher;

@@ -62,7 +62,7 @@ GenerationResult generateTree(const QString& path, Progress& progress) {
         // vertex belongs to.
         if (graph::NodeDesc* out = species.findNode(species.output);
             out && out->type == "tube_mesh")
-            out->params.objectRef()["node_ids"] = graph::Value(true);
+            out->params.objectRef()["node_ids"] = sylva::Value(true);
         graph::Evaluator evaluator(std::move(species));
         const graph::NodeOutput& output = evaluator.evaluate(progress);
         result.mesh = output.mesh;

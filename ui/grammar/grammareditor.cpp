@@ -215,7 +215,7 @@ void GrammarEditor::loadFromDocument(bool keepCursor) {
         try {
             text = QString::fromStdString(
                 mDocument.grammar(mSpecies.toStdString(), mNode.toStdString()));
-            const graph::Value file =
+            const sylva::Value file =
                 mDocument.param(mSpecies.toStdString(), mNode.toStdString() + ".grammar_file");
             if (file.isString()) from = QString::fromStdString(file.toString());
             ok = true;
@@ -260,7 +260,7 @@ void GrammarEditor::updateGenerations(const lsys::GrammarCheck& check, bool rese
     // The slider runs to the node's `generations`, else the grammar header's (kept while the
     // grammar does not parse).
     int generations = check.ok() ? check.grammar.generations : mGenerations;
-    const graph::Value n =
+    const sylva::Value n =
         mDocument.param(mSpecies.toStdString(), mNode.toStdString() + ".generations");
     if (n.isNumber()) generations = int(n.toNumber());
     generations = std::clamp(generations, 0, 1000);

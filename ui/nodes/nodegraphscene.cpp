@@ -28,7 +28,7 @@ QColor categoryColor(const QString& category) {
 
 /// The node's inputs as drawn: a hand-written project may name one by a number, which every
 /// edit of the species refuses with its reason; the node is drawn without its edges meanwhile.
-std::vector<std::string> drawnInputs(const graph::Value& node) {
+std::vector<std::string> drawnInputs(const sylva::Value& node) {
     try {
         return doc::nodeInputs(node);
     } catch (const InvalidInput&) {
@@ -250,26 +250,26 @@ void NodeGraphScene::rebuild() {
     clear();
     mNodes.clear();
     mEdges.clear();
-    graph::Value g;
+    sylva::Value g;
     if (!mSpecies.isEmpty()) {
         try {
             g = mDocument.speciesGraph(mSpecies.toStdString());
         } catch (...) {
-            g = graph::Value();
+            g = sylva::Value();
         }
     }
     if (g.isObject()) {
         graph::registerBuiltinNodeTypes();
         const graph::NodeRegistry& registry = graph::NodeRegistry::instance();
         const std::string output = g.string("output", "");
-        const graph::Value::Array& nodes = doc::graphNodes(g);
+        const sylva::Value::Array& nodes = doc::graphNodes(g);
         // Nodes without a stored position are laid out by depth (longest path from a source).
         std::map<std::string, int> depth;
         std::function<int(const std::string&, int)> depthOf = [&](const std::string& id,
                                                                   int guard) -> int {
             if (auto it = depth.find(id); it != depth.end()) return it->second;
             int d = 0;
-            for (const graph::Value& n : nodes)
+            for (const sylva::Value& n : nodes)
                 if (n.string("id", "") == id && guard < 64)
                     for (const std::string& in : drawnInputs(n))
                         d = std::max(d, depthOf(in, guard + 1) + 1);
@@ -277,7 +277,7 @@ void NodeGraphScene::rebuild() {
             return d;
         };
         std::map<int, int> rowsAtDepth;
-        for (const graph::Value& n : nodes) {
+        for (const sylva::Value& n : nodes) {
             const std::string id = n.string("id", "");
             const std::string type = n.string("type", "");
             const graph::NodeType* t = registry.find(type);
@@ -297,7 +297,7 @@ void NodeGraphScene::rebuild() {
             addItem(item);
             mNodes[item->id()] = item;
         }
-        for (const graph::Value& n : nodes) {
+        for (const sylva::Value& n : nodes) {
             NodeItem* to = node(QString::fromStdString(n.string("id", "")));
             for (const std::string& in : drawnInputs(n))
                 if (NodeItem* from = node(QString::fromStdString(in))) {
@@ -351,12 +351,12 @@ bool NodeGraphScene::attempt(const std::function<void()>& edit) {
     }
 }
 
-bool NodeGraphScene::addNode(QString type, QPointF at, const graph::Value& params) {
+bool NodeGraphScene::addNode(QString type, QPointF at, const sylva::Value& params) {
     QString made;
     const bool ok = attempt([&] {
         made = QString::fromStdString(
             mDocument.addNode(mSpecies.toStdString(), type.toStdString(),
-                              params.isNull() ? graph::Value(graph::Value::Object{}) : params, {},
+                              params.isNull() ? sylva::Value(sylva::Value::Object{}) : params, {},
                               glm::vec2(float(at.x()), float(at.y()))));
     });
     if (ok) {
@@ -405,42 +405,42 @@ bool NodeGraphScene::deleteSelection() {
 QString NodeGraphScene::copySelection() const {
     const QStringList ids = selectedNodeIds();
     if (ids.isEmpty()) return {};
-    graph::Value g;
+    sylva::Value g;
     try {
         g = mDocument.speciesGraph(mSpecies.toStdString());
     } catch (...) {
         return {};
     }
-    graph::Value::Array out;
-    for (const graph::Value& n : g.toObject().at("nodes").toArray()) {
+    sylva::Value::Array out;
+    for (const sylva::Value& n : g.toObject().at("nodes").toArray()) {
         const QString id = QString::fromStdString(n.string("id", ""));
         if (!ids.contains(id)) continue;
-        graph::Value::Object copy{{"id", n.string("id", "")},
+        sylva::Value::Object copy{{"id", n.string("id", "")},
                                   {"type", n.string("type", "")},
                                   {"params", n.find("params")
                                                  ? *n.find("params")
-                                                 : graph::Value(graph::Value::Object{})}};
-        graph::Value::Array inputs;
+                                                 : sylva::Value(sylva::Value::Object{})}};
+        sylva::Value::Array inputs;
         for (const std::string& in : drawnInputs(n))
             if (ids.contains(QString::fromStdString(in))) inputs.emplace_back(in);
-        copy["inputs"] = graph::Value(std::move(inputs));
+        copy["inputs"] = sylva::Value(std::move(inputs));
         if (NodeItem* item = node(id))
             copy["editor_position"] =
-                graph::Value(graph::Value::Array{item->pos().x(), item->pos().y()});
+                sylva::Value(sylva::Value::Array{item->pos().x(), item->pos().y()});
         out.emplace_back(std::move(copy));
     }
     return QString::fromStdString(
-        graph::Value(graph::Value::Object{{"sylva_nodes", graph::Value(std::move(out))}}).toJson());
+        sylva::Value(sylva::Value::Object{{"sylva_nodes", sylva::Value(std::move(out))}}).toJson());
 }
 
 bool NodeGraphScene::paste(const QString& text, const QPointF& at) {
-    graph::Value v;
+    sylva::Value v;
     try {
-        v = graph::Value::parseJson(text.toStdString());
+        v = sylva::Value::parseJson(text.toStdString());
     } catch (...) {
         return false;
     }
-    const graph::Value* list = v.find("sylva_nodes");
+    const sylva::Value* list = v.find("sylva_nodes");
     if (!list || !list->isArray() || list->toArray().empty()) return false;
     QStringList made;
     const bool ok = attempt([&] {

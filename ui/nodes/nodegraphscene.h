@@ -96,7 +96,7 @@ public:
     void selectNode(const QString& id);
 
     // Actions (each one Document call; errors are reported through refused()).
-    bool addNode(QString type, QPointF at, const graph::Value& params = {});
+    bool addNode(QString type, QPointF at, const sylva::Value& params = {});
     bool connectNodes(QString from, QString to); // copies: the items naming them are rebuilt
     bool disconnectNodes(QString from, QString to);
     /// Deletes the selected nodes and edges as one undo step.

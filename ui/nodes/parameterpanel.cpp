@@ -30,7 +30,7 @@ namespace sylva::ui {
 
 using graph::ParamKind;
 using graph::ParamSpec;
-using graph::Value;
+using sylva::Value;
 
 namespace {
 

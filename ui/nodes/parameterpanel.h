@@ -43,7 +43,7 @@ Q_SIGNALS:
 private:
     void rebuild();
     void refreshValues();
-    bool apply(const std::string& param, const graph::Value& value, bool commit = true);
+    bool apply(const std::string& param, const sylva::Value& value, bool commit = true);
     QWidget* makeEditor(const graph::ParamSpec& spec);
     /// Adds a curve editor under an object's (or a curve's) JSON: a Curve parameter's points, or
     /// a crown envelope's profile with the Weber-Penn shapes to start from.
@@ -58,7 +58,7 @@ private:
     QLabel* mError = nullptr;
     std::map<std::string, QWidget*> mEditors;
     /// Per parameter: puts the document's value (or the default when unset) into its editor.
-    std::map<std::string, std::function<void(const graph::Value&)>> mShow;
+    std::map<std::string, std::function<void(const sylva::Value&)>> mShow;
     std::map<std::string, QWidget*> mResetButtons;
     bool mApplying = false;
 };

@@ -253,7 +253,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                const std::string& id, std::optional<std::pair<float, float>> at) {
                 return document().addNode(
                     species, type,
-                    params.is_none() ? graph::Value(graph::Value::Object{}) : toValue(params), id,
+                    params.is_none() ? sylva::Value(sylva::Value::Object{}) : toValue(params), id,
                     at ? glm::vec2(at->first, at->second) : glm::vec2(0.0f));
             },
             py::arg("species"), py::arg("type"), py::arg("params") = py::none(), py::arg("id") = "",

@@ -17,8 +17,8 @@
 
 #include "engine/environment/fbxcheck.h"
 #include "engine/environment/scenegraphwalk.h"
-#include "engine/graph/value.h"
 #include "engine/util/error.h"
+#include "engine/util/value.h"
 
 namespace sylva::env {
 
@@ -622,19 +622,19 @@ GlbChunks checkGlb(const std::filesystem::path& file, std::ifstream& in, std::ui
 /// to 1 read past a 720-byte buffer (fuzz finding 21). Every accessor (sparse ones are
 /// refused), buffer view and buffer must fit in what holds it, as the specification requires;
 /// a buffer must fit in its data (the binary chunk of a GLB, a data URI, a file beside it).
-void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
+void checkGltfBounds(const std::filesystem::path& file, const sylva::Value& doc,
                      std::uint64_t glbBinary) {
     const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: glTF ";
     if (!doc.isObject()) throw InvalidInput(where + "JSON is not an object");
-    auto list = [&doc](const char* name) -> const graph::Value::Array& {
-        static const graph::Value::Array none;
-        const graph::Value* v = doc.find(name);
+    auto list = [&doc](const char* name) -> const sylva::Value::Array& {
+        static const sylva::Value::Array none;
+        const sylva::Value* v = doc.find(name);
         return v && v->isArray() ? v->toArray() : none;
     };
     // A whole number in [0, limit]; \p fallback when absent.
-    auto whole = [&where](const graph::Value& object, const char* key, const std::string& what,
+    auto whole = [&where](const sylva::Value& object, const char* key, const std::string& what,
                           std::uint64_t fallback, std::uint64_t limit) -> std::uint64_t {
-        const graph::Value* v = object.isObject() ? object.find(key) : nullptr;
+        const sylva::Value* v = object.isObject() ? object.find(key) : nullptr;
         if (!v) return fallback;
         const double d = v->isNumber() ? v->toNumber() : -1.0;
         if (!(d >= 0.0 && d <= double(limit) && d == std::floor(d)))
@@ -643,14 +643,14 @@ void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
         return std::uint64_t(d);
     };
     constexpr std::uint64_t kMax = 0xffffffffu;
-    const graph::Value::Array& buffers = list("buffers");
+    const sylva::Value::Array& buffers = list("buffers");
     std::vector<std::uint64_t> bufferBytes;
     for (std::size_t i = 0; i < buffers.size(); ++i) {
         const std::string what = "buffers[" + std::to_string(i) + "]";
         const std::uint64_t bytes = whole(buffers[i], "byteLength", what, kMax + 1, kMax);
         if (bytes > kMax) throw InvalidInput(where + what + " has no byteLength");
         std::uint64_t available = 0;
-        const graph::Value* uri = buffers[i].isObject() ? buffers[i].find("uri") : nullptr;
+        const sylva::Value* uri = buffers[i].isObject() ? buffers[i].find("uri") : nullptr;
         if (!uri) {
             available = i == 0 ? glbBinary : 0; // a GLB's binary chunk
         } else if (!uri->isString()) {
@@ -673,7 +673,7 @@ void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
                                ")");
         bufferBytes.push_back(bytes);
     }
-    const graph::Value::Array& views = list("bufferViews");
+    const sylva::Value::Array& views = list("bufferViews");
     std::vector<std::pair<std::uint64_t, std::uint64_t>> viewBytes; // length, stride (0: none)
     for (std::size_t i = 0; i < views.size(); ++i) {
         const std::string what = "bufferViews[" + std::to_string(i) + "]";
@@ -689,9 +689,9 @@ void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
         if (stride != 0 && stride < 4) throw InvalidInput(where + what + ".byteStride is below 4");
         viewBytes.emplace_back(length, stride);
     }
-    const graph::Value::Array& accessors = list("accessors");
+    const sylva::Value::Array& accessors = list("accessors");
     for (std::size_t i = 0; i < accessors.size(); ++i) {
-        const graph::Value& a = accessors[i];
+        const sylva::Value& a = accessors[i];
         const std::string what = "accessors[" + std::to_string(i) + "]";
         if (a.isObject() && a.find("sparse"))
             throw InvalidInput(where + what +
@@ -705,7 +705,7 @@ void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
         if (component == 0)
             throw InvalidInput(where + what + ".componentType " + std::to_string(type) +
                                " is not one of glTF's");
-        const graph::Value* t = a.isObject() ? a.find("type") : nullptr;
+        const sylva::Value* t = a.isObject() ? a.find("type") : nullptr;
         const std::string name = t && t->isString() ? t->toString() : std::string();
         const std::uint64_t components = name == "SCALAR" ? 1
                                          : name == "VEC2" ? 2
@@ -746,28 +746,28 @@ void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
 /// it read through a null pointer (fuzz finding 20: a binary glTF whose triangles were
 /// relabelled as a line loop). Obstacles need triangles; primitives drawn as line loops (mode
 /// 2) or triangle fans (6) are refused with the mesh that has them. The JSON must parse.
-void checkGltfBounds(const std::filesystem::path& file, const graph::Value& doc,
+void checkGltfBounds(const std::filesystem::path& file, const sylva::Value& doc,
                      std::uint64_t glbBinary);
 
 void checkGltfJson(const std::filesystem::path& file, const std::string& json,
                    std::uint64_t glbBinary = 0) {
     const std::string where = "obstacle mesh '" + file.string() + "': cannot read it: glTF ";
-    graph::Value doc;
+    sylva::Value doc;
     try {
-        doc = graph::Value::parseJson(json, file.string());
+        doc = sylva::Value::parseJson(json, file.string());
     } catch (const InvalidInput& e) {
         throw InvalidInput(where + "JSON is not valid: " + e.what());
     }
     checkGltfBounds(file, doc, glbBinary);
     // A skin without inverse bind matrices (identity, by the specification) made Assimp 5.2.5
     // read through a null pointer (fuzz finding 22): required, and an accessor of the file.
-    if (const graph::Value* skins = doc.find("skins"); skins && skins->isArray()) {
-        const graph::Value* accessors = doc.find("accessors");
+    if (const sylva::Value* skins = doc.find("skins"); skins && skins->isArray()) {
+        const sylva::Value* accessors = doc.find("accessors");
         const std::size_t count =
             accessors && accessors->isArray() ? accessors->toArray().size() : 0;
         for (std::size_t k = 0; k < skins->toArray().size(); ++k) {
-            const graph::Value& skin = skins->toArray()[k];
-            const graph::Value* ibm = skin.isObject() ? skin.find("inverseBindMatrices") : nullptr;
+            const sylva::Value& skin = skins->toArray()[k];
+            const sylva::Value* ibm = skin.isObject() ? skin.find("inverseBindMatrices") : nullptr;
             if (!ibm || !ibm->isNumber() || ibm->toNumber() < 0 ||
                 ibm->toNumber() >= double(count) || ibm->toNumber() != std::floor(ibm->toNumber()))
                 throw InvalidInput(where + "skins[" + std::to_string(k) +
@@ -778,16 +778,16 @@ void checkGltfJson(const std::filesystem::path& file, const std::string& json,
     // The node hierarchy (finding 30): Assimp copies a node under every node that lists it as a
     // child, recursively, so 30 nodes each listing the next twice asked for 2^30 nodes (out of
     // memory). Assimp refuses loops itself; refused here with the other limits.
-    if (const graph::Value* nodes = doc.isObject() ? doc.find("nodes") : nullptr;
+    if (const sylva::Value* nodes = doc.isObject() ? doc.find("nodes") : nullptr;
         nodes && nodes->isArray()) {
         const auto& list = nodes->toArray();
         std::vector<std::vector<std::size_t>> next(list.size());
         std::vector<std::size_t> roots(list.size());
         for (std::size_t k = 0; k < list.size(); ++k) {
             roots[k] = k;
-            const graph::Value* children = list[k].isObject() ? list[k].find("children") : nullptr;
+            const sylva::Value* children = list[k].isObject() ? list[k].find("children") : nullptr;
             if (!children || !children->isArray()) continue;
-            for (const graph::Value& c : children->toArray())
+            for (const sylva::Value& c : children->toArray())
                 if (c.isNumber() && c.toNumber() >= 0 && c.toNumber() < double(list.size()) &&
                     c.toNumber() == std::floor(c.toNumber()))
                     next[k].push_back(static_cast<std::size_t>(c.toNumber()));
@@ -797,17 +797,17 @@ void checkGltfJson(const std::filesystem::path& file, const std::string& json,
             [](std::size_t n) { return "nodes[" + std::to_string(n) + "]"; },
             "the nodes listed as children more than once are copied under each");
     }
-    const graph::Value* meshes = doc.isObject() ? doc.find("meshes") : nullptr;
+    const sylva::Value* meshes = doc.isObject() ? doc.find("meshes") : nullptr;
     if (!meshes || !meshes->isArray()) return;
     for (std::size_t m = 0; m < meshes->toArray().size(); ++m) {
-        const graph::Value& mesh = meshes->toArray()[m];
-        const graph::Value* primitives = mesh.isObject() ? mesh.find("primitives") : nullptr;
+        const sylva::Value& mesh = meshes->toArray()[m];
+        const sylva::Value* primitives = mesh.isObject() ? mesh.find("primitives") : nullptr;
         if (!primitives || !primitives->isArray()) continue;
         for (std::size_t p = 0; p < primitives->toArray().size(); ++p) {
-            const graph::Value& primitive = primitives->toArray()[p];
+            const sylva::Value& primitive = primitives->toArray()[p];
             const std::string what =
                 "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
-            const graph::Value* mode = primitive.isObject() ? primitive.find("mode") : nullptr;
+            const sylva::Value* mode = primitive.isObject() ? primitive.find("mode") : nullptr;
             const double v = mode && mode->isNumber() ? mode->toNumber() : 4.0;
             if (v == 2 || v == 3 || v == 6)
                 throw InvalidInput(where + what + " is drawn as " +
@@ -819,13 +819,13 @@ void checkGltfJson(const std::filesystem::path& file, const std::string& json,
             // A strip of fewer vertices than a triangle: Assimp counts its faces as count - 2
             // in unsigned arithmetic and asked for 64 GB (finding 23, a line strip of none).
             if (v == 5) {
-                const graph::Value* indices = primitive.find("indices");
-                const graph::Value* attributes = primitive.find("attributes");
-                const graph::Value* position =
+                const sylva::Value* indices = primitive.find("indices");
+                const sylva::Value* attributes = primitive.find("attributes");
+                const sylva::Value* position =
                     attributes && attributes->isObject() ? attributes->find("POSITION") : nullptr;
-                const graph::Value* source = indices ? indices : position;
-                const graph::Value* accessors = doc.find("accessors");
-                const graph::Value* count = nullptr;
+                const sylva::Value* source = indices ? indices : position;
+                const sylva::Value* accessors = doc.find("accessors");
+                const sylva::Value* count = nullptr;
                 if (source && source->isNumber() && accessors && accessors->isArray() &&
                     source->toNumber() >= 0 &&
                     source->toNumber() < double(accessors->toArray().size()))

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "engine/graph/value.h"
+#include "engine/util/value.h"
 
 namespace sylva::graph {
 

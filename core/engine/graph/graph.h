@@ -10,10 +10,10 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/graph/value.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
+#include "engine/util/value.h"
 
 namespace sylva::env {
 class ObstacleScene;

@@ -4,7 +4,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "engine/graph/value.h"
+#include "engine/util/value.h"
 
 namespace sylva::graph {
 

@@ -18,7 +18,7 @@ namespace {
 
 using graph::NodeContext;
 using graph::NodeOutput;
-using graph::Value;
+using sylva::Value;
 
 // A vector parameter; a single number means the same value on every axis (uniform scale).
 glm::vec3 vec3OrUniform(const Value& v, const std::string& what) {

@@ -27,11 +27,11 @@ std::shared_ptr<const ObstacleScene> loadObstacleScene(const std::vector<Obstacl
 /// Reads an obstacle entry {"file": ..., "translate": [x,y,z], "rotate": [x,y,z] (degrees),
 /// "scale": [x,y,z] or a number}; \p baseDir resolves a relative file.
 /// \throw InvalidInput naming the key.
-ObstacleSpec obstacleSpecFromValue(const graph::Value& v, const std::filesystem::path& baseDir);
+ObstacleSpec obstacleSpecFromValue(const sylva::Value& v, const std::filesystem::path& baseDir);
 
 /// Reads AdaptParams from node parameters (max_bend, bend_multiplier, prune, redistribute,
 /// recheck_all, return_to_vertical, light_direction); absent keys keep the defaults.
-AdaptParams adaptParamsFromValue(const graph::Value& params);
+AdaptParams adaptParamsFromValue(const sylva::Value& params);
 
 /// Registers the `adapt` node type: one input (a skeleton), parameters as
 /// adaptParamsFromValue plus `obstacles` (array of obstacle entries, files relative to the

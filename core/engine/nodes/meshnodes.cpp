@@ -17,7 +17,7 @@ namespace {
 
 using graph::NodeContext;
 using graph::NodeOutput;
-using graph::Value;
+using sylva::Value;
 
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

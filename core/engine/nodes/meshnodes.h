@@ -5,9 +5,12 @@
 
 #include "engine/mesh/lod.h"
 
+namespace sylva {
+class Value;
+} // namespace sylva
+
 namespace sylva::graph {
 class NodeRegistry;
-class Value;
 } // namespace sylva::graph
 
 namespace sylva::mesh {
@@ -29,7 +32,7 @@ void registerMeshNodes(graph::NodeRegistry& registry);
 /// chains, forests). \p seed drives leaf thinning; \p baseDir resolves relative texture files
 /// (bark_texture_file, leaf_texture_file), normally the species file's folder.
 /// \throw InvalidInput naming the parameter.
-TreeMeshSettings treeMeshSettingsFromParams(const graph::Value& params, std::uint64_t seed,
+TreeMeshSettings treeMeshSettingsFromParams(const sylva::Value& params, std::uint64_t seed,
                                             const std::filesystem::path& baseDir = {});
 
 } // namespace sylva::mesh

@@ -13,7 +13,7 @@ namespace sylva::nodes {
 
 using graph::ParamKind;
 using graph::ParamSpec;
-using graph::Value;
+using sylva::Value;
 
 inline constexpr double kMaxSeed = 9007199254740992.0; // 2^53: exact in a JSON number
 

@@ -59,7 +59,7 @@ constexpr IntegerParam kIntegers[] = {
     {"leaf_age", &P::leafAge, 0, 200},
 };
 
-int integerIn(const graph::Value& v, const char* key, int fallback, int lo, int hi) {
+int integerIn(const sylva::Value& v, const char* key, int fallback, int lo, int hi) {
     const double d = v.number(key, fallback);
     requireRange(key, d, lo, hi);
     if (d != static_cast<double>(static_cast<std::int64_t>(d)))
@@ -81,7 +81,7 @@ const std::vector<std::string>& selfOrganizingParamNames() {
     return names;
 }
 
-SelfOrganizingParams selfOrganizingParamsFrom(const graph::Value& v) {
+SelfOrganizingParams selfOrganizingParamsFrom(const sylva::Value& v) {
     SelfOrganizingParams p;
     for (const IntegerParam& i : kIntegers)
         p.*i.member = integerIn(v, i.name, p.*i.member, i.lo, i.hi);

@@ -8,7 +8,7 @@ namespace sylva::growth {
 /// Reads the self-organizing parameters from a node's parameter object (snake_case keys, the
 /// defaults of SelfOrganizingParams for absent ones) and validates them.
 /// \throw InvalidInput for a wrong type, an unknown enum string or a value out of range.
-SelfOrganizingParams selfOrganizingParamsFrom(const graph::Value& params);
+SelfOrganizingParams selfOrganizingParamsFrom(const sylva::Value& params);
 
 /// The parameter names the `self_organizing` node understands (also valid in a stand's tree).
 const std::vector<std::string>& selfOrganizingParamNames();

@@ -15,7 +15,7 @@ namespace sylva::growth {
 
 namespace {
 
-using graph::Value;
+using sylva::Value;
 
 glm::vec3 vec3Param(const Value& obj, const std::string& key, const glm::vec3& fallback,
                     const std::string& what) {

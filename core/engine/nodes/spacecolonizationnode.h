@@ -19,7 +19,7 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry);
 /// Builds the attraction-point envelope from the node's `envelope` object; mesh files resolve
 /// through \p ctx. Exposed for tests and the editor's envelope preview.
 class Envelope;
-Envelope envelopeFromParams(const graph::Value& envelope, const graph::NodeContext& ctx);
+Envelope envelopeFromParams(const sylva::Value& envelope, const graph::NodeContext& ctx);
 
 /// A mesh envelope from \p file, scaled by \p scale about the origin and then moved by \p offset:
 /// read as obstacle meshes are (env::loadObstacleMesh: the file checks Debian's Assimp needs, OBJ

@@ -9,7 +9,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "engine/environment/adapt.h"
-#include "engine/forest/placement.h"
+#include "engine/placement/placement.h"
 #include "engine/util/random.h"
 
 using namespace sylva;
@@ -137,20 +137,21 @@ void BM_SceneBuild(benchmark::State& state) {
 }
 BENCHMARK(BM_SceneBuild)->Unit(benchmark::kMillisecond);
 
-void placement(benchmark::State& state, forest::PlacementMethod method) {
+void placement(benchmark::State& state, placement::PlacementMethod method) {
     const auto n = static_cast<std::size_t>(state.range(0));
     // Density of a closed stand: about one tree per 40 m², crown radii 2.5 and 1.5 m.
     const float side = std::sqrt(40.0f * static_cast<float>(n));
-    forest::Domain d;
+    placement::Domain d;
     d.min = glm::vec2(-0.5f * side);
     d.max = glm::vec2(0.5f * side);
     d.counts = {{"alder", n / 2}, {"birch", n - n / 2}};
-    const std::vector<forest::SpeciesSpec> species = {{"alder", 2.5f}, {"birch", 1.5f}};
-    forest::PlacementParams params;
+    const std::vector<placement::SpeciesSpec> species = {{"alder", 2.5f}, {"birch", 1.5f}};
+    placement::PlacementParams params;
     params.seed = 7;
     std::size_t placed = 0;
     for (auto _ : state) {
-        const forest::PlacementResult r = forest::placeForest(species, {d}, {}, params, method);
+        const placement::PlacementResult r =
+            placement::placeForest(species, {d}, {}, params, method);
         placed = r.instances.size();
         benchmark::DoNotOptimize(r.instances.data());
     }
@@ -158,10 +159,10 @@ void placement(benchmark::State& state, forest::PlacementMethod method) {
 }
 
 void BM_PlacementGrid(benchmark::State& state) {
-    placement(state, forest::PlacementMethod::Grid);
+    placement(state, placement::PlacementMethod::Grid);
 }
 void BM_PlacementNaive(benchmark::State& state) {
-    placement(state, forest::PlacementMethod::Naive);
+    placement(state, placement::PlacementMethod::Naive);
 }
 BENCHMARK(BM_PlacementGrid)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlacementNaive)->Arg(10000)->Unit(benchmark::kMillisecond);

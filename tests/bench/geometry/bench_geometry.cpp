@@ -10,9 +10,9 @@
 #include <omp.h>
 #include <unistd.h>
 
-#include "../../core/geometry/referencetubemesh.h"
-#include "../../core/geometry/referenceturtle.h"
-#include "../../core/geometry/testwords.h"
+#include "../../core/common/testwords.h"
+#include "../../core/lsystem/referenceturtle.h"
+#include "../../core/mesh/referencetubemesh.h"
 #include "engine/export/objwriter.h"
 #include "engine/lsystem/derivation.h"
 #include "engine/lsystem/grammar.h"
@@ -120,7 +120,7 @@ void BM_TurtleContextFreeFreshMemory(benchmark::State& state) {
 }
 BENCHMARK(BM_TurtleContextFreeFreshMemory)->Unit(benchmark::kMillisecond);
 
-// The first, straightforward turtle (tests/core/geometry/referenceturtle.h), same word.
+// The first, straightforward turtle (tests/core/lsystem/referenceturtle.h), same word.
 void BM_TurtleContextFreeReference(benchmark::State& state) {
     runTurtle(state, abopWord(), lsys::TurtleSettings{}, referenceTurtle);
 }
@@ -203,7 +203,7 @@ void BM_TubeMesh(benchmark::State& state) {
 }
 BENCHMARK(BM_TubeMesh)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond);
 
-// The first, straightforward mesher (tests/core/geometry/referencetubemesh.cpp), same input.
+// The first, straightforward mesher (tests/core/mesh/referencetubemesh.cpp), same input.
 void BM_TubeMeshReference(benchmark::State& state) {
     runTubeMesh(state, mesh::reference::appendTubesReference);
 }

@@ -20,6 +20,7 @@
 #include "ui/generation/vertexdata.h"
 
 using namespace sylva::graph;
+using sylva::Value;
 
 namespace {
 

@@ -177,7 +177,7 @@ TEST_F(DocumentTest, BadEditsThrowAndChangeNothing) {
 
 TEST_F(DocumentTest, SpeciesEditInlinesTheSpeciesAndKeepsItsFiles) {
     ASSERT_FALSE(mDoc.project().species[0].file.empty());
-    const graph::Value before = mDoc.param("alder", "mesh.resolution");
+    const sylva::Value before = mDoc.param("alder", "mesh.resolution");
     EXPECT_EQ(before.toNumber(), 8.0);
     mDoc.setParam("alder", "mesh.resolution", 5.0);
     const doc::ProjectSpecies& s = mDoc.project().species[0];
@@ -209,7 +209,7 @@ TEST_F(DocumentTest, GraphEditsAreCheckedAndUndoable) {
     const int steps = mDoc.undoStack()->count();
     // alder: grow (lsystem) → mesh (tube_mesh, the output).
     const std::string leaves =
-        mDoc.addNode("alder", "leaves", graph::Value::Object{{"size", 0.2}}, {}, {120.0f, 40.0f});
+        mDoc.addNode("alder", "leaves", sylva::Value::Object{{"size", 0.2}}, {}, {120.0f, 40.0f});
     EXPECT_EQ(leaves, "leaves");
     EXPECT_EQ(mDoc.addNode("alder", "leaves"), "leaves2"); // a fresh id from the type
     EXPECT_EQ(mDoc.nodePosition("alder", "leaves"), glm::vec2(120.0f, 40.0f));
@@ -231,7 +231,7 @@ TEST_F(DocumentTest, GraphEditsAreCheckedAndUndoable) {
     EXPECT_NE(refusal([&] { mDoc.addNode("alder", "no_such_type"); }).find("known: adapt"),
               std::string::npos);
     EXPECT_NE(refusal([&] {
-                  mDoc.addNode("alder", "tube_mesh", graph::Value::Object{{"resolution", 99}});
+                  mDoc.addNode("alder", "tube_mesh", sylva::Value::Object{{"resolution", 99}});
               }).find("resolution must be in [3, 64]"),
               std::string::npos);
     EXPECT_NE(refusal([&] { mDoc.removeNode("alder", "mesh"); }).find("output"), std::string::npos);
@@ -245,14 +245,14 @@ TEST_F(DocumentTest, GraphEditsAreCheckedAndUndoable) {
     // Wire grow → leaves → mesh: mesh's one input is replaced by leaves.
     mDoc.connectNodes("alder", "grow", "leaves");
     mDoc.connectNodes("alder", "leaves", "mesh");
-    graph::Value g = mDoc.speciesGraph("alder");
-    for (const graph::Value& n : g.toObject().at("nodes").toArray()) {
+    sylva::Value g = mDoc.speciesGraph("alder");
+    for (const sylva::Value& n : g.toObject().at("nodes").toArray()) {
         if (n.string("id", "") == "mesh") {
             EXPECT_EQ(n.find("inputs")->toJson(), "[\"leaves\"]");
         }
     }
     // A mesh into a node that takes a skeleton is refused.
-    mDoc.addNode("alder", "adapt", graph::Value::Object{}, "bend");
+    mDoc.addNode("alder", "adapt", sylva::Value::Object{}, "bend");
     mDoc.connectNodes("alder", "grow", "bend");
     EXPECT_NE(refusal([&] { mDoc.connectNodes("alder", "mesh", "bend"); }).find("takes a skeleton"),
               std::string::npos);
@@ -291,28 +291,28 @@ TEST_F(DocumentTest, EveryPresetAppliesAndRoundTrips) {
     ASSERT_GE(presets.size(), 12);
     // A parameter with its file references (also nested: a mesh envelope's) by file name:
     // rebased to the project's folder, they name the same files.
-    std::function<graph::Value(const graph::Value&, const std::string&)> fileNames =
-        [&fileNames](const graph::Value& v, const std::string& key) -> graph::Value {
+    std::function<sylva::Value(const sylva::Value&, const std::string&)> fileNames =
+        [&fileNames](const sylva::Value& v, const std::string& key) -> sylva::Value {
         if (v.isString() && graph::isFileParam(key))
-            return graph::Value(
+            return sylva::Value(
                 QFileInfo(QString::fromStdString(v.toString())).fileName().toStdString());
         if (v.isObject()) {
-            graph::Value::Object out;
+            sylva::Value::Object out;
             for (const auto& [k, member] : v.toObject())
                 out[k] = fileNames(member, k);
-            return graph::Value(std::move(out));
+            return sylva::Value(std::move(out));
         }
         if (v.isArray()) {
-            graph::Value::Array out;
-            for (const graph::Value& element : v.toArray())
+            sylva::Value::Array out;
+            for (const sylva::Value& element : v.toArray())
                 out.push_back(fileNames(element, {}));
-            return graph::Value(std::move(out));
+            return sylva::Value(std::move(out));
         }
         return v;
     };
     auto resolved = [&fileNames](const graph::NodeDesc& n, const std::string& key) {
-        const graph::Value* v = n.params.find(key);
-        return v ? fileNames(*v, key) : graph::Value();
+        const sylva::Value* v = n.params.find(key);
+        return v ? fileNames(*v, key) : sylva::Value();
     };
     for (const doc::PresetInfo& p : presets) {
         SCOPED_TRACE(p.path.toStdString());
@@ -334,7 +334,7 @@ TEST_F(DocumentTest, EveryPresetAppliesAndRoundTrips) {
             if (a.type == "lsystem") {
                 // The grammar is still found (from the project's folder) and is the preset's.
                 EXPECT_EQ(mDoc.grammar("alder", a.id), [&] {
-                    if (const graph::Value* g = b.params.find("grammar")) return g->toString();
+                    if (const sylva::Value* g = b.params.find("grammar")) return g->toString();
                     QFile f(QDir(QString::fromStdString(preset.baseDir.string()))
                                 .filePath(QString::fromStdString(
                                     b.params.find("grammar_file")->toString())));
@@ -586,11 +586,11 @@ TEST(FileRefs, SourceFilesOfTheDemo) {
 // envelope, an adapt node's obstacles): a save under another folder must move them as well,
 // or the saved project points nowhere.
 TEST(FileRefs, NestedFilesAreRebased) {
-    graph::Value g = graph::Value::parseJson(R"({"nodes":[{"id":"grow","type":"space_colonization",
+    sylva::Value g = sylva::Value::parseJson(R"({"nodes":[{"id":"grow","type":"space_colonization",
         "params":{"envelope":{"shape":"mesh","file":"meshes/crown.obj"},"grammar_file":"g.lsys",
         "obstacles":[{"file":"rock.obj","scale":2}],"profile":"keep/me"}}]})");
     doc::rebaseGraphFiles(g, QStringLiteral("/p/a"), QStringLiteral("/p/b"));
-    const graph::Value& params = g.find("nodes")->toArray()[0].find("params")[0];
+    const sylva::Value& params = g.find("nodes")->toArray()[0].find("params")[0];
     EXPECT_EQ(params.find("envelope")->find("file")->toString(), "../a/meshes/crown.obj");
     EXPECT_EQ(params.find("grammar_file")->toString(), "../a/g.lsys");
     EXPECT_EQ(params.find("obstacles")->toArray()[0].find("file")->toString(), "../a/rock.obj");
@@ -604,7 +604,7 @@ TEST(FileRefs, NestedFilesAreWatched) {
     g.baseDir = "/p/a";
     g.nodes.push_back({"grow",
                        "space_colonization",
-                       graph::Value::parseJson(R"({"envelope":{"shape":"mesh",
+                       sylva::Value::parseJson(R"({"envelope":{"shape":"mesh",
                            "file":"meshes/crown.obj"},"grammar_file":"g.lsys",
                            "obstacles":[{"file":"/q/rock.obj","scale":2}],"profile":"keep/me"})"),
                        {}});

@@ -121,18 +121,18 @@ TEST(UpgradeChain, RunsStepsInOrderAndOnlyFromTheFilesVersion) {
     std::vector<std::string> log;
     const std::vector<doc::UpgradeStep> steps = {
         {1, "rename trees to instances",
-         [&](graph::Value::Object& o) {
+         [&](sylva::Value::Object& o) {
              log.push_back("1");
              o["instances"] = o["trees"];
              o.erase("trees");
          }},
         {2, "add light",
-         [&](graph::Value::Object& o) {
+         [&](sylva::Value::Object& o) {
              log.push_back("2");
-             o["light"] = graph::Value::Object{{"direction", graph::Value::Array{0, -1, 0}}};
+             o["light"] = sylva::Value::Object{{"direction", sylva::Value::Array{0, -1, 0}}};
          }},
     };
-    graph::Value v1 = graph::Value::parseJson(R"({"format":"f","format_version":1,"trees":[1]})");
+    sylva::Value v1 = sylva::Value::parseJson(R"({"format":"f","format_version":1,"trees":[1]})");
     const doc::UpgradeReport r = doc::upgradeFormat(v1.objectRef(), "f", 3, steps, "a", true);
     EXPECT_EQ(log, (std::vector<std::string>{"1", "2"}));
     EXPECT_EQ(r.applied.size(), 2u);
@@ -141,14 +141,14 @@ TEST(UpgradeChain, RunsStepsInOrderAndOnlyFromTheFilesVersion) {
         R"({"format":"f","format_version":3,"instances":[1],"light":{"direction":[0,-1,0]}})");
 
     log.clear();
-    graph::Value v2 = graph::Value::parseJson(R"({"format":"f","format_version":2})");
+    sylva::Value v2 = sylva::Value::parseJson(R"({"format":"f","format_version":2})");
     doc::upgradeFormat(v2.objectRef(), "f", 3, steps, "a", true);
     EXPECT_EQ(log, std::vector<std::string>{"2"});
 
-    graph::Value v4 = graph::Value::parseJson(R"({"format":"f","format_version":4})");
+    sylva::Value v4 = sylva::Value::parseJson(R"({"format":"f","format_version":4})");
     EXPECT_THROW(doc::upgradeFormat(v4.objectRef(), "f", 3, steps, "a", true), InvalidInput);
     EXPECT_EQ(doc::upgradeFormat(v4.objectRef(), "f", 3, steps, "a", false).warnings.size(), 1u);
-    graph::Value gap = graph::Value::parseJson(R"({"format":"f","format_version":1})");
+    sylva::Value gap = sylva::Value::parseJson(R"({"format":"f","format_version":1})");
     EXPECT_THROW(doc::upgradeFormat(gap.objectRef(), "f", 3, {steps[1]}, "a", true), InvalidInput);
 }
 
@@ -156,8 +156,8 @@ TEST(UpgradeChain, RunsStepsInOrderAndOnlyFromTheFilesVersion) {
 // whole numbers from 1 to 1e9; a larger one is an error, not a "newer file" warning.
 TEST(UpgradeChain, HugeVersionsAreRefused) {
     for (const char* v : {"1e116", "4294967296", "1000000001"}) {
-        graph::Value root =
-            graph::Value::parseJson(std::string(R"({"format":"f","format_version":)") + v + "}");
+        sylva::Value root =
+            sylva::Value::parseJson(std::string(R"({"format":"f","format_version":)") + v + "}");
         try {
             doc::upgradeFormat(root.objectRef(), "f", 1, {}, "a.json", false);
             ADD_FAILURE() << v;
@@ -166,7 +166,7 @@ TEST(UpgradeChain, HugeVersionsAreRefused) {
                          "a.json: \"format_version\" must be a whole number from 1 to 1000000000");
         }
     }
-    graph::Value newer = graph::Value::parseJson(R"({"format":"f","format_version":1000000000})");
+    sylva::Value newer = sylva::Value::parseJson(R"({"format":"f","format_version":1000000000})");
     EXPECT_EQ(doc::upgradeFormat(newer.objectRef(), "f", 1, {}, "a", false).warnings.size(), 1u);
 }
 
@@ -225,7 +225,7 @@ TEST(Project, InlineSpeciesGraphsBecomeSceneSpecies) {
         "output":"mesh"}}],
       "instances":[{"species":"bush","position":[1,0,2],"rotation":90,"seed":4}]})";
     const doc::Project p = doc::parseProject(json, "/proj/inline.sylva");
-    const scene::ForestScene s = doc::makeForestScene(p);
+    const forest::ForestScene s = doc::makeForestScene(p);
     ASSERT_EQ(s.species.size(), 1u);
     EXPECT_EQ(s.species[0].graph.name, "bush");
     EXPECT_EQ(s.species[0].graph.skeletonSource(), "grow");

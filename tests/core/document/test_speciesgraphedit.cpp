@@ -14,7 +14,7 @@
 #include <QCoreApplication>
 
 using namespace sylva;
-using graph::Value;
+using sylva::Value;
 
 namespace {
 

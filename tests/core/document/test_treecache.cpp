@@ -2,8 +2,8 @@
 // without it, tree for tree and vertex for vertex, and an edit regrows only what it touched.
 #include "document/project.h"
 #include "document/scenebuild.h"
-#include "engine/scene/forestbuild.h"
-#include "engine/scene/treecache.h"
+#include "engine/forest/forestbuild.h"
+#include "engine/forest/treecache.h"
 
 #include <gtest/gtest.h>
 
@@ -17,16 +17,16 @@ namespace {
 struct Built {
     std::vector<std::string> names;
     std::vector<std::shared_ptr<const mesh::Mesh>> meshes;
-    scene::ForestStats stats;
+    forest::ForestStats stats;
 };
 
-Built build(const scene::ForestScene& s, scene::TreeCache* cache) {
-    scene::ForestOptions options;
+Built build(const forest::ForestScene& s, forest::TreeCache* cache) {
+    forest::ForestOptions options;
     options.cache = cache;
     options.obstaclesKey = 1;
     Built out;
-    out.stats = scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
-        for (const scene::ForestTree& t : batch) {
+    out.stats = forest::buildForest(s, options, [&](const std::vector<forest::ForestTree>& batch) {
+        for (const forest::ForestTree& t : batch) {
             out.names.push_back(t.name);
             out.meshes.push_back(t.mesh);
         }
@@ -52,8 +52,8 @@ void expectSame(const Built& a, const Built& b) {
 
 TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
     doc::Project project = doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva");
-    const scene::ForestScene original = doc::makeForestScene(project);
-    scene::TreeCache cache;
+    const forest::ForestScene original = doc::makeForestScene(project);
+    forest::TreeCache cache;
     const Built first = build(original, &cache);
     const std::size_t trees = first.names.size();
     ASSERT_GT(trees, 10u);
@@ -68,14 +68,14 @@ TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
     // Reseed the hand-placed tree: it regrows, and so do only the trees around it whose
     // neighbour crowns changed (none: the seed does not move a crown).
     project.instances[0].seed = 99;
-    const scene::ForestScene reseeded = doc::makeForestScene(project);
+    const forest::ForestScene reseeded = doc::makeForestScene(project);
     const Built third = build(reseeded, &cache);
     EXPECT_EQ(cache.misses(), 1u);
     expectSame(third, build(reseeded, nullptr));
 
     // Move it: placement around it may change, but far trees are reused.
     project.instances[0].position.x += 0.5f;
-    const scene::ForestScene moved = doc::makeForestScene(project);
+    const forest::ForestScene moved = doc::makeForestScene(project);
     const Built fourth = build(moved, &cache);
     EXPECT_GE(cache.misses(), 1u);
     EXPECT_LT(cache.misses(), trees / 2);
@@ -94,26 +94,26 @@ TEST(TreeCache, SpeciesAreKeyedByTheFilesTheyNameNotByTheirFolder) {
         g.name = "alder";
         g.output = "grow";
         g.baseDir = dir;
-        graph::Value::Object adapt{{"obstacles", graph::Value::Array{graph::Value::Object{
+        sylva::Value::Object adapt{{"obstacles", sylva::Value::Array{sylva::Value::Object{
                                                      {"file", obstacle}, {"scale", 2.0}}}}};
-        g.nodes.push_back({"grow", "lsystem", graph::Value::Object{{"grammar_file", grammar}}, {}});
-        g.nodes.push_back({"adapt", "adapt", graph::Value(adapt), {"grow"}});
+        g.nodes.push_back({"grow", "lsystem", sylva::Value::Object{{"grammar_file", grammar}}, {}});
+        g.nodes.push_back({"adapt", "adapt", sylva::Value(adapt), {"grow"}});
         return g;
     };
     const std::uint64_t there =
-        scene::speciesHash(species(tmp / "project", "../presets/alder.lsys", "meshes/wall.obj"));
+        forest::speciesHash(species(tmp / "project", "../presets/alder.lsys", "meshes/wall.obj"));
     // The same files named from another folder, and through a roundabout spelling of it.
-    EXPECT_EQ(scene::speciesHash(species(tmp / "elsewhere" / "deeper", "../../presets/alder.lsys",
-                                         "../../project/meshes/wall.obj")),
+    EXPECT_EQ(forest::speciesHash(species(tmp / "elsewhere" / "deeper", "../../presets/alder.lsys",
+                                          "../../project/meshes/wall.obj")),
               there);
-    EXPECT_EQ(scene::speciesHash(species(tmp / "x" / ".." / "project", "../presets/alder.lsys",
-                                         "meshes/wall.obj")),
+    EXPECT_EQ(forest::speciesHash(species(tmp / "x" / ".." / "project", "../presets/alder.lsys",
+                                          "meshes/wall.obj")),
               there);
     // The same relative names from another folder are other files: another species.
     EXPECT_NE(
-        scene::speciesHash(species(tmp / "elsewhere", "../presets/alder.lsys", "meshes/wall.obj")),
+        forest::speciesHash(species(tmp / "elsewhere", "../presets/alder.lsys", "meshes/wall.obj")),
         there);
-    EXPECT_NE(
-        scene::speciesHash(species(tmp / "project", "../presets/alder.lsys", "meshes/boulder.obj")),
-        there);
+    EXPECT_NE(forest::speciesHash(
+                  species(tmp / "project", "../presets/alder.lsys", "meshes/boulder.obj")),
+              there);
 }

@@ -6,6 +6,7 @@
 #include <atomic>
 
 using namespace sylva::graph;
+using sylva::Value;
 
 namespace {
 

@@ -9,6 +9,7 @@
 #include <set>
 
 using namespace sylva::graph;
+using sylva::Value;
 
 namespace {
 

@@ -1,11 +1,11 @@
-#include "engine/graph/value.h"
 #include "engine/util/error.h"
+#include "engine/util/value.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-using sylva::graph::Value;
+using sylva::Value;
 
 TEST(Value, JsonRoundTripIsCanonical) {
     const std::string text = R"({"b":[1,2.5,-3e-7,true,null],"a":{"z":"x\"y\n","y":{}},"c":0.1})";

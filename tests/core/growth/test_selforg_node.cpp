@@ -28,14 +28,14 @@ TEST(SelfOrgNode, NodeReadsParamsAndSeed) {
     graph::NodeDesc desc;
     desc.id = "grow";
     desc.type = "self_organizing";
-    graph::Value::Object o;
+    sylva::Value::Object o;
     o["cycles"] = 6;
     o["environment"] = "space_colonization";
     o["markers"] = 3000;
     o["crown_radius"] = 1.0;
     o["crown_top"] = 3.0;
     o["seed"] = 5;
-    desc.params = graph::Value(o);
+    desc.params = sylva::Value(o);
     const std::filesystem::path base = ".";
     const std::string file = "test.species";
     graph::NodeContext ctx{desc, desc.params, {}, 0, false, base, file, noProgress()};
@@ -51,7 +51,7 @@ TEST(SelfOrgNode, NodeReadsParamsAndSeed) {
     graph::NodeContext over{desc, desc.params, {}, 77, true, base, file, noProgress()};
     EXPECT_TRUE(sameSkeleton(*type->evaluate(over).skeleton, growSelfOrganizing(direct, 77)));
 
-    graph::Value bad = desc.params;
+    sylva::Value bad = desc.params;
     bad.objectRef()["environment"] = "sunlight";
     graph::NodeContext badCtx{desc, bad, {}, 0, false, base, file, noProgress()};
     try {
@@ -77,13 +77,13 @@ TEST(SelfOrgNode, PresetsParseAndValidate) {
         ASSERT_TRUE(in) << name;
         std::stringstream text;
         text << in.rdbuf();
-        const graph::Value doc = graph::Value::parseJson(text.str(), name);
-        const graph::Value* nodes = doc.find("graph")->find("nodes");
+        const sylva::Value doc = sylva::Value::parseJson(text.str(), name);
+        const sylva::Value* nodes = doc.find("graph")->find("nodes");
         ASSERT_NE(nodes, nullptr);
         bool found = false;
-        for (const graph::Value& n : nodes->toArray())
+        for (const sylva::Value& n : nodes->toArray())
             if (n.string("type", "") == "self_organizing") {
-                const graph::Value* params = n.find("params");
+                const sylva::Value* params = n.find("params");
                 ASSERT_NE(params, nullptr);
                 for (const auto& [key, value] : params->toObject()) {
                     const auto& names = selfOrganizingParamNames();

@@ -6,7 +6,7 @@
 #include <QCoreApplication>
 #include <QMouseEvent>
 
-#include "engine/forest/placement.h"
+#include "engine/placement/placement.h"
 #include "engine/util/random.h"
 #include "ui/generation/treegenerator.h"
 
@@ -126,7 +126,7 @@ void BrushTool::dab(const glm::vec3& centre) {
         const auto s = std::uint32_t(document.speciesIndex(t.species));
         for (const DrawnTree& d : mContext.result().trees)
             if (d.species == s && d.mesh && !d.mesh->empty()) {
-                forest::Instance in;
+                placement::Instance in;
                 in.position = t.position;
                 in.rotation = float(glm::radians(t.rotation));
                 in.scale = float(t.scale);

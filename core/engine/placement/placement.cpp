@@ -1,4 +1,4 @@
-#include "engine/forest/placement.h"
+#include "engine/placement/placement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
 
-namespace sylva::forest {
+namespace sylva::placement {
 
 glm::mat4 Instance::transform() const {
     glm::mat4 m = glm::translate(glm::mat4(1.0f), position);
@@ -369,4 +369,4 @@ std::pair<int, int> parseTileSpec(const std::string& text) {
     return {i - 1, n};
 }
 
-} // namespace sylva::forest
+} // namespace sylva::placement

@@ -3,13 +3,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "../common/testwords.h"
 #include "engine/lsystem/derivation.h"
 #include "engine/lsystem/grammar.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "referenceturtle.h"
-#include "testwords.h"
 
 using sylva::lsys::interpret;
 using sylva::lsys::TurtleSettings;

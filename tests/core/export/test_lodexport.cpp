@@ -6,10 +6,10 @@
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 
+#include "../common/testwords.h"
 #include "engine/export/lodexport.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/util/error.h"
-#include "testwords.h"
 
 using namespace sylva;
 

@@ -6,12 +6,12 @@
 
 #include <omp.h>
 
-#include "engine/forest/placement.h"
+#include "engine/placement/placement.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
 using namespace sylva;
-using namespace sylva::forest;
+using namespace sylva::placement;
 
 namespace {
 

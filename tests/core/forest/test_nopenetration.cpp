@@ -1,6 +1,6 @@
 // Issue 20: after adaptation no branch lies inside an obstacle. Every species preset is grown
 // beside the demo's garden wall and boulder (as placed in resources/demo/forest.sylva) and the
-// same wall raised to 12 m, through the same scene::buildForest call as `sylva-cli forest
+// same wall raised to 12 m, through the same forest::buildForest call as `sylva-cli forest
 // --no-lod`, and the result is checked against the obstacle meshes with oracles written here:
 // - no visible skeleton segment crosses an obstacle: Embree (ObstacleScene) and a brute-force
 //   Möller–Trumbore over every triangle both say so;
@@ -25,11 +25,11 @@
 
 #include "engine/environment/obstaclemesh.h"
 #include "engine/environment/obstaclescene.h"
+#include "engine/forest/forestbuild.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/lod.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/nodes/meshnodes.h"
-#include "engine/scene/forestbuild.h"
 #include "presetfile.h"
 
 using namespace sylva;
@@ -174,11 +174,11 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
     graph::SpeciesGraph g = loadPreset(preset);
     graph::NodeDesc* meshNode = g.findNode(g.output);
     EXPECT_TRUE(meshNode && meshNode->type == "tube_mesh") << preset;
-    graph::Value::Object params = meshNode->params.toObject();
-    params["node_ids"] = graph::Value(true);
-    meshNode->params = graph::Value(params);
+    sylva::Value::Object params = meshNode->params.toObject();
+    params["node_ids"] = sylva::Value(true);
+    meshNode->params = sylva::Value(params);
 
-    scene::ForestScene s;
+    forest::ForestScene s;
     s.seed = 20;
     s.species.push_back({preset.stem().string(), g});
     s.obstacles = obstacles();
@@ -186,12 +186,12 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
     // radius into the demo wall, the boulder and the tall wall (both sides), so that small
     // presets touch the obstacles too, and one 1.2 m from the tall wall. Rotations differ so
     // that other sides face them.
-    const float d = std::max(0.3f, 0.5f * scene::measureCrown(g, 1).radius);
+    const float d = std::max(0.3f, 0.5f * forest::measureCrown(g, 1).radius);
     const std::array<glm::vec3, 6> where = {
         glm::vec3(2, 0, -6.5f),        glm::vec3(-5, 0, -7.7f + d),   glm::vec3(12, 0, 12.5f + d),
         glm::vec3(-30, 0, -19.7f + d), glm::vec3(-26, 0, -20.3f - d), glm::vec3(-34, 0, -18.5f)};
     for (std::size_t i = 0; i < where.size(); ++i) {
-        forest::Instance in;
+        placement::Instance in;
         in.species = 0;
         in.position = where[i];
         in.rotation = 1.3f * static_cast<float>(i);
@@ -199,11 +199,11 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
         in.handPlaced = true;
         s.handPlaced.push_back(in);
     }
-    scene::ForestOptions options;
+    forest::ForestOptions options;
     options.useLod = lod;
     s.camera = {0.0f, 30.0f, 150.0f};
-    std::vector<scene::ForestTree> trees;
-    scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
+    std::vector<forest::ForestTree> trees;
+    forest::buildForest(s, options, [&](const std::vector<forest::ForestTree>& batch) {
         trees.insert(trees.end(), batch.begin(), batch.end());
     });
 
@@ -214,7 +214,7 @@ PresetResult checkPreset(const std::filesystem::path& preset, bool lod) {
         meshBoxes.push_back(boxOf(m));
 
     PresetResult r;
-    for (const scene::ForestTree& tree : trees) {
+    for (const forest::ForestTree& tree : trees) {
         ++r.trees;
         r.collidingBefore += tree.adapt.collidingBefore;
         r.hiddenNodes += tree.adapt.hiddenNodes;

@@ -1,10 +1,10 @@
-#include "engine/scene/forestbuild.h"
+#include "engine/forest/forestbuild.h"
 
+#include "engine/forest/treecache.h"
 #include "engine/growth/selforganizing.h"
 #include "engine/mesh/lod.h"
 #include "engine/nodes/meshnodes.h"
 #include "engine/nodes/selforganizingnode.h"
-#include "engine/scene/treecache.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
@@ -17,7 +17,7 @@
 
 #include <omp.h>
 
-namespace sylva::scene {
+namespace sylva::forest {
 
 namespace {
 
@@ -106,7 +106,7 @@ private:
 constexpr float kNeighbourCore = 0.5f;
 
 /// The cache key of one tree (see TreeCache): everything buildTree's result depends on.
-std::uint64_t treeKey(std::uint64_t species, const forest::Instance& in,
+std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
                       const std::vector<env::CrownVolume>& near, const ForestScene& scene,
                       const ForestOptions& options, double cameraDistance) {
     std::uint64_t h = mixSeed(species, options.obstaclesKey);
@@ -181,7 +181,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     // 1. Species: graphs checked, crowns measured once on a sample tree.
     auto t0 = Clock::now();
     std::vector<SpeciesPlan> plans;
-    std::vector<forest::SpeciesSpec> specs;
+    std::vector<placement::SpeciesSpec> specs;
     std::vector<std::uint64_t> speciesKeys;
     if (options.cache) options.cache->beginBuild();
     for (std::size_t i = 0; i < scene.species.size(); ++i) {
@@ -205,20 +205,20 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
 
     // 2. Placement over the whole scene, then the tile.
     t0 = Clock::now();
-    forest::PlacementParams placement;
+    placement::PlacementParams placement;
     placement.seed = scene.seed;
     placement.ground = scene.ground.get();
     placement.obstacles = scene.obstacles.get();
-    forest::PlacementResult placed =
-        forest::placeForest(specs, scene.domains, scene.handPlaced, placement, options.placement);
+    placement::PlacementResult placed = placement::placeForest(
+        specs, scene.domains, scene.handPlaced, placement, options.placement);
     stats.shortfalls = placed.shortfalls;
     stats.treesInScene = placed.instances.size();
     std::vector<std::size_t> selected;
     if (options.tileCount > 1) {
-        const forest::TileGrid grid =
-            forest::makeTileGrid(scene.domains, scene.handPlaced, options.tileCount);
+        const placement::TileGrid grid =
+            placement::makeTileGrid(scene.domains, scene.handPlaced, options.tileCount);
         for (std::size_t i = 0; i < placed.instances.size(); ++i)
-            if (forest::tileOf(grid, placed.instances[i].position) == options.tile)
+            if (placement::tileOf(grid, placed.instances[i].position) == options.tile)
                 selected.push_back(i);
     } else {
         selected.resize(placed.instances.size());
@@ -231,7 +231,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     std::vector<env::CrownVolume> crowns(placed.instances.size());
     float maxRadius = 0.1f;
     for (std::size_t i = 0; i < crowns.size(); ++i) {
-        const forest::Instance& in = placed.instances[i];
+        const placement::Instance& in = placed.instances[i];
         const CrownShape& c = plans[in.species].crown;
         const float s = in.scale * in.growth;
         // A neighbour blocks with the dense core of its crown only: placement lets crowns
@@ -259,7 +259,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         std::map<int, std::vector<std::size_t>> stands; // environment kind → instances
         std::vector<growth::StandTree> standTrees(placed.instances.size());
         for (std::size_t i = 0; i < placed.instances.size(); ++i) {
-            forest::Instance& in = placed.instances[i];
+            placement::Instance& in = placed.instances[i];
             const SpeciesPlan& plan = plans[in.species];
             if (!plan.selfOrganizing) continue;
             const graph::SpeciesGraph& g = scene.species[in.species].graph;
@@ -313,7 +313,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             const std::size_t index = selected[begin + slot];
             const auto thread = static_cast<std::size_t>(omp_get_thread_num());
             try {
-                const forest::Instance& in = placed.instances[index];
+                const placement::Instance& in = placed.instances[index];
                 const SceneSpecies& species = scene.species[in.species];
                 const SpeciesPlan& plan = plans[in.species];
                 ForestTree& tree = batch[slot];
@@ -455,4 +455,4 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     return stats;
 }
 
-} // namespace sylva::scene
+} // namespace sylva::forest

@@ -12,15 +12,15 @@
 #include "engine/environment/adapt.h"
 #include "engine/environment/obstaclescene.h"
 #include "engine/forest/metrics.h"
-#include "engine/forest/placement.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/lod.h"
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/tubemesh.h"
+#include "engine/placement/placement.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
 
-namespace sylva::scene {
+namespace sylva::forest {
 
 class TreeCache;
 
@@ -34,8 +34,8 @@ struct SceneSpecies {
 struct ForestScene {
     std::uint64_t seed = 0;
     std::vector<SceneSpecies> species;
-    std::vector<forest::Domain> domains;
-    std::vector<forest::Instance> handPlaced; ///< species index, position, rotation (radians)...
+    std::vector<placement::Domain> domains;
+    std::vector<placement::Instance> handPlaced; ///< species index, position, rotation (radians)...
     std::shared_ptr<const env::ObstacleScene> obstacles; ///< may be null
     std::shared_ptr<const env::ObstacleScene> ground;    ///< terrain; null = flat ground y = 0
     glm::vec3 camera{0.0f, 20.0f, 80.0f};
@@ -50,7 +50,7 @@ struct ForestOptions {
     bool neighbours = true;     ///< neighbouring crowns count as obstacles
     bool buildMeshes = true;    ///< false: skeletons and metrics only (sylva-cli stats)
     std::size_t batchSize = 64; ///< trees generated in parallel before they are handed on
-    forest::PlacementMethod placement = forest::PlacementMethod::Grid;
+    placement::PlacementMethod placement = placement::PlacementMethod::Grid;
     /// Trees of an earlier build of the same scene to reuse when their inputs are unchanged
     /// (the editor's regeneration after an edit); null: every tree is grown.
     TreeCache* cache = nullptr;
@@ -61,7 +61,7 @@ struct ForestOptions {
 
 /// One finished tree, in its own local frame; `instance.transform()` places it in the world.
 struct ForestTree {
-    forest::Instance instance;
+    placement::Instance instance;
     std::string name; ///< "<species>_<id>"
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).
@@ -84,7 +84,7 @@ struct ForestStats {
     std::size_t trees = 0;        ///< trees of the built tile
     std::size_t vertices = 0, triangles = 0;
     std::size_t collidingTrees = 0, prunedNodes = 0;
-    std::vector<forest::Shortfall> shortfalls;
+    std::vector<placement::Shortfall> shortfalls;
     forest::SceneMetrics metrics;
     std::map<std::string, double> cpuMs;  ///< generate, adapt, mesh
     std::map<std::string, double> wallMs; ///< load, place, build (set by callers too)
@@ -114,4 +114,4 @@ CrownShape measureCrown(const graph::SpeciesGraph& species, std::uint64_t seed,
 ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                         const TreeSink& sink, Progress& progress = noProgress());
 
-} // namespace sylva::scene
+} // namespace sylva::forest

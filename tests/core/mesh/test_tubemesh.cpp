@@ -6,12 +6,12 @@
 
 #include <omp.h>
 
+#include "../common/testwords.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/util/error.h"
 #include "referencetubemesh.h"
-#include "testwords.h"
 
 using namespace sylva;
 using sylva::testing::makeWord;

@@ -29,8 +29,8 @@
 #include "coverageraster.h"
 #include "document/project.h"
 #include "document/scenebuild.h"
+#include "engine/forest/forestbuild.h"
 #include "engine/graph/graph.h"
-#include "engine/scene/forestbuild.h"
 
 using namespace sylva;
 
@@ -70,7 +70,7 @@ struct Outcome {
 
 Outcome compare(const std::string& project, const std::string& pictureName) {
     const doc::Project p = doc::loadProject(QString::fromStdString((kDemo / project).string()));
-    const scene::ForestScene s = doc::makeForestScene(p);
+    const forest::ForestScene s = doc::makeForestScene(p);
     const test::RasterCamera cam =
         test::RasterCamera::lookAt(p.cameraPosition, p.cameraTarget, 60.0, 1920, 1080);
     const char* pictures = std::getenv("SYLVA_LOD_PICTURES");
@@ -91,10 +91,10 @@ Outcome compare(const std::string& project, const std::string& pictureName) {
     std::vector<std::uint8_t> scratch;
     double shiftTouched = 0.0, shiftCentres = 0.0, sumCentres = 0.0;
     std::size_t shiftCount = 0;
-    scene::ForestOptions options;
+    forest::ForestOptions options;
     options.useLod = false;
-    scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
-        for (const scene::ForestTree& t : batch) {
+    forest::buildForest(s, options, [&](const std::vector<forest::ForestTree>& batch) {
+        for (const forest::ForestTree& t : batch) {
             const glm::mat4 model = t.instance.transform();
             Full f{test::coverage(*t.mesh, model, whole, scratch),
                    test::coverage(*t.mesh, model, whole, scratch, false), t.mesh->triangleCount()};
@@ -114,8 +114,8 @@ Outcome compare(const std::string& project, const std::string& pictureName) {
     Outcome o;
     double sum = 0.0;
     options.useLod = true;
-    scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
-        for (const scene::ForestTree& t : batch) {
+    forest::buildForest(s, options, [&](const std::vector<forest::ForestTree>& batch) {
+        for (const forest::ForestTree& t : batch) {
             const glm::mat4 model = t.instance.transform();
             const Full& f = full.at(t.instance.id);
             ++o.trees;

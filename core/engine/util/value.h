@@ -7,7 +7,7 @@
 #include <variant>
 #include <vector>
 
-namespace sylva::graph {
+namespace sylva {
 
 /// A JSON-like parameter value (the engine does not depend on Qt's JSON). Objects keep their
 /// keys sorted so that hashing and printing are deterministic.
@@ -72,4 +72,4 @@ private:
     std::variant<std::monostate, bool, double, std::string, Array, Object> mData;
 };
 
-} // namespace sylva::graph
+} // namespace sylva

@@ -5,7 +5,7 @@
 #include "engine/util/error.h"
 
 using namespace sylva;
-using graph::Value;
+using sylva::Value;
 
 namespace {
 

@@ -10,12 +10,12 @@
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 
+#include "../common/testwords.h"
 #include "engine/export/objwriter.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/lod.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
-#include "testwords.h"
 
 using namespace sylva;
 using exporter::formatFixed;

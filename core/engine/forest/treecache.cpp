@@ -1,10 +1,10 @@
-#include "engine/scene/treecache.h"
+#include "engine/forest/treecache.h"
 
 #include <cstring>
 
 #include "engine/graph/fileparams.h"
 
-namespace sylva::scene {
+namespace sylva::forest {
 
 namespace {
 
@@ -115,4 +115,4 @@ std::size_t TreeCache::size() const {
     return mTrees.size();
 }
 
-} // namespace sylva::scene
+} // namespace sylva::forest

@@ -1,4 +1,4 @@
-#include "engine/graph/value.h"
+#include "engine/util/value.h"
 
 #include "engine/util/error.h"
 
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <string_view>
 
-namespace sylva::graph {
+namespace sylva {
 
 namespace {
 
@@ -495,4 +495,4 @@ std::uint64_t Value::hash() const {
     return h;
 }
 
-} // namespace sylva::graph
+} // namespace sylva

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "../common/testwords.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/leafplacement.h"
 #include "engine/mesh/lod.h"
 #include "engine/util/error.h"
-#include "testwords.h"
 
 using namespace sylva;
 

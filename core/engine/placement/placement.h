@@ -10,7 +10,7 @@
 
 #include "engine/environment/obstaclescene.h"
 
-namespace sylva::forest {
+namespace sylva::placement {
 
 /// What placement needs to know about a species.
 struct SpeciesSpec {
@@ -125,4 +125,4 @@ std::vector<Instance> selectTile(const std::vector<Instance>& instances, const T
 /// \throw InvalidInput "--tile must be i/N with 1 <= i <= N, got '<text>'".
 std::pair<int, int> parseTileSpec(const std::string& text);
 
-} // namespace sylva::forest
+} // namespace sylva::placement

@@ -11,15 +11,15 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "../common/testwords.h"
 #include "engine/export/materials.h"
 #include "engine/export/objwriter.h"
 #include "engine/export/sceneexport.h"
 #include "engine/export/treeexport.h"
-#include "engine/graph/value.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/lod.h"
 #include "engine/util/error.h"
-#include "testwords.h"
+#include "engine/util/value.h"
 
 using namespace sylva;
 
@@ -207,7 +207,7 @@ TEST(SceneExport, ObjAndMtlReadBack) {
 
 TEST(SceneExport, InstanceTables) {
     const Fixture f;
-    const graph::Value json = graph::Value::parseJson(exporter::formatInstancesJson(f.scene));
+    const sylva::Value json = sylva::Value::parseJson(exporter::formatInstancesJson(f.scene));
     EXPECT_EQ(json.string("format", ""), "sylva-instances");
     const auto& rows = json.find("instances")->toArray();
     ASSERT_EQ(rows.size(), 3u);

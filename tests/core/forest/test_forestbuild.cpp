@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <set>
 
+#include "engine/forest/forestbuild.h"
 #include "engine/mesh/lod.h"
-#include "engine/scene/forestbuild.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
 #include "presetfile.h"
@@ -17,16 +17,16 @@ using namespace sylva;
 
 namespace {
 
-scene::ForestScene smallForest() {
+forest::ForestScene smallForest() {
     graph::registerBuiltinNodeTypes();
-    scene::ForestScene s;
+    forest::ForestScene s;
     s.seed = 7;
-    scene::SceneSpecies beech;
+    forest::SceneSpecies beech;
     beech.name = "beech";
     beech.graph = sylva::testing::loadPreset(std::filesystem::path(SYLVA_PRESETS_DIR) /
                                              "european-beech.json");
     s.species.push_back(std::move(beech));
-    forest::Domain d;
+    placement::Domain d;
     d.min = {-20.0f, -20.0f};
     d.max = {20.0f, 20.0f};
     d.counts = {{"beech", 3}};
@@ -35,10 +35,10 @@ scene::ForestScene smallForest() {
     return s;
 }
 
-std::vector<scene::ForestTree> build(const scene::ForestScene& s,
-                                     const scene::ForestOptions& options) {
-    std::vector<scene::ForestTree> trees;
-    scene::buildForest(s, options, [&](const std::vector<scene::ForestTree>& batch) {
+std::vector<forest::ForestTree> build(const forest::ForestScene& s,
+                                      const forest::ForestOptions& options) {
+    std::vector<forest::ForestTree> trees;
+    forest::buildForest(s, options, [&](const std::vector<forest::ForestTree>& batch) {
         trees.insert(trees.end(), batch.begin(), batch.end());
     });
     return trees;
@@ -54,10 +54,10 @@ bool sameMesh(const mesh::Mesh& a, const mesh::Mesh& b) {
 } // namespace
 
 TEST(ForestBuild, TreesCarryTheSettingsAndDistanceTheirMeshWasMadeWith) {
-    const scene::ForestScene s = smallForest();
-    const std::vector<scene::ForestTree> trees = build(s, {});
+    const forest::ForestScene s = smallForest();
+    const std::vector<forest::ForestTree> trees = build(s, {});
     ASSERT_EQ(trees.size(), 3u);
-    for (const scene::ForestTree& tree : trees) {
+    for (const forest::ForestTree& tree : trees) {
         ASSERT_TRUE(tree.meshSettings) << tree.name;
         ASSERT_TRUE(tree.skeleton) << tree.name;
         EXPECT_EQ(tree.meshSettings->seed, mixSeed(tree.instance.seed, salt::kTreeMesh));
@@ -82,16 +82,16 @@ TEST(ForestBuild, TreesCarryTheSettingsAndDistanceTheirMeshWasMadeWith) {
 }
 
 TEST(ForestBuild, WithoutTheCameraLodTheSettingsAloneMakeTheMesh) {
-    scene::ForestOptions options;
+    forest::ForestOptions options;
     options.useLod = false;
-    for (const scene::ForestTree& tree : build(smallForest(), options)) {
+    for (const forest::ForestTree& tree : build(smallForest(), options)) {
         ASSERT_TRUE(tree.meshSettings);
         EXPECT_EQ(tree.meshCameraDistance, 0.0);
         EXPECT_TRUE(sameMesh(mesh::buildTreeMesh(*tree.skeleton, *tree.meshSettings), *tree.mesh))
             << tree.name;
     }
     options.buildMeshes = false;
-    for (const scene::ForestTree& tree : build(smallForest(), options))
+    for (const forest::ForestTree& tree : build(smallForest(), options))
         EXPECT_FALSE(tree.meshSettings) << tree.name;
 }
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <unordered_map>
 
-#include "engine/scene/forestbuild.h"
+#include "engine/forest/forestbuild.h"
 
-namespace sylva::scene {
+namespace sylva::forest {
 
 /// Finished trees kept between builds of one scene, so that an editor's regeneration after an
 /// edit regrows only the trees whose inputs changed. A tree's key hashes everything its result
@@ -52,4 +52,4 @@ private:
 /// 64-bit FNV-1a of a species graph's content (see TreeCache).
 std::uint64_t speciesHash(const graph::SpeciesGraph& graph);
 
-} // namespace sylva::scene
+} // namespace sylva::forest

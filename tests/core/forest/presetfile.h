@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "engine/graph/graph.h"
-#include "engine/graph/value.h"
+#include "engine/util/value.h"
 
 namespace sylva::testing {
 
@@ -15,24 +15,24 @@ inline graph::SpeciesGraph loadPreset(const std::filesystem::path& path) {
     std::ifstream in(path);
     std::stringstream text;
     text << in.rdbuf();
-    const graph::Value root = graph::Value::parseJson(text.str(), path.string());
+    const sylva::Value root = sylva::Value::parseJson(text.str(), path.string());
     graph::SpeciesGraph g;
     g.name = root.string("name", path.stem().string());
     g.baseDir = path.parent_path();
     g.sourceFile = path.string();
-    const graph::Value& graph = *root.find("graph");
-    for (const graph::Value& n : graph.find("nodes")->toArray()) {
+    const sylva::Value& graph = *root.find("graph");
+    for (const sylva::Value& n : graph.find("nodes")->toArray()) {
         graph::NodeDesc d;
         d.id = n.string("id", "");
         d.type = n.string("type", "");
-        if (const graph::Value* p = n.find("params")) d.params = *p;
-        if (const graph::Value* ins = n.find("inputs"))
-            for (const graph::Value& i : ins->toArray())
+        if (const sylva::Value* p = n.find("params")) d.params = *p;
+        if (const sylva::Value* ins = n.find("inputs"))
+            for (const sylva::Value& i : ins->toArray())
                 d.inputs.push_back(i.toString());
         g.nodes.push_back(std::move(d));
     }
     g.output = graph.string("output", g.nodes.back().id);
-    if (const graph::Value* traits = root.find("traits"))
+    if (const sylva::Value* traits = root.find("traits"))
         g.traits.crownRadius = traits->number("crown_radius", 0.0);
     return g;
 }
