@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Checks the include graph between the code's rooms against the layering ARCHITECTURE.md
+draws: every `#include "engine/<folder>/..."` inside core/engine and every
+`#include "ui/<folder>/..."` inside ui/ must follow an arrow of ALLOWED below, and the engine
+must include no Qt, the document no Qt Widgets. Prints each edge that breaks the rule with the
+file and line, and exits 1. Usage: check-layers.py [repository root]
+"""
+import os
+import re
+import sys
+
+# folder -> the folders it may include (its own is always allowed). Keep in step with the
+# diagrams of ARCHITECTURE.md; an arrow added here is a design decision, say why there.
+ENGINE = {
+    "util": set(),
+    "skeleton": {"util"},
+    "lsystem": {"skeleton", "util"},
+    "environment": {"skeleton", "util"},
+    "mesh": {"skeleton", "util"},
+    "growth": {"environment", "skeleton", "util"},
+    "placement": {"environment", "util"},
+    "graph": {"mesh", "skeleton", "util"},
+    "export": {"mesh", "skeleton", "util"},
+    "nodes": {"graph", "lsystem", "growth", "environment", "mesh", "skeleton", "util"},
+    "forest": {"placement", "nodes", "graph", "lsystem", "growth", "environment", "mesh",
+               "skeleton", "util"},
+}
+UI = {
+    "generation": set(),
+    "grammar": set(),
+    "nodes": set(),
+    "document": {"generation"},
+    "viewport": {"generation"},
+    "scripting": {"document", "generation", "nodes", "viewport", "grammar"},
+}
+FORBIDDEN = {
+    "core/engine": re.compile(r'#include\s*<Q'),
+    "core/document": re.compile(r'#include\s*<(QWidget|QtWidgets|QMainWindow|QDialog|QAction)'),
+}
+
+
+def sources(folder):
+    for d, _, files in os.walk(folder):
+        for f in sorted(files):
+            if f.endswith((".h", ".cpp")):
+                yield os.path.join(d, f)
+
+
+def check(root):
+    problems = []
+    for base, prefix, allowed in (("core/engine", "engine", ENGINE), ("ui", "ui", UI)):
+        pattern = re.compile(r'#include\s*"' + prefix + r'/([a-z]+)/')
+        for path in sources(os.path.join(root, base)):
+            rel = os.path.relpath(path, os.path.join(root, base))
+            parts = rel.split(os.sep)
+            if len(parts) < 2:
+                continue  # files at the top of ui/ assemble rooms: anything below them
+            room = parts[0]
+            if room not in allowed:
+                problems.append(f"{base}/{room}: a room the layering does not know; add it to "
+                                f"scripts/check-layers.py and ARCHITECTURE.md")
+                continue
+            for n, line in enumerate(open(path, encoding="utf-8"), 1):
+                m = pattern.search(line)
+                if m and m.group(1) != room and m.group(1) not in allowed[room]:
+                    problems.append(f"{base}/{rel}:{n}: {room} must not include {m.group(1)}")
+    for base, pattern in FORBIDDEN.items():
+        for path in sources(os.path.join(root, base)):
+            for n, line in enumerate(open(path, encoding="utf-8"), 1):
+                if pattern.search(line):
+                    problems.append(f"{os.path.relpath(path, root)}:{n}: {line.strip()} "
+                                    f"is not allowed in {base}")
+    return sorted(set(problems))
+
+
+if __name__ == "__main__":
+    root = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.dirname(
+        os.path.abspath(__file__)))
+    found = check(root)
+    for p in found:
+        print(p)
+    print(f"layers: {len(found)} problem(s)")
+    sys.exit(1 if found else 0)
