@@ -146,7 +146,7 @@ QList<TreeId> Document::duplicateTrees(const QList<TreeId>& ids, glm::vec3 offse
         ProjectInstance copy = tree(id);
         copy.position += offset;
         // A fresh seed that depends only on the document's state, so scripts are repeatable.
-        copy.seed = mixSeed(copy.seed, mNextTreeId) % 1000000007ull;
+        copy.seed = treeSeed(mixSeed(copy.seed, mNextTreeId));
         const TreeId newId = takeNextTreeId();
         mUndo.push(new cmd::AddTree(*this, static_cast<int>(mTreeIds.size()), newId, copy));
         created << newId;

@@ -4,6 +4,7 @@
 #include "engine/graph/vectorparam.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
+#include "engine/util/random.h"
 
 #include <QDir>
 #include <QFile>
@@ -141,6 +142,10 @@ const ProjectSpecies* Project::findSpecies(const std::string& name) const {
     for (const ProjectSpecies& s : species)
         if (s.name == name) return &s;
     return nullptr;
+}
+
+std::uint64_t Project::newTreeSeed(std::size_t treesBefore) const {
+    return treeSeed(mixSeed(seed, treesBefore + 1));
 }
 
 bool Project::usesSpecies(const std::string& name) const {

@@ -50,6 +50,14 @@ struct ProjectInstance {
     bool operator==(const ProjectInstance&) const = default;
 };
 
+/// Tree seeds are kept below this prime: short to read and type, and exact through JSON's
+/// doubles.
+inline constexpr std::uint64_t kTreeSeedLimit = 1000000007ull;
+/// A tree seed made from any 64-bit value (a mixed seed, a random draw).
+constexpr std::uint64_t treeSeed(std::uint64_t any) {
+    return any % kTreeSeedLimit;
+}
+
 /// An obstacle mesh with its transform (rotate in degrees about x, y, z, applied in that order).
 struct ProjectObstacle {
     std::string file; ///< relative to the project file
@@ -77,6 +85,9 @@ struct Project {
     /// Whether any tree grows from species \p name: a hand-placed tree of it, or a domain that
     /// scatters at least one. An edit of a species nobody uses regrows nothing.
     bool usesSpecies(const std::string& name) const;
+    /// The seed of a tree added without one after \p treesBefore others: it depends only on
+    /// the project seed and that count, so scripts and the editor's menus are repeatable.
+    std::uint64_t newTreeSeed(std::size_t treesBefore) const;
     bool operator==(const Project&) const = default;
 };
 

@@ -55,7 +55,7 @@ doc::ProjectInstance newTree(const doc::Project& project, std::size_t treesBefor
     t.rotation = rotation;
     t.scale = scale;
     t.growth = growth;
-    t.seed = seed ? *seed : mixSeed(project.seed, treesBefore + 1) % 1000000007ull;
+    t.seed = seed ? *seed : project.newTreeSeed(treesBefore);
     return t;
 }
 

@@ -87,7 +87,7 @@ void DocumentActions::addTreeAtTarget() {
         t.species = mDocument.project().species.front().name;
         const glm::vec3 target = mTarget();
         t.position = {target.x, 0.0f, target.z};
-        t.seed = mixSeed(mDocument.project().seed, mDocument.treeIds().size() + 1) % 1000000007ull;
+        t.seed = mDocument.project().newTreeSeed(mDocument.treeIds().size());
         mDocument.selectTrees({mDocument.addTree(t)});
     } catch (...) {
         reportCurrentError();

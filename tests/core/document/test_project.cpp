@@ -2,6 +2,7 @@
 #include "document/project.h"
 #include "document/scenebuild.h"
 #include "engine/util/error.h"
+#include "engine/util/random.h"
 
 #include <gtest/gtest.h>
 
@@ -254,4 +255,22 @@ TEST(Project, UsesSpeciesOfItsTreesAndOfDomainsThatScatterThem) {
     EXPECT_FALSE(p.usesSpecies("oak"));   // a domain that scatters none
     EXPECT_FALSE(p.usesSpecies("pine"));  // in the project, on no tree
     EXPECT_FALSE(p.usesSpecies("maple")); // not in the project at all
+}
+
+// A tree added without a seed gets one from the project seed and the trees before it, below
+// the seed limit; the menus, the Python APIs and the document's duplicate all use this one
+// definition, and the values are part of the byte-identical guarantee (pinned here).
+TEST(Project, NewTreeSeedsDependOnlyOnTheProjectSeedAndTheCount) {
+    doc::Project p;
+    p.seed = 42;
+    EXPECT_EQ(p.newTreeSeed(0), doc::treeSeed(mixSeed(42, 1)));
+    EXPECT_EQ(p.newTreeSeed(0), 478109794u); // what every release so far gave
+    EXPECT_NE(p.newTreeSeed(0), p.newTreeSeed(1));
+    for (std::size_t n = 0; n < 100; ++n)
+        EXPECT_LT(p.newTreeSeed(n), doc::kTreeSeedLimit);
+    doc::Project q = p;
+    q.instances.resize(3); // the count is the caller's: the trees themselves do not matter
+    EXPECT_EQ(q.newTreeSeed(5), p.newTreeSeed(5));
+    q.seed = 43;
+    EXPECT_NE(q.newTreeSeed(5), p.newTreeSeed(5));
 }

@@ -8,6 +8,7 @@
 
 #include "engine/placement/placement.h"
 #include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
 #include "ui/generation/treegenerator.h"
 
 namespace sylva::ui {
@@ -64,7 +65,8 @@ void BrushTool::dab(const glm::vec3& centre) {
         total = double(species.size());
     }
     // Deterministic for a given document, stroke and dab: the same gesture paints the same.
-    Rng rng(mixSeed(mixSeed(document.project().seed, mStrokes), mStroke.size() + 7919));
+    Rng rng(
+        mixSeed(mixSeed(document.project().seed, mStrokes), mStroke.size() + salt::kBrushStroke));
     const float area = float(M_PI) * mContext.brush.radius * mContext.brush.radius;
     const int candidates = std::max(1, int(std::lround(mContext.brush.density * area / 100.0f)));
 
@@ -102,7 +104,7 @@ void BrushTool::dab(const glm::vec3& centre) {
         t.species = species[s].name;
         t.rotation = 360.0 * rng.uniform();
         t.scale = 0.95 + 0.1 * rng.uniform();
-        t.seed = rng.next() % 1000000007ull;
+        t.seed = doc::treeSeed(rng.next());
         constexpr int kTries = 20;
         bool placed = false;
         for (int attempt = 0; attempt < kTries && !placed; ++attempt) {

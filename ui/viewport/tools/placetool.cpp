@@ -5,6 +5,7 @@
 
 #include "document/document.h"
 #include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
 
 namespace sylva::ui {
 
@@ -32,12 +33,12 @@ void PlaceTool::click(QMouseEvent* event) {
             "sylva::ui::ToolController", "A tree cannot stand inside an obstacle's footprint"));
         return;
     }
-    Rng rng(mixSeed(document.project().seed, document.treeIds().size() + 104729));
+    Rng rng(mixSeed(document.project().seed, document.treeIds().size() + salt::kPlaceTool));
     doc::ProjectInstance t;
     t.species = name;
     t.position = *g;
     t.rotation = 360.0 * rng.uniform();
-    t.seed = rng.next() % 1000000007ull;
+    t.seed = doc::treeSeed(rng.next());
     document.selectTrees({document.addTree(t)});
 }
 
