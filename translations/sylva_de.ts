@@ -252,6 +252,17 @@
     </message>
 </context>
 <context>
+    <name>TextureImage</name>
+    <message>
+        <source>Texture %1 cannot be read (%2); drawn without it</source>
+        <translation>Textur %1 kann nicht gelesen werden (%2); ohne sie gezeichnet</translation>
+    </message>
+    <message>
+        <source>Texture %1 is %2 × %3 pixels, more than the %4 pixels (16384 × 16384) the editor decodes; drawn without it (exports copy it unchanged). Use a smaller texture.</source>
+        <translation>Textur %1 hat %2 × %3 Pixel, mehr als die %4 Pixel (16384 × 16384), die der Editor dekodiert; ohne sie gezeichnet (Exporte kopieren sie unverändert). Verwenden Sie eine kleinere Textur.</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Sylva, the procedural tree editor.</source>

@@ -252,6 +252,17 @@
     </message>
 </context>
 <context>
+    <name>TextureImage</name>
+    <message>
+        <source>Texture %1 cannot be read (%2); drawn without it</source>
+        <translation>La texture %1 ne peut pas être lue (%2) ; dessiné sans elle</translation>
+    </message>
+    <message>
+        <source>Texture %1 is %2 × %3 pixels, more than the %4 pixels (16384 × 16384) the editor decodes; drawn without it (exports copy it unchanged). Use a smaller texture.</source>
+        <translation>La texture %1 fait %2 × %3 pixels, plus que les %4 pixels (16384 × 16384) que l’éditeur décode ; dessiné sans elle (les exports la copient telle quelle). Utilisez une texture plus petite.</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Sylva, the procedural tree editor.</source>
