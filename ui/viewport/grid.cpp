@@ -12,20 +12,13 @@ namespace sylva::ui {
 
 void Grid::initialize(QOpenGLFunctions_3_3_Core* gl) {
     mGl = gl;
-    mGl->glGenVertexArrays(1, &mVao);
-    mGl->glGenBuffers(1, &mVbo);
-    mGl->glBindVertexArray(mVao);
-    mGl->glBindBuffer(GL_ARRAY_BUFFER, mVbo);
-    setLineVertexAttributes(*mGl);
-    mGl->glBindVertexArray(0);
+    createLineBuffers(*mGl, mVao, mVbo);
     mExtent = 0.0f;
 }
 
 void Grid::release() {
     if (!mGl) return;
-    mGl->glDeleteVertexArrays(1, &mVao);
-    mGl->glDeleteBuffers(1, &mVbo);
-    mVao = mVbo = 0;
+    deleteBuffers(*mGl, mVao, mVbo);
     mGl = nullptr;
 }
 

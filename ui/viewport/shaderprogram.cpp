@@ -70,4 +70,19 @@ void setLineVertexAttributes(QOpenGLFunctions_3_3_Core& gl) {
                              reinterpret_cast<void*>(3 * sizeof(float)));
 }
 
+void createLineBuffers(QOpenGLFunctions_3_3_Core& gl, GLuint& vao, GLuint& vbo) {
+    gl.glGenVertexArrays(1, &vao);
+    gl.glGenBuffers(1, &vbo);
+    gl.glBindVertexArray(vao);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    setLineVertexAttributes(gl);
+    gl.glBindVertexArray(0);
+}
+
+void deleteBuffers(QOpenGLFunctions_3_3_Core& gl, GLuint& vao, GLuint& vbo) {
+    gl.glDeleteVertexArrays(1, &vao);
+    gl.glDeleteBuffers(1, &vbo);
+    vao = vbo = 0;
+}
+
 } // namespace sylva::ui

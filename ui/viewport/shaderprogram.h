@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QString>
+#include <qopengl.h>
 
 #include <glm/glm.hpp>
 
@@ -30,5 +31,10 @@ void setUniform(QOpenGLShaderProgram& program, const char* name, const glm::mat4
 /// Points the bound vertex array's attributes 0 (position) and 1 (colour) at the bound buffer's
 /// interleaved 7 floats per vertex, as shaders/line.vert reads them.
 void setLineVertexAttributes(QOpenGLFunctions_3_3_Core& gl);
+
+/// A vertex array and its buffer of line vertices in that layout (the grid's, the overlays').
+/// \p vao and \p vbo are made by createLineBuffers and deleted (and zeroed) by deleteBuffers.
+void createLineBuffers(QOpenGLFunctions_3_3_Core& gl, GLuint& vao, GLuint& vbo);
+void deleteBuffers(QOpenGLFunctions_3_3_Core& gl, GLuint& vao, GLuint& vbo);
 
 } // namespace sylva::ui
