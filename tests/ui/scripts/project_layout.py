@@ -1,7 +1,8 @@
 # win.project() right after the editor opens answers for the window as it will be shown: the
 # first thing this script does is ask, before the event loop has laid out the docks (the
 # viewport was still 557 px wide, later 393: a point drawn at x=537 was reported at x=619, and
-# an outside tool clicking there missed). The same after a resize. Run by run_scripts.sh.
+# an outside tool clicking there missed). The same after a resize and after the species
+# editor's dock opens. Run by run_scripts.sh.
 import sylva
 
 doc = sylva.document()
@@ -23,5 +24,7 @@ def check(when):
 check("after opening")
 win.resize(1200, 800)
 check("after a resize")
+win.edit_species(doc.trees()[0].species)  # the Species Editor's dock takes space from the view
+check("after opening the species editor")
 print("project() before the layout: ok")
 sylva.quit(0)
