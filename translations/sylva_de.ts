@@ -613,6 +613,10 @@
         <translation>Ctrl+E</translation>
     </message>
     <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
         <source>Nothing to export yet.</source>
         <translation>Noch nichts zu exportieren.</translation>
     </message>

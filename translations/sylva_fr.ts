@@ -641,6 +641,10 @@
         <translation>Ctrl+E</translation>
     </message>
     <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
         <source>Save s&amp;creenshot…</source>
         <translation>Enregistrer une ca&amp;pture d&apos;écran…</translation>
     </message>

@@ -32,7 +32,6 @@
 #include "document/errormessage.h"
 #include "document/filerefs.h"
 #include "document/presetlibrary.h"
-#include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "ui/document/documentactions.h"
 #include "ui/document/messagespanel.h"
@@ -46,7 +45,6 @@
 #include "ui/filedialogs.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/generation/exportshown.h"
-#include "ui/generation/scenegenerator.h"
 #include "ui/helpmenu.h"
 #include "ui/languagemenu.h"
 #include "ui/nodes/nodegraphscene.h"
@@ -67,7 +65,7 @@ using doc::PresetLibrary;
 
 namespace {
 QString errorText() {
-    return QString::fromStdString(doc::describeError(std::current_exception()).message);
+    return QString::fromStdString(doc::currentErrorMessage());
 }
 } // namespace
 
@@ -230,8 +228,8 @@ void MainWindow::createDocks() {
     dock(QStringLiteral("undoDock"), tr("Undo History"), mUndoView, Qt::RightDockWidgetArea);
 
     // Tuning a species: the graph, the grammar and a live preview below the viewport, the
-    // selected node's parameters on the right. Shown by Species ▸ Edit Species (or a double
-    // click on a species in the outliner); closed they cost nothing.
+    // selected node's parameters on the right. Shown by Scene ▸ Edit species… (Ctrl+Shift+E);
+    // closed they cost nothing.
     mWorkbench = new SpeciesWorkbench(*mDocument, this);
     mSpeciesRegen = new QTimer(this);
     mSpeciesRegen->setSingleShot(true);
@@ -402,7 +400,7 @@ void MainWindow::createMenus() {
         editSpecies(name);
     });
     editSpeciesAction->setObjectName(QStringLiteral("actionEditSpecies"));
-    editSpeciesAction->setShortcut(QKeySequence(tr("Ctrl+E")));
+    editSpeciesAction->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
     scene->addActions({mDocumentActions->addTreeAction(), mDocumentActions->importObstacleAction(),
                        mDocumentActions->addDomainAction()});
 
@@ -413,7 +411,6 @@ void MainWindow::createMenus() {
     menuBar()->addMenu(presets);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
-    mViewMenu = view;
     view->setObjectName(QStringLiteral("viewMenu"));
     QAction* frame =
         view->addAction(tr("&Frame selection or all"), this, &MainWindow::frameSelectionOrAll);

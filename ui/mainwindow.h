@@ -112,7 +112,6 @@ public:
     /// `sylva-cli forest` (the document's project) writes it.
     bool exportTo(const QString& path);
     /// What File ▸ Export takes from a project (exportShown's options).
-    using ExportOptions = ui::ExportOptions;
     bool exportTo(const QString& path, const ExportOptions& options);
 
     /// The species file previewed, or the document's file.
@@ -197,7 +196,6 @@ private:
     QAction* mExportViewLodAction = nullptr;
     std::map<QString, QDockWidget*> mDocks;
     QMenu* mPresetsMenu = nullptr;
-    QMenu* mViewMenu = nullptr;
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
     QAction* mAutoReloadAction = nullptr;

@@ -19,4 +19,10 @@ struct ErrorReport {
 /// messages that carry no file of their own ("generating alder.json").
 ErrorReport describeError(std::exception_ptr error, const std::string& context = {});
 
+/// The user's message for the exception being handled (inside a catch block): what the
+/// editor's action boundaries show.
+inline std::string currentErrorMessage() {
+    return describeError(std::current_exception()).message;
+}
+
 } // namespace sylva::doc

@@ -49,20 +49,19 @@ private Q_SLOTS:
         // In front, behind the camera, far to the side, in front again but hidden.
         const std::vector<Bounds> bounds = {tree(0, 0), tree(0, 30), tree(500, 0), tree(1, -5)};
         const std::vector<bool> drawn = {true, true, true, false};
-        const std::vector<TreeDraw> list = buildDrawList(view(), 4, drawn, bounds);
+        const std::vector<TreeDraw> list = buildDrawList(view(), drawn, bounds);
         QCOMPARE(list.size(), std::size_t(1));
         QCOMPARE(list[0].index, std::size_t(0));
     }
 
     void emptyBoxesAreNotDrawn() {
-        const std::vector<TreeDraw> list = buildDrawList(view(), 1, {true}, {Bounds{}});
+        const std::vector<TreeDraw> list = buildDrawList(view(), {true}, {Bounds{}});
         QVERIFY(list.empty());
     }
 
     void nearestFirstTiesByIndex() {
         const std::vector<Bounds> bounds = {tree(0, -40), tree(0, 0), tree(0, -10), tree(0, 0)};
-        const std::vector<TreeDraw> list =
-            buildDrawList(view(), 4, {true, true, true, true}, bounds);
+        const std::vector<TreeDraw> list = buildDrawList(view(), {true, true, true, true}, bounds);
         QCOMPARE(list.size(), std::size_t(4));
         QCOMPARE(list[0].index, std::size_t(1));
         QCOMPARE(list[1].index, std::size_t(3)); // the same distance: by index
@@ -75,7 +74,7 @@ private Q_SLOTS:
 
     void levelsFollowTheHeightOnScreen() {
         const std::vector<Bounds> bounds = {tree(0, 0), tree(0, -3000)};
-        std::vector<TreeDraw> list = buildDrawList(view(), 2, {true, true}, bounds);
+        std::vector<TreeDraw> list = buildDrawList(view(), {true, true}, bounds);
         QCOMPARE(list.size(), std::size_t(2));
         QCOMPARE(list[0].level, 0); // 10 m away: full detail
         const int expected = ViewLod::levelFor(
@@ -85,15 +84,14 @@ private Q_SLOTS:
         // With the distance LOD off every tree is drawn at full detail.
         DrawListView off = view();
         off.levels = false;
-        list = buildDrawList(off, 2, {true, true}, bounds);
+        list = buildDrawList(off, {true, true}, bounds);
         QCOMPARE(list.size(), std::size_t(2));
         QCOMPARE(list[1].level, 0);
     }
 
     void treesWithoutABoxAreDrawnFirstAtFullDetail() {
         // The trees' boxes lag behind (fewer than trees): drawn, distance 0, level 0.
-        const std::vector<TreeDraw> list =
-            buildDrawList(view(), 3, {true, true, false}, {tree(0, 0)});
+        const std::vector<TreeDraw> list = buildDrawList(view(), {true, true, false}, {tree(0, 0)});
         QCOMPARE(list.size(), std::size_t(2));
         QCOMPARE(list[0].index, std::size_t(1));
         QCOMPARE(list[0].distance, 0.0f);

@@ -1,5 +1,6 @@
 // FrameMeter: frames measured on a shown viewport while the view orbits.
 #include <QDir>
+#include <QSignalSpy>
 #include <QTest>
 
 #include "engine/mesh/mesh.h"
@@ -31,9 +32,12 @@ private Q_SLOTS:
         QCOMPARE(none.fps, 0.0);
         QCOMPARE(view.camera().eye(), eye); // no frame, no orbit
 
+        // Each measured frame is a real one: the view swapped at least three frames (the meter's
+        // 10 s guard would otherwise end each wait with nothing drawn).
+        QSignalSpy swapped(&view, &Viewport::frameSwapped);
         const FrameStats stats = meter.measure(3);
-        QVERIFY(stats.msPerFrame > 0.0);
-        QVERIFY(std::abs(stats.fps * stats.msPerFrame - 1000.0) < 1e-6);
+        QVERIFY2(swapped.count() >= 3, qPrintable(QString::number(swapped.count())));
+        QVERIFY(stats.msPerFrame > 0.0 && stats.msPerFrame < 10000.0);
         QVERIFY(stats.cpuMsPerFrame >= stats.guiCpuMsPerFrame * 0.99);
         QCOMPARE(stats.triangles, std::size_t(0)); // the shown result's: the caller's to fill
         QVERIFY(view.camera().eye() != eye);       // it orbited

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 #include <QAction>
@@ -197,6 +198,22 @@ private Q_SLOTS:
     }
 
     void cleanupTestCase() { mWindow.reset(); }
+
+    /// No two of the window's actions share a shortcut: Qt fires neither of an ambiguous pair
+    /// (Export and Edit species both had Ctrl+E, and the keys did nothing).
+    void everyShortcutIsUnique() {
+        std::map<QString, QString> owner;
+        for (const QAction* a : mWindow->findChildren<QAction*>()) {
+            for (const QKeySequence& k : a->shortcuts()) {
+                const QString key = k.toString(QKeySequence::PortableText);
+                const auto [it, fresh] = owner.emplace(key, a->text());
+                QVERIFY2(fresh || it->second == a->text(),
+                         qPrintable(QStringLiteral("%1 is both '%2' and '%3'")
+                                        .arg(key, it->second, a->text())));
+            }
+        }
+        QVERIFY(owner.count(QStringLiteral("Ctrl+Shift+E")) == 1);
+    }
 
     /// The tree is drawn: compared with the same view without the mesh, many pixels change,
     /// they are bark/leaf coloured, centred, tall (framed) and not cut by the border.

@@ -11,7 +11,6 @@
 #include "document/errormessage.h"
 #include "document/presetlibrary.h"
 #include "engine/util/error.h"
-#include "engine/util/random.h"
 
 namespace sylva::ui {
 
@@ -42,7 +41,7 @@ DocumentActions::DocumentActions(doc::Document& document, std::function<glm::vec
 }
 
 void DocumentActions::reportCurrentError() {
-    Q_EMIT failed(QString::fromStdString(doc::describeError(std::current_exception()).message));
+    Q_EMIT failed(QString::fromStdString(doc::currentErrorMessage()));
 }
 
 void DocumentActions::deleteSelection() {

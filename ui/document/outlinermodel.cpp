@@ -3,6 +3,7 @@
 #include <QFileInfo>
 
 #include "document/errormessage.h"
+#include "document/speciesgraphedit.h"
 
 namespace sylva::ui {
 
@@ -55,11 +56,10 @@ void OutlinerModel::readNodes(int only) {
         QStringList nodes;
         try {
             const sylva::Value g = mDocument.speciesGraph(s.name);
-            if (const sylva::Value* list = g.find("nodes"); list && list->isArray())
-                for (const sylva::Value& n : list->toArray())
-                    nodes << QStringLiteral("%1 (%2)").arg(
-                        QString::fromStdString(n.string("id", "?")),
-                        QString::fromStdString(n.string("type", "?")));
+            for (const sylva::Value& n : doc::graphNodes(g))
+                nodes << QStringLiteral("%1 (%2)").arg(
+                    QString::fromStdString(n.string("id", "?")),
+                    QString::fromStdString(n.string("type", "?")));
         } catch (const std::exception& e) {
             nodes << tr("cannot read: %1").arg(QString::fromUtf8(e.what()));
         }
@@ -226,8 +226,7 @@ bool OutlinerModel::setData(const QModelIndex& index, const QVariant& value, int
                                     value.toString().trimmed().toStdString());
             return true;
         } catch (...) {
-            Q_EMIT editFailed(
-                QString::fromStdString(doc::describeError(std::current_exception()).message));
+            Q_EMIT editFailed(QString::fromStdString(doc::currentErrorMessage()));
         }
     }
     return false;

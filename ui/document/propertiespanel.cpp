@@ -80,7 +80,7 @@ void PropertiesPanel::apply(const std::function<void()>& edit) {
     try {
         edit();
     } catch (...) {
-        Q_EMIT failed(QString::fromStdString(doc::describeError(std::current_exception()).message));
+        Q_EMIT failed(QString::fromStdString(doc::currentErrorMessage()));
         refresh(); // back to the document's value
     }
 }

@@ -22,7 +22,8 @@ public:
     /// Enters the preview of \p path and generates it; a run still going is superseded (its
     /// result dropped).
     void start(const QString& path);
-    /// Asks the job to stop; dropped() follows. The last good result stays.
+    /// Asks a running job to stop (dropped() follows; nothing does when none runs). The last
+    /// good result stays.
     void cancel();
     /// cancel() while the job still runs; a job that already ended hands out its result.
     void cancelIfRunning();

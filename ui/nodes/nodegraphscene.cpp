@@ -412,7 +412,7 @@ QString NodeGraphScene::copySelection() const {
         return {};
     }
     sylva::Value::Array out;
-    for (const sylva::Value& n : g.toObject().at("nodes").toArray()) {
+    for (const sylva::Value& n : doc::graphNodes(g)) {
         const QString id = QString::fromStdString(n.string("id", ""));
         if (!ids.contains(id)) continue;
         sylva::Value::Object copy{{"id", n.string("id", "")},

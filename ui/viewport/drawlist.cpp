@@ -27,16 +27,15 @@ bool intersectsFrustum(const std::array<glm::vec4, 6>& planes, const Bounds& b) 
     return true;
 }
 
-std::vector<TreeDraw> buildDrawList(const DrawListView& view, std::size_t count,
-                                    const std::vector<bool>& drawn,
+std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<bool>& drawn,
                                     const std::vector<Bounds>& bounds) {
     // Frustum culling: a tree whose world box lies outside one of the six planes is not drawn
     // (a forest seen from inside draws only what is in front of the camera).
     const std::array<glm::vec4, 6> planes = frustumPlanes(view.viewProj);
     std::vector<TreeDraw> order;
-    order.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (i >= drawn.size() || !drawn[i]) continue;
+    order.reserve(drawn.size());
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+        if (!drawn[i]) continue;
         TreeDraw d;
         d.index = i;
         if (i < bounds.size()) {

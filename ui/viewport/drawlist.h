@@ -34,12 +34,11 @@ std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProj);
 bool intersectsFrustum(const std::array<glm::vec4, 6>& planes, const Bounds& box);
 
 /// What a frame draws, nearest first (so that the depth test spares the rasteriser what is
-/// hidden behind): each of \p count trees that \p drawn allows (its size is \p count: false
-/// for a tree without a mesh or hidden) and whose world box (\p bounds, in the same order)
+/// hidden behind): each tree that \p drawn allows (one entry per tree: false for a tree
+/// without a mesh or hidden) and whose world box (\p bounds, in the same order)
 /// meets the frustum, at the level of detail its height on screen asks for. A tree with no
 /// box (past the end of \p bounds) is drawn at full detail. Pure: no OpenGL.
-std::vector<TreeDraw> buildDrawList(const DrawListView& view, std::size_t count,
-                                    const std::vector<bool>& drawn,
+std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<bool>& drawn,
                                     const std::vector<Bounds>& bounds);
 
 } // namespace sylva::ui

@@ -41,7 +41,7 @@ bool ToolController::fromName(const QString& text, Tool& tool) {
 
 ToolController::ToolController(doc::Document& document, Viewport& viewport,
                                std::function<const GenerationResult&()> result, QObject* parent)
-    : QObject(parent), mViewport(viewport), mContext(document, viewport, std::move(result)) {
+    : QObject(parent), mContext(document, viewport, std::move(result)) {
     mContext.message = [this](const QString& text) { Q_EMIT message(text); };
     mContext.treeBranchClicked = [this](std::uint32_t id, const glm::vec3& local) {
         Q_EMIT treeBranchClicked(id, local);
@@ -76,8 +76,8 @@ SceneTool& ToolController::current() {
 void ToolController::setTool(Tool tool) {
     if (tool == mTool) return;
     mTool = tool;
-    mViewport.setPreviewTrees({});
-    mViewport.update(); // the Move tool's handles come or go
+    mContext.viewport.setPreviewTrees({});
+    mContext.viewport.update(); // the Move tool's handles come or go
     Q_EMIT toolChanged(tool);
 }
 
@@ -98,10 +98,6 @@ void ToolController::setBrush(const Brush& brush) {
         requireRange("species weight", weight, 0, 1e6);
     }
     mContext.brush = brush;
-}
-
-bool ToolController::inObstacleFootprint(const glm::vec3& position) const {
-    return mContext.inObstacleFootprint(position);
 }
 
 float ToolController::crownRadius(std::uint32_t species) const {

@@ -85,9 +85,6 @@ public:
 
     /// Selects the previous (\p step -1) or next (+1) hand-placed tree in document order.
     void stepSelection(int step);
-    /// Whether a trunk at \p position stands in an obstacle's footprint (what placement
-    /// refuses), from the last generation's obstacles.
-    bool inObstacleFootprint(const glm::vec3& position) const;
     /// The crown radius the spacing rules use for a species: the median of its grown trees'
     /// half crown widths in the last generation (2 m when it has none yet).
     float crownRadius(std::uint32_t species) const;
@@ -111,7 +108,6 @@ private:
     /// The current tool's class.
     SceneTool& current();
 
-    Viewport& mViewport;
     Tool mTool = Tool::Select;
     ToolContext mContext;
     std::unique_ptr<SelectTool> mSelect;

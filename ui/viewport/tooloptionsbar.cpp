@@ -134,7 +134,7 @@ void ToolOptionsBar::applyBrushSettings() {
         brush.mix = parseBrushMix(mMix->text(), mSpecies->currentText());
         mTools.setBrush(brush);
     } catch (...) {
-        Q_EMIT failed(QString::fromStdString(doc::describeError(std::current_exception()).message));
+        Q_EMIT failed(QString::fromStdString(doc::currentErrorMessage()));
     }
 }
 

@@ -29,10 +29,6 @@ constexpr glm::vec3 kBackgroundBottom{0.84f, 0.86f, 0.88f};
 
 } // namespace
 
-glm::vec3 Viewport::materialColor(const std::string& material) {
-    return TreeBuffers::materialColor(material);
-}
-
 void Viewport::installDefaultSurfaceFormat() {
     ViewportSurface::installDefaultSurfaceFormat();
 }
@@ -317,7 +313,7 @@ std::optional<QPointF> Viewport::project(const glm::vec3& world) const {
 TreeHit Viewport::pickAt(const QPointF& pos) const {
     std::vector<bool> hidden(mTrees.size(), false);
     for (std::size_t i = 0; i < mTrees.size(); ++i)
-        hidden[i] = mTrees[i].id != 0 && mHidden.contains(mTrees[i].id);
+        hidden[i] = isHidden(i);
     return pickTree(rayAt(pos), mTrees, mTreeBounds, hidden);
 }
 
@@ -529,7 +525,7 @@ void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, flo
 std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     std::vector<bool> drawn(mTrees.size());
     for (std::size_t i = 0; i < mTrees.size(); ++i)
-        drawn[i] = mTrees[i].mesh && !(mTrees[i].id && mHidden.contains(mTrees[i].id));
+        drawn[i] = mTrees[i].mesh && !isHidden(i);
     DrawListView view;
     view.viewProj = viewProj;
     view.eye = mCamera.eye();
@@ -537,7 +533,7 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     view.viewportHeightPx = double(height()) * devicePixelRatioF();
     view.levels = mLod->isEnabled();
     // Picking keeps the full mesh; only drawing follows the level of detail.
-    return buildDrawList(view, mTrees.size(), drawn, mTreeBounds);
+    return buildDrawList(view, drawn, mTreeBounds);
 }
 
 void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {

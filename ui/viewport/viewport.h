@@ -86,11 +86,6 @@ class Viewport : public QWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
 public:
-    using DrawRange = sylva::ui::DrawRange;
-
-    /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
-    static glm::vec3 materialColor(const std::string& material);
-
     /// Requests an OpenGL 3.3 core profile with depth and 4x multisampling for every context,
     /// and frames drawn as soon as the event loop is idle (QT_QPA_UPDATE_IDLE_TIME=0 unless
     /// set). Call before constructing QApplication.
@@ -326,6 +321,10 @@ private:
     void syncTreeBuffers();
     /// The trees to draw this frame, nearest first, with their levels (ui/viewport/drawlist.h).
     std::vector<TreeDraw> treesToDraw(const glm::mat4& viewProj) const;
+    /// Tree \p index is hidden by its check box in the outliner (picking and drawing skip it).
+    bool isHidden(std::size_t index) const {
+        return mTrees[index].id != 0 && mHidden.contains(mTrees[index].id);
+    }
     void bakeImpostors(const std::vector<TreeDraw>& order);
     void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight);
     void updateBounds();
