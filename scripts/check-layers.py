@@ -9,22 +9,39 @@ import os
 import re
 import sys
 
-# folder -> the folders it may include (its own is always allowed). Keep in step with the
-# diagrams of ARCHITECTURE.md; an arrow added here is a design decision, say why there.
-ENGINE = {
+# folder -> the folders it includes directly: the arrows of ARCHITECTURE.md's engine diagram
+# ("every room -> skeleton -> util" included). A room may include every room it reaches along
+# them (closure() below). An arrow added here is a design decision: draw it there and say why.
+ARROWS = {
     "util": set(),
     "skeleton": {"util"},
-    "lsystem": {"skeleton", "util"},
-    "environment": {"skeleton", "util"},
-    "mesh": {"skeleton", "util"},
-    "growth": {"environment", "skeleton", "util"},
-    "placement": {"environment", "util"},
-    "graph": {"mesh", "skeleton", "util"},
-    "export": {"mesh", "skeleton", "util"},
-    "nodes": {"graph", "lsystem", "growth", "environment", "mesh", "skeleton", "util"},
-    "forest": {"placement", "nodes", "graph", "lsystem", "growth", "environment", "mesh",
-               "skeleton", "util"},
+    "lsystem": {"skeleton"},
+    "environment": {"skeleton"},
+    "mesh": {"skeleton"},
+    "growth": {"environment", "skeleton"},
+    "placement": {"environment", "skeleton"},
+    "graph": {"mesh", "skeleton"},
+    "export": {"mesh", "skeleton"},
+    "nodes": {"graph", "lsystem", "growth", "environment", "mesh", "skeleton"},
+    "forest": {"placement", "nodes", "skeleton"},
 }
+
+
+def closure(arrows):
+    """Every room reachable from each room along the arrows."""
+    reach = {}
+    for room in arrows:
+        seen, todo = set(), list(arrows[room])
+        while todo:
+            r = todo.pop()
+            if r not in seen:
+                seen.add(r)
+                todo.extend(arrows.get(r, ()))
+        reach[room] = seen
+    return reach
+
+
+ENGINE = closure(ARROWS)
 UI = {
     "generation": set(),
     "grammar": set(),
@@ -33,9 +50,13 @@ UI = {
     "viewport": {"generation"},
     "scripting": {"document", "generation", "nodes", "viewport", "grammar"},
 }
+# Across the big layers (engine < document < python/bindings < ui < app; ui/scripting builds
+# the editor's module on python/bindings): what a layer must never include.
 FORBIDDEN = {
-    "core/engine": re.compile(r'#include\s*<Q'),
-    "core/document": re.compile(r'#include\s*<(QWidget|QtWidgets|QMainWindow|QDialog|QAction)'),
+    "core/engine": re.compile(r'#include\s*(<Q|"(document|ui|python|app)/)'),
+    "core/document": re.compile(
+        r'#include\s*(<(QWidget|QtWidgets|QMainWindow|QDialog|QAction)|"(ui|python|app)/)'),
+    "ui": re.compile(r'#include\s*"app/'),
 }
 
 

@@ -58,7 +58,7 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
     mPreviewView->installEventFilter(this);
     {
         // Without multisampling: under a software rasteriser (Mesa llvmpipe) 4× MSAA made the
-        // preview's edit → screen time 2.7× longer (docs/performance.md); the preview is
+        // preview's edit → screen time 2.7× longer (docs/perf/editor.md); the preview is
         // small and is there to follow edits.
         QSurfaceFormat format = mPreviewView->format();
         format.setSamples(0);

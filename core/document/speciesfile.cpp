@@ -1,11 +1,11 @@
 #include "document/speciesfile.h"
 
 #include "document/formatupgrade.h"
+#include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
 namespace sylva::doc {
 
@@ -145,14 +145,8 @@ graph::SpeciesGraph speciesFromGraph(const std::string& name, const Value& graph
 }
 
 void writeSpeciesFile(const QString& path, const Value& root) {
-    QSaveFile out(path);
-    if (!out.open(QIODevice::WriteOnly))
-        throw IoError("cannot write " + path.toStdString() + ": " +
-                      out.errorString().toStdString());
-    out.write(QByteArray::fromStdString(root.toPrettyJson() + "\n"));
-    if (!out.commit())
-        throw IoError("cannot write " + path.toStdString() + ": " +
-                      out.errorString().toStdString());
+    // The writer of every document (projects, autosave): atomic, and durable before the rename.
+    writeFileAtomically(path.toStdString(), root.toPrettyJson() + "\n");
 }
 
 } // namespace sylva::doc

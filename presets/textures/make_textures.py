@@ -5,7 +5,8 @@ bark and leaf of species without textures of their own (resources/textures).
 Every image is drawn here from noise and simple shapes; nothing is downloaded, so the PNGs are
 ours to give away (CC0, see README.md). Deterministic: the same script writes the same bytes,
 and the PNG writer is our own few lines (zlib level 9, no row filters) so that the bytes do not
-depend on an imaging library's encoder or its version.
+depend on an imaging library's encoder or its version (they still depend on the zlib build:
+Debian's zlib gives the committed bytes, zlib-ng would not).
 
   presets/textures/<species>_bark.png  256x256 RGB, tiles in both directions (u around the
                                        branch, v along it)

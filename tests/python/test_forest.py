@@ -132,7 +132,9 @@ def test_project_parts_read_as_the_editor_reads_them(data, tmp_path):
     t = p.tree(0)
     assert (t.id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed) == (
         0, "bush", (1.0, 0.0, 2.0), 30.0, 1.5, 0.5, 9)
-    assert trees[1].seed > 0  # derived from the project seed, as the editor does
+    # Derived from the project seed and the trees before it, as the editor does
+    # (doc::Project::newTreeSeed: mixSeed(4, 2) % 1000000007).
+    assert trees[1].seed == 317578722
     with pytest.raises(ValueError, match="there is no tree 2"):
         p.tree(2)
     assert p.domains == [{"shape": "rectangle", "min": (-5.0, -6.0), "max": (5.0, 6.0),

@@ -14,7 +14,7 @@ namespace {
 
 /// One OpenMP thread for the preview's evaluation (restored after): the editor's 2-core budget
 /// is shared with the forest's regrowth and the drawing, and two spinning OpenMP threads on a
-/// busy machine took 12 ms where one takes 3 (docs/performance.md).
+/// busy machine took 12 ms where one takes 3 (docs/perf/editor.md).
 class SingleThreaded {
 public:
     SingleThreaded() : mPrevious(omp_get_max_threads()) { omp_set_num_threads(1); }

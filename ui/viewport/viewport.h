@@ -73,7 +73,7 @@ public:
 /// A widget that holds a native OpenGL window (QOpenGLWindow in a window container) rather
 /// than a QOpenGLWidget: a QOpenGLWidget makes Qt compose the whole main window with OpenGL
 /// on every repaint of any widget in it, which under a software renderer costs more than
-/// drawing an empty view (docs/performance.md). The window passes its mouse, wheel and key
+/// drawing an empty view (docs/perf/editor.md). The window passes its mouse, wheel and key
 /// events to this widget, so tools, tests and event filters see the widget as before, and
 /// keyboard focus and shortcuts stay with the widgets. The OpenGL calls below (update(),
 /// makeCurrent(), grabFramebuffer() …) keep QOpenGLWidget's names.
@@ -92,7 +92,7 @@ public:
     static void installDefaultSurfaceFormat();
     /// Edit ▸ Preferences' multisampling (QSettings "viewport/samples"): kAutoSamples, 0, 2, 4
     /// or 8 samples a pixel. Automatic is 4 on a GPU and none on a software renderer (Mesa
-    /// llvmpipe draws a frame 2-3 times faster without it, docs/performance.md).
+    /// llvmpipe draws a frame 2-3 times faster without it, docs/perf/editor.md).
     static constexpr int kAutoSamples = ViewportSurface::kAutoSamples;
     static int samplesPreference();
     static void setSamplesPreference(int samples);

@@ -20,7 +20,7 @@ void ViewportSurface::installDefaultSurfaceFormat() {
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
     // SYLVA_MSAA=0 turns multisampling off: a software renderer (Mesa llvmpipe) draws a
-    // frame about twice as fast without it (docs/performance.md).
+    // frame about twice as fast without it (docs/perf/editor.md).
     format.setSamples(qEnvironmentVariableIsSet("SYLVA_MSAA")
                           ? std::max(0, qEnvironmentVariableIntValue("SYLVA_MSAA"))
                           : 4);

@@ -17,7 +17,7 @@ namespace sylva::ui {
 ///
 /// A native window rather than a QOpenGLWidget: a QOpenGLWidget makes Qt compose the whole
 /// main window with OpenGL on every repaint of any widget in it, which under a software
-/// renderer costs more than drawing an empty view (docs/performance.md).
+/// renderer costs more than drawing an empty view (docs/perf/editor.md).
 class ViewportSurface : public QOpenGLWindow {
 public:
     /// The viewport's GL code, called with the context current.

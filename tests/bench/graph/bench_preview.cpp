@@ -9,7 +9,7 @@
 //   - the vertices the viewport uploads for the new mesh (ui/generation/vertexdata.h), which the
 //     preview's worker makes after the evaluation (the editor's species_preview.py compares that
 //     with making them on the GUI thread).
-// Counters: segments, triangles. docs/performance.md has the figures (targets: ≤ 10 ms for a
+// Counters: segments, triangles. docs/perf/editor.md has the figures (targets: ≤ 10 ms for a
 // last-node parameter, ≤ 50 ms for an edit to a 20,000-segment tree).
 #include <benchmark/benchmark.h>
 

@@ -95,6 +95,16 @@ TEST(ForestBuild, WithoutTheCameraLodTheSettingsAloneMakeTheMesh) {
         EXPECT_FALSE(tree.meshSettings) << tree.name;
 }
 
+// The salts' values are part of the byte-identical guarantee: a changed one fails to compile.
+static_assert(salt::kTreeMesh == 0x7EAF && salt::kLeafPlacement == 0x1EAF);
+static_assert(salt::kSpaceColonization == 0x636f6c6f6e697a65ull &&
+              salt::kEnvelope == 0x656e76656c6f7065ull);
+static_assert(salt::kSelfOrganizingTree == 0x5e1f && salt::kSelfOrganizingMarkers == 0x3a7c &&
+              salt::kSelfOrganizingCycle == 0x5400);
+static_assert(salt::kCrownSample == 0xC0000 && salt::kDomainSlots == 0xD0A1 &&
+              salt::kPlacedTree == 0x0A11);
+static_assert(salt::kBrushStroke == 7919 && salt::kPlaceTool == 104729);
+
 TEST(SeedSalts, EverySaltIsItsOwn) {
     const std::set<std::uint64_t> salts{salt::kTreeMesh,
                                         salt::kLeafPlacement,
@@ -105,6 +115,8 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kSelfOrganizingCycle,
                                         salt::kCrownSample,
                                         salt::kDomainSlots,
-                                        salt::kPlacedTree};
-    EXPECT_EQ(salts.size(), 10u);
+                                        salt::kPlacedTree,
+                                        salt::kBrushStroke,
+                                        salt::kPlaceTool};
+    EXPECT_EQ(salts.size(), 12u);
 }
