@@ -21,9 +21,10 @@ ARROWS = {
     "growth": {"environment", "skeleton"},
     "placement": {"environment", "skeleton"},
     "graph": {"mesh", "skeleton"},
-    "export": {"mesh", "skeleton"},
-    "nodes": {"graph", "lsystem", "growth", "environment", "mesh", "skeleton"},
-    "forest": {"placement", "nodes", "skeleton"},
+    "wind": {"mesh", "skeleton"},
+    "export": {"mesh", "wind", "skeleton"},
+    "nodes": {"graph", "lsystem", "growth", "environment", "mesh", "wind", "skeleton"},
+    "forest": {"placement", "nodes", "wind", "skeleton"},
 }
 
 

@@ -18,6 +18,20 @@ struct Submesh {
     std::string texture{};
 };
 
+/// Per-vertex data of the wind model (engine/wind, docs/wind.md): the vertex moves with up to
+/// three nested sway elements (level 0 = its trunk, 1 = the main limb, 2 = the branch), each a
+/// bend about a pivot, plus a leaf flutter. 128 bytes, all floats (eight vec4),
+/// interleaved as written to glTF (`_WIND_PIVOT0..2`, `_WIND_BRANCH0..2`, `_WIND_PHASE`,
+/// `_WIND_LEAF`).
+struct WindVertex {
+    glm::vec4 pivot[3];  ///< xyz: element pivot (mesh frame, m); w: bend fraction u, 0..1
+    glm::vec4 branch[3]; ///< xyz: element direction (unit); w: stiffness, 0 = no element
+    glm::vec4 phase;     ///< phases (0..1) of levels 0, 1, 2 and of the leaf flutter
+    /// x: hierarchy level (0..2); y: leaf flutter weight (m, 0 on bark); z, w: 0 (reserved)
+    glm::vec4 leaf;
+};
+static_assert(sizeof(WindVertex) == 128, "the wind vertex is 32 floats");
+
 /// Indexed triangle mesh, the output of meshing nodes and the input of exporters and the
 /// viewport. Attributes are per vertex; normals and uvs are empty or of positions' size.
 struct Mesh {
@@ -36,6 +50,8 @@ struct Mesh {
     /// a leaf card's node; kNoNode when unknown), so that a viewer can colour the mesh by
     /// per-node attributes (light, vigour, age, order).
     std::vector<std::uint32_t> node;
+    /// Optional (empty or of positions' size): the wind model's data, filled by wind::addWindData.
+    std::vector<WindVertex> wind;
     static constexpr std::uint32_t kNoNode = 0xffffffffu;
     /// The bark holds flat ribbons turned to one camera (the camera LOD's thinnest twigs): a
     /// viewer must draw this bark from both sides (closed tubes alone can cull back faces).

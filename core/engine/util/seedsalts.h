@@ -28,6 +28,9 @@ inline constexpr std::uint64_t kCrownSample = 0xC0000;
 inline constexpr std::uint64_t kDomainSlots = 0xD0A1;
 /// A placed tree's rotation, scale and growth stage, from its own seed.
 inline constexpr std::uint64_t kPlacedTree = 0x0A11;
+/// Wind: the phase of each sway element (mixed with the element's first node) and, plus one, of
+/// each node's leaf flutter.
+inline constexpr std::uint64_t kWindPhase = 0x771D0;
 /// The editor's Brush tool: a stroke's trees (added to the tree count of the stroke).
 inline constexpr std::uint64_t kBrushStroke = 7919;
 /// The editor's Place tool: a placed tree's rotation and seed (added to the tree count).

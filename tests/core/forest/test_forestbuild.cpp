@@ -104,6 +104,7 @@ static_assert(salt::kSelfOrganizingTree == 0x5e1f && salt::kSelfOrganizingMarker
 static_assert(salt::kCrownSample == 0xC0000 && salt::kDomainSlots == 0xD0A1 &&
               salt::kPlacedTree == 0x0A11);
 static_assert(salt::kBrushStroke == 7919 && salt::kPlaceTool == 104729);
+static_assert(salt::kWindPhase == 0x771D0);
 
 TEST(SeedSalts, EverySaltIsItsOwn) {
     const std::set<std::uint64_t> salts{salt::kTreeMesh,
@@ -117,6 +118,8 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kDomainSlots,
                                         salt::kPlacedTree,
                                         salt::kBrushStroke,
-                                        salt::kPlaceTool};
-    EXPECT_EQ(salts.size(), 12u);
+                                        salt::kPlaceTool,
+                                        salt::kWindPhase,
+                                        salt::kWindPhase + 1};
+    EXPECT_EQ(salts.size(), 14u);
 }
