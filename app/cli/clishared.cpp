@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 
 namespace sylva::cli {
 
@@ -37,6 +38,40 @@ std::string metricsJson(const forest::SceneMetrics& m) {
     appendJsonNumber(json, "co2_kg", m.co2Kg);
     appendJsonNumber(json, "chave_agb_kg", m.chaveAgbKg, false);
     return json + "}";
+}
+
+const std::vector<std::string> kWindValueOptions = {
+    "--wind-direction", "--wind-strength", "--wind-gustiness", "--wind-frequency",
+    "--clip-length",    "--clip-fps",      "--bones"};
+
+exporter::WindExportOptions windOptions(const Args& args) {
+    exporter::WindExportOptions o;
+    auto number = [&](const char* name, float& into) {
+        const auto text = args.value(name);
+        if (!text) return;
+        char* end = nullptr;
+        const double v = std::strtod(text->c_str(), &end);
+        if (end == text->c_str() || *end != '\0')
+            throw UsageError(std::string(name) + " expects a number, got '" + *text + "'");
+        into = static_cast<float>(v);
+    };
+    if (const auto d = args.value("--wind-direction")) {
+        glm::vec3 v;
+        char extra = 0;
+        if (std::sscanf(d->c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3)
+            throw UsageError("--wind-direction expects x,y,z, got '" + *d + "'");
+        o.wind.direction = v;
+    }
+    number("--wind-strength", o.wind.strength);
+    number("--wind-gustiness", o.wind.gustiness);
+    number("--wind-frequency", o.wind.frequency);
+    number("--clip-length", o.wind.period);
+    number("--clip-fps", o.rig.fps);
+    if (const auto bones = args.integer("--bones", 2, 1024))
+        o.rig.maxBones = static_cast<int>(*bones);
+    wind::validate(o.wind);
+    wind::validate(o.rig);
+    return o;
 }
 
 } // namespace sylva::cli

@@ -2,7 +2,9 @@
 
 #include <string>
 
+#include "cliargs.h"
 #include "document/project.h"
+#include "engine/export/windexport.h"
 #include "engine/forest/metrics.h"
 
 namespace sylva::cli {
@@ -16,5 +18,12 @@ doc::Project loadProjectOrScene(const std::string& path);
 
 /// The scene metrics as one JSON object (units in the key names).
 std::string metricsJson(const forest::SceneMetrics& metrics);
+
+/// The wind options every exporting command takes (value options, then flags), for Args.
+extern const std::vector<std::string> kWindValueOptions;
+/// `--wind-direction x,y,z`, `--wind-strength`, `--wind-gustiness`, `--wind-frequency`,
+/// `--clip-length`, `--clip-fps`, `--bones` (docs/cli.md); UsageError for a malformed value,
+/// InvalidInput (with the range) for one out of range.
+exporter::WindExportOptions windOptions(const Args& args);
 
 } // namespace sylva::cli

@@ -15,11 +15,14 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <omp.h>
+#include <optional>
 
 namespace sylva::cli {
 
 using exporter::ExportTree;
+using exporter::ObjChoices;
 using exporter::TreeExporter;
 
 namespace {
@@ -41,9 +44,11 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
 } // namespace
 
 int runForest(const std::vector<std::string>& argv) {
-    const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
+    std::vector<std::string> valueOptions{"-o", "--output", "--camera", "--threads", "--tile"};
+    valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
+    const Args args(argv, valueOptions,
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
-                     "--naive-placement", "--fsync", "--full-precision"});
+                     "--naive-placement", "--fsync", "--full-precision", "--wind"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -62,6 +67,10 @@ int runForest(const std::vector<std::string>& argv) {
     options.adapt = !args.flag("--no-adapt");
     options.neighbours = !args.flag("--no-neighbours");
     if (args.flag("--naive-placement")) options.placement = placement::PlacementMethod::Naive;
+    const bool wind = args.flag("--wind");
+    const exporter::WindExportOptions windSettings = windOptions(args);
+    options.windData = wind;
+    const bool obj = std::filesystem::path(*output).extension() == ".obj";
 
     const auto start = Clock::now();
     const doc::Project project = loadProjectOrScene(args.positional()[0]);
@@ -72,8 +81,15 @@ int runForest(const std::vector<std::string>& argv) {
     // Ctrl-C is caught from here on, before the exporter creates its temporary file.
     TerminalProgress progress;
     // Forests default to compact OBJ (0.1 mm, relative indices): ~17 % less to format and write.
-    TreeExporter exporter(*output, {args.flag("--fsync"), !args.flag("--full-precision")});
-    exporter.setInstanceTables(args.flag("--instance-tables"));
+    // With --wind, .glb/.gltf/.fbx go through the wind exporter (rig, clip, _WIND* data); an
+    // OBJ is written as without, plus the wind table beside it.
+    std::optional<TreeExporter> plain;
+    if (!wind || obj) {
+        plain.emplace(*output, ObjChoices{args.flag("--fsync"), !args.flag("--full-precision")});
+        plain->setInstanceTables(args.flag("--instance-tables"));
+    }
+    std::optional<exporter::WindExporter> windExporter;
+    if (wind) windExporter.emplace(*output, windSettings, progress);
     double writeMs = 0;
     forest::ForestStats stats;
     try {
@@ -87,13 +103,22 @@ int runForest(const std::vector<std::string>& argv) {
                     trees.push_back({tree.name, tree.mesh, tree.instance.position,
                                      tree.instance.rotation,
                                      tree.instance.scale * tree.instance.growth});
-                exporter.add(trees);
+                if (plain) plain->add(trees);
+                if (windExporter) {
+                    std::vector<exporter::WindExportTree> windy;
+                    for (const forest::ForestTree& tree : batch)
+                        windy.push_back({tree.name, tree.mesh, tree.skeleton,
+                                         tree.instance.position, tree.instance.rotation,
+                                         tree.instance.scale * tree.instance.growth});
+                    windExporter->add(windy);
+                }
                 progress.checkCancelled();
                 writeMs += msSince(t);
             },
             progress);
         const auto t = Clock::now();
-        exporter.commit();
+        if (plain) plain->commit();
+        if (windExporter) windExporter->commit();
         writeMs += msSince(t);
     } catch (const Cancelled&) {
         progress.finish();

@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 namespace sylva::cli {
 
@@ -35,8 +36,10 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
 } // namespace
 
 int runTree(const std::vector<std::string>& argv) {
-    const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set"},
-                    {"--stats", "--fsync", "--compact"});
+    std::vector<std::string> valueOptions{"-o",     "--output", "-n", "--generations",
+                                          "--seed", "--set"};
+    valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
+    const Args args(argv, valueOptions, {"--stats", "--fsync", "--compact", "--wind"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("tree"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -60,6 +63,12 @@ int runTree(const std::vector<std::string>& argv) {
     }
     for (const std::string& s : args.values("--set"))
         applySet(evaluator, s);
+    const bool wind = args.flag("--wind");
+    const exporter::WindExportOptions windSettings = windOptions(args);
+    if (wind)
+        for (const graph::NodeDesc& node : evaluator.graph().nodes)
+            if (node.type == "tube_mesh")
+                evaluator.setParam(node.id, "wind_data", sylva::Value(true));
 
     const auto seed = args.integer("--seed", 0, (1LL << 62));
     const graph::NodeOutput& result =
@@ -69,9 +78,19 @@ int runTree(const std::vector<std::string>& argv) {
                            "' produces no mesh; end the graph with a tube_mesh node");
 
     const auto t0 = std::chrono::steady_clock::now();
-    TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
-    exporter.add({ExportTree{exporter::objectNameFor(evaluator.graph().name), result.mesh}});
-    exporter.commit();
+    const std::string name = exporter::objectNameFor(evaluator.graph().name);
+    const bool obj = std::filesystem::path(*output).extension() == ".obj";
+    if (!wind || obj) {
+        TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
+        exporter.add({ExportTree{name, result.mesh}});
+        exporter.commit();
+    }
+    if (wind) {
+        if (!result.skeleton) throw InvalidInput("--wind needs the species' skeleton");
+        exporter::WindExporter windExporter(*output, windSettings);
+        windExporter.add({{name, result.mesh, result.skeleton}});
+        windExporter.commit();
+    }
     const double writeMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 

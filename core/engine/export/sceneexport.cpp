@@ -202,6 +202,7 @@ std::unique_ptr<aiScene> buildScene(const SceneDesc& desc, bool embedTextures) {
         }
         root->mChildren[i] = node;
     }
+    if (desc.decorate) desc.decorate(*scene);
     return scene;
 }
 

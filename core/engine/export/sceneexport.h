@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,8 @@
 
 #include "engine/export/materials.h"
 #include "engine/mesh/mesh.h"
+
+struct aiScene;
 
 namespace sylva::exporter {
 
@@ -34,6 +37,10 @@ struct SceneDesc {
     std::vector<Material> materials = defaultMaterials();
     /// Sylva's shipped textures (bark.png, leaf.png), for materials without a sourceFile.
     std::filesystem::path textureSource;
+    /// Called with the Assimp scene before it is exported (the wind export adds bones and an
+    /// animation): instance i is the root's child i, its meshes the mesh's non-empty submeshes in
+    /// order, each with its vertices in the order its triangles first use them.
+    std::function<void(aiScene&)> decorate;
 };
 
 enum class SceneFormat {

@@ -8,6 +8,7 @@
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
+#include "engine/wind/windelements.h"
 
 #include <algorithm>
 #include <chrono>
@@ -131,8 +132,12 @@ std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
     }
     pod(scene.lightDirection);
     if (options.useLod) pod(cameraDistance);
-    const bool flags[] = {options.useLod, options.adapt, options.neighbours, options.buildMeshes,
-                          scene.obstacles != nullptr};
+    const bool flags[] = {options.useLod,
+                          options.adapt,
+                          options.neighbours,
+                          options.buildMeshes,
+                          scene.obstacles != nullptr,
+                          options.windData};
     mix(flags, sizeof flags);
     return h;
 }
@@ -421,8 +426,16 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                                                          ctx.leafScale, ctx.leafAspect);
                         };
                 }
-                tree.mesh =
-                    std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
+                if (options.windData) {
+                    settings.tubes.nodeIds = true;
+                    auto windy =
+                        std::make_shared<mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
+                    wind::addWindData(*windy, *skeleton);
+                    tree.mesh = std::move(windy);
+                } else {
+                    tree.mesh = std::make_shared<const mesh::Mesh>(
+                        mesh::buildTreeMesh(*skeleton, settings));
+                }
                 cpuMesh[thread] += msSince(t);
                 if (cacheKey) options.cache->storeTree(cacheKey, tree);
             } catch (...) {

@@ -43,12 +43,14 @@ struct ForestScene {
 };
 
 struct ForestOptions {
-    int tile = 0;               ///< 0-based tile to build
-    int tileCount = 1;          ///< 1 = the whole forest
-    bool useLod = true;         ///< mesh resolution from the distance to the camera
-    bool adapt = true;          ///< bend/prune trees against obstacles and neighbouring crowns
-    bool neighbours = true;     ///< neighbouring crowns count as obstacles
-    bool buildMeshes = true;    ///< false: skeletons and metrics only (sylva-cli stats)
+    int tile = 0;            ///< 0-based tile to build
+    int tileCount = 1;       ///< 1 = the whole forest
+    bool useLod = true;      ///< mesh resolution from the distance to the camera
+    bool adapt = true;       ///< bend/prune trees against obstacles and neighbouring crowns
+    bool neighbours = true;  ///< neighbouring crowns count as obstacles
+    bool buildMeshes = true; ///< false: skeletons and metrics only (sylva-cli stats)
+    /// Meshes carry node ids and the wind model's per-vertex data (Mesh::wind; docs/wind.md).
+    bool windData = false;
     std::size_t batchSize = 64; ///< trees generated in parallel before they are handed on
     placement::PlacementMethod placement = placement::PlacementMethod::Grid;
     /// Trees of an earlier build of the same scene to reuse when their inputs are unchanged

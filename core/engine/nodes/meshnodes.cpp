@@ -10,6 +10,7 @@
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
+#include "engine/wind/windelements.h"
 
 namespace sylva::mesh {
 
@@ -96,7 +97,7 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.tubes.thicknessMultiplier = ranged(p, "thickness_multiplier", 0.8, 1e-6, 1.0);
     s.tubes.radiusScale = ranged(p, "radius_scale", 1.0, 0.0, 1e3);
     s.tubes.windAttributes = p.boolean("wind_attributes", false);
-    s.tubes.nodeIds = p.boolean("node_ids", false);
+    s.tubes.nodeIds = p.boolean("node_ids", false) || p.boolean("wind_data", false);
     s.leaves = p.boolean("leaves", true);
     s.leafCards.aspect = ranged(p, "leaf_aspect", 0.5, 1e-6, 4.0);
     s.leafCards.sizeScale = ranged(p, "leaf_scale", 1.0, 1e-6, 100.0);
@@ -136,6 +137,7 @@ NodeOutput evaluateTubeMesh(const NodeContext& ctx) {
     }
     const auto t0 = std::chrono::steady_clock::now();
     auto mesh = std::make_shared<Mesh>(buildTreeMesh(skeleton, settings, ctx.progress));
+    if (ctx.params.boolean("wind_data", false)) wind::addWindData(*mesh, skeleton);
     NodeOutput out;
     out.timingsMs["mesh"] = msSince(t0);
     out.skeleton = ctx.inputs[0]->skeleton;
@@ -214,6 +216,8 @@ NodeOutput evaluateLeaves(const NodeContext& ctx) {
         LeafCardSettings cards;
         cards.aspect = ranged(p, "leaf_aspect", 0.5, 1e-6, 4.0);
         appendLeafCards(*m, fresh, cards, out_skeleton.get());
+        // The wind data covers the new cards too (they hang on the same elements).
+        if (!m->wind.empty()) wind::addWindData(*m, *out_skeleton);
         out.stats["vertices"] = static_cast<double>(m->vertexCount());
         out.stats["triangles"] = static_cast<double>(m->triangleCount());
         out.mesh = std::move(m);
@@ -245,7 +249,9 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
                   "Radius factor per branching level (thickness: branching)"),
            number("radius_scale", 1.0, 0, 1e3, "", "Multiplies every radius"),
            boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
-           boolean("node_ids", false, "Write the skeleton node of each vertex")});
+           boolean("node_ids", false, "Write the skeleton node of each vertex"),
+           boolean("wind_data", false,
+                   "Write the wind model's per-vertex data (docs/wind.md), node ids too")});
     group(tube.params, "Leaves",
           {boolean("leaves", true, "Draw the skeleton's leaves as cards"),
            number("leaf_scale", 1.0, 1e-6, 100, "", "Multiplies every leaf card's length"),

@@ -19,7 +19,8 @@ namespace sylva::mesh {
 /// - `tube_mesh`: input one node with a skeleton; outputs the skeleton and a bark + leaf mesh.
 ///   Params: resolution (3..64, 8), caps, thickness ("skeleton" | "branching"),
 ///   initial_thickness, thickness_multiplier, radius_scale, leaves, leaf_aspect, leaf_scale,
-///   wind_attributes, node_ids (Mesh::node, for colouring by node attributes), lod_distance (-1 =
+///   wind_attributes, node_ids (Mesh::node, for colouring by node attributes), wind_data
+///   (Mesh::wind, the wind model's per-vertex data; node ids too), lod_distance (-1 =
 ///   off), lod_bands, lod_min_twig_pixels, lod_simplify_pixels, lod_leaf_cluster_pixels,
 ///   lod_ribbon_pixels, lod_leafy_twig_pixels, lod_screen_height, lod_fov, bark_texture_file,
 ///   leaf_texture_file (PNGs relative to the species file; Submesh::texture). Stats: vertices,

@@ -1,0 +1,76 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
+#include "engine/util/progress.h"
+#include "engine/wind/windmodel.h"
+#include "engine/wind/windrig.h"
+
+namespace sylva::exporter {
+
+/// One tree of a wind export: its mesh (with Mesh::node; Mesh::wind is computed when missing)
+/// and the skeleton it was made from, in the tree's frame, and where it stands.
+struct WindExportTree {
+    std::string name;
+    std::shared_ptr<const mesh::Mesh> mesh;
+    std::shared_ptr<const skel::Skeleton> skeleton;
+    glm::vec3 position{0.0f};
+    float rotationY = 0.0f; ///< radians about +Y
+    float scale = 1.0f;
+};
+
+struct WindExportOptions {
+    wind::WindSettings wind;
+    wind::RigSettings rig;
+};
+
+/// Writes trees with wind (docs/wind.md) by the output's extension:
+/// - `.glb` / `.gltf` (our GltfBuilder): per unique mesh the `_WIND*` vertex attributes, JOINTS_0
+///   and WEIGHTS_0; per tree a joint hierarchy under the tree's node, a skin, and a skinned mesh
+///   node at the scene's root; one animation "wind" looping over the period (every tree's
+///   joints). Trees sharing a mesh share its arrays and its clip's accessors.
+/// - `.fbx` (Assimp): per tree the bone nodes, the mesh's skin deformers (clusters) and one
+///   animation stack "wind".
+/// Every format also gets `<stem>.wind.csv`: the per-vertex channels as a table (object,
+/// vertex, rest position, the 32 floats of mesh::WindVertex), the form tools without custom
+/// attributes (OBJ, FBX) read them in. Nothing appears before commit() succeeds; the same trees
+/// give byte-identical files.
+class WindExporter {
+public:
+    /// \throw InvalidInput for an extension other than .glb, .gltf, .fbx or .obj (.obj: the
+    /// caller writes the OBJ; this writes the table only), or settings out of range.
+    WindExporter(std::filesystem::path path, WindExportOptions options,
+                 Progress& progress = noProgress());
+    ~WindExporter();
+    void add(const std::vector<WindExportTree>& trees);
+    /// Writes the file(s); returns them, main file first.
+    std::vector<std::filesystem::path> commit();
+
+    /// The rig, weights and clip of a tree as the export writes them (tests, the Python API).
+    struct Prepared {
+        std::shared_ptr<const mesh::Mesh> mesh; ///< with Mesh::wind
+        wind::Rig rig;
+        wind::SkinWeights weights;
+        wind::WindClip clip;
+    };
+    static Prepared prepare(const WindExportTree& tree, const WindExportOptions& options);
+
+private:
+    std::vector<std::filesystem::path> writeGltf();
+    std::vector<std::filesystem::path> writeFbx();
+    void writeTable();
+
+    std::filesystem::path mPath;
+    WindExportOptions mOptions;
+    Progress& mProgress;
+    std::vector<WindExportTree> mTrees;
+};
+
+} // namespace sylva::exporter
