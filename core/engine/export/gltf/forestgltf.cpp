@@ -38,7 +38,7 @@ std::pair<int, int> ForestGltfWriter::cellOf(const glm::vec3& p) const {
 
 int ForestGltfWriter::addVariant(const std::string& name, const mesh::Mesh& mesh) {
     mMaterials.describe(mesh);
-    const int index = gltf::addTreeMesh(mBuilder, mesh, name, mMaterials);
+    const int index = mesh.empty() ? -1 : gltf::addTreeMesh(mBuilder, mesh, name, mMaterials);
     mVariants.emplace_back(name, index);
     return static_cast<int>(mVariants.size() - 1);
 }
@@ -54,7 +54,7 @@ void ForestGltfWriter::addInstance(int variant, std::uint64_t id, const glm::vec
 
 int ForestGltfWriter::addTreeMesh(const std::string& name, const mesh::Mesh& mesh) {
     mMaterials.describe(mesh);
-    mTreeMeshes.push_back(gltf::addTreeMesh(mBuilder, mesh, name, mMaterials));
+    mTreeMeshes.push_back(mesh.empty() ? -1 : gltf::addTreeMesh(mBuilder, mesh, name, mMaterials));
     return static_cast<int>(mTreeMeshes.size() - 1);
 }
 
@@ -101,10 +101,13 @@ std::vector<fs::path> ForestGltfWriter::commit() {
             n.name = variantName + "_" + cellNode.name;
             n.mesh = mesh;
             n.translation = origin;
-            n.extensions[kInstancing]["attributes"] = {
-                {"TRANSLATION", mBuilder.addVec3(translations, Target::None)},
-                {"ROTATION", mBuilder.addQuats(rotations)},
-                {"SCALE", mBuilder.addVec3(scales, Target::None)}};
+            // A variant without geometry (nothing grew) keeps its ids on a node without a mesh:
+            // the extension needs a mesh to instance.
+            if (mesh >= 0)
+                n.extensions[kInstancing]["attributes"] = {
+                    {"TRANSLATION", mBuilder.addVec3(translations, Target::None)},
+                    {"ROTATION", mBuilder.addQuats(rotations)},
+                    {"SCALE", mBuilder.addVec3(scales, Target::None)}};
             n.extras = {{"sylva_variant", variantName}, {"sylva_ids", std::move(ids)}};
             mBuilder.addChild(cellIndex, mBuilder.addNode(n));
         }

@@ -52,14 +52,15 @@ public:
                      ForestGltfOptions options = {},
                      std::vector<Material> materials = defaultMaterials());
 
-    /// Writes a variant's mesh; returns the variant's index for addInstance.
+    /// Writes a variant's mesh; returns the variant's index for addInstance. An empty mesh
+    /// (nothing grew) is not written: its trees are nodes without a mesh, keeping their ids.
     int addVariant(const std::string& name, const mesh::Mesh& mesh);
     /// An instanced tree: \p variant as returned by addVariant, \p id the tree's stable id,
     /// its world transform (translation · rotation · scale, metres).
     void addInstance(int variant, std::uint64_t id, const glm::vec3& position,
                      const glm::quat& rotation, const glm::vec3& scale);
     /// A mesh for unique trees; returns its index for addTree (a mesh two trees share is added
-    /// once and placed twice).
+    /// once and placed twice); an empty mesh is not written, its trees are nodes without one.
     int addTreeMesh(const std::string& name, const mesh::Mesh& mesh);
     /// A unique tree node named \p name (unique names are the caller's: "<species>_<id>").
     void addTree(const std::string& name, std::uint64_t id, int treeMesh, const glm::vec3& position,
