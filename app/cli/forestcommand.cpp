@@ -43,7 +43,7 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
 int runForest(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
-                     "--naive-placement", "--fsync", "--full-precision"});
+                     "--naive-placement", "--fsync", "--full-precision", "--assimp-gltf"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -75,6 +75,7 @@ int runForest(const std::vector<std::string>& argv) {
     TreeExporter exporter(*output, {args.flag("--fsync"), !args.flag("--full-precision")});
     exporter.setInstanceTables(args.flag("--instance-tables"));
     exporter.setProgress(progress);
+    exporter.setAssimpGltf(args.flag("--assimp-gltf"));
     // Variants come before the first batch: glTF writes each variant's mesh once, now.
     options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
         std::vector<exporter::ExportVariant> out;

@@ -64,6 +64,10 @@ public:
     std::vector<std::filesystem::path> commit();
     /// Also write `<stem>.instances.json` and `.csv` (mesh, position, rotation, scale).
     void setInstanceTables(bool on) { mInstanceTables = on; }
+    /// Writes .glb/.gltf through Assimp's exporter (one node per tree, no instancing, the whole
+    /// file in memory; quadratic in the file's size) instead of gltf::ForestGltfWriter: for
+    /// comparisons (`sylva-cli forest --assimp-gltf`). Call before add().
+    void setAssimpGltf(bool on) { mGltf = mGltf && !on; }
 
 private:
     gltf::ForestGltfWriter& gltfWriter();
