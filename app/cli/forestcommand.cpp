@@ -48,7 +48,8 @@ int runForest(const std::vector<std::string>& argv) {
     valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
     const Args args(argv, valueOptions,
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
-                     "--naive-placement", "--fsync", "--full-precision", "--wind"});
+                     "--naive-placement", "--fsync", "--full-precision", "--assimp-gltf",
+                     "--wind"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -87,6 +88,15 @@ int runForest(const std::vector<std::string>& argv) {
     if (!wind || obj) {
         plain.emplace(*output, ObjChoices{args.flag("--fsync"), !args.flag("--full-precision")});
         plain->setInstanceTables(args.flag("--instance-tables"));
+        plain->setProgress(progress);
+        plain->setAssimpGltf(args.flag("--assimp-gltf"));
+        // Variants come before the first batch: glTF writes each variant's mesh once, now.
+        options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
+            std::vector<exporter::ExportVariant> out;
+            for (const forest::ForestVariant& v : variants)
+                out.push_back({v.name, v.mesh});
+            plain->addVariants(out);
+        };
     }
     std::optional<exporter::WindExporter> windExporter;
     if (wind) windExporter.emplace(*output, windSettings, progress);
@@ -102,7 +112,8 @@ int runForest(const std::vector<std::string>& argv) {
                 for (const forest::ForestTree& tree : batch)
                     trees.push_back({tree.name, tree.mesh, tree.instance.position,
                                      tree.instance.rotation,
-                                     tree.instance.scale * tree.instance.growth});
+                                     tree.instance.scale * tree.instance.growth, tree.variant,
+                                     tree.instance.id});
                 if (plain) plain->add(trees);
                 if (windExporter) {
                     std::vector<exporter::WindExportTree> windy;

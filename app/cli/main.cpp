@@ -25,7 +25,7 @@ const char* kUsage =
     "  forest <project.sylva> -o out.{obj,glb,fbx}       generate a forest\n"
     "       [--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--no-lod]\n"
     "       [--no-adapt] [--no-neighbours] [--instance-tables] [--naive-placement]\n"
-    "       [--fsync] [--full-precision]\n"
+    "       [--fsync] [--full-precision] [--assimp-gltf]\n"
     "  stats <project.sylva|species.json> [--json]       height, DBH, biomass, CO2\n"
     "  lods <species.json> -o <folder> [--json]          LOD chain for game engines\n"
     "  nodes [type] [--markdown|--json]         node types and their parameters\n"

@@ -85,6 +85,10 @@ int MaterialTable::material(const std::string& name) {
     return index;
 }
 
+void MaterialTable::describe(const mesh::Mesh& mesh, const std::string& textureFolder) {
+    addMaterialsOf(mesh, mMaterials, textureFolder);
+}
+
 int MaterialTable::materialFor(const mesh::Submesh& submesh) {
     return material(materialName(submesh));
 }

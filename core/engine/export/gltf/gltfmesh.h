@@ -30,6 +30,11 @@ public:
     int materialFor(const mesh::Submesh& submesh);
     /// The glTF material named \p name (one of the materials given, or a plain one).
     int material(const std::string& name);
+    /// Adds the materials of \p mesh's textured submeshes (exporter::addMaterialsOf: the
+    /// species' own bark and leaf), so that materialFor() finds their textures.
+    void describe(const mesh::Mesh& mesh, const std::string& textureFolder = "textures");
+    /// Every material known so far (for copyTextures beside a .gltf).
+    const std::vector<Material>& materials() const { return mMaterials; }
 
 private:
     int texture(const Material& material);
