@@ -283,7 +283,11 @@ std::vector<fs::path> WindExporter::writeFbx() {
                 for (aiNode* c : children)
                     c->mParent = parent;
             };
-            attach(node, kids[nj]);
+            // The bones hang under an armature node of their own beside the tree's meshes (FBX
+            // readers take a node that holds both a mesh and bones for a bone).
+            auto* armature = new aiNode(treeName + "_armature");
+            attach(armature, kids[nj]);
+            attach(node, {armature});
             for (std::size_t j = 0; j < nj; ++j)
                 attach(boneNodes[j], kids[j]);
             // Bones of each of the tree's meshes (one per non-empty submesh).
