@@ -62,6 +62,25 @@ all_ids = ids + [n["extras"]["sylva_id"] for n in nodes if "sylva_id" in n.get("
 assert len(set(all_ids)) == len(all_ids) == stats["trees"], "ids are not one per tree"
 PY
   ;;
+wind_glb)
+  # Wind (docs/wind.md): 0 validator errors, three.js plays the clip and the twig tip moves
+  # more than the trunk's base, and two exports are byte-identical.
+  run_cli tree "$DATA/../../presets/english-oak.json" --seed 2 -o oak.glb --wind
+  validate oak.glb
+  run_cli tree "$DATA/../../presets/english-oak.json" --seed 2 -o again.glb --wind
+  cmp -s oak.glb again.glb || fail "two wind exports differ"
+  node "$READERS/wind-motion.mjs" oak.glb > three.json 2> three.err || fail "three.js: $(cat three.err)"
+  cat three.json
+  python3 - <<'PY' || fail "three.js: the wind clip does not move the tree as it should: $(cat three.json)"
+import json
+m = json.load(open("three.json"))
+assert abs(m["duration"] - 4.0) < 1e-6, m
+assert 2 <= m["joints"] <= 64, m
+assert m["tip"] > 0.02, m
+assert m["tip"] > 5 * m["base"], m
+PY
+  run_cli forest "$DATA/projects/small.sylva" -o forest.glb --wind --bones 16 --clip-length 2
+  validate forest.glb ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

@@ -58,6 +58,7 @@ void WindExporter::add(const std::vector<WindExportTree>& trees) {
     for (const WindExportTree& t : trees) {
         if (!t.mesh || !t.skeleton)
             throw InvalidInput("wind export of '" + t.name + "' needs its mesh and skeleton");
+        if (t.mesh->empty()) continue; // nothing to draw or rig (a tree pruned away)
         mTrees.push_back(t);
     }
 }
