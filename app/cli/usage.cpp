@@ -41,6 +41,15 @@ constexpr CommandHelp kHelp[] = {
      "                        as one JSON object on stdout\n"
      "  --compact             compact OBJ (0.1 mm positions, relative face indices)\n"
      "  --fsync               waits until the OBJ is on disk before renaming it into place\n"
+     "  --wind                also writes the wind model (docs/wind.md): .glb/.gltf with _WIND*\n"
+     "                        attributes, a low-bone skin and a looping clip; .fbx with bones and\n"
+     "                        an animation stack; <name>.wind.csv with the per-vertex channels\n"
+     "  --bones N             bone budget per tree, 2..1024 (default 64)\n"
+     "  --clip-length S       clip seconds, 0.5..600 (default 4); the motion repeats after it\n"
+     "  --clip-fps N          clip frames per second, 1..240 (default 30)\n"
+     "  --wind-direction x,y,z  where the wind blows to (default 1,0,0; only x and z count)\n"
+     "  --wind-strength S     0..2 (default 0.5)   --wind-gustiness G  0..1 (default 0.3)\n"
+     "  --wind-frequency F    the trunk's sway in Hz, 0.05..5 (default 0.5)\n"
      "  -h, --help            show this text\n"},
     {"forest",
      "usage: sylva-cli forest <project.sylva|scene.json> -o out.{obj,glb,gltf,fbx} [options]\n"
@@ -62,6 +71,8 @@ constexpr CommandHelp kHelp[] = {
      "  --full-precision      micrometre OBJ with absolute indices (default: compact)\n"
      "  --fsync               waits until the OBJ is on disk before renaming it into place\n"
      "  --assimp-gltf         .glb/.gltf through Assimp's exporter (slow; for comparison)\n"
+     "  --wind                every tree with the wind model (docs/wind.md), as tree --wind;\n"
+     "                        --bones, --clip-length, --clip-fps and --wind-* as for tree\n"
      "  -h, --help            show this text\n"},
     {"stats",
      "usage: sylva-cli stats <project.sylva|species.json|grammar> [--json] [--seed S]\n"
