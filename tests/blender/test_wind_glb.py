@@ -46,7 +46,7 @@ tip = max(range(len(rest)), key=lambda i: rest[i].z)
 low = min(range(len(rest)),
           key=lambda i: abs(rest[i].z - min(zs) - 0.1 * height) + Vector(rest[i].xy).length)
 tip_moved = low_moved = 0.0
-for frame in range(first, last + 1, 2):
+for frame in range(first, last + 1, 6):
     scene.frame_set(frame)
     p = positions()
     tip_moved = max(tip_moved, (p[tip] - rest[tip]).length)
