@@ -21,6 +21,9 @@ namespace {
 
 const std::filesystem::path kPresets = SYLVA_PRESETS_DIR;
 constexpr int kPixelsTall = 320;
+// The target (ez-tree's oak and ash measure 0.79 and 0.81; our ellipsoid-filling crowns
+// measured 0.89-0.94 before they were grown by light).
+constexpr double kMaxSolidity = 0.85;
 
 struct Measured {
     double solidity = 0.0, width = 0.0, height = 0.0, treeHeight = 0.0, crownBase = 0.0,
@@ -94,6 +97,24 @@ TEST(CrownShape, BroadleavesAreNotBlobsAndKeepTheirHabit) {
                         static_cast<int>(seed), m.solidity, m.width, m.height, m.treeHeight,
                         m.crownBase);
             std::fflush(stdout);
+            const std::string sp = species;
+            EXPECT_LE(m.solidity, kMaxSolidity) << sp << " seed " << seed << " reads as a blob";
+            if (sp == "english-oak") { // wider than tall, low limbs
+                EXPECT_GT(m.width, 1.3 * m.height) << sp << " seed " << seed;
+                EXPECT_LT(m.crownBase, 0.3 * m.treeHeight) << sp << " seed " << seed;
+            } else if (sp == "silver-birch") { // narrow
+                EXPECT_LT(m.width, 0.75 * m.height) << sp << " seed " << seed;
+            } else if (sp == "european-beech") { // a tall dome on a clear bole
+                EXPECT_GT(m.height, 0.9 * m.width) << sp << " seed " << seed;
+                EXPECT_GT(m.treeHeight, 13.0) << sp << " seed " << seed;
+            } else if (sp == "lombardy-poplar") { // a column
+                EXPECT_LT(m.width, 0.3 * m.height) << sp << " seed " << seed;
+            } else if (sp == "weeping-willow") { // a curtain down to near the ground
+                EXPECT_LT(m.crownBase, 0.15 * m.treeHeight) << sp << " seed " << seed;
+                EXPECT_GT(m.width, m.height) << sp << " seed " << seed;
+            } else if (sp == "norway-maple") { // round
+                EXPECT_NEAR(m.width / m.height, 1.05, 0.25) << sp << " seed " << seed;
+            }
         }
     }
 }
