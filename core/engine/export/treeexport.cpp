@@ -155,7 +155,9 @@ std::vector<fs::path> TreeExporter::commit() {
     // OBJ and text glTF reference their textures beside them; .glb and .fbx carry them inside.
     if (mObj || sceneFormat == SceneFormat::Gltf) {
         const fs::path res = resourcesDir();
-        if (copyTextures(mObj ? mObjMaterials : gltfWriter().materials(),
+        if (copyTextures(mObj    ? mObjMaterials
+                         : mGltf ? gltfWriter().materials()
+                                 : mScene.materials,
                          res.empty() ? fs::path() : res / "textures", dir) > 0)
             written.push_back(dir / "textures");
     }
