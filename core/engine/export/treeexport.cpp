@@ -94,7 +94,8 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
     }
 }
 
-std::vector<fs::path> TreeExporter::commit() {
+std::vector<fs::path> TreeExporter::commit(Progress& progress) {
+    progress.checkCancelled();
     std::vector<fs::path> written{mPath};
     const SceneFormat sceneFormat = mObj ? SceneFormat::Glb : sceneFormatFor(mPath);
     const fs::path dir = mPath.parent_path().empty() ? fs::path(".") : mPath.parent_path();
@@ -105,7 +106,7 @@ std::vector<fs::path> TreeExporter::commit() {
         written.push_back(mtl);
     } else {
         mScene.textureSource = resourcesDir() / "textures";
-        writeScene(mPath, mScene, sceneFormat);
+        writeScene(mPath, mScene, sceneFormat, progress);
     }
     // OBJ and text glTF reference their textures beside them; .glb and .fbx carry them inside.
     if (mObj || sceneFormat == SceneFormat::Gltf) {

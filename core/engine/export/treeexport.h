@@ -43,7 +43,8 @@ public:
     ~TreeExporter();
     void add(const std::vector<ExportTree>& trees);
     /// Finishes the file(s); returns the paths written (main file first).
-    std::vector<std::filesystem::path> commit();
+    /// \throw IoError; Cancelled through \p progress (glTF/FBX: see writeScene).
+    std::vector<std::filesystem::path> commit(Progress& progress = noProgress());
     /// Also write `<stem>.instances.json` and `.csv` (mesh, position, rotation, scale).
     void setInstanceTables(bool on) { mInstanceTables = on; }
 
