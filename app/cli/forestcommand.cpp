@@ -115,7 +115,7 @@ int runForest(const std::vector<std::string>& argv) {
     TerminalProgress progress;
     // Forests default to compact OBJ (0.1 mm, relative indices): ~17 % less to format and write.
     // One writer by the extension: USD streams trees and instances itself; the others go through
-    // TreeExporter (OBJ streamed, glTF/FBX through Assimp).
+    // TreeExporter (OBJ streamed, glTF written by our own, FBX through Assimp).
     std::optional<TreeExporter> exporter;
     std::optional<exporter::usd::UsdStageWriter> usdWriter;
     if (usda) {
@@ -129,10 +129,25 @@ int runForest(const std::vector<std::string>& argv) {
         layer.durability = args.flag("--fsync") ? Durability::Durable : Durability::Atomic;
         layer.shippedTextures = exporter::resourcesDir() / "textures";
         usdWriter.emplace(*output, std::move(layer));
+        // Variants come before the first batch: USD writes them as prototypes at the end.
+        options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
+            std::vector<exporter::usd::UsdVariant> out;
+            for (const forest::ForestVariant& v : variants)
+                out.push_back({v.species, v.index, v.mesh});
+            usdWriter->setVariants(std::move(out));
+        };
     } else {
         exporter.emplace(
             *output, exporter::ObjChoices{args.flag("--fsync"), !args.flag("--full-precision")});
         exporter->setInstanceTables(args.flag("--instance-tables"));
+        exporter->setProgress(progress);
+        // Variants come before the first batch: glTF writes each variant's mesh once, now.
+        options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
+            std::vector<exporter::ExportVariant> out;
+            for (const forest::ForestVariant& v : variants)
+                out.push_back({v.name, v.mesh});
+            exporter->addVariants(out);
+        };
     }
     double writeMs = 0;
     forest::ForestStats stats;
@@ -145,7 +160,7 @@ int runForest(const std::vector<std::string>& argv) {
                     std::vector<exporter::usd::UsdTree> trees;
                     trees.reserve(batch.size());
                     for (const forest::ForestTree& tree : batch)
-                        trees.push_back({tree.instance.id, tree.instance.species, -1,
+                        trees.push_back({tree.instance.id, tree.instance.species, tree.variant,
                                          tree.instance.position, tree.instance.rotation,
                                          tree.instance.scale * tree.instance.growth, tree.mesh});
                     usdWriter->add(trees, progress);
@@ -155,7 +170,8 @@ int runForest(const std::vector<std::string>& argv) {
                     for (const forest::ForestTree& tree : batch)
                         trees.push_back({tree.name, tree.mesh, tree.instance.position,
                                          tree.instance.rotation,
-                                         tree.instance.scale * tree.instance.growth});
+                                         tree.instance.scale * tree.instance.growth, tree.variant,
+                                         tree.instance.id});
                     exporter->add(trees);
                 }
                 progress.checkCancelled();
@@ -166,7 +182,7 @@ int runForest(const std::vector<std::string>& argv) {
         if (usdWriter)
             usdWriter->commit(progress);
         else
-            exporter->commit(progress);
+            exporter->commit();
         writeMs += msSince(t);
     } catch (const Cancelled&) {
         progress.finish();
@@ -198,6 +214,9 @@ int runForest(const std::vector<std::string>& argv) {
         for (const placement::Shortfall& s : stats.shortfalls)
             missing += s.requested - s.placed;
         appendJsonNumber(json, "shortfall", static_cast<double>(missing));
+        appendJsonNumber(json, "instanced", static_cast<double>(stats.instanced));
+        appendJsonNumber(json, "unique", static_cast<double>(stats.unique));
+        appendJsonNumber(json, "variants", static_cast<double>(stats.variants));
         if (usdWriter) {
             const exporter::usd::UsdLayerStats& u = usdWriter->stats();
             json += "\"usd\":{";

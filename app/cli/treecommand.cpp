@@ -75,7 +75,8 @@ int runTree(const std::vector<std::string>& argv) {
     TerminalProgress progress;
     TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
     exporter.add({ExportTree{exporter::objectNameFor(evaluator.graph().name), result.mesh}});
-    exporter.commit(progress);
+    exporter.setProgress(progress);
+    exporter.commit();
     const double writeMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 

@@ -338,8 +338,11 @@ forest_usd)
   [[ $listed == "$trees" ]] || fail "the stage holds $listed trees, the forest $trees"
   python3 - stats.json "$unique" "$instanced" <<'PY' || fail "usd stats disagree with the stage"
 import json, sys
-u = json.load(open(sys.argv[1]))["usd"]
-assert u["unique_trees"] == int(sys.argv[2]) and u["instances"] == int(sys.argv[3]), u
+d = json.load(open(sys.argv[1]))
+u = d["usd"]
+assert u["unique_trees"] == int(sys.argv[2]) == d["unique"], (u, d["unique"])
+assert u["instances"] == int(sys.argv[3]) == d["instanced"], (u, d["instanced"])
+assert d["instanced"] > 0 and u["prototypes"] == d["variants"], d
 PY
   [[ $(ls -A | grep -c tmp) == 0 ]] || fail "temporary files left: $(ls -A)" ;;
 forest_usd_tiles_compose)

@@ -15,7 +15,8 @@ TUPLE = re.compile(r"\(([^()]*)\)")
 
 
 def array(line):
-    body = line[line.index("[") + 1 : line.rindex("]")]
+    value = line[line.index(" = ") + 3 :]
+    body = value[value.index("[") + 1 : value.rindex("]")]
     if "(" in body:
         return ["(" + t.replace(" ", "") + ")" for t in TUPLE.findall(body)]
     return [t.strip() for t in body.split(",") if t.strip()]
