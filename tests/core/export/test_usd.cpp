@@ -118,7 +118,7 @@ TEST(UsdFormat, HalvesReadBackExactlyInFewDigits) {
 TEST(UsdFormat, QuaternionsInUsdOrderRealFirst) {
     std::string s;
     appendQuath(s, glm::quat(0.5f, 0.25f, -0.125f, 0.0f)); // glm: (w, x, y, z)
-    EXPECT_EQ(s, "(0.5, 0.25, -0.125, 0)");
+    EXPECT_EQ(s, "(0.5,0.25,-0.125,0)");
 }
 
 TEST(UsdFormat, FloatsRoundTrip) {
@@ -142,18 +142,18 @@ TEST(UsdStageWriter, WritesInstancersUniqueMeshesAndMaterials) {
     EXPECT_NE(text.find("def PointInstancer \"English_oak\""), std::string::npos);
     EXPECT_NE(text.find("def PointInstancer \"_3_leaf\""), std::string::npos);
     // Species 0: trees 0, 2, 4 (variants 0, 1, 0); species 1: trees 1, 3, 5.
-    EXPECT_NE(text.find("int64[] ids = [0, 2, 4]"), std::string::npos);
-    EXPECT_NE(text.find("int[] protoIndices = [0, 1, 0]"), std::string::npos);
-    EXPECT_NE(text.find("int64[] ids = [1, 3, 5]"), std::string::npos);
-    EXPECT_NE(text.find("int[] protoIndices = [0, 0, 0]"), std::string::npos);
+    EXPECT_NE(text.find("int64[] ids = [0,2,4]"), std::string::npos);
+    EXPECT_NE(text.find("int[] protoIndices = [0,1,0]"), std::string::npos);
+    EXPECT_NE(text.find("int64[] ids = [1,3,5]"), std::string::npos);
+    EXPECT_NE(text.find("int[] protoIndices = [0,0,0]"), std::string::npos);
     EXPECT_EQ(count(text, "over \"Prototypes\""), 2u);
     EXPECT_EQ(count(text, "def Xform \"variant_"), 3u);
     EXPECT_EQ(count(text, "kind = \"component\""), 3u + 2u);
     EXPECT_NE(text.find("def Xform \"tree_10\""), std::string::npos);
     EXPECT_NE(text.find("def Xform \"tree_11\""), std::string::npos);
     // Each material run its own Mesh with only its vertices: the leaf's 3, reindexed from 0.
-    EXPECT_NE(text.find("int[] faceVertexIndices = [0, 1, 2]"), std::string::npos);
-    EXPECT_NE(text.find("int[] faceVertexIndices = [0, 1, 2, 0, 2, 3]"), std::string::npos);
+    EXPECT_NE(text.find("int[] faceVertexIndices = [0,1,2]"), std::string::npos);
+    EXPECT_NE(text.find("int[] faceVertexIndices = [0,1,2,0,2,3]"), std::string::npos);
     EXPECT_EQ(count(text, "def Mesh \"bark\""), 5u);
     EXPECT_EQ(count(text, "def Mesh \"leaf\""), 5u);
     EXPECT_EQ(count(text, "interpolation = \"vertex\""), 2u * 10u);

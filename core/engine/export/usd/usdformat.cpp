@@ -71,11 +71,11 @@ void appendHalf(std::string& out, float value) {
 void appendQuath(std::string& out, const glm::quat& q) {
     out += '(';
     appendHalf(out, q.w);
-    out += ", ";
+    out += ',';
     appendHalf(out, q.x);
-    out += ", ";
+    out += ',';
     appendHalf(out, q.y);
-    out += ", ";
+    out += ',';
     appendHalf(out, q.z);
     out += ')';
 }

@@ -96,10 +96,14 @@ private:
     void writeInstancers(Progress& progress);
     void writeMaterials();
     void flush(bool force = false);
+    /// Appends \p text (emptied) to the file after everything before it.
+    void emit(std::string& text);
 
     std::filesystem::path mPath;
     UsdLayerOptions mOptions;
+    struct Background;
     std::unique_ptr<AtomicFile> mFile;
+    std::unique_ptr<Background> mWriter; ///< after mFile: stopped before the file is closed
     std::string mBuffer;
     std::vector<UsdVariant> mVariants;
     std::vector<std::string> mSpeciesPrims;
