@@ -205,6 +205,25 @@ TEST(UsdStageWriter, SameBytesWhateverTheBatches) {
     EXPECT_EQ(files, 2u); // no temporary left
 }
 
+TEST(UsdStageWriter, ProtoIndicesFollowThePrototypesOrder) {
+    // Variants numbered 3 and 7, handed over in reverse: protoIndices 0 and 1 by number.
+    const fs::path dir = tempDir("protoorder");
+    UsdStageWriter w(dir / "f.usda", options());
+    w.setVariants({{0, 7, barkAndLeaf(1)}, {0, 3, barkAndLeaf(2)}});
+    UsdTree a, b;
+    a.id = 1;
+    a.variant = 0; // variant 7
+    b.id = 2;
+    b.variant = 1; // variant 3
+    w.add({a, b});
+    w.commit();
+    const std::string text = readAll(dir / "f.usda");
+    EXPECT_NE(text.find("int[] protoIndices = [1,0]"), std::string::npos);
+    EXPECT_NE(text.find("rel prototypes = [</Forest/Instancers/English_oak/Prototypes/variant_3>, "
+                        "</Forest/Instancers/English_oak/Prototypes/variant_7>]"),
+              std::string::npos);
+}
+
 TEST(UsdStageWriter, RefusesAVariantOfAnotherSpecies) {
     const fs::path dir = tempDir("badvariant");
     UsdStageWriter w(dir / "f.usda", options());

@@ -153,6 +153,13 @@ void UsdStageWriter::setVariants(std::vector<UsdVariant> variants) {
         if (!v.mesh) throw InvalidInput("variant without a mesh");
     }
     mVariants = std::move(variants);
+    // protoIndices count in the order of the instancer's prototypes: the species' variants by
+    // their index (which need not be 0..K-1).
+    mProtoIndex.assign(mVariants.size(), 0);
+    for (std::size_t i = 0; i < mVariants.size(); ++i)
+        for (const UsdVariant& other : mVariants)
+            if (other.species == mVariants[i].species && other.index < mVariants[i].index)
+                ++mProtoIndex[i];
 }
 
 const std::string& UsdStageWriter::materialPrim(const mesh::Submesh& submesh) {
@@ -330,8 +337,7 @@ void UsdStageWriter::add(const std::vector<UsdTree>& trees, Progress& progress) 
                                std::to_string(t.variant) + " is not one of its species'");
         Instances& in = mInstances[t.species];
         in.ids.push_back(t.id);
-        in.protoIndices.push_back(
-            static_cast<std::int32_t>(mVariants[static_cast<std::size_t>(t.variant)].index));
+        in.protoIndices.push_back(mProtoIndex[static_cast<std::size_t>(t.variant)]);
         in.positions.push_back(t.position);
         in.rotations.push_back(t.rotationY);
         in.scales.push_back(t.scale);

@@ -106,6 +106,7 @@ private:
     std::unique_ptr<Background> mWriter; ///< after mFile: stopped before the file is closed
     std::string mBuffer;
     std::vector<UsdVariant> mVariants;
+    std::vector<std::int32_t> mProtoIndex; ///< per variant: its place in its species' prototypes
     std::vector<std::string> mSpeciesPrims;
     std::vector<Instances> mInstances; ///< per species
     std::vector<Material> mMaterials;
