@@ -366,11 +366,11 @@ forest_usd_tiles_compose)
   run_cli 1 compose bad.usda single.usda tiles/part_1.usda
   run_cli 2 compose root.usda ;;
 forest_sigterm_fbx|forest_sigterm_usd|forest_sigterm_obj)
-  # SIGTERM (Slurm's stop) at a known phase: inside Assimp's FBX exporter 1 s after the trees
+  # SIGTERM (Slurm's stop) at a known phase: inside Assimp's FBX exporter 0.7 s after the trees
   # are built (it ran to the end before), and mid-build for the streaming writers. Exit 130,
   # no output, no temporary left.
   ext=${case_name##*_}; [[ $ext == usd ]] && ext=usda
-  at="trees 100 1.0"; [[ $ext != fbx ]] && at="trees 40 0"
+  at="trees 100 0.7"; [[ $ext != fbx ]] && at="trees 40 0"
   python3 "$SRC/signal_during.py" $at SIGTERM "$CLI" forest "$DATA/../../resources/demo/bench-1000.sylva" \
     -o big.$ext >took.txt 2>err.txt
   got=$?
