@@ -22,7 +22,7 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  expand <grammar> [-n N] [--seed S]      print the derived L-system string\n"
-    "  tree <grammar|species.json> -o out.{obj,glb,fbx}   generate one tree\n"
+    "  tree <grammar|species.json> -o out.{obj,usda,glb,fbx}  generate one tree\n"
     "       [-n N] [--seed S] [--set node.param=value]... [--stats] [--fsync] [--compact]\n"
     "  forest <project.sylva> -o out.{obj,usda,glb,fbx}  generate a forest\n"
     "       [--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--no-lod]\n"

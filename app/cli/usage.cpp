@@ -28,12 +28,14 @@ constexpr CommandHelp kHelp[] = {
      "                        past it the command fails with exit status 1)\n"
      "  -h, --help            show this text\n"},
     {"tree",
-     "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{obj,glb,gltf,fbx} [options]\n"
+     "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{obj,usda,glb,gltf,fbx}\n"
+     "                      [options]\n"
      "\n"
      "Generates one tree and writes it in the format of the output's extension.\n"
      "\n"
      "options:\n"
-     "  -o, --output FILE     the file to write (.obj with .mtl and textures, .glb, .gltf, .fbx)\n"
+     "  -o, --output FILE     the file to write (.obj with .mtl and textures, .usda, .glb,\n"
+     "                        .gltf, .fbx)\n"
      "  -n, --generations N   sets generations (0..1000) on every lsystem node\n"
      "  --seed S              seed of every generator\n"
      "  --set node.param=V    changes one node parameter (V is JSON or a string); repeatable\n"

@@ -218,7 +218,7 @@ SceneFormat sceneFormatFor(const std::filesystem::path& path) {
     if (ext == ".glb") return SceneFormat::Glb;
     if (ext == ".gltf") return SceneFormat::Gltf;
     if (ext == ".fbx") return SceneFormat::Fbx;
-    throw InvalidInput("unknown scene format '" + ext + "' (use .glb, .gltf or .fbx)");
+    throw InvalidInput("unknown scene format '" + ext + "' (use .obj, .usda, .glb, .gltf or .fbx)");
 }
 
 namespace {

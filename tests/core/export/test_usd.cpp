@@ -8,6 +8,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "engine/export/sceneexport.h"
+#include "engine/export/treeexport.h"
 #include "engine/export/usd/usdcompose.h"
 #include "engine/export/usd/usdformat.h"
 #include "engine/export/usd/usdstagewriter.h"
@@ -329,4 +330,25 @@ TEST(SceneExport, CancelledExportLeavesNoFile) {
         EXPECT_GT(fs::file_size(dir / name), 1000u);
         fs::remove(dir / name);
     }
+}
+
+TEST(TreeExporter, WritesUsdWithSpeciesFromTheForestsNames) {
+    // What the editor's File > Export and Python's export_forest hand over: names, ids, variants.
+    const fs::path dir = tempDir("treeexporter");
+    exporter::TreeExporter out(dir / "f.usda");
+    out.addVariants({{"english-oak_v0", barkAndLeaf(1)},
+                     {"english-oak_v1", barkAndLeaf(2)},
+                     {"birch_v0", barkAndLeaf(3)}});
+    out.add({{"english-oak_1", barkAndLeaf(1), {1, 0, 0}, 0.5f, 1.0f, 1, 1},
+             {"birch_2", barkAndLeaf(3), {2, 0, 0}, 0.0f, 1.0f, 2, 2},
+             {"birch_3", barkAndLeaf(0.5f), {3, 0, 0}, 0.0f, 0.8f, -1, 3}});
+    const auto written = out.commit();
+    ASSERT_FALSE(written.empty());
+    const std::string text = readAll(dir / "f.usda");
+    EXPECT_NE(text.find("def PointInstancer \"english_oak\""), std::string::npos);
+    EXPECT_NE(text.find("def PointInstancer \"birch\""), std::string::npos);
+    EXPECT_NE(text.find("int[] protoIndices = [1]"), std::string::npos);
+    EXPECT_NE(text.find("def Xform \"tree_3\""), std::string::npos);
+    EXPECT_NE(text.find("custom string sylva:species = \"birch\""), std::string::npos);
+    EXPECT_EQ(count(text, "def Xform \"variant_"), 3u);
 }

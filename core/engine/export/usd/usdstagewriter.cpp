@@ -120,15 +120,10 @@ UsdStageWriter::UsdStageWriter(fs::path path, UsdLayerOptions options)
         fs::create_directories(dir, ec);
         if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());
     }
-    // Species prim names, unique even where two names map to the same identifier.
-    std::set<std::string> used;
-    for (const std::string& name : mOptions.species) {
-        std::string prim = primName(name);
-        for (int k = 2; !used.insert(prim).second; ++k)
-            prim = primName(name) + "_" + std::to_string(k);
-        mSpeciesPrims.push_back(prim);
-    }
-    mInstances.resize(mOptions.species.size());
+    const std::vector<std::string> species = std::move(mOptions.species);
+    mOptions.species.clear();
+    for (const std::string& name : species)
+        speciesIndex(name);
     mFile = std::make_unique<AtomicFile>(mPath, mOptions.durability);
     mWriter = std::make_unique<Background>(*mFile);
 
@@ -144,6 +139,20 @@ UsdStageWriter::UsdStageWriter(fs::path path, UsdLayerOptions options)
 }
 
 UsdStageWriter::~UsdStageWriter() = default;
+
+std::uint32_t UsdStageWriter::speciesIndex(const std::string& name) {
+    for (std::size_t i = 0; i < mOptions.species.size(); ++i)
+        if (mOptions.species[i] == name) return static_cast<std::uint32_t>(i);
+    // Prim names unique even where two names map to the same identifier.
+    std::string prim = primName(name);
+    for (int k = 2;
+         std::find(mSpeciesPrims.begin(), mSpeciesPrims.end(), prim) != mSpeciesPrims.end(); ++k)
+        prim = primName(name) + "_" + std::to_string(k);
+    mOptions.species.push_back(name);
+    mSpeciesPrims.push_back(prim);
+    mInstances.emplace_back();
+    return static_cast<std::uint32_t>(mOptions.species.size() - 1);
+}
 
 void UsdStageWriter::setVariants(std::vector<UsdVariant> variants) {
     for (const UsdVariant& v : variants) {

@@ -71,6 +71,9 @@ public:
     UsdStageWriter(const UsdStageWriter&) = delete;
     UsdStageWriter& operator=(const UsdStageWriter&) = delete;
 
+    /// The index of species \p name, added after the known ones when it is new (writers that
+    /// learn the species from the trees: TreeExporter).
+    std::uint32_t speciesIndex(const std::string& name);
     /// The variants every instance refers to; call before the first add().
     void setVariants(std::vector<UsdVariant> variants);
     /// Writes the unique trees of a batch and gathers its instances.
