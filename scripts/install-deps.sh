@@ -13,6 +13,7 @@ PACKAGES=(
   xvfb xauth xdotool libgl1-mesa-dri clang-format
   python3-dev pybind11-dev python3-numpy python3-pytest
   clang libclang-rt-14-dev libomp-dev
+  slurmctld slurmd slurm-client munge  # tests/slurm: a one-node cluster runs a farm job
 )
 # node and npm for the outside readers of tests/readers (scripts/install-readers.sh): Debian's,
 # unless a node with its npm is already there (NodeSource's nodejs bundles npm, and Debian's npm

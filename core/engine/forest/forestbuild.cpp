@@ -452,6 +452,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         std::vector<std::exception_ptr> errors(end - begin);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
         for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(end - begin); ++k) {
+            // Ctrl-C/SIGTERM: the trees not started are skipped, the batch ends with the trees
+            // in flight and checkCancelled() below throws (a batch of 64 takes seconds).
+            if (progress.isCancelled()) continue;
             const auto slot = static_cast<std::size_t>(k);
             const std::size_t index = selected[begin + slot];
             const auto thread = static_cast<std::size_t>(omp_get_thread_num());
@@ -590,6 +593,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 errors[slot] = std::current_exception();
             }
         }
+        progress.checkCancelled();
         for (const std::exception_ptr& e : errors)
             if (e) std::rethrow_exception(e); // the first failing tree in instance order
         for (const ForestTree& tree : batch) {
