@@ -42,8 +42,8 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
 
 int runForest(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
-                    {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
-                     "--naive-placement", "--fsync", "--full-precision"});
+                    {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--no-instancing",
+                     "--instance-tables", "--naive-placement", "--fsync", "--full-precision"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -61,6 +61,7 @@ int runForest(const std::vector<std::string>& argv) {
     options.useLod = !args.flag("--no-lod");
     options.adapt = !args.flag("--no-adapt");
     options.neighbours = !args.flag("--no-neighbours");
+    options.instancing = !args.flag("--no-instancing");
     if (args.flag("--naive-placement")) options.placement = placement::PlacementMethod::Naive;
 
     const auto start = Clock::now();
@@ -121,6 +122,9 @@ int runForest(const std::vector<std::string>& argv) {
                              : 0.0);
         appendJsonNumber(json, "colliding_trees", static_cast<double>(stats.collidingTrees));
         appendJsonNumber(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
+        appendJsonNumber(json, "instanced", static_cast<double>(stats.instanced));
+        appendJsonNumber(json, "unique", static_cast<double>(stats.unique));
+        appendJsonNumber(json, "variants", static_cast<double>(stats.variants));
         std::size_t missing = 0;
         for (const placement::Shortfall& s : stats.shortfalls)
             missing += s.requested - s.placed;

@@ -476,10 +476,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 ctx.leafAspect = static_cast<float>(meshSettings[in.species].leafCards.aspect);
                 ctx.key = in.id + 1;
 
-                // A tree nothing would adapt (no obstacle near its variant, no neighbour's crown
-                // core in its own, as adaptation sees them) shows one of its species' variants,
-                // picked by its seed.
-                if (firstVariant[in.species] >= 0 && near.empty()) {
+                // A domain tree nothing would adapt (no obstacle near its variant, no
+                // neighbour's crown core in its own, as adaptation sees them) shows one of its
+                // species' variants, picked by its seed. Hand-placed trees are the artist's
+                // own: always grown from their seed.
+                if (firstVariant[in.species] >= 0 && !in.handPlaced && near.empty()) {
                     const auto v = static_cast<std::size_t>(firstVariant[in.species]) +
                                    mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species];
                     if (!touchesObstacles(obstacles, in, extents[v])) {

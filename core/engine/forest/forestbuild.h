@@ -76,8 +76,9 @@ struct ForestOptions {
     std::uint64_t obstaclesKey = 0;
     /// K for species that do not set their own (SceneSpecies::variants), 1..256.
     int variantsPerSpecies = 8;
-    /// true: a tree that touches no obstacle and no neighbour's crown is an instance of one of
-    /// its species' variants; false: every tree is grown and adapted uniquely.
+    /// true: a domain tree that touches no obstacle and no neighbour's crown is an instance of
+    /// one of its species' variants (hand-placed trees are always grown from their own seed);
+    /// false: every tree is grown and adapted uniquely.
     bool instancing = true;
     /// Called once, before the first tree batch, with every variant of the built tile's
     /// species (see ForestVariant); may be empty.
