@@ -126,9 +126,9 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         result.stats["biomass_kg"] = stats.metrics.dryBiomassKg;
         result.stats["mean_dbh_m"] = stats.metrics.meanDbhM;
         result.stats["height"] = height;
-        // Trees grown for their place; instanced trees are drawn from their variant, never grown.
+        // Trees made again: grown (unique) or meshed from their variant (instanced).
         result.stats["regrown"] =
-            static_cast<double>(caches ? caches->trees.misses() : stats.unique);
+            static_cast<double>(caches ? caches->trees.misses() : stats.trees);
         for (const auto& [stage, ms] : stats.wallMs)
             result.timingsMs[stage] = ms;
         result.speciesName =

@@ -486,11 +486,40 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     if (!touchesObstacles(obstacles, in, extents[v])) {
                         const ForestVariant& variant = variants[v];
                         tree.variant = static_cast<std::int32_t>(v);
-                        tree.mesh = variant.mesh;
                         tree.skeleton = variant.skeleton;
                         tree.meshSettings = variant.meshSettings;
                         tree.metrics =
                             forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
+                        if (!options.useLod || !options.buildMeshes) {
+                            tree.mesh = variant.mesh; // shared: drawn with the tree's transform
+                            continue;
+                        }
+                        // With the camera's LOD the variant is meshed for this tree's distance,
+                        // as a unique tree is (the full-detail variant drawn 1,000 times made an
+                        // OBJ 13 times larger); cached like one, keyed by its variant.
+                        std::uint64_t key = 0;
+                        if (options.cache) {
+                            key = mixSeed(treeKey(speciesKeys[in.species], in, {}, scene, options,
+                                                  ctx.cameraDistance),
+                                          variant.seed);
+                            if (std::optional<ForestTree> cached = options.cache->findTree(key)) {
+                                tree = std::move(*cached);
+                                tree.name = species.name + "_" + std::to_string(in.id);
+                                continue;
+                            }
+                        }
+                        const auto t = Clock::now();
+                        mesh::TreeMeshSettings settings = *variant.meshSettings;
+                        tree.meshCameraDistance = ctx.cameraDistance;
+                        settings.useLod = true;
+                        settings.cameraDistance = ctx.cameraDistance;
+                        settings.hasCamera = true;
+                        settings.cameraLocal =
+                            glm::vec3(glm::inverse(ctx.transform) * glm::vec4(scene.camera, 1.0f));
+                        tree.mesh = std::make_shared<const mesh::Mesh>(
+                            mesh::buildTreeMesh(*variant.skeleton, settings));
+                        cpuMesh[thread] += msSince(t);
+                        if (key) options.cache->storeTree(key, tree);
                         continue;
                     }
                 }

@@ -90,8 +90,11 @@ struct ForestTree {
     placement::Instance instance;
     std::string name; ///< "<species>_<id>"
     /// Index into the variant list handed to ForestOptions::onVariants; -1: a unique tree
-    /// (grown and adapted for its place). An instanced tree's mesh, skeleton and meshSettings
-    /// are its variant's (shared, not copied), in the tree's local frame like a unique tree's.
+    /// (grown and adapted for its place). An instanced tree's skeleton and meshSettings are its
+    /// variant's (shared, not copied), in the tree's local frame like a unique tree's; so is its
+    /// mesh without the camera LOD (ForestOptions::useLod false). With it, the mesh is the
+    /// variant's skeleton meshed at the tree's camera distance, as a unique tree's is: writers
+    /// that instance (USD, glTF) take the variants' meshes and leave useLod off.
     std::int32_t variant = -1;
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).

@@ -8,6 +8,7 @@
 
 #include "engine/environment/obstaclemesh.h"
 #include "engine/forest/forestbuild.h"
+#include "engine/mesh/lod.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
 #include "presetfile.h"
@@ -101,6 +102,34 @@ TEST(Instancing, FreeTreesShareTheirVariantsMeshTouchingOnesAreUnique) {
     EXPECT_GT(b.stats.instanced, b.stats.trees / 2);
     EXPECT_GT(b.stats.unique, 0u);
     (void)nearWall;
+}
+
+// With the camera's LOD (the OBJ writer's and the viewport's forest), an instanced tree is its
+// variant's skeleton meshed at its own distance: the same mesh a unique tree with that skeleton
+// would get, and never more triangles than the full-detail variant.
+TEST(Instancing, WithTheCameraLodInstancesAreTheirVariantMeshedAtTheirDistance) {
+    forest::ForestScene s = sparseForest(24, false);
+    s.camera = {0.0f, 10.0f, 150.0f};
+    const Built b = build(s, {});
+    std::size_t instanced = 0;
+    for (const forest::ForestTree& t : b.trees) {
+        if (t.variant < 0) continue;
+        ++instanced;
+        const forest::ForestVariant& v = b.variants.at(static_cast<std::size_t>(t.variant));
+        EXPECT_EQ(t.skeleton.get(), v.skeleton.get());
+        EXPECT_EQ(t.meshSettings.get(), v.meshSettings.get());
+        EXPECT_DOUBLE_EQ(t.meshCameraDistance, glm::length(s.camera - t.instance.position));
+        EXPECT_LE(t.mesh->triangleCount(), v.mesh->triangleCount()) << t.name;
+        mesh::TreeMeshSettings again = *t.meshSettings;
+        again.useLod = true;
+        again.cameraDistance = t.meshCameraDistance;
+        again.hasCamera = true;
+        again.cameraLocal =
+            glm::vec3(glm::inverse(t.instance.transform()) * glm::vec4(s.camera, 1.0f));
+        const mesh::Mesh m = mesh::buildTreeMesh(*t.skeleton, again);
+        EXPECT_EQ(m.indices, t.mesh->indices) << t.name;
+    }
+    EXPECT_GT(instanced, 12u);
 }
 
 TEST(Instancing, OffEveryTreeIsUniqueAndNoVariantIsMade) {
