@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <set>
 
+#include <omp.h>
+
 #include "engine/environment/obstaclemesh.h"
 #include "engine/forest/forestbuild.h"
 #include "engine/mesh/lod.h"
@@ -156,4 +158,31 @@ TEST(Instancing, KIsPerSpeciesWithTheOptionAsDefaultAndChecked) {
     s.species[0].variants = 300;
     options.variantsPerSpecies = 8;
     EXPECT_THROW(build(s, options), InvalidInput);
+}
+
+// Same project, same forest: which trees are instanced, their variants, and every mesh byte,
+// on one thread or two.
+TEST(Instancing, DeterministicOnOneAndTwoThreads) {
+    const forest::ForestScene s = sparseForest(30, true);
+    forest::ForestOptions options;
+    options.batchSize = 7;
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const Built one = build(s, options);
+    omp_set_num_threads(2);
+    const Built two = build(s, options);
+    omp_set_num_threads(threads);
+    ASSERT_EQ(one.trees.size(), two.trees.size());
+    ASSERT_EQ(one.variants.size(), two.variants.size());
+    for (std::size_t i = 0; i < one.variants.size(); ++i) {
+        EXPECT_EQ(one.variants[i].seed, two.variants[i].seed);
+        EXPECT_EQ(one.variants[i].mesh->positions, two.variants[i].mesh->positions);
+    }
+    for (std::size_t i = 0; i < one.trees.size(); ++i) {
+        EXPECT_EQ(one.trees[i].instance.id, two.trees[i].instance.id);
+        EXPECT_EQ(one.trees[i].variant, two.trees[i].variant);
+        EXPECT_EQ(one.trees[i].mesh->positions, two.trees[i].mesh->positions) << i;
+        EXPECT_EQ(one.trees[i].mesh->indices, two.trees[i].mesh->indices) << i;
+    }
+    EXPECT_EQ(one.stats.instanced, two.stats.instanced);
 }
