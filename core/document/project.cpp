@@ -69,8 +69,8 @@ ProjectSpecies parseSpeciesRef(const Value& v, std::size_t i) {
     }
     if (const Value* k = v.find("variants")) {
         const double x = k->toNumber(where + ".variants");
-        if (!(x >= 1 && x <= 256 && x == std::floor(x)))
-            throw InvalidInput(where + ".variants must be a whole number in [1, 256]");
+        if (!(x >= 0 && x <= 256 && x == std::floor(x)))
+            throw InvalidInput(where + ".variants must be a whole number in [0, 256]");
         s.variants = static_cast<int>(x);
     }
     if (s.file.empty() == !s.graph.has_value())

@@ -35,7 +35,8 @@ struct ProjectSpecies {
     std::optional<sylva::Value> graph; ///< inline {"nodes": [...], "output": ...}
     /// Inline species only: the species file's "traits" (wood density, carbon, crown radius).
     std::optional<sylva::Value> traits;
-    /// K: how many variants the species' instanced trees share (1..256; "variants").
+    /// K: how many variants the species' instanced trees share (0..256; "variants"); 0: none,
+    /// every tree of the species is grown for its place.
     int variants = kDefaultVariants;
     bool operator==(const ProjectSpecies&) const = default;
 };

@@ -429,14 +429,15 @@ void bindForest(py::module_& m) {
             [](Project& p, const std::string& species, int k) {
                 for (doc::ProjectSpecies& s : p.project.species)
                     if (s.name == species) {
-                        requireRange(("variants of '" + species + "'").c_str(), k, 1, 256);
+                        requireRange(("variants of '" + species + "'").c_str(), k, 0, 256);
                         s.variants = k;
                         return;
                     }
                 throw InvalidInput("the project has no species '" + species + "'");
             },
             py::arg("species"), py::arg("k"),
-            "how many variants the species' instanced trees share (1..256, default 8)")
+            "how many variants the species' instanced trees share (0..256, default 8; 0: every "
+            "tree of the species is grown for its place)")
         .def_property_readonly(
             "obstacles", [](const Project& p) { return obstaclesList(p.project.obstacles); },
             "the obstacle files (dicts: file, translate, rotate, scale); arrays are not listed")

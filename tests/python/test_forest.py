@@ -177,8 +177,8 @@ def test_variants_instances_and_ids(data, tmp_path):
     assert forest.tree_by_id(forest[7].id).name == forest[7].name
     with pytest.raises(KeyError):
         forest.tree_by_id(12345)
-    with pytest.raises(ValueError, match=r"variants of 'bush'.*\[1, 256\]"):
-        project.set_variants("bush", 0)
+    with pytest.raises(ValueError, match=r"variants of 'bush'.*\[0, 256\]"):
+        project.set_variants("bush", 257)
 
     # Move the hand-placed tree 30 m: every other tree keeps its id and transform, except the
     # few it stood on or stands on now.

@@ -366,10 +366,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             used[placed.instances[index].species] = true;
         for (std::size_t sp = 0; sp < scene.species.size(); ++sp) {
             if (!used[sp] || plans[sp].selfOrganizing) continue;
-            const int k = scene.species[sp].variants > 0 ? scene.species[sp].variants
-                                                         : options.variantsPerSpecies;
-            requireRange(("variants of species '" + scene.species[sp].name + "'").c_str(), k, 1,
+            const int k = scene.species[sp].variants >= 0 ? scene.species[sp].variants
+                                                          : options.variantsPerSpecies;
+            requireRange(("variants of species '" + scene.species[sp].name + "'").c_str(), k, 0,
                          256);
+            if (k == 0) continue; // a species grown tree by tree
             firstVariant[sp] = static_cast<std::int32_t>(variants.size());
             variantCount[sp] = static_cast<std::uint32_t>(k);
             const std::uint64_t base =

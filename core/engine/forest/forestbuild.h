@@ -29,8 +29,9 @@ struct SceneSpecies {
     std::string name;
     graph::SpeciesGraph graph;
     /// K, the number of variants instanced trees of this species share (the project's per-species
-    /// setting); 0: ForestOptions::variantsPerSpecies.
-    int variants = 0;
+    /// setting), 0..256; 0: none, every tree of the species is grown for its place (hero
+    /// species); -1: ForestOptions::variantsPerSpecies.
+    int variants = -1;
 };
 
 /// Everything a forest is built from; the document layer fills it from a `.sylva` project.

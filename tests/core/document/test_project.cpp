@@ -330,8 +330,8 @@ TEST(Project, IdsAndVariantsAreChecked) {
     EXPECT_NE(errorOf(head + R"(} ], "instances": [ { "id": 1.5, "species": "a" } ] })")
                   .find("instances[0].id must be a whole number in [1, 999999999]"),
               std::string::npos);
-    EXPECT_NE(errorOf(head + R"(, "variants": 0 } ] })")
-                  .find("species[0].variants must be a whole number in [1, 256]"),
+    EXPECT_NE(errorOf(head + R"(, "variants": 257 } ] })")
+                  .find("species[0].variants must be a whole number in [0, 256]"),
               std::string::npos);
     EXPECT_NE(errorOf(head + R"(} ], "next_tree_id": 0 })").find("next_tree_id must be"),
               std::string::npos);

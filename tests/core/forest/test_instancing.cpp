@@ -148,7 +148,7 @@ TEST(Instancing, OffEveryTreeIsUniqueAndNoVariantIsMade) {
 
 TEST(Instancing, KIsPerSpeciesWithTheOptionAsDefaultAndChecked) {
     forest::ForestScene s = sparseForest(6, false);
-    s.species[0].variants = 0;
+    s.species[0].variants = -1;
     forest::ForestOptions options;
     options.buildMeshes = false;
     options.variantsPerSpecies = 5;
@@ -158,6 +158,12 @@ TEST(Instancing, KIsPerSpeciesWithTheOptionAsDefaultAndChecked) {
     s.species[0].variants = 300;
     options.variantsPerSpecies = 8;
     EXPECT_THROW(build(s, options), InvalidInput);
+    // 0: a species whose every tree is grown for its place.
+    s.species[0].variants = 0;
+    const Built hero = build(s, options);
+    EXPECT_TRUE(hero.variants.empty());
+    EXPECT_EQ(hero.stats.instanced, 0u);
+    EXPECT_EQ(hero.stats.unique, 6u);
 }
 
 // Same project, same forest: which trees are instanced, their variants, and every mesh byte,
