@@ -82,19 +82,27 @@ def closeup(build, species, eye, target, png, folder):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
 
 
-def library(build, png, folder):
-    """The whole library in one project (resources/demo/library.sylva), seen from its camera."""
-    with open(os.path.join(ROOT, "resources/demo/library.sylva")) as f:
+def library(build, png, folder, project="resources/demo/library.sylva"):
+    """A whole project (the library by default), seen from its camera."""
+    with open(os.path.join(ROOT, project)) as f:
         camera = json.load(f)["camera"]
-    script = os.path.join(folder, "library.py")
+    script = os.path.join(folder, os.path.basename(project) + ".py")
     with open(script, "w") as f:
         f.write("import sylva\nwin = sylva.window()\nwin.look_from(%r, %r)\n"
                 "win.screenshot(%r, viewport_only=True)\n"
                 % (tuple(camera["position"]), tuple(camera["target"]), png))
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24",
            os.path.join(build, "app/editor/sylva"), "--size", "1200x600", "--script", script,
-           os.path.join(ROOT, "resources/demo/library.sylva")]
+           os.path.join(ROOT, project)]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
+
+
+def solidity(build):
+    """The broadleaves' crown silhouette table printed by test_crownshape (issue #33)."""
+    out = subprocess.run([os.path.join(build, "tests/core/forest/test_crownshape"),
+                          "--gtest_filter=*Broadleaves*"], check=True, capture_output=True,
+                         text=True).stdout
+    return [l for l in out.splitlines() if l.startswith("|")]
 
 
 def triangles(build, species_file, folder):
@@ -122,7 +130,7 @@ def main():
     ap.add_argument("--thumb", type=int, default=240)
     ap.add_argument("--no-doc", action="store_true", help="do not rewrite docs/gallery.md")
     args = ap.parse_args()
-    species = [s for s in args.only.split(",") if s] or SPECIES
+    species = [s for s in args.only.split(",") if s and s != "stand"] if args.only else SPECIES
     seeds = [int(s) for s in args.seeds.split(",")]
     os.makedirs(args.out, exist_ok=True)
     rows = []
@@ -147,6 +155,10 @@ def main():
             raw = os.path.join(tmp, "library.png")
             library(args.build, raw, tmp)
             thumbnail(raw, os.path.join(args.out, "library.png"), 720, colors=128)
+        if not args.only or "stand" in args.only.split(","):
+            raw = os.path.join(tmp, "stand.png")
+            library(args.build, raw, tmp, "resources/demo/stand.sylva")
+            thumbnail(raw, os.path.join(args.out, "stand.png"), 720, colors=128)
     if args.no_doc or args.only:
         return
     lines = ["| species | seed %s |" % " | seed ".join(map(str, seeds)),
@@ -161,6 +173,9 @@ def main():
     for sp, tris in rows:
         lines.append("| %s | %s | %s |" % (sp, " / ".join("{:,}".format(t) for t, _ in tris),
                                            " / ".join("%.1f" % h for _, h in tris)))
+    lines += ["", "Crown silhouettes of the broadleaves (`tests/core/forest/test_crownshape`: side view,"
+              " crown rows, solidity = area / convex hull area, the mean of two views; it asserts"
+              " <= 0.85):", ""] + solidity(args.build)
     doc_path = os.path.join(ROOT, "docs", "gallery.md")
     with open(doc_path) as f:
         text = f.read()

@@ -43,7 +43,8 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
 int runForest(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--no-instancing",
-                     "--instance-tables", "--naive-placement", "--fsync", "--full-precision"});
+                     "--instance-tables", "--naive-placement", "--fsync", "--full-precision",
+                     "--assimp-gltf"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -75,6 +76,17 @@ int runForest(const std::vector<std::string>& argv) {
     // Forests default to compact OBJ (0.1 mm, relative indices): ~17 % less to format and write.
     TreeExporter exporter(*output, {args.flag("--fsync"), !args.flag("--full-precision")});
     exporter.setInstanceTables(args.flag("--instance-tables"));
+    exporter.setProgress(progress);
+    exporter.setAssimpGltf(args.flag("--assimp-gltf"));
+    // Instancing writers take the variants' meshes: no per-instance LOD mesh to make.
+    options.meshInstances = !exporter.writesInstances();
+    // Variants come before the first batch: glTF writes each variant's mesh once, now.
+    options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
+        std::vector<exporter::ExportVariant> out;
+        for (const forest::ForestVariant& v : variants)
+            out.push_back({v.name, v.mesh});
+        exporter.addVariants(out);
+    };
     double writeMs = 0;
     forest::ForestStats stats;
     try {
@@ -87,7 +99,8 @@ int runForest(const std::vector<std::string>& argv) {
                 for (const forest::ForestTree& tree : batch)
                     trees.push_back({tree.name, tree.mesh, tree.instance.position,
                                      tree.instance.rotation,
-                                     tree.instance.scale * tree.instance.growth});
+                                     tree.instance.scale * tree.instance.growth, tree.variant,
+                                     tree.instance.id});
                 exporter.add(trees);
                 progress.checkCancelled();
                 writeMs += msSince(t);

@@ -63,6 +63,7 @@ constexpr CommandHelp kHelp[] = {
      "  --naive-placement     the O(n^2) placement oracle instead of the grid (same result)\n"
      "  --full-precision      micrometre OBJ with absolute indices (default: compact)\n"
      "  --fsync               waits until the OBJ is on disk before renaming it into place\n"
+     "  --assimp-gltf         .glb/.gltf through Assimp's exporter (slow; for comparison)\n"
      "  -h, --help            show this text\n"},
     {"stats",
      "usage: sylva-cli stats <project.sylva|species.json|grammar> [--json] [--seed S]\n"

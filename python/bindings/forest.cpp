@@ -54,6 +54,7 @@ struct VariantRef {
 
 struct Forest {
     std::shared_ptr<const std::vector<forest::ForestTree>> trees;
+    /// The variants the trees' ForestTree::variant indexes (written once by glTF).
     std::shared_ptr<const std::vector<forest::ForestVariant>> variants;
     std::vector<std::string> speciesNames;
     py::dict stats;
@@ -148,15 +149,29 @@ void warnShortfalls(const forest::ForestStats& stats, const forest::ForestScene&
 }
 
 exporter::ExportTree exportTree(const forest::ForestTree& t) {
-    return {t.name, t.mesh, t.instance.position, t.instance.rotation,
-            t.instance.scale * t.instance.growth};
+    return {t.name,
+            t.mesh,
+            t.instance.position,
+            t.instance.rotation,
+            t.instance.scale * t.instance.growth,
+            t.variant,
+            t.instance.id};
+}
+
+std::vector<exporter::ExportVariant> exportVariants(const std::vector<forest::ForestVariant>& v) {
+    std::vector<exporter::ExportVariant> out;
+    for (const forest::ForestVariant& variant : v)
+        out.push_back({variant.name, variant.mesh});
+    return out;
 }
 
 std::vector<std::string> writeForest(const std::vector<forest::ForestTree>& trees,
+                                     const std::vector<exporter::ExportVariant>& variants,
                                      const std::string& path, bool fullPrecision, bool fsync,
                                      bool instanceTables) {
     exporter::TreeExporter exporter(path, {fsync, !fullPrecision});
     exporter.setInstanceTables(instanceTables);
+    exporter.addVariants(variants);
     std::vector<exporter::ExportTree> batch;
     batch.reserve(trees.size());
     for (const forest::ForestTree& t : trees)
@@ -358,7 +373,8 @@ void bindForest(py::module_& m) {
                bool instanceTables) {
                 const std::string p = toPath(path);
                 py::gil_scoped_release release;
-                return writeForest(*f.trees, p, fullPrecision, fsync, instanceTables);
+                return writeForest(*f.trees, exportVariants(*f.variants), p, fullPrecision, fsync,
+                                   instanceTables);
             },
             py::arg("path"), py::arg("full_precision") = false, py::arg("fsync") = false,
             py::arg("instance_tables") = false,
@@ -620,9 +636,15 @@ void bindForest(py::module_& m) {
                     const double loadMs = msSince(t0);
                     exporter::TreeExporter exporter(out, {fsync, !fullPrecision});
                     exporter.setInstanceTables(instanceTables);
+                    exporter.setProgress(prog);
+                    forest::ForestOptions options = b.options;
+                    options.meshInstances = !exporter.writesInstances(); // as sylva-cli forest
+                    options.onVariants = [&](const std::vector<forest::ForestVariant>& v) {
+                        exporter.addVariants(exportVariants(v));
+                    };
                     double writeMs = 0;
                     stats = forest::buildForest(
-                        s, b.options,
+                        s, options,
                         [&](const std::vector<forest::ForestTree>& batch) {
                             const auto t = Clock::now();
                             std::vector<exporter::ExportTree> trees;

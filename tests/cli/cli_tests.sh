@@ -382,6 +382,38 @@ print("changed %d of %d" % (len(changed), len(a)))
 assert "bush_1" in changed and len(changed) < len(a) / 2, changed
 PY
   cat moved.txt ;;
+forest_glb_threads_identical)
+  # The instanced GLB and the text glTF with its .bin are byte-identical on 1 and 2 threads.
+  mkdir -p one two
+  for ext in glb gltf; do
+    run_cli 0 forest "$DATA/projects/small.sylva" -o one/f.$ext --threads 1
+    run_cli 0 forest "$DATA/projects/small.sylva" -o two/f.$ext --threads 2
+    cmp -s one/f.$ext two/f.$ext || fail "1 and 2 threads give different f.$ext"
+  done
+  cmp -s one/f.bin two/f.bin || fail "1 and 2 threads give different f.bin"
+  grep -q EXT_mesh_gpu_instancing one/f.gltf || fail "no instancing in the glTF" ;;
+forest_glb_sigterm)
+  # SIGTERM (what Slurm sends) while a 10,000-tree GLB is being written: the writer stops at its
+  # next array, exit 130, no file and no temporary left. The run is stopped once the GLB's
+  # temporary exists (the variants are written), or after 20 s at most.
+  "$CLI" forest "$DATA/../../resources/demo/bench-10000.sylva" -o big.glb --threads 2 >out.txt 2>err.txt &
+  pid=$!
+  for _ in $(seq 200); do
+    compgen -G '.big.glb.bin.tmp*' >/dev/null && break
+    sleep 0.1
+  done
+  compgen -G '.big.glb.bin.tmp*' >/dev/null || fail "the GLB's temporary never appeared: $(ls -A)"
+  sleep 1
+  kill -TERM $pid
+  # A hang guard, not a timing: a cancelled run that has not exited after 20 s is stuck.
+  for _ in $(seq 200); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+  kill -0 $pid 2>/dev/null && { kill -KILL $pid; fail "still running 20 s after SIGTERM"; }
+  wait $pid
+  got=$?
+  [[ $got == 130 ]] || fail "exit status $got after SIGTERM, expected 130: $(cat err.txt)"
+  grep -q "interrupted" err.txt || fail "no message: $(cat err.txt)"
+  [[ ! -e big.glb ]] || fail "a partial big.glb is left"
+  [[ $(ls -A | grep -c 'tmp') == 0 ]] || fail "temporary files left: $(ls -A)" ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

@@ -491,7 +491,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                         tree.meshSettings = variant.meshSettings;
                         tree.metrics =
                             forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
-                        if (!options.useLod || !options.buildMeshes) {
+                        if (!options.useLod || !options.buildMeshes || !options.meshInstances) {
                             tree.mesh = variant.mesh; // shared: drawn with the tree's transform
                             continue;
                         }

@@ -84,6 +84,11 @@ struct ForestOptions {
     /// Called once, before the first tree batch, with every variant of the built tile's
     /// species (see ForestVariant); may be empty.
     VariantSink onVariants;
+    /// With useLod: true, each instanced tree's mesh is its variant meshed at the tree's
+    /// distance (for consumers that draw every tree's own mesh: OBJ, FBX, the viewport);
+    /// false, it is the variant's shared mesh (writers that instance the variants, glTF, USD:
+    /// no mesh is made per instance).
+    bool meshInstances = true;
 };
 
 /// One finished tree, in its own local frame; `instance.transform()` places it in the world.
@@ -93,9 +98,9 @@ struct ForestTree {
     /// Index into the variant list handed to ForestOptions::onVariants; -1: a unique tree
     /// (grown and adapted for its place). An instanced tree's skeleton and meshSettings are its
     /// variant's (shared, not copied), in the tree's local frame like a unique tree's; so is its
-    /// mesh without the camera LOD (ForestOptions::useLod false). With it, the mesh is the
-    /// variant's skeleton meshed at the tree's camera distance, as a unique tree's is: writers
-    /// that instance (USD, glTF) take the variants' meshes and leave useLod off.
+    /// mesh without the camera LOD (ForestOptions::useLod false) or with meshInstances false.
+    /// Otherwise the mesh is the variant's skeleton meshed at the tree's camera distance, as a
+    /// unique tree's is.
     std::int32_t variant = -1;
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).
