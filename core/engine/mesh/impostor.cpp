@@ -90,6 +90,23 @@ void bleed(Image& color, Image* normal, Image* depth, int x0, int y0, int size, 
         known = next;
         if (!any) break;
     }
+    // What the passes did not reach takes the cell's mean colour (far mipmaps average it in).
+    long long sum[3] = {0, 0, 0}, count = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            if (color.at(x0 + x, y0 + y)[3] > 0) {
+                for (int k = 0; k < 3; ++k)
+                    sum[k] += color.at(x0 + x, y0 + y)[k];
+                ++count;
+            }
+    if (count == 0) return;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            if (known[static_cast<std::size_t>(y) * size + x]) continue;
+            std::uint8_t* p = color.at(x0 + x, y0 + y);
+            for (int k = 0; k < 3; ++k)
+                p[k] = static_cast<std::uint8_t>(sum[k] / count);
+        }
 }
 
 } // namespace
@@ -320,7 +337,7 @@ Impostor bakeImpostor(const Mesh& mesh, const ImpostorMaterials& materials,
                 std::copy_n(nm.at(0, y), cell * 3, imp.normal.at(i * cell, j * cell + y));
                 std::copy_n(dm.at(0, y), cell, imp.depth.at(i * cell, j * cell + y));
             }
-            bleed(imp.color, &imp.normal, &imp.depth, i * cell, j * cell, cell, cell / 4);
+            bleed(imp.color, &imp.normal, &imp.depth, i * cell, j * cell, cell, 8);
             if (progress.isCancelled()) cancelled = true;
         } catch (...) {
 #pragma omp critical(sylva_impostor_error)

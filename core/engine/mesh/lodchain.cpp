@@ -107,10 +107,12 @@ BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMes
                         "levels");
     }
     if (chain.impostor) {
-        out.impostorDistance =
-            std::max(out.levels.back().distance,
-                     distanceForScreenSize(settings.lod, out.radius,
-                                           chain.impostorPixels / settings.lod.screenHeightPx));
+        // The last mesh level keeps a range of its own (half again its distance) even when
+        // the camera LOD only reaches its budget where the tree is already that small.
+        const double lastMesh = out.levels.back().distance * (out.levels.size() > 1 ? 1.5 : 1.0);
+        out.impostorDistance = std::max(
+            lastMesh, distanceForScreenSize(settings.lod, out.radius,
+                                            chain.impostorPixels / settings.lod.screenHeightPx));
         out.impostorScreenSize = screenSizeAt(settings.lod, out.radius, out.impostorDistance);
         out.impostor =
             bakeImpostor(out.levels.front().mesh, materials, chain.impostorSettings, progress);

@@ -17,8 +17,8 @@ struct LodChainSettings {
     double tolerance = 0.2;
     bool impostor = true;
     /// The impostor takes over where the tree's bounding sphere spans this many pixels of the
-    /// reference view (LodSettings: 1080 px high, 60 degrees), or at the last level's distance
-    /// when that is farther.
+    /// reference view (LodSettings: 1080 px high, 60 degrees), or at 1.5 times the last mesh
+    /// level's distance when that is farther (so that level is drawn somewhere).
     double impostorPixels = 64.0;
     ImpostorSettings impostorSettings;
 };
