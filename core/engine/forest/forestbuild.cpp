@@ -394,7 +394,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 std::uint64_t cacheKey = 0;
                 if (options.cache) {
                     cacheKey = mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),
-                                       options.buildMeshes ? 0x4D : 0x53);
+                                       options.buildMeshes ? (options.useLod ? 0x4C : 0x4D) : 0x53);
                     if (std::optional<ForestVariant> cached =
                             options.cache->findVariant(cacheKey)) {
                         variant = std::move(*cached);
@@ -425,6 +425,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     variant.meshSettings = std::make_shared<const mesh::TreeMeshSettings>(settings);
                     variant.mesh = std::make_shared<const mesh::Mesh>(
                         mesh::buildTreeMesh(*variant.skeleton, settings));
+                    if (options.useLod)
+                        variant.levels =
+                            mesh::buildDistanceLevels(*variant.skeleton, settings, variant.mesh);
                     cpuMesh[thread] += msSince(t);
                 } else {
                     variant.mesh = std::make_shared<const mesh::Mesh>();
@@ -486,6 +489,17 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                         const ForestVariant& variant = variants[v];
                         tree.variant = static_cast<std::int32_t>(v);
                         tree.mesh = variant.mesh;
+                        if (!variant.levels.empty()) {
+                            // The variant's level for this tree's size on screen: the variant
+                            // stands at scale 1, the tree at scale · growth.
+                            const double s = std::max(1e-3, static_cast<double>(in.scale) *
+                                                                static_cast<double>(in.growth));
+                            const mesh::DistanceLevel& level =
+                                variant
+                                    .levels[mesh::levelFor(variant.levels, ctx.cameraDistance / s)];
+                            tree.mesh = level.mesh;
+                            tree.meshCameraDistance = level.distance * s;
+                        }
                         tree.skeleton = variant.skeleton;
                         tree.meshSettings = variant.meshSettings;
                         tree.metrics =

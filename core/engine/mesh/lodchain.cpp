@@ -33,6 +33,47 @@ double screenSizeAt(const LodSettings& lod, double radius, double distance) {
     return 2.0 * radius / (2.0 * distance * std::tan(halfFov));
 }
 
+std::vector<DistanceLevel> buildDistanceLevels(const skel::Skeleton& skeleton,
+                                               const TreeMeshSettings& settings,
+                                               std::shared_ptr<const Mesh> full, double factor,
+                                               double minPixels, Progress& progress) {
+    requireRange("distance level factor", factor, 1.01, 100.0);
+    requireRange("distance level pixels", minPixels, 0.1, 1e4);
+    validateLod(settings.lod);
+    std::vector<DistanceLevel> levels;
+    if (!full) {
+        TreeMeshSettings s = settings;
+        s.useLod = false;
+        full = std::make_shared<const Mesh>(buildTreeMesh(skeleton, s, progress));
+    }
+    glm::vec3 centre;
+    float radius = 1.0f;
+    boundingSphere(*full, centre, radius);
+    const double farthest =
+        distanceForScreenSize(settings.lod, radius, minPixels / settings.lod.screenHeightPx);
+    levels.push_back({0.0, std::move(full)});
+    double d = settings.lod.bands.size() > 1 ? settings.lod.bands[1].distance : 25.0;
+    for (; d <= farthest; d *= factor) {
+        progress.checkCancelled();
+        TreeMeshSettings s = settings;
+        s.useLod = true;
+        s.hasCamera = false;
+        s.cameraDistance = d;
+        auto mesh = std::make_shared<const Mesh>(buildTreeMesh(skeleton, s, progress));
+        // A level no cheaper than the one before is left out: the nearer one is as good.
+        if (mesh->triangleCount() >= levels.back().mesh->triangleCount()) continue;
+        levels.push_back({d, std::move(mesh)});
+    }
+    return levels;
+}
+
+std::size_t levelFor(const std::vector<DistanceLevel>& levels, double distance) {
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < levels.size(); ++i)
+        if (levels[i].distance <= distance) k = i;
+    return k;
+}
+
 BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
                                    const LodChainSettings& chain,
                                    const ImpostorMaterials& materials, Progress& progress) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -49,6 +50,28 @@ struct BudgetLodChain {
 /// height (\p lod's screenHeightPx and fovYDegrees), and the inverse.
 double distanceForScreenSize(const LodSettings& lod, double radius, double screenSize);
 double screenSizeAt(const LodSettings& lod, double radius, double distance);
+
+/// A level of a tree drawn at many distances (a forest's variant): the camera LOD's mesh for a
+/// viewer \p distance metres away (0: the full mesh), shared by every tree drawn with it.
+struct DistanceLevel {
+    double distance = 0.0;
+    std::shared_ptr<const Mesh> mesh;
+};
+
+/// The full mesh \p full, then the camera LOD (buildTreeMesh with useLod, no camera: no
+/// ribbons, which face one viewer) at distances settings.lod.bands[1] · factor^k, k = 0, 1, ...,
+/// until the bounding sphere spans fewer than \p minPixels of the reference view. A tree seen
+/// from distance d (scaled to 1) may draw the last level whose distance is <= d (levelFor):
+/// each keeps the silhouette from its own distance on.
+/// \throw InvalidInput (factor <= 1, minPixels <= 0), Cancelled.
+std::vector<DistanceLevel> buildDistanceLevels(const skel::Skeleton& skeleton,
+                                               const TreeMeshSettings& settings,
+                                               std::shared_ptr<const Mesh> full,
+                                               double factor = 1.25, double minPixels = 8.0,
+                                               Progress& progress = noProgress());
+
+/// Index of the last level of \p levels (distances increasing) whose distance is <= \p distance.
+std::size_t levelFor(const std::vector<DistanceLevel>& levels, double distance);
 
 /// Builds the chain: LOD0 is the full mesh; each further level is the mesh the camera LOD
 /// (buildTreeMesh with useLod, the same silhouette-keeping rules a forest's trees follow) makes
