@@ -348,6 +348,37 @@ TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {
     EXPECT_LT(dark, empty / 2);
 }
 
+// SYLVA_LOD_STRIP=<file.png>: the english oak's chain side by side, each level at the same size
+// (LOD0..LOD3, then the impostor from the same direction and from 25 degrees around), to look at.
+TEST(LodChain, StripPicture) {
+    const char* out = std::getenv("SYLVA_LOD_STRIP");
+    if (!out) GTEST_SKIP() << "SYLVA_LOD_STRIP not set";
+    const Species s = grow("english-oak", 1);
+    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
+        *s.skeleton, s.settings, testChain(), mesh::ImpostorTextures(kTextures));
+    const mesh::ImpostorTextures textures(kTextures);
+    const int px = 256;
+    const glm::vec3 dir = glm::normalize(glm::vec3(0.3f, 0.25f, 1.0f));
+    std::vector<Image> tiles;
+    for (const mesh::BudgetLevel& l : chain.levels)
+        tiles.push_back(mesh::renderOrthographicView(l.mesh, textures, dir, chain.centre,
+                                                     chain.radius, px, 2));
+    tiles.push_back(mesh::renderImpostor(*chain.impostor, dir, px));
+    tiles.push_back(mesh::renderImpostor(
+        *chain.impostor, glm::normalize(glm::vec3(0.75f, 0.25f, 0.8f)), px));
+    Image strip(px * static_cast<int>(tiles.size()), px, 3);
+    for (std::size_t k = 0; k < tiles.size(); ++k)
+        for (int y = 0; y < px; ++y)
+            for (int x = 0; x < px; ++x) {
+                const std::uint8_t* p = tiles[k].at(x, y);
+                std::uint8_t* q = strip.at(static_cast<int>(k) * px + x, y);
+                const float a = p[3] / 255.0f;
+                for (int c = 0; c < 3; ++c) // over a pale sky
+                    q[c] = static_cast<std::uint8_t>(p[c] * a + (c == 2 ? 235 : 215) * (1 - a));
+            }
+    writePng(out, strip);
+}
+
 TEST(Image, PngRoundTrip) {
     Image image(5, 3, 4);
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
