@@ -361,11 +361,11 @@ TEST(LodChain, StripPicture) {
     const glm::vec3 dir = glm::normalize(glm::vec3(0.3f, 0.25f, 1.0f));
     std::vector<Image> tiles;
     for (const mesh::BudgetLevel& l : chain.levels)
-        tiles.push_back(mesh::renderOrthographicView(l.mesh, textures, dir, chain.centre,
-                                                     chain.radius, px, 2));
+        tiles.push_back(
+            mesh::renderOrthographicView(l.mesh, textures, dir, chain.centre, chain.radius, px, 2));
     tiles.push_back(mesh::renderImpostor(*chain.impostor, dir, px));
-    tiles.push_back(mesh::renderImpostor(
-        *chain.impostor, glm::normalize(glm::vec3(0.75f, 0.25f, 0.8f)), px));
+    tiles.push_back(
+        mesh::renderImpostor(*chain.impostor, glm::normalize(glm::vec3(0.75f, 0.25f, 0.8f)), px));
     Image strip(px * static_cast<int>(tiles.size()), px, 3);
     for (std::size_t k = 0; k < tiles.size(); ++k)
         for (int y = 0; y < px; ++y)

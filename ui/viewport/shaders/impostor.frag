@@ -45,7 +45,9 @@ void main() {
         c0 = base + vec2(1.0, 1.0); c1 = base + vec2(0.0, 1.0); c2 = base + vec2(1.0, 0.0);
         w = vec3(f.x + f.y - 1.0, 1.0 - f.x, 1.0 - f.y);
     }
-    // Under a software renderer every texture fetch counts: one step toward the stored depth
+    // Coverage averages down the mipmaps: one level finer than the screen asks for and a
+    // threshold under a half keep sparse crowns about as dense as the meshes look at that size
+    // (as the crossed cards before did). Under a software renderer every texture fetch counts: one step toward the stored depth
     // (docs/lods.md walks four; at the few dozen pixels the viewport draws impostors, one is
     // within a pixel), the alpha test before the normals, and the normal of the heaviest view.
     vec4 sum = vec4(0.0);
@@ -67,14 +69,14 @@ void main() {
         q = p - vView * ((dot(p, vk) - h) / facing);
         t = clamp(vec2(dot(q, rk), -dot(q, uk)) * 0.5 + 0.5, halfTexel, 1.0 - halfTexel);
         vec2 uv = cellMin + t / float(uGrid);
-        vec4 s = texture(uColor, uv);
+        vec4 s = texture(uColor, uv, -1.0);
         sum += w[k] * vec4(s.rgb * s.a, s.a);
         if (w[k] * s.a > most) {
             most = w[k] * s.a;
             heaviest = uv;
         }
     }
-    if (sum.a < 0.4) discard;
+    if (sum.a < 0.3) discard;
     vec3 nsum = texture(uNormal, heaviest).rgb * 2.0 - 1.0;
     vec3 srgb = sum.rgb / sum.a;
     vec3 albedo = srgb * srgb;
