@@ -294,6 +294,13 @@ lods_chain)
   # the atlas: 8 x 8 views of 256 px
   [[ $(python3 -c "import struct;d=open('lods/bush_impostor_color.png','rb').read(24);print(struct.unpack('>II',d[16:24]))") == "(2048, 2048)" ]] ||
     fail "impostor atlas is not 2048 x 2048"
+  # the same bytes on one thread and on two (Assimp's FBX carries its creation time: not compared)
+  OMP_NUM_THREADS=1 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o one --no-obj --no-fbx
+  OMP_NUM_THREADS=2 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o two --no-obj --no-fbx
+  for f in bush_LODs.glb bush_lods.json bush_impostor_color.png bush_impostor_normal.png \
+      bush_impostor_depth.png; do
+    cmp -s one/$f two/$f || fail "$f differs between 1 and 2 threads"
+  done
   run_cli 0 lods "$DATA/lsystem/bush.lsys" -o small --no-obj --no-fbx --no-glb \
     --budgets 1,0.5 --impostor-grid 4 --impostor-cell 32 --octahedral
   grep -q '"layout": "octahedral"' small/bush_lods.json || fail "no octahedral layout"

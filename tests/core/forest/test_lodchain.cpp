@@ -25,6 +25,7 @@
 #include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <omp.h>
 
 #include "coverageraster.h"
 #include "engine/graph/graph.h"
@@ -330,8 +331,12 @@ TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {
     is.grid = 4;
     is.cellPixels = 32;
     const mesh::ImpostorTextures textures(kTextures);
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
     const mesh::Impostor a = mesh::bakeImpostor(m, textures, is);
+    omp_set_num_threads(2);
     const mesh::Impostor b = mesh::bakeImpostor(m, textures, is);
+    omp_set_num_threads(threads);
     EXPECT_EQ(a.color.pixels, b.color.pixels);
     EXPECT_EQ(a.normal.pixels, b.normal.pixels);
     EXPECT_EQ(a.depth.pixels, b.depth.pixels);
