@@ -1,5 +1,6 @@
 #include "cliargs.h"
 #include "commands.h"
+#include "terminalprogress.h"
 #include "usage.h"
 
 #include "document/speciesfile.h"
@@ -90,10 +91,16 @@ int runLods(const std::vector<std::string>& argv) {
     options.fbx = !args.flag("--no-fbx");
     const std::filesystem::path res = resourcesDir();
     if (!res.empty()) options.shippedTextures = res / "textures";
-    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
-        *grown.skeleton, settings, chainSettings, mesh::ImpostorTextures(options.shippedTextures));
+    // Ctrl-C stops the levels' search or the baking at its next mesh or view: nothing is
+    // written before the chain is complete, and each file is written atomically.
+    TerminalProgress progress;
+    const mesh::BudgetLodChain chain =
+        mesh::buildBudgetLodChain(*grown.skeleton, settings, chainSettings,
+                                  mesh::ImpostorTextures(options.shippedTextures), progress);
+    progress.checkCancelled();
     const exporter::GameLodFiles files = exporter::writeGameLodChain(
-        *dir, speciesFileStem(args.positional()[0]), chain, settings.lod, options);
+        *dir, speciesFileStem(args.positional()[0]), chain, settings.lod, options, progress);
+    progress.finish();
 
     if (args.flag("--json")) {
         std::fwrite(files.description.data(), 1, files.description.size(), stdout);

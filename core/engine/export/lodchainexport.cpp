@@ -60,10 +60,12 @@ std::span<const std::byte> bytesOf(const std::string& s) {
 
 } // namespace
 
-GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
-                               const mesh::BudgetLodChain& chain,
-                               const mesh::LodSettings& reference, const GameLodOptions& options,
-                               Progress& progress) {
+namespace {
+
+GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
+                        const mesh::BudgetLodChain& chain, const mesh::LodSettings& reference,
+                        const GameLodOptions& options, Progress& progress,
+                        std::vector<fs::path>& written) {
     if (species.empty()) throw InvalidInput("LOD export needs a species name");
     if (chain.levels.empty()) throw InvalidInput("LOD export needs at least one level");
     const std::string base = fileSafe(species);
@@ -99,18 +101,23 @@ GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
         files.impostorNormal = dir / (base + "_impostor_normal.png");
         files.impostorDepth = dir / (base + "_impostor_depth.png");
         writeFileAtomically(files.impostorColor, colorPng);
+        written.push_back(files.impostorColor);
         writeFileAtomically(files.impostorNormal, normalPng);
+        written.push_back(files.impostorNormal);
         writeFileAtomically(files.impostorDepth, depthPng);
+        written.push_back(files.impostorDepth);
         progress.checkCancelled();
     }
 
     if (options.obj) {
         files.mtl = dir / (base + ".mtl");
         writeMtlFile(files.mtl, materials);
+        written.push_back(files.mtl);
         ObjOptions obj;
         obj.mtllib = files.mtl.filename().string();
         for (std::size_t i = 0; i < chain.levels.size(); ++i) {
             writeObjFile(files.levels[i].obj, {{files.levels[i].name, &chain.levels[i].mesh}}, obj);
+            written.push_back(files.levels[i].obj);
             progress.checkCancelled();
         }
     }
@@ -130,6 +137,7 @@ GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
         }
         files.fbx = dir / (base + "_LODs.fbx");
         writeScene(files.fbx, scene, SceneFormat::Fbx);
+        written.push_back(files.fbx);
         progress.checkCancelled();
     }
 
@@ -216,6 +224,7 @@ GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
         builder.addScene(base, {topIndex});
         builder.root()["asset"]["extras"] = {{"sylva_lod_description", base + "_lods.json"}};
         builder.finish();
+        written.push_back(files.glb);
     }
     if (!options.shippedTextures.empty() && (options.obj || options.fbx))
         copyTextures(materials, options.shippedTextures, dir);
@@ -277,6 +286,26 @@ GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
     files.json = dir / (base + "_lods.json");
     writeFileAtomically(files.json, files.description);
     return files;
+}
+
+} // namespace
+
+GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
+                               const mesh::BudgetLodChain& chain,
+                               const mesh::LodSettings& reference, const GameLodOptions& options,
+                               Progress& progress) {
+    // A chain is one asset: stopped or failed half-way, the files this call already wrote go
+    // too (each was written atomically, but a set without its glTF or description is no chain).
+    std::vector<fs::path> written;
+    try {
+        return writeFiles(dir, species, chain, reference, options, progress, written);
+    } catch (...) {
+        for (const fs::path& f : written) {
+            std::error_code ec;
+            fs::remove(f, ec);
+        }
+        throw;
+    }
 }
 
 } // namespace sylva::exporter
