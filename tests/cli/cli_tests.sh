@@ -282,12 +282,58 @@ stats_project)
   grep -q '"trees":41' out.txt || fail "$(cat out.txt)" ;;
 lods_chain)
   run_cli 0 lods "$DATA/lsystem/bush.lsys" -o lods --json
-  for i in 0 1 2; do [[ -s lods/bush_LOD$i.obj ]] || fail "missing bush_LOD$i.obj: $(ls lods)"; done
-  [[ -s lods/bush_LODs.glb ]] || fail "missing glb"
-  # triangle counts strictly decrease from level to level
-  tris=$(grep -o '"triangles":[0-9]*' out.txt | cut -d: -f2 | tr '\n' ' ')
-  read -r t0 t1 t2 <<< "$tris"
-  (( t0 > t1 && t1 > t2 )) || fail "triangles do not decrease: $tris" ;;
+  for i in 0 1 2 3; do [[ -s lods/bush_LOD$i.obj ]] || fail "missing bush_LOD$i.obj: $(ls lods)"; done
+  for f in bush_LODs.glb bush_LODs.fbx bush_lods.json bush_impostor_color.png \
+      bush_impostor_normal.png bush_impostor_depth.png; do
+    [[ -s lods/$f ]] || fail "missing $f: $(ls lods)"
+  done
+  cmp -s out.txt lods/bush_lods.json || fail "--json is not the description written"
+  # triangle counts never grow from level to level, and LOD0 to LOD1 really shrinks
+  tris=$(grep -o '"triangles": [0-9]*' out.txt | cut -d' ' -f2 | tr '\n' ' ')
+  read -r t0 t1 t2 t3 <<< "$tris"
+  (( t0 > t1 && t1 >= t2 && t2 >= t3 )) || fail "triangles do not decrease: $tris"
+  # the atlas: 8 x 8 views of 256 px
+  [[ $(python3 -c "import struct;d=open('lods/bush_impostor_color.png','rb').read(24);print(struct.unpack('>II',d[16:24]))") == "(2048, 2048)" ]] ||
+    fail "impostor atlas is not 2048 x 2048"
+  # the same bytes on one thread and on two (Assimp's FBX carries its creation time: not compared)
+  OMP_NUM_THREADS=1 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o one --no-obj --no-fbx
+  OMP_NUM_THREADS=2 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o two --no-obj --no-fbx
+  for f in bush_LODs.glb bush_lods.json bush_impostor_color.png bush_impostor_normal.png \
+      bush_impostor_depth.png; do
+    cmp -s one/$f two/$f || fail "$f differs between 1 and 2 threads"
+  done
+  run_cli 0 lods "$DATA/lsystem/bush.lsys" -o small --no-obj --no-fbx --no-glb \
+    --budgets 1,0.5 --impostor-grid 4 --impostor-cell 32 --octahedral
+  grep -q '"layout": "octahedral"' small/bush_lods.json || fail "no octahedral layout"
+  grep -q '"atlas_pixels": 128' small/bush_lods.json || fail "$(cat small/bush_lods.json)"
+  [[ ! -e small/bush_LODs.glb && ! -e small/bush_LOD0.obj ]] || fail "--no-glb/--no-obj ignored"
+  run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --budgets 1,0.5,0.7
+  grep -q "LOD2 budget must be above 0 and below the one before" err.txt || fail "$(cat err.txt)"
+  run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --budgets 1,x
+  grep -q "'x' is not a number" err.txt || fail "$(cat err.txt)"
+  if command -v assimp >/dev/null; then
+    # Assimp reads the FBX's levels as the _LOD<i> nodes
+    assimp info lods/bush_LODs.fbx > info.txt 2>&1 || fail "assimp cannot read the FBX: $(cat info.txt)"
+    for i in 0 1 2 3; do grep -q "bush_LOD$i (mesh" info.txt || fail "FBX lacks bush_LOD$i: $(tail info.txt)"; done
+  fi ;;
+lods_fbx_blender)
+  # Blender imports the FBX chain's levels with the triangles (as polygons) the JSON reports.
+  command -v blender >/dev/null || { echo "SKIP: blender not installed"; exit 77; }
+  run_cli 0 lods "$DATA/lsystem/bush.lsys" -o lods --no-obj --no-glb
+  cat > import.py <<'PY'
+import bpy, json, sys
+bpy.ops.wm.read_factory_settings(use_empty=True)
+bpy.ops.import_scene.fbx(filepath=sys.argv[-1])
+print("LEVELS " + json.dumps({o.name: len(o.data.polygons) for o in bpy.data.objects if o.type == "MESH"}))
+PY
+  blender -b --python import.py -- lods/bush_LODs.fbx > blender.txt 2>&1 || fail "blender: $(tail blender.txt)"
+  python3 - <<'PY' || fail "Blender's levels differ: $(grep LEVELS blender.txt)"
+import json
+got = json.loads(open("blender.txt").read().split("LEVELS ", 1)[1].splitlines()[0])
+want = {l["name"]: l["triangles"] for l in json.load(open("lods/bush_lods.json"))["levels"]}
+assert got == want, (got, want)
+PY
+  ;;
 forest_species_adapt_node)
   # A species with its own adapt node reacts to the scene's wall (the bush at x=0.5 m touches
   # the 0.2 m thick wall at x=0; the one at x=30 m does not).

@@ -98,6 +98,32 @@ else:
     assert t["instancers"] >= s["usd"]["instancers"], t
 PY
   ;;
+gltf_validator_lods)
+  # The game LOD chain (issue #32): MSFT_lod levels, the impostor card and its three maps.
+  run_cli lods "$DATA/../../presets/alder.json" -o lods --json --no-obj --no-fbx
+  validate lods/alder_LODs.glb ;;
+three_lod_levels)
+  # three.js loads every level MSFT_lod names, with the triangles the description reports.
+  run_cli lods "$DATA/../../presets/alder.json" -o lods --json --no-obj --no-fbx
+  node "$READERS/lod-levels.mjs" lods/alder_LODs.glb > three.json 2> three.err || fail "three.js: $(cat three.err)"
+  cat three.json
+  python3 - <<'PY' || fail "three.js levels do not match the description: $(cat three.json)"
+import json
+three = json.load(open("three.json"))
+desc = json.load(open("lods/alder_lods.json"))
+levels = three["levels"]
+assert len(levels) == len(desc["levels"]) + 1, levels
+for got, want in zip(levels, desc["levels"]):
+    assert got["name"] == want["name"] and got["triangles"] == want["triangles"], (got, want)
+assert levels[-1]["name"] == desc["impostor"]["name"] and levels[-1]["triangles"] == 2
+assert levels[-1]["material"] == desc["impostor"]["name"], levels[-1]
+tris = [l["triangles"] for l in levels]
+assert all(a > b for a, b in zip(tris, tris[1:])), tris
+cov = three["coverage"]
+assert len(cov) == len(levels) and cov[-1] == 0, cov
+assert all(a > b for a, b in zip(cov, cov[1:])), cov
+PY
+  ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

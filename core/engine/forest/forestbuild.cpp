@@ -395,7 +395,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 std::uint64_t cacheKey = 0;
                 if (options.cache) {
                     cacheKey = mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),
-                                       options.buildMeshes ? 0x4D : 0x53);
+                                       options.buildMeshes ? (options.useLod ? 0x4C : 0x4D) : 0x53);
                     if (std::optional<ForestVariant> cached =
                             options.cache->findVariant(cacheKey)) {
                         variant = std::move(*cached);
@@ -426,6 +426,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     variant.meshSettings = std::make_shared<const mesh::TreeMeshSettings>(settings);
                     variant.mesh = std::make_shared<const mesh::Mesh>(
                         mesh::buildTreeMesh(*variant.skeleton, settings));
+                    if (options.useLod)
+                        variant.levels =
+                            mesh::buildDistanceLevels(*variant.skeleton, settings, variant.mesh);
                     cpuMesh[thread] += msSince(t);
                 } else {
                     variant.mesh = std::make_shared<const mesh::Mesh>();
@@ -494,36 +497,20 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                         tree.meshSettings = variant.meshSettings;
                         tree.metrics =
                             forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
-                        if (!options.useLod || !options.buildMeshes || !options.meshInstances) {
+                        if (!options.useLod || !options.buildMeshes || !options.meshInstances ||
+                            variant.levels.empty()) {
                             tree.mesh = variant.mesh; // shared: drawn with the tree's transform
                             continue;
                         }
-                        // With the camera's LOD the variant is meshed for this tree's distance,
-                        // as a unique tree is (the full-detail variant drawn 1,000 times made an
-                        // OBJ 13 times larger); cached like one, keyed by its variant.
-                        std::uint64_t key = 0;
-                        if (options.cache) {
-                            key = mixSeed(treeKey(speciesKeys[in.species], in, {}, scene, options,
-                                                  ctx.cameraDistance),
-                                          variant.seed);
-                            if (std::optional<ForestTree> cached = options.cache->findTree(key)) {
-                                tree = std::move(*cached);
-                                tree.name = species.name + "_" + std::to_string(in.id);
-                                continue;
-                            }
-                        }
-                        const auto t = Clock::now();
-                        mesh::TreeMeshSettings settings = *variant.meshSettings;
-                        tree.meshCameraDistance = ctx.cameraDistance;
-                        settings.useLod = true;
-                        settings.cameraDistance = ctx.cameraDistance;
-                        settings.hasCamera = true;
-                        settings.cameraLocal =
-                            glm::vec3(glm::inverse(ctx.transform) * glm::vec4(scene.camera, 1.0f));
-                        tree.mesh = std::make_shared<const mesh::Mesh>(
-                            mesh::buildTreeMesh(*variant.skeleton, settings));
-                        cpuMesh[thread] += msSince(t);
-                        if (key) options.cache->storeTree(key, tree);
+                        // The variant's level for this tree's size on screen, made once per
+                        // variant (the full-detail variant drawn 1,000 times made an OBJ 13
+                        // times larger): the variant stands at scale 1, the tree at scale·growth.
+                        const double s = std::max(1e-3, static_cast<double>(in.scale) *
+                                                            static_cast<double>(in.growth));
+                        const mesh::DistanceLevel& level =
+                            variant.levels[mesh::levelFor(variant.levels, ctx.cameraDistance / s)];
+                        tree.mesh = level.mesh;
+                        tree.meshCameraDistance = level.distance * s;
                         continue;
                     }
                 }

@@ -14,6 +14,7 @@
 #include "engine/forest/metrics.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/lod.h"
+#include "engine/mesh/lodchain.h"
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/placement/placement.h"
@@ -57,6 +58,10 @@ struct ForestVariant {
     std::shared_ptr<const skel::Skeleton> skeleton;
     std::shared_ptr<const mesh::TreeMeshSettings> meshSettings;
     forest::TreeMetrics metrics; ///< at scale 1
+    /// With ForestOptions::useLod: the variant's levels of detail, made once (level 0 = mesh;
+    /// mesh::buildDistanceLevels); an instance seen from d metres at scale s draws
+    /// mesh::levelFor(levels, d / s). Empty without useLod.
+    std::vector<mesh::DistanceLevel> levels;
 };
 using VariantSink = std::function<void(const std::vector<ForestVariant>&)>;
 

@@ -192,3 +192,33 @@ TEST(Instancing, DeterministicOnOneAndTwoThreads) {
     }
     EXPECT_EQ(one.stats.instanced, two.stats.instanced);
 }
+
+// Issue #32: with the camera LOD, an instanced tree draws one of its variant's levels (made
+// once per variant, shared), the one for its distance over its scale: never a finer level than
+// a nearer tree of the same variant and scale would get, and level 0 is the variant's mesh.
+TEST(Instancing, InstancesDrawTheirVariantsLevelForTheirDistance) {
+    const forest::ForestScene s = sparseForest(24, false);
+    forest::ForestOptions options;
+    options.useLod = true;
+    const Built b = build(s, options);
+    std::size_t instanced = 0;
+    for (const forest::ForestVariant& v : b.variants) {
+        ASSERT_GE(v.levels.size(), 2u) << v.name;
+        EXPECT_EQ(v.levels.front().mesh.get(), v.mesh.get());
+        for (std::size_t i = 1; i < v.levels.size(); ++i) {
+            EXPECT_GT(v.levels[i].distance, v.levels[i - 1].distance);
+            EXPECT_LT(v.levels[i].mesh->triangleCount(), v.levels[i - 1].mesh->triangleCount());
+        }
+    }
+    for (const forest::ForestTree& t : b.trees) {
+        if (t.variant < 0) continue;
+        ++instanced;
+        const forest::ForestVariant& v = b.variants.at(static_cast<std::size_t>(t.variant));
+        const double scale = double(t.instance.scale) * double(t.instance.growth);
+        const double d = glm::length(s.camera - t.instance.position) / scale;
+        const std::size_t k = mesh::levelFor(v.levels, d);
+        EXPECT_EQ(t.mesh.get(), v.levels[k].mesh.get()) << t.name << " at " << d << " m";
+        EXPECT_NEAR(t.meshCameraDistance, v.levels[k].distance * scale, 1e-6);
+    }
+    EXPECT_GT(instanced, 0u);
+}
