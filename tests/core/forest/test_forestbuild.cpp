@@ -117,6 +117,7 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kDomainSlots,
                                         salt::kPlacedTree,
                                         salt::kBrushStroke,
-                                        salt::kPlaceTool};
-    EXPECT_EQ(salts.size(), 12u);
+                                        salt::kPlaceTool,
+                                        salt::kLeafClusters};
+    EXPECT_EQ(salts.size(), 13u);
 }
