@@ -10,7 +10,8 @@ Debian's zlib gives the committed bytes, zlib-ng would not).
 
   presets/textures/<species>_bark.png  256x256 RGB, tiles in both directions (u around the
                                        branch, v along it)
-  presets/textures/<species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0)
+  presets/textures/<species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0); the
+                                       conifers' are needle clusters (pine: long paired needles)
   presets/textures/<species>_leafcluster.png  512x512 RGBA leaf cluster atlas of a broadleaf:
                                        three sprays and the single leaf, 2 x 2 tiles
   resources/textures/bark.png          256x256 RGB, the default bark
@@ -363,6 +364,38 @@ def needle_tuft(name, w, h, base, seed, count=220, spread=55, length=(0.75, 0.98
     shade = 0.8 + 0.3 * np.kron(noise((h, w), 2, 8, seed), np.ones((SS, SS)))
     rgb = np.asarray(base) * shade[..., None] * (0.75 + 0.35 * t)[..., None]
     finish_leaf(name, w, h, mask, rgb)
+
+
+def pine_shoot(name, w, h, base, seed, fascicles=46, twig=(0.45, 0.30, 0.18)):
+    """Scots pine (issue #33): a shoot seen from the side with its needles in pairs, long (a
+    third to a half of the card), thin and stiff, each pair turned forward at its own angle and
+    shaded on its own, so the card reads as a brush of needles with light between them, not as
+    one broad leaf. Shoot up the middle from the stem (bottom edge) to near the top."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = (w / h) / 2.0
+    mask = strokes(x, t, [(0.0, 0.0, 0.0, 0.86, 0.016)], aspect)
+    rgb = np.zeros(x.shape + (3,), np.float32) + np.asarray(twig, np.float32)
+    base = np.asarray(base, np.float32)
+    for i in range(fascicles):
+        s = 0.06 + 0.80 * (i + rng.uniform(0, 1)) / fascicles
+        for side in (-1, 1):
+            ang = math.radians(rng.uniform(22, 62)) * side * (1 if rng.random() < 0.85 else -1)
+            L = rng.uniform(0.36, 0.52) * (1 - 0.35 * max(0.0, s - 0.55))
+            bend = rng.uniform(-0.06, 0.06)
+            mx = math.sin(ang) * L * 0.5 / aspect
+            mt = s + math.cos(ang) * L * 0.5
+            ex = math.sin(ang + bend) * L / aspect
+            et = s + math.cos(ang + bend) * L * 0.97
+            ex = float(np.clip(ex, -0.98, 0.98))
+            et = min(0.995, et)
+            needle = strokes(x, t, [(0.0, s, mx, mt, 0.0055), (mx, mt, ex, et, 0.0045)], aspect)
+            tone = rng.uniform(0.7, 1.15)
+            # Lighter toward the tip, darker inside the brush.
+            col = base * tone * (0.75 + 0.45 * np.clip((t - s) / max(L, 1e-3), 0, 1))[..., None]
+            rgb = np.where(needle[..., None], col, rgb)
+            mask = mask | needle
+    finish_leaf(name, w, h, mask, np.clip(rgb, 0, 1))
 
 
 def sprig(name, w, h, base, seed, needle=0.18, density=70, angle=55, twig=(0.40, 0.27, 0.17)):
@@ -732,7 +765,7 @@ def library():
     cluster_atlas("lombardy-poplar_leafcluster.png", leaf, 0.5, 153)
 
     save_rgb("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
-    needle_tuft("scots-pine_leaf.png", 256, 256, (0.24, 0.38, 0.33), 162)
+    pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
 
     save_rgb("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
     sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)
