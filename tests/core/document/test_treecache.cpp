@@ -51,7 +51,7 @@ void expectSame(const Built& a, const Built& b) {
 } // namespace
 
 TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
-    doc::Project project = doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva");
+    doc::Project project = doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva");
     const forest::ForestScene original = doc::makeForestScene(project);
     forest::TreeCache cache;
     const Built first = build(original, &cache);
