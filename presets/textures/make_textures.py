@@ -674,25 +674,23 @@ def paste_leaf(rgb, alpha, leaf, ax, ay, dx, dy, length, width, shade):
     alpha[y0:y1, x0:x1] = alpha[y0:y1, x0:x1] * (1 - a) + a
 
 
-def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17), size=512):
-    """A species' leaf cluster atlas (engine/mesh/leafclusters.h): 2 x 2 tiles, three sprays of
-    the species' leaf on a twig from the bottom edge of the tile (alternate sides, each leaf at
-    its own angle, foreshortened and shaded as if turned in depth) and the single leaf stretched
-    to the fourth tile. \p aspect is the leaf card's width / length."""
+def spray_tiles(leaf, aspect, seed, count, scale, twig, n):
+    """The three spray tiles of a cluster atlas (see cluster_atlas), leaves scale x as many and
+    sqrt(scale) x as long as at scale 1."""
     rng = np.random.default_rng(seed)
-    n = size * SS
     tile = n // 2
     rgb = np.zeros((n, n, 3), np.float32)
     alpha = np.zeros((n, n), np.float32)
+    grow = math.sqrt(scale)
     for k in range(3):
         ox, oy = (k % 2) * tile, (1 - k // 2) * tile  # image rows run downward: tile 0 bottom-left
-        leaves = int(rng.integers(count[0], count[1] + 1))
+        leaves = int(round(rng.integers(count[0], count[1] + 1) * scale))
         bend = rng.uniform(-0.12, 0.12)
         # Twig: from the middle of the bottom edge up, bending to one side.
         pts = [(0.5 + bend * s * s, 0.02 + 0.78 * s) for s in np.linspace(0, 1, 12)]
         order = []
         for i in range(leaves):
-            s = 0.12 + 0.82 * i / max(leaves - 1, 1)
+            s = 0.08 + 0.86 * i / max(leaves - 1, 1)
             side = -1 if i % 2 else 1
             if i == leaves - 1:
                 side = 0
@@ -704,11 +702,11 @@ def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17
             cx, cy = 0.5 + bend * s * s, 0.02 + 0.78 * s
             tang = np.array([2 * bend * s, 0.78])
             tang /= np.linalg.norm(tang)
-            ang = 0.0 if side == 0 else side * math.radians(rng.uniform(35, 70))
+            ang = 0.0 if side == 0 else side * math.radians(rng.uniform(30, 80))
             dx = tang[0] * math.cos(ang) - tang[1] * math.sin(ang)
             dy = tang[0] * math.sin(ang) + tang[1] * math.cos(ang)
-            length = rng.uniform(0.40, 0.50) * (1 - 0.25 * s) * (0.8 if side == 0 else 1.0)
-            turn = rng.uniform(0.55, 1.0)  # foreshortening: a leaf turned in depth
+            length = min(0.62, rng.uniform(0.40, 0.50) * grow) * (1 - 0.25 * s) * (0.8 if side == 0 else 1.0)
+            turn = rng.uniform(0.7, 1.0)  # foreshortening: a leaf turned in depth
             shade = 0.7 + 0.4 * depth[j] / max(len(order) - 1, 1)
             # Tile space (y up) to image rows (y down).
             paste_leaf(rgb[oy:oy + tile, ox:ox + tile], alpha[oy:oy + tile, ox:ox + tile], leaf,
@@ -727,6 +725,23 @@ def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17
         show = twig_mask * (1 - sub_a)
         sub_rgb[:] = sub_rgb + np.asarray(twig, np.float32) * show[..., None]
         sub_a[:] = sub_a + show
+    return rgb, alpha
+
+
+def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17), size=512):
+    """A species' leaf cluster atlas (engine/mesh/leafclusters.h): 2 x 2 tiles, three sprays of
+    the species' leaf on a twig from the bottom edge of the tile (alternate sides, each leaf at
+    its own angle, foreshortened and shaded as if turned in depth) and the single leaf stretched
+    to the fourth tile. \p aspect is the leaf card's width / length. A cluster card covers what
+    its leaves' cards cover, so a spray must be about as opaque as the single leaf's card: the
+    sprays get more and longer leaves until their tiles are (nearly) as covered as the leaf."""
+    n = size * SS
+    tile = n // 2
+    target = float(leaf[..., 3].mean())
+    for scale in (1.0, 1.4, 1.9, 2.5, 3.2, 4.0, 5.0):
+        rgb, alpha = spray_tiles(leaf, aspect, seed, count, scale, twig, n)
+        if alpha[tile:, :].mean() >= 0.9 * target:
+            break
     # Tile 3 (top right): the single leaf stretched to the tile.
     lh, lw = leaf.shape[:2]
     yy, xx = np.mgrid[0:tile, 0:tile]
