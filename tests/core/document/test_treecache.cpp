@@ -51,7 +51,8 @@ void expectSame(const Built& a, const Built& b) {
 } // namespace
 
 TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
-    doc::Project project = doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva");
+    doc::Project project =
+        doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva");
     const forest::ForestScene original = doc::makeForestScene(project);
     forest::TreeCache cache;
     const Built first = build(original, &cache);

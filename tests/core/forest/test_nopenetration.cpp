@@ -1,6 +1,6 @@
 // Issue 20: after adaptation no branch lies inside an obstacle. Every species preset is grown
-// beside the demo's garden wall and boulder (as placed in resources/demo/alder-reference.sylva) and the
-// same wall raised to 12 m, through the same forest::buildForest call as `sylva-cli forest
+// beside the demo's garden wall and boulder (as placed in resources/demo/alder-reference.sylva) and
+// the same wall raised to 12 m, through the same forest::buildForest call as `sylva-cli forest
 // --no-lod`, and the result is checked against the obstacle meshes with oracles written here:
 // - no visible skeleton segment crosses an obstacle: Embree (ObstacleScene) and a brute-force
 //   Möller–Trumbore over every triangle both say so;
