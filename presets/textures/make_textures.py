@@ -708,6 +708,18 @@ def spray_tiles(leaf, aspect, seed, count, scale, twig, n):
             length = min(0.62, rng.uniform(0.40, 0.50) * grow) * (1 - 0.25 * s) * (0.8 if side == 0 else 1.0)
             turn = rng.uniform(0.7, 1.0)  # foreshortening: a leaf turned in depth
             shade = 0.7 + 0.4 * depth[j] / max(len(order) - 1, 1)
+            # A leaf cut by the tile's edge would show the card's straight edge: shortened until
+            # its tip and its widest part stay inside the tile.
+            for _ in range(20):
+                half = 0.5 * length * aspect * turn
+                ok = True
+                for f, w in ((1.0, 0.0), (0.5, half), (0.5, -half)):
+                    px = cx + dx * length * f + dy * w
+                    py = cy + dy * length * f - dx * w
+                    ok = ok and 0.01 <= px <= 0.99 and 0.01 <= py <= 0.99
+                if ok:
+                    break
+                length *= 0.9
             # Tile space (y up) to image rows (y down).
             paste_leaf(rgb[oy:oy + tile, ox:ox + tile], alpha[oy:oy + tile, ox:ox + tile], leaf,
                        cx * tile, (1 - cy) * tile, dx, -dy, length * tile,
