@@ -3,6 +3,7 @@
 # usage: cli_tests.sh <case> <sylva-cli> <tests/data> <scratch folder>
 set -uo pipefail
 case_name=$1 CLI=$2 DATA=$3 WORK=$4
+SRC=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK" || exit 1
 
 fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
@@ -314,6 +315,102 @@ forest_terrain)
   awk '/^o /{if (name!="") print name, lo, x; name=$2; lo=1e9} /^v /{if ($3<lo){lo=$3; x=$2}} END{print name, lo, x}' t.obj > low.txt
   awk '{ground=2+0.1*$3; d=$2-ground; if (d<0) d=-d; if (d>0.2) {print "off the slope:", $0; bad=1}} END{exit bad}' low.txt \
     || fail "a tree does not stand on the terrain: $(cat low.txt)" ;;
+forest_glb_threads_identical)
+  # The instanced GLB and the text glTF with its .bin are byte-identical on 1 and 2 threads.
+  mkdir -p one two
+  for ext in glb gltf; do
+    run_cli 0 forest "$DATA/projects/small.sylva" -o one/f.$ext --threads 1
+    run_cli 0 forest "$DATA/projects/small.sylva" -o two/f.$ext --threads 2
+    cmp -s one/f.$ext two/f.$ext || fail "1 and 2 threads give different f.$ext"
+  done
+  cmp -s one/f.bin two/f.bin || fail "1 and 2 threads give different f.bin"
+  grep -q EXT_mesh_gpu_instancing one/f.gltf || fail "no instancing in the glTF" ;;
+forest_glb_sigterm)
+  # SIGTERM (what Slurm sends) while a 10,000-tree GLB is being written: the writer stops at its
+  # next array, exit 130, no file and no temporary left. The run is stopped once the GLB's
+  # temporary exists (the variants are written), or after 20 s at most.
+  "$CLI" forest "$DATA/../../resources/demo/bench-10000.sylva" -o big.glb --threads 2 >out.txt 2>err.txt &
+  pid=$!
+  for _ in $(seq 200); do
+    compgen -G '.big.glb.bin.tmp*' >/dev/null && break
+    sleep 0.1
+  done
+  compgen -G '.big.glb.bin.tmp*' >/dev/null || fail "the GLB's temporary never appeared: $(ls -A)"
+  sleep 1
+  kill -TERM $pid
+  # A hang guard, not a timing: a cancelled run that has not exited after 20 s is stuck.
+  for _ in $(seq 200); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+  kill -0 $pid 2>/dev/null && { kill -KILL $pid; fail "still running 20 s after SIGTERM"; }
+  wait $pid
+  got=$?
+  [[ $got == 130 ]] || fail "exit status $got after SIGTERM, expected 130: $(cat err.txt)"
+  grep -q "interrupted" err.txt || fail "no message: $(cat err.txt)"
+  [[ ! -e big.glb ]] || fail "a partial big.glb is left"
+  [[ $(ls -A | grep -c 'tmp') == 0 ]] || fail "temporary files left: $(ls -A)" ;;
+forest_usd)
+  # A USD stage: stage metadata, every tree once (unique meshes or instances), normals and
+  # uvs with their interpolation, materials with the textures copied beside; byte-identical
+  # on 1 and 2 threads.
+  run_cli 0 forest "$DATA/projects/small.sylva" -o one.usda --threads 1 --stats
+  cp out.txt stats.json
+  run_cli 0 forest "$DATA/projects/small.sylva" -o two.usda --threads 2
+  cmp -s one.usda two.usda || fail "1 and 2 threads wrote different USD"
+  head -1 one.usda | grep -qx '#usda 1.0' || fail "no #usda header"
+  for meta in 'defaultPrim = "Forest"' 'metersPerUnit = 1' 'upAxis = "Y"'; do
+    grep -qF "$meta" one.usda || fail "no $meta"
+  done
+  grep -q 'interpolation = "vertex"' one.usda || fail "no primvar interpolation"
+  grep -q 'texCoord2f\[\] primvars:st = ' one.usda || fail "no primvars:st"
+  grep -q 'normal3f\[\] normals = ' one.usda || fail "no normals"
+  grep -q 'uniform token info:id = "UsdPreviewSurface"' one.usda || fail "no UsdPreviewSurface"
+  grep -q 'asset inputs:file = @textures/bark.png@' one.usda || fail "no bark texture"
+  [[ -s textures/bark.png ]] || fail "textures not copied"
+  trees=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['trees'])" stats.json)
+  read -r listed unique instanced < <(python3 "$SRC/usda_trees.py" one.usda --summary)
+  [[ $listed == "$trees" ]] || fail "the stage holds $listed trees, the forest $trees"
+  python3 - stats.json "$unique" "$instanced" <<'PY' || fail "usd stats disagree with the stage"
+import json, sys
+d = json.load(open(sys.argv[1]))
+u = d["usd"]
+assert u["unique_trees"] == int(sys.argv[2]) == d["unique"], (u, d["unique"])
+assert u["instances"] == int(sys.argv[3]) == d["instanced"], (u, d["instanced"])
+assert d["instanced"] > 0 and u["prototypes"] == d["variants"], d
+PY
+  [[ $(ls -A | grep -c tmp) == 0 ]] || fail "temporary files left: $(ls -A)" ;;
+forest_usd_tiles_compose)
+  # Four tile layers composed by a root layer hold the single run's forest, tree for tree
+  # (ids, species, transforms as written); compose refuses incomplete or foreign tile sets.
+  run_cli 0 forest "$DATA/projects/small.sylva" -o single.usda
+  for i in 1 2 3 4; do run_cli 0 forest "$DATA/projects/small.sylva" -o tiles/part_$i.usda --tile $i/4; done
+  run_cli 0 compose root.usda tiles/part_4.usda tiles/part_2.usda tiles/part_1.usda tiles/part_3.usda
+  grep -q '@tiles/part_1.usda@' root.usda || fail "root does not name tile 1 relative to it"
+  grep -qF 'upAxis = "Y"' root.usda || fail "root has no upAxis"
+  python3 "$SRC/usda_trees.py" single.usda > single.txt || fail "cannot list single"
+  python3 "$SRC/usda_trees.py" root.usda > composed.txt || fail "cannot list composed"
+  [[ -s single.txt ]] || fail "no trees listed"
+  diff -u single.txt composed.txt || fail "the composed stage differs from the single run"
+  run_cli 1 compose bad.usda tiles/part_1.usda tiles/part_2.usda
+  grep -q "missing of 4: 3, 4" err.txt || fail "missing tiles: $(cat err.txt)"
+  [[ ! -e bad.usda ]] || fail "a root was written for an incomplete set"
+  run_cli 0 forest "$DATA/projects/small.sylva" -o other/part_3.usda --tile 3/4 --no-adapt
+  run_cli 1 compose bad.usda tiles/part_1.usda tiles/part_2.usda other/part_3.usda tiles/part_4.usda
+  grep -q "of another run" err.txt || fail "foreign tile: $(cat err.txt)"
+  run_cli 1 compose bad.usda single.usda tiles/part_1.usda
+  run_cli 2 compose root.usda ;;
+forest_sigterm_fbx|forest_sigterm_usd|forest_sigterm_obj)
+  # SIGTERM (Slurm's stop) at a known phase: inside Assimp's FBX exporter 0.7 s after the trees
+  # are built (it ran to the end before), and mid-build for the streaming writers. Exit 130,
+  # no output, no temporary left.
+  ext=${case_name##*_}; [[ $ext == usd ]] && ext=usda
+  at="trees 100 0.7"; [[ $ext != fbx ]] && at="trees 40 0"
+  python3 "$SRC/signal_during.py" $at SIGTERM "$CLI" forest "$DATA/../../resources/demo/bench-1000.sylva" \
+    -o big.$ext >took.txt 2>err.txt
+  got=$?
+  [[ $got == 130 ]] || fail "exit status $got after SIGTERM, expected 130: $(cat err.txt)"
+  grep -q "interrupted" err.txt || fail "no message: $(cat err.txt)"
+  echo "stopped $(cat took.txt) s after SIGTERM"
+  [[ ! -e big.$ext ]] || fail "a half-written big.$ext is left"
+  [[ $(ls -A | grep -v -e '^took.txt$' -e '^err.txt$' -e '^out.txt$' | wc -l) == 0 ]] || fail "files left: $(ls -A)" ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

@@ -33,6 +33,7 @@ ExportCount exportShown(const QString& path, const ShownScene& shown,
         trees = source->exportTrees;
     }
     exporter::TreeExporter out(path.toStdString(), {false, source->compactObj});
+    out.addVariants(source->exportVariants);
     out.add(trees);
     ExportCount count;
     count.files = out.commit().size();

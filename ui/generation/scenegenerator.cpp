@@ -77,6 +77,11 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             caches->obstacles = forest.obstacles;
             caches->ground = forest.ground;
         }
+        // Formats with instancing (glTF) write each variant once: File ▸ Export hands them over.
+        options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
+            for (const forest::ForestVariant& v : variants)
+                result.exportVariants.push_back({v.name, v.mesh});
+        };
         double height = 0.0;
         const forest::ForestStats stats = forest::buildForest(
             forest, options,
@@ -101,7 +106,8 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                     result.trees.push_back(std::move(drawn));
                     result.exportTrees.push_back({tree.name, tree.mesh, tree.instance.position,
                                                   tree.instance.rotation,
-                                                  tree.instance.scale * tree.instance.growth});
+                                                  tree.instance.scale * tree.instance.growth,
+                                                  tree.variant, tree.instance.id});
                 }
             },
             progress);

@@ -67,6 +67,8 @@ struct GenerationResult {
     /// What File ▸ Export writes: the species' tree at the origin, or every tree of a project
     /// placed as sylva-cli forest places it (objects named as the CLI names them).
     std::vector<exporter::ExportTree> exportTrees;
+    /// The variants exportTrees' ExportTree::variant indexes (a project's forest only).
+    std::vector<exporter::ExportVariant> exportVariants;
     bool compactObj = false; ///< OBJ precision: compact for forests, full for one tree (as the CLI)
     /// The files the result was read from (absolute): the species or project file, grammar and
     /// other files its nodes name, a project's species and obstacle meshes. Filled as far as

@@ -37,7 +37,7 @@ fs::path resourcesDir() {
     return {};
 }
 
-TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path)) {
+TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path)), mChoices(obj) {
     // Like other exporters, write into a folder that does not exist yet (out/forest.obj).
     if (const fs::path dir = mPath.parent_path(); !dir.empty()) {
         std::error_code ec;
@@ -48,19 +48,126 @@ TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path
     for (char& c : ext)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     mObj = ext == ".obj";
-    if (mObj) {
+    if (ext == ".usda") {
+        usd::UsdLayerOptions options;
+        options.compact = obj.compact;
+        options.durability = obj.fsync ? Durability::Durable : Durability::Atomic;
+        if (const fs::path res = resourcesDir(); !res.empty())
+            options.shippedTextures = res / "textures";
+        mObj = false;
+        mUsd = std::make_unique<usd::UsdStageWriter>(mPath, std::move(options));
+    } else if (mObj) {
         ObjOptions options = obj.compact ? ObjOptions::compact() : ObjOptions{};
         options.mtllib = mPath.stem().string() + ".mtl";
         options.fsync = obj.fsync;
         mObjWriter = std::make_unique<ObjStreamWriter>(mPath, options);
     } else {
-        (void)sceneFormatFor(mPath); // rejects unknown extensions before any work
+        const SceneFormat format = sceneFormatFor(mPath); // rejects unknown extensions first
+        mGltf = format == SceneFormat::Glb || format == SceneFormat::Gltf;
     }
 }
 
 TreeExporter::~TreeExporter() = default;
 
+gltf::ForestGltfWriter& TreeExporter::gltfWriter() {
+    if (!mGltfWriter) {
+        gltf::ForestGltfOptions options;
+        const fs::path res = resourcesDir();
+        if (!res.empty()) options.shippedTextures = res / "textures";
+        options.durability = mChoices.fsync ? Durability::Durable : Durability::Atomic;
+        mGltfWriter = std::make_unique<gltf::ForestGltfWriter>(
+            mPath,
+            sceneFormatFor(mPath) == SceneFormat::Glb ? gltf::GltfFormat::Glb
+                                                      : gltf::GltfFormat::Gltf,
+            *mProgress, options);
+    }
+    return *mGltfWriter;
+}
+
+namespace {
+// The species of a forest's tree or variant from its name ("<species>_<id>",
+// "<species>_v<index>"), and the variant's index; the whole name when it has no such suffix.
+std::string speciesOfName(const std::string& name, const std::string& suffix) {
+    const std::size_t n = suffix.size();
+    if (name.size() > n && name.compare(name.size() - n, n, suffix) == 0)
+        return name.substr(0, name.size() - n);
+    return name;
+}
+std::uint32_t variantIndexOfName(const std::string& name, std::uint32_t fallback) {
+    const std::size_t at = name.rfind("_v");
+    if (at == std::string::npos || at + 2 >= name.size()) return fallback;
+    std::uint32_t k = 0;
+    for (std::size_t i = at + 2; i < name.size(); ++i) {
+        if (name[i] < '0' || name[i] > '9') return fallback;
+        k = k * 10 + static_cast<std::uint32_t>(name[i] - '0');
+    }
+    return k;
+}
+} // namespace
+
+void TreeExporter::addVariants(const std::vector<ExportVariant>& variants) {
+    if (mUsd) {
+        std::vector<usd::UsdVariant> out;
+        mUsdVariantSpecies.clear();
+        for (std::size_t i = 0; i < variants.size(); ++i) {
+            const ExportVariant& v = variants[i];
+            if (!v.mesh) throw InvalidInput("variant '" + v.name + "' has no mesh");
+            const std::uint32_t k = variantIndexOfName(v.name, static_cast<std::uint32_t>(i));
+            // Built by appending: GCC 12 reports a false -Wrestrict on "_v" + std::string&&.
+            std::string suffix("_v");
+            suffix.append(std::to_string(k));
+            const std::uint32_t species = mUsd->speciesIndex(speciesOfName(v.name, suffix));
+            mUsdVariantSpecies.push_back(species);
+            out.push_back({species, k, v.mesh});
+        }
+        mUsd->setVariants(std::move(out));
+        return;
+    }
+    mGltfVariants.clear();
+    for (const ExportVariant& v : variants) {
+        if (!v.mesh) throw InvalidInput("variant '" + v.name + "' has no mesh");
+        if (mGltf) mGltfVariants.push_back(gltfWriter().addVariant(v.name, *v.mesh));
+    }
+}
+
 void TreeExporter::add(const std::vector<ExportTree>& trees) {
+    if (mUsd) {
+        std::vector<usd::UsdTree> out;
+        out.reserve(trees.size());
+        for (const ExportTree& t : trees) {
+            usd::UsdTree u{t.id, 0, t.variant, t.position, t.rotationY, t.scale, nullptr};
+            if (t.variant >= 0 && static_cast<std::size_t>(t.variant) < mUsdVariantSpecies.size()) {
+                u.species = mUsdVariantSpecies[static_cast<std::size_t>(t.variant)];
+            } else {
+                std::string suffix("_");
+                suffix.append(std::to_string(t.id));
+                u.species = mUsd->speciesIndex(speciesOfName(t.name, suffix));
+                u.mesh = t.mesh;
+            }
+            out.push_back(std::move(u));
+        }
+        mUsd->add(out, *mProgress);
+        return;
+    }
+    if (mGltf) {
+        gltf::ForestGltfWriter& out = gltfWriter();
+        for (const ExportTree& t : trees) {
+            const glm::quat rotation = glm::angleAxis(t.rotationY, glm::vec3(0, 1, 0));
+            if (t.variant >= 0) {
+                if (static_cast<std::size_t>(t.variant) >= mGltfVariants.size())
+                    throw InvalidInput("tree '" + t.name + "' names variant " +
+                                       std::to_string(t.variant) + " of " +
+                                       std::to_string(mGltfVariants.size()));
+                out.addInstance(mGltfVariants[static_cast<std::size_t>(t.variant)], t.id,
+                                t.position, rotation, glm::vec3(t.scale));
+                continue;
+            }
+            auto [it, added] = mGltfMeshes.try_emplace(t.mesh.get(), t.mesh, -1);
+            if (!added && it->second.first.expired()) it->second = {t.mesh, -1};
+            if (it->second.second < 0) it->second.second = out.addTreeMesh(t.name, *t.mesh);
+            out.addTree(t.name, t.id, it->second.second, t.position, rotation, glm::vec3(t.scale));
+        }
+    }
     if (mObj) {
         std::vector<ObjObject> objects;
         objects.reserve(trees.size());
@@ -73,7 +180,7 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
         }
         mObjWriter->add(objects);
     }
-    if (!mObj || mInstanceTables) {
+    if ((!mObj && !mGltf) || mInstanceTables) {
         for (const ExportTree& t : trees) {
             // Shared meshes are written once.
             const auto [it, added] = mMeshIndex.try_emplace(t.mesh.get(), mScene.meshes.size());
@@ -95,6 +202,8 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
 }
 
 std::vector<fs::path> TreeExporter::commit() {
+    mProgress->checkCancelled();
+    if (mUsd) return mUsd->commit(*mProgress);
     std::vector<fs::path> written{mPath};
     const SceneFormat sceneFormat = mObj ? SceneFormat::Glb : sceneFormatFor(mPath);
     const fs::path dir = mPath.parent_path().empty() ? fs::path(".") : mPath.parent_path();
@@ -103,14 +212,18 @@ std::vector<fs::path> TreeExporter::commit() {
         writeMtlFile(mtl, mObjMaterials);
         mObjWriter->commit();
         written.push_back(mtl);
+    } else if (mGltf) {
+        written = gltfWriter().commit();
     } else {
         mScene.textureSource = resourcesDir() / "textures";
-        writeScene(mPath, mScene, sceneFormat);
+        writeScene(mPath, mScene, sceneFormat, *mProgress);
     }
     // OBJ and text glTF reference their textures beside them; .glb and .fbx carry them inside.
     if (mObj || sceneFormat == SceneFormat::Gltf) {
         const fs::path res = resourcesDir();
-        if (copyTextures(mObj ? mObjMaterials : mScene.materials,
+        if (copyTextures(mObj    ? mObjMaterials
+                         : mGltf ? gltfWriter().materials()
+                                 : mScene.materials,
                          res.empty() ? fs::path() : res / "textures", dir) > 0)
             written.push_back(dir / "textures");
     }
