@@ -80,8 +80,9 @@ std::string sceneKey(const std::string& projectPath, const std::vector<std::stri
 
 int runForest(const std::vector<std::string>& argv) {
     const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
-                    {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
-                     "--naive-placement", "--fsync", "--full-precision", "--assimp-gltf"});
+                    {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--no-instancing",
+                     "--instance-tables", "--naive-placement", "--fsync", "--full-precision",
+                     "--assimp-gltf"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -103,6 +104,7 @@ int runForest(const std::vector<std::string>& argv) {
     options.useLod = !args.flag("--no-lod");
     options.adapt = !args.flag("--no-adapt");
     options.neighbours = !args.flag("--no-neighbours");
+    options.instancing = !args.flag("--no-instancing");
     if (args.flag("--naive-placement")) options.placement = placement::PlacementMethod::Naive;
 
     const auto start = Clock::now();
@@ -129,6 +131,8 @@ int runForest(const std::vector<std::string>& argv) {
         layer.durability = args.flag("--fsync") ? Durability::Durable : Durability::Atomic;
         layer.shippedTextures = exporter::resourcesDir() / "textures";
         usdWriter.emplace(*output, std::move(layer));
+        // Instancing writer: instances take the variants' meshes, no per-instance LOD mesh.
+        options.meshInstances = false;
         // Variants come before the first batch: USD writes them as prototypes at the end.
         options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
             std::vector<exporter::usd::UsdVariant> out;
@@ -142,6 +146,8 @@ int runForest(const std::vector<std::string>& argv) {
         exporter->setInstanceTables(args.flag("--instance-tables"));
         exporter->setProgress(progress);
         exporter->setAssimpGltf(args.flag("--assimp-gltf"));
+        // Instancing writers take the variants' meshes: no per-instance LOD mesh to make.
+        options.meshInstances = !exporter->writesInstances();
         // Variants come before the first batch: glTF writes each variant's mesh once, now.
         options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
             std::vector<exporter::ExportVariant> out;
@@ -211,6 +217,9 @@ int runForest(const std::vector<std::string>& argv) {
                              : 0.0);
         appendJsonNumber(json, "colliding_trees", static_cast<double>(stats.collidingTrees));
         appendJsonNumber(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
+        appendJsonNumber(json, "instanced", static_cast<double>(stats.instanced));
+        appendJsonNumber(json, "unique", static_cast<double>(stats.unique));
+        appendJsonNumber(json, "variants", static_cast<double>(stats.variants));
         std::size_t missing = 0;
         for (const placement::Shortfall& s : stats.shortfalls)
             missing += s.requested - s.placed;

@@ -138,7 +138,7 @@ help_every_command)
   done
   run_cli 0 forest --help
   for opt in --output --camera --threads --tile --stats --no-lod --no-adapt --no-neighbours \
-    --instance-tables --naive-placement --full-precision --fsync; do
+    --no-instancing --instance-tables --naive-placement --full-precision --fsync; do
     grep -q -- "$opt" out.txt || fail "forest --help does not list $opt"
   done
   run_cli 0 tree --help
@@ -212,8 +212,8 @@ forest_obj_and_stats)
   run_cli 0 forest "$DATA/projects/small.sylva" -o forest.obj --stats
   n=$(grep -c '^o ' forest.obj)
   [[ $n == 41 ]] || fail "expected 41 tree objects (1 hand-placed + 40), got $n"
-  grep -q '^o bush_0$' forest.obj || fail "hand-placed tree missing"
-  for key in trees vertices triangles colliding_trees metrics co2_kg timings_ms place write total; do
+  grep -q '^o bush_1$' forest.obj || fail "hand-placed tree (id 1) missing"
+  for key in trees vertices triangles colliding_trees instanced unique variants metrics co2_kg timings_ms place write total; do
     grep -q "\"$key\"" out.txt || fail "stats lack $key: $(cat out.txt)"
   done
   grep -q '"trees":41,' out.txt || fail "$(cat out.txt)"
@@ -315,6 +315,74 @@ forest_terrain)
   awk '/^o /{if (name!="") print name, lo, x; name=$2; lo=1e9} /^v /{if ($3<lo){lo=$3; x=$2}} END{print name, lo, x}' t.obj > low.txt
   awk '{ground=2+0.1*$3; d=$2-ground; if (d<0) d=-d; if (d>0.2) {print "off the slope:", $0; bad=1}} END{exit bad}' low.txt \
     || fail "a tree does not stand on the terrain: $(cat low.txt)" ;;
+forest_instancing)
+  # Issue 30: free domain trees are instances of their species' K variants (8 by default);
+  # --stats reports instanced + unique = trees; OBJ writes every tree, named by its id.
+  json_num() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" out.txt "$1"; }
+  run_cli 0 forest "$DATA/projects/small.sylva" -o f.obj --stats
+  trees=$(json_num trees) inst=$(json_num instanced) uniq=$(json_num unique) vars=$(json_num variants)
+  (( inst + uniq == trees )) || fail "instanced $inst + unique $uniq != trees $trees"
+  (( inst > 0 && uniq > 0 )) || fail "expected both kinds: $(cat out.txt)"
+  [[ $vars == 16 ]] || fail "2 species x 8 variants, got $vars"
+  [[ $(grep -c '^o ' f.obj) == "$trees" ]] || fail "OBJ objects != trees"
+  [[ $(grep '^o ' f.obj | sort -u | wc -l) == "$trees" ]] || fail "object names repeat"
+  # domain trees: domain id 1 x 10^9 + slot
+  [[ $(grep -Ec '^o (bush|shrub)_10000000[0-9]{2}$' f.obj) == $((trees - 1)) ]] ||
+    fail "domain tree names: $(grep '^o ' f.obj | head -3)"
+  run_cli 0 forest "$DATA/projects/small.sylva" -o g.obj --stats --no-instancing
+  [[ $(json_num instanced) == 0 && $(json_num unique) == "$trees" && $(json_num variants) == 0 ]] ||
+    fail "--no-instancing: $(cat out.txt)"
+  run_cli 0 stats "$DATA/projects/small.sylva" --json
+  [[ $(json_num instanced) == "$inst" ]] || fail "stats and forest disagree: $(cat out.txt)"
+  python3 -c "
+import json,sys
+d=json.load(open('out.txt'))
+t=d['per_tree']
+assert len(t)==$trees and t[0]['id']==1 and t[0]['variant']==-1, t[0]
+assert sum(1 for x in t if x['variant']>=0)==$inst
+assert all(x['name'].endswith('_'+str(x['id'])) for x in t)
+" || fail "per_tree ids/variants"
+  run_cli 0 stats "$DATA/projects/small.sylva"
+  grep -Eq "^instanced trees +$inst$" out.txt || fail "table: $(cat out.txt)" ;;
+forest_move_one_tree)
+  # Moving the hand-placed tree 30 m regrows only the trees it stood or stands near: every
+  # other tree's OBJ object is byte for byte the same.
+  python3 - "$DATA/projects/small.sylva" <<'PY' || fail "cannot write the moved project"
+import json, os, sys
+src = sys.argv[1]
+p = json.load(open(src))
+base = os.path.dirname(os.path.abspath(src))
+for s in p["species"]: s["file"] = os.path.join(base, s["file"])
+for o in p["obstacles"]: o["file"] = os.path.join(base, o["file"])
+json.dump(p, open("before.sylva", "w"))
+p["instances"][0]["position"][0] += 30
+json.dump(p, open("after.sylva", "w"))
+PY
+  run_cli 0 forest before.sylva -o before.obj
+  run_cli 0 forest after.sylva -o after.obj
+  python3 - <<'PY' > moved.txt || fail "$(cat moved.txt)"
+import math
+def objects(path):
+    out, name = {}, None
+    for line in open(path):
+        if line.startswith("o "): name = line.split()[1]; out[name] = []
+        elif name and line[:2] in ("v ", "f ", "vt", "vn", "us"): out[name].append(line)
+    return out
+a, b = objects("before.obj"), objects("after.obj")
+assert set(a) == set(b), "tree ids changed: %s" % (set(a) ^ set(b))
+changed = [n for n in a if a[n] != b[n]]
+def centre(lines):
+    v = [list(map(float, l.split()[1:4])) for l in lines if l.startswith("v ")]
+    return (sum(p[0] for p in v) / len(v), sum(p[2] for p in v) / len(v))
+for n in changed:
+    if n == "bush_1": continue
+    x, z = centre(a[n])
+    d = min(math.hypot(x - 0, z - 0.6), math.hypot(x - 30, z - 0.6))
+    assert d < 8, "%s at (%.1f, %.1f) changed, %.1f m from the moved tree" % (n, x, z, d)
+print("changed %d of %d" % (len(changed), len(a)))
+assert "bush_1" in changed and len(changed) < len(a) / 2, changed
+PY
+  cat moved.txt ;;
 forest_glb_threads_identical)
   # The instanced GLB and the text glTF with its .bin are byte-identical on 1 and 2 threads.
   mkdir -p one two

@@ -140,7 +140,7 @@ private Q_SLOTS:
         QVERIFY(mWindow->openProject(mProject));
         settle();
         QVERIFY2(mWindow->lastError().isEmpty(), qPrintable(mWindow->lastError()));
-        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(42));
     }
 
     void cleanupTestCase() {
@@ -247,7 +247,7 @@ private Q_SLOTS:
             QTRY_VERIFY_WITH_TIMEOUT(generated.count() >= 1, 20000);
             settle();
             QCOMPARE(mWindow->generator().result().stats.at("regrown"), 0.0);
-            QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+            QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(42));
         }
     }
 

@@ -53,8 +53,7 @@ private:
 private Q_SLOTS:
     void initTestCase() {
         mDocument.open(dataFile("projects/small.sylva"));
-        mShown =
-            generateProject(mDocument.project(), mDocument.path(), mDocument.treeIds(), nullptr);
+        mShown = generateProject(mDocument.project(), mDocument.path(), nullptr);
         QVERIFY2(mShown.ok(), qPrintable(mShown.error));
         QVERIFY(mShown.exportTrees.size() > 1);
     }

@@ -37,7 +37,7 @@ namespace sylva::ui {
 /// generation when the tree did not change) placed by its instance transform.
 struct DrawnTree {
     std::uint32_t docId = 0; ///< the document's tree id (hand-placed trees); 0 for domain trees
-    std::uint32_t instanceId = 0; ///< the forest's instance id (name suffix)
+    std::uint64_t instanceId = 0; ///< the forest's stable tree id (name suffix)
     std::uint32_t species = 0;    ///< index into the project's species
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};

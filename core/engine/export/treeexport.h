@@ -73,6 +73,9 @@ public:
     /// file in memory; quadratic in the file's size) instead of gltf::ForestGltfWriter: for
     /// comparisons (`sylva-cli forest --assimp-gltf`). Call before add().
     void setAssimpGltf(bool on) { mGltf = mGltf && !on; }
+    /// Whether the output instances the variants (glTF through our writer): then the trees'
+    /// own meshes of instanced trees are not written (ForestOptions::meshInstances can be off).
+    bool writesInstances() const { return mGltf; }
 
 private:
     gltf::ForestGltfWriter& gltfWriter();

@@ -366,10 +366,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             used[placed.instances[index].species] = true;
         for (std::size_t sp = 0; sp < scene.species.size(); ++sp) {
             if (!used[sp] || plans[sp].selfOrganizing) continue;
-            const int k = scene.species[sp].variants > 0 ? scene.species[sp].variants
-                                                         : options.variantsPerSpecies;
-            requireRange(("variants of species '" + scene.species[sp].name + "'").c_str(), k, 1,
+            const int k = scene.species[sp].variants >= 0 ? scene.species[sp].variants
+                                                          : options.variantsPerSpecies;
+            requireRange(("variants of species '" + scene.species[sp].name + "'").c_str(), k, 0,
                          256);
+            if (k == 0) continue; // a species grown tree by tree
             firstVariant[sp] = static_cast<std::int32_t>(variants.size());
             variantCount[sp] = static_cast<std::uint32_t>(k);
             const std::uint64_t base =
@@ -479,20 +480,50 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 ctx.leafAspect = static_cast<float>(meshSettings[in.species].leafCards.aspect);
                 ctx.key = in.id + 1;
 
-                // A tree nothing would adapt (no obstacle near its variant, no neighbour's crown
-                // core in its own, as adaptation sees them) shows one of its species' variants,
-                // picked by its seed.
-                if (firstVariant[in.species] >= 0 && near.empty()) {
+                // A domain tree nothing would adapt (no obstacle near its variant, no
+                // neighbour's crown core in its own, as adaptation sees them) shows one of its
+                // species' variants, picked by its seed. Hand-placed trees are the artist's
+                // own: always grown from their seed.
+                if (firstVariant[in.species] >= 0 && !in.handPlaced && near.empty()) {
                     const auto v = static_cast<std::size_t>(firstVariant[in.species]) +
                                    mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species];
                     if (!touchesObstacles(obstacles, in, extents[v])) {
                         const ForestVariant& variant = variants[v];
                         tree.variant = static_cast<std::int32_t>(v);
-                        tree.mesh = variant.mesh;
                         tree.skeleton = variant.skeleton;
                         tree.meshSettings = variant.meshSettings;
                         tree.metrics =
                             forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
+                        if (!options.useLod || !options.buildMeshes || !options.meshInstances) {
+                            tree.mesh = variant.mesh; // shared: drawn with the tree's transform
+                            continue;
+                        }
+                        // With the camera's LOD the variant is meshed for this tree's distance,
+                        // as a unique tree is (the full-detail variant drawn 1,000 times made an
+                        // OBJ 13 times larger); cached like one, keyed by its variant.
+                        std::uint64_t key = 0;
+                        if (options.cache) {
+                            key = mixSeed(treeKey(speciesKeys[in.species], in, {}, scene, options,
+                                                  ctx.cameraDistance),
+                                          variant.seed);
+                            if (std::optional<ForestTree> cached = options.cache->findTree(key)) {
+                                tree = std::move(*cached);
+                                tree.name = species.name + "_" + std::to_string(in.id);
+                                continue;
+                            }
+                        }
+                        const auto t = Clock::now();
+                        mesh::TreeMeshSettings settings = *variant.meshSettings;
+                        tree.meshCameraDistance = ctx.cameraDistance;
+                        settings.useLod = true;
+                        settings.cameraDistance = ctx.cameraDistance;
+                        settings.hasCamera = true;
+                        settings.cameraLocal =
+                            glm::vec3(glm::inverse(ctx.transform) * glm::vec4(scene.camera, 1.0f));
+                        tree.mesh = std::make_shared<const mesh::Mesh>(
+                            mesh::buildTreeMesh(*variant.skeleton, settings));
+                        cpuMesh[thread] += msSince(t);
+                        if (key) options.cache->storeTree(key, tree);
                         continue;
                     }
                 }

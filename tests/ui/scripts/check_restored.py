@@ -7,5 +7,9 @@ assert doc.modified, "restored edits must count as unsaved"
 assert doc.path.endswith("alder-reference.sylva"), doc.path
 assert any(t.seed == 77 for t in doc.trees())
 assert doc.seed == 4242
-assert doc.generate()["trees"] == 44
+# The same forest as before the crash (at seed 4242: 43 trees, the two hand-placed ones and the
+# domain's 42 less the one they stand on).
+trees = int(open(os.environ["SYLVA_TEST_OUT"] + "/before-crash.trees").read())
+assert doc.generate()["trees"] == trees, (trees, "before the crash")
+assert trees == 43, trees
 print("check_restored: ok")
