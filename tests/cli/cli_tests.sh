@@ -190,17 +190,17 @@ tree_glb_export)
   grep -q '^mtllib bush.mtl' bush.obj || fail "OBJ does not reference its MTL"
   grep -q '^usemtl bark' bush.obj || fail "no bark material in use" ;;
 species_textures_exported)
-  # A library species: its own bark and leaf PNGs beside the OBJ (named by the MTL), inside the
+  # A library species: its own bark and leaf cluster atlas PNGs beside the OBJ (named by the MTL), inside the
   # GLB and the FBX (read back by Assimp's command-line tool, which nobody here wrote).
   oak="$DATA/../../presets/english-oak.json"
   run_cli 0 tree "$oak" -o oak.obj --seed 2
-  for kind in bark leaf; do
+  for kind in bark leafcluster; do
     grep -q "^map_Kd textures/english-oak_$kind.png" oak.mtl || fail "MTL lacks the $kind texture"
     grep -q "^usemtl english-oak_$kind" oak.obj || fail "OBJ does not use english-oak_$kind"
     [[ -s textures/english-oak_$kind.png ]] || fail "textures/english-oak_$kind.png missing"
     [[ $(head -c 4 textures/english-oak_$kind.png | tail -c 3) == PNG ]] || fail "not a PNG"
   done
-  grep -q "^map_d textures/english-oak_leaf.png" oak.mtl || fail "leaf cut-out (map_d) missing"
+  grep -q "^map_d textures/english-oak_leafcluster.png" oak.mtl || fail "leaf cut-out (map_d) missing"
   if command -v assimp >/dev/null; then
     for f in oak.glb oak.fbx; do
       run_cli 0 tree "$oak" -o "$f" --seed 2

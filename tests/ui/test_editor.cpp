@@ -118,7 +118,8 @@ private Q_SLOTS:
         QVERIFY(mDir.isValid());
         // The demo project saved into a scratch folder (paths rebased), so saving is safe.
         doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory()).filePath("../resources/demo/forest.sylva"));
+        demo.open(QDir(doc::PresetLibrary::directory())
+                      .filePath("../resources/demo/alder-reference.sylva"));
         mProject = mDir.filePath(QStringLiteral("demo.sylva"));
         demo.save(mProject);
 

@@ -591,18 +591,19 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     settings.hasCamera = true;
                     settings.cameraLocal =
                         glm::vec3(glm::inverse(ctx.transform) * glm::vec4(scene.camera, 1.0f));
-                    if (options.adapt && !obstacles.empty())
-                        settings.acceptLeafCard = [&obstacles, &ctx,
-                                                   &skeleton](const skel::Leaf& leaf) {
-                            const bool onNode = leaf.node >= 0 && static_cast<std::size_t>(
-                                                                      leaf.node) < skeleton->size();
-                            const glm::vec3 stem =
-                                onNode ? skeleton->position[static_cast<std::size_t>(leaf.node)]
-                                       : leaf.position;
-                            return !env::leafCardTouches(obstacles, ctx.transform, leaf, stem,
-                                                         ctx.leafScale, ctx.leafAspect);
-                        };
                 }
+                if ((options.useLod || settings.leafClusterSize > 1) && options.adapt &&
+                    !obstacles.empty())
+                    settings.acceptLeafCard = [&obstacles, &ctx,
+                                               &skeleton](const skel::Leaf& leaf) {
+                        const bool onNode = leaf.node >= 0 &&
+                                            static_cast<std::size_t>(leaf.node) < skeleton->size();
+                        const glm::vec3 stem =
+                            onNode ? skeleton->position[static_cast<std::size_t>(leaf.node)]
+                                   : leaf.position;
+                        return !env::leafCardTouches(obstacles, ctx.transform, leaf, stem,
+                                                     ctx.leafScale, ctx.leafAspect);
+                    };
                 tree.mesh =
                     std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
                 cpuMesh[thread] += msSince(t);

@@ -27,7 +27,7 @@ using doc::TreeId;
 
 namespace {
 
-const QString kDemo = QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva");
+const QString kDemo = QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva");
 
 class DocumentTest : public ::testing::Test {
 protected:

@@ -55,7 +55,8 @@ void expectSame(const Built& a, const Built& b) {
 } // namespace
 
 TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
-    doc::Project project = doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva");
+    doc::Project project =
+        doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva");
     const forest::ForestScene original = doc::makeForestScene(project);
     forest::TreeCache cache;
     const Built first = build(original, &cache);
@@ -94,7 +95,8 @@ TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
 // domain trees were scattered after it on one random stream). Now every other tree keeps its
 // id and transform, and only the trees whose crowns it left or now touches change.
 TEST(TreeCache, MovingTheDemosAlderRegrowsOnlyItAndItsNeighbours) {
-    doc::Project project = doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva");
+    doc::Project project =
+        doc::loadProject(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva");
     ASSERT_EQ(project.instances.size(), 1u);
     forest::TreeCache cache;
     const forest::ForestScene original = doc::makeForestScene(project);

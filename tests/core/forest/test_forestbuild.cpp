@@ -122,6 +122,7 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kBrushStroke,
                                         salt::kPlaceTool,
                                         salt::kVariant,
-                                        salt::kVariantPick};
-    EXPECT_EQ(salts.size(), 14u);
+                                        salt::kVariantPick,
+                                        salt::kLeafClusters};
+    EXPECT_EQ(salts.size(), 15u);
 }

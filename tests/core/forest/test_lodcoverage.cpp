@@ -208,7 +208,7 @@ protected:
 };
 
 TEST_F(LodCoverage, DemoProject) {
-    expectSilhouetteKept(compare("forest.sylva", "demo"));
+    expectSilhouetteKept(compare("alder-reference.sylva", "demo"));
 }
 
 TEST_F(LodCoverage, BenchmarkProject) {

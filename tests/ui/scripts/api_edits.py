@@ -6,7 +6,7 @@ import sylva
 
 doc = sylva.document()
 out = os.environ["SYLVA_TEST_OUT"]
-assert doc.path.endswith("forest.sylva"), doc.path
+assert doc.path.endswith("alder-reference.sylva"), doc.path
 assert not doc.modified
 original = doc.serialized()
 assert doc.species() == ["alder", "ternary"], doc.species()
