@@ -68,6 +68,7 @@ def render(build, species_file, png, size):
 CLOSEUPS = [
     ("silver-birch", (2.2, 3.2, 4.5), (0.0, 4.0, 0.0)),
     ("english-oak", (3.5, 2.0, 6.0), (0.0, 3.2, 0.0)),
+    ("scots-pine", (4.5, 10.5, 6.5), (0.0, 11.5, 0.0)),
 ]
 
 
@@ -82,19 +83,35 @@ def closeup(build, species, eye, target, png, folder):
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
 
 
-def library(build, png, folder):
-    """The whole library in one project (resources/demo/library.sylva), seen from its camera."""
-    with open(os.path.join(ROOT, "resources/demo/library.sylva")) as f:
+def library(build, png, folder, project="resources/demo/library.sylva"):
+    """A whole project (the library by default), seen from its camera."""
+    with open(os.path.join(ROOT, project)) as f:
         camera = json.load(f)["camera"]
-    script = os.path.join(folder, "library.py")
+    script = os.path.join(folder, os.path.basename(project) + ".py")
     with open(script, "w") as f:
         f.write("import sylva\nwin = sylva.window()\nwin.look_from(%r, %r)\n"
                 "win.screenshot(%r, viewport_only=True)\n"
                 % (tuple(camera["position"]), tuple(camera["target"]), png))
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24",
            os.path.join(build, "app/editor/sylva"), "--size", "1200x600", "--script", script,
-           os.path.join(ROOT, "resources/demo/library.sylva")]
+           os.path.join(ROOT, project)]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
+
+
+def solidity(build):
+    """The broadleaves' crown silhouette table printed by test_crownshape (issue #33)."""
+    out = subprocess.run([os.path.join(build, "tests/core/forest/test_crownshape"),
+                          "--gtest_filter=CrownShape.Broadleaves*"], check=True, capture_output=True,
+                         text=True).stdout
+    return [l for l in out.splitlines() if l.startswith("|")]
+
+
+def leaf_clusters(build):
+    """The broadleaves' leaf cluster table printed by test_crownshape's LeafClusters test."""
+    out = subprocess.run([os.path.join(build, "tests/core/forest/test_crownshape"),
+                          "--gtest_filter=LeafClusters.Broad*"], check=True, capture_output=True,
+                         text=True).stdout
+    return [l for l in out.splitlines() if l.startswith("|")]
 
 
 def triangles(build, species_file, folder):
@@ -122,7 +139,8 @@ def main():
     ap.add_argument("--thumb", type=int, default=240)
     ap.add_argument("--no-doc", action="store_true", help="do not rewrite docs/gallery.md")
     args = ap.parse_args()
-    species = [s for s in args.only.split(",") if s] or SPECIES
+    species = ([s for s in args.only.split(",") if s and s not in ("stand", "demo")]
+               if args.only else SPECIES)
     seeds = [int(s) for s in args.seeds.split(",")]
     os.makedirs(args.out, exist_ok=True)
     rows = []
@@ -147,6 +165,14 @@ def main():
             raw = os.path.join(tmp, "library.png")
             library(args.build, raw, tmp)
             thumbnail(raw, os.path.join(args.out, "library.png"), 720, colors=128)
+        if not args.only or "demo" in args.only.split(","):
+            raw = os.path.join(tmp, "demo.png")
+            library(args.build, raw, tmp, "resources/demo/forest.sylva")
+            thumbnail(raw, os.path.join(args.out, "demo.png"), 720, colors=160)
+        if not args.only or "stand" in args.only.split(","):
+            raw = os.path.join(tmp, "stand.png")
+            library(args.build, raw, tmp, "resources/demo/stand.sylva")
+            thumbnail(raw, os.path.join(args.out, "stand.png"), 720, colors=128)
     if args.no_doc or args.only:
         return
     lines = ["| species | seed %s |" % " | seed ".join(map(str, seeds)),
@@ -161,6 +187,13 @@ def main():
     for sp, tris in rows:
         lines.append("| %s | %s | %s |" % (sp, " / ".join("{:,}".format(t) for t, _ in tris),
                                            " / ".join("%.1f" % h for _, h in tris)))
+    lines += ["", "Crown silhouettes of the broadleaves (`tests/core/forest/test_crownshape`: side view,"
+              " crown rows, solidity = area / convex hull area, the mean of two views; it asserts"
+              " <= 0.85; middle cover: how much of the crown's middle is covered, it asserts >= 0.6"
+              " for maple, birch and beech):", ""] + solidity(args.build)
+    lines += ["", "Leaf clusters of the broadleaves (`test_leafclusters`, seed 1: leaf-card triangles"
+              " with one card a leaf and with cluster cards, and the silhouettes' IoU, conservative"
+              " raster; it asserts a ratio >= 4 and IoU >= 0.9):", ""] + leaf_clusters(args.build)
     doc_path = os.path.join(ROOT, "docs", "gallery.md")
     with open(doc_path) as f:
         text = f.read()

@@ -1,6 +1,7 @@
 #include "cliargs.h"
 #include "clishared.h"
 #include "commands.h"
+#include "terminalprogress.h"
 #include "usage.h"
 
 #include "document/speciesfile.h"
@@ -78,16 +79,20 @@ int runTree(const std::vector<std::string>& argv) {
                            "' produces no mesh; end the graph with a tube_mesh node");
 
     const auto t0 = std::chrono::steady_clock::now();
+    // Ctrl-C and SIGTERM from here on stop the writer and remove its temporary (before, the
+    // default action ends the process with nothing on disk yet).
+    TerminalProgress progress;
     const std::string name = exporter::objectNameFor(evaluator.graph().name);
     const bool obj = std::filesystem::path(*output).extension() == ".obj";
     if (!wind || obj) {
         TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
         exporter.add({ExportTree{name, result.mesh}});
+        exporter.setProgress(progress);
         exporter.commit();
     }
     if (wind) {
         if (!result.skeleton) throw InvalidInput("--wind needs the species' skeleton");
-        exporter::WindExporter windExporter(*output, windSettings);
+        exporter::WindExporter windExporter(*output, windSettings, progress);
         windExporter.add({{name, result.mesh, result.skeleton}});
         windExporter.commit();
     }

@@ -106,6 +106,23 @@ def test_tree_export_equals_cli_bytes(presets, cli, tmp_path):
     assert (tmp_path / "py" / "t.glb").read_bytes() == (tmp_path / "cli" / "t.glb").read_bytes()
 
 
+def test_write_lods_equals_cli_bytes(data, cli, tmp_path):
+    # Issue #32: the game LOD chain from Python is `sylva-cli lods`'s, file for file.
+    s = sylva.load_species(data / "lsystem" / "bush.lsys")
+    d = s.write_lods(tmp_path / "py", budgets=[1, 0.35, 0.12], impostor_grid=4,
+                     impostor_cell=32)
+    assert [level["name"] for level in d["levels"]] == ["bush_LOD0", "bush_LOD1", "bush_LOD2"]
+    assert d["levels"][0]["triangles"] > d["levels"][1]["triangles"]
+    assert d["impostor"]["grid"] == 4 and d["impostor"]["atlas_pixels"] == 128
+    cli("lods", data / "lsystem" / "bush.lsys", "-o", tmp_path / "cli", "--budgets",
+        "1,0.35,0.12", "--impostor-grid", 4, "--impostor-cell", 32)
+    for name in ("bush_LODs.glb", "bush_lods.json", "bush_impostor_color.png",
+                 "bush_impostor_normal.png", "bush_impostor_depth.png", "bush_LOD2.obj"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
+    with pytest.raises(ValueError, match="LOD2 budget must be above 0"):
+        s.write_lods(tmp_path / "bad", budgets=[1, 0.3, 0.5])
+
+
 def cli_message(r):
     """The CLI's message without its 'sylva-cli: error: ' prefix."""
     return r.stderr.strip().removeprefix("sylva-cli: error: ")

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "engine/mesh/leafclusters.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -228,10 +229,26 @@ double ringWidthCompensation(int base, int res) {
 } // namespace
 
 namespace {
+// One card a leaf, or cluster cards when the species has a cluster atlas.
+void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
+                  const TreeMeshSettings& settings, const skel::Skeleton* skeleton) {
+    if (settings.leafClusterSize > 1) {
+        LeafClusterSettings clusters;
+        clusters.leavesPerCard = settings.leafClusterSize;
+        clusters.seed = settings.seed;
+        appendLeafClusterCards(mesh, leaves, settings.leafCards, clusters, skeleton,
+                               settings.acceptLeafCard);
+    } else {
+        appendLeafCards(mesh, leaves, settings.leafCards, skeleton);
+    }
+}
+
 Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {
     for (Submesh& s : mesh.submeshes) {
         if (s.material == "bark") s.texture = settings.barkTexture;
-        if (s.material == "leaf") s.texture = settings.leafTexture;
+        if (s.material == "leaf")
+            s.texture =
+                settings.leafClusterSize > 1 ? settings.leafClusterTexture : settings.leafTexture;
     }
     return mesh;
 }
@@ -244,7 +261,7 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
     if (!settings.useLod) {
         appendTubes(mesh, skeleton, tubes, progress);
         if (settings.leaves && !skeleton.leaves.empty())
-            appendLeafCards(mesh, skeleton.leaves, settings.leafCards, &skeleton);
+            appendLeaves(mesh, skeleton.leaves, settings, &skeleton);
         return mesh;
     }
     const LodLevel level = selectLod(settings.lod, settings.cameraDistance);
@@ -276,7 +293,7 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
             if (settings.acceptLeafCard)
                 std::erase_if(leaves, std::not_fn(settings.acceptLeafCard));
         }
-        appendLeafCards(mesh, leaves, settings.leafCards, &kept);
+        appendLeaves(mesh, leaves, settings, &kept);
     }
     return mesh;
 }
@@ -285,7 +302,9 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
 Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
                    Progress& progress) {
     Mesh mesh = buildUntexturedTreeMesh(skeleton, settings, progress);
-    if (settings.barkTexture.empty() && settings.leafTexture.empty()) return mesh;
+    if (settings.barkTexture.empty() && settings.leafTexture.empty() &&
+        settings.leafClusterTexture.empty())
+        return mesh;
     return withTextures(std::move(mesh), settings);
 }
 

@@ -111,6 +111,10 @@ struct TreeMeshSettings {
     /// Diffuse textures of the bark and leaf submeshes (Submesh::texture); empty: the defaults.
     std::string barkTexture;
     std::string leafTexture;
+    /// Leaves a cluster card carries on average (engine/mesh/leafclusters.h); 0: one card a
+    /// leaf. With it the leaf submesh shows leafClusterTexture (the species' cluster atlas).
+    int leafClusterSize = 0;
+    std::string leafClusterTexture;
 };
 
 /// Bark tubes plus leaf cards, at the level of detail the settings ask for.

@@ -7,6 +7,7 @@
 #include "engine/environment/obstaclemesh.h"
 #include "engine/graph/vectorparam.h"
 #include "engine/growth/envelope.h"
+#include "engine/growth/litattractors.h"
 #include "engine/growth/spacecolonization.h"
 #include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
@@ -148,6 +149,20 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
                  "Crown envelope: {shape: sphere|ellipsoid|cone|cylinder|hemisphere|profile|mesh, "
                  "center, radius, ...}; default a sphere of 4.5 m at (0, 6, 0)"),
            integer("seed", 1, 0, kMaxSeed, "Seed of the points and of the random directions")});
+    group(type.params, "Light",
+          {integer("light_clusters", 0, 0, 1000,
+                   "K: sunlit foliage clusters the points are kept in (0: the whole envelope)"),
+           number("light_cluster_radius", 0.35, 0, 2, "",
+                  "Cluster radius as a fraction of the envelope's mean half-extent", true),
+           number("light_cluster_spread", 0.5, 0, 1, "",
+                  "Spread of the cluster radii: radius x (1 +- spread/2)"),
+           number("shaded_fraction", 0.0, 0, 0.99, "",
+                  "Drop this fraction of the points, the most shaded by those above"),
+           number("light_voxel_size", 0.6, 0, 100, "m", "Edge of a shadow voxel", true),
+           integer("light_inner_clusters", 0, 0, 1000,
+                   "Clusters in the shaded inside: foliage on the main limbs under the lit shell"),
+           number("light_inner_radius", 0.7, 0, 2, "",
+                  "Inner cluster radius as a fraction of the lit clusters' radius", true)});
     group(type.params, "Growth",
           {number("influence_distance", 3.0, 0, 1000, "m",
                   "d_i: a point attracts its closest node within this distance", true),
@@ -171,6 +186,7 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
         std::int64_t count = 0;
         std::uint64_t seed = 0;
         Envelope envelope = Envelope::sphere(glm::vec3(0, 6, 0), 4.5f);
+        LightParams light;
         try {
             count = p.integer("attractors", 3000);
             if (count < 1 || count > 2'000'000)
@@ -195,6 +211,14 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
             seed = ctx.seedOverridden ? ctx.seed : static_cast<std::uint64_t>(s);
             cp.seed = seed;
             validate(cp);
+            light.clusters = static_cast<int>(p.integer("light_clusters", 0));
+            light.clusterRadius = static_cast<float>(p.number("light_cluster_radius", 0.35));
+            light.clusterSpread = static_cast<float>(p.number("light_cluster_spread", 0.5));
+            light.shadedFraction = static_cast<float>(p.number("shaded_fraction", 0.0));
+            light.voxelSize = static_cast<float>(p.number("light_voxel_size", 0.6));
+            light.innerClusters = static_cast<int>(p.integer("light_inner_clusters", 0));
+            light.innerRadius = static_cast<float>(p.number("light_inner_radius", 0.7));
+            validate(light);
             const Value* env = p.find("envelope");
             if (env != nullptr) envelope = envelopeFromParams(*env, ctx);
         } catch (const InvalidInput& e) {
@@ -215,10 +239,38 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
         }
         const auto t0 = Clock::now();
         const std::vector<glm::vec3> points =
-            envelope.sample(static_cast<std::size_t>(count), seed);
+            litAttractors(envelope.sample(static_cast<std::size_t>(count), seed), light, seed);
         const auto t1 = Clock::now();
         ColonizationResult r =
             colonize(points, cp, initial, NeighbourSearch::Accelerated, ctx.progress);
+        // Lit clusters leave gaps wider than d_i: a crown that stopped with clusters out of reach
+        // keeps growing from what it has toward the points left, reaching farther each round
+        // (a limb that crosses the gap to the light), at most kReachRounds times.
+        constexpr int kReachRounds = 4;
+        for (int round = 0;
+             round < kReachRounds && light.clusters > 0 &&
+             r.stopReason == StopReason::NothingInReach && r.killedCount < points.size();
+             ++round) {
+            std::vector<glm::vec3> left;
+            for (std::size_t i = 0; i < points.size(); ++i)
+                if (!r.killed[i]) left.push_back(points[i]);
+            ColonizationParams farther = cp;
+            farther.influenceDistance = cp.influenceDistance * static_cast<float>(2 << round);
+            farther.trunkHeight = 0.0f;
+            const std::size_t killedBefore = r.killedCount;
+            const skel::Skeleton grown = std::move(r.skeleton);
+            ColonizationResult next =
+                colonize(left, farther, &grown, NeighbourSearch::Accelerated, ctx.progress);
+            std::vector<std::uint8_t> killed = std::move(r.killed);
+            std::size_t j = 0;
+            for (std::size_t i = 0; i < points.size(); ++i)
+                if (!killed[i]) killed[i] = next.killed[j++];
+            next.killed = std::move(killed);
+            next.killedCount += killedBefore;
+            next.iterations += r.iterations;
+            next.initialNodes = r.initialNodes;
+            r = std::move(next);
+        }
         const auto t2 = Clock::now();
 
         auto ms = [](auto a, auto b) {

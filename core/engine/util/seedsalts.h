@@ -16,6 +16,8 @@ inline constexpr std::uint64_t kLeafPlacement = 0x1EAF;
 inline constexpr std::uint64_t kSpaceColonization = 0x636f6c6f6e697a65ull;
 /// Points sampled inside a crown envelope ("envelope").
 inline constexpr std::uint64_t kEnvelope = 0x656e76656c6f7065ull;
+/// Space colonization's lit attraction points: the jitter of the sunlit clusters ("light").
+inline constexpr std::uint64_t kLitAttractors = 0x6c69676874ull;
 /// A self-organizing tree's own stream (bud fates over the whole growth).
 inline constexpr std::uint64_t kSelfOrganizingTree = 0x5e1f;
 /// A self-organizing tree's space-colonization markers in its crown.
@@ -40,5 +42,7 @@ inline constexpr std::uint64_t kVariantPick = 0x5A1B;
 inline constexpr std::uint64_t kBrushStroke = 7919;
 /// The editor's Place tool: a placed tree's rotation and seed (added to the tree count).
 inline constexpr std::uint64_t kPlaceTool = 104729;
+/// Leaf cluster cards: which atlas tile a cluster shows and whether it is mirrored.
+inline constexpr std::uint64_t kLeafClusters = 0x5b7a11ull;
 
 } // namespace sylva::salt

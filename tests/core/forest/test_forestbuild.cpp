@@ -125,6 +125,7 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kWindPhase,
                                         salt::kWindPhase + 1,
                                         salt::kVariant,
-                                        salt::kVariantPick};
-    EXPECT_EQ(salts.size(), 16u);
+                                        salt::kVariantPick,
+                                        salt::kLeafClusters};
+    EXPECT_EQ(salts.size(), 17u);
 }
