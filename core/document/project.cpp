@@ -5,6 +5,7 @@
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/wind/windmodel.h"
 
 #include <QDir>
 #include <QFile>
@@ -269,6 +270,20 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
             if (glm::length(p.lightDirection) < 1e-6f)
                 throw InvalidInput("light.direction must not be zero");
         }
+        if (const Value* w = root.find("wind")) {
+            ProjectWind wind;
+            wind.direction = vec3Or(*w, "direction", wind.direction, "wind");
+            wind.strength = static_cast<float>(w->number("strength", wind.strength));
+            wind.gustiness = static_cast<float>(w->number("gustiness", wind.gustiness));
+            wind.frequency = static_cast<float>(w->number("frequency", wind.frequency));
+            sylva::wind::WindSettings check;
+            check.direction = wind.direction;
+            check.strength = wind.strength;
+            check.gustiness = wind.gustiness;
+            check.frequency = wind.frequency;
+            sylva::wind::validate(check); // names the setting and its allowed range
+            p.wind = wind;
+        }
         // Species names must be unique and every reference must name one.
         for (std::size_t i = 0; i < p.species.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -388,6 +403,11 @@ QByteArray serializeProject(const Project& project) {
     root["camera"] =
         Value::Object{{"position", arrayOf(p.cameraPosition)}, {"target", arrayOf(p.cameraTarget)}};
     root["light"] = Value::Object{{"direction", arrayOf(p.lightDirection)}};
+    if (p.wind)
+        root["wind"] = Value::Object{{"direction", arrayOf(p.wind->direction)},
+                                     {"strength", p.wind->strength},
+                                     {"gustiness", p.wind->gustiness},
+                                     {"frequency", p.wind->frequency}};
     return QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n");
 }
 

@@ -83,6 +83,16 @@ struct ProjectObstacle {
     bool operator==(const ProjectObstacle&) const = default;
 };
 
+/// The project's wind ("wind" in the file; docs/wind.md): what the viewport plays and what wind
+/// exports use. Absent from files that never set it, which then keep their bytes.
+struct ProjectWind {
+    glm::vec3 direction{1.0f, 0.0f, 0.0f}; ///< where the wind blows to; only x and z count
+    float strength = 0.5f;                 ///< 0 .. 2
+    float gustiness = 0.3f;                ///< 0 .. 1
+    float frequency = 0.5f;                ///< Hz of the trunk's sway, 0.05 .. 5
+    bool operator==(const ProjectWind&) const = default;
+};
+
 /// The document behind a `.sylva` file. Paths are kept as written (relative to the project) and
 /// resolved with resolve().
 struct Project {
@@ -97,6 +107,7 @@ struct Project {
     std::uint64_t nextTreeId = 1;
     glm::vec3 cameraPosition{0.0f, 20.0f, 80.0f}, cameraTarget{0.0f};
     glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
+    std::optional<ProjectWind> wind; ///< unset: the engine's default wind, nothing saved
     /// Keys this version does not know, kept so that saving never drops another tool's data.
     sylva::Value::Object extra;
 

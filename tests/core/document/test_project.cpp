@@ -61,6 +61,23 @@ TEST(Project, RoundTripsByteIdentically) {
     EXPECT_EQ(doc::serializeProject(again), saved);
 }
 
+TEST(Project, WindIsSavedOnlyWhenSetAndRoundTrips) {
+    doc::Project p = doc::parseProject(kContract, "/proj/forest.sylva");
+    EXPECT_FALSE(p.wind);
+    EXPECT_FALSE(doc::serializeProject(p).contains("\"wind\""));
+    p.wind = doc::ProjectWind{{0.0f, 0.0f, -1.0f}, 1.25f, 0.75f, 0.4f};
+    const QByteArray saved = doc::serializeProject(p);
+    EXPECT_TRUE(saved.contains("\"wind\""));
+    const doc::Project again = doc::parseProject(saved, "/proj/forest.sylva");
+    ASSERT_TRUE(again.wind);
+    EXPECT_EQ(*again.wind, *p.wind);
+    EXPECT_EQ(doc::serializeProject(again), saved);
+    EXPECT_THROW(
+        doc::parseProject(R"({"format":"sylva-project","format_version":1,"wind":{"strength":9}})",
+                          "/proj/x.sylva"),
+        sylva::InvalidInput);
+}
+
 TEST(Project, KeepsKeysItDoesNotKnow) {
     std::string json = kContract;
     json.insert(1, R"("render_settings": {"samples": 64}, )");
