@@ -588,7 +588,12 @@ private Q_SLOTS:
         viewport->setGridVisible(false);
         viewport->frameScene();
         QVERIFY(glm::length(viewport->camera().eye() - glm::vec3(0, 25, 70)) > 1.0f);
-        const QImage image = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        // The three pictures compared are final, sharp frames: the view just moved (a software
+        // renderer draws moving frames with the trees' motion levels at reduced resolution) and
+        // the trees' coarser levels and impostors are made in the background; a tree drawn at
+        // one level in one picture and another in the next showed its leaves as "obstacle".
+        QTRY_VERIFY_WITH_TIMEOUT(viewport->lodPending() == 0, kGenerationTimeoutMs);
+        const QImage image = viewport->grabSharp().convertToFormat(QImage::Format_RGB32);
         QVERIFY(image.save(outputPath(QStringLiteral("ui_demo_project.png"))));
         // The same view without the obstacles, and empty: where only the sky was behind them,
         // the pixels that the obstacles change are the wall and the boulder in grey.
@@ -596,9 +601,10 @@ private Q_SLOTS:
         const std::vector<ViewTree> allTrees = viewport->trees();
         viewport->setGridVisible(false);
         viewport->setMesh(std::make_shared<sylva::mesh::Mesh>(), false);
-        const QImage trees = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        QTRY_VERIFY_WITH_TIMEOUT(viewport->lodPending() == 0, kGenerationTimeoutMs);
+        const QImage trees = viewport->grabSharp().convertToFormat(QImage::Format_RGB32);
         viewport->setTrees({});
-        const QImage empty = viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        const QImage empty = viewport->grabSharp().convertToFormat(QImage::Format_RGB32);
         viewport->setTrees(allTrees);
         viewport->setMesh(full, false);
         viewport->setGridVisible(true);

@@ -106,8 +106,12 @@ private Q_SLOTS:
         SceneCaches caches;
         const GenerationResult first = generateProject(project, path, &caches);
         QVERIFY2(first.ok(), qPrintable(first.error));
-        QCOMPARE(first.stats.at("regrown"), first.stats.at("trees"));
+        // Grown from nothing: every unique tree and every variant; an instanced tree takes its
+        // variant's mesh or level (nothing grown for it).
         QCOMPARE(first.stats.at("unique") + first.stats.at("instanced"), first.stats.at("trees"));
+        QVERIFY(first.stats.at("instanced") > 0.0);
+        QCOMPARE(first.stats.at("regrown"), first.stats.at("unique") + first.stats.at("variants"));
+        QVERIFY(first.stats.at("regrown") < first.stats.at("trees"));
         const GenerationResult second = generateProject(project, path, &caches);
         QCOMPARE(second.stats.at("regrown"), 0.0);
         // The same meshes, shared: the viewport keeps their GPU buffers.

@@ -132,9 +132,12 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         result.stats["biomass_kg"] = stats.metrics.dryBiomassKg;
         result.stats["mean_dbh_m"] = stats.metrics.meanDbhM;
         result.stats["height"] = height;
-        // Trees made again: grown (unique) or meshed from their variant (instanced).
+        // Trees actually grown: the unique trees the cache did not hold and the variants it
+        // did not hold. An instanced tree takes its variant's mesh or level, which costs
+        // nothing, so it is not counted (without a cache, everything is grown).
         result.stats["regrown"] =
-            static_cast<double>(caches ? caches->trees.misses() : stats.trees);
+            static_cast<double>(caches ? caches->trees.misses() + caches->trees.variantMisses()
+                                       : stats.unique + stats.variants);
         for (const auto& [stage, ms] : stats.wallMs)
             result.timingsMs[stage] = ms;
         result.speciesName =

@@ -35,7 +35,8 @@ struct SceneCaches {
 /// did not change since the last call are reused instead of regrown. Stats: "trees",
 /// "obstacle_triangles", "colliding_trees", "pruned_nodes", "height" (tallest tree), the
 /// scene's "co2_kg", "instanced", "unique" and "variants" (ForestStats); "regrown" counts the
-/// trees actually made again (not taken from the cache). Never throws.
+/// trees actually grown (not taken from the cache): unique trees plus variants; an instanced
+/// tree draws its variant's mesh or level and is not counted. Never throws.
 GenerationResult generateProject(const doc::Project& project, const QString& path,
                                  SceneCaches* caches, Progress& progress = noProgress());
 

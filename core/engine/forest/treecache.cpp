@@ -56,6 +56,7 @@ void TreeCache::beginBuild() {
     std::lock_guard lock(mMutex);
     ++mBuild;
     mHits = mMisses = 0;
+    mVariantHits = mVariantMisses = 0;
 }
 
 void TreeCache::endBuild() {
@@ -92,7 +93,11 @@ void TreeCache::storeTree(std::uint64_t key, const ForestTree& tree) {
 std::optional<ForestVariant> TreeCache::findVariant(std::uint64_t key) {
     std::lock_guard lock(mMutex);
     auto it = mVariants.find(key);
-    if (it == mVariants.end()) return std::nullopt;
+    if (it == mVariants.end()) {
+        ++mVariantMisses;
+        return std::nullopt;
+    }
+    ++mVariantHits;
     it->second.build = mBuild;
     return it->second.value;
 }
@@ -123,6 +128,16 @@ std::size_t TreeCache::hits() const {
 std::size_t TreeCache::misses() const {
     std::lock_guard lock(mMutex);
     return mMisses;
+}
+
+std::size_t TreeCache::variantHits() const {
+    std::lock_guard lock(mMutex);
+    return mVariantHits;
+}
+
+std::size_t TreeCache::variantMisses() const {
+    std::lock_guard lock(mMutex);
+    return mVariantMisses;
 }
 
 std::size_t TreeCache::size() const {

@@ -35,9 +35,14 @@ public:
     std::optional<CrownShape> findCrown(std::uint64_t key);
     void storeCrown(std::uint64_t key, const CrownShape& crown);
 
-    /// Trees taken from the cache and trees grown during the current (or last) build.
+    /// Trees taken from the cache and trees grown during the current (or last) build. An
+    /// instanced tree takes its variant's mesh or level and never asks the cache: it counts
+    /// in neither (its variant counts in variantHits()/variantMisses()).
     std::size_t hits() const;
     std::size_t misses() const;
+    /// Variants taken from the cache and variants grown during the current (or last) build.
+    std::size_t variantHits() const;
+    std::size_t variantMisses() const;
     std::size_t size() const;
 
 private:
@@ -48,6 +53,7 @@ private:
     mutable std::mutex mMutex;
     std::uint64_t mBuild = 0;
     std::size_t mHits = 0, mMisses = 0;
+    std::size_t mVariantHits = 0, mVariantMisses = 0;
     std::unordered_map<std::uint64_t, Entry<ForestTree>> mTrees;
     std::unordered_map<std::uint64_t, Entry<ForestVariant>> mVariants;
     std::unordered_map<std::uint64_t, Entry<CrownShape>> mCrowns;

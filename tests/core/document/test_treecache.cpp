@@ -62,15 +62,22 @@ TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
     const Built first = build(original, &cache);
     const std::size_t trees = first.names.size();
     ASSERT_GT(trees, 10u);
-    // Unique trees are grown; instanced ones are their variant meshed at their distance.
-    EXPECT_EQ(cache.misses(), trees);
+    // Unique trees and variants are grown; an instanced tree takes its variant's mesh or level
+    // (issue #32: levels made once per variant) and never asks the cache.
     EXPECT_GT(first.stats.instanced, 0u);
+    EXPECT_GT(first.stats.unique, 0u);
     EXPECT_EQ(first.stats.unique + first.stats.instanced, trees);
+    EXPECT_EQ(cache.misses(), first.stats.unique);
+    EXPECT_EQ(cache.hits(), 0u);
+    EXPECT_EQ(cache.variantMisses(), first.stats.variants);
     expectSame(first, build(original, nullptr));
 
+    // Nothing changed: nothing is grown, every unique tree and variant comes from the cache.
     const Built again = build(original, &cache);
-    EXPECT_EQ(cache.hits(), trees);
+    EXPECT_EQ(cache.hits(), first.stats.unique);
     EXPECT_EQ(cache.misses(), 0u);
+    EXPECT_EQ(cache.variantHits(), first.stats.variants);
+    EXPECT_EQ(cache.variantMisses(), 0u);
     expectSame(again, first);
 
     // Reseed the hand-placed tree: it regrows, and so do only the trees around it whose
@@ -79,6 +86,7 @@ TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
     const forest::ForestScene reseeded = doc::makeForestScene(project);
     const Built third = build(reseeded, &cache);
     EXPECT_EQ(cache.misses(), 1u);
+    EXPECT_EQ(cache.variantMisses(), 0u);
     expectSame(third, build(reseeded, nullptr));
 
     // Move it a little: only trees around it regrow.
@@ -86,6 +94,7 @@ TEST(TreeCache, RegrowsOnlyTheTreesAnEditTouched) {
     const forest::ForestScene moved = doc::makeForestScene(project);
     const Built fourth = build(moved, &cache);
     EXPECT_GE(cache.misses(), 1u);
+    EXPECT_EQ(cache.variantMisses(), 0u);
     EXPECT_LT(cache.misses(), trees / 2);
     expectSame(fourth, build(moved, nullptr));
     EXPECT_LE(cache.size(), trees); // only the last build's trees are kept
@@ -105,7 +114,7 @@ TEST(TreeCache, MovingTheDemosAlderRegrowsOnlyItAndItsNeighbours) {
     project.instances[0].position.x += 30.0f;
     const glm::vec3 to = project.instances[0].position;
     const Built after = build(doc::makeForestScene(project), &cache);
-    const std::size_t regrown = cache.misses();
+    const std::size_t regrown = cache.misses() + cache.variantMisses();
 
     // Reach: a tree changes only when its crown meets the alder's before or after the move,
     // or the alder stands on it (its trees: at most the largest crown plus the alder's).
