@@ -10,6 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 ./scripts/install-deps.sh
+./scripts/install-readers.sh
 
 JOBS=${SYLVA_JOBS:-$(nproc)}
 start=$(date +%s)

@@ -74,6 +74,14 @@ int runForest(const std::vector<std::string>& argv) {
     // Forests default to compact OBJ (0.1 mm, relative indices): ~17 % less to format and write.
     TreeExporter exporter(*output, {args.flag("--fsync"), !args.flag("--full-precision")});
     exporter.setInstanceTables(args.flag("--instance-tables"));
+    exporter.setProgress(progress);
+    // Variants come before the first batch: glTF writes each variant's mesh once, now.
+    options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
+        std::vector<exporter::ExportVariant> out;
+        for (const forest::ForestVariant& v : variants)
+            out.push_back({v.name, v.mesh});
+        exporter.addVariants(out);
+    };
     double writeMs = 0;
     forest::ForestStats stats;
     try {
@@ -86,7 +94,8 @@ int runForest(const std::vector<std::string>& argv) {
                 for (const forest::ForestTree& tree : batch)
                     trees.push_back({tree.name, tree.mesh, tree.instance.position,
                                      tree.instance.rotation,
-                                     tree.instance.scale * tree.instance.growth});
+                                     tree.instance.scale * tree.instance.growth, tree.variant,
+                                     tree.instance.id});
                 exporter.add(trees);
                 progress.checkCancelled();
                 writeMs += msSince(t);

@@ -44,6 +44,8 @@ struct ForestTreeRef {
 
 struct Forest {
     std::shared_ptr<const std::vector<forest::ForestTree>> trees;
+    /// The variants the trees' ForestTree::variant indexes (written once by glTF).
+    std::vector<exporter::ExportVariant> variants;
     std::vector<std::string> speciesNames;
     py::dict stats;
 };
@@ -133,15 +135,29 @@ void warnShortfalls(const forest::ForestStats& stats, const forest::ForestScene&
 }
 
 exporter::ExportTree exportTree(const forest::ForestTree& t) {
-    return {t.name, t.mesh, t.instance.position, t.instance.rotation,
-            t.instance.scale * t.instance.growth};
+    return {t.name,
+            t.mesh,
+            t.instance.position,
+            t.instance.rotation,
+            t.instance.scale * t.instance.growth,
+            t.variant,
+            t.instance.id};
+}
+
+std::vector<exporter::ExportVariant> exportVariants(const std::vector<forest::ForestVariant>& v) {
+    std::vector<exporter::ExportVariant> out;
+    for (const forest::ForestVariant& variant : v)
+        out.push_back({variant.name, variant.mesh});
+    return out;
 }
 
 std::vector<std::string> writeForest(const std::vector<forest::ForestTree>& trees,
+                                     const std::vector<exporter::ExportVariant>& variants,
                                      const std::string& path, bool fullPrecision, bool fsync,
                                      bool instanceTables) {
     exporter::TreeExporter exporter(path, {fsync, !fullPrecision});
     exporter.setInstanceTables(instanceTables);
+    exporter.addVariants(variants);
     std::vector<exporter::ExportTree> batch;
     batch.reserve(trees.size());
     for (const forest::ForestTree& t : trees)
@@ -290,7 +306,7 @@ void bindForest(py::module_& m) {
                bool instanceTables) {
                 const std::string p = toPath(path);
                 py::gil_scoped_release release;
-                return writeForest(*f.trees, p, fullPrecision, fsync, instanceTables);
+                return writeForest(*f.trees, f.variants, p, fullPrecision, fsync, instanceTables);
             },
             py::arg("path"), py::arg("full_precision") = false, py::arg("fsync") = false,
             py::arg("instance_tables") = false,
@@ -468,13 +484,18 @@ void bindForest(py::module_& m) {
                 auto trees = std::make_shared<std::vector<forest::ForestTree>>();
                 forest::ForestScene s;
                 forest::ForestStats stats;
+                std::vector<exporter::ExportVariant> variants;
+                forest::ForestOptions options = b.options;
+                options.onVariants = [&](const std::vector<forest::ForestVariant>& v) {
+                    variants = exportVariants(v);
+                };
                 withoutGil(prog, [&] {
                     const auto t0 = Clock::now();
                     s = p.makeScene();
                     if (b.camera) s.camera = *b.camera;
                     const double loadMs = msSince(t0);
                     stats = forest::buildForest(
-                        s, b.options,
+                        s, options,
                         [&](const std::vector<forest::ForestTree>& batch) {
                             trees->insert(trees->end(), batch.begin(), batch.end());
                         },
@@ -484,6 +505,7 @@ void bindForest(py::module_& m) {
                 warnShortfalls(stats, s);
                 Forest f;
                 f.trees = trees;
+                f.variants = std::move(variants);
                 for (const forest::SceneSpecies& sp : s.species)
                     f.speciesNames.push_back(sp.name);
                 f.stats = statsDict(stats, s, b.options);
@@ -512,9 +534,14 @@ void bindForest(py::module_& m) {
                     const double loadMs = msSince(t0);
                     exporter::TreeExporter exporter(out, {fsync, !fullPrecision});
                     exporter.setInstanceTables(instanceTables);
+                    exporter.setProgress(prog);
+                    forest::ForestOptions options = b.options;
+                    options.onVariants = [&](const std::vector<forest::ForestVariant>& v) {
+                        exporter.addVariants(exportVariants(v));
+                    };
                     double writeMs = 0;
                     stats = forest::buildForest(
-                        s, b.options,
+                        s, options,
                         [&](const std::vector<forest::ForestTree>& batch) {
                             const auto t = Clock::now();
                             std::vector<exporter::ExportTree> trees;

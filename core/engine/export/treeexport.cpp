@@ -37,7 +37,7 @@ fs::path resourcesDir() {
     return {};
 }
 
-TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path)) {
+TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path)), mChoices(obj) {
     // Like other exporters, write into a folder that does not exist yet (out/forest.obj).
     if (const fs::path dir = mPath.parent_path(); !dir.empty()) {
         std::error_code ec;
@@ -54,13 +54,56 @@ TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path
         options.fsync = obj.fsync;
         mObjWriter = std::make_unique<ObjStreamWriter>(mPath, options);
     } else {
-        (void)sceneFormatFor(mPath); // rejects unknown extensions before any work
+        const SceneFormat format = sceneFormatFor(mPath); // rejects unknown extensions first
+        mGltf = format == SceneFormat::Glb || format == SceneFormat::Gltf;
     }
 }
 
 TreeExporter::~TreeExporter() = default;
 
+gltf::ForestGltfWriter& TreeExporter::gltfWriter() {
+    if (!mGltfWriter) {
+        gltf::ForestGltfOptions options;
+        const fs::path res = resourcesDir();
+        if (!res.empty()) options.shippedTextures = res / "textures";
+        options.durability = mChoices.fsync ? Durability::Durable : Durability::Atomic;
+        mGltfWriter = std::make_unique<gltf::ForestGltfWriter>(
+            mPath,
+            sceneFormatFor(mPath) == SceneFormat::Glb ? gltf::GltfFormat::Glb
+                                                      : gltf::GltfFormat::Gltf,
+            *mProgress, options);
+    }
+    return *mGltfWriter;
+}
+
+void TreeExporter::addVariants(const std::vector<ExportVariant>& variants) {
+    mGltfVariants.clear();
+    for (const ExportVariant& v : variants) {
+        if (!v.mesh) throw InvalidInput("variant '" + v.name + "' has no mesh");
+        if (mGltf) mGltfVariants.push_back(gltfWriter().addVariant(v.name, *v.mesh));
+    }
+}
+
 void TreeExporter::add(const std::vector<ExportTree>& trees) {
+    if (mGltf) {
+        gltf::ForestGltfWriter& out = gltfWriter();
+        for (const ExportTree& t : trees) {
+            const glm::quat rotation = glm::angleAxis(t.rotationY, glm::vec3(0, 1, 0));
+            if (t.variant >= 0) {
+                if (static_cast<std::size_t>(t.variant) >= mGltfVariants.size())
+                    throw InvalidInput("tree '" + t.name + "' names variant " +
+                                       std::to_string(t.variant) + " of " +
+                                       std::to_string(mGltfVariants.size()));
+                out.addInstance(mGltfVariants[static_cast<std::size_t>(t.variant)], t.id,
+                                t.position, rotation, glm::vec3(t.scale));
+                continue;
+            }
+            auto [it, added] = mGltfMeshes.try_emplace(t.mesh.get(), t.mesh, -1);
+            if (!added && it->second.first.expired()) it->second = {t.mesh, -1};
+            if (it->second.second < 0) it->second.second = out.addTreeMesh(t.name, *t.mesh);
+            out.addTree(t.name, t.id, it->second.second, t.position, rotation, glm::vec3(t.scale));
+        }
+    }
     if (mObj) {
         std::vector<ObjObject> objects;
         objects.reserve(trees.size());
@@ -73,7 +116,7 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
         }
         mObjWriter->add(objects);
     }
-    if (!mObj || mInstanceTables) {
+    if ((!mObj && !mGltf) || mInstanceTables) {
         for (const ExportTree& t : trees) {
             // Shared meshes are written once.
             const auto [it, added] = mMeshIndex.try_emplace(t.mesh.get(), mScene.meshes.size());
@@ -103,6 +146,8 @@ std::vector<fs::path> TreeExporter::commit() {
         writeMtlFile(mtl, mObjMaterials);
         mObjWriter->commit();
         written.push_back(mtl);
+    } else if (mGltf) {
+        written = gltfWriter().commit();
     } else {
         mScene.textureSource = resourcesDir() / "textures";
         writeScene(mPath, mScene, sceneFormat);
@@ -110,7 +155,7 @@ std::vector<fs::path> TreeExporter::commit() {
     // OBJ and text glTF reference their textures beside them; .glb and .fbx carry them inside.
     if (mObj || sceneFormat == SceneFormat::Gltf) {
         const fs::path res = resourcesDir();
-        if (copyTextures(mObj ? mObjMaterials : mScene.materials,
+        if (copyTextures(mObj ? mObjMaterials : gltfWriter().materials(),
                          res.empty() ? fs::path() : res / "textures", dir) > 0)
             written.push_back(dir / "textures");
     }

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <unordered_map>
 
 #include <omp.h>
@@ -135,6 +136,55 @@ std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
                           scene.obstacles != nullptr};
     mix(flags, sizeof flags);
     return h;
+}
+
+/// 64-bit FNV-1a of a name: variant seeds follow the species' name, not its place in the list.
+std::uint64_t nameHash(const std::string& name) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (unsigned char c : name)
+        h = (h ^ c) * 0x100000001b3ull;
+    return h;
+}
+
+/// A variant's extent in its own frame: the vertical cylinder about the local y axis that holds
+/// its bark (tube_mesh's ring radii) and its leaf cards.
+struct Extent {
+    float radius = 0.0f, bottom = 0.0f, top = 0.0f;
+};
+
+Extent variantExtent(const skel::Skeleton& s, const mesh::TreeMeshSettings& settings) {
+    Extent e;
+    if (s.empty()) return e;
+    e.bottom = std::numeric_limits<float>::max();
+    e.top = -e.bottom;
+    auto add = [&e](const glm::vec3& p, float r) {
+        e.radius = std::max(e.radius, glm::length(glm::vec2(p.x, p.z)) + r);
+        e.bottom = std::min(e.bottom, p.y - r);
+        e.top = std::max(e.top, p.y + r);
+    };
+    const std::vector<float> rings = mesh::tubeRadii(s, settings.tubes);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        add(s.position[i], i < rings.size() ? rings[i] : s.radius[i]);
+    // A card is leafScale·size long and aspect times as wide from its anchor: its far corner
+    // is within length·(1 + aspect).
+    const auto cardScale = static_cast<float>(settings.leafCards.sizeScale *
+                                              (1.0 + std::abs(settings.leafCards.aspect)));
+    for (const skel::Leaf& leaf : s.leaves)
+        add(leaf.position, leaf.size * cardScale);
+    return e;
+}
+
+/// Whether a variant with extent \p e placed as \p in comes near an obstacle (a capsule around
+/// its cylinder: conservative, so an instanced tree never enters one).
+bool touchesObstacles(const env::ObstacleScene& obstacles, const placement::Instance& in,
+                      const Extent& e) {
+    if (obstacles.empty()) return false;
+    const float s = in.scale * in.growth;
+    const float r = e.radius * s;
+    const glm::vec3 a = in.position + glm::vec3(0.0f, e.bottom * s, 0.0f);
+    const glm::vec3 b = in.position + glm::vec3(0.0f, e.top * s, 0.0f);
+    if (!obstacles.overlapsBounds(a - glm::vec3(r), b + glm::vec3(r))) return false;
+    return obstacles.touches({a, b}, r);
 }
 
 const env::ObstacleScene& emptyScene() {
@@ -301,6 +351,99 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     const env::ObstacleScene& obstacles = scene.obstacles ? *scene.obstacles : emptyScene();
     std::vector<double> cpuGenerate(static_cast<std::size_t>(threads), 0.0), cpuAdapt(cpuGenerate),
         cpuMesh(cpuGenerate);
+
+    // Variants: K per species of the tile that can be instanced (not self-organizing), grown at
+    // full growth in their own frame, never adapted, meshed at full detail (they are seen at
+    // every distance). Listed by species, then index; firstVariant[s] is species s's first.
+    std::vector<ForestVariant> variants;
+    std::vector<std::int32_t> firstVariant(scene.species.size(), -1);
+    std::vector<std::uint32_t> variantCount(scene.species.size(), 0);
+    std::vector<Extent> extents;
+    if (options.instancing) {
+        requireRange("variants per species", options.variantsPerSpecies, 1, 256);
+        std::vector<bool> used(scene.species.size(), false);
+        for (std::size_t index : selected)
+            used[placed.instances[index].species] = true;
+        for (std::size_t sp = 0; sp < scene.species.size(); ++sp) {
+            if (!used[sp] || plans[sp].selfOrganizing) continue;
+            const int k = scene.species[sp].variants > 0 ? scene.species[sp].variants
+                                                         : options.variantsPerSpecies;
+            requireRange(("variants of species '" + scene.species[sp].name + "'").c_str(), k, 1,
+                         256);
+            firstVariant[sp] = static_cast<std::int32_t>(variants.size());
+            variantCount[sp] = static_cast<std::uint32_t>(k);
+            const std::uint64_t base =
+                mixSeed(mixSeed(scene.seed, salt::kVariant), nameHash(scene.species[sp].name));
+            for (int v = 0; v < k; ++v) {
+                ForestVariant variant;
+                variant.species = static_cast<std::uint32_t>(sp);
+                variant.index = static_cast<std::uint32_t>(v);
+                variant.name = scene.species[sp].name + "_v" + std::to_string(v);
+                variant.seed = mixSeed(base, static_cast<std::uint64_t>(v));
+                variants.push_back(std::move(variant));
+            }
+        }
+        std::vector<std::exception_ptr> errors(variants.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+        for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(variants.size()); ++k) {
+            const auto slot = static_cast<std::size_t>(k);
+            const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+            ForestVariant& variant = variants[slot];
+            try {
+                progress.checkCancelled();
+                std::uint64_t cacheKey = 0;
+                if (options.cache) {
+                    cacheKey = mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),
+                                       options.buildMeshes ? 0x4D : 0x53);
+                    if (std::optional<ForestVariant> cached =
+                            options.cache->findVariant(cacheKey)) {
+                        variant = std::move(*cached);
+                        continue;
+                    }
+                }
+                const SpeciesPlan& plan = plans[variant.species];
+                graph::TreeContext ctx;
+                ctx.lightDirection = scene.lightDirection;
+                ctx.leafScale =
+                    static_cast<float>(meshSettings[variant.species].leafCards.sizeScale);
+                ctx.leafAspect = static_cast<float>(meshSettings[variant.species].leafCards.aspect);
+                // Tree ids never reach 2^63: these keys are the variants' own.
+                ctx.key = ~static_cast<std::uint64_t>(slot);
+                auto t = Clock::now();
+                const graph::NodeOutput& grown = evaluators[thread][variant.species]->evaluateTree(
+                    variant.seed, ctx, noProgress(), plan.skeletonNode);
+                if (!grown.skeleton)
+                    throw InvalidInput("species '" + scene.species[variant.species].name +
+                                       "' produced no skeleton");
+                variant.skeleton = grown.skeleton;
+                variant.metrics = forest::measureTree(*variant.skeleton, plan.wood, 1.0f);
+                cpuGenerate[thread] += msSince(t);
+                if (options.buildMeshes) {
+                    t = Clock::now();
+                    mesh::TreeMeshSettings settings = meshSettings[variant.species];
+                    settings.seed = mixSeed(variant.seed, salt::kTreeMesh);
+                    variant.meshSettings = std::make_shared<const mesh::TreeMeshSettings>(settings);
+                    variant.mesh = std::make_shared<const mesh::Mesh>(
+                        mesh::buildTreeMesh(*variant.skeleton, settings));
+                    cpuMesh[thread] += msSince(t);
+                } else {
+                    variant.mesh = std::make_shared<const mesh::Mesh>();
+                }
+                if (cacheKey) options.cache->storeVariant(cacheKey, variant);
+            } catch (...) {
+                errors[slot] = std::current_exception();
+            }
+        }
+        for (const std::exception_ptr& e : errors)
+            if (e) std::rethrow_exception(e);
+        for (const ForestVariant& v : variants)
+            extents.push_back(variantExtent(*v.skeleton, meshSettings[v.species]));
+    }
+    stats.variants = variants.size();
+    if (options.onVariants) options.onVariants(variants);
+    stats.wallMs["variants"] = msSince(t0);
+    t0 = Clock::now();
+
     const std::size_t batchSize = std::max<std::size_t>(1, options.batchSize);
     for (std::size_t begin = 0; begin < selected.size(); begin += batchSize) {
         progress.checkCancelled();
@@ -332,6 +475,24 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 ctx.leafScale = static_cast<float>(meshSettings[in.species].leafCards.sizeScale);
                 ctx.leafAspect = static_cast<float>(meshSettings[in.species].leafCards.aspect);
                 ctx.key = in.id + 1;
+
+                // A tree nothing would adapt (no obstacle near its variant, no neighbour's crown
+                // core in its own, as adaptation sees them) shows one of its species' variants,
+                // picked by its seed.
+                if (firstVariant[in.species] >= 0 && near.empty()) {
+                    const auto v = static_cast<std::size_t>(firstVariant[in.species]) +
+                                   mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species];
+                    if (!touchesObstacles(obstacles, in, extents[v])) {
+                        const ForestVariant& variant = variants[v];
+                        tree.variant = static_cast<std::int32_t>(v);
+                        tree.mesh = variant.mesh;
+                        tree.skeleton = variant.skeleton;
+                        tree.meshSettings = variant.meshSettings;
+                        tree.metrics =
+                            forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
+                        continue;
+                    }
+                }
 
                 std::uint64_t cacheKey = 0;
                 if (options.cache && !plan.selfOrganizing) {
@@ -432,6 +593,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         for (const std::exception_ptr& e : errors)
             if (e) std::rethrow_exception(e); // the first failing tree in instance order
         for (const ForestTree& tree : batch) {
+            ++(tree.variant >= 0 ? stats.instanced : stats.unique);
             stats.vertices += tree.mesh->vertexCount();
             stats.triangles += tree.mesh->triangleCount();
             stats.collidingTrees += tree.adapt.collidingBefore > 0 ? 1 : 0;

@@ -28,6 +28,9 @@ class TreeCache;
 struct SceneSpecies {
     std::string name;
     graph::SpeciesGraph graph;
+    /// K, the number of variants instanced trees of this species share (the project's per-species
+    /// setting); 0: ForestOptions::variantsPerSpecies.
+    int variants = 0;
 };
 
 /// Everything a forest is built from; the document layer fills it from a `.sylva` project.
@@ -41,6 +44,20 @@ struct ForestScene {
     glm::vec3 camera{0.0f, 20.0f, 80.0f};
     glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
 };
+
+/// One of a species' K variants: grown once from the species at a seed derived from the project
+/// seed, at full growth, never adapted; instanced trees share it (drawn with their transform).
+struct ForestVariant {
+    std::uint32_t species = 0; ///< index into ForestScene::species
+    std::uint32_t index = 0;   ///< 0..K-1 within its species
+    std::string name;          ///< "<species>_v<index>"
+    std::uint64_t seed = 0;
+    std::shared_ptr<const mesh::Mesh> mesh;
+    std::shared_ptr<const skel::Skeleton> skeleton;
+    std::shared_ptr<const mesh::TreeMeshSettings> meshSettings;
+    forest::TreeMetrics metrics; ///< at scale 1
+};
+using VariantSink = std::function<void(const std::vector<ForestVariant>&)>;
 
 struct ForestOptions {
     int tile = 0;               ///< 0-based tile to build
@@ -57,12 +74,24 @@ struct ForestOptions {
     /// Identifies the obstacle and ground meshes for the cache: the caller changes it whenever
     /// they change (the pointers alone could be reused by a new scene).
     std::uint64_t obstaclesKey = 0;
+    /// K for species that do not set their own (SceneSpecies::variants), 1..256.
+    int variantsPerSpecies = 8;
+    /// true: a tree that touches no obstacle and no neighbour's crown is an instance of one of
+    /// its species' variants; false: every tree is grown and adapted uniquely.
+    bool instancing = true;
+    /// Called once, before the first tree batch, with every variant of the built tile's
+    /// species (see ForestVariant); may be empty.
+    VariantSink onVariants;
 };
 
 /// One finished tree, in its own local frame; `instance.transform()` places it in the world.
 struct ForestTree {
     placement::Instance instance;
     std::string name; ///< "<species>_<id>"
+    /// Index into the variant list handed to ForestOptions::onVariants; -1: a unique tree
+    /// (grown and adapted for its place). An instanced tree's mesh, skeleton and meshSettings
+    /// are its variant's (shared, not copied), in the tree's local frame like a unique tree's.
+    std::int32_t variant = -1;
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).
     std::shared_ptr<const skel::Skeleton> skeleton;
@@ -84,6 +113,10 @@ struct ForestStats {
     std::size_t trees = 0;        ///< trees of the built tile
     std::size_t vertices = 0, triangles = 0;
     std::size_t collidingTrees = 0, prunedNodes = 0;
+    std::size_t instanced =
+        0;                  ///< trees of the tile drawn as a variant (instanced + unique == trees)
+    std::size_t unique = 0; ///< trees of the tile grown and adapted for their place
+    std::size_t variants = 0; ///< variants handed to onVariants (each counted once)
     std::vector<placement::Shortfall> shortfalls;
     forest::SceneMetrics metrics;
     std::map<std::string, double> cpuMs;  ///< generate, adapt, mesh

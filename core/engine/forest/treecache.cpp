@@ -61,12 +61,14 @@ void TreeCache::beginBuild() {
 void TreeCache::endBuild() {
     std::lock_guard lock(mMutex);
     std::erase_if(mTrees, [this](const auto& kv) { return kv.second.build != mBuild; });
+    std::erase_if(mVariants, [this](const auto& kv) { return kv.second.build != mBuild; });
     std::erase_if(mCrowns, [this](const auto& kv) { return kv.second.build != mBuild; });
 }
 
 void TreeCache::clear() {
     std::lock_guard lock(mMutex);
     mTrees.clear();
+    mVariants.clear();
     mCrowns.clear();
 }
 
@@ -85,6 +87,19 @@ std::optional<ForestTree> TreeCache::findTree(std::uint64_t key) {
 void TreeCache::storeTree(std::uint64_t key, const ForestTree& tree) {
     std::lock_guard lock(mMutex);
     mTrees[key] = {tree, mBuild};
+}
+
+std::optional<ForestVariant> TreeCache::findVariant(std::uint64_t key) {
+    std::lock_guard lock(mMutex);
+    auto it = mVariants.find(key);
+    if (it == mVariants.end()) return std::nullopt;
+    it->second.build = mBuild;
+    return it->second.value;
+}
+
+void TreeCache::storeVariant(std::uint64_t key, const ForestVariant& variant) {
+    std::lock_guard lock(mMutex);
+    mVariants[key] = {variant, mBuild};
 }
 
 std::optional<CrownShape> TreeCache::findCrown(std::uint64_t key) {

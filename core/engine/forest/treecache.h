@@ -18,7 +18,8 @@ namespace sylva::forest {
 /// adapts to, the obstacles' identity (ForestOptions::obstaclesKey), the light, the camera
 /// distance when LOD is on, and the build options. Files a graph reads (grammar files) are not
 /// hashed: call clear() when one changes on disk. Self-organizing trees grow together in one stand
-/// and are never cached. Thread-safe: buildForest reads and writes it from its worker threads.
+/// and are never cached. Variants are kept by (species graph, seed, options). Thread-safe:
+/// buildForest reads and writes it from its worker threads.
 class TreeCache {
 public:
     /// Starts a build: counters reset; entries not used by this build are dropped by
@@ -29,6 +30,8 @@ public:
 
     std::optional<ForestTree> findTree(std::uint64_t key);
     void storeTree(std::uint64_t key, const ForestTree& tree);
+    std::optional<ForestVariant> findVariant(std::uint64_t key);
+    void storeVariant(std::uint64_t key, const ForestVariant& variant);
     std::optional<CrownShape> findCrown(std::uint64_t key);
     void storeCrown(std::uint64_t key, const CrownShape& crown);
 
@@ -46,6 +49,7 @@ private:
     std::uint64_t mBuild = 0;
     std::size_t mHits = 0, mMisses = 0;
     std::unordered_map<std::uint64_t, Entry<ForestTree>> mTrees;
+    std::unordered_map<std::uint64_t, Entry<ForestVariant>> mVariants;
     std::unordered_map<std::uint64_t, Entry<CrownShape>> mCrowns;
 };
 

@@ -210,7 +210,7 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
     Occupancy occupied(method, lo, hi, maxRadius, total);
     for (const Instance& inst : handPlaced) {
         Instance copy = inst;
-        copy.id = static_cast<std::uint32_t>(result.instances.size());
+        copy.id = result.instances.size();
         copy.handPlaced = true;
         occupied.add(glm::vec2(copy.position.x, copy.position.z), copy.radius(species));
         result.instances.push_back(copy);
@@ -228,7 +228,7 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
         std::vector<std::size_t> placedPerSpecies(species.size(), 0);
         for (std::uint32_t sp : slots) {
             Instance inst;
-            inst.id = static_cast<std::uint32_t>(result.instances.size());
+            inst.id = result.instances.size();
             inst.species = sp;
             inst.seed = mixSeed(params.seed, inst.id);
             Rng own(mixSeed(inst.seed, salt::kPlacedTree));

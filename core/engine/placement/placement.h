@@ -37,7 +37,7 @@ struct Domain {
 /// One tree of the forest. Ids are dense: hand-placed instances first (in their order), then
 /// the placed ones; `seed` is mixSeed(project seed, id) for placed trees.
 struct Instance {
-    std::uint32_t id = 0;
+    std::uint64_t id = 0;
     std::uint32_t species = 0; ///< index into the SpeciesSpec list
     glm::vec3 position{0.0f};  ///< metres; y is the ground height under the tree
     float rotation = 0.0f;     ///< radians about +Y, [0, 2·pi)

@@ -30,6 +30,11 @@ inline constexpr std::uint64_t kCrownSample = 0xC0000;
 inline constexpr std::uint64_t kDomainSlots = 0xD0A1;
 /// A placed tree's rotation, scale and growth stage, from its own seed.
 inline constexpr std::uint64_t kPlacedTree = 0x0A11;
+/// A species' variants (forest instancing): mixed with the project seed, then the species name's
+/// hash, then the variant index.
+inline constexpr std::uint64_t kVariant = 0x5A1A7;
+/// Which of its species' variants an instanced tree shows, from the tree's own seed.
+inline constexpr std::uint64_t kVariantPick = 0x5A1B;
 /// The editor's Brush tool: a stroke's trees (added to the tree count of the stroke).
 inline constexpr std::uint64_t kBrushStroke = 7919;
 /// The editor's Place tool: a placed tree's rotation and seed (added to the tree count).

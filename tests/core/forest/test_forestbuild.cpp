@@ -55,7 +55,9 @@ bool sameMesh(const mesh::Mesh& a, const mesh::Mesh& b) {
 
 TEST(ForestBuild, TreesCarryTheSettingsAndDistanceTheirMeshWasMadeWith) {
     const forest::ForestScene s = smallForest();
-    const std::vector<forest::ForestTree> trees = build(s, {});
+    forest::ForestOptions unique; // instanced trees show their variant's mesh (tested elsewhere)
+    unique.instancing = false;
+    const std::vector<forest::ForestTree> trees = build(s, unique);
     ASSERT_EQ(trees.size(), 3u);
     for (const forest::ForestTree& tree : trees) {
         ASSERT_TRUE(tree.meshSettings) << tree.name;
@@ -83,7 +85,7 @@ TEST(ForestBuild, TreesCarryTheSettingsAndDistanceTheirMeshWasMadeWith) {
 
 TEST(ForestBuild, WithoutTheCameraLodTheSettingsAloneMakeTheMesh) {
     forest::ForestOptions options;
-    options.useLod = false;
+    options.useLod = false; // unique and instanced trees alike
     for (const forest::ForestTree& tree : build(smallForest(), options)) {
         ASSERT_TRUE(tree.meshSettings);
         EXPECT_EQ(tree.meshCameraDistance, 0.0);
@@ -104,6 +106,7 @@ static_assert(salt::kSelfOrganizingTree == 0x5e1f && salt::kSelfOrganizingMarker
 static_assert(salt::kCrownSample == 0xC0000 && salt::kDomainSlots == 0xD0A1 &&
               salt::kPlacedTree == 0x0A11);
 static_assert(salt::kBrushStroke == 7919 && salt::kPlaceTool == 104729);
+static_assert(salt::kVariant == 0x5A1A7 && salt::kVariantPick == 0x5A1B);
 
 TEST(SeedSalts, EverySaltIsItsOwn) {
     const std::set<std::uint64_t> salts{salt::kTreeMesh,
@@ -117,6 +120,8 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kDomainSlots,
                                         salt::kPlacedTree,
                                         salt::kBrushStroke,
-                                        salt::kPlaceTool};
-    EXPECT_EQ(salts.size(), 12u);
+                                        salt::kPlaceTool,
+                                        salt::kVariant,
+                                        salt::kVariantPick};
+    EXPECT_EQ(salts.size(), 14u);
 }

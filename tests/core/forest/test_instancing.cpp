@@ -1,0 +1,130 @@
+// Forests at film scale (issue 30): a tree that nothing would adapt shows one of its species' K
+// variants (shared mesh, its own transform); one near an obstacle or a neighbour's crown is grown
+// for its place. Which is which is deterministic and reported.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+
+#include "engine/environment/obstaclemesh.h"
+#include "engine/forest/forestbuild.h"
+#include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
+#include "presetfile.h"
+
+using namespace sylva;
+
+namespace {
+
+forest::ForestScene sparseForest(std::size_t count, bool wall) {
+    graph::registerBuiltinNodeTypes();
+    forest::ForestScene s;
+    s.seed = 11;
+    forest::SceneSpecies beech;
+    beech.name = "beech";
+    beech.graph = sylva::testing::loadPreset(std::filesystem::path(SYLVA_PRESETS_DIR) /
+                                             "european-beech.json");
+    beech.variants = 3;
+    s.species.push_back(std::move(beech));
+    placement::Domain d;
+    d.min = {-60.0f, -60.0f};
+    d.max = {60.0f, 60.0f};
+    d.counts = {{"beech", count}};
+    s.domains.push_back(d);
+    if (wall) {
+        std::vector<env::ObstacleMesh> meshes;
+        meshes.push_back(env::makeBoxMesh({-60.0f, 0.0f, -1.0f}, {60.0f, 3.0f, 1.0f}, "wall"));
+        s.obstacles = std::make_shared<const env::ObstacleScene>(std::move(meshes));
+    }
+    return s;
+}
+
+struct Built {
+    std::vector<forest::ForestVariant> variants;
+    std::vector<forest::ForestTree> trees;
+    forest::ForestStats stats;
+    int variantCalls = 0;
+    bool variantsBeforeTrees = true;
+};
+
+Built build(const forest::ForestScene& s, forest::ForestOptions options) {
+    Built b;
+    options.onVariants = [&b](const std::vector<forest::ForestVariant>& v) {
+        ++b.variantCalls;
+        b.variantsBeforeTrees = b.variantsBeforeTrees && b.trees.empty();
+        b.variants = v;
+    };
+    b.stats = forest::buildForest(s, options, [&b](const std::vector<forest::ForestTree>& batch) {
+        b.trees.insert(b.trees.end(), batch.begin(), batch.end());
+    });
+    return b;
+}
+
+} // namespace
+
+TEST(Instancing, FreeTreesShareTheirVariantsMeshTouchingOnesAreUnique) {
+    const forest::ForestScene s = sparseForest(24, true);
+    forest::ForestOptions options;
+    options.useLod = false;
+    const Built b = build(s, options);
+    EXPECT_EQ(b.variantCalls, 1);
+    EXPECT_TRUE(b.variantsBeforeTrees);
+    ASSERT_EQ(b.variants.size(), 3u);
+    EXPECT_EQ(b.stats.variants, 3u);
+    for (std::size_t i = 0; i < b.variants.size(); ++i) {
+        EXPECT_EQ(b.variants[i].index, i);
+        EXPECT_EQ(b.variants[i].name, "beech_v" + std::to_string(i));
+        ASSERT_TRUE(b.variants[i].mesh && b.variants[i].skeleton && b.variants[i].meshSettings);
+        EXPECT_GT(b.variants[i].mesh->triangleCount(), 0u);
+    }
+    EXPECT_NE(b.variants[0].seed, b.variants[1].seed);
+
+    ASSERT_EQ(b.trees.size(), 24u);
+    EXPECT_EQ(b.stats.instanced + b.stats.unique, b.stats.trees);
+    std::size_t instanced = 0, nearWall = 0;
+    for (const forest::ForestTree& t : b.trees) {
+        // Within a crown's reach of the wall (a beech's crown is several metres wide), a tree
+        // must be unique.
+        const bool close = std::abs(t.instance.position.z) < 2.0f;
+        nearWall += close ? 1 : 0;
+        if (t.variant < 0) continue;
+        ++instanced;
+        EXPECT_FALSE(close) << t.name << " stands at z = " << t.instance.position.z;
+        const forest::ForestVariant& v = b.variants.at(static_cast<std::size_t>(t.variant));
+        EXPECT_EQ(t.mesh.get(), v.mesh.get()) << "shared, not copied";
+        EXPECT_EQ(t.skeleton.get(), v.skeleton.get());
+        EXPECT_EQ(t.variant,
+                  static_cast<std::int32_t>(mixSeed(t.instance.seed, salt::kVariantPick) % 3));
+    }
+    EXPECT_EQ(instanced, b.stats.instanced);
+    // Sparse: most trees are free; the wall makes some unique.
+    EXPECT_GT(b.stats.instanced, b.stats.trees / 2);
+    EXPECT_GT(b.stats.unique, 0u);
+    (void)nearWall;
+}
+
+TEST(Instancing, OffEveryTreeIsUniqueAndNoVariantIsMade) {
+    forest::ForestOptions options;
+    options.instancing = false;
+    options.buildMeshes = false;
+    const Built b = build(sparseForest(10, false), options);
+    EXPECT_EQ(b.stats.instanced, 0u);
+    EXPECT_EQ(b.stats.unique, 10u);
+    EXPECT_EQ(b.stats.variants, 0u);
+    for (const forest::ForestTree& t : b.trees)
+        EXPECT_EQ(t.variant, -1);
+}
+
+TEST(Instancing, KIsPerSpeciesWithTheOptionAsDefaultAndChecked) {
+    forest::ForestScene s = sparseForest(6, false);
+    s.species[0].variants = 0;
+    forest::ForestOptions options;
+    options.buildMeshes = false;
+    options.variantsPerSpecies = 5;
+    EXPECT_EQ(build(s, options).variants.size(), 5u);
+    options.variantsPerSpecies = 0;
+    EXPECT_THROW(build(s, options), InvalidInput);
+    s.species[0].variants = 300;
+    options.variantsPerSpecies = 8;
+    EXPECT_THROW(build(s, options), InvalidInput);
+}

@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Sylva's exports read by programs nobody here wrote (tests/readers/package.json, installed by
+# scripts/install-readers.sh): the Khronos glTF-Validator and three.js's GLTFLoader under Node.
+# Exit 77 (ctest: skipped) with a message when node or the packages are missing.
+# usage: readers_tests.sh <case> <sylva-cli> <tests/data> <scratch folder>
+set -uo pipefail
+case_name=$1 CLI=$2 DATA=$3 WORK=$4
+READERS=$(cd "$(dirname "$0")" && pwd)
+rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK" || exit 1
+
+fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
+command -v node >/dev/null || { echo "SKIP: node not installed (scripts/install-deps.sh)"; exit 77; }
+[[ -d "$READERS/node_modules/gltf-validator" && -d "$READERS/node_modules/three" ]] ||
+  { echo "SKIP: tests/readers/node_modules missing (run scripts/install-readers.sh)"; exit 77; }
+run_cli() {
+  "$CLI" "$@" >out.txt 2>err.txt || fail "sylva-cli $* failed: $(cat err.txt)"
+}
+validate() {
+  node "$READERS/validate.mjs" "$1" > report.txt 2>&1 || fail "$1: $(cat report.txt)"
+  grep -q ": 0 errors" report.txt || fail "$1: $(tail -1 report.txt)"
+  tail -1 report.txt
+}
+stat_of() { python3 -c "import json,sys; print(json.load(open('stats.json')).get(sys.argv[1], ''))" "$1"; }
+
+case $case_name in
+gltf_validator_forest)
+  # A forest with instanced variants, unique trees and library textures: glb and gltf+bin.
+  run_cli forest "$DATA/projects/small.sylva" -o forest.glb
+  validate forest.glb
+  run_cli forest "$DATA/projects/small.sylva" -o text/forest.gltf
+  [[ -s text/forest.bin && -s text/textures/bark.png ]] || fail "no .bin or textures beside the .gltf: $(ls -R text)"
+  validate text/forest.gltf ;;
+gltf_validator_tree)
+  run_cli tree "$DATA/../../presets/english-oak.json" --seed 2 -o oak.glb
+  validate oak.glb
+  run_cli tree "$DATA/lsystem/bush.lsys" -o bush.glb
+  validate bush.glb ;;
+three_forest_instances)
+  # three.js builds one InstancedMesh per instanced node: their counts sum to the instanced
+  # trees, every tree is an instance or a unique node, and each instance's id is listed.
+  run_cli forest "$DATA/projects/small.sylva" -o forest.glb --stats
+  cp out.txt stats.json
+  node "$READERS/count-instances.mjs" forest.glb > three.json 2> three.err || fail "three.js: $(cat three.err)"
+  cat three.json
+  python3 - <<'PY' || fail "three.js counts do not match the forest: $(cat three.json) vs $(cat stats.json)"
+import json, struct
+three = json.load(open("three.json"))
+stats = json.load(open("stats.json"))
+data = open("forest.glb", "rb").read()
+doc = json.loads(data[20:20 + struct.unpack("<I", data[12:16])[0]])
+nodes = doc["nodes"]
+unique_nodes = sum(1 for n in nodes if "sylva_id" in n.get("extras", {}))
+ids = [i for n in nodes for i in n.get("extras", {}).get("sylva_ids", [])]
+assert three["mismatched"] == 0, three
+assert three["instances"] == len(ids) == three["ids"], (three, len(ids))
+assert three["instances"] > 0, "nothing instanced"
+assert three["instances"] + unique_nodes == stats["trees"], (three, unique_nodes, stats["trees"])
+if "instanced" in stats:
+    assert three["instances"] == stats["instanced"], (three, stats["instanced"])
+    assert unique_nodes == stats["unique"], (unique_nodes, stats["unique"])
+all_ids = ids + [n["extras"]["sylva_id"] for n in nodes if "sylva_id" in n.get("extras", {})]
+assert len(set(all_ids)) == len(all_ids) == stats["trees"], "ids are not one per tree"
+PY
+  ;;
+*) fail "unknown case" ;;
+esac
+echo "PASS [$case_name]"
