@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <omp.h>
+#include <optional>
 
 namespace sylva::cli {
 
@@ -41,7 +42,7 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
 } // namespace
 
 int runForest(const std::vector<std::string>& argv) {
-    const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile"},
+    const Args args(argv, {"-o", "--output", "--camera", "--threads", "--tile", "--season"},
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--instance-tables",
                      "--naive-placement", "--fsync", "--full-precision"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
@@ -64,7 +65,15 @@ int runForest(const std::vector<std::string>& argv) {
     if (args.flag("--naive-placement")) options.placement = placement::PlacementMethod::Naive;
 
     const auto start = Clock::now();
-    const doc::Project project = loadProjectOrScene(args.positional()[0]);
+    std::optional<mesh::Season> season;
+    if (auto name = args.value("--season")) season = parseSeasonOption(*name);
+    doc::Project project = loadProjectOrScene(args.positional()[0]);
+    if (season) {
+        // The whole forest in one season: the trees' own seasons give way too.
+        project.season = std::string(mesh::seasonName(*season));
+        for (doc::ProjectInstance& tree : project.instances)
+            tree.season.clear();
+    }
     forest::ForestScene forestScene = doc::makeForestScene(project);
     if (auto camera = args.value("--camera")) forestScene.camera = parseVec3(*camera, "--camera");
     const double loadMs = msSince(start);

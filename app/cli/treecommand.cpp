@@ -6,6 +6,7 @@
 #include "document/speciesfile.h"
 #include "engine/export/treeexport.h"
 #include "engine/graph/graph.h"
+#include "engine/mesh/season.h"
 #include "engine/util/error.h"
 
 #include <QString>
@@ -35,7 +36,7 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
 } // namespace
 
 int runTree(const std::vector<std::string>& argv) {
-    const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set"},
+    const Args args(argv, {"-o", "--output", "-n", "--generations", "--seed", "--set", "--season"},
                     {"--stats", "--fsync", "--compact"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("tree"));
     auto output = args.value("-o");
@@ -60,6 +61,15 @@ int runTree(const std::vector<std::string>& argv) {
     }
     for (const std::string& s : args.values("--set"))
         applySet(evaluator, s);
+    if (auto name = args.value("--season")) {
+        // The season is the meshing node's parameter: --season autumn is --set mesh.season=autumn
+        // on the output node.
+        const mesh::Season season = parseSeasonOption(*name);
+        const graph::NodeDesc* out = evaluator.graph().findNode(evaluator.graph().output);
+        if (!out || out->type != "tube_mesh")
+            throw UsageError("--season needs a species whose output node is a tube_mesh");
+        evaluator.setParam(out->id, "season", sylva::Value(std::string(mesh::seasonName(season))));
+    }
 
     const auto seed = args.integer("--seed", 0, (1LL << 62));
     const graph::NodeOutput& result =

@@ -2,6 +2,7 @@
 
 #include "document/formatupgrade.h"
 #include "engine/graph/vectorparam.h"
+#include "engine/mesh/season.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -20,8 +21,8 @@ using graph::vec3Of;
 using sylva::Value;
 
 const std::vector<std::string> kKnownKeys = {
-    "format",  "format_version", "app_version", "seed",   "species",
-    "domains", "instances",      "obstacles",   "camera", "light"};
+    "format",    "format_version", "app_version", "seed",  "species", "domains",
+    "instances", "obstacles",      "camera",      "light", "season"};
 
 glm::vec2 vec2Of(const Value& v, const std::string& what) {
     const Value::Array& a = v.toArray(what);
@@ -98,6 +99,16 @@ PlacementDomain parseDomain(const Value& v, std::size_t i) {
     return d;
 }
 
+/// \p name when it is empty or a season's name; else InvalidInput naming \p where.
+std::string checkedSeason(const std::string& name, const std::string& where) {
+    if (name.empty()) return name;
+    try {
+        return std::string(mesh::seasonName(mesh::parseSeason(name)));
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(where + ": " + e.what());
+    }
+}
+
 ProjectInstance parseInstance(const Value& v, std::size_t i) {
     const std::string where = "instances[" + std::to_string(i) + "]";
     ProjectInstance in;
@@ -110,6 +121,7 @@ ProjectInstance parseInstance(const Value& v, std::size_t i) {
     in.seed = static_cast<std::uint64_t>(v.integer("seed", 0));
     in.growth = v.number("growth", 1.0);
     requireRange((where + ".growth").c_str(), in.growth, 0.0, 1.0);
+    in.season = checkedSeason(v.string("season", ""), where + ".season");
     return in;
 }
 
@@ -194,6 +206,7 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
             if (glm::length(p.lightDirection) < 1e-6f)
                 throw InvalidInput("light.direction must not be zero");
         }
+        p.season = checkedSeason(root.string("season", ""), "season");
         // Species names must be unique and every reference must name one.
         for (std::size_t i = 0; i < p.species.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -277,13 +290,17 @@ QByteArray serializeProject(const Project& p) {
     }
     root["domains"] = Value(std::move(domains));
     Value::Array instances;
-    for (const ProjectInstance& in : p.instances)
-        instances.emplace_back(Value::Object{{"species", in.species},
-                                             {"position", arrayOf(in.position)},
-                                             {"rotation", in.rotation},
-                                             {"scale", in.scale},
-                                             {"seed", static_cast<double>(in.seed)},
-                                             {"growth", in.growth}});
+    for (const ProjectInstance& in : p.instances) {
+        Value::Object o{{"species", in.species},
+                        {"position", arrayOf(in.position)},
+                        {"rotation", in.rotation},
+                        {"scale", in.scale},
+                        {"seed", static_cast<double>(in.seed)},
+                        {"growth", in.growth}};
+        // Only when set: a project without seasons saves as it did before they existed.
+        if (!in.season.empty()) o["season"] = in.season;
+        instances.emplace_back(std::move(o));
+    }
     root["instances"] = Value(std::move(instances));
     Value::Array obstacles;
     for (const ProjectObstacle& o : p.obstacles)
@@ -295,6 +312,7 @@ QByteArray serializeProject(const Project& p) {
     root["camera"] =
         Value::Object{{"position", arrayOf(p.cameraPosition)}, {"target", arrayOf(p.cameraTarget)}};
     root["light"] = Value::Object{{"direction", arrayOf(p.lightDirection)}};
+    if (!p.season.empty()) root["season"] = p.season;
     return QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n");
 }
 

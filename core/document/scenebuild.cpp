@@ -1,6 +1,7 @@
 #include "document/scenebuild.h"
 
 #include "document/speciesfile.h"
+#include "engine/mesh/season.h"
 #include "engine/nodes/adaptnode.h"
 #include "engine/util/error.h"
 
@@ -15,6 +16,7 @@ forest::ForestScene makeForestScene(const Project& project) {
     s.seed = project.seed;
     s.camera = project.cameraPosition;
     s.lightDirection = project.lightDirection;
+    if (!project.season.empty()) s.season = mesh::parseSeason(project.season);
 
     std::map<std::string, std::uint32_t> speciesIndex;
     for (const ProjectSpecies& ps : project.species) {
@@ -73,6 +75,7 @@ forest::ForestScene makeForestScene(const Project& project) {
         in.growth = static_cast<float>(pi.growth);
         in.seed = pi.seed;
         in.handPlaced = true;
+        if (!pi.season.empty()) in.season = static_cast<std::int8_t>(mesh::parseSeason(pi.season));
         s.handPlaced.push_back(in);
     }
     return s;

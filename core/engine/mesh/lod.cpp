@@ -231,7 +231,10 @@ namespace {
 Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {
     for (Submesh& s : mesh.submeshes) {
         if (s.material == "bark") s.texture = settings.barkTexture;
-        if (s.material == "leaf") s.texture = settings.leafTexture;
+        if (s.material == "leaf")
+            s.texture = settings.deciduous
+                            ? seasonTextureFile(settings.leafTexture, settings.season)
+                            : settings.leafTexture;
     }
     return mesh;
 }
@@ -243,8 +246,15 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
     Mesh mesh;
     if (!settings.useLod) {
         appendTubes(mesh, skeleton, tubes, progress);
-        if (settings.leaves && !skeleton.leaves.empty())
-            appendLeafCards(mesh, skeleton.leaves, settings.leafCards, &skeleton);
+        if (settings.leaves && !skeleton.leaves.empty()) {
+            if (settings.deciduous && settings.season != Season::Summer) {
+                const std::vector<skel::Leaf> leaves =
+                    seasonLeaves(skeleton.leaves, settings.season, true, settings.seed);
+                if (!leaves.empty()) appendLeafCards(mesh, leaves, settings.leafCards, &skeleton);
+            } else {
+                appendLeafCards(mesh, skeleton.leaves, settings.leafCards, &skeleton);
+            }
+        }
         return mesh;
     }
     const LodLevel level = selectLod(settings.lod, settings.cameraDistance);
@@ -267,9 +277,16 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
     const skel::Skeleton kept = dropSmallSubtrees(
         skeleton, level.minSubtreeExtent, settings.leafCards.sizeScale, level.leafyTwigExtent);
     appendTubes(mesh, kept, tubes, progress);
-    if (settings.leaves && !kept.leaves.empty()) {
+    // The season's leaves first, so that clusters and thinning work on what the tree shows.
+    const std::vector<skel::Leaf> seasonal =
+        settings.deciduous && settings.season != Season::Summer
+            ? seasonLeaves(kept.leaves, settings.season, true, settings.seed)
+            : std::vector<skel::Leaf>();
+    const std::vector<skel::Leaf>& shown =
+        settings.deciduous && settings.season != Season::Summer ? seasonal : kept.leaves;
+    if (settings.leaves && !shown.empty()) {
         std::vector<skel::Leaf> leaves = clusterLeaves(
-            kept.leaves, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
+            shown, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
         if (leafFraction < 1.0) {
             leaves = thinLeaves(leaves, leafFraction, settings.seed);
             // Enlarged survivors that would reach into an obstacle are left out.

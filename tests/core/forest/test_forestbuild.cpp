@@ -107,6 +107,7 @@ static_assert(salt::kCrownSample == 0xC0000 && salt::kDomainSlots == 0xD0A1 &&
               salt::kPlacedTree == 0x0A11);
 static_assert(salt::kBrushStroke == 7919 && salt::kPlaceTool == 104729);
 static_assert(salt::kVariant == 0x5A1A7 && salt::kVariantPick == 0x5A1B);
+static_assert(salt::kSeason == 0x5EA5);
 
 TEST(SeedSalts, EverySaltIsItsOwn) {
     const std::set<std::uint64_t> salts{salt::kTreeMesh,
@@ -122,6 +123,7 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kBrushStroke,
                                         salt::kPlaceTool,
                                         salt::kVariant,
-                                        salt::kVariantPick};
-    EXPECT_EQ(salts.size(), 14u);
+                                        salt::kVariantPick,
+                                        salt::kSeason};
+    EXPECT_EQ(salts.size(), 15u);
 }
