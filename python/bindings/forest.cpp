@@ -411,17 +411,36 @@ void bindForest(py::module_& m) {
         .def(
             "add_tree",
             [](Project& p, const std::string& species, const py::object& position, double rotation,
-               double scale, std::optional<std::uint64_t> seed, double growth) {
+               double scale, std::optional<std::uint64_t> seed, double growth,
+               const py::object& season) {
                 if (!p.project.findSpecies(species))
                     throw InvalidInput("the project has no species '" + species + "'");
-                p.project.instances.push_back(newTree(p.project, p.project.instances.size(),
-                                                      species, position, rotation, scale, seed,
-                                                      growth));
+                doc::ProjectInstance t = newTree(p.project, p.project.instances.size(), species,
+                                                 position, rotation, scale, seed, growth);
+                t.season = seasonFrom(season);
+                p.project.instances.push_back(std::move(t));
                 return p.project.instances.size() - 1;
             },
             py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
             py::arg("scale") = 1.0, py::arg("seed") = py::none(), py::arg("growth") = 1.0,
-            "a hand-placed tree (rotation in degrees about +Y)")
+            py::arg("season") = py::none(),
+            "a hand-placed tree (rotation in degrees about +Y; season: its own, None: the "
+            "project's)")
+        .def_property(
+            "season", [](const Project& p) { return seasonTo(p.project.season); },
+            [](Project& p, const py::object& season) { p.project.season = seasonFrom(season); },
+            "the season of every tree without its own: 'spring', 'summer', 'autumn', 'winter', "
+            "or None (each species' own, summer)")
+        .def(
+            "set_tree_season",
+            [](Project& p, std::size_t index, const py::object& season) {
+                if (index >= p.project.instances.size())
+                    throw InvalidInput("no tree " + std::to_string(index) + " (the project has " +
+                                       std::to_string(p.project.instances.size()) + ")");
+                p.project.instances[index].season = seasonFrom(season);
+            },
+            py::arg("index"), py::arg("season"),
+            "a hand-placed tree's own season (None: the project's)")
         .def(
             "add_obstacle",
             [](Project& p, const py::object& file, const py::object& vertices,

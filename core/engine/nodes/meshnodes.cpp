@@ -289,8 +289,8 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
                  "Sheds its leaves: fewer and smaller in spring, fewer in autumn, none in winter; "
                  "off: the same all year (conifers, evergreens)"),
          vector("autumn_color", vec(0.6, 0.4, 0.1), 0, 1, "",
-                "Autumn leaf colour (sRGB 0..1); make_textures.py draws <leaf>_autumn.png "
-                "from it")});
+                "Autumn leaf colour (sRGB 0..1): make_textures.py draws the species' "
+                "autumn leaves from it")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;
