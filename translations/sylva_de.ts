@@ -202,6 +202,10 @@
         <source>Change season</source>
         <translation>Jahreszeit ändern</translation>
     </message>
+    <message>
+        <source>Change tree season</source>
+        <translation>Jahreszeit des Baums ändern</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>

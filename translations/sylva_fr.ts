@@ -202,6 +202,10 @@
         <source>Change season</source>
         <translation>Changer la saison</translation>
     </message>
+    <message>
+        <source>Change tree season</source>
+        <translation>Changer la saison de l&apos;arbre</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
