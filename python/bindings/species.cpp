@@ -376,8 +376,8 @@ void bindSpecies(py::module_& m) {
           "(default: the working directory)");
     m.def(
         "grow",
-        [](const py::object& species, std::optional<std::uint64_t> seed,
-           const py::object& progress, const py::object& season) {
+        [](const py::object& species, std::optional<std::uint64_t> seed, const py::object& progress,
+           const py::object& season) {
             Species s = loadSpeciesFrom(species, py::none());
             return s.evaluator ? py::cast(s).attr("grow")(seed, progress, season)
                                : py::object(py::none());

@@ -184,9 +184,8 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 // "" (or "project") clears the tree's own season; None leaves it.
                 if (!season.is_none()) {
                     const std::string name = season.cast<std::string>();
-                    t.season = name.empty() || name == "project"
-                                   ? std::string()
-                                   : python::seasonFrom(season);
+                    t.season = name.empty() || name == "project" ? std::string()
+                                                                 : python::seasonFrom(season);
                 }
                 if (!position.is_none()) t.position = toVec3(position, "position");
                 if (rotation) t.rotation = *rotation;

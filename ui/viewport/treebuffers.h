@@ -27,7 +27,7 @@ struct DrawRange {
     glm::vec3 color;
     std::uint32_t firstIndex = 0;
     std::uint32_t indexCount = 0;
-    GLuint texture = 0;     ///< 0: the plain colour
+    GLuint texture = 0; ///< 0: the plain colour
     /// The texture's tangent-space normal map ("<texture>_normal.png"), or a flat one: never 0
     /// where texture is set.
     GLuint normalMap = 0;

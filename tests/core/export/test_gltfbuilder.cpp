@@ -354,13 +354,13 @@ TEST(GltfMesh, SubmeshesShareVerticesAndTexturesAreEmbeddedOnce) {
     // files not in the folder given.
     ASSERT_EQ(g.json["images"].size(), 3u);
     EXPECT_EQ(g.json["images"][0]["mimeType"], "image/png");
-    const Json& leaf = g.json["materials"][1];
-    ASSERT_TRUE(leaf.contains("normalTexture"));
-    ASSERT_TRUE(leaf["pbrMetallicRoughness"].contains("metallicRoughnessTexture"));
-    EXPECT_EQ(leaf["pbrMetallicRoughness"]["roughnessFactor"], 1.0);
-    EXPECT_EQ(leaf["pbrMetallicRoughness"]["metallicFactor"], 0.0);
+    const Json& leafMaterial = g.json["materials"][1];
+    ASSERT_TRUE(leafMaterial.contains("normalTexture"));
+    ASSERT_TRUE(leafMaterial["pbrMetallicRoughness"].contains("metallicRoughnessTexture"));
+    EXPECT_EQ(leafMaterial["pbrMetallicRoughness"]["roughnessFactor"], 1.0);
+    EXPECT_EQ(leafMaterial["pbrMetallicRoughness"]["metallicFactor"], 0.0);
     const int normalImage =
-        g.json["textures"][leaf["normalTexture"]["index"].get<int>()]["source"].get<int>();
+        g.json["textures"][leafMaterial["normalTexture"]["index"].get<int>()]["source"].get<int>();
     EXPECT_EQ(g.json["images"][normalImage]["name"], "english-oak_leaf_normal");
     EXPECT_FALSE(g.json["materials"][0].contains("normalTexture"));
     const auto normals = readAccessor<float>(g, prims[0]["attributes"]["NORMAL"].get<int>(), 3);

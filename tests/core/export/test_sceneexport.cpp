@@ -335,12 +335,14 @@ TEST(SceneExport, NormalMapsTravelWithEveryFormat) {
                 << name << " " << material.C_Str();
             ++normals;
             const std::string file = tex.C_Str();
-            if (file.rfind('*', 0) == 0) {
+            // Assimp reads its own FBX's normal map back with the writer's "*N" index, which
+            // its reader renumbered: the FBX is checked for the slot only (docs/geometry.md).
+            if (file.rfind('*', 0) == 0 && std::string(name) != "oak.fbx") {
                 const aiTexture* embedded = s->GetEmbeddedTexture(file.c_str());
                 ASSERT_NE(embedded, nullptr) << name << " " << file;
                 EXPECT_EQ(std::string(reinterpret_cast<const char*>(embedded->pcData) + 1, 3),
                           "PNG");
-            } else {
+            } else if (file.rfind('*', 0) != 0) {
                 EXPECT_NE(file.find("_normal.png"), std::string::npos) << file;
                 EXPECT_TRUE(std::filesystem::exists(dir / file)) << name << " " << file;
             }
@@ -350,7 +352,9 @@ TEST(SceneExport, NormalMapsTravelWithEveryFormat) {
         }
         EXPECT_EQ(normals, 2u) << name;
         // FBX's classic material has no roughness slot Assimp writes; the others carry it.
-        if (std::string(name) != "oak.fbx") EXPECT_EQ(roughness, 2u) << name;
+        if (std::string(name) != "oak.fbx") {
+            EXPECT_EQ(roughness, 2u) << name;
+        }
     }
     std::filesystem::remove_all(dir);
 }
@@ -361,11 +365,11 @@ TEST(Materials, NormalAndRoughnessMapsAreFoundBesideTheTexture) {
     EXPECT_EQ(std::filesystem::path(exporter::companionTexture(leaf, "normal")).filename(),
               "english-oak_leaf_normal.png");
     // A season's leaf shares its summer leaf's maps.
-    EXPECT_EQ(std::filesystem::path(exporter::companionTexture(
-                                        (presets / "english-oak_leaf_autumn.png").string(),
-                                        "roughness"))
-                  .filename(),
-              "english-oak_leaf_roughness.png");
+    EXPECT_EQ(
+        std::filesystem::path(exporter::companionTexture(
+                                  (presets / "english-oak_leaf_autumn.png").string(), "roughness"))
+            .filename(),
+        "english-oak_leaf_roughness.png");
     EXPECT_EQ(exporter::companionTexture((presets / "no-such_leaf.png").string(), "normal"), "");
     // The defaults and the MTL: norm (Assimp), map_Bump (Blender), map_Pr.
     const std::string mtl = exporter::formatMtl(exporter::defaultMaterials());

@@ -33,8 +33,7 @@ std::uint32_t leafTriangles(const mesh::Mesh& m) {
     return n;
 }
 
-mesh::Mesh meshIn(const skel::Skeleton& s, mesh::Season season, bool deciduous,
-                  bool lod = false) {
+mesh::Mesh meshIn(const skel::Skeleton& s, mesh::Season season, bool deciduous, bool lod = false) {
     mesh::TreeMeshSettings settings;
     settings.season = season;
     settings.deciduous = deciduous;
