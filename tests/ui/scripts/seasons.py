@@ -14,7 +14,6 @@ out = os.environ["SYLVA_TEST_OUT"]
 original = doc.serialized()
 doc.add_species("oak", os.path.join(os.environ["SYLVA_PRESETS_DIR"], "english-oak.json"))
 tree = doc.add_tree("oak", (400, 0, 400), seed=1)
-win.look_from((400, 7, 422), (400, 6.5, 400))
 
 
 def read_ppm(path):
@@ -29,11 +28,14 @@ def read_ppm(path):
 
 def shot(name):
     doc.generate()
+    win.look_from((400, 7, 422), (400, 6.5, 400))  # after the regrowth, which frames the view
+    sylva.wait(1.0)  # the new meshes uploaded and drawn
     path = os.path.join(out, "season-%s.ppm" % name)
     win.screenshot(path, viewport_only=True)
     return read_ppm(path)
 
 
+shot("first")  # the first generation frames the view once more after it is shown
 summer = shot("summer")
 doc.season = "autumn"
 assert doc.season == "autumn"
