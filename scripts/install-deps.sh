@@ -8,11 +8,12 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   libqt6opengl6-dev libgl-dev libglm-dev
-  libassimp-dev assimp-utils libembree-dev libnanoflann-dev nlohmann-json3-dev
+  libassimp-dev assimp-utils libembree-dev libnanoflann-dev nlohmann-json3-dev libpng-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool libgl1-mesa-dri clang-format
   python3-dev pybind11-dev python3-numpy python3-pytest
   clang libclang-rt-14-dev libomp-dev
+  slurmctld slurmd slurm-client munge  # tests/slurm: a one-node cluster runs a farm job
 )
 # node and npm for the outside readers of tests/readers (scripts/install-readers.sh): Debian's,
 # unless a node with its npm is already there (NodeSource's nodejs bundles npm, and Debian's npm

@@ -69,6 +69,7 @@ def render(build, species_file, png, size):
 CLOSEUPS = [
     ("silver-birch", (2.2, 3.2, 4.5), (0.0, 4.0, 0.0)),
     ("english-oak", (3.5, 2.0, 6.0), (0.0, 3.2, 0.0)),
+    ("scots-pine", (4.5, 10.5, 6.5), (0.0, 11.5, 0.0)),
 ]
 
 
@@ -165,7 +166,15 @@ def library(build, png, folder, project="resources/demo/library.sylva"):
 def solidity(build):
     """The broadleaves' crown silhouette table printed by test_crownshape (issue #33)."""
     out = subprocess.run([os.path.join(build, "tests/core/forest/test_crownshape"),
-                          "--gtest_filter=*Broadleaves*"], check=True, capture_output=True,
+                          "--gtest_filter=CrownShape.Broadleaves*"], check=True, capture_output=True,
+                         text=True).stdout
+    return [l for l in out.splitlines() if l.startswith("|")]
+
+
+def leaf_clusters(build):
+    """The broadleaves' leaf cluster table printed by test_crownshape's LeafClusters test."""
+    out = subprocess.run([os.path.join(build, "tests/core/forest/test_crownshape"),
+                          "--gtest_filter=LeafClusters.Broad*"], check=True, capture_output=True,
                          text=True).stdout
     return [l for l in out.splitlines() if l.startswith("|")]
 
@@ -219,7 +228,8 @@ def main():
                     closeup(args.build, sp, eye, target, raw, tmp)
                     thumbnail(raw, os.path.join(args.out, "%s-bark.png" % sp), 480, colors=160)
         return
-    species = [s for s in args.only.split(",") if s and s != "stand"] if args.only else SPECIES
+    species = ([s for s in args.only.split(",") if s and s not in ("stand", "demo")]
+               if args.only else SPECIES)
     seeds = [int(s) for s in args.seeds.split(",")]
     os.makedirs(args.out, exist_ok=True)
     rows = []
@@ -244,6 +254,10 @@ def main():
             raw = os.path.join(tmp, "library.png")
             library(args.build, raw, tmp)
             thumbnail(raw, os.path.join(args.out, "library.png"), 720, colors=128)
+        if not args.only or "demo" in args.only.split(","):
+            raw = os.path.join(tmp, "demo.png")
+            library(args.build, raw, tmp, "resources/demo/forest.sylva")
+            thumbnail(raw, os.path.join(args.out, "demo.png"), 720, colors=160)
         if not args.only or "stand" in args.only.split(","):
             raw = os.path.join(tmp, "stand.png")
             library(args.build, raw, tmp, "resources/demo/stand.sylva")
@@ -264,7 +278,11 @@ def main():
                                            " / ".join("%.1f" % h for _, h in tris)))
     lines += ["", "Crown silhouettes of the broadleaves (`tests/core/forest/test_crownshape`: side view,"
               " crown rows, solidity = area / convex hull area, the mean of two views; it asserts"
-              " <= 0.85):", ""] + solidity(args.build)
+              " <= 0.85; middle cover: how much of the crown's middle is covered, it asserts >= 0.6"
+              " for maple, birch and beech):", ""] + solidity(args.build)
+    lines += ["", "Leaf clusters of the broadleaves (`test_leafclusters`, seed 1: leaf-card triangles"
+              " with one card a leaf and with cluster cards, and the silhouettes' IoU, conservative"
+              " raster; it asserts a ratio >= 4 and IoU >= 0.9):", ""] + leaf_clusters(args.build)
     doc_path = os.path.join(ROOT, "docs", "gallery.md")
     with open(doc_path) as f:
         text = f.read()

@@ -10,7 +10,12 @@ namespace sylva::cli {
 
 void appendJsonNumber(std::string& out, const char* key, double value, bool comma) {
     char buf[32];
-    const auto end = std::to_chars(buf, buf + sizeof buf, value).ptr;
+    // Counts as integers: the shortest form of 100000.0 is "1e+05", which scripts read as a float.
+    const bool integral = value > -9.0e15 && value < 9.0e15 &&
+                          value == static_cast<double>(static_cast<long long>(value));
+    const auto end = integral
+                         ? std::to_chars(buf, buf + sizeof buf, static_cast<long long>(value)).ptr
+                         : std::to_chars(buf, buf + sizeof buf, value).ptr;
     out += '"';
     out += key;
     out += "\":";

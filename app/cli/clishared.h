@@ -8,7 +8,8 @@
 
 namespace sylva::cli {
 
-/// Appends `"key":value` (shortest round-trip number) and a comma unless \p comma is false.
+/// Appends `"key":value` (an integer as such, else the shortest round-trip number) and a comma
+/// unless \p comma is false.
 void appendJsonNumber(std::string& out, const char* key, double value, bool comma = true);
 
 /// A `.sylva` project, or the reference implementation's scene description (it has "plants"

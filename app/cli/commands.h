@@ -11,6 +11,7 @@ namespace sylva::cli {
 int runExpand(const std::vector<std::string>& args);
 int runTree(const std::vector<std::string>& args);
 int runForest(const std::vector<std::string>& args);
+int runCompose(const std::vector<std::string>& args);
 int runStats(const std::vector<std::string>& args);
 int runLods(const std::vector<std::string>& args);
 int runNodes(const std::vector<std::string>& args);

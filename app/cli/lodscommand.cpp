@@ -1,27 +1,75 @@
 #include "cliargs.h"
 #include "commands.h"
+#include "terminalprogress.h"
 #include "usage.h"
 
 #include "document/speciesfile.h"
-#include "engine/export/lodexport.h"
+#include "engine/export/lodchainexport.h"
 #include "engine/export/treeexport.h"
+#include "engine/mesh/lodchain.h"
 #include "engine/nodes/meshnodes.h"
 #include "engine/util/error.h"
 
 #include <QString>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
 
 namespace sylva::cli {
 
 using exporter::resourcesDir;
 
+namespace {
+
+/// "1,0.35,0.12,0.04" → the numbers; InvalidInput naming the bad entry.
+std::vector<double> parseBudgets(const std::string& text) {
+    std::vector<double> out;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || !end || *end != '\0')
+            throw InvalidInput("--budgets: '" + item +
+                               "' is not a number (fractions of LOD0's triangles, e.g. "
+                               "1,0.35,0.12,0.04)");
+        out.push_back(v);
+    }
+    return out;
+}
+
+/// File names come from the species file's name ("english-oak"), as a pipeline names assets.
+std::string speciesFileStem(const std::string& path) {
+    const std::string stem = std::filesystem::path(path).stem().string();
+    return stem.empty() ? std::string("tree") : stem;
+}
+
+} // namespace
+
 int runLods(const std::vector<std::string>& argv) {
-    const Args args(argv, {"-o", "--output", "--seed"}, {"--json", "--no-glb", "--no-obj"});
+    const Args args(
+        argv,
+        {"-o", "--output", "--seed", "--budgets", "--impostor-grid", "--impostor-cell",
+         "--impostor-pixels"},
+        {"--json", "--no-glb", "--no-obj", "--no-fbx", "--no-impostor", "--octahedral"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("lods"));
     auto dir = args.value("-o");
     if (!dir) dir = args.value("--output");
     if (!dir) throw UsageError("lods needs an output folder: -o <folder>");
+
+    mesh::LodChainSettings chainSettings;
+    if (const auto b = args.value("--budgets")) chainSettings.budgets = parseBudgets(*b);
+    if (const auto g = args.integer("--impostor-grid", 2, 32))
+        chainSettings.impostorSettings.grid = static_cast<int>(*g);
+    if (const auto c = args.integer("--impostor-cell", 8, 2048))
+        chainSettings.impostorSettings.cellPixels = static_cast<int>(*c);
+    if (const auto p = args.integer("--impostor-pixels", 1, 4096))
+        chainSettings.impostorPixels = static_cast<double>(*p);
+    chainSettings.impostorSettings.hemisphere = !args.flag("--octahedral");
+    chainSettings.impostor = !args.flag("--no-impostor");
+    mesh::validateLodChain(chainSettings);
 
     graph::registerBuiltinNodeTypes();
     const graph::SpeciesGraph species =
@@ -37,32 +85,39 @@ int runLods(const std::vector<std::string>& argv) {
 
     const mesh::TreeMeshSettings settings =
         mesh::treeMeshSettingsFromParams(out->params, 0, species.baseDir);
-    exporter::LodExportOptions options;
+    exporter::GameLodOptions options;
     options.obj = !args.flag("--no-obj");
-    options.glb = !args.flag("--no-glb");
-    if (const auto res = resourcesDir(); !res.empty()) options.textureSource = res / "textures";
-    const exporter::LodChainFiles files =
-        exporter::writeLodChain(*dir, species.name, *grown.skeleton, settings, options);
+    options.gltf = !args.flag("--no-glb");
+    options.fbx = !args.flag("--no-fbx");
+    const std::filesystem::path res = resourcesDir();
+    if (!res.empty()) options.shippedTextures = res / "textures";
+    // Ctrl-C stops the levels' search or the baking at its next mesh or view: nothing is
+    // written before the chain is complete, and each file is written atomically.
+    TerminalProgress progress;
+    const mesh::BudgetLodChain chain =
+        mesh::buildBudgetLodChain(*grown.skeleton, settings, chainSettings,
+                                  mesh::ImpostorTextures(options.shippedTextures), progress);
+    progress.checkCancelled();
+    const exporter::GameLodFiles files = exporter::writeGameLodChain(
+        *dir, speciesFileStem(args.positional()[0]), chain, settings.lod, options, progress);
+    progress.finish();
 
     if (args.flag("--json")) {
-        std::string json = "{\"levels\":[";
-        for (std::size_t i = 0; i < files.levels.size(); ++i) {
-            const exporter::LodFileLevel& l = files.levels[i];
-            char buf[256];
-            std::snprintf(
-                buf, sizeof buf,
-                "%s{\"name\":\"%s\",\"distance_m\":%g,\"triangles\":%zu,\"vertices\":%zu}",
-                i ? "," : "", l.name.c_str(), l.distance, l.triangles, l.vertices);
-            json += buf;
-        }
-        json += "]}\n";
-        std::fwrite(json.data(), 1, json.size(), stdout);
+        std::fwrite(files.description.data(), 1, files.description.size(), stdout);
     } else {
-        std::printf("%-32s %14s %12s %12s\n", "level", "from (m)", "triangles", "vertices");
-        for (const exporter::LodFileLevel& l : files.levels)
-            std::printf("%-32s %14.1f %12zu %12zu\n", l.name.c_str(), l.distance, l.triangles,
-                        l.vertices);
-        if (!files.glbPath.empty()) std::printf("glTF: %s\n", files.glbPath.string().c_str());
+        std::printf("%-32s %8s %14s %12s %12s %12s\n", "level", "budget", "from (m)", "screen size",
+                    "triangles", "vertices");
+        for (const exporter::GameLodLevel& l : files.levels)
+            std::printf("%-32s %7.0f%% %14.1f %12.3f %12zu %12zu%s\n", l.name.c_str(),
+                        l.budget * 100.0, l.distance, l.screenSize, l.triangles, l.vertices,
+                        l.budgetMet ? "" : "  (over budget: the coarsest the LOD makes)");
+        if (chain.impostor)
+            std::printf("%-32s %8s %14.1f %12.3f %12d %12d\n",
+                        (speciesFileStem(args.positional()[0]) + "_impostor").c_str(), "",
+                        chain.impostorDistance, chain.impostorScreenSize, 2, 4);
+        if (!files.glb.empty()) std::printf("glTF: %s\n", files.glb.string().c_str());
+        if (!files.fbx.empty()) std::printf("FBX: %s\n", files.fbx.string().c_str());
+        std::printf("description: %s\n", files.json.string().c_str());
     }
     return kOk;
 }

@@ -1,6 +1,7 @@
 // sylva-cli: the headless front end of the Sylva engine (batch and farm use).
 #include "cliargs.h"
 #include "commands.h"
+#include "terminalprogress.h"
 #include "usage.h"
 
 #include "document/errormessage.h"
@@ -8,6 +9,7 @@
 #include "engine/util/memorypolicy.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -20,12 +22,13 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  expand <grammar> [-n N] [--seed S]      print the derived L-system string\n"
-    "  tree <grammar|species.json> -o out.{obj,glb,fbx}   generate one tree\n"
+    "  tree <grammar|species.json> -o out.{obj,usda,glb,fbx}  generate one tree\n"
     "       [-n N] [--seed S] [--set node.param=value]... [--stats] [--fsync] [--compact]\n"
-    "  forest <project.sylva> -o out.{obj,glb,fbx}       generate a forest\n"
+    "  forest <project.sylva> -o out.{obj,usda,glb,fbx}  generate a forest\n"
     "       [--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--no-lod]\n"
-    "       [--no-adapt] [--no-neighbours] [--instance-tables] [--naive-placement]\n"
-    "       [--fsync] [--full-precision]\n"
+    "       [--no-adapt] [--no-neighbours] [--no-instancing] [--instance-tables]\n"
+    "       [--naive-placement] [--fsync] [--full-precision] [--assimp-gltf]\n"
+    "  compose <root.usda> <tile.usda>...               root layer over a farm run's tiles\n"
     "  stats <project.sylva|species.json> [--json]       height, DBH, biomass, CO2\n"
     "  lods <species.json> -o <folder> [--json]          LOD chain for game engines\n"
     "  nodes [type] [--markdown|--json]         node types and their parameters\n"
@@ -37,7 +40,8 @@ const char* kUsage =
     "either way). Compact OBJ (0.1 mm positions, relative face indices, ~17 % smaller) is the\n"
     "default of forest (--full-precision: micrometres, absolute indices) and --compact of tree.\n"
     "\n"
-    "exit status: 0 success, 1 bad input (message as file:line:col: error: ...), 2 bad usage\n";
+    "exit status: 0 success, 1 bad input (message as file:line:col: error: ...), 2 bad usage,\n"
+    "130 interrupted (Ctrl-C or SIGTERM; nothing written)\n";
 
 void printError(const std::string& message) {
     // Engine messages with positions are already "file:line:col: error: ..."; others get the
@@ -50,7 +54,7 @@ void printError(const std::string& message) {
 
 } // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
     using namespace sylva::cli;
     if (argc < 2) {
         std::fputs(kUsage, stderr);
@@ -77,6 +81,7 @@ int main(int argc, char** argv) {
         if (command == "expand") return runExpand(args);
         if (command == "tree") return runTree(args);
         if (command == "forest") return runForest(args);
+        if (command == "compose") return runCompose(args);
         if (command == "stats") return runStats(args);
         if (command == "lods") return runLods(args);
         if (command == "nodes") return runNodes(args);
@@ -86,7 +91,7 @@ int main(int argc, char** argv) {
         return kOk;
     } catch (const sylva::Cancelled&) {
         std::fprintf(stderr, "sylva-cli: interrupted; no output written\n");
-        return 130;
+        return kInterrupted;
     } catch (const UsageError& e) {
         std::fprintf(stderr, "sylva-cli: %s\n(see 'sylva-cli help')\n", e.what());
         return kBadUsage;
@@ -96,4 +101,17 @@ int main(int argc, char** argv) {
         printError(report.message);
         return kBadInput;
     }
+}
+
+int main(int argc, char** argv) {
+    const int status = run(argc, argv);
+    if (status == sylva::cli::kInterrupted) {
+        // An interrupted glTF/FBX export may leave Assimp's exporter running on a thread of its
+        // own (it cannot be stopped; sceneexport.h): end without running static destructors
+        // under it. Every temporary was removed while the command unwound.
+        std::fflush(stdout);
+        std::fflush(stderr);
+        std::_Exit(status);
+    }
+    return status;
 }

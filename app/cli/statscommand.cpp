@@ -14,6 +14,7 @@
 #include <QString>
 
 #include <cstdio>
+#include <optional>
 
 namespace sylva::cli {
 
@@ -42,6 +43,7 @@ int runStats(const std::vector<std::string>& argv) {
     const bool isProject = path.ends_with(".sylva") || path.ends_with(".scene.json");
     forest::SceneMetrics metrics;
     std::string perTree; // JSON objects, one per tree of a project
+    std::optional<forest::ForestStats> forestStats;
     if (isProject) {
         const doc::Project project = loadProjectOrScene(path);
         forest::ForestOptions options;
@@ -59,13 +61,18 @@ int runStats(const std::vector<std::string>& argv) {
                     if (!perTree.empty()) perTree.push_back(',');
                     perTree.append("{\"name\":\"");
                     perTree.append(t.name);
-                    perTree.append("\",");
+                    perTree.append("\",\"id\":");
+                    perTree.append(std::to_string(t.instance.id));
+                    perTree.append(",\"variant\":");
+                    perTree.append(std::to_string(t.variant));
+                    perTree.push_back(',');
                     perTree.append(obj);
                 }
             },
             progress);
         progress.finish();
         metrics = stats.metrics;
+        forestStats = stats;
     } else {
         graph::registerBuiltinNodeTypes();
         const graph::SpeciesGraph species = doc::loadSpecies(QString::fromStdString(path));
@@ -84,6 +91,9 @@ int runStats(const std::vector<std::string>& argv) {
         std::string json = metricsJson(metrics);
         if (isProject) {
             json.pop_back(); // the closing brace
+            json.append(",\"instanced\":" + std::to_string(forestStats->instanced));
+            json.append(",\"unique\":" + std::to_string(forestStats->unique));
+            json.append(",\"variants\":" + std::to_string(forestStats->variants));
             json.append(",\"per_tree\":[");
             json.append(perTree);
             json.append("]}");
@@ -92,6 +102,11 @@ int runStats(const std::vector<std::string>& argv) {
         std::fwrite(json.data(), 1, json.size(), stdout);
     } else {
         printTable(metrics, !isProject);
+        if (forestStats) {
+            std::printf("%-28s %14zu\n", "instanced trees", forestStats->instanced);
+            std::printf("%-28s %14zu\n", "unique trees", forestStats->unique);
+            std::printf("%-28s %14zu\n", "variants", forestStats->variants);
+        }
     }
     return kOk;
 }

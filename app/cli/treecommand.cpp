@@ -1,6 +1,7 @@
 #include "cliargs.h"
 #include "clishared.h"
 #include "commands.h"
+#include "terminalprogress.h"
 #include "usage.h"
 
 #include "document/speciesfile.h"
@@ -79,8 +80,12 @@ int runTree(const std::vector<std::string>& argv) {
                            "' produces no mesh; end the graph with a tube_mesh node");
 
     const auto t0 = std::chrono::steady_clock::now();
+    // Ctrl-C and SIGTERM from here on stop the writer and remove its temporary (before, the
+    // default action ends the process with nothing on disk yet).
+    TerminalProgress progress;
     TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
     exporter.add({ExportTree{exporter::objectNameFor(evaluator.graph().name), result.mesh}});
+    exporter.setProgress(progress);
     exporter.commit();
     const double writeMs =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

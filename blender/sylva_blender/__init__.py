@@ -87,6 +87,10 @@ class SylvaSettings(bpy.types.PropertyGroup):
                                description="Meshes the trees bend away from")
     adapt: BoolProperty(name="Adapt to obstacles", default=True)
     lod: BoolProperty(name="Level of detail from the camera", default=False)
+    instancing: BoolProperty(name="Share variants", default=True,
+                             description="Trees that touch no obstacle and no neighbour show one "
+                                         "of their species' 8 variants: linked duplicates of one "
+                                         "mesh per variant (without the camera's level of detail)")
     auto_regrow: BoolProperty(name="Regrow when the ground or an obstacle changes",
                               default=False,
                               description="Grow the forest again shortly after the ground or "
@@ -157,7 +161,8 @@ class SYLVA_OT_grow_forest(bpy.types.Operator):
             self.report({"WARNING"}, "interrupted")
             return {"CANCELLED"}
         st = forest.stats
-        self.report({"INFO"}, f"{st['trees']} trees, {st['triangles']} triangles, "
+        self.report({"INFO"}, f"{st['trees']} trees ({st['instanced']} instanced, "
+                              f"{st['variants']} variants), {st['triangles']} triangles, "
                               f"{st['colliding_trees']} met an obstacle, "
                               f"CO2 {st['metrics']['co2_kg']:.0f} kg")
         return {"FINISHED"}
@@ -193,6 +198,7 @@ class SYLVA_PT_panel(bpy.types.Panel):
         box.prop(s, "seed")
         box.prop(s, "adapt")
         box.prop(s, "lod")
+        box.prop(s, "instancing")
         box.prop(s, "auto_regrow")
         box.operator(SYLVA_OT_grow_forest.bl_idname, icon="OUTLINER_COLLECTION")
 

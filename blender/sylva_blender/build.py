@@ -135,7 +135,8 @@ def forest_collection(scene):
 
 def grow_forest(sylva, context, settings):
     """Builds the forest of \\p settings (SylvaSettings) and puts it in the "Sylva Forest"
-    collection, one object per tree; returns the sylva.Forest."""
+    collection, one object per tree (instanced trees share their variant's mesh); returns the
+    sylva.Forest."""
     if settings.ground is None:
         raise ValueError("choose a ground object")
     depsgraph = context.evaluated_depsgraph_get()
@@ -166,18 +167,34 @@ def grow_forest(sylva, context, settings):
     wm.progress_begin(0, 100)
     try:
         forest = project.build_forest(progress=lambda f, stage: wm.progress_update(int(f * 100)),
-                                      camera=camera, lod=settings.lod, adapt=settings.adapt)
+                                      camera=camera, lod=settings.lod, adapt=settings.adapt,
+                                      instancing=settings.instancing)
     finally:
         wm.progress_end()
 
     col = forest_collection(context.scene)
     mats = materials(sylva)
+    variants = forest.variants
+    shared = {}  # variant index -> its one Blender mesh, linked by every tree that shows it
     for tree in forest.trees:
-        obj = tree_object(col, tree.name, tree.mesh, mats)
+        # Without the camera's LOD an instanced tree shows its variant's very mesh: a linked
+        # duplicate (one mesh datablock per variant), so 10,000 trees stay light. With it, each
+        # tree has its own level of detail and its own mesh.
+        if tree.instanced and not settings.lod:
+            data = shared.get(tree.variant)
+            if data is None:
+                v = variants[tree.variant]
+                data = shared[tree.variant] = mesh_data(v.name, v.mesh, mats)
+            obj = bpy.data.objects.new(tree.name, data)
+            col.objects.link(obj)
+        else:
+            obj = tree_object(col, tree.name, tree.mesh, mats)
         x, y, z = tree.position
         obj.location = (x, -z, y)
         obj.rotation_euler = (0.0, 0.0, tree.rotation)  # about Sylva's +Y = Blender's +Z
         obj.scale = (tree.scale,) * 3
         obj["sylva_species"] = tree.species
         obj["sylva_seed"] = str(tree.seed)  # 64-bit: too large for an ID property int
+        obj["sylva_id"] = str(tree.id)  # the tree's stable id (exports carry it too)
+        obj["sylva_variant"] = variants[tree.variant].name if tree.instanced else ""
     return forest

@@ -38,10 +38,10 @@ void Document::replace(Project project, const QString& path) {
     mUndo.clear();
     mProject = std::move(project);
     mPath = path;
+    assignIds(mProject);
     mTreeIds.clear();
-    mNextTreeId = 1;
-    for (std::size_t i = 0; i < mProject.instances.size(); ++i)
-        mTreeIds.push_back(mNextTreeId++);
+    for (const ProjectInstance& t : mProject.instances)
+        mTreeIds.push_back(static_cast<TreeId>(t.id));
     mSelection.clear();
     mUndo.setClean();
     emitChange(DocumentChange::Reset);
@@ -86,6 +86,12 @@ void Document::restore(Project project, const QString& path) {
 
 // --- trees ------------------------------------------------------------------------------
 
+TreeId Document::nextTreeId() const {
+    if (mProject.nextTreeId > kMaxTreeId)
+        throw LimitExceeded("a project's tree ids are limited to " + std::to_string(kMaxTreeId));
+    return static_cast<TreeId>(mProject.nextTreeId);
+}
+
 int Document::treeIndex(TreeId id) const {
     const auto it = std::find(mTreeIds.begin(), mTreeIds.end(), id);
     return it == mTreeIds.end() ? -1 : static_cast<int>(it - mTreeIds.begin());
@@ -115,7 +121,7 @@ void Document::validateTree(const ProjectInstance& t) const {
 
 TreeId Document::addTree(const ProjectInstance& t) {
     validateTree(t);
-    const TreeId id = takeNextTreeId();
+    const TreeId id = nextTreeId();
     mUndo.push(new cmd::AddTree(*this, static_cast<int>(mTreeIds.size()), id, t));
     return id;
 }
@@ -123,7 +129,9 @@ TreeId Document::addTree(const ProjectInstance& t) {
 void Document::setTree(TreeId id, const ProjectInstance& t, bool commit) {
     (void)tree(id);
     validateTree(t);
-    mUndo.push(cmd::changeTree(*this, id, t, commit));
+    ProjectInstance same = t; // a tree keeps its id whatever the caller's copy says
+    same.id = id;
+    mUndo.push(cmd::changeTree(*this, id, same, commit));
 }
 
 void Document::removeTrees(const QList<TreeId>& ids) {
@@ -148,8 +156,8 @@ QList<TreeId> Document::duplicateTrees(const QList<TreeId>& ids, glm::vec3 offse
         ProjectInstance copy = tree(id);
         copy.position += offset;
         // A fresh seed that depends only on the document's state, so scripts are repeatable.
-        copy.seed = treeSeed(mixSeed(copy.seed, mNextTreeId));
-        const TreeId newId = takeNextTreeId();
+        copy.seed = treeSeed(mixSeed(copy.seed, mProject.nextTreeId));
+        const TreeId newId = nextTreeId();
         mUndo.push(new cmd::AddTree(*this, static_cast<int>(mTreeIds.size()), newId, copy));
         created << newId;
     }
@@ -159,6 +167,8 @@ QList<TreeId> Document::duplicateTrees(const QList<TreeId>& ids, glm::vec3 offse
 
 void Document::rawInsertTree(int index, TreeId id, const ProjectInstance& t) {
     mProject.instances.insert(mProject.instances.begin() + index, t);
+    mProject.instances[static_cast<std::size_t>(index)].id = id;
+    mProject.nextTreeId = std::max<std::uint64_t>(mProject.nextTreeId, std::uint64_t(id) + 1);
     mTreeIds.insert(mTreeIds.begin() + index, id);
     emitChange(DocumentChange::Trees, {id});
 }
@@ -175,6 +185,7 @@ ProjectInstance Document::rawRemoveTree(TreeId id) {
 
 void Document::rawSetTree(TreeId id, const ProjectInstance& t) {
     mProject.instances[static_cast<std::size_t>(treeIndex(id))] = t;
+    mProject.instances[static_cast<std::size_t>(treeIndex(id))].id = id;
     emitChange(DocumentChange::Trees, {id});
 }
 
@@ -536,7 +547,15 @@ void Document::setObstacle(int index, const ProjectObstacle& o, bool commit) {
 }
 
 void Document::addDomain(const PlacementDomain& d) {
-    mUndo.push(cmd::addDomain(*this, static_cast<int>(mProject.domains.size()), d));
+    PlacementDomain fresh = d;
+    // A new domain gets an id above every other: its trees' ids are new too.
+    fresh.id = 0;
+    for (const PlacementDomain& other : mProject.domains)
+        fresh.id = std::max(fresh.id, other.id);
+    if (++fresh.id > kMaxDomainId)
+        throw LimitExceeded("a project's domain ids are limited to " +
+                            std::to_string(kMaxDomainId));
+    mUndo.push(cmd::addDomain(*this, static_cast<int>(mProject.domains.size()), fresh));
 }
 
 void Document::removeDomain(int index) {
@@ -554,7 +573,9 @@ void Document::setDomain(int index, const PlacementDomain& d, bool commit) {
     }
     if (d.shape == "rectangle" && (d.min.x > d.max.x || d.min.y > d.max.y))
         throw InvalidInput("a rectangle domain needs min <= max");
-    mUndo.push(cmd::changeDomain(*this, index, d, commit));
+    PlacementDomain same = d; // a domain keeps its id (and its trees theirs)
+    same.id = mProject.domains[static_cast<std::size_t>(index)].id;
+    mUndo.push(cmd::changeDomain(*this, index, same, commit));
 }
 
 Document::Settings Document::settings() const {

@@ -17,9 +17,9 @@
 
 namespace sylva::doc {
 
-/// A tree's identity in the open document: stable while the document is open (undo of a
-/// removal gives the tree its id back), assigned 1, 2, … in file order when a file is opened.
-/// Not saved: a project's trees are its instances, in order.
+/// A hand-placed tree's identity: ProjectInstance::id, saved in the project file, kept by every
+/// edit (undo of a removal gives the tree its id back) and never given to another tree
+/// (Project::nextTreeId). Exports name the tree by it. At most kMaxTreeId, so 32 bits hold it.
 using TreeId = std::uint32_t;
 
 /// What an edit changed, so that views update and generation regrows only that.
@@ -216,7 +216,11 @@ public:
     };
     Settings settings() const;
     void rawSetSettings(const Settings& settings);
-    TreeId takeNextTreeId() { return mNextTreeId++; }
+    /// The id the next added tree gets (Project::nextTreeId; adding it raises nextTreeId, and
+    /// undoing the add lowers it again, so undo gives back the exact bytes while no existing or
+    /// removed tree's id is ever given again). \throw LimitExceeded past kMaxTreeId.
+    TreeId nextTreeId() const;
+    void rawSetNextTreeId(std::uint64_t next) { mProject.nextTreeId = next; }
 
 Q_SIGNALS:
     void changed(const sylva::doc::DocumentChange& change);
@@ -242,8 +246,7 @@ private:
     void pruneSelection();
 
     Project mProject;
-    std::vector<TreeId> mTreeIds; ///< parallel to mProject.instances
-    TreeId mNextTreeId = 1;
+    std::vector<TreeId> mTreeIds; ///< parallel to mProject.instances (their ids)
     QString mPath;
     QUndoStack mUndo;
     QList<ItemRef> mSelection;

@@ -11,7 +11,10 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 namespace sylva::doc {
 
@@ -21,8 +24,19 @@ using graph::vec3Of;
 using sylva::Value;
 
 const std::vector<std::string> kKnownKeys = {
-    "format",    "format_version", "app_version", "seed",  "species", "domains",
-    "instances", "obstacles",      "camera",      "light", "season"};
+    "format",    "format_version", "app_version", "seed",  "species",      "domains",
+    "instances", "obstacles",      "camera",      "light", "next_tree_id", "season"};
+
+/// An optional id: a whole number in [1, \p max], or 0 when the key is absent.
+std::uint64_t idOf(const Value& v, const std::string& where, std::uint64_t max) {
+    const Value* id = v.find("id");
+    if (!id) return 0;
+    const double x = id->toNumber(where + ".id");
+    if (!(x >= 1 && x <= static_cast<double>(max) && x == std::floor(x)))
+        throw InvalidInput(where + ".id must be a whole number in [1, " + std::to_string(max) +
+                           "]");
+    return static_cast<std::uint64_t>(x);
+}
 
 glm::vec2 vec2Of(const Value& v, const std::string& what) {
     const Value::Array& a = v.toArray(what);
@@ -54,6 +68,12 @@ ProjectSpecies parseSpeciesRef(const Value& v, std::size_t i) {
         if (!s.graph) throw InvalidInput(where + ": \"traits\" belong to an inline \"graph\"");
         s.traits = *t;
     }
+    if (const Value* k = v.find("variants")) {
+        const double x = k->toNumber(where + ".variants");
+        if (!(x >= 0 && x <= 256 && x == std::floor(x)))
+            throw InvalidInput(where + ".variants must be a whole number in [0, 256]");
+        s.variants = static_cast<int>(x);
+    }
     if (s.file.empty() == !s.graph.has_value())
         throw InvalidInput(where + " (\"" + s.name +
                            "\") needs exactly one of \"file\" or \"graph\"");
@@ -63,6 +83,7 @@ ProjectSpecies parseSpeciesRef(const Value& v, std::size_t i) {
 PlacementDomain parseDomain(const Value& v, std::size_t i) {
     const std::string where = "domains[" + std::to_string(i) + "]";
     PlacementDomain d;
+    d.id = idOf(v, where, kMaxDomainId);
     d.shape = v.string("shape", "rectangle");
     if (d.shape == "rectangle") {
         const Value* mn = v.find("min");
@@ -112,6 +133,7 @@ std::string checkedSeason(const std::string& name, const std::string& where) {
 ProjectInstance parseInstance(const Value& v, std::size_t i) {
     const std::string where = "instances[" + std::to_string(i) + "]";
     ProjectInstance in;
+    in.id = idOf(v, where, kMaxTreeId);
     in.species = v.string("species", "");
     if (in.species.empty()) throw InvalidInput(where + " needs a \"species\"");
     in.position = vec3Or(v, "position", in.position, where);
@@ -139,9 +161,55 @@ ProjectObstacle parseObstacle(const Value& v, std::size_t i) {
 } // namespace
 
 const std::vector<UpgradeStep>& projectUpgrades() {
-    // format_version 1 is the first released format; future steps go here, in order.
-    static const std::vector<UpgradeStep> steps;
+    // format_version 1 is the first released format; steps go here, in order.
+    static const std::vector<UpgradeStep> steps = {
+        {1,
+         "format 2: hand-placed trees and domains get stable ids (trees 1, 2, ... in file order, "
+         "as the editor numbered them; domains 1, 2, ...); domains now scatter their trees "
+         "independently of hand-placed trees, so the forest's domain trees change once",
+         [](Value::Object& root) {
+             std::uint64_t next = 1;
+             if (auto it = root.find("instances"); it != root.end() && it->second.isArray())
+                 for (Value& in : it->second.arrayRef())
+                     if (in.isObject()) in.objectRef()["id"] = static_cast<double>(next++);
+             root["next_tree_id"] = static_cast<double>(next);
+             std::uint64_t domain = 1;
+             if (auto it = root.find("domains"); it != root.end() && it->second.isArray())
+                 for (Value& d : it->second.arrayRef())
+                     if (d.isObject()) d.objectRef()["id"] = static_cast<double>(domain++);
+         }},
+    };
     return steps;
+}
+
+void assignIds(Project& p) {
+    std::set<std::uint64_t> trees;
+    std::uint64_t maxTree = 0;
+    for (const ProjectInstance& t : p.instances)
+        maxTree = std::max(maxTree, t.id);
+    p.nextTreeId = std::max(p.nextTreeId, maxTree + 1);
+    for (ProjectInstance& t : p.instances) {
+        if (t.id == 0 || !trees.insert(t.id).second) {
+            if (p.nextTreeId > kMaxTreeId)
+                throw LimitExceeded("a project's tree ids are limited to " +
+                                    std::to_string(kMaxTreeId));
+            t.id = p.nextTreeId++;
+            trees.insert(t.id);
+        }
+    }
+    std::set<std::uint64_t> domains;
+    std::uint64_t maxDomain = 0;
+    for (const PlacementDomain& d : p.domains)
+        maxDomain = std::max(maxDomain, d.id);
+    for (PlacementDomain& d : p.domains) {
+        if (d.id == 0 || !domains.insert(d.id).second) {
+            if (maxDomain >= kMaxDomainId)
+                throw LimitExceeded("a project's domain ids are limited to " +
+                                    std::to_string(kMaxDomainId));
+            d.id = ++maxDomain;
+            domains.insert(d.id);
+        }
+    }
 }
 
 QString Project::resolve(const std::string& relative) const {
@@ -197,6 +265,13 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
         if (const Value* v = root.find("obstacles"))
             for (std::size_t i = 0; i < v->toArray("obstacles").size(); ++i)
                 p.obstacles.push_back(parseObstacle(v->toArray()[i], i));
+        if (const Value* next = root.find("next_tree_id")) {
+            const double x = next->toNumber("next_tree_id");
+            if (!(x >= 1 && x <= static_cast<double>(kMaxTreeId) + 1 && x == std::floor(x)))
+                throw InvalidInput("next_tree_id must be a whole number in [1, " +
+                                   std::to_string(kMaxTreeId + 1) + "]");
+            p.nextTreeId = static_cast<std::uint64_t>(x);
+        }
         if (const Value* cam = root.find("camera")) {
             p.cameraPosition = vec3Or(*cam, "position", p.cameraPosition, "camera");
             p.cameraTarget = vec3Or(*cam, "target", p.cameraTarget, "camera");
@@ -219,6 +294,18 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
         for (const ProjectInstance& in : p.instances)
             if (!p.findSpecies(in.species))
                 throw InvalidInput("instance names unknown species \"" + in.species + "\"");
+        // Ids name trees in every export: two items with one id are an error, not a guess.
+        // Missing ids (a hand-written file) are given.
+        std::map<std::uint64_t, std::size_t> treeIds, domainIds;
+        for (std::size_t i = 0; i < p.instances.size(); ++i)
+            if (const std::uint64_t id = p.instances[i].id; id && !treeIds.emplace(id, i).second)
+                throw InvalidInput("instances[" + std::to_string(treeIds[id]) + "] and instances[" +
+                                   std::to_string(i) + "] have the same id " + std::to_string(id));
+        for (std::size_t i = 0; i < p.domains.size(); ++i)
+            if (const std::uint64_t id = p.domains[i].id; id && !domainIds.emplace(id, i).second)
+                throw InvalidInput("domains[" + std::to_string(domainIds[id]) + "] and domains[" +
+                                   std::to_string(i) + "] have the same id " + std::to_string(id));
+        assignIds(p);
         for (const auto& [key, value] : root.toObject()) {
             bool known = false;
             for (const std::string& k : kKnownKeys)
@@ -251,7 +338,10 @@ Project loadProjectOrScene(const QString& path, LoadReport* report) {
     return parseProject(bytes, path, report);
 }
 
-QByteArray serializeProject(const Project& p) {
+QByteArray serializeProject(const Project& project) {
+    // A project built in memory may lack ids: saved with the ids loading it would give.
+    Project p = project;
+    assignIds(p);
     Value::Object root = p.extra;
     root["format"] = "sylva-project";
     root["format_version"] = kProjectFormatVersion;
@@ -259,7 +349,7 @@ QByteArray serializeProject(const Project& p) {
     root["seed"] = static_cast<double>(p.seed);
     Value::Array species;
     for (const ProjectSpecies& s : p.species) {
-        Value::Object o{{"name", s.name}};
+        Value::Object o{{"name", s.name}, {"variants", s.variants}};
         if (s.graph) {
             o["graph"] = *s.graph;
             if (s.traits) o["traits"] = *s.traits;
@@ -271,6 +361,7 @@ QByteArray serializeProject(const Project& p) {
     Value::Array domains;
     for (const PlacementDomain& d : p.domains) {
         Value::Object o{{"shape", d.shape}};
+        if (d.id) o["id"] = static_cast<double>(d.id);
         if (d.shape == "rectangle") {
             o["min"] = arrayOf(d.min);
             o["max"] = arrayOf(d.max);
@@ -291,7 +382,8 @@ QByteArray serializeProject(const Project& p) {
     root["domains"] = Value(std::move(domains));
     Value::Array instances;
     for (const ProjectInstance& in : p.instances) {
-        Value::Object o{{"species", in.species},
+        Value::Object o{{"id", static_cast<double>(in.id)},
+                        {"species", in.species},
                         {"position", arrayOf(in.position)},
                         {"rotation", in.rotation},
                         {"scale", in.scale},
@@ -309,6 +401,7 @@ QByteArray serializeProject(const Project& p) {
                                              {"rotate", arrayOf(o.rotate)},
                                              {"scale", arrayOf(o.scale)}});
     root["obstacles"] = Value(std::move(obstacles));
+    root["next_tree_id"] = static_cast<double>(p.nextTreeId);
     root["camera"] =
         Value::Object{{"position", arrayOf(p.cameraPosition)}, {"target", arrayOf(p.cameraTarget)}};
     root["light"] = Value::Object{{"direction", arrayOf(p.lightDirection)}};
@@ -362,6 +455,7 @@ Project importReferenceScene(const QString& path) {
             o.file = m.isString() ? m.toString() : m.string("file", "");
             p.obstacles.push_back(o);
         }
+    assignIds(p);
     return p;
 }
 

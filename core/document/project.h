@@ -17,7 +17,16 @@
 namespace sylva::doc {
 
 /// Current version of the project format ("format": "sylva-project").
-inline constexpr int kProjectFormatVersion = 1;
+/// 2 (Sylva 0.30, issue 30): trees and domains carry stable ids, species their variant count,
+/// and domains scatter independently of hand-placed trees (see projectUpgrades()).
+inline constexpr int kProjectFormatVersion = 2;
+
+/// Ids of hand-placed trees are in [1, kMaxTreeId] (domain trees' ids are above: see
+/// placement::kDomainIdStride); domain ids in [1, kMaxDomainId].
+inline constexpr std::uint64_t kMaxTreeId = 999'999'999ull;
+inline constexpr std::uint64_t kMaxDomainId = 9'000'000'000ull;
+/// Default number of variants per species (ProjectSpecies::variants).
+inline constexpr int kDefaultVariants = 8;
 
 /// A species used by the project: a species file (relative to the project) or an inline graph.
 struct ProjectSpecies {
@@ -26,11 +35,17 @@ struct ProjectSpecies {
     std::optional<sylva::Value> graph; ///< inline {"nodes": [...], "output": ...}
     /// Inline species only: the species file's "traits" (wood density, carbon, crown radius).
     std::optional<sylva::Value> traits;
+    /// K: how many variants the species' instanced trees share (0..256; "variants"); 0: none,
+    /// every tree of the species is grown for its place.
+    int variants = kDefaultVariants;
     bool operator==(const ProjectSpecies&) const = default;
 };
 
 /// Where trees are scattered and how many of each species.
 struct PlacementDomain {
+    /// Stable id: seeds the domain's own scattering and names its trees (domain id · 10^9 +
+    /// slot). 0 until assignIds() gives it one.
+    std::uint64_t id = 0;
     std::string shape = "rectangle";   ///< "rectangle" | "polygon" | "terrain"
     glm::vec2 min{-50.0f}, max{50.0f}; ///< x and z on the ground (rectangle), metres
     std::vector<glm::vec2> polygon;    ///< x,z corners (polygon)
@@ -41,6 +56,9 @@ struct PlacementDomain {
 
 /// A tree placed by hand.
 struct ProjectInstance {
+    /// Stable id, kept in the file and by every edit, never reused within a project (see
+    /// Project::nextTreeId). 0 until assignIds() gives it one.
+    std::uint64_t id = 0;
     std::string species;
     glm::vec3 position{0.0f};
     double rotation = 0.0; ///< degrees about +Y
@@ -76,6 +94,9 @@ struct Project {
     std::vector<PlacementDomain> domains;
     std::vector<ProjectInstance> instances;
     std::vector<ProjectObstacle> obstacles;
+    /// The id the next hand-placed tree gets: above every id the project ever gave, so a removed
+    /// tree's id is never given again ("next_tree_id" in the file).
+    std::uint64_t nextTreeId = 1;
     glm::vec3 cameraPosition{0.0f, 20.0f, 80.0f}, cameraTarget{0.0f};
     glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
     /// The season of every tree without its own ("spring", "summer", "autumn", "winter");
@@ -95,6 +116,12 @@ struct Project {
     std::uint64_t newTreeSeed(std::size_t treesBefore) const;
     bool operator==(const Project&) const = default;
 };
+
+/// Gives an id to every tree and domain without one (0) or with one an earlier item already has:
+/// trees from nextTreeId on, domains above the largest domain id; raises nextTreeId above every
+/// tree id. Loading, the document and makeForestScene call it, so projects built in memory
+/// (scripts) get ids too. \throw LimitExceeded when the ids run out.
+void assignIds(Project& project);
 
 /// Warnings produced while loading (upgrades applied, newer file).
 struct LoadReport {

@@ -8,10 +8,23 @@
 #include <QFileInfo>
 
 #include <cmath>
+#include <optional>
 
 namespace sylva::doc {
 
-forest::ForestScene makeForestScene(const Project& project) {
+forest::ForestScene makeForestScene(const Project& original) {
+    // Ids name the trees: a project built in memory without them gets the ones saving would give.
+    std::optional<Project> withIds;
+    bool missing = false;
+    for (const ProjectInstance& t : original.instances)
+        missing = missing || t.id == 0;
+    for (const PlacementDomain& d : original.domains)
+        missing = missing || d.id == 0;
+    if (missing) {
+        withIds = original;
+        assignIds(*withIds);
+    }
+    const Project& project = withIds ? *withIds : original;
     forest::ForestScene s;
     s.seed = project.seed;
     s.camera = project.cameraPosition;
@@ -22,6 +35,7 @@ forest::ForestScene makeForestScene(const Project& project) {
     for (const ProjectSpecies& ps : project.species) {
         forest::SceneSpecies species;
         species.name = ps.name;
+        species.variants = ps.variants;
         if (ps.graph) {
             species.graph = speciesFromGraph(ps.name, *ps.graph, ps.traits, project.baseDir);
         } else {
@@ -44,6 +58,7 @@ forest::ForestScene makeForestScene(const Project& project) {
 
     for (const PlacementDomain& d : project.domains) {
         placement::Domain domain;
+        domain.id = d.id;
         if (d.shape == "polygon") {
             domain.shape = placement::DomainShape::Polygon;
             domain.polygon = d.polygon;
@@ -63,10 +78,9 @@ forest::ForestScene makeForestScene(const Project& project) {
         s.domains.push_back(std::move(domain));
     }
 
-    std::uint32_t id = 0;
     for (const ProjectInstance& pi : project.instances) {
         placement::Instance in;
-        in.id = id++;
+        in.id = pi.id;
         in.species = speciesIndex.at(pi.species);
         in.position = pi.position;
         const double turns = pi.rotation / 360.0 - std::floor(pi.rotation / 360.0); // [0, 1)

@@ -10,7 +10,10 @@ Debian's zlib gives the committed bytes, zlib-ng would not).
 
   presets/textures/<species>_bark.png  256x256 RGB, tiles in both directions (u around the
                                        branch, v along it)
-  presets/textures/<species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0)
+  presets/textures/<species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0); the
+                                       conifers' are needle clusters (pine: long paired needles)
+  presets/textures/<species>_leafcluster.png  512x512 RGBA leaf cluster atlas of a broadleaf:
+                                       three sprays and the single leaf, 2 x 2 tiles
   resources/textures/bark.png          256x256 RGB, the default bark
   resources/textures/leaf.png          256x512 RGBA, the default pointed leaf with veins
 
@@ -325,6 +328,7 @@ def finish_leaf(name, w, h, mask, rgb, relief=None, roughness=0.55):
     col[~filled] = mean
     rgba = np.concatenate([col, a[..., None]], axis=-1)
     write_png(os.path.join(HERE, name), to_bytes(rgba))
+    return rgba
 
 
 def blade_shading(x, t, width, base, seed, veins=8, vein_angle=0.6, midrib=0.03, gloss=0.1):
@@ -362,8 +366,8 @@ def simple_leaf(name, w, h, width_fn, base, seed, stem=0.08, **shading):
     width = width_fn(k, x)
     mask = ((np.abs(x) < width) & (t > stem)) | ((t <= stem + 0.01) & (np.abs(x) < 0.05))
     rgb = blade_shading(x, k, width, base, seed, **shading)
-    finish_leaf(name, w, h, mask, rgb, relief=blade_relief(x, k, width, **shading),
-                roughness=0.6 - shading.get("gloss", 0.1))
+    return finish_leaf(name, w, h, mask, rgb, relief=blade_relief(x, k, width, **shading),
+                       roughness=0.6 - shading.get("gloss", 0.1))
 
 
 def oak_width(k, x):
@@ -424,7 +428,8 @@ def maple_leaf(name, w, h, base, seed):
         vein |= (np.abs(across) < 0.025) & (along > 0)
     rgb = np.where(vein[..., None], rgb * 0.6 + 0.4 * (np.asarray(base) * 1.4 + 0.05), rgb)
     rgb = rgb * (0.8 + 0.2 * np.clip(1 - r / 1.1, 0, 1))[..., None] + 0.05
-    finish_leaf(name, w, h, mask, rgb, relief=1.0 - 0.5 * vein - 0.2 * np.clip(r / 1.1, 0, 1))
+    return finish_leaf(name, w, h, mask, rgb,
+                       relief=1.0 - 0.5 * vein - 0.2 * np.clip(r / 1.1, 0, 1))
 
 
 def strokes(x, t, segs, aspect):
@@ -465,6 +470,38 @@ def needle_tuft(name, w, h, base, seed, count=220, spread=55, length=(0.75, 0.98
     shade = 0.8 + 0.3 * np.kron(noise((h, w), 2, 8, seed), np.ones((SS, SS)))
     rgb = np.asarray(base) * shade[..., None] * (0.75 + 0.35 * t)[..., None]
     finish_leaf(name, w, h, mask, rgb)
+
+
+def pine_shoot(name, w, h, base, seed, fascicles=46, twig=(0.45, 0.30, 0.18)):
+    """Scots pine (issue #33): a shoot seen from the side with its needles in pairs, long (a
+    third to a half of the card), thin and stiff, each pair turned forward at its own angle and
+    shaded on its own, so the card reads as a brush of needles with light between them, not as
+    one broad leaf. Shoot up the middle from the stem (bottom edge) to near the top."""
+    rng = np.random.default_rng(seed)
+    x, t = canvas(w, h)
+    aspect = (w / h) / 2.0
+    mask = strokes(x, t, [(0.0, 0.0, 0.0, 0.86, 0.016)], aspect)
+    rgb = np.zeros(x.shape + (3,), np.float32) + np.asarray(twig, np.float32)
+    base = np.asarray(base, np.float32)
+    for i in range(fascicles):
+        s = 0.06 + 0.80 * (i + rng.uniform(0, 1)) / fascicles
+        for side in (-1, 1):
+            ang = math.radians(rng.uniform(22, 62)) * side * (1 if rng.random() < 0.85 else -1)
+            L = rng.uniform(0.36, 0.52) * (1 - 0.35 * max(0.0, s - 0.55))
+            bend = rng.uniform(-0.06, 0.06)
+            mx = math.sin(ang) * L * 0.5 / aspect
+            mt = s + math.cos(ang) * L * 0.5
+            ex = math.sin(ang + bend) * L / aspect
+            et = s + math.cos(ang + bend) * L * 0.97
+            ex = float(np.clip(ex, -0.98, 0.98))
+            et = min(0.995, et)
+            needle = strokes(x, t, [(0.0, s, mx, mt, 0.0055), (mx, mt, ex, et, 0.0045)], aspect)
+            tone = rng.uniform(0.7, 1.15)
+            # Lighter toward the tip, darker inside the brush.
+            col = base * tone * (0.75 + 0.45 * np.clip((t - s) / max(L, 1e-3), 0, 1))[..., None]
+            rgb = np.where(needle[..., None], col, rgb)
+            mask = mask | needle
+    finish_leaf(name, w, h, mask, np.clip(rgb, 0, 1))
 
 
 def sprig(name, w, h, base, seed, needle=0.18, density=70, angle=55, twig=(0.40, 0.27, 0.17)):
@@ -730,29 +767,155 @@ def default_leaf(path, width=256, height=512):
     write_png(path[:-4] + "_roughness.png", to_bytes(np.clip(0.55 + 0.25 * (1 - hn), 0, 1)))
 
 
+# ----------------------------------------------------------------------------- leaf clusters
+
+def paste_leaf(rgb, alpha, leaf, ax, ay, dx, dy, length, width, shade):
+    """Draws the leaf image (RGBA, stem at the bottom row) into a supersampled tile: stem at
+    (ax, ay), pointing along the unit (dx, dy), length and width in tile pixels; over what is
+    there (later leaves in front)."""
+    H, W = alpha.shape
+    lh, lw = leaf.shape[:2]
+    qx, qy = dy, -dx  # across, to the right of the heading
+    ends = [(ax, ay), (ax + dx * length, ay + dy * length)]
+    xs = [e[0] + sgn * qx * width / 2 for e in ends for sgn in (-1, 1)]
+    ys = [e[1] + sgn * qy * width / 2 for e in ends for sgn in (-1, 1)]
+    x0, x1 = max(0, int(min(xs)) - 1), min(W, int(max(xs)) + 2)
+    y0, y1 = max(0, int(min(ys)) - 1), min(H, int(max(ys)) + 2)
+    if x0 >= x1 or y0 >= y1:
+        return
+    yy, xx = np.mgrid[y0:y1, x0:x1].astype(np.float32) + 0.5
+    px, py = xx - ax, yy - ay
+    t = (px * dx + py * dy) / length
+    u = (px * qx + py * qy) / (width / 2)
+    inside = (t >= 0) & (t < 1) & (np.abs(u) < 1)
+    col = np.clip(((u + 1) / 2 * lw).astype(int), 0, lw - 1)
+    row = np.clip(((1 - t) * lh).astype(int), 0, lh - 1)
+    sample = leaf[row, col]
+    a = np.where(inside, sample[..., 3], 0.0)
+    region = rgb[y0:y1, x0:x1]
+    region[:] = region * (1 - a[..., None]) + sample[..., :3] * shade * a[..., None]
+    alpha[y0:y1, x0:x1] = alpha[y0:y1, x0:x1] * (1 - a) + a
+
+
+def spray_tiles(leaf, aspect, seed, count, scale, twig, n):
+    """The three spray tiles of a cluster atlas (see cluster_atlas), leaves scale x as many and
+    sqrt(scale) x as long as at scale 1."""
+    rng = np.random.default_rng(seed)
+    tile = n // 2
+    rgb = np.zeros((n, n, 3), np.float32)
+    alpha = np.zeros((n, n), np.float32)
+    grow = math.sqrt(scale)
+    for k in range(3):
+        ox, oy = (k % 2) * tile, (1 - k // 2) * tile  # image rows run downward: tile 0 bottom-left
+        leaves = int(round(rng.integers(count[0], count[1] + 1) * scale))
+        bend = rng.uniform(-0.12, 0.12)
+        # Twig: from the middle of the bottom edge up, bending to one side.
+        pts = [(0.5 + bend * s * s, 0.02 + 0.78 * s) for s in np.linspace(0, 1, 12)]
+        order = []
+        for i in range(leaves):
+            s = 0.08 + 0.86 * i / max(leaves - 1, 1)
+            side = -1 if i % 2 else 1
+            if i == leaves - 1:
+                side = 0
+            order.append((s, side))
+        # Far leaves first (darker), near ones over them.
+        depth = rng.permutation(len(order))
+        for j in np.argsort(depth):
+            s, side = order[j]
+            cx, cy = 0.5 + bend * s * s, 0.02 + 0.78 * s
+            tang = np.array([2 * bend * s, 0.78])
+            tang /= np.linalg.norm(tang)
+            ang = 0.0 if side == 0 else side * math.radians(rng.uniform(30, 80))
+            dx = tang[0] * math.cos(ang) - tang[1] * math.sin(ang)
+            dy = tang[0] * math.sin(ang) + tang[1] * math.cos(ang)
+            length = min(0.62, rng.uniform(0.40, 0.50) * grow) * (1 - 0.25 * s) * (0.8 if side == 0 else 1.0)
+            turn = rng.uniform(0.7, 1.0)  # foreshortening: a leaf turned in depth
+            shade = 0.7 + 0.4 * depth[j] / max(len(order) - 1, 1)
+            # A leaf cut by the tile's edge would show the card's straight edge: shortened until
+            # its tip and its widest part stay inside the tile.
+            for _ in range(20):
+                half = 0.5 * length * aspect * turn
+                ok = True
+                for f, w in ((1.0, 0.0), (0.5, half), (0.5, -half)):
+                    px = cx + dx * length * f + dy * w
+                    py = cy + dy * length * f - dx * w
+                    ok = ok and 0.01 <= px <= 0.99 and 0.01 <= py <= 0.99
+                if ok:
+                    break
+                length *= 0.9
+            # Tile space (y up) to image rows (y down).
+            paste_leaf(rgb[oy:oy + tile, ox:ox + tile], alpha[oy:oy + tile, ox:ox + tile], leaf,
+                       cx * tile, (1 - cy) * tile, dx, -dy, length * tile,
+                       length * aspect * turn * tile, shade)
+        twig_mask = np.zeros((tile, tile), np.float32)
+        yy, xx = np.mgrid[0:tile, 0:tile].astype(np.float32) + 0.5
+        for (a0, b0), (a1, b1) in zip(pts[:-1], pts[1:]):
+            ax, ay, bx, by = a0 * tile, (1 - b0) * tile, a1 * tile, (1 - b1) * tile
+            vx, vy = bx - ax, by - ay
+            ss = np.clip(((xx - ax) * vx + (yy - ay) * vy) / (vx * vx + vy * vy), 0, 1)
+            d = np.hypot(xx - ax - ss * vx, yy - ay - ss * vy)
+            twig_mask = np.maximum(twig_mask, (d < 0.010 * tile * (1.2 - 0.6 * b0)).astype(np.float32))
+        # The twig behind the near leaves: only where the leaves leave it visible.
+        sub_rgb, sub_a = rgb[oy:oy + tile, ox:ox + tile], alpha[oy:oy + tile, ox:ox + tile]
+        show = twig_mask * (1 - sub_a)
+        sub_rgb[:] = sub_rgb + np.asarray(twig, np.float32) * show[..., None]
+        sub_a[:] = sub_a + show
+    return rgb, alpha
+
+
+def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17), size=512):
+    """A species' leaf cluster atlas (engine/mesh/leafclusters.h): 2 x 2 tiles, three sprays of
+    the species' leaf on a twig from the bottom edge of the tile (alternate sides, each leaf at
+    its own angle, foreshortened and shaded as if turned in depth) and the single leaf stretched
+    to the fourth tile. \p aspect is the leaf card's width / length. A cluster card covers what
+    its leaves' cards cover, so a spray must be about as opaque as the single leaf's card: the
+    sprays get more and longer leaves until their tiles are (nearly) as covered as the leaf."""
+    n = size * SS
+    tile = n // 2
+    target = float(leaf[..., 3].mean())
+    for scale in (1.0, 1.4, 1.9, 2.5, 3.2, 4.0, 5.0):
+        rgb, alpha = spray_tiles(leaf, aspect, seed, count, scale, twig, n)
+        if alpha[tile:, :].mean() >= 0.9 * target:
+            break
+    # Tile 3 (top right): the single leaf stretched to the tile.
+    lh, lw = leaf.shape[:2]
+    yy, xx = np.mgrid[0:tile, 0:tile]
+    sample = leaf[(yy * lh) // tile, (xx * lw) // tile]
+    rgb[0:tile, tile:n] = sample[..., :3] * sample[..., 3:4]
+    alpha[0:tile, tile:n] = sample[..., 3]
+    col = rgb / np.maximum(alpha, 1e-6)[..., None]
+    return finish_leaf(name, size, size, alpha, np.clip(col, 0, 1))
+
+
 # ----------------------------------------------------------------------------- the library
 
 def library():
     save_bark("english-oak_bark.png", bark_furrowed(101, (0.09, 0.08, 0.07), (0.50, 0.46, 0.40), ridges=5, cracks=0.9))
-    simple_leaf("english-oak_leaf.png", 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
+    leaf = simple_leaf("english-oak_leaf.png", 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
+    cluster_atlas("english-oak_leafcluster.png", leaf, 0.5, 103)
 
     save_bark("silver-birch_bark.png", bark_birch(), strength=3.0)
-    simple_leaf("silver-birch_leaf.png", 128, 256, birch_width, (0.36, 0.55, 0.14), 112, stem=0.12, veins=8, vein_angle=0.5)
+    leaf = simple_leaf("silver-birch_leaf.png", 128, 256, birch_width, (0.36, 0.55, 0.14), 112, stem=0.12, veins=8, vein_angle=0.5)
+    cluster_atlas("silver-birch_leafcluster.png", leaf, 0.5, 113)
 
     save_bark("european-beech_bark.png", bark_smooth(121, (0.56, 0.57, 0.55), 1.0, lenticels=0.3, rings=0.6), strength=2.5)
-    simple_leaf("european-beech_leaf.png", 128, 256, beech_width, (0.26, 0.46, 0.11), 122, stem=0.07, veins=7, vein_angle=0.35, gloss=0.2)
+    leaf = simple_leaf("european-beech_leaf.png", 128, 256, beech_width, (0.26, 0.46, 0.11), 122, stem=0.07, veins=7, vein_angle=0.35, gloss=0.2)
+    cluster_atlas("european-beech_leafcluster.png", leaf, 0.5, 123)
 
     save_bark("norway-maple_bark.png", bark_furrowed(131, (0.16, 0.14, 0.12), (0.48, 0.44, 0.38), ridges=11, depth=0.6, warp=0.2, cracks=0.2))
-    maple_leaf("norway-maple_leaf.png", 256, 256, (0.24, 0.48, 0.10), 132)
+    leaf = maple_leaf("norway-maple_leaf.png", 256, 256, (0.24, 0.48, 0.10), 132)
+    cluster_atlas("norway-maple_leafcluster.png", leaf, 1.0, 133)
 
     save_bark("weeping-willow_bark.png", bark_furrowed(141, (0.13, 0.11, 0.09), (0.50, 0.45, 0.36), ridges=7, warp=0.8, cracks=0.4))
-    simple_leaf("weeping-willow_leaf.png", 64, 256, willow_width, (0.47, 0.60, 0.22), 142, stem=0.03, veins=12, vein_angle=0.2)
+    leaf = simple_leaf("weeping-willow_leaf.png", 64, 256, willow_width, (0.47, 0.60, 0.22), 142, stem=0.03, veins=12, vein_angle=0.2)
+    cluster_atlas("weeping-willow_leafcluster.png", leaf, 0.25, 143)
 
     save_bark("lombardy-poplar_bark.png", bark_furrowed(151, (0.10, 0.10, 0.09), (0.42, 0.41, 0.38), ridges=8, warp=0.3, cracks=0.6))
-    simple_leaf("lombardy-poplar_leaf.png", 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
+    leaf = simple_leaf("lombardy-poplar_leaf.png", 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
+    cluster_atlas("lombardy-poplar_leafcluster.png", leaf, 0.5, 153)
 
     save_bark("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
-    needle_tuft("scots-pine_leaf.png", 256, 256, (0.24, 0.38, 0.33), 162)
+    pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
 
     save_bark("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
     sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)
@@ -781,20 +944,27 @@ PRESETS = os.path.dirname(HERE)
 SPRING = np.asarray((0.40, 0.60, 0.15))
 
 
+# The cluster atlas of each deciduous species: library()'s cluster_atlas arguments (the leaf
+# card's aspect and the sprays' seed).
+CLUSTERS = {"english-oak": (0.5, 103), "silver-birch": (0.5, 113), "european-beech": (0.5, 123),
+            "norway-maple": (1.0, 133), "weeping-willow": (0.25, 143),
+            "lombardy-poplar": (0.5, 153)}
+
+
 def deciduous_leaf(species, name):
-    """Draws \p species' leaf (library()'s call) under \p name."""
+    """Draws \p species' leaf (library()'s call) under \p name and returns its RGBA."""
     if species == "english-oak":
-        simple_leaf(name, 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
+        return simple_leaf(name, 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
     elif species == "silver-birch":
-        simple_leaf(name, 128, 256, birch_width, (0.36, 0.55, 0.14), 112, stem=0.12, veins=8, vein_angle=0.5)
+        return simple_leaf(name, 128, 256, birch_width, (0.36, 0.55, 0.14), 112, stem=0.12, veins=8, vein_angle=0.5)
     elif species == "european-beech":
-        simple_leaf(name, 128, 256, beech_width, (0.26, 0.46, 0.11), 122, stem=0.07, veins=7, vein_angle=0.35, gloss=0.2)
+        return simple_leaf(name, 128, 256, beech_width, (0.26, 0.46, 0.11), 122, stem=0.07, veins=7, vein_angle=0.35, gloss=0.2)
     elif species == "norway-maple":
-        maple_leaf(name, 256, 256, (0.24, 0.48, 0.10), 132)
+        return maple_leaf(name, 256, 256, (0.24, 0.48, 0.10), 132)
     elif species == "weeping-willow":
-        simple_leaf(name, 64, 256, willow_width, (0.47, 0.60, 0.22), 142, stem=0.03, veins=12, vein_angle=0.2)
+        return simple_leaf(name, 64, 256, willow_width, (0.47, 0.60, 0.22), 142, stem=0.03, veins=12, vein_angle=0.2)
     elif species == "lombardy-poplar":
-        simple_leaf(name, 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
+        return simple_leaf(name, 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
     else:
         raise ValueError("no deciduous leaf drawing for " + species)
 
@@ -840,11 +1010,19 @@ def seasons():
         leaf = species + "_leaf"
         autumn = np.asarray(autumn, np.float64)
         try:
-            SEASON_RECOLOR = recolor_to(SPRING, 0)
-            deciduous_leaf(species, leaf + "_spring.png")
             # Autumn leaves are not one colour: patches turn darker and browner first.
-            SEASON_RECOLOR = recolor_to(autumn, 7, autumn * 0.55 + np.asarray((0.08, 0.04, 0.01)))
-            deciduous_leaf(species, leaf + "_autumn.png")
+            for season, recolor in (("spring", recolor_to(SPRING, 0)),
+                                    ("autumn", recolor_to(autumn, 7, autumn * 0.55 +
+                                                          np.asarray((0.08, 0.04, 0.01))))):
+                SEASON_RECOLOR = recolor
+                rgba = deciduous_leaf(species, leaf + "_" + season + ".png")
+                # The season's cluster atlas: the same sprays (same seed) of the season's leaf;
+                # already recoloured, so kept as it is, and like the leaf it shares the summer
+                # atlas's normal and roughness maps.
+                if species in CLUSTERS:
+                    SEASON_RECOLOR = lambda rgb, mask: rgb
+                    aspect, seed = CLUSTERS[species]
+                    cluster_atlas(species + "_leafcluster_" + season + ".png", rgba, aspect, seed)
         finally:
             SEASON_RECOLOR = None
 

@@ -1,5 +1,7 @@
 // sylva.Project, sylva.Forest, sylva.ForestTree: a forest built as `sylva-cli forest` builds
 // it, with obstacles and a ground that may also come from arrays (a DCC tool's own meshes).
+#include <algorithm>
+#include <map>
 #include <optional>
 
 #include <omp.h>
@@ -42,10 +44,18 @@ struct ForestTreeRef {
     const forest::ForestTree& tree() const { return (*all)[index]; }
 };
 
+/// sylva.ForestVariant: one of a species' K variants that instanced trees share.
+struct VariantRef {
+    std::shared_ptr<const std::vector<forest::ForestVariant>> all;
+    std::size_t index = 0;
+    std::string species;
+    const forest::ForestVariant& variant() const { return (*all)[index]; }
+};
+
 struct Forest {
     std::shared_ptr<const std::vector<forest::ForestTree>> trees;
     /// The variants the trees' ForestTree::variant indexes (written once by glTF).
-    std::vector<exporter::ExportVariant> variants;
+    std::shared_ptr<const std::vector<forest::ForestVariant>> variants;
     std::vector<std::string> speciesNames;
     py::dict stats;
 };
@@ -56,8 +66,9 @@ struct BuildOptions {
 };
 
 BuildOptions buildOptions(const py::object& camera, bool lod, bool adapt, bool neighbours,
-                          const py::object& tile, std::optional<int> threads) {
+                          bool instancing, const py::object& tile, std::optional<int> threads) {
     BuildOptions b;
+    b.options.instancing = instancing;
     b.options.useLod = lod;
     b.options.adapt = adapt;
     b.options.neighbours = neighbours;
@@ -93,6 +104,9 @@ py::dict statsDict(const forest::ForestStats& stats, const forest::ForestScene& 
     d["obstacle_triangles"] = s.obstacles ? s.obstacles->triangleCount() : 0;
     d["colliding_trees"] = stats.collidingTrees;
     d["pruned_nodes"] = stats.prunedNodes;
+    d["instanced"] = stats.instanced;
+    d["unique"] = stats.unique;
+    d["variants"] = stats.variants;
     std::size_t missing = 0;
     py::list shortfalls;
     for (const placement::Shortfall& sf : stats.shortfalls) {
@@ -242,6 +256,17 @@ void bindForest(py::module_& m) {
         .def_property_readonly("hand_placed",
                                [](const ForestTreeRef& t) { return t.tree().instance.handPlaced; })
         .def_property_readonly(
+            "instanced", [](const ForestTreeRef& t) { return t.tree().variant >= 0; },
+            "whether the tree is an instance of one of its species' variants (it touches no "
+            "obstacle and no neighbour's crown); False: grown and adapted for its place")
+        .def_property_readonly(
+            "variant",
+            [](const ForestTreeRef& t) -> py::object {
+                if (t.tree().variant < 0) return py::none();
+                return py::int_(t.tree().variant);
+            },
+            "index into Forest.variants for an instanced tree, None for a unique one")
+        .def_property_readonly(
             "transform",
             [](const ForestTreeRef& t) {
                 const glm::mat4 mat = t.tree().instance.transform();
@@ -252,8 +277,10 @@ void bindForest(py::module_& m) {
                 return makeArray(rows, 4, 4);
             },
             "4×4 local-to-world matrix (row-major: world = M @ (x, y, z, 1))")
-        .def_property_readonly("mesh",
-                               [](const ForestTreeRef& t) { return MeshRef{t.tree().mesh}; })
+        .def_property_readonly(
+            "mesh", [](const ForestTreeRef& t) { return MeshRef{t.tree().mesh}; },
+            "the tree's mesh in its own frame (an instanced tree's is its variant's, meshed at "
+            "the tree's camera distance when built with lod=True, else the variant's own)")
         .def(
             "world_positions",
             [](const ForestTreeRef& t) {
@@ -278,6 +305,27 @@ void bindForest(py::module_& m) {
                    std::to_string(p.y) + ", " + std::to_string(p.z) + ")>";
         });
 
+    py::class_<VariantRef>(m, "ForestVariant",
+                           "One of a species' K variants: grown once at full growth, never "
+                           "adapted; instanced trees show it with their own transform.")
+        .def_property_readonly(
+            "index", [](const VariantRef& v) { return v.index; },
+            "its place in Forest.variants (ForestTree.variant)")
+        .def_property_readonly(
+            "name", [](const VariantRef& v) { return v.variant().name; }, "\"<species>_v<k>\"")
+        .def_readonly("species", &VariantRef::species)
+        .def_property_readonly(
+            "species_variant", [](const VariantRef& v) { return v.variant().index; },
+            "k, 0..K-1 within its species")
+        .def_property_readonly("seed", [](const VariantRef& v) { return v.variant().seed; })
+        .def_property_readonly(
+            "mesh", [](const VariantRef& v) { return MeshRef{v.variant().mesh}; },
+            "full detail, in the variant's own frame (scale 1)")
+        .def_property_readonly("metrics",
+                               [](const VariantRef& v) { return metricsDict(v.variant().metrics); })
+        .def("__repr__",
+             [](const VariantRef& v) { return "<sylva.ForestVariant " + v.variant().name + ">"; });
+
     py::class_<Forest>(m, "Forest", "The trees of a built forest, in instance order.")
         .def("__len__", [](const Forest& f) { return f.trees->size(); })
         .def("__getitem__",
@@ -296,17 +344,37 @@ void bindForest(py::module_& m) {
                     out.push_back({f.trees, k, f.speciesNames[(*f.trees)[k].instance.species]});
                 return out;
             })
+        .def_property_readonly(
+            "variants",
+            [](const Forest& f) {
+                std::vector<VariantRef> out;
+                for (std::size_t k = 0; k < f.variants->size(); ++k)
+                    out.push_back({f.variants, k, f.speciesNames[(*f.variants)[k].species]});
+                return out;
+            },
+            "the variants instanced trees share (ForestTree.variant indexes this list)")
+        .def(
+            "tree_by_id",
+            [](const Forest& f, std::uint64_t id) {
+                for (std::size_t k = 0; k < f.trees->size(); ++k)
+                    if ((*f.trees)[k].instance.id == id)
+                        return ForestTreeRef{f.trees, k,
+                                             f.speciesNames[(*f.trees)[k].instance.species]};
+                throw py::key_error("the forest has no tree " + std::to_string(id));
+            },
+            py::arg("id"), "the tree with this stable id (KeyError when there is none)")
         .def_readonly("stats", &Forest::stats,
-                      "as `sylva-cli forest --stats`: trees, vertices, triangles, "
-                      "colliding_trees, pruned_nodes, shortfall, metrics (co2_kg, ...), "
-                      "timings_ms, cpu_ms")
+                      "as `sylva-cli forest --stats`: trees, instanced, unique, variants, "
+                      "vertices, triangles, colliding_trees, pruned_nodes, shortfall, metrics "
+                      "(co2_kg, ...), timings_ms, cpu_ms")
         .def(
             "export",
             [](const Forest& f, const py::object& path, bool fullPrecision, bool fsync,
                bool instanceTables) {
                 const std::string p = toPath(path);
                 py::gil_scoped_release release;
-                return writeForest(*f.trees, f.variants, p, fullPrecision, fsync, instanceTables);
+                return writeForest(*f.trees, exportVariants(*f.variants), p, fullPrecision, fsync,
+                                   instanceTables);
             },
             py::arg("path"), py::arg("full_precision") = false, py::arg("fsync") = false,
             py::arg("instance_tables") = false,
@@ -350,19 +418,42 @@ void bindForest(py::module_& m) {
             "trees",
             [](const Project& p) {
                 std::vector<Tree> out;
-                for (std::size_t i = 0; i < p.project.instances.size(); ++i)
-                    out.push_back(treeOf(i, p.project.instances[i]));
+                for (const doc::ProjectInstance& t : p.project.instances)
+                    out.push_back(treeOf(t.id, t));
                 return out;
             },
-            "the hand-placed trees (Tree, id = index)")
+            "the hand-placed trees (Tree), in file order")
         .def(
             "tree",
-            [](const Project& p, std::size_t index) {
-                if (index >= p.project.instances.size())
-                    throw InvalidInput("there is no tree " + std::to_string(index));
-                return treeOf(index, p.project.instances[index]);
+            [](const Project& p, std::uint64_t id) {
+                for (const doc::ProjectInstance& t : p.project.instances)
+                    if (t.id == id) return treeOf(id, t);
+                throw InvalidInput("there is no tree " + std::to_string(id));
             },
-            py::arg("index"))
+            py::arg("id"), "the hand-placed tree with this id")
+        .def_property_readonly(
+            "variants",
+            [](const Project& p) {
+                std::map<std::string, int> out;
+                for (const doc::ProjectSpecies& s : p.project.species)
+                    out[s.name] = s.variants;
+                return out;
+            },
+            "K per species: how many variants its instanced trees share")
+        .def(
+            "set_variants",
+            [](Project& p, const std::string& species, int k) {
+                for (doc::ProjectSpecies& s : p.project.species)
+                    if (s.name == species) {
+                        requireRange(("variants of '" + species + "'").c_str(), k, 0, 256);
+                        s.variants = k;
+                        return;
+                    }
+                throw InvalidInput("the project has no species '" + species + "'");
+            },
+            py::arg("species"), py::arg("k"),
+            "how many variants the species' instanced trees share (0..256, default 8; 0: every "
+            "tree of the species is grown for its place)")
         .def_property_readonly(
             "obstacles", [](const Project& p) { return obstaclesList(p.project.obstacles); },
             "the obstacle files (dicts: file, translate, rotate, scale); arrays are not listed")
@@ -388,6 +479,10 @@ void bindForest(py::module_& m) {
                     if (!(d.min.x < d.max.x && d.min.y < d.max.y))
                         throw InvalidInput("a domain's min must be below its max in x and z");
                 }
+                // A fresh id above every other: its trees' ids are new too.
+                for (const doc::PlacementDomain& other : p.project.domains)
+                    d.id = std::max(d.id, other.id);
+                ++d.id;
                 p.project.domains.push_back(std::move(d));
                 return p.project.domains.size() - 1;
             },
@@ -418,14 +513,19 @@ void bindForest(py::module_& m) {
                 doc::ProjectInstance t = newTree(p.project, p.project.instances.size(), species,
                                                  position, rotation, scale, seed, growth);
                 t.season = seasonFrom(season);
-                p.project.instances.push_back(std::move(t));
-                return p.project.instances.size() - 1;
+                doc::assignIds(p.project); // every earlier tree has its id
+                if (p.project.nextTreeId > doc::kMaxTreeId)
+                    throw LimitExceeded("a project's tree ids are limited to " +
+                                        std::to_string(doc::kMaxTreeId));
+                t.id = p.project.nextTreeId++;
+                p.project.instances.push_back(t);
+                return t.id;
             },
             py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
             py::arg("scale") = 1.0, py::arg("seed") = py::none(), py::arg("growth") = 1.0,
             py::arg("season") = py::none(),
             "a hand-placed tree (rotation in degrees about +Y; season: its own, None: the "
-            "project's)")
+            "project's); returns its id")
         .def_property(
             "season", [](const Project& p) { return seasonTo(p.project.season); },
             [](Project& p, const py::object& season) { p.project.season = seasonFrom(season); },
@@ -433,14 +533,16 @@ void bindForest(py::module_& m) {
             "or None (each species' own, summer)")
         .def(
             "set_tree_season",
-            [](Project& p, std::size_t index, const py::object& season) {
-                if (index >= p.project.instances.size())
-                    throw InvalidInput("no tree " + std::to_string(index) + " (the project has " +
-                                       std::to_string(p.project.instances.size()) + ")");
-                p.project.instances[index].season = seasonFrom(season);
+            [](Project& p, std::uint64_t id, const py::object& season) {
+                for (doc::ProjectInstance& t : p.project.instances)
+                    if (t.id == id) {
+                        t.season = seasonFrom(season);
+                        return;
+                    }
+                throw InvalidInput("there is no tree " + std::to_string(id));
             },
-            py::arg("index"), py::arg("season"),
-            "a hand-placed tree's own season (None: the project's)")
+            py::arg("id"), py::arg("season"),
+            "a hand-placed tree's own season, by its id (None: the project's)")
         .def(
             "add_obstacle",
             [](Project& p, const py::object& file, const py::object& vertices,
@@ -497,24 +599,25 @@ void bindForest(py::module_& m) {
         .def(
             "build_forest",
             [](const Project& p, const py::object& progress, const py::object& camera, bool lod,
-               bool adapt, bool neighbours, const py::object& tile, std::optional<int> threads) {
-                const BuildOptions b = buildOptions(camera, lod, adapt, neighbours, tile, threads);
+               bool adapt, bool neighbours, bool instancing, const py::object& tile,
+               std::optional<int> threads) {
+                BuildOptions b =
+                    buildOptions(camera, lod, adapt, neighbours, instancing, tile, threads);
                 PyProgress prog(progress);
                 auto trees = std::make_shared<std::vector<forest::ForestTree>>();
+                auto variants = std::make_shared<std::vector<forest::ForestVariant>>();
+                b.options.onVariants = [&variants](const std::vector<forest::ForestVariant>& v) {
+                    *variants = v;
+                };
                 forest::ForestScene s;
                 forest::ForestStats stats;
-                std::vector<exporter::ExportVariant> variants;
-                forest::ForestOptions options = b.options;
-                options.onVariants = [&](const std::vector<forest::ForestVariant>& v) {
-                    variants = exportVariants(v);
-                };
                 withoutGil(prog, [&] {
                     const auto t0 = Clock::now();
                     s = p.makeScene();
                     if (b.camera) s.camera = *b.camera;
                     const double loadMs = msSince(t0);
                     stats = forest::buildForest(
-                        s, options,
+                        s, b.options,
                         [&](const std::vector<forest::ForestTree>& batch) {
                             trees->insert(trees->end(), batch.begin(), batch.end());
                         },
@@ -524,24 +627,25 @@ void bindForest(py::module_& m) {
                 warnShortfalls(stats, s);
                 Forest f;
                 f.trees = trees;
-                f.variants = std::move(variants);
+                f.variants = variants;
                 for (const forest::SceneSpecies& sp : s.species)
                     f.speciesNames.push_back(sp.name);
                 f.stats = statsDict(stats, s, b.options);
                 return f;
             },
             py::arg("progress") = py::none(), py::arg("camera") = py::none(), py::arg("lod") = true,
-            py::arg("adapt") = true, py::arg("neighbours") = true, py::arg("tile") = py::none(),
-            py::arg("threads") = py::none(),
+            py::arg("adapt") = true, py::arg("neighbours") = true, py::arg("instancing") = true,
+            py::arg("tile") = py::none(), py::arg("threads") = py::none(),
             "builds the forest as `sylva-cli forest` does, the GIL released; progress(fraction, "
             "stage) is called on this thread; Ctrl-C raises KeyboardInterrupt")
         .def(
             "export_forest",
             [](const Project& p, const py::object& path, const py::object& progress,
-               const py::object& camera, bool lod, bool adapt, bool neighbours,
+               const py::object& camera, bool lod, bool adapt, bool neighbours, bool instancing,
                const py::object& tile, std::optional<int> threads, bool fullPrecision, bool fsync,
                bool instanceTables) {
-                const BuildOptions b = buildOptions(camera, lod, adapt, neighbours, tile, threads);
+                const BuildOptions b =
+                    buildOptions(camera, lod, adapt, neighbours, instancing, tile, threads);
                 const std::string out = toPath(path);
                 PyProgress prog(progress);
                 forest::ForestScene s;
@@ -555,6 +659,7 @@ void bindForest(py::module_& m) {
                     exporter.setInstanceTables(instanceTables);
                     exporter.setProgress(prog);
                     forest::ForestOptions options = b.options;
+                    options.meshInstances = !exporter.writesInstances(); // as sylva-cli forest
                     options.onVariants = [&](const std::vector<forest::ForestVariant>& v) {
                         exporter.addVariants(exportVariants(v));
                     };
@@ -580,9 +685,9 @@ void bindForest(py::module_& m) {
             },
             py::arg("path"), py::arg("progress") = py::none(), py::arg("camera") = py::none(),
             py::arg("lod") = true, py::arg("adapt") = true, py::arg("neighbours") = true,
-            py::arg("tile") = py::none(), py::arg("threads") = py::none(),
-            py::arg("full_precision") = false, py::arg("fsync") = false,
-            py::arg("instance_tables") = false,
+            py::arg("instancing") = true, py::arg("tile") = py::none(),
+            py::arg("threads") = py::none(), py::arg("full_precision") = false,
+            py::arg("fsync") = false, py::arg("instance_tables") = false,
             "builds and writes the forest batch by batch without keeping it (`sylva-cli forest "
             "-o path`, same bytes); Ctrl-C leaves no file; returns the statistics")
         .def("__repr__", [](const Project& p) {

@@ -111,6 +111,7 @@ py::list domainsList(const std::vector<doc::PlacementDomain>& domains) {
     py::list out;
     for (const doc::PlacementDomain& d : domains) {
         py::dict o;
+        o["id"] = d.id;
         o["shape"] = d.shape;
         o["min"] = py::make_tuple(d.min.x, d.min.y);
         o["max"] = py::make_tuple(d.max.x, d.max.y);
@@ -130,7 +131,9 @@ void bindTree(py::module_& m) {
     py::class_<Tree>(m, "Tree",
                      "A hand-placed tree of a project or of the editor's document (a snapshot "
                      "of its values).")
-        .def_readonly("id", &Tree::id, "the document's tree id, or the index in a Project")
+        .def_readonly("id", &Tree::id,
+                      "the tree's stable id (saved in the project, kept by every edit, named by "
+                      "every export)")
         .def_readonly("species", &Tree::species)
         .def_property_readonly("position", [](const Tree& t) { return fromVec3(t.position); })
         .def_readonly("rotation", &Tree::rotation, "degrees about +Y")

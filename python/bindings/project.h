@@ -35,8 +35,8 @@ struct Project {
 /// project); relative paths resolve against its folder, or the working directory when untitled.
 Project projectFrom(const doc::Project& project);
 
-/// sylva.Tree: a hand-placed tree, a snapshot of its values. \c id is the editor document's
-/// stable id, or the tree's index in a sylva.Project.
+/// sylva.Tree: a hand-placed tree, a snapshot of its values. \c id is its stable id
+/// (doc::ProjectInstance::id), in the editor's document and in a sylva.Project alike.
 struct Tree {
     std::uint64_t id = 0;
     std::string species;
@@ -73,7 +73,7 @@ void applyTransform(doc::ProjectObstacle& o, const py::handle& translate, const 
 env::MeshTransform transformFrom(const py::handle& translate, const py::handle& rotate,
                                  const py::handle& scale);
 
-/// Placement domains as dicts: shape, min, max (x, z), counts.
+/// Placement domains as dicts: id, shape, min, max (x, z), counts.
 py::list domainsList(const std::vector<doc::PlacementDomain>& domains);
 /// An (x, z) pair on the ground. \throw InvalidInput naming \p what
 glm::vec2 toXZ(const py::handle& o, const char* what);

@@ -1,5 +1,6 @@
 // sylva.Species, sylva.GrownTree, sylva.Skeleton, sylva.Mesh: one species grown on its own,
 // as `sylva-cli tree` grows it.
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -13,8 +14,11 @@
 #include "types.h"
 
 #include "document/speciesfile.h"
+#include "engine/export/lodchainexport.h"
 #include "engine/export/treeexport.h"
 #include "engine/graph/graph.h"
+#include "engine/mesh/lodchain.h"
+#include "engine/nodes/meshnodes.h"
 #include "engine/util/error.h"
 
 namespace sylva::python {
@@ -365,6 +369,53 @@ void bindSpecies(py::module_& m) {
             "grows one tree (as `sylva-cli tree [--seed S] [--season NAME]`), the GIL released; "
             "without a seed the generators use their own (a grammar's `seed:`); season: "
             "'spring', 'summer', 'autumn' or 'winter' (None: the species' own)")
+        .def(
+            "write_lods",
+            [](Species& s, const py::object& folderArg, std::optional<std::uint64_t> seed,
+               const std::vector<double>& budgets, int impostorGrid, int impostorCell,
+               const py::object& progress) {
+                const std::string folder =
+                    py::module_::import("os").attr("fspath")(folderArg).cast<std::string>();
+                PyProgress p(progress);
+                mesh::LodChainSettings chainSettings;
+                chainSettings.budgets = budgets;
+                chainSettings.impostorSettings.grid = impostorGrid;
+                chainSettings.impostorSettings.cellPixels = impostorCell;
+                mesh::validateLodChain(chainSettings);
+                std::string description;
+                withoutGil(p, [&] {
+                    std::lock_guard lock(*s.lock);
+                    const graph::SpeciesGraph& g = s.graph();
+                    const graph::NodeDesc* out = g.findNode(g.output);
+                    if (!out || out->type != "tube_mesh" || out->inputs.size() != 1)
+                        throw InvalidInput("write_lods needs a species whose output is a "
+                                           "tube_mesh node");
+                    const graph::NodeOutput& grown = s.evaluator->evaluateNode(
+                        g.skeletonSource(), seed.has_value(), seed.value_or(0), p);
+                    if (!grown.skeleton) throw InvalidInput("the species produces no skeleton");
+                    const mesh::TreeMeshSettings settings =
+                        mesh::treeMeshSettingsFromParams(out->params, 0, g.baseDir);
+                    exporter::GameLodOptions options;
+                    if (const auto res = exporter::resourcesDir(); !res.empty())
+                        options.shippedTextures = res / "textures";
+                    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
+                        *grown.skeleton, settings, chainSettings,
+                        mesh::ImpostorTextures(options.shippedTextures), p);
+                    std::string stem = std::filesystem::path(g.sourceFile).stem().string();
+                    if (stem.empty()) stem = g.name;
+                    description =
+                        exporter::writeGameLodChain(folder, stem, chain, settings.lod, options, p)
+                            .description;
+                });
+                return py::module_::import("json").attr("loads")(description);
+            },
+            py::arg("folder"), py::arg("seed") = py::none(),
+            py::arg("budgets") = std::vector<double>{1.0, 0.35, 0.12, 0.04},
+            py::arg("impostor_grid") = 8, py::arg("impostor_cell") = 256,
+            py::arg("progress") = py::none(),
+            "writes the species' game LOD chain into folder as `sylva-cli lods` does (levels by "
+            "triangle budget, the impostor's maps, glTF with MSFT_lod, FBX, OBJ; docs/lods.md) "
+            "and returns its description (the <species>_lods.json content)")
         .def("__repr__", [](const Species& s) {
             return "<sylva.Species '" + s.graph().name + "' " +
                    std::to_string(s.graph().nodes.size()) + " nodes>";

@@ -26,11 +26,11 @@ def test_forest_equals_cli(data, cli, tmp_path):
     forest = sylva.load_project(project).build_forest()
     assert len(forest) == cli_stats["trees"] == 41
     for key in ("trees", "vertices", "triangles", "colliding_trees", "pruned_nodes",
-                "obstacle_triangles", "shortfall"):
+                "obstacle_triangles", "shortfall", "instanced", "unique", "variants"):
         assert forest.stats[key] == cli_stats[key], key
     assert forest.stats["metrics"]["co2_kg"] == pytest.approx(cli_stats["metrics"]["co2_kg"])
     assert sum(t.mesh.vertex_count for t in forest.trees) == cli_stats["vertices"]
-    assert forest[0].name == "bush_0" and forest[0].hand_placed
+    assert forest[0].name == "bush_1" and forest[0].hand_placed and forest[0].id == 1
     assert forest[0].species == "bush"
     assert forest[-1].name == forest.trees[-1].name
 
@@ -126,18 +126,18 @@ def test_project_parts_read_as_the_editor_reads_them(data, tmp_path):
     p.add_domain({"bush": 3}, min=(-5, -6), max=(5, 6))
     first = p.add_tree("bush", (1, 0, 2), rotation=30, scale=1.5, growth=0.5, seed=9)
     second = p.add_tree("bush", (3, 0, 4))
-    assert (first, second) == (0, 1)
+    assert (first, second) == (1, 2)  # stable ids, as the editor's document gives them
     trees = p.trees()
     assert all(isinstance(t, sylva.Tree) for t in trees)
-    t = p.tree(0)
+    t = p.tree(1)
     assert (t.id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed) == (
-        0, "bush", (1.0, 0.0, 2.0), 30.0, 1.5, 0.5, 9)
+        1, "bush", (1.0, 0.0, 2.0), 30.0, 1.5, 0.5, 9)
     # Derived from the project seed and the trees before it, as the editor does
     # (doc::Project::newTreeSeed: mixSeed(4, 2) % 1000000007).
     assert trees[1].seed == 317578722
-    with pytest.raises(ValueError, match="there is no tree 2"):
-        p.tree(2)
-    assert p.domains == [{"shape": "rectangle", "min": (-5.0, -6.0), "max": (5.0, 6.0),
+    with pytest.raises(ValueError, match="there is no tree 3"):
+        p.tree(3)
+    assert p.domains == [{"id": 1, "shape": "rectangle", "min": (-5.0, -6.0), "max": (5.0, 6.0),
                           "counts": {"bush": 3}}]
     with pytest.raises(ValueError, match=r"min needs two numbers \(x, z\)"):
         p.add_domain({"bush": 1}, min=(0, 0, 0))
@@ -146,6 +146,59 @@ def test_project_parts_read_as_the_editor_reads_them(data, tmp_path):
     assert p.obstacle_count == 2
     assert p.obstacles == [{"file": str(tmp_path / "wall.obj"), "translate": (0.0, 0.0, 3.0),
                             "rotate": (0.0, 0.0, 0.0), "scale": (2.0, 1.0, 1.0)}]
+
+
+def test_variants_instances_and_ids(data, tmp_path):
+    # Issue 30: free domain trees are instances of their species' K variants; every tree has a
+    # stable id; moving one tree keeps every other tree's id and transform.
+    project = sylva.load_project(data / "projects" / "small.sylva")
+    assert project.variants == {"bush": 8, "shrub": 8}
+    project.set_variants("bush", 3)
+    forest = project.build_forest(lod=False)
+    s = forest.stats
+    assert s["instanced"] + s["unique"] == s["trees"] == len(forest)
+    assert s["instanced"] > 0 and s["variants"] == 3 + 8
+    variants = forest.variants
+    assert [v.name for v in variants[:4]] == ["bush_v0", "bush_v1", "bush_v2", "shrub_v0"]
+    assert all(v.index == i for i, v in enumerate(variants))
+    assert variants[3].species == "shrub" and variants[3].species_variant == 0
+    instanced = [t for t in forest.trees if t.instanced]
+    assert len(instanced) == s["instanced"]
+    for t in forest.trees:
+        assert (t.variant is None) == (not t.instanced)
+        assert t.name.endswith("_%d" % t.id)
+    for t in instanced:
+        v = variants[t.variant]
+        assert v.species == t.species
+        # without the camera LOD the tree shows its variant's very mesh
+        assert np.array_equal(t.mesh.positions, v.mesh.positions)
+    assert not forest[0].instanced  # hand-placed trees are always grown from their seed
+    assert len({t.id for t in forest.trees}) == len(forest)
+    assert forest.tree_by_id(forest[7].id).name == forest[7].name
+    with pytest.raises(KeyError):
+        forest.tree_by_id(12345)
+    with pytest.raises(ValueError, match=r"variants of 'bush'.*\[0, 256\]"):
+        project.set_variants("bush", 257)
+
+    # Move the hand-placed tree 30 m: every other tree keeps its id and transform, except the
+    # few it stood on or stands on now.
+    before = {t.id: t.transform for t in forest.trees}
+    tree = project.trees()[0]
+    project.save(tmp_path / "p.sylva")
+    text = json.loads((tmp_path / "p.sylva").read_text())
+    assert text["format_version"] == 2 and text["instances"][0]["id"] == tree.id
+    text["instances"][0]["position"][0] += 30
+    (tmp_path / "p.sylva").write_text(json.dumps(text))
+    moved = sylva.load_project(tmp_path / "p.sylva")
+    moved.set_variants("bush", 3)
+    after = {t.id: t.transform for t in moved.build_forest(lod=False).trees}
+    changed = [i for i in before if i not in after or not np.array_equal(before[i], after[i])]
+    assert tree.id in changed
+    assert len(changed) <= 3, changed
+    assert len(set(before) & set(after)) >= len(before) - 2
+
+    unique = project.build_forest(lod=False, instancing=False)
+    assert unique.stats["instanced"] == 0 and unique.variants == []
 
 
 def big_project(data, trees=600):

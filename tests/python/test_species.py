@@ -106,6 +106,23 @@ def test_tree_export_equals_cli_bytes(presets, cli, tmp_path):
     assert (tmp_path / "py" / "t.glb").read_bytes() == (tmp_path / "cli" / "t.glb").read_bytes()
 
 
+def test_write_lods_equals_cli_bytes(data, cli, tmp_path):
+    # Issue #32: the game LOD chain from Python is `sylva-cli lods`'s, file for file.
+    s = sylva.load_species(data / "lsystem" / "bush.lsys")
+    d = s.write_lods(tmp_path / "py", budgets=[1, 0.35, 0.12], impostor_grid=4,
+                     impostor_cell=32)
+    assert [level["name"] for level in d["levels"]] == ["bush_LOD0", "bush_LOD1", "bush_LOD2"]
+    assert d["levels"][0]["triangles"] > d["levels"][1]["triangles"]
+    assert d["impostor"]["grid"] == 4 and d["impostor"]["atlas_pixels"] == 128
+    cli("lods", data / "lsystem" / "bush.lsys", "-o", tmp_path / "cli", "--budgets",
+        "1,0.35,0.12", "--impostor-grid", 4, "--impostor-cell", 32)
+    for name in ("bush_LODs.glb", "bush_lods.json", "bush_impostor_color.png",
+                 "bush_impostor_normal.png", "bush_impostor_depth.png", "bush_LOD2.obj"):
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes()
+    with pytest.raises(ValueError, match="LOD2 budget must be above 0"):
+        s.write_lods(tmp_path / "bad", budgets=[1, 0.3, 0.5])
+
+
 def cli_message(r):
     """The CLI's message without its 'sylva-cli: error: ' prefix."""
     return r.stderr.strip().removeprefix("sylva-cli: error: ")
@@ -190,14 +207,16 @@ def test_project_and_tree_seasons(presets, tmp_path):
     p.add_species("oak", presets / "english-oak.json")
     assert p.season is None
     p.add_tree("oak", (0, 0, 0), seed=1)
-    p.add_tree("oak", (30, 0, 0), seed=2, season="spring")
+    spring = p.add_tree("oak", (30, 0, 0), seed=2, season="spring")
     p.season = "winter"
     assert p.season == "winter" and p.trees()[1].season == "spring" and p.trees()[0].season is None
     forest = p.build_forest(lod=False)
     assert len(forest[0].mesh.indices_of("leaf")) == 0  # the project's winter
     assert len(forest[1].mesh.indices_of("leaf")) > 0  # its own spring
-    p.set_tree_season(1, None)
-    assert p.trees()[1].season is None
+    p.set_tree_season(spring, None)  # by the tree's id
+    assert p.trees()[1].season is None and p.tree(spring).season is None
+    with pytest.raises(ValueError):
+        p.set_tree_season(99, "winter")
     with pytest.raises(ValueError):
         p.season = "monsoon"
     p.season = "autumn"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sylva's exports read by programs nobody here wrote (tests/readers/package.json, installed by
-# scripts/install-readers.sh): the Khronos glTF-Validator and three.js's GLTFLoader under Node.
+# scripts/install-readers.sh): the Khronos glTF-Validator and three.js's GLTFLoader under Node,
+# tinyusdz for USD.
 # Exit 77 (ctest: skipped) with a message when node or the packages are missing.
 # usage: readers_tests.sh <case> <sylva-cli> <tests/data> <scratch folder>
 set -uo pipefail
@@ -10,7 +11,7 @@ rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK" || exit 1
 
 fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
 command -v node >/dev/null || { echo "SKIP: node not installed (scripts/install-deps.sh)"; exit 77; }
-[[ -d "$READERS/node_modules/gltf-validator" && -d "$READERS/node_modules/three" ]] ||
+[[ $case_name == tinyusdz_* || ( -d "$READERS/node_modules/gltf-validator" && -d "$READERS/node_modules/three" ) ]] ||
   { echo "SKIP: tests/readers/node_modules missing (run scripts/install-readers.sh)"; exit 77; }
 run_cli() {
   "$CLI" "$@" >out.txt 2>err.txt || fail "sylva-cli $* failed: $(cat err.txt)"
@@ -60,6 +61,67 @@ if "instanced" in stats:
     assert unique_nodes == stats["unique"], (unique_nodes, stats["unique"])
 all_ids = ids + [n["extras"]["sylva_id"] for n in nodes if "sylva_id" in n.get("extras", {})]
 assert len(set(all_ids)) == len(all_ids) == stats["trees"], "ids are not one per tree"
+PY
+  ;;
+tinyusdz_forest|tinyusdz_tiles)
+  # tinyusdz parses the stage (and composes a farm run's root over its tiles): its prim and
+  # array counts are the forest's statistics (instancers' arrays all as long as protoIndices,
+  # one id per instance, one tree_<id> Xform per unique tree, K variants per species).
+  [[ -d "$READERS/node_modules/tinyusdz" ]] || { echo "SKIP: tinyusdz missing (run scripts/install-readers.sh)"; exit 77; }
+  run_cli forest "$DATA/projects/small.sylva" -o forest.usda --stats
+  cp out.txt stats.json
+  layer=forest.usda
+  if [[ $case_name == tinyusdz_tiles ]]; then
+    for i in 1 2 3 4; do run_cli forest "$DATA/projects/small.sylva" -o tiles/part_$i.usda --tile $i/4; done
+    run_cli compose root.usda tiles/part_*.usda
+    layer=root.usda
+  fi
+  node "$READERS/usd-counts.mjs" "$layer" > tinyusdz.json 2> tinyusdz.err || fail "tinyusdz: $(cat tinyusdz.err)"
+  cat tinyusdz.json
+  python3 - "$case_name" <<'PY' || fail "tinyusdz counts do not match the forest: $(cat tinyusdz.json) vs $(cat stats.json)"
+import json, sys
+t = json.load(open("tinyusdz.json"))
+s = json.load(open("stats.json"))
+tiles = 4 if sys.argv[1] == "tinyusdz_tiles" else 1
+assert t["layers"] == 1 + (tiles if tiles > 1 else 0), t
+assert t["mismatched"] == [], t
+assert t["instances"] == t["ids"] == s["instanced"] > 0, (t, s["instanced"])
+assert t["trees"] == s["unique"], (t, s["unique"])
+assert t["instances"] + t["trees"] == s["trees"], (t, s["trees"])
+assert t["variantPrims"] == s["variants"] == s["usd"]["prototypes"], (t, s["variants"])
+assert t["materials"] == s["usd"]["materials"], t
+if tiles == 1:
+    assert t["instancers"] == s["usd"]["instancers"], t
+    assert t["renderTrees"] == s["unique"], t
+    assert t["renderMeshes"] == s["usd"]["meshes"], (t, s["usd"])
+else:
+    assert t["instancers"] >= s["usd"]["instancers"], t
+PY
+  ;;
+gltf_validator_lods)
+  # The game LOD chain (issue #32): MSFT_lod levels, the impostor card and its three maps.
+  run_cli lods "$DATA/../../presets/alder.json" -o lods --json --no-obj --no-fbx
+  validate lods/alder_LODs.glb ;;
+three_lod_levels)
+  # three.js loads every level MSFT_lod names, with the triangles the description reports.
+  run_cli lods "$DATA/../../presets/alder.json" -o lods --json --no-obj --no-fbx
+  node "$READERS/lod-levels.mjs" lods/alder_LODs.glb > three.json 2> three.err || fail "three.js: $(cat three.err)"
+  cat three.json
+  python3 - <<'PY' || fail "three.js levels do not match the description: $(cat three.json)"
+import json
+three = json.load(open("three.json"))
+desc = json.load(open("lods/alder_lods.json"))
+levels = three["levels"]
+assert len(levels) == len(desc["levels"]) + 1, levels
+for got, want in zip(levels, desc["levels"]):
+    assert got["name"] == want["name"] and got["triangles"] == want["triangles"], (got, want)
+assert levels[-1]["name"] == desc["impostor"]["name"] and levels[-1]["triangles"] == 2
+assert levels[-1]["material"] == desc["impostor"]["name"], levels[-1]
+tris = [l["triangles"] for l in levels]
+assert all(a > b for a, b in zip(tris, tris[1:])), tris
+cov = three["coverage"]
+assert len(cov) == len(levels) and cov[-1] == 0, cov
+assert all(a > b for a, b in zip(cov, cov[1:])), cov
 PY
   ;;
 *) fail "unknown case" ;;

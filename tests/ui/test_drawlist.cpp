@@ -80,7 +80,7 @@ private Q_SLOTS:
         const int expected = ViewLod::levelFor(
             ViewLod::equivalentHeights(double(list[1].distance), 10.0, double(kFov), kPixels));
         QCOMPARE(list[1].level, expected);
-        QCOMPARE(list[1].level, ViewLod::kImpostorLevel); // a few pixels high: crossed cards
+        QCOMPARE(list[1].level, ViewLod::kImpostorLevel); // a few pixels high: the impostor
         // With the distance LOD off every tree is drawn at full detail.
         DrawListView off = view();
         off.levels = false;

@@ -118,7 +118,8 @@ private Q_SLOTS:
         QVERIFY(mDir.isValid());
         // The demo project saved into a scratch folder (paths rebased), so saving is safe.
         doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory()).filePath("../resources/demo/forest.sylva"));
+        demo.open(QDir(doc::PresetLibrary::directory())
+                      .filePath("../resources/demo/alder-reference.sylva"));
         mProject = mDir.filePath(QStringLiteral("demo.sylva"));
         demo.save(mProject);
 
@@ -139,7 +140,7 @@ private Q_SLOTS:
         QVERIFY(mWindow->openProject(mProject));
         settle();
         QVERIFY2(mWindow->lastError().isEmpty(), qPrintable(mWindow->lastError()));
-        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(42));
     }
 
     void cleanupTestCase() {
@@ -246,7 +247,7 @@ private Q_SLOTS:
             QTRY_VERIFY_WITH_TIMEOUT(generated.count() >= 1, 20000);
             settle();
             QCOMPARE(mWindow->generator().result().stats.at("regrown"), 0.0);
-            QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+            QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(42));
         }
     }
 

@@ -2,8 +2,13 @@
 // the forest rebuilt for another camera, and a species preview ignoring the project's options.
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cstring>
 
 #include "document/document.h"
 #include "engine/util/error.h"
@@ -48,8 +53,7 @@ private:
 private Q_SLOTS:
     void initTestCase() {
         mDocument.open(dataFile("projects/small.sylva"));
-        mShown =
-            generateProject(mDocument.project(), mDocument.path(), mDocument.treeIds(), nullptr);
+        mShown = generateProject(mDocument.project(), mDocument.path(), nullptr);
         QVERIFY2(mShown.ok(), qPrintable(mShown.error));
         QVERIFY(mShown.exportTrees.size() > 1);
     }
@@ -59,6 +63,34 @@ private Q_SLOTS:
         QCOMPARE(count.trees, mShown.exportTrees.size());
         QVERIFY(count.files >= 2); // the OBJ and its materials
         QVERIFY(readFile(out("all")).contains("\nf "));
+    }
+
+    // A GLB of the shown forest instances the variants as sylva-cli forest does: every tree
+    // is an instance (its id in a node's sylva_ids) or a unique node (sylva_id).
+    void glbInstancesTheVariants() {
+        QVERIFY(!mShown.exportVariants.empty());
+        QDir(mDir.path()).mkpath(QStringLiteral("glb"));
+        const QString path = mDir.filePath(QStringLiteral("glb/forest.glb"));
+        const ExportCount count = exportShown(path, shown());
+        QCOMPARE(count.files, std::size_t(1));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray bytes = file.readAll();
+        QVERIFY(bytes.startsWith("glTF"));
+        quint32 jsonLength = 0;
+        std::memcpy(&jsonLength, bytes.constData() + 12, 4);
+        const QJsonObject json = QJsonDocument::fromJson(bytes.mid(20, jsonLength)).object();
+        QVERIFY(json.value(QStringLiteral("extensionsUsed"))
+                    .toArray()
+                    .contains(QStringLiteral("EXT_mesh_gpu_instancing")));
+        std::size_t trees = 0, instanced = 0;
+        for (const QJsonValue& node : json.value(QStringLiteral("nodes")).toArray()) {
+            const QJsonObject extras = node.toObject().value(QStringLiteral("extras")).toObject();
+            instanced += extras.value(QStringLiteral("sylva_ids")).toArray().size();
+            trees += extras.contains(QStringLiteral("sylva_id")) ? 1 : 0;
+        }
+        QVERIFY(instanced > 0);
+        QCOMPARE(trees + instanced, mShown.exportTrees.size());
     }
 
     void onlyTheSelectedTrees() {

@@ -552,22 +552,23 @@ private Q_SLOTS:
     /// attributes is off (a forest has no one skeleton). Then the default preset again.
     void demoProjectShowsTheForestAndObstacles() {
         const QString project =
-            QDir(PresetLibrary::directory()).filePath("../resources/demo/forest.sylva");
+            QDir(PresetLibrary::directory()).filePath("../resources/demo/alder-reference.sylva");
         QVERIFY2(QFileInfo::exists(project), qPrintable(project));
         QSignalSpy finished(mWindow.get(), &MainWindow::generationFinished);
         mWindow->openSpecies(project);
         QVERIFY(finished.wait(kGenerationTimeoutMs));
         QVERIFY2(finished.first().first().toBool(), qPrintable(mWindow->lastError()));
-        QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statTrees")), QStringLiteral("43"));
+        QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statTrees")), QStringLiteral("42"));
         // The scene's CO2 in tonnes (57.4 t for the demo, as sylva-cli stats sums it).
         QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statCo2")),
                  QStringLiteral("%1 t").arg(mWindow->lastResult().stats.at("co2_kg") / 1000.0, 0,
                                             'f', 1));
         QVERIFY(mWindow->lastResult().stats.at("co2_kg") > 10000.0);
-        QVERIFY2(mWindow->windowTitle().contains(QStringLiteral("forest.sylva (43 trees)")),
-                 qPrintable(mWindow->windowTitle()));
+        QVERIFY2(
+            mWindow->windowTitle().contains(QStringLiteral("alder-reference.sylva (42 trees)")),
+            qPrintable(mWindow->windowTitle()));
         // Each tree drawn on its own (its identity kept); the obstacles in the static mesh.
-        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(43));
+        QCOMPARE(mWindow->viewport()->trees().size(), std::size_t(42));
         QCOMPARE(mWindow->viewport()->trees().front().id, 1u); // the hand-placed tree
         QCOMPARE(mWindow->viewport()->trees().back().id, 0u);  // a domain's
         const sylva::mesh::Mesh& m = *mWindow->viewport()->mesh();

@@ -75,8 +75,9 @@ private Q_SLOTS:
             QCOMPARE(d.mesh->positions, trees[i].mesh->positions);
             QCOMPARE(d.mesh->indices, trees[i].mesh->indices);
             QVERIFY(d.transform == trees[i].instance.transform());
-            // The hand-placed tree carries the document id of its instance.
-            QCOMPARE(d.docId, trees[i].instance.handPlaced ? trees[i].instance.id + 1 : 0u);
+            // The hand-placed tree carries its document id (its instance's, from the file).
+            QCOMPARE(d.docId, trees[i].instance.handPlaced ? doc::TreeId(trees[i].instance.id)
+                                                           : doc::TreeId(0));
             drawnVertices += d.mesh->vertexCount();
             drawnTriangles += d.mesh->triangleCount();
         }
@@ -101,18 +102,19 @@ private Q_SLOTS:
     void unchangedTreesAreNotRegrown() {
         const QString path = dataFile("projects/small.sylva");
         doc::Project project = doc::loadProject(path);
-        const std::vector<doc::TreeId> ids{7};
+        project.instances[0].id = 7;
         SceneCaches caches;
-        const GenerationResult first = generateProject(project, path, ids, &caches);
+        const GenerationResult first = generateProject(project, path, &caches);
         QVERIFY2(first.ok(), qPrintable(first.error));
         QCOMPARE(first.stats.at("regrown"), first.stats.at("trees"));
-        const GenerationResult second = generateProject(project, path, ids, &caches);
+        QCOMPARE(first.stats.at("unique") + first.stats.at("instanced"), first.stats.at("trees"));
+        const GenerationResult second = generateProject(project, path, &caches);
         QCOMPARE(second.stats.at("regrown"), 0.0);
         // The same meshes, shared: the viewport keeps their GPU buffers.
         for (std::size_t i = 0; i < first.trees.size(); ++i)
             QCOMPARE(second.trees[i].mesh.get(), first.trees[i].mesh.get());
         project.instances[0].seed += 1;
-        const GenerationResult third = generateProject(project, path, ids, &caches);
+        const GenerationResult third = generateProject(project, path, &caches);
         QCOMPARE(third.stats.at("regrown"), 1.0);
         QCOMPARE(third.trees[0].docId, 7u);
         QVERIFY(third.trees[0].mesh.get() != first.trees[0].mesh.get());

@@ -11,8 +11,9 @@ class TestShaderProgram : public QObject {
 
 private Q_SLOTS:
     void everyShaderIsAResource() {
-        for (const char* name : {"mesh.vert", "mesh.frag", "line.vert", "line.frag",
-                                 "background.vert", "background.frag", "card.vert", "card.frag"}) {
+        for (const char* name :
+             {"mesh.vert", "mesh.frag", "line.vert", "line.frag", "background.vert",
+              "background.frag", "impostor.vert", "impostor.frag"}) {
             const QByteArray source = sylva::ui::shaderSource(QString::fromLatin1(name));
             QVERIFY2(source.startsWith("#version 330 core\n"), name);
             QVERIFY2(source.contains("void main()"), name);

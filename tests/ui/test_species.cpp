@@ -116,7 +116,8 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(mDir.isValid());
         doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory()).filePath("../resources/demo/forest.sylva"));
+        demo.open(QDir(doc::PresetLibrary::directory())
+                      .filePath("../resources/demo/alder-reference.sylva"));
         const QString project = mDir.filePath(QStringLiteral("demo.sylva"));
         demo.save(project);
         mWindow = std::make_unique<MainWindow>();

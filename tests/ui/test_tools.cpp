@@ -71,6 +71,19 @@ private:
         return p->toPoint();
     }
 
+    /// Where tree \p id's trunk is drawn and picked: the lowest of its trunk's points from 1 m up
+    /// where no other tree stands in front (the view is the project camera's; domain trees may
+    /// stand between it and the tree).
+    QPoint trunkOf(doc::TreeId id) {
+        const glm::vec3 base = document().tree(id).position;
+        for (float h = 1.0f; h < 8.0f; h += 0.25f) {
+            const QPoint at = screenOf(base + glm::vec3(0, h, 0));
+            const int index = viewport()->treeAt(at);
+            if (index >= 0 && viewport()->trees()[std::size_t(index)].id == id) return at;
+        }
+        return screenOf(base + glm::vec3(0, 1.0f, 0));
+    }
+
     /// A press, moves through \p path (\p steps per leg) and a release of the left button.
     void drag(const std::vector<QPoint>& path, Qt::KeyboardModifiers modifiers = {},
               int steps = 10) {
@@ -98,7 +111,8 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(mDir.isValid());
         doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory()).filePath("../resources/demo/forest.sylva"));
+        demo.open(QDir(doc::PresetLibrary::directory())
+                      .filePath("../resources/demo/alder-reference.sylva"));
         const QString project = mDir.filePath(QStringLiteral("demo.sylva"));
         demo.save(project);
         mWindow = std::make_unique<MainWindow>();
@@ -138,8 +152,7 @@ private Q_SLOTS:
     /// a click on the sky clears the selection; [ and ] step through the trees.
     void clickPicksTheTree() {
         mWindow->tools().setTool(Tool::Select);
-        const glm::vec3 p = document().tree(1).position;
-        const QPoint at = screenOf(p + glm::vec3(0, 1.0f, 0));
+        const QPoint at = trunkOf(1);
         QVERIFY(at.x() >= 0);
         QCOMPARE(viewport()->treeAt(at) >= 0, true);
         QTest::mouseClick(viewport(), Qt::LeftButton, {}, at);
@@ -158,7 +171,7 @@ private Q_SLOTS:
     void rubberBandIsDrawnAndSelects() {
         mWindow->tools().setTool(Tool::Select);
         document().selectTrees({});
-        const QPoint trunk = screenOf(document().tree(1).position + glm::vec3(0, 1.0f, 0));
+        const QPoint trunk = trunkOf(1);
         QVERIFY(trunk.x() >= 0);
         const QPoint from = trunk - QPoint(60, 50), to = trunk + QPoint(60, 30);
         const QImage before = viewport()->grabFramebuffer();
@@ -195,7 +208,7 @@ private Q_SLOTS:
         document().selectTrees({});
         QWindow* surface = viewport()->surface();
         QVERIFY(surface && surface->isExposed());
-        const QPoint trunk = screenOf(document().tree(1).position + glm::vec3(0, 1.0f, 0));
+        const QPoint trunk = trunkOf(1);
         QTest::mouseClick(surface, Qt::LeftButton, {}, trunk);
         QTRY_COMPARE(document().selectedTrees(), QList<doc::TreeId>{1});
         QTRY_COMPARE(QApplication::activeWindow(), static_cast<QWidget*>(mWindow.get()));
@@ -243,7 +256,7 @@ private Q_SLOTS:
         const doc::ProjectInstance start = document().tree(1);
 
         mWindow->tools().setTool(Tool::Move);
-        const QPoint from = screenOf(start.position + glm::vec3(0, 1.0f, 0));
+        const QPoint from = trunkOf(1);
         QVERIFY(viewport()->treeAt(from) >= 0);
         // To 0.4 m from the wall's face (the wall stands at z = -8, 0.6 m thick).
         const glm::vec3 target = start.position + glm::vec3(0.0f, 0.0f, -0.8f);
@@ -397,7 +410,7 @@ private Q_SLOTS:
         QVERIFY(perLevel[0] < viewport()->drawnTrees());
         QVERIFY(viewport()->drawnTriangles() < triangles);
 
-        const QPoint at = screenOf(document().tree(1).position + glm::vec3(0, 1.0f, 0));
+        const QPoint at = trunkOf(1);
         QVERIFY(at.x() >= 0);
         const int index = viewport()->treeAt(at);
         QVERIFY(index >= 0);

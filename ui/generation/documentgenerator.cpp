@@ -53,15 +53,14 @@ void DocumentGenerator::start() {
     mPending = false;
     // A snapshot: the worker never sees the document change under it.
     const doc::Project project = mDocument.project();
-    const std::vector<doc::TreeId> ids = mDocument.treeIds();
     const QString path = mDocument.path().isEmpty() ? mDocument.displayName() : mDocument.path();
     SceneCaches* caches = &mCaches;
     mRunning = true;
     Q_EMIT started();
     mWatcher.setFuture(
-        QtConcurrent::run([project, ids, path, caches](QPromise<GenerationResult>& promise) {
+        QtConcurrent::run([project, path, caches](QPromise<GenerationResult>& promise) {
             PromiseProgress progress(promise);
-            promise.addResult(generateProject(project, path, ids, caches, progress));
+            promise.addResult(generateProject(project, path, caches, progress));
         }));
 }
 

@@ -19,7 +19,7 @@ ExportCount exportShown(const QString& path, const ShownScene& shown,
         doc::Project project = document->project();
         project.cameraPosition = shown.eye;
         project.cameraTarget = shown.target;
-        rebuilt = generateProject(project, document->path(), document->treeIds(), nullptr);
+        rebuilt = generateProject(project, document->path(), nullptr);
         if (!rebuilt.ok()) throw IoError(rebuilt.error.toStdString());
         source = &rebuilt;
     }
@@ -33,6 +33,7 @@ ExportCount exportShown(const QString& path, const ShownScene& shown,
         trees = source->exportTrees;
     }
     exporter::TreeExporter out(path.toStdString(), {false, source->compactObj});
+    out.addVariants(source->exportVariants);
     out.add(trees);
     ExportCount count;
     count.files = out.commit().size();

@@ -50,8 +50,7 @@ std::uint64_t pointerKey(const void* a, const void* b) {
 } // namespace
 
 GenerationResult generateProject(const doc::Project& project, const QString& path,
-                                 const std::vector<doc::TreeId>& treeIds, SceneCaches* caches,
-                                 Progress& progress) {
+                                 SceneCaches* caches, Progress& progress) {
     return runGuarded(path, [&](GenerationResult& result) {
         // Watch every file the project reads, stamped before it is read (a change during the
         // generation is still seen): the species and mesh files, then the files the species'
@@ -77,6 +76,11 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             caches->obstacles = forest.obstacles;
             caches->ground = forest.ground;
         }
+        // Formats with instancing (glTF) write each variant once: File ▸ Export hands them over.
+        options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
+            for (const forest::ForestVariant& v : variants)
+                result.exportVariants.push_back({v.name, v.mesh});
+        };
         double height = 0.0;
         const forest::ForestStats stats = forest::buildForest(
             forest, options,
@@ -85,8 +89,9 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                     DrawnTree drawn;
                     drawn.instanceId = tree.instance.id;
                     drawn.species = tree.instance.species;
-                    if (tree.instance.handPlaced && tree.instance.id < treeIds.size())
-                        drawn.docId = treeIds[tree.instance.id];
+                    // A hand-placed tree's forest id is its document id (the project keeps it).
+                    if (tree.instance.handPlaced)
+                        drawn.docId = static_cast<doc::TreeId>(tree.instance.id);
                     drawn.mesh = tree.mesh;
                     drawn.transform = tree.instance.transform();
                     drawn.metrics = tree.metrics;
@@ -101,7 +106,8 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                     result.trees.push_back(std::move(drawn));
                     result.exportTrees.push_back({tree.name, tree.mesh, tree.instance.position,
                                                   tree.instance.rotation,
-                                                  tree.instance.scale * tree.instance.growth});
+                                                  tree.instance.scale * tree.instance.growth,
+                                                  tree.variant, tree.instance.id});
                 }
             },
             progress);
@@ -117,12 +123,16 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         result.stats["obstacle_triangles"] =
             forest.obstacles ? static_cast<double>(forest.obstacles->triangleCount()) : 0.0;
         result.stats["colliding_trees"] = static_cast<double>(stats.collidingTrees);
+        result.stats["instanced"] = static_cast<double>(stats.instanced);
+        result.stats["unique"] = static_cast<double>(stats.unique);
+        result.stats["variants"] = static_cast<double>(stats.variants);
         result.stats["pruned_nodes"] = static_cast<double>(stats.prunedNodes);
         result.stats["co2_kg"] = stats.metrics.co2Kg;
         result.stats["wood_m3"] = stats.metrics.woodVolumeM3;
         result.stats["biomass_kg"] = stats.metrics.dryBiomassKg;
         result.stats["mean_dbh_m"] = stats.metrics.meanDbhM;
         result.stats["height"] = height;
+        // Trees made again: grown (unique) or meshed from their variant (instanced).
         result.stats["regrown"] =
             static_cast<double>(caches ? caches->trees.misses() : stats.trees);
         for (const auto& [stage, ms] : stats.wallMs)
@@ -138,10 +148,7 @@ GenerationResult generateScene(const QString& path, Progress& progress) {
     GenerationResult failed = runGuarded(
         path, [&](GenerationResult&) { project = doc::loadProjectOrScene(path, &report); });
     if (!failed.error.isEmpty()) return failed;
-    std::vector<doc::TreeId> ids(project.instances.size());
-    for (std::size_t i = 0; i < ids.size(); ++i)
-        ids[i] = static_cast<doc::TreeId>(i + 1);
-    GenerationResult result = generateProject(project, path, ids, nullptr, progress);
+    GenerationResult result = generateProject(project, path, nullptr, progress);
     QStringList warnings;
     for (const std::string& w : report.warnings)
         warnings << QString::fromStdString(w);

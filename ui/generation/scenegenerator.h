@@ -30,14 +30,14 @@ struct SceneCaches {
 /// Builds \p project's forest exactly as `sylva-cli forest` does (the same placement,
 /// adaptation to the obstacles and neighbours, and level of detail from the project's camera).
 /// Each tree is kept on its own (`trees`, placed by its instance transform; hand-placed trees
-/// carry the document id \p treeIds[i] of instance i); the obstacle and terrain meshes are
+/// carry their document id, ProjectInstance::id); the obstacle and terrain meshes are
 /// merged into `mesh` (submeshes "obstacle" and "ground"). With \p caches, trees whose inputs
 /// did not change since the last call are reused instead of regrown. Stats: "trees",
-/// "obstacle_triangles", "colliding_trees", "pruned_nodes", "height" (tallest tree) and the
-/// scene's "co2_kg"; "regrown" counts the trees actually grown. Never throws.
+/// "obstacle_triangles", "colliding_trees", "pruned_nodes", "height" (tallest tree), the
+/// scene's "co2_kg", "instanced", "unique" and "variants" (ForestStats); "regrown" counts the
+/// trees actually made again (not taken from the cache). Never throws.
 GenerationResult generateProject(const doc::Project& project, const QString& path,
-                                 const std::vector<doc::TreeId>& treeIds, SceneCaches* caches,
-                                 Progress& progress = noProgress());
+                                 SceneCaches* caches, Progress& progress = noProgress());
 
 /// Loads the project at \p path and generates it (generateProject); loader warnings go to
 /// GenerationResult::warning. A project with no trees and no obstacles is an error here.

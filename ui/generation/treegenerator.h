@@ -37,7 +37,7 @@ namespace sylva::ui {
 /// generation when the tree did not change) placed by its instance transform.
 struct DrawnTree {
     std::uint32_t docId = 0; ///< the document's tree id (hand-placed trees); 0 for domain trees
-    std::uint32_t instanceId = 0; ///< the forest's instance id (name suffix)
+    std::uint64_t instanceId = 0; ///< the forest's stable tree id (name suffix)
     std::uint32_t species = 0;    ///< index into the project's species
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};
@@ -67,6 +67,8 @@ struct GenerationResult {
     /// What File ▸ Export writes: the species' tree at the origin, or every tree of a project
     /// placed as sylva-cli forest places it (objects named as the CLI names them).
     std::vector<exporter::ExportTree> exportTrees;
+    /// The variants exportTrees' ExportTree::variant indexes (a project's forest only).
+    std::vector<exporter::ExportVariant> exportVariants;
     bool compactObj = false; ///< OBJ precision: compact for forests, full for one tree (as the CLI)
     /// The files the result was read from (absolute): the species or project file, grammar and
     /// other files its nodes name, a project's species and obstacle meshes. Filled as far as

@@ -98,6 +98,9 @@ py::dict generate() {
     stats["co2_kg"] = stat("co2_kg");
     stats["regrown"] = static_cast<std::size_t>(stat("regrown"));
     stats["colliding_trees"] = static_cast<std::size_t>(stat("colliding_trees"));
+    stats["instanced"] = static_cast<std::size_t>(stat("instanced"));
+    stats["unique"] = static_cast<std::size_t>(stat("unique"));
+    stats["variants"] = static_cast<std::size_t>(stat("variants"));
     stats["ms"] = r.elapsedMs;
     stats["edit_to_result_ms"] = w.generator().editToResultMs();
     return stats;

@@ -11,7 +11,7 @@
 namespace sylva::ui {
 
 /// A tree to draw in a frame: its index among the view's trees, its distance from the eye and
-/// its level of detail (ui/viewport/viewlod.h; ViewLod::kImpostorLevel: crossed cards).
+/// its level of detail (ui/viewport/viewlod.h; ViewLod::kImpostorLevel: the baked impostor).
 struct TreeDraw {
     std::size_t index = 0;
     float distance = 0.0f;

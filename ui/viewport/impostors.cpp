@@ -1,10 +1,9 @@
 #include "ui/viewport/impostors.h"
 
-#include <algorithm>
-
 #include <QOpenGLShaderProgram>
 
-#include <glm/gtc/matrix_transform.hpp>
+#include <cstddef>
+#include <iterator>
 
 #include "engine/mesh/mesh.h"
 #include "ui/viewport/shaderprogram.h"
@@ -13,122 +12,156 @@ namespace sylva::ui {
 
 bool Impostors::initialize(QOpenGLFunctions_3_3_Core* gl, QString& error) {
     mGl = gl;
-    // Two crossed cards drawn from the vertex id alone (shaders/card.vert).
-    mProgram = buildShaderProgram(QStringLiteral("card.vert"), QStringLiteral("card.frag"), error);
+    // One card drawn from the vertex id alone (shaders/impostor.vert).
+    mProgram =
+        buildShaderProgram(QStringLiteral("impostor.vert"), QStringLiteral("impostor.frag"), error);
     if (!mProgram) return false;
+    // The card's corners come from the vertex id; per instance: the model matrix (locations
+    // 0-3) and the highlight (4).
     gl->glGenVertexArrays(1, &mVao);
+    gl->glGenBuffers(1, &mInstances);
+    gl->glBindVertexArray(mVao);
+    gl->glBindBuffer(GL_ARRAY_BUFFER, mInstances);
+    for (GLuint c = 0; c < 4; ++c) {
+        gl->glEnableVertexAttribArray(c);
+        gl->glVertexAttribPointer(c, 4, GL_FLOAT, GL_FALSE, sizeof(Instance),
+                                  reinterpret_cast<const void*>(c * sizeof(glm::vec4)));
+        gl->glVertexAttribDivisor(c, 1);
+    }
+    gl->glEnableVertexAttribArray(4);
+    gl->glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, sizeof(Instance),
+                              reinterpret_cast<const void*>(offsetof(Instance, highlight)));
+    gl->glVertexAttribDivisor(4, 1);
+    gl->glBindVertexArray(0);
+    gl->glBindBuffer(GL_ARRAY_BUFFER, 0);
     return true;
 }
 
 void Impostors::release() {
     if (!mGl) return;
-    for (auto& [key, card] : mCards)
-        mGl->glDeleteTextures(1, &card.texture);
+    for (auto& [key, card] : mCards) {
+        const GLuint textures[3] = {card.color, card.normal, card.depth};
+        mGl->glDeleteTextures(3, textures);
+    }
     mCards.clear();
-    if (mFbo) mGl->glDeleteFramebuffers(1, &mFbo);
-    if (mDepth) mGl->glDeleteRenderbuffers(1, &mDepth);
     if (mVao) mGl->glDeleteVertexArrays(1, &mVao);
-    mFbo = mDepth = mVao = 0;
+    if (mInstances) mGl->glDeleteBuffers(1, &mInstances);
+    mVao = mInstances = 0;
     mProgram.reset();
     mGl = nullptr;
 }
 
-void Impostors::bake(const std::shared_ptr<const mesh::Mesh>& m, const DrawMesh& draw, GLuint fbo,
-                     const glm::ivec4& viewport) {
-    if (!mGl || !mProgram || !m || m->empty() || has(m.get())) return;
+GLuint Impostors::upload(const Image& image) {
     QOpenGLFunctions_3_3_Core& gl = *mGl;
-    Card card;
-    card.mesh = m;
-    card.lo = glm::vec3(std::numeric_limits<float>::max());
-    card.hi = glm::vec3(std::numeric_limits<float>::lowest());
-    for (const glm::vec3& p : m->positions) {
-        card.lo = glm::min(card.lo, p);
-        card.hi = glm::max(card.hi, p);
-    }
-    if (!mFbo) {
-        gl.glGenFramebuffers(1, &mFbo);
-        gl.glGenRenderbuffers(1, &mDepth);
-        gl.glBindRenderbuffer(GL_RENDERBUFFER, mDepth);
-        gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, 2 * kSize, kSize);
-    }
-    gl.glGenTextures(1, &card.texture);
-    gl.glBindTexture(GL_TEXTURE_2D, card.texture);
-    gl.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2 * kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                    nullptr);
+    GLuint t = 0;
+    gl.glGenTextures(1, &t);
+    gl.glBindTexture(GL_TEXTURE_2D, t);
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    const GLenum format = image.channels == 4 ? GL_RGBA : image.channels == 3 ? GL_RGB : GL_RED;
+    const GLint internal = image.channels == 4 ? GL_RGBA8 : image.channels == 3 ? GL_RGB8 : GL_R8;
+    gl.glTexImage2D(GL_TEXTURE_2D, 0, internal, image.width, image.height, 0, format,
+                    GL_UNSIGNED_BYTE, image.pixels.data());
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    // Mipmaps of the whole atlas mix neighbouring views below cell / 8 pixels: the levels stop
+    // there (the colour is bled into empty texels, so the levels above keep the edges clean).
+    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3);
+    gl.glGenerateMipmap(GL_TEXTURE_2D);
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gl.glBindFramebuffer(GL_FRAMEBUFFER, mFbo);
-    gl.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, card.texture, 0);
-    gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, mDepth);
-    // Transparent black: the picture is premultiplied by its coverage, so that mipmaps average
-    // the tree's colours without the background's (the shader divides by alpha).
-    gl.glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    gl.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    gl.glEnable(GL_DEPTH_TEST);
-    gl.glDepthMask(GL_TRUE);
-    const glm::vec3 c = 0.5f * (card.lo + card.hi);
-    const glm::vec3 half = glm::max(0.5f * (card.hi - card.lo), glm::vec3(1e-3f));
-    const float reach = 2.0f * glm::length(half) + 1.0f;
-    const glm::vec3 up(0.0f, 1.0f, 0.0f);
-    // Front: from +z looking along -z (screen right = +x); side: from -x along +x (right = +z).
-    for (int view = 0; view < 2; ++view) {
-        const glm::vec3 forward = view == 0 ? glm::vec3(0, 0, -1) : glm::vec3(1, 0, 0);
-        const glm::vec3 right = glm::cross(forward, up);
-        const glm::vec3 eye = c - reach * forward;
-        const float across = view == 0 ? half.x : half.z;
-        const glm::mat4 viewProj =
-            glm::ortho(-across, across, -half.y, half.y, 0.0f, 2.0f * reach) *
-            glm::lookAt(eye, c, up);
-        // The viewport's key light, placed as it is for a camera looking this way.
-        const glm::vec3 light = glm::normalize(-0.5f * forward + 0.8f * up - 0.6f * right);
-        gl.glViewport(view * kSize, 0, kSize, kSize);
-        draw(*m, viewProj, eye, light);
-    }
-    gl.glBindTexture(GL_TEXTURE_2D, card.texture);
-    gl.glGenerateMipmap(GL_TEXTURE_2D);
-    gl.glBindTexture(GL_TEXTURE_2D, 0);
-    gl.glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    gl.glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
-    mCards.emplace(m.get(), std::move(card));
+    return t;
 }
 
-void Impostors::retain(const std::function<bool(const mesh::Mesh*)>& keep) {
+void Impostors::bake(Key key, std::shared_ptr<const void> owner, const mesh::Mesh& source,
+                     const mesh::ImpostorMaterials& materials) {
+    if (!mGl || !mProgram || !key || source.triangleCount() == 0 || has(key)) return;
+    mesh::ImpostorSettings settings;
+    settings.grid = kGrid;
+    settings.cellPixels = kCell;
+    settings.supersample = 2;
+    const mesh::Impostor imp = mesh::bakeImpostor(source, materials, settings);
+    Card card;
+    card.owner = std::move(owner);
+    card.centre = imp.centre;
+    card.radius = imp.radius;
+    card.color = upload(imp.color);
+    card.normal = upload(imp.normal);
+    card.depth = upload(imp.depth);
+    mGl->glBindTexture(GL_TEXTURE_2D, 0);
+    mCards.emplace(key, std::move(card));
+}
+
+void Impostors::retain(const std::function<bool(Key)>& keep) {
     for (auto it = mCards.begin(); it != mCards.end();) {
         if (keep(it->first)) {
             ++it;
             continue;
         }
-        if (mGl) mGl->glDeleteTextures(1, &it->second.texture);
+        if (mGl) {
+            const GLuint textures[3] = {it->second.color, it->second.normal, it->second.depth};
+            mGl->glDeleteTextures(3, textures);
+        }
         it = mCards.erase(it);
     }
 }
 
-void Impostors::begin(const glm::mat4& viewProj) {
+void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light) {
     mProgram->bind();
     setUniform(*mProgram, "uViewProj", viewProj);
-    mProgram->setUniformValue("uPicture", 0);
-    mGl->glActiveTexture(GL_TEXTURE0);
-    mGl->glBindVertexArray(mVao);
-    // Both faces of a card are drawn.
-    mGl->glDisable(GL_CULL_FACE);
+    setUniform(*mProgram, "uEye", eye);
+    setUniform(*mProgram, "uLightDir", light);
+    mProgram->setUniformValue("uGrid", kGrid);
+    mProgram->setUniformValue("uCell", kCell);
+    mProgram->setUniformValue("uColor", 0);
+    mProgram->setUniformValue("uNormal", 1);
+    mProgram->setUniformValue("uDepth", 2);
+    for (auto& [key, list] : mQueue)
+        list.clear();
 }
 
-void Impostors::draw(const mesh::Mesh* m, const glm::mat4& transform, float highlight) {
-    auto it = mCards.find(m);
-    if (it == mCards.end()) return;
-    setUniform(*mProgram, "uModel", transform);
-    mProgram->setUniformValue("uLo", it->second.lo.x, it->second.lo.y, it->second.lo.z);
-    mProgram->setUniformValue("uHi", it->second.hi.x, it->second.hi.y, it->second.hi.z);
-    mProgram->setUniformValue("uHighlight", highlight);
-    mGl->glBindTexture(GL_TEXTURE_2D, it->second.texture);
-    mGl->glDrawArrays(GL_TRIANGLES, 0, 12);
+void Impostors::draw(Key key, const glm::mat4& transform, float highlight) {
+    if (mCards.count(key)) mQueue[key].push_back({transform, highlight});
 }
 
-void Impostors::end() {
-    mGl->glBindTexture(GL_TEXTURE_2D, 0);
-    mGl->glBindVertexArray(0);
+std::size_t Impostors::end() {
+    QOpenGLFunctions_3_3_Core& gl = *mGl;
+    gl.glBindVertexArray(mVao);
+    gl.glDisable(GL_CULL_FACE);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, mInstances);
+    std::size_t calls = 0;
+    for (auto it = mQueue.begin(); it != mQueue.end();) {
+        const std::vector<Instance>& list = it->second;
+        const auto card = mCards.find(it->first);
+        if (list.empty() || card == mCards.end()) {
+            it = list.empty() ? mQueue.erase(it) : std::next(it);
+            continue;
+        }
+        const Card& c = card->second;
+        setUniform(*mProgram, "uCentre", c.centre);
+        mProgram->setUniformValue("uRadius", c.radius);
+        gl.glActiveTexture(GL_TEXTURE2);
+        gl.glBindTexture(GL_TEXTURE_2D, c.depth);
+        gl.glActiveTexture(GL_TEXTURE1);
+        gl.glBindTexture(GL_TEXTURE_2D, c.normal);
+        gl.glActiveTexture(GL_TEXTURE0);
+        gl.glBindTexture(GL_TEXTURE_2D, c.color);
+        // Orphaned each time: the driver need not wait for the previous draw's copy.
+        gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(Instance)), nullptr,
+                        GL_STREAM_DRAW);
+        gl.glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(list.size() * sizeof(Instance)),
+                           list.data());
+        gl.glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(list.size()));
+        ++calls;
+        ++it;
+    }
+    gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
+    for (GLenum unit : {GL_TEXTURE2, GL_TEXTURE1, GL_TEXTURE0}) {
+        gl.glActiveTexture(unit);
+        gl.glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    gl.glBindVertexArray(0);
+    return calls;
 }
 
 } // namespace sylva::ui

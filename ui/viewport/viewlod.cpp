@@ -22,9 +22,9 @@ constexpr double kReferenceHeightPx = 1080.0;
 constexpr double kReferenceFovY = 60.0 * 3.14159265358979323846 / 180.0;
 
 // Levels 1.. are made for a tree this many of its heights away (it then spans about 935 /
-// heights pixels of the reference view: 375, 155 and 47: the impostor), with rings of this
+// heights pixels of the reference view: 375, 155 and 94: the impostor), with rings of this
 // many vertices.
-constexpr double kLevelHeights[ViewLod::kLevels] = {0.0, 2.5, 6.0, 20.0};
+constexpr double kLevelHeights[ViewLod::kLevels] = {0.0, 2.5, 6.0, 10.0};
 // A level is made only where it is at least this much farther than the distance the project's
 // camera LOD already made the full mesh for (closer, it would hardly be coarser).
 constexpr double kReuseFactor = 1.25;

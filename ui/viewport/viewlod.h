@@ -35,8 +35,8 @@ class ViewLod : public QObject {
 
 public:
     static constexpr int kLevels = 4;
-    /// The farthest level is no mesh but crossed cards (ui/viewport/impostors.h), which the
-    /// viewport makes on the GUI thread; meshFor() gives the level below it.
+    /// The farthest level is no mesh but the baked octahedral impostor (ui/viewport/impostors.h),
+    /// which the viewport bakes from the level below it (meshFor() gives that level).
     static constexpr int kImpostorLevel = kLevels - 1;
     /// The camera distance, in tree heights, for which level \p level (1..kLevels-1) is built,
     /// at the LOD's reference view (1080 px high, 60° field of view): the tree then spans

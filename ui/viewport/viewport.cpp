@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <set>
 
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -15,6 +16,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewportsurface.h"
@@ -374,7 +376,10 @@ void Viewport::syncTreeBuffers() {
     for (std::shared_ptr<const mesh::Mesh>& level : mLod->allLevelMeshes())
         all.push_back(std::move(level));
     mBuffers.sync(all, treeMeshes, mUploads, mLevelUploads);
-    mImpostors.retain([this](const mesh::Mesh* m) { return mBuffers.find(m) != nullptr; });
+    std::set<Impostors::Key> keys;
+    for (const ViewTree& t : mTrees)
+        keys.insert(impostorKey(t));
+    mImpostors.retain([&keys](Impostors::Key k) { return keys.count(k) > 0; });
 }
 
 void Viewport::resizeGL(int width, int height) {
@@ -443,6 +448,7 @@ void Viewport::paintGL() {
     mDrawnTrees = 0;
     mDrawnMotion = 0;
     mDrawnPerLevel.fill(0);
+    mImpostorDrawCalls = 0;
     const std::vector<DrawRange>& sceneRanges = mBuffers.sceneRanges();
     if (!sceneRanges.empty() || mBuffers.hasTrees()) {
         MeshUniforms u;
@@ -464,7 +470,7 @@ void Viewport::paintGL() {
             const ViewTree& t = mTrees[d.index];
             const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
             ++mDrawnTrees;
-            if (d.level == ViewLod::kImpostorLevel && mImpostors.has(t.mesh.get())) {
+            if (d.level == ViewLod::kImpostorLevel && mImpostors.has(impostorKey(t))) {
                 cards.push_back(&d);
                 continue;
             }
@@ -481,15 +487,15 @@ void Viewport::paintGL() {
         for (const ViewTree& t : mPreview)
             if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f);
         if (!cards.empty()) {
-            mImpostors.begin(viewProj);
+            mImpostors.begin(viewProj, mCamera.eye(), light);
             for (const TreeDraw* d : cards) {
                 const ViewTree& t = mTrees[d->index];
-                mImpostors.draw(t.mesh.get(), t.transform,
+                mImpostors.draw(impostorKey(t), t.transform,
                                 t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
                 ++mDrawnPerLevel[ViewLod::kImpostorLevel];
-                mDrawnTriangles += 4;
+                mDrawnTriangles += 2;
             }
-            mImpostors.end();
+            mImpostorDrawCalls = mImpostors.end();
         }
     }
     if (mOverlay) mOverlays.drawLines(*mLineProgram, mOverlay(), viewProj);
@@ -536,37 +542,43 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     return buildDrawList(view, drawn, mTreeBounds);
 }
 
+Impostors::Key Viewport::impostorKey(const ViewTree& t) {
+    return t.lod.skeleton ? static_cast<Impostors::Key>(t.lod.skeleton.get())
+                          : static_cast<Impostors::Key>(t.mesh.get());
+}
+
 void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
-    // A few pictures a frame, so that a forest coming into view does not stall one frame; the
-    // trees still waiting are drawn with their coarsest mesh meanwhile.
-    constexpr std::size_t kBakesPerFrame = 24;
+    // A few atlases a frame (each a few milliseconds from the tree's coarsest mesh), so that a
+    // forest coming into view does not stall one frame; the trees still waiting are drawn with
+    // their coarsest mesh meanwhile. Instances of a variant share one atlas.
+    constexpr std::size_t kBakesPerFrame = 4;
+    static const mesh::ImpostorTextures textures(exporter::resourcesDir() / "textures");
     std::size_t baked = 0;
     mImpostorsWanted = 0;
-    const Impostors::DrawMesh draw = [this](const mesh::Mesh& m, const glm::mat4& viewProj,
-                                            const glm::vec3& eye, const glm::vec3& light) {
-        MeshUniforms u;
-        u.viewProj = viewProj;
-        u.eye = eye;
-        u.light = light;
-        setMeshUniforms(u);
-        glActiveTexture(GL_TEXTURE0);
-        const std::size_t triangles = mDrawnTriangles;
-        drawTreeMesh(m, glm::mat4(1.0f), 0.0f);
-        mDrawnTriangles = triangles;
-    };
-    const glm::ivec4 viewport(0, 0, int(std::lround(width() * devicePixelRatioF())),
-                              int(std::lround(height() * devicePixelRatioF())));
     for (const TreeDraw& d : order) {
         const ViewTree& t = mTrees[d.index];
-        if (d.level != ViewLod::kImpostorLevel || mImpostors.has(t.mesh.get())) continue;
+        if (d.level != ViewLod::kImpostorLevel || mImpostors.has(impostorKey(t))) continue;
         if (baked == kBakesPerFrame) {
             ++mImpostorsWanted;
             continue;
         }
-        mImpostors.bake(t.mesh, draw, defaultFramebufferObject(), viewport);
+        int used = 0;
+        const mesh::Mesh* source = mLod->meshFor(t.mesh.get(), ViewLod::kImpostorLevel - 1, &used);
+        // Baked from the coarse level (cheap, and all the atlas' 64-pixel views can show) once
+        // the worker has made it, or at once from a mesh that is cheap already (an instance's
+        // far variant level); a tree without levels is baked from its own mesh.
+        constexpr std::size_t kCheapSource = 20000; // triangles: a few milliseconds to bake
+        if (used != ViewLod::kImpostorLevel - 1 && mLod->pending() > 0 && source &&
+            source->triangleCount() > kCheapSource) {
+            ++mImpostorsWanted;
+            continue;
+        }
+        const std::shared_ptr<const void> owner = t.lod.skeleton
+                                                      ? std::shared_ptr<const void>(t.lod.skeleton)
+                                                      : std::shared_ptr<const void>(t.mesh);
+        mImpostors.bake(impostorKey(t), owner, source ? *source : *t.mesh, textures);
         ++baked;
     }
-    glBindVertexArray(0);
     if (mImpostorsWanted > 0) update(); // the next frame takes the next ones
 }
 

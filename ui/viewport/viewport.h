@@ -170,6 +170,8 @@ public:
     const std::array<std::size_t, ViewLod::kLevels>& drawnPerLevel() const {
         return mDrawnPerLevel;
     }
+    /// Instanced draw calls the last frame's impostors took (one per atlas in view).
+    std::size_t impostorDrawCalls() const { return mImpostorDrawCalls; }
     /// The distance level of detail (ui/viewport/viewlod.h).
     ViewLod& lod() { return *mLod; }
     /// Trees whose coarser levels or impostor are still to be made (0: the view is final).
@@ -326,6 +328,8 @@ private:
         return mTrees[index].id != 0 && mHidden.contains(mTrees[index].id);
     }
     void bakeImpostors(const std::vector<TreeDraw>& order);
+    /// The atlas a tree draws far away: its skeleton's (shared by a variant's instances).
+    static Impostors::Key impostorKey(const ViewTree& t);
     void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight);
     void updateBounds();
     std::vector<ViewTree> mTrees;
@@ -352,6 +356,7 @@ private:
     std::size_t mDrawnTrees = 0;
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
+    std::size_t mImpostorDrawCalls = 0;
     std::size_t mDrawnMotion = 0;
     ViewLod* mLod = nullptr; ///< a child
     Impostors mImpostors;

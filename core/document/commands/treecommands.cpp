@@ -8,9 +8,11 @@ AddTree::AddTree(Document& doc, int index, TreeId id, ProjectInstance tree, QUnd
 
 void AddTree::undo() {
     mDoc.rawRemoveTree(mId);
+    mDoc.rawSetNextTreeId(mNextBefore);
 }
 
 void AddTree::redo() {
+    mNextBefore = mDoc.project().nextTreeId;
     mDoc.rawInsertTree(mIndex, mId, mTree);
 }
 

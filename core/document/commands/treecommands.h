@@ -4,7 +4,8 @@
 
 namespace sylva::doc::cmd {
 
-/// Adds a tree at an index with an id (redo), removes it (undo).
+/// Adds a tree at an index with an id (redo), removes it and gives the project its former
+/// next tree id back (undo).
 class AddTree : public QUndoCommand {
 public:
     AddTree(Document& doc, int index, TreeId id, ProjectInstance tree,
@@ -17,6 +18,7 @@ private:
     int mIndex;
     TreeId mId;
     ProjectInstance mTree;
+    std::uint64_t mNextBefore = 0;
 };
 
 /// Removes a tree (redo) and puts it back at its index with its id (undo).

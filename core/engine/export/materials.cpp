@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <string>
+#include <unistd.h>
 
 namespace sylva::exporter {
 
@@ -161,9 +163,18 @@ std::size_t copyTextures(const std::vector<Material>& materials,
             const std::filesystem::path to = exportDir / rel;
             std::error_code ec;
             std::filesystem::create_directories(to.parent_path(), ec);
-            std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing,
-                                       ec);
-            if (ec) throw IoError("cannot copy texture to " + to.string() + ": " + ec.message());
+            // Through a temporary and a rename: the tiles of a farm run copy the same textures
+            // into one folder at the same time, and a reader never sees half a PNG.
+            std::filesystem::path temp = to;
+            temp += ".tmp" + std::to_string(::getpid());
+            std::filesystem::copy_file(from, temp,
+                                       std::filesystem::copy_options::overwrite_existing, ec);
+            if (!ec) std::filesystem::rename(temp, to, ec);
+            if (ec) {
+                std::error_code ignored;
+                std::filesystem::remove(temp, ignored);
+                throw IoError("cannot copy texture to " + to.string() + ": " + ec.message());
+            }
             ++copied;
         }
     return copied;

@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
+#include <condition_variable>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <thread>
 #include <unordered_map>
 
 #include <assimp/Exporter.hpp>
@@ -229,7 +233,7 @@ SceneFormat sceneFormatFor(const std::filesystem::path& path) {
     if (ext == ".glb") return SceneFormat::Glb;
     if (ext == ".gltf") return SceneFormat::Gltf;
     if (ext == ".fbx") return SceneFormat::Fbx;
-    throw InvalidInput("unknown scene format '" + ext + "' (use .glb, .gltf or .fbx)");
+    throw InvalidInput("unknown scene format '" + ext + "' (use .obj, .usda, .glb, .gltf or .fbx)");
 }
 
 namespace {
@@ -283,45 +287,128 @@ private:
 
 } // namespace
 
-void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneFormat format) {
+namespace {
+
+// What Assimp's exporter made: the main file and, for a text glTF, its buffer.
+struct ExportResult {
+    std::string first, second;
+    std::string secondName; ///< Assimp's name of the second blob ("bin")
+    std::string error;
+};
+
+// Runs Assimp's exporter over a scene it owns. Assimp has no cancellation and its exporters
+// can run for minutes on a large scene, so it runs on a thread of its own that the caller may
+// abandon: it touches nothing but this job (its own copy of the scene, in-memory files), and
+// the job lives as long as the thread.
+struct ExportJob {
+    std::unique_ptr<aiScene> scene;
+    SceneFormat format = SceneFormat::Glb;
+    ExportResult result;
+    std::mutex mutex;
+    std::condition_variable finished;
+    bool done = false;
+
+    void run() {
+        try {
+            const char* id = format == SceneFormat::Glb        ? "glb2"
+                             : format == SceneFormat::Gltf     ? "gltf2"
+                             : format == SceneFormat::FbxAscii ? "fbxa"
+                                                               : "fbx";
+            Assimp::Exporter exporter;
+            if (format == SceneFormat::Fbx || format == SceneFormat::FbxAscii) {
+                // Assimp's FBX writer seeks back to patch block offsets, which its export blobs
+                // do not support: it writes into a seekable in-memory file instead.
+                auto* files = new MemoryFiles; // owned by the exporter from here on
+                exporter.SetIOHandler(files);
+                if (exporter.Export(scene.get(), id, "scene.fbx") != AI_SUCCESS)
+                    result.error = exporter.GetErrorString();
+                else
+                    result.first = files->take("scene.fbx");
+            } else if (const aiExportDataBlob* blob = exporter.ExportToBlob(scene.get(), id)) {
+                result.first.assign(static_cast<const char*>(blob->data), blob->size);
+                if (blob->next) {
+                    result.second.assign(static_cast<const char*>(blob->next->data),
+                                         blob->next->size);
+                    result.secondName = blob->next->name.C_Str();
+                }
+            } else {
+                result.error = exporter.GetErrorString();
+            }
+        } catch (const std::exception& e) {
+            result.error = e.what();
+        } catch (...) {
+            result.error = "unknown error in Assimp's exporter";
+        }
+        scene.reset();
+        const std::lock_guard<std::mutex> lock(mutex);
+        done = true;
+        finished.notify_all();
+    }
+};
+
+// Writes \p bytes atomically in slices, checking \p progress between them.
+void writeFileCancellable(const std::filesystem::path& path, std::string_view bytes,
+                          Progress& progress) {
+    constexpr std::size_t kSlice = std::size_t(16) << 20;
+    AtomicFile file(path);
+    for (std::size_t at = 0; at < bytes.size(); at += kSlice) {
+        progress.checkCancelled();
+        file.write(bytes.substr(at, kSlice));
+    }
+    progress.checkCancelled();
+    file.commit();
+}
+
+} // namespace
+
+void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneFormat format,
+                Progress& progress) {
     // A .glb and an .fbx are single files: their textures go inside. A text glTF keeps
     // references to the textures/ folder beside it.
-    const std::unique_ptr<aiScene> scene = buildScene(desc, format != SceneFormat::Gltf);
-    const char* id = format == SceneFormat::Glb        ? "glb2"
-                     : format == SceneFormat::Gltf     ? "gltf2"
-                     : format == SceneFormat::FbxAscii ? "fbxa"
-                                                       : "fbx";
-    Assimp::Exporter exporter;
+    auto job = std::make_shared<ExportJob>();
+    job->scene = buildScene(desc, format != SceneFormat::Gltf);
+    job->format = format;
+    progress.checkCancelled();
+    std::thread worker([job] { job->run(); });
+    {
+        std::unique_lock<std::mutex> lock(job->mutex);
+        while (!job->finished.wait_for(lock, std::chrono::milliseconds(50),
+                                       [&] { return job->done; })) {
+            if (progress.isCancelled()) {
+                // Abandoned: the thread finishes (or dies with the process) on its own data;
+                // nothing was written to disk yet.
+                lock.unlock();
+                worker.detach();
+                throw Cancelled();
+            }
+        }
+    }
+    worker.join();
+    ExportResult& result = job->result;
+    if (!result.error.empty())
+        throw IoError("cannot export " + path.string() + ": " + result.error);
+    progress.checkCancelled();
     if (format == SceneFormat::Fbx || format == SceneFormat::FbxAscii) {
-        // Assimp's FBX writer seeks back to patch block offsets, which its export blobs do not
-        // support: it writes into a seekable in-memory file instead, whose bytes are repaired
-        // (binary) or given their unit (both) and written atomically. No temporary on disk.
-        auto* files = new MemoryFiles; // owned by the exporter from here on
-        exporter.SetIOHandler(files);
-        if (exporter.Export(scene.get(), id, "scene.fbx") != AI_SUCCESS)
-            throw IoError("cannot export " + path.string() + ": " + exporter.GetErrorString());
-        std::string bytes = files->take("scene.fbx");
-        writeFileAtomically(path, format == SceneFormat::Fbx
-                                      ? repairAssimpFbxBinary(bytes)
-                                      : setFbxAsciiUnitScale(std::move(bytes)));
+        // The binary is repaired, both forms get their unit, before they are written.
+        writeFileCancellable(path,
+                             format == SceneFormat::Fbx
+                                 ? repairAssimpFbxBinary(result.first)
+                                 : setFbxAsciiUnitScale(std::move(result.first)),
+                             progress);
         return;
     }
-    const aiExportDataBlob* blob = exporter.ExportToBlob(scene.get(), id);
-    if (!blob) throw IoError("cannot export " + path.string() + ": " + exporter.GetErrorString());
     // A text glTF comes as the .gltf blob followed by its .bin, which the text references by
     // Assimp's blob placeholder ("$blobfile.bin"); we name it after the file instead.
-    std::string first(static_cast<const char*>(blob->data), blob->size);
-    if (format == SceneFormat::Gltf && blob->next) {
+    std::string& first = result.first;
+    if (format == SceneFormat::Gltf && !result.secondName.empty()) {
         const std::string binName = path.stem().string() + ".bin";
-        const std::string assimpBin = std::string("$blobfile.") + blob->next->name.C_Str();
+        const std::string assimpBin = std::string("$blobfile.") + result.secondName;
         for (std::size_t at = first.find(assimpBin); at != std::string::npos;
              at = first.find(assimpBin, at + binName.size()))
             first.replace(at, assimpBin.size(), binName);
-        const aiExportDataBlob* bin = blob->next;
-        writeFileAtomically(path.parent_path() / binName,
-                            std::string_view(static_cast<const char*>(bin->data), bin->size));
+        writeFileCancellable(path.parent_path() / binName, result.second, progress);
     }
-    writeFileAtomically(path, first);
+    writeFileCancellable(path, first, progress);
 }
 
 namespace {

@@ -9,6 +9,7 @@
 
 #include "engine/export/materials.h"
 #include "engine/mesh/mesh.h"
+#include "engine/util/progress.h"
 
 namespace sylva::exporter {
 
@@ -55,9 +56,13 @@ SceneFormat sceneFormatFor(const std::filesystem::path& path);
 /// leaf), each with its material (materialName) and texture: embedded in .glb and .fbx (read
 /// from textureSourceOf; a file that cannot be read stays a reference), referenced by .gltf; every
 /// instance is one node that references its mesh's Assimp meshes (shared, not copied). Written to
-/// memory first and then atomically to disk, so no half-written file appears. \throw InvalidInput,
-/// IoError
-void writeScene(const std::filesystem::path& path, const SceneDesc& scene, SceneFormat format);
+/// memory first and then atomically to disk, so no half-written file appears. Assimp cannot be
+/// interrupted, so its exporter runs on a thread of its own over its own copy of the scene;
+/// when \p progress is cancelled, writeScene abandons that thread within 50 ms (it finishes or
+/// ends with the process; nothing of it reaches the disk) and throws Cancelled.
+/// \throw InvalidInput, IoError, Cancelled
+void writeScene(const std::filesystem::path& path, const SceneDesc& scene, SceneFormat format,
+                Progress& progress = noProgress());
 
 /// Instance table rows as JSON: {"format":"sylva-instances","format_version":1,"instances":
 /// [{"name","mesh","position":[x,y,z],"rotation":[x,y,z,w],"scale":[x,y,z]}...]}.

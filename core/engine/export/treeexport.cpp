@@ -48,7 +48,15 @@ TreeExporter::TreeExporter(fs::path path, ObjChoices obj) : mPath(std::move(path
     for (char& c : ext)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     mObj = ext == ".obj";
-    if (mObj) {
+    if (ext == ".usda") {
+        usd::UsdLayerOptions options;
+        options.compact = obj.compact;
+        options.durability = obj.fsync ? Durability::Durable : Durability::Atomic;
+        if (const fs::path res = resourcesDir(); !res.empty())
+            options.shippedTextures = res / "textures";
+        mObj = false;
+        mUsd = std::make_unique<usd::UsdStageWriter>(mPath, std::move(options));
+    } else if (mObj) {
         ObjOptions options = obj.compact ? ObjOptions::compact() : ObjOptions{};
         options.mtllib = mPath.stem().string() + ".mtl";
         options.fsync = obj.fsync;
@@ -76,7 +84,45 @@ gltf::ForestGltfWriter& TreeExporter::gltfWriter() {
     return *mGltfWriter;
 }
 
+namespace {
+// The species of a forest's tree or variant from its name ("<species>_<id>",
+// "<species>_v<index>"), and the variant's index; the whole name when it has no such suffix.
+std::string speciesOfName(const std::string& name, const std::string& suffix) {
+    const std::size_t n = suffix.size();
+    if (name.size() > n && name.compare(name.size() - n, n, suffix) == 0)
+        return name.substr(0, name.size() - n);
+    return name;
+}
+std::uint32_t variantIndexOfName(const std::string& name, std::uint32_t fallback) {
+    const std::size_t at = name.rfind("_v");
+    if (at == std::string::npos || at + 2 >= name.size()) return fallback;
+    std::uint32_t k = 0;
+    for (std::size_t i = at + 2; i < name.size(); ++i) {
+        if (name[i] < '0' || name[i] > '9') return fallback;
+        k = k * 10 + static_cast<std::uint32_t>(name[i] - '0');
+    }
+    return k;
+}
+} // namespace
+
 void TreeExporter::addVariants(const std::vector<ExportVariant>& variants) {
+    if (mUsd) {
+        std::vector<usd::UsdVariant> out;
+        mUsdVariantSpecies.clear();
+        for (std::size_t i = 0; i < variants.size(); ++i) {
+            const ExportVariant& v = variants[i];
+            if (!v.mesh) throw InvalidInput("variant '" + v.name + "' has no mesh");
+            const std::uint32_t k = variantIndexOfName(v.name, static_cast<std::uint32_t>(i));
+            // Built by appending: GCC 12 reports a false -Wrestrict on "_v" + std::string&&.
+            std::string suffix("_v");
+            suffix.append(std::to_string(k));
+            const std::uint32_t species = mUsd->speciesIndex(speciesOfName(v.name, suffix));
+            mUsdVariantSpecies.push_back(species);
+            out.push_back({species, k, v.mesh});
+        }
+        mUsd->setVariants(std::move(out));
+        return;
+    }
     mGltfVariants.clear();
     for (const ExportVariant& v : variants) {
         if (!v.mesh) throw InvalidInput("variant '" + v.name + "' has no mesh");
@@ -85,6 +131,24 @@ void TreeExporter::addVariants(const std::vector<ExportVariant>& variants) {
 }
 
 void TreeExporter::add(const std::vector<ExportTree>& trees) {
+    if (mUsd) {
+        std::vector<usd::UsdTree> out;
+        out.reserve(trees.size());
+        for (const ExportTree& t : trees) {
+            usd::UsdTree u{t.id, 0, t.variant, t.position, t.rotationY, t.scale, nullptr};
+            if (t.variant >= 0 && static_cast<std::size_t>(t.variant) < mUsdVariantSpecies.size()) {
+                u.species = mUsdVariantSpecies[static_cast<std::size_t>(t.variant)];
+            } else {
+                std::string suffix("_");
+                suffix.append(std::to_string(t.id));
+                u.species = mUsd->speciesIndex(speciesOfName(t.name, suffix));
+                u.mesh = t.mesh;
+            }
+            out.push_back(std::move(u));
+        }
+        mUsd->add(out, *mProgress);
+        return;
+    }
     if (mGltf) {
         gltf::ForestGltfWriter& out = gltfWriter();
         for (const ExportTree& t : trees) {
@@ -138,6 +202,8 @@ void TreeExporter::add(const std::vector<ExportTree>& trees) {
 }
 
 std::vector<fs::path> TreeExporter::commit() {
+    mProgress->checkCancelled();
+    if (mUsd) return mUsd->commit(*mProgress);
     std::vector<fs::path> written{mPath};
     const SceneFormat sceneFormat = mObj ? SceneFormat::Glb : sceneFormatFor(mPath);
     const fs::path dir = mPath.parent_path().empty() ? fs::path(".") : mPath.parent_path();
@@ -150,12 +216,14 @@ std::vector<fs::path> TreeExporter::commit() {
         written = gltfWriter().commit();
     } else {
         mScene.textureSource = resourcesDir() / "textures";
-        writeScene(mPath, mScene, sceneFormat);
+        writeScene(mPath, mScene, sceneFormat, *mProgress);
     }
     // OBJ and text glTF reference their textures beside them; .glb and .fbx carry them inside.
     if (mObj || sceneFormat == SceneFormat::Gltf) {
         const fs::path res = resourcesDir();
-        if (copyTextures(mObj ? mObjMaterials : gltfWriter().materials(),
+        if (copyTextures(mObj    ? mObjMaterials
+                         : mGltf ? gltfWriter().materials()
+                                 : mScene.materials,
                          res.empty() ? fs::path() : res / "textures", dir) > 0)
             written.push_back(dir / "textures");
     }

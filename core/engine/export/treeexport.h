@@ -12,6 +12,7 @@
 #include "engine/export/gltf/forestgltf.h"
 #include "engine/export/objwriter.h"
 #include "engine/export/sceneexport.h"
+#include "engine/export/usd/usdstagewriter.h"
 #include "engine/mesh/mesh.h"
 
 namespace sylva::exporter {
@@ -47,8 +48,11 @@ struct ObjChoices {
 /// the bark/leaf textures, the species' own included, in `textures/` beside it); `.glb` and
 /// `.gltf` stream through gltf::ForestGltfWriter (variants once with their instances through
 /// EXT_mesh_gpu_instancing in 50 m cells, unique trees as mesh nodes; .glb with the textures
-/// embedded, .gltf with them in `textures/`); `.fbx` goes through Assimp with one node per tree
-/// (textures embedded). Nothing appears at the path before commit() succeeds.
+/// embedded, .gltf with them in `textures/`); `.usda` through usd::UsdStageWriter (a PointInstancer
+/// per species over its variants, unique trees as meshes; species from the names
+/// "<species>_<id>" and "<species>_v<k>" the forest gives; no tiles: the CLI writes those); `.fbx`
+/// goes through Assimp with one node per tree (textures embedded). Nothing appears at the path
+/// before commit() succeeds.
 class TreeExporter {
 public:
     /// \param obj how the OBJ stream is written; the other files are small and always
@@ -61,9 +65,17 @@ public:
     /// Where a long write (the glTF file's final copy) learns to stop; by default never.
     void setProgress(Progress& progress) { mProgress = &progress; }
     /// Finishes the file(s); returns the paths written (main file first).
+    /// \throw IoError; Cancelled through setProgress's progress (FBX: see writeScene).
     std::vector<std::filesystem::path> commit();
     /// Also write `<stem>.instances.json` and `.csv` (mesh, position, rotation, scale).
     void setInstanceTables(bool on) { mInstanceTables = on; }
+    /// Writes .glb/.gltf through Assimp's exporter (one node per tree, no instancing, the whole
+    /// file in memory; quadratic in the file's size) instead of gltf::ForestGltfWriter: for
+    /// comparisons (`sylva-cli forest --assimp-gltf`). Call before add().
+    void setAssimpGltf(bool on) { mGltf = mGltf && !on; }
+    /// Whether the output instances the variants (glTF through our writer): then the trees'
+    /// own meshes of instanced trees are not written (ForestOptions::meshInstances can be off).
+    bool writesInstances() const { return mGltf; }
 
 private:
     gltf::ForestGltfWriter& gltfWriter();
@@ -75,6 +87,8 @@ private:
     ObjChoices mChoices;
     Progress* mProgress = &noProgress();
     std::unique_ptr<gltf::ForestGltfWriter> mGltfWriter;
+    std::unique_ptr<usd::UsdStageWriter> mUsd;     ///< `.usda`
+    std::vector<std::uint32_t> mUsdVariantSpecies; ///< per variant of the last addVariants
     std::vector<int> mGltfVariants; ///< the last addVariants list → the writer's variants
     /// Unique trees' meshes already written, by address; the weak pointer tells a mesh still
     /// shared from a new one that reuses a freed mesh's address (meshes are not kept alive).

@@ -372,10 +372,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             used[placed.instances[index].species] = true;
         for (std::size_t sp = 0; sp < scene.species.size(); ++sp) {
             if (!used[sp] || plans[sp].selfOrganizing) continue;
-            const int k = scene.species[sp].variants > 0 ? scene.species[sp].variants
-                                                         : options.variantsPerSpecies;
-            requireRange(("variants of species '" + scene.species[sp].name + "'").c_str(), k, 1,
+            const int k = scene.species[sp].variants >= 0 ? scene.species[sp].variants
+                                                          : options.variantsPerSpecies;
+            requireRange(("variants of species '" + scene.species[sp].name + "'").c_str(), k, 0,
                          256);
+            if (k == 0) continue; // a species grown tree by tree
             firstVariant[sp] = static_cast<std::int32_t>(variants.size());
             variantCount[sp] = static_cast<std::uint32_t>(k);
             const std::uint64_t base =
@@ -400,7 +401,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 std::uint64_t cacheKey = 0;
                 if (options.cache) {
                     cacheKey = mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),
-                                       options.buildMeshes ? 0x4D : 0x53);
+                                       options.buildMeshes ? (options.useLod ? 0x4C : 0x4D) : 0x53);
                     cacheKey = mixSeed(
                         cacheKey, static_cast<std::uint64_t>(meshSettings[variant.species].season));
                     if (std::optional<ForestVariant> cached =
@@ -433,6 +434,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     variant.meshSettings = std::make_shared<const mesh::TreeMeshSettings>(settings);
                     variant.mesh = std::make_shared<const mesh::Mesh>(
                         mesh::buildTreeMesh(*variant.skeleton, settings));
+                    if (options.useLod)
+                        variant.levels =
+                            mesh::buildDistanceLevels(*variant.skeleton, settings, variant.mesh);
                     cpuMesh[thread] += msSince(t);
                 } else {
                     variant.mesh = std::make_shared<const mesh::Mesh>();
@@ -460,6 +464,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         std::vector<std::exception_ptr> errors(end - begin);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
         for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(end - begin); ++k) {
+            // Ctrl-C/SIGTERM: the trees not started are skipped, the batch ends with the trees
+            // in flight and checkCancelled() below throws (a batch of 64 takes seconds).
+            if (progress.isCancelled()) continue;
             const auto slot = static_cast<std::size_t>(k);
             const std::size_t index = selected[begin + slot];
             const auto thread = static_cast<std::size_t>(omp_get_thread_num());
@@ -484,23 +491,37 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 ctx.leafAspect = static_cast<float>(meshSettings[in.species].leafCards.aspect);
                 ctx.key = in.id + 1;
 
-                // A tree nothing would adapt (no obstacle near its variant, no neighbour's crown
-                // core in its own, as adaptation sees them) shows one of its species' variants,
-                // picked by its seed.
-                // A tree in a season of its own is grown as itself (variants show the scene's).
+                // A domain tree nothing would adapt (no obstacle near its variant, no
+                // neighbour's crown core in its own, as adaptation sees them) shows one of its
+                // species' variants, picked by its seed. Hand-placed trees are the artist's
+                // own: always grown from their seed. A tree in a season of its own is grown as
+                // itself too (the variants are grown in the scene's season).
                 const bool ownSeason = in.season >= 0 && static_cast<mesh::Season>(in.season) !=
                                                              meshSettings[in.species].season;
-                if (firstVariant[in.species] >= 0 && near.empty() && !ownSeason) {
+                if (firstVariant[in.species] >= 0 && !in.handPlaced && near.empty() && !ownSeason) {
                     const auto v = static_cast<std::size_t>(firstVariant[in.species]) +
                                    mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species];
                     if (!touchesObstacles(obstacles, in, extents[v])) {
                         const ForestVariant& variant = variants[v];
                         tree.variant = static_cast<std::int32_t>(v);
-                        tree.mesh = variant.mesh;
                         tree.skeleton = variant.skeleton;
                         tree.meshSettings = variant.meshSettings;
                         tree.metrics =
                             forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
+                        if (!options.useLod || !options.buildMeshes || !options.meshInstances ||
+                            variant.levels.empty()) {
+                            tree.mesh = variant.mesh; // shared: drawn with the tree's transform
+                            continue;
+                        }
+                        // The variant's level for this tree's size on screen, made once per
+                        // variant (the full-detail variant drawn 1,000 times made an OBJ 13
+                        // times larger): the variant stands at scale 1, the tree at scale·growth.
+                        const double s = std::max(1e-3, static_cast<double>(in.scale) *
+                                                            static_cast<double>(in.growth));
+                        const mesh::DistanceLevel& level =
+                            variant.levels[mesh::levelFor(variant.levels, ctx.cameraDistance / s)];
+                        tree.mesh = level.mesh;
+                        tree.meshCameraDistance = level.distance * s;
                         continue;
                     }
                 }
@@ -582,18 +603,19 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     settings.hasCamera = true;
                     settings.cameraLocal =
                         glm::vec3(glm::inverse(ctx.transform) * glm::vec4(scene.camera, 1.0f));
-                    if (options.adapt && !obstacles.empty())
-                        settings.acceptLeafCard = [&obstacles, &ctx,
-                                                   &skeleton](const skel::Leaf& leaf) {
-                            const bool onNode = leaf.node >= 0 && static_cast<std::size_t>(
-                                                                      leaf.node) < skeleton->size();
-                            const glm::vec3 stem =
-                                onNode ? skeleton->position[static_cast<std::size_t>(leaf.node)]
-                                       : leaf.position;
-                            return !env::leafCardTouches(obstacles, ctx.transform, leaf, stem,
-                                                         ctx.leafScale, ctx.leafAspect);
-                        };
                 }
+                if ((options.useLod || settings.leafClusterSize > 1) && options.adapt &&
+                    !obstacles.empty())
+                    settings.acceptLeafCard = [&obstacles, &ctx,
+                                               &skeleton](const skel::Leaf& leaf) {
+                        const bool onNode = leaf.node >= 0 &&
+                                            static_cast<std::size_t>(leaf.node) < skeleton->size();
+                        const glm::vec3 stem =
+                            onNode ? skeleton->position[static_cast<std::size_t>(leaf.node)]
+                                   : leaf.position;
+                        return !env::leafCardTouches(obstacles, ctx.transform, leaf, stem,
+                                                     ctx.leafScale, ctx.leafAspect);
+                    };
                 tree.mesh =
                     std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
                 cpuMesh[thread] += msSince(t);
@@ -602,6 +624,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 errors[slot] = std::current_exception();
             }
         }
+        progress.checkCancelled();
         for (const std::exception_ptr& e : errors)
             if (e) std::rethrow_exception(e); // the first failing tree in instance order
         for (const ForestTree& tree : batch) {

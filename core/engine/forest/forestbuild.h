@@ -15,6 +15,7 @@
 #include "engine/forest/metrics.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/lod.h"
+#include "engine/mesh/lodchain.h"
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/placement/placement.h"
@@ -30,8 +31,9 @@ struct SceneSpecies {
     std::string name;
     graph::SpeciesGraph graph;
     /// K, the number of variants instanced trees of this species share (the project's per-species
-    /// setting); 0: ForestOptions::variantsPerSpecies.
-    int variants = 0;
+    /// setting), 0..256; 0: none, every tree of the species is grown for its place (hero
+    /// species); -1: ForestOptions::variantsPerSpecies.
+    int variants = -1;
 };
 
 /// Everything a forest is built from; the document layer fills it from a `.sylva` project.
@@ -60,6 +62,10 @@ struct ForestVariant {
     std::shared_ptr<const skel::Skeleton> skeleton;
     std::shared_ptr<const mesh::TreeMeshSettings> meshSettings;
     forest::TreeMetrics metrics; ///< at scale 1
+    /// With ForestOptions::useLod: the variant's levels of detail, made once (level 0 = mesh;
+    /// mesh::buildDistanceLevels); an instance seen from d metres at scale s draws
+    /// mesh::levelFor(levels, d / s). Empty without useLod.
+    std::vector<mesh::DistanceLevel> levels;
 };
 using VariantSink = std::function<void(const std::vector<ForestVariant>&)>;
 
@@ -80,12 +86,18 @@ struct ForestOptions {
     std::uint64_t obstaclesKey = 0;
     /// K for species that do not set their own (SceneSpecies::variants), 1..256.
     int variantsPerSpecies = 8;
-    /// true: a tree that touches no obstacle and no neighbour's crown is an instance of one of
-    /// its species' variants; false: every tree is grown and adapted uniquely.
+    /// true: a domain tree that touches no obstacle and no neighbour's crown is an instance of
+    /// one of its species' variants (hand-placed trees are always grown from their own seed);
+    /// false: every tree is grown and adapted uniquely.
     bool instancing = true;
     /// Called once, before the first tree batch, with every variant of the built tile's
     /// species (see ForestVariant); may be empty.
     VariantSink onVariants;
+    /// With useLod: true, each instanced tree's mesh is its variant meshed at the tree's
+    /// distance (for consumers that draw every tree's own mesh: OBJ, FBX, the viewport);
+    /// false, it is the variant's shared mesh (writers that instance the variants, glTF, USD:
+    /// no mesh is made per instance).
+    bool meshInstances = true;
 };
 
 /// One finished tree, in its own local frame; `instance.transform()` places it in the world.
@@ -93,8 +105,11 @@ struct ForestTree {
     placement::Instance instance;
     std::string name; ///< "<species>_<id>"
     /// Index into the variant list handed to ForestOptions::onVariants; -1: a unique tree
-    /// (grown and adapted for its place). An instanced tree's mesh, skeleton and meshSettings
-    /// are its variant's (shared, not copied), in the tree's local frame like a unique tree's.
+    /// (grown and adapted for its place). An instanced tree's skeleton and meshSettings are its
+    /// variant's (shared, not copied), in the tree's local frame like a unique tree's; so is its
+    /// mesh without the camera LOD (ForestOptions::useLod false) or with meshInstances false.
+    /// Otherwise the mesh is the variant's skeleton meshed at the tree's camera distance, as a
+    /// unique tree's is.
     std::int32_t variant = -1;
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).

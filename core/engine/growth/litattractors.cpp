@@ -38,12 +38,16 @@ void validate(const LightParams& p) {
         throw InvalidInput("light.shaded_fraction must be in [0, 1), got " +
                            std::to_string(p.shadedFraction));
     requireIn("voxel_size", p.voxelSize, 0, 100, true);
+    requireIn("inner_clusters", p.innerClusters, 0, 1000, false);
+    requireIn("inner_radius", p.innerRadius, 0, 2, true);
 }
 
 std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
                                      const LightParams& params, std::uint64_t seed) {
     validate(params);
     if (points.empty() || (params.clusters == 0 && params.shadedFraction <= 0.0f)) return points;
+    // Inner clusters only make sense inside a crown of lit clusters.
+    const int innerCount = params.clusters > 0 ? params.innerClusters : 0;
 
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const glm::vec3& p : points) {
@@ -122,6 +126,29 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
             }
             centres.push_back(points[best]);
             radii.push_back(params.clusterRadius * halfExtent *
+                            (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                const glm::vec3 d = points[i] - points[best];
+                nearest[i] = std::min(nearest[i], glm::dot(d, d));
+            }
+        }
+        // Inner clusters: among the shaded inside that is not shed, as far from every centre
+        // as possible, so the limbs carry foliage through the depth of the crown.
+        const float innerR = params.innerRadius * params.clusterRadius * halfExtent;
+        for (int c = 0; c < innerCount; ++c) {
+            std::size_t best = points.size();
+            float bestScore = -1.0f;
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                if (shadow[i] <= median[bandOf(points[i])] || shadow[i] >= shedAbove) continue;
+                const float score = std::sqrt(nearest[i]) * jitter[i];
+                if (score > bestScore) {
+                    bestScore = score;
+                    best = i;
+                }
+            }
+            if (best == points.size()) break;
+            centres.push_back(points[best]);
+            radii.push_back(innerR *
                             (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
             for (std::size_t i = 0; i < points.size(); ++i) {
                 const glm::vec3 d = points[i] - points[best];

@@ -24,6 +24,13 @@ struct LightParams {
     float shadedFraction = 0.0f;
     /// Edge of a shadow voxel; (0, 100].
     float voxelSize = 0.6f;
+    /// Clusters inside the crown, among the points more shaded than their height band's median
+    /// (but not shed): the foliage a real crown carries on its main limbs under the lit shell.
+    /// Without them a crown of lit clusters is a thin shell that reads from the side as a ring
+    /// with an empty middle; [0, 1000].
+    int innerClusters = 0;
+    /// Radius of an inner cluster as a fraction of clusterRadius; (0, 2].
+    float innerRadius = 0.7f;
 };
 
 /// Throws InvalidInput with the allowed range for the first bad value.
@@ -37,7 +44,9 @@ void validate(const LightParams& params);
 /// already chosen (× a seeded jitter in [0.75, 1]), among the points at most as shaded as the
 /// median of their height band (one of eight), so they sit on the lit outside of the crown and
 /// spread over it (the most exposed first); a point is kept when it lies within its nearest
-/// cluster's radius and it is not among the shadedFraction most shaded. Deterministic for a seed.
+/// cluster's radius and it is not among the shadedFraction most shaded. The innerClusters are
+/// picked the same way after them among the inside points (more shaded than their band's median,
+/// not shed), spread by distance alone. Deterministic for a seed.
 std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
                                      const LightParams& params, std::uint64_t seed);
 

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "engine/mesh/leafclusters.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -228,13 +229,30 @@ double ringWidthCompensation(int base, int res) {
 } // namespace
 
 namespace {
+// One card a leaf, or cluster cards when the species has a cluster atlas.
+void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
+                  const TreeMeshSettings& settings, const skel::Skeleton* skeleton) {
+    if (settings.leafClusterSize > 1) {
+        LeafClusterSettings clusters;
+        clusters.leavesPerCard = settings.leafClusterSize;
+        clusters.seed = settings.seed;
+        appendLeafClusterCards(mesh, leaves, settings.leafCards, clusters, skeleton,
+                               settings.acceptLeafCard);
+    } else {
+        appendLeafCards(mesh, leaves, settings.leafCards, skeleton);
+    }
+}
+
 Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {
     for (Submesh& s : mesh.submeshes) {
         if (s.material == "bark") s.texture = settings.barkTexture;
-        if (s.material == "leaf")
-            s.texture = settings.deciduous
-                            ? seasonTextureFile(settings.leafTexture, settings.season)
-                            : settings.leafTexture;
+        if (s.material == "leaf") {
+            // A cluster card shows the species' cluster atlas; a deciduous tree's the season's
+            // version of its atlas or leaf (the summer one where none was drawn).
+            const std::string& summer =
+                settings.leafClusterSize > 1 ? settings.leafClusterTexture : settings.leafTexture;
+            s.texture = settings.deciduous ? seasonTextureFile(summer, settings.season) : summer;
+        }
     }
     return mesh;
 }
@@ -250,9 +268,9 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
             if (settings.deciduous && settings.season != Season::Summer) {
                 const std::vector<skel::Leaf> leaves =
                     seasonLeaves(skeleton.leaves, settings.season, true, settings.seed);
-                if (!leaves.empty()) appendLeafCards(mesh, leaves, settings.leafCards, &skeleton);
+                if (!leaves.empty()) appendLeaves(mesh, leaves, settings, &skeleton);
             } else {
-                appendLeafCards(mesh, skeleton.leaves, settings.leafCards, &skeleton);
+                appendLeaves(mesh, skeleton.leaves, settings, &skeleton);
             }
         }
         return mesh;
@@ -293,7 +311,7 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
             if (settings.acceptLeafCard)
                 std::erase_if(leaves, std::not_fn(settings.acceptLeafCard));
         }
-        appendLeafCards(mesh, leaves, settings.leafCards, &kept);
+        appendLeaves(mesh, leaves, settings, &kept);
     }
     return mesh;
 }
@@ -302,7 +320,9 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
 Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
                    Progress& progress) {
     Mesh mesh = buildUntexturedTreeMesh(skeleton, settings, progress);
-    if (settings.barkTexture.empty() && settings.leafTexture.empty()) return mesh;
+    if (settings.barkTexture.empty() && settings.leafTexture.empty() &&
+        settings.leafClusterTexture.empty())
+        return mesh;
     return withTextures(std::move(mesh), settings);
 }
 

@@ -116,6 +116,10 @@ struct TreeMeshSettings {
     /// choice over it) and whether the species drops its leaves (`deciduous`): see season.h.
     Season season = Season::Summer;
     bool deciduous = false;
+    /// Leaves a cluster card carries on average (engine/mesh/leafclusters.h); 0: one card a
+    /// leaf. With it the leaf submesh shows leafClusterTexture (the species' cluster atlas).
+    int leafClusterSize = 0;
+    std::string leafClusterTexture;
 };
 
 /// Bark tubes plus leaf cards, at the level of detail the settings ask for.

@@ -129,6 +129,11 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
         for (const Value& c : a)
             requireRange("autumn_color", c.toNumber("autumn_color"), 0.0, 1.0);
     }
+    s.leafClusterSize = rangedInt(p, "leaf_cluster_size", 0, 0, 64);
+    s.leafClusterTexture = texture("leaf_cluster_texture_file");
+    if (s.leafClusterSize > 1 && s.leafClusterTexture.empty())
+        throw InvalidInput("leaf_cluster_size " + std::to_string(s.leafClusterSize) +
+                           " needs leaf_cluster_texture_file (the species' cluster atlas)");
     return s;
 }
 
@@ -258,7 +263,10 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
     group(tube.params, "Leaves",
           {boolean("leaves", true, "Draw the skeleton's leaves as cards"),
            number("leaf_scale", 1.0, 1e-6, 100, "", "Multiplies every leaf card's length"),
-           number("leaf_aspect", 0.5, 1e-6, 4, "", "Leaf card width / length")});
+           number("leaf_aspect", 0.5, 1e-6, 4, "", "Leaf card width / length"),
+           integer("leaf_cluster_size", 0, 0, 64,
+                   "Leaves one card carries on average (needs leaf_cluster_texture_file); "
+                   "0: one card a leaf")});
     group(tube.params, "Level of detail",
           {number("lod_distance", -1.0, -1, 1e7, "m",
                   "Camera distance the mesh is made for; -1: full detail"),
@@ -280,7 +288,9 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
           {other("bark_texture_file", ParamKind::File,
                  "Bark PNG (tiles; u around, v along); none: Sylva's bark.png"),
            other("leaf_texture_file", ParamKind::File,
-                 "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png")});
+                 "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png"),
+           other("leaf_cluster_texture_file", ParamKind::File,
+                 "Leaf cluster atlas RGBA PNG: 2 x 2 tiles, three sprays and the single leaf")});
     group(
         tube.params, "Season",
         {choice("season", "summer", {"spring", "summer", "autumn", "winter"},

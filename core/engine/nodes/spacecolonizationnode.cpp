@@ -158,7 +158,11 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
                   "Spread of the cluster radii: radius x (1 +- spread/2)"),
            number("shaded_fraction", 0.0, 0, 0.99, "",
                   "Drop this fraction of the points, the most shaded by those above"),
-           number("light_voxel_size", 0.6, 0, 100, "m", "Edge of a shadow voxel", true)});
+           number("light_voxel_size", 0.6, 0, 100, "m", "Edge of a shadow voxel", true),
+           integer("light_inner_clusters", 0, 0, 1000,
+                   "Clusters in the shaded inside: foliage on the main limbs under the lit shell"),
+           number("light_inner_radius", 0.7, 0, 2, "",
+                  "Inner cluster radius as a fraction of the lit clusters' radius", true)});
     group(type.params, "Growth",
           {number("influence_distance", 3.0, 0, 1000, "m",
                   "d_i: a point attracts its closest node within this distance", true),
@@ -212,6 +216,8 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
             light.clusterSpread = static_cast<float>(p.number("light_cluster_spread", 0.5));
             light.shadedFraction = static_cast<float>(p.number("shaded_fraction", 0.0));
             light.voxelSize = static_cast<float>(p.number("light_voxel_size", 0.6));
+            light.innerClusters = static_cast<int>(p.integer("light_inner_clusters", 0));
+            light.innerRadius = static_cast<float>(p.number("light_inner_radius", 0.7));
             validate(light);
             const Value* env = p.find("envelope");
             if (env != nullptr) envelope = envelopeFromParams(*env, ctx);

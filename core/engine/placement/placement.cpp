@@ -95,6 +95,25 @@ public:
         mHead[c] = index;
     }
 
+    /// Whether a tree of radius \p r at \p q and a stored one stand inside each other's
+    /// cylinders (either way).
+    bool collides(const glm::vec2& q, float r) const {
+        const float r2 = r * r;
+        auto hit = [&](std::size_t j) { return dist2(q, mPos[j]) < std::max(mR2[j], r2); };
+        if (!mGrid) {
+            for (std::size_t j = 0; j < mPos.size(); ++j)
+                if (hit(j)) return true;
+            return false;
+        }
+        const int cx = cellX(q.x), cz = cellZ(q.y);
+        for (int z = std::max(cz - 1, 0); z <= std::min(cz + 1, mNz - 1); ++z)
+            for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, mNx - 1); ++x)
+                for (std::int32_t j = mHead[cellIndex(x, z)]; j >= 0;
+                     j = mNext[static_cast<std::size_t>(j)])
+                    if (hit(static_cast<std::size_t>(j))) return true;
+        return false;
+    }
+
     bool blocked(const glm::vec2& q) const {
         if (!mGrid) {
             for (std::size_t j = 0; j < mPos.size(); ++j)
@@ -190,10 +209,40 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
         lo = glm::min(lo, dlo);
         hi = glm::max(hi, dhi);
     }
+    std::vector<std::uint64_t> domainIds(domains.size());
+    {
+        std::map<std::uint64_t, std::size_t> seen;
+        for (std::size_t d = 0; d < domains.size(); ++d) {
+            domainIds[d] = domains[d].id ? domains[d].id : d + 1;
+            if (domainIds[d] > kMaxDomainId)
+                throw InvalidInput("domain " + std::to_string(d + 1) + ": id " +
+                                   std::to_string(domainIds[d]) + " is not in [1, " +
+                                   std::to_string(kMaxDomainId) + "]");
+            if (!seen.emplace(domainIds[d], d).second)
+                throw InvalidInput("domains " + std::to_string(seen[domainIds[d]] + 1) + " and " +
+                                   std::to_string(d + 1) + " have the same id " +
+                                   std::to_string(domainIds[d]));
+        }
+    }
+    std::vector<std::uint64_t> handIds(handPlaced.size());
+    {
+        std::map<std::uint64_t, std::size_t> seen;
+        for (std::size_t i = 0; i < handPlaced.size(); ++i) {
+            handIds[i] = handPlaced[i].id ? handPlaced[i].id : i + 1;
+            if (handIds[i] >= kDomainIdStride)
+                throw InvalidInput("hand-placed instance " + std::to_string(i + 1) + ": id " +
+                                   std::to_string(handIds[i]) + " is not in [1, " +
+                                   std::to_string(kDomainIdStride - 1) + "]");
+            if (!seen.emplace(handIds[i], i).second)
+                throw InvalidInput("hand-placed instances " + std::to_string(seen[handIds[i]] + 1) +
+                                   " and " + std::to_string(i + 1) + " have the same id " +
+                                   std::to_string(handIds[i]));
+        }
+    }
     for (const Instance& inst : handPlaced) {
         if (inst.species >= species.size())
             throw InvalidInput("hand-placed instance " + std::to_string(inst.id) +
-                               ": unknown species index");
+                               ": unknown species index " + std::to_string(inst.species));
         lo = glm::min(lo, glm::vec2(inst.position.x, inst.position.z));
         hi = glm::max(hi, glm::vec2(inst.position.x, inst.position.z));
     }
@@ -207,28 +256,32 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
     PlacementResult result;
     result.instances.reserve(total);
     if (lo.x > hi.x) lo = hi = glm::vec2(0.0f);
-    Occupancy occupied(method, lo, hi, maxRadius, total);
-    for (const Instance& inst : handPlaced) {
-        Instance copy = inst;
-        copy.id = result.instances.size();
+    // What stands already: hand-placed trees, then each domain's survivors in turn.
+    Occupancy kept(method, lo, hi, maxRadius, total);
+    for (std::size_t i = 0; i < handPlaced.size(); ++i) {
+        Instance copy = handPlaced[i];
+        copy.id = handIds[i];
         copy.handPlaced = true;
-        occupied.add(glm::vec2(copy.position.x, copy.position.z), copy.radius(species));
+        kept.add(glm::vec2(copy.position.x, copy.position.z), copy.radius(species));
         result.instances.push_back(copy);
     }
 
     for (std::size_t d = 0; d < domains.size(); ++d) {
         const Domain& dom = domains[d];
         std::vector<std::uint32_t>& slots = slotsPerDomain[d];
-        Rng rng(mixSeed(mixSeed(params.seed, salt::kDomainSlots), d));
+        Rng rng(mixSeed(mixSeed(params.seed, salt::kDomainSlots), domainIds[d]));
         // Interleave the species so that no species is squeezed into what the others left.
         for (std::size_t i = slots.size(); i > 1; --i)
             std::swap(slots[i - 1], slots[rng.below(i)]);
         glm::vec2 dlo, dhi;
         domainBounds(dom, dlo, dhi);
+        Occupancy occupied(method, dlo, dhi, maxRadius, slots.size());
         std::vector<std::size_t> placedPerSpecies(species.size(), 0);
-        for (std::uint32_t sp : slots) {
+        std::vector<Instance> placed;
+        for (std::size_t slot = 0; slot < slots.size(); ++slot) {
+            const std::uint32_t sp = slots[slot];
             Instance inst;
-            inst.id = result.instances.size();
+            inst.id = domainTreeId(domainIds[d], slot);
             inst.species = sp;
             inst.seed = mixSeed(params.seed, inst.id);
             Rng own(mixSeed(inst.seed, salt::kPlacedTree));
@@ -238,8 +291,8 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
             inst.growth = params.growthSpread > 0.0f ? std::min(1.0f, 2.0f * x / (1.0f + x)) : 1.0f;
             const float radius = inst.radius(species);
 
-            bool placed = false;
-            for (int attempt = 0; attempt < params.maxTries && !placed; ++attempt) {
+            bool found = false;
+            for (int attempt = 0; attempt < params.maxTries && !found; ++attempt) {
                 glm::vec2 q(rng.uniformf(dlo.x, dhi.x), rng.uniformf(dlo.y, dhi.y));
                 if (dom.shape == DomainShape::Polygon) {
                     // Rejection from the bounding box; misses do not use up a try unless the
@@ -277,12 +330,26 @@ PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
                     y = h.point.y;
                 }
                 inst.position = glm::vec3(q.x, y, q.y);
-                placed = true;
+                found = true;
             }
-            if (!placed) continue;
+            if (!found) continue;
             occupied.add(glm::vec2(inst.position.x, inst.position.z), radius);
             ++placedPerSpecies[sp];
-            result.instances.push_back(inst);
+            placed.push_back(inst);
+        }
+        // The domain's trees that a hand-placed tree or an earlier domain's tree stands on.
+        std::vector<bool> displaced(placed.size(), false);
+        for (std::size_t i = 0; i < placed.size(); ++i)
+            displaced[i] = kept.collides(glm::vec2(placed[i].position.x, placed[i].position.z),
+                                         placed[i].radius(species));
+        for (std::size_t i = 0; i < placed.size(); ++i) {
+            if (displaced[i]) {
+                ++result.displaced;
+                continue;
+            }
+            kept.add(glm::vec2(placed[i].position.x, placed[i].position.z),
+                     placed[i].radius(species));
+            result.instances.push_back(placed[i]);
         }
         for (const auto& [name, count] : dom.counts) {
             const std::uint32_t sp = speciesIndex.at(name);

@@ -24,8 +24,21 @@ struct SpeciesSpec {
 
 enum class DomainShape { Rectangle, Polygon };
 
+/// Tree ids: a hand-placed tree's id is its own (the project file keeps it), in [1,
+/// kDomainIdStride); a domain's tree has id domain id · kDomainIdStride + its slot in the domain
+/// (0-based), so ids never collide and survive any edit that leaves the domain alone.
+inline constexpr std::uint64_t kDomainIdStride = 1'000'000'000ull;
+/// Largest domain id (its trees' ids stay below 2^63, exact in USD's int64 and glTF's extras).
+inline constexpr std::uint64_t kMaxDomainId = 9'000'000'000ull;
+constexpr std::uint64_t domainTreeId(std::uint64_t domainId, std::uint64_t slot) {
+    return domainId * kDomainIdStride + slot;
+}
+
 /// An area on the ground (x, z) that receives a number of trees of each species.
 struct Domain {
+    /// Stable id (the project file keeps it), 1..kMaxDomainId; it seeds the domain's own random
+    /// stream and names its trees. 0: the domain's index + 1.
+    std::uint64_t id = 0;
     DomainShape shape = DomainShape::Rectangle;
     glm::vec2 min{0.0f};            ///< rectangle: smallest (x, z), metres
     glm::vec2 max{0.0f};            ///< rectangle: largest (x, z), metres
@@ -34,8 +47,8 @@ struct Domain {
     std::vector<std::pair<std::string, std::size_t>> counts;
 };
 
-/// One tree of the forest. Ids are dense: hand-placed instances first (in their order), then
-/// the placed ones; `seed` is mixSeed(project seed, id) for placed trees.
+/// One tree of the forest: hand-placed instances first (in their order), then each domain's.
+/// `id` is stable (see kDomainIdStride); `seed` is mixSeed(project seed, id) for placed trees.
 struct Instance {
     std::uint64_t id = 0;
     std::uint32_t species = 0; ///< index into the SpeciesSpec list
@@ -84,6 +97,7 @@ struct PlacementResult {
     std::vector<Instance> instances;
     std::vector<Shortfall> shortfalls; ///< empty when every count was met
     std::size_t rejectedTries = 0;     ///< positions rejected in all (for statistics)
+    std::size_t displaced = 0; ///< domain trees removed because a hand-placed tree stands there
 };
 
 /// Grid: a uniform grid of cells at least one bounding radius wide, O(1) per test. Naive: the
@@ -91,12 +105,17 @@ struct PlacementResult {
 enum class PlacementMethod { Grid, Naive };
 
 /// Scatters trees over the domains after the reference (§4.2): per domain, its trees (species
-/// interleaved by a seeded shuffle) take random positions; a position inside another tree's
-/// bounding cylinder (or an obstacle footprint, or off the terrain) is rejected and retried up
-/// to maxTries times; each tree gets a random rotation, scale and growth stage from its own
-/// seed. Deterministic in (species, domains, hand-placed, params) whatever the thread count.
-/// \throw InvalidInput for an unknown species, a degenerate domain or parameters out of range.
-/// \throw LimitExceeded above 50 million trees.
+/// interleaved by a seeded shuffle) take random positions; a position inside the bounding
+/// cylinder of one of the domain's trees (or an obstacle footprint, or off the terrain) is
+/// rejected and retried up to maxTries times; each tree gets a random rotation, scale and growth
+/// stage from its own seed. Each domain is scattered alone, from its own stream (project seed +
+/// domain id); then hand-placed trees, and the trees of earlier domains where domains overlap,
+/// remove the domain trees they collide with (either trunk inside the other's bounding
+/// cylinder; counted in `displaced`, not as a shortfall). So moving, adding or removing a
+/// hand-placed tree, or editing a domain, changes only the trees around it. Deterministic
+/// whatever the thread count.
+/// \throw InvalidInput for an unknown species, a degenerate domain, duplicate or out-of-range
+/// ids, or parameters out of range. \throw LimitExceeded above 50 million trees.
 PlacementResult placeForest(const std::vector<SpeciesSpec>& species,
                             const std::vector<Domain>& domains,
                             const std::vector<Instance>& handPlaced, const PlacementParams& params,

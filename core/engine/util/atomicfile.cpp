@@ -45,6 +45,12 @@ void AtomicFile::write(std::string_view bytes) {
         throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
 }
 
+int AtomicFile::flushedDescriptor() {
+    if (std::fflush(mFile) != 0)
+        throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
+    return ::fileno(mFile);
+}
+
 void AtomicFile::commit() {
     if (std::fflush(mFile) != 0 ||
         (mDurability == Durability::Durable && ::fsync(::fileno(mFile)) != 0)) {

@@ -31,6 +31,9 @@ public:
 
     /// Appends bytes; throws IoError on a short write.
     void write(std::string_view bytes);
+    /// Flushes what write() buffered and returns the temporary's descriptor, positioned at its
+    /// end, for copies the kernel makes (copy_file_range); write() may follow. \throw IoError
+    int flushedDescriptor();
     /// Flushes, closes and renames the temporary over the target path.
     void commit();
     const std::filesystem::path& temporaryPath() const { return mTemp; }

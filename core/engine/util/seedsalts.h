@@ -41,5 +41,7 @@ inline constexpr std::uint64_t kSeason = 0x5EA5;
 inline constexpr std::uint64_t kBrushStroke = 7919;
 /// The editor's Place tool: a placed tree's rotation and seed (added to the tree count).
 inline constexpr std::uint64_t kPlaceTool = 104729;
+/// Leaf cluster cards: which atlas tile a cluster shows and whether it is mirrored.
+inline constexpr std::uint64_t kLeafClusters = 0x5b7a11ull;
 
 } // namespace sylva::salt

@@ -1,6 +1,6 @@
 # Edit-to-screen latency of the editor on a project (run on demand, not by ctest):
 #   xvfb-run -a -s '-screen 0 1600x1000x24' build/release/app/editor/sylva \
-#       --script tests/bench/editor/edit_latency.py resources/demo/forest.sylva
+#       --script tests/bench/editor/edit_latency.py resources/demo/alder-reference.sylva
 # For each kind of one-tree edit it prints the median and range over N edits of: the
 # generation (edit to new meshes ready) and edit to the frame on screen, with the trees
 # regrown; then the same for a full regeneration (every tree regrown, caches dropped).

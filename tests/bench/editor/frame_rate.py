@@ -1,6 +1,6 @@
 # Frames per second of the editor's viewport (run on demand, not by ctest), orbiting the view:
 #   xvfb-run -a -s '-screen 0 1600x1000x24' build/release/app/editor/sylva \
-#       --script tests/bench/editor/frame_rate.py resources/demo/forest.sylva
+#       --script tests/bench/editor/frame_rate.py resources/demo/alder-reference.sylva
 # Prints fps, wall and CPU milliseconds per frame (the process, which includes Mesa llvmpipe's
 # rasterizer threads, and the GUI thread), the trees drawn and the scene's triangles, from the
 # project's camera and from three times as far; with the viewport's level of detail (issue 18)

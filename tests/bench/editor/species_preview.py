@@ -1,6 +1,6 @@
 # The species editor's live preview, edit → new tree on screen (run on demand, not by ctest):
 #   xvfb-run -a -s '-screen 0 1600x1000x24' build/release/app/editor/sylva \
-#       --script tests/bench/editor/species_preview.py resources/demo/forest.sylva
+#       --script tests/bench/editor/species_preview.py resources/demo/alder-reference.sylva
 # Adds a 20,000-segment species with leaves (tests/bench/editor/species/bench-20k.json), opens
 # it in the species editor and, N times each, edits a parameter of the last node (leaf_scale,
 # tube resolution) and of the generator (the grammar's angle): the median and range of the time

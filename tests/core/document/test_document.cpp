@@ -27,7 +27,7 @@ using doc::TreeId;
 
 namespace {
 
-const QString kDemo = QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva");
+const QString kDemo = QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva");
 
 class DocumentTest : public ::testing::Test {
 protected:
@@ -650,4 +650,54 @@ TEST(FileRefs, NestedFilesAreWatched) {
     EXPECT_EQ(files,
               QStringList({QStringLiteral("/p/a/g.lsys"), QStringLiteral("/p/a/meshes/crown.obj"),
                            QStringLiteral("/q/rock.obj")}));
+}
+
+// Issue 30: a hand-placed tree's id is made when it is added (or duplicated), saved in the
+// project, kept by every edit and never given to another tree, even after the tree is removed
+// and the project saved and opened again.
+TEST_F(DocumentTest, TreeIdsSurviveEditsSavesAndAreNeverGivenTwice) {
+    ASSERT_EQ(mDoc.treeIds().size(), 1u);
+    const TreeId first = mDoc.treeIds()[0];
+    EXPECT_EQ(mDoc.project().instances[0].id, first);
+    const TreeId added = mDoc.addTree(alder(5, 5));
+    EXPECT_EQ(added, first + 1);
+    const TreeId copy = mDoc.duplicateTrees({added}).front();
+    EXPECT_EQ(copy, added + 1);
+    doc::ProjectInstance moved = mDoc.tree(copy);
+    moved.position.x += 30;
+    moved.id = 999; // the caller's copy cannot change a tree's id
+    mDoc.setTree(copy, moved);
+    EXPECT_EQ(mDoc.tree(copy).id, copy);
+    EXPECT_EQ(mDoc.tree(first).id, first);
+    mDoc.removeTrees({added});
+    mDoc.save();
+    Document again;
+    again.open(mSaved);
+    EXPECT_EQ(again.treeIds(), (std::vector<TreeId>{first, copy}));
+    EXPECT_FLOAT_EQ(again.tree(copy).position.x, 36.0f); // duplicated 1 m aside, then moved
+    // Neither the removed tree's id nor any other in use comes back.
+    const TreeId next = again.addTree(alder(1, 1));
+    EXPECT_EQ(next, copy + 1);
+    // Undoing an add gives the id back with the exact bytes (the tree never existed).
+    const QByteArray before = again.serialized();
+    again.addTree(alder(2, 2));
+    again.undoStack()->undo();
+    EXPECT_EQ(again.serialized(), before);
+}
+
+TEST_F(DocumentTest, DomainsGetFreshIdsAndKeepThemThroughEdits) {
+    const std::size_t n = mDoc.project().domains.size();
+    std::uint64_t largest = 0;
+    for (const doc::PlacementDomain& d : mDoc.project().domains)
+        largest = std::max(largest, d.id);
+    doc::PlacementDomain d;
+    d.id = 1; // taken: a new domain always gets a fresh id
+    mDoc.addDomain(d);
+    ASSERT_EQ(mDoc.project().domains.size(), n + 1);
+    EXPECT_EQ(mDoc.project().domains[n].id, largest + 1);
+    doc::PlacementDomain edited = mDoc.project().domains[n];
+    edited.max.x += 5;
+    edited.id = 77;
+    mDoc.setDomain(static_cast<int>(n), edited);
+    EXPECT_EQ(mDoc.project().domains[n].id, largest + 1);
 }

@@ -274,3 +274,84 @@ TEST(Project, NewTreeSeedsDependOnlyOnTheProjectSeedAndTheCount) {
     q.seed = 43;
     EXPECT_NE(q.newTreeSeed(5), p.newTreeSeed(5));
 }
+
+// Issue 30: format 2 gives trees and domains stable ids. A format-1 file is upgraded on load
+// (trees 1, 2, ... in file order, as the editor numbered them; domains 1, 2, ...), says so,
+// and saves as format 2 with the ids and the next tree id.
+TEST(Project, Format1UpgradesToStableIds) {
+    const std::string v1 = R"({ "format": "sylva-project", "format_version": 1, "seed": 7,
+      "species": [ { "name": "alder", "file": "a.json" } ],
+      "domains": [ { "shape": "rectangle", "min": [0, 0], "max": [9, 9], "counts": { "alder": 3 } },
+                   { "shape": "rectangle", "min": [20, 0], "max": [29, 9], "counts": { "alder": 3 } } ],
+      "instances": [ { "species": "alder", "position": [0, 0, 0], "seed": 3 },
+                     { "species": "alder", "position": [5, 0, 0], "seed": 4 } ] })";
+    doc::LoadReport report;
+    const doc::Project p = doc::parseProject(QByteArray::fromStdString(v1), "old.sylva", &report);
+    ASSERT_EQ(report.upgrades.size(), 1u);
+    EXPECT_NE(report.upgrades[0].find("stable ids"), std::string::npos) << report.upgrades[0];
+    EXPECT_EQ(p.instances[0].id, 1u);
+    EXPECT_EQ(p.instances[1].id, 2u);
+    EXPECT_EQ(p.nextTreeId, 3u);
+    EXPECT_EQ(p.domains[0].id, 1u);
+    EXPECT_EQ(p.domains[1].id, 2u);
+    EXPECT_EQ(p.species[0].variants, doc::kDefaultVariants);
+    const QByteArray saved = doc::serializeProject(p);
+    EXPECT_TRUE(saved.contains("\"format_version\": 2")) << saved.toStdString();
+    EXPECT_TRUE(saved.contains("\"next_tree_id\": 3"));
+    EXPECT_TRUE(saved.contains("\"variants\": 8"));
+    doc::LoadReport again;
+    EXPECT_EQ(doc::parseProject(saved, "old.sylva", &again).instances, p.instances);
+    EXPECT_TRUE(again.upgrades.empty());
+    // The ids reach the engine's scene.
+    const std::string v2 = R"({ "format": "sylva-project", "format_version": 2,
+      "species": [ { "name": "alder", "graph": {"nodes": [], "output": ""}, "variants": 3 } ],
+      "domains": [ { "id": 40, "shape": "rectangle", "min": [0, 0], "max": [9, 9] } ],
+      "instances": [ { "id": 12, "species": "alder" }, { "species": "alder" } ],
+      "next_tree_id": 20 })";
+    const doc::Project q = doc::parseProject(QByteArray::fromStdString(v2), "new.sylva");
+    EXPECT_EQ(q.instances[0].id, 12u);
+    EXPECT_EQ(q.instances[1].id, 20u); // a hand-written tree without an id gets the next one
+    EXPECT_EQ(q.nextTreeId, 21u);
+    EXPECT_EQ(q.domains[0].id, 40u);
+    EXPECT_EQ(q.species[0].variants, 3);
+}
+
+TEST(Project, IdsAndVariantsAreChecked) {
+    const std::string head = R"({ "format": "sylva-project", "format_version": 2,
+      "species": [ { "name": "a", "file": "a.json" )";
+    EXPECT_NE(errorOf(head + R"(} ], "instances": [ { "id": 3, "species": "a" },
+      { "id": 3, "species": "a" } ] })")
+                  .find("instances[0] and instances[1] have the same id 3"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"(} ], "domains": [ { "id": 2, "min": [0, 0], "max": [1, 1] },
+      { "id": 2, "min": [0, 0], "max": [1, 1] } ] })")
+                  .find("domains[0] and domains[1] have the same id 2"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"(} ], "instances": [ { "id": 1.5, "species": "a" } ] })")
+                  .find("instances[0].id must be a whole number in [1, 999999999]"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"(, "variants": 257 } ] })")
+                  .find("species[0].variants must be a whole number in [0, 256]"),
+              std::string::npos);
+    EXPECT_NE(errorOf(head + R"(} ], "next_tree_id": 0 })").find("next_tree_id must be"),
+              std::string::npos);
+}
+
+// Trees built in memory (scripts) get the ids saving would give: after every id in use and
+// never an id twice.
+TEST(Project, AssignIdsFillsGapsAndDuplicates) {
+    doc::Project p;
+    p.instances.resize(4);
+    p.instances[0].id = 5;
+    p.instances[2].id = 5;
+    p.domains.resize(2);
+    p.domains[1].id = 9;
+    doc::assignIds(p);
+    EXPECT_EQ(p.instances[0].id, 5u);
+    EXPECT_EQ(p.instances[1].id, 6u);
+    EXPECT_EQ(p.instances[2].id, 7u);
+    EXPECT_EQ(p.instances[3].id, 8u);
+    EXPECT_EQ(p.nextTreeId, 9u);
+    EXPECT_EQ(p.domains[0].id, 10u);
+    EXPECT_EQ(p.domains[1].id, 9u);
+}

@@ -150,7 +150,7 @@ protected:
         if (!QCoreApplication::instance()) new QCoreApplication(argc, argv);
     }
     void SetUp() override {
-        mDoc.open(QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/forest.sylva"));
+        mDoc.open(QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/alder-reference.sylva"));
     }
     doc::Document mDoc;
 };

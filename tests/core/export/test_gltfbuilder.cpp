@@ -1,18 +1,23 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 
+#include "engine/export/gltf/forestgltf.h"
 #include "engine/export/gltf/gltfbuilder.h"
 #include "engine/export/gltf/gltfmesh.h"
+#include "engine/export/treeexport.h"
 #include "engine/util/error.h"
 
 using namespace sylva;
@@ -309,7 +314,13 @@ TEST(GltfBuilder, NonFiniteNumbersAreRefused) {
     Node n;
     n.extras = {{"value", std::numeric_limits<double>::quiet_NaN()}};
     b.addNode(n);
-    EXPECT_THROW(b.finish(), InvalidInput);
+    try {
+        b.finish();
+        ADD_FAILURE() << "a NaN was written";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("/nodes/0/extras/value"), std::string::npos)
+            << e.what();
+    }
     EXPECT_FALSE(fs::exists(dir / "bad.glb"));
 }
 
@@ -368,4 +379,127 @@ TEST(GltfMesh, SubmeshesShareVerticesAndTexturesAreEmbeddedOnce) {
     // glTF's uv origin is the image's top-left: v is stored as 1 - v.
     const auto uvs = readAccessor<float>(g, prims[0]["attributes"]["TEXCOORD_0"].get<int>(), 2);
     EXPECT_EQ(uvs, (std::vector<float>{0, 1, 1, 1, 0, 0, 1, 0}));
+}
+
+namespace {
+mesh::Mesh triangle(float size) {
+    mesh::Mesh m;
+    m.positions = {{0, 0, 0}, {size, 0, 0}, {0, size, 0}};
+    m.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+    m.uvs = {{0, 0}, {1, 0}, {0, 1}};
+    m.indices = {0, 1, 2};
+    return m;
+}
+} // namespace
+
+TEST(ForestGltf, InstancesGoByCellAndVariantWithTheirIds) {
+    const fs::path dir = tempDir("forest");
+    {
+        ForestGltfOptions options;
+        options.cellSize = 10.0f;
+        ForestGltfWriter w(dir / "f.glb", GltfFormat::Glb, noProgress(), options);
+        const mesh::Mesh a = triangle(1), b = triangle(2), empty;
+        EXPECT_EQ(w.addVariant("oak_v0", a), 0);
+        EXPECT_EQ(w.addVariant("oak_v1", b), 1);
+        EXPECT_EQ(w.addVariant("oak_v2", empty), 2);
+        const glm::quat turn = glm::angleAxis(1.0f, glm::vec3(0, 1, 0));
+        // Cell (0,0): two of v0 and one of v1; cell (-1,0): one of v0; an empty variant's tree.
+        w.addInstance(0, 11, {1, 0, 1}, turn, glm::vec3(1.5f));
+        w.addInstance(1, 12, {2, 0, 2}, turn, glm::vec3(1.0f));
+        w.addInstance(0, 13, {9, 0, 9}, turn, glm::vec3(0.5f));
+        w.addInstance(0, 14, {-3, 0, 4}, turn, glm::vec3(1.0f));
+        w.addInstance(2, 15, {5, 0, 5}, turn, glm::vec3(1.0f));
+        EXPECT_THROW(w.addInstance(3, 16, {}, turn, glm::vec3(1)), InvalidInput);
+        const int mesh = w.addTreeMesh("oak_20", b);
+        w.addTree("oak_20", 20, mesh, {25, 1, -5}, turn, glm::vec3(2.0f));
+        EXPECT_EQ(w.instanceCount(), 5u);
+        w.commit();
+    }
+    const ParsedGlb g = parseGlb(readFile(dir / "f.glb"));
+    const Json& nodes = g.json["nodes"];
+    EXPECT_EQ(g.json["extensionsUsed"], Json::array({"EXT_mesh_gpu_instancing"}));
+    EXPECT_FALSE(g.json.contains("extensionsRequired")); // older readers still open it
+    EXPECT_EQ(g.json["meshes"].size(), 3u);              // v0, v1, the unique tree; v2 empty
+    EXPECT_EQ(nodes[0]["name"], "sylva");
+    std::vector<std::string> cells;
+    for (const Json& c : nodes[0]["children"])
+        cells.push_back(nodes[c.get<std::size_t>()]["name"]);
+    EXPECT_EQ(cells, (std::vector<std::string>{"cell_-1_0", "cell_0_0", "cell_2_-1"}));
+    const auto child = [&](const std::string& name) -> const Json& {
+        for (const Json& n : nodes)
+            if (n.value("name", "") == name) return n;
+        throw std::runtime_error("no node " + name);
+    };
+    const Json& v0 = child("oak_v0_cell_0_0");
+    EXPECT_EQ(v0["extras"]["sylva_ids"], Json::array({11, 13}));
+    EXPECT_EQ(v0["translation"], Json::array({1.0, 0.0, 1.0})); // at its first instance
+    const Json& attributes = v0["extensions"]["EXT_mesh_gpu_instancing"]["attributes"];
+    // Translations are relative to the node; rotations and scales as given.
+    EXPECT_EQ(readAccessor<float>(g, attributes["TRANSLATION"].get<int>(), 3),
+              (std::vector<float>{0, 0, 0, 8, 0, 8}));
+    EXPECT_EQ(readAccessor<float>(g, attributes["SCALE"].get<int>(), 3),
+              (std::vector<float>{1.5f, 1.5f, 1.5f, 0.5f, 0.5f, 0.5f}));
+    const auto r = readAccessor<float>(g, attributes["ROTATION"].get<int>(), 4);
+    EXPECT_NEAR(r[1], std::sin(0.5f), 1e-6f);
+    EXPECT_NEAR(r[3], std::cos(0.5f), 1e-6f);
+    EXPECT_EQ(child("oak_v1_cell_0_0")["extras"]["sylva_ids"], Json::array({12}));
+    EXPECT_EQ(child("oak_v0_cell_-1_0")["extras"]["sylva_ids"], Json::array({14}));
+    const Json& empty = child("oak_v2_cell_0_0");
+    EXPECT_FALSE(empty.contains("mesh"));
+    EXPECT_FALSE(empty.contains("extensions"));
+    EXPECT_EQ(empty["extras"]["sylva_ids"], Json::array({15}));
+    const Json& unique = child("oak_20");
+    EXPECT_EQ(unique["extras"]["sylva_id"], 20);
+    EXPECT_EQ(unique["mesh"], 2);
+    EXPECT_EQ(unique["scale"], Json::array({2.0, 2.0, 2.0}));
+}
+
+TEST(ForestGltf, TreeExporterInstancesVariantsAndSharesUniqueMeshes) {
+    const fs::path dir = tempDir("treeexporter");
+    auto variant = std::make_shared<const mesh::Mesh>(triangle(1));
+    auto shared = std::make_shared<const mesh::Mesh>(triangle(3));
+    {
+        exporter::TreeExporter out(dir / "f.glb");
+        out.addVariants({{"oak_v0", variant}});
+        out.add({{"oak_1", variant, {1, 0, 1}, 0.5f, 1.0f, 0, 1},
+                 {"oak_2", variant, {2, 0, 2}, 0.5f, 1.0f, 0, 2},
+                 {"oak_3", shared, {3, 0, 3}, 0.0f, 1.0f, -1, 3},
+                 {"oak_4", shared, {4, 0, 4}, 0.0f, 1.0f, -1, 4}});
+        EXPECT_THROW(out.add({{"oak_5", variant, {}, 0.0f, 1.0f, 1, 5}}), InvalidInput);
+        out.commit();
+    }
+    const ParsedGlb g = parseGlb(readFile(dir / "f.glb"));
+    EXPECT_EQ(g.json["meshes"].size(), 2u); // the variant, and the unique trees' shared mesh
+    std::size_t ids = 0, unique = 0;
+    for (const Json& n : g.json["nodes"]) {
+        if (n.contains("extras") && n["extras"].contains("sylva_ids"))
+            ids += n["extras"]["sylva_ids"].size();
+        if (n.contains("extras") && n["extras"].contains("sylva_id")) {
+            ++unique;
+            EXPECT_EQ(n["mesh"], 1);
+        }
+    }
+    EXPECT_EQ(ids, 2u);
+    EXPECT_EQ(unique, 2u);
+}
+
+// Where the file system can insert blocks (ext4, XFS) the BIN temporary becomes the .glb in
+// place; elsewhere (tmpfs) the BIN chunk is copied. Both give the same bytes.
+TEST(GltfBuilder, InPlaceAndCopiedGlbAreIdentical) {
+    const fs::path shm = "/dev/shm";
+    if (!fs::is_directory(shm)) GTEST_SKIP() << "no /dev/shm to write a copied GLB on";
+    const fs::path dir = tempDir("inplace");
+    const fs::path other = shm / "sylva_gltf_inplace.glb";
+    for (const fs::path& path : {dir / "a.glb", other}) {
+        GltfBuilder b(path, GltfFormat::Glb);
+        buildSample(b);
+        b.finish();
+    }
+    const std::string a = readFile(dir / "a.glb");
+    EXPECT_EQ(a, readFile(other));
+    fs::remove(other);
+    // What precedes the BIN data ends on 4 KiB; the JSON's padding is spaces.
+    const ParsedGlb g = parseGlb(a);
+    EXPECT_EQ((20 + g.jsonLength + 8) % 4096, 0u);
+    EXPECT_EQ(a.size(), 20 + g.jsonLength + 8 + g.binLength);
 }

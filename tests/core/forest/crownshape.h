@@ -22,6 +22,8 @@ struct Silhouette {
     int width = 0, height = 0;
     std::vector<std::uint8_t> any;  ///< bark or leaves
     std::vector<std::uint8_t> leaf; ///< leaf cards only
+    /// Pixel centres covered (not conservative): what the eye sees through the crown.
+    std::vector<std::uint8_t> exact;
     double metresPerPixel = 0.0;
     bool at(int x, int y) const { return any[static_cast<std::size_t>(y) * width + x] != 0; }
 };
@@ -53,6 +55,7 @@ inline Silhouette sideSilhouette(const mesh::Mesh& mesh, int pixelsTall, float y
     const std::size_t n = static_cast<std::size_t>(s.width) * s.height;
     s.any.assign(n, 0);
     s.leaf.assign(n, 0);
+    s.exact.assign(n, 0);
     // Conservative: a pixel any triangle touches is covered, so that leaves smaller than a
     // pixel close the outline instead of leaving pinholes that depend on where pixel centres fall.
     for (const mesh::Submesh& sm : mesh.submeshes) {
@@ -66,6 +69,9 @@ inline Silhouette sideSilhouette(const mesh::Mesh& mesh, int pixelsTall, float y
             s.any[k] = 1;
             if (leafRun) s.leaf[k] = 1;
         });
+        rasterize(part, glm::mat4(1.0f), cam, [&](int x, int y, float, std::size_t) {
+            s.exact[static_cast<std::size_t>(y) * s.width + x] = 1;
+        });
     }
     return s;
 }
@@ -78,6 +84,10 @@ struct CrownShape {
     double crownBase = 0.0; ///< lowest leaf row above the ground, metres
     /// Height above the ground of the widest crown row, metres.
     double widestAt = 0.0;
+    /// Covered fraction (pixel centres) of the crown's middle (an ellipse of 0.6 x the crown box's
+    /// width and height about its centre): a crown of lit clusters alone is a thin shell that reads
+    /// from the side as a ring round an empty middle; a real crown carries foliage in its depth.
+    double middleCover = 1.0;
 };
 
 namespace detail {
@@ -150,6 +160,23 @@ inline CrownShape crownShape(const Silhouette& s) {
     }
     hullArea = 0.5 * std::abs(hullArea);
     c.solidity = hullArea > 0.0 ? area / hullArea : 1.0;
+    int left = s.width, right = -1;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        left = std::min(left, static_cast<int>(pts[i].x));
+        right = std::max(right, static_cast<int>(pts[i].x) - 1);
+    }
+    const double mx = 0.5 * (left + right + 1), my = 0.5 * (top + bottom + 1);
+    const double ax = 0.3 * (right - left + 1), ay = 0.3 * (bottom - top + 1);
+    int inMiddle = 0, covered = 0;
+    for (int y = top; y <= bottom; ++y)
+        for (int x = left; x <= right; ++x) {
+            const double u = (x + 0.5 - mx) / ax, v = (y + 0.5 - my) / ay;
+            if (u * u + v * v > 1.0) continue;
+            ++inMiddle;
+            const std::size_t at = static_cast<std::size_t>(y) * s.width + x;
+            if (s.exact.empty() ? s.any[at] : s.exact[at]) ++covered;
+        }
+    c.middleCover = inMiddle > 0 ? static_cast<double>(covered) / inMiddle : 1.0;
     c.width = widest * s.metresPerPixel;
     c.height = (bottom - top + 1) * s.metresPerPixel;
     c.treeHeight = (ground - treeTop + 1) * s.metresPerPixel;

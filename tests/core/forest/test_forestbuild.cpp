@@ -124,6 +124,7 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kPlaceTool,
                                         salt::kVariant,
                                         salt::kVariantPick,
-                                        salt::kSeason};
-    EXPECT_EQ(salts.size(), 15u);
+                                        salt::kSeason,
+                                        salt::kLeafClusters};
+    EXPECT_EQ(salts.size(), 16u);
 }

@@ -6,8 +6,11 @@
 #include <filesystem>
 #include <set>
 
+#include <omp.h>
+
 #include "engine/environment/obstaclemesh.h"
 #include "engine/forest/forestbuild.h"
+#include "engine/mesh/lod.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
 #include "presetfile.h"
@@ -103,6 +106,34 @@ TEST(Instancing, FreeTreesShareTheirVariantsMeshTouchingOnesAreUnique) {
     (void)nearWall;
 }
 
+// With the camera's LOD (the OBJ writer's and the viewport's forest), an instanced tree is its
+// variant's skeleton meshed at its own distance: the same mesh a unique tree with that skeleton
+// would get, and never more triangles than the full-detail variant.
+TEST(Instancing, WithTheCameraLodInstancesAreTheirVariantMeshedAtTheirDistance) {
+    forest::ForestScene s = sparseForest(24, false);
+    s.camera = {0.0f, 10.0f, 150.0f};
+    const Built b = build(s, {});
+    std::size_t instanced = 0;
+    for (const forest::ForestTree& t : b.trees) {
+        if (t.variant < 0) continue;
+        ++instanced;
+        const forest::ForestVariant& v = b.variants.at(static_cast<std::size_t>(t.variant));
+        EXPECT_EQ(t.skeleton.get(), v.skeleton.get());
+        EXPECT_EQ(t.meshSettings.get(), v.meshSettings.get());
+        EXPECT_DOUBLE_EQ(t.meshCameraDistance, glm::length(s.camera - t.instance.position));
+        EXPECT_LE(t.mesh->triangleCount(), v.mesh->triangleCount()) << t.name;
+        mesh::TreeMeshSettings again = *t.meshSettings;
+        again.useLod = true;
+        again.cameraDistance = t.meshCameraDistance;
+        again.hasCamera = true;
+        again.cameraLocal =
+            glm::vec3(glm::inverse(t.instance.transform()) * glm::vec4(s.camera, 1.0f));
+        const mesh::Mesh m = mesh::buildTreeMesh(*t.skeleton, again);
+        EXPECT_EQ(m.indices, t.mesh->indices) << t.name;
+    }
+    EXPECT_GT(instanced, 12u);
+}
+
 TEST(Instancing, OffEveryTreeIsUniqueAndNoVariantIsMade) {
     forest::ForestOptions options;
     options.instancing = false;
@@ -117,7 +148,7 @@ TEST(Instancing, OffEveryTreeIsUniqueAndNoVariantIsMade) {
 
 TEST(Instancing, KIsPerSpeciesWithTheOptionAsDefaultAndChecked) {
     forest::ForestScene s = sparseForest(6, false);
-    s.species[0].variants = 0;
+    s.species[0].variants = -1;
     forest::ForestOptions options;
     options.buildMeshes = false;
     options.variantsPerSpecies = 5;
@@ -127,4 +158,67 @@ TEST(Instancing, KIsPerSpeciesWithTheOptionAsDefaultAndChecked) {
     s.species[0].variants = 300;
     options.variantsPerSpecies = 8;
     EXPECT_THROW(build(s, options), InvalidInput);
+    // 0: a species whose every tree is grown for its place.
+    s.species[0].variants = 0;
+    const Built hero = build(s, options);
+    EXPECT_TRUE(hero.variants.empty());
+    EXPECT_EQ(hero.stats.instanced, 0u);
+    EXPECT_EQ(hero.stats.unique, 6u);
+}
+
+// Same project, same forest: which trees are instanced, their variants, and every mesh byte,
+// on one thread or two.
+TEST(Instancing, DeterministicOnOneAndTwoThreads) {
+    const forest::ForestScene s = sparseForest(30, true);
+    forest::ForestOptions options;
+    options.batchSize = 7;
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const Built one = build(s, options);
+    omp_set_num_threads(2);
+    const Built two = build(s, options);
+    omp_set_num_threads(threads);
+    ASSERT_EQ(one.trees.size(), two.trees.size());
+    ASSERT_EQ(one.variants.size(), two.variants.size());
+    for (std::size_t i = 0; i < one.variants.size(); ++i) {
+        EXPECT_EQ(one.variants[i].seed, two.variants[i].seed);
+        EXPECT_EQ(one.variants[i].mesh->positions, two.variants[i].mesh->positions);
+    }
+    for (std::size_t i = 0; i < one.trees.size(); ++i) {
+        EXPECT_EQ(one.trees[i].instance.id, two.trees[i].instance.id);
+        EXPECT_EQ(one.trees[i].variant, two.trees[i].variant);
+        EXPECT_EQ(one.trees[i].mesh->positions, two.trees[i].mesh->positions) << i;
+        EXPECT_EQ(one.trees[i].mesh->indices, two.trees[i].mesh->indices) << i;
+    }
+    EXPECT_EQ(one.stats.instanced, two.stats.instanced);
+}
+
+// Issue #32: with the camera LOD, an instanced tree draws one of its variant's levels (made
+// once per variant, shared), the one for its distance over its scale: never a finer level than
+// a nearer tree of the same variant and scale would get, and level 0 is the variant's mesh.
+TEST(Instancing, InstancesDrawTheirVariantsLevelForTheirDistance) {
+    const forest::ForestScene s = sparseForest(24, false);
+    forest::ForestOptions options;
+    options.useLod = true;
+    const Built b = build(s, options);
+    std::size_t instanced = 0;
+    for (const forest::ForestVariant& v : b.variants) {
+        ASSERT_GE(v.levels.size(), 2u) << v.name;
+        EXPECT_EQ(v.levels.front().mesh.get(), v.mesh.get());
+        for (std::size_t i = 1; i < v.levels.size(); ++i) {
+            EXPECT_GT(v.levels[i].distance, v.levels[i - 1].distance);
+            EXPECT_LT(v.levels[i].mesh->triangleCount(), v.levels[i - 1].mesh->triangleCount());
+        }
+    }
+    for (const forest::ForestTree& t : b.trees) {
+        if (t.variant < 0) continue;
+        ++instanced;
+        const forest::ForestVariant& v = b.variants.at(static_cast<std::size_t>(t.variant));
+        const double scale = double(t.instance.scale) * double(t.instance.growth);
+        const double d = glm::length(s.camera - t.instance.position) / scale;
+        const std::size_t k = mesh::levelFor(v.levels, d);
+        EXPECT_EQ(t.mesh.get(), v.levels[k].mesh.get()) << t.name << " at " << d << " m";
+        EXPECT_NEAR(t.meshCameraDistance, v.levels[k].distance * scale, 1e-6);
+    }
+    EXPECT_GT(instanced, 0u);
 }

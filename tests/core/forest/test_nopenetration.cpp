@@ -1,6 +1,6 @@
 // Issue 20: after adaptation no branch lies inside an obstacle. Every species preset is grown
-// beside the demo's garden wall and boulder (as placed in resources/demo/forest.sylva) and the
-// same wall raised to 12 m, through the same forest::buildForest call as `sylva-cli forest
+// beside the demo's garden wall and boulder (as placed in resources/demo/alder-reference.sylva) and
+// the same wall raised to 12 m, through the same forest::buildForest call as `sylva-cli forest
 // --no-lod`, and the result is checked against the obstacle meshes with oracles written here:
 // - no visible skeleton segment crosses an obstacle: Embree (ObstacleScene) and a brute-force
 //   Möller–Trumbore over every triangle both say so;
@@ -143,7 +143,7 @@ double depthBrute(const glm::dvec3& p, const env::ObstacleMesh& m) {
 std::shared_ptr<const env::ObstacleScene> obstacles() {
     static const std::shared_ptr<const env::ObstacleScene> scene = [] {
         env::MeshTransform wall, boulder, tallWall;
-        wall.translate = {0, 0, -8}; // resources/demo/forest.sylva
+        wall.translate = {0, 0, -8}; // resources/demo/alder-reference.sylva
         boulder.translate = {12, 0, 8};
         boulder.rotateDeg = {0, 30, 0};
         tallWall.translate = {-30, 0, -20};

@@ -78,3 +78,37 @@ TEST(LitAttractors, BadParametersSayTheRange) {
     p.clusterRadius = 0.0f;
     EXPECT_THROW(validate(p), InvalidInput);
 }
+
+// Lit clusters alone are a shell; inner clusters put points back in its depth (foliage on the
+// main limbs) without touching the shed most-shaded points.
+TEST(LitAttractors, InnerClustersFillTheDepthOfTheShell) {
+    const std::vector<glm::vec3> pts = crown();
+    LightParams p;
+    p.clusters = 12;
+    p.clusterRadius = 0.3f;
+    p.shadedFraction = 0.1f;
+    const auto deep = [](const std::vector<glm::vec3>& v) {
+        std::size_t n = 0;
+        for (const glm::vec3& q : v) {
+            const glm::vec3 d = (q - glm::vec3(0, 6, 0)) / glm::vec3(4, 3, 4);
+            if (glm::dot(d, d) < 0.6f * 0.6f) ++n;
+        }
+        return n;
+    };
+    const std::vector<glm::vec3> shell = litAttractors(pts, p, 1);
+    p.innerClusters = 8;
+    const std::vector<glm::vec3> filled = litAttractors(pts, p, 1);
+    EXPECT_GT(deep(filled), 2 * deep(shell) + 40) << deep(shell) << " " << deep(filled);
+    EXPECT_GT(filled.size(), shell.size());
+    // Every lit point is still there: the inner clusters only add.
+    std::size_t j = 0;
+    for (const glm::vec3& q : filled)
+        if (j < shell.size() && q == shell[j]) ++j;
+    EXPECT_EQ(j, shell.size());
+    // Without lit clusters there is no shell to fill: inner clusters do nothing.
+    LightParams only;
+    only.innerClusters = 8;
+    EXPECT_EQ(litAttractors(pts, only, 1), pts);
+    only.innerRadius = 0.0f;
+    EXPECT_THROW(validate(only), InvalidInput);
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include <omp.h>
@@ -251,13 +252,126 @@ TEST(Placement, HandPlacedInstancesComeFirstAndBlock) {
         placeForest(species, {rectangle({-15, -15}, {15, 15}, 20, 20)}, {big}, params);
     ASSERT_GE(r.instances.size(), 2u);
     EXPECT_TRUE(r.instances[0].handPlaced);
-    EXPECT_EQ(r.instances[0].id, 0u);
+    EXPECT_EQ(r.instances[0].id, 1u); // no id given: its index + 1
     EXPECT_EQ(r.instances[0].seed, 99u);
+    EXPECT_GT(r.displaced, 0u);
     for (std::size_t i = 1; i < r.instances.size(); ++i) {
-        EXPECT_EQ(r.instances[i].id, i);
+        // Domain 1 (no id given: its index + 1), slot ids in slot order.
+        EXPECT_GE(r.instances[i].id, domainTreeId(1, 0));
+        EXPECT_LT(r.instances[i].id, domainTreeId(1, 40));
+        EXPECT_GT(r.instances[i].id, r.instances[i - 1].id);
         EXPECT_GE(glm::length(glm::vec2(r.instances[i].position.x, r.instances[i].position.z)),
                   10.0f);
     }
+}
+
+// Issue 30: a hand-placed tree takes no part in the scattering; moving it changes only the
+// domain trees it stood on or stands on now, and every other tree keeps its id and place.
+TEST(Placement, MovingAHandPlacedTreeMovesNoOtherTree) {
+    const auto species = twoSpecies();
+    PlacementParams params;
+    params.seed = 5;
+    const std::vector<Domain> domains = {rectangle({-50, -50}, {50, 50}, 120, 120)};
+    Instance hand;
+    hand.id = 17;
+    hand.species = 0;
+    hand.position = glm::vec3(-20, 0, 0);
+    hand.scale = 3.0f; // a 6 m cylinder
+    const PlacementResult none = placeForest(species, domains, {}, params);
+    const PlacementResult before = placeForest(species, domains, {hand}, params);
+    hand.position.x += 30.0f;
+    const PlacementResult after = placeForest(species, domains, {hand}, params);
+    EXPECT_EQ(before.instances[0].id, 17u);
+    auto near = [&](const Instance& t, glm::vec3 at) {
+        const float d = glm::length(glm::vec2(t.position.x - at.x, t.position.z - at.z));
+        return d < std::max(t.radius(species), 6.0f);
+    };
+    // Every domain tree of the forest without the hand-placed tree is in both forests,
+    // unchanged, unless the hand-placed tree stands on it.
+    std::map<std::uint64_t, Instance> inBefore, inAfter;
+    for (const Instance& t : before.instances)
+        inBefore[t.id] = t;
+    for (const Instance& t : after.instances)
+        inAfter[t.id] = t;
+    std::size_t displacedBefore = 0, displacedAfter = 0;
+    for (const Instance& t : none.instances) {
+        const bool coveredBefore = near(t, glm::vec3(-20, 0, 0));
+        const bool coveredAfter = near(t, glm::vec3(10, 0, 0));
+        if (coveredBefore) {
+            EXPECT_FALSE(inBefore.count(t.id));
+            ++displacedBefore;
+        } else {
+            ASSERT_TRUE(inBefore.count(t.id)) << t.id;
+            EXPECT_TRUE(sameInstance(inBefore[t.id], t)) << t.id;
+        }
+        if (coveredAfter) {
+            EXPECT_FALSE(inAfter.count(t.id));
+            ++displacedAfter;
+        } else {
+            ASSERT_TRUE(inAfter.count(t.id)) << t.id;
+            EXPECT_TRUE(sameInstance(inAfter[t.id], t)) << t.id;
+        }
+    }
+    EXPECT_EQ(before.displaced, displacedBefore);
+    EXPECT_EQ(after.displaced, displacedAfter);
+    EXPECT_EQ(none.instances.size(), before.instances.size() - 1 + displacedBefore);
+    EXPECT_GT(displacedBefore + displacedAfter, 0u) << "the test must move a tree onto others";
+    EXPECT_TRUE(before.shortfalls.empty());
+}
+
+// Each domain scatters on its own stream, seeded from its id: the order of the domains in the
+// file, and the other domains, do not change its trees (where domains do not overlap).
+TEST(Placement, ADomainsTreesFollowItsIdNotItsPlaceInTheList) {
+    const auto species = twoSpecies();
+    PlacementParams params;
+    params.seed = 6;
+    Domain a = rectangle({-50, -50}, {0, 50}, 40, 40);
+    a.id = 7;
+    Domain b = rectangle({10, -50}, {60, 50}, 30, 10);
+    b.id = 3;
+    const PlacementResult ab = placeForest(species, {a, b}, {}, params);
+    const PlacementResult ba = placeForest(species, {b, a}, {}, params);
+    const PlacementResult onlyA = placeForest(species, {a}, {}, params);
+    std::map<std::uint64_t, Instance> byId;
+    for (const Instance& t : ba.instances)
+        byId[t.id] = t;
+    ASSERT_EQ(ab.instances.size(), ba.instances.size());
+    for (const Instance& t : ab.instances)
+        EXPECT_TRUE(sameInstance(byId.at(t.id), t)) << t.id;
+    for (const Instance& t : onlyA.instances) {
+        EXPECT_EQ(t.id / kDomainIdStride, 7u);
+        EXPECT_TRUE(sameInstance(byId.at(t.id), t)) << t.id;
+    }
+    // Overlapping domains: the later one's trees give way to the earlier one's.
+    Domain c = rectangle({-50, -50}, {0, 50}, 40, 40);
+    c.id = 8;
+    const PlacementResult ac = placeForest(species, {a, c}, {}, params);
+    EXPECT_GT(ac.displaced, 0u);
+    expectCylindersRespected(ac, species);
+}
+
+TEST(Placement, IdsAreCheckedAndNeverRepeat) {
+    const auto species = twoSpecies();
+    PlacementParams params;
+    Domain a = rectangle({0, 0}, {10, 10}, 1, 1);
+    Domain b = a;
+    a.id = b.id = 4;
+    EXPECT_NE(messageOf([&] {
+                  placeForest(species, {a, b}, {}, params);
+              }).find("domains 1 and 2 have the same id 4"),
+              std::string::npos);
+    a.id = kMaxDomainId + 1;
+    EXPECT_NE(messageOf([&] { placeForest(species, {a}, {}, params); }).find("is not in [1, "),
+              std::string::npos);
+    Instance h1, h2;
+    h1.id = h2.id = 9;
+    EXPECT_NE(messageOf([&] {
+                  placeForest(species, {}, {h1, h2}, params);
+              }).find("hand-placed instances 1 and 2 have the same id 9"),
+              std::string::npos);
+    h1.id = kDomainIdStride;
+    EXPECT_NE(messageOf([&] { placeForest(species, {}, {h1}, params); }).find("is not in [1, "),
+              std::string::npos);
 }
 
 TEST(Placement, BadInputsGetTheirMessages) {

@@ -8,5 +8,7 @@ doc.seed = 4242
 doc.set_param("ternary", "mesh.resolution", 4)
 with open(os.environ["SYLVA_TEST_OUT"] + "/before-crash.sylva", "w", encoding="utf-8") as f:
     f.write(doc.serialized())
+with open(os.environ["SYLVA_TEST_OUT"] + "/before-crash.trees", "w", encoding="utf-8") as f:
+    f.write(str(doc.generate()["trees"]))
 sylva.wait(5)  # the idle autosave fires 3 s after the last edit
 os.kill(os.getpid(), signal.SIGKILL)

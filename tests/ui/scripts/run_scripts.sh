@@ -12,7 +12,7 @@ mkdir -p "$OUT/config"
 export SYLVA_TEST_OUT="$OUT"
 export XDG_CONFIG_HOME="$OUT/config" # settings and the autosave copy stay in the test folder
 export SYLVA_PRESETS_DIR="$SRC/presets"
-DEMO="$SRC/resources/demo/forest.sylva"
+DEMO="$SRC/resources/demo/alder-reference.sylva"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
 echo "-- api_edits.py"

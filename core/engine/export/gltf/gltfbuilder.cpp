@@ -6,7 +6,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <fcntl.h>
 #include <limits>
+#include <linux/falloc.h>
 #include <random>
 #include <unistd.h>
 
@@ -56,16 +58,29 @@ template <class T> std::span<const std::byte> bytesOf(std::span<const T> values)
 }
 
 // nlohmann writes NaN and infinity as null, which no reader accepts where a number belongs:
-// refuse the document instead, naming where the number was.
-void requireFinite(const Json& j, const std::string& where) {
-    if (j.is_number_float() && !std::isfinite(j.get<double>()))
-        throw InvalidInput("glTF export: a non-finite number at " + (where.empty() ? "/" : where));
-    if (j.is_object())
+// refuse the document instead, naming where the number was (the JSON pointer is built only on
+// the way back from a bad number, not for each of the document's values).
+bool findNonFinite(const Json& j, std::string& where) {
+    if (j.is_number_float()) return !std::isfinite(j.get<double>());
+    if (j.is_object()) {
         for (auto it = j.begin(); it != j.end(); ++it)
-            requireFinite(it.value(), where + "/" + it.key());
-    else if (j.is_array())
+            if (findNonFinite(it.value(), where)) {
+                where.insert(0, "/" + it.key());
+                return true;
+            }
+    } else if (j.is_array()) {
         for (std::size_t i = 0; i < j.size(); ++i)
-            requireFinite(j[i], where + "/" + std::to_string(i));
+            if (findNonFinite(j[i], where)) {
+                where.insert(0, "/" + std::to_string(i));
+                return true;
+            }
+    }
+    return false;
+}
+
+void requireFinite(const Json& j) {
+    std::string where;
+    if (findNonFinite(j, where)) throw InvalidInput("glTF export: a non-finite number at " + where);
 }
 
 } // namespace
@@ -387,7 +402,8 @@ void GltfBuilder::useExtension(std::string_view name, bool required) {
 
 std::string GltfBuilder::jsonText() {
     Json out;
-    out["asset"] = mJson["asset"];
+    // Moved, not copied: jsonText() runs once, from finish().
+    out["asset"] = std::move(mJson["asset"]);
     if (!mExtensionsUsed.empty()) out["extensionsUsed"] = mExtensionsUsed;
     if (!mExtensionsRequired.empty()) out["extensionsRequired"] = mExtensionsRequired;
     if (mJson.contains("scenes")) out["scene"] = 0;
@@ -399,17 +415,45 @@ std::string GltfBuilder::jsonText() {
             out["buffers"] = Json::array({buffer});
             continue;
         }
-        if (mJson.contains(name) && !mJson[name].empty()) out[name] = mJson[name];
+        if (mJson.contains(name) && !mJson[name].empty()) out[name] = std::move(mJson[name]);
     }
     // Whatever the caller put in root() beyond the arrays (extras, extensions) goes last.
     for (auto it = mJson.begin(); it != mJson.end(); ++it)
         if (!out.contains(it.key()) &&
             std::find_if(kArrays.begin(), kArrays.end(),
                          [&](const char* a) { return it.key() == a; }) == kArrays.end())
-            out[it.key()] = it.value();
-    requireFinite(out, "");
+            out[it.key()] = std::move(it.value());
+    requireFinite(out);
     // Names come from file names and species: invalid UTF-8 becomes U+FFFD, not an exception.
     return out.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+bool GltfBuilder::prependInPlace(const std::string& prefix) {
+    // FALLOC_FL_INSERT_RANGE shifts the BIN data up by whole file-system blocks without moving
+    // it through memory (ext4, XFS); elsewhere (tmpfs, btrfs, blocks above 4 KiB) it fails and
+    // the caller copies instead.
+    const int fd = ::fileno(mBin);
+    if (prefix.size() % kPrefixAlign != 0 ||
+        ::fallocate(fd, FALLOC_FL_INSERT_RANGE, 0, static_cast<off_t>(prefix.size())) != 0)
+        return false;
+    std::size_t done = 0;
+    while (done < prefix.size()) {
+        const ssize_t n =
+            ::pwrite(fd, prefix.data() + done, prefix.size() - done, static_cast<off_t>(done));
+        if (n <= 0) throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
+        done += static_cast<std::size_t>(n);
+    }
+    if (mDurability == Durability::Durable && ::fsync(fd) != 0)
+        throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
+    const int rc = std::fclose(mBin);
+    mBin = nullptr;
+    if (rc != 0) throw IoError("cannot write " + mPath.string() + ": " + std::strerror(errno));
+    mProgress.checkCancelled();
+    std::error_code ec;
+    fs::rename(mBinTemp, mPath, ec);
+    if (ec) throw IoError("cannot replace " + mPath.string() + ": " + ec.message());
+    mBinTemp.clear();
+    return true;
 }
 
 std::vector<fs::path> GltfBuilder::finish() {
@@ -444,7 +488,13 @@ std::vector<fs::path> GltfBuilder::finish() {
     }
 
     // GLB: JSON chunk padded with spaces, BIN chunk with zeros (already), lengths little-endian.
-    while (json.size() % 4 != 0)
+    // With a BIN chunk, the JSON is padded further so that everything before the BIN data ends
+    // on a 4 KiB boundary: then the BIN temporary can become the .glb by inserting that many
+    // bytes in front of its data (no copy). The padding is the same whichever way the file is
+    // made, so the bytes do not depend on the file system.
+    const std::size_t align = mBinSize > 0 ? kPrefixAlign : 4;
+    const std::size_t fixed = mBinSize > 0 ? 12 + 8 + 8 : 12 + 8;
+    while ((fixed + json.size()) % align != 0)
         json.push_back(' ');
     const std::uint64_t total = 12 + 8 + json.size() + (mBinSize ? 8 + mBinSize : 0);
     if (total > std::numeric_limits<std::uint32_t>::max())
@@ -461,18 +511,35 @@ std::vector<fs::path> GltfBuilder::finish() {
     u32(head, static_cast<std::uint32_t>(total));
     u32(head, static_cast<std::uint32_t>(json.size()));
     u32(head, 0x4E4F534Au); // "JSON"
+    std::string binHead;
+    if (mBinSize > 0) {
+        u32(binHead, static_cast<std::uint32_t>(mBinSize));
+        u32(binHead, 0x004E4942u); // "BIN\0"
+        mProgress.checkCancelled();
+        if (prependInPlace(head + json + binHead)) return {mPath};
+    }
     AtomicFile file(mPath, mDurability);
     file.write(head);
     file.write(json);
     if (mBinSize > 0) {
-        std::string binHead;
-        u32(binHead, static_cast<std::uint32_t>(mBinSize));
-        u32(binHead, 0x004E4942u); // "BIN\0"
         file.write(binHead);
-        if (std::fseek(mBin, 0, SEEK_SET) != 0)
-            throw IoError("cannot read back " + mBinTemp.string() + ": " + std::strerror(errno));
-        std::vector<char> chunk(std::size_t(4) << 20);
+        // The kernel copies the BIN chunk (no trip through user memory; a reflink where the file
+        // system shares blocks), 64 MiB at a time so a cancel is seen within a fraction of a
+        // second; where it cannot (another file system type, an old kernel), read and write.
+        const int out = file.flushedDescriptor();
+        const int in = ::fileno(mBin);
         std::size_t left = mBinSize;
+        off_t from = 0;
+        while (left > 0) {
+            mProgress.checkCancelled();
+            const ssize_t n = ::copy_file_range(
+                in, &from, out, nullptr, std::min<std::size_t>(left, std::size_t(64) << 20), 0);
+            if (n <= 0) break;
+            left -= static_cast<std::size_t>(n);
+        }
+        if (left > 0 && std::fseek(mBin, static_cast<long>(mBinSize - left), SEEK_SET) != 0)
+            throw IoError("cannot read back " + mBinTemp.string() + ": " + std::strerror(errno));
+        std::vector<char> chunk(left > 0 ? std::size_t(4) << 20 : 0);
         while (left > 0) {
             mProgress.checkCancelled();
             const std::size_t n = std::fread(chunk.data(), 1, std::min(left, chunk.size()), mBin);

@@ -182,6 +182,11 @@ public:
     std::vector<std::filesystem::path> finish();
 
 private:
+    /// What precedes the BIN data of a .glb ends on this boundary (file-system blocks).
+    static constexpr std::size_t kPrefixAlign = 4096;
+    /// Turns the BIN temporary into the .glb by inserting \p prefix before its data, and renames
+    /// it into place; false where the file system cannot insert (then nothing was changed).
+    bool prependInPlace(const std::string& prefix);
     int push(const char* array, Json value);
     void writeRaw(const void* data, std::size_t bytes);
     std::string jsonText();

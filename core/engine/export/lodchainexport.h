@@ -1,0 +1,53 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/mesh/lodchain.h"
+#include "engine/util/progress.h"
+
+namespace sylva::exporter {
+
+/// What writeGameLodChain() writes besides the JSON description (always written).
+struct GameLodOptions {
+    bool obj = true;  ///< <species>_LOD<i>.obj + <species>.mtl
+    bool gltf = true; ///< <species>_LODs.glb: MSFT_lod chain, impostor card and maps
+    bool fbx = true;  ///< <species>_LODs.fbx: the mesh levels as <species>_LOD<i> nodes
+    /// Sylva's shipped textures (bark.png, leaf.png) for materials without a file of their own;
+    /// also copied into <dir>/textures for the OBJ and FBX files. Empty: none.
+    std::filesystem::path shippedTextures;
+};
+
+/// One written level.
+struct GameLodLevel {
+    std::string name; ///< "<species>_LOD<i>" (node, object and file name)
+    double budget = 1.0, distance = 0.0, screenSize = 1.0;
+    bool budgetMet = true;
+    std::size_t triangles = 0, vertices = 0;
+    std::filesystem::path obj;
+};
+
+struct GameLodFiles {
+    std::vector<GameLodLevel> levels;
+    std::filesystem::path glb, fbx, mtl, json;
+    std::filesystem::path impostorColor, impostorNormal, impostorDepth; ///< empty: no impostor
+    std::string description; ///< the JSON written to `json` (what `sylva-cli lods --json` prints)
+};
+
+/// Writes a species' game LOD chain into \p dir (created when missing), every file atomically:
+/// `<species>_impostor_color.png`, `_normal.png`, `_depth.png` (the atlas maps, docs/lods.md),
+/// `<species>_LODs.glb` (LOD0's node carries MSFT_lod with the coarser levels and the impostor
+/// card, MSFT_screencoverage in its extras; the impostor's material is documented in
+/// docs/lods.md), `<species>_LODs.fbx` (the mesh levels as sibling nodes `<species>_LOD<i>`:
+/// Assimp writes no FbxLODGroup), OBJ files, and `<species>_lods.json` describing all of it
+/// for a game engine's importer. \p species becomes part of file names: characters other than
+/// letters, digits, '-' and '_' become '_'.
+/// \throw InvalidInput (empty species name or chain), IoError, Cancelled.
+GameLodFiles writeGameLodChain(const std::filesystem::path& dir, const std::string& species,
+                               const mesh::BudgetLodChain& chain,
+                               const mesh::LodSettings& reference,
+                               const GameLodOptions& options = {},
+                               Progress& progress = noProgress());
+
+} // namespace sylva::exporter

@@ -1,0 +1,285 @@
+#include "engine/mesh/leafclusters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "engine/util/error.h"
+#include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
+
+namespace sylva::mesh {
+
+namespace {
+
+struct CellKey {
+    std::int64_t x, y, z;
+    bool operator==(const CellKey&) const = default;
+};
+struct CellHash {
+    std::size_t operator()(const CellKey& k) const {
+        std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
+        h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
+        h ^= static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
+        return static_cast<std::size_t>(h);
+    }
+};
+
+std::vector<std::vector<std::uint32_t>> groupByCell(const std::vector<skel::Leaf>& leaves,
+                                                    double cell) {
+    std::unordered_map<CellKey, std::uint32_t, CellHash> index;
+    std::vector<std::vector<std::uint32_t>> groups;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        // The leaf's middle, not its stem: a leaf belongs where most of it is.
+        const skel::Leaf& leaf = leaves[i];
+        const glm::dvec3 mid =
+            glm::dvec3(leaf.position) +
+            0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) * static_cast<double>(leaf.size);
+        const CellKey key{static_cast<std::int64_t>(std::floor(mid.x / cell)),
+                          static_cast<std::int64_t>(std::floor(mid.y / cell)),
+                          static_cast<std::int64_t>(std::floor(mid.z / cell))};
+        auto [it, fresh] = index.try_emplace(key, static_cast<std::uint32_t>(groups.size()));
+        if (fresh) groups.emplace_back();
+        groups[it->second].push_back(static_cast<std::uint32_t>(i));
+    }
+    return groups;
+}
+
+// The corners appendLeafCards gives a leaf.
+void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
+    const float len = leaf.size * scale;
+    const glm::vec3 h = skel::headingOf(leaf.orientation) * len;
+    const glm::vec3 l = skel::leftOf(leaf.orientation) * (0.5f * aspect * len);
+    out[0] = leaf.position + l;
+    out[1] = leaf.position - l;
+    out[2] = leaf.position - l + h;
+    out[3] = leaf.position + l + h;
+}
+
+// Largest eigenvector of a symmetric 3x3 matrix by power iteration from \p start.
+glm::dvec3 principal(const glm::dmat3& c, glm::dvec3 v) {
+    for (int i = 0; i < 24; ++i) {
+        const glm::dvec3 next = c * v;
+        const double len = glm::length(next);
+        if (len < 1e-18) break;
+        v = next / len;
+    }
+    return v;
+}
+
+glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
+    const glm::dvec3 a = std::abs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    return glm::normalize(glm::cross(v, a));
+}
+
+// Measured on the broadleaf library (test_leafclusters): 0.9 covers what one card a leaf
+// covers within 3% from the side and from the camera.
+constexpr double kCardShrink = 0.9;
+
+// The card of a group of two or more leaves (see appendLeafClusterCards).
+struct FittedCard {
+    glm::vec3 corners[4];
+    glm::vec3 normal;
+    /// The card as a leaf whose card (size long, aspect x size wide) holds it: what the
+    /// obstacle check of a forest tests.
+    skel::Leaf bounds;
+};
+
+FittedCard fitCard(const std::vector<skel::Leaf>& leaves, const std::vector<std::uint32_t>& group,
+                   float aspect, float scale) {
+    std::vector<glm::dvec3> pts;
+    pts.reserve(4 * group.size());
+    glm::dvec3 heading(0.0), up(0.0), left(0.0);
+    for (std::uint32_t i : group) {
+        glm::vec3 c[4];
+        leafCorners(leaves[i], aspect, scale, c);
+        for (const glm::vec3& q : c)
+            pts.emplace_back(q);
+        heading += glm::dvec3(skel::headingOf(leaves[i].orientation));
+        up += glm::dvec3(skel::upOf(leaves[i].orientation));
+        left += glm::dvec3(skel::leftOf(leaves[i].orientation));
+    }
+    glm::dvec3 m(0.0);
+    for (const glm::dvec3& q : pts)
+        m += q;
+    m /= static_cast<double>(pts.size());
+    glm::dmat3 cov(0.0);
+    for (const glm::dvec3& q : pts) {
+        const glm::dvec3 d = q - m;
+        cov += glm::outerProduct(d, d);
+    }
+    const glm::dvec3 seed1 =
+        glm::length(heading) > 1e-9 ? glm::normalize(heading) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 e1 = principal(cov, seed1 + glm::dvec3(1e-3, 2e-3, 3e-3));
+    const double l1 = glm::dot(e1, cov * e1);
+    const glm::dmat3 rest = cov - l1 * glm::outerProduct(e1, e1);
+    glm::dvec3 s2 = left - glm::dot(left, e1) * e1;
+    if (glm::length(s2) < 1e-9) s2 = anyPerpendicular(e1);
+    glm::dvec3 e2 = principal(rest, glm::normalize(s2));
+    e2 = e2 - glm::dot(e2, e1) * e1;
+    if (glm::length(e2) < 1e-9) e2 = anyPerpendicular(e1);
+    e2 = glm::normalize(e2);
+    glm::dvec3 n = glm::normalize(glm::cross(e1, e2));
+    if (glm::dot(n, up) < 0.0) n = -n;
+    // The stem edge toward where the leaves start: the card's "up" is their mean
+    // heading in the plane (e1 when they point every way).
+    glm::dvec3 along = heading - glm::dot(heading, n) * n;
+    along = glm::length(along) > 0.2 * static_cast<double>(group.size())
+                ? glm::normalize(along)
+                : (glm::dot(e1, heading) < 0.0 ? -e1 : e1);
+    const glm::dvec3 across = glm::normalize(glm::cross(n, along));
+    double a0 = 1e300, a1 = -1e300, c0 = 1e300, c1 = -1e300;
+    for (const glm::dvec3& q : pts) {
+        const double a = glm::dot(q - m, along), c = glm::dot(q - m, across);
+        a0 = std::min(a0, a);
+        a1 = std::max(a1, a);
+        c0 = std::min(c0, c);
+        c1 = std::max(c1, c);
+    }
+    // The corners' box is larger than the leaves it holds (their outlines are not a
+    // rectangle): shrunk about its middle so the card covers about what they cover.
+    const double shrink = kCardShrink;
+    const double am = 0.5 * (a0 + a1), cm = 0.5 * (c0 + c1);
+    a0 = am + shrink * (a0 - am);
+    a1 = am + shrink * (a1 - am);
+    c0 = cm + shrink * (c0 - cm);
+    c1 = cm + shrink * (c1 - cm);
+    const glm::dvec3 lo = m + a0 * along, hi = m + a1 * along;
+    FittedCard f;
+    f.corners[0] = glm::vec3(lo + c1 * across);
+    f.corners[1] = glm::vec3(lo + c0 * across);
+    f.corners[2] = glm::vec3(hi + c0 * across);
+    f.corners[3] = glm::vec3(hi + c1 * across);
+    f.normal = glm::vec3(n);
+    const double length = a1 - a0, width = c1 - c0;
+    f.bounds.position = glm::vec3(lo + cm * across);
+    f.bounds.orientation =
+        glm::quat_cast(glm::mat3(glm::vec3(-across), glm::vec3(along), glm::vec3(n)));
+    f.bounds.size = static_cast<float>(std::max(length, width / aspect) / scale);
+    f.bounds.node = leaves[group.front()].node;
+    return f;
+}
+
+} // namespace
+
+std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf>& leaves,
+                                                    double sizeScale, int leavesPerCard) {
+    std::vector<std::vector<std::uint32_t>> groups;
+    if (leaves.empty()) return groups;
+    if (leavesPerCard <= 1) {
+        for (std::size_t i = 0; i < leaves.size(); ++i)
+            groups.push_back({static_cast<std::uint32_t>(i)});
+        return groups;
+    }
+    double mean = 0.0;
+    for (const skel::Leaf& leaf : leaves)
+        mean += leaf.size * sizeScale;
+    mean = std::max(mean / static_cast<double>(leaves.size()), 1e-4);
+    double cell = 1.2 * mean;
+    for (int step = 0; step < 40; ++step) {
+        groups = groupByCell(leaves, cell);
+        if (static_cast<double>(leaves.size()) >=
+            static_cast<double>(leavesPerCard) * static_cast<double>(groups.size()))
+            break;
+        cell *= 1.08;
+    }
+    return groups;
+}
+
+std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
+                                   const LeafCardSettings& cards,
+                                   const LeafClusterSettings& clusters,
+                                   const skel::Skeleton* skeleton,
+                                   const std::function<bool(const skel::Leaf&)>& accept) {
+    requireRange("leaf_aspect", cards.aspect, 1e-6, 4.0);
+    requireRange("leaf_scale", cards.sizeScale, 1e-6, 100.0);
+    requireRange("leaf_cluster_size", clusters.leavesPerCard, 0.0, 64.0);
+    if (leaves.empty()) return 0;
+    const auto aspect = static_cast<float>(cards.aspect);
+    const auto scale = static_cast<float>(cards.sizeScale);
+    std::vector<std::vector<std::uint32_t>> groups =
+        groupLeaves(leaves, cards.sizeScale, clusters.leavesPerCard);
+    if (accept) {
+        std::vector<std::vector<std::uint32_t>> kept;
+        kept.reserve(groups.size());
+        for (std::vector<std::uint32_t>& g : groups) {
+            if (g.size() < 2 || accept(fitCard(leaves, g, aspect, scale).bounds)) {
+                kept.push_back(std::move(g));
+            } else {
+                for (std::uint32_t i : g)
+                    kept.push_back({i});
+            }
+        }
+        groups = std::move(kept);
+    }
+    const std::size_t v0 = out.positions.size();
+    const std::size_t i0 = out.indices.size();
+    if (out.submeshes.empty() && i0 > 0)
+        out.submeshes.push_back({"bark", 0, static_cast<std::uint32_t>(i0)});
+    const std::size_t nv = v0 + 4 * groups.size();
+    out.positions.resize(nv);
+    out.normals.resize(nv, glm::vec3(0, 1, 0));
+    out.uvs.resize(nv, glm::vec2(0.0f));
+    const bool wind = !out.branchOrder.empty();
+    if (wind) {
+        out.branchOrder.resize(nv, 0);
+        out.flexibility.resize(nv, 1.0f);
+    }
+    const bool ids = !out.node.empty();
+    if (ids) out.node.resize(nv, Mesh::kNoNode);
+    out.indices.resize(i0 + 6 * groups.size());
+    Rng rng(mixSeed(clusters.seed, salt::kLeafClusters));
+    // A texel of inset keeps a tile's neighbours out of its bilinear footprint.
+    constexpr float kInset = 0.004f;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const std::vector<std::uint32_t>& group = groups[g];
+        const skel::Leaf& first = leaves[group.front()];
+        glm::vec3 corners[4];
+        glm::vec3 normal;
+        int tile = 3;
+        bool mirror = false;
+        if (group.size() == 1) {
+            leafCorners(first, aspect, scale, corners);
+            normal = glm::normalize(skel::upOf(first.orientation));
+            // Drawn every time so that a cluster's look does not depend on its neighbours.
+            (void)rng.below(3);
+            (void)rng.uniformf(0.0f, 1.0f);
+        } else {
+            const FittedCard f = fitCard(leaves, group, aspect, scale);
+            for (int c = 0; c < 4; ++c)
+                corners[c] = f.corners[c];
+            normal = f.normal;
+            tile = static_cast<int>(rng.below(3));
+            mirror = rng.uniformf(0.0f, 1.0f) < 0.5f;
+        }
+        const glm::vec2 origin(0.5f * static_cast<float>(tile % 2),
+                               0.5f * static_cast<float>(tile / 2));
+        const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
+        const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
+        const std::size_t v = v0 + 4 * g;
+        const bool known =
+            skeleton && first.node >= 0 && static_cast<std::size_t>(first.node) < skeleton->size();
+        for (std::size_t c = 0; c < 4; ++c) {
+            out.positions[v + c] = corners[c];
+            out.normals[v + c] = normal;
+            out.uvs[v + c] = origin + glm::vec2(kInset) + local[c] * (0.5f - 2.0f * kInset);
+            if (ids)
+                out.node[v + c] =
+                    first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;
+            if (wind) {
+                out.branchOrder[v + c] =
+                    known ? skeleton->order[static_cast<std::size_t>(first.node)] : 0;
+                out.flexibility[v + c] = 1.0f;
+            }
+        }
+        const auto b = static_cast<std::uint32_t>(v);
+        const std::uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
+        for (std::size_t t = 0; t < 6; ++t)
+            out.indices[i0 + 6 * g + t] = tri[t];
+    }
+    out.submeshes.push_back(
+        {"leaf", static_cast<std::uint32_t>(i0), static_cast<std::uint32_t>(6 * groups.size())});
+    return groups.size();
+}
+
+} // namespace sylva::mesh

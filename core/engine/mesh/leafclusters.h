@@ -1,0 +1,48 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "engine/mesh/leafcards.h"
+#include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
+
+namespace sylva::mesh {
+
+/// Leaf clusters (issue #33): one card carries several leaves, drawn from a species' cluster
+/// atlas (make_textures.py's <species>_leafcluster.png), so a crown costs a fraction of the
+/// triangles of one card a leaf at the same silhouette.
+///
+/// The atlas is 2 x 2 tiles: tiles 0-2 are sprays of leaves on a twig (stem at the bottom edge
+/// of the tile), tile 3 is the single leaf stretched to the tile (for a leaf alone in its cell).
+struct LeafClusterSettings {
+    /// Mean leaves a card carries; 0 or 1: one card a leaf (appendLeafCards); [0, 64].
+    int leavesPerCard = 0;
+    std::uint64_t seed = 0; ///< which spray tile a cluster shows, mirrored or not
+};
+
+/// Appends the leaves as cluster cards ("leaf" submesh). Leaves are grouped by cubic cells whose
+/// edge starts at 1.2 x the mean leaf length and grows by a quarter until the cards carry
+/// leavesPerCard leaves on average (at most twelve steps). Each group's card lies in the plane
+/// that best fits its leaf cards' corners (the two largest principal axes; its normal turned
+/// toward the leaves' mean up axis), stem edge toward where its leaves start, and covers the
+/// corners' extent in that plane; so the cards keep the leaves' spread and their varied
+/// orientations, not one facing. A leaf alone keeps its own card (tile 3). Wind attributes and
+/// node ids as appendLeafCards (a card takes its first leaf's node). A cluster card that
+/// \p accept (when given) refuses, tested as a leaf whose card (size long, cards.aspect x size
+/// wide, times cards.sizeScale) holds it, is not made: its leaves keep their own cards (a forest
+/// refuses cards that reach into an obstacle; adaptation already checked the leaves).
+/// Deterministic. \return the number of cards made.
+std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
+                                   const LeafCardSettings& cards,
+                                   const LeafClusterSettings& clusters,
+                                   const skel::Skeleton* skeleton = nullptr,
+                                   const std::function<bool(const skel::Leaf&)>& accept = {});
+
+/// The groups appendLeafClusterCards makes: for each card, the indices of its leaves (in
+/// order of their first leaf). Exposed for tests.
+std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf>& leaves,
+                                                    double sizeScale, int leavesPerCard);
+
+} // namespace sylva::mesh
