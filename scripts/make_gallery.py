@@ -9,6 +9,7 @@ xvfb, python3-pil and a release build.
 
   /usr/bin/python3 scripts/make_gallery.py [--build build/release] [--only english-oak,...]
       [--seeds 1,2,3] [--out docs/gallery] [--size 480] [--thumb 240] [--no-doc]
+      [--seasons] [--closeups]   (only the season strips / only the close-ups)
 """
 import argparse
 import json
@@ -70,6 +71,70 @@ CLOSEUPS = [
     ("english-oak", (3.5, 2.0, 6.0), (0.0, 3.2, 0.0)),
     ("scots-pine", (4.5, 10.5, 6.5), (0.0, 11.5, 0.0)),
 ]
+
+
+# The bark alone, near enough for the normal map's relief to show (issue #33).
+BARK_CLOSEUPS = [
+    ("english-oak", (0.9, 1.4, 1.3), (0.0, 1.2, 0.0)),
+    ("scots-pine", (0.7, 1.6, 1.0), (0.0, 1.5, 0.0)),
+]
+
+SEASONS = ("spring", "summer", "autumn", "winter")
+
+
+def season_copy(species, season, folder, seed=1):
+    """seeded_copy() with the tube_mesh's season set."""
+    path = seeded_copy(species, seed, folder)
+    with open(path) as f:
+        doc = json.load(f)
+    for node in doc["graph"]["nodes"]:
+        if node["type"] == "tube_mesh":
+            node.setdefault("params", {})["season"] = season
+    out = os.path.join(folder, "%s-%s.json" % (species, season))
+    with open(out, "w") as f:
+        json.dump(doc, f)
+    return out
+
+
+def season_strip(build, species, folder, dst, size, thumb):
+    """The species in its four seasons side by side, each labelled."""
+    from PIL import ImageDraw
+    tiles = []
+    for season in SEASONS:
+        raw = os.path.join(folder, "%s-%s.png" % (species, season))
+        render(build, season_copy(species, season, folder), raw, size)
+        img = Image.open(raw).convert("RGB")
+        img.thumbnail((thumb, thumb), Image.LANCZOS)
+        ImageDraw.Draw(img).text((6, 4), season, fill=(20, 20, 20))
+        tiles.append(img)
+    strip = Image.new("RGB", (sum(t.width for t in tiles), max(t.height for t in tiles)))
+    x = 0
+    for t in tiles:
+        strip.paste(t, (x, 0))
+        x += t.width
+    strip = strip.quantize(colors=192, method=Image.MEDIANCUT, dither=Image.FLOYDSTEINBERG)
+    strip.save(dst, optimize=True)
+
+
+def seasons_doc(species):
+    lines = ["| species | spring · summer · autumn · winter |", "|---|---|"]
+    for sp in species:
+        with open(os.path.join(ROOT, "presets", sp + ".json")) as f:
+            doc = json.load(f)
+        mesh = [n for n in doc["graph"]["nodes"] if n["type"] == "tube_mesh"][0]
+        params = mesh.get("params", {})
+        kind = ("deciduous, autumn colour %s" % params["autumn_color"]
+                if params.get("deciduous") else "evergreen: the same all year")
+        lines.append("| **%s**<br>%s | ![%s in spring, summer, autumn and winter]"
+                     "(gallery/seasons-%s.png) |" % (doc["name"], kind, doc["name"], sp))
+    doc_path = os.path.join(ROOT, "docs", "gallery.md")
+    with open(doc_path) as f:
+        text = f.read()
+    begin, end = "<!-- seasons:begin -->", "<!-- seasons:end -->"
+    head, rest = text.split(begin, 1)
+    _, tail = rest.split(end, 1)
+    with open(doc_path, "w") as f:
+        f.write(head + begin + "\n" + "\n".join(lines) + "\n" + end + tail)
 
 
 def closeup(build, species, eye, target, png, folder):
@@ -138,7 +203,31 @@ def main():
     ap.add_argument("--size", type=int, default=480)
     ap.add_argument("--thumb", type=int, default=240)
     ap.add_argument("--no-doc", action="store_true", help="do not rewrite docs/gallery.md")
+    ap.add_argument("--seasons", action="store_true",
+                    help="only the season strips (docs/gallery/seasons-*.png, the seasons table)")
+    ap.add_argument("--closeups", action="store_true", help="only the close-ups")
     args = ap.parse_args()
+    if args.seasons or args.closeups:
+        species = [s for s in args.only.split(",") if s] if args.only else SPECIES
+        os.makedirs(args.out, exist_ok=True)
+        with tempfile.TemporaryDirectory() as tmp:
+            if args.seasons:
+                for sp in species:
+                    season_strip(args.build, sp, tmp,
+                                 os.path.join(args.out, "seasons-%s.png" % sp), args.size, 200)
+                    print(sp, "seasons", file=sys.stderr)
+                if not args.no_doc and not args.only:
+                    seasons_doc(species)
+            if args.closeups:
+                for sp, eye, target in CLOSEUPS:
+                    raw = os.path.join(tmp, "%s-closeup.png" % sp)
+                    closeup(args.build, sp, eye, target, raw, tmp)
+                    thumbnail(raw, os.path.join(args.out, "%s-closeup.png" % sp), 360, colors=96)
+                for sp, eye, target in BARK_CLOSEUPS:
+                    raw = os.path.join(tmp, "%s-bark.png" % sp)
+                    closeup(args.build, sp, eye, target, raw, tmp)
+                    thumbnail(raw, os.path.join(args.out, "%s-bark.png" % sp), 480, colors=160)
+        return
     species = ([s for s in args.only.split(",") if s and s not in ("stand", "demo")]
                if args.only else SPECIES)
     seeds = [int(s) for s in args.seeds.split(",")]

@@ -198,6 +198,14 @@
         <source>Move nodes</source>
         <translation>Knoten verschieben</translation>
     </message>
+    <message>
+        <source>Change season</source>
+        <translation>Jahreszeit ändern</translation>
+    </message>
+    <message>
+        <source>Change tree season</source>
+        <translation>Jahreszeit des Baums ändern</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -1337,6 +1345,42 @@
     <message>
         <source>From %1 (stored in the project after its first edit).</source>
         <translation>Aus %1 (nach der ersten Bearbeitung im Projekt gespeichert).</translation>
+    </message>
+    <message>
+        <source>Spring</source>
+        <translation>Frühling</translation>
+    </message>
+    <message>
+        <source>Summer</source>
+        <translation>Sommer</translation>
+    </message>
+    <message>
+        <source>Autumn</source>
+        <translation>Herbst</translation>
+    </message>
+    <message>
+        <source>Winter</source>
+        <translation>Winter</translation>
+    </message>
+    <message>
+        <source>Season:</source>
+        <translation>Jahreszeit:</translation>
+    </message>
+    <message>
+        <source>Species&apos; own (summer)</source>
+        <translation>Die der Art (Sommer)</translation>
+    </message>
+    <message>
+        <source>The time of year of every tree without a season of its own: deciduous species flush in spring, colour in autumn and are bare in winter; conifers and evergreens stay as they are</source>
+        <translation>Die Jahreszeit jedes Baums ohne eigene: Laubbäume treiben im Frühling aus, färben sich im Herbst und sind im Winter kahl; Nadelbäume und Immergrüne bleiben, wie sie sind</translation>
+    </message>
+    <message>
+        <source>Project&apos;s season</source>
+        <translation>Jahreszeit des Projekts</translation>
+    </message>
+    <message>
+        <source>This tree&apos;s own time of year, or the project&apos;s season</source>
+        <translation>Die eigene Jahreszeit dieses Baums oder die des Projekts</translation>
     </message>
 </context>
 <context>

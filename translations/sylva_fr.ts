@@ -198,6 +198,14 @@
         <source>Move nodes</source>
         <translation>Déplacer les nœuds</translation>
     </message>
+    <message>
+        <source>Change season</source>
+        <translation>Changer la saison</translation>
+    </message>
+    <message>
+        <source>Change tree season</source>
+        <translation>Changer la saison de l&apos;arbre</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>
@@ -1337,6 +1345,42 @@
     <message>
         <source>From %1 (stored in the project after its first edit).</source>
         <translation>Source&#xa0;: %1 (stockée dans le projet après sa première modification).</translation>
+    </message>
+    <message>
+        <source>Spring</source>
+        <translation>Printemps</translation>
+    </message>
+    <message>
+        <source>Summer</source>
+        <translation>Été</translation>
+    </message>
+    <message>
+        <source>Autumn</source>
+        <translation>Automne</translation>
+    </message>
+    <message>
+        <source>Winter</source>
+        <translation>Hiver</translation>
+    </message>
+    <message>
+        <source>Season:</source>
+        <translation>Saison :</translation>
+    </message>
+    <message>
+        <source>Species&apos; own (summer)</source>
+        <translation>Celle de l&apos;espèce (été)</translation>
+    </message>
+    <message>
+        <source>The time of year of every tree without a season of its own: deciduous species flush in spring, colour in autumn and are bare in winter; conifers and evergreens stay as they are</source>
+        <translation>La saison de chaque arbre sans saison propre : les feuillus débourrent au printemps, se colorent en automne et sont nus en hiver ; les conifères et les persistants restent tels quels</translation>
+    </message>
+    <message>
+        <source>Project&apos;s season</source>
+        <translation>Saison du projet</translation>
+    </message>
+    <message>
+        <source>This tree&apos;s own time of year, or the project&apos;s season</source>
+        <translation>La saison propre de cet arbre, ou celle du projet</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
 #include "clishared.h"
+#include "cliargs.h"
 
 #include "engine/util/error.h"
 
@@ -29,6 +30,14 @@ doc::Project loadProjectOrScene(const std::string& path) {
     for (const std::string& w : report.warnings)
         std::fprintf(stderr, "sylva-cli: warning: %s\n", w.c_str());
     return project;
+}
+
+mesh::Season parseSeasonOption(const std::string& name) {
+    try {
+        return mesh::parseSeason(name);
+    } catch (const InvalidInput& e) {
+        throw UsageError(std::string("--season: ") + e.what());
+    }
 }
 
 std::string metricsJson(const forest::SceneMetrics& m) {

@@ -6,6 +6,7 @@
 #include "document/project.h"
 #include "engine/export/windexport.h"
 #include "engine/forest/metrics.h"
+#include "engine/mesh/season.h"
 
 namespace sylva::cli {
 
@@ -16,6 +17,9 @@ void appendJsonNumber(std::string& out, const char* key, double value, bool comm
 /// A `.sylva` project, or the reference implementation's scene description (it has "plants"
 /// and no "format"); warnings of the loader go to stderr.
 doc::Project loadProjectOrScene(const std::string& path);
+
+/// The season --season names; UsageError naming the allowed values for any other.
+mesh::Season parseSeasonOption(const std::string& name);
 
 /// The scene metrics as one JSON object (units in the key names).
 std::string metricsJson(const forest::SceneMetrics& metrics);

@@ -81,7 +81,8 @@ std::string sceneKey(const std::string& projectPath, const std::vector<std::stri
 } // namespace
 
 int runForest(const std::vector<std::string>& argv) {
-    std::vector<std::string> valueOptions{"-o", "--output", "--camera", "--threads", "--tile"};
+    std::vector<std::string> valueOptions{"-o",        "--output", "--camera",
+                                          "--threads", "--tile",   "--season"};
     valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
     const Args args(argv, valueOptions,
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--no-instancing",
@@ -118,7 +119,15 @@ int runForest(const std::vector<std::string>& argv) {
     const bool obj = std::filesystem::path(*output).extension() == ".obj";
 
     const auto start = Clock::now();
-    const doc::Project project = loadProjectOrScene(args.positional()[0]);
+    std::optional<mesh::Season> season;
+    if (auto name = args.value("--season")) season = parseSeasonOption(*name);
+    doc::Project project = loadProjectOrScene(args.positional()[0]);
+    if (season) {
+        // The whole forest in one season: the trees' own seasons give way too.
+        project.season = std::string(mesh::seasonName(*season));
+        for (doc::ProjectInstance& tree : project.instances)
+            tree.season.clear();
+    }
     forest::ForestScene forestScene = doc::makeForestScene(project);
     if (auto camera = args.value("--camera")) forestScene.camera = parseVec3(*camera, "--camera");
     const double loadMs = msSince(start);

@@ -7,6 +7,7 @@
 #include "document/speciesfile.h"
 #include "engine/export/treeexport.h"
 #include "engine/graph/graph.h"
+#include "engine/mesh/season.h"
 #include "engine/util/error.h"
 
 #include <QString>
@@ -37,8 +38,8 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
 } // namespace
 
 int runTree(const std::vector<std::string>& argv) {
-    std::vector<std::string> valueOptions{"-o",     "--output", "-n", "--generations",
-                                          "--seed", "--set"};
+    std::vector<std::string> valueOptions{"-o",     "--output", "-n",      "--generations",
+                                          "--seed", "--set",    "--season"};
     valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
     const Args args(argv, valueOptions, {"--stats", "--fsync", "--compact", "--wind"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("tree"));
@@ -70,6 +71,15 @@ int runTree(const std::vector<std::string>& argv) {
         for (const graph::NodeDesc& node : evaluator.graph().nodes)
             if (node.type == "tube_mesh")
                 evaluator.setParam(node.id, "wind_data", sylva::Value(true));
+    if (auto name = args.value("--season")) {
+        // The season is the meshing node's parameter: --season autumn is --set mesh.season=autumn
+        // on the output node.
+        const mesh::Season season = parseSeasonOption(*name);
+        const graph::NodeDesc* out = evaluator.graph().findNode(evaluator.graph().output);
+        if (!out || out->type != "tube_mesh")
+            throw UsageError("--season needs a species whose output node is a tube_mesh");
+        evaluator.setParam(out->id, "season", sylva::Value(std::string(mesh::seasonName(season))));
+    }
 
     const auto seed = args.integer("--seed", 0, (1LL << 62));
     const graph::NodeOutput& result =

@@ -15,6 +15,7 @@
 #include "document/speciesfile.h"
 #include "document/speciesgraphedit.h"
 #include "engine/graph/graph.h"
+#include "engine/mesh/season.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -115,6 +116,7 @@ void Document::validateTree(const ProjectInstance& t) const {
     requireRange("tree rotation (degrees)", t.rotation, -1e6, 1e6);
     requireRange("tree scale", t.scale, 0.01, 100);
     requireRange("tree growth", t.growth, 0.01, 1);
+    if (!t.season.empty()) (void)mesh::parseSeason(t.season);
 }
 
 TreeId Document::addTree(const ProjectInstance& t) {
@@ -577,7 +579,8 @@ void Document::setDomain(int index, const PlacementDomain& d, bool commit) {
 }
 
 Document::Settings Document::settings() const {
-    return {mProject.seed, mProject.cameraPosition, mProject.cameraTarget, mProject.lightDirection};
+    return {mProject.seed, mProject.cameraPosition, mProject.cameraTarget, mProject.lightDirection,
+            mProject.season};
 }
 
 void Document::setSeed(std::uint64_t seed) {
@@ -603,6 +606,27 @@ void Document::setLight(const glm::vec3& direction, bool commit) {
     s.lightDirection = direction;
     mUndo.push(cmd::changeSettings(*this, s, commit,
                                    QCoreApplication::translate("Commands", "Change light")));
+}
+
+namespace {
+/// \p season in its canonical spelling ("fall" is autumn), empty kept empty.
+std::string canonicalSeason(const std::string& season) {
+    return season.empty() ? season : std::string(mesh::seasonName(mesh::parseSeason(season)));
+}
+} // namespace
+
+void Document::setSeason(const std::string& season) {
+    Settings s = settings();
+    s.season = canonicalSeason(season);
+    if (s == settings()) return;
+    mUndo.push(cmd::changeSettings(*this, s, true,
+                                   QCoreApplication::translate("Commands", "Change season")));
+}
+
+void Document::setTreeSeason(TreeId id, const std::string& season) {
+    ProjectInstance t = tree(id);
+    t.season = canonicalSeason(season);
+    setTree(id, t);
 }
 
 void Document::rawInsertObstacle(int index, const ProjectObstacle& o) {
@@ -644,6 +668,7 @@ void Document::rawSetSettings(const Settings& s) {
     mProject.cameraPosition = s.cameraPosition;
     mProject.cameraTarget = s.cameraTarget;
     mProject.lightDirection = s.lightDirection;
+    mProject.season = s.season;
     emitChange(DocumentChange::Settings);
 }
 

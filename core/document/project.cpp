@@ -2,6 +2,7 @@
 
 #include "document/formatupgrade.h"
 #include "engine/graph/vectorparam.h"
+#include "engine/mesh/season.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -24,8 +25,8 @@ using graph::vec3Of;
 using sylva::Value;
 
 const std::vector<std::string> kKnownKeys = {
-    "format",    "format_version", "app_version", "seed",  "species",     "domains",
-    "instances", "obstacles",      "camera",      "light", "next_tree_id"};
+    "format",    "format_version", "app_version", "seed",  "species",      "domains",
+    "instances", "obstacles",      "camera",      "light", "next_tree_id", "season"};
 
 /// An optional id: a whole number in [1, \p max], or 0 when the key is absent.
 std::uint64_t idOf(const Value& v, const std::string& where, std::uint64_t max) {
@@ -120,6 +121,16 @@ PlacementDomain parseDomain(const Value& v, std::size_t i) {
     return d;
 }
 
+/// \p name when it is empty or a season's name; else InvalidInput naming \p where.
+std::string checkedSeason(const std::string& name, const std::string& where) {
+    if (name.empty()) return name;
+    try {
+        return std::string(mesh::seasonName(mesh::parseSeason(name)));
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(where + ": " + e.what());
+    }
+}
+
 ProjectInstance parseInstance(const Value& v, std::size_t i) {
     const std::string where = "instances[" + std::to_string(i) + "]";
     ProjectInstance in;
@@ -133,6 +144,7 @@ ProjectInstance parseInstance(const Value& v, std::size_t i) {
     in.seed = static_cast<std::uint64_t>(v.integer("seed", 0));
     in.growth = v.number("growth", 1.0);
     requireRange((where + ".growth").c_str(), in.growth, 0.0, 1.0);
+    in.season = checkedSeason(v.string("season", ""), where + ".season");
     return in;
 }
 
@@ -284,6 +296,7 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
             sylva::wind::validate(check); // names the setting and its allowed range
             p.wind = wind;
         }
+        p.season = checkedSeason(root.string("season", ""), "season");
         // Species names must be unique and every reference must name one.
         for (std::size_t i = 0; i < p.species.size(); ++i)
             for (std::size_t j = 0; j < i; ++j)
@@ -383,14 +396,18 @@ QByteArray serializeProject(const Project& project) {
     }
     root["domains"] = Value(std::move(domains));
     Value::Array instances;
-    for (const ProjectInstance& in : p.instances)
-        instances.emplace_back(Value::Object{{"id", static_cast<double>(in.id)},
-                                             {"species", in.species},
-                                             {"position", arrayOf(in.position)},
-                                             {"rotation", in.rotation},
-                                             {"scale", in.scale},
-                                             {"seed", static_cast<double>(in.seed)},
-                                             {"growth", in.growth}});
+    for (const ProjectInstance& in : p.instances) {
+        Value::Object o{{"id", static_cast<double>(in.id)},
+                        {"species", in.species},
+                        {"position", arrayOf(in.position)},
+                        {"rotation", in.rotation},
+                        {"scale", in.scale},
+                        {"seed", static_cast<double>(in.seed)},
+                        {"growth", in.growth}};
+        // Only when set: a project without seasons saves as it did before they existed.
+        if (!in.season.empty()) o["season"] = in.season;
+        instances.emplace_back(std::move(o));
+    }
     root["instances"] = Value(std::move(instances));
     Value::Array obstacles;
     for (const ProjectObstacle& o : p.obstacles)
@@ -408,6 +425,7 @@ QByteArray serializeProject(const Project& project) {
                                      {"strength", p.wind->strength},
                                      {"gustiness", p.wind->gustiness},
                                      {"frequency", p.wind->frequency}};
+    if (!p.season.empty()) root["season"] = p.season;
     return QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n");
 }
 

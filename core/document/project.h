@@ -65,6 +65,8 @@ struct ProjectInstance {
     double scale = 1.0;
     std::uint64_t seed = 0;
     double growth = 1.0; ///< growth stage 0..1
+    /// The tree's own season ("spring", "summer", "autumn", "winter"); empty: the project's.
+    std::string season;
     bool operator==(const ProjectInstance&) const = default;
 };
 
@@ -108,6 +110,9 @@ struct Project {
     glm::vec3 cameraPosition{0.0f, 20.0f, 80.0f}, cameraTarget{0.0f};
     glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
     std::optional<ProjectWind> wind; ///< unset: the engine's default wind, nothing saved
+    /// The season of every tree without its own ("spring", "summer", "autumn", "winter");
+    /// empty: each species' own (summer, the look of files written before seasons existed).
+    std::string season;
     /// Keys this version does not know, kept so that saving never drops another tool's data.
     sylva::Value::Object extra;
 

@@ -1,6 +1,7 @@
 #include "document/scenebuild.h"
 
 #include "document/speciesfile.h"
+#include "engine/mesh/season.h"
 #include "engine/nodes/adaptnode.h"
 #include "engine/util/error.h"
 
@@ -28,6 +29,7 @@ forest::ForestScene makeForestScene(const Project& original) {
     s.seed = project.seed;
     s.camera = project.cameraPosition;
     s.lightDirection = project.lightDirection;
+    if (!project.season.empty()) s.season = mesh::parseSeason(project.season);
 
     std::map<std::string, std::uint32_t> speciesIndex;
     for (const ProjectSpecies& ps : project.species) {
@@ -87,6 +89,7 @@ forest::ForestScene makeForestScene(const Project& original) {
         in.growth = static_cast<float>(pi.growth);
         in.seed = pi.seed;
         in.handPlaced = true;
+        if (!pi.season.empty()) in.season = static_cast<std::int8_t>(mesh::parseSeason(pi.season));
         s.handPlaced.push_back(in);
     }
     return s;

@@ -37,9 +37,12 @@ BARK = 256
 # ----------------------------------------------------------------------------- PNG
 
 def write_png(path, pixels):
-    """Writes an 8-bit RGB or RGBA image (uint8 array, rows top to bottom) as PNG."""
+    """Writes an 8-bit RGB or RGBA image (uint8 array, rows top to bottom) as PNG; a 2-D array
+    is written as grey (roughness maps)."""
+    if pixels.ndim == 2:
+        pixels = pixels[..., None]
     h, w, channels = pixels.shape
-    color_type = 6 if channels == 4 else 2
+    color_type = {1: 0, 3: 2, 4: 6}[channels]
     raw = b"".join(b"\x00" + pixels[y].tobytes() for y in range(h))
 
     def chunk(tag, data):
@@ -108,6 +111,74 @@ def save_rgb(name, rgb):
     write_png(os.path.join(HERE, name), to_bytes(rgb))
 
 
+# ----------------------------------------------------------------------------- normal maps
+# Every texture has a tangent-space normal map "<name>_normal.png" and a roughness map
+# "<name>_roughness.png" beside it, derived from the height field the drawing below already
+# makes (a bark's ridges and cracks, a leaf's veins and blade). Convention: OpenGL's (+Y up,
+# like Blender and glTF): red = +u (right in the image), green = +v (up in the image, towards
+# the top row: a bark's v along the branch, a leaf's tip), blue = out of the surface; stored as
+# n * 0.5 + 0.5 in linear 8-bit. Roughness is grey, 0 smooth .. 1 rough (glTF reads green).
+
+def normal_map(height, strength, wrap=True):
+    """Normals of a height field (0..1, rows top to bottom): \p strength is the height of 1.0
+    in texels. Central differences, wrapping for tiling textures."""
+    h = np.asarray(height, np.float64) * strength
+    if wrap:
+        dx = (np.roll(h, -1, 1) - np.roll(h, 1, 1)) * 0.5
+        drow = (np.roll(h, -1, 0) - np.roll(h, 1, 0)) * 0.5
+    else:
+        drow, dx = np.gradient(h)
+    # v runs up the image, rows down: dh/dv = -dh/drow.
+    n = np.stack([-dx, drow, np.ones_like(h)], axis=-1)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    return n * 0.5 + 0.5
+
+
+def save_maps(name, height, strength, roughness, wrap=True):
+    """Writes <stem>_normal.png (RGB) and <stem>_roughness.png (grey) for texture \p name."""
+    stem = name[:-4]
+    write_png(os.path.join(HERE, stem + "_normal.png"), to_bytes(normal_map(height, strength, wrap)))
+    write_png(os.path.join(HERE, stem + "_roughness.png"), to_bytes(roughness))
+
+
+def save_bark(name, drawn, strength=6.0):
+    """A bark drawn as (rgb, height): the colour and its maps. Bark is rough; the deep cracks
+    the roughest."""
+    rgb, height = drawn
+    save_rgb(name, rgb)
+    hn = (height - height.min()) / max(height.max() - height.min(), 1e-9)
+    save_maps(name, hn, strength, 0.78 + 0.2 * (1 - hn))
+
+
+def leaf_height(mask, rgb, relief=None):
+    """A leaf's height at the texture's resolution: a blade that swells from its rim (the
+    blurred cut-out) plus \p relief (veins pressed in, supersampled like mask), or the colour's
+    shading where a drawing has no relief of its own (needles, sprays: their shading is their
+    roundness)."""
+    m = mask.astype(np.float32)
+    h = m.shape[0] // SS
+    w = m.shape[1] // SS
+    a = m.reshape(h, SS, w, SS).mean(axis=(1, 3))
+    dome = a.copy()
+    for _ in range(3):
+        dome = (dome + np.roll(dome, 1, 0) + np.roll(dome, -1, 0) + np.roll(dome, 1, 1) +
+                np.roll(dome, -1, 1)) / 5.0
+    dome *= a
+    if relief is None:
+        lum = (rgb * m[..., None]).mean(axis=-1).reshape(h, SS, w, SS).mean(axis=(1, 3))
+        lum = lum / max(lum.max(), 1e-6)
+        return 0.6 * dome + 0.4 * lum * a
+    r = (relief * m).reshape(h, SS, w, SS).mean(axis=(1, 3))
+    return 0.6 * dome + 0.4 * r
+
+
+def save_leaf_maps(name, mask, rgb, relief=None, roughness=0.55):
+    """Normal and roughness maps of a leaf card: a waxy upper side, rougher veins."""
+    height = leaf_height(mask, rgb, relief)
+    hn = height / max(height.max(), 1e-9)
+    save_maps(name, hn, 3.0, np.clip(roughness + 0.25 * (1 - hn), 0, 1), wrap=False)
+
+
 # ----------------------------------------------------------------------------- barks
 
 def bark_furrowed(seed, dark, light, ridges=6, depth=1.0, warp=0.35, cracks=0.5):
@@ -122,7 +193,7 @@ def bark_furrowed(seed, dark, light, ridges=6, depth=1.0, warp=0.35, cracks=0.5)
     crack = noise(shape, 12, 4, seed + 3)
     crack = np.clip((crack - (1 - 0.25 * cracks)) * 8, 0, 1)
     shade = 0.25 + depth * 0.6 * ridge + 0.25 * (n3 - 0.5) - 0.5 * crack * ridge
-    return colorize(shade, dark, light)
+    return colorize(shade, dark, light), shade
 
 
 def bark_smooth(seed, base, mottle, lenticels=0.0, rings=0.0):
@@ -132,15 +203,20 @@ def bark_smooth(seed, base, mottle, lenticels=0.0, rings=0.0):
     f = noise(shape, 3, 6, seed + 1)
     shade = 0.6 + 0.35 * (m - 0.5) * mottle * 2 + 0.12 * (f - 0.5)
     rgb = colorize(shade, np.asarray(base) * 0.55, np.asarray(base) * 1.15)
+    # Smooth bark's relief is its fine grain, raised lenticels and the folds of the rings; the
+    # mottling is colour only.
+    height = 0.5 + 0.3 * (f - 0.5)
     if lenticels > 0:
         l = noise(shape, 6, 1.2, seed + 2)
         mark = np.clip((l - (1 - 0.2 * lenticels)) * 10, 0, 1)[..., None]
         rgb = rgb * (1 - 0.45 * mark)
+        height = height + 0.25 * mark[..., 0]
     if rings > 0:
         v = np.arange(BARK)[:, None] / BARK
         ring = np.abs(np.sin(math.pi * (5 * v + 0.3 * noise(shape, 60, 8, seed + 3))))
         rgb = rgb * (1 - rings * 0.2 * (ring < 0.08)[..., None])
-    return rgb
+        height = height - 0.3 * rings * np.clip(1 - ring / 0.12, 0, 1)
+    return rgb, height
 
 
 def bark_birch():
@@ -156,7 +232,10 @@ def bark_birch():
     rgb = base * (1 - 0.75 * lent[..., None])
     rgb = rgb * (1 - 0.85 * patch[..., None]) + 0.03 * patch[..., None]
     rgb = rgb * (1 - 0.15 * peel[..., None]) + np.asarray((0.05, 0.02, 0.0)) * peel[..., None]
-    return rgb
+    # Lenticels are shallow horizontal grooves, the dark patches rough fissured bark, the peel
+    # lifted curls.
+    height = 0.6 - 0.35 * lent - 0.3 * patch * noise(shape, 3, 1.5, 16) + 0.2 * peel
+    return rgb, height
 
 
 def bark_plates(seed, plate, crack_col, count=60, stretch=(1.0, 2.2), flaky=0.5):
@@ -169,7 +248,9 @@ def bark_plates(seed, plate, crack_col, count=60, stretch=(1.0, 2.2), flaky=0.5)
     f = noise(shape, 2, 6, seed + 1)
     shade = (0.55 + 0.35 * tint * flaky + 0.2 * (f - 0.5)) * edge
     rgb = colorize(shade, crack_col, plate)
-    return rgb
+    # Each plate a little tilted slab (its own height), the cracks between them deep.
+    height = edge * (0.7 + 0.3 * tint) + 0.08 * (f - 0.5)
+    return rgb, height
 
 
 def bark_palm():
@@ -183,7 +264,7 @@ def bark_palm():
     fibre = noise(shape, 1.5, 14, 42)
     shade = 0.45 + 0.35 * fibre + 0.25 * (1 - scar) - 0.1 * np.sin(2 * math.pi * u * 3) ** 2 * 0
     rgb = colorize(shade * (1 - 0.45 * scar), (0.18, 0.14, 0.10), (0.66, 0.58, 0.46))
-    return rgb
+    return rgb, shade * (1 - 0.45 * scar)
 
 
 def bark_stringy(seed, dark, light):
@@ -194,7 +275,7 @@ def bark_stringy(seed, dark, light):
     u = np.arange(BARK)[None, :] / BARK
     strip = np.abs(np.sin(math.pi * (14 * u + 2.5 * (w - 0.5)))) ** 0.5
     shade = 0.3 + 0.45 * s + 0.3 * strip
-    return colorize(shade, dark, light)
+    return colorize(shade, dark, light), shade
 
 
 # ----------------------------------------------------------------------------- leaves
@@ -211,9 +292,20 @@ def canvas(w, h):
     return x, t
 
 
-def finish_leaf(name, w, h, mask, rgb):
+# While a season's leaf textures are drawn (seasons()): the colour change applied to a leaf's
+# supersampled colour before it is written, and no maps (a season's leaf shares the summer
+# leaf's normal and roughness maps).
+SEASON_RECOLOR = None
+
+
+def finish_leaf(name, w, h, mask, rgb, relief=None, roughness=0.55):
     """Downsamples the supersampled mask and colour, bleeds the colour under the transparent
-    texels (no dark fringe when mipmapped) and writes the RGBA PNG."""
+    texels (no dark fringe when mipmapped) and writes the RGBA PNG, and its normal and
+    roughness maps (\p relief: the blade's own height, supersampled; see leaf_height)."""
+    if SEASON_RECOLOR is not None:
+        rgb = SEASON_RECOLOR(rgb, mask)
+    else:
+        save_leaf_maps(name, mask, rgb, relief, roughness)
     mask = mask.astype(np.float32)
     a = mask.reshape(h, SS, w, SS).mean(axis=(1, 3))
     c = (rgb * mask[..., None]).reshape(h, SS, w, SS, 3).sum(axis=(1, 3))
@@ -256,13 +348,26 @@ def blade_shading(x, t, width, base, seed, veins=8, vein_angle=0.6, midrib=0.03,
     return rgb
 
 
+def blade_relief(x, t, width, veins=8, vein_angle=0.6, midrib=0.03, gloss=0.1):
+    """The height of a simple blade (blade_shading's veins, same arguments): arched across,
+    falling to the rim, the midrib and side veins pressed in as on a leaf's upper side."""
+    rel = np.abs(x) / np.maximum(width, 1e-3)
+    height = 1.0 - 0.35 * np.clip(rel, 0, 1) ** 2
+    vein = np.abs(x) < midrib * 1.6
+    phase = (t - vein_angle * np.abs(x)) * veins
+    d = np.abs(phase - np.round(phase))
+    side = np.clip(1 - d / 0.08, 0, 1) * (rel < 0.9)
+    return height - 0.45 * vein - 0.3 * side
+
+
 def simple_leaf(name, w, h, width_fn, base, seed, stem=0.08, **shading):
     x, t = canvas(w, h)
     k = np.clip((t - stem) / (1 - stem), 0, 1)
     width = width_fn(k, x)
     mask = ((np.abs(x) < width) & (t > stem)) | ((t <= stem + 0.01) & (np.abs(x) < 0.05))
     rgb = blade_shading(x, k, width, base, seed, **shading)
-    return finish_leaf(name, w, h, mask, rgb)
+    return finish_leaf(name, w, h, mask, rgb, relief=blade_relief(x, k, width, **shading),
+                       roughness=0.6 - shading.get("gloss", 0.1))
 
 
 def oak_width(k, x):
@@ -323,7 +428,8 @@ def maple_leaf(name, w, h, base, seed):
         vein |= (np.abs(across) < 0.025) & (along > 0)
     rgb = np.where(vein[..., None], rgb * 0.6 + 0.4 * (np.asarray(base) * 1.4 + 0.05), rgb)
     rgb = rgb * (0.8 + 0.2 * np.clip(1 - r / 1.1, 0, 1))[..., None] + 0.05
-    return finish_leaf(name, w, h, mask, rgb)
+    return finish_leaf(name, w, h, mask, rgb,
+                       relief=1.0 - 0.5 * vein - 0.2 * np.clip(r / 1.1, 0, 1))
 
 
 def strokes(x, t, segs, aspect):
@@ -585,6 +691,7 @@ def default_bark(path, size=256):
     n2 = periodic_noise(rng, 32, 16)
     n3 = periodic_noise(rng, 64, 64)
     rows = []
+    heights = []  # the shade is the bark's height: ridges light, cracks dark
     for y in range(size):
         v = y / size
         row = []
@@ -597,18 +704,24 @@ def default_bark(path, size=256):
             crack = 1.0 if n2(u * 1.0, v * 2.0) > 0.78 else 0.0
             shade = 0.45 + 0.45 * ridge + 0.15 * (n3(u, v) - 0.5) - 0.25 * crack * (1 - ridge)
             shade = max(0.05, min(1.0, shade))
+            heights.append(shade)
             r = int(255 * min(1.0, 0.42 * shade + 0.04))
             g = int(255 * min(1.0, 0.31 * shade + 0.03))
             b = int(255 * min(1.0, 0.22 * shade + 0.02))
             row += [r, g, b]
         rows.append(row)
     write_png(path, np.array(rows, np.uint8).reshape(size, size, 3))
+    height = np.array(heights).reshape(size, size)
+    hn = (height - height.min()) / max(height.max() - height.min(), 1e-9)
+    write_png(path[:-4] + "_normal.png", to_bytes(normal_map(hn, 6.0)))
+    write_png(path[:-4] + "_roughness.png", to_bytes(0.78 + 0.2 * (1 - hn)))
 
 
 def default_leaf(path, width=256, height=512):
     rng = random.Random(7)
     n = periodic_noise(rng, 16, 32)
     rows = []
+    covered, relief = [], []  # for the maps: the cut-out and the veins pressed in
     for y in range(height):
         t = 1.0 - (y + 0.5) / height  # 0 at the bottom row (stem), 1 at the top (tip)
         row = []
@@ -623,6 +736,8 @@ def default_leaf(path, width=256, height=512):
             stem = t <= 0.08 and abs(s) < 0.035
             if not inside and not stem:
                 row += [40, 80, 30, 0]
+                covered.append(False)
+                relief.append(0.0)
                 continue
             # Midrib and side veins at 45 degrees.
             vein = 0.0
@@ -640,8 +755,16 @@ def default_leaf(path, width=256, height=512):
             g = 0.42 * shade + 0.25 * vein
             b = 0.10 * shade + 0.12 * vein
             row += [int(255 * min(1.0, r)), int(255 * min(1.0, g)), int(255 * min(1.0, b)), 255]
+            covered.append(True)
+            relief.append(1.0 - 0.35 * min(1.0, abs(s) / max(blade, 1e-3)) ** 2 - 0.45 * vein)
         rows.append(row)
     write_png(path, np.array(rows, np.uint8).reshape(height, width, 4))
+    up = np.ones((SS, SS))
+    mask = np.kron(np.array(covered, np.float32).reshape(height, width), up) > 0.5
+    hmap = leaf_height(mask, None, np.kron(np.array(relief).reshape(height, width), up))
+    hn = hmap / max(hmap.max(), 1e-9)
+    write_png(path[:-4] + "_normal.png", to_bytes(normal_map(hn, 3.0, wrap=False)))
+    write_png(path[:-4] + "_roughness.png", to_bytes(np.clip(0.55 + 0.25 * (1 - hn), 0, 1)))
 
 
 # ----------------------------------------------------------------------------- leaf clusters
@@ -767,47 +890,141 @@ def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17
 # ----------------------------------------------------------------------------- the library
 
 def library():
-    save_rgb("english-oak_bark.png", bark_furrowed(101, (0.09, 0.08, 0.07), (0.50, 0.46, 0.40), ridges=5, cracks=0.9))
+    save_bark("english-oak_bark.png", bark_furrowed(101, (0.09, 0.08, 0.07), (0.50, 0.46, 0.40), ridges=5, cracks=0.9))
     leaf = simple_leaf("english-oak_leaf.png", 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
     cluster_atlas("english-oak_leafcluster.png", leaf, 0.5, 103)
 
-    save_rgb("silver-birch_bark.png", bark_birch())
+    save_bark("silver-birch_bark.png", bark_birch(), strength=3.0)
     leaf = simple_leaf("silver-birch_leaf.png", 128, 256, birch_width, (0.36, 0.55, 0.14), 112, stem=0.12, veins=8, vein_angle=0.5)
     cluster_atlas("silver-birch_leafcluster.png", leaf, 0.5, 113)
 
-    save_rgb("european-beech_bark.png", bark_smooth(121, (0.56, 0.57, 0.55), 1.0, lenticels=0.3, rings=0.6))
+    save_bark("european-beech_bark.png", bark_smooth(121, (0.56, 0.57, 0.55), 1.0, lenticels=0.3, rings=0.6), strength=2.5)
     leaf = simple_leaf("european-beech_leaf.png", 128, 256, beech_width, (0.26, 0.46, 0.11), 122, stem=0.07, veins=7, vein_angle=0.35, gloss=0.2)
     cluster_atlas("european-beech_leafcluster.png", leaf, 0.5, 123)
 
-    save_rgb("norway-maple_bark.png", bark_furrowed(131, (0.16, 0.14, 0.12), (0.48, 0.44, 0.38), ridges=11, depth=0.6, warp=0.2, cracks=0.2))
+    save_bark("norway-maple_bark.png", bark_furrowed(131, (0.16, 0.14, 0.12), (0.48, 0.44, 0.38), ridges=11, depth=0.6, warp=0.2, cracks=0.2))
     leaf = maple_leaf("norway-maple_leaf.png", 256, 256, (0.24, 0.48, 0.10), 132)
     cluster_atlas("norway-maple_leafcluster.png", leaf, 1.0, 133)
 
-    save_rgb("weeping-willow_bark.png", bark_furrowed(141, (0.13, 0.11, 0.09), (0.50, 0.45, 0.36), ridges=7, warp=0.8, cracks=0.4))
+    save_bark("weeping-willow_bark.png", bark_furrowed(141, (0.13, 0.11, 0.09), (0.50, 0.45, 0.36), ridges=7, warp=0.8, cracks=0.4))
     leaf = simple_leaf("weeping-willow_leaf.png", 64, 256, willow_width, (0.47, 0.60, 0.22), 142, stem=0.03, veins=12, vein_angle=0.2)
     cluster_atlas("weeping-willow_leafcluster.png", leaf, 0.25, 143)
 
-    save_rgb("lombardy-poplar_bark.png", bark_furrowed(151, (0.10, 0.10, 0.09), (0.42, 0.41, 0.38), ridges=8, warp=0.3, cracks=0.6))
+    save_bark("lombardy-poplar_bark.png", bark_furrowed(151, (0.10, 0.10, 0.09), (0.42, 0.41, 0.38), ridges=8, warp=0.3, cracks=0.6))
     leaf = simple_leaf("lombardy-poplar_leaf.png", 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
     cluster_atlas("lombardy-poplar_leafcluster.png", leaf, 0.5, 153)
 
-    save_rgb("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
+    save_bark("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
     pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
 
-    save_rgb("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
+    save_bark("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
     sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)
 
-    save_rgb("date-palm_bark.png", bark_palm())
+    save_bark("date-palm_bark.png", bark_palm())
     frond("date-palm_leaf.png", 128, 256, (0.30, 0.48, 0.16), 182)
 
-    save_rgb("italian-cypress_bark.png", bark_stringy(191, (0.16, 0.12, 0.10), (0.55, 0.46, 0.38)))
+    save_bark("italian-cypress_bark.png", bark_stringy(191, (0.16, 0.12, 0.10), (0.55, 0.46, 0.38)))
     scale_spray("italian-cypress_leaf.png", 128, 256, (0.13, 0.28, 0.11), 192)
 
-    save_rgb("rhododendron_bark.png", bark_smooth(201, (0.42, 0.34, 0.27), 0.8, lenticels=0.2))
+    save_bark("rhododendron_bark.png", bark_smooth(201, (0.42, 0.34, 0.27), 0.8, lenticels=0.2), strength=2.5)
     rhododendron("rhododendron_leaf.png", 256, 256, (0.12, 0.27, 0.08), (0.85, 0.35, 0.62), 202)
 
-    save_rgb("privet-hedge_bark.png", bark_smooth(211, (0.45, 0.42, 0.36), 0.6, lenticels=0.6))
+    save_bark("privet-hedge_bark.png", bark_smooth(211, (0.45, 0.42, 0.36), 0.6, lenticels=0.6), strength=2.5)
     privet("privet-hedge_leaf.png", 128, 256, (0.16, 0.36, 0.08), 212)
+
+
+# ----------------------------------------------------------------------------- seasons
+# The deciduous species' leaves in spring and autumn: "<leaf>_spring.png" and
+# "<leaf>_autumn.png" beside the summer leaf (the engine's seasonTextureFile picks them). The
+# same drawing as the summer leaf (library(), same arguments), recoloured: spring a lighter,
+# yellower green; autumn the species' own colour (tube_mesh's autumn_color in its preset),
+# blotched with a darker, browner tone. Winter has no leaves.
+
+PRESETS = os.path.dirname(HERE)
+SPRING = np.asarray((0.40, 0.60, 0.15))
+
+
+# The cluster atlas of each deciduous species: library()'s cluster_atlas arguments (the leaf
+# card's aspect and the sprays' seed).
+CLUSTERS = {"english-oak": (0.5, 103), "silver-birch": (0.5, 113), "european-beech": (0.5, 123),
+            "norway-maple": (1.0, 133), "weeping-willow": (0.25, 143),
+            "lombardy-poplar": (0.5, 153)}
+
+
+def deciduous_leaf(species, name):
+    """Draws \p species' leaf (library()'s call) under \p name and returns its RGBA."""
+    if species == "english-oak":
+        return simple_leaf(name, 128, 256, oak_width, (0.20, 0.33, 0.10), 102, stem=0.05, veins=5, vein_angle=0.4)
+    elif species == "silver-birch":
+        return simple_leaf(name, 128, 256, birch_width, (0.36, 0.55, 0.14), 112, stem=0.12, veins=8, vein_angle=0.5)
+    elif species == "european-beech":
+        return simple_leaf(name, 128, 256, beech_width, (0.26, 0.46, 0.11), 122, stem=0.07, veins=7, vein_angle=0.35, gloss=0.2)
+    elif species == "norway-maple":
+        return maple_leaf(name, 256, 256, (0.24, 0.48, 0.10), 132)
+    elif species == "weeping-willow":
+        return simple_leaf(name, 64, 256, willow_width, (0.47, 0.60, 0.22), 142, stem=0.03, veins=12, vein_angle=0.2)
+    elif species == "lombardy-poplar":
+        return simple_leaf(name, 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
+    else:
+        raise ValueError("no deciduous leaf drawing for " + species)
+
+
+def season_settings(species):
+    """(deciduous, autumn colour) from the tube_mesh node of presets/<species>.json."""
+    import json
+    with open(os.path.join(PRESETS, species + ".json")) as f:
+        graph = json.load(f)["graph"]
+    for node in graph["nodes"]:
+        if node["type"] == "tube_mesh":
+            p = node.get("params", {})
+            return bool(p.get("deciduous", False)), p.get("autumn_color")
+    return False, None
+
+
+def recolor_to(target, seed, blotch=None):
+    """A SEASON_RECOLOR that moves a leaf from its summer green to \p target, keeping its
+    shading (the ratio to the leaf's mean colour), with \p blotch patches when given."""
+    target = np.asarray(target, np.float64)
+
+    def recolor(rgb, mask):
+        m = mask.astype(bool)
+        mean = rgb[m].mean(axis=0) if m.any() else np.full(3, 0.5)
+        shade = (rgb / np.maximum(mean, 1e-3)).mean(axis=-1, keepdims=True)
+        col = np.broadcast_to(target, rgb.shape)
+        if blotch is not None:
+            n = noise(mask.shape, 30, 30, seed)
+            k = np.clip((n - 0.45) * 4, 0, 1)[..., None]
+            col = col * (1 - k) + np.asarray(blotch) * k
+        return col * shade
+
+    return recolor
+
+
+def seasons():
+    global SEASON_RECOLOR
+    for species in ("english-oak", "european-beech", "norway-maple", "silver-birch",
+                    "lombardy-poplar", "weeping-willow"):
+        deciduous, autumn = season_settings(species)
+        if not deciduous or autumn is None:
+            continue
+        leaf = species + "_leaf"
+        autumn = np.asarray(autumn, np.float64)
+        try:
+            # Autumn leaves are not one colour: patches turn darker and browner first.
+            for season, recolor in (("spring", recolor_to(SPRING, 0)),
+                                    ("autumn", recolor_to(autumn, 7, autumn * 0.55 +
+                                                          np.asarray((0.08, 0.04, 0.01))))):
+                SEASON_RECOLOR = recolor
+                rgba = deciduous_leaf(species, leaf + "_" + season + ".png")
+                # The season's cluster atlas: the same sprays (same seed) of the season's leaf;
+                # already recoloured, so kept as it is, and like the leaf it shares the summer
+                # atlas's normal and roughness maps.
+                if species in CLUSTERS:
+                    SEASON_RECOLOR = lambda rgb, mask: rgb
+                    aspect, seed = CLUSTERS[species]
+                    cluster_atlas(species + "_leafcluster_" + season + ".png", rgba, aspect, seed)
+        finally:
+            SEASON_RECOLOR = None
 
 
 def main(argv):
@@ -817,6 +1034,7 @@ def main(argv):
         sys.exit("usage: make_textures.py [--library] [--defaults]")
     if "--library" in which:
         library()
+        seasons()
     if "--defaults" in which:
         default_bark(os.path.join(DEFAULTS, "bark.png"))
         default_leaf(os.path.join(DEFAULTS, "leaf.png"))

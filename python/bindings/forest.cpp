@@ -506,11 +506,13 @@ void bindForest(py::module_& m) {
         .def(
             "add_tree",
             [](Project& p, const std::string& species, const py::object& position, double rotation,
-               double scale, std::optional<std::uint64_t> seed, double growth) {
+               double scale, std::optional<std::uint64_t> seed, double growth,
+               const py::object& season) {
                 if (!p.project.findSpecies(species))
                     throw InvalidInput("the project has no species '" + species + "'");
                 doc::ProjectInstance t = newTree(p.project, p.project.instances.size(), species,
                                                  position, rotation, scale, seed, growth);
+                t.season = seasonFrom(season);
                 doc::assignIds(p.project); // every earlier tree has its id
                 if (p.project.nextTreeId > doc::kMaxTreeId)
                     throw LimitExceeded("a project's tree ids are limited to " +
@@ -521,7 +523,26 @@ void bindForest(py::module_& m) {
             },
             py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
             py::arg("scale") = 1.0, py::arg("seed") = py::none(), py::arg("growth") = 1.0,
-            "a hand-placed tree (rotation in degrees about +Y); returns its id")
+            py::arg("season") = py::none(),
+            "a hand-placed tree (rotation in degrees about +Y; season: its own, None: the "
+            "project's); returns its id")
+        .def_property(
+            "season", [](const Project& p) { return seasonTo(p.project.season); },
+            [](Project& p, const py::object& season) { p.project.season = seasonFrom(season); },
+            "the season of every tree without its own: 'spring', 'summer', 'autumn', 'winter', "
+            "or None (each species' own, summer)")
+        .def(
+            "set_tree_season",
+            [](Project& p, std::uint64_t id, const py::object& season) {
+                for (doc::ProjectInstance& t : p.project.instances)
+                    if (t.id == id) {
+                        t.season = seasonFrom(season);
+                        return;
+                    }
+                throw InvalidInput("there is no tree " + std::to_string(id));
+            },
+            py::arg("id"), py::arg("season"),
+            "a hand-placed tree's own season, by its id (None: the project's)")
         .def(
             "add_obstacle",
             [](Project& p, const py::object& file, const py::object& vertices,

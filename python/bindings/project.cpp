@@ -4,6 +4,7 @@
 
 #include "document/scenebuild.h"
 #include "engine/environment/obstaclescene.h"
+#include "engine/mesh/season.h"
 #include "engine/placement/placement.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -42,7 +43,16 @@ Project projectFrom(const doc::Project& project) {
 }
 
 Tree treeOf(std::uint64_t id, const doc::ProjectInstance& t) {
-    return {id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed};
+    return {id, t.species, t.position, t.rotation, t.scale, t.growth, t.seed, t.season};
+}
+
+std::string seasonFrom(const py::object& season) {
+    if (season.is_none()) return {};
+    return std::string(mesh::seasonName(mesh::parseSeason(season.cast<std::string>())));
+}
+
+py::object seasonTo(const std::string& season) {
+    return season.empty() ? py::object(py::none()) : py::object(py::str(season));
 }
 
 doc::ProjectInstance newTree(const doc::Project& project, std::size_t treesBefore,
@@ -130,6 +140,10 @@ void bindTree(py::module_& m) {
         .def_readonly("scale", &Tree::scale)
         .def_readonly("growth", &Tree::growth)
         .def_readonly("seed", &Tree::seed)
+        .def_property_readonly(
+            "season", [](const Tree& t) { return seasonTo(t.season); },
+            "the tree's own season ('spring', 'summer', 'autumn', 'winter'), or None: the "
+            "project's")
         .def("__repr__", [](const Tree& t) {
             return "<Tree " + std::to_string(t.id) + " " + t.species + " at (" +
                    std::to_string(t.position.x) + ", " + std::to_string(t.position.y) + ", " +

@@ -43,7 +43,14 @@ struct Tree {
     glm::vec3 position{0.0f};
     double rotation = 0, scale = 1, growth = 1; ///< rotation in degrees about +Y
     std::uint64_t seed = 0;
+    std::string season; ///< the tree's own season; empty: the project's
 };
+
+/// A season name from Python: None → "" (unset), else the canonical name (InvalidInput →
+/// ValueError for another).
+std::string seasonFrom(const py::object& season);
+/// "" → None, else the name.
+py::object seasonTo(const std::string& season);
 
 Tree treeOf(std::uint64_t id, const doc::ProjectInstance& t);
 

@@ -10,6 +10,7 @@
 #include <QString>
 
 #include "convert.h"
+#include "project.h"
 #include "types.h"
 
 #include "document/speciesfile.h"
@@ -322,14 +323,34 @@ void bindSpecies(py::module_& m) {
         .def("copy", [](const Species& s) { return makeSpecies(s.graph()); })
         .def(
             "grow",
-            [](Species& s, std::optional<std::uint64_t> seed, const py::object& progress) {
+            [](Species& s, std::optional<std::uint64_t> seed, const py::object& progress,
+               const py::object& season) {
                 PyProgress p(progress);
                 GrownTree t;
                 t.species = s.graph().name;
                 t.seed = seed;
                 t.traits = s.graph().traits;
+                const std::string seasonName = seasonFrom(season);
                 withoutGil(p, [&] {
                     std::lock_guard lock(*s.lock);
+                    // A season is the meshing node's parameter for this growth only (as
+                    // `sylva-cli tree --season`); the species keeps its own afterwards.
+                    std::optional<graph::SpeciesGraph> own;
+                    if (!seasonName.empty()) {
+                        const graph::NodeDesc* mesh = s.graph().findNode(s.graph().output);
+                        if (!mesh || mesh->type != "tube_mesh")
+                            throw InvalidInput("season needs a species whose output node is a "
+                                               "tube_mesh");
+                        own = s.evaluator->graph();
+                        s.evaluator->setParam(mesh->id, "season", sylva::Value(seasonName));
+                    }
+                    struct Restore {
+                        Species& species;
+                        std::optional<graph::SpeciesGraph>& graph;
+                        ~Restore() {
+                            if (graph) species.evaluator->setGraph(std::move(*graph));
+                        }
+                    } restore{s, own};
                     const graph::NodeOutput& out =
                         seed ? s.evaluator->evaluate(*seed, p) : s.evaluator->evaluate(p);
                     if (!out.mesh)
@@ -344,8 +365,10 @@ void bindSpecies(py::module_& m) {
                 return t;
             },
             py::arg("seed") = py::none(), py::arg("progress") = py::none(),
-            "grows one tree (as `sylva-cli tree [--seed S]`), the GIL released; without a seed "
-            "the generators use their own (a grammar's `seed:`)")
+            py::arg("season") = py::none(),
+            "grows one tree (as `sylva-cli tree [--seed S] [--season NAME]`), the GIL released; "
+            "without a seed the generators use their own (a grammar's `seed:`); season: "
+            "'spring', 'summer', 'autumn' or 'winter' (None: the species' own)")
         .def(
             "write_lods",
             [](Species& s, const py::object& folderArg, std::optional<std::uint64_t> seed,
@@ -404,13 +427,14 @@ void bindSpecies(py::module_& m) {
           "(default: the working directory)");
     m.def(
         "grow",
-        [](const py::object& species, std::optional<std::uint64_t> seed,
-           const py::object& progress) {
+        [](const py::object& species, std::optional<std::uint64_t> seed, const py::object& progress,
+           const py::object& season) {
             Species s = loadSpeciesFrom(species, py::none());
-            return s.evaluator ? py::cast(s).attr("grow")(seed, progress) : py::object(py::none());
+            return s.evaluator ? py::cast(s).attr("grow")(seed, progress, season)
+                               : py::object(py::none());
         },
         py::arg("species"), py::arg("seed") = py::none(), py::arg("progress") = py::none(),
-        "load_species(species).grow(seed)");
+        py::arg("season") = py::none(), "load_species(species).grow(seed, season=season)");
     m.def(
         "node_types",
         [] {

@@ -201,13 +201,76 @@ species_textures_exported)
     [[ $(head -c 4 textures/english-oak_$kind.png | tail -c 3) == PNG ]] || fail "not a PNG"
   done
   grep -q "^map_d textures/english-oak_leafcluster.png" oak.mtl || fail "leaf cut-out (map_d) missing"
+  # Normal and roughness maps: named by the MTL (norm for Assimp, map_Bump for Blender) and
+  # copied beside it (the cluster atlas has its own, drawn like the leaf's).
+  for kind in bark leafcluster; do
+    for key in norm map_Bump; do
+      grep -q "^$key textures/english-oak_${kind}_normal.png" oak.mtl || fail "MTL lacks $key of $kind"
+    done
+    grep -q "^map_Pr textures/english-oak_${kind}_roughness.png" oak.mtl || fail "MTL lacks map_Pr of $kind"
+    [[ -s textures/english-oak_${kind}_normal.png ]] || fail "${kind} normal map not copied"
+  done
   if command -v assimp >/dev/null; then
-    for f in oak.glb oak.fbx; do
-      run_cli 0 tree "$oak" -o "$f" --seed 2
-      assimp info "$f" > info.txt 2>&1 || fail "assimp cannot read $f: $(cat info.txt)"
-      grep -Eq 'Textures \(embed\.\): +2$' info.txt || fail "$f: $(grep -i textures info.txt)"
+    assimp info oak.obj > info.txt 2>&1 || fail "assimp cannot read oak.obj"
+    [[ $(grep -c '| Normals\]' info.txt) -ge 2 ]] || fail "assimp reads no normal maps from the OBJ"
+    # GLB: colour, normal and roughness maps of bark and leaf; FBX: colour and normal maps
+    # (FBX's classic material has no roughness slot Assimp writes).
+    for f in oak.glb:6 oak.fbx:4; do
+      run_cli 0 tree "$oak" -o "${f%:*}" --seed 2
+      assimp info "${f%:*}" > info.txt 2>&1 || fail "assimp cannot read $f: $(cat info.txt)"
+      grep -Eq "Textures \(embed\.\): +${f#*:}$" info.txt || fail "$f: $(grep -i textures info.txt)"
+      [[ $(grep -c '| Normals\]' info.txt) -ge 2 ]] || fail "assimp reads no normal maps from $f"
     done
   fi ;;
+tree_season)
+  # Seasons: winter leaves a broadleaf bare and a conifer as it was; autumn uses the species'
+  # autumn cluster atlas; a name that is no season is a usage error.
+  oak="$DATA/../../presets/english-oak.json" pine="$DATA/../../presets/scots-pine.json"
+  run_cli 0 tree "$oak" -o summer.obj --seed 2
+  run_cli 0 tree "$oak" -o winter.obj --seed 2 --season winter
+  grep -q "^usemtl english-oak_leaf" summer.obj || fail "summer oak has no leaves"
+  ! grep -q "^usemtl english-oak_leaf" winter.obj || fail "winter oak kept its leaves"
+  run_cli 0 tree "$oak" -o autumn.obj --seed 2 --season autumn
+  grep -q "^usemtl english-oak_leafcluster_autumn" autumn.obj || fail "autumn oak lacks autumn leaves"
+  [[ -s textures/english-oak_leafcluster_autumn.png ]] || fail "autumn leaf texture not copied"
+  run_cli 0 tree "$pine" -o pine-summer.obj --seed 2
+  run_cli 0 tree "$pine" -o pine-winter.obj --seed 2 --season winter
+  cmp -s <(grep -v '^mtllib' pine-summer.obj) <(grep -v '^mtllib' pine-winter.obj) ||
+    fail "a conifer changed in winter"
+  run_cli 2 tree "$oak" -o x.obj --season monsoon
+  grep -q "spring, summer, autumn or winter" err.txt || fail "$(cat err.txt)" ;;
+forest_season)
+  # A project's season, a tree's own season over it, and --season over both.
+  presets="$(cd "$DATA/../../presets" && pwd)"
+  write_project() { # $1: the project's season key ("" for none), $2: the first oak's season key
+    cat > seasons.sylva <<EOF
+{ "format": "sylva-project", "format_version": 1, "seed": 3, $1
+  "species": [ { "name": "oak", "file": "$presets/english-oak.json" },
+               { "name": "pine", "file": "$presets/scots-pine.json" } ],
+  "instances": [
+    { "species": "oak", "position": [0, 0, 0], "seed": 1 $2 },
+    { "species": "oak", "position": [30, 0, 0], "seed": 2 },
+    { "species": "pine", "position": [-30, 0, 0], "seed": 3 } ] }
+EOF
+  }
+  write_project "" ""
+  run_cli 0 forest seasons.sylva -o summer.obj --no-lod
+  [[ $(grep -c '^usemtl english-oak_leafcluster$' summer.obj) == 2 ]] || fail "summer oaks lack leaves"
+  write_project '"season": "autumn",' ', "season": "winter"'
+  run_cli 0 forest seasons.sylva -o autumn.obj --no-lod
+  [[ $(grep -c '^usemtl english-oak_leafcluster_autumn$' autumn.obj) == 1 ]] || fail "the autumn oak"
+  ! grep -q '^usemtl english-oak_leafcluster$' autumn.obj || fail "a summer oak in an autumn project"
+  # The pine is the same in every season.
+  pine() { awk '/^o /{on=($2 ~ /^pine_/)} on && /^(v|f) /' "$1"; }
+  cmp -s <(pine summer.obj) <(pine autumn.obj) || fail "the pine changed in autumn"
+  run_cli 0 forest seasons.sylva -o winter.obj --no-lod --season winter
+  ! grep -q '^usemtl english-oak_leaf' winter.obj || fail "--season winter left leaves on an oak"
+  grep -q '^usemtl scots-pine_leaf' winter.obj || fail "the pine lost its needles"
+  run_cli 2 forest seasons.sylva -o x.obj --season monsoon
+  grep -q "spring, summer, autumn or winter" err.txt || fail "$(cat err.txt)"
+  write_project '"season": "monsoon",' ""
+  run_cli 1 forest seasons.sylva -o x.obj
+  grep -q "season" err.txt || fail "a bad project season: $(cat err.txt)" ;;
 forest_obj_and_stats)
   run_cli 0 forest "$DATA/projects/small.sylva" -o forest.obj --stats
   n=$(grep -c '^o ' forest.obj)

@@ -177,3 +177,48 @@ def test_grow_reports_progress_and_stops_when_the_callback_raises(presets):
                           .grow(seed=2).mesh.positions)
     with pytest.raises(ValueError, match="callable"):
         s.grow(seed=2, progress=42)
+
+
+def test_seasons_change_the_leaves_and_leave_the_species_as_it_was(presets):
+    oak = sylva.load_species(presets / "english-oak.json")
+    summer = oak.grow(seed=2)
+    assert "leaf" in summer.mesh.materials
+    winter = oak.grow(seed=2, season="winter")
+    assert len(winter.mesh.indices_of("leaf")) == 0  # a bare broadleaf
+    assert len(winter.mesh.indices_of("bark")) == len(summer.mesh.indices_of("bark"))
+    autumn = oak.grow(seed=2, season="autumn")
+    assert 0 < len(autumn.mesh.indices_of("leaf")) < len(summer.mesh.indices_of("leaf"))
+    # The season was for that growth only: the species grows in summer again.
+    assert oak.get_param("mesh.season") is None
+    again = oak.grow(seed=2)
+    assert len(again.mesh.indices_of("leaf")) == len(summer.mesh.indices_of("leaf"))
+    # A conifer is the same in every season.
+    pine = sylva.load_species(presets / "scots-pine.json")
+    assert np.array_equal(pine.grow(seed=2).mesh.positions,
+                          pine.grow(seed=2, season="winter").mesh.positions)
+    with pytest.raises(ValueError, match="spring, summer, autumn or winter"):
+        oak.grow(seed=2, season="monsoon")
+    assert sylva.grow(presets / "english-oak.json", seed=2, season="winter").mesh.indices_of(
+        "leaf").shape[0] == 0
+
+
+def test_project_and_tree_seasons(presets, tmp_path):
+    p = sylva.Project(seed=1)
+    p.add_species("oak", presets / "english-oak.json")
+    assert p.season is None
+    p.add_tree("oak", (0, 0, 0), seed=1)
+    spring = p.add_tree("oak", (30, 0, 0), seed=2, season="spring")
+    p.season = "winter"
+    assert p.season == "winter" and p.trees()[1].season == "spring" and p.trees()[0].season is None
+    forest = p.build_forest(lod=False)
+    assert len(forest[0].mesh.indices_of("leaf")) == 0  # the project's winter
+    assert len(forest[1].mesh.indices_of("leaf")) > 0  # its own spring
+    p.set_tree_season(spring, None)  # by the tree's id
+    assert p.trees()[1].season is None and p.tree(spring).season is None
+    with pytest.raises(ValueError):
+        p.set_tree_season(99, "winter")
+    with pytest.raises(ValueError):
+        p.season = "monsoon"
+    p.season = "autumn"
+    p.save(tmp_path / "seasons.sylva")
+    assert sylva.load_project(tmp_path / "seasons.sylva").season == "autumn"

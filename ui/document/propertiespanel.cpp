@@ -67,6 +67,23 @@ int PropertiesPanel::addSpins(const QString& label, int count, double lo, double
     return first;
 }
 
+void PropertiesPanel::addSeasonCombo(const QString& unset, const QString& tooltip) {
+    mSeason = new QComboBox(mBody);
+    mSeason->setObjectName(QStringLiteral("seasonCombo"));
+    mSeason->setToolTip(tooltip);
+    mSeason->addItem(unset, QString());
+    mSeason->addItem(tr("Spring"), QStringLiteral("spring"));
+    mSeason->addItem(tr("Summer"), QStringLiteral("summer"));
+    mSeason->addItem(tr("Autumn"), QStringLiteral("autumn"));
+    mSeason->addItem(tr("Winter"), QStringLiteral("winter"));
+    mForm->addRow(tr("Season:"), mSeason);
+}
+
+void PropertiesPanel::showSeason(const std::string& season) {
+    const int i = mSeason->findData(QString::fromStdString(season));
+    mSeason->setCurrentIndex(i < 0 ? 0 : i);
+}
+
 double PropertiesPanel::spin(int i) const {
     return mSpins[std::size_t(i)]->value();
 }
@@ -93,6 +110,7 @@ void PropertiesPanel::rebuild() {
     mForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     mSpins.clear();
     mSpecies = nullptr;
+    mSeason = nullptr;
     mSeed = nullptr;
     mInfo = nullptr;
     mRefresh = nullptr;
@@ -121,9 +139,17 @@ void PropertiesPanel::rebuild() {
         seedEditor(tr("The project seed: domain trees take their seeds from it and their ids"));
         connect(mSeed, &QLineEdit::editingFinished, this,
                 [this] { apply([this] { mDocument.setSeed(mSeed->text().toULongLong()); }); });
+        addSeasonCombo(tr("Species' own (summer)"),
+                       tr("The time of year of every tree without a season of its own: "
+                          "deciduous species flush in spring, colour in autumn and are bare in "
+                          "winter; conifers and evergreens stay as they are"));
+        connect(mSeason, &QComboBox::currentIndexChanged, this, [this] {
+            apply([this] { mDocument.setSeason(mSeason->currentData().toString().toStdString()); });
+        });
         mRefresh = [this] {
             mInfo->setText(mDocument.path().isEmpty() ? tr("not saved yet") : mDocument.path());
             mSeed->setText(QString::number(mDocument.project().seed));
+            showSeason(mDocument.project().season);
         };
     } else if (mItem->kind == Kind::Tree) {
         const doc::TreeId id = mItem->id;
@@ -142,6 +168,8 @@ void PropertiesPanel::rebuild() {
         const int growth = addSpins(tr("Growth:"), 1, 0.01, 1, 0.05, 2, {},
                                     tr("Growth stage, 0.01 (sapling) to 1 (mature)"));
         seedEditor(tr("The tree's own seed: another seed grows another tree of the species"));
+        addSeasonCombo(tr("Project's season"),
+                       tr("This tree's own time of year, or the project's season"));
         auto edit = [this, id, pos, rot, scale, growth] {
             doc::ProjectInstance t = mDocument.tree(id);
             t.species = mSpecies->currentText().toStdString();
@@ -150,10 +178,12 @@ void PropertiesPanel::rebuild() {
             t.scale = spin(scale);
             t.growth = spin(growth);
             t.seed = mSeed->text().toULongLong();
+            t.season = mSeason->currentData().toString().toStdString();
             mDocument.setTree(id, t);
         };
         connectAll(0, int(mSpins.size()), edit);
         connect(mSpecies, &QComboBox::currentIndexChanged, this, [this, edit] { apply(edit); });
+        connect(mSeason, &QComboBox::currentIndexChanged, this, [this, edit] { apply(edit); });
         connect(mSeed, &QLineEdit::editingFinished, this, [this, edit] { apply(edit); });
         mRefresh = [this, id, pos, rot, scale, growth] {
             if (mDocument.treeIndex(id) < 0) return;
@@ -165,6 +195,7 @@ void PropertiesPanel::rebuild() {
             mSpins[std::size_t(scale)]->setValue(t.scale);
             mSpins[std::size_t(growth)]->setValue(t.growth);
             mSeed->setText(QString::number(t.seed));
+            showSeason(t.season);
         };
     } else if (mItem->kind == Kind::Obstacle) {
         const int i = int(mItem->id);
@@ -302,6 +333,7 @@ void PropertiesPanel::refresh() {
     for (QDoubleSpinBox* box : mSpins)
         blockers.push_back(std::make_unique<QSignalBlocker>(box));
     if (mSpecies) blockers.push_back(std::make_unique<QSignalBlocker>(mSpecies));
+    if (mSeason) blockers.push_back(std::make_unique<QSignalBlocker>(mSeason));
     if (mSeed) blockers.push_back(std::make_unique<QSignalBlocker>(mSeed));
     mRefresh();
     mUpdating = false;

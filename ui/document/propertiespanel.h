@@ -42,6 +42,10 @@ private:
                  const QString& suffix, const QString& tooltip);
     double spin(int i) const;
     glm::vec3 vec3At(int first) const;
+    /// A Season row: \p unset names what an empty season means (the species' own, or the
+    /// project's); the item data are the names the document takes ("" for unset).
+    void addSeasonCombo(const QString& unset, const QString& tooltip);
+    void showSeason(const std::string& season);
 
     doc::Document& mDocument;
     std::optional<doc::ItemRef> mItem;
@@ -50,6 +54,7 @@ private:
     QFormLayout* mForm = nullptr;
     std::vector<QDoubleSpinBox*> mSpins;
     QComboBox* mSpecies = nullptr;
+    QComboBox* mSeason = nullptr;
     QLineEdit* mSeed = nullptr;
     QLabel* mInfo = nullptr;
     std::function<void()> mRefresh; ///< puts the document's values into the editors

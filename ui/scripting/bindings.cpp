@@ -165,20 +165,31 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "add_tree",
             [](DocumentApi&, const std::string& species, py::object position, double rotation,
-               double scale, std::optional<std::uint64_t> seed, double growth) {
-                return document().addTree(python::newTree(document().project(),
-                                                          document().treeIds().size(), species,
-                                                          position, rotation, scale, seed, growth));
+               double scale, std::optional<std::uint64_t> seed, double growth,
+               const py::object& season) {
+                doc::ProjectInstance t =
+                    python::newTree(document().project(), document().treeIds().size(), species,
+                                    position, rotation, scale, seed, growth);
+                t.season = python::seasonFrom(season);
+                return document().addTree(t);
             },
             py::arg("species"), py::arg("position"), py::arg("rotation") = 0.0,
             py::arg("scale") = 1.0, py::arg("seed") = py::none(), py::arg("growth") = 1.0,
+            py::arg("season") = py::none(),
             "A hand-placed tree (as sylva.Project.add_tree); returns its id.")
         .def(
             "set_tree",
             [](DocumentApi&, doc::TreeId id, py::object position, std::optional<double> rotation,
                std::optional<double> scale, std::optional<std::uint64_t> seed,
-               std::optional<std::string> species, std::optional<double> growth) {
+               std::optional<std::string> species, std::optional<double> growth,
+               const py::object& season) {
                 doc::ProjectInstance t = document().tree(id);
+                // "" (or "project") clears the tree's own season; None leaves it.
+                if (!season.is_none()) {
+                    const std::string name = season.cast<std::string>();
+                    t.season = name.empty() || name == "project" ? std::string()
+                                                                 : python::seasonFrom(season);
+                }
                 if (!position.is_none()) t.position = toVec3(position, "position");
                 if (rotation) t.rotation = *rotation;
                 if (scale) t.scale = *scale;
@@ -189,7 +200,8 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             },
             py::arg("id"), py::arg("position") = py::none(), py::arg("rotation") = py::none(),
             py::arg("scale") = py::none(), py::arg("seed") = py::none(),
-            py::arg("species") = py::none(), py::arg("growth") = py::none())
+            py::arg("species") = py::none(), py::arg("growth") = py::none(),
+            py::arg("season") = py::none())
         .def(
             "remove_tree", [](DocumentApi&, doc::TreeId id) { document().removeTrees({id}); },
             py::arg("id"))
@@ -367,6 +379,13 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def_property(
             "seed", [](DocumentApi&) { return document().project().seed; },
             [](DocumentApi&, std::uint64_t seed) { document().setSeed(seed); })
+        .def_property(
+            "season", [](DocumentApi&) { return python::seasonTo(document().project().season); },
+            [](DocumentApi&, const py::object& season) {
+                document().setSeason(python::seasonFrom(season));
+            },
+            "The project's season ('spring', 'summer', 'autumn', 'winter'; None: each species' "
+            "own); setting it is one undo step.")
         .def(
             "set_camera",
             [](DocumentApi&, py::object position, py::object target) {

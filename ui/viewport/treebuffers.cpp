@@ -6,6 +6,7 @@
 
 #include <QImage>
 
+#include "engine/export/materials.h"
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "ui/viewport/textureimage.h"
@@ -77,6 +78,8 @@ void TreeBuffers::release() {
     for (const auto& [path, id] : mTextures)
         if (id) mGl->glDeleteTextures(1, &id);
     mTextures.clear();
+    if (mFlatNormal) mGl->glDeleteTextures(1, &mFlatNormal);
+    mFlatNormal = 0;
     mGl = nullptr;
 }
 
@@ -130,10 +133,35 @@ void TreeBuffers::bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& rang
         if (s.firstIndex >= total) continue;
         if (r >= ranges.size()) break;
         ranges[r].texture = textureFor(s.material, s.texture);
+        if (ranges[r].texture) ranges[r].normalMap = normalMapFor(s.material, s.texture);
         ranges[r].alphaTest = s.material == "leaf" && ranges[r].texture != 0;
         ++r;
     }
-    if (m.submeshes.empty() && !ranges.empty()) ranges[0].texture = textureFor("bark", {});
+    if (m.submeshes.empty() && !ranges.empty()) {
+        ranges[0].texture = textureFor("bark", {});
+        if (ranges[0].texture) ranges[0].normalMap = normalMapFor("bark", {});
+    }
+}
+
+GLuint TreeBuffers::normalMapFor(const std::string& material, const std::string& file) {
+    std::string path = file;
+    if (path.empty() && (material == "bark" || material == "leaf")) {
+        const std::filesystem::path dir = exporter::resourcesDir();
+        if (!dir.empty()) path = (dir / "textures" / (material + ".png")).string();
+    }
+    const std::string normal = exporter::companionTexture(path, "normal");
+    GLuint id = normal.empty() ? 0 : textureFor(material, normal);
+    if (id) return id;
+    if (!mFlatNormal) {
+        const unsigned char flat[4] = {128, 128, 255, 255};
+        mGl->glGenTextures(1, &mFlatNormal);
+        mGl->glBindTexture(GL_TEXTURE_2D, mFlatNormal);
+        mGl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, flat);
+        mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        mGl->glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    return mFlatNormal;
 }
 
 GLuint TreeBuffers::textureFor(const std::string& material, const std::string& file) {

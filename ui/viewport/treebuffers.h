@@ -27,7 +27,10 @@ struct DrawRange {
     glm::vec3 color;
     std::uint32_t firstIndex = 0;
     std::uint32_t indexCount = 0;
-    GLuint texture = 0;     ///< 0: the plain colour
+    GLuint texture = 0; ///< 0: the plain colour
+    /// The texture's tangent-space normal map ("<texture>_normal.png"), or a flat one: never 0
+    /// where texture is set.
+    GLuint normalMap = 0;
     bool alphaTest = false; ///< a leaf card cut out by the texture's alpha
     /// Drawn from both sides: everything but Sylva's closed bark tubes (leaf cards, camera
     /// ribbons, obstacles, foreign meshes); the tubes' back faces are culled.
@@ -88,6 +91,9 @@ private:
     /// The GL texture of \p file (Sylva's shipped one for \p material when empty), loaded once;
     /// 0 when there is none or it cannot be read.
     GLuint textureFor(const std::string& material, const std::string& file);
+    /// The GL texture of the normal map drawn for \p file (exporter::companionTexture), or a
+    /// 1×1 flat normal when it has none, so the textured shader needs no branch.
+    GLuint normalMapFor(const std::string& material, const std::string& file);
     void releaseTrees();
 
     QOpenGLFunctions_3_3_Core* mGl = nullptr;
@@ -97,6 +103,7 @@ private:
     bool mSceneVertexColors = false;
     std::map<const mesh::Mesh*, GpuMesh> mGpuTrees;
     std::map<std::string, GLuint> mTextures; ///< by file path; 0 for files that did not load
+    GLuint mFlatNormal = 0;
     QStringList mTextureProblems;
 };
 

@@ -601,6 +601,7 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
         program.setUniformValue("uVertexColor", u.vertexColor);
         program.setUniformValue("uHighlight", u.highlight);
         program.setUniformValue("uTexture", 0);
+        program.setUniformValue("uNormalMap", 1);
         stamp = mMeshUniformsStamp;
     }
     return program;
@@ -611,6 +612,11 @@ void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
         QOpenGLShaderProgram& program =
             useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0));
         setUniform(program, "uAlbedo", r.color);
+        if (r.texture != 0) {
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_2D, r.normalMap);
+            glActiveTexture(GL_TEXTURE0);
+        }
         glBindTexture(GL_TEXTURE_2D, r.texture);
         if (r.twoSided || !mCullBackFaces)
             glDisable(GL_CULL_FACE);

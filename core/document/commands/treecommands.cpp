@@ -43,6 +43,7 @@ QUndoCommand* changeTree(Document& doc, TreeId id, const ProjectInstance& newTre
     note(old.seed != newTree.seed, QT_TRANSLATE_NOOP("Commands", "Change tree seed"));
     note(old.species != newTree.species, QT_TRANSLATE_NOOP("Commands", "Change tree species"));
     note(old.growth != newTree.growth, QT_TRANSLATE_NOOP("Commands", "Change tree growth"));
+    note(old.season != newTree.season, QT_TRANSLATE_NOOP("Commands", "Change tree season"));
     if (changes > 1) label = QCoreApplication::translate("Commands", "Edit tree");
     return new ChangeValue<TreeId, ProjectInstance>(
         doc, kMergeTree, id, old, newTree, commit,

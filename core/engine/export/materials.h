@@ -20,7 +20,29 @@ struct Material {
     /// Where the texture is read from (absolute, or relative to the working folder) to copy or
     /// embed it; empty: Sylva's shipped textures folder, by diffuseTexture's file name.
     std::string sourceFile{};
+    /// Tangent-space normal map (OpenGL convention: +X along u, +Y along v, "green up"),
+    /// relative to the exported file like diffuseTexture; "" for none. Read from
+    /// normalSourceFile, else the shipped textures folder by file name.
+    std::string normalTexture{};
+    std::string normalSourceFile{};
+    /// Grey roughness map (0 smooth .. 1 rough; glTF reads its green channel), as normalTexture.
+    std::string roughnessTexture{};
+    std::string roughnessSourceFile{};
 };
+
+/// The textures a material can carry.
+enum class TextureSlot { Diffuse, Normal, Roughness };
+inline constexpr TextureSlot kTextureSlots[] = {TextureSlot::Diffuse, TextureSlot::Normal,
+                                                TextureSlot::Roughness};
+/// The texture of \p slot as written into a file (relative path, "" for none).
+const std::string& texturePath(const Material& material, TextureSlot slot);
+std::string& texturePath(Material& material, TextureSlot slot);
+
+/// The normal or roughness map drawn for \p texture (\p kind "normal" or "roughness"):
+/// "<stem>_<kind>.png" beside it when that file exists. A season's leaf
+/// ("oak_leaf_autumn.png") shares its summer leaf's maps ("oak_leaf_normal.png"). Empty when
+/// there is none.
+std::string companionTexture(const std::string& texture, const std::string& kind);
 
 /// Sylva's bark and leaf materials, their textures under \p textureFolder (relative to the
 /// exported file; the PNGs ship in resources/textures/).
@@ -36,20 +58,23 @@ std::string materialName(const mesh::Submesh& submesh);
 void addMaterialsOf(const mesh::Mesh& mesh, std::vector<Material>& materials,
                     const std::string& textureFolder = "textures");
 
-/// The file a material's texture is read from: sourceFile, else \p shippedDir / the file name
-/// of diffuseTexture; empty when the material has no texture.
+/// The file a material's texture of \p slot is read from: its source file, else \p shippedDir /
+/// the file name of its path; empty when the material has no such texture.
 std::filesystem::path textureSourceOf(const Material& material,
-                                      const std::filesystem::path& shippedDir);
+                                      const std::filesystem::path& shippedDir,
+                                      TextureSlot slot = TextureSlot::Diffuse);
 
-/// MTL text: one `newmtl` per material with Kd, map_Kd and (for alphaMask) map_d.
+/// MTL text: one `newmtl` per material with Kd, map_Kd and (for alphaMask) map_d; a normal map
+/// as `norm` (the PBR extension: Assimp's normal map) and `map_Bump` (Blender's importer),
+/// roughness as `map_Pr`.
 std::string formatMtl(const std::vector<Material>& materials);
 
 /// Writes formatMtl() atomically. \throw IoError
 void writeMtlFile(const std::filesystem::path& path, const std::vector<Material>& materials);
 
-/// Copies every material texture (textureSourceOf, \p sourceDir being the shipped textures) into
-/// \p exportDir / texture path, creating folders. Missing sources are skipped; returns how many
-/// files were copied. \throw IoError when a copy fails.
+/// Copies every material texture, normal and roughness maps included (textureSourceOf, \p sourceDir
+/// being the shipped textures) into \p exportDir / texture path, creating folders. Missing sources
+/// are skipped; returns how many files were copied. \throw IoError when a copy fails.
 std::size_t copyTextures(const std::vector<Material>& materials,
                          const std::filesystem::path& sourceDir,
                          const std::filesystem::path& exportDir);

@@ -42,6 +42,14 @@ aiMaterial* makeMaterial(const Material& m) {
         mat->AddProperty(&tex, AI_MATKEY_TEXTURE_DIFFUSE(0));
         mat->AddProperty(&tex, AI_MATKEY_TEXTURE(aiTextureType_BASE_COLOR, 0));
     }
+    if (!m.normalTexture.empty()) {
+        const aiString tex(m.normalTexture);
+        mat->AddProperty(&tex, AI_MATKEY_TEXTURE_NORMALS(0));
+    }
+    if (!m.roughnessTexture.empty()) {
+        const aiString tex(m.roughnessTexture);
+        mat->AddProperty(&tex, AI_MATKEY_TEXTURE(aiTextureType_DIFFUSE_ROUGHNESS, 0));
+    }
     const int twoSided = m.twoSided ? 1 : 0;
     mat->AddProperty(&twoSided, 1, AI_MATKEY_TWOSIDED);
     if (m.alphaMask) {
@@ -155,20 +163,27 @@ std::unique_ptr<aiScene> buildScene(const SceneDesc& desc, bool embedTextures) {
         // Each texture file once; the materials name it "*<index>" (Assimp's embedded form).
         std::vector<aiTexture*> textures;
         std::map<std::string, unsigned> textureIndex;
-        for (Material& m : materials) {
-            const std::filesystem::path file = textureSourceOf(m, desc.textureSource);
-            if (file.empty()) continue;
-            auto found = textureIndex.find(file.string());
-            if (found == textureIndex.end()) {
-                aiTexture* tex = embeddedTexture(file);
-                if (!tex) continue;
-                found = textureIndex.emplace(file.string(), static_cast<unsigned>(textures.size()))
+        for (Material& m : materials)
+            for (TextureSlot slot : kTextureSlots) {
+                const std::filesystem::path file = textureSourceOf(m, desc.textureSource, slot);
+                if (file.empty()) continue;
+                auto found = textureIndex.find(file.string());
+                if (found == textureIndex.end()) {
+                    aiTexture* tex = embeddedTexture(file);
+                    if (!tex) {
+                        // A map that cannot be read is left out rather than referenced.
+                        if (slot != TextureSlot::Diffuse) texturePath(m, slot).clear();
+                        continue;
+                    }
+                    found =
+                        textureIndex.emplace(file.string(), static_cast<unsigned>(textures.size()))
                             .first;
-                textures.push_back(tex);
+                    textures.push_back(tex);
+                }
+                std::string& path = texturePath(m, slot);
+                path = std::to_string(found->second);
+                path.insert(path.begin(), '*');
             }
-            m.diffuseTexture = std::to_string(found->second);
-            m.diffuseTexture.insert(m.diffuseTexture.begin(), '*');
-        }
         scene->mNumTextures = static_cast<unsigned>(textures.size());
         if (!textures.empty()) {
             scene->mTextures = new aiTexture*[textures.size()];

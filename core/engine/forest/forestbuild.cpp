@@ -125,6 +125,9 @@ std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
     pod(in.growth);
     pod(in.seed);
     pod(in.handPlaced);
+    pod(in.season);
+    const int season = scene.season ? static_cast<int>(*scene.season) : -1;
+    pod(season);
     for (const env::CrownVolume& c : near) {
         pod(c.base);
         pod(c.radius);
@@ -352,6 +355,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     for (const SpeciesPlan& plan : plans)
         meshSettings.push_back(mesh::treeMeshSettingsFromParams(
             plan.meshNode->params, 0, scene.species[meshSettings.size()].graph.baseDir));
+    if (scene.season)
+        for (mesh::TreeMeshSettings& settings : meshSettings)
+            settings.season = *scene.season;
 
     const env::ObstacleScene& obstacles = scene.obstacles ? *scene.obstacles : emptyScene();
     std::vector<double> cpuGenerate(static_cast<std::size_t>(threads), 0.0), cpuAdapt(cpuGenerate),
@@ -403,6 +409,8 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                         mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),
                                 (options.buildMeshes ? (options.useLod ? 0x4C : 0x4D) : 0x53) +
                                     (options.windData ? 0x100 : 0));
+                    cacheKey = mixSeed(
+                        cacheKey, static_cast<std::uint64_t>(meshSettings[variant.species].season));
                     if (std::optional<ForestVariant> cached =
                             options.cache->findVariant(cacheKey)) {
                         variant = std::move(*cached);
@@ -503,8 +511,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 // A domain tree nothing would adapt (no obstacle near its variant, no
                 // neighbour's crown core in its own, as adaptation sees them) shows one of its
                 // species' variants, picked by its seed. Hand-placed trees are the artist's
-                // own: always grown from their seed.
-                if (firstVariant[in.species] >= 0 && !in.handPlaced && near.empty()) {
+                // own: always grown from their seed. A tree in a season of its own is grown as
+                // itself too (the variants are grown in the scene's season).
+                const bool ownSeason = in.season >= 0 && static_cast<mesh::Season>(in.season) !=
+                                                             meshSettings[in.species].season;
+                if (firstVariant[in.species] >= 0 && !in.handPlaced && near.empty() && !ownSeason) {
                     const auto v = static_cast<std::size_t>(firstVariant[in.species]) +
                                    mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species];
                     if (!touchesObstacles(obstacles, in, extents[v])) {
@@ -599,6 +610,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 t = Clock::now();
                 mesh::TreeMeshSettings settings = meshSettings[in.species];
                 settings.seed = mixSeed(in.seed, salt::kTreeMesh);
+                if (in.season >= 0) settings.season = static_cast<mesh::Season>(in.season);
                 tree.meshSettings = std::make_shared<const mesh::TreeMeshSettings>(settings);
                 if (options.useLod) {
                     tree.meshCameraDistance = ctx.cameraDistance;

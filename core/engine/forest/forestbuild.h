@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,9 @@ struct ForestScene {
     std::shared_ptr<const env::ObstacleScene> ground;    ///< terrain; null = flat ground y = 0
     glm::vec3 camera{0.0f, 20.0f, 80.0f};
     glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
+    /// The season of every tree without one of its own (Instance::season); unset: each
+    /// species' tube_mesh `season` (summer unless the species says otherwise).
+    std::optional<mesh::Season> season;
 };
 
 /// One of a species' K variants: grown once from the species at a seed derived from the project

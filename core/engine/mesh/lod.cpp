@@ -246,9 +246,13 @@ void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
 Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {
     for (Submesh& s : mesh.submeshes) {
         if (s.material == "bark") s.texture = settings.barkTexture;
-        if (s.material == "leaf")
-            s.texture =
+        if (s.material == "leaf") {
+            // A cluster card shows the species' cluster atlas; a deciduous tree's the season's
+            // version of its atlas or leaf (the summer one where none was drawn).
+            const std::string& summer =
                 settings.leafClusterSize > 1 ? settings.leafClusterTexture : settings.leafTexture;
+            s.texture = settings.deciduous ? seasonTextureFile(summer, settings.season) : summer;
+        }
     }
     return mesh;
 }
@@ -260,8 +264,15 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
     Mesh mesh;
     if (!settings.useLod) {
         appendTubes(mesh, skeleton, tubes, progress);
-        if (settings.leaves && !skeleton.leaves.empty())
-            appendLeaves(mesh, skeleton.leaves, settings, &skeleton);
+        if (settings.leaves && !skeleton.leaves.empty()) {
+            if (settings.deciduous && settings.season != Season::Summer) {
+                const std::vector<skel::Leaf> leaves =
+                    seasonLeaves(skeleton.leaves, settings.season, true, settings.seed);
+                if (!leaves.empty()) appendLeaves(mesh, leaves, settings, &skeleton);
+            } else {
+                appendLeaves(mesh, skeleton.leaves, settings, &skeleton);
+            }
+        }
         return mesh;
     }
     const LodLevel level = selectLod(settings.lod, settings.cameraDistance);
@@ -284,9 +295,16 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
     const skel::Skeleton kept = dropSmallSubtrees(
         skeleton, level.minSubtreeExtent, settings.leafCards.sizeScale, level.leafyTwigExtent);
     appendTubes(mesh, kept, tubes, progress);
-    if (settings.leaves && !kept.leaves.empty()) {
+    // The season's leaves first, so that clusters and thinning work on what the tree shows.
+    const std::vector<skel::Leaf> seasonal =
+        settings.deciduous && settings.season != Season::Summer
+            ? seasonLeaves(kept.leaves, settings.season, true, settings.seed)
+            : std::vector<skel::Leaf>();
+    const std::vector<skel::Leaf>& shown =
+        settings.deciduous && settings.season != Season::Summer ? seasonal : kept.leaves;
+    if (settings.leaves && !shown.empty()) {
         std::vector<skel::Leaf> leaves = clusterLeaves(
-            kept.leaves, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
+            shown, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
         if (leafFraction < 1.0) {
             leaves = thinLeaves(leaves, leafFraction, settings.seed);
             // Enlarged survivors that would reach into an obstacle are left out.

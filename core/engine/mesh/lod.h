@@ -6,6 +6,7 @@
 
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/season.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
@@ -111,6 +112,10 @@ struct TreeMeshSettings {
     /// Diffuse textures of the bark and leaf submeshes (Submesh::texture); empty: the defaults.
     std::string barkTexture;
     std::string leafTexture;
+    /// The season the tree is shown in (tube_mesh's `season`, or the project's or tree's
+    /// choice over it) and whether the species drops its leaves (`deciduous`): see season.h.
+    Season season = Season::Summer;
+    bool deciduous = false;
     /// Leaves a cluster card carries on average (engine/mesh/leafclusters.h); 0: one card a
     /// leaf. With it the leaf submesh shows leafClusterTexture (the species' cluster atlas).
     int leafClusterSize = 0;

@@ -121,6 +121,15 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     };
     s.barkTexture = texture("bark_texture_file");
     s.leafTexture = texture("leaf_texture_file");
+    s.season = parseSeason(p.string("season", "summer"));
+    s.deciduous = p.boolean("deciduous", false);
+    if (const Value* autumn = p.find("autumn_color"); autumn && !autumn->isNull()) {
+        // Read by make_textures.py (the autumn leaf texture); checked here so a typo shows.
+        const Value::Array& a = autumn->toArray("autumn_color");
+        if (a.size() != 3) throw InvalidInput("autumn_color must be [r, g, b]");
+        for (const Value& c : a)
+            requireRange("autumn_color", c.toNumber("autumn_color"), 0.0, 1.0);
+    }
     s.leafClusterSize = rangedInt(p, "leaf_cluster_size", 0, 0, 64);
     s.leafClusterTexture = texture("leaf_cluster_texture_file");
     if (s.leafClusterSize > 1 && s.leafClusterTexture.empty())
@@ -288,6 +297,16 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
                  "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png"),
            other("leaf_cluster_texture_file", ParamKind::File,
                  "Leaf cluster atlas RGBA PNG: 2 x 2 tiles, three sprays and the single leaf")});
+    group(
+        tube.params, "Season",
+        {choice("season", "summer", {"spring", "summer", "autumn", "winter"},
+                "Time of year (a project's or tree's season replaces it)"),
+         boolean("deciduous", false,
+                 "Sheds its leaves: fewer and smaller in spring, fewer in autumn, none in winter; "
+                 "off: the same all year (conifers, evergreens)"),
+         vector("autumn_color", vec(0.6, 0.4, 0.1), 0, 1, "",
+                "Autumn leaf colour (sRGB 0..1): make_textures.py draws the species' "
+                "autumn leaves from it")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;

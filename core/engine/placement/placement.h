@@ -58,6 +58,8 @@ struct Instance {
     float growth = 1.0f;       ///< growth stage (0, 1]; 1 is a mature tree
     std::uint64_t seed = 0;    ///< the tree's own seed (generation, adaptation)
     bool handPlaced = false;
+    /// The tree's own season (mesh::Season's value), -1: the scene's (ForestScene::season).
+    std::int8_t season = -1;
 
     /// Local tree frame to world: translate · rotateY(rotation) · uniform scale(scale · growth).
     glm::mat4 transform() const;

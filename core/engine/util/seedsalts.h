@@ -38,6 +38,8 @@ inline constexpr std::uint64_t kWindPhase = 0x771D0;
 inline constexpr std::uint64_t kVariant = 0x5A1A7;
 /// Which of its species' variants an instanced tree shows, from the tree's own seed.
 inline constexpr std::uint64_t kVariantPick = 0x5A1B;
+/// Which leaves a deciduous tree keeps in spring and autumn, from its mesh seed ("season").
+inline constexpr std::uint64_t kSeason = 0x5EA5;
 /// The editor's Brush tool: a stroke's trees (added to the tree count of the stroke).
 inline constexpr std::uint64_t kBrushStroke = 7919;
 /// The editor's Place tool: a placed tree's rotation and seed (added to the tree count).

@@ -52,6 +52,8 @@ protected:
     QString mSaved;
 };
 
+const char* const kSeasons[] = {"", "spring", "summer", "autumn", "winter"};
+
 doc::ProjectInstance alder(float x, float z) {
     doc::ProjectInstance t;
     t.species = "alder";
@@ -444,6 +446,8 @@ TEST_F(DocumentTest, RandomEditsUndoneAndRedoneGiveTheExactBytes) {
                 mDoc.setCamera({float(uniform(-50, 50)), float(uniform(5, 40)), 70},
                                {0, float(uniform(0, 8)), 0}, rng.next() % 2);
                 mDoc.setLight({float(uniform(-1, 1)), -1, float(uniform(-1, 1))});
+                mDoc.setSeason(kSeasons[rng.next() % 5]);
+                if (someTree) mDoc.setTreeSeason(someTree, kSeasons[rng.next() % 5]);
                 break;
             case 10:
                 mDoc.setParam(rng.next() % 2 ? "alder" : "ternary", "mesh.resolution",
@@ -478,6 +482,38 @@ TEST_F(DocumentTest, RandomEditsUndoneAndRedoneGiveTheExactBytes) {
     Document again;
     again.open(mSaved);
     EXPECT_EQ(again.serialized(), edited);
+}
+
+TEST_F(DocumentTest, SeasonsAreUndoableSavedOnlyWhenSetAndChecked) {
+    mDoc.addTree(alder(3, 4));
+    mDoc.save();
+    const QByteArray original = bytes();
+    // A project without seasons saves without a season key: files stay as they were.
+    EXPECT_FALSE(original.contains("\"season\""));
+    const doc::TreeId tree = mDoc.treeIds().back();
+    mDoc.setSeason("autumn");
+    mDoc.setTreeSeason(tree, "fall"); // autumn's other name, stored as "autumn"
+    EXPECT_EQ(mDoc.project().season, "autumn");
+    EXPECT_EQ(mDoc.tree(tree).season, "autumn");
+    mDoc.setSeason("winter");
+    const int steps = mDoc.undoStack()->count();
+    EXPECT_THROW(mDoc.setSeason("monsoon"), InvalidInput);
+    doc::ProjectInstance bad = mDoc.tree(tree);
+    bad.season = "monsoon";
+    EXPECT_THROW(mDoc.setTree(tree, bad), InvalidInput);
+    EXPECT_EQ(mDoc.undoStack()->count(), steps);
+    // Saved and reloaded, the seasons come back.
+    mDoc.save();
+    Document again;
+    again.open(mSaved);
+    EXPECT_EQ(again.project().season, "winter");
+    EXPECT_EQ(again.tree(again.treeIds().back()).season, "autumn");
+    EXPECT_EQ(again.serialized(), bytes());
+    // Undone, the document is the exact one it was before the season edits.
+    for (int k = 0; k < 3; ++k)
+        mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), original);
+    EXPECT_TRUE(mDoc.project().season.empty());
 }
 
 TEST_F(DocumentTest, CorruptOrNewerFileLeavesTheDocumentAsItWas) {

@@ -361,10 +361,24 @@ TEST(GltfMesh, SubmeshesShareVerticesAndTexturesAreEmbeddedOnce) {
     EXPECT_EQ(g.json["materials"][1]["name"], "english-oak_leaf");
     EXPECT_EQ(g.json["materials"][1]["alphaMode"], "MASK");
     EXPECT_EQ(g.json["materials"][1]["doubleSided"], true);
-    ASSERT_EQ(g.json["images"].size(), 1u);
+    // The leaf's colour, normal and roughness maps: three images, bark's maps are shipped
+    // files not in the folder given.
+    ASSERT_EQ(g.json["images"].size(), 3u);
     EXPECT_EQ(g.json["images"][0]["mimeType"], "image/png");
+    const Json& leafMaterial = g.json["materials"][1];
+    ASSERT_TRUE(leafMaterial.contains("normalTexture"));
+    ASSERT_TRUE(leafMaterial["pbrMetallicRoughness"].contains("metallicRoughnessTexture"));
+    EXPECT_EQ(leafMaterial["pbrMetallicRoughness"]["roughnessFactor"], 1.0);
+    EXPECT_EQ(leafMaterial["pbrMetallicRoughness"]["metallicFactor"], 0.0);
+    const int normalImage =
+        g.json["textures"][leafMaterial["normalTexture"]["index"].get<int>()]["source"].get<int>();
+    EXPECT_EQ(g.json["images"][normalImage]["name"], "english-oak_leaf_normal");
+    EXPECT_FALSE(g.json["materials"][0].contains("normalTexture"));
     const auto normals = readAccessor<float>(g, prims[0]["attributes"]["NORMAL"].get<int>(), 3);
     EXPECT_EQ(normals, (std::vector<float>{0, 0, 1, 0, 0, 1, 0, 1, 0, 0, 0, 1}));
+    // glTF's uv origin is the image's top-left: v is stored as 1 - v.
+    const auto uvs = readAccessor<float>(g, prims[0]["attributes"]["TEXCOORD_0"].get<int>(), 2);
+    EXPECT_EQ(uvs, (std::vector<float>{0, 1, 1, 1, 0, 0, 1, 0}));
 }
 
 namespace {

@@ -230,7 +230,7 @@ TEST(SceneExport, TexturesAreCopied) {
     const auto dir = tempDir("tex");
     const auto n = exporter::copyTextures(exporter::defaultMaterials(),
                                           SYLVA_TEST_DATA_DIR "/../../resources/textures", dir);
-    EXPECT_EQ(n, 2u);
+    EXPECT_EQ(n, 6u); // bark and leaf, each with its normal and roughness maps
     EXPECT_TRUE(std::filesystem::exists(dir / "textures" / "bark.png"));
     EXPECT_TRUE(std::filesystem::exists(dir / "textures" / "leaf.png"));
     std::filesystem::remove_all(dir);
@@ -311,6 +311,77 @@ TEST(SceneExport, SpeciesTexturesTravelWithObjGlbAndFbx) {
         EXPECT_GE(s->mNumTextures, 2u) << name;
         EXPECT_EQ(embeddedSpeciesTextures(s), 2u) << name;
     }
+    std::filesystem::remove_all(dir);
+}
+
+// Every textured material carries its normal map (and roughness where the format has a slot)
+// as Assimp reads the file back: OBJ by file, GLB and FBX embedded.
+TEST(SceneExport, NormalMapsTravelWithEveryFormat) {
+    const auto dir = tempDir("normal_maps");
+    const auto tree = texturedTree();
+    for (const char* name : {"oak.obj", "oak.glb", "oak.gltf", "oak.fbx"}) {
+        exporter::TreeExporter out(dir / name);
+        out.add({{"oak", tree, glm::vec3(0.0f), 0.0f, 1.0f}});
+        out.commit();
+        Assimp::Importer importer;
+        const aiScene* s = importer.ReadFile((dir / name).string(), 0);
+        ASSERT_NE(s, nullptr) << name << ": " << importer.GetErrorString();
+        std::size_t normals = 0, roughness = 0;
+        for (unsigned i = 0; i < s->mNumMaterials; ++i) {
+            aiString material, tex;
+            s->mMaterials[i]->Get(AI_MATKEY_NAME, material);
+            if (std::string(material.C_Str()).rfind("english-oak_", 0) != 0) continue;
+            ASSERT_EQ(s->mMaterials[i]->GetTexture(aiTextureType_NORMALS, 0, &tex), AI_SUCCESS)
+                << name << " " << material.C_Str();
+            ++normals;
+            const std::string file = tex.C_Str();
+            // Assimp reads its own FBX's normal map back with the writer's "*N" index, which
+            // its reader renumbered: the FBX is checked for the slot only (docs/geometry.md).
+            if (file.rfind('*', 0) == 0 && std::string(name) != "oak.fbx") {
+                const aiTexture* embedded = s->GetEmbeddedTexture(file.c_str());
+                ASSERT_NE(embedded, nullptr) << name << " " << file;
+                EXPECT_EQ(std::string(reinterpret_cast<const char*>(embedded->pcData) + 1, 3),
+                          "PNG");
+            } else if (file.rfind('*', 0) != 0) {
+                EXPECT_NE(file.find("_normal.png"), std::string::npos) << file;
+                EXPECT_TRUE(std::filesystem::exists(dir / file)) << name << " " << file;
+            }
+            if (s->mMaterials[i]->GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS) > 0 ||
+                s->mMaterials[i]->GetTextureCount(aiTextureType_METALNESS) > 0)
+                ++roughness;
+        }
+        EXPECT_EQ(normals, 2u) << name;
+        // FBX's classic material has no roughness slot Assimp writes; the others carry it.
+        if (std::string(name) != "oak.fbx") {
+            EXPECT_EQ(roughness, 2u) << name;
+        }
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Materials, NormalAndRoughnessMapsAreFoundBesideTheTexture) {
+    const std::filesystem::path presets = SYLVA_TEST_DATA_DIR "/../../presets/textures";
+    const std::string leaf = (presets / "english-oak_leaf.png").string();
+    EXPECT_EQ(std::filesystem::path(exporter::companionTexture(leaf, "normal")).filename(),
+              "english-oak_leaf_normal.png");
+    // A season's leaf shares its summer leaf's maps.
+    EXPECT_EQ(
+        std::filesystem::path(exporter::companionTexture(
+                                  (presets / "english-oak_leaf_autumn.png").string(), "roughness"))
+            .filename(),
+        "english-oak_leaf_roughness.png");
+    EXPECT_EQ(exporter::companionTexture((presets / "no-such_leaf.png").string(), "normal"), "");
+    // The defaults and the MTL: norm (Assimp), map_Bump (Blender), map_Pr.
+    const std::string mtl = exporter::formatMtl(exporter::defaultMaterials());
+    for (const char* line :
+         {"norm textures/bark_normal.png\n", "map_Bump textures/bark_normal.png\n",
+          "map_Pr textures/bark_roughness.png\n", "norm textures/leaf_normal.png\n"})
+        EXPECT_NE(mtl.find(line), std::string::npos) << line << mtl;
+    const auto dir = tempDir("copy_maps");
+    EXPECT_EQ(exporter::copyTextures(exporter::defaultMaterials(),
+                                     SYLVA_TEST_DATA_DIR "/../../resources/textures", dir),
+              6u);
+    EXPECT_TRUE(std::filesystem::exists(dir / "textures" / "leaf_roughness.png"));
     std::filesystem::remove_all(dir);
 }
 

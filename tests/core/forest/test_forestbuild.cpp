@@ -108,6 +108,7 @@ static_assert(salt::kCrownSample == 0xC0000 && salt::kDomainSlots == 0xD0A1 &&
 static_assert(salt::kBrushStroke == 7919 && salt::kPlaceTool == 104729);
 static_assert(salt::kWindPhase == 0x771D0);
 static_assert(salt::kVariant == 0x5A1A7 && salt::kVariantPick == 0x5A1B);
+static_assert(salt::kSeason == 0x5EA5);
 
 TEST(SeedSalts, EverySaltIsItsOwn) {
     const std::set<std::uint64_t> salts{salt::kTreeMesh,
@@ -126,6 +127,7 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kWindPhase + 1,
                                         salt::kVariant,
                                         salt::kVariantPick,
+                                        salt::kSeason,
                                         salt::kLeafClusters};
-    EXPECT_EQ(salts.size(), 17u);
+    EXPECT_EQ(salts.size(), 18u);
 }

@@ -27,6 +27,9 @@ echo "-- project_layout.py (win.project() before the first layout)"
 echo "-- real_input.py (xdotool)"
 "$SYLVA" --discard-autosave --script "$HERE/real_input.py" "$DEMO" || fail "real_input.py"
 
+echo "-- seasons.py (the viewport's leaves in four seasons)"
+"$SYLVA" --discard-autosave --script "$HERE/seasons.py" "$DEMO" || fail "seasons.py"
+
 echo "-- exit_status.py"
 status=0
 "$SYLVA" --script "$HERE/exit_status.py" || status=$?
@@ -56,4 +59,4 @@ ls "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" >/dev/null ||
   fail "the first edit after opening was not autosaved"
 echo "-- check_one_edit_restored.py (--restore)"
 "$SYLVA" --restore --script "$HERE/check_one_edit_restored.py" || fail "check_one_edit_restored.py"
-echo "script tests: 9 passed, 0 failed"
+echo "script tests: 10 passed, 0 failed"

@@ -14,12 +14,39 @@ in vec3 vNormal;
 in vec3 vColor;
 in vec2 vUv;
 in float vOcclusion;
+in vec3 vWorld;
 uniform vec3 uAlbedo;
 uniform bool uVertexColor; // colour by a node attribute instead of the material
 uniform sampler2D uTexture;
 uniform vec3 uLightDir;
 uniform float uHighlight; // a selected tree: blended towards orange
 out vec4 fragColor;
+#ifdef TEXTURED
+// The texture's tangent-space normal map (make_textures.py: OpenGL convention, +X along u, +Y
+// along v; a flat one where a texture has none). The tangent frame comes from the screen-space
+// derivatives of the world position and the uvs (Schüler's cotangent frame), not from vertex
+// tangents: no attribute to compute, store and upload for millions of vertices, and it holds
+// for every mesh the viewport gets (LOD levels, camera ribbons, leaf clusters, obstacles).
+// Our uvs are orthogonal on tubes and cards, so it matches the MikkTSpace frame exports imply.
+// With the normal turned towards the viewer the whole frame turns too: a card's back shows
+// the relief mirrored, as a thin leaf does.
+uniform sampler2D uNormalMap;
+vec3 mappedNormal(vec3 n, vec2 uv) {
+    vec3 dp1 = dFdx(vWorld);
+    vec3 dp2 = dFdy(vWorld);
+    vec2 duv1 = dFdx(uv);
+    vec2 duv2 = dFdy(uv);
+    vec3 dp2perp = cross(dp2, n);
+    vec3 dp1perp = cross(n, dp1);
+    vec3 t = dp2perp * duv1.x + dp1perp * duv2.x;
+    vec3 b = dp2perp * duv1.y + dp1perp * duv2.y;
+    float m = max(dot(t, t), dot(b, b));
+    if (m < 1e-24) return n; // uvs that do not vary (a foreign mesh): no frame
+    float s = inversesqrt(m);
+    vec3 local = texture(uNormalMap, uv).xyz * 2.0 - 1.0;
+    return normalize(mat3(t * s, b * s, n) * local);
+}
+#endif
 void main() {
 #ifdef TEXTURED
     vec4 tex = texture(uTexture, vUv);
@@ -35,6 +62,9 @@ void main() {
     vec3 n = vNormal;
     float len = length(n);
     n = len > 1e-6 ? n / len : vec3(0.0, 1.0, 0.0);
+#ifdef TEXTURED
+    n = mappedNormal(n, vUv);
+#endif
     float facing = dot(n, uLightDir);
     float diffuse = max(facing, 0.0);
 #ifdef CUTOUT

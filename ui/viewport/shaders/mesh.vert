@@ -13,6 +13,7 @@ out vec3 vNormal;
 out vec3 vColor;
 out vec2 vUv;
 out float vOcclusion;
+out vec3 vWorld; // for the textured fragment shader's tangent frame (derivatives)
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     // Normals turned towards the viewer here, per vertex, so that leaf cards and inconsistent
@@ -23,5 +24,6 @@ void main() {
     vColor = aColor;
     vUv = aUv;
     vOcclusion = aOcclusion;
+    vWorld = world.xyz;
     gl_Position = uViewProj * world;
 }

@@ -26,12 +26,13 @@ MaterialTable::MaterialTable(GltfBuilder& builder, std::vector<Material> materia
     : mBuilder(builder), mMaterials(std::move(materials)), mShipped(std::move(shippedTextures)),
       mEmbed(embed) {}
 
-int MaterialTable::texture(const Material& m) {
-    const fs::path file = textureSourceOf(m, mShipped);
+int MaterialTable::texture(const Material& m, TextureSlot slot) {
+    const fs::path file = textureSourceOf(m, mShipped, slot);
     if (file.empty()) return -1;
     const std::string mime = imageMimeType(file);
     if (mime.empty()) return -1;
-    const std::string key = mEmbed ? file.string() : m.diffuseTexture;
+    const std::string& uri = texturePath(m, slot);
+    const std::string key = mEmbed ? file.string() : uri;
     if (const auto it = mTextureIndex.find(key); it != mTextureIndex.end()) return it->second;
     int image = -1;
     const std::string name = file.stem().string();
@@ -43,7 +44,7 @@ int MaterialTable::texture(const Material& m) {
             image =
                 mBuilder.addImage(std::as_bytes(std::span(bytes.data(), bytes.size())), mime, name);
     } else {
-        image = mBuilder.addImageUri(m.diffuseTexture, name);
+        image = mBuilder.addImageUri(uri, name);
     }
     int tex = -1;
     if (image >= 0) {
@@ -73,8 +74,20 @@ int MaterialTable::material(const std::string& name) {
     else
         pbr["baseColorFactor"] = {tidy(m.diffuse.x), tidy(m.diffuse.y), tidy(m.diffuse.z), 1.0};
     pbr["metallicFactor"] = 0.0;
-    pbr["roughnessFactor"] = 0.9;
+    // The roughness map is grey: glTF reads roughness from its green channel and metalness
+    // from blue, which metallicFactor 0 turns off.
+    const int roughness = texture(m, TextureSlot::Roughness);
+    if (roughness >= 0) {
+        pbr["roughnessFactor"] = 1.0;
+        pbr["metallicRoughnessTexture"] = {{"index", roughness}};
+    } else {
+        pbr["roughnessFactor"] = 0.9;
+    }
     Json j = {{"name", m.name}, {"pbrMetallicRoughness", std::move(pbr)}};
+    // Tangent-space, +Y up as glTF defines it; no TANGENT attribute is written, so readers
+    // derive MikkTSpace tangents as the specification asks.
+    if (const int normal = texture(m, TextureSlot::Normal); normal >= 0)
+        j["normalTexture"] = {{"index", normal}};
     if (m.alphaMask) {
         j["alphaMode"] = "MASK";
         j["alphaCutoff"] = 0.5;
@@ -107,8 +120,15 @@ int addTreeMesh(GltfBuilder& builder, const mesh::Mesh& m, std::string_view name
             normals[i] = safeNormalize(m.normals[i], glm::vec3(0, 1, 0));
         base.attributes.emplace_back("NORMAL", builder.addVec3(normals));
     }
-    if (m.uvs.size() == m.positions.size())
-        base.attributes.emplace_back("TEXCOORD_0", builder.addVec2(m.uvs));
+    if (m.uvs.size() == m.positions.size()) {
+        // glTF's uv origin is the image's top-left, Sylva's (OBJ's, OpenGL's) its bottom-left:
+        // without the flip a leaf card showed its texture upside down, and a normal map's green
+        // would point the wrong way along v.
+        std::vector<glm::vec2> uvs(m.uvs.size());
+        for (std::size_t i = 0; i < uvs.size(); ++i)
+            uvs[i] = {m.uvs[i].x, 1.0f - m.uvs[i].y};
+        base.attributes.emplace_back("TEXCOORD_0", builder.addVec2(uvs));
+    }
     for (const auto& attribute : extra)
         base.attributes.push_back(attribute);
 

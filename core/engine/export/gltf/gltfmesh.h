@@ -37,7 +37,7 @@ public:
     const std::vector<Material>& materials() const { return mMaterials; }
 
 private:
-    int texture(const Material& material);
+    int texture(const Material& material, TextureSlot slot = TextureSlot::Diffuse);
 
     GltfBuilder& mBuilder;
     std::vector<Material> mMaterials;
