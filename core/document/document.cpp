@@ -17,6 +17,7 @@
 #include "engine/graph/graph.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/wind/windmodel.h"
 
 namespace sylva::doc {
 
@@ -577,7 +578,8 @@ void Document::setDomain(int index, const PlacementDomain& d, bool commit) {
 }
 
 Document::Settings Document::settings() const {
-    return {mProject.seed, mProject.cameraPosition, mProject.cameraTarget, mProject.lightDirection};
+    return {mProject.seed, mProject.cameraPosition, mProject.cameraTarget, mProject.lightDirection,
+            mProject.wind};
 }
 
 void Document::setSeed(std::uint64_t seed) {
@@ -603,6 +605,21 @@ void Document::setLight(const glm::vec3& direction, bool commit) {
     s.lightDirection = direction;
     mUndo.push(cmd::changeSettings(*this, s, commit,
                                    QCoreApplication::translate("Commands", "Change light")));
+}
+
+void Document::setWind(const std::optional<ProjectWind>& wind) {
+    if (wind) {
+        sylva::wind::WindSettings check;
+        check.direction = wind->direction;
+        check.strength = wind->strength;
+        check.gustiness = wind->gustiness;
+        check.frequency = wind->frequency;
+        sylva::wind::validate(check); // InvalidInput naming the setting and its allowed range
+    }
+    Settings s = settings();
+    s.wind = wind;
+    mUndo.push(cmd::changeSettings(*this, s, true,
+                                   QCoreApplication::translate("Commands", "Change wind")));
 }
 
 void Document::rawInsertObstacle(int index, const ProjectObstacle& o) {
@@ -644,6 +661,7 @@ void Document::rawSetSettings(const Settings& s) {
     mProject.cameraPosition = s.cameraPosition;
     mProject.cameraTarget = s.cameraTarget;
     mProject.lightDirection = s.lightDirection;
+    mProject.wind = s.wind;
     emitChange(DocumentChange::Settings);
 }
 

@@ -29,7 +29,7 @@ struct DocumentChange {
         Species = 1u << 1,   ///< a species' graph or grammar (`species`, `node`)
         Obstacles = 1u << 2, ///< an obstacle added, removed or transformed
         Domains = 1u << 3,   ///< a placement domain or its counts
-        Settings = 1u << 4,  ///< seed, camera or light
+        Settings = 1u << 4,  ///< seed, camera, light or wind
         Reset = 1u << 5,     ///< a new or opened document: everything
     };
     unsigned what = 0;
@@ -183,6 +183,9 @@ public:
     void setSeed(std::uint64_t seed);
     void setCamera(const glm::vec3& position, const glm::vec3& target, bool commit = true);
     void setLight(const glm::vec3& direction, bool commit = true);
+    /// Sets the project's wind (nullopt: unset, the engine's default, nothing saved); one undo
+    /// step. \throw InvalidInput naming the setting and its allowed range (wind::validate).
+    void setWind(const std::optional<ProjectWind>& wind);
 
     // --- selection (not undoable) ----------------------------------------------------------
     const QList<ItemRef>& selection() const { return mSelection; }
@@ -206,6 +209,7 @@ public:
     struct Settings {
         std::uint64_t seed = 0;
         glm::vec3 cameraPosition{0.0f}, cameraTarget{0.0f}, lightDirection{0.0f};
+        std::optional<ProjectWind> wind;
         bool operator==(const Settings&) const = default;
     };
     Settings settings() const;

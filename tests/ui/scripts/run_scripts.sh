@@ -21,6 +21,9 @@ echo "-- api_edits.py"
 echo "-- api_species.py"
 "$SYLVA" --discard-autosave --script "$HERE/api_species.py" "$DEMO" || fail "api_species.py"
 
+echo "-- api_wind.py"
+"$SYLVA" --discard-autosave --script "$HERE/api_wind.py" "$DEMO" || fail "api_wind.py"
+
 echo "-- project_layout.py (win.project() before the first layout)"
 "$SYLVA" --discard-autosave --script "$HERE/project_layout.py" "$DEMO" || fail "project_layout.py"
 
@@ -56,4 +59,4 @@ ls "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" >/dev/null ||
   fail "the first edit after opening was not autosaved"
 echo "-- check_one_edit_restored.py (--restore)"
 "$SYLVA" --restore --script "$HERE/check_one_edit_restored.py" || fail "check_one_edit_restored.py"
-echo "script tests: 9 passed, 0 failed"
+echo "script tests: 10 passed, 0 failed"
