@@ -428,10 +428,14 @@ void bindForest(py::module_& m) {
                 doc::ProjectWind w;
                 for (const auto& [key, value] : v.cast<py::dict>()) {
                     const std::string k = key.cast<std::string>();
-                    if (k == "direction") w.direction = toVec3(value, "wind direction");
-                    else if (k == "strength") w.strength = value.cast<float>();
-                    else if (k == "gustiness") w.gustiness = value.cast<float>();
-                    else if (k == "frequency") w.frequency = value.cast<float>();
+                    if (k == "direction")
+                        w.direction = toVec3(value, "wind direction");
+                    else if (k == "strength")
+                        w.strength = value.cast<float>();
+                    else if (k == "gustiness")
+                        w.gustiness = value.cast<float>();
+                    else if (k == "frequency")
+                        w.frequency = value.cast<float>();
                     else
                         throw InvalidInput("unknown wind setting '" + k +
                                            "' (direction, strength, gustiness, frequency)");
