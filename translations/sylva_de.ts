@@ -83,6 +83,10 @@
         <translation>Startwert des Projekts ändern</translation>
     </message>
     <message>
+        <source>Change wind</source>
+        <translation>Wind ändern</translation>
+    </message>
+    <message>
         <source>Move camera</source>
         <translation>Kamera bewegen</translation>
     </message>

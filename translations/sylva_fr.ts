@@ -83,6 +83,10 @@
         <translation>Modifier la graine du projet</translation>
     </message>
     <message>
+        <source>Change wind</source>
+        <translation>Modifier le vent</translation>
+    </message>
+    <message>
         <source>Move camera</source>
         <translation>Déplacer la caméra</translation>
     </message>

@@ -19,8 +19,8 @@ import os
 import sys
 
 import bpy
-from bpy.props import (BoolProperty, CollectionProperty, EnumProperty, IntProperty,
-                       PointerProperty, StringProperty)
+from bpy.props import (BoolProperty, CollectionProperty, EnumProperty, FloatProperty,
+                       FloatVectorProperty, IntProperty, PointerProperty, StringProperty)
 
 from . import build
 
@@ -97,6 +97,19 @@ class SylvaSettings(bpy.types.PropertyGroup):
                                           "an obstacle is moved or edited")
     tree_preset: EnumProperty(name="Tree", items=preset_items)
     tree_file: StringProperty(name="File", subtype="FILE_PATH")
+    wind: BoolProperty(name="Wind", default=False,
+                       description="Give the tree an armature with a looping wind action "
+                                   "(Sylva's wind rig and clip, docs/wind.md)")
+    wind_strength: FloatProperty(name="Strength", default=0.5, min=0.0, max=2.0)
+    wind_gustiness: FloatProperty(name="Gustiness", default=0.3, min=0.0, max=1.0)
+    wind_direction: FloatVectorProperty(name="Direction", size=3, default=(1.0, 0.0, 0.0),
+                                        subtype="DIRECTION",
+                                        description="Where the wind blows to (Blender axes; "
+                                                    "only the horizontal part counts)")
+    wind_bones: IntProperty(name="Bones", default=64, min=2, max=1024,
+                            description="At most this many bones in the tree's armature")
+    wind_clip: FloatProperty(name="Clip length", default=4.0, min=0.5, max=600.0, unit="TIME",
+                             description="Seconds after which the wind action loops")
 
 
 class SYLVA_OT_add_species(bpy.types.Operator):
@@ -133,7 +146,12 @@ class SYLVA_OT_grow_tree(bpy.types.Operator):
         try:
             sylva = import_sylva()
             path = bpy.path.abspath(s.tree_file) if s.tree_file else s.tree_preset
-            tree = sylva.load_species(path).grow(seed=s.seed)
+            tree = sylva.load_species(path).grow(seed=s.seed, wind=s.wind)
+            if s.wind:
+                # Through Sylva's wind GLB: the armature, the skin and the "wind" action are
+                # the ones every other exporter writes (one model, docs/wind.md).
+                build.wind_tree_objects(context, tree, s, context.scene.cursor.location)
+                return {"FINISHED"}
         except (ImportError, ValueError, OSError) as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
@@ -182,6 +200,14 @@ class SYLVA_PT_panel(bpy.types.Panel):
         box.prop(s, "tree_preset")
         box.prop(s, "tree_file")
         box.prop(s, "seed")
+        box.prop(s, "wind")
+        if s.wind:
+            col = box.column(align=True)
+            col.prop(s, "wind_strength")
+            col.prop(s, "wind_gustiness")
+            col.prop(s, "wind_direction")
+            col.prop(s, "wind_bones")
+            col.prop(s, "wind_clip")
         box.operator(SYLVA_OT_grow_tree.bl_idname, icon="OUTLINER_OB_FORCE_FIELD")
         box = layout.box()
         box.label(text="Forest")

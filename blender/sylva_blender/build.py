@@ -1,6 +1,7 @@
 """Blender meshes ↔ Sylva: Sylva is Y-up, Blender Z-up; a Sylva point (x, y, z) is Blender's
 (x, -z, y)."""
 import os
+import tempfile
 
 import bpy
 import numpy as np
@@ -117,6 +118,42 @@ def tree_object(collection, name, mesh, mats):
     obj = bpy.data.objects.new(name, mesh_data(name, mesh, mats))
     collection.objects.link(obj)
     return obj
+
+
+def wind_tree_objects(context, tree, settings, location):
+    """A grown sylva tree with wind: written as Sylva's wind GLB (rig of at most
+    settings.wind_bones bones, skin, the looping "wind" clip) and imported with Blender's glTF
+    importer, so that the tree is an armature (its root at \p location) with the wind action
+    and the skinned mesh as its child. Returns the armature. The scene's frame range is widened
+    to the clip when shorter, so that playback shows a whole loop."""
+    import numpy
+    numpy.bool = bool  # Blender 3.4's glTF importer still uses the removed alias
+    d = settings.wind_direction
+    with tempfile.TemporaryDirectory(prefix="sylva-wind-") as folder:
+        glb = os.path.join(folder, "tree.glb")
+        tree.export(glb, wind=True, direction=(d[0], d[2], -d[1]),
+                    strength=settings.wind_strength, gustiness=settings.wind_gustiness,
+                    bones=settings.wind_bones, clip_length=settings.wind_clip)
+        before = set(bpy.data.objects)
+        bpy.ops.import_scene.gltf(filepath=glb)
+    new = [o for o in bpy.data.objects if o not in before]
+    armatures = [o for o in new if o.type == "ARMATURE"]
+    if len(armatures) != 1:
+        raise ValueError(f"the wind GLB gave {len(armatures)} armatures, expected one")
+    armature = armatures[0]
+    armature.name = tree.species
+    for obj in new:
+        if obj.parent is None:
+            obj.location = obj.location + location
+    action = armature.animation_data.action if armature.animation_data else None
+    if action is not None:
+        scene = context.scene
+        scene.frame_end = max(scene.frame_end, scene.frame_start + int(action.frame_range[1]
+                                                                       - action.frame_range[0]))
+    armature["sylva_species"] = tree.species
+    if tree.seed is not None:
+        armature["sylva_seed"] = str(tree.seed)
+    return armature
 
 
 def forest_collection(scene):

@@ -18,6 +18,7 @@
 #include "engine/mesh/season.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/wind/windmodel.h"
 
 namespace sylva::doc {
 
@@ -579,8 +580,8 @@ void Document::setDomain(int index, const PlacementDomain& d, bool commit) {
 }
 
 Document::Settings Document::settings() const {
-    return {mProject.seed, mProject.cameraPosition, mProject.cameraTarget, mProject.lightDirection,
-            mProject.season};
+    return {mProject.seed,           mProject.cameraPosition, mProject.cameraTarget,
+            mProject.lightDirection, mProject.season,         mProject.wind};
 }
 
 void Document::setSeed(std::uint64_t seed) {
@@ -629,6 +630,21 @@ void Document::setTreeSeason(TreeId id, const std::string& season) {
     setTree(id, t);
 }
 
+void Document::setWind(const std::optional<ProjectWind>& wind) {
+    if (wind) {
+        sylva::wind::WindSettings check;
+        check.direction = wind->direction;
+        check.strength = wind->strength;
+        check.gustiness = wind->gustiness;
+        check.frequency = wind->frequency;
+        sylva::wind::validate(check); // InvalidInput naming the setting and its allowed range
+    }
+    Settings s = settings();
+    s.wind = wind;
+    mUndo.push(cmd::changeSettings(*this, s, true,
+                                   QCoreApplication::translate("Commands", "Change wind")));
+}
+
 void Document::rawInsertObstacle(int index, const ProjectObstacle& o) {
     mProject.obstacles.insert(mProject.obstacles.begin() + index, o);
     pruneSelection();
@@ -669,6 +685,7 @@ void Document::rawSetSettings(const Settings& s) {
     mProject.cameraTarget = s.cameraTarget;
     mProject.lightDirection = s.lightDirection;
     mProject.season = s.season;
+    mProject.wind = s.wind;
     emitChange(DocumentChange::Settings);
 }
 

@@ -29,7 +29,7 @@ struct DocumentChange {
         Species = 1u << 1,   ///< a species' graph or grammar (`species`, `node`)
         Obstacles = 1u << 2, ///< an obstacle added, removed or transformed
         Domains = 1u << 3,   ///< a placement domain or its counts
-        Settings = 1u << 4,  ///< seed, camera, light or season
+        Settings = 1u << 4,  ///< seed, camera, light, season or wind
         Reset = 1u << 5,     ///< a new or opened document: everything
     };
     unsigned what = 0;
@@ -188,6 +188,9 @@ public:
     void setSeason(const std::string& season);
     /// A tree's own season (empty: the project's); one undo step like setTree.
     void setTreeSeason(TreeId id, const std::string& season);
+    /// Sets the project's wind (nullopt: unset, the engine's default, nothing saved); one undo
+    /// step. \throw InvalidInput naming the setting and its allowed range (wind::validate).
+    void setWind(const std::optional<ProjectWind>& wind);
 
     // --- selection (not undoable) ----------------------------------------------------------
     const QList<ItemRef>& selection() const { return mSelection; }
@@ -212,6 +215,7 @@ public:
         std::uint64_t seed = 0;
         glm::vec3 cameraPosition{0.0f}, cameraTarget{0.0f}, lightDirection{0.0f};
         std::string season; ///< Project::season
+        std::optional<ProjectWind> wind;
         bool operator==(const Settings&) const = default;
     };
     Settings settings() const;

@@ -25,6 +25,7 @@
 #include "engine/graph/graph.h"
 #include "engine/placement/placement.h"
 #include "engine/util/error.h"
+#include "engine/wind/windmodel.h"
 
 namespace sylva::python {
 
@@ -406,6 +407,50 @@ void bindForest(py::module_& m) {
             "camera", [](const Project& p) { return fromVec3(p.project.cameraPosition); },
             [](Project& p, const py::object& v) { p.project.cameraPosition = toVec3(v, "camera"); },
             "camera position for the level of detail (metres)")
+        .def_property(
+            "wind",
+            [](const Project& p) -> py::object {
+                const auto& w = p.project.wind;
+                if (!w) return py::none();
+                py::dict d;
+                d["direction"] = fromVec3(w->direction);
+                d["strength"] = w->strength;
+                d["gustiness"] = w->gustiness;
+                d["frequency"] = w->frequency;
+                return d;
+            },
+            [](Project& p, const py::object& v) {
+                if (v.is_none()) {
+                    p.project.wind.reset();
+                    return;
+                }
+                // Keys not given take the defaults; unknown keys are refused.
+                doc::ProjectWind w;
+                for (const auto& [key, value] : v.cast<py::dict>()) {
+                    const std::string k = key.cast<std::string>();
+                    if (k == "direction")
+                        w.direction = toVec3(value, "wind direction");
+                    else if (k == "strength")
+                        w.strength = value.cast<float>();
+                    else if (k == "gustiness")
+                        w.gustiness = value.cast<float>();
+                    else if (k == "frequency")
+                        w.frequency = value.cast<float>();
+                    else
+                        throw InvalidInput("unknown wind setting '" + k +
+                                           "' (direction, strength, gustiness, frequency)");
+                }
+                wind::WindSettings check;
+                check.direction = w.direction;
+                check.strength = w.strength;
+                check.gustiness = w.gustiness;
+                check.frequency = w.frequency;
+                wind::validate(check);
+                p.project.wind = w;
+            },
+            "the project's wind (docs/wind.md) as a dict (direction, strength 0..2, gustiness "
+            "0..1, frequency Hz 0.05..5), or None (unset: nothing saved); set a dict (missing "
+            "keys take the defaults) or None")
         .def_property_readonly("base_dir",
                                [](const Project& p) { return p.project.baseDir.toStdString(); })
         .def_property_readonly("species", [](const Project& p) { return speciesNames(p.project); })

@@ -16,6 +16,7 @@
 #include "document/speciesfile.h"
 #include "engine/export/lodchainexport.h"
 #include "engine/export/treeexport.h"
+#include "engine/export/windexport.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/lodchain.h"
 #include "engine/nodes/meshnodes.h"
@@ -56,7 +57,48 @@ struct GrownTree {
     std::shared_ptr<const mesh::Mesh> mesh;
     std::map<std::string, double> stats, timingsMs;
     graph::SpeciesTraits traits;
+    /// The graph it grew from (as it was then), so that a wind export of a tree grown without
+    /// wind data can grow the same tree again with it (generation is deterministic).
+    std::shared_ptr<const graph::SpeciesGraph> graph;
 };
+
+/// Sets wind_data (per-vertex node ids and wind channels, docs/wind.md) on every tube_mesh.
+void enableWindData(graph::Evaluator& evaluator) {
+    for (const graph::NodeDesc& node : evaluator.graph().nodes)
+        if (node.type == "tube_mesh") evaluator.setParam(node.id, "wind_data", sylva::Value(true));
+}
+
+/// The tree's mesh with wind data: its own when it has node ids, else the same tree grown again
+/// from its graph with wind_data on.
+std::shared_ptr<const mesh::Mesh> windMesh(const GrownTree& t, Progress& progress) {
+    if (t.mesh && t.mesh->node.size() == t.mesh->positions.size() && !t.mesh->positions.empty())
+        return t.mesh;
+    if (!t.graph) throw InvalidInput("this tree has no species graph to grow its wind data from");
+    graph::Evaluator e(*t.graph);
+    enableWindData(e);
+    const graph::NodeOutput& out = t.seed ? e.evaluate(*t.seed, progress) : e.evaluate(progress);
+    if (!out.mesh) throw InvalidInput("the species produces no mesh");
+    return out.mesh;
+}
+
+/// Wind settings from Python keyword arguments (None: the default), checked with their ranges.
+exporter::WindExportOptions windExportOptions(const py::object& direction,
+                                              const py::object& strength,
+                                              const py::object& gustiness,
+                                              const py::object& frequency, const py::object& bones,
+                                              const py::object& clipLength, const py::object& fps) {
+    exporter::WindExportOptions o;
+    if (!direction.is_none()) o.wind.direction = toVec3(direction, "direction");
+    if (!strength.is_none()) o.wind.strength = strength.cast<float>();
+    if (!gustiness.is_none()) o.wind.gustiness = gustiness.cast<float>();
+    if (!frequency.is_none()) o.wind.frequency = frequency.cast<float>();
+    if (!clipLength.is_none()) o.wind.period = clipLength.cast<float>();
+    if (!bones.is_none()) o.rig.maxBones = bones.cast<int>();
+    if (!fps.is_none()) o.rig.fps = fps.cast<float>();
+    wind::validate(o.wind);
+    wind::validate(o.rig);
+    return o;
+}
 
 py::dict nodeDict(const graph::NodeDesc& n) {
     py::dict d;
@@ -236,22 +278,53 @@ void bindSpecies(py::module_& m) {
             "height, DBH, crown width, wood volume, dry biomass, carbon and CO2 (kg)")
         .def(
             "export",
-            [](const GrownTree& t, const py::object& path, bool compact, bool fsync) {
+            [](const GrownTree& t, const py::object& path, bool compact, bool fsync, bool wind,
+               const py::object& direction, const py::object& strength, const py::object& gustiness,
+               const py::object& frequency, const py::object& bones, const py::object& clipLength,
+               const py::object& fps) {
                 const std::string p = toPath(path);
+                const bool obj = std::filesystem::path(p).extension() == ".obj";
+                std::optional<exporter::WindExportOptions> windOptions;
+                if (wind)
+                    windOptions = windExportOptions(direction, strength, gustiness, frequency,
+                                                    bones, clipLength, fps);
+                else if (!direction.is_none() || !strength.is_none() || !gustiness.is_none() ||
+                         !frequency.is_none() || !bones.is_none() || !clipLength.is_none() ||
+                         !fps.is_none())
+                    throw InvalidInput("wind settings need wind=True");
                 std::vector<std::string> written;
                 {
                     py::gil_scoped_release release;
-                    exporter::TreeExporter exporter(p, {fsync, compact});
-                    exporter.add(
-                        {exporter::ExportTree{exporter::objectNameFor(t.species), t.mesh}});
-                    for (const auto& f : exporter.commit())
-                        written.push_back(f.string());
+                    const std::string name = exporter::objectNameFor(t.species);
+                    // As `sylva-cli tree --wind`: .glb/.gltf/.fbx through the wind exporter (rig,
+                    // clip, _WIND* data); an OBJ as without wind plus its .wind.csv table.
+                    if (!wind || obj) {
+                        exporter::TreeExporter exporter(p, {fsync, compact});
+                        exporter.add({exporter::ExportTree{name, t.mesh}});
+                        for (const auto& f : exporter.commit())
+                            written.push_back(f.string());
+                    }
+                    if (wind) {
+                        if (!t.skeleton) throw InvalidInput("a wind export needs the skeleton");
+                        exporter::WindExporter windExporter(p, *windOptions);
+                        windExporter.add({{name, windMesh(t, noProgress()), t.skeleton}});
+                        for (const auto& f : windExporter.commit())
+                            written.push_back(f.string());
+                    }
                 }
                 return written;
             },
             py::arg("path"), py::arg("compact") = false, py::arg("fsync") = false,
+            py::arg("wind") = false, py::arg("direction") = py::none(),
+            py::arg("strength") = py::none(), py::arg("gustiness") = py::none(),
+            py::arg("frequency") = py::none(), py::arg("bones") = py::none(),
+            py::arg("clip_length") = py::none(), py::arg("fps") = py::none(),
             "writes the tree as `sylva-cli tree` does (by extension: .obj + .mtl + textures, "
-            ".glb, .gltf, .fbx); returns the paths written")
+            ".glb, .gltf, .fbx); returns the paths written. wind=True writes it as "
+            "`sylva-cli tree --wind`: a rig of at most `bones` bones (default 64), skin weights, "
+            "a looping clip 'wind' of `clip_length` s (default 4) at `fps` (30), the _WIND* "
+            "vertex data and <stem>.wind.csv; direction (x, y, z), strength (0..2), gustiness "
+            "(0..1) and frequency (Hz, 0.05..5) are the wind's (docs/wind.md)")
         .def("__repr__", [](const GrownTree& t) {
             return "<sylva.GrownTree " + t.species + ": " +
                    std::to_string(t.mesh ? t.mesh->vertexCount() : 0) + " vertices>";
@@ -324,7 +397,7 @@ void bindSpecies(py::module_& m) {
         .def(
             "grow",
             [](Species& s, std::optional<std::uint64_t> seed, const py::object& progress,
-               const py::object& season) {
+               const py::object& season, bool wind) {
                 PyProgress p(progress);
                 GrownTree t;
                 t.species = s.graph().name;
@@ -351,8 +424,16 @@ void bindSpecies(py::module_& m) {
                             if (graph) species.evaluator->setGraph(std::move(*graph));
                         }
                     } restore{s, own};
-                    const graph::NodeOutput& out =
-                        seed ? s.evaluator->evaluate(*seed, p) : s.evaluator->evaluate(p);
+                    t.graph = std::make_shared<const graph::SpeciesGraph>(s.graph());
+                    // wind=True grows with wind data for this tree only: the species' graph
+                    // (and its cached results) comes back afterwards.
+                    std::optional<graph::Evaluator> windy;
+                    if (wind) {
+                        windy.emplace(s.graph());
+                        enableWindData(*windy);
+                    }
+                    graph::Evaluator& e = windy ? *windy : *s.evaluator;
+                    const graph::NodeOutput& out = seed ? e.evaluate(*seed, p) : e.evaluate(p);
                     if (!out.mesh)
                         throw InvalidInput("the species' output node '" + s.graph().output +
                                            "' produces no mesh; end the graph with a tube_mesh "
@@ -365,10 +446,12 @@ void bindSpecies(py::module_& m) {
                 return t;
             },
             py::arg("seed") = py::none(), py::arg("progress") = py::none(),
-            py::arg("season") = py::none(),
-            "grows one tree (as `sylva-cli tree [--seed S] [--season NAME]`), the GIL released; "
-            "without a seed the generators use their own (a grammar's `seed:`); season: "
-            "'spring', 'summer', 'autumn' or 'winter' (None: the species' own)")
+            py::arg("season") = py::none(), py::arg("wind") = false,
+            "grows one tree (as `sylva-cli tree [--seed S] [--season NAME] [--wind]`), the GIL "
+            "released; without a seed the generators use their own (a grammar's `seed:`); season: "
+            "'spring', 'summer', 'autumn' or 'winter' (None: the species' own); wind=True grows it "
+            "with the per-vertex wind data (as `--wind`), so that export(wind=True) need not grow "
+            "it again")
         .def(
             "write_lods",
             [](Species& s, const py::object& folderArg, std::optional<std::uint64_t> seed,

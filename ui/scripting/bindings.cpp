@@ -403,6 +403,37 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 document().setLight(toVec3(direction, "direction"));
             },
             py::arg("direction"))
+        .def(
+            "set_wind",
+            [](DocumentApi&, py::object direction, py::object strength, py::object gustiness,
+               py::object frequency) {
+                // Settings not given keep the project's (or, when it has none, the default's).
+                doc::ProjectWind w = document().project().wind.value_or(doc::ProjectWind{});
+                if (!direction.is_none()) w.direction = toVec3(direction, "direction");
+                if (!strength.is_none()) w.strength = strength.cast<float>();
+                if (!gustiness.is_none()) w.gustiness = gustiness.cast<float>();
+                if (!frequency.is_none()) w.frequency = frequency.cast<float>();
+                document().setWind(w);
+            },
+            py::arg("direction") = py::none(), py::arg("strength") = py::none(),
+            py::arg("gustiness") = py::none(), py::arg("frequency") = py::none(),
+            "Sets the project's wind (one undo step); settings not given are kept.")
+        .def(
+            "clear_wind", [](DocumentApi&) { document().setWind(std::nullopt); },
+            "Unsets the project's wind (the engine's default; nothing saved); one undo step.")
+        .def(
+            "wind",
+            [](DocumentApi&) -> py::object {
+                const auto& w = document().project().wind;
+                if (!w) return py::none();
+                py::dict d;
+                d["direction"] = fromVec3(w->direction);
+                d["strength"] = w->strength;
+                d["gustiness"] = w->gustiness;
+                d["frequency"] = w->frequency;
+                return d;
+            },
+            "The project's wind as a dict (direction, strength, gustiness, frequency), or None.")
         .def("undo", [](DocumentApi&) { document().undoStack()->undo(); })
         .def("redo", [](DocumentApi&) { document().undoStack()->redo(); })
         .def("undo_count", [](DocumentApi&) { return document().undoStack()->index(); })

@@ -152,6 +152,52 @@ TEST_F(DocumentTest, DragsMergeAndNoOpEditsLeaveNoStep) {
     EXPECT_EQ(mDoc.undoStack()->index(), before);
 }
 
+TEST_F(DocumentTest, WindIsOneUndoableStepWithExactBytes) {
+    const QByteArray original = bytes();
+    ASSERT_FALSE(mDoc.project().wind.has_value());
+    QList<doc::DocumentChange> changes;
+    QObject::connect(&mDoc, &Document::changed,
+                     [&](const doc::DocumentChange& c) { changes << c; });
+    doc::ProjectWind wind;
+    wind.direction = {0.0f, 0.0f, -1.0f};
+    wind.strength = 1.25f;
+    wind.gustiness = 0.7f;
+    const int steps = mDoc.undoStack()->count();
+    mDoc.setWind(wind);
+    EXPECT_EQ(mDoc.undoStack()->count(), steps + 1);
+    ASSERT_TRUE(mDoc.project().wind.has_value());
+    EXPECT_EQ(*mDoc.project().wind, wind);
+    EXPECT_FALSE(changes.isEmpty());
+    EXPECT_TRUE(changes.last().what & doc::DocumentChange::Settings);
+    const QByteArray windy = bytes();
+    EXPECT_NE(windy.indexOf("\"wind\""), -1);
+    // Setting the same wind again leaves no step.
+    mDoc.setWind(wind);
+    EXPECT_EQ(mDoc.undoStack()->count(), steps + 1);
+    mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), original); // an unset wind is not written: the exact bytes come back
+    EXPECT_FALSE(mDoc.project().wind.has_value());
+    mDoc.undoStack()->redo();
+    EXPECT_EQ(bytes(), windy);
+    // Unsetting is an edit too.
+    mDoc.setWind(std::nullopt);
+    EXPECT_EQ(bytes(), original);
+    mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), windy);
+    // Out of range: a clear error naming the range, nothing changed.
+    doc::ProjectWind storm = wind;
+    storm.strength = 3.0f;
+    const int before = mDoc.undoStack()->count();
+    try {
+        mDoc.setWind(storm);
+        ADD_FAILURE() << "a strength of 3 was accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("strength"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(mDoc.undoStack()->count(), before);
+    EXPECT_EQ(bytes(), windy);
+}
+
 TEST_F(DocumentTest, BadEditsThrowAndChangeNothing) {
     const QByteArray original = bytes();
     const int steps = mDoc.undoStack()->count();

@@ -21,6 +21,9 @@ echo "-- api_edits.py"
 echo "-- api_species.py"
 "$SYLVA" --discard-autosave --script "$HERE/api_species.py" "$DEMO" || fail "api_species.py"
 
+echo "-- api_wind.py"
+"$SYLVA" --discard-autosave --script "$HERE/api_wind.py" "$DEMO" || fail "api_wind.py"
+
 echo "-- project_layout.py (win.project() before the first layout)"
 "$SYLVA" --discard-autosave --script "$HERE/project_layout.py" "$DEMO" || fail "project_layout.py"
 

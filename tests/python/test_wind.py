@@ -1,0 +1,79 @@
+"""sylva wind (#31): tree.export(path, wind=True) writes a GLB with a skin and a looping
+animation (read from the GLB's own JSON chunk), the same bytes as `sylva-cli tree --wind`,
+settings checked with their ranges; the project's wind is readable and settable."""
+import json
+import struct
+
+import pytest
+
+import sylva
+
+
+def glb_json(path):
+    data = path.read_bytes()
+    magic, version, length = struct.unpack_from("<4sII", data, 0)
+    assert magic == b"glTF" and version == 2 and length == len(data)
+    chunk_length, chunk_type = struct.unpack_from("<II", data, 12)
+    assert chunk_type == 0x4E4F534A  # JSON
+    return json.loads(data[20:20 + chunk_length])
+
+
+def test_wind_glb_has_skin_and_animation(presets, tmp_path, cli):
+    species = sylva.load_species(presets / "ternary-tree.json")
+    tree = species.grow(seed=3)  # grown without wind data: export grows it again with it
+    out = tmp_path / "wind.glb"
+    written = tree.export(out, wind=True, bones=12, clip_length=2.0, strength=1.0)
+    assert written[0] == str(out)
+    doc = glb_json(out)
+    assert len(doc["skins"]) == 1
+    joints = doc["skins"][0]["joints"]
+    assert 2 <= len(joints) <= 12
+    (anim,) = doc["animations"]
+    assert anim["name"] == "wind" and anim["channels"]
+    times = doc["accessors"][anim["samplers"][0]["input"]]
+    assert times["min"][0] == pytest.approx(0.0) and times["max"][0] == pytest.approx(2.0)
+    prim = doc["meshes"][0]["primitives"][0]
+    assert "JOINTS_0" in prim["attributes"] and "WEIGHTS_0" in prim["attributes"]
+    assert any(a.startswith("_WIND") for a in prim["attributes"])
+    # The same tree grown with wind data, and sylva-cli, write the same bytes.
+    again = tmp_path / "again.glb"
+    species.grow(seed=3, wind=True).export(again, wind=True, bones=12, clip_length=2.0,
+                                           strength=1.0)
+    assert again.read_bytes() == out.read_bytes()
+    by_cli = tmp_path / "cli.glb"
+    cli("tree", presets / "ternary-tree.json", "--seed", 3, "-o", by_cli, "--wind",
+        "--bones", 12, "--clip-length", 2, "--wind-strength", 1)
+    assert by_cli.read_bytes() == out.read_bytes()
+    # Without wind: no skin, no animation.
+    still = tmp_path / "still.glb"
+    tree.export(still)
+    assert "skins" not in glb_json(still) and "animations" not in glb_json(still)
+
+
+def test_wind_settings_are_checked(presets, tmp_path):
+    tree = sylva.load_species(presets / "ternary-tree.json").grow(seed=3)
+    with pytest.raises(ValueError, match="strength"):
+        tree.export(tmp_path / "x.glb", wind=True, strength=5)
+    with pytest.raises(ValueError, match="wind=True"):
+        tree.export(tmp_path / "x.glb", strength=1)
+    assert not (tmp_path / "x.glb").exists()
+
+
+def test_project_wind(tmp_path):
+    project = sylva.Project(seed=1, base_dir=tmp_path)
+    assert project.wind is None
+    project.wind = {"direction": (0, 0, 1), "strength": 1.5}
+    w = project.wind
+    assert w["direction"] == (0.0, 0.0, 1.0) and w["strength"] == 1.5
+    assert w["gustiness"] == pytest.approx(0.3)  # not given: the default
+    with pytest.raises(ValueError, match="gustiness"):
+        project.wind = {"gustiness": 2}
+    with pytest.raises(ValueError, match="unknown wind setting"):
+        project.wind = {"speed": 1}
+    assert project.wind["strength"] == 1.5
+    path = tmp_path / "p.sylva"
+    project.save(path)
+    assert json.loads(path.read_text())["wind"]["strength"] == 1.5
+    project.wind = None
+    project.save(path)
+    assert "wind" not in json.loads(path.read_text())
