@@ -162,6 +162,13 @@ TEST(UsdStageWriter, WritesInstancersUniqueMeshesAndMaterials) {
     EXPECT_NE(text.find("rel material:binding = </Forest/Materials/leaf>"), std::string::npos);
     EXPECT_NE(text.find("float inputs:opacityThreshold = 0.5"), std::string::npos);
     EXPECT_NE(text.find("asset inputs:file = @textures/leaf.png@"), std::string::npos);
+    // The normal and roughness maps (issue 33) feed the surface, read raw, the normal remapped.
+    EXPECT_NE(text.find("asset inputs:file = @textures/leaf_normal.png@"), std::string::npos);
+    EXPECT_NE(text.find("asset inputs:file = @textures/bark_roughness.png@"), std::string::npos);
+    EXPECT_EQ(count(text, "normal3f inputs:normal.connect = </Forest/Materials/"), 2u);
+    EXPECT_EQ(count(text, "float inputs:roughness.connect = </Forest/Materials/"), 2u);
+    EXPECT_EQ(count(text, "float4 inputs:bias = (-1, -1, -1, 0)"), 2u);
+    EXPECT_EQ(count(text, "token inputs:sourceColorSpace = \"raw\""), 4u);
     EXPECT_EQ(w.stats().instances, 6u);
     EXPECT_EQ(w.stats().uniqueTrees, 2u);
     EXPECT_EQ(w.stats().prototypes, 3u);

@@ -570,8 +570,19 @@ void UsdStageWriter::writeMaterials() {
                 "                float inputs:opacity.connect = <" + path + "/Diffuse.outputs:a>\n";
             out += "                float inputs:opacityThreshold = 0.5\n";
         }
-        out += m->twoSided ? "                float inputs:roughness = 0.6\n"
-                           : "                float inputs:roughness = 0.9\n";
+        // The species' maps (docs/geometry.md): a tangent-space normal map, OpenGL's +Y up as
+        // UsdPreviewSurface expects, and a grey roughness map; a constant where there is none.
+        const bool normalMap = textured && !m->normalTexture.empty();
+        const bool roughnessMap = textured && !m->roughnessTexture.empty();
+        if (normalMap)
+            out += "                normal3f inputs:normal.connect = <" + path +
+                   "/Normal.outputs:rgb>\n";
+        if (roughnessMap)
+            out += "                float inputs:roughness.connect = <" + path +
+                   "/Roughness.outputs:r>\n";
+        else
+            out += m->twoSided ? "                float inputs:roughness = 0.6\n"
+                               : "                float inputs:roughness = 0.9\n";
         out += "                token outputs:surface\n            }\n";
         if (textured) {
             out += "\n            def Shader \"Diffuse\"\n            {\n";
@@ -589,7 +600,28 @@ void UsdStageWriter::writeMaterials() {
             out += "                token inputs:wrapS = \"repeat\"\n";
             out += "                token inputs:wrapT = \"repeat\"\n";
             out += "                float outputs:a\n                float3 outputs:rgb\n";
-            out += "            }\n\n            def Shader \"St\"\n            {\n";
+            out += "            }\n";
+            // Data maps are read raw; the normal map's 0..1 becomes -1..1.
+            auto dataMap = [&](const char* shader, const std::string& file, bool normal) {
+                out += std::string("\n            def Shader \"") + shader + "\"\n            {\n";
+                out += "                uniform token info:id = \"UsdUVTexture\"\n";
+                out += "                asset inputs:file = @" + file + "@\n";
+                out += "                token inputs:sourceColorSpace = \"raw\"\n";
+                if (normal) {
+                    out += "                float4 inputs:scale = (2, 2, 2, 1)\n";
+                    out += "                float4 inputs:bias = (-1, -1, -1, 0)\n";
+                }
+                out +=
+                    "                float2 inputs:st.connect = <" + path + "/St.outputs:result>\n";
+                out += "                token inputs:wrapS = \"repeat\"\n";
+                out += "                token inputs:wrapT = \"repeat\"\n";
+                out += normal ? "                float3 outputs:rgb\n"
+                              : "                float outputs:r\n";
+                out += "            }\n";
+            };
+            if (normalMap) dataMap("Normal", m->normalTexture, true);
+            if (roughnessMap) dataMap("Roughness", m->roughnessTexture, false);
+            out += "\n            def Shader \"St\"\n            {\n";
             out += "                uniform token info:id = \"UsdPrimvarReader_float2\"\n";
             out += "                string inputs:varname = \"st\"\n";
             out += "                float2 outputs:result\n            }\n";
