@@ -15,8 +15,10 @@ using Influences = std::vector<std::pair<std::int32_t, float>>;
 void addScaled(Influences& into, const Influences& from, float scale) {
     if (scale <= 0.0f) return;
     for (const auto& [joint, w] : from) {
+        // A copy: clang 14 cannot capture a structured binding in a lambda.
+        const std::int32_t id = joint;
         auto it =
-            std::find_if(into.begin(), into.end(), [&](const auto& x) { return x.first == joint; });
+            std::find_if(into.begin(), into.end(), [&](const auto& x) { return x.first == id; });
         if (it == into.end())
             into.emplace_back(joint, w * scale);
         else
