@@ -7,6 +7,7 @@
 
 #include "engine/export/gltf/gltfbuilder.h"
 #include "engine/export/gltf/gltfmesh.h"
+#include "engine/export/lodexport.h"
 #include "engine/export/materials.h"
 #include "engine/export/objwriter.h"
 #include "engine/export/sceneexport.h"
@@ -19,16 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
-
-std::string fileSafe(const std::string& name) {
-    std::string s = name;
-    for (char& c : s) {
-        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                        (c >= '0' && c <= '9') || c == '-' || c == '_';
-        if (!ok) c = '_';
-    }
-    return s;
-}
 
 Json vec3(const glm::vec3& v) {
     return Json::array({gltf::tidy(v.x), gltf::tidy(v.y), gltf::tidy(v.z)});
@@ -68,7 +59,7 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
                         std::vector<fs::path>& written) {
     if (species.empty()) throw InvalidInput("LOD export needs a species name");
     if (chain.levels.empty()) throw InvalidInput("LOD export needs at least one level");
-    const std::string base = fileSafe(species);
+    const std::string base = fileSafeName(species);
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());

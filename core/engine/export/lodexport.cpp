@@ -9,9 +9,7 @@
 
 namespace sylva::exporter {
 
-namespace {
-
-std::string fileSafe(const std::string& name) {
+std::string fileSafeName(const std::string& name) {
     std::string s = name;
     for (char& c : s) {
         const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
@@ -21,14 +19,12 @@ std::string fileSafe(const std::string& name) {
     return s;
 }
 
-} // namespace
-
 LodChainFiles writeLodChain(const std::filesystem::path& dir, const std::string& species,
                             const std::vector<mesh::LodChainLevel>& chain,
                             const LodExportOptions& options) {
     if (species.empty()) throw InvalidInput("LOD export needs a species name");
     if (chain.empty()) throw InvalidInput("LOD export needs at least one level");
-    const std::string base = fileSafe(species);
+    const std::string base = fileSafeName(species);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw IoError("cannot create " + dir.string() + ": " + ec.message());

@@ -12,6 +12,10 @@
 namespace sylva::exporter {
 
 /// One written level of a LOD chain.
+/// \p name with every character but letters, digits, '-' and '_' replaced by '_': the stem
+/// the LOD writers give their files.
+std::string fileSafeName(const std::string& name);
+
 struct LodFileLevel {
     std::string name;          ///< "<species>_LOD<i>": OBJ object and glTF node name
     double distance = 0.0;     ///< metres from the camera where the level starts

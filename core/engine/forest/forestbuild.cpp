@@ -403,12 +403,16 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             ForestVariant& variant = variants[slot];
             try {
                 progress.checkCancelled();
+                // Levels only where instances are meshed per tree: writers that instance
+                // (meshInstances off) take the variant mesh itself, and wind exports skin the
+                // full mesh once (the levels carry no wind data).
+                const bool levelsWanted =
+                    options.useLod && options.meshInstances && !options.windData;
                 std::uint64_t cacheKey = 0;
                 if (options.cache) {
-                    cacheKey =
-                        mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),
-                                (options.buildMeshes ? (options.useLod ? 0x4C : 0x4D) : 0x53) +
-                                    (options.windData ? 0x100 : 0));
+                    cacheKey = mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),
+                                       (options.buildMeshes ? (levelsWanted ? 0x4C : 0x4D) : 0x53) +
+                                           (options.windData ? 0x100 : 0));
                     cacheKey = mixSeed(
                         cacheKey, static_cast<std::uint64_t>(meshSettings[variant.species].season));
                     if (std::optional<ForestVariant> cached =
@@ -449,9 +453,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                         variant.mesh = std::make_shared<const mesh::Mesh>(
                             mesh::buildTreeMesh(*variant.skeleton, settings));
                     }
-                    // Wind exports skin the variant's full mesh once and share it (one rig per
-                    // variant): the distance levels carry no wind data, so none are made.
-                    if (options.useLod && !options.windData)
+                    if (levelsWanted)
                         variant.levels =
                             mesh::buildDistanceLevels(*variant.skeleton, settings, variant.mesh);
                     cpuMesh[thread] += msSince(t);

@@ -64,7 +64,8 @@ struct ForestVariant {
     forest::TreeMetrics metrics; ///< at scale 1
     /// With ForestOptions::useLod: the variant's levels of detail, made once (level 0 = mesh;
     /// mesh::buildDistanceLevels); an instance seen from d metres at scale s draws
-    /// mesh::levelFor(levels, d / s). Empty without useLod.
+    /// mesh::levelFor(levels, d / s). Empty without useLod, with meshInstances off (instancing
+    /// writers) or with windData.
     std::vector<mesh::DistanceLevel> levels;
 };
 using VariantSink = std::function<void(const std::vector<ForestVariant>&)>;

@@ -4,27 +4,37 @@
 
 namespace sylva::mesh {
 
+CardSpan growForCards(Mesh& out, std::size_t cards) {
+    CardSpan span;
+    span.firstVertex = out.positions.size();
+    span.firstIndex = out.indices.size();
+    if (out.submeshes.empty() && span.firstIndex > 0)
+        out.submeshes.push_back({"bark", 0, static_cast<std::uint32_t>(span.firstIndex)});
+    const std::size_t nv = span.firstVertex + 4 * cards;
+    out.positions.resize(nv);
+    out.normals.resize(nv, glm::vec3(0, 1, 0));
+    out.uvs.resize(nv, glm::vec2(0.0f));
+    span.wind = !out.branchOrder.empty();
+    if (span.wind) {
+        out.branchOrder.resize(nv, 0);
+        out.flexibility.resize(nv, 1.0f);
+    }
+    span.ids = !out.node.empty();
+    if (span.ids) out.node.resize(nv, Mesh::kNoNode);
+    out.indices.resize(span.firstIndex + 6 * cards);
+    return span;
+}
+
 void appendLeafCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
                      const LeafCardSettings& settings, const skel::Skeleton* skeleton) {
     requireRange("leaf_aspect", settings.aspect, 1e-6, 4.0);
     requireRange("leaf_scale", settings.sizeScale, 1e-6, 100.0);
     if (leaves.empty()) return;
-    const std::size_t v0 = out.positions.size();
-    const std::size_t i0 = out.indices.size();
-    if (out.submeshes.empty() && i0 > 0)
-        out.submeshes.push_back({"bark", 0, static_cast<std::uint32_t>(i0)});
-    const std::size_t nv = v0 + 4 * leaves.size();
-    out.positions.resize(nv);
-    out.normals.resize(nv, glm::vec3(0, 1, 0));
-    out.uvs.resize(nv, glm::vec2(0.0f));
-    const bool wind = !out.branchOrder.empty();
-    if (wind) {
-        out.branchOrder.resize(nv, 0);
-        out.flexibility.resize(nv, 1.0f);
-    }
-    const bool ids = !out.node.empty();
-    if (ids) out.node.resize(nv, Mesh::kNoNode);
-    out.indices.resize(i0 + 6 * leaves.size());
+    const CardSpan span = growForCards(out, leaves.size());
+    const std::size_t v0 = span.firstVertex;
+    const std::size_t i0 = span.firstIndex;
+    const bool wind = span.wind;
+    const bool ids = span.ids;
     const auto aspect = static_cast<float>(settings.aspect);
     const auto scale = static_cast<float>(settings.sizeScale);
     static const glm::vec2 kUv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};

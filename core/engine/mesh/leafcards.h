@@ -22,4 +22,13 @@ struct LeafCardSettings {
 void appendLeafCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
                      const LeafCardSettings& settings, const skel::Skeleton* skeleton = nullptr);
 
+/// Where appended cards go: \p out grown by \p cards quads (4 vertices, 6 indices each; the
+/// bark submesh closed first, wind and node attributes extended when the mesh carries them).
+struct CardSpan {
+    std::size_t firstVertex = 0, firstIndex = 0;
+    bool wind = false; ///< the mesh carries branchOrder / flexibility
+    bool ids = false;  ///< the mesh carries Mesh::node
+};
+CardSpan growForCards(Mesh& out, std::size_t cards);
+
 } // namespace sylva::mesh

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "engine/mesh/leafcards.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
@@ -212,22 +213,11 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         }
         groups = std::move(kept);
     }
-    const std::size_t v0 = out.positions.size();
-    const std::size_t i0 = out.indices.size();
-    if (out.submeshes.empty() && i0 > 0)
-        out.submeshes.push_back({"bark", 0, static_cast<std::uint32_t>(i0)});
-    const std::size_t nv = v0 + 4 * groups.size();
-    out.positions.resize(nv);
-    out.normals.resize(nv, glm::vec3(0, 1, 0));
-    out.uvs.resize(nv, glm::vec2(0.0f));
-    const bool wind = !out.branchOrder.empty();
-    if (wind) {
-        out.branchOrder.resize(nv, 0);
-        out.flexibility.resize(nv, 1.0f);
-    }
-    const bool ids = !out.node.empty();
-    if (ids) out.node.resize(nv, Mesh::kNoNode);
-    out.indices.resize(i0 + 6 * groups.size());
+    const CardSpan span = growForCards(out, groups.size());
+    const std::size_t v0 = span.firstVertex;
+    const std::size_t i0 = span.firstIndex;
+    const bool wind = span.wind;
+    const bool ids = span.ids;
     Rng rng(mixSeed(clusters.seed, salt::kLeafClusters));
     // A texel of inset keeps a tile's neighbours out of its bilinear footprint.
     constexpr float kInset = 0.004f;
