@@ -70,6 +70,12 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
         mSharpNext = true;
         update();
     });
+    mWindTimer = new QTimer(this);
+    // About 60 frames a second at most while the wind clock runs; a slower renderer draws
+    // as fast as it can (updates coalesce).
+    mWindTimer->setInterval(16);
+    connect(mWindTimer, &QTimer::timeout, this, [this] { update(); });
+    mWindClock.start();
     mLod = new ViewLod(this);
     connect(mLod, &ViewLod::levelsReady, this, [this] {
         mTreesDirty = true;
@@ -129,9 +135,11 @@ bool Viewport::event(QEvent* event) {
 }
 
 void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame,
-                       std::shared_ptr<const std::vector<ViewVertex>> vertices) {
+                       std::shared_ptr<const std::vector<ViewVertex>> vertices,
+                       std::shared_ptr<const skel::Skeleton> skeleton) {
     mMesh = std::move(mesh);
     mMeshVertices = std::move(vertices);
+    mMeshSkeleton = std::move(skeleton);
     mVertexColors.clear();
     mMeshDirty = true;
     updateBounds();
@@ -180,6 +188,50 @@ void Viewport::setGridVisible(bool visible) {
     update();
 }
 
+void Viewport::setWindEnabled(bool on) {
+    if (on == mWindOn) return;
+    mWindOn = on;
+    updateWindTimer();
+    update();
+}
+
+void Viewport::setWind(const wind::WindSettings& settings) {
+    // Keeps the clock where it is: the trees go on from their pose into the new wind.
+    mWind = settings;
+    updateWindTimer();
+    update();
+}
+
+void Viewport::setWindTime(std::optional<double> seconds) {
+    if (!seconds) {
+        if (mWindFixed) {
+            mWindClockStart = *mWindFixed;
+            mWindClock.restart();
+        }
+        mWindFixed.reset();
+    } else {
+        mWindFixed = *seconds;
+    }
+    updateWindTimer();
+    update();
+}
+
+double Viewport::windTime() const {
+    return mWindFixed ? *mWindFixed : mWindClockStart + double(mWindClock.nsecsElapsed()) * 1e-9;
+}
+
+void Viewport::updateWindTimer() {
+    const bool run = mWindOn && !mWindFixed && mWind.strength > 0.0f;
+    if (run && !mWindTimer->isActive())
+        mWindTimer->start();
+    else if (!run)
+        mWindTimer->stop();
+}
+
+wind::WindFrame Viewport::windFrameAt(float phase) const {
+    return wind::windFrame(mWind, mPaintWindTime + double(phase) * double(mWind.period));
+}
+
 float Viewport::aspect() const {
     return height() > 0 ? float(width()) / float(height()) : 1.0f;
 }
@@ -209,6 +261,7 @@ void Viewport::initializeGL() {
         QByteArray defines;
         if (v & kMeshTextured) defines += "#define TEXTURED 1\n";
         if (v & kMeshCutout) defines += "#define CUTOUT 1\n";
+        if (v & kMeshWind) defines += "#define WIND 1\n";
         mMeshPrograms[v] = buildShaderProgram(QStringLiteral("mesh.vert"),
                                               QStringLiteral("mesh.frag"), mGlError, defines);
         meshOk = mMeshPrograms[v] != nullptr;
@@ -254,7 +307,7 @@ void Viewport::uploadMesh() {
     mMeshDirty = false;
     const std::vector<ViewVertex>* prepared = mMeshVertices ? mMeshVertices.get() : nullptr;
     // A bad index would make the driver read out of bounds; refuse the mesh instead.
-    if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared))
+    if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared, mMeshSkeleton))
         mGlError = tr("The mesh has an index out of range; it is not drawn.");
 }
 
@@ -367,14 +420,18 @@ void Viewport::updateBounds() {
 
 void Viewport::syncTreeBuffers() {
     mTreesDirty = false;
-    std::vector<std::shared_ptr<const mesh::Mesh>> all;
+    // Each mesh with the skeleton it was made from (its wind data); a tree's levels share it.
+    std::vector<TreeBuffers::Source> all;
     for (const ViewTree& t : mTrees)
-        all.push_back(t.mesh);
+        all.push_back({t.mesh, t.lod.skeleton});
     for (const ViewTree& t : mPreview)
-        all.push_back(t.mesh);
+        all.push_back({t.mesh, t.lod.skeleton});
     const std::size_t treeMeshes = all.size();
+    for (const ViewTree& t : mTrees)
+        for (std::shared_ptr<const mesh::Mesh>& level : mLod->levelMeshesOf(t.mesh.get()))
+            all.push_back({std::move(level), t.lod.skeleton});
     for (std::shared_ptr<const mesh::Mesh>& level : mLod->allLevelMeshes())
-        all.push_back(std::move(level));
+        all.push_back({std::move(level), nullptr}); // listed above unless its tree is gone
     mBuffers.sync(all, treeMeshes, mUploads, mLevelUploads);
     std::set<Impostors::Key> keys;
     for (const ViewTree& t : mTrees)
@@ -449,6 +506,8 @@ void Viewport::paintGL() {
     mDrawnMotion = 0;
     mDrawnPerLevel.fill(0);
     mImpostorDrawCalls = 0;
+    mDrawnWindTriangles = 0;
+    mPaintWindTime = windTime();
     const std::vector<DrawRange>& sceneRanges = mBuffers.sceneRanges();
     if (!sceneRanges.empty() || mBuffers.hasTrees()) {
         MeshUniforms u;
@@ -456,12 +515,18 @@ void Viewport::paintGL() {
         u.eye = mCamera.eye();
         u.light = light;
         u.vertexColor = mBuffers.sceneVertexColors();
+        u.wind = windFrameAt(0.0f);
         setMeshUniforms(u);
         glActiveTexture(GL_TEXTURE0);
         glBindVertexArray(mBuffers.sceneVao());
+        mDrawWind = windActive() && mBuffers.sceneWindElements() != 0;
+        if (mDrawWind) bindWindElements(mBuffers.sceneWindElements());
         drawRanges(sceneRanges);
-        for (const DrawRange& r : sceneRanges)
+        for (const DrawRange& r : sceneRanges) {
             mDrawnTriangles += r.indexCount / 3;
+            if (mDrawWind) mDrawnWindTriangles += r.indexCount / 3;
+        }
+        mDrawWind = false;
         u.vertexColor = false;
         setMeshUniforms(u);
         // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
@@ -482,10 +547,10 @@ void Viewport::paintGL() {
                 mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
             ++mDrawnPerLevel[std::size_t(used)];
             mDrawnMotion += motion ? 1 : 0;
-            drawTreeMesh(*drawn, t.transform, highlight);
+            drawTreeMesh(*drawn, t.transform, highlight, t.windPhase);
         }
         for (const ViewTree& t : mPreview)
-            if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f);
+            if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f, t.windPhase);
         if (!cards.empty()) {
             mImpostors.begin(viewProj, mCamera.eye(), light);
             for (const TreeDraw* d : cards) {
@@ -515,17 +580,32 @@ void Viewport::setBand(const QRect& band) {
     update();
 }
 
-void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight) {
+void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight,
+                            float windPhase) {
     const TreeBuffers::GpuMesh* gpu = mBuffers.find(&m);
     if (!gpu) return;
     MeshUniforms u = mMeshUniforms;
     u.model = transform;
     u.highlight = highlight;
+    mDrawWind = windActive() && gpu->windElements != 0;
+    if (mDrawWind) {
+        u.wind = windFrameAt(windPhase);
+        bindWindElements(gpu->windElements);
+    }
     setMeshUniforms(u);
     glBindVertexArray(gpu->vao);
     drawRanges(gpu->ranges);
-    for (const DrawRange& r : gpu->ranges)
+    for (const DrawRange& r : gpu->ranges) {
         mDrawnTriangles += r.indexCount / 3;
+        if (mDrawWind) mDrawnWindTriangles += r.indexCount / 3;
+    }
+    mDrawWind = false;
+}
+
+void Viewport::bindWindElements(GLuint texture) {
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_BUFFER, texture);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
@@ -602,6 +682,16 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
         program.setUniformValue("uHighlight", u.highlight);
         program.setUniformValue("uTexture", 0);
         program.setUniformValue("uNormalMap", 1);
+        if (variant & kMeshWind) {
+            const wind::WindFrame& w = u.wind;
+            program.setUniformValue("uWindElements", 2);
+            setUniform(program, "uWindDirection", w.direction);
+            program.setUniformValue("uWindStrength", w.strength);
+            program.setUniformValue("uWindGustiness", w.gustiness);
+            program.setUniformValue("uWindTime", w.time);
+            program.setUniformValue("uWindOmega", w.omega);
+            program.setUniformValue("uWindBaseCycles", w.baseCycles);
+        }
         stamp = mMeshUniformsStamp;
     }
     return program;
@@ -610,7 +700,8 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
 void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
     for (const DrawRange& r : ranges) {
         QOpenGLShaderProgram& program =
-            useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0));
+            useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0) |
+                           (mDrawWind ? kMeshWind : 0));
         setUniform(program, "uAlbedo", r.color);
         if (r.texture != 0) {
             glActiveTexture(GL_TEXTURE1);
