@@ -21,9 +21,12 @@ os.makedirs(OUT, exist_ok=True)
 
 doc = sylva.document()
 win = sylva.window()
-win.resize(700, 900)
+win.resize(1900, 1050)
 doc.set_wind(direction=(1.0, 0.0, 0.0), strength=1.5, gustiness=0.5)
 sylva.wait(0.5)
+height = float(os.environ.get("SYLVA_WIND_HEIGHT", "14"))  # the tree's, metres
+# From the front, the wind blowing to the right.
+win.look_from((0.0, 0.5 * height, 1.9 * height), (0.0, 0.5 * height, 0.0))
 
 win.set_view_wind(False)
 win.screenshot(os.path.join(OUT, "frame-rest.png"), viewport_only=True)
@@ -34,13 +37,12 @@ for i in range(FRAMES):
 
 # The lower forks, near: where a rig or a shader that moves children apart from their parent
 # tears the bark, and where leaves leave their twigs.
-height = float(os.environ.get("SYLVA_WIND_HEIGHT", "14"))  # the tree's, metres
-fork = (0.0, 0.45 * height, 0.0)
-win.look_from((0.35 * height, 0.55 * height, 0.35 * height), fork)
+fork = (0.0, 0.41 * height, 0.0)
+win.look_from((0.12 * height, 0.47 * height, 0.55 * height), fork)
 win.set_view_wind(False)
 win.screenshot(os.path.join(OUT, "close-up-rest.png"), viewport_only=True)
 win.set_view_wind(True)
-win.set_wind_time(1.2)
+win.set_wind_time(STEP)
 win.screenshot(os.path.join(OUT, "close-up-wind.png"), viewport_only=True)
 win.set_view_wind(False)
 sylva.quit(0)

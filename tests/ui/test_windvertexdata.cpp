@@ -1,7 +1,8 @@
 // The viewport's wind data (ui/generation/windvertexdata.h) against the engine's model: a
-// preset grown with node ids, its vertices packed as the viewport uploads them, unpacked as
-// the shader reads them, displaced, and held against wind::displace on the engine's own
-// per-vertex data at several times. Also: the per-tree loop phase, the shaders' #include.
+// preset grown with node ids, its vertices packed as the viewport uploads them, the frame's
+// element rotations made as the viewport makes them, displaced as the shader displaces, and
+// held against wind::displace on the engine's own per-vertex data at several times. Also: the
+// per-tree loop phase, the shaders' #include.
 #include <set>
 
 #include <QDir>
@@ -43,7 +44,7 @@ private Q_SLOTS:
     void packedDataMovesAsTheEngine() {
         const wind::WindElements elements = wind::buildWindElements(*mSkeleton);
         const std::vector<glm::vec4> texels = ui::windElementTexels(elements);
-        QCOMPARE(texels.size(), elements.elements.size() * ui::kWindTexelsPerElement);
+        QCOMPARE(texels.size(), elements.elements.size());
         const std::vector<ui::ViewWindVertex> packed = ui::windVertices(*mMesh, elements);
         QCOMPARE(packed.size(), mMesh->positions.size());
         mesh::Mesh engine = *mMesh;
@@ -63,12 +64,16 @@ private Q_SLOTS:
         for (const wind::WindSettings& s : {storm, breeze})
             for (double t : {0.0, 0.37, 1.9, 3.3}) {
                 const wind::WindFrame frame = wind::windFrame(s, t);
+                std::vector<glm::vec4> rotations;
+                ui::appendWindRotations(elements, frame, rotations);
+                QCOMPARE(rotations.size(), elements.elements.size());
                 for (std::size_t i = 0; i < packed.size(); ++i) {
                     const glm::vec3 p = mMesh->positions[i];
                     glm::vec3 na = mMesh->normals.empty() ? glm::vec3(0, 1, 0) : mMesh->normals[i];
                     glm::vec3 nb = na;
                     const glm::vec3 a = wind::displace(engine.wind[i], p, &na, frame);
-                    const glm::vec3 b = ui::displacePacked(texels, packed[i], p, &nb, frame);
+                    const glm::vec3 b =
+                        ui::displacePacked(texels, rotations, packed[i], p, &nb, frame);
                     worst = std::max(worst, glm::length(a - b));
                     largest = std::max(largest, glm::length(a - p));
                 }

@@ -13,21 +13,28 @@
 namespace sylva::ui {
 
 std::vector<glm::vec4> windElementTexels(const wind::WindElements& elements) {
-    const std::vector<wind::WindElement>& els = elements.elements;
     std::vector<glm::vec4> out;
-    out.reserve(els.size() * kWindTexelsPerElement);
-    // The root's phase drives the tree's gusts at every level (wind::elementRotation's
-    // treePhase): each element carries its root's, so the shader needs no walk for it.
+    out.reserve(elements.elements.size());
+    for (const wind::WindElement& el : elements.elements)
+        out.emplace_back(el.pivot, static_cast<float>(el.parent));
+    return out;
+}
+
+void appendWindRotations(const wind::WindElements& elements, const wind::WindFrame& frame,
+                         std::vector<glm::vec4>& out) {
+    const std::vector<wind::WindElement>& els = elements.elements;
+    const std::size_t first = out.size();
+    out.resize(first + els.size());
+    // The root's phase drives its tree's gusts at every level (elementRotation's treePhase,
+    // wind::displace's phase.x); parents come before children.
     std::vector<float> rootPhase(els.size(), 0.0f);
     for (std::size_t e = 0; e < els.size(); ++e) {
         const wind::WindElement& el = els[e];
         rootPhase[e] = el.parent < 0 ? el.phase : rootPhase[static_cast<std::size_t>(el.parent)];
-        out.emplace_back(el.pivot, el.stiffness);
-        out.emplace_back(el.direction, el.phase);
-        out.emplace_back(static_cast<float>(el.parent), el.attachU, static_cast<float>(el.level),
-                         rootPhase[e]);
+        out[first + e] = glm::vec4(wind::elementRotation(frame, el.direction, el.stiffness,
+                                                         el.phase, el.level, rootPhase[e]),
+                                   el.attachU);
     }
-    return out;
 }
 
 std::vector<ViewWindVertex> windVertices(const mesh::Mesh& m, const wind::WindElements& elements) {
@@ -69,32 +76,58 @@ std::vector<ViewWindVertex> windVertices(const mesh::Mesh& m, const wind::WindEl
     return out;
 }
 
-glm::vec3 displacePacked(const std::vector<glm::vec4>& texels, const ViewWindVertex& v,
+namespace {
+
+// wind.glsl's windTurn / windRotate: Rodrigues with the series of sin(a)/a and (1 - cos a)/a²
+// (below 1e-7 off for the model's angles, at most 0.6 rad), what the shader computes.
+glm::vec3 rotateSeries(const glm::vec3& r, const glm::vec3& v) {
+    const float a2 = glm::dot(r, r);
+    const float s = 1.0f - a2 * (1.0f / 6.0f - a2 * (1.0f / 120.0f - a2 * (1.0f / 5040.0f)));
+    const float t = 0.5f - a2 * (1.0f / 24.0f - a2 * (1.0f / 720.0f - a2 * (1.0f / 40320.0f)));
+    const float c = 1.0f - a2 * t;
+    return v * c + glm::cross(r, v) * s + r * (glm::dot(r, v) * t);
+}
+
+} // namespace
+
+glm::vec3 displacePacked(const std::vector<glm::vec4>& texels,
+                         const std::vector<glm::vec4>& rotations, const ViewWindVertex& v,
                          const glm::vec3& position, glm::vec3* normal,
                          const wind::WindFrame& frame) {
-    if (v.element == 0) return position;
-    // Unpacked into the engine's vertex, then the engine's law: what wind.glsl does with the
-    // same texels, step by step.
-    mesh::WindVertex w{};
-    std::int32_t e = static_cast<std::int32_t>(v.element - 1u);
-    float u = static_cast<float>(v.u) / 65535.0f;
-    const auto at = [&texels](std::int32_t element, int k) {
-        return texels[static_cast<std::size_t>(element) * kWindTexelsPerElement +
-                      static_cast<std::size_t>(k)];
-    };
-    w.phase.x = at(e, 2).w;
-    while (e >= 0) {
-        const glm::vec4 t0 = at(e, 0), t1 = at(e, 1), t2 = at(e, 2);
-        const int level = std::clamp(static_cast<int>(t2.z), 0, 2);
-        w.pivot[level] = glm::vec4(glm::vec3(t0), u);
-        w.branch[level] = glm::vec4(glm::vec3(t1), t0.w);
-        w.phase[level] = t1.w;
-        u = t2.y;
-        e = static_cast<std::int32_t>(t2.x);
+    if (v.element == 0 || frame.strength <= 0.0f) return position;
+    glm::vec3 p = position;
+    glm::vec3 n = normal ? *normal : glm::vec3(0.0f);
+    // wind.glsl's windDisplace, line for line.
+    const float flutterWeight = glm::unpackHalf1x16(v.flutter);
+    if (flutterWeight > 0.0f) {
+        const float len = glm::length(n);
+        if (len > 1e-12f) {
+            const float phase = static_cast<float>(v.flutterPhase) * 0x1.0p-24f;
+            const float cycles =
+                std::max(1.0f, std::floor(frame.baseCycles * 6.0f * (0.8f + 0.4f * phase) + 0.5f));
+            const float flutter =
+                flutterWeight * frame.strength * (0.2f + 0.15f * frame.gustiness) *
+                std::sin(frame.omega * cycles * frame.time + 6.28318530717958647692f * phase);
+            p += n * (flutter / len);
+        }
     }
-    w.phase.w = static_cast<float>(v.flutterPhase) * 0x1.0p-24f;
-    w.leaf.y = glm::unpackHalf1x16(v.flutter);
-    return wind::displace(w, position, normal, frame);
+    auto e = static_cast<std::int32_t>(v.element - 1u);
+    float u = static_cast<float>(v.u) / 65535.0f;
+    float rootY = position.y;
+    for (int k = 0; k < 3 && e >= 0; ++k) {
+        const glm::vec4 t = texels[static_cast<std::size_t>(e)];
+        const glm::vec4 r = rotations[static_cast<std::size_t>(e)];
+        const glm::vec3 rot = glm::vec3(r) * wind::bendProfile(u);
+        const glm::vec3 pivot(t);
+        p = pivot + rotateSeries(rot, p - pivot);
+        n = rotateSeries(rot, n);
+        rootY = t.y;
+        u = r.w;
+        e = static_cast<std::int32_t>(t.w);
+    }
+    p.y = std::max(p.y, std::min(position.y, rootY));
+    if (normal) *normal = n;
+    return p;
 }
 
 float windPhaseOf(std::uint64_t treeId) {

@@ -34,23 +34,30 @@ struct ViewWindVertex {
 };
 static_assert(sizeof(ViewWindVertex) == 12, "the viewport's wind vertex is 12 bytes");
 
-/// RGBA32F texels per element in the table the shader fetches (a buffer texture):
-/// 0: pivot xyz, stiffness; 1: unit direction xyz, phase; 2: parent element (−1: a root), the
-/// bend fraction on the parent where it hangs, hierarchy level, the phase of its tree's root.
-inline constexpr int kWindTexelsPerElement = 3;
-
-/// The element table of \p elements (kWindTexelsPerElement texels per element, in order).
+/// The element table the shader fetches (a buffer texture, RGBA32F): one texel per element,
+/// pivot xyz and the parent element (−1: a root). Made once per skeleton.
 std::vector<glm::vec4> windElementTexels(const wind::WindElements& elements);
+
+/// Appends, per element of \p elements, its rotation at the tip at \p frame
+/// (wind::elementRotation: the gusts from its root's phase, the element's own sway, the
+/// saturation) in xyz, and in w the bend fraction on its parent where it hangs. Computed once
+/// per tree and frame on the CPU (a few hundred elements a tree) rather than per vertex on the
+/// GPU, which then only bends each vertex by it: what a software renderer's vertex stage,
+/// which runs on the GUI thread, can afford.
+void appendWindRotations(const wind::WindElements& elements, const wind::WindFrame& frame,
+                         std::vector<glm::vec4>& out);
 
 /// The wind data of each vertex of \p m, from its node ids (Mesh::node) and the elements of
 /// the skeleton it was made from; the leaf cards' flutter weight as wind::addWindData gives it.
 /// Empty when \p m has no node ids. Pure: any thread can make it.
 std::vector<ViewWindVertex> windVertices(const mesh::Mesh& m, const wind::WindElements& elements);
 
-/// The shader's displacement (wind.glsl) computed from the packed data with the engine's own
-/// functions: what a vertex of rest \p position and \p normal shows at \p frame. The tests
-/// hold it against wind::displace, so the viewport's data says what the exports say.
-glm::vec3 displacePacked(const std::vector<glm::vec4>& texels, const ViewWindVertex& v,
+/// The shader's displacement (wind.glsl) on the CPU, step for step, from the packed vertex,
+/// the element table and the frame's rotations (appendWindRotations, at offset 0): what a
+/// vertex of rest \p position and \p normal shows at \p frame. The tests hold it against
+/// wind::displace, so the viewport shows what the exports play.
+glm::vec3 displacePacked(const std::vector<glm::vec4>& texels,
+                         const std::vector<glm::vec4>& rotations, const ViewWindVertex& v,
                          const glm::vec3& position, glm::vec3* normal,
                          const wind::WindFrame& frame);
 

@@ -75,6 +75,10 @@ void TreeBuffers::release() {
     if (mSceneWindVbo) mGl->glDeleteBuffers(1, &mSceneWindVbo);
     mSceneWindVbo = mSceneWindElements = 0;
     mSceneSkeleton.reset();
+    mSceneElements.reset();
+    if (mRotationsTexture) mGl->glDeleteTextures(1, &mRotationsTexture);
+    if (mRotationsBuffer) mGl->glDeleteBuffers(1, &mRotationsBuffer);
+    mRotationsTexture = mRotationsBuffer = 0;
     releaseWindTables(true);
     mGl->glDeleteVertexArrays(1, &mSceneVao);
     mGl->glDeleteBuffers(1, &mSceneVbo);
@@ -112,12 +116,15 @@ bool TreeBuffers::uploadScene(const mesh::Mesh* mesh, const std::vector<glm::vec
     mGl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(std::uint32_t)),
                       m.indices.data(), GL_STATIC_DRAW);
     mSceneWindElements = 0;
+    mSceneElements.reset();
     mSceneSkeleton = skeleton;
     const WindTable* table = skeleton ? windTableFor(skeleton) : nullptr;
-    if (table && uploadWind(m, *table, mSceneWindVbo))
+    if (table && uploadWind(m, *table, mSceneWindVbo)) {
         mSceneWindElements = table->texture;
-    else
+        mSceneElements = table->elements;
+    } else {
         mSceneSkeleton.reset();
+    }
     mGl->glBindVertexArray(0);
     releaseWindTables(false);
 
@@ -154,11 +161,10 @@ TreeBuffers::windTableFor(const std::shared_ptr<const skel::Skeleton>& skeleton)
     } catch (...) {
         texels.clear(); // a skeleton the model refuses: its trees stand still
     }
-    GLint limit = 0;
-    mGl->glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &limit);
+    if (mMaxBufferTexels < 0) mGl->glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &mMaxBufferTexels);
     // Not made (the trees stand still) when there is nothing to sway or the table would not
-    // fit a buffer texture (at least 65536 texels everywhere: 21845 elements).
-    if (!texels.empty() && texels.size() <= std::size_t(std::max(limit, 0))) {
+    // fit a buffer texture (at least 65536 texels everywhere).
+    if (!texels.empty() && texels.size() <= std::size_t(std::max(mMaxBufferTexels, 0))) {
         mGl->glGenBuffers(1, &table.buffer);
         mGl->glBindBuffer(GL_TEXTURE_BUFFER, table.buffer);
         mGl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels.size() * sizeof(glm::vec4)),
@@ -171,6 +177,25 @@ TreeBuffers::windTableFor(const std::shared_ptr<const skel::Skeleton>& skeleton)
     }
     const WindTable& kept = mWindTables.emplace(skeleton.get(), std::move(table)).first->second;
     return kept.texture ? &kept : nullptr;
+}
+
+GLuint TreeBuffers::uploadWindRotations(const std::vector<glm::vec4>& rotations) {
+    if (mMaxBufferTexels < 0) mGl->glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &mMaxBufferTexels);
+    if (rotations.empty() || rotations.size() > std::size_t(std::max(mMaxBufferTexels, 0)))
+        return 0;
+    if (!mRotationsBuffer) {
+        mGl->glGenBuffers(1, &mRotationsBuffer);
+        mGl->glGenTextures(1, &mRotationsTexture);
+    }
+    mGl->glBindBuffer(GL_TEXTURE_BUFFER, mRotationsBuffer);
+    // A new store each frame: the last frame's draws may still read the old one.
+    mGl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(rotations.size() * sizeof(glm::vec4)),
+                      rotations.data(), GL_STREAM_DRAW);
+    mGl->glBindTexture(GL_TEXTURE_BUFFER, mRotationsTexture);
+    mGl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, mRotationsBuffer);
+    mGl->glBindTexture(GL_TEXTURE_BUFFER, 0);
+    mGl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    return mRotationsTexture;
 }
 
 bool TreeBuffers::uploadWind(const mesh::Mesh& m, const WindTable& table, GLuint& vbo) {
@@ -325,6 +350,7 @@ void TreeBuffers::sync(const std::vector<Source>& meshes, std::size_t treeMeshes
             if (table && uploadWind(*treeMesh, *table, gpu.windVbo)) {
                 gpu.windElements = table->texture;
                 gpu.skeleton = skeleton;
+                gpu.elements = table->elements;
             }
         }
         mGl->glBindVertexArray(0);

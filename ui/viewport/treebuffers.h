@@ -59,7 +59,8 @@ public:
         /// mesh has no node ids or no skeleton came with it (it then stands still).
         GLuint windVbo = 0;
         GLuint windElements = 0;
-        std::shared_ptr<const skel::Skeleton> skeleton; ///< the element table's key
+        std::shared_ptr<const skel::Skeleton> skeleton;     ///< the element table's key
+        std::shared_ptr<const wind::WindElements> elements; ///< its elements, for each frame
     };
     /// A mesh to keep on the GPU and the skeleton it was made from (null: no wind data).
     struct Source {
@@ -90,6 +91,13 @@ public:
     GLuint sceneVao() const { return mSceneVao; }
     /// The scene mesh's sway elements (a buffer texture), 0 when it has no wind data.
     GLuint sceneWindElements() const { return mSceneWindElements; }
+    const std::shared_ptr<const wind::WindElements>& sceneElements() const {
+        return mSceneElements;
+    }
+    /// Uploads the frame's element rotations (appendWindRotations of every swaying tree, one
+    /// after the other) into one buffer texture, and returns it (0 when \p rotations is empty
+    /// or larger than a buffer texture holds).
+    GLuint uploadWindRotations(const std::vector<glm::vec4>& rotations);
     const std::vector<DrawRange>& sceneRanges() const { return mSceneRanges; }
     /// Whether the uploaded scene mesh holds attribute colours.
     bool sceneVertexColors() const { return mSceneVertexColors; }
@@ -137,6 +145,9 @@ private:
     std::function<void(const QString&)> mProblem;
     GLuint mSceneVao = 0, mSceneVbo = 0, mSceneIbo = 0;
     GLuint mSceneWindVbo = 0, mSceneWindElements = 0;
+    std::shared_ptr<const wind::WindElements> mSceneElements;
+    GLuint mRotationsBuffer = 0, mRotationsTexture = 0;
+    GLint mMaxBufferTexels = -1;
     std::shared_ptr<const skel::Skeleton> mSceneSkeleton;
     std::map<const skel::Skeleton*, WindTable> mWindTables;
     std::vector<DrawRange> mSceneRanges;

@@ -18,6 +18,7 @@
 
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "ui/generation/windvertexdata.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewportsurface.h"
 
@@ -515,11 +516,64 @@ void Viewport::paintGL() {
         u.eye = mCamera.eye();
         u.light = light;
         u.vertexColor = mBuffers.sceneVertexColors();
+        // What each tree draws (its level), then the frame's wind: every swaying mesh's
+        // element rotations for its tree's time, made here once and uploaded in one buffer
+        // before the first draw (a buffer changed between draws would stall the renderer).
+        struct Drawn {
+            const TreeDraw* draw = nullptr;
+            const mesh::Mesh* mesh = nullptr; ///< null: an impostor card
+            int windBase = -1;                ///< its rotations in the frame's buffer
+        };
+        std::vector<Drawn> drawns;
+        drawns.reserve(order.size());
+        for (const TreeDraw& d : order) {
+            const ViewTree& t = mTrees[d.index];
+            ++mDrawnTrees;
+            Drawn entry{&d};
+            if (d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) {
+                int used = 0;
+                bool motion = false;
+                // A frame drawn at reduced resolution while the view moves also draws the
+                // trees' motion levels; the sharp frame that follows draws them at rest.
+                entry.mesh = mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
+                ++mDrawnPerLevel[std::size_t(used)];
+                mDrawnMotion += motion ? 1 : 0;
+            }
+            drawns.push_back(entry);
+        }
+        std::vector<int> previewBases(mPreview.size(), -1);
+        int sceneBase = -1;
+        GLuint rotations = 0;
+        if (windActive()) {
+            mWindRotations.clear();
+            auto add = [this](const wind::WindElements* elements, float phase) {
+                if (!elements) return -1;
+                const int base = int(mWindRotations.size());
+                appendWindRotations(*elements, windFrameAt(phase), mWindRotations);
+                return base;
+            };
+            if (mBuffers.sceneWindElements()) sceneBase = add(mBuffers.sceneElements().get(), 0);
+            for (Drawn& d : drawns)
+                if (d.mesh)
+                    if (const TreeBuffers::GpuMesh* gpu = mBuffers.find(d.mesh);
+                        gpu && gpu->windElements)
+                        d.windBase = add(gpu->elements.get(), mTrees[d.draw->index].windPhase);
+            for (std::size_t i = 0; i < mPreview.size(); ++i)
+                if (const TreeBuffers::GpuMesh* gpu = mBuffers.find(mPreview[i].mesh.get());
+                    gpu && gpu->windElements)
+                    previewBases[i] = add(gpu->elements.get(), mPreview[i].windPhase);
+            rotations = mBuffers.uploadWindRotations(mWindRotations);
+            glActiveTexture(GL_TEXTURE3);
+            glBindTexture(GL_TEXTURE_BUFFER, rotations);
+            glActiveTexture(GL_TEXTURE0);
+        }
+        if (!rotations) sceneBase = -1;
         u.wind = windFrameAt(0.0f);
+        u.windBase = std::max(sceneBase, 0);
         setMeshUniforms(u);
         glActiveTexture(GL_TEXTURE0);
         glBindVertexArray(mBuffers.sceneVao());
-        mDrawWind = windActive() && mBuffers.sceneWindElements() != 0;
+        mDrawWind = sceneBase >= 0;
         if (mDrawWind) bindWindElements(mBuffers.sceneWindElements());
         drawRanges(sceneRanges);
         for (const DrawRange& r : sceneRanges) {
@@ -531,26 +585,19 @@ void Viewport::paintGL() {
         setMeshUniforms(u);
         // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
         std::vector<const TreeDraw*> cards;
-        for (const TreeDraw& d : order) {
-            const ViewTree& t = mTrees[d.index];
+        for (const Drawn& d : drawns) {
+            const ViewTree& t = mTrees[d.draw->index];
             const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
-            ++mDrawnTrees;
-            if (d.level == ViewLod::kImpostorLevel && mImpostors.has(impostorKey(t))) {
-                cards.push_back(&d);
+            if (!d.mesh) {
+                cards.push_back(d.draw);
                 continue;
             }
-            int used = 0;
-            bool motion = false;
-            // A frame drawn at reduced resolution while the view moves also draws the trees'
-            // motion levels; the sharp frame that follows draws them at rest.
-            const mesh::Mesh* drawn =
-                mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
-            ++mDrawnPerLevel[std::size_t(used)];
-            mDrawnMotion += motion ? 1 : 0;
-            drawTreeMesh(*drawn, t.transform, highlight, t.windPhase);
+            drawTreeMesh(*d.mesh, t.transform, highlight, t.windPhase, rotations ? d.windBase : -1);
         }
-        for (const ViewTree& t : mPreview)
-            if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f, t.windPhase);
+        for (std::size_t i = 0; i < mPreview.size(); ++i)
+            if (mPreview[i].mesh)
+                drawTreeMesh(*mPreview[i].mesh, mPreview[i].transform, 0.25f, mPreview[i].windPhase,
+                             rotations ? previewBases[i] : -1);
         if (!cards.empty()) {
             mImpostors.begin(viewProj, mCamera.eye(), light);
             for (const TreeDraw* d : cards) {
@@ -581,15 +628,16 @@ void Viewport::setBand(const QRect& band) {
 }
 
 void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight,
-                            float windPhase) {
+                            float windPhase, int windBase) {
     const TreeBuffers::GpuMesh* gpu = mBuffers.find(&m);
     if (!gpu) return;
     MeshUniforms u = mMeshUniforms;
     u.model = transform;
     u.highlight = highlight;
-    mDrawWind = windActive() && gpu->windElements != 0;
+    mDrawWind = windBase >= 0 && gpu->windElements != 0;
     if (mDrawWind) {
         u.wind = windFrameAt(windPhase);
+        u.windBase = windBase;
         bindWindElements(gpu->windElements);
     }
     setMeshUniforms(u);
@@ -685,7 +733,8 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
         if (variant & kMeshWind) {
             const wind::WindFrame& w = u.wind;
             program.setUniformValue("uWindElements", 2);
-            setUniform(program, "uWindDirection", w.direction);
+            program.setUniformValue("uWindRotations", 3);
+            program.setUniformValue("uWindBase", u.windBase);
             program.setUniformValue("uWindStrength", w.strength);
             program.setUniformValue("uWindGustiness", w.gustiness);
             program.setUniformValue("uWindTime", w.time);

@@ -338,6 +338,7 @@ private:
         bool vertexColor = false;
         float highlight = 0.0f;
         wind::WindFrame wind; ///< its time is the drawn tree's
+        int windBase = 0;     ///< the drawn tree's first element in the frame's rotations
     };
     void setMeshUniforms(const MeshUniforms& uniforms);
     QOpenGLShaderProgram& useMeshProgram(int variant);
@@ -362,8 +363,11 @@ private:
     void bakeImpostors(const std::vector<TreeDraw>& order);
     /// The atlas a tree draws far away: its skeleton's (shared by a variant's instances).
     static Impostors::Key impostorKey(const ViewTree& t);
+    /// \p windBase: where the mesh's element rotations start in the frame's rotations
+    /// (-1: drawn without wind).
     void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight,
-                      float windPhase);
+                      float windPhase, int windBase);
+    std::vector<glm::vec4> mWindRotations; ///< the frame's, kept for its capacity
     /// The wind's frame for a tree \p phase of the period into the loop.
     wind::WindFrame windFrameAt(float phase) const;
     bool mWindOn = false;

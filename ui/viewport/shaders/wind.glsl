@@ -1,85 +1,73 @@
-// The engine's wind model (core/engine/wind/windmodel.cpp, docs/wind.md) in GLSL: the same
-// law, term by term, so that the viewport shows what the exports play. Included by mesh.vert
-// when it is compiled with WIND. A vertex carries its innermost sway element and its bend
-// fraction on it (ui/generation/windvertexdata.h); the elements come from a buffer texture,
-// three RGBA32F texels each: pivot + stiffness, direction + phase, parent + fraction on the
-// parent + level + the root's phase. The walk from the vertex's element to its root bends
-// innermost first, each about its rest pivot, so a child follows its parent and nothing tears
-// at a fork.
+// The engine's wind model (core/engine/wind/windmodel.cpp wind::displace, docs/wind.md) in
+// GLSL, included by mesh.vert when it is compiled with WIND, so that the viewport shows what
+// the exports play. A vertex carries its innermost sway element and its bend fraction on it
+// (ui/generation/windvertexdata.h). Each element's rotation at its tip for this tree and
+// frame (gusts, sway, saturation: wind::elementRotation) is made on the CPU once per tree
+// and frame (appendWindRotations) and read here with the bend fraction on its parent; the
+// element table gives its rest pivot and its parent. The walk from the vertex's element to
+// its root bends innermost first, each about its rest pivot, so a child follows its parent and
+// nothing tears at a fork. ui/generation/windvertexdata.cpp's displacePacked is this function
+// on the CPU, held against the engine by ui_windvertexdata.
 layout(location = 5) in uvec2 aWind;        // element + 1 (0: still), flutter phase * 2^24
 layout(location = 6) in float aWindU;       // bend fraction on the element
 layout(location = 7) in float aWindFlutter; // leaf flutter weight, metres
-uniform samplerBuffer uWindElements;
-uniform vec3 uWindDirection; // horizontal unit
+uniform samplerBuffer uWindElements;  // per element: rest pivot xyz, parent (-1: a root)
+uniform samplerBuffer uWindRotations; // per element, this frame: rotation xyz, u on the parent
+uniform int uWindBase;                // this tree's first element in uWindRotations
 uniform float uWindStrength;
 uniform float uWindGustiness;
-uniform float uWindTime; // seconds into the loop, this tree's
+uniform float uWindTime;  // seconds into the loop, this tree's
 uniform float uWindOmega; // 2 pi / period
 uniform float uWindBaseCycles;
 
-const float kWindTwoPi = 6.28318530717958647692;
-
-float windCycles(float x) {
-    return max(1.0, floor(x + 0.5)); // half up, as the engine rounds
+// Rodrigues' rotation by the rotation vector r written with the series of sin(a)/a and
+// (1 - cos(a))/a^2 in a^2 = r.r: no square root, division, branch or trigonometry (a software
+// renderer's sin and cos reduce their argument first). The model saturates every element at
+// 0.6 rad, where the terms left out are below 1e-7: as exact as float.
+struct WindTurn {
+    vec3 r;
+    float c, s, t; // cos a, sin(a)/a, (1 - cos a)/a^2
+};
+WindTurn windTurn(vec3 r) {
+    float a2 = dot(r, r);
+    WindTurn w;
+    w.r = r;
+    w.s = 1.0 - a2 * (1.0 / 6.0 - a2 * (1.0 / 120.0 - a2 * (1.0 / 5040.0)));
+    w.t = 0.5 - a2 * (1.0 / 24.0 - a2 * (1.0 / 720.0 - a2 * (1.0 / 40320.0)));
+    w.c = 1.0 - a2 * w.t;
+    return w;
 }
-
-vec3 windRotate(vec3 r, vec3 v) {
-    float angle = length(r);
-    if (angle < 1e-8) return v + cross(r, v);
-    vec3 k = r / angle;
-    float c = cos(angle), s = sin(angle);
-    return v * c + cross(k, v) * s + k * (dot(k, v) * (1.0 - c));
-}
-
-vec3 windElementRotation(vec3 dir, float stiffness, float phase, float level, float gust) {
-    float t = uWindTime, w = uWindOmega, S = uWindStrength;
-    float pressure = S * S * (1.0 + uWindGustiness * gust);
-    float n = windCycles(uWindBaseCycles * (1.0 + 0.6 * level) * (0.85 + 0.3 * phase));
-    float along = sin(w * n * t + kWindTwoPi * phase);
-    float across = sin(w * (n + 1.0) * t + kWindTwoPi * (phase + 0.25));
-    vec3 drag = cross(dir, uWindDirection);
-    vec3 side = cross(dir, drag);
-    vec3 r = ((pressure + 0.35 * S * along) * drag + 0.25 * S * across * side) / stiffness;
-    float limit = level < 0.5 ? 0.3 : 0.6;
-    float angle = length(r);
-    if (angle > 1e-8) r *= limit * tanh(angle / limit) / angle;
-    return r;
+vec3 windRotate(WindTurn w, vec3 v) {
+    return v * w.c + cross(w.r, v) * w.s + w.r * (dot(w.r, v) * w.t);
 }
 
 // Moves \p position and turns \p normal (the tree's frame) as wind::displace does.
 void windDisplace(inout vec3 position, inout vec3 normal) {
     if (aWind.x == 0u || uWindStrength <= 0.0) return;
-    int e = int(aWind.x) - 1;
-    float flutterPhase = float(aWind.y) * (1.0 / 16777216.0);
     vec3 rest = position;
-    vec4 t2 = texelFetch(uWindElements, 3 * e + 2);
-    // The tree's gusts, from its root's phase.
-    float treePhase = t2.w;
-    float g1 = windCycles(0.5 * uWindBaseCycles);
-    float gust = 0.6 * sin(uWindOmega * g1 * uWindTime + kWindTwoPi * treePhase) +
-                 0.4 * sin(uWindOmega * (g1 + 1.0) * uWindTime +
-                           kWindTwoPi * (1.7 * treePhase + 0.3));
     if (aWindFlutter > 0.0) {
         float len = length(normal);
         if (len > 1e-12) {
-            float cycles = windCycles(uWindBaseCycles * 6.0 * (0.8 + 0.4 * flutterPhase));
+            float phase = float(aWind.y) * (1.0 / 16777216.0);
+            // Half up, as the engine rounds its whole numbers of cycles.
+            float cycles = max(1.0, floor(uWindBaseCycles * 6.0 * (0.8 + 0.4 * phase) + 0.5));
             float flutter = aWindFlutter * uWindStrength * (0.2 + 0.15 * uWindGustiness) *
-                            sin(uWindOmega * cycles * uWindTime + kWindTwoPi * flutterPhase);
+                            sin(uWindOmega * cycles * uWindTime + 6.28318530717958647692 * phase);
             position += normal * (flutter / len);
         }
     }
+    int e = int(aWind.x) - 1;
     float u = aWindU;
     float rootY = rest.y;
     for (int k = 0; k < 3 && e >= 0; ++k) {
-        vec4 t0 = texelFetch(uWindElements, 3 * e);
-        vec4 t1 = texelFetch(uWindElements, 3 * e + 1);
-        t2 = texelFetch(uWindElements, 3 * e + 2);
-        vec3 r = windElementRotation(t1.xyz, t0.w, t1.w, t2.z, gust) * (u * (2.0 - u));
-        position = t0.xyz + windRotate(r, position - t0.xyz);
-        normal = windRotate(r, normal);
-        rootY = t0.y;
-        u = t2.y;
-        e = int(t2.x);
+        vec4 t = texelFetch(uWindElements, e);
+        vec4 r = texelFetch(uWindRotations, uWindBase + e);
+        WindTurn turn = windTurn(r.xyz * (u * (2.0 - u)));
+        position = t.xyz + windRotate(turn, position - t.xyz);
+        normal = windRotate(turn, normal);
+        rootY = t.y;
+        u = r.w;
+        e = int(t.w);
     }
     position.y = max(position.y, min(rest.y, rootY));
 }
