@@ -10,6 +10,11 @@
 #include <QDoubleSpinBox>
 #include <QMenu>
 #include <QMenuBar>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVersionFunctionsFactory>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -17,8 +22,15 @@
 
 #include "document/document.h"
 #include "document/presetlibrary.h"
+#include "document/speciesfile.h"
+#include "engine/graph/graph.h"
+#include "engine/mesh/mesh.h"
+#include "engine/wind/windelements.h"
 #include "ui/document/propertiespanel.h"
+#include "ui/generation/vertexdata.h"
+#include "ui/generation/windvertexdata.h"
 #include "ui/mainwindow.h"
+#include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewport.h"
 #include "uitest.h"
 
@@ -80,6 +92,128 @@ private Q_SLOTS:
     }
 
     void cleanupTestCase() { mWindow.reset(); }
+
+    /// The GLSL itself (mesh.vert with WIND, as the viewport compiles it) run over every
+    /// vertex of a preset by transform feedback: each lands where wind::displace puts it.
+    void shaderMovesAsTheEngine() {
+        graph::registerBuiltinNodeTypes();
+        graph::SpeciesGraph species =
+            doc::loadSpecies(QDir(doc::PresetLibrary::directory()).filePath("so-shrub.json"));
+        requestNodeIds(species);
+        graph::Evaluator evaluator(std::move(species));
+        const graph::NodeOutput& out = evaluator.evaluate();
+        QVERIFY(out.mesh && out.skeleton);
+        const mesh::Mesh& m = *out.mesh;
+        const wind::WindElements elements = wind::buildWindElements(*out.skeleton);
+        const std::vector<ViewVertex> vertices = interleaveVertices(m, {});
+        const std::vector<ViewWindVertex> packed = windVertices(m, elements);
+        const std::vector<glm::vec4> table = windElementTexels(elements);
+        mesh::Mesh engine = m;
+        wind::addWindData(engine, *out.skeleton);
+        wind::WindSettings storm;
+        storm.strength = 1.8f;
+        storm.gustiness = 0.7f;
+        storm.direction = {-0.4f, 0.0f, 1.0f};
+        const wind::WindFrame frame = wind::windFrame(storm, 1.37);
+        std::vector<glm::vec4> rotations;
+        appendWindRotations(elements, frame, rotations);
+
+        QOffscreenSurface surface;
+        surface.setFormat(QSurfaceFormat::defaultFormat());
+        surface.create();
+        QOpenGLContext context;
+        QSurfaceFormat format;
+        format.setVersion(3, 3);
+        format.setProfile(QSurfaceFormat::CoreProfile);
+        context.setFormat(format);
+        QVERIFY(context.create());
+        QVERIFY(context.makeCurrent(&surface));
+        auto* gl = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_3_3_Core>(&context);
+        QVERIFY(gl && gl->initializeOpenGLFunctions());
+        QByteArray vertex = expandIncludes(shaderSource(QStringLiteral("mesh.vert")));
+        vertex.insert(vertex.indexOf('\n') + 1, "#define WIND 1\n");
+        QOpenGLShaderProgram program;
+        QVERIFY2(program.addShaderFromSourceCode(QOpenGLShader::Vertex, vertex),
+                 qPrintable(program.log()));
+        QVERIFY(program.addShaderFromSourceCode(
+            QOpenGLShader::Fragment,
+            "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(1); }\n"));
+        const char* varyings[] = {"vWorld"};
+        gl->glTransformFeedbackVaryings(program.programId(), 1, varyings, GL_INTERLEAVED_ATTRIBS);
+        QVERIFY2(program.link(), qPrintable(program.log()));
+        program.bind();
+
+        GLuint vao = 0, buffers[5] = {}, textures[2] = {};
+        gl->glGenVertexArrays(1, &vao);
+        gl->glBindVertexArray(vao);
+        gl->glGenBuffers(5, buffers);
+        gl->glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(ViewVertex)),
+                         vertices.data(), GL_STATIC_DRAW);
+        gl->glEnableVertexAttribArray(0);
+        gl->glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(ViewVertex), nullptr);
+        gl->glEnableVertexAttribArray(1);
+        gl->glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(ViewVertex),
+                                  reinterpret_cast<void*>(offsetof(ViewVertex, normal)));
+        gl->glBindBuffer(GL_ARRAY_BUFFER, buffers[1]);
+        gl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(packed.size() * sizeof(ViewWindVertex)),
+                         packed.data(), GL_STATIC_DRAW);
+        for (GLuint a = 5; a < 8; ++a)
+            gl->glEnableVertexAttribArray(a);
+        gl->glVertexAttribIPointer(5, 2, GL_UNSIGNED_INT, sizeof(ViewWindVertex), nullptr);
+        gl->glVertexAttribPointer(6, 1, GL_UNSIGNED_SHORT, GL_TRUE, sizeof(ViewWindVertex),
+                                  reinterpret_cast<void*>(offsetof(ViewWindVertex, u)));
+        gl->glVertexAttribPointer(7, 1, GL_HALF_FLOAT, GL_FALSE, sizeof(ViewWindVertex),
+                                  reinterpret_cast<void*>(offsetof(ViewWindVertex, flutter)));
+        gl->glGenTextures(2, textures);
+        const std::vector<glm::vec4>* tbos[2] = {&table, &rotations};
+        for (int k = 0; k < 2; ++k) {
+            gl->glBindBuffer(GL_TEXTURE_BUFFER, buffers[2 + k]);
+            gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(tbos[k]->size() * sizeof(glm::vec4)),
+                             tbos[k]->data(), GL_STATIC_DRAW);
+            gl->glActiveTexture(GLenum(GL_TEXTURE2 + k));
+            gl->glBindTexture(GL_TEXTURE_BUFFER, textures[k]);
+            gl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, buffers[2 + k]);
+        }
+        program.setUniformValue("uWindElements", 2);
+        program.setUniformValue("uWindRotations", 3);
+        program.setUniformValue("uWindBase", 0);
+        program.setUniformValue("uWindStrength", frame.strength);
+        program.setUniformValue("uWindGustiness", frame.gustiness);
+        program.setUniformValue("uWindTime", frame.time);
+        program.setUniformValue("uWindOmega", frame.omega);
+        program.setUniformValue("uWindBaseCycles", frame.baseCycles);
+        program.setUniformValue("uModel", QMatrix4x4());
+        program.setUniformValue("uViewProj", QMatrix4x4());
+        gl->glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers[4]);
+        gl->glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER,
+                         GLsizeiptr(vertices.size() * sizeof(glm::vec3)), nullptr, GL_STATIC_READ);
+        gl->glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers[4]);
+        gl->glEnable(GL_RASTERIZER_DISCARD);
+        gl->glBeginTransformFeedback(GL_POINTS);
+        gl->glDrawArrays(GL_POINTS, 0, GLsizei(vertices.size()));
+        gl->glEndTransformFeedback();
+        gl->glDisable(GL_RASTERIZER_DISCARD);
+        std::vector<glm::vec3> moved(vertices.size());
+        gl->glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0,
+                               GLsizeiptr(moved.size() * sizeof(glm::vec3)), moved.data());
+        QCOMPARE(gl->glGetError(), GLenum(GL_NO_ERROR));
+        float worst = 0.0f, largest = 0.0f;
+        for (std::size_t i = 0; i < moved.size(); ++i) {
+            glm::vec3 n = vertices[i].normal;
+            const glm::vec3 expected = wind::displace(engine.wind[i], m.positions[i], &n, frame);
+            worst = std::max(worst, glm::length(moved[i] - expected));
+            largest = std::max(largest, glm::length(expected - m.positions[i]));
+        }
+        gl->glDeleteTextures(2, textures);
+        gl->glDeleteBuffers(5, buffers);
+        gl->glDeleteVertexArrays(1, &vao);
+        context.doneCurrent();
+        qInfo("GLSL against wind::displace over %zu vertices: %g m at most (largest motion %g m)",
+              moved.size(), double(worst), double(largest));
+        QVERIFY2(largest > 0.05f, qPrintable(QString::number(largest)));
+        QVERIFY2(worst < 2e-3f, qPrintable(QStringLiteral("%1 m off").arg(worst)));
+    }
 
     /// View ▸ Wind is a checkable action of the View menu, off at first, remembered.
     void viewMenuHasWind() {
