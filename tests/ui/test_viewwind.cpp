@@ -27,9 +27,11 @@
 #include "engine/mesh/mesh.h"
 #include "engine/wind/windelements.h"
 #include "ui/document/propertiespanel.h"
+#include "ui/generation/speciespreview.h"
 #include "ui/generation/vertexdata.h"
 #include "ui/generation/windvertexdata.h"
 #include "ui/mainwindow.h"
+#include "ui/speciesworkbench.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewport.h"
 #include "uitest.h"
@@ -296,7 +298,23 @@ private Q_SLOTS:
         // The frozen clock gives the same frame again.
         QCOMPARE(differingPixels(a, a2), 0);
 
+        // The Species Editor's preview sways too.
+        mWindow->editSpecies(QString::fromStdString(document().project().species.front().name));
+        SpeciesPreview* preview = mWindow->workbench()->preview();
+        QTRY_VERIFY_WITH_TIMEOUT(!preview->isBusy(), kTimeoutMs);
+        Viewport* species = mWindow->workbench()->previewViewport();
+        QTRY_VERIFY_WITH_TIMEOUT(species->mesh() != nullptr, kTimeoutMs);
+        QVERIFY(species->windEnabled());
+        mWindow->setWindTime(0.4);
+        const QImage p1 = species->grabSharp().convertToFormat(QImage::Format_RGB32);
+        QVERIFY(species->drawnWindTriangles() > 0);
+        mWindow->setWindTime(1.3);
+        const QImage p2 = species->grabSharp().convertToFormat(QImage::Format_RGB32);
+        QVERIFY2(differingPixels(p1, p2) > 100,
+                 qPrintable(QString::number(differingPixels(p1, p2))));
+
         mWindow->setViewWind(false);
+        QVERIFY(!species->windEnabled());
         const QImage c = grabAt(0.4);
         QCOMPARE(view->drawnWindTriangles(), std::size_t(0));
         const QImage d = grabAt(1.3);
