@@ -667,7 +667,19 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     view.viewportHeightPx = double(height()) * devicePixelRatioF();
     view.levels = mLod->isEnabled();
     // Picking keeps the full mesh; only drawing follows the level of detail.
-    return buildDrawList(view, drawn, mTreeBounds);
+    if (!windActive()) return buildDrawList(view, drawn, mTreeBounds);
+    // Swaying trees reach beyond their rest boxes: widened across by half their height (the
+    // model bends a trunk at most 0.3 rad and its limbs 0.6 rad more) so that a tree at the
+    // view's edge is not culled while its crown sways into view. Heights stay as they are, and
+    // with them the level each tree is drawn at.
+    std::vector<Bounds> swaying = mTreeBounds;
+    for (Bounds& b : swaying) {
+        if (b.empty()) continue;
+        const float reach = 0.5f * (b.hi.y - b.lo.y);
+        b.lo -= glm::vec3(reach, 0.0f, reach);
+        b.hi += glm::vec3(reach, 0.0f, reach);
+    }
+    return buildDrawList(view, drawn, swaying);
 }
 
 Impostors::Key Viewport::impostorKey(const ViewTree& t) {
