@@ -106,7 +106,7 @@ static_assert(salt::kSelfOrganizingTree == 0x5e1f && salt::kSelfOrganizingMarker
 static_assert(salt::kCrownSample == 0xC0000 && salt::kDomainSlots == 0xD0A1 &&
               salt::kPlacedTree == 0x0A11);
 static_assert(salt::kBrushStroke == 7919 && salt::kPlaceTool == 104729);
-static_assert(salt::kWindPhase == 0x771D0);
+static_assert(salt::kWindPhase == 0x771D0 && salt::kViewWindPhase == 0x771D7);
 static_assert(salt::kVariant == 0x5A1A7 && salt::kVariantPick == 0x5A1B);
 static_assert(salt::kSeason == 0x5EA5);
 
@@ -125,9 +125,10 @@ TEST(SeedSalts, EverySaltIsItsOwn) {
                                         salt::kPlaceTool,
                                         salt::kWindPhase,
                                         salt::kWindPhase + 1,
+                                        salt::kViewWindPhase,
                                         salt::kVariant,
                                         salt::kVariantPick,
                                         salt::kSeason,
                                         salt::kLeafClusters};
-    EXPECT_EQ(salts.size(), 18u);
+    EXPECT_EQ(salts.size(), 19u);
 }
