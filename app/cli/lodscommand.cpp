@@ -49,11 +49,11 @@ std::string speciesFileStem(const std::string& path) {
 } // namespace
 
 int runLods(const std::vector<std::string>& argv) {
-    const Args args(
-        argv,
-        {"-o", "--output", "--seed", "--budgets", "--impostor-grid", "--impostor-cell",
-         "--impostor-pixels"},
-        {"--json", "--no-glb", "--no-obj", "--no-fbx", "--no-impostor", "--octahedral"});
+    const Args args(argv,
+                    {"-o", "--output", "--seed", "--budgets", "--impostor-grid", "--impostor-cell",
+                     "--impostor-pixels"},
+                    {"--json", "--no-glb", "--no-obj", "--no-fbx", "--no-usd", "--no-impostor",
+                     "--octahedral"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("lods"));
     auto dir = args.value("-o");
     if (!dir) dir = args.value("--output");
@@ -89,6 +89,7 @@ int runLods(const std::vector<std::string>& argv) {
     options.obj = !args.flag("--no-obj");
     options.gltf = !args.flag("--no-glb");
     options.fbx = !args.flag("--no-fbx");
+    options.usd = !args.flag("--no-usd");
     const std::filesystem::path res = resourcesDir();
     if (!res.empty()) options.shippedTextures = res / "textures";
     // Ctrl-C stops the levels' search or the baking at its next mesh or view: nothing is
@@ -117,6 +118,7 @@ int runLods(const std::vector<std::string>& argv) {
                         chain.impostorDistance, chain.impostorScreenSize, 2, 4);
         if (!files.glb.empty()) std::printf("glTF: %s\n", files.glb.string().c_str());
         if (!files.fbx.empty()) std::printf("FBX: %s\n", files.fbx.string().c_str());
+        if (!files.usd.empty()) std::printf("USD: %s\n", files.usd.string().c_str());
         std::printf("description: %s\n", files.json.string().c_str());
     }
     return kOk;

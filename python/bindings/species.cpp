@@ -497,7 +497,8 @@ void bindSpecies(py::module_& m) {
             py::arg("impostor_grid") = 8, py::arg("impostor_cell") = 256,
             py::arg("progress") = py::none(),
             "writes the species' game LOD chain into folder as `sylva-cli lods` does (levels by "
-            "triangle budget, the impostor's maps, glTF with MSFT_lod, FBX, OBJ; docs/lods.md) "
+            "triangle budget, the impostor's maps, glTF with MSFT_lod, FBX, USD, OBJ; "
+            "docs/lods.md) "
             "and returns its description (the <species>_lods.json content)")
         .def("__repr__", [](const Species& s) {
             return "<sylva.Species '" + s.graph().name + "' " +

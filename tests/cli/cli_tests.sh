@@ -346,7 +346,7 @@ stats_project)
 lods_chain)
   run_cli 0 lods "$DATA/lsystem/bush.lsys" -o lods --json
   for i in 0 1 2 3; do [[ -s lods/bush_LOD$i.obj ]] || fail "missing bush_LOD$i.obj: $(ls lods)"; done
-  for f in bush_LODs.glb bush_LODs.fbx bush_lods.json bush_impostor_color.png \
+  for f in bush_LODs.glb bush_LODs.fbx bush_lods.json bush_lods.usda bush_impostor_color.png \
       bush_impostor_normal.png bush_impostor_depth.png; do
     [[ -s lods/$f ]] || fail "missing $f: $(ls lods)"
   done
@@ -361,8 +361,8 @@ lods_chain)
   # the same bytes on one thread and on two (Assimp's FBX carries its creation time: not compared)
   OMP_NUM_THREADS=1 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o one --no-obj --no-fbx
   OMP_NUM_THREADS=2 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o two --no-obj --no-fbx
-  for f in bush_LODs.glb bush_lods.json bush_impostor_color.png bush_impostor_normal.png \
-      bush_impostor_depth.png; do
+  for f in bush_LODs.glb bush_lods.json bush_lods.usda bush_impostor_color.png \
+      bush_impostor_normal.png bush_impostor_depth.png; do
     cmp -s one/$f two/$f || fail "$f differs between 1 and 2 threads"
   done
   run_cli 0 lods "$DATA/lsystem/bush.lsys" -o small --no-obj --no-fbx --no-glb \
@@ -370,6 +370,9 @@ lods_chain)
   grep -q '"layout": "octahedral"' small/bush_lods.json || fail "no octahedral layout"
   grep -q '"atlas_pixels": 128' small/bush_lods.json || fail "$(cat small/bush_lods.json)"
   [[ ! -e small/bush_LODs.glb && ! -e small/bush_LOD0.obj ]] || fail "--no-glb/--no-obj ignored"
+  run_cli 0 lods "$DATA/lsystem/bush.lsys" -o nousd --no-obj --no-fbx --no-glb --no-usd \
+    --impostor-cell 16
+  [[ ! -e nousd/bush_lods.usda && -s nousd/bush_lods.json ]] || fail "--no-usd ignored: $(ls nousd)"
   run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --budgets 1,0.5,0.7
   grep -q "LOD2 budget must be above 0 and below the one before" err.txt || fail "$(cat err.txt)"
   run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --budgets 1,x

@@ -14,6 +14,7 @@ struct GameLodOptions {
     bool obj = true;  ///< <species>_LOD<i>.obj + <species>.mtl
     bool gltf = true; ///< <species>_LODs.glb: MSFT_lod chain, impostor card and maps
     bool fbx = true;  ///< <species>_LODs.fbx: the mesh levels as <species>_LOD<i> nodes
+    bool usd = true;  ///< <species>_lods.usda: a "lod" variant set, LOD0..n and "impostor"
     /// Sylva's shipped textures (bark.png, leaf.png) for materials without a file of their own;
     /// also copied into <dir>/textures for the OBJ and FBX files. Empty: none.
     std::filesystem::path shippedTextures;
@@ -30,7 +31,7 @@ struct GameLodLevel {
 
 struct GameLodFiles {
     std::vector<GameLodLevel> levels;
-    std::filesystem::path glb, fbx, mtl, json;
+    std::filesystem::path glb, fbx, usd, mtl, json;
     std::filesystem::path impostorColor, impostorNormal, impostorDepth; ///< empty: no impostor
     std::string description; ///< the JSON written to `json` (what `sylva-cli lods --json` prints)
 };
@@ -40,7 +41,8 @@ struct GameLodFiles {
 /// `<species>_LODs.glb` (LOD0's node carries MSFT_lod with the coarser levels and the impostor
 /// card, MSFT_screencoverage in its extras; the impostor's material is documented in
 /// docs/lods.md), `<species>_LODs.fbx` (the mesh levels as sibling nodes `<species>_LOD<i>`:
-/// Assimp writes no FbxLODGroup), OBJ files, and `<species>_lods.json` describing all of it
+/// Assimp writes no FbxLODGroup), `<species>_lods.usda` (the root prim's variant set "lod":
+/// LOD0..n and "impostor", docs/usd.md), OBJ files, and `<species>_lods.json` describing all of it
 /// for a game engine's importer. \p species becomes part of file names: characters other than
 /// letters, digits, '-' and '_' become '_'.
 /// \throw InvalidInput (empty species name or chain), IoError, Cancelled.

@@ -191,6 +191,25 @@ void impostorViewBasis(const glm::vec3& direction, glm::vec3& right, glm::vec3& 
     up = glm::cross(direction, right);
 }
 
+Mesh impostorCard(const Impostor& imp) {
+    const int n = imp.settings.grid;
+    const glm::vec2 cell = glm::round(impostorAtlasCoord({0, 0, 1}, imp.settings.hemisphere) *
+                                      static_cast<float>(n - 1));
+    const float du = 1.0f / static_cast<float>(n);
+    const float u0 = cell.x * du, u1 = u0 + du;
+    // Row j spans [j, j + 1] / n from the image's top: bottom-left origin flips it.
+    const float v1 = 1.0f - cell.y * du, v0 = v1 - du;
+    const float r = imp.radius;
+    Mesh m;
+    m.positions = {imp.centre + glm::vec3(-r, -r, 0), imp.centre + glm::vec3(r, -r, 0),
+                   imp.centre + glm::vec3(r, r, 0), imp.centre + glm::vec3(-r, r, 0)};
+    m.normals.assign(4, glm::vec3(0, 0, 1));
+    m.uvs = {{u0, v0}, {u1, v0}, {u1, v1}, {u0, v1}};
+    m.indices = {0, 1, 2, 0, 2, 3};
+    m.submeshes.push_back({"impostor", 0, 6});
+    return m;
+}
+
 void boundingSphere(const Mesh& mesh, glm::vec3& centre, float& radius) {
     if (mesh.positions.empty()) {
         centre = glm::vec3(0.0f);

@@ -79,6 +79,14 @@ glm::vec2 impostorAtlasCoord(glm::vec3 direction, bool hemisphere);
 /// with up = +Y (−Z when looking straight down), and up = cross(direction, right).
 void impostorViewBasis(const glm::vec3& direction, glm::vec3& right, glm::vec3& up);
 
+/// The impostor's fallback card for readers that know nothing of impostors: a square of side
+/// 2 · radius through the centre facing +Z, whose uvs (Sylva's convention: origin at the
+/// image's bottom-left) show the atlas cell of the view from +Z (column grid - 1, row 0 of a
+/// hemi-octahedral atlas; the nearest cell of an octahedral one). In that cell the normal map's
+/// mesh-frame normals are the card's tangent-space normals (x along u, y along v, z out of it).
+/// One submesh, "impostor". The glTF and USD LOD chains carry it (docs/lods.md).
+Mesh impostorCard(const Impostor& impostor);
+
 /// Bounding sphere of \p mesh (the centre of its bounds, the farthest vertex from it).
 void boundingSphere(const Mesh& mesh, glm::vec3& centre, float& radius);
 
