@@ -380,7 +380,8 @@ lods_chain)
   if command -v assimp >/dev/null; then
     # Assimp reads the FBX's levels as the _LOD<i> nodes
     assimp info lods/bush_LODs.fbx > info.txt 2>&1 || fail "assimp cannot read the FBX: $(cat info.txt)"
-    for i in 0 1 2 3; do grep -q "bush_LOD$i (mesh" info.txt || fail "FBX lacks bush_LOD$i: $(tail info.txt)"; done
+    # siblings right under the root (Unity builds its LOD Group from _LOD<i> children of one parent)
+    for i in 0 1 2 3; do grep -Eq "^(├╴|└╴)bush_LOD$i \(mesh" info.txt || fail "FBX lacks bush_LOD$i under the root: $(tail info.txt)"; done
   fi ;;
 lods_fbx_blender)
   # Blender imports the FBX chain's levels with the triangles (as polygons) the JSON reports.
@@ -390,7 +391,9 @@ lods_fbx_blender)
 import bpy, json, sys
 bpy.ops.wm.read_factory_settings(use_empty=True)
 bpy.ops.import_scene.fbx(filepath=sys.argv[-1])
-print("LEVELS " + json.dumps({o.name: len(o.data.polygons) for o in bpy.data.objects if o.type == "MESH"}))
+meshes = [o for o in bpy.data.objects if o.type == "MESH"]
+assert len({o.parent for o in meshes}) == 1, [(o.name, o.parent) for o in meshes]  # siblings
+print("LEVELS " + json.dumps({o.name: len(o.data.polygons) for o in meshes}))
 PY
   blender -b --python import.py -- lods/bush_LODs.fbx > blender.txt 2>&1 || fail "blender: $(tail blender.txt)"
   python3 - <<'PY' || fail "Blender's levels differ: $(grep LEVELS blender.txt)"
