@@ -32,6 +32,7 @@ class Autosave;
 namespace sylva::ui {
 
 class ColorByMenu;
+class LodChainExportAction;
 class DocumentActions;
 class DocumentGenerator;
 class MessagesPanel;
@@ -76,6 +77,8 @@ public:
     ToolController& tools() { return *mTools; }
     SpeciesWorkbench* workbench() const { return mWorkbench; }
     PresetBrowser* presetBrowser() const { return mPresetBrowser; }
+    /// File ▸ Export LOD chain… (the shown species' or the selected tree's game LOD chain).
+    LodChainExportAction* lodChainExport() const { return mLodChainExport; }
     /// Shows the species editor (graph, grammar, live preview, node parameters) on \p species
     /// (the one shown already when empty).
     void editSpecies(const QString& species = {});
@@ -198,6 +201,7 @@ private:
     QMenu* mPresetsMenu = nullptr;
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
+    LodChainExportAction* mLodChainExport = nullptr;
     QAction* mAutoReloadAction = nullptr;
     SourceWatcher* mSourceWatcher = nullptr; ///< the files the shown result was read from
     QTimer* mSpeciesRegen = nullptr;         ///< the forest regrows when species edits pause

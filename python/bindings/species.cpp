@@ -481,14 +481,11 @@ void bindSpecies(py::module_& m) {
                     exporter::GameLodOptions options;
                     if (const auto res = exporter::resourcesDir(); !res.empty())
                         options.shippedTextures = res / "textures";
-                    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
-                        *grown.skeleton, settings, chainSettings,
-                        mesh::ImpostorTextures(options.shippedTextures), p);
                     std::string stem = std::filesystem::path(g.sourceFile).stem().string();
                     if (stem.empty()) stem = g.name;
-                    description =
-                        exporter::writeGameLodChain(folder, stem, chain, settings.lod, options, p)
-                            .description;
+                    description = exporter::writeTreeLodChain(folder, stem, *grown.skeleton,
+                                                              settings, chainSettings, options, p)
+                                      .description;
                 });
                 return py::module_::import("json").attr("loads")(description);
             },

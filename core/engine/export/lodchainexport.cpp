@@ -69,6 +69,9 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
         colorPng = encodePng(chain.impostor->color);
         normalPng = encodePng(chain.impostor->normal);
         depthPng = encodePng(chain.impostor->depth);
+        files.impostor = true;
+        files.impostorDistance = chain.impostorDistance;
+        files.impostorScreenSize = chain.impostorScreenSize;
         files.impostorColor = dir / (base + "_impostor_color.png");
         files.impostorNormal = dir / (base + "_impostor_normal.png");
         files.impostorDepth = dir / (base + "_impostor_depth.png");
@@ -299,6 +302,20 @@ GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
         }
         throw;
     }
+}
+
+GameLodFiles writeTreeLodChain(const fs::path& dir, const std::string& name,
+                               const skel::Skeleton& skeleton,
+                               const mesh::TreeMeshSettings& settings,
+                               const mesh::LodChainSettings& chainSettings,
+                               const GameLodOptions& options, Progress& progress) {
+    mesh::validateLodChain(chainSettings);
+    const mesh::BudgetLodChain chain =
+        mesh::buildBudgetLodChain(skeleton, settings, chainSettings,
+                                  mesh::ImpostorTextures(options.shippedTextures), progress);
+    progress.checkCancelled();
+    progress.report(0.0, "writing");
+    return writeGameLodChain(dir, name, chain, settings.lod, options, progress);
 }
 
 } // namespace sylva::exporter

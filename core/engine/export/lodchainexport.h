@@ -33,6 +33,8 @@ struct GameLodFiles {
     std::vector<GameLodLevel> levels;
     std::filesystem::path glb, fbx, usd, mtl, json;
     std::filesystem::path impostorColor, impostorNormal, impostorDepth; ///< empty: no impostor
+    bool impostor = false;
+    double impostorDistance = 0.0, impostorScreenSize = 0.0;
     std::string description; ///< the JSON written to `json` (what `sylva-cli lods --json` prints)
 };
 
@@ -49,6 +51,18 @@ struct GameLodFiles {
 GameLodFiles writeGameLodChain(const std::filesystem::path& dir, const std::string& species,
                                const mesh::BudgetLodChain& chain,
                                const mesh::LodSettings& reference,
+                               const GameLodOptions& options = {},
+                               Progress& progress = noProgress());
+
+/// The chain of one tree as `sylva-cli lods` makes and writes it: buildBudgetLodChain() of
+/// \p skeleton with \p settings (the impostor baked with the species' textures, else the
+/// shipped ones in options.shippedTextures), then writeGameLodChain(). Reports the stages
+/// "levels", "impostor" and "writing". The one path of the CLI, Python and the editor.
+/// \throw InvalidInput, IoError, Cancelled (nothing is left written).
+GameLodFiles writeTreeLodChain(const std::filesystem::path& dir, const std::string& name,
+                               const skel::Skeleton& skeleton,
+                               const mesh::TreeMeshSettings& settings,
+                               const mesh::LodChainSettings& chain,
                                const GameLodOptions& options = {},
                                Progress& progress = noProgress());
 

@@ -155,6 +155,7 @@ BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMes
             lastMesh, distanceForScreenSize(settings.lod, out.radius,
                                             chain.impostorPixels / settings.lod.screenHeightPx));
         out.impostorScreenSize = screenSizeAt(settings.lod, out.radius, out.impostorDistance);
+        progress.report(0.0, "impostor");
         out.impostor =
             bakeImpostor(out.levels.front().mesh, materials, chain.impostorSettings, progress);
     }
