@@ -107,7 +107,10 @@ Impostor bakeImpostor(const Mesh& mesh, const ImpostorMaterials& materials,
 /// The reference sampler (what the shader in docs/lods.md does): the impostor drawn as a
 /// camera-facing square of side 2 · radius seen from \p direction (toward the viewer), \p pixels²
 /// RGBA, blending the three atlas views around the direction (barycentric weights over the
-/// grid's triangle), each reprojected onto the square's plane and sampled bilinearly.
+/// grid's triangle); each view is met by the viewer's ray through the pixel, marched against the
+/// depth that view stored (relief mapping: the first point where the ray passes behind the
+/// stored surface, by at most a fifth of the radius, where the view has coverage), and sampled
+/// bilinearly there; a view the ray does not meet adds nothing.
 Image renderImpostor(const Impostor& impostor, const glm::vec3& direction, int pixels);
 
 } // namespace sylva::mesh

@@ -12,10 +12,14 @@
 //   (mesh::renderImpostor, what docs/lods.md's shader does) against the full tree drawn by the
 //   baker's own orthographic view at the size where the impostor takes over (the bounding
 //   sphere 64 px across): the silhouettes (pixels with any coverage, closed by a 1-pixel disc)
-//   overlap with IoU >= 0.9 in every view for the oak, spruce and birch (the alder's open crown:
-//   see SparseCrownImpostor), and colour: the mean absolute difference of the sRGB channels over
-//   the pixels both cover, in 0..1, at most kMaxColourDifference; the distance between the two
-//   pictures' mean colours is printed too. SYLVA_IMPOSTOR_PICTURES=<folder> writes the pictures.
+//   overlap with IoU >= 0.9 in every view for every library species but the date palm (see
+//   LibraryImpostorsMatchTheTreeInEveryView), and colour: the mean absolute difference of the
+//   sRGB channels over the pixels both cover, in 0..1, at most kMaxColourDifference; the
+//   distance between the two pictures' mean colours is printed too. The atlas's cells are 128
+//   px, twice the size compared: the mip level a renderer samples at that size from the default
+//   256-px cells (sampled without mipmaps, 256-px cells alias: pine 0.899 worst, palm 0.784).
+//   SYLVA_IMPOSTOR_PICTURES=<folder> writes the pictures, with a diff (red: only the impostor
+//   covers, blue: only the tree).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -259,7 +263,7 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
     settings.grid = grid;
     const mesh::Impostor imp =
         mesh::bakeImpostor(lod0, mesh::ImpostorTextures(kTextures), settings);
-    EXPECT_EQ(imp.color.width, grid * 128);
+    EXPECT_EQ(imp.color.width, grid * settings.cellPixels);
     EXPECT_EQ(imp.normal.channels, 3);
     EXPECT_EQ(imp.depth.channels, 1);
     const mesh::ImpostorTextures textures(kTextures);
@@ -280,7 +284,33 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
             writePng(dirOut / ("view" + species + std::to_string(v) + "-impostor.png"), drawn);
             if (v == 0) writePng(dirOut / (species + "-atlas.png"), imp.color);
         }
-        const double iou = test::iou(silhouette(truth), silhouette(drawn));
+        const test::Mask truthMask = silhouette(truth), drawnMask = silhouette(drawn);
+        const double iou = test::iou(truthMask, drawnMask);
+        // Where they differ: pixels only the tree covers (the impostor misses them) and pixels
+        // only the impostor covers.
+        const double inter =
+            iou * static_cast<double>(truthMask.size() + drawnMask.size()) / (1.0 + iou);
+        if (const char* out = std::getenv("SYLVA_IMPOSTOR_PICTURES")) {
+            // Black where both cover, red where only the impostor does, blue only the tree.
+            Image diffImage(kViewPixels, kViewPixels, 3);
+            std::vector<std::uint8_t> in(static_cast<std::size_t>(kViewPixels) * kViewPixels, 0);
+            for (std::uint32_t k : truthMask)
+                in[k] |= 1;
+            for (std::uint32_t k : drawnMask)
+                in[k] |= 2;
+            for (std::size_t k = 0; k < in.size(); ++k) {
+                static const std::uint8_t kColours[4][3] = {
+                    {255, 255, 255}, {0, 0, 255}, {255, 0, 0}, {0, 0, 0}};
+                std::copy_n(kColours[in[k]], 3,
+                            diffImage.at(static_cast<int>(k % kViewPixels),
+                                         static_cast<int>(k / kViewPixels)));
+            }
+            writePng(std::filesystem::path(out) /
+                         ("view" + species + std::to_string(v) + "-diff.png"),
+                     diffImage);
+        }
+        const double missed = static_cast<double>(truthMask.size()) - inter;
+        const double extra = static_cast<double>(drawnMask.size()) - inter;
         double diff = 0.0;
         glm::dvec3 meanT(0.0), meanD(0.0);
         std::size_t both = 0;
@@ -301,7 +331,8 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
         const double meanDiff = glm::length(meanT - meanD) / static_cast<double>(both);
         std::cout << "view " << v << " (elevation " << std::asin(y) * 180 / std::numbers::pi
                   << " deg): IoU " << iou << ", colour difference " << diff
-                  << ", mean colours apart " << meanDiff << "\n";
+                  << ", mean colours apart " << meanDiff << " (" << truthMask.size()
+                  << " px, missed " << missed << ", extra " << extra << ")\n";
         worstIou = std::min(worstIou, iou);
         worstColour = std::max(worstColour, diff);
         sumIou += iou;
@@ -315,28 +346,32 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
 
 } // namespace
 
-// Crowns of leaves that close into a silhouette: every view >= 0.9 (issue #32's bar).
-TEST(LodChain, ImpostorMatchesTheTreeFromRandomViews) {
-    for (const char* species : {"norway-spruce", "silver-birch"})
-        compareImpostor(species, 0.9);
+// Issue #32's bar for every species of the library, on the default 8 x 8 atlas: IoU >= 0.9 in
+// each of the 16 random views (worst views measured with the relief-mapping sampler: oak 0.926,
+// birch 0.955, beech 0.936, maple 0.953, willow 0.958, poplar 0.924, pine 0.905, spruce 0.962,
+// cypress 0.942, rhododendron 0.973, privet 0.96; with the former fixed-point parallax walk:
+// oak 0.86, poplar 0.83, pine 0.82, cypress 0.83, privet 0.90).
+// The date palm is the exception: its long thin fronds, seen edge-on from one atlas view and
+// broad from the next 25 degrees away, leave ghost frond tips where the three blended views
+// each meet a frond of their own (measured 0.807 worst, 0.896 mean, 8 of 16 views under 0.9;
+// 0.714 / 0.807 before). Its views are held at 0.8 and its mean at 0.88.
+// SYLVA_IMPOSTOR_SPECIES=<name> runs one species.
+TEST(LodChain, LibraryImpostorsMatchTheTreeInEveryView) {
+    const char* only = std::getenv("SYLVA_IMPOSTOR_SPECIES");
+    for (const char* species : {"english-oak", "silver-birch", "european-beech", "norway-maple",
+                                "weeping-willow", "lombardy-poplar", "scots-pine", "norway-spruce",
+                                "date-palm", "italian-cypress", "rhododendron", "privet-hedge"}) {
+        if (only && std::string(only) != species) continue;
+        const bool palm = std::string(species) == "date-palm";
+        EXPECT_GE(compareImpostor(species, palm ? 0.8 : 0.9).second, palm ? 0.88 : 0.9) << species;
+    }
 }
 
-// The english oak's light-grown crown (issue #33: sunlit lumps with gaps between them, solidity
-// 0.53-0.82) turns gaps in and out of view between two of the default 8 x 8 atlas views:
-// measured 0.86 worst, 0.91 mean (0.87 with its leaf clusters turned off, so the cluster cards
-// are not the cause; it was 0.94 before the light-grown crowns). With 12 x 12 views (the grid is
-// settable, ImpostorSettings::grid / sylva-cli lods --impostor-grid) every view meets the bar
-// (measured 0.91 worst, 0.94 mean): that is held at 0.9; the default grid keeps the mean at 0.9.
-TEST(LodChain, OpenLightGrownCrownImpostor) {
-    EXPECT_GE(compareImpostor("english-oak", 0.85).second, 0.9);
-    compareImpostor("english-oak", 0.9, 12);
-}
-
-// The alder's open crown of small leaves is speckle at 64 pixels: a leaf that turns out of view
-// between two atlas views changes the mask, so its bar is lower (measured 0.78 worst, 0.86
-// mean; a view on the atlas grid itself gives 1.0): the mean is held at 0.8.
+// The alder's open crown of small leaves (not in the library) is speckle at 64 pixels: a leaf
+// that turns out of view between two atlas views changes the mask (measured 0.868 worst, 0.907
+// mean; 0.78 / 0.86 with the former parallax walk): every view is held at 0.85, the mean at 0.9.
 TEST(LodChain, SparseCrownImpostor) {
-    EXPECT_GE(compareImpostor("alder", 0.7).second, 0.8);
+    EXPECT_GE(compareImpostor("alder", 0.85).second, 0.9);
 }
 
 TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {
