@@ -26,7 +26,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <numbers>
+#include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <omp.h>
@@ -193,40 +195,24 @@ TEST(Raster, MatchesTheOracleOnPixelCentres) {
     EXPECT_GE(test::iou(oracle, ours), 0.995);
 }
 
-TEST(LodChain, BudgetsAreMet) {
-    const mesh::BudgetLodChain& chain = alderChain();
-    const mesh::LodChainSettings settings = testChain();
-    ASSERT_EQ(chain.levels.size(), settings.budgets.size());
-    const auto t0 = static_cast<double>(chain.levels[0].mesh.triangleCount());
-    for (std::size_t i = 0; i < chain.levels.size(); ++i) {
-        const mesh::BudgetLevel& l = chain.levels[i];
-        const double ratio = static_cast<double>(l.mesh.triangleCount()) / t0;
-        std::cout << "LOD" << i << ": " << l.mesh.triangleCount() << " triangles (" << ratio
-                  << " of LOD0, budget " << l.budget << ") from " << l.distance
-                  << " m, screen size " << l.screenSize << "\n";
-        EXPECT_TRUE(l.budgetMet) << i;
-        EXPECT_LE(ratio, l.budget + 1e-9) << i;
-        EXPECT_GE(ratio, 0.5 * l.budget) << i;
-        if (i > 0) {
-            EXPECT_GT(l.distance, chain.levels[i - 1].distance) << i;
-        }
-    }
-    std::cout << "impostor from " << chain.impostorDistance << " m, screen size "
-              << chain.impostorScreenSize << "\n";
-    EXPECT_GE(chain.impostorDistance, chain.levels.back().distance);
-}
+namespace {
 
-TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
-    const mesh::BudgetLodChain& chain = alderChain();
+/// Per mesh level of \p chain (LOD1..n), the silhouette IoU against LOD0 on the reference screen
+/// at the level's switch distance from 8 views around the tree (every other one 20 degrees
+/// above): the mean and the worst view.
+std::vector<std::pair<double, double>> levelSilhouettes(const mesh::BudgetLodChain& chain,
+                                                        const std::string& name) {
     const mesh::LodSettings ref;
     std::vector<std::uint8_t> scratch;
+    std::vector<std::pair<double, double>> out;
     for (std::size_t i = 1; i < chain.levels.size(); ++i) {
         const mesh::BudgetLevel& l = chain.levels[i];
         double sum = 0.0, worst = 1.0;
         int views = 0;
+        std::size_t pixels = 0;
         for (int k = 0; k < 8; ++k) {
             const double az = k * std::numbers::pi / 4.0;
-            const double el = (k % 2) ? 0.35 : 0.0; // every other view from 20 degrees above
+            const double el = (k % 2) ? 0.35 : 0.0;
             const glm::vec3 dir(static_cast<float>(std::cos(el) * std::sin(az)),
                                 static_cast<float>(std::sin(el)),
                                 static_cast<float>(std::cos(el) * std::cos(az)));
@@ -240,14 +226,120 @@ TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
             sum += v;
             worst = std::min(worst, v);
             ++views;
-            if (k == 0)
-                std::cout << "LOD" << i << " at " << l.distance << " m: " << full.size() << " px\n";
+            if (k == 0) pixels = full.size();
         }
-        std::cout << "LOD" << i << " silhouette IoU mean " << sum / views << ", worst " << worst
-                  << "\n";
-        EXPECT_GE(sum / views, 0.9) << "LOD" << i;
-        EXPECT_GE(worst, 0.85) << "LOD" << i;
+        std::cout << name << " LOD" << i << " at " << l.distance << " m (" << pixels
+                  << " px): silhouette IoU mean " << sum / views << ", worst " << worst << "\n";
+        out.emplace_back(sum / views, worst);
     }
+    return out;
+}
+
+/// Each level's triangles against its budget: printed; at most the budget, and at least
+/// (1 - \p tolerance) of it unless the level is in \p coarser (the camera LOD's discrete steps
+/// jump past the band: the level is cheaper than asked).
+void checkBudgets(const mesh::BudgetLodChain& chain, const std::string& name, double tolerance,
+                  const std::set<std::size_t>& coarser = {}) {
+    const auto t0 = static_cast<double>(chain.levels[0].mesh.triangleCount());
+    for (std::size_t i = 0; i < chain.levels.size(); ++i) {
+        const mesh::BudgetLevel& l = chain.levels[i];
+        const double ratio = static_cast<double>(l.mesh.triangleCount()) / t0;
+        std::cout << name << " LOD" << i << ": " << l.mesh.triangleCount() << " triangles ("
+                  << ratio << " of LOD0, budget " << l.budget << ") from " << l.distance
+                  << " m, screen size " << l.screenSize << "\n";
+        EXPECT_TRUE(l.budgetMet) << name << " LOD" << i;
+        EXPECT_LE(ratio, l.budget + 1e-9) << name << " LOD" << i;
+        if (coarser.count(i))
+            EXPECT_LT(ratio, (1.0 - tolerance) * l.budget) << name << " LOD" << i << ": fixed?";
+        else
+            EXPECT_GE(ratio, (1.0 - tolerance) * l.budget) << name << " LOD" << i;
+        if (i > 0) {
+            EXPECT_GT(l.distance, chain.levels[i - 1].distance) << name << " LOD" << i;
+        }
+    }
+}
+
+} // namespace
+
+TEST(LodChain, BudgetsAreMet) {
+    const mesh::BudgetLodChain& chain = alderChain();
+    const mesh::LodChainSettings settings = testChain();
+    ASSERT_EQ(chain.levels.size(), settings.budgets.size());
+    checkBudgets(chain, "alder", 0.5);
+    std::cout << "impostor from " << chain.impostorDistance << " m, screen size "
+              << chain.impostorScreenSize << "\n";
+    EXPECT_GE(chain.impostorDistance, chain.levels.back().distance);
+}
+
+TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
+    for (const auto& [mean, worst] : levelSilhouettes(alderChain(), "alder")) {
+        EXPECT_GE(mean, 0.9);
+        EXPECT_GE(worst, 0.85);
+    }
+}
+
+// Issue #32 for every species of the library (seed 1, default budgets 100 / 35 / 12 / 4 %):
+// each mesh level within its budget's tolerance (80-100 % of it) and, drawn at its switch
+// distance on the reference screen, keeping LOD0's silhouette: mean IoU of 8 views >= 0.9 per
+// level. Where that does not hold today the measured value is held instead (the table below,
+// docs/lods.md "What the levels keep"): the camera LOD's coarsest rules (leaves merged into
+// 2-pixel clusters, whole subtrees dropped) at 4 % of LOD0's triangles, where the tree is a
+// few hundred pixels high, change the crown's outline of needle and shrub species by more than
+// a tenth, and moving the switch farther does not help (rhododendron LOD3: 0.74 / 0.72 / 0.70
+// / 0.76 at 1.25 / 1.5 / 2 / 3 times the distance; cypress 0.77 / 0.77 / 0.77 / 0.80).
+// SYLVA_LOD_SPECIES=<name> runs one species.
+TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
+    struct Known {
+        const char* species;
+        std::size_t level;
+        double mean, worst; ///< measured (seed 1), held 0.01 below
+    };
+    // Levels under 0.9 (mean over the 8 views), measured.
+    const Known below[] = {
+        {"norway-maple", 3, 0.878, 0.853},    {"lombardy-poplar", 1, 0.891, 0.881},
+        {"lombardy-poplar", 3, 0.897, 0.870}, {"scots-pine", 2, 0.825, 0.793},
+        {"scots-pine", 3, 0.767, 0.749},      {"date-palm", 2, 0.832, 0.738},
+        {"date-palm", 3, 0.726, 0.667},       {"italian-cypress", 3, 0.745, 0.723},
+        {"rhododendron", 2, 0.896, 0.866},    {"rhododendron", 3, 0.706, 0.659},
+        {"privet-hedge", 3, 0.828, 0.715}};
+    // Levels the camera LOD makes coarser than 80 % of their budget (its steps jump past it).
+    const std::map<std::string, std::set<std::size_t>> coarser = {{"european-beech", {1}},
+                                                                  {"norway-maple", {1}},
+                                                                  {"weeping-willow", {1}},
+                                                                  {"scots-pine", {2}}};
+    const char* only = std::getenv("SYLVA_LOD_SPECIES");
+    int levels = 0, atBar = 0;
+    for (const char* species : {"english-oak", "silver-birch", "european-beech", "norway-maple",
+                                "weeping-willow", "lombardy-poplar", "scots-pine", "norway-spruce",
+                                "date-palm", "italian-cypress", "rhododendron", "privet-hedge"}) {
+        if (only && std::string(only) != species) continue;
+        const Species s = grow(species, 1);
+        mesh::LodChainSettings settings = testChain();
+        settings.impostor = false;
+        const mesh::BudgetLodChain chain =
+            mesh::buildBudgetLodChain(*s.skeleton, s.settings, settings);
+        ASSERT_EQ(chain.levels.size(), settings.budgets.size()) << species;
+        const auto it = coarser.find(species);
+        checkBudgets(chain, species, settings.tolerance,
+                     it == coarser.end() ? std::set<std::size_t>{} : it->second);
+        const auto measured = levelSilhouettes(chain, species);
+        for (std::size_t i = 0; i < measured.size(); ++i) {
+            const std::size_t level = i + 1;
+            const Known* known = nullptr;
+            for (const Known& k : below)
+                if (k.species == std::string(species) && k.level == level) known = &k;
+            ++levels;
+            if (!known) {
+                ++atBar;
+                EXPECT_GE(measured[i].first, 0.9) << species << " LOD" << level;
+                EXPECT_GE(measured[i].second, 0.85) << species << " LOD" << level;
+            } else {
+                EXPECT_GE(measured[i].first, known->mean - 0.01) << species << " LOD" << level;
+                EXPECT_GE(measured[i].second, known->worst - 0.01) << species << " LOD" << level;
+            }
+        }
+    }
+    std::cout << atBar << " of " << levels << " levels at the 0.9 bar\n";
 }
 
 namespace {
