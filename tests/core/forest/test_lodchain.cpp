@@ -236,10 +236,12 @@ std::vector<std::pair<double, double>> levelSilhouettes(const mesh::BudgetLodCha
 }
 
 /// Each level's triangles against its budget: printed; at most the budget, and at least
-/// (1 - \p tolerance) of it unless the level is in \p coarser (the camera LOD's discrete steps
-/// jump past the band: the level is cheaper than asked).
+/// (1 - \p tolerance) of it, unless the level is in \p coarser (the camera LOD's discrete steps
+/// jump past the band: the level is cheaper than asked) or in \p unmet (the camera LOD cannot
+/// reach the budget before the tree is 4 px high: the coarsest it makes, marked budgetMet false).
 void checkBudgets(const mesh::BudgetLodChain& chain, const std::string& name, double tolerance,
-                  const std::set<std::size_t>& coarser = {}) {
+                  const std::set<std::size_t>& coarser = {},
+                  const std::set<std::size_t>& unmet = {}) {
     const auto t0 = static_cast<double>(chain.levels[0].mesh.triangleCount());
     for (std::size_t i = 0; i < chain.levels.size(); ++i) {
         const mesh::BudgetLevel& l = chain.levels[i];
@@ -247,6 +249,13 @@ void checkBudgets(const mesh::BudgetLodChain& chain, const std::string& name, do
         std::cout << name << " LOD" << i << ": " << l.mesh.triangleCount() << " triangles ("
                   << ratio << " of LOD0, budget " << l.budget << ") from " << l.distance
                   << " m, screen size " << l.screenSize << "\n";
+        if (i > 0) {
+            EXPECT_GE(l.distance, chain.levels[i - 1].distance) << name << " LOD" << i;
+        }
+        if (unmet.count(i)) {
+            EXPECT_FALSE(l.budgetMet) << name << " LOD" << i << ": fixed?";
+            continue;
+        }
         EXPECT_TRUE(l.budgetMet) << name << " LOD" << i;
         EXPECT_LE(ratio, l.budget + 1e-9) << name << " LOD" << i;
         if (coarser.count(i))
@@ -281,32 +290,24 @@ TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
 // Issue #32 for every species of the library (seed 1, default budgets 100 / 35 / 12 / 4 %):
 // each mesh level within its budget's tolerance (80-100 % of it) and, drawn at its switch
 // distance on the reference screen, keeping LOD0's silhouette: mean IoU of 8 views >= 0.9 per
-// level. Where that does not hold today the measured value is held instead (the table below,
-// docs/lods.md "What the levels keep"): the camera LOD's coarsest rules (leaves merged into
-// 2-pixel clusters, whole subtrees dropped) at 4 % of LOD0's triangles, where the tree is a
-// few hundred pixels high, change the crown's outline of needle and shrub species by more than
-// a tenth, and moving the switch farther does not help (rhododendron LOD3: 0.74 / 0.72 / 0.70
-// / 0.76 at 1.25 / 1.5 / 2 / 3 times the distance; cypress 0.77 / 0.77 / 0.77 / 0.80).
-// SYLVA_LOD_SPECIES=<name> runs one species.
+// level, worst view >= 0.85. The levels' leaf clusters are half a pixel at the switch distance
+// (LodChainSettings::leafClusterPixels; with the forest's 2 pixels, 11 of the 36 levels missed,
+// down to 0.71: docs/lods.md). Where the bar does not hold today the measured value is held
+// instead (the tables below). SYLVA_LOD_SPECIES=<name> runs one species.
 TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
     struct Known {
         const char* species;
         std::size_t level;
         double mean, worst; ///< measured (seed 1), held 0.01 below
     };
-    // Levels under 0.9 (mean over the 8 views), measured.
-    const Known below[] = {
-        {"norway-maple", 3, 0.878, 0.853},    {"lombardy-poplar", 1, 0.891, 0.881},
-        {"lombardy-poplar", 3, 0.897, 0.870}, {"scots-pine", 2, 0.825, 0.793},
-        {"scots-pine", 3, 0.767, 0.749},      {"date-palm", 2, 0.832, 0.738},
-        {"date-palm", 3, 0.726, 0.667},       {"italian-cypress", 3, 0.745, 0.723},
-        {"rhododendron", 2, 0.896, 0.866},    {"rhododendron", 3, 0.706, 0.659},
-        {"privet-hedge", 3, 0.828, 0.715}};
+    // Levels under the bar, measured: the pine's and the rhododendron's 4 % levels, 75 and 46
+    // px in area at their switch distances.
+    const Known below[] = {{"scots-pine", 3, 0.876, 0.800}, {"rhododendron", 3, 0.890, 0.827}};
     // Levels the camera LOD makes coarser than 80 % of their budget (its steps jump past it).
-    const std::map<std::string, std::set<std::size_t>> coarser = {{"european-beech", {1}},
-                                                                  {"norway-maple", {1}},
-                                                                  {"weeping-willow", {1}},
-                                                                  {"scots-pine", {2}}};
+    const std::map<std::string, std::set<std::size_t>> coarser = {{"silver-birch", {1}},
+                                                                  {"weeping-willow", {1}}};
+    // The date palm has 456 triangles: 12 % and 4 % of them are not reached before it is 4 px.
+    const std::map<std::string, std::set<std::size_t>> unmet = {{"date-palm", {2, 3}}};
     const char* only = std::getenv("SYLVA_LOD_SPECIES");
     int levels = 0, atBar = 0;
     for (const char* species : {"english-oak", "silver-birch", "european-beech", "norway-maple",
@@ -319,9 +320,11 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
         const mesh::BudgetLodChain chain =
             mesh::buildBudgetLodChain(*s.skeleton, s.settings, settings);
         ASSERT_EQ(chain.levels.size(), settings.budgets.size()) << species;
-        const auto it = coarser.find(species);
+        const auto c = coarser.find(species);
+        const auto u = unmet.find(species);
         checkBudgets(chain, species, settings.tolerance,
-                     it == coarser.end() ? std::set<std::size_t>{} : it->second);
+                     c == coarser.end() ? std::set<std::size_t>{} : c->second,
+                     u == unmet.end() ? std::set<std::size_t>{} : u->second);
         const auto measured = levelSilhouettes(chain, species);
         for (std::size_t i = 0; i < measured.size(); ++i) {
             const std::size_t level = i + 1;
