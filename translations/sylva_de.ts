@@ -551,6 +551,45 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::LodChainExportAction</name>
+    <message>
+        <source>Export &amp;LOD chain…</source>
+        <translation>&amp;LOD-Kette exportieren…</translation>
+    </message>
+    <message>
+        <source>Writes the species&apos; or the selected tree&apos;s game LOD chain (LOD0 to LOD3 and the impostor as glTF, FBX, USD, OBJ and PNG maps) into a folder, as sylva-cli lods does</source>
+        <translation>Schreibt die Spiel-LOD-Kette der Art oder des ausgewählten Baums (LOD0 bis LOD3 und den Impostor als glTF, FBX, USD, OBJ und PNG-Karten) in einen Ordner, wie sylva-cli lods</translation>
+    </message>
+    <message>
+        <source>Export LOD chain into folder</source>
+        <translation>LOD-Kette in Ordner exportieren</translation>
+    </message>
+    <message>
+        <source>Select one tree, or open a species, to export its LOD chain.</source>
+        <translation>Wählen Sie einen Baum aus oder öffnen Sie eine Art, um deren LOD-Kette zu exportieren.</translation>
+    </message>
+    <message>
+        <source>Exporting the LOD chain of %1…</source>
+        <translation>LOD-Kette von %1 wird exportiert…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Export LOD chain</source>
+        <translation>LOD-Kette exportieren</translation>
+    </message>
+    <message>
+        <source>LOD chain export cancelled: nothing was written.</source>
+        <translation>Export der LOD-Kette abgebrochen: nichts wurde geschrieben.</translation>
+    </message>
+    <message>
+        <source>Exported the LOD chain of %1 (%2 levels and the impostor) to %3</source>
+        <translation>LOD-Kette von %1 (%2 Stufen und der Impostor) nach %3 exportiert</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::MainWindow</name>
     <message>
         <source>Sylva</source>

@@ -551,6 +551,45 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::LodChainExportAction</name>
+    <message>
+        <source>Export &amp;LOD chain…</source>
+        <translation>Exporter la chaîne de &amp;LOD…</translation>
+    </message>
+    <message>
+        <source>Writes the species&apos; or the selected tree&apos;s game LOD chain (LOD0 to LOD3 and the impostor as glTF, FBX, USD, OBJ and PNG maps) into a folder, as sylva-cli lods does</source>
+        <translation>Écrit la chaîne de LOD de jeu de l’espèce ou de l’arbre sélectionné (LOD0 à LOD3 et l’imposteur en glTF, FBX, USD, OBJ et cartes PNG) dans un dossier, comme sylva-cli lods</translation>
+    </message>
+    <message>
+        <source>Export LOD chain into folder</source>
+        <translation>Exporter la chaîne de LOD dans le dossier</translation>
+    </message>
+    <message>
+        <source>Select one tree, or open a species, to export its LOD chain.</source>
+        <translation>Sélectionnez un arbre, ou ouvrez une espèce, pour en exporter la chaîne de LOD.</translation>
+    </message>
+    <message>
+        <source>Exporting the LOD chain of %1…</source>
+        <translation>Export de la chaîne de LOD de %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Export LOD chain</source>
+        <translation>Exporter la chaîne de LOD</translation>
+    </message>
+    <message>
+        <source>LOD chain export cancelled: nothing was written.</source>
+        <translation>Export de la chaîne de LOD annulé : rien n’a été écrit.</translation>
+    </message>
+    <message>
+        <source>Exported the LOD chain of %1 (%2 levels and the impostor) to %3</source>
+        <translation>Chaîne de LOD de %1 (%2 niveaux et l’imposteur) exportée vers %3</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::MainWindow</name>
     <message>
         <source>Cancel</source>

@@ -49,6 +49,7 @@
 #include "ui/generation/windvertexdata.h"
 #include "ui/helpmenu.h"
 #include "ui/languagemenu.h"
+#include "ui/lodchainexportaction.h"
 #include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/parameterpanel.h"
 #include "ui/preferencesdialog.h"
@@ -372,6 +373,20 @@ void MainWindow::createMenus() {
     mExportViewLodAction->setToolTip(
         tr("File ▸ Export chooses each tree's level of detail for the viewport's camera instead "
            "of the project's camera"));
+    mLodChainExport = new LodChainExportAction(this, [this] {
+        return lodChainSource({lastResult(), mPreview.isActive() ? nullptr : mDocument,
+                               glm::vec3(0.0f), glm::vec3(0.0f)});
+    });
+    file->addAction(mLodChainExport->action());
+    connect(mLodChainExport, &LodChainExportAction::finished, this,
+            [this](bool ok, const QString& message) {
+                if (ok)
+                    statusBar()->showMessage(message, 10000);
+                else
+                    reportError(message);
+            });
+    connect(mDocument, &doc::Document::selectionChanged, mLodChainExport,
+            &LodChainExportAction::update);
     QAction* shot =
         file->addAction(tr("Save s&creenshot…"), this, &MainWindow::showScreenshotDialog);
     shot->setShortcut(QKeySequence(tr("Ctrl+Alt+S")));
@@ -654,6 +669,7 @@ void MainWindow::onPreviewGenerated(const GenerationResult& run) {
     mViewport->setTrees({});
     mViewport->setMesh(result.mesh, true, nullptr, result.skeleton);
     mExportAction->setEnabled(!result.exportTrees.empty());
+    mLodChainExport->update();
     mStats->showResult(result);
     updateTitle();
     statusBar()->showMessage(
@@ -743,6 +759,7 @@ void MainWindow::showDocument(bool frame) {
     mAwaitingFrame = true;
     mViewport->update();
     mExportAction->setEnabled(!result.exportTrees.empty());
+    mLodChainExport->update();
     mStats->showResult(result);
     mStats->showSelection(*mDocument, result);
     updateTitle();

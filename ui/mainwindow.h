@@ -33,6 +33,7 @@ class Autosave;
 namespace sylva::ui {
 
 class ColorByMenu;
+class LodChainExportAction;
 class DocumentActions;
 class DocumentGenerator;
 class MessagesPanel;
@@ -77,6 +78,8 @@ public:
     ToolController& tools() { return *mTools; }
     SpeciesWorkbench* workbench() const { return mWorkbench; }
     PresetBrowser* presetBrowser() const { return mPresetBrowser; }
+    /// File ▸ Export LOD chain… (the shown species' or the selected tree's game LOD chain).
+    LodChainExportAction* lodChainExport() const { return mLodChainExport; }
     /// Shows the species editor (graph, grammar, live preview, node parameters) on \p species
     /// (the one shown already when empty).
     void editSpecies(const QString& species = {});
@@ -206,6 +209,7 @@ private:
     QMenu* mPresetsMenu = nullptr;
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
+    LodChainExportAction* mLodChainExport = nullptr;
     QAction* mAutoReloadAction = nullptr;
     QAction* mWindAction = nullptr;
     /// The project's settings last seen: an edit of the wind alone regrows nothing.

@@ -3,7 +3,7 @@
 #include "terminalprogress.h"
 #include "usage.h"
 
-#include "document/speciesfile.h"
+#include "document/speciestree.h"
 #include "engine/export/lodchainexport.h"
 #include "engine/export/treeexport.h"
 #include "engine/mesh/lodchain.h"
@@ -49,11 +49,11 @@ std::string speciesFileStem(const std::string& path) {
 } // namespace
 
 int runLods(const std::vector<std::string>& argv) {
-    const Args args(
-        argv,
-        {"-o", "--output", "--seed", "--budgets", "--impostor-grid", "--impostor-cell",
-         "--impostor-pixels"},
-        {"--json", "--no-glb", "--no-obj", "--no-fbx", "--no-impostor", "--octahedral"});
+    const Args args(argv,
+                    {"-o", "--output", "--seed", "--budgets", "--impostor-grid", "--impostor-cell",
+                     "--impostor-pixels"},
+                    {"--json", "--no-glb", "--no-obj", "--no-fbx", "--no-usd", "--no-impostor",
+                     "--octahedral"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("lods"));
     auto dir = args.value("-o");
     if (!dir) dir = args.value("--output");
@@ -71,35 +71,23 @@ int runLods(const std::vector<std::string>& argv) {
     chainSettings.impostor = !args.flag("--no-impostor");
     mesh::validateLodChain(chainSettings);
 
-    graph::registerBuiltinNodeTypes();
-    const graph::SpeciesGraph species =
-        doc::loadSpecies(QString::fromStdString(args.positional()[0]));
-    const graph::NodeDesc* out = species.findNode(species.output);
-    if (!out || out->type != "tube_mesh" || out->inputs.size() != 1)
-        throw InvalidInput("lods needs a species whose output is a tube_mesh node");
-    graph::Evaluator evaluator(species);
     const auto seed = args.integer("--seed", 0, (1LL << 62));
-    const graph::NodeOutput& grown = evaluator.evaluateNode(
-        species.skeletonSource(), seed.has_value(), seed ? static_cast<std::uint64_t>(*seed) : 0);
-    if (!grown.skeleton) throw InvalidInput("the species produces no skeleton");
-
-    const mesh::TreeMeshSettings settings =
-        mesh::treeMeshSettingsFromParams(out->params, 0, species.baseDir);
+    const doc::SpeciesTree tree = doc::growSpeciesTree(
+        QString::fromStdString(args.positional()[0]),
+        seed ? std::optional<std::uint64_t>(static_cast<std::uint64_t>(*seed)) : std::nullopt);
     exporter::GameLodOptions options;
     options.obj = !args.flag("--no-obj");
     options.gltf = !args.flag("--no-glb");
     options.fbx = !args.flag("--no-fbx");
+    options.usd = !args.flag("--no-usd");
     const std::filesystem::path res = resourcesDir();
     if (!res.empty()) options.shippedTextures = res / "textures";
     // Ctrl-C stops the levels' search or the baking at its next mesh or view: nothing is
     // written before the chain is complete, and each file is written atomically.
     TerminalProgress progress;
-    const mesh::BudgetLodChain chain =
-        mesh::buildBudgetLodChain(*grown.skeleton, settings, chainSettings,
-                                  mesh::ImpostorTextures(options.shippedTextures), progress);
-    progress.checkCancelled();
-    const exporter::GameLodFiles files = exporter::writeGameLodChain(
-        *dir, speciesFileStem(args.positional()[0]), chain, settings.lod, options, progress);
+    const exporter::GameLodFiles files =
+        exporter::writeTreeLodChain(*dir, speciesFileStem(args.positional()[0]), *tree.skeleton,
+                                    tree.settings, chainSettings, options, progress);
     progress.finish();
 
     if (args.flag("--json")) {
@@ -111,12 +99,13 @@ int runLods(const std::vector<std::string>& argv) {
             std::printf("%-32s %7.0f%% %14.1f %12.3f %12zu %12zu%s\n", l.name.c_str(),
                         l.budget * 100.0, l.distance, l.screenSize, l.triangles, l.vertices,
                         l.budgetMet ? "" : "  (over budget: the coarsest the LOD makes)");
-        if (chain.impostor)
+        if (files.impostor)
             std::printf("%-32s %8s %14.1f %12.3f %12d %12d\n",
                         (speciesFileStem(args.positional()[0]) + "_impostor").c_str(), "",
-                        chain.impostorDistance, chain.impostorScreenSize, 2, 4);
+                        files.impostorDistance, files.impostorScreenSize, 2, 4);
         if (!files.glb.empty()) std::printf("glTF: %s\n", files.glb.string().c_str());
         if (!files.fbx.empty()) std::printf("FBX: %s\n", files.fbx.string().c_str());
+        if (!files.usd.empty()) std::printf("USD: %s\n", files.usd.string().c_str());
         std::printf("description: %s\n", files.json.string().c_str());
     }
     return kOk;

@@ -114,11 +114,12 @@ constexpr CommandHelp kHelp[] = {
      "usage: sylva-cli lods <species.json|grammar> -o <folder> [--seed S] [--json]\n"
      "                      [--budgets 1,0.35,0.12,0.04] [--impostor-grid N]\n"
      "                      [--impostor-cell PX] [--impostor-pixels PX] [--octahedral]\n"
-     "                      [--no-impostor] [--no-glb] [--no-fbx] [--no-obj]\n"
+     "                      [--no-impostor] [--no-glb] [--no-fbx] [--no-usd] [--no-obj]\n"
      "\n"
      "Writes a species' LOD chain for game engines (docs/lods.md): LOD0..LODn by triangle\n"
      "budget and a baked octahedral impostor (<species>_impostor_color/normal/depth.png), as\n"
-     "<species>_LODs.glb (MSFT_lod), <species>_LODs.fbx, <species>_LOD<i>.obj and the\n"
+     "<species>_LODs.glb (MSFT_lod), <species>_LODs.fbx, <species>_lods.usda (a \"lod\"\n"
+     "variant set), <species>_LOD<i>.obj and the\n"
      "description <species>_lods.json; prints each level's budget, switch distance, screen\n"
      "size and triangles.\n"
      "\n"
@@ -134,7 +135,7 @@ constexpr CommandHelp kHelp[] = {
      "                        1080-pixel view (default 64)\n"
      "  --octahedral          views of the whole sphere instead of the upper hemisphere\n"
      "  --no-impostor         mesh levels only\n"
-     "  --no-glb, --no-fbx, --no-obj   skip that file kind\n"
+     "  --no-glb, --no-fbx, --no-usd, --no-obj   skip that file kind\n"
      "  -h, --help            show this text\n"},
     {"nodes",
      "usage: sylva-cli nodes [type] [--markdown | --json]\n"

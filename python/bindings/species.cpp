@@ -481,14 +481,11 @@ void bindSpecies(py::module_& m) {
                     exporter::GameLodOptions options;
                     if (const auto res = exporter::resourcesDir(); !res.empty())
                         options.shippedTextures = res / "textures";
-                    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
-                        *grown.skeleton, settings, chainSettings,
-                        mesh::ImpostorTextures(options.shippedTextures), p);
                     std::string stem = std::filesystem::path(g.sourceFile).stem().string();
                     if (stem.empty()) stem = g.name;
-                    description =
-                        exporter::writeGameLodChain(folder, stem, chain, settings.lod, options, p)
-                            .description;
+                    description = exporter::writeTreeLodChain(folder, stem, *grown.skeleton,
+                                                              settings, chainSettings, options, p)
+                                      .description;
                 });
                 return py::module_::import("json").attr("loads")(description);
             },
@@ -497,7 +494,8 @@ void bindSpecies(py::module_& m) {
             py::arg("impostor_grid") = 8, py::arg("impostor_cell") = 256,
             py::arg("progress") = py::none(),
             "writes the species' game LOD chain into folder as `sylva-cli lods` does (levels by "
-            "triangle budget, the impostor's maps, glTF with MSFT_lod, FBX, OBJ; docs/lods.md) "
+            "triangle budget, the impostor's maps, glTF with MSFT_lod, FBX, USD, OBJ; "
+            "docs/lods.md) "
             "and returns its description (the <species>_lods.json content)")
         .def("__repr__", [](const Species& s) {
             return "<sylva.Species '" + s.graph().name + "' " +

@@ -346,7 +346,7 @@ stats_project)
 lods_chain)
   run_cli 0 lods "$DATA/lsystem/bush.lsys" -o lods --json
   for i in 0 1 2 3; do [[ -s lods/bush_LOD$i.obj ]] || fail "missing bush_LOD$i.obj: $(ls lods)"; done
-  for f in bush_LODs.glb bush_LODs.fbx bush_lods.json bush_impostor_color.png \
+  for f in bush_LODs.glb bush_LODs.fbx bush_lods.json bush_lods.usda bush_impostor_color.png \
       bush_impostor_normal.png bush_impostor_depth.png; do
     [[ -s lods/$f ]] || fail "missing $f: $(ls lods)"
   done
@@ -361,8 +361,8 @@ lods_chain)
   # the same bytes on one thread and on two (Assimp's FBX carries its creation time: not compared)
   OMP_NUM_THREADS=1 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o one --no-obj --no-fbx
   OMP_NUM_THREADS=2 run_cli 0 lods "$DATA/lsystem/bush.lsys" -o two --no-obj --no-fbx
-  for f in bush_LODs.glb bush_lods.json bush_impostor_color.png bush_impostor_normal.png \
-      bush_impostor_depth.png; do
+  for f in bush_LODs.glb bush_lods.json bush_lods.usda bush_impostor_color.png \
+      bush_impostor_normal.png bush_impostor_depth.png; do
     cmp -s one/$f two/$f || fail "$f differs between 1 and 2 threads"
   done
   run_cli 0 lods "$DATA/lsystem/bush.lsys" -o small --no-obj --no-fbx --no-glb \
@@ -370,6 +370,9 @@ lods_chain)
   grep -q '"layout": "octahedral"' small/bush_lods.json || fail "no octahedral layout"
   grep -q '"atlas_pixels": 128' small/bush_lods.json || fail "$(cat small/bush_lods.json)"
   [[ ! -e small/bush_LODs.glb && ! -e small/bush_LOD0.obj ]] || fail "--no-glb/--no-obj ignored"
+  run_cli 0 lods "$DATA/lsystem/bush.lsys" -o nousd --no-obj --no-fbx --no-glb --no-usd \
+    --impostor-cell 16
+  [[ ! -e nousd/bush_lods.usda && -s nousd/bush_lods.json ]] || fail "--no-usd ignored: $(ls nousd)"
   run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --budgets 1,0.5,0.7
   grep -q "LOD2 budget must be above 0 and below the one before" err.txt || fail "$(cat err.txt)"
   run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --budgets 1,x
@@ -377,7 +380,8 @@ lods_chain)
   if command -v assimp >/dev/null; then
     # Assimp reads the FBX's levels as the _LOD<i> nodes
     assimp info lods/bush_LODs.fbx > info.txt 2>&1 || fail "assimp cannot read the FBX: $(cat info.txt)"
-    for i in 0 1 2 3; do grep -q "bush_LOD$i (mesh" info.txt || fail "FBX lacks bush_LOD$i: $(tail info.txt)"; done
+    # siblings right under the root (Unity builds its LOD Group from _LOD<i> children of one parent)
+    for i in 0 1 2 3; do grep -Eq "^(├╴|└╴)bush_LOD$i \(mesh" info.txt || fail "FBX lacks bush_LOD$i under the root: $(tail info.txt)"; done
   fi ;;
 lods_fbx_blender)
   # Blender imports the FBX chain's levels with the triangles (as polygons) the JSON reports.
@@ -387,7 +391,9 @@ lods_fbx_blender)
 import bpy, json, sys
 bpy.ops.wm.read_factory_settings(use_empty=True)
 bpy.ops.import_scene.fbx(filepath=sys.argv[-1])
-print("LEVELS " + json.dumps({o.name: len(o.data.polygons) for o in bpy.data.objects if o.type == "MESH"}))
+meshes = [o for o in bpy.data.objects if o.type == "MESH"]
+assert len({o.parent for o in meshes}) == 1, [(o.name, o.parent) for o in meshes]  # siblings
+print("LEVELS " + json.dumps({o.name: len(o.data.polygons) for o in meshes}))
 PY
   blender -b --python import.py -- lods/bush_LODs.fbx > blender.txt 2>&1 || fail "blender: $(tail blender.txt)"
   python3 - <<'PY' || fail "Blender's levels differ: $(grep LEVELS blender.txt)"

@@ -143,6 +143,38 @@ assert len(cov) == len(levels) and cov[-1] == 0, cov
 assert all(a > b for a, b in zip(cov, cov[1:])), cov
 PY
   ;;
+tinyusdz_lods)
+  # The LOD chain's USD stage (issue #32): the root prim's variant set "lod" holds LOD0..LODn and
+  # the impostor; tinyusdz composes each selection into that level's meshes alone, with the
+  # triangles --json reports, every mesh bound, the impostor's card on its colour and normal maps.
+  [[ -d "$READERS/node_modules/tinyusdz" ]] || { echo "SKIP: tinyusdz missing (run scripts/install-readers.sh)"; exit 77; }
+  run_cli lods "$DATA/../../presets/silver-birch.json" -o lods --json --no-obj --no-fbx --no-glb
+  cp out.txt desc.json
+  [[ -s lods/silver-birch_lods.usda && -s lods/textures/bark.png ]] || fail "no stage or textures: $(ls -R lods)"
+  node "$READERS/usd-lods.mjs" lods/silver-birch_lods.usda > tinyusdz.json 2> tinyusdz.err || fail "tinyusdz: $(cat tinyusdz.err)"
+  cat tinyusdz.json
+  python3 - <<'PY' || fail "tinyusdz's variants do not match the description: $(cat tinyusdz.json)"
+import json
+t = json.load(open("tinyusdz.json"))
+d = json.load(open("desc.json"))
+assert d["files"]["usd"] == "silver-birch_lods.usda", d["files"]
+assert t["declared"] and t["selection"] == "LOD0", t
+names = ["LOD%d" % i for i in range(len(d["levels"]))] + ["impostor"]
+assert list(t["variants"]) == names, list(t["variants"])
+for name, level in zip(names, d["levels"]):
+    v = t["variants"][name]
+    assert v["triangles"] == level["triangles"], (name, v["triangles"], level["triangles"])
+    assert v["meshes"] == 2 and v["bound"] == 2, (name, v)  # bark and leaf
+    assert all(p.startswith("/silver_birch/%s/" % name) for p in v["paths"]), v["paths"]
+    assert v["composedVariantSets"] == 0 and v["otherLevels"] == [], v
+imp = t["variants"]["impostor"]
+assert imp["meshes"] == 1 and imp["triangles"] == 2 and imp["bound"] == 1, imp
+assert imp["colorMaps"] == [d["impostor"]["maps"]["color"]], imp
+assert imp["normalMaps"] == [d["impostor"]["maps"]["normal"]], imp
+tris = [t["variants"][n]["triangles"] for n in names]
+assert all(a > b for a, b in zip(tris, tris[1:])), tris
+PY
+  ;;
 *) fail "unknown case" ;;
 esac
 echo "PASS [$case_name]"

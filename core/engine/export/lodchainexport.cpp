@@ -11,6 +11,7 @@
 #include "engine/export/materials.h"
 #include "engine/export/objwriter.h"
 #include "engine/export/sceneexport.h"
+#include "engine/export/usd/usdlodchain.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -23,26 +24,6 @@ using Json = nlohmann::ordered_json;
 
 Json vec3(const glm::vec3& v) {
     return Json::array({gltf::tidy(v.x), gltf::tidy(v.y), gltf::tidy(v.z)});
-}
-
-/// The impostor's fallback card: a square of side 2 · radius facing +Z through the centre, its
-/// UVs on the atlas cell of the view from +Z (column grid-1, row 0 of a hemi-octahedral atlas;
-/// column grid/2, row grid/2 region of an octahedral one is not exact, so the nearest cell).
-mesh::Mesh impostorCard(const mesh::Impostor& imp) {
-    const int n = imp.settings.grid;
-    glm::vec2 cell = glm::round(mesh::impostorAtlasCoord({0, 0, 1}, imp.settings.hemisphere) *
-                                static_cast<float>(n - 1));
-    const float u0 = cell.x / static_cast<float>(n), v0 = cell.y / static_cast<float>(n);
-    const float du = 1.0f / static_cast<float>(n);
-    const float r = imp.radius;
-    mesh::Mesh m;
-    m.positions = {imp.centre + glm::vec3(-r, -r, 0), imp.centre + glm::vec3(r, -r, 0),
-                   imp.centre + glm::vec3(r, r, 0), imp.centre + glm::vec3(-r, r, 0)};
-    m.normals.assign(4, glm::vec3(0, 0, 1));
-    m.uvs = {{u0, v0 + du}, {u0 + du, v0 + du}, {u0 + du, v0}, {u0, v0}};
-    m.indices = {0, 1, 2, 0, 2, 3};
-    m.submeshes.push_back({"impostor", 0, 6});
-    return m;
 }
 
 std::span<const std::byte> bytesOf(const std::string& s) {
@@ -88,6 +69,9 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
         colorPng = encodePng(chain.impostor->color);
         normalPng = encodePng(chain.impostor->normal);
         depthPng = encodePng(chain.impostor->depth);
+        files.impostor = true;
+        files.impostorDistance = chain.impostorDistance;
+        files.impostorScreenSize = chain.impostorScreenSize;
         files.impostorColor = dir / (base + "_impostor_color.png");
         files.impostorNormal = dir / (base + "_impostor_normal.png");
         files.impostorDepth = dir / (base + "_impostor_depth.png");
@@ -186,7 +170,9 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
                     {"depth_texture", depth},
                     {"spec", "docs/lods.md"}}}}}};
             const int materialIndex = builder.addMaterial(material);
-            const mesh::Mesh card = impostorCard(imp);
+            mesh::Mesh card = mesh::impostorCard(imp);
+            for (glm::vec2& uv : card.uvs) // glTF's uv origin is the image's top-left
+                uv.y = 1.0f - uv.y;
             gltf::Primitive prim;
             prim.attributes = {
                 {"POSITION", builder.addVec3(card.positions, gltf::Target::ArrayBuffer, true)},
@@ -217,7 +203,25 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
         builder.finish();
         written.push_back(files.glb);
     }
-    if (!options.shippedTextures.empty() && (options.obj || options.fbx))
+    if (options.usd) {
+        usd::UsdLodChainNames names;
+        names.species = species;
+        names.prim = base;
+        for (const GameLodLevel& l : files.levels)
+            names.levelNames.push_back(l.name);
+        names.materials = materials;
+        if (chain.impostor) {
+            names.impostorName = impostorName;
+            names.impostorColor = files.impostorColor.filename().string();
+            names.impostorNormal = files.impostorNormal.filename().string();
+            names.impostorDepth = files.impostorDepth.filename().string();
+        }
+        files.usd = dir / (base + "_lods.usda");
+        writeFileAtomically(files.usd, usd::formatLodChainStage(chain, names, progress));
+        written.push_back(files.usd);
+        progress.checkCancelled();
+    }
+    if (!options.shippedTextures.empty() && (options.obj || options.fbx || options.usd))
         copyTextures(materials, options.shippedTextures, dir);
 
     // The description a game engine's importer reads.
@@ -271,6 +275,7 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
     Json out = Json::object();
     if (!files.glb.empty()) out["gltf"] = files.glb.filename().string();
     if (!files.fbx.empty()) out["fbx"] = files.fbx.filename().string();
+    if (!files.usd.empty()) out["usd"] = files.usd.filename().string();
     if (!files.mtl.empty()) out["mtl"] = files.mtl.filename().string();
     doc["files"] = out;
     files.description = doc.dump(2) + "\n";
@@ -297,6 +302,20 @@ GameLodFiles writeGameLodChain(const fs::path& dir, const std::string& species,
         }
         throw;
     }
+}
+
+GameLodFiles writeTreeLodChain(const fs::path& dir, const std::string& name,
+                               const skel::Skeleton& skeleton,
+                               const mesh::TreeMeshSettings& settings,
+                               const mesh::LodChainSettings& chainSettings,
+                               const GameLodOptions& options, Progress& progress) {
+    mesh::validateLodChain(chainSettings);
+    const mesh::BudgetLodChain chain =
+        mesh::buildBudgetLodChain(skeleton, settings, chainSettings,
+                                  mesh::ImpostorTextures(options.shippedTextures), progress);
+    progress.checkCancelled();
+    progress.report(0.0, "writing");
+    return writeGameLodChain(dir, name, chain, settings.lod, options, progress);
 }
 
 } // namespace sylva::exporter

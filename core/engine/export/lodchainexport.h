@@ -14,6 +14,7 @@ struct GameLodOptions {
     bool obj = true;  ///< <species>_LOD<i>.obj + <species>.mtl
     bool gltf = true; ///< <species>_LODs.glb: MSFT_lod chain, impostor card and maps
     bool fbx = true;  ///< <species>_LODs.fbx: the mesh levels as <species>_LOD<i> nodes
+    bool usd = true;  ///< <species>_lods.usda: a "lod" variant set, LOD0..n and "impostor"
     /// Sylva's shipped textures (bark.png, leaf.png) for materials without a file of their own;
     /// also copied into <dir>/textures for the OBJ and FBX files. Empty: none.
     std::filesystem::path shippedTextures;
@@ -30,8 +31,10 @@ struct GameLodLevel {
 
 struct GameLodFiles {
     std::vector<GameLodLevel> levels;
-    std::filesystem::path glb, fbx, mtl, json;
+    std::filesystem::path glb, fbx, usd, mtl, json;
     std::filesystem::path impostorColor, impostorNormal, impostorDepth; ///< empty: no impostor
+    bool impostor = false;
+    double impostorDistance = 0.0, impostorScreenSize = 0.0;
     std::string description; ///< the JSON written to `json` (what `sylva-cli lods --json` prints)
 };
 
@@ -40,13 +43,26 @@ struct GameLodFiles {
 /// `<species>_LODs.glb` (LOD0's node carries MSFT_lod with the coarser levels and the impostor
 /// card, MSFT_screencoverage in its extras; the impostor's material is documented in
 /// docs/lods.md), `<species>_LODs.fbx` (the mesh levels as sibling nodes `<species>_LOD<i>`:
-/// Assimp writes no FbxLODGroup), OBJ files, and `<species>_lods.json` describing all of it
+/// Assimp writes no FbxLODGroup), `<species>_lods.usda` (the root prim's variant set "lod":
+/// LOD0..n and "impostor", docs/usd.md), OBJ files, and `<species>_lods.json` describing all of it
 /// for a game engine's importer. \p species becomes part of file names: characters other than
 /// letters, digits, '-' and '_' become '_'.
 /// \throw InvalidInput (empty species name or chain), IoError, Cancelled.
 GameLodFiles writeGameLodChain(const std::filesystem::path& dir, const std::string& species,
                                const mesh::BudgetLodChain& chain,
                                const mesh::LodSettings& reference,
+                               const GameLodOptions& options = {},
+                               Progress& progress = noProgress());
+
+/// The chain of one tree as `sylva-cli lods` makes and writes it: buildBudgetLodChain() of
+/// \p skeleton with \p settings (the impostor baked with the species' textures, else the
+/// shipped ones in options.shippedTextures), then writeGameLodChain(). Reports the stages
+/// "levels", "impostor" and "writing". The one path of the CLI, Python and the editor.
+/// \throw InvalidInput, IoError, Cancelled (nothing is left written).
+GameLodFiles writeTreeLodChain(const std::filesystem::path& dir, const std::string& name,
+                               const skel::Skeleton& skeleton,
+                               const mesh::TreeMeshSettings& settings,
+                               const mesh::LodChainSettings& chain,
                                const GameLodOptions& options = {},
                                Progress& progress = noProgress());
 

@@ -79,6 +79,14 @@ glm::vec2 impostorAtlasCoord(glm::vec3 direction, bool hemisphere);
 /// with up = +Y (−Z when looking straight down), and up = cross(direction, right).
 void impostorViewBasis(const glm::vec3& direction, glm::vec3& right, glm::vec3& up);
 
+/// The impostor's fallback card for readers that know nothing of impostors: a square of side
+/// 2 · radius through the centre facing +Z, whose uvs (Sylva's convention: origin at the
+/// image's bottom-left) show the atlas cell of the view from +Z (column grid - 1, row 0 of a
+/// hemi-octahedral atlas; the nearest cell of an octahedral one). In that cell the normal map's
+/// mesh-frame normals are the card's tangent-space normals (x along u, y along v, z out of it).
+/// One submesh, "impostor". The glTF and USD LOD chains carry it (docs/lods.md).
+Mesh impostorCard(const Impostor& impostor);
+
 /// Bounding sphere of \p mesh (the centre of its bounds, the farthest vertex from it).
 void boundingSphere(const Mesh& mesh, glm::vec3& centre, float& radius);
 
@@ -99,7 +107,10 @@ Impostor bakeImpostor(const Mesh& mesh, const ImpostorMaterials& materials,
 /// The reference sampler (what the shader in docs/lods.md does): the impostor drawn as a
 /// camera-facing square of side 2 · radius seen from \p direction (toward the viewer), \p pixels²
 /// RGBA, blending the three atlas views around the direction (barycentric weights over the
-/// grid's triangle), each reprojected onto the square's plane and sampled bilinearly.
+/// grid's triangle); each view is met by the viewer's ray through the pixel, marched against the
+/// depth that view stored (relief mapping: the first point where the ray passes behind the
+/// stored surface, by at most a fifth of the radius, where the view has coverage), and sampled
+/// bilinearly there; a view the ray does not meet adds nothing.
 Image renderImpostor(const Impostor& impostor, const glm::vec3& direction, int pixels);
 
 } // namespace sylva::mesh

@@ -19,6 +19,7 @@ void validateLodChain(const LodChainSettings& s) {
     }
     requireRange("LOD budget tolerance", s.tolerance, 0.0, 0.9);
     requireRange("impostor pixels", s.impostorPixels, 1.0, 4096.0);
+    requireRange("LOD leaf cluster pixels", s.leafClusterPixels, 0.25, 8.0);
     validateImpostor(s.impostorSettings);
 }
 
@@ -91,6 +92,7 @@ BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMes
 
     auto meshAt = [&](double distance) {
         TreeMeshSettings s = settings;
+        s.lod.leafClusterPixels = chain.leafClusterPixels;
         s.useLod = true;
         s.hasCamera = false;
         s.cameraDistance = distance;
@@ -155,6 +157,7 @@ BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMes
             lastMesh, distanceForScreenSize(settings.lod, out.radius,
                                             chain.impostorPixels / settings.lod.screenHeightPx));
         out.impostorScreenSize = screenSizeAt(settings.lod, out.radius, out.impostorDistance);
+        progress.report(0.0, "impostor");
         out.impostor =
             bakeImpostor(out.levels.front().mesh, materials, chain.impostorSettings, progress);
     }

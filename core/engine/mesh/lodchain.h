@@ -16,6 +16,12 @@ struct LodChainSettings {
     /// A level is accepted once its triangles lie in [budget · (1 - tolerance), budget] · LOD0
     /// (the camera LOD's steps are discrete; the search keeps the nearest distance within it).
     double tolerance = 0.2;
+    /// The leaf clusters of the levels' meshes, in pixels of the reference view at the level's
+    /// switch distance (the camera LOD's LodSettings::leafClusterPixels, 2 for a forest's trees,
+    /// which draw each mesh over a band of distances; a chain level is drawn from its switch
+    /// distance on, where finer clusters keep the crown's outline: 0.5 keeps LOD0's silhouette,
+    /// IoU >= 0.9, for 34 of the library's 36 levels, 2 for 25; docs/lods.md). 0.25..8.
+    double leafClusterPixels = 0.5;
     bool impostor = true;
     /// The impostor takes over where the tree's bounding sphere spans this many pixels of the
     /// reference view (LodSettings: 1080 px high, 60 degrees), or at 1.5 times the last mesh

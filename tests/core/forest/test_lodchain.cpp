@@ -12,17 +12,23 @@
 //   (mesh::renderImpostor, what docs/lods.md's shader does) against the full tree drawn by the
 //   baker's own orthographic view at the size where the impostor takes over (the bounding
 //   sphere 64 px across): the silhouettes (pixels with any coverage, closed by a 1-pixel disc)
-//   overlap with IoU >= 0.9 in every view for the oak, spruce and birch (the alder's open crown:
-//   see SparseCrownImpostor), and colour: the mean absolute difference of the sRGB channels over
-//   the pixels both cover, in 0..1, at most kMaxColourDifference; the distance between the two
-//   pictures' mean colours is printed too. SYLVA_IMPOSTOR_PICTURES=<folder> writes the pictures.
+//   overlap with IoU >= 0.9 in every view for every library species but the date palm (see
+//   LibraryImpostorsMatchTheTreeInEveryView), and colour: the mean absolute difference of the
+//   sRGB channels over the pixels both cover, in 0..1, at most kMaxColourDifference; the
+//   distance between the two pictures' mean colours is printed too. The atlas's cells are 128
+//   px, twice the size compared: the mip level a renderer samples at that size from the default
+//   256-px cells (sampled without mipmaps, 256-px cells alias: pine 0.899 worst, palm 0.784).
+//   SYLVA_IMPOSTOR_PICTURES=<folder> writes the pictures, with a diff (red: only the impostor
+//   covers, blue: only the tree).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <numbers>
+#include <set>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <omp.h>
@@ -189,40 +195,24 @@ TEST(Raster, MatchesTheOracleOnPixelCentres) {
     EXPECT_GE(test::iou(oracle, ours), 0.995);
 }
 
-TEST(LodChain, BudgetsAreMet) {
-    const mesh::BudgetLodChain& chain = alderChain();
-    const mesh::LodChainSettings settings = testChain();
-    ASSERT_EQ(chain.levels.size(), settings.budgets.size());
-    const auto t0 = static_cast<double>(chain.levels[0].mesh.triangleCount());
-    for (std::size_t i = 0; i < chain.levels.size(); ++i) {
-        const mesh::BudgetLevel& l = chain.levels[i];
-        const double ratio = static_cast<double>(l.mesh.triangleCount()) / t0;
-        std::cout << "LOD" << i << ": " << l.mesh.triangleCount() << " triangles (" << ratio
-                  << " of LOD0, budget " << l.budget << ") from " << l.distance
-                  << " m, screen size " << l.screenSize << "\n";
-        EXPECT_TRUE(l.budgetMet) << i;
-        EXPECT_LE(ratio, l.budget + 1e-9) << i;
-        EXPECT_GE(ratio, 0.5 * l.budget) << i;
-        if (i > 0) {
-            EXPECT_GT(l.distance, chain.levels[i - 1].distance) << i;
-        }
-    }
-    std::cout << "impostor from " << chain.impostorDistance << " m, screen size "
-              << chain.impostorScreenSize << "\n";
-    EXPECT_GE(chain.impostorDistance, chain.levels.back().distance);
-}
+namespace {
 
-TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
-    const mesh::BudgetLodChain& chain = alderChain();
+/// Per mesh level of \p chain (LOD1..n), the silhouette IoU against LOD0 on the reference screen
+/// at the level's switch distance from 8 views around the tree (every other one 20 degrees
+/// above): the mean and the worst view.
+std::vector<std::pair<double, double>> levelSilhouettes(const mesh::BudgetLodChain& chain,
+                                                        const std::string& name) {
     const mesh::LodSettings ref;
     std::vector<std::uint8_t> scratch;
+    std::vector<std::pair<double, double>> out;
     for (std::size_t i = 1; i < chain.levels.size(); ++i) {
         const mesh::BudgetLevel& l = chain.levels[i];
         double sum = 0.0, worst = 1.0;
         int views = 0;
+        std::size_t pixels = 0;
         for (int k = 0; k < 8; ++k) {
             const double az = k * std::numbers::pi / 4.0;
-            const double el = (k % 2) ? 0.35 : 0.0; // every other view from 20 degrees above
+            const double el = (k % 2) ? 0.35 : 0.0;
             const glm::vec3 dir(static_cast<float>(std::cos(el) * std::sin(az)),
                                 static_cast<float>(std::sin(el)),
                                 static_cast<float>(std::cos(el) * std::cos(az)));
@@ -236,14 +226,123 @@ TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
             sum += v;
             worst = std::min(worst, v);
             ++views;
-            if (k == 0)
-                std::cout << "LOD" << i << " at " << l.distance << " m: " << full.size() << " px\n";
+            if (k == 0) pixels = full.size();
         }
-        std::cout << "LOD" << i << " silhouette IoU mean " << sum / views << ", worst " << worst
-                  << "\n";
-        EXPECT_GE(sum / views, 0.9) << "LOD" << i;
-        EXPECT_GE(worst, 0.85) << "LOD" << i;
+        std::cout << name << " LOD" << i << " at " << l.distance << " m (" << pixels
+                  << " px): silhouette IoU mean " << sum / views << ", worst " << worst << "\n";
+        out.emplace_back(sum / views, worst);
     }
+    return out;
+}
+
+/// Each level's triangles against its budget: printed; at most the budget, and at least
+/// (1 - \p tolerance) of it, unless the level is in \p coarser (the camera LOD's discrete steps
+/// jump past the band: the level is cheaper than asked) or in \p unmet (the camera LOD cannot
+/// reach the budget before the tree is 4 px high: the coarsest it makes, marked budgetMet false).
+void checkBudgets(const mesh::BudgetLodChain& chain, const std::string& name, double tolerance,
+                  const std::set<std::size_t>& coarser = {},
+                  const std::set<std::size_t>& unmet = {}) {
+    const auto t0 = static_cast<double>(chain.levels[0].mesh.triangleCount());
+    for (std::size_t i = 0; i < chain.levels.size(); ++i) {
+        const mesh::BudgetLevel& l = chain.levels[i];
+        const double ratio = static_cast<double>(l.mesh.triangleCount()) / t0;
+        std::cout << name << " LOD" << i << ": " << l.mesh.triangleCount() << " triangles ("
+                  << ratio << " of LOD0, budget " << l.budget << ") from " << l.distance
+                  << " m, screen size " << l.screenSize << "\n";
+        if (i > 0) {
+            EXPECT_GE(l.distance, chain.levels[i - 1].distance) << name << " LOD" << i;
+        }
+        if (unmet.count(i)) {
+            EXPECT_FALSE(l.budgetMet) << name << " LOD" << i << ": fixed?";
+            continue;
+        }
+        EXPECT_TRUE(l.budgetMet) << name << " LOD" << i;
+        EXPECT_LE(ratio, l.budget + 1e-9) << name << " LOD" << i;
+        if (coarser.count(i))
+            EXPECT_LT(ratio, (1.0 - tolerance) * l.budget) << name << " LOD" << i << ": fixed?";
+        else
+            EXPECT_GE(ratio, (1.0 - tolerance) * l.budget) << name << " LOD" << i;
+        if (i > 0) {
+            EXPECT_GT(l.distance, chain.levels[i - 1].distance) << name << " LOD" << i;
+        }
+    }
+}
+
+} // namespace
+
+TEST(LodChain, BudgetsAreMet) {
+    const mesh::BudgetLodChain& chain = alderChain();
+    const mesh::LodChainSettings settings = testChain();
+    ASSERT_EQ(chain.levels.size(), settings.budgets.size());
+    checkBudgets(chain, "alder", 0.5);
+    std::cout << "impostor from " << chain.impostorDistance << " m, screen size "
+              << chain.impostorScreenSize << "\n";
+    EXPECT_GE(chain.impostorDistance, chain.levels.back().distance);
+}
+
+TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
+    for (const auto& [mean, worst] : levelSilhouettes(alderChain(), "alder")) {
+        EXPECT_GE(mean, 0.9);
+        EXPECT_GE(worst, 0.85);
+    }
+}
+
+// Issue #32 for every species of the library (seed 1, default budgets 100 / 35 / 12 / 4 %):
+// each mesh level within its budget's tolerance (80-100 % of it) and, drawn at its switch
+// distance on the reference screen, keeping LOD0's silhouette: mean IoU of 8 views >= 0.9 per
+// level, worst view >= 0.85. The levels' leaf clusters are half a pixel at the switch distance
+// (LodChainSettings::leafClusterPixels; with the forest's 2 pixels, 11 of the 36 levels missed,
+// down to 0.71: docs/lods.md). Where the bar does not hold today the measured value is held
+// instead (the tables below). SYLVA_LOD_SPECIES=<name> runs one species.
+TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
+    struct Known {
+        const char* species;
+        std::size_t level;
+        double mean, worst; ///< measured (seed 1), held 0.01 below
+    };
+    // Levels under the bar, measured: the pine's and the rhododendron's 4 % levels, 75 and 46
+    // px in area at their switch distances.
+    const Known below[] = {{"scots-pine", 3, 0.876, 0.800}, {"rhododendron", 3, 0.890, 0.827}};
+    // Levels the camera LOD makes coarser than 80 % of their budget (its steps jump past it).
+    const std::map<std::string, std::set<std::size_t>> coarser = {{"silver-birch", {1}},
+                                                                  {"weeping-willow", {1}}};
+    // The date palm has 456 triangles: 12 % and 4 % of them are not reached before it is 4 px.
+    const std::map<std::string, std::set<std::size_t>> unmet = {{"date-palm", {2, 3}}};
+    const char* only = std::getenv("SYLVA_LOD_SPECIES");
+    int levels = 0, atBar = 0;
+    for (const char* species : {"english-oak", "silver-birch", "european-beech", "norway-maple",
+                                "weeping-willow", "lombardy-poplar", "scots-pine", "norway-spruce",
+                                "date-palm", "italian-cypress", "rhododendron", "privet-hedge"}) {
+        if (only && std::string(only) != species) continue;
+        const Species s = grow(species, 1);
+        mesh::LodChainSettings settings = testChain();
+        settings.impostor = false;
+        const mesh::BudgetLodChain chain =
+            mesh::buildBudgetLodChain(*s.skeleton, s.settings, settings);
+        ASSERT_EQ(chain.levels.size(), settings.budgets.size()) << species;
+        const auto c = coarser.find(species);
+        const auto u = unmet.find(species);
+        checkBudgets(chain, species, settings.tolerance,
+                     c == coarser.end() ? std::set<std::size_t>{} : c->second,
+                     u == unmet.end() ? std::set<std::size_t>{} : u->second);
+        const auto measured = levelSilhouettes(chain, species);
+        for (std::size_t i = 0; i < measured.size(); ++i) {
+            const std::size_t level = i + 1;
+            const Known* known = nullptr;
+            for (const Known& k : below)
+                if (k.species == std::string(species) && k.level == level) known = &k;
+            ++levels;
+            if (!known) {
+                ++atBar;
+                EXPECT_GE(measured[i].first, 0.9) << species << " LOD" << level;
+                EXPECT_GE(measured[i].second, 0.85) << species << " LOD" << level;
+            } else {
+                EXPECT_GE(measured[i].first, known->mean - 0.01) << species << " LOD" << level;
+                EXPECT_GE(measured[i].second, known->worst - 0.01) << species << " LOD" << level;
+            }
+        }
+    }
+    std::cout << atBar << " of " << levels << " levels at the 0.9 bar\n";
 }
 
 namespace {
@@ -259,7 +358,7 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
     settings.grid = grid;
     const mesh::Impostor imp =
         mesh::bakeImpostor(lod0, mesh::ImpostorTextures(kTextures), settings);
-    EXPECT_EQ(imp.color.width, grid * 128);
+    EXPECT_EQ(imp.color.width, grid * settings.cellPixels);
     EXPECT_EQ(imp.normal.channels, 3);
     EXPECT_EQ(imp.depth.channels, 1);
     const mesh::ImpostorTextures textures(kTextures);
@@ -280,7 +379,33 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
             writePng(dirOut / ("view" + species + std::to_string(v) + "-impostor.png"), drawn);
             if (v == 0) writePng(dirOut / (species + "-atlas.png"), imp.color);
         }
-        const double iou = test::iou(silhouette(truth), silhouette(drawn));
+        const test::Mask truthMask = silhouette(truth), drawnMask = silhouette(drawn);
+        const double iou = test::iou(truthMask, drawnMask);
+        // Where they differ: pixels only the tree covers (the impostor misses them) and pixels
+        // only the impostor covers.
+        const double inter =
+            iou * static_cast<double>(truthMask.size() + drawnMask.size()) / (1.0 + iou);
+        if (const char* out = std::getenv("SYLVA_IMPOSTOR_PICTURES")) {
+            // Black where both cover, red where only the impostor does, blue only the tree.
+            Image diffImage(kViewPixels, kViewPixels, 3);
+            std::vector<std::uint8_t> in(static_cast<std::size_t>(kViewPixels) * kViewPixels, 0);
+            for (std::uint32_t k : truthMask)
+                in[k] |= 1;
+            for (std::uint32_t k : drawnMask)
+                in[k] |= 2;
+            for (std::size_t k = 0; k < in.size(); ++k) {
+                static const std::uint8_t kColours[4][3] = {
+                    {255, 255, 255}, {0, 0, 255}, {255, 0, 0}, {0, 0, 0}};
+                std::copy_n(kColours[in[k]], 3,
+                            diffImage.at(static_cast<int>(k % kViewPixels),
+                                         static_cast<int>(k / kViewPixels)));
+            }
+            writePng(std::filesystem::path(out) /
+                         ("view" + species + std::to_string(v) + "-diff.png"),
+                     diffImage);
+        }
+        const double missed = static_cast<double>(truthMask.size()) - inter;
+        const double extra = static_cast<double>(drawnMask.size()) - inter;
         double diff = 0.0;
         glm::dvec3 meanT(0.0), meanD(0.0);
         std::size_t both = 0;
@@ -301,7 +426,8 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
         const double meanDiff = glm::length(meanT - meanD) / static_cast<double>(both);
         std::cout << "view " << v << " (elevation " << std::asin(y) * 180 / std::numbers::pi
                   << " deg): IoU " << iou << ", colour difference " << diff
-                  << ", mean colours apart " << meanDiff << "\n";
+                  << ", mean colours apart " << meanDiff << " (" << truthMask.size()
+                  << " px, missed " << missed << ", extra " << extra << ")\n";
         worstIou = std::min(worstIou, iou);
         worstColour = std::max(worstColour, diff);
         sumIou += iou;
@@ -315,28 +441,32 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
 
 } // namespace
 
-// Crowns of leaves that close into a silhouette: every view >= 0.9 (issue #32's bar).
-TEST(LodChain, ImpostorMatchesTheTreeFromRandomViews) {
-    for (const char* species : {"norway-spruce", "silver-birch"})
-        compareImpostor(species, 0.9);
+// Issue #32's bar for every species of the library, on the default 8 x 8 atlas: IoU >= 0.9 in
+// each of the 16 random views (worst views measured with the relief-mapping sampler: oak 0.926,
+// birch 0.955, beech 0.936, maple 0.953, willow 0.958, poplar 0.924, pine 0.905, spruce 0.962,
+// cypress 0.942, rhododendron 0.973, privet 0.96; with the former fixed-point parallax walk:
+// oak 0.86, poplar 0.83, pine 0.82, cypress 0.83, privet 0.90).
+// The date palm is the exception: its long thin fronds, seen edge-on from one atlas view and
+// broad from the next 25 degrees away, leave ghost frond tips where the three blended views
+// each meet a frond of their own (measured 0.807 worst, 0.896 mean, 8 of 16 views under 0.9;
+// 0.714 / 0.807 before). Its views are held at 0.8 and its mean at 0.88.
+// SYLVA_IMPOSTOR_SPECIES=<name> runs one species.
+TEST(LodChain, LibraryImpostorsMatchTheTreeInEveryView) {
+    const char* only = std::getenv("SYLVA_IMPOSTOR_SPECIES");
+    for (const char* species : {"english-oak", "silver-birch", "european-beech", "norway-maple",
+                                "weeping-willow", "lombardy-poplar", "scots-pine", "norway-spruce",
+                                "date-palm", "italian-cypress", "rhododendron", "privet-hedge"}) {
+        if (only && std::string(only) != species) continue;
+        const bool palm = std::string(species) == "date-palm";
+        EXPECT_GE(compareImpostor(species, palm ? 0.8 : 0.9).second, palm ? 0.88 : 0.9) << species;
+    }
 }
 
-// The english oak's light-grown crown (issue #33: sunlit lumps with gaps between them, solidity
-// 0.53-0.82) turns gaps in and out of view between two of the default 8 x 8 atlas views:
-// measured 0.86 worst, 0.91 mean (0.87 with its leaf clusters turned off, so the cluster cards
-// are not the cause; it was 0.94 before the light-grown crowns). With 12 x 12 views (the grid is
-// settable, ImpostorSettings::grid / sylva-cli lods --impostor-grid) every view meets the bar
-// (measured 0.91 worst, 0.94 mean): that is held at 0.9; the default grid keeps the mean at 0.9.
-TEST(LodChain, OpenLightGrownCrownImpostor) {
-    EXPECT_GE(compareImpostor("english-oak", 0.85).second, 0.9);
-    compareImpostor("english-oak", 0.9, 12);
-}
-
-// The alder's open crown of small leaves is speckle at 64 pixels: a leaf that turns out of view
-// between two atlas views changes the mask, so its bar is lower (measured 0.78 worst, 0.86
-// mean; a view on the atlas grid itself gives 1.0): the mean is held at 0.8.
+// The alder's open crown of small leaves (not in the library) is speckle at 64 pixels: a leaf
+// that turns out of view between two atlas views changes the mask (measured 0.868 worst, 0.907
+// mean; 0.78 / 0.86 with the former parallax walk): every view is held at 0.85, the mean at 0.9.
 TEST(LodChain, SparseCrownImpostor) {
-    EXPECT_GE(compareImpostor("alder", 0.7).second, 0.8);
+    EXPECT_GE(compareImpostor("alder", 0.85).second, 0.9);
 }
 
 TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {

@@ -72,6 +72,11 @@ struct Outcome {
     // The same for instanced trees, which draw their variant's shared levels (see below).
     double worstSmallInstanceIou = 1.0;
     std::uint32_t worstSmallInstance = 0;
+    // How far a small instanced tree falls under the unique trees' bar, 0.8, or under its own
+    // full-detail mesh moved by half a pixel where that is lower (the measure's noise for a
+    // tree of a few dozen pixels): the largest shortfall, and its tree.
+    double smallInstanceShortfall = 0.0;
+    std::uint32_t smallInstanceShortfallTree = 0;
     double meanIouCentres = 0.0; // the same with pixel-centre sampling (reported, not asserted)
     // Full detail against itself drawn half a pixel to the side, both ways of sampling.
     double shiftIou = 0.0, shiftIouCentres = 0.0;
@@ -102,6 +107,7 @@ Outcome compare(const std::string& project, const std::string& pictureName) {
     struct Full {
         test::Mask mask, centres;
         std::size_t triangles = 0;
+        double shift = 0.0; // the full mesh against itself half a pixel aside
     };
     std::map<std::uint32_t, Full> full;
     std::vector<std::uint8_t> scratch;
@@ -122,6 +128,7 @@ Outcome compare(const std::string& project, const std::string& pictureName) {
                 shiftTouched += a;
                 shiftCentres += b;
             }
+            f.shift = a;
             full[t.instance.id] = std::move(f);
             if (pictures) fullPicture.draw(*t.mesh, model, cam);
         }
@@ -160,8 +167,9 @@ Outcome compare(const std::string& project, const std::string& pictureName) {
             if (std::getenv("SYLVA_LOD_VERBOSE"))
                 std::cout << "tree " << t.instance.id << " " << t.name << " variant " << t.variant
                           << " scale " << t.instance.scale * t.instance.growth << " d=" << distance
-                          << " iou=" << v << " centres " << vc << " px " << f.mask.size() << " tri "
-                          << f.triangles << " -> " << t.mesh->triangleCount() << "\n";
+                          << " iou=" << v << " centres " << vc << " shift " << f.shift << " px "
+                          << f.mask.size() << " tri " << f.triangles << " -> "
+                          << t.mesh->triangleCount() << "\n";
             if (v < 0.0 || !inFrame(f.mask, cam)) continue; // off screen
             ++o.visible;
             sum += v;
@@ -173,6 +181,11 @@ Outcome compare(const std::string& project, const std::string& pictureName) {
                     if (v < o.worstSmallInstanceIou) {
                         o.worstSmallInstanceIou = v;
                         o.worstSmallInstance = t.instance.id;
+                    }
+                    const double shortfall = std::min(0.8, f.shift) - v;
+                    if (shortfall > o.smallInstanceShortfall) {
+                        o.smallInstanceShortfall = shortfall;
+                        o.smallInstanceShortfallTree = t.instance.id;
                     }
                 } else if (v < o.worstSmallIou) {
                     o.worstSmallIou = v;
@@ -196,14 +209,15 @@ Outcome compare(const std::string& project, const std::string& pictureName) {
               << o.meanIou << ", worst " << o.worstIou << " (tree " << o.worstTree << "; under "
               << kMinWorstPixels << " px: " << o.worstSmallIou << ", tree " << o.worstSmallTree
               << ", instanced " << o.worstSmallInstanceIou << ", tree " << o.worstSmallInstance
-              << "; " << o.tiny << " trees under " << kMinJudgedPixels
-              << " px in the mean only); triangles " << o.fullTriangles << " full, "
-              << o.lodTriangles << " LOD; beyond 50 m: " << o.far << " trees, " << o.farFull
-              << " -> " << o.farLod << " triangles, worst unique tree " << o.worstFarRatio
-              << "x fewer, worst instanced tree " << o.worstInstanceRatio50 << "x (beyond 100 m "
-              << o.worstInstanceRatio100 << "x). Pixel centres: IoU mean " << o.meanIouCentres
-              << ". Full detail moved by half a pixel: IoU " << o.shiftIou << " (pixel centres "
-              << o.shiftIouCentres << ")\n";
+              << ", shortfall " << o.smallInstanceShortfall << ", tree "
+              << o.smallInstanceShortfallTree << "; " << o.tiny << " trees under "
+              << kMinJudgedPixels << " px in the mean only); triangles " << o.fullTriangles
+              << " full, " << o.lodTriangles << " LOD; beyond 50 m: " << o.far << " trees, "
+              << o.farFull << " -> " << o.farLod << " triangles, worst unique tree "
+              << o.worstFarRatio << "x fewer, worst instanced tree " << o.worstInstanceRatio50
+              << "x (beyond 100 m " << o.worstInstanceRatio100 << "x). Pixel centres: IoU mean "
+              << o.meanIouCentres << ". Full detail moved by half a pixel: IoU " << o.shiftIou
+              << " (pixel centres " << o.shiftIouCentres << ")\n";
     return o;
 }
 
@@ -213,13 +227,17 @@ void expectSilhouetteKept(const Outcome& o) {
     EXPECT_GE(o.worstIou, 0.8) << "tree " << o.worstTree;
     EXPECT_GE(o.worstSmallIou, 0.8)
         << "tree " << o.worstSmallTree << " (under " << kMinWorstPixels << " px)";
-    // Exception (measured 0.77 after the merge of forest and lod): a small instanced tree
-    // draws its variant's coarsest shared level, made for the variant at 8 px high; a seedling
-    // (growth stage 0.1) of bench-1000 at 137 m, 62 px, takes it and keeps 0.774. Its own
-    // camera-made mesh would do better; the levels are shared on purpose (#32), so the bar for
-    // these is 0.75 (docs/lods.md).
+    // Small instanced trees draw their variant's shared levels, made once per variant for its
+    // full size (#32). The worst, a seedling (growth stage 0.1) of bench-1000 at 137 m covering
+    // 62 px, keeps 0.774, under the unique trees' 0.8; but its own full-detail mesh moved by half
+    // a pixel keeps only 0.806: at a few dozen pixels one pixel of outline is 2-3 % of the IoU,
+    // and the level loses less than the measure's own noise. So these are held to 0.8 or their
+    // half-pixel IoU, whichever is lower, within 0.03 (measured shortfall 0.026), and never
+    // under 0.75 (docs/lods.md).
     EXPECT_GE(o.worstSmallInstanceIou, 0.75)
         << "instanced tree " << o.worstSmallInstance << " (under " << kMinWorstPixels << " px)";
+    EXPECT_LE(o.smallInstanceShortfall, 0.03) << "instanced tree " << o.smallInstanceShortfallTree
+                                              << " (under " << kMinWorstPixels << " px)";
     EXPECT_GT(o.far, 0u);
     EXPECT_GE(o.worstFarRatio, 5.0);
     EXPECT_GE(o.worstInstanceRatio50, 2.0);

@@ -1,6 +1,7 @@
 #include "engine/export/usd/usdstagewriter.h"
 
 #include "engine/export/usd/usdformat.h"
+#include "engine/export/usd/usdmesh.h"
 #include "engine/util/error.h"
 
 #include <algorithm>
@@ -32,15 +33,6 @@ void indent(std::string& out, int n) {
 
 std::string forestPath() {
     return "/Forest";
-}
-
-// A mesh's submeshes, or one "bark" run over every index when it has none.
-std::vector<mesh::Submesh> runsOf(const mesh::Mesh& m) {
-    if (!m.submeshes.empty()) return m.submeshes;
-    mesh::Submesh all;
-    all.material = "bark";
-    all.indexCount = static_cast<std::uint32_t>(m.indices.size());
-    return {all};
 }
 
 } // namespace
@@ -196,135 +188,9 @@ const std::string& UsdStageWriter::materialPrim(const mesh::Submesh& submesh) {
 }
 
 std::size_t UsdStageWriter::appendMesh(std::string& out, const mesh::Mesh& m, int at) const {
-    std::size_t written = 0;
-    const int pd = mOptions.compact ? 4 : 0, nd = mOptions.compact ? 3 : 0,
-              ud = mOptions.compact ? 4 : 0;
-    auto number = [&](float v, int decimals) {
-        if (decimals > 0)
-            appendFixed(out, v, decimals);
-        else
-            appendFloat(out, v);
-    };
-    auto vec3 = [&](const glm::vec3& v, int decimals) {
-        out += '(';
-        number(v.x, decimals);
-        out += ',';
-        number(v.y, decimals);
-        out += ',';
-        number(v.z, decimals);
-        out += ')';
-    };
-    // Mesh arrays are most of a forest's bytes: their elements go without spaces ("(x,y,z),"),
-    // 10-13 % less to write and read; everything else is laid out for people.
-    std::vector<std::uint32_t> remap(m.positions.size(), std::numeric_limits<std::uint32_t>::max());
-    // About what the text takes (a vertex ~60 bytes, an index ~7): one allocation, no regrowth.
-    out.reserve(out.size() + m.positions.size() * 64 + m.indices.size() * 8 + 4096);
-    std::vector<std::uint32_t> used;
-    std::set<std::string> names;
-    for (const mesh::Submesh& run : runsOf(m)) {
-        if (run.indexCount < 3) continue;
-        // Each material run is a Mesh of its own with only the vertices it uses, so that a
-        // binding needs no face subsets (a forest's leaf runs have a million faces).
-        used.clear();
-        const std::uint32_t end = run.firstIndex + run.indexCount;
-        for (std::uint32_t i = run.firstIndex; i < end; ++i) {
-            const std::uint32_t v = m.indices[i];
-            if (remap[v] == std::numeric_limits<std::uint32_t>::max()) {
-                remap[v] = static_cast<std::uint32_t>(used.size());
-                used.push_back(v);
-            }
-        }
-        std::string name = primName(run.material.empty() ? "mesh" : run.material);
-        for (int k = 2; !names.insert(name).second; ++k)
-            name = primName(run.material) + "_" + std::to_string(k);
-        const std::string& material = mMaterialPrims.at(materialName(run));
-        const bool leaf = run.material == "leaf";
-
-        indent(out, at);
-        out += "def Mesh \"" + name + "\" (\n";
-        indent(out, at + 4);
-        out += "prepend apiSchemas = [\"MaterialBindingAPI\"]\n";
-        indent(out, at);
-        out += ")\n";
-        indent(out, at);
-        out += "{\n";
-        const int a = at + 4;
-        indent(out, a);
-        out += leaf || m.cameraRibbons ? "uniform bool doubleSided = 1\n"
-                                       : "uniform bool doubleSided = 0\n";
-        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        for (std::uint32_t v : used) {
-            lo = glm::min(lo, m.positions[v]);
-            hi = glm::max(hi, m.positions[v]);
-        }
-        indent(out, a);
-        out += "float3[] extent = [";
-        vec3(lo, pd);
-        out += ", ";
-        vec3(hi, pd);
-        out += "]\n";
-        indent(out, a);
-        out += "int[] faceVertexCounts = [";
-        const std::uint32_t faces = run.indexCount / 3;
-        for (std::uint32_t f = 0; f < faces; ++f)
-            out += f ? ",3" : "3";
-        out += "]\n";
-        indent(out, a);
-        out += "int[] faceVertexIndices = [";
-        char buf[16];
-        for (std::uint32_t i = run.firstIndex; i < run.firstIndex + faces * 3; ++i) {
-            if (i != run.firstIndex) out += ',';
-            out.append(buf, std::to_chars(buf, buf + sizeof buf, remap[m.indices[i]]).ptr);
-        }
-        out += "]\n";
-        indent(out, a);
-        out += "rel material:binding = <" + forestPath() + "/Materials/" + material + ">\n";
-        if (m.normals.size() == m.positions.size()) {
-            indent(out, a);
-            out += "normal3f[] normals = [";
-            for (std::size_t k = 0; k < used.size(); ++k) {
-                if (k) out += ',';
-                vec3(m.normals[used[k]], nd);
-            }
-            out += "] (\n";
-            indent(out, a + 4);
-            out += "interpolation = \"vertex\"\n";
-            indent(out, a);
-            out += ")\n";
-        }
-        indent(out, a);
-        out += "point3f[] points = [";
-        for (std::size_t k = 0; k < used.size(); ++k) {
-            if (k) out += ',';
-            vec3(m.positions[used[k]], pd);
-        }
-        out += "]\n";
-        if (m.uvs.size() == m.positions.size()) {
-            indent(out, a);
-            out += "texCoord2f[] primvars:st = [";
-            for (std::size_t k = 0; k < used.size(); ++k) {
-                if (k) out += ',';
-                out += '(';
-                number(m.uvs[used[k]].x, ud);
-                out += ',';
-                number(m.uvs[used[k]].y, ud);
-                out += ')';
-            }
-            out += "] (\n";
-            indent(out, a + 4);
-            out += "interpolation = \"vertex\"\n";
-            indent(out, a);
-            out += ")\n";
-        }
-        indent(out, a);
-        out += "uniform token subdivisionScheme = \"none\"\n";
-        indent(out, at);
-        out += "}\n";
-        for (std::uint32_t v : used)
-            remap[v] = std::numeric_limits<std::uint32_t>::max();
-        ++written;
-    }
-    return written;
+    return appendMeshPrims(out, m, at, mOptions.compact, [&](const mesh::Submesh& run) {
+        return forestPath() + "/Materials/" + mMaterialPrims.at(materialName(run));
+    });
 }
 
 void UsdStageWriter::add(const std::vector<UsdTree>& trees, Progress& progress) {
@@ -335,7 +201,7 @@ void UsdStageWriter::add(const std::vector<UsdTree>& trees, Progress& progress) 
             throw InvalidInput("tree " + std::to_string(t.id) + " of an unknown species");
         if (t.variant < 0) {
             if (!t.mesh) throw InvalidInput("tree " + std::to_string(t.id) + " has no mesh");
-            for (const mesh::Submesh& s : runsOf(*t.mesh))
+            for (const mesh::Submesh& s : materialRuns(*t.mesh))
                 materialPrim(s); // named here, in tree order, before the parallel formatting
             unique.push_back(&t);
             continue;
@@ -423,7 +289,7 @@ void UsdStageWriter::writeInstancers(Progress& progress) {
         std::sort(protos.begin(), protos.end(),
                   [](const UsdVariant* a, const UsdVariant* b) { return a->index < b->index; });
         for (const UsdVariant* v : protos)
-            for (const mesh::Submesh& run : runsOf(*v->mesh))
+            for (const mesh::Submesh& run : materialRuns(*v->mesh))
                 materialPrim(run);
         const std::string& species = mSpeciesPrims[s];
         const std::string holder = forestPath() + "/Instancers/" + species;
@@ -537,98 +403,13 @@ void UsdStageWriter::writeInstancers(Progress& progress) {
 
 void UsdStageWriter::writeMaterials() {
     std::string& out = mBuffer;
-    out += "    def Scope \"Materials\"\n    {\n";
     // Sorted by prim name: the order a material was first met depends on the trees, this does not.
     std::vector<std::pair<std::string, const Material*>> sorted;
     for (const Material& m : mMaterials)
         sorted.emplace_back(mMaterialPrims.at(m.name), &m);
     std::sort(sorted.begin(), sorted.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (const auto& [prim, m] : sorted) {
-        const std::string path = forestPath() + "/Materials/" + prim;
-        const bool textured = !m->diffuseTexture.empty();
-        out += "        def Material \"" + prim + "\"\n        {\n";
-        out += "            token outputs:surface.connect = <" + path +
-               "/Surface.outputs:surface>\n\n";
-        out += "            def Shader \"Surface\"\n            {\n";
-        out += "                uniform token info:id = \"UsdPreviewSurface\"\n";
-        if (textured) {
-            out += "                color3f inputs:diffuseColor.connect = <" + path +
-                   "/Diffuse.outputs:rgb>\n";
-        } else {
-            out += "                color3f inputs:diffuseColor = (";
-            appendFixed(out, m->diffuse.x, 4);
-            out += ", ";
-            appendFixed(out, m->diffuse.y, 4);
-            out += ", ";
-            appendFixed(out, m->diffuse.z, 4);
-            out += ")\n";
-        }
-        out += "                float inputs:metallic = 0\n";
-        if (textured && m->alphaMask) {
-            out +=
-                "                float inputs:opacity.connect = <" + path + "/Diffuse.outputs:a>\n";
-            out += "                float inputs:opacityThreshold = 0.5\n";
-        }
-        // The species' maps (docs/geometry.md): a tangent-space normal map, OpenGL's +Y up as
-        // UsdPreviewSurface expects, and a grey roughness map; a constant where there is none.
-        const bool normalMap = textured && !m->normalTexture.empty();
-        const bool roughnessMap = textured && !m->roughnessTexture.empty();
-        if (normalMap)
-            out += "                normal3f inputs:normal.connect = <" + path +
-                   "/Normal.outputs:rgb>\n";
-        if (roughnessMap)
-            out += "                float inputs:roughness.connect = <" + path +
-                   "/Roughness.outputs:r>\n";
-        else
-            out += m->twoSided ? "                float inputs:roughness = 0.6\n"
-                               : "                float inputs:roughness = 0.9\n";
-        out += "                token outputs:surface\n            }\n";
-        if (textured) {
-            out += "\n            def Shader \"Diffuse\"\n            {\n";
-            out += "                uniform token info:id = \"UsdUVTexture\"\n";
-            out += "                float4 inputs:fallback = (";
-            appendFixed(out, m->diffuse.x, 4);
-            out += ", ";
-            appendFixed(out, m->diffuse.y, 4);
-            out += ", ";
-            appendFixed(out, m->diffuse.z, 4);
-            out += ", 1)\n";
-            out += "                asset inputs:file = @" + m->diffuseTexture + "@\n";
-            out += "                token inputs:sourceColorSpace = \"sRGB\"\n";
-            out += "                float2 inputs:st.connect = <" + path + "/St.outputs:result>\n";
-            out += "                token inputs:wrapS = \"repeat\"\n";
-            out += "                token inputs:wrapT = \"repeat\"\n";
-            out += "                float outputs:a\n                float3 outputs:rgb\n";
-            out += "            }\n";
-            // Data maps are read raw; the normal map's 0..1 becomes -1..1.
-            auto dataMap = [&](const char* shader, const std::string& file, bool normal) {
-                out += std::string("\n            def Shader \"") + shader + "\"\n            {\n";
-                out += "                uniform token info:id = \"UsdUVTexture\"\n";
-                out += "                asset inputs:file = @" + file + "@\n";
-                out += "                token inputs:sourceColorSpace = \"raw\"\n";
-                if (normal) {
-                    out += "                float4 inputs:scale = (2, 2, 2, 1)\n";
-                    out += "                float4 inputs:bias = (-1, -1, -1, 0)\n";
-                }
-                out +=
-                    "                float2 inputs:st.connect = <" + path + "/St.outputs:result>\n";
-                out += "                token inputs:wrapS = \"repeat\"\n";
-                out += "                token inputs:wrapT = \"repeat\"\n";
-                out += normal ? "                float3 outputs:rgb\n"
-                              : "                float outputs:r\n";
-                out += "            }\n";
-            };
-            if (normalMap) dataMap("Normal", m->normalTexture, true);
-            if (roughnessMap) dataMap("Roughness", m->roughnessTexture, false);
-            out += "\n            def Shader \"St\"\n            {\n";
-            out += "                uniform token info:id = \"UsdPrimvarReader_float2\"\n";
-            out += "                string inputs:varname = \"st\"\n";
-            out += "                float2 outputs:result\n            }\n";
-        }
-        out += "        }\n";
-    }
-    out += "    }\n";
+    appendMaterialScope(out, forestPath() + "/Materials", sorted);
     mStats.materials = sorted.size();
 }
 

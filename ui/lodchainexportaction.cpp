@@ -1,0 +1,139 @@
+#include "ui/lodchainexportaction.h"
+
+#include <atomic>
+#include <string_view>
+#include <thread>
+
+#include <QAction>
+#include <QDir>
+#include <QEventLoop>
+#include <QFileDialog>
+#include <QProgressDialog>
+#include <QTimer>
+
+#include "document/errormessage.h"
+
+namespace sylva::ui {
+
+namespace {
+
+/// The worker's Progress: the stage and its fraction as a percentage the GUI polls, and the
+/// dialog's Cancel as a flag the engine checks.
+class PollProgress : public Progress {
+public:
+    void report(double fraction, std::string_view stage) override {
+        // Rough shares of the time (english oak: growing 10 %, the levels' search 45 %, the
+        // impostor's views 35 %, writing 10 %).
+        struct Share {
+            std::string_view stage;
+            int from, span;
+        };
+        static constexpr Share kShares[] = {
+            {"grow", 0, 10}, {"levels", 10, 45}, {"impostor", 55, 35}, {"writing", 90, 10}};
+        for (const Share& s : kShares)
+            if (s.stage == stage) {
+                const int v = s.from + static_cast<int>(fraction * s.span);
+                if (v > mPercent.load()) mPercent.store(v);
+            }
+    }
+    bool isCancelled() const override { return mCancel.load(); }
+    int percent() const { return mPercent.load(); }
+    void cancel() { mCancel.store(true); }
+
+private:
+    std::atomic<int> mPercent{0};
+    std::atomic<bool> mCancel{false};
+};
+
+} // namespace
+
+LodChainExportAction::LodChainExportAction(QWidget* window, SourceOf source)
+    : QObject(window), mWindow(window), mSource(std::move(source)) {
+    mAction = new QAction(tr("Export &LOD chain…"), this);
+    mAction->setObjectName(QStringLiteral("actionExportLodChain"));
+    mAction->setToolTip(tr("Writes the species' or the selected tree's game LOD chain (LOD0 to "
+                           "LOD3 and the impostor as glTF, FBX, USD, OBJ and PNG maps) into a "
+                           "folder, as sylva-cli lods does"));
+    mAction->setEnabled(false);
+    connect(mAction, &QAction::triggered, this, &LodChainExportAction::chooseFolder);
+}
+
+QProgressDialog* LodChainExportAction::progressDialog() const {
+    return mDialog.data();
+}
+
+void LodChainExportAction::update() {
+    mAction->setEnabled(!mDialog && mSource().has_value());
+}
+
+void LodChainExportAction::chooseFolder() {
+    const QString dir =
+        QFileDialog::getExistingDirectory(mWindow, tr("Export LOD chain into folder"),
+                                          mLastFolder.isEmpty() ? QDir::homePath() : mLastFolder);
+    if (dir.isEmpty()) return;
+    mLastFolder = dir;
+    exportTo(dir);
+}
+
+bool LodChainExportAction::exportTo(const QString& dir) {
+    const std::optional<LodChainSource> source = mSource();
+    if (!source) {
+        Q_EMIT finished(false, tr("Select one tree, or open a species, to export its LOD chain."));
+        return false;
+    }
+    if (mDialog) return false; // one export at a time
+    mAction->setEnabled(false);
+    PollProgress progress;
+    exporter::GameLodFiles files;
+    std::exception_ptr error;
+    std::atomic<bool> done{false};
+    const std::filesystem::path path = dir.toStdString();
+    // A plain thread: the engine's exceptions come back as they are (QtConcurrent would wrap
+    // them), and the export is joined before this returns, cancelled or not.
+    std::thread worker([&] {
+        try {
+            files = exportLodChain(path, *source, progress);
+        } catch (...) {
+            error = std::current_exception();
+        }
+        done.store(true);
+    });
+
+    mDialog = new QProgressDialog(
+        tr("Exporting the LOD chain of %1…").arg(QString::fromStdString(source->name)),
+        tr("Cancel"), 0, 100, mWindow);
+    mDialog->setObjectName(QStringLiteral("lodChainProgress"));
+    mDialog->setWindowTitle(tr("Export LOD chain"));
+    mDialog->setWindowModality(Qt::WindowModal);
+    mDialog->setMinimumDuration(0);
+    mDialog->setAutoClose(false);
+    mDialog->setAutoReset(false);
+    connect(mDialog, &QProgressDialog::canceled, this, [&progress] { progress.cancel(); });
+    QEventLoop loop;
+    QTimer poll;
+    connect(&poll, &QTimer::timeout, &loop, [&] {
+        if (mDialog) mDialog->setValue(progress.percent());
+        if (done.load()) loop.quit();
+    });
+    poll.start(50);
+    loop.exec();
+    worker.join();
+    delete mDialog;
+    update();
+
+    if (error) {
+        const doc::ErrorReport report = doc::describeError(error);
+        const bool cancelled = progress.isCancelled();
+        Q_EMIT finished(false, cancelled ? tr("LOD chain export cancelled: nothing was written.")
+                                         : QString::fromStdString(report.message));
+        return false;
+    }
+    mFiles = std::move(files);
+    Q_EMIT finished(true, tr("Exported the LOD chain of %1 (%2 levels and the impostor) to %3")
+                              .arg(QString::fromStdString(source->name))
+                              .arg(mFiles.levels.size())
+                              .arg(QDir::toNativeSeparators(dir)));
+    return true;
+}
+
+} // namespace sylva::ui
