@@ -296,6 +296,10 @@ std::vector<fs::path> WindExporter::writeFbx() {
             if (parts.empty())
                 parts.push_back({"bark", 0, static_cast<std::uint32_t>(m.indices.size())});
             std::erase_if(parts, [](const mesh::Submesh& s) { return s.indexCount == 0; });
+            // Every joint is a bone of some mesh, weighted or not: Assimp writes only bones as
+            // LimbNodes, and a plain node between two bones splits Blender's armature (its
+            // FBX importer then fails with KeyError 'armature_setup').
+            std::vector<bool> boned(nj, false);
             for (std::size_t k = 0; k < parts.size() && k < node->mNumMeshes; ++k) {
                 aiMesh* am = scene.mMeshes[node->mMeshes[k]];
                 std::vector<std::uint32_t> remap(m.positions.size(), UINT32_MAX), used;
@@ -314,9 +318,14 @@ std::vector<fs::path> WindExporter::writeFbx() {
                         if (w > 0.0f)
                             perJoint[p.weights.joints[used[local]][c]].push_back({local, w});
                     }
+                if (k + 1 == std::min<std::size_t>(parts.size(), node->mNumMeshes))
+                    for (std::size_t j = 0; j < nj; ++j)
+                        if (!boned[j] && perJoint[j].empty())
+                            perJoint[j].push_back({0, 0.0f}); // a cluster that moves nothing
                 std::vector<aiBone*> bones;
                 for (std::size_t j = 0; j < nj; ++j) {
                     if (perJoint[j].empty()) continue;
+                    boned[j] = true;
                     auto* bone = new aiBone();
                     bone->mName = aiString(boneNodes[j]->mName);
                     const glm::vec3& r = p.rig.joints[j].rest;
@@ -343,7 +352,10 @@ std::vector<fs::path> WindExporter::writeFbx() {
                 ch->mScalingKeys = new aiVectorKey[1];
                 ch->mScalingKeys[0] = aiVectorKey(0.0, aiVector3D(1, 1, 1));
                 for (std::size_t f = 0; f < nf; ++f) {
-                    const double tick = static_cast<double>(p.clip.times[f]) * fps;
+                    // Assimp 5.2.5's FBX exporter writes a key's mTime as seconds (KeyTime =
+                    // mTime × 46186158000), not as ticks; the stack's length comes from
+                    // mDuration / mTicksPerSecond and is set exactly by the repair.
+                    const double tick = static_cast<double>(p.clip.times[f]);
                     const glm::vec3& t = p.clip.translation[f * nj + j];
                     const glm::quat& q = p.clip.rotation[f * nj + j];
                     ch->mPositionKeys[f] = aiVectorKey(tick, aiVector3D(t.x, t.y, t.z));
@@ -363,6 +375,8 @@ std::vector<fs::path> WindExporter::writeFbx() {
         scene.mAnimations = new aiAnimation*[1];
         scene.mAnimations[0] = anim;
     };
+    desc.animationFrameRate = fps;
+    desc.animationSeconds = mOptions.wind.period;
     writeScene(mPath, desc, SceneFormat::Fbx);
     return {mPath};
 }
