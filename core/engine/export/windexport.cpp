@@ -8,6 +8,7 @@
 
 #include "engine/export/gltf/gltfbuilder.h"
 #include "engine/export/gltf/gltfmesh.h"
+#include "engine/export/lodexport.h"
 #include "engine/export/materials.h"
 #include "engine/export/objwriter.h"
 #include "engine/export/sceneexport.h"
@@ -77,6 +78,7 @@ WindExporter::Prepared WindExporter::prepare(const WindExportTree& tree,
     p.rig = wind::buildRig(elements, *tree.skeleton, options.rig);
     p.weights = wind::skinWeights(p.rig, elements, *p.mesh);
     p.clip = wind::bakeClip(p.rig, elements, options.wind, options.rig);
+    p.pivotPainter = buildPivotPainter(elements, *tree.skeleton, *p.mesh);
     return p;
 }
 
@@ -145,6 +147,7 @@ std::vector<fs::path> WindExporter::writeGltf() {
                 extra.emplace_back("JOINTS_0", b.addUint16(j16, 4));
             }
             extra.emplace_back("WEIGHTS_0", b.addVec4(u.p.weights.weights));
+            extra.emplace_back("TEXCOORD_1", b.addVec2(u.p.pivotPainter.vertexUv));
             u.mesh = addTreeMesh(b, m, tree.name, table, extra);
             std::vector<glm::mat4> ibm(nj);
             for (std::size_t j = 0; j < nj; ++j)
@@ -216,6 +219,14 @@ std::vector<fs::path> WindExporter::writeGltf() {
             animation.channels.push_back({s + 1, jointNodes[j], "rotation"});
         }
     }
+    std::vector<std::pair<std::string, const Prepared*>> ppTrees;
+    for (const WindExportTree& tree : mTrees) {
+        const Prepared* p = &uniques[uniqueOf.at(tree.mesh.get())].p;
+        if (std::none_of(ppTrees.begin(), ppTrees.end(),
+                         [&](const auto& e) { return e.second == p; }))
+            ppTrees.emplace_back(tree.name, p);
+    }
+    const std::vector<fs::path> ppFiles = writePivotPainterFiles(ppTrees);
     if (!animation.channels.empty()) b.addAnimation(animation);
     b.addScene("wind", roots);
     Json& extras = b.root()["asset"]["extras"];
@@ -227,7 +238,20 @@ std::vector<fs::path> WindExporter::writeGltf() {
                             {"frequency", tidy(mOptions.wind.frequency)},
                             {"period", tidy(mOptions.wind.period)},
                             {"docs", "docs/wind.md"}};
-    return b.finish();
+    // Named after "<stem>" (this file's name without its extension), so that the same trees
+    // give the same bytes whatever the file is called.
+    Json textures = Json::array();
+    for (const auto& [name, p] : ppTrees) {
+        (void)p;
+        const std::string stem =
+            ppTrees.size() == 1 ? std::string("<stem>") : "<stem>_" + fileSafeName(name);
+        textures.push_back(stem + "_pivot_index.exr");
+        textures.push_back(stem + "_xaxis_extent.png");
+    }
+    extras["sylva_wind"]["pivot_painter"] = {{"texcoord", 1}, {"textures", textures}};
+    std::vector<fs::path> written = b.finish();
+    written.insert(written.end(), ppFiles.begin(), ppFiles.end());
+    return written;
 }
 
 std::vector<fs::path> WindExporter::writeFbx() {
@@ -311,6 +335,19 @@ std::vector<fs::path> WindExporter::writeFbx() {
                         used.push_back(v);
                     }
                 }
+                // Pivot Painter's element index as UV channel 1 (FBX's v points up; Unreal's
+                // importer flips it back to the v-down pixel centre).
+                if (!am->mTextureCoords[0]) {
+                    am->mTextureCoords[0] = new aiVector3D[am->mNumVertices]();
+                    am->mNumUVComponents[0] = 2;
+                }
+                am->mTextureCoords[1] = new aiVector3D[am->mNumVertices];
+                am->mNumUVComponents[1] = 2;
+                for (std::uint32_t local = 0; local < used.size() && local < am->mNumVertices;
+                     ++local) {
+                    const glm::vec2 uv = p.pivotPainter.vertexUv[used[local]];
+                    am->mTextureCoords[1][local] = aiVector3D(uv.x, 1.0f - uv.y, 0.0f);
+                }
                 std::vector<std::vector<aiVertexWeight>> perJoint(nj);
                 for (std::uint32_t local = 0; local < used.size(); ++local)
                     for (int c = 0; c < 4; ++c) {
@@ -377,8 +414,31 @@ std::vector<fs::path> WindExporter::writeFbx() {
     };
     desc.animationFrameRate = fps;
     desc.animationSeconds = mOptions.wind.period;
-    writeScene(mPath, desc, SceneFormat::Fbx);
-    return {mPath};
+    writeScene(mPath, desc, SceneFormat::Fbx, mProgress);
+    std::vector<std::pair<std::string, const Prepared*>> ppTrees;
+    std::map<const mesh::Mesh*, std::size_t> firstOf;
+    for (std::size_t i = 0; i < mTrees.size(); ++i)
+        if (firstOf.emplace(mTrees[i].mesh.get(), i).second)
+            ppTrees.emplace_back(mTrees[i].name, &prepared[i]);
+    std::vector<fs::path> written{mPath};
+    for (const fs::path& f : writePivotPainterFiles(ppTrees))
+        written.push_back(f);
+    return written;
+}
+
+std::vector<fs::path> WindExporter::writePivotPainterFiles(
+    const std::vector<std::pair<std::string, const Prepared*>>& prepared) {
+    std::vector<fs::path> written;
+    for (const auto& [name, p] : prepared) {
+        mProgress.checkCancelled();
+        // One tree: <stem>_pivot_index.exr; several unique meshes: <stem>_<tree>_pivot_index.exr.
+        const std::string stem = prepared.size() == 1
+                                     ? mPath.stem().string()
+                                     : mPath.stem().string() + "_" + fileSafeName(name);
+        for (const fs::path& f : writePivotPainter(mPath.parent_path() / stem, p->pivotPainter))
+            written.push_back(f);
+    }
+    return written;
 }
 
 void WindExporter::writeTable() {

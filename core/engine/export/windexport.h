@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/export/pivotpainter.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
@@ -38,6 +39,9 @@ struct WindExportOptions {
 ///   joints). Trees sharing a mesh share its arrays and its clip's accessors.
 /// - `.fbx` (Assimp): per tree the bone nodes, the mesh's skin deformers (clusters) and one
 ///   animation stack "wind".
+/// .glb, .gltf and .fbx also get Unreal's Pivot Painter 2 textures per unique mesh
+/// (`<stem>[_<tree>]_pivot_index.exr`, `<stem>[_<tree>]_xaxis_extent.png`) and the element
+/// index as a second UV set (glTF TEXCOORD_1, FBX UV channel 1) that addresses them.
 /// Every format also gets `<stem>.wind.csv`: the per-vertex channels as a table (object,
 /// vertex, rest position, the 32 floats of mesh::WindVertex), the form tools without custom
 /// attributes (OBJ, FBX) read them in. Nothing appears before commit() succeeds; the same trees
@@ -59,6 +63,7 @@ public:
         wind::Rig rig;
         wind::SkinWeights weights;
         wind::WindClip clip;
+        PivotPainterData pivotPainter; ///< Unreal's Pivot Painter 2 textures and UVs
     };
     static Prepared prepare(const WindExportTree& tree, const WindExportOptions& options);
 
@@ -66,6 +71,9 @@ private:
     std::vector<std::filesystem::path> writeGltf();
     std::vector<std::filesystem::path> writeFbx();
     void writeTable();
+    /// The Pivot Painter textures of each unique mesh of \p prepared (in the trees' order).
+    std::vector<std::filesystem::path>
+    writePivotPainterFiles(const std::vector<std::pair<std::string, const Prepared*>>& prepared);
 
     std::filesystem::path mPath;
     WindExportOptions mOptions;
