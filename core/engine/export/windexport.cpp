@@ -64,17 +64,35 @@ void WindExporter::add(const std::vector<WindExportTree>& trees) {
     }
 }
 
+namespace {
+
+std::shared_ptr<const mesh::Mesh> withWindData(const WindExportTree& tree) {
+    if (tree.mesh->wind.size() == tree.mesh->positions.size() && !tree.mesh->positions.empty())
+        return tree.mesh;
+    auto copy = std::make_shared<mesh::Mesh>(*tree.mesh);
+    wind::addWindData(*copy, *tree.skeleton);
+    return copy;
+}
+
+} // namespace
+
+std::shared_ptr<const mesh::Mesh> WindExporter::windMesh(const WindExportTree& tree) {
+    std::shared_ptr<const mesh::Mesh>& cached = mWindMeshes[tree.mesh.get()];
+    if (!cached) cached = withWindData(tree);
+    return cached;
+}
+
 WindExporter::Prepared WindExporter::prepare(const WindExportTree& tree,
+                                             const WindExportOptions& options) {
+    return prepare(tree, withWindData(tree), options);
+}
+
+WindExporter::Prepared WindExporter::prepare(const WindExportTree& tree,
+                                             std::shared_ptr<const mesh::Mesh> withWind,
                                              const WindExportOptions& options) {
     const wind::WindElements elements = wind::buildWindElements(*tree.skeleton);
     Prepared p;
-    if (tree.mesh->wind.size() == tree.mesh->positions.size() && !tree.mesh->positions.empty()) {
-        p.mesh = tree.mesh;
-    } else {
-        auto copy = std::make_shared<mesh::Mesh>(*tree.mesh);
-        wind::addWindData(*copy, *tree.skeleton);
-        p.mesh = std::move(copy);
-    }
+    p.mesh = std::move(withWind);
     p.rig = wind::buildRig(elements, *tree.skeleton, options.rig);
     p.weights = wind::skinWeights(p.rig, elements, *p.mesh);
     p.clip = wind::bakeClip(p.rig, elements, options.wind, options.rig);
@@ -120,7 +138,7 @@ std::vector<fs::path> WindExporter::writeGltf() {
         auto found = uniqueOf.find(tree.mesh.get());
         if (found == uniqueOf.end()) {
             Unique u;
-            u.p = prepare(tree, mOptions);
+            u.p = prepare(tree, windMesh(tree), mOptions);
             const mesh::Mesh& m = *u.p.mesh;
             const std::size_t nv = m.positions.size();
             ExtraAttributes extra;
@@ -259,7 +277,7 @@ std::vector<fs::path> WindExporter::writeFbx() {
     std::vector<Prepared> prepared;
     for (const WindExportTree& tree : mTrees) {
         mProgress.checkCancelled();
-        prepared.push_back(prepare(tree, mOptions));
+        prepared.push_back(prepare(tree, windMesh(tree), mOptions));
         // One scene mesh per tree: a bone belongs to one mesh, so skinned meshes are not shared.
         desc.meshes.push_back({tree.name, prepared.back().mesh.get()});
         addMaterialsOf(*tree.mesh, desc.materials);
@@ -452,19 +470,9 @@ void WindExporter::writeTable() {
                std::to_string(k) + "_z,branch" + std::to_string(k) + "_stiffness";
     out += ",phase0,phase1,phase2,phase_flutter,level,flutter_weight,reserved0,reserved1\n";
     char buf[48];
-    std::map<const mesh::Mesh*, std::shared_ptr<const mesh::Mesh>> withWind;
     for (const WindExportTree& tree : mTrees) {
         mProgress.checkCancelled();
-        std::shared_ptr<const mesh::Mesh> m = tree.mesh;
-        if (m->wind.size() != m->positions.size()) {
-            auto& cached = withWind[tree.mesh.get()];
-            if (!cached) {
-                auto copy = std::make_shared<mesh::Mesh>(*tree.mesh);
-                wind::addWindData(*copy, *tree.skeleton);
-                cached = std::move(copy);
-            }
-            m = cached;
-        }
+        const std::shared_ptr<const mesh::Mesh> m = windMesh(tree);
         for (std::size_t i = 0; i < m->positions.size(); ++i) {
             out += tree.name;
             out += ',';

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -16,7 +17,8 @@
 
 namespace sylva::exporter {
 
-/// One tree of a wind export: its mesh (with Mesh::node; Mesh::wind is computed when missing)
+/// One tree of a wind export: its mesh (with Mesh::node; Mesh::wind is derived when missing,
+/// once per mesh)
 /// and the skeleton it was made from, in the tree's frame, and where it stands.
 struct WindExportTree {
     std::string name;
@@ -66,11 +68,16 @@ public:
         PivotPainterData pivotPainter; ///< Unreal's Pivot Painter 2 textures and UVs
     };
     static Prepared prepare(const WindExportTree& tree, const WindExportOptions& options);
+    /// The same with the tree's mesh given with its wind data.
+    static Prepared prepare(const WindExportTree& tree, std::shared_ptr<const mesh::Mesh> withWind,
+                            const WindExportOptions& options);
 
 private:
     std::vector<std::filesystem::path> writeGltf();
     std::vector<std::filesystem::path> writeFbx();
     void writeTable();
+    /// The tree's mesh with Mesh::wind, derived once per mesh (shared by every writer here).
+    std::shared_ptr<const mesh::Mesh> windMesh(const WindExportTree& tree);
     /// The Pivot Painter textures of each unique mesh of \p prepared (in the trees' order).
     std::vector<std::filesystem::path>
     writePivotPainterFiles(const std::vector<std::pair<std::string, const Prepared*>>& prepared);
@@ -79,6 +86,7 @@ private:
     WindExportOptions mOptions;
     Progress& mProgress;
     std::vector<WindExportTree> mTrees;
+    std::map<const mesh::Mesh*, std::shared_ptr<const mesh::Mesh>> mWindMeshes;
 };
 
 } // namespace sylva::exporter
