@@ -356,6 +356,13 @@ void MainWindow::createMenus() {
     mExportViewLodAction->setToolTip(
         tr("File ▸ Export chooses each tree's level of detail for the viewport's camera instead "
            "of the project's camera"));
+    mExportWindAction = file->addAction(tr("Export with the project's wind"));
+    mExportWindAction->setObjectName(QStringLiteral("actionExportWind"));
+    mExportWindAction->setCheckable(true);
+    mExportWindAction->setChecked(true);
+    mExportWindAction->setToolTip(
+        tr("When the project has a wind, File ▸ Export writes it as sylva-cli forest --wind: a "
+           "rig and a looping wind clip per tree (.glb, .gltf, .fbx)"));
     QAction* shot =
         file->addAction(tr("Save s&creenshot…"), this, &MainWindow::showScreenshotDialog);
     shot->setShortcut(QKeySequence(tr("Ctrl+Alt+S")));
@@ -900,17 +907,21 @@ bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
         reportError(error);
         return false;
     }
-    statusBar()->showMessage(tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(count.trees))
-                                 .arg(QDir::toNativeSeparators(path))
-                                 .arg(count.files),
-                             10000);
+    statusBar()->showMessage(
+        (count.wind ? tr("Exported %n tree(s) with the project's wind to %1 (%2 files)", nullptr,
+                         int(count.trees))
+                    : tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(count.trees)))
+            .arg(QDir::toNativeSeparators(path))
+            .arg(count.files),
+        10000);
     return true;
 }
 
 void MainWindow::showExportDialog() {
     const QString path = FileDialogs::exportFile(this, currentPath());
     if (!path.isEmpty())
-        exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked()});
+        exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked(),
+                        mExportWindAction->isChecked()});
 }
 
 void MainWindow::showOpenDialog() {
