@@ -59,4 +59,24 @@ print(f"wind fbx: {len(arm.data.bones)} bones, frames {first}..{last}, height {h
 assert tip_moved > 0.05, tip_moved
 assert tip_moved >= 5 * low_moved, (tip_moved, low_moved)
 assert loop < 1e-3, loop
+
+# A forest: every tree its own armature with the action and its skinned mesh (a tree whose mesh
+# was the Model above its bones lost half the forest to Blender's parenting before).
+forest_fbx = os.path.join(work, "forest_wind.fbx")
+project = os.path.join(presets, "..", "tests", "data", "projects", "small.sylva")
+subprocess.run([cli, "forest", project, "-o", forest_fbx, "--wind", "--bones", "8",
+                "--clip-length", "1"], check=True)
+bpy.ops.wm.read_factory_settings(use_empty=True)
+bpy.ops.import_scene.fbx(filepath=forest_fbx)
+armatures = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+skinned = [o for o in bpy.data.objects if o.type == "MESH" and o.find_armature()]
+animated = [a for a in armatures if a.animation_data and a.animation_data.action]
+# The trees with a mesh: the objects of the wind table written beside the FBX.
+with open(os.path.join(work, "forest_wind.wind.csv")) as table:
+    next(table)
+    trees = len({line.split(",", 1)[0] for line in table})
+print(f"wind fbx forest: {trees} trees, {len(armatures)} armatures, {len(skinned)} skinned meshes, "
+      f"{len(animated)} with an action")
+assert len(armatures) == len(animated) == len(skinned) == trees > 1, (
+    len(armatures), len(animated), len(skinned), trees)
 print("PASS blender_wind_fbx")

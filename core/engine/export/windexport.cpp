@@ -330,7 +330,16 @@ std::vector<fs::path> WindExporter::writeFbx() {
             // readers take a node that holds both a mesh and bones for a bone).
             auto* armature = new aiNode(treeName + "_armature");
             attach(armature, kids[nj]);
-            attach(node, {armature});
+            // The meshes move to a node of their own beside the armature: Assimp writes a node
+            // with one mesh as that mesh's Model, and a mesh Model above the bones that deform
+            // it makes Blender parent each to the other (half a forest's trees went missing).
+            auto* meshes = new aiNode(treeName + "_mesh");
+            meshes->mNumMeshes = node->mNumMeshes;
+            meshes->mMeshes = node->mMeshes;
+            node->mNumMeshes = 0;
+            node->mMeshes = nullptr;
+            attach(node, {meshes, armature});
+            node = meshes;
             for (std::size_t j = 0; j < nj; ++j)
                 attach(boneNodes[j], kids[j]);
             // Bones of each of the tree's meshes (one per non-empty submesh).
