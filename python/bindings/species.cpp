@@ -323,7 +323,8 @@ void bindSpecies(py::module_& m) {
             ".glb, .gltf, .fbx); returns the paths written. wind=True writes it as "
             "`sylva-cli tree --wind`: a rig of at most `bones` bones (default 64), skin weights, "
             "a looping clip 'wind' of `clip_length` s (default 4) at `fps` (30), the _WIND* "
-            "vertex data and <stem>.wind.csv; direction (x, y, z), strength (0..2), gustiness "
+            "vertex data, Unreal's Pivot Painter 2 textures and <stem>.wind.csv; direction (x, y, "
+            "z), strength (0..2), gustiness "
             "(0..1) and frequency (Hz, 0.05..5) are the wind's (docs/wind.md)")
         .def("__repr__", [](const GrownTree& t) {
             return "<sylva.GrownTree " + t.species + ": " +
