@@ -8,7 +8,7 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
   libqt6opengl6-dev libgl-dev libglm-dev
-  libassimp-dev assimp-utils libembree-dev libnanoflann-dev nlohmann-json3-dev libpng-dev
+  libassimp-dev assimp-utils libembree-dev libnanoflann-dev nlohmann-json3-dev libpng-dev libopenexr-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool libgl1-mesa-dri clang-format
   python3-dev pybind11-dev python3-numpy python3-pytest

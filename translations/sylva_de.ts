@@ -671,6 +671,21 @@
         <source>Nothing to export yet.</source>
         <translation>Noch nichts zu exportieren.</translation>
     </message>
+    <message>
+        <source>Export with the project&apos;s wind</source>
+        <translation>Mit dem Wind des Projekts exportieren</translation>
+    </message>
+    <message>
+        <source>When the project has a wind, File ▸ Export writes it as sylva-cli forest --wind: a rig and a looping wind clip per tree (.glb, .gltf, .fbx)</source>
+        <translation>Hat das Projekt einen Wind, schreibt Datei ▸ Exportieren ihn wie sylva-cli forest --wind: ein Rig und einen sich wiederholenden Wind-Clip pro Baum (.glb, .gltf, .fbx)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n tree(s) with the project&apos;s wind to %1 (%2 files)</source>
+        <translation>
+            <numerusform>%n Baum mit dem Wind des Projekts nach %1 exportiert (%2 Dateien)</numerusform>
+            <numerusform>%n Bäume mit dem Wind des Projekts nach %1 exportiert (%2 Dateien)</numerusform>
+        </translation>
+    </message>
     <message numerus="yes">
         <source>Exported %n tree(s) to %1 (%2 files)</source>
         <translation>

@@ -822,6 +822,21 @@
         <source>Nothing to export yet.</source>
         <translation>Rien à exporter pour l&apos;instant.</translation>
     </message>
+    <message>
+        <source>Export with the project&apos;s wind</source>
+        <translation>Exporter avec le vent du projet</translation>
+    </message>
+    <message>
+        <source>When the project has a wind, File ▸ Export writes it as sylva-cli forest --wind: a rig and a looping wind clip per tree (.glb, .gltf, .fbx)</source>
+        <translation>Si le projet a un vent, Fichier ▸ Exporter l&apos;écrit comme sylva-cli forest --wind : un squelette et une boucle de vent par arbre (.glb, .gltf, .fbx)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n tree(s) with the project&apos;s wind to %1 (%2 files)</source>
+        <translation>
+            <numerusform>%n arbre exporté avec le vent du projet vers %1 (%2 fichiers)</numerusform>
+            <numerusform>%n arbres exportés avec le vent du projet vers %1 (%2 fichiers)</numerusform>
+        </translation>
+    </message>
     <message numerus="yes">
         <source>Exported %n tree(s) to %1 (%2 files)</source>
         <translation>

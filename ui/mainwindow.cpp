@@ -373,6 +373,13 @@ void MainWindow::createMenus() {
     mExportViewLodAction->setToolTip(
         tr("File ▸ Export chooses each tree's level of detail for the viewport's camera instead "
            "of the project's camera"));
+    mExportWindAction = file->addAction(tr("Export with the project's wind"));
+    mExportWindAction->setObjectName(QStringLiteral("actionExportWind"));
+    mExportWindAction->setCheckable(true);
+    mExportWindAction->setChecked(true);
+    mExportWindAction->setToolTip(
+        tr("When the project has a wind, File ▸ Export writes it as sylva-cli forest --wind: a "
+           "rig and a looping wind clip per tree (.glb, .gltf, .fbx)"));
     mLodChainExport = new LodChainExportAction(this, [this] {
         return lodChainSource({lastResult(), mPreview.isActive() ? nullptr : mDocument,
                                glm::vec3(0.0f), glm::vec3(0.0f)});
@@ -981,17 +988,21 @@ bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
         reportError(error);
         return false;
     }
-    statusBar()->showMessage(tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(count.trees))
-                                 .arg(QDir::toNativeSeparators(path))
-                                 .arg(count.files),
-                             10000);
+    statusBar()->showMessage(
+        (count.wind ? tr("Exported %n tree(s) with the project's wind to %1 (%2 files)", nullptr,
+                         int(count.trees))
+                    : tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(count.trees)))
+            .arg(QDir::toNativeSeparators(path))
+            .arg(count.files),
+        10000);
     return true;
 }
 
 void MainWindow::showExportDialog() {
     const QString path = FileDialogs::exportFile(this, currentPath());
     if (!path.isEmpty())
-        exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked()});
+        exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked(),
+                        mExportWindAction->isChecked()});
 }
 
 void MainWindow::showOpenDialog() {

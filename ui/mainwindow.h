@@ -205,6 +205,7 @@ private:
     DocumentActions* mDocumentActions = nullptr;
     QAction* mExportSelectionAction = nullptr;
     QAction* mExportViewLodAction = nullptr;
+    QAction* mExportWindAction = nullptr;
     std::map<QString, QDockWidget*> mDocks;
     QMenu* mPresetsMenu = nullptr;
     QAction* mReloadAction = nullptr;

@@ -98,8 +98,9 @@ class SylvaSettings(bpy.types.PropertyGroup):
     tree_preset: EnumProperty(name="Tree", items=preset_items)
     tree_file: StringProperty(name="File", subtype="FILE_PATH")
     wind: BoolProperty(name="Wind", default=False,
-                       description="Give the tree an armature with a looping wind action "
-                                   "(Sylva's wind rig and clip, docs/wind.md)")
+                       description="Give the tree, and each tree of the forest, an armature "
+                                   "with a looping wind action (Sylva's wind rig and clip, "
+                                   "docs/wind.md)")
     wind_strength: FloatProperty(name="Strength", default=0.5, min=0.0, max=2.0)
     wind_gustiness: FloatProperty(name="Gustiness", default=0.3, min=0.0, max=1.0)
     wind_direction: FloatVectorProperty(name="Direction", size=3, default=(1.0, 0.0, 0.0),

@@ -162,18 +162,27 @@ def forest_collection(scene):
     if col is None:
         col = bpy.data.collections.new(FOREST_COLLECTION)
         scene.collection.children.link(col)
+    actions = set()
     for obj in list(col.objects):
         data = obj.data
+        if obj.animation_data and obj.animation_data.action:
+            actions.add(obj.animation_data.action)
         bpy.data.objects.remove(obj, do_unlink=True)
         if data is not None and data.users == 0:
-            bpy.data.meshes.remove(data)
+            if isinstance(data, bpy.types.Mesh):
+                bpy.data.meshes.remove(data)
+            elif isinstance(data, bpy.types.Armature):
+                bpy.data.armatures.remove(data)
+    for action in actions:  # a wind forest's actions, one per armature
+        if action.users == 0:
+            bpy.data.actions.remove(action)
     return col
 
 
 def grow_forest(sylva, context, settings):
     """Builds the forest of \\p settings (SylvaSettings) and puts it in the "Sylva Forest"
-    collection, one object per tree (instanced trees share their variant's mesh); returns the
-    sylva.Forest."""
+    collection, one object per tree (instanced trees share their variant's mesh; with Wind, an
+    armature per tree with its wind action, wind_forest_objects); returns the sylva.Forest."""
     if settings.ground is None:
         raise ValueError("choose a ground object")
     depsgraph = context.evaluated_depsgraph_get()
@@ -205,11 +214,14 @@ def grow_forest(sylva, context, settings):
     try:
         forest = project.build_forest(progress=lambda f, stage: wm.progress_update(int(f * 100)),
                                       camera=camera, lod=settings.lod, adapt=settings.adapt,
-                                      instancing=settings.instancing)
+                                      instancing=settings.instancing, wind=settings.wind)
     finally:
         wm.progress_end()
 
     col = forest_collection(context.scene)
+    if settings.wind:
+        wind_forest_objects(context, forest, settings, col)
+        return forest
     mats = materials(sylva)
     variants = forest.variants
     shared = {}  # variant index -> its one Blender mesh, linked by every tree that shows it
@@ -235,3 +247,56 @@ def grow_forest(sylva, context, settings):
         obj["sylva_id"] = str(tree.id)  # the tree's stable id (exports carry it too)
         obj["sylva_variant"] = variants[tree.variant].name if tree.instanced else ""
     return forest
+
+
+def wind_forest_objects(context, forest, settings, col):
+    """The forest with wind (as "Grow tree at cursor" with Wind): written as Sylva's wind GLB
+    (sylva.Forest.export(wind=True): per tree a rig and the looping "wind" clip, instances of
+    a variant sharing its mesh) and imported with Blender's glTF importer into \p col: each tree
+    an armature with its "wind" action and its skinned mesh as the child. Blender's importer
+    makes one mesh per skinned node; the trees of a variant are given back one shared mesh
+    datablock (their vertex groups name their own bones in the same joint order)."""
+    import numpy
+    numpy.bool = bool  # Blender 3.4's glTF importer still uses the removed alias
+    d = settings.wind_direction
+    with tempfile.TemporaryDirectory(prefix="sylva-wind-forest-") as folder:
+        glb = os.path.join(folder, "forest.glb")
+        forest.export(glb, wind=True, direction=(d[0], d[2], -d[1]),
+                      strength=settings.wind_strength, gustiness=settings.wind_gustiness,
+                      bones=settings.wind_bones, clip_length=settings.wind_clip)
+        before = set(bpy.data.objects)
+        bpy.ops.import_scene.gltf(filepath=glb)
+    new = [o for o in bpy.data.objects if o not in before]
+    for obj in new:
+        for c in list(obj.users_collection):
+            c.objects.unlink(obj)
+        col.objects.link(obj)
+    by_name = {o.name: o for o in new}
+    variants = forest.variants
+    shared = {}  # variant index -> the mesh datablock its trees link
+    longest = 0.0
+    for tree in forest.trees:
+        armature = by_name.get(tree.name)
+        if armature is None or armature.type != "ARMATURE":
+            continue  # a tree pruned away has no rig
+        armature["sylva_species"] = tree.species
+        armature["sylva_seed"] = str(tree.seed)
+        armature["sylva_id"] = str(tree.id)
+        armature["sylva_variant"] = variants[tree.variant].name if tree.instanced else ""
+        action = armature.animation_data.action if armature.animation_data else None
+        if action is not None:
+            longest = max(longest, action.frame_range[1] - action.frame_range[0])
+        skinned = by_name.get(tree.name + "_mesh")
+        if skinned is None or not tree.instanced:
+            continue
+        data = shared.get(tree.variant)
+        if data is None:
+            shared[tree.variant] = skinned.data
+            skinned.data.name = variants[tree.variant].name
+        elif skinned.data != data:
+            old = skinned.data
+            skinned.data = data
+            if old.users == 0:
+                bpy.data.meshes.remove(old)
+    scene = context.scene
+    scene.frame_end = max(scene.frame_end, scene.frame_start + int(longest))

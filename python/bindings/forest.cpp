@@ -1,6 +1,7 @@
 // sylva.Project, sylva.Forest, sylva.ForestTree: a forest built as `sylva-cli forest` builds
 // it, with obstacles and a ground that may also come from arrays (a DCC tool's own meshes).
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <optional>
 
@@ -21,6 +22,7 @@
 #include "engine/environment/obstaclemesh.h"
 #include "engine/environment/obstaclescene.h"
 #include "engine/export/treeexport.h"
+#include "engine/export/windexport.h"
 #include "engine/forest/forestbuild.h"
 #include "engine/graph/graph.h"
 #include "engine/placement/placement.h"
@@ -59,6 +61,10 @@ struct Forest {
     std::shared_ptr<const std::vector<forest::ForestVariant>> variants;
     std::vector<std::string> speciesNames;
     py::dict stats;
+    /// Built with wind data (build_forest(wind=True)): node ids in the meshes, skeletons kept.
+    bool windData = false;
+    /// The project's wind when it was built (the defaults of export(wind=True)).
+    std::optional<doc::ProjectWind> projectWind;
 };
 
 struct BuildOptions {
@@ -371,16 +377,63 @@ void bindForest(py::module_& m) {
         .def(
             "export",
             [](const Forest& f, const py::object& path, bool fullPrecision, bool fsync,
-               bool instanceTables) {
+               bool instanceTables, bool wind, const py::object& direction,
+               const py::object& strength, const py::object& gustiness, const py::object& frequency,
+               const py::object& bones, const py::object& clipLength, const py::object& fps) {
                 const std::string p = toPath(path);
+                if (!wind) {
+                    if (!direction.is_none() || !strength.is_none() || !gustiness.is_none() ||
+                        !frequency.is_none() || !bones.is_none() || !clipLength.is_none() ||
+                        !fps.is_none())
+                        throw InvalidInput("wind settings need wind=True");
+                    py::gil_scoped_release release;
+                    return writeForest(*f.trees, exportVariants(*f.variants), p, fullPrecision,
+                                       fsync, instanceTables);
+                }
+                if (!f.windData)
+                    throw InvalidInput("export(wind=True) needs a forest built with wind data: "
+                                       "build_forest(wind=True)");
+                // The project's wind (when it has one) under the keyword arguments.
+                exporter::WindExportOptions base;
+                if (f.projectWind) {
+                    base.wind.direction = f.projectWind->direction;
+                    base.wind.strength = f.projectWind->strength;
+                    base.wind.gustiness = f.projectWind->gustiness;
+                    base.wind.frequency = f.projectWind->frequency;
+                }
+                const exporter::WindExportOptions options = windExportOptions(
+                    direction, strength, gustiness, frequency, bones, clipLength, fps, base);
                 py::gil_scoped_release release;
-                return writeForest(*f.trees, exportVariants(*f.variants), p, fullPrecision, fsync,
-                                   instanceTables);
+                std::vector<std::string> written;
+                // As `sylva-cli forest --wind`: .glb/.gltf/.fbx through the wind exporter (one
+                // rig per unique mesh: instances of a variant share its arrays and clip); an OBJ
+                // as without wind plus its .wind.csv table.
+                if (std::filesystem::path(p).extension() == ".obj")
+                    written = writeForest(*f.trees, exportVariants(*f.variants), p, fullPrecision,
+                                          fsync, instanceTables);
+                exporter::WindExporter windExporter(p, options);
+                std::vector<exporter::WindExportTree> trees;
+                trees.reserve(f.trees->size());
+                for (const forest::ForestTree& t : *f.trees)
+                    trees.push_back({t.name, t.mesh, t.skeleton, t.instance.position,
+                                     t.instance.rotation, t.instance.scale * t.instance.growth});
+                windExporter.add(trees);
+                for (const auto& file : windExporter.commit())
+                    written.push_back(file.string());
+                return written;
             },
             py::arg("path"), py::arg("full_precision") = false, py::arg("fsync") = false,
-            py::arg("instance_tables") = false,
+            py::arg("instance_tables") = false, py::arg("wind") = false,
+            py::arg("direction") = py::none(), py::arg("strength") = py::none(),
+            py::arg("gustiness") = py::none(), py::arg("frequency") = py::none(),
+            py::arg("bones") = py::none(), py::arg("clip_length") = py::none(),
+            py::arg("fps") = py::none(),
             "writes the forest as `sylva-cli forest -o path` does (same bytes); returns the "
-            "paths written")
+            "paths written. wind=True (a forest from build_forest(wind=True)) writes it as "
+            "`sylva-cli forest --wind`: per tree a rig (instances of a variant share its arrays "
+            "and clip), the looping clip 'wind', the _WIND* data, Pivot Painter 2 textures and "
+            "<stem>.wind.csv; the wind is the project's when it has one, then the keyword "
+            "arguments' (as Tree.export)")
         .def("__repr__", [](const Forest& f) {
             return "<sylva.Forest " + std::to_string(f.trees->size()) + " trees>";
         });
@@ -645,9 +698,10 @@ void bindForest(py::module_& m) {
             "build_forest",
             [](const Project& p, const py::object& progress, const py::object& camera, bool lod,
                bool adapt, bool neighbours, bool instancing, const py::object& tile,
-               std::optional<int> threads) {
+               std::optional<int> threads, bool wind) {
                 BuildOptions b =
                     buildOptions(camera, lod, adapt, neighbours, instancing, tile, threads);
+                b.options.windData = wind;
                 PyProgress prog(progress);
                 auto trees = std::make_shared<std::vector<forest::ForestTree>>();
                 auto variants = std::make_shared<std::vector<forest::ForestVariant>>();
@@ -676,13 +730,16 @@ void bindForest(py::module_& m) {
                 for (const forest::SceneSpecies& sp : s.species)
                     f.speciesNames.push_back(sp.name);
                 f.stats = statsDict(stats, s, b.options);
+                f.windData = wind;
+                f.projectWind = p.project.wind;
                 return f;
             },
             py::arg("progress") = py::none(), py::arg("camera") = py::none(), py::arg("lod") = true,
             py::arg("adapt") = true, py::arg("neighbours") = true, py::arg("instancing") = true,
-            py::arg("tile") = py::none(), py::arg("threads") = py::none(),
+            py::arg("tile") = py::none(), py::arg("threads") = py::none(), py::arg("wind") = false,
             "builds the forest as `sylva-cli forest` does, the GIL released; progress(fraction, "
-            "stage) is called on this thread; Ctrl-C raises KeyboardInterrupt")
+            "stage) is called on this thread; Ctrl-C raises KeyboardInterrupt. wind=True keeps "
+            "what a wind export needs (`sylva-cli forest --wind`: node ids, full-detail variants)")
         .def(
             "export_forest",
             [](const Project& p, const py::object& path, const py::object& progress,

@@ -81,25 +81,6 @@ std::shared_ptr<const mesh::Mesh> windMesh(const GrownTree& t, Progress& progres
     return out.mesh;
 }
 
-/// Wind settings from Python keyword arguments (None: the default), checked with their ranges.
-exporter::WindExportOptions windExportOptions(const py::object& direction,
-                                              const py::object& strength,
-                                              const py::object& gustiness,
-                                              const py::object& frequency, const py::object& bones,
-                                              const py::object& clipLength, const py::object& fps) {
-    exporter::WindExportOptions o;
-    if (!direction.is_none()) o.wind.direction = toVec3(direction, "direction");
-    if (!strength.is_none()) o.wind.strength = strength.cast<float>();
-    if (!gustiness.is_none()) o.wind.gustiness = gustiness.cast<float>();
-    if (!frequency.is_none()) o.wind.frequency = frequency.cast<float>();
-    if (!clipLength.is_none()) o.wind.period = clipLength.cast<float>();
-    if (!bones.is_none()) o.rig.maxBones = bones.cast<int>();
-    if (!fps.is_none()) o.rig.fps = fps.cast<float>();
-    wind::validate(o.wind);
-    wind::validate(o.rig);
-    return o;
-}
-
 py::dict nodeDict(const graph::NodeDesc& n) {
     py::dict d;
     d["id"] = n.id;
@@ -126,6 +107,25 @@ Species loadSpeciesFrom(const py::object& source, const py::object& baseDir) {
 }
 
 } // namespace
+
+exporter::WindExportOptions windExportOptions(const py::object& direction,
+                                              const py::object& strength,
+                                              const py::object& gustiness,
+                                              const py::object& frequency, const py::object& bones,
+                                              const py::object& clipLength, const py::object& fps,
+                                              exporter::WindExportOptions base) {
+    exporter::WindExportOptions o = base;
+    if (!direction.is_none()) o.wind.direction = toVec3(direction, "direction");
+    if (!strength.is_none()) o.wind.strength = strength.cast<float>();
+    if (!gustiness.is_none()) o.wind.gustiness = gustiness.cast<float>();
+    if (!frequency.is_none()) o.wind.frequency = frequency.cast<float>();
+    if (!clipLength.is_none()) o.wind.period = clipLength.cast<float>();
+    if (!bones.is_none()) o.rig.maxBones = bones.cast<int>();
+    if (!fps.is_none()) o.rig.fps = fps.cast<float>();
+    wind::validate(o.wind);
+    wind::validate(o.rig);
+    return o;
+}
 
 /// Also used by forest.cpp: a species argument (path, dict or Species) as a graph.
 graph::SpeciesGraph speciesGraphFrom(const py::object& source) {
@@ -323,7 +323,8 @@ void bindSpecies(py::module_& m) {
             ".glb, .gltf, .fbx); returns the paths written. wind=True writes it as "
             "`sylva-cli tree --wind`: a rig of at most `bones` bones (default 64), skin weights, "
             "a looping clip 'wind' of `clip_length` s (default 4) at `fps` (30), the _WIND* "
-            "vertex data and <stem>.wind.csv; direction (x, y, z), strength (0..2), gustiness "
+            "vertex data, Unreal's Pivot Painter 2 textures and <stem>.wind.csv; direction (x, y, "
+            "z), strength (0..2), gustiness "
             "(0..1) and frequency (Hz, 0.05..5) are the wind's (docs/wind.md)")
         .def("__repr__", [](const GrownTree& t) {
             return "<sylva.GrownTree " + t.species + ": " +

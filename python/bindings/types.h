@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "engine/export/windexport.h"
 #include "engine/forest/metrics.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
@@ -25,6 +26,14 @@ struct SkeletonRef {
 
 /// A tree's metrics as a dict (units in the key names, as `sylva-cli stats`).
 pybind11::dict metricsDict(const forest::TreeMetrics& m);
+
+/// Wind export settings from Python keyword arguments over \p base (None: keep base's),
+/// checked with their ranges (InvalidInput names the range).
+exporter::WindExportOptions
+windExportOptions(const pybind11::object& direction, const pybind11::object& strength,
+                  const pybind11::object& gustiness, const pybind11::object& frequency,
+                  const pybind11::object& bones, const pybind11::object& clipLength,
+                  const pybind11::object& fps, exporter::WindExportOptions base = {});
 
 void bindSpecies(pybind11::module_& m);
 void bindForest(pybind11::module_& m);

@@ -61,5 +61,47 @@ assert moved > 1e-3, moved  # the action plays
 assert abs(base[0] - 3.0) < 0.5 and abs(base[1] + 2.0) < 0.5 and abs(base[2]) < 0.2, base
 scene.frame_set(last)
 assert float(np.linalg.norm(positions() - a, axis=1).max()) < 1e-3  # the clip loops
+
+# The forest with Wind: every tree an armature with its "wind" action, the trees of a variant
+# sharing one mesh datablock, and the action plays.
+from sylva_blender import build  # noqa: E402
+
+bpy.ops.mesh.primitive_plane_add(size=30, location=(0, 0, 0))
+s.ground = bpy.context.active_object
+item = s.species.add()
+item.file = os.path.join(presets, "ternary-tree.json")
+item.count = 12
+s.lod = False  # instanced trees show their variant's mesh
+forest = build.grow_forest(sylva_blender.import_sylva(), bpy.context, s)
+col = bpy.data.collections[build.FOREST_COLLECTION]
+arms = [o for o in col.objects if o.type == "ARMATURE"]
+drawn = [t for t in forest.trees if len(t.mesh.positions)]
+assert len(arms) == len(drawn) > 1, (len(arms), len(drawn))
+assert all(a.animation_data and a.animation_data.action
+           and "wind" in a.animation_data.action.name for a in arms)
+assert all(len(a.data.bones) <= 8 for a in arms)
+skinned = {o.name[:-len("_mesh")]: o for o in col.objects
+           if o.type == "MESH" and o.find_armature()}
+assert len(skinned) == len(drawn), (len(skinned), len(drawn))
+by_variant = {}
+for t in drawn:
+    if t.instanced:
+        by_variant.setdefault(t.variant, set()).add(skinned[t.name].data.name)
+assert by_variant and any(len([t for t in drawn if t.variant == v]) > 1 for v in by_variant)
+assert all(len(names) == 1 for names in by_variant.values()), by_variant  # one mesh a variant
+meshes = {o.data for o in skinned.values()}
+assert len(meshes) == len(by_variant) + sum(1 for t in drawn if not t.instanced), len(meshes)
+mesh = skinned[drawn[0].name]
+scene.frame_set(first)
+a = positions()
+scene.frame_set(first + 8)
+moved = float(np.linalg.norm(positions() - a, axis=1).max())
+print(f"addon wind forest: {len(arms)} armatures, {len(meshes)} meshes for {len(drawn)} trees, "
+      f"largest move of {drawn[0].name} over 8 frames {moved:.4f} m")
+assert moved > 1e-3, moved
+# Growing it again replaces it: no armature, mesh or action left behind.
+counts = (len(bpy.data.armatures), len(bpy.data.meshes), len(bpy.data.actions))
+build.grow_forest(sylva_blender.import_sylva(), bpy.context, s)
+assert (len(bpy.data.armatures), len(bpy.data.meshes), len(bpy.data.actions)) == counts, counts
 sylva_blender.unregister()
 print("PASS blender_addon_wind")

@@ -2,6 +2,7 @@
 animation (read from the GLB's own JSON chunk), the same bytes as `sylva-cli tree --wind`,
 settings checked with their ranges; the project's wind is readable and settable."""
 import json
+import pathlib
 import struct
 
 import pytest
@@ -77,3 +78,42 @@ def test_project_wind(tmp_path):
     project.wind = None
     project.save(path)
     assert "wind" not in json.loads(path.read_text())
+
+
+def test_forest_wind_export_equals_cli(data, cli, tmp_path):
+    """Forest.export(path, wind=True) writes what `sylva-cli forest --wind` writes, byte for byte
+    (GLB, Pivot Painter textures, table); instances of a variant share one mesh and one clip."""
+    project = data / "projects" / "small.sylva"
+    forest = sylva.load_project(project).build_forest(wind=True)
+    out = tmp_path / "py" / "forest.glb"
+    out.parent.mkdir()
+    written = forest.export(out, wind=True, bones=16, clip_length=2.0)
+    assert written[0] == str(out)
+    assert any(w.endswith(".wind.csv") for w in written)
+    assert any(w.endswith("_pivot_index.exr") for w in written)
+    by_cli = tmp_path / "cli" / "forest.glb"
+    by_cli.parent.mkdir()
+    cli("forest", project, "-o", by_cli, "--wind", "--bones", 16, "--clip-length", 2)
+    for name in [pathlib.Path(w).name for w in written]:
+        assert (by_cli.parent / name).read_bytes() == (out.parent / name).read_bytes(), name
+    doc = glb_json(out)
+    (anim,) = doc["animations"]
+    assert anim["name"] == "wind"
+    skins = doc["skins"]
+    drawn = sum(1 for t in forest if len(t.mesh.positions))  # a tree pruned away: no rig
+    assert len(skins) == drawn > 1, "one skin per tree"
+    # Instances of one variant: one mesh and the same clip accessors for each of them.
+    meshes = {n["mesh"] for n in doc["nodes"] if "skin" in n}
+    assert len(meshes) < drawn, "variants' instances share their mesh"
+    # The project's wind is the default; keyword arguments win over it.
+    p = sylva.load_project(project)
+    p.wind = {"strength": 1.5}
+    windy = p.build_forest(wind=True)
+    windy.export(tmp_path / "windy.glb", wind=True, bones=16, clip_length=2.0)
+    assert glb_json(tmp_path / "windy.glb")["asset"]["extras"]["sylva_wind"]["strength"] == 1.5
+    windy.export(tmp_path / "calm.glb", wind=True, bones=16, clip_length=2.0, strength=0.2)
+    assert glb_json(tmp_path / "calm.glb")["asset"]["extras"]["sylva_wind"]["strength"] == 0.2
+    with pytest.raises(ValueError, match="build_forest"):
+        sylva.load_project(project).build_forest().export(tmp_path / "x.glb", wind=True)
+    with pytest.raises(ValueError, match="wind=True"):
+        forest.export(tmp_path / "x.glb", strength=1)

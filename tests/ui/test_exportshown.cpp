@@ -29,6 +29,15 @@ QByteArray readFile(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
+// The JSON chunk of a .glb.
+QJsonObject glbJson(const QString& path) {
+    const QByteArray bytes = readFile(path);
+    if (!bytes.startsWith("glTF")) return {};
+    quint32 jsonLength = 0;
+    std::memcpy(&jsonLength, bytes.constData() + 12, 4);
+    return QJsonDocument::fromJson(bytes.mid(20, jsonLength)).object();
+}
+
 } // namespace
 
 class TestExportShown : public QObject {
@@ -91,6 +100,59 @@ private Q_SLOTS:
         }
         QVERIFY(instanced > 0);
         QCOMPARE(trees + instanced, mShown.exportTrees.size());
+    }
+
+    // The project's wind (#31): File ▸ Export writes the forest as sylva-cli forest --wind with
+    // the project's settings (a skin per tree, the clip, the Pivot Painter textures, the table);
+    // without a wind, or with the option off, as before.
+    void writesTheProjectsWind() {
+        QDir(mDir.path()).mkpath(QStringLiteral("wind"));
+        const QString path = mDir.filePath(QStringLiteral("wind/forest.glb"));
+        QVERIFY(!mDocument.project().wind);
+        QVERIFY(!exportShown(path, shown()).wind);
+        QVERIFY(!glbJson(path).contains(QStringLiteral("skins")));
+
+        doc::ProjectWind wind;
+        wind.strength = 1.25f;
+        wind.direction = glm::vec3(0, 0, 1);
+        mDocument.setWind(wind);
+        struct Calm { // the other cases export the project without a wind, whatever happens here
+            doc::Document& d;
+            ~Calm() { d.setWind(std::nullopt); }
+        } calm{mDocument};
+        const ExportCount count = exportShown(path, shown());
+        QVERIFY(count.wind);
+        QCOMPARE(count.trees, mShown.exportTrees.size());
+        QVERIFY(count.files >= 4); // the GLB, its table, a texture pair per unique mesh
+        const QJsonObject json = glbJson(path);
+        // One skin per tree that has a mesh (a tree pruned away has nothing to rig).
+        qsizetype drawn = 0;
+        for (const exporter::ExportTree& t : mShown.exportTrees)
+            drawn += t.mesh && !t.mesh->empty() ? 1 : 0;
+        QVERIFY(drawn > 1);
+        QCOMPARE(json.value(QStringLiteral("skins")).toArray().size(), drawn);
+        QCOMPARE(json.value(QStringLiteral("animations"))
+                     .toArray()
+                     .at(0)
+                     .toObject()
+                     .value(QStringLiteral("name"))
+                     .toString(),
+                 QStringLiteral("wind"));
+        const QJsonObject settings = json.value(QStringLiteral("asset"))
+                                         .toObject()
+                                         .value(QStringLiteral("extras"))
+                                         .toObject()
+                                         .value(QStringLiteral("sylva_wind"))
+                                         .toObject();
+        QCOMPARE(settings.value(QStringLiteral("strength")).toDouble(), 1.25);
+        QCOMPARE(settings.value(QStringLiteral("direction")).toArray().at(2).toDouble(), 1.0);
+        QVERIFY(QFile::exists(mDir.filePath(QStringLiteral("wind/forest.wind.csv"))));
+
+        // The option off: the same project written still.
+        ExportOptions still;
+        still.projectWind = false;
+        QVERIFY(!exportShown(path, shown(), still).wind);
+        QVERIFY(!glbJson(path).contains(QStringLiteral("skins")));
     }
 
     void onlyTheSelectedTrees() {

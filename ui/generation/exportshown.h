@@ -16,6 +16,12 @@ namespace sylva::ui {
 struct ExportOptions {
     bool selectionOnly = false;
     bool viewportCamera = false;
+    /// A project with a wind (Project::wind) is written with it, as `sylva-cli forest --wind`
+    /// with the project's direction, strength, gustiness and frequency: a rig and the looping
+    /// clip per tree, the _WIND* data, Pivot Painter 2 textures and the .wind.csv table
+    /// (.glb, .gltf, .fbx; an OBJ gets its table). Off, or a project without a wind, a .usda
+    /// or a species preview: written without.
+    bool projectWind = true;
 };
 
 /// What the editor shows, as exportShown() needs it.
@@ -29,14 +35,16 @@ struct ShownScene {
 struct ExportCount {
     std::size_t trees = 0; ///< trees written
     std::size_t files = 0; ///< files written (the main file, its materials, textures)
+    bool wind = false;     ///< written with the project's wind
 };
 
 /// Exports \p shown to \p path by its extension, exactly as `sylva-cli tree` (a species) or
 /// `sylva-cli forest` (the document's project) writes it; with \p options, only the selected
-/// trees and at the viewport camera's level of detail. Runs on the calling thread (a rebuild
-/// for the camera takes as long as a generation).
-/// \throw InvalidInput when the selection holds no hand-placed tree to export
-/// \throw IoError when the rebuild or the writing fails (the file is then left as it was)
+/// trees, at the viewport camera's level of detail, and with the project's wind (the forest
+/// is then built again with wind data, as `sylva-cli forest --wind` builds it). Runs on the calling
+/// thread (a rebuild for the camera takes as long as a generation). \throw InvalidInput when the
+/// selection holds no hand-placed tree to export \throw IoError when the rebuild or the writing
+/// fails (the file is then left as it was)
 ExportCount exportShown(const QString& path, const ShownScene& shown,
                         const ExportOptions& options = {});
 

@@ -51,7 +51,7 @@ std::uint64_t pointerKey(const void* a, const void* b) {
 } // namespace
 
 GenerationResult generateProject(const doc::Project& project, const QString& path,
-                                 SceneCaches* caches, Progress& progress) {
+                                 SceneCaches* caches, Progress& progress, bool windData) {
     return runGuarded(path, [&](GenerationResult& result) {
         // Watch every file the project reads, stamped before it is read (a change during the
         // generation is still seen): the species and mesh files, then the files the species'
@@ -74,7 +74,8 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             doc::addSpeciesSourceFiles(s.graph, result.sources);
         stampSources(result); // before buildForest reads the grammar files
         forest::ForestOptions options;
-        if (caches) {
+        options.windData = windData;
+        if (caches && !windData) {
             options.cache = &caches->trees;
             options.obstaclesKey = pointerKey(forest.obstacles.get(), forest.ground.get());
             caches->obstacles = forest.obstacles;
@@ -112,6 +113,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                                                   tree.instance.rotation,
                                                   tree.instance.scale * tree.instance.growth,
                                                   tree.variant, tree.instance.id});
+                    if (windData) result.exportSkeletons.push_back(tree.skeleton);
                 }
             },
             progress);

@@ -1,6 +1,7 @@
 #include "engine/export/fbxfix.h"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -38,9 +39,14 @@ void putU64(std::string& out, std::size_t at, std::uint64_t v) {
     throw InvalidInput("malformed binary FBX at byte " + std::to_string(at) + ": " + what);
 }
 
+constexpr std::int64_t kKTimePerSecond = 46186158000; // FBX time unit: 1/46186158000 s
+
+// Properties70 records rewritten in place, by the record that holds them.
+enum class Scope { Other, GlobalSettings, AnimationStack };
+
 class Repair {
 public:
-    Repair(std::string_view in, double unitScale) : mIn(in), mUnitScale(unitScale) {}
+    Repair(std::string_view in, const FbxRepairOptions& options) : mIn(in), mOptions(options) {}
 
     std::string run() {
         if (mIn.size() < kHeaderSize || mIn.substr(0, 18) != "Kaydara FBX Binary")
@@ -53,7 +59,7 @@ public:
         for (;;) {
             if (at + kRecordHead > mIn.size()) malformed("top-level list not terminated", at);
             if (u64At(mIn, at) == 0) break; // the top-level null record
-            at = node(at, mIn.size(), 0, false);
+            at = node(at, mIn.size(), 0, Scope::Other);
         }
         mOut.append(kNullRecord, '\0');
         // Footer as the FBX SDK and Blender write it: id, 4 zeros, zeros up to a 16-byte
@@ -71,7 +77,7 @@ public:
 private:
     // Copies the node record at \p at (which must end by \p limit) and its children; returns
     // the input offset after it.
-    std::size_t node(std::size_t at, std::size_t limit, int depth, bool inGlobalSettings) {
+    std::size_t node(std::size_t at, std::size_t limit, int depth, Scope scope) {
         if (depth > kMaxDepth)
             malformed("nodes nested deeper than " + std::to_string(kMaxDepth), at);
         if (at + kRecordHead > limit) malformed("record head past its parent's end", at);
@@ -86,24 +92,36 @@ private:
 
         const std::size_t head = mOut.size();
         mOut.append(mIn.substr(at, kRecordHead + nameLen + propBytes));
-        if (name == "P" && inGlobalSettings) setUnitScale(head + kRecordHead + nameLen, count);
+        if (name == "P" && scope != Scope::Other)
+            setProperty(head + kRecordHead + nameLen, count, scope);
 
         std::size_t child = props + propBytes;
         bool hasChildren = false;
-        const bool childGlobal = inGlobalSettings || name == "GlobalSettings";
+        const Scope childScope = name == "GlobalSettings"   ? Scope::GlobalSettings
+                                 : name == "AnimationStack" ? Scope::AnimationStack
+                                                            : scope;
+        bool emptyList = false;
         while (child < end) {
             // A list that already ends in its null record (as the FBX SDK writes it).
-            if (end - child == kNullRecord && u64At(mIn, child) == 0) break;
+            if (end - child == kNullRecord && u64At(mIn, child) == 0) {
+                emptyList = !hasChildren;
+                break;
+            }
             hasChildren = true;
-            child = node(child, end, depth + 1, childGlobal);
+            child = node(child, end, depth + 1, childScope);
         }
-        if (hasChildren) mOut.append(kNullRecord, '\0');
+        // Assimp marks AnimationLayer and References "force_has_children" but writes no null
+        // record for them.
+        if (hasChildren || emptyList || (depth == 1 && name == "AnimationLayer") ||
+            (depth == 0 && name == "References"))
+            mOut.append(kNullRecord, '\0');
         putU64(mOut, head, mOut.size());
         return end;
     }
 
-    // P: "UnitScaleFactor", "double", "Number", "", <D value> — rewrites the value in mOut.
-    void setUnitScale(std::size_t props, std::uint64_t count) {
+    // P: "<name>", "<type>", "<label>", "<flags>", <value>: rewrites the value in mOut in place
+    // (same type, same size) for the names the options set.
+    void setProperty(std::size_t props, std::uint64_t count, Scope scope) {
         if (count != 5) return;
         std::size_t p = props;
         std::string_view first;
@@ -114,20 +132,43 @@ private:
             if (k == 0) first = std::string_view(mOut).substr(p + 5, len);
             p += 5 + len;
         }
-        if (first != "UnitScaleFactor" && first != "OriginalUnitScaleFactor") return;
-        if (p + 9 > mOut.size() || mOut[p] != 'D') return;
-        std::memcpy(mOut.data() + p + 1, &mUnitScale, sizeof mUnitScale);
+        const char type = p < mOut.size() ? mOut[p] : '\0';
+        const std::size_t size = type == 'I' ? 4 : 8;
+        if (p + 1 + size > mOut.size()) return;
+        char* value = mOut.data() + p + 1;
+        const double seconds = mOptions.animationSeconds;
+        const auto ktime = static_cast<std::int64_t>(std::llround(seconds * kKTimePerSecond));
+        if (scope == Scope::GlobalSettings) {
+            if ((first == "UnitScaleFactor" || first == "OriginalUnitScaleFactor") && type == 'D')
+                std::memcpy(value, &mOptions.unitScale, 8);
+            else if (first == "TimeMode" && type == 'I' && mOptions.frameRate > 0.0) {
+                const std::int32_t custom = 14; // FbxTime::eCustom
+                std::memcpy(value, &custom, 4);
+            } else if (first == "CustomFrameRate" && type == 'D' && mOptions.frameRate > 0.0)
+                std::memcpy(value, &mOptions.frameRate, 8);
+            else if (first == "TimeSpanStop" && type == 'L' && seconds > 0.0)
+                std::memcpy(value, &ktime, 8);
+        } else if (scope == Scope::AnimationStack && seconds > 0.0 && type == 'L' &&
+                   (first == "LocalStop" || first == "ReferenceStop")) {
+            std::memcpy(value, &ktime, 8);
+        }
     }
 
     std::string_view mIn;
-    double mUnitScale;
+    FbxRepairOptions mOptions;
     std::string mOut;
 };
 
 } // namespace
 
 std::string repairAssimpFbxBinary(std::string_view bytes, double unitScale) {
-    return Repair(bytes, unitScale).run();
+    FbxRepairOptions options;
+    options.unitScale = unitScale;
+    return Repair(bytes, options).run();
+}
+
+std::string repairAssimpFbxBinary(std::string_view bytes, const FbxRepairOptions& options) {
+    return Repair(bytes, options).run();
 }
 
 std::string setFbxAsciiUnitScale(std::string text, double unitScale) {

@@ -391,9 +391,12 @@ void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneF
     progress.checkCancelled();
     if (format == SceneFormat::Fbx || format == SceneFormat::FbxAscii) {
         // The binary is repaired, both forms get their unit, before they are written.
+        FbxRepairOptions repair;
+        repair.frameRate = desc.animationFrameRate;
+        repair.animationSeconds = desc.animationSeconds;
         writeFileCancellable(path,
                              format == SceneFormat::Fbx
-                                 ? repairAssimpFbxBinary(result.first)
+                                 ? repairAssimpFbxBinary(result.first, repair)
                                  : setFbxAsciiUnitScale(std::move(result.first)),
                              progress);
         return;

@@ -42,6 +42,10 @@ struct SceneDesc {
     /// animation): instance i is the root's child i, its meshes the mesh's non-empty submeshes in
     /// order, each with its vertices in the order its triangles first use them.
     std::function<void(aiScene&)> decorate;
+    /// The timing of what decorate animates, stated in an FBX (repairAssimpFbxBinary's
+    /// FbxRepairOptions): frames per second and the clip's seconds; 0 leaves Assimp's.
+    double animationFrameRate = 0.0;
+    double animationSeconds = 0.0;
 };
 
 enum class SceneFormat {

@@ -8,6 +8,7 @@
 
 #include "engine/export/gltf/gltfbuilder.h"
 #include "engine/export/gltf/gltfmesh.h"
+#include "engine/export/lodexport.h"
 #include "engine/export/materials.h"
 #include "engine/export/objwriter.h"
 #include "engine/export/sceneexport.h"
@@ -63,20 +64,39 @@ void WindExporter::add(const std::vector<WindExportTree>& trees) {
     }
 }
 
+namespace {
+
+std::shared_ptr<const mesh::Mesh> withWindData(const WindExportTree& tree) {
+    if (tree.mesh->wind.size() == tree.mesh->positions.size() && !tree.mesh->positions.empty())
+        return tree.mesh;
+    auto copy = std::make_shared<mesh::Mesh>(*tree.mesh);
+    wind::addWindData(*copy, *tree.skeleton);
+    return copy;
+}
+
+} // namespace
+
+std::shared_ptr<const mesh::Mesh> WindExporter::windMesh(const WindExportTree& tree) {
+    std::shared_ptr<const mesh::Mesh>& cached = mWindMeshes[tree.mesh.get()];
+    if (!cached) cached = withWindData(tree);
+    return cached;
+}
+
 WindExporter::Prepared WindExporter::prepare(const WindExportTree& tree,
+                                             const WindExportOptions& options) {
+    return prepare(tree, withWindData(tree), options);
+}
+
+WindExporter::Prepared WindExporter::prepare(const WindExportTree& tree,
+                                             std::shared_ptr<const mesh::Mesh> withWind,
                                              const WindExportOptions& options) {
     const wind::WindElements elements = wind::buildWindElements(*tree.skeleton);
     Prepared p;
-    if (tree.mesh->wind.size() == tree.mesh->positions.size() && !tree.mesh->positions.empty()) {
-        p.mesh = tree.mesh;
-    } else {
-        auto copy = std::make_shared<mesh::Mesh>(*tree.mesh);
-        wind::addWindData(*copy, *tree.skeleton);
-        p.mesh = std::move(copy);
-    }
+    p.mesh = std::move(withWind);
     p.rig = wind::buildRig(elements, *tree.skeleton, options.rig);
     p.weights = wind::skinWeights(p.rig, elements, *p.mesh);
     p.clip = wind::bakeClip(p.rig, elements, options.wind, options.rig);
+    p.pivotPainter = buildPivotPainter(elements, *tree.skeleton, *p.mesh);
     return p;
 }
 
@@ -118,7 +138,7 @@ std::vector<fs::path> WindExporter::writeGltf() {
         auto found = uniqueOf.find(tree.mesh.get());
         if (found == uniqueOf.end()) {
             Unique u;
-            u.p = prepare(tree, mOptions);
+            u.p = prepare(tree, windMesh(tree), mOptions);
             const mesh::Mesh& m = *u.p.mesh;
             const std::size_t nv = m.positions.size();
             ExtraAttributes extra;
@@ -145,6 +165,7 @@ std::vector<fs::path> WindExporter::writeGltf() {
                 extra.emplace_back("JOINTS_0", b.addUint16(j16, 4));
             }
             extra.emplace_back("WEIGHTS_0", b.addVec4(u.p.weights.weights));
+            extra.emplace_back("TEXCOORD_1", b.addVec2(u.p.pivotPainter.vertexUv));
             u.mesh = addTreeMesh(b, m, tree.name, table, extra);
             std::vector<glm::mat4> ibm(nj);
             for (std::size_t j = 0; j < nj; ++j)
@@ -216,6 +237,14 @@ std::vector<fs::path> WindExporter::writeGltf() {
             animation.channels.push_back({s + 1, jointNodes[j], "rotation"});
         }
     }
+    std::vector<std::pair<std::string, const Prepared*>> ppTrees;
+    for (const WindExportTree& tree : mTrees) {
+        const Prepared* p = &uniques[uniqueOf.at(tree.mesh.get())].p;
+        if (std::none_of(ppTrees.begin(), ppTrees.end(),
+                         [&](const auto& e) { return e.second == p; }))
+            ppTrees.emplace_back(tree.name, p);
+    }
+    const std::vector<fs::path> ppFiles = writePivotPainterFiles(ppTrees);
     if (!animation.channels.empty()) b.addAnimation(animation);
     b.addScene("wind", roots);
     Json& extras = b.root()["asset"]["extras"];
@@ -227,7 +256,20 @@ std::vector<fs::path> WindExporter::writeGltf() {
                             {"frequency", tidy(mOptions.wind.frequency)},
                             {"period", tidy(mOptions.wind.period)},
                             {"docs", "docs/wind.md"}};
-    return b.finish();
+    // Named after "<stem>" (this file's name without its extension), so that the same trees
+    // give the same bytes whatever the file is called.
+    Json textures = Json::array();
+    for (const auto& [name, p] : ppTrees) {
+        (void)p;
+        const std::string stem =
+            ppTrees.size() == 1 ? std::string("<stem>") : "<stem>_" + fileSafeName(name);
+        textures.push_back(stem + "_pivot_index.exr");
+        textures.push_back(stem + "_xaxis_extent.png");
+    }
+    extras["sylva_wind"]["pivot_painter"] = {{"texcoord", 1}, {"textures", textures}};
+    std::vector<fs::path> written = b.finish();
+    written.insert(written.end(), ppFiles.begin(), ppFiles.end());
+    return written;
 }
 
 std::vector<fs::path> WindExporter::writeFbx() {
@@ -235,7 +277,7 @@ std::vector<fs::path> WindExporter::writeFbx() {
     std::vector<Prepared> prepared;
     for (const WindExportTree& tree : mTrees) {
         mProgress.checkCancelled();
-        prepared.push_back(prepare(tree, mOptions));
+        prepared.push_back(prepare(tree, windMesh(tree), mOptions));
         // One scene mesh per tree: a bone belongs to one mesh, so skinned meshes are not shared.
         desc.meshes.push_back({tree.name, prepared.back().mesh.get()});
         addMaterialsOf(*tree.mesh, desc.materials);
@@ -288,7 +330,16 @@ std::vector<fs::path> WindExporter::writeFbx() {
             // readers take a node that holds both a mesh and bones for a bone).
             auto* armature = new aiNode(treeName + "_armature");
             attach(armature, kids[nj]);
-            attach(node, {armature});
+            // The meshes move to a node of their own beside the armature: Assimp writes a node
+            // with one mesh as that mesh's Model, and a mesh Model above the bones that deform
+            // it makes Blender parent each to the other (half a forest's trees went missing).
+            auto* meshes = new aiNode(treeName + "_mesh");
+            meshes->mNumMeshes = node->mNumMeshes;
+            meshes->mMeshes = node->mMeshes;
+            node->mNumMeshes = 0;
+            node->mMeshes = nullptr;
+            attach(node, {meshes, armature});
+            node = meshes;
             for (std::size_t j = 0; j < nj; ++j)
                 attach(boneNodes[j], kids[j]);
             // Bones of each of the tree's meshes (one per non-empty submesh).
@@ -296,6 +347,10 @@ std::vector<fs::path> WindExporter::writeFbx() {
             if (parts.empty())
                 parts.push_back({"bark", 0, static_cast<std::uint32_t>(m.indices.size())});
             std::erase_if(parts, [](const mesh::Submesh& s) { return s.indexCount == 0; });
+            // Every joint is a bone of some mesh, weighted or not: Assimp writes only bones as
+            // LimbNodes, and a plain node between two bones splits Blender's armature (its
+            // FBX importer then fails with KeyError 'armature_setup').
+            std::vector<bool> boned(nj, false);
             for (std::size_t k = 0; k < parts.size() && k < node->mNumMeshes; ++k) {
                 aiMesh* am = scene.mMeshes[node->mMeshes[k]];
                 std::vector<std::uint32_t> remap(m.positions.size(), UINT32_MAX), used;
@@ -307,6 +362,19 @@ std::vector<fs::path> WindExporter::writeFbx() {
                         used.push_back(v);
                     }
                 }
+                // Pivot Painter's element index as UV channel 1 (FBX's v points up; Unreal's
+                // importer flips it back to the v-down pixel centre).
+                if (!am->mTextureCoords[0]) {
+                    am->mTextureCoords[0] = new aiVector3D[am->mNumVertices]();
+                    am->mNumUVComponents[0] = 2;
+                }
+                am->mTextureCoords[1] = new aiVector3D[am->mNumVertices];
+                am->mNumUVComponents[1] = 2;
+                for (std::uint32_t local = 0; local < used.size() && local < am->mNumVertices;
+                     ++local) {
+                    const glm::vec2 uv = p.pivotPainter.vertexUv[used[local]];
+                    am->mTextureCoords[1][local] = aiVector3D(uv.x, 1.0f - uv.y, 0.0f);
+                }
                 std::vector<std::vector<aiVertexWeight>> perJoint(nj);
                 for (std::uint32_t local = 0; local < used.size(); ++local)
                     for (int c = 0; c < 4; ++c) {
@@ -314,9 +382,14 @@ std::vector<fs::path> WindExporter::writeFbx() {
                         if (w > 0.0f)
                             perJoint[p.weights.joints[used[local]][c]].push_back({local, w});
                     }
+                if (k + 1 == std::min<std::size_t>(parts.size(), node->mNumMeshes))
+                    for (std::size_t j = 0; j < nj; ++j)
+                        if (!boned[j] && perJoint[j].empty())
+                            perJoint[j].push_back({0, 0.0f}); // a cluster that moves nothing
                 std::vector<aiBone*> bones;
                 for (std::size_t j = 0; j < nj; ++j) {
                     if (perJoint[j].empty()) continue;
+                    boned[j] = true;
                     auto* bone = new aiBone();
                     bone->mName = aiString(boneNodes[j]->mName);
                     const glm::vec3& r = p.rig.joints[j].rest;
@@ -343,7 +416,10 @@ std::vector<fs::path> WindExporter::writeFbx() {
                 ch->mScalingKeys = new aiVectorKey[1];
                 ch->mScalingKeys[0] = aiVectorKey(0.0, aiVector3D(1, 1, 1));
                 for (std::size_t f = 0; f < nf; ++f) {
-                    const double tick = static_cast<double>(p.clip.times[f]) * fps;
+                    // Assimp 5.2.5's FBX exporter writes a key's mTime as seconds (KeyTime =
+                    // mTime × 46186158000), not as ticks; the stack's length comes from
+                    // mDuration / mTicksPerSecond and is set exactly by the repair.
+                    const double tick = static_cast<double>(p.clip.times[f]);
                     const glm::vec3& t = p.clip.translation[f * nj + j];
                     const glm::quat& q = p.clip.rotation[f * nj + j];
                     ch->mPositionKeys[f] = aiVectorKey(tick, aiVector3D(t.x, t.y, t.z));
@@ -363,8 +439,33 @@ std::vector<fs::path> WindExporter::writeFbx() {
         scene.mAnimations = new aiAnimation*[1];
         scene.mAnimations[0] = anim;
     };
-    writeScene(mPath, desc, SceneFormat::Fbx);
-    return {mPath};
+    desc.animationFrameRate = fps;
+    desc.animationSeconds = mOptions.wind.period;
+    writeScene(mPath, desc, SceneFormat::Fbx, mProgress);
+    std::vector<std::pair<std::string, const Prepared*>> ppTrees;
+    std::map<const mesh::Mesh*, std::size_t> firstOf;
+    for (std::size_t i = 0; i < mTrees.size(); ++i)
+        if (firstOf.emplace(mTrees[i].mesh.get(), i).second)
+            ppTrees.emplace_back(mTrees[i].name, &prepared[i]);
+    std::vector<fs::path> written{mPath};
+    for (const fs::path& f : writePivotPainterFiles(ppTrees))
+        written.push_back(f);
+    return written;
+}
+
+std::vector<fs::path> WindExporter::writePivotPainterFiles(
+    const std::vector<std::pair<std::string, const Prepared*>>& prepared) {
+    std::vector<fs::path> written;
+    for (const auto& [name, p] : prepared) {
+        mProgress.checkCancelled();
+        // One tree: <stem>_pivot_index.exr; several unique meshes: <stem>_<tree>_pivot_index.exr.
+        const std::string stem = prepared.size() == 1
+                                     ? mPath.stem().string()
+                                     : mPath.stem().string() + "_" + fileSafeName(name);
+        for (const fs::path& f : writePivotPainter(mPath.parent_path() / stem, p->pivotPainter))
+            written.push_back(f);
+    }
+    return written;
 }
 
 void WindExporter::writeTable() {
@@ -378,19 +479,9 @@ void WindExporter::writeTable() {
                std::to_string(k) + "_z,branch" + std::to_string(k) + "_stiffness";
     out += ",phase0,phase1,phase2,phase_flutter,level,flutter_weight,reserved0,reserved1\n";
     char buf[48];
-    std::map<const mesh::Mesh*, std::shared_ptr<const mesh::Mesh>> withWind;
     for (const WindExportTree& tree : mTrees) {
         mProgress.checkCancelled();
-        std::shared_ptr<const mesh::Mesh> m = tree.mesh;
-        if (m->wind.size() != m->positions.size()) {
-            auto& cached = withWind[tree.mesh.get()];
-            if (!cached) {
-                auto copy = std::make_shared<mesh::Mesh>(*tree.mesh);
-                wind::addWindData(*copy, *tree.skeleton);
-                cached = std::move(copy);
-            }
-            m = cached;
-        }
+        const std::shared_ptr<const mesh::Mesh> m = windMesh(tree);
         for (std::size_t i = 0; i < m->positions.size(); ++i) {
             out += tree.name;
             out += ',';

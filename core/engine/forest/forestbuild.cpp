@@ -443,16 +443,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     mesh::TreeMeshSettings settings = meshSettings[variant.species];
                     settings.seed = mixSeed(variant.seed, salt::kTreeMesh);
                     variant.meshSettings = std::make_shared<const mesh::TreeMeshSettings>(settings);
-                    if (options.windData) {
-                        settings.tubes.nodeIds = true;
-                        auto windy = std::make_shared<mesh::Mesh>(
-                            mesh::buildTreeMesh(*variant.skeleton, settings));
-                        wind::addWindData(*windy, *variant.skeleton);
-                        variant.mesh = std::move(windy);
-                    } else {
-                        variant.mesh = std::make_shared<const mesh::Mesh>(
-                            mesh::buildTreeMesh(*variant.skeleton, settings));
-                    }
+                    // With wind data the mesh keeps its vertices' nodes; the wind writer
+                    // derives the per-vertex channels from them (wind::addWindData).
+                    if (options.windData) settings.tubes.nodeIds = true;
+                    variant.mesh = std::make_shared<const mesh::Mesh>(
+                        mesh::buildTreeMesh(*variant.skeleton, settings));
                     if (levelsWanted)
                         variant.levels =
                             mesh::buildDistanceLevels(*variant.skeleton, settings, variant.mesh);
@@ -635,16 +630,9 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                         return !env::leafCardTouches(obstacles, ctx.transform, leaf, stem,
                                                      ctx.leafScale, ctx.leafAspect);
                     };
-                if (options.windData) {
-                    settings.tubes.nodeIds = true;
-                    auto windy =
-                        std::make_shared<mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
-                    wind::addWindData(*windy, *skeleton);
-                    tree.mesh = std::move(windy);
-                } else {
-                    tree.mesh = std::make_shared<const mesh::Mesh>(
-                        mesh::buildTreeMesh(*skeleton, settings));
-                }
+                if (options.windData) settings.tubes.nodeIds = true;
+                tree.mesh =
+                    std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*skeleton, settings));
                 cpuMesh[thread] += msSince(t);
                 if (cacheKey) options.cache->storeTree(cacheKey, tree);
             } catch (...) {

@@ -77,7 +77,8 @@ struct ForestOptions {
     bool adapt = true;       ///< bend/prune trees against obstacles and neighbouring crowns
     bool neighbours = true;  ///< neighbouring crowns count as obstacles
     bool buildMeshes = true; ///< false: skeletons and metrics only (sylva-cli stats)
-    /// Meshes carry node ids and the wind model's per-vertex data (Mesh::wind; docs/wind.md).
+    /// Meshes carry node ids and the trees their skeletons: what the wind writer derives the
+    /// wind model's per-vertex data from (wind::addWindData; docs/wind.md).
     bool windData = false;
     std::size_t batchSize = 64; ///< trees generated in parallel before they are handed on
     placement::PlacementMethod placement = placement::PlacementMethod::Grid;

@@ -151,7 +151,9 @@ NodeOutput evaluateTubeMesh(const NodeContext& ctx) {
     }
     const auto t0 = std::chrono::steady_clock::now();
     auto mesh = std::make_shared<Mesh>(buildTreeMesh(skeleton, settings, ctx.progress));
-    if (ctx.params.boolean("wind_data", false)) wind::addWindData(*mesh, skeleton);
+    // wind_data: the node ids (set above) are the wind data; the 128 bytes a vertex of the
+    // written form (Mesh::wind, wind::addWindData) are derived from them by the wind writer,
+    // which keeps generation within 15 % of a tree without wind (docs/perf/wind.md).
     NodeOutput out;
     out.timingsMs["mesh"] = msSince(t0);
     out.skeleton = ctx.inputs[0]->skeleton;
@@ -265,7 +267,7 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
            boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
            boolean("node_ids", false, "Write the skeleton node of each vertex"),
            boolean("wind_data", false,
-                   "Write the wind model's per-vertex data (docs/wind.md), node ids too")});
+                   "Keep what the wind model needs per vertex (its node; docs/wind.md)")});
     group(tube.params, "Leaves",
           {boolean("leaves", true, "Draw the skeleton's leaves as cards"),
            number("leaf_scale", 1.0, 1e-6, 100, "", "Multiplies every leaf card's length"),

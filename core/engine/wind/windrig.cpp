@@ -195,8 +195,9 @@ SkinWeights skinWeights(const Rig& rig, const WindElements& elements, const mesh
         throw InvalidInput("skin weights need the mesh's node ids (tube_mesh node_ids)");
     SkinWeights out;
     const std::size_t nv = m.positions.size();
-    out.joints.resize(nv);
-    out.weights.resize(nv);
+    // Each vertex written once (no zero-fill first: bench_wind).
+    out.joints.reserve(nv);
+    out.weights.reserve(nv);
     Sampler sampler{rig, elements};
     const std::size_t nn = elements.nodeElement.size();
     std::vector<glm::u16vec4> nodeJoints(nn);
@@ -205,8 +206,8 @@ SkinWeights skinWeights(const Rig& rig, const WindElements& elements, const mesh
     for (std::size_t i = 0; i < nv; ++i) {
         const std::uint32_t node = m.node[i];
         if (node == mesh::Mesh::kNoNode || node >= nn || elements.nodeElement[node] < 0) {
-            out.joints[i] = glm::u16vec4(0);
-            out.weights[i] = glm::vec4(1, 0, 0, 0);
+            out.joints.emplace_back(0);
+            out.weights.emplace_back(1, 0, 0, 0);
             continue;
         }
         if (!done[node]) {
@@ -214,8 +215,8 @@ SkinWeights skinWeights(const Rig& rig, const WindElements& elements, const mesh
             finishWeights(inf, nodeJoints[node], nodeWeights[node]);
             done[node] = 1;
         }
-        out.joints[i] = nodeJoints[node];
-        out.weights[i] = nodeWeights[node];
+        out.joints.push_back(nodeJoints[node]);
+        out.weights.push_back(nodeWeights[node]);
     }
     return out;
 }

@@ -2,9 +2,10 @@
 // Target: ≤ +15 % (docs/performance.md). Every iteration grows the tree from a fresh Evaluator
 // (no cached node results), as sylva-cli tree does:
 //   - Static: the species as it is (tube_mesh without node ids or wind data);
-//   - WindData: tube_mesh wind_data (per-vertex node ids and the 32 wind floats, docs/wind.md);
+//   - WindData: tube_mesh wind_data (per-vertex node ids, what the wind model needs, docs/wind.md);
 //   - WindRig: WindData plus the rig (≤ 64 bones) and the skin weights (≤ 4 per vertex);
-//   - WindRigClip: WindRig plus the 4 s, 30 fps clip baked (what a wind export adds on top).
+//   - WindRigClip: WindRig plus the 4 s, 30 fps clip baked and the per-vertex channels the
+//     writers store (wind::addWindData, 128 bytes a vertex): what a wind export adds on top.
 // Args: the preset (0 English oak, 1 alder). Counters: vertices, bones.
 #include <benchmark/benchmark.h>
 
@@ -55,6 +56,9 @@ void grow(benchmark::State& state, Mode mode) {
                 const wind::WindClip clip =
                     wind::bakeClip(rig, elements, windSettings, rigSettings);
                 benchmark::DoNotOptimize(clip);
+                mesh::Mesh withData = *out.mesh;
+                wind::addWindData(withData, *out.skeleton);
+                benchmark::DoNotOptimize(withData.wind.data());
             }
         }
     }
