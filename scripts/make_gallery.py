@@ -172,11 +172,16 @@ def solidity(build):
 
 
 def leaf_clusters(build):
-    """The broadleaves' leaf cluster table printed by test_crownshape's LeafClusters test."""
+    """The leaf cluster table printed by test_crownshape's LeafClusters tests: the broadleaves,
+    then the conifers and shrubs (one header)."""
     out = subprocess.run([os.path.join(build, "tests/core/forest/test_crownshape"),
-                          "--gtest_filter=LeafClusters.Broad*"], check=True, capture_output=True,
-                         text=True).stdout
-    return [l for l in out.splitlines() if l.startswith("|")]
+                          "--gtest_filter=LeafClusters.Broad*:LeafClusters.Conifers*"],
+                         check=True, capture_output=True, text=True).stdout
+    rows = []
+    for line in out.splitlines():
+        if line.startswith("|") and line not in rows:
+            rows.append(line)
+    return rows
 
 
 def triangles(build, species_file, folder):
