@@ -285,9 +285,10 @@ def main():
               " crown rows, solidity = area / convex hull area, the mean of two views; it asserts"
               " <= 0.85; middle cover: how much of the crown's middle is covered, it asserts >= 0.6"
               " for maple, birch and beech):", ""] + solidity(args.build)
-    lines += ["", "Leaf clusters of the broadleaves (`test_leafclusters`, seed 1: leaf-card triangles"
-              " with one card a leaf and with cluster cards, and the silhouettes' IoU, conservative"
-              " raster; it asserts a ratio >= 4 and IoU >= 0.9):", ""] + leaf_clusters(args.build)
+    lines += ["", "Leaf clusters of the broadleaves, then of the conifers and the privet"
+              " (`test_leafclusters`, seed 1: leaf-card triangles with one card a leaf and with"
+              " cluster cards, and the silhouettes' IoU, conservative raster; it asserts a ratio"
+              " >= 4 and IoU >= 0.9):", ""] + leaf_clusters(args.build)
     doc_path = os.path.join(ROOT, "docs", "gallery.md")
     with open(doc_path) as f:
         text = f.read()

@@ -984,9 +984,9 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
             fork = rng.uniform(0.06, 0.12)
             stem_top = (0.5 + bend * 0.3, fork)
             segs_twig.append((0.5, 0.0, stem_top[0], stem_top[1], 0.011))
-            shoots = int(rng.integers(3, 5))
+            shoots = int(rng.integers(4, 6))
             for i in range(shoots):
-                a = math.radians(-60 + 120 * (i + rng.uniform(0.25, 0.75)) / shoots)
+                a = math.radians(-64 + 128 * (i + rng.uniform(0.25, 0.75)) / shoots)
                 L = rng.uniform(0.40, 0.54) * (1.0 - 0.3 * abs(math.sin(a)))
                 x0, y0 = stem_top
                 x1 = float(np.clip(x0 + math.sin(a) * L, 0.14, 0.86))
@@ -995,7 +995,7 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
                 ux, uy = x1 - x0, y1 - y0
                 ln = math.hypot(ux, uy)
                 ux, uy = ux / ln, uy / ln
-                pairs = int(22 * scale)
+                pairs = int(30 * scale)
                 for j in range(pairs):
                     s = 0.45 + 0.55 * (j + rng.random()) / pairs
                     px, py = x0 + (x1 - x0) * s, y0 + (y1 - y0) * s
@@ -1003,7 +1003,7 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
                         ang = math.radians(rng.uniform(5, 80)) * side
                         vx = ux * math.cos(ang) - uy * math.sin(ang)
                         vy = ux * math.sin(ang) + uy * math.cos(ang)
-                        nl = rng.uniform(0.12, 0.18) * (1.0 - 0.3 * abs(ang) / math.radians(80))
+                        nl = rng.uniform(0.14, 0.20) * (1.0 - 0.3 * abs(ang) / math.radians(80))
                         ex, ey = px + vx * nl, py + vy * nl
                         # kept inside the tile: a needle cut by the edge shows the card
                         f = 1.0
@@ -1013,7 +1013,7 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
                             f *= 0.85
                             ex, ey = px + vx * nl * f, py + vy * nl * f
                         tone = base * rng.uniform(0.75, 1.15)
-                        segs.append((px, py, ex, ey, 0.0034, tone * 0.65, np.minimum(tone * 1.3, 1)))
+                        segs.append((px, py, ex, ey, 0.0048, tone * 0.65, np.minimum(tone * 1.3, 1)))
         else:  # spruce
             top = rng.uniform(0.86, 0.96)
             axes = [(0.5, 0.0, 0.5 + bend, top, 1.0)]
