@@ -957,10 +957,11 @@ def draw_needles(rgb, alpha, segs):
 def needle_sprays(kind, seed, base, twig, tile, scale):
     """The seven spray tiles of a conifer's needle-cluster atlas (issue #33), drawn needle by
     needle at the atlas's resolution (a pasted shoot image would shrink its needles below a
-    texel). kind "pine": a short twig forking into three or four shoots, each ending in a
-    shaving brush of long paired needles (a sixth of the tile, thin) round its last half,
-    forward and to the sides, lighter at the tips, with sky between the brushes, so that a card
-    reads as a pine's tufts, not as a broad leaf. kind "spruce": a flat branchlet (an axis with
+    texel). kind "pine": a short twig forking into four or five shoots, each ending in a
+    shaving brush of long needles (a sixth of the tile, thin) round its last half, denser
+    toward the tip, each needle at its own angle (mirrored pairs drew a fern's herringbone),
+    lighter at the tips, with sky between the brushes, so that a card reads as a pine's tufts,
+    not as a broad leaf. kind "spruce": a flat branchlet (an axis with
     four to six alternate side shoots) densely set with short stiff needles on both sides, the
     side shoots apart, lighter at the new growth. \p scale: needles per shoot, raised until the
     tiles are about as opaque as the shoot card (at most 2.2x)."""
@@ -979,7 +980,7 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
         segs_twig, segs = [], []
         bend = rng.uniform(-0.15, 0.15)
         if kind == "pine":
-            # Shoots spreading from a short fork, each ending in a shaving brush: needle pairs
+            # Shoots spreading from a short fork, each ending in a shaving brush: needles
             # round its last half, forward and to the sides, sky between the brushes.
             fork = rng.uniform(0.06, 0.12)
             stem_top = (0.5 + bend * 0.3, fork)
@@ -997,13 +998,17 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
                 ux, uy = ux / ln, uy / ln
                 pairs = int(30 * scale)
                 for j in range(pairs):
-                    s = 0.45 + 0.55 * (j + rng.random()) / pairs
+                    # Denser toward the tip, where the brush is; each needle at its own angle
+                    # (not mirrored in pairs, which drew a fern's herringbone), many crossing
+                    # the shoot as the needles behind it do.
+                    u = (j + rng.random()) / pairs
+                    s = 1.0 - 0.55 * u * u
                     px, py = x0 + (x1 - x0) * s, y0 + (y1 - y0) * s
                     for side in (-1, 1):
-                        ang = math.radians(rng.uniform(5, 80)) * side
+                        ang = math.radians(float(np.clip(rng.normal(0.0, 38.0), -85, 85)))
                         vx = ux * math.cos(ang) - uy * math.sin(ang)
                         vy = ux * math.sin(ang) + uy * math.cos(ang)
-                        nl = rng.uniform(0.14, 0.20) * (1.0 - 0.3 * abs(ang) / math.radians(80))
+                        nl = rng.uniform(0.12, 0.21) * (1.0 - 0.3 * abs(ang) / math.radians(85))
                         ex, ey = px + vx * nl, py + vy * nl
                         # kept inside the tile: a needle cut by the edge shows the card
                         f = 1.0

@@ -13,6 +13,7 @@
 #include "coverageraster.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/leafclusters.h"
+#include "engine/util/image.h"
 #include "presetfile.h"
 
 using namespace sylva;
@@ -163,5 +164,86 @@ TEST(LeafClusters, ConifersAndShrubsCarrySpraysAtTheSameSilhouette) {
         EXPECT_GE(m.ratio, 4.0) << species;
         EXPECT_GE(m.iou[0], 0.9) << species << " from the side";
         EXPECT_GE(m.iou[1], 0.9) << species << " from the camera";
+    }
+}
+
+namespace {
+
+// Tile \p k of a cluster atlas (numbered from the bottom left along rows; image rows run down).
+struct Tile {
+    int x0, y0, size;
+};
+Tile atlasTile(const Image& atlas, int k) {
+    const int size = atlas.width / mesh::kClusterAtlasColumns;
+    const int col = k % mesh::kClusterAtlasColumns, row = k / mesh::kClusterAtlasColumns;
+    return {col * size, (mesh::kClusterAtlasRows - 1 - row) * size, size};
+}
+
+} // namespace
+
+// Issue #33: every cluster atlas has seven sprays that differ from each other (the cards of a
+// crown do not repeat one picture) in the engine's 4 x 2 layout, and a deciduous species'
+// autumn atlas mixes tones: its sprays' mean red / green differ, where its summer sprays' are
+// one green.
+TEST(LeafClusters, AtlasesHaveSevenDifferentSpraysAndAutumnMixesTones) {
+    for (const char* species :
+         {"english-oak", "european-beech", "norway-maple", "silver-birch", "lombardy-poplar",
+          "weeping-willow", "scots-pine", "norway-spruce", "italian-cypress", "privet-hedge"}) {
+        const Image atlas =
+            readPng(kPresets / "textures" / (std::string(species) + "_leafcluster.png"));
+        ASSERT_EQ(atlas.width, 1024) << species;
+        ASSERT_EQ(atlas.height, 512) << species;
+        std::vector<std::vector<std::uint8_t>> masks;
+        for (int k = 0; k < mesh::kClusterSprays; ++k) {
+            const Tile t = atlasTile(atlas, k);
+            std::vector<std::uint8_t> m(static_cast<std::size_t>(t.size) * t.size);
+            std::size_t covered = 0;
+            for (int y = 0; y < t.size; ++y)
+                for (int x = 0; x < t.size; ++x) {
+                    const bool in = atlas.at(t.x0 + x, t.y0 + y)[3] >= 128;
+                    m[static_cast<std::size_t>(y) * t.size + x] = in;
+                    covered += in;
+                }
+            EXPECT_GT(covered, m.size() / 10) << species << " spray " << k << " is nearly empty";
+            masks.push_back(std::move(m));
+        }
+        for (std::size_t a = 0; a < masks.size(); ++a)
+            for (std::size_t b = a + 1; b < masks.size(); ++b) {
+                std::size_t both = 0, either = 0;
+                for (std::size_t i = 0; i < masks[a].size(); ++i) {
+                    both += masks[a][i] && masks[b][i];
+                    either += masks[a][i] || masks[b][i];
+                }
+                EXPECT_LT(static_cast<double>(both) / static_cast<double>(either), 0.8)
+                    << species << " sprays " << a << " and " << b << " are alike";
+            }
+    }
+    // Mean red / green of each spray's opaque texels; their spread across the seven sprays.
+    const auto spread = [](const Image& atlas) {
+        double lo = 1e9, hi = -1e9;
+        for (int k = 0; k < mesh::kClusterSprays; ++k) {
+            const Tile t = atlasTile(atlas, k);
+            double r = 0.0, g = 0.0;
+            for (int y = 0; y < t.size; ++y)
+                for (int x = 0; x < t.size; ++x) {
+                    const std::uint8_t* p = atlas.at(t.x0 + x, t.y0 + y);
+                    if (p[3] < 128) continue;
+                    r += p[0];
+                    g += p[1];
+                }
+            lo = std::min(lo, r / std::max(g, 1.0));
+            hi = std::max(hi, r / std::max(g, 1.0));
+        }
+        return hi - lo;
+    };
+    std::printf("| species | red/green spread of the sprays, summer | autumn |\n|---|---|---|\n");
+    for (const char* species : {"english-oak", "european-beech", "norway-maple", "silver-birch",
+                                "lombardy-poplar", "weeping-willow"}) {
+        const std::filesystem::path stem = kPresets / "textures" / species;
+        const double summer = spread(readPng(stem.string() + "_leafcluster.png"));
+        const double autumn = spread(readPng(stem.string() + "_leafcluster_autumn.png"));
+        std::printf("| %s | %.3f | %.3f |\n", species, summer, autumn);
+        EXPECT_GT(autumn, 0.1) << species << ": the autumn sprays are one tone";
+        EXPECT_GT(autumn, 2.0 * summer) << species;
     }
 }
