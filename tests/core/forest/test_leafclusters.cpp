@@ -1,6 +1,6 @@
 // Issue #33: leaf clusters. Each broadleaf of the species library is meshed with its cluster
 // cards (leaf_cluster_size, the atlas from make_textures.py) and with one card a leaf; the
-// clusters must cost at least 4x fewer leaf triangles and cover the same silhouette: IoU >= 0.9
+// clusters must cost at least 4x fewer leaf triangles and cover the same silhouette: IoU >= 0.92
 // of the pixel centres covered, seen from the side (as test_crownshape) and from a camera
 // above and in front (the gallery's view), by the CPU rasterizer of coverageraster.h.
 #include <gtest/gtest.h>
@@ -147,8 +147,11 @@ TEST(LeafClusters, BroadleavesCostAQuarterOfTheLeafTrianglesAtTheSameSilhouette)
                                 "lombardy-poplar", "weeping-willow"}) {
         const ClusterMeasure m = measureClusters(species);
         EXPECT_GE(m.ratio, 4.0) << species;
-        EXPECT_GE(m.iou[0], 0.9) << species << " from the side";
-        EXPECT_GE(m.iou[1], 0.9) << species << " from the camera";
+        // 0.92, a margin over the issue's 0.9 (the oak and the poplar were at 0.902 and 0.903
+        // before their crowns were grown fuller: larger lit clusters, inner clusters, more
+        // leaves a twig; a lacy crown's every edge is a fringe a cluster card cannot follow).
+        EXPECT_GE(m.iou[0], 0.92) << species << " from the side";
+        EXPECT_GE(m.iou[1], 0.92) << species << " from the camera";
     }
 }
 
