@@ -12,8 +12,9 @@ Debian's zlib gives the committed bytes, zlib-ng would not).
                                        branch, v along it)
   presets/textures/<species>_leaf.png  RGBA cut-out card, stem at the bottom edge (v = 0); the
                                        conifers' are needle clusters (pine: long paired needles)
-  presets/textures/<species>_leafcluster.png  512x512 RGBA leaf cluster atlas of a broadleaf:
-                                       three sprays and the single leaf, 2 x 2 tiles
+  presets/textures/<species>_leafcluster.png  1024x512 RGBA leaf cluster atlas: seven sprays and
+                                       the single leaf, 4 x 2 tiles (the conifers': needle
+                                       sprays drawn needle by needle; autumn: mixed tones)
   resources/textures/bark.png          256x256 RGB, the default bark
   resources/textures/leaf.png          256x512 RGBA, the default pointed leaf with veins
 
@@ -469,7 +470,7 @@ def needle_tuft(name, w, h, base, seed, count=220, spread=55, length=(0.75, 0.98
     mask = strokes(x, t, segs, aspect)
     shade = 0.8 + 0.3 * np.kron(noise((h, w), 2, 8, seed), np.ones((SS, SS)))
     rgb = np.asarray(base) * shade[..., None] * (0.75 + 0.35 * t)[..., None]
-    finish_leaf(name, w, h, mask, rgb)
+    return finish_leaf(name, w, h, mask, rgb)
 
 
 def pine_shoot(name, w, h, base, seed, fascicles=46, twig=(0.45, 0.30, 0.18)):
@@ -501,7 +502,7 @@ def pine_shoot(name, w, h, base, seed, fascicles=46, twig=(0.45, 0.30, 0.18)):
             col = base * tone * (0.75 + 0.45 * np.clip((t - s) / max(L, 1e-3), 0, 1))[..., None]
             rgb = np.where(needle[..., None], col, rgb)
             mask = mask | needle
-    finish_leaf(name, w, h, mask, np.clip(rgb, 0, 1))
+    return finish_leaf(name, w, h, mask, np.clip(rgb, 0, 1))
 
 
 def sprig(name, w, h, base, seed, needle=0.18, density=70, angle=55, twig=(0.40, 0.27, 0.17)):
@@ -537,7 +538,7 @@ def sprig(name, w, h, base, seed, needle=0.18, density=70, angle=55, twig=(0.40,
     shade = 0.8 + 0.35 * np.kron(noise((h, w), 3, 3, seed), np.ones((SS, SS)))
     rgb = np.asarray(base) * shade[..., None] * (0.8 + 0.3 * t)[..., None]
     rgb = np.where(mt[..., None], np.asarray(twig), rgb)
-    finish_leaf(name, w, h, mt | mn, rgb)
+    return finish_leaf(name, w, h, mt | mn, rgb)
 
 
 def frond(name, w, h, base, seed):
@@ -563,7 +564,7 @@ def frond(name, w, h, base, seed):
     shade = 0.8 + 0.3 * np.kron(noise((h, w), 2, 10, seed), np.ones((SS, SS)))
     rgb = np.asarray(base) * shade[..., None] * (0.75 + 0.4 * np.abs(x))[..., None]
     rgb = np.where(mr[..., None], np.asarray((0.55, 0.55, 0.30)), rgb)
-    finish_leaf(name, w, h, mr | ml, rgb)
+    return finish_leaf(name, w, h, mr | ml, rgb)
 
 
 def scale_spray(name, w, h, base, seed):
@@ -590,7 +591,7 @@ def scale_spray(name, w, h, base, seed):
     mask = strokes(x, t, segs, aspect)
     shade = 0.75 + 0.4 * np.kron(noise((h, w), 1.5, 1.5, seed), np.ones((SS, SS)))
     rgb = np.asarray(base) * shade[..., None] * (0.8 + 0.3 * t)[..., None]
-    finish_leaf(name, w, h, mask, rgb)
+    return finish_leaf(name, w, h, mask, rgb)
 
 
 def ellipse_leaf_mask(x, t, aspect, cx, ct, ang, L, W):
@@ -634,7 +635,7 @@ def rhododendron(name, w, h, leaf_col, flower_col, seed):
         mask |= m
     stem = strokes(x, t, [(0.0, 0.0, 0.0, 0.15, 0.015)], aspect)
     rgb = np.where((stem & ~mask)[..., None], np.asarray((0.35, 0.28, 0.2)), rgb)
-    finish_leaf(name, w, h, mask | stem, rgb)
+    return finish_leaf(name, w, h, mask | stem, rgb)
 
 
 def privet(name, w, h, base, seed):
@@ -658,7 +659,7 @@ def privet(name, w, h, base, seed):
     m, along, across = ellipse_leaf_mask(x, t, aspect, 0.0, 0.86, 0.0, 0.14, 0.035)
     rgb = np.where(m[..., None], np.asarray(base) * 1.25, rgb)
     mask |= m
-    finish_leaf(name, w, h, mask, rgb)
+    return finish_leaf(name, w, h, mask, rgb)
 
 
 # ----------------------------------------------------------------------------- the defaults
@@ -797,38 +798,63 @@ def paste_leaf(rgb, alpha, leaf, ax, ay, dx, dy, length, width, shade):
     alpha[y0:y1, x0:x1] = alpha[y0:y1, x0:x1] * (1 - a) + a
 
 
-def spray_tiles(leaf, aspect, seed, count, scale, twig, n):
-    """The three spray tiles of a cluster atlas (see cluster_atlas), leaves scale x as many and
-    sqrt(scale) x as long as at scale 1."""
+# The cluster atlas layout (engine/mesh/leafclusters.h): 4 x 2 tiles numbered from the bottom
+# left along rows; tiles 0-6 are sprays, tile 7 the single leaf.
+ATLAS_COLS, ATLAS_ROWS = 4, 2
+SPRAYS = ATLAS_COLS * ATLAS_ROWS - 1
+
+
+def tile_offset(k, tile):
+    """Pixel offset (x, y) of atlas tile k in the image (rows run downward; tile 0 bottom left)."""
+    return (k % ATLAS_COLS) * tile, (ATLAS_ROWS - 1 - k // ATLAS_COLS) * tile
+
+
+def spray_tiles(leaves, aspect, seed, count, scale, twig, tile, colours=None):
+    """The seven spray tiles of a cluster atlas (see cluster_atlas), leaves scale x as many and
+    sqrt(scale) x as long as at scale 1. \p leaves: the leaf drawings a spray picks from (one,
+    or a season's palette); \p colours: how a tile picks them, (seed, weights) -- each tile has
+    a dominant drawing and about a third of its leaves take another, so that cards differ from
+    each other and a spray mixes leaves at different stages. The shapes depend on \p seed only,
+    never on \p leaves or \p colours (a season's atlas shares the summer atlas's alpha and maps).
+    Each spray is drawn differently: its own leaf count, twig bend and length, spread of the
+    leaf angles and leaf length."""
     rng = np.random.default_rng(seed)
-    tile = n // 2
-    rgb = np.zeros((n, n, 3), np.float32)
-    alpha = np.zeros((n, n), np.float32)
+    crng = np.random.default_rng(colours[0] if colours else 0)
+    weights = np.asarray(colours[1] if colours else [1.0] * len(leaves), np.float64)
+    weights = weights / weights.sum()
+    rgb = np.zeros((tile * ATLAS_ROWS, tile * ATLAS_COLS, 3), np.float32)
+    alpha = np.zeros((tile * ATLAS_ROWS, tile * ATLAS_COLS), np.float32)
     grow = math.sqrt(scale)
-    for k in range(3):
-        ox, oy = (k % 2) * tile, (1 - k // 2) * tile  # image rows run downward: tile 0 bottom-left
-        leaves = int(round(rng.integers(count[0], count[1] + 1) * scale))
-        bend = rng.uniform(-0.12, 0.12)
+    for k in range(SPRAYS):
+        ox, oy = tile_offset(k, tile)
+        dominant = int(crng.choice(len(leaves), p=weights))
+        leaves_n = int(round(rng.integers(count[0], count[1] + 1) * scale))
+        bend = rng.uniform(-0.2, 0.2)
+        reach = rng.uniform(0.70, 0.84)  # how far up the tile the twig goes
+        angles = (rng.uniform(20, 40), rng.uniform(65, 90))  # leaf angles off the twig, degrees
+        size = rng.uniform(0.9, 1.1)
         # Twig: from the middle of the bottom edge up, bending to one side.
-        pts = [(0.5 + bend * s * s, 0.02 + 0.78 * s) for s in np.linspace(0, 1, 12)]
+        pts = [(0.5 + bend * s * s, 0.02 + reach * s) for s in np.linspace(0, 1, 12)]
         order = []
-        for i in range(leaves):
-            s = 0.08 + 0.86 * i / max(leaves - 1, 1)
+        for i in range(leaves_n):
+            s = 0.08 + 0.86 * i / max(leaves_n - 1, 1)
             side = -1 if i % 2 else 1
-            if i == leaves - 1:
+            if i == leaves_n - 1:
                 side = 0
             order.append((s, side))
         # Far leaves first (darker), near ones over them.
         depth = rng.permutation(len(order))
+        pick = [dominant if crng.random() < 0.65 else int(crng.choice(len(leaves), p=weights))
+                for _ in order]
         for j in np.argsort(depth):
             s, side = order[j]
-            cx, cy = 0.5 + bend * s * s, 0.02 + 0.78 * s
-            tang = np.array([2 * bend * s, 0.78])
+            cx, cy = 0.5 + bend * s * s, 0.02 + reach * s
+            tang = np.array([2 * bend * s, reach])
             tang /= np.linalg.norm(tang)
-            ang = 0.0 if side == 0 else side * math.radians(rng.uniform(30, 80))
+            ang = 0.0 if side == 0 else side * math.radians(rng.uniform(*angles))
             dx = tang[0] * math.cos(ang) - tang[1] * math.sin(ang)
             dy = tang[0] * math.sin(ang) + tang[1] * math.cos(ang)
-            length = min(0.62, rng.uniform(0.40, 0.50) * grow) * (1 - 0.25 * s) * (0.8 if side == 0 else 1.0)
+            length = min(0.62, rng.uniform(0.40, 0.50) * grow * size) * (1 - 0.25 * s) * (0.8 if side == 0 else 1.0)
             turn = rng.uniform(0.7, 1.0)  # foreshortening: a leaf turned in depth
             shade = 0.7 + 0.4 * depth[j] / max(len(order) - 1, 1)
             # A leaf cut by the tile's edge would show the card's straight edge: shortened until
@@ -844,8 +870,8 @@ def spray_tiles(leaf, aspect, seed, count, scale, twig, n):
                     break
                 length *= 0.9
             # Tile space (y up) to image rows (y down).
-            paste_leaf(rgb[oy:oy + tile, ox:ox + tile], alpha[oy:oy + tile, ox:ox + tile], leaf,
-                       cx * tile, (1 - cy) * tile, dx, -dy, length * tile,
+            paste_leaf(rgb[oy:oy + tile, ox:ox + tile], alpha[oy:oy + tile, ox:ox + tile],
+                       leaves[pick[j]], cx * tile, (1 - cy) * tile, dx, -dy, length * tile,
                        length * aspect * turn * tile, shade)
         twig_mask = np.zeros((tile, tile), np.float32)
         yy, xx = np.mgrid[0:tile, 0:tile].astype(np.float32) + 0.5
@@ -863,28 +889,188 @@ def spray_tiles(leaf, aspect, seed, count, scale, twig, n):
     return rgb, alpha
 
 
-def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17), size=512):
-    """A species' leaf cluster atlas (engine/mesh/leafclusters.h): 2 x 2 tiles, three sprays of
-    the species' leaf on a twig from the bottom edge of the tile (alternate sides, each leaf at
-    its own angle, foreshortened and shaded as if turned in depth) and the single leaf stretched
-    to the fourth tile. \p aspect is the leaf card's width / length. A cluster card covers what
-    its leaves' cards cover, so a spray must be about as opaque as the single leaf's card: the
-    sprays get more and longer leaves until their tiles are (nearly) as covered as the leaf."""
-    n = size * SS
-    tile = n // 2
-    target = float(leaf[..., 3].mean())
-    for scale in (1.0, 1.4, 1.9, 2.5, 3.2, 4.0, 5.0):
-        rgb, alpha = spray_tiles(leaf, aspect, seed, count, scale, twig, n)
-        if alpha[tile:, :].mean() >= 0.9 * target:
-            break
-    # Tile 3 (top right): the single leaf stretched to the tile.
+def single_leaf_tile(rgb, alpha, leaf, tile):
+    """Tile 7 of an atlas: the single leaf stretched to the tile."""
+    ox, oy = tile_offset(SPRAYS, tile)
     lh, lw = leaf.shape[:2]
     yy, xx = np.mgrid[0:tile, 0:tile]
     sample = leaf[(yy * lh) // tile, (xx * lw) // tile]
-    rgb[0:tile, tile:n] = sample[..., :3] * sample[..., 3:4]
-    alpha[0:tile, tile:n] = sample[..., 3]
+    rgb[oy:oy + tile, ox:ox + tile] = sample[..., :3] * sample[..., 3:4]
+    alpha[oy:oy + tile, ox:ox + tile] = sample[..., 3]
+
+
+def sprays_alpha(alpha, tile):
+    """Mean alpha of the spray tiles."""
+    return float(np.mean([alpha[oy:oy + tile, ox:ox + tile].mean()
+                          for ox, oy in (tile_offset(k, tile) for k in range(SPRAYS))]))
+
+
+def write_atlas(name, rgb, alpha, size):
     col = rgb / np.maximum(alpha, 1e-6)[..., None]
-    return finish_leaf(name, size, size, alpha, np.clip(col, 0, 1))
+    return finish_leaf(name, size * ATLAS_COLS // ATLAS_ROWS, size, alpha, np.clip(col, 0, 1))
+
+
+def cluster_atlas(name, leaf, aspect, seed, count=(6, 9), twig=(0.30, 0.24, 0.17), size=512,
+                  palette=None):
+    """A species' leaf cluster atlas (engine/mesh/leafclusters.h): 4 x 2 tiles, seven sprays
+    of the species' leaf on a twig from the bottom edge of the tile (alternate sides, each leaf
+    at its own angle, foreshortened and shaded as if turned in depth; each spray its own
+    count, bend and spread) and the single leaf stretched to the eighth tile. \p aspect is
+    the leaf card's width / length. A cluster card covers what its leaves' cards cover, so a
+    spray must be about as opaque as the single leaf's card: the sprays get more and longer
+    leaves until their tiles are (nearly) as covered as the leaf. \p palette: (leaf drawings,
+    weights, colour seed) the sprays' leaves are picked from (autumn), else the leaf alone.
+    The image is size x 2 size pixels."""
+    tile = size * SS // ATLAS_ROWS
+    target = float(leaf[..., 3].mean())
+    leaves, colours = ([leaf], None) if palette is None else (palette[0], (palette[2], palette[1]))
+    for scale in (1.0, 1.4, 1.9, 2.5, 3.2, 4.0, 5.0):
+        rgb, alpha = spray_tiles(leaves, aspect, seed, count, scale, twig, tile, colours)
+        if sprays_alpha(alpha, tile) >= 0.9 * target:
+            break
+    single_leaf_tile(rgb, alpha, leaf, tile)
+    return write_atlas(name, rgb, alpha, size)
+
+
+def draw_needles(rgb, alpha, segs):
+    """Draws line segments into a supersampled tile (y down): [(x0, y0, x1, y1, half_width,
+    colour at the start, colour at the end)] in pixels, later ones over earlier ones."""
+    H, W = alpha.shape
+    for (x0, y0, x1, y1, hw, c0, c1) in segs:
+        lo_x, hi_x = max(0, int(min(x0, x1) - hw - 1)), min(W, int(max(x0, x1) + hw + 2))
+        lo_y, hi_y = max(0, int(min(y0, y1) - hw - 1)), min(H, int(max(y0, y1) + hw + 2))
+        if lo_x >= hi_x or lo_y >= hi_y:
+            continue
+        yy, xx = np.mgrid[lo_y:hi_y, lo_x:hi_x].astype(np.float32) + 0.5
+        vx, vy = x1 - x0, y1 - y0
+        ll = max(vx * vx + vy * vy, 1e-9)
+        s = np.clip(((xx - x0) * vx + (yy - y0) * vy) / ll, 0, 1)
+        inside = np.hypot(xx - x0 - s * vx, yy - y0 - s * vy) < hw
+        if not inside.any():
+            continue
+        col = np.asarray(c0, np.float32) * (1 - s[..., None]) + np.asarray(c1, np.float32) * s[..., None]
+        region = rgb[lo_y:hi_y, lo_x:hi_x]
+        region[inside] = col[inside]
+        alpha[lo_y:hi_y, lo_x:hi_x][inside] = 1.0
+
+
+def needle_sprays(kind, seed, base, twig, tile, scale):
+    """The seven spray tiles of a conifer's needle-cluster atlas (issue #33), drawn needle by
+    needle at the atlas's resolution (a pasted shoot image would shrink its needles below a
+    texel). kind "pine": a short twig forking into four or five shoots, each ending in a
+    shaving brush of long needles (a sixth of the tile, thin) round its last half, denser
+    toward the tip, each needle at its own angle (mirrored pairs drew a fern's herringbone),
+    lighter at the tips, with sky between the brushes, so that a card reads as a pine's tufts,
+    not as a broad leaf. kind "spruce": a flat branchlet (an axis with
+    four to six alternate side shoots) densely set with short stiff needles on both sides, the
+    side shoots apart, lighter at the new growth. \p scale: needles per shoot, raised until the
+    tiles are about as opaque as the shoot card (at most 2.2x)."""
+    rng = np.random.default_rng(seed)
+    rgb = np.zeros((tile * ATLAS_ROWS, tile * ATLAS_COLS, 3), np.float32)
+    alpha = np.zeros((tile * ATLAS_ROWS, tile * ATLAS_COLS), np.float32)
+    base = np.asarray(base, np.float32)
+    twig = np.asarray(twig, np.float32)
+    T = float(tile)
+
+    def P(x, y):  # tile space (y up, 0..1) to pixels (y down)
+        return x * T, (1 - y) * T
+
+    for k in range(SPRAYS):
+        ox, oy = tile_offset(k, tile)
+        segs_twig, segs = [], []
+        bend = rng.uniform(-0.15, 0.15)
+        if kind == "pine":
+            # Shoots spreading from a short fork, each ending in a shaving brush: needles
+            # round its last half, forward and to the sides, sky between the brushes.
+            fork = rng.uniform(0.06, 0.12)
+            stem_top = (0.5 + bend * 0.3, fork)
+            segs_twig.append((0.5, 0.0, stem_top[0], stem_top[1], 0.011))
+            shoots = int(rng.integers(4, 6))
+            for i in range(shoots):
+                a = math.radians(-64 + 128 * (i + rng.uniform(0.25, 0.75)) / shoots)
+                L = rng.uniform(0.40, 0.54) * (1.0 - 0.3 * abs(math.sin(a)))
+                x0, y0 = stem_top
+                x1 = float(np.clip(x0 + math.sin(a) * L, 0.14, 0.86))
+                y1 = min(0.80, y0 + math.cos(a) * L)
+                segs_twig.append((x0, y0, x1, y1, 0.007))
+                ux, uy = x1 - x0, y1 - y0
+                ln = math.hypot(ux, uy)
+                ux, uy = ux / ln, uy / ln
+                pairs = int(30 * scale)
+                for j in range(pairs):
+                    # Denser toward the tip, where the brush is; each needle at its own angle
+                    # (not mirrored in pairs, which drew a fern's herringbone), many crossing
+                    # the shoot as the needles behind it do.
+                    u = (j + rng.random()) / pairs
+                    s = 1.0 - 0.55 * u * u
+                    px, py = x0 + (x1 - x0) * s, y0 + (y1 - y0) * s
+                    for side in (-1, 1):
+                        ang = math.radians(float(np.clip(rng.normal(0.0, 38.0), -85, 85)))
+                        vx = ux * math.cos(ang) - uy * math.sin(ang)
+                        vy = ux * math.sin(ang) + uy * math.cos(ang)
+                        nl = rng.uniform(0.12, 0.21) * (1.0 - 0.3 * abs(ang) / math.radians(85))
+                        ex, ey = px + vx * nl, py + vy * nl
+                        # kept inside the tile: a needle cut by the edge shows the card
+                        f = 1.0
+                        for _ in range(8):
+                            if 0.01 <= ex <= 0.99 and 0.01 <= ey <= 0.99:
+                                break
+                            f *= 0.85
+                            ex, ey = px + vx * nl * f, py + vy * nl * f
+                        tone = base * rng.uniform(0.75, 1.15)
+                        segs.append((px, py, ex, ey, 0.0048, tone * 0.65, np.minimum(tone * 1.3, 1)))
+        else:  # spruce
+            top = rng.uniform(0.86, 0.96)
+            axes = [(0.5, 0.0, 0.5 + bend, top, 1.0)]
+            n_side = int(rng.integers(4, 7))
+            for i in range(n_side):
+                t0 = 0.10 + 0.68 * (i + rng.uniform(0.0, 0.4)) / n_side
+                side = 1 if (i + k) % 2 else -1
+                a = math.radians(rng.uniform(40, 62))
+                L = rng.uniform(0.32, 0.46) * (1 - 0.5 * t0)
+                x0 = 0.5 + bend * t0
+                axes.append((x0, t0, x0 + side * math.sin(a) * L, t0 + math.cos(a) * L, 0.75))
+            for (x0, y0, x1, y1, w) in axes:
+                x1 = float(np.clip(x1, 0.06, 0.94))
+                segs_twig.append((x0, y0, x1, y1, 0.007 * w))
+                ux, uy = x1 - x0, y1 - y0
+                ln = math.hypot(ux, uy)
+                ux, uy = ux / ln, uy / ln
+                n = int(150 * ln * scale)
+                for j in range(n):
+                    s = (j + rng.random()) / n
+                    px, py = x0 + (x1 - x0) * s, y0 + (y1 - y0) * s
+                    for side in (-1, 1):
+                        ang = math.radians(rng.uniform(45, 75)) * side
+                        vx = ux * math.cos(ang) - uy * math.sin(ang)
+                        vy = ux * math.sin(ang) + uy * math.cos(ang)
+                        nl = rng.uniform(0.065, 0.09) * w * (1 - 0.35 * s)
+                        ex = float(np.clip(px + vx * nl, 0.01, 0.99))
+                        ey = float(np.clip(py + vy * nl, 0.01, 0.99))
+                        # the shoot's new growth (its last fifth) lighter
+                        tone = base * rng.uniform(0.8, 1.15) * (1.35 if s > 0.8 else 1.0)
+                        segs.append((px, py, ex, ey, 0.0042, tone * 0.75, np.minimum(tone * 1.25, 1)))
+        sub_rgb = rgb[oy:oy + tile, ox:ox + tile]
+        sub_a = alpha[oy:oy + tile, ox:ox + tile]
+        draw_needles(sub_rgb, sub_a, [(*P(x0, y0), *P(x1, y1), w * T, twig, twig * 0.8)
+                                      for (x0, y0, x1, y1, w) in segs_twig])
+        order = rng.permutation(len(segs))
+        draw_needles(sub_rgb, sub_a, [(*P(segs[i][0], segs[i][1]), *P(segs[i][2], segs[i][3]),
+                                       segs[i][4] * T, segs[i][5], segs[i][6]) for i in order])
+    return rgb, alpha
+
+
+def needle_atlas(name, kind, leaf, seed, base, twig=(0.36, 0.25, 0.16), size=512):
+    """A conifer's needle-cluster atlas: needle_sprays' seven tiles and the species' shoot card
+    (\p leaf) as the single leaf, denser until the sprays are about as opaque as the shoot."""
+    tile = size * SS // ATLAS_ROWS
+    target = float(leaf[..., 3].mean())
+    for scale in (1.0, 1.3, 1.7, 2.2):
+        rgb, alpha = needle_sprays(kind, seed, base, twig, tile, scale)
+        if sprays_alpha(alpha, tile) >= 0.9 * target:
+            break
+    single_leaf_tile(rgb, alpha, leaf, tile)
+    return write_atlas(name, rgb, alpha, size)
 
 
 # ----------------------------------------------------------------------------- the library
@@ -915,22 +1101,28 @@ def library():
     cluster_atlas("lombardy-poplar_leafcluster.png", leaf, 0.5, 153)
 
     save_bark("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
-    pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
+    leaf = pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
+    needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.21, 0.36, 0.30))
 
     save_bark("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
-    sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)
+    leaf = sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)
+    needle_atlas("norway-spruce_leafcluster.png", "spruce", leaf, 173, (0.14, 0.31, 0.15))
 
     save_bark("date-palm_bark.png", bark_palm())
     frond("date-palm_leaf.png", 128, 256, (0.30, 0.48, 0.16), 182)
 
     save_bark("italian-cypress_bark.png", bark_stringy(191, (0.16, 0.12, 0.10), (0.55, 0.46, 0.38)))
-    scale_spray("italian-cypress_leaf.png", 128, 256, (0.13, 0.28, 0.11), 192)
+    leaf = scale_spray("italian-cypress_leaf.png", 128, 256, (0.13, 0.28, 0.11), 192)
+    cluster_atlas("italian-cypress_leafcluster.png", leaf, 0.5, 193, count=(3, 5))
 
     save_bark("rhododendron_bark.png", bark_smooth(201, (0.42, 0.34, 0.27), 0.8, lenticels=0.2), strength=2.5)
+    # No cluster atlas: the card is already a rosette of leaves under a truss, one at each
+    # shoot tip (1,300 cards); sprays of rosettes read as stretched smears (tried).
     rhododendron("rhododendron_leaf.png", 256, 256, (0.12, 0.27, 0.08), (0.85, 0.35, 0.62), 202)
 
     save_bark("privet-hedge_bark.png", bark_smooth(211, (0.45, 0.42, 0.36), 0.6, lenticels=0.6), strength=2.5)
-    privet("privet-hedge_leaf.png", 128, 256, (0.16, 0.36, 0.08), 212)
+    leaf = privet("privet-hedge_leaf.png", 128, 256, (0.16, 0.36, 0.08), 212)
+    cluster_atlas("privet-hedge_leafcluster.png", leaf, 0.5, 213, count=(4, 7))
 
 
 # ----------------------------------------------------------------------------- seasons
@@ -949,6 +1141,35 @@ SPRING = np.asarray((0.40, 0.60, 0.15))
 CLUSTERS = {"english-oak": (0.5, 103), "silver-birch": (0.5, 113), "european-beech": (0.5, 123),
             "norway-maple": (1.0, 133), "weeping-willow": (0.25, 143),
             "lombardy-poplar": (0.5, 153)}
+
+
+# A real autumn crown mixes leaves at different stages: each deciduous species' autumn cluster
+# atlas picks its sprays' leaves from a palette, the preset's autumn_color first (the commonest)
+# and the species' other autumn tones after it, with their weights (field guides' descriptions:
+# the oak's russet, tawny and olive late leaves; the beech's copper, gold and brown; the
+# maple's orange, yellow and red; birch, poplar and willow yellows, golds and lingering greens).
+AUTUMN_PALETTES = {
+    "english-oak": [((0.62, 0.47, 0.16), 0.25), ((0.38, 0.22, 0.09), 0.2), ((0.44, 0.42, 0.15), 0.15)],
+    "european-beech": [((0.84, 0.56, 0.14), 0.25), ((0.52, 0.27, 0.10), 0.2), ((0.76, 0.64, 0.22), 0.1)],
+    "norway-maple": [((0.95, 0.78, 0.14), 0.3), ((0.82, 0.26, 0.07), 0.15), ((0.70, 0.66, 0.16), 0.1)],
+    "silver-birch": [((0.93, 0.60, 0.12), 0.25), ((0.66, 0.70, 0.22), 0.2), ((0.74, 0.50, 0.15), 0.1)],
+    "lombardy-poplar": [((0.92, 0.58, 0.12), 0.25), ((0.64, 0.68, 0.20), 0.2), ((0.78, 0.80, 0.30), 0.1)],
+    "weeping-willow": [((0.88, 0.76, 0.16), 0.3), ((0.56, 0.62, 0.22), 0.2), ((0.80, 0.60, 0.15), 0.1)],
+}
+
+
+def autumn_palette(species, rgba, main):
+    """The autumn leaf drawing \p rgba (recoloured to \p main) and its palette variants, with
+    their weights: each variant keeps the drawing's shading and blotches, moved from \p main to
+    its own colour."""
+    tones = AUTUMN_PALETTES.get(species, [])
+    leaves, weights = [rgba], [1.0 - sum(w for _, w in tones)]
+    for colour, weight in tones:
+        v = rgba.copy()
+        v[..., :3] = np.clip(rgba[..., :3] * (np.asarray(colour) / np.maximum(main, 1e-3)), 0, 1)
+        leaves.append(v)
+        weights.append(weight)
+    return leaves, weights
 
 
 def deciduous_leaf(species, name):
@@ -1022,7 +1243,12 @@ def seasons():
                 if species in CLUSTERS:
                     SEASON_RECOLOR = lambda rgb, mask: rgb
                     aspect, seed = CLUSTERS[species]
-                    cluster_atlas(species + "_leafcluster_" + season + ".png", rgba, aspect, seed)
+                    palette = None
+                    if season == "autumn":
+                        leaves, weights = autumn_palette(species, rgba, autumn)
+                        palette = (leaves, weights, seed + 1000)
+                    cluster_atlas(species + "_leafcluster_" + season + ".png", rgba, aspect, seed,
+                                  palette=palette)
         finally:
             SEASON_RECOLOR = None
 

@@ -219,31 +219,35 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     const bool wind = span.wind;
     const bool ids = span.ids;
     Rng rng(mixSeed(clusters.seed, salt::kLeafClusters));
-    // A texel of inset keeps a tile's neighbours out of its bilinear footprint.
-    constexpr float kInset = 0.004f;
+    // Two texels of inset (of the 1024 x 512 atlas) keep a tile's neighbours out of its
+    // bilinear footprint.
+    const glm::vec2 inset(2.0f / 1024.0f, 2.0f / 512.0f);
+    const glm::vec2 tileSize(1.0f / static_cast<float>(kClusterAtlasColumns),
+                             1.0f / static_cast<float>(kClusterAtlasRows));
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::vector<std::uint32_t>& group = groups[g];
         const skel::Leaf& first = leaves[group.front()];
         glm::vec3 corners[4];
         glm::vec3 normal;
-        int tile = 3;
+        int tile = kClusterSprays; // the single leaf
         bool mirror = false;
         if (group.size() == 1) {
             leafCorners(first, aspect, scale, corners);
             normal = glm::normalize(skel::upOf(first.orientation));
             // Drawn every time so that a cluster's look does not depend on its neighbours.
-            (void)rng.below(3);
+            (void)rng.below(kClusterSprays);
             (void)rng.uniformf(0.0f, 1.0f);
         } else {
             const FittedCard f = fitCard(leaves, group, aspect, scale);
             for (int c = 0; c < 4; ++c)
                 corners[c] = f.corners[c];
             normal = f.normal;
-            tile = static_cast<int>(rng.below(3));
+            tile = static_cast<int>(rng.below(kClusterSprays));
             mirror = rng.uniformf(0.0f, 1.0f) < 0.5f;
         }
-        const glm::vec2 origin(0.5f * static_cast<float>(tile % 2),
-                               0.5f * static_cast<float>(tile / 2));
+        const glm::vec2 origin =
+            tileSize * glm::vec2(static_cast<float>(tile % kClusterAtlasColumns),
+                                 static_cast<float>(tile / kClusterAtlasColumns));
         const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
         const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
         const std::size_t v = v0 + 4 * g;
@@ -252,7 +256,7 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         for (std::size_t c = 0; c < 4; ++c) {
             out.positions[v + c] = corners[c];
             out.normals[v + c] = normal;
-            out.uvs[v + c] = origin + glm::vec2(kInset) + local[c] * (0.5f - 2.0f * kInset);
+            out.uvs[v + c] = origin + inset + local[c] * (tileSize - 2.0f * inset);
             if (ids)
                 out.node[v + c] =
                     first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;

@@ -14,8 +14,15 @@ namespace sylva::mesh {
 /// atlas (make_textures.py's <species>_leafcluster.png), so a crown costs a fraction of the
 /// triangles of one card a leaf at the same silhouette.
 ///
-/// The atlas is 2 x 2 tiles: tiles 0-2 are sprays of leaves on a twig (stem at the bottom edge
-/// of the tile), tile 3 is the single leaf stretched to the tile (for a leaf alone in its cell).
+/// The atlas is 4 x 2 tiles (1024 x 512 pixels), numbered from the bottom left along rows:
+/// tiles 0-6 are sprays of leaves (or of needle shoots, for the conifers and shrubs) on a twig,
+/// stem at the bottom edge of the tile, each drawn differently; tile 7 is the single leaf
+/// stretched to the tile (for a leaf alone in its cell). A card shows one of the seven sprays,
+/// mirrored or not: fourteen looks, so that neighbouring cards rarely repeat.
+inline constexpr int kClusterAtlasColumns = 4;
+inline constexpr int kClusterAtlasRows = 2;
+inline constexpr int kClusterSprays = kClusterAtlasColumns * kClusterAtlasRows - 1;
+
 struct LeafClusterSettings {
     /// Mean leaves a card carries; 0 or 1: one card a leaf (appendLeafCards); [0, 64].
     int leavesPerCard = 0;
@@ -28,7 +35,7 @@ struct LeafClusterSettings {
 /// that best fits its leaf cards' corners (the two largest principal axes; its normal turned
 /// toward the leaves' mean up axis), stem edge toward where its leaves start, and covers the
 /// corners' extent in that plane; so the cards keep the leaves' spread and their varied
-/// orientations, not one facing. A leaf alone keeps its own card (tile 3). Wind attributes and
+/// orientations, not one facing. A leaf alone keeps its own card (tile 7). Wind attributes and
 /// node ids as appendLeafCards (a card takes its first leaf's node). A cluster card that
 /// \p accept (when given) refuses, tested as a leaf whose card (size long, cards.aspect x size
 /// wide, times cards.sizeScale) holds it, is not made: its leaves keep their own cards (a forest

@@ -298,7 +298,7 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
            other("leaf_texture_file", ParamKind::File,
                  "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png"),
            other("leaf_cluster_texture_file", ParamKind::File,
-                 "Leaf cluster atlas RGBA PNG: 2 x 2 tiles, three sprays and the single leaf")});
+                 "Leaf cluster atlas RGBA PNG: 4 x 2 tiles, seven sprays and the single leaf")});
     group(
         tube.params, "Season",
         {choice("season", "summer", {"spring", "summer", "autumn", "winter"},
