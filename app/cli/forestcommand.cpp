@@ -86,8 +86,8 @@ int runForest(const std::vector<std::string>& argv) {
     valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
     const Args args(argv, valueOptions,
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--no-instancing",
-                     "--instance-tables", "--naive-placement", "--fsync", "--full-precision",
-                     "--assimp-gltf", "--wind"});
+                     "--grow-unique", "--instance-tables", "--naive-placement", "--fsync",
+                     "--full-precision", "--assimp-gltf", "--wind"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -110,6 +110,7 @@ int runForest(const std::vector<std::string>& argv) {
     options.adapt = !args.flag("--no-adapt");
     options.neighbours = !args.flag("--no-neighbours");
     options.instancing = !args.flag("--no-instancing");
+    options.adaptVariants = !args.flag("--grow-unique");
     if (args.flag("--naive-placement")) options.placement = placement::PlacementMethod::Naive;
     const bool wind = args.flag("--wind");
     if (wind && usda)
@@ -251,6 +252,7 @@ int runForest(const std::vector<std::string>& argv) {
         appendJsonNumber(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
         appendJsonNumber(json, "instanced", static_cast<double>(stats.instanced));
         appendJsonNumber(json, "unique", static_cast<double>(stats.unique));
+        appendJsonNumber(json, "adapted_variants", static_cast<double>(stats.adaptedVariants));
         appendJsonNumber(json, "variants", static_cast<double>(stats.variants));
         std::size_t missing = 0;
         for (const placement::Shortfall& s : stats.shortfalls)

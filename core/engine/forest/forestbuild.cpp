@@ -517,38 +517,56 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 // itself too (the variants are grown in the scene's season).
                 const bool ownSeason = in.season >= 0 && static_cast<mesh::Season>(in.season) !=
                                                              meshSettings[in.species].season;
-                if (firstVariant[in.species] >= 0 && !in.handPlaced && near.empty() && !ownSeason) {
-                    const auto v = static_cast<std::size_t>(firstVariant[in.species]) +
-                                   mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species];
-                    if (!touchesObstacles(obstacles, in, extents[v])) {
-                        const ForestVariant& variant = variants[v];
-                        tree.variant = static_cast<std::int32_t>(v);
-                        tree.skeleton = variant.skeleton;
-                        tree.meshSettings = variant.meshSettings;
-                        tree.metrics =
-                            forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
-                        if (!options.useLod || !options.buildMeshes || !options.meshInstances ||
-                            variant.levels.empty()) {
-                            tree.mesh = variant.mesh; // shared: drawn with the tree's transform
-                            continue;
-                        }
-                        // The variant's level for this tree's size on screen, made once per
-                        // variant (the full-detail variant drawn 1,000 times made an OBJ 13
-                        // times larger): the variant stands at scale 1, the tree at scale·growth.
-                        const double s = std::max(1e-3, static_cast<double>(in.scale) *
-                                                            static_cast<double>(in.growth));
-                        const mesh::DistanceLevel& level =
-                            variant.levels[mesh::levelFor(variant.levels, ctx.cameraDistance / s)];
-                        tree.mesh = level.mesh;
-                        tree.meshCameraDistance = level.distance * s;
-                        continue;
+                const bool hasVariants = firstVariant[in.species] >= 0 && !in.handPlaced;
+                const std::size_t v =
+                    hasVariants
+                        ? static_cast<std::size_t>(firstVariant[in.species]) +
+                              mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species]
+                        : 0;
+                // Shows variant v: its skeleton and settings shared, its mesh the variant's or
+                // the variant's level for this tree's size on screen.
+                auto showVariant = [&]() {
+                    const ForestVariant& variant = variants[v];
+                    tree.variant = static_cast<std::int32_t>(v);
+                    tree.adaptedFrom = -1;
+                    tree.skeleton = variant.skeleton;
+                    tree.meshSettings = variant.meshSettings;
+                    tree.metrics =
+                        forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
+                    if (!options.useLod || !options.buildMeshes || !options.meshInstances ||
+                        variant.levels.empty()) {
+                        tree.mesh = variant.mesh; // shared: drawn with the tree's transform
+                        return;
                     }
+                    // The variant's level for this tree's size on screen, made once per
+                    // variant (the full-detail variant drawn 1,000 times made an OBJ 13
+                    // times larger): the variant stands at scale 1, the tree at scale·growth.
+                    const double s = std::max(1e-3, static_cast<double>(in.scale) *
+                                                        static_cast<double>(in.growth));
+                    const mesh::DistanceLevel& level =
+                        variant.levels[mesh::levelFor(variant.levels, ctx.cameraDistance / s)];
+                    tree.mesh = level.mesh;
+                    tree.meshCameraDistance = level.distance * s;
+                };
+                const bool clearOfObstacles =
+                    hasVariants && !touchesObstacles(obstacles, in, extents[v]);
+                if (hasVariants && near.empty() && !ownSeason && clearOfObstacles) {
+                    showVariant();
+                    continue;
                 }
+
+                // Adapted from its variant (see ForestOptions::adaptVariants): the species'
+                // growth sees neither obstacles nor neighbours, so only adaptation and meshing
+                // are this tree's own.
+                const bool fromVariant = hasVariants && options.adaptVariants &&
+                                         !plan.hasAdaptNode && !plan.selfOrganizing;
+                if (fromVariant) tree.adaptedFrom = static_cast<std::int32_t>(v);
 
                 std::uint64_t cacheKey = 0;
                 if (options.cache && !plan.selfOrganizing) {
                     cacheKey = treeKey(speciesKeys[in.species], in, near, scene, options,
                                        ctx.cameraDistance);
+                    if (fromVariant) cacheKey = mixSeed(cacheKey, variants[v].seed);
                     if (std::optional<ForestTree> cached = options.cache->findTree(cacheKey)) {
                         tree = std::move(*cached);
                         tree.name = species.name + "_" + std::to_string(in.id);
@@ -561,6 +579,8 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 std::shared_ptr<const skel::Skeleton> skeleton;
                 if (plan.selfOrganizing) {
                     skeleton = standGrown[index];
+                } else if (fromVariant) {
+                    skeleton = variants[v].skeleton;
                 } else {
                     const graph::NodeOutput& grown =
                         evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode);
@@ -600,6 +620,17 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     tree.adapt = adapted.stats;
                     skeleton = std::make_shared<const skel::Skeleton>(std::move(adapted.skeleton));
                     cpuAdapt[thread] += msSince(t);
+                    // A variant whose branches reach no neighbour's crown core (the cylinder
+                    // test above is coarse: crowns are not solid cylinders) and that no
+                    // obstacle is near is not changed by adaptation: the tree touches nothing
+                    // and is an instance. Obstacles keep a tree unique: the variant's merged
+                    // leaf clusters are not checked against them.
+                    if (fromVariant && clearOfObstacles && !ownSeason &&
+                        tree.adapt.collidingBefore == 0 && tree.adapt.droppedLeaves == 0) {
+                        showVariant();
+                        if (cacheKey) options.cache->storeTree(cacheKey, tree);
+                        continue;
+                    }
                 }
 
                 tree.skeleton = skeleton;
@@ -656,6 +687,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             if (e) std::rethrow_exception(e); // the first failing tree in instance order
         for (const ForestTree& tree : batch) {
             ++(tree.variant >= 0 ? stats.instanced : stats.unique);
+            if (tree.adaptedFrom >= 0) ++stats.adaptedVariants;
             stats.vertices += tree.mesh->vertexCount();
             stats.triangles += tree.mesh->triangleCount();
             stats.collidingTrees += tree.adapt.collidingBefore > 0 ? 1 : 0;
