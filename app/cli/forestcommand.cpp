@@ -193,7 +193,8 @@ int runForest(const std::vector<std::string>& argv) {
                     for (const forest::ForestTree& tree : batch)
                         trees.push_back({tree.instance.id, tree.instance.species, tree.variant,
                                          tree.instance.position, tree.instance.rotation,
-                                         tree.instance.scale * tree.instance.growth, tree.mesh});
+                                         tree.instance.scale * tree.instance.growth, tree.mesh,
+                                         tree.meshCameraDistance});
                     usdWriter->add(trees, progress);
                 } else {
                     std::vector<ExportTree> trees;
