@@ -20,6 +20,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QProgressBar>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -166,9 +167,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
 
     QSettings settings;
-    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+        openAtScreenSize();
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     updateTitle();
+}
+
+void MainWindow::openAtScreenSize() {
+    // First start: the docks' size hints alone give a small window with a small 3D view; an
+    // artist's editor takes most of the screen, centred, leaving the taskbar and a margin.
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    if (!screen) return;
+    const QRect available = screen->availableGeometry();
+    const QSize size(available.width() * 9 / 10, available.height() * 9 / 10);
+    resize(size);
+    move(available.center() - QPoint(size.width() / 2, size.height() / 2));
 }
 
 MainWindow::~MainWindow() {

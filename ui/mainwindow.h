@@ -156,6 +156,7 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    void openAtScreenSize();
     void createDocks();
     void createMenus();
     void createToolBar();
