@@ -370,6 +370,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     std::vector<std::int32_t> firstVariant(scene.species.size(), -1);
     std::vector<std::uint32_t> variantCount(scene.species.size(), 0);
     std::vector<Extent> extents;
+    std::vector<forest::SkeletonMeasure> measures; ///< per variant: its instances' metrics
     if (options.instancing) {
         requireRange("variants per species", options.variantsPerSpecies, 1, 256);
         std::vector<bool> used(scene.species.size(), false);
@@ -467,8 +468,10 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         }
         for (const std::exception_ptr& e : errors)
             if (e) std::rethrow_exception(e);
-        for (const ForestVariant& v : variants)
+        for (const ForestVariant& v : variants) {
             extents.push_back(variantExtent(*v.skeleton, meshSettings[v.species]));
+            measures.push_back(forest::prepareMeasure(*v.skeleton));
+        }
     }
     stats.variants = variants.size();
     if (options.onVariants) options.onVariants(variants);
@@ -532,7 +535,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     tree.skeleton = variant.skeleton;
                     tree.meshSettings = variant.meshSettings;
                     tree.metrics =
-                        forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
+                        forest::measureTree(measures[v], plan.wood, in.scale * in.growth);
                     if (!options.useLod || !options.buildMeshes || !options.meshInstances ||
                         variant.levels.empty()) {
                         tree.mesh = variant.mesh; // shared: drawn with the tree's transform
