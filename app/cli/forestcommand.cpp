@@ -254,6 +254,7 @@ int runForest(const std::vector<std::string>& argv) {
         appendJsonNumber(json, "instanced", static_cast<double>(stats.instanced));
         appendJsonNumber(json, "unique", static_cast<double>(stats.unique));
         appendJsonNumber(json, "adapted_variants", static_cast<double>(stats.adaptedVariants));
+        appendJsonNumber(json, "instanced_by_check", static_cast<double>(stats.instancedByCheck));
         appendJsonNumber(json, "variants", static_cast<double>(stats.variants));
         std::size_t missing = 0;
         for (const placement::Shortfall& s : stats.shortfalls)

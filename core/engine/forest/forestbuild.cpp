@@ -532,6 +532,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     const ForestVariant& variant = variants[v];
                     tree.variant = static_cast<std::int32_t>(v);
                     tree.adaptedFrom = -1;
+                    tree.instanceChecked = false;
                     tree.skeleton = variant.skeleton;
                     tree.meshSettings = variant.meshSettings;
                     tree.metrics =
@@ -631,6 +632,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     if (fromVariant && clearOfObstacles && !ownSeason &&
                         tree.adapt.collidingBefore == 0 && tree.adapt.droppedLeaves == 0) {
                         showVariant();
+                        tree.instanceChecked = true;
                         if (cacheKey) options.cache->storeTree(cacheKey, tree);
                         continue;
                     }
@@ -691,6 +693,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         for (const ForestTree& tree : batch) {
             ++(tree.variant >= 0 ? stats.instanced : stats.unique);
             if (tree.adaptedFrom >= 0) ++stats.adaptedVariants;
+            if (tree.instanceChecked) ++stats.instancedByCheck;
             stats.vertices += tree.mesh->vertexCount();
             stats.triangles += tree.mesh->triangleCount();
             stats.collidingTrees += tree.adapt.collidingBefore > 0 ? 1 : 0;

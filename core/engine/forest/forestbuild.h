@@ -128,6 +128,9 @@ struct ForestTree {
     /// A unique tree adapted from a variant's skeleton (ForestOptions::adaptVariants): that
     /// variant's index; -1 otherwise (instanced, or grown from its own seed).
     std::int32_t adaptedFrom = -1;
+    /// An instance that adaptation's test found touching no neighbour's crown core (the coarse
+    /// crown-cylinder test had not cleared it): work was done for it, as for a unique tree.
+    bool instanceChecked = false;
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).
     std::shared_ptr<const skel::Skeleton> skeleton;
@@ -154,6 +157,8 @@ struct ForestStats {
     std::size_t unique = 0; ///< trees of the tile grown and adapted for their place
     /// Of the unique trees, those adapted from their variant's skeleton (adaptVariants).
     std::size_t adaptedVariants = 0;
+    /// Of the instanced trees, those ForestTree::instanceChecked.
+    std::size_t instancedByCheck = 0;
     std::size_t variants = 0; ///< variants handed to onVariants (each counted once)
     std::vector<placement::Shortfall> shortfalls;
     forest::SceneMetrics metrics;

@@ -227,10 +227,14 @@ TEST(Instancing, UniqueTreesAreAdaptedFromTheirVariantsSkeleton) {
     options.useLod = false;
     const Built b = build(s, options);
     ASSERT_GT(b.stats.unique, 2u);
-    std::size_t adapted = 0, changed = 0, handSeen = 0;
+    std::size_t adapted = 0, changed = 0, handSeen = 0, checked = 0;
     for (const forest::ForestTree& t : b.trees) {
         if (t.variant >= 0) {
             EXPECT_EQ(t.adaptedFrom, -1) << t.name;
+            checked += t.instanceChecked ? 1 : 0;
+            if (t.instanceChecked) {
+                EXPECT_EQ(t.adapt.collidingBefore, 0u) << t.name;
+            }
             continue;
         }
         if (t.instance.handPlaced) {
@@ -260,6 +264,7 @@ TEST(Instancing, UniqueTreesAreAdaptedFromTheirVariantsSkeleton) {
     }
     EXPECT_EQ(handSeen, 1u);
     EXPECT_EQ(adapted, b.stats.adaptedVariants);
+    EXPECT_EQ(checked, b.stats.instancedByCheck);
     EXPECT_EQ(adapted + handSeen, b.stats.unique);
     EXPECT_GT(changed, 0u) << "the trees at the wall are cut back";
 
