@@ -67,6 +67,10 @@
         <translation>Art umbenennen</translation>
     </message>
     <message>
+        <source>Change variants</source>
+        <translation>Varianten ändern</translation>
+    </message>
+    <message>
         <source>Remove species</source>
         <translation>Art entfernen</translation>
     </message>
@@ -1367,6 +1371,18 @@
     <message>
         <source>How many trees of this species the domain scatters</source>
         <translation>Anzahl der Bäume dieser Art, die der Bereich verteilt</translation>
+    </message>
+    <message>
+        <source>Variants:</source>
+        <translation>Varianten:</translation>
+    </message>
+    <message>
+        <source>How many different trees of this species the forest is made of: a tree that touches no obstacle and no neighbour&apos;s crown shows one of them, turned and scaled; one that does is cut back from one of them. Fewer variants generate and export faster; 0 grows every tree for its place.</source>
+        <translation>Wie viele verschiedene Bäume dieser Art den Wald bilden: ein Baum, der kein Hindernis und keine Nachbarkrone berührt, zeigt einen davon, gedreht und skaliert; einer, der es tut, wird aus einem davon zurückgeschnitten. Weniger Varianten erzeugen und exportieren schneller; 0 lässt jeden Baum für seinen Platz wachsen.</translation>
+    </message>
+    <message>
+        <source>0 (every tree unique)</source>
+        <translation>0 (jeder Baum einzeln)</translation>
     </message>
     <message>
         <source>Camera</source>

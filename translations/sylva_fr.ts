@@ -67,6 +67,10 @@
         <translation>Renommer l&apos;espèce</translation>
     </message>
     <message>
+        <source>Change variants</source>
+        <translation>Modifier les variantes</translation>
+    </message>
+    <message>
         <source>Remove species</source>
         <translation>Supprimer l&apos;espèce</translation>
     </message>
@@ -1367,6 +1371,18 @@
     <message>
         <source>How many trees of this species the domain scatters</source>
         <translation>Nombre d&apos;arbres de cette espèce que la zone disperse</translation>
+    </message>
+    <message>
+        <source>Variants:</source>
+        <translation>Variantes :</translation>
+    </message>
+    <message>
+        <source>How many different trees of this species the forest is made of: a tree that touches no obstacle and no neighbour&apos;s crown shows one of them, turned and scaled; one that does is cut back from one of them. Fewer variants generate and export faster; 0 grows every tree for its place.</source>
+        <translation>Combien d&apos;arbres différents de cette espèce composent la forêt : un arbre qui ne touche aucun obstacle ni la couronne d&apos;un voisin en montre un, tourné et mis à l&apos;échelle ; un arbre qui en touche est taillé à partir de l&apos;un d&apos;eux. Moins de variantes se génèrent et s&apos;exportent plus vite ; 0 fait pousser chaque arbre pour sa place.</translation>
+    </message>
+    <message>
+        <source>0 (every tree unique)</source>
+        <translation>0 (chaque arbre unique)</translation>
     </message>
     <message>
         <source>Camera</source>

@@ -86,8 +86,8 @@ int runForest(const std::vector<std::string>& argv) {
     valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
     const Args args(argv, valueOptions,
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--no-instancing",
-                     "--instance-tables", "--naive-placement", "--fsync", "--full-precision",
-                     "--assimp-gltf", "--wind"});
+                     "--grow-unique", "--instance-tables", "--naive-placement", "--fsync",
+                     "--full-precision", "--assimp-gltf", "--wind"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("forest"));
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
@@ -110,6 +110,7 @@ int runForest(const std::vector<std::string>& argv) {
     options.adapt = !args.flag("--no-adapt");
     options.neighbours = !args.flag("--no-neighbours");
     options.instancing = !args.flag("--no-instancing");
+    options.adaptVariants = !args.flag("--grow-unique");
     if (args.flag("--naive-placement")) options.placement = placement::PlacementMethod::Naive;
     const bool wind = args.flag("--wind");
     if (wind && usda)
@@ -192,7 +193,8 @@ int runForest(const std::vector<std::string>& argv) {
                     for (const forest::ForestTree& tree : batch)
                         trees.push_back({tree.instance.id, tree.instance.species, tree.variant,
                                          tree.instance.position, tree.instance.rotation,
-                                         tree.instance.scale * tree.instance.growth, tree.mesh});
+                                         tree.instance.scale * tree.instance.growth, tree.mesh,
+                                         tree.meshCameraDistance});
                     usdWriter->add(trees, progress);
                 } else {
                     std::vector<ExportTree> trees;
@@ -251,6 +253,8 @@ int runForest(const std::vector<std::string>& argv) {
         appendJsonNumber(json, "pruned_nodes", static_cast<double>(stats.prunedNodes));
         appendJsonNumber(json, "instanced", static_cast<double>(stats.instanced));
         appendJsonNumber(json, "unique", static_cast<double>(stats.unique));
+        appendJsonNumber(json, "adapted_variants", static_cast<double>(stats.adaptedVariants));
+        appendJsonNumber(json, "instanced_by_check", static_cast<double>(stats.instancedByCheck));
         appendJsonNumber(json, "variants", static_cast<double>(stats.variants));
         std::size_t missing = 0;
         for (const placement::Shortfall& s : stats.shortfalls)

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace {
 
 const char* kUsage =
@@ -27,8 +29,8 @@ const char* kUsage =
     "       [--wind [wind options]]\n"
     "  forest <project.sylva> -o out.{obj,usda,glb,fbx}  generate a forest\n"
     "       [--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--no-lod]\n"
-    "       [--no-adapt] [--no-neighbours] [--no-instancing] [--instance-tables]\n"
-    "       [--naive-placement] [--fsync] [--full-precision] [--assimp-gltf]\n"
+    "       [--no-adapt] [--no-neighbours] [--no-instancing] [--grow-unique]\n"
+    "       [--instance-tables] [--naive-placement] [--fsync] [--full-precision] [--assimp-gltf]\n"
     "       [--wind [wind options]]\n"
     "  compose <root.usda> <tile.usda>...               root layer over a farm run's tiles\n"
     "  stats <project.sylva|species.json> [--json]       height, DBH, biomass, CO2\n"
@@ -105,7 +107,21 @@ int run(int argc, char** argv) {
     }
 }
 
+/// OpenMP's threads wait for work by spinning (libgomp's default) unless OMP_WAIT_POLICY says
+/// otherwise. On a shared machine (a farm node, a workstation that also runs the DCC) the
+/// spinning takes CPU from the work: the 10,000-tree USD export took 7.5 s of CPU spinning and
+/// 5.6 s passive, at load 12 (docs/perf/forest.md). libgomp reads the variable when it is
+/// loaded, before main(): so the CLI sets PASSIVE and starts itself again, once, unless the
+/// caller chose a policy.
+static void preferPassiveWaiting(char** argv) {
+    if (std::getenv("OMP_WAIT_POLICY") || std::getenv("SYLVA_NO_REEXEC")) return;
+    ::setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
+    ::setenv("SYLVA_NO_REEXEC", "1", 1); // never twice, whatever happens below
+    ::execv("/proc/self/exe", argv);     // returns only when it failed: go on spinning
+}
+
 int main(int argc, char** argv) {
+    preferPassiveWaiting(argv);
     const int status = run(argc, argv);
     if (status == sylva::cli::kInterrupted) {
         // An interrupted glTF/FBX export may leave Assimp's exporter running on a thread of its

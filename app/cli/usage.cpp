@@ -78,6 +78,8 @@ constexpr CommandHelp kHelp[] = {
      "  --no-neighbours       ignores neighbouring crowns when adapting\n"
      "  --no-instancing       grows every tree for its place (default: free domain trees\n"
      "                        show one of their species' variants; OBJ writes them merged)\n"
+     "  --grow-unique         grows each tree that touches an obstacle or a neighbour from\n"
+     "                        its own seed (default: adapts its variant's skeleton instead)\n"
      "  --instance-tables     also writes <name>.instances.json and .csv\n"
      "  --naive-placement     the O(n^2) placement oracle instead of the grid (same result)\n"
      "  --full-precision      micrometre OBJ with absolute indices, shortest round-trip USD\n"

@@ -243,6 +243,20 @@ void Document::renameSpecies(const std::string& from, const std::string& to) {
     mUndo.endMacro();
 }
 
+void Document::setSpeciesVariants(const std::string& species, int variants) {
+    const int i = speciesIndex(species);
+    if (i < 0) throw InvalidInput("unknown species '" + species + "'");
+    if (variants < 0 || variants > 256)
+        throw InvalidInput("variants of species '" + species + "' must be 0 to 256, not " +
+                           std::to_string(variants));
+    const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
+    if (old.variants == variants) return;
+    ProjectSpecies changed = old;
+    changed.variants = variants;
+    mUndo.push(cmd::changeSpecies(*this, i, old, changed, {}, true,
+                                  QCoreApplication::translate("Commands", "Change variants")));
+}
+
 void Document::removeSpecies(const std::string& name) {
     const int i = speciesIndex(name);
     if (i < 0) throw InvalidInput("unknown species '" + name + "'");

@@ -107,6 +107,10 @@ public:
     void renameSpecies(const std::string& from, const std::string& to);
     /// Removes a species no tree and no domain uses.
     void removeSpecies(const std::string& name);
+    /// Sets K, how many variants the species' instanced trees share (ProjectSpecies::variants;
+    /// 0: every tree of the species is grown for its place). One undo step; none when K is
+    /// unchanged. \throw InvalidInput for an unknown species or K outside 0..256.
+    void setSpeciesVariants(const std::string& species, int variants);
     /// The species' graph as JSON ({"nodes": [...], "output": ...}), read from its file when it
     /// is not inline. \throw InvalidInput / IoError.
     sylva::Value speciesGraph(const std::string& name) const;

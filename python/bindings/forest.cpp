@@ -274,6 +274,14 @@ void bindForest(py::module_& m) {
             },
             "index into Forest.variants for an instanced tree, None for a unique one")
         .def_property_readonly(
+            "adapted_from",
+            [](const ForestTreeRef& t) -> py::object {
+                if (t.tree().adaptedFrom < 0) return py::none();
+                return py::int_(t.tree().adaptedFrom);
+            },
+            "a unique tree adapted from a variant's skeleton: its index into Forest.variants; "
+            "None for an instanced tree and one grown from its own seed")
+        .def_property_readonly(
             "transform",
             [](const ForestTreeRef& t) {
                 const glm::mat4 mat = t.tree().instance.transform();

@@ -16,6 +16,16 @@ run_cli() {
 }
 
 case $case_name in
+omp_passive_waiting)
+  # OpenMP threads wait without spinning (GOMP_SPINCOUNT 0) unless the caller set a policy,
+  # which is kept (libgomp prints its settings at start; the last print is the run's).
+  unset OMP_WAIT_POLICY SYLVA_NO_REEXEC
+  OMP_DISPLAY_ENV=verbose run_cli 0 help
+  spin=$(grep "GOMP_SPINCOUNT = " err.txt | tail -1)
+  [[ $spin == *"'0'"* ]] || fail "not passive: $spin"
+  OMP_DISPLAY_ENV=verbose OMP_WAIT_POLICY=active run_cli 0 help
+  [[ $(grep -c "GOMP_SPINCOUNT = " err.txt) == 1 ]] || fail "started again with a policy set"
+  grep -q "GOMP_SPINCOUNT = '30000000000'" err.txt || fail "the caller's ACTIVE was not kept" ;;
 nodes_reference)
   # The node metadata is the one source: docs/species.md carries exactly what it prints.
   run_cli 0 nodes --markdown && cp out.txt "$WORK/nodes.md"

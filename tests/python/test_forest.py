@@ -167,6 +167,12 @@ def test_variants_instances_and_ids(data, tmp_path):
     for t in forest.trees:
         assert (t.variant is None) == (not t.instanced)
         assert t.name.endswith("_%d" % t.id)
+        # a unique domain tree is adapted from its variant's skeleton; hand-placed ones grow
+        if t.instanced or t.hand_placed:
+            assert t.adapted_from is None
+        else:
+            assert variants[t.adapted_from].species == t.species
+    assert any(t.adapted_from is not None for t in forest.trees)
     for t in instanced:
         v = variants[t.variant]
         assert v.species == t.species

@@ -196,6 +196,37 @@ private Q_SLOTS:
         QCOMPARE(readFile(mProject), document().serialized());
     }
 
+    /// Issue 30: moving the demo's hand-placed alder 30 m (typed into the Properties panel)
+    /// regrows only it and the trees whose crowns it left or now touches (12 of 43 before:
+    /// domain trees were scattered after it on one random stream); undo does the same back.
+    void movingATreeRegrowsOnlyItsNeighbours() {
+        settle();
+        const QByteArray original = document().serialized();
+        const std::size_t trees = mWindow->viewport()->trees().size();
+        clickTreeInOutliner(0);
+        QCOMPARE(document().selectedTrees(), QList<doc::TreeId>{1});
+        auto* x = mWindow->properties()->findChild<QDoubleSpinBox*>(QStringLiteral("spin0"));
+        QVERIFY(x);
+        const float from = document().tree(1).position.x;
+        x->setFocus();
+        x->selectAll();
+        QTest::keyClicks(x, QString::number(double(from) + 30.0));
+        QTest::keyClick(x, Qt::Key_Return);
+        QCOMPARE(document().tree(1).position.x, from + 30.0f);
+        settle();
+        const double regrown = mWindow->generator().result().stats.at("regrown");
+        qInfo("moving the alder 30 m regrew %g of %zu trees", regrown,
+              mWindow->viewport()->trees().size());
+        QVERIFY2(regrown >= 1.0 && regrown <= 4.0, qPrintable(QString::number(regrown)));
+        QVERIFY(mWindow->viewport()->trees().size() + 2 >= trees); // one may be displaced
+        document().undoStack()->undo();
+        settle();
+        QCOMPARE(document().serialized(), original);
+        const double back = mWindow->generator().result().stats.at("regrown");
+        QVERIFY2(back >= 1.0 && back <= 4.0, qPrintable(QString::number(back)));
+        QCOMPARE(mWindow->viewport()->trees().size(), trees);
+    }
+
     /// Delete and Ctrl+D on the selection, by keys, each one undo step.
     void deleteAndDuplicateByKeys() {
         clickTreeInOutliner(0);
@@ -349,6 +380,16 @@ private Q_SLOTS:
         console->submit(QStringLiteral("1 / 0"));
         QVERIFY(console->transcript().contains(QStringLiteral("Traceback")));
         QVERIFY(console->transcript().contains(QStringLiteral("ZeroDivisionError")));
+        // K of a species, one step, its range checked (the Properties panel's Variants).
+        console->submit(QStringLiteral("doc.set_variants('alder', 300)"));
+        QVERIFY2(console->transcript().contains(QStringLiteral("must be 0 to 256")),
+                 qPrintable(console->transcript()));
+        console->submit(QStringLiteral("doc.set_variants('alder', 2)"));
+        QCOMPARE(
+            document().project().species[std::size_t(document().speciesIndex("alder"))].variants,
+            2);
+        QCOMPARE(document().undoStack()->undoText(), QStringLiteral("Change variants"));
+        document().undoStack()->undo();
         console->submit(QStringLiteral("doc.set_tree(tid, scale=0)"));
         QVERIFY2(console->transcript().contains(QStringLiteral("ValueError: tree scale")),
                  qPrintable(console->transcript()));

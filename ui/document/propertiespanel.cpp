@@ -349,9 +349,24 @@ void PropertiesPanel::rebuild() {
         mInfo->setWordWrap(true);
         mInfo->setTextInteractionFlags(Qt::TextSelectableByMouse);
         mForm->addRow(mInfo);
-        mRefresh = [this, i] {
+        // K (issue 30): how many different trees of the species a forest repeats.
+        const int variants =
+            addSpins(tr("Variants:"), 1, 0, 256, 1, 0, {},
+                     tr("How many different trees of this species the forest is made of: a tree "
+                        "that touches no obstacle and no neighbour's crown shows one of them, "
+                        "turned and scaled; one that does is cut back from one of them. Fewer "
+                        "variants generate and export faster; 0 grows every tree for its "
+                        "place."));
+        mSpins[std::size_t(variants)]->setSpecialValueText(tr("0 (every tree unique)"));
+        connectAll(variants, 1, [this, i, variants] {
+            if (i >= int(mDocument.project().species.size())) return;
+            mDocument.setSpeciesVariants(mDocument.project().species[std::size_t(i)].name,
+                                         int(spin(variants)));
+        });
+        mRefresh = [this, i, variants] {
             if (i >= int(mDocument.project().species.size())) return;
             const doc::ProjectSpecies& s = mDocument.project().species[std::size_t(i)];
+            mSpins[std::size_t(variants)]->setValue(s.variants);
             int trees = 0;
             for (const doc::ProjectInstance& t : mDocument.project().instances)
                 trees += t.species == s.name ? 1 : 0;

@@ -131,6 +131,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         result.stats["colliding_trees"] = static_cast<double>(stats.collidingTrees);
         result.stats["instanced"] = static_cast<double>(stats.instanced);
         result.stats["unique"] = static_cast<double>(stats.unique);
+        result.stats["instanced_by_check"] = static_cast<double>(stats.instancedByCheck);
         result.stats["variants"] = static_cast<double>(stats.variants);
         result.stats["pruned_nodes"] = static_cast<double>(stats.prunedNodes);
         result.stats["co2_kg"] = stats.metrics.co2Kg;

@@ -226,6 +226,12 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def("remove_species",
              [](DocumentApi&, const std::string& name) { document().removeSpecies(name); })
         .def(
+            "set_variants",
+            [](DocumentApi&, const std::string& species, int k) {
+                document().setSpeciesVariants(species, k);
+            },
+            py::arg("species"), py::arg("k"))
+        .def(
             "get_param",
             [](DocumentApi&, const std::string& species, const std::string& path) {
                 return fromValue(document().param(species, path));

@@ -370,6 +370,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     std::vector<std::int32_t> firstVariant(scene.species.size(), -1);
     std::vector<std::uint32_t> variantCount(scene.species.size(), 0);
     std::vector<Extent> extents;
+    std::vector<forest::SkeletonMeasure> measures; ///< per variant: its instances' metrics
     if (options.instancing) {
         requireRange("variants per species", options.variantsPerSpecies, 1, 256);
         std::vector<bool> used(scene.species.size(), false);
@@ -462,8 +463,10 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
         }
         for (const std::exception_ptr& e : errors)
             if (e) std::rethrow_exception(e);
-        for (const ForestVariant& v : variants)
+        for (const ForestVariant& v : variants) {
             extents.push_back(variantExtent(*v.skeleton, meshSettings[v.species]));
+            measures.push_back(forest::prepareMeasure(*v.skeleton));
+        }
     }
     stats.variants = variants.size();
     if (options.onVariants) options.onVariants(variants);
@@ -512,38 +515,57 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 // itself too (the variants are grown in the scene's season).
                 const bool ownSeason = in.season >= 0 && static_cast<mesh::Season>(in.season) !=
                                                              meshSettings[in.species].season;
-                if (firstVariant[in.species] >= 0 && !in.handPlaced && near.empty() && !ownSeason) {
-                    const auto v = static_cast<std::size_t>(firstVariant[in.species]) +
-                                   mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species];
-                    if (!touchesObstacles(obstacles, in, extents[v])) {
-                        const ForestVariant& variant = variants[v];
-                        tree.variant = static_cast<std::int32_t>(v);
-                        tree.skeleton = variant.skeleton;
-                        tree.meshSettings = variant.meshSettings;
-                        tree.metrics =
-                            forest::measureTree(*variant.skeleton, plan.wood, in.scale * in.growth);
-                        if (!options.useLod || !options.buildMeshes || !options.meshInstances ||
-                            variant.levels.empty()) {
-                            tree.mesh = variant.mesh; // shared: drawn with the tree's transform
-                            continue;
-                        }
-                        // The variant's level for this tree's size on screen, made once per
-                        // variant (the full-detail variant drawn 1,000 times made an OBJ 13
-                        // times larger): the variant stands at scale 1, the tree at scale·growth.
-                        const double s = std::max(1e-3, static_cast<double>(in.scale) *
-                                                            static_cast<double>(in.growth));
-                        const mesh::DistanceLevel& level =
-                            variant.levels[mesh::levelFor(variant.levels, ctx.cameraDistance / s)];
-                        tree.mesh = level.mesh;
-                        tree.meshCameraDistance = level.distance * s;
-                        continue;
+                const bool hasVariants = firstVariant[in.species] >= 0 && !in.handPlaced;
+                const std::size_t v =
+                    hasVariants
+                        ? static_cast<std::size_t>(firstVariant[in.species]) +
+                              mixSeed(in.seed, salt::kVariantPick) % variantCount[in.species]
+                        : 0;
+                // Shows variant v: its skeleton and settings shared, its mesh the variant's or
+                // the variant's level for this tree's size on screen.
+                auto showVariant = [&]() {
+                    const ForestVariant& variant = variants[v];
+                    tree.variant = static_cast<std::int32_t>(v);
+                    tree.adaptedFrom = -1;
+                    tree.instanceChecked = false;
+                    tree.skeleton = variant.skeleton;
+                    tree.meshSettings = variant.meshSettings;
+                    tree.metrics =
+                        forest::measureTree(measures[v], plan.wood, in.scale * in.growth);
+                    if (!options.useLod || !options.buildMeshes || !options.meshInstances ||
+                        variant.levels.empty()) {
+                        tree.mesh = variant.mesh; // shared: drawn with the tree's transform
+                        return;
                     }
+                    // The variant's level for this tree's size on screen, made once per
+                    // variant (the full-detail variant drawn 1,000 times made an OBJ 13
+                    // times larger): the variant stands at scale 1, the tree at scale·growth.
+                    const double s = std::max(1e-3, static_cast<double>(in.scale) *
+                                                        static_cast<double>(in.growth));
+                    const mesh::DistanceLevel& level =
+                        variant.levels[mesh::levelFor(variant.levels, ctx.cameraDistance / s)];
+                    tree.mesh = level.mesh;
+                    tree.meshCameraDistance = level.distance * s;
+                };
+                const bool clearOfObstacles =
+                    hasVariants && !touchesObstacles(obstacles, in, extents[v]);
+                if (hasVariants && near.empty() && !ownSeason && clearOfObstacles) {
+                    showVariant();
+                    continue;
                 }
+
+                // Adapted from its variant (see ForestOptions::adaptVariants): the species'
+                // growth sees neither obstacles nor neighbours, so only adaptation and meshing
+                // are this tree's own.
+                const bool fromVariant = hasVariants && options.adaptVariants &&
+                                         !plan.hasAdaptNode && !plan.selfOrganizing;
+                if (fromVariant) tree.adaptedFrom = static_cast<std::int32_t>(v);
 
                 std::uint64_t cacheKey = 0;
                 if (options.cache && !plan.selfOrganizing) {
                     cacheKey = treeKey(speciesKeys[in.species], in, near, scene, options,
                                        ctx.cameraDistance);
+                    if (fromVariant) cacheKey = mixSeed(cacheKey, variants[v].seed);
                     if (std::optional<ForestTree> cached = options.cache->findTree(cacheKey)) {
                         tree = std::move(*cached);
                         tree.name = species.name + "_" + std::to_string(in.id);
@@ -556,6 +578,8 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 std::shared_ptr<const skel::Skeleton> skeleton;
                 if (plan.selfOrganizing) {
                     skeleton = standGrown[index];
+                } else if (fromVariant) {
+                    skeleton = variants[v].skeleton;
                 } else {
                     const graph::NodeOutput& grown =
                         evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode);
@@ -595,6 +619,18 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     tree.adapt = adapted.stats;
                     skeleton = std::make_shared<const skel::Skeleton>(std::move(adapted.skeleton));
                     cpuAdapt[thread] += msSince(t);
+                    // A variant whose branches reach no neighbour's crown core (the cylinder
+                    // test above is coarse: crowns are not solid cylinders) and that no
+                    // obstacle is near is not changed by adaptation: the tree touches nothing
+                    // and is an instance. Obstacles keep a tree unique: the variant's merged
+                    // leaf clusters are not checked against them.
+                    if (fromVariant && clearOfObstacles && !ownSeason &&
+                        tree.adapt.collidingBefore == 0 && tree.adapt.droppedLeaves == 0) {
+                        showVariant();
+                        tree.instanceChecked = true;
+                        if (cacheKey) options.cache->storeTree(cacheKey, tree);
+                        continue;
+                    }
                 }
 
                 tree.skeleton = skeleton;
@@ -644,6 +680,8 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             if (e) std::rethrow_exception(e); // the first failing tree in instance order
         for (const ForestTree& tree : batch) {
             ++(tree.variant >= 0 ? stats.instanced : stats.unique);
+            if (tree.adaptedFrom >= 0) ++stats.adaptedVariants;
+            if (tree.instanceChecked) ++stats.instancedByCheck;
             stats.vertices += tree.mesh->vertexCount();
             stats.triangles += tree.mesh->triangleCount();
             stats.collidingTrees += tree.adapt.collidingBefore > 0 ? 1 : 0;

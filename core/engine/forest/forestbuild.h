@@ -94,6 +94,17 @@ struct ForestOptions {
     /// one of its species' variants (hand-placed trees are always grown from their own seed);
     /// false: every tree is grown and adapted uniquely.
     bool instancing = true;
+    /// With instancing: a domain tree that does touch an obstacle or a neighbour's crown, of a
+    /// species whose growth does not see the tree's place (no adapt node in its graph, not
+    /// self-organizing: its skeleton is a function of the seed alone), starts from the skeleton
+    /// of the variant its seed picks and is then adapted (bent, pruned, leaf cards dropped) and
+    /// meshed for its place, so its geometry is still its own. Growing it from its own seed is
+    /// about two thirds of a unique tree's cost and gives another skeleton of the same species
+    /// that the adaptation then changes in the same way. A tree clear of the obstacles that the
+    /// coarse crown-cylinder test made unique but whose variant, placed, reaches no neighbour's
+    /// crown core (adaptation changes nothing) is an instance after all. false: every unique
+    /// tree is grown from its own seed (hand-placed trees always are).
+    bool adaptVariants = true;
     /// Called once, before the first tree batch, with every variant of the built tile's
     /// species (see ForestVariant); may be empty.
     VariantSink onVariants;
@@ -115,6 +126,12 @@ struct ForestTree {
     /// Otherwise the mesh is the variant's skeleton meshed at the tree's camera distance, as a
     /// unique tree's is.
     std::int32_t variant = -1;
+    /// A unique tree adapted from a variant's skeleton (ForestOptions::adaptVariants): that
+    /// variant's index; -1 otherwise (instanced, or grown from its own seed).
+    std::int32_t adaptedFrom = -1;
+    /// An instance that adaptation's test found touching no neighbour's crown core (the coarse
+    /// crown-cylinder test had not cleared it): work was done for it, as for a unique tree.
+    bool instanceChecked = false;
     std::shared_ptr<const mesh::Mesh> mesh;
     /// The skeleton the mesh was made from (adapted, in the tree's frame; shared, not copied).
     std::shared_ptr<const skel::Skeleton> skeleton;
@@ -139,6 +156,10 @@ struct ForestStats {
     std::size_t instanced =
         0;                  ///< trees of the tile drawn as a variant (instanced + unique == trees)
     std::size_t unique = 0; ///< trees of the tile grown and adapted for their place
+    /// Of the unique trees, those adapted from their variant's skeleton (adaptVariants).
+    std::size_t adaptedVariants = 0;
+    /// Of the instanced trees, those ForestTree::instanceChecked.
+    std::size_t instancedByCheck = 0;
     std::size_t variants = 0; ///< variants handed to onVariants (each counted once)
     std::vector<placement::Shortfall> shortfalls;
     forest::SceneMetrics metrics;

@@ -46,7 +46,9 @@ std::shared_ptr<const mesh::Mesh> barkAndLeaf(float size) {
     auto m = std::make_shared<mesh::Mesh>();
     m->positions = {{0, 0, 0}, {size, 0, 0}, {size, size, 0}, {0, size, 0},
                     {0, 2, 0}, {1, 2, 0},    {0, 3, 0}};
-    m->normals.assign(m->positions.size(), glm::vec3(0, 0, 1));
+    // Bark's normals differ at its corners (written per vertex), the leaf's is flat (per face).
+    m->normals = {{0, 0, 1}, {0.6f, 0, 0.8f}, {0.6f, 0.8f, 0}, {0, 0.6f, 0.8f},
+                  {0, 0, 1}, {0, 0, 1},       {0, 0, 1}};
     m->uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {0, 1}};
     m->indices = {0, 1, 2, 0, 2, 3, 4, 5, 6};
     m->submeshes = {{"bark", 0, 6, ""}, {"leaf", 6, 3, ""}};
@@ -154,10 +156,16 @@ TEST(UsdStageWriter, WritesInstancersUniqueMeshesAndMaterials) {
     EXPECT_NE(text.find("def Xform \"tree_11\""), std::string::npos);
     // Each material run its own Mesh with only its vertices: the leaf's 3, reindexed from 0.
     EXPECT_NE(text.find("int[] faceVertexIndices = [0,1,2]"), std::string::npos);
-    EXPECT_NE(text.find("int[] faceVertexIndices = [0,1,2,0,2,3]"), std::string::npos);
+    // The bark's triangle pair (0,1,2),(0,2,3) is written as one quad.
+    EXPECT_NE(text.find("int[] faceVertexCounts = [4]"), std::string::npos);
+    EXPECT_NE(text.find("int[] faceVertexIndices = [0,1,2,3]"), std::string::npos);
+    EXPECT_EQ(text.find("int[] faceVertexIndices = [0,1,2,0,2,3]"), std::string::npos);
+    EXPECT_NE(text.find("normal3f[] normals = [(0,0,1)] (\n"), std::string::npos);
     EXPECT_EQ(count(text, "def Mesh \"bark\""), 5u);
     EXPECT_EQ(count(text, "def Mesh \"leaf\""), 5u);
-    EXPECT_EQ(count(text, "interpolation = \"vertex\""), 2u * 10u);
+    // st per vertex everywhere, normals per vertex on bark and per face on the flat leaf.
+    EXPECT_EQ(count(text, "interpolation = \"vertex\""), 10u + 5u);
+    EXPECT_EQ(count(text, "interpolation = \"uniform\""), 5u);
     EXPECT_EQ(count(text, "def Material "), 2u);
     EXPECT_NE(text.find("rel material:binding = </Forest/Materials/leaf>"), std::string::npos);
     EXPECT_NE(text.find("float inputs:opacityThreshold = 0.5"), std::string::npos);
@@ -358,4 +366,52 @@ TEST(TreeExporter, WritesUsdWithSpeciesFromTheForestsNames) {
     EXPECT_NE(text.find("def Xform \"tree_3\""), std::string::npos);
     EXPECT_NE(text.find("custom string sylva:species = \"birch\""), std::string::npos);
     EXPECT_EQ(count(text, "def Xform \"variant_"), 3u);
+}
+
+// What keeps a forest's text small (issue 30): leaf cards are quads with one normal each and
+// corners from a few atlas cells (an indexed st primvar); a unique tree meshed for a far camera
+// is written with coarser numbers.
+TEST(UsdStageWriter, LeafCardsAreQuadsWithFlatNormalsAndIndexedUvsFarTreesCoarser) {
+    auto cards = std::make_shared<mesh::Mesh>();
+    const glm::vec2 corners[4] = {{0, 0}, {0.5f, 0}, {0.5f, 0.5f}, {0, 0.5f}};
+    for (int c = 0; c < 5; ++c) {
+        const auto base = static_cast<std::uint32_t>(cards->positions.size());
+        const float x = 1.23456f * static_cast<float>(c + 1);
+        for (int k = 0; k < 4; ++k) {
+            cards->positions.push_back({x + static_cast<float>(k % 2), 0.11111f * k, 0.5f});
+            cards->normals.push_back(glm::normalize(glm::vec3(0.1f * c, 0.3f, 1.0f)));
+            cards->uvs.push_back(corners[k]);
+        }
+        for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
+            cards->indices.push_back(base + i);
+    }
+    cards->submeshes = {{"leaf", 0, 30, ""}};
+    const fs::path dir = tempDir("cards");
+    auto write = [&](double distance) {
+        UsdStageWriter w(dir / "f.usda", options());
+        UsdTree t;
+        t.id = 5;
+        t.mesh = cards;
+        t.cameraDistance = distance;
+        w.add({t});
+        w.commit();
+        return readAll(dir / "f.usda");
+    };
+    const std::string near = write(0.0);
+    EXPECT_NE(near.find("int[] faceVertexCounts = [4,4,4,4,4]"), std::string::npos);
+    EXPECT_NE(
+        near.find("int[] faceVertexIndices = [0,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19]"),
+        std::string::npos);
+    EXPECT_NE(near.find("texCoord2f[] primvars:st = [(0,0),(0.5,0),(0.5,0.5),(0,0.5)] (\n"),
+              std::string::npos);
+    EXPECT_NE(near.find("int[] primvars:st:indices = [0,1,2,3,0,1,2,3,0,1,2,3,0,1,2,3,0,1,2,3]"),
+              std::string::npos);
+    EXPECT_NE(near.find("interpolation = \"uniform\""), std::string::npos);
+    EXPECT_NE(near.find("normal3f[] normals = [(0,0.287,0.958),(0.095,0.286,0.953),"),
+              std::string::npos);
+    EXPECT_NE(near.find("(1.2346,0,0.5)"), std::string::npos) << "0.1 mm near";
+    const std::string far = write(150.0);
+    EXPECT_NE(far.find("(1.235,0,0.5)"), std::string::npos) << "1 mm from 100 m";
+    EXPECT_NE(far.find("normal3f[] normals = [(0,0.29,0.96),(0.1,0.29,0.95),"), std::string::npos);
+    EXPECT_NE(write(1500.0).find("(1.23,0,0.5)"), std::string::npos) << "1 cm from 1 km";
 }

@@ -205,3 +205,77 @@ TEST(Instancing, InstancesDrawTheirVariantsLevelForTheirDistance) {
     // The forest spans 90-210 m from the camera: its instances do not all draw one level.
     EXPECT_GE(levelsDrawn.size(), 2u);
 }
+
+// A unique domain tree of a species whose growth sees nothing of its place (no adapt node)
+// starts from the skeleton of the variant its seed picks and is adapted for its place: the
+// trees at the wall are pruned copies of their variant, the others keep its nodes; a
+// hand-placed tree and every tree with adaptVariants off are grown from their own seed.
+TEST(Instancing, UniqueTreesAreAdaptedFromTheirVariantsSkeleton) {
+    forest::ForestScene s = sparseForest(30, true);
+    // A wall as tall as the crowns, so that the trees beside it are cut back.
+    std::vector<env::ObstacleMesh> meshes;
+    meshes.push_back(env::makeBoxMesh({-60.0f, 0.0f, -1.0f}, {60.0f, 30.0f, 1.0f}, "wall"));
+    s.obstacles = std::make_shared<const env::ObstacleScene>(std::move(meshes));
+    placement::Instance hand;
+    hand.species = 0;
+    hand.id = 7;
+    hand.position = {20.0f, 0.0f, 0.5f}; // at the wall: unique
+    hand.seed = mixSeed(s.seed, hand.id);
+    hand.handPlaced = true;
+    s.handPlaced.push_back(hand);
+    forest::ForestOptions options;
+    options.useLod = false;
+    const Built b = build(s, options);
+    ASSERT_GT(b.stats.unique, 2u);
+    std::size_t adapted = 0, changed = 0, handSeen = 0, checked = 0;
+    for (const forest::ForestTree& t : b.trees) {
+        if (t.variant >= 0) {
+            EXPECT_EQ(t.adaptedFrom, -1) << t.name;
+            checked += t.instanceChecked ? 1 : 0;
+            if (t.instanceChecked) {
+                EXPECT_EQ(t.adapt.collidingBefore, 0u) << t.name;
+            }
+            continue;
+        }
+        if (t.instance.handPlaced) {
+            ++handSeen;
+            EXPECT_EQ(t.adaptedFrom, -1) << "an artist's tree grows from its own seed";
+            continue;
+        }
+        ASSERT_GE(t.adaptedFrom, 0) << t.name;
+        ++adapted;
+        const auto pick =
+            static_cast<std::int32_t>(mixSeed(t.instance.seed, salt::kVariantPick) % 3);
+        EXPECT_EQ(t.adaptedFrom, pick) << t.name;
+        const skel::Skeleton& v = *b.variants.at(static_cast<std::size_t>(pick)).skeleton;
+        // Adaptation bends (positions), prunes (kHidden flags) and drops leaf cards.
+        const bool same = t.skeleton->size() == v.size() && t.skeleton->position == v.position &&
+                          t.skeleton->flags == v.flags &&
+                          t.skeleton->leaves.size() == v.leaves.size();
+        EXPECT_EQ(same, t.adapt.collidingBefore == 0 && t.adapt.droppedLeaves == 0) << t.name;
+        changed += same ? 0 : 1;
+        // Far from the wall, only a neighbour makes a tree unique, and only where its variant
+        // reaches into that neighbour's crown core: otherwise it is an instance.
+        if (std::abs(t.instance.position.z) > 20.0f) {
+            EXPECT_GT(t.adapt.collidingBefore, 0u) << t.name;
+        }
+        EXPECT_NE(t.mesh.get(), b.variants[static_cast<std::size_t>(pick)].mesh.get())
+            << "its own mesh";
+    }
+    EXPECT_EQ(handSeen, 1u);
+    EXPECT_EQ(adapted, b.stats.adaptedVariants);
+    EXPECT_EQ(checked, b.stats.instancedByCheck);
+    EXPECT_EQ(adapted + handSeen, b.stats.unique);
+    EXPECT_GT(changed, 0u) << "the trees at the wall are cut back";
+
+    options.adaptVariants = false;
+    const Built grown = build(s, options);
+    EXPECT_EQ(grown.stats.adaptedVariants, 0u);
+    EXPECT_EQ(grown.stats.unique, b.stats.unique) << "which trees are unique does not change";
+    for (const forest::ForestTree& t : grown.trees) {
+        EXPECT_EQ(t.adaptedFrom, -1);
+        if (t.variant >= 0 || t.instance.handPlaced) continue;
+        for (const forest::ForestVariant& v : grown.variants)
+            EXPECT_NE(t.skeleton->size(), v.skeleton->size()) << t.name << " grown from its seed";
+    }
+}

@@ -118,3 +118,27 @@ TEST(Metrics, BadInputsGetTheirMessages) {
     EXPECT_THROW(measureTree(s, {}, 0.0), InvalidInput);
     EXPECT_EQ(measureTree(skel::Skeleton{}).heightM, 0.0);
 }
+
+// A forest measures each instance of a variant at its own scale from one prepared measure
+// (issue 30): the same numbers, bit for bit, as measuring the skeleton each time.
+TEST(Metrics, OnePreparedMeasureServesEveryScale) {
+    skel::Skeleton s = stem(10.0, 5, 0.3f, 0.05f);
+    const std::int32_t b = s.addNode(glm::vec3(2, 4, 1), 2, 0.08f, 1, glm::quat(1, 0, 0, 0));
+    s.addNode(glm::vec3(-2, 6, 0), 3, 0.06f, 1, glm::quat(1, 0, 0, 0));
+    s.flags[static_cast<std::size_t>(b)] |= skel::kHidden;
+    const SkeletonMeasure measure = prepareMeasure(s);
+    EXPECT_EQ(measure.segments.size(), 6u) << "the hidden segment is left out";
+    const WoodProperties oak{700.0, 0.5};
+    for (double scale : {0.1, 0.37, 1.0, 1.05, 2.0}) {
+        const TreeMetrics a = measureTree(measure, oak, scale), b2 = measureTree(s, oak, scale);
+        EXPECT_EQ(a.heightM, b2.heightM) << scale;
+        EXPECT_EQ(a.dbhM, b2.dbhM) << scale;
+        EXPECT_EQ(a.crownWidthM, b2.crownWidthM) << scale;
+        EXPECT_EQ(a.woodVolumeM3, b2.woodVolumeM3) << scale;
+        EXPECT_EQ(a.co2Kg, b2.co2Kg) << scale;
+        EXPECT_EQ(a.chaveAgbKg, b2.chaveAgbKg) << scale;
+    }
+    EXPECT_EQ(measureTree(measure, oak, 0.1).dbhM, 0.0) << "1 m tall: no breast height";
+    EXPECT_GT(measureTree(measure, oak, 1.0).dbhM, 0.0);
+    EXPECT_THROW(measureTree(measure, oak, 0.0), InvalidInput);
+}

@@ -3,8 +3,10 @@
 #include "engine/export/usd/usdformat.h"
 
 #include <charconv>
+#include <cstring>
 #include <limits>
 #include <set>
+#include <unordered_map>
 
 namespace sylva::exporter::usd {
 
@@ -25,9 +27,14 @@ std::vector<mesh::Submesh> materialRuns(const mesh::Mesh& m) {
 }
 
 std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool compact,
-                            const MaterialPathOf& materialPath) {
+                            const MaterialPathOf& materialPath, double cameraDistance) {
     std::size_t written = 0;
-    const int pd = compact ? 4 : 0, nd = compact ? 3 : 0, ud = compact ? 4 : 0;
+    // A 4K frame's pixel is ~2.3e-4 of the distance wide (50° field of view): 0.1 mm is a
+    // twentieth of it at 20 m, 1 mm at 200 m, 1 cm at 2 km. A tree meshed for a far camera has
+    // lost finer detail than that to its level of detail already.
+    const int far = cameraDistance >= 1000.0 ? 2 : cameraDistance >= 100.0 ? 1 : 0;
+    const int pd = compact ? 4 - far : 0, nd = compact ? (far ? 2 : 3) : 0,
+              ud = compact ? (far ? 3 : 4) : 0;
     auto number = [&](float v, int decimals) {
         if (decimals > 0)
             appendFixed(out, v, decimals);
@@ -49,6 +56,14 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
     // About what the text takes (a vertex ~60 bytes, an index ~7): one allocation, no regrowth.
     out.reserve(out.size() + m.positions.size() * 64 + m.indices.size() * 8 + 4096);
     std::vector<std::uint32_t> used;
+    struct Face {
+        std::uint32_t first; ///< its first triangle's first index
+        std::uint32_t count; ///< 3, or 4: a quad whose fourth corner is `fourth`
+        std::uint32_t fourth;
+    };
+    std::vector<Face> faces;
+    std::unordered_map<std::uint64_t, std::uint32_t> stIndex; ///< a uv's bits → its place
+    std::vector<glm::vec2> stValues;
     std::set<std::string> names;
     for (const mesh::Submesh& run : materialRuns(m)) {
         if (run.indexCount < 3) continue;
@@ -93,32 +108,79 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
         out += ", ";
         vec3(hi, pd);
         out += "]\n";
+        // Faces: a triangle pair (a,b,c),(a,c,d), as tubes and leaf cards are made, is written
+        // as the quad (a,b,c,d): 4 indices and one count instead of 6 and two (a third of the
+        // index text). Renderers triangulate a quad as a fan from its first corner, which gives
+        // back the same two triangles.
+        faces.clear();
+        const std::uint32_t end3 = run.firstIndex + run.indexCount / 3 * 3;
+        for (std::uint32_t i = run.firstIndex; i < end3; i += 3) {
+            const std::uint32_t* t = &m.indices[i];
+            if (i + 6 <= end3) {
+                const std::uint32_t* u = t + 3;
+                if (u[0] == t[0] && u[1] == t[2] && u[2] != t[0] && u[2] != t[1] && u[2] != t[2]) {
+                    faces.push_back({i, 4, u[2]});
+                    i += 3;
+                    continue;
+                }
+            }
+            faces.push_back({i, 3, 0});
+        }
         indent(out, a);
         out += "int[] faceVertexCounts = [";
-        const std::uint32_t faces = run.indexCount / 3;
-        for (std::uint32_t f = 0; f < faces; ++f)
-            out += f ? ",3" : "3";
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            if (f) out += ',';
+            out += faces[f].count == 4 ? '4' : '3';
+        }
         out += "]\n";
         indent(out, a);
         out += "int[] faceVertexIndices = [";
         char buf[16];
-        for (std::uint32_t i = run.firstIndex; i < run.firstIndex + faces * 3; ++i) {
-            if (i != run.firstIndex) out += ',';
-            out.append(buf, std::to_chars(buf, buf + sizeof buf, remap[m.indices[i]]).ptr);
+        auto index = [&](std::uint32_t v) {
+            out.append(buf, std::to_chars(buf, buf + sizeof buf, remap[v]).ptr);
+        };
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            if (f) out += ',';
+            const std::uint32_t* t = &m.indices[faces[f].first];
+            index(t[0]);
+            out += ',';
+            index(t[1]);
+            out += ',';
+            index(t[2]);
+            if (faces[f].count == 4) {
+                out += ',';
+                index(faces[f].fourth);
+            }
         }
         out += "]\n";
         indent(out, a);
         out += "rel material:binding = <" + material + ">\n";
         if (m.normals.size() == m.positions.size()) {
+            // Flat faces (leaf cards: one normal at all four corners) get one normal per face,
+            // `uniform`: a quarter of the text.
+            bool flat = true;
+            for (std::size_t f = 0; f < faces.size() && flat; ++f) {
+                const std::uint32_t* t = &m.indices[faces[f].first];
+                const glm::vec3& n0 = m.normals[t[0]];
+                flat = m.normals[t[1]] == n0 && m.normals[t[2]] == n0 &&
+                       (faces[f].count == 3 || m.normals[faces[f].fourth] == n0);
+            }
             indent(out, a);
             out += "normal3f[] normals = [";
-            for (std::size_t k = 0; k < used.size(); ++k) {
-                if (k) out += ',';
-                vec3(m.normals[used[k]], nd);
+            if (flat) {
+                for (std::size_t f = 0; f < faces.size(); ++f) {
+                    if (f) out += ',';
+                    vec3(m.normals[m.indices[faces[f].first]], nd);
+                }
+            } else {
+                for (std::size_t k = 0; k < used.size(); ++k) {
+                    if (k) out += ',';
+                    vec3(m.normals[used[k]], nd);
+                }
             }
             out += "] (\n";
             indent(out, a + 4);
-            out += "interpolation = \"vertex\"\n";
+            out += flat ? "interpolation = \"uniform\"\n" : "interpolation = \"vertex\"\n";
             indent(out, a);
             out += ")\n";
         }
@@ -130,21 +192,55 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
         }
         out += "]\n";
         if (m.uvs.size() == m.positions.size()) {
+            // Leaf cards take their corners from a few cells of the leaf atlas: an indexed
+            // primvar (the distinct values once, an index per vertex) is ~1/6 of the text.
+            stIndex.clear();
+            stValues.clear();
+            for (std::size_t k = 0; k < used.size() && stValues.size() * 4 <= used.size(); ++k) {
+                const glm::vec2 uv = m.uvs[used[k]];
+                std::uint64_t key = 0;
+                std::memcpy(&key, &uv, sizeof uv);
+                if (stIndex.emplace(key, static_cast<std::uint32_t>(stValues.size())).second)
+                    stValues.push_back(uv);
+            }
+            const bool indexed = stValues.size() * 4 <= used.size();
+            auto uvText = [&](const glm::vec2& uv) {
+                out += '(';
+                number(uv.x, ud);
+                out += ',';
+                number(uv.y, ud);
+                out += ')';
+            };
             indent(out, a);
             out += "texCoord2f[] primvars:st = [";
-            for (std::size_t k = 0; k < used.size(); ++k) {
-                if (k) out += ',';
-                out += '(';
-                number(m.uvs[used[k]].x, ud);
-                out += ',';
-                number(m.uvs[used[k]].y, ud);
-                out += ')';
+            if (indexed) {
+                for (std::size_t k = 0; k < stValues.size(); ++k) {
+                    if (k) out += ',';
+                    uvText(stValues[k]);
+                }
+            } else {
+                for (std::size_t k = 0; k < used.size(); ++k) {
+                    if (k) out += ',';
+                    uvText(m.uvs[used[k]]);
+                }
             }
             out += "] (\n";
             indent(out, a + 4);
             out += "interpolation = \"vertex\"\n";
             indent(out, a);
             out += ")\n";
+            if (indexed) {
+                indent(out, a);
+                out += "int[] primvars:st:indices = [";
+                for (std::size_t k = 0; k < used.size(); ++k) {
+                    if (k) out += ',';
+                    const glm::vec2 uv = m.uvs[used[k]];
+                    std::uint64_t key = 0;
+                    std::memcpy(&key, &uv, sizeof uv);
+                    out.append(buf, std::to_chars(buf, buf + sizeof buf, stIndex.at(key)).ptr);
+                }
+                out += "]\n";
+            }
         }
         indent(out, a);
         out += "uniform token subdivisionScheme = \"none\"\n";

@@ -18,11 +18,13 @@ using MaterialPathOf = std::function<std::string(const mesh::Submesh&)>;
 
 /// Appends one `def Mesh` per material run of \p mesh (with faces), \p indent spaces deep, each
 /// holding only the vertices its run uses (docs/usd.md, "Meshes"): the one mesh writer of the
-/// forest stage and the LOD chain's stage. \p compact: positions 0.1 mm, normals 3 and uvs 4
-/// decimals; else the shortest text that reads back as the same float. Returns how many Mesh
-/// prims it wrote. Thread-safe when \p materialPath is.
+/// forest stage and the LOD chain's stage. Triangle pairs are written as quads, flat faces'
+/// normals `uniform`, atlas uvs indexed. \p compact: positions 0.1 mm, normals 3 and uvs 4
+/// decimals, one decimal less from \p cameraDistance 100 m (positions two less from 1 km: a
+/// twentieth of a 4K pixel there); else the shortest text that reads back as the same float.
+/// Returns how many Mesh prims it wrote. Thread-safe when \p materialPath is.
 std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& mesh, int indent, bool compact,
-                            const MaterialPathOf& materialPath);
+                            const MaterialPathOf& materialPath, double cameraDistance = 0.0);
 
 /// Appends `def Scope "Materials"` (4 spaces deep: a child of the layer's root prim, which is at
 /// \p scopePath's parent) with one UsdPreviewSurface material per (prim name, material), in the

@@ -187,10 +187,14 @@ const std::string& UsdStageWriter::materialPrim(const mesh::Submesh& submesh) {
     return mMaterialPrims.emplace(name, prim).first->second;
 }
 
-std::size_t UsdStageWriter::appendMesh(std::string& out, const mesh::Mesh& m, int at) const {
-    return appendMeshPrims(out, m, at, mOptions.compact, [&](const mesh::Submesh& run) {
-        return forestPath() + "/Materials/" + mMaterialPrims.at(materialName(run));
-    });
+std::size_t UsdStageWriter::appendMesh(std::string& out, const mesh::Mesh& m, int at,
+                                       double cameraDistance) const {
+    return appendMeshPrims(
+        out, m, at, mOptions.compact,
+        [&](const mesh::Submesh& run) {
+            return forestPath() + "/Materials/" + mMaterialPrims.at(materialName(run));
+        },
+        cameraDistance);
 }
 
 void UsdStageWriter::add(const std::vector<UsdTree>& trees, Progress& progress) {
@@ -245,7 +249,7 @@ void UsdStageWriter::add(const std::vector<UsdTree>& trees, Progress& progress) 
         }
         out += ")\n            uniform token[] xformOpOrder = [\"xformOp:translate\", "
                "\"xformOp:rotateY\", \"xformOp:scale\"]\n\n";
-        meshes[static_cast<std::size_t>(k)] = appendMesh(out, *t.mesh, 12);
+        meshes[static_cast<std::size_t>(k)] = appendMesh(out, *t.mesh, 12, t.cameraDistance);
         out += "        }\n";
     }
     progress.checkCancelled();

@@ -34,6 +34,10 @@ struct UsdTree {
     float rotationY = 0.0f;                 ///< radians about +Y
     float scale = 1.0f;                     ///< uniform (size variation times growth stage)
     std::shared_ptr<const mesh::Mesh> mesh; ///< unique trees only
+    /// Unique trees: the distance (m) from the camera its mesh's level of detail was made for;
+    /// compact layers write a far tree's numbers coarser (see UsdLayerOptions::compact). 0: not
+    /// made for a camera, the full compact precision.
+    double cameraDistance = 0.0;
 };
 
 struct UsdLayerOptions {
@@ -44,7 +48,9 @@ struct UsdLayerOptions {
     /// (the CLI: a hash of the project file and the options that change trees).
     std::string sceneKey;
     /// Mesh numbers: true = positions 0.1 mm, normals 3 and uvs 4 decimals (as the forest's
-    /// compact OBJ); false = the shortest text that reads back as the same float.
+    /// compact OBJ), and for a unique tree meshed for 100 m or more from the camera 1 mm, 2 and
+    /// 3 (from 1 km: positions 1 cm), still under a twentieth of a 4K pixel there; false = the
+    /// shortest text that reads back as the same float.
     bool compact = true;
     Durability durability = Durability::Atomic;
     /// Sylva's shipped textures, for materials without a texture of their own.
@@ -95,7 +101,8 @@ private:
     };
     const std::string& materialPrim(const mesh::Submesh& submesh);
     /// Returns how many Mesh prims it wrote (one per material run with faces).
-    std::size_t appendMesh(std::string& out, const mesh::Mesh& mesh, int indent) const;
+    std::size_t appendMesh(std::string& out, const mesh::Mesh& mesh, int indent,
+                           double cameraDistance = 0.0) const;
     void writeInstancers(Progress& progress);
     void writeMaterials();
     void flush(bool force = false);
