@@ -260,9 +260,6 @@ int runForest(const std::vector<std::string>& argv) {
         for (const placement::Shortfall& s : stats.shortfalls)
             missing += s.requested - s.placed;
         appendJsonNumber(json, "shortfall", static_cast<double>(missing));
-        appendJsonNumber(json, "instanced", static_cast<double>(stats.instanced));
-        appendJsonNumber(json, "unique", static_cast<double>(stats.unique));
-        appendJsonNumber(json, "variants", static_cast<double>(stats.variants));
         if (usdWriter) {
             const exporter::usd::UsdLayerStats& u = usdWriter->stats();
             json += "\"usd\":{";

@@ -300,12 +300,14 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
         std::size_t level;
         double mean, worst; ///< measured (seed 1), held 0.01 below
     };
-    // Levels under the bar, measured: the pine's and the rhododendron's 4 % levels, 75 and 46
-    // px in area at their switch distances.
-    const Known below[] = {{"scots-pine", 3, 0.876, 0.800}, {"rhododendron", 3, 0.890, 0.827}};
+    // The level under the bar, measured: the rhododendron's 4 % level, 46 px in area at its
+    // switch distance. (The pine's, 0.876 before its needle clusters, is at 0.910 now.)
+    const Known below[] = {{"rhododendron", 3, 0.890, 0.827}};
     // Levels the camera LOD makes coarser than 80 % of their budget (its steps jump past it).
-    const std::map<std::string, std::set<std::size_t>> coarser = {{"silver-birch", {1}},
-                                                                  {"weeping-willow", {1}}};
+    // (Measured with the needle-cluster and fuller-crown presets: willow LOD1 21 %, pine LOD1
+    // 27.9 % and LOD2 6.4 %, cypress LOD1 25.7 %.)
+    const std::map<std::string, std::set<std::size_t>> coarser = {
+        {"weeping-willow", {1}}, {"scots-pine", {1, 2}}, {"italian-cypress", {1}}};
     // The date palm has 456 triangles: 12 % and 4 % of them are not reached before it is 4 px.
     const std::map<std::string, std::set<std::size_t>> unmet = {{"date-palm", {2, 3}}};
     const char* only = std::getenv("SYLVA_LOD_SPECIES");
