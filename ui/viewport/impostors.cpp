@@ -1,6 +1,11 @@
 #include "ui/viewport/impostors.h"
 
 #include <QOpenGLShaderProgram>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include <cstddef>
 #include <iterator>
@@ -38,6 +43,10 @@ bool Impostors::initialize(QOpenGLFunctions_3_3_Core* gl, QString& error) {
 }
 
 void Impostors::release() {
+    // The worker's atlases are dropped; its thread finishes the one it bakes.
+    for (auto& [key, job] : mBaking)
+        job.future.waitForFinished();
+    mBaking.clear();
     if (!mGl) return;
     for (auto& [key, card] : mCards) {
         const GLuint textures[3] = {card.color, card.normal, card.depth};
@@ -73,26 +82,63 @@ GLuint Impostors::upload(const Image& image) {
     return t;
 }
 
-void Impostors::bake(Key key, std::shared_ptr<const void> owner, const mesh::Mesh& source,
-                     const mesh::ImpostorMaterials& materials) {
-    if (!mGl || !mProgram || !key || source.triangleCount() == 0 || has(key)) return;
-    mesh::ImpostorSettings settings;
-    settings.grid = kGrid;
-    settings.cellPixels = kCell;
-    settings.supersample = 2;
-    const mesh::Impostor imp = mesh::bakeImpostor(source, materials, settings);
-    Card card;
-    card.owner = std::move(owner);
-    card.centre = imp.centre;
-    card.radius = imp.radius;
-    card.color = upload(imp.color);
-    card.normal = upload(imp.normal);
-    card.depth = upload(imp.depth);
-    mGl->glBindTexture(GL_TEXTURE_2D, 0);
-    mCards.emplace(key, std::move(card));
+void Impostors::request(Key key, std::shared_ptr<const void> owner,
+                        std::shared_ptr<const mesh::Mesh> source,
+                        mesh::ImpostorMaterials materials) {
+    if (!mGl || !mProgram || !key || !source || source->triangleCount() == 0 || has(key) ||
+        isBaking(key))
+        return;
+    mPool.setMaxThreadCount(1);
+    Baking job;
+    job.owner = std::move(owner);
+    job.future =
+        QtConcurrent::run(&mPool, [source = std::move(source), materials = std::move(materials)]() {
+            // Behind the GUI and the generation: until it is baked the tree draws its coarsest
+            // mesh, which only costs frames.
+            const auto tid = static_cast<id_t>(syscall(SYS_gettid));
+            if (getpriority(PRIO_PROCESS, tid) < 10) setpriority(PRIO_PROCESS, tid, 10);
+            mesh::ImpostorSettings settings;
+            settings.grid = kGrid;
+            settings.cellPixels = kCell;
+            settings.supersample = 2;
+            try {
+                return mesh::bakeImpostor(*source, materials, settings);
+            } catch (...) {
+                return mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
+            }
+        });
+    mBaking.emplace(key, std::move(job));
+}
+
+std::size_t Impostors::collect() {
+    std::size_t n = 0;
+    for (auto it = mBaking.begin(); it != mBaking.end();) {
+        if (!it->second.future.isFinished()) {
+            ++it;
+            continue;
+        }
+        const mesh::Impostor imp = it->second.future.result();
+        if (mGl && !imp.color.pixels.empty()) {
+            Card card;
+            card.owner = std::move(it->second.owner);
+            card.centre = imp.centre;
+            card.radius = imp.radius;
+            card.color = upload(imp.color);
+            card.normal = upload(imp.normal);
+            card.depth = upload(imp.depth);
+            mGl->glBindTexture(GL_TEXTURE_2D, 0);
+            mCards.emplace(it->first, std::move(card));
+            ++n;
+        }
+        it = mBaking.erase(it);
+    }
+    return n;
 }
 
 void Impostors::retain(const std::function<bool(Key)>& keep) {
+    // A job for a key no longer kept finishes on the worker (it holds its own mesh) unheard.
+    for (auto it = mBaking.begin(); it != mBaking.end();)
+        it = keep(it->first) ? std::next(it) : mBaking.erase(it);
     for (auto it = mCards.begin(); it != mCards.end();) {
         if (keep(it->first)) {
             ++it;

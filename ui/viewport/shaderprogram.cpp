@@ -31,7 +31,7 @@ QByteArray shaderSource(const QString& name) {
 std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
                                                          const QString& fragment, QString& error,
                                                          const QByteArray& defines) {
-    const QByteArray vertexSource = shaderSource(vertex);
+    QByteArray vertexSource = shaderSource(vertex);
     QByteArray fragmentSource = shaderSource(fragment);
     if (vertexSource.isEmpty() || fragmentSource.isEmpty()) {
         error =
@@ -41,6 +41,7 @@ std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
     if (!defines.isEmpty()) {
         const qsizetype afterVersion = fragmentSource.indexOf('\n') + 1;
         fragmentSource.insert(afterVersion, defines);
+        vertexSource.insert(vertexSource.indexOf('\n') + 1, defines);
     }
     auto program = std::make_unique<QOpenGLShaderProgram>();
     if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertexSource) ||

@@ -19,7 +19,7 @@ QByteArray shaderSource(const QString& name);
 
 /// A linked program of the shader files \p vertex and \p fragment (names in
 /// ui/viewport/shaders/). \p defines (lines such as "#define CUTOUT 1\n") go right after the
-/// fragment shader's #version line. Null, with \p error set, when a file is missing or GLSL
+/// #version line of both shaders. Null, with \p error set, when a file is missing or GLSL
 /// does not compile or link. Needs a current OpenGL context.
 std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
                                                          const QString& fragment, QString& error,

@@ -172,6 +172,11 @@ public:
     }
     /// Instanced draw calls the last frame's impostors took (one per atlas in view).
     std::size_t impostorDrawCalls() const { return mImpostorDrawCalls; }
+    /// Instanced draw calls the last frame's variant instances took (one per variant level in
+    /// view and material), and the tree meshes on the GPU (one buffer set each: a variant's
+    /// levels once, whatever its instances).
+    std::size_t instancedDrawCalls() const { return mInstancedDrawCalls; }
+    std::size_t gpuTreeMeshes() const { return mBuffers.treeMeshCount(); }
     /// The distance level of detail (ui/viewport/viewlod.h).
     ViewLod& lod() { return *mLod; }
     /// Trees whose coarser levels or impostor are still to be made (0: the view is final).
@@ -265,7 +270,9 @@ private:
     void releaseGl();
     void applyFrame();
     void uploadMesh();
-    void drawRanges(const std::vector<DrawRange>& ranges);
+    /// \p instances > 0: each range drawn once per instance of the instance buffer's bound run
+    /// (drawInstanced()), with the instanced mesh program.
+    void drawRanges(const std::vector<DrawRange>& ranges, GLsizei instances = 0);
     float aspect() const;
 
     std::size_t vertexCount() const;
@@ -297,7 +304,10 @@ private:
     QString mGlError;
     /// The mesh shader's variants (a bit set): compiled apart so that bark does not pay for
     /// the leaves' texture and cut-out, and keeps the early depth test.
-    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshVariants = 4;
+    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshInstanced = 4, kMeshVariants = 8;
+    /// shaders/mesh.vert's per-instance transform (INSTANCED), four locations from here.
+    static constexpr GLuint kInstanceAttribute = 12;
+    GLuint mInstanceVbo = 0;
     /// What every mesh variant shares in a draw; a variant is brought up to date when used.
     struct MeshUniforms {
         glm::mat4 viewProj{1.0f};
@@ -331,6 +341,9 @@ private:
     /// The atlas a tree draws far away: its skeleton's (shared by a variant's instances).
     static Impostors::Key impostorKey(const ViewTree& t);
     void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight);
+    /// Each variant level's instances (nearest level first) with instanced draw calls.
+    void
+    drawInstanced(const std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>>& groups);
     void updateBounds();
     std::vector<ViewTree> mTrees;
     std::vector<ViewTree> mPreview;
@@ -357,6 +370,8 @@ private:
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
     std::size_t mImpostorDrawCalls = 0;
+    std::size_t mInstancedDrawCalls = 0;
+    QTimer* mBakeTimer = nullptr;
     std::size_t mDrawnMotion = 0;
     ViewLod* mLod = nullptr; ///< a child
     Impostors mImpostors;
