@@ -60,11 +60,16 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
                 d.level = ViewLod::levelFor(
                     ViewLod::equivalentHeights(double(d.distance), double(b.hi.y - b.lo.y),
                                                double(view.fovY), view.viewportHeightPx));
-            if (i < instances.size() && instances[i].variant && d.level != ViewLod::kImpostorLevel)
-                d.variantLevel = int(variantLevelFor(*instances[i].variant, double(d.distance),
-                                                     double(instances[i].scale), double(view.fovY),
-                                                     view.viewportHeightPx,
-                                                     view.levels ? view.variantFactor : 0.0));
+            if (i < instances.size() && instances[i].variant &&
+                d.level != ViewLod::kImpostorLevel) {
+                const InstanceOf& of = instances[i];
+                const auto levelAt = [&](double factor) {
+                    return int(variantLevelFor(*of.variant, double(d.distance), double(of.scale),
+                                               double(view.fovY), view.viewportHeightPx, factor));
+                };
+                d.variantLevel = levelAt(view.levels ? view.variantFactor : 0.0);
+                d.motion = view.levels && view.variantFactor > 1.0 && d.variantLevel > levelAt(1.0);
+            }
         }
         order.push_back(d);
     }

@@ -20,6 +20,8 @@ struct TreeDraw {
     /// An instance of a variant below the impostor level: the index of the variant's level it
     /// draws (ViewVariant::levels); -1 otherwise.
     int variantLevel = -1;
+    /// The variant level is coarser than at rest because the view moves (variantFactor).
+    bool motion = false;
 };
 
 /// A tree that is an instance of a variant (TreeLodSource::instance): the variant and the

@@ -7,6 +7,8 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
 
@@ -101,13 +103,43 @@ void Impostors::request(Key key, std::shared_ptr<const void> owner,
             settings.grid = kGrid;
             settings.cellPixels = kCell;
             settings.supersample = 2;
+            Baked baked;
             try {
-                return mesh::bakeImpostor(*source, materials, settings);
+                baked.impostor = mesh::bakeImpostor(*source, materials, settings);
+                baked.extent = cardExtent(baked.impostor);
             } catch (...) {
-                return mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
+                baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
             }
+            return baked;
         });
     mBaking.emplace(key, std::move(job));
+}
+
+glm::vec3 Impostors::cardExtent(const mesh::Impostor& imp) {
+    const Image& color = imp.color;
+    const int grid = imp.settings.grid, cell = imp.settings.cellPixels;
+    if (color.channels != 4 || grid <= 0 || cell <= 0 || color.width != grid * cell ||
+        color.height != grid * cell)
+        return {1.0f, -1.0f, 1.0f};
+    float x = 0.0f, lo = 1.0f, hi = -1.0f;
+    for (int py = 0; py < color.height; ++py)
+        for (int px = 0; px < color.width; ++px) {
+            if (color.pixels[(std::size_t(py) * std::size_t(color.width) + std::size_t(px)) * 4 +
+                             3] == 0)
+                continue;
+            // The texel's place on its view's card: x right, y up, -1..1.
+            const float cx = 2.0f * (float(px % cell) + 0.5f) / float(cell) - 1.0f;
+            const float cy = 1.0f - 2.0f * (float(py % cell) + 0.5f) / float(cell);
+            x = std::max(x, std::abs(cx));
+            lo = std::min(lo, cy);
+            hi = std::max(hi, cy);
+        }
+    if (hi < lo) return {1.0f, -1.0f, 1.0f};
+    // The blend of three views reprojected through their depth reaches a little past each
+    // view's own silhouette (neighbouring views are 90° / (grid - 1) apart): a margin of a
+    // tenth of the radius and two texels.
+    const float margin = 0.1f + 4.0f / float(cell);
+    return {std::min(1.0f, x + margin), std::max(-1.0f, lo - margin), std::min(1.0f, hi + margin)};
 }
 
 std::size_t Impostors::collect() {
@@ -117,12 +149,14 @@ std::size_t Impostors::collect() {
             ++it;
             continue;
         }
-        const mesh::Impostor imp = it->second.future.result();
+        const Baked baked = it->second.future.result();
+        const mesh::Impostor& imp = baked.impostor;
         if (mGl && !imp.color.pixels.empty()) {
             Card card;
             card.owner = std::move(it->second.owner);
             card.centre = imp.centre;
             card.radius = imp.radius;
+            card.extent = baked.extent;
             card.color = upload(imp.color);
             card.normal = upload(imp.normal);
             card.depth = upload(imp.depth);
@@ -186,6 +220,7 @@ std::size_t Impostors::end() {
         const Card& c = card->second;
         setUniform(*mProgram, "uCentre", c.centre);
         mProgram->setUniformValue("uRadius", c.radius);
+        setUniform(*mProgram, "uExtent", c.extent);
         gl.glActiveTexture(GL_TEXTURE2);
         gl.glBindTexture(GL_TEXTURE_2D, c.depth);
         gl.glActiveTexture(GL_TEXTURE1);

@@ -56,6 +56,11 @@ public:
                  std::shared_ptr<const mesh::Mesh> source, mesh::ImpostorMaterials materials);
     /// Uploads the atlases the worker finished (context current); returns how many.
     std::size_t collect();
+    /// The card's part that any view of \p imp covers, in units of the bounding sphere's radius
+    /// around its centre: (x, y_min, y_max), the card spanning [-x, x] × [y_min, y_max] (a
+    /// tree is narrower than high: most of the square card is empty, and a software renderer
+    /// pays for every pixel of it), with a margin for the views' blending. (1, -1, 1) at most.
+    static glm::vec3 cardExtent(const mesh::Impostor& imp);
     /// Drops the impostors whose key \p keep does not accept.
     void retain(const std::function<bool(Key)>& keep);
     std::size_t size() const { return mCards.size(); }
@@ -73,6 +78,12 @@ private:
         GLuint color = 0, normal = 0, depth = 0;
         glm::vec3 centre{0.0f};
         float radius = 1.0f;
+        /// The part of the card any view covers (cardExtent()).
+        glm::vec3 extent{1.0f, -1.0f, 1.0f};
+    };
+    struct Baked {
+        mesh::Impostor impostor;
+        glm::vec3 extent{1.0f, -1.0f, 1.0f};
     };
     struct Instance {
         glm::mat4 model;
@@ -86,7 +97,7 @@ private:
     std::map<Key, Card> mCards;
     struct Baking {
         std::shared_ptr<const void> owner;
-        QFuture<mesh::Impostor> future;
+        QFuture<Baked> future;
     };
     std::map<Key, Baking> mBaking;
     QThreadPool mPool; ///< one thread, niced: the GUI and the generation come first

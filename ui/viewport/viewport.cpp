@@ -502,6 +502,7 @@ void Viewport::paintGL() {
                                           : levels.size() - 1;
                 const mesh::Mesh* m = levels[k].mesh.get();
                 ++mDrawnPerLevel[std::size_t(std::min(d.level, ViewLod::kImpostorLevel - 1))];
+                mDrawnMotion += d.motion ? 1 : 0;
                 if (highlight > 0.0f || !mBuffers.find(m)) {
                     drawTreeMesh(*m, t.transform, highlight);
                     continue;

@@ -1,6 +1,6 @@
 #version 330 core
-// An impostor (ui/viewport/impostors.h, docs/lods.md): one card facing the eye, side 2 · radius
-// around the atlas' bounding sphere, made from the vertex id alone, one instance per tree (its
+// An impostor (ui/viewport/impostors.h, docs/lods.md): one card facing the eye, the part of the
+// square of side 2 · radius around the atlas' bounding sphere that any view covers, made from the vertex id alone, one instance per tree (its
 // model matrix and highlight per instance). The view direction is the tree's (its centre to the
 // eye, in its frame), the same for the whole card: so is everything that depends on it alone
 // (the three atlas views around it, their weights and frames), worked out here once per card
@@ -11,6 +11,8 @@ uniform mat4 uViewProj;
 uniform vec3 uEye;
 uniform vec3 uCentre;
 uniform float uRadius;
+// The part of the card any view covers (Impostors::cardExtent): [-x, x] × [y, z].
+uniform vec3 uExtent;
 uniform int uGrid;
 flat out mat3 vNormalMatrix; // tree frame to world, for the atlas' normals
 flat out float vHighlight;
@@ -37,7 +39,8 @@ vec2 encodeDir(vec3 d) {
 void main() {
     const vec2 corners[6] = vec2[6](vec2(-1, -1), vec2(1, -1), vec2(1, 1),
                                     vec2(-1, -1), vec2(1, 1), vec2(-1, 1));
-    vec2 st = corners[gl_VertexID];
+    vec2 c01 = corners[gl_VertexID] * 0.5 + 0.5;
+    vec2 st = vec2(uExtent.x * (2.0 * c01.x - 1.0), mix(uExtent.y, uExtent.z, c01.y));
     vec3 eyeLocal = (inverse(aModel) * vec4(uEye, 1.0)).xyz;
     vec3 d = eyeLocal - uCentre;
     vec3 view = length(d) > 1e-6 ? normalize(d) : vec3(0.0, 0.0, 1.0);
