@@ -437,7 +437,8 @@ void Viewport::paintGL() {
         mSharpTimer->start();
     }
     mSharpNext = false;
-    const std::vector<TreeDraw> order = treesToDraw(viewProj);
+    mLastDrawList = treesToDraw(viewProj);
+    const std::vector<TreeDraw>& order = mLastDrawList;
     bakeImpostors(order);
 
     glClearColor(kBackgroundBottom.x, kBackgroundBottom.y, kBackgroundBottom.z, 1.0f);

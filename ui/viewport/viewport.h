@@ -176,11 +176,16 @@ public:
     /// view and material), and the tree meshes on the GPU (one buffer set each: a variant's
     /// levels once, whatever its instances).
     std::size_t instancedDrawCalls() const { return mInstancedDrawCalls; }
+    /// What the last frame drew, nearest first, with the levels (ui/viewport/drawlist.h).
+    const std::vector<TreeDraw>& lastDrawList() const { return mLastDrawList; }
     std::size_t gpuTreeMeshes() const { return mBuffers.treeMeshCount(); }
     /// The distance level of detail (ui/viewport/viewlod.h).
     ViewLod& lod() { return *mLod; }
     /// Trees whose coarser levels or impostor are still to be made (0: the view is final).
-    std::size_t lodPending() const { return mLod->pending() + mImpostorsWanted; }
+    /// (As of the last frame: draw one after the view changed.)
+    std::size_t lodPending() const {
+        return mLod->pending() + mImpostorsWanted + mImpostors.baking();
+    }
 
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
@@ -371,6 +376,7 @@ private:
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
     std::size_t mImpostorDrawCalls = 0;
     std::size_t mInstancedDrawCalls = 0;
+    std::vector<TreeDraw> mLastDrawList;
     QTimer* mBakeTimer = nullptr;
     std::size_t mDrawnMotion = 0;
     ViewLod* mLod = nullptr; ///< a child
