@@ -834,6 +834,14 @@
         <source>Preset Browser</source>
         <translation>Vorlagenbrowser</translation>
     </message>
+    <message>
+        <source>&amp;Wind</source>
+        <translation>&amp;Wind</translation>
+    </message>
+    <message>
+        <source>Trees sway in the project&apos;s wind (Properties, with nothing selected): the wind model the exports carry</source>
+        <translation>Bäume wiegen sich im Wind des Projekts (Eigenschaften, wenn nichts ausgewählt ist): das Windmodell, das auch die Exporte tragen</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
@@ -1385,6 +1393,42 @@
     <message>
         <source>This tree&apos;s own time of year, or the project&apos;s season</source>
         <translation>Die eigene Jahreszeit dieses Baums oder die des Projekts</translation>
+    </message>
+    <message>
+        <source>Wind direction:</source>
+        <translation>Windrichtung:</translation>
+    </message>
+    <message>
+        <source>Where the wind blows to, about the vertical: 0° along +X, 90° along +Z</source>
+        <translation>Wohin der Wind weht, um die Senkrechte: 0° entlang +X, 90° entlang +Z</translation>
+    </message>
+    <message>
+        <source>Wind strength:</source>
+        <translation>Windstärke:</translation>
+    </message>
+    <message>
+        <source>0 calm, 1 strong, 2 storm: trees bend with its square</source>
+        <translation>0 windstill, 1 stark, 2 Sturm: Bäume biegen sich mit ihrem Quadrat</translation>
+    </message>
+    <message>
+        <source>Gustiness:</source>
+        <translation>Böigkeit:</translation>
+    </message>
+    <message>
+        <source>0 a steady wind, 1 gusts that double the pressure</source>
+        <translation>0 gleichmäßiger Wind, 1 Böen, die den Druck verdoppeln</translation>
+    </message>
+    <message>
+        <source>Sway frequency:</source>
+        <translation>Schwingfrequenz:</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>How often the trunks sway; limbs, branches and leaves go faster</source>
+        <translation>Wie oft die Stämme schwingen; Äste, Zweige und Blätter schneller</translation>
     </message>
 </context>
 <context>

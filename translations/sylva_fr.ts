@@ -834,6 +834,14 @@
         <source>Preset Browser</source>
         <translation>Navigateur de préréglages</translation>
     </message>
+    <message>
+        <source>&amp;Wind</source>
+        <translation>&amp;Vent</translation>
+    </message>
+    <message>
+        <source>Trees sway in the project&apos;s wind (Properties, with nothing selected): the wind model the exports carry</source>
+        <translation>Les arbres se balancent dans le vent du projet (Propriétés, sans sélection) : le modèle de vent que portent les exports</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MessagesPanel</name>
@@ -1385,6 +1393,42 @@
     <message>
         <source>This tree&apos;s own time of year, or the project&apos;s season</source>
         <translation>La saison propre de cet arbre, ou celle du projet</translation>
+    </message>
+    <message>
+        <source>Wind direction:</source>
+        <translation>Direction du vent :</translation>
+    </message>
+    <message>
+        <source>Where the wind blows to, about the vertical: 0° along +X, 90° along +Z</source>
+        <translation>Vers où souffle le vent, autour de la verticale : 0° selon +X, 90° selon +Z</translation>
+    </message>
+    <message>
+        <source>Wind strength:</source>
+        <translation>Force du vent :</translation>
+    </message>
+    <message>
+        <source>0 calm, 1 strong, 2 storm: trees bend with its square</source>
+        <translation>0 calme, 1 fort, 2 tempête : les arbres ploient avec son carré</translation>
+    </message>
+    <message>
+        <source>Gustiness:</source>
+        <translation>Rafales :</translation>
+    </message>
+    <message>
+        <source>0 a steady wind, 1 gusts that double the pressure</source>
+        <translation>0 un vent régulier, 1 des rafales qui doublent la pression</translation>
+    </message>
+    <message>
+        <source>Sway frequency:</source>
+        <translation>Fréquence d&apos;oscillation :</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>How often the trunks sway; limbs, branches and leaves go faster</source>
+        <translation>La fréquence d&apos;oscillation des troncs ; charpentières, branches et feuilles vont plus vite</translation>
     </message>
 </context>
 <context>

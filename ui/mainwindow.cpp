@@ -20,6 +20,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QProgressBar>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -45,6 +46,7 @@
 #include "ui/filedialogs.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/generation/exportshown.h"
+#include "ui/generation/windvertexdata.h"
 #include "ui/helpmenu.h"
 #include "ui/languagemenu.h"
 #include "ui/nodes/nodegraphscene.h"
@@ -142,6 +144,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         Q_EMIT generationFinished(false);
     });
     connect(mDocument, &doc::Document::changed, this, &MainWindow::onDocumentChanged);
+    mSettingsSeen = mDocument->settings();
+    applyWind();
     connect(mDocument, &doc::Document::titleChanged, this, &MainWindow::updateTitle);
     connect(mDocument, &doc::Document::selectionChanged, this, [this] {
         QSet<std::uint32_t> ids;
@@ -166,9 +170,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
 
     QSettings settings;
-    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+        openAtScreenSize();
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
     updateTitle();
+}
+
+void MainWindow::openAtScreenSize() {
+    // First start: the docks' size hints alone give a small window with a small 3D view; an
+    // artist's editor takes most of the screen, centred, leaving the taskbar and a margin.
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    if (!screen) return;
+    const QRect available = screen->availableGeometry();
+    const QSize size(available.width() * 9 / 10, available.height() * 9 / 10);
+    resize(size);
+    move(available.center() - QPoint(size.width() / 2, size.height() / 2));
 }
 
 MainWindow::~MainWindow() {
@@ -422,8 +438,22 @@ void MainWindow::createMenus() {
     grid->setShortcut(QKeySequence(Qt::Key_G));
     connect(grid, &QAction::toggled, mViewport, &Viewport::setGridVisible);
     // Shortcuts of the View menu act while the viewport has focus, like the F key itself.
+    mWindAction = view->addAction(tr("&Wind"));
+    mWindAction->setObjectName(QStringLiteral("actionViewWind"));
+    mWindAction->setCheckable(true);
+    mWindAction->setToolTip(tr("Trees sway in the project's wind (Properties, with nothing "
+                               "selected): the wind model the exports carry"));
+    mWindAction->setChecked(QSettings().value(QStringLiteral("view/wind"), false).toBool());
+    connect(mWindAction, &QAction::toggled, this, [this](bool on) {
+        QSettings().setValue(QStringLiteral("view/wind"), on);
+        for (Viewport* v : {mViewport, mWorkbench ? mWorkbench->previewViewport() : nullptr})
+            if (v) v->setWindEnabled(on);
+    });
+    for (Viewport* v : {mViewport, mWorkbench ? mWorkbench->previewViewport() : nullptr})
+        if (v) v->setWindEnabled(mWindAction->isChecked());
     mViewport->addAction(frame);
     mViewport->addAction(grid);
+    mViewport->addAction(mWindAction);
     mColorMenu = new ColorByMenu(mColorBy, this);
     connect(mColorMenu, &ColorByMenu::chosen, this, &MainWindow::setColorBy);
     view->addMenu(mColorMenu);
@@ -622,7 +652,7 @@ void MainWindow::onPreviewGenerated(const GenerationResult& run) {
     const GenerationResult& result = mPreview.result();
     mViewport->clearViewFrom();
     mViewport->setTrees({});
-    mViewport->setMesh(result.mesh, true);
+    mViewport->setMesh(result.mesh, true, nullptr, result.skeleton);
     mExportAction->setEnabled(!result.exportTrees.empty());
     mStats->showResult(result);
     updateTitle();
@@ -636,6 +666,15 @@ void MainWindow::onPreviewGenerated(const GenerationResult& run) {
 }
 
 void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
+    const doc::Document::Settings seen = mSettingsSeen;
+    mSettingsSeen = mDocument->settings();
+    if (seen.wind != mSettingsSeen.wind) applyWind();
+    if (change.what == doc::DocumentChange::Settings) {
+        // The wind only moves what is drawn: nothing to regrow when nothing else changed.
+        doc::Document::Settings rest = mSettingsSeen;
+        rest.wind = seen.wind;
+        if (rest == seen) return;
+    }
     if (change.what & doc::DocumentChange::Reset) {
         const QFileInfo own(mDocument->path());
         mDocumentStamp =
@@ -694,7 +733,7 @@ void MainWindow::showDocument(bool frame) {
     std::vector<ViewTree> trees;
     trees.reserve(result.trees.size());
     for (const DrawnTree& t : result.trees)
-        trees.push_back({t.docId, t.mesh, t.transform, t.lod});
+        trees.push_back({t.docId, t.mesh, t.transform, t.lod, windPhaseOf(t.instanceId)});
     if (frame) {
         mViewport->setViewFrom(result.cameraEye, result.cameraTarget);
     }
@@ -788,6 +827,31 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 // --- files on disk ----------------------------------------------------------------------
+
+void MainWindow::setViewWind(bool on) {
+    mWindAction->setChecked(on);
+}
+
+bool MainWindow::viewWind() const {
+    return mWindAction->isChecked();
+}
+
+void MainWindow::setWindTime(std::optional<double> seconds) {
+    for (Viewport* v : {mViewport, mWorkbench ? mWorkbench->previewViewport() : nullptr})
+        if (v) v->setWindTime(seconds);
+}
+
+void MainWindow::applyWind() {
+    wind::WindSettings w;
+    if (const std::optional<doc::ProjectWind>& p = mDocument->project().wind) {
+        w.direction = p->direction;
+        w.strength = p->strength;
+        w.gustiness = p->gustiness;
+        w.frequency = p->frequency;
+    }
+    for (Viewport* v : {mViewport, mWorkbench ? mWorkbench->previewViewport() : nullptr})
+        if (v) v->setWind(w);
+}
 
 void MainWindow::setAutoReload(bool on) {
     mAutoReloadAction->setChecked(on);
@@ -926,8 +990,8 @@ void MainWindow::showPreferences() {
     Viewport::setSamplesPreference(dialog.samples());
 }
 
-MainWindow::FrameStats MainWindow::measureFrames(int frames) {
-    FrameStats stats = FrameMeter(*mViewport).measure(frames);
+MainWindow::FrameStats MainWindow::measureFrames(int frames, float orbitDegrees) {
+    FrameStats stats = FrameMeter(*mViewport).measure(frames, orbitDegrees);
     if (frames > 0) stats.triangles = lastResult().triangleCount();
     return stats;
 }

@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 
 #include <QDateTime>
 #include <QMainWindow>
@@ -103,6 +104,12 @@ public:
     /// asks before reloading.
     void setAutoReload(bool on);
     bool autoReload() const;
+    /// View ▸ Wind (QSettings "view/wind", off by default): the viewport and the species preview
+    /// sway their trees in the project's wind.
+    void setViewWind(bool on);
+    bool viewWind() const;
+    /// Freezes both views' wind clocks at \p seconds, or lets them run again (nullopt).
+    void setWindTime(std::optional<double> seconds);
     QStringList watchedFiles() const;
     /// Saves the viewport's current image; false (with a message) on failure.
     bool saveScreenshot(const QString& path);
@@ -140,7 +147,7 @@ public:
     /// Orbits the view by a small step per frame for \p frames frames and measures them
     /// (FrameMeter), with the shown result's triangle count.
     using FrameStats = ui::FrameStats;
-    FrameStats measureFrames(int frames);
+    FrameStats measureFrames(int frames, float orbitDegrees = 4.0f);
 
     /// Edit ▸ Preferences: how often the autosave copy is written (kept in the settings).
     void setAutosaveInterval(int seconds);
@@ -156,6 +163,7 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    void openAtScreenSize();
     void createDocks();
     void createMenus();
     void createToolBar();
@@ -199,6 +207,11 @@ private:
     QAction* mReloadAction = nullptr;
     QAction* mExportAction = nullptr;
     QAction* mAutoReloadAction = nullptr;
+    QAction* mWindAction = nullptr;
+    /// The project's settings last seen: an edit of the wind alone regrows nothing.
+    doc::Document::Settings mSettingsSeen;
+    /// Gives both views the project's wind.
+    void applyWind();
     SourceWatcher* mSourceWatcher = nullptr; ///< the files the shown result was read from
     QTimer* mSpeciesRegen = nullptr;         ///< the forest regrows when species edits pause
     QDateTime mDocumentStamp; ///< the project file's time when opened, saved or last seen

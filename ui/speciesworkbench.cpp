@@ -327,7 +327,7 @@ void SpeciesWorkbench::onPreviewFinished() {
             (glm::any(glm::lessThan(lo, mFramedLo - 0.25f * (mFramedHi - mFramedLo))) ||
              glm::any(glm::greaterThan(hi, mFramedHi + 0.25f * (mFramedHi - mFramedLo))));
         const bool frame = !mFramed || outgrown;
-        mPreviewView->setMesh(r.mesh, frame, r.vertices);
+        mPreviewView->setMesh(r.mesh, frame, r.vertices, r.skeleton);
         if (frame && !r.mesh->positions.empty()) {
             mFramedLo = lo;
             mFramedHi = hi;

@@ -233,6 +233,9 @@ int main(int argc, char* argv[]) {
     }
 
     if (screenshotMode) {
+        // The same picture every time, also with View ▸ Wind left on: the wind clock stands
+        // at 0 s (the trees bent by the mean wind, as a clip's first frame).
+        window.setWindTime(0.0);
         const QString output = QFileInfo(parser.value(options.screenshot)).absoluteFilePath();
         QObject::connect(&window, &sylva::ui::MainWindow::generationFinished, &app,
                          [&window, output](bool ok) {

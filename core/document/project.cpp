@@ -13,6 +13,7 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <set>
@@ -45,11 +46,21 @@ glm::vec2 vec2Of(const Value& v, const std::string& what) {
     return {static_cast<float>(a[0].toNumber(what)), static_cast<float>(a[1].toNumber(what))};
 }
 
+/// A float as the double of its shortest decimal: 0.3f saves as 0.3, not as the double
+/// 0.30000001192092896 it widens to, so opening and saving a file gives back its own text.
+double decimalOf(float f) {
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, f);
+    double d = 0.0;
+    std::from_chars(buf, res.ptr, d);
+    return d;
+}
+
 Value arrayOf(const glm::vec3& v) {
-    return Value(Value::Array{v.x, v.y, v.z});
+    return Value(Value::Array{decimalOf(v.x), decimalOf(v.y), decimalOf(v.z)});
 }
 Value arrayOf(const glm::vec2& v) {
-    return Value(Value::Array{v.x, v.y});
+    return Value(Value::Array{decimalOf(v.x), decimalOf(v.y)});
 }
 
 glm::vec3 vec3Or(const Value& obj, const std::string& key, const glm::vec3& fallback,
@@ -422,9 +433,9 @@ QByteArray serializeProject(const Project& project) {
     root["light"] = Value::Object{{"direction", arrayOf(p.lightDirection)}};
     if (p.wind)
         root["wind"] = Value::Object{{"direction", arrayOf(p.wind->direction)},
-                                     {"strength", p.wind->strength},
-                                     {"gustiness", p.wind->gustiness},
-                                     {"frequency", p.wind->frequency}};
+                                     {"strength", decimalOf(p.wind->strength)},
+                                     {"gustiness", decimalOf(p.wind->gustiness)},
+                                     {"frequency", decimalOf(p.wind->frequency)}};
     if (!p.season.empty()) root["season"] = p.season;
     return QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n");
 }

@@ -10,6 +10,7 @@
 #include <QRegularExpressionValidator>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
+#include <cmath>
 #include <memory>
 
 #include "document/errormessage.h"
@@ -146,10 +147,56 @@ void PropertiesPanel::rebuild() {
         connect(mSeason, &QComboBox::currentIndexChanged, this, [this] {
             apply([this] { mDocument.setSeason(mSeason->currentData().toString().toStdString()); });
         });
-        mRefresh = [this] {
+        // The wind the viewport plays (View ▸ Wind) and wind exports use; the engine's
+        // defaults shown until the project sets it. Each change is one "Change wind" step.
+        const int windDir = addSpins(tr("Wind direction:"), 1, 0, 360, 15, 0, tr("°"),
+                                     tr("Where the wind blows to, about the vertical: 0° along "
+                                        "+X, 90° along +Z"));
+        mSpins[std::size_t(windDir)]->setWrapping(true);
+        const int windStrength =
+            addSpins(tr("Wind strength:"), 1, 0, 2, 0.1, 2, {},
+                     tr("0 calm, 1 strong, 2 storm: trees bend with its square"));
+        const int windGust = addSpins(tr("Gustiness:"), 1, 0, 1, 0.05, 2, {},
+                                      tr("0 a steady wind, 1 gusts that double the pressure"));
+        const int windFrequency =
+            addSpins(tr("Sway frequency:"), 1, 0.05, 5, 0.05, 2, tr(" Hz"),
+                     tr("How often the trunks sway; limbs, branches and leaves go faster"));
+        mSpins[std::size_t(windDir)]->setObjectName(QStringLiteral("windDirection"));
+        mSpins[std::size_t(windStrength)]->setObjectName(QStringLiteral("windStrength"));
+        mSpins[std::size_t(windGust)]->setObjectName(QStringLiteral("windGustiness"));
+        mSpins[std::size_t(windFrequency)]->setObjectName(QStringLiteral("windFrequency"));
+        auto windEdit = [this](int spinIndex, std::function<void(doc::ProjectWind&, double)> set) {
+            connect(mSpins[std::size_t(spinIndex)], &QDoubleSpinBox::valueChanged, this,
+                    [this, set](double value) {
+                        apply([this, set, value] {
+                            doc::ProjectWind w =
+                                mDocument.project().wind.value_or(doc::ProjectWind{});
+                            set(w, value);
+                            mDocument.setWind(w);
+                        });
+                    });
+        };
+        windEdit(windDir, [](doc::ProjectWind& w, double degrees) {
+            const double a = degrees * 3.14159265358979323846 / 180.0;
+            // Whole numbers where the angle is a right one, not 6e-17 in the file.
+            auto clean = [](double v) { return std::abs(v) < 1e-7 ? 0.0f : float(v); };
+            w.direction = {clean(std::cos(a)), 0.0f, clean(std::sin(a))};
+        });
+        windEdit(windStrength, [](doc::ProjectWind& w, double v) { w.strength = float(v); });
+        windEdit(windGust, [](doc::ProjectWind& w, double v) { w.gustiness = float(v); });
+        windEdit(windFrequency, [](doc::ProjectWind& w, double v) { w.frequency = float(v); });
+        mRefresh = [this, windDir, windStrength, windGust, windFrequency] {
             mInfo->setText(mDocument.path().isEmpty() ? tr("not saved yet") : mDocument.path());
             mSeed->setText(QString::number(mDocument.project().seed));
             showSeason(mDocument.project().season);
+            const doc::ProjectWind w = mDocument.project().wind.value_or(doc::ProjectWind{});
+            double degrees = std::atan2(double(w.direction.z), double(w.direction.x)) * 180.0 /
+                             3.14159265358979323846;
+            if (degrees < 0.0) degrees += 360.0;
+            mSpins[std::size_t(windDir)]->setValue(degrees);
+            mSpins[std::size_t(windStrength)]->setValue(w.strength);
+            mSpins[std::size_t(windGust)]->setValue(w.gustiness);
+            mSpins[std::size_t(windFrequency)]->setValue(w.frequency);
         };
     } else if (mItem->kind == Kind::Tree) {
         const doc::TreeId id = mItem->id;

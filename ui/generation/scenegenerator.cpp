@@ -17,6 +17,7 @@
 #include "engine/forest/forestbuild.h"
 #include "engine/mesh/mesh.h"
 #include "engine/util/random.h"
+#include "ui/generation/windvertexdata.h"
 
 namespace sylva::ui {
 
@@ -112,7 +113,10 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                 result.sources << QFileInfo(project.resolve(d.terrain)).absoluteFilePath();
         result.sources.removeDuplicates();
         stampSources(result);
-        const forest::ForestScene forest = doc::makeForestScene(project);
+        forest::ForestScene forest = doc::makeForestScene(project);
+        // Node ids: the trees sway in the viewport's wind (windvertexdata.h).
+        for (forest::SceneSpecies& s : forest.species)
+            requestNodeIds(s.graph);
         for (const forest::SceneSpecies& s : forest.species)
             doc::addSpeciesSourceFiles(s.graph, result.sources);
         stampSources(result); // before buildForest reads the grammar files

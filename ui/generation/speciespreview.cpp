@@ -1,4 +1,5 @@
 #include "ui/generation/speciespreview.h"
+#include "ui/generation/windvertexdata.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -110,6 +111,8 @@ void SpeciesPreview::start() {
         for (const auto& [key, value] : mOverrides)
             if (graph::NodeDesc* n = species.findNode(key.first.toStdString()))
                 n->params.objectRef()[key.second] = value;
+        // Node ids: the preview sways in the wind (windvertexdata.h) and picks nodes by them.
+        requestNodeIds(species);
     } catch (...) {
         failed.error = QString::fromStdString(
             doc::describeError(std::current_exception(), mSpecies.toStdString()).message);

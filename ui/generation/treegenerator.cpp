@@ -18,6 +18,7 @@
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/error.h"
+#include "ui/generation/windvertexdata.h"
 
 namespace sylva::ui {
 
@@ -58,11 +59,9 @@ GenerationResult generateTree(const QString& path, Progress& progress) {
         doc::addSpeciesSourceFiles(species, result.sources);
         stampSources(result); // before the evaluation reads the grammar files
         if (!species.name.empty()) result.speciesName = QString::fromStdString(species.name);
-        // The viewport can colour the tree by node attributes: ask the mesher which node each
-        // vertex belongs to.
-        if (graph::NodeDesc* out = species.findNode(species.output);
-            out && out->type == "tube_mesh")
-            out->params.objectRef()["node_ids"] = sylva::Value(true);
+        // The viewport colours the tree by node attributes and sways it in the wind: ask the
+        // mesher which node each vertex belongs to.
+        requestNodeIds(species);
         graph::Evaluator evaluator(std::move(species));
         const graph::NodeOutput& output = evaluator.evaluate(progress);
         result.mesh = output.mesh;

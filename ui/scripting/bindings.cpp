@@ -1,6 +1,7 @@
 // The `sylva` Python module as the editor embeds it: the running window's document, edited
 // through the same document functions (and so the same undoable commands) as the mouse. The
 // names are a public contract: docs/scripting.md.
+#include <cmath>
 #include <optional>
 
 #include <pybind11/embed.h>
@@ -570,10 +571,12 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             "Points the viewport's camera (a view, not the project camera: doc.set_camera).")
         .def(
             "measure_frames",
-            [](WindowApi&, int frames) {
+            [](WindowApi&, int frames, double orbit) {
                 if (frames < 1 || frames > 100000)
                     throw InvalidInput("measure_frames takes 1 to 100000 frames");
-                const MainWindow::FrameStats f = window().measureFrames(frames);
+                if (!std::isfinite(orbit) || std::abs(orbit) > 90.0)
+                    throw InvalidInput("measure_frames' orbit is -90 to 90 degrees a frame");
+                const MainWindow::FrameStats f = window().measureFrames(frames, float(orbit));
                 py::dict d;
                 d["fps"] = f.fps;
                 d["ms_per_frame"] = f.msPerFrame;
@@ -586,8 +589,9 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 d["motion_trees"] = f.motionTrees;
                 return d;
             },
-            py::arg("frames") = 60,
-            "Orbits the view a little per frame and measures frames per second and CPU time.")
+            py::arg("frames") = 60, py::arg("orbit") = 4.0,
+            "Orbits the view by orbit degrees per frame (0: a still camera, each frame drawn "
+            "again) and measures frames per second and CPU time.")
         .def(
             "wait_view_lod",
             [](WindowApi&, double seconds) {
@@ -611,6 +615,26 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 window().viewport()->update();
             },
             py::arg("on"), "Turns the viewport's distance level of detail on or off.")
+        .def(
+            "set_view_wind", [](WindowApi&, bool on) { window().setViewWind(on); }, py::arg("on"),
+            "View > Wind: the viewport and the species preview sway their trees in the "
+            "project's wind (doc.set_wind).")
+        .def(
+            "view_wind", [](WindowApi&) { return window().viewWind(); },
+            "Whether View > Wind is on.")
+        .def(
+            "set_wind_time",
+            [](WindowApi&, std::optional<double> seconds) {
+                if (seconds && !std::isfinite(*seconds))
+                    throw py::value_error("wind time must be a finite number of seconds");
+                window().setWindTime(seconds);
+            },
+            py::arg("seconds"),
+            "Freezes the views' wind clock at this many seconds (the same time draws the same "
+            "frame: scripts, tests, pictures); None lets it run with the wall clock again.")
+        .def(
+            "wind_time", [](WindowApi&) { return window().viewport()->windTime(); },
+            "The viewport's wind clock, in seconds.")
         .def(
             "set_back_face_culling",
             [](WindowApi&, bool on) {

@@ -18,7 +18,7 @@ double cpuMs(clockid_t clock) {
 }
 } // namespace
 
-FrameStats FrameMeter::measure(int frames) {
+FrameStats FrameMeter::measure(int frames, float orbitDegrees) {
     FrameStats stats;
     if (frames <= 0) return stats;
     QElapsedTimer wall;
@@ -31,7 +31,7 @@ FrameStats FrameMeter::measure(int frames) {
         guard.setSingleShot(true);
         QObject::connect(&guard, &QTimer::timeout, &loop, &QEventLoop::quit);
         QObject::connect(&mViewport, &Viewport::frameSwapped, &loop, &QEventLoop::quit);
-        mViewport.camera().orbit(4.0f, 0.0f);
+        if (orbitDegrees != 0.0f) mViewport.camera().orbit(orbitDegrees, 0.0f);
         mViewport.update();
         guard.start(10000);
         loop.exec();

@@ -24,9 +24,11 @@ class FrameMeter {
 public:
     explicit FrameMeter(Viewport& viewport) : mViewport(viewport) {}
 
-    /// Orbits the view by 4 degrees per frame for \p frames frames (running the event loop;
-    /// a frame not shown within 10 s ends its wait) and measures them. Zeros for \p frames <= 0.
-    FrameStats measure(int frames);
+    /// Orbits the view by \p orbitDegrees per frame for \p frames frames (running the event
+    /// loop; a frame not shown within 10 s ends its wait) and measures them. Zeros for
+    /// \p frames <= 0. 0 degrees: a still camera, each frame drawn again (what View ▸ Wind
+    /// asks for while the view rests).
+    FrameStats measure(int frames, float orbitDegrees = 4.0f);
 
 private:
     Viewport& mViewport;

@@ -3,10 +3,6 @@
 #include <QOpenGLShaderProgram>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -95,10 +91,9 @@ void Impostors::request(Key key, std::shared_ptr<const void> owner,
     job.owner = std::move(owner);
     job.future =
         QtConcurrent::run(&mPool, [source = std::move(source), materials = std::move(materials)]() {
-            // Behind the GUI and the generation: until it is baked the tree draws its coarsest
-            // mesh, which only costs frames.
-            const auto tid = static_cast<id_t>(syscall(SYS_gettid));
-            if (getpriority(PRIO_PROCESS, tid) < 10) setpriority(PRIO_PROCESS, tid, 10);
+            // Not niced (the levels' worker is): a few atlases a forest, one per variant, and
+            // until they are baked its far trees draw meshes, which costs every frame; niced,
+            // they waited minutes on a loaded machine.
             mesh::ImpostorSettings settings;
             settings.grid = kGrid;
             settings.cellPixels = kCell;

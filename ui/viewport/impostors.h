@@ -100,7 +100,7 @@ private:
         QFuture<Baked> future;
     };
     std::map<Key, Baking> mBaking;
-    QThreadPool mPool; ///< one thread, niced: the GUI and the generation come first
+    QThreadPool mPool; ///< one thread
 };
 
 } // namespace sylva::ui

@@ -28,20 +28,40 @@ QByteArray shaderSource(const QString& name) {
     return file.readAll();
 }
 
+QByteArray expandIncludes(const QByteArray& source) {
+    // GLSL has no #include: a line `#include "name"` becomes that resource's text (one level,
+    // which is all the shaders use).
+    if (!source.contains("#include")) return source;
+    QByteArray out;
+    for (const QByteArray& line : source.split('\n')) {
+        const QByteArray t = line.trimmed();
+        if (t.startsWith("#include \"") && t.endsWith('"')) {
+            out += shaderSource(QString::fromLatin1(t.mid(10, t.size() - 11)));
+            out += '\n';
+        } else {
+            out += line;
+            out += '\n';
+        }
+    }
+    out.chop(1);
+    return out;
+}
+
 std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
                                                          const QString& fragment, QString& error,
                                                          const QByteArray& defines) {
-    QByteArray vertexSource = shaderSource(vertex);
-    QByteArray fragmentSource = shaderSource(fragment);
+    QByteArray vertexSource = expandIncludes(shaderSource(vertex));
+    QByteArray fragmentSource = expandIncludes(shaderSource(fragment));
     if (vertexSource.isEmpty() || fragmentSource.isEmpty()) {
         error =
             QStringLiteral("shader error: missing shader resource %1 or %2").arg(vertex, fragment);
         return nullptr;
     }
     if (!defines.isEmpty()) {
-        const qsizetype afterVersion = fragmentSource.indexOf('\n') + 1;
-        fragmentSource.insert(afterVersion, defines);
-        vertexSource.insert(vertexSource.indexOf('\n') + 1, defines);
+        for (QByteArray* source : {&vertexSource, &fragmentSource}) {
+            const qsizetype afterVersion = source->indexOf('\n') + 1;
+            source->insert(afterVersion, defines);
+        }
     }
     auto program = std::make_unique<QOpenGLShaderProgram>();
     if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, vertexSource) ||

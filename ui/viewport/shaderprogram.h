@@ -17,10 +17,13 @@ namespace sylva::ui {
 /// as the Qt resources :/sylva/shaders/<name>); empty when there is no such file.
 QByteArray shaderSource(const QString& name);
 
+/// \p source with each line `#include "name"` replaced by the resource shaderSource(name).
+QByteArray expandIncludes(const QByteArray& source);
+
 /// A linked program of the shader files \p vertex and \p fragment (names in
-/// ui/viewport/shaders/). \p defines (lines such as "#define CUTOUT 1\n") go right after the
-/// #version line of both shaders. Null, with \p error set, when a file is missing or GLSL
-/// does not compile or link. Needs a current OpenGL context.
+/// ui/viewport/shaders/, their `#include "name"` lines expanded). \p defines (lines such as
+/// "#define CUTOUT 1\n") go right after each shader's #version line. Null, with \p error set, when
+/// a file is missing or GLSL does not compile or link. Needs a current OpenGL context.
 std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
                                                          const QString& fragment, QString& error,
                                                          const QByteArray& defines = {});

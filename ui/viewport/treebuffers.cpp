@@ -9,6 +9,8 @@
 #include "engine/export/materials.h"
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "engine/wind/windelements.h"
+#include "ui/generation/windvertexdata.h"
 #include "ui/viewport/textureimage.h"
 
 namespace sylva::ui {
@@ -70,6 +72,14 @@ void TreeBuffers::initialize(QOpenGLFunctions_3_3_Core* gl,
 void TreeBuffers::release() {
     if (!mGl) return;
     releaseTrees();
+    if (mSceneWindVbo) mGl->glDeleteBuffers(1, &mSceneWindVbo);
+    mSceneWindVbo = mSceneWindElements = 0;
+    mSceneSkeleton.reset();
+    mSceneElements.reset();
+    if (mRotationsTexture) mGl->glDeleteTextures(1, &mRotationsTexture);
+    if (mRotationsBuffer) mGl->glDeleteBuffers(1, &mRotationsBuffer);
+    mRotationsTexture = mRotationsBuffer = 0;
+    releaseWindTables(true);
     mGl->glDeleteVertexArrays(1, &mSceneVao);
     mGl->glDeleteBuffers(1, &mSceneVbo);
     mGl->glDeleteBuffers(1, &mSceneIbo);
@@ -84,7 +94,8 @@ void TreeBuffers::release() {
 }
 
 bool TreeBuffers::uploadScene(const mesh::Mesh* mesh, const std::vector<glm::vec3>& colors,
-                              const std::vector<ViewVertex>* prepared) {
+                              const std::vector<ViewVertex>* prepared,
+                              const std::shared_ptr<const skel::Skeleton>& skeleton) {
     mSceneRanges.clear();
     if (!mesh || mesh->empty() || mesh->indices.empty()) return true;
     const mesh::Mesh& m = *mesh;
@@ -104,7 +115,18 @@ bool TreeBuffers::uploadScene(const mesh::Mesh* mesh, const std::vector<glm::vec
     mGl->glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, mSceneIbo);
     mGl->glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(m.indices.size() * sizeof(std::uint32_t)),
                       m.indices.data(), GL_STATIC_DRAW);
+    mSceneWindElements = 0;
+    mSceneElements.reset();
+    mSceneSkeleton = skeleton;
+    const WindTable* table = skeleton ? windTableFor(skeleton) : nullptr;
+    if (table && uploadWind(m, *table, mSceneWindVbo)) {
+        mSceneWindElements = table->texture;
+        mSceneElements = table->elements;
+    } else {
+        mSceneSkeleton.reset();
+    }
     mGl->glBindVertexArray(0);
+    releaseWindTables(false);
 
     mSceneRanges = rangesOf(m);
     bindTextures(m, mSceneRanges);
@@ -123,6 +145,96 @@ void TreeBuffers::setMeshAttributes() {
     mGl->glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, kStride, at(offsetof(ViewVertex, uv)));
     mGl->glVertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, kStride,
                                at(offsetof(ViewVertex, occlusion)));
+}
+
+const TreeBuffers::WindTable*
+TreeBuffers::windTableFor(const std::shared_ptr<const skel::Skeleton>& skeleton) {
+    if (auto it = mWindTables.find(skeleton.get()); it != mWindTables.end())
+        return it->second.texture ? &it->second : nullptr;
+    WindTable table;
+    table.skeleton = skeleton;
+    std::vector<glm::vec4> texels;
+    try {
+        table.elements =
+            std::make_shared<const wind::WindElements>(wind::buildWindElements(*skeleton));
+        texels = windElementTexels(*table.elements);
+    } catch (...) {
+        texels.clear(); // a skeleton the model refuses: its trees stand still
+    }
+    if (mMaxBufferTexels < 0) mGl->glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &mMaxBufferTexels);
+    // Not made (the trees stand still) when there is nothing to sway or the table would not
+    // fit a buffer texture (at least 65536 texels everywhere).
+    if (!texels.empty() && texels.size() <= std::size_t(std::max(mMaxBufferTexels, 0))) {
+        mGl->glGenBuffers(1, &table.buffer);
+        mGl->glBindBuffer(GL_TEXTURE_BUFFER, table.buffer);
+        mGl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(texels.size() * sizeof(glm::vec4)),
+                          texels.data(), GL_STATIC_DRAW);
+        mGl->glGenTextures(1, &table.texture);
+        mGl->glBindTexture(GL_TEXTURE_BUFFER, table.texture);
+        mGl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, table.buffer);
+        mGl->glBindTexture(GL_TEXTURE_BUFFER, 0);
+        mGl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    }
+    const WindTable& kept = mWindTables.emplace(skeleton.get(), std::move(table)).first->second;
+    return kept.texture ? &kept : nullptr;
+}
+
+GLuint TreeBuffers::uploadWindRotations(const std::vector<glm::vec4>& rotations) {
+    if (mMaxBufferTexels < 0) mGl->glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &mMaxBufferTexels);
+    if (rotations.empty() || rotations.size() > std::size_t(std::max(mMaxBufferTexels, 0)))
+        return 0;
+    if (!mRotationsBuffer) {
+        mGl->glGenBuffers(1, &mRotationsBuffer);
+        mGl->glGenTextures(1, &mRotationsTexture);
+    }
+    mGl->glBindBuffer(GL_TEXTURE_BUFFER, mRotationsBuffer);
+    // A new store each frame: the last frame's draws may still read the old one.
+    mGl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(rotations.size() * sizeof(glm::vec4)),
+                      rotations.data(), GL_STREAM_DRAW);
+    mGl->glBindTexture(GL_TEXTURE_BUFFER, mRotationsTexture);
+    mGl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, mRotationsBuffer);
+    mGl->glBindTexture(GL_TEXTURE_BUFFER, 0);
+    mGl->glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    return mRotationsTexture;
+}
+
+bool TreeBuffers::uploadWind(const mesh::Mesh& m, const WindTable& table, GLuint& vbo) {
+    const std::vector<ViewWindVertex> data = windVertices(m, *table.elements);
+    if (data.empty()) {
+        for (GLuint a = 5; a < 8; ++a)
+            mGl->glDisableVertexAttribArray(a);
+        return false;
+    }
+    if (!vbo) mGl->glGenBuffers(1, &vbo);
+    mGl->glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    mGl->glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(ViewWindVertex)),
+                      data.data(), GL_STATIC_DRAW);
+    constexpr GLsizei kStride = sizeof(ViewWindVertex);
+    auto at = [](std::size_t offset) { return reinterpret_cast<void*>(offset); };
+    for (GLuint a = 5; a < 8; ++a)
+        mGl->glEnableVertexAttribArray(a);
+    mGl->glVertexAttribIPointer(5, 2, GL_UNSIGNED_INT, kStride,
+                                at(offsetof(ViewWindVertex, element)));
+    mGl->glVertexAttribPointer(6, 1, GL_UNSIGNED_SHORT, GL_TRUE, kStride,
+                               at(offsetof(ViewWindVertex, u)));
+    mGl->glVertexAttribPointer(7, 1, GL_HALF_FLOAT, GL_FALSE, kStride,
+                               at(offsetof(ViewWindVertex, flutter)));
+    return true;
+}
+
+void TreeBuffers::releaseWindTables(bool all) {
+    for (auto it = mWindTables.begin(); it != mWindTables.end();) {
+        bool used = !all && it->first == mSceneSkeleton.get();
+        for (const auto& [key, gpu] : mGpuTrees)
+            used = used || (!all && gpu.skeleton.get() == it->first);
+        if (used) {
+            ++it;
+            continue;
+        }
+        if (it->second.texture) mGl->glDeleteTextures(1, &it->second.texture);
+        if (it->second.buffer) mGl->glDeleteBuffers(1, &it->second.buffer);
+        it = mWindTables.erase(it);
+    }
 }
 
 void TreeBuffers::bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges) {
@@ -204,11 +316,11 @@ GLuint TreeBuffers::textureFor(const std::string& material, const std::string& f
     return id;
 }
 
-void TreeBuffers::sync(const std::vector<std::shared_ptr<const mesh::Mesh>>& meshes,
-                       std::size_t treeMeshes, std::size_t& uploads, std::size_t& levelUploads) {
+void TreeBuffers::sync(const std::vector<Source>& meshes, std::size_t treeMeshes,
+                       std::size_t& uploads, std::size_t& levelUploads) {
     std::map<const mesh::Mesh*, GpuMesh> kept;
     for (std::size_t k = 0; k < meshes.size(); ++k) {
-        const std::shared_ptr<const mesh::Mesh>& treeMesh = meshes[k];
+        const std::shared_ptr<const mesh::Mesh>& treeMesh = meshes[k].mesh;
         if (!treeMesh || treeMesh->empty() || kept.count(treeMesh.get())) continue;
         auto old = mGpuTrees.find(treeMesh.get());
         if (old != mGpuTrees.end()) {
@@ -233,12 +345,21 @@ void TreeBuffers::sync(const std::vector<std::shared_ptr<const mesh::Mesh>>& mes
                           GLsizeiptr(treeMesh->indices.size() * sizeof(std::uint32_t)),
                           treeMesh->indices.data(), GL_STATIC_DRAW);
         setMeshAttributes();
+        if (const std::shared_ptr<const skel::Skeleton>& skeleton = meshes[k].skeleton) {
+            const WindTable* table = windTableFor(skeleton);
+            if (table && uploadWind(*treeMesh, *table, gpu.windVbo)) {
+                gpu.windElements = table->texture;
+                gpu.skeleton = skeleton;
+                gpu.elements = table->elements;
+            }
+        }
         mGl->glBindVertexArray(0);
         ++(k < treeMeshes ? uploads : levelUploads);
         kept.emplace(treeMesh.get(), std::move(gpu));
     }
     releaseTrees(); // those no tree draws any more
     mGpuTrees = std::move(kept);
+    releaseWindTables(false);
 }
 
 const TreeBuffers::GpuMesh* TreeBuffers::find(const mesh::Mesh* m) const {
@@ -251,6 +372,7 @@ void TreeBuffers::releaseTrees() {
         mGl->glDeleteVertexArrays(1, &gpu.vao);
         mGl->glDeleteBuffers(1, &gpu.vbo);
         mGl->glDeleteBuffers(1, &gpu.ibo);
+        if (gpu.windVbo) mGl->glDeleteBuffers(1, &gpu.windVbo);
     }
     mGpuTrees.clear();
 }

@@ -19,6 +19,12 @@
 namespace sylva::mesh {
 struct Mesh;
 }
+namespace sylva::skel {
+struct Skeleton;
+}
+namespace sylva::wind {
+struct WindElements;
+}
 
 namespace sylva::ui {
 
@@ -48,6 +54,18 @@ public:
         std::shared_ptr<const mesh::Mesh> mesh;
         GLuint vao = 0, vbo = 0, ibo = 0;
         std::vector<DrawRange> ranges;
+        /// The wind data (ui/generation/windvertexdata.h): the per-vertex buffer (attributes
+        /// 5..7 of the vao) and the buffer texture of its skeleton's sway elements; 0 when the
+        /// mesh has no node ids or no skeleton came with it (it then stands still).
+        GLuint windVbo = 0;
+        GLuint windElements = 0;
+        std::shared_ptr<const skel::Skeleton> skeleton;     ///< the element table's key
+        std::shared_ptr<const wind::WindElements> elements; ///< its elements, for each frame
+    };
+    /// A mesh to keep on the GPU and the skeleton it was made from (null: no wind data).
+    struct Source {
+        std::shared_ptr<const mesh::Mesh> mesh;
+        std::shared_ptr<const skel::Skeleton> skeleton;
     };
 
     /// Linear-space albedo of the materials; the fragment shader outputs sRGB.
@@ -66,9 +84,20 @@ public:
     /// \p colors when they match its vertices; \p prepared: its vertices made on a worker, used
     /// when they fit and no colours replace theirs. False (nothing uploaded) when an index is
     /// out of range.
+    /// \p skeleton: what the mesh was made from, for its wind data (null: none).
     bool uploadScene(const mesh::Mesh* m, const std::vector<glm::vec3>& colors,
-                     const std::vector<ViewVertex>* prepared);
+                     const std::vector<ViewVertex>* prepared,
+                     const std::shared_ptr<const skel::Skeleton>& skeleton = nullptr);
     GLuint sceneVao() const { return mSceneVao; }
+    /// The scene mesh's sway elements (a buffer texture), 0 when it has no wind data.
+    GLuint sceneWindElements() const { return mSceneWindElements; }
+    const std::shared_ptr<const wind::WindElements>& sceneElements() const {
+        return mSceneElements;
+    }
+    /// Uploads the frame's element rotations (appendWindRotations of every swaying tree, one
+    /// after the other) into one buffer texture, and returns it (0 when \p rotations is empty
+    /// or larger than a buffer texture holds).
+    GLuint uploadWindRotations(const std::vector<glm::vec4>& rotations);
     const std::vector<DrawRange>& sceneRanges() const { return mSceneRanges; }
     /// Whether the uploaded scene mesh holds attribute colours.
     bool sceneVertexColors() const { return mSceneVertexColors; }
@@ -76,8 +105,10 @@ public:
     /// Keeps the buffers of \p meshes (uploading those not on the GPU yet) and frees the rest.
     /// The first \p treeMeshes are the trees' own meshes, counted in \p uploads; the rest
     /// (coarser levels) in \p levelUploads.
-    void sync(const std::vector<std::shared_ptr<const mesh::Mesh>>& meshes, std::size_t treeMeshes,
-              std::size_t& uploads, std::size_t& levelUploads);
+    /// Each mesh's wind data is made from its skeleton when it is uploaded; meshes of one
+    /// skeleton (a tree's levels) share its element table.
+    void sync(const std::vector<Source>& meshes, std::size_t treeMeshes, std::size_t& uploads,
+              std::size_t& levelUploads);
     const GpuMesh* find(const mesh::Mesh* m) const;
     bool hasTrees() const { return !mGpuTrees.empty(); }
     std::size_t treeMeshCount() const { return mGpuTrees.size(); }
@@ -86,6 +117,20 @@ public:
     const QStringList& textureProblems() const { return mTextureProblems; }
 
 private:
+    /// A skeleton's sway elements: on the CPU for the wind data of each of its meshes, on the
+    /// GPU as a buffer texture for the shader.
+    struct WindTable {
+        std::shared_ptr<const skel::Skeleton> skeleton; ///< kept alive for the key
+        std::shared_ptr<const wind::WindElements> elements;
+        GLuint buffer = 0, texture = 0;
+    };
+    /// The table of \p skeleton, made when missing; null when it has too many elements for a
+    /// buffer texture.
+    const WindTable* windTableFor(const std::shared_ptr<const skel::Skeleton>& skeleton);
+    /// Uploads the wind data of \p m into \p vbo and points the bound vao's attributes 5..7
+    /// at it; false (attributes off) when \p m has no node ids.
+    bool uploadWind(const mesh::Mesh& m, const WindTable& table, GLuint& vbo);
+    void releaseWindTables(bool all);
     void setMeshAttributes();
     /// The textures of \p m's submeshes on \p ranges (rangesOf's order).
     void bindTextures(const mesh::Mesh& m, std::vector<DrawRange>& ranges);
@@ -100,6 +145,12 @@ private:
     QOpenGLFunctions_3_3_Core* mGl = nullptr;
     std::function<void(const QString&)> mProblem;
     GLuint mSceneVao = 0, mSceneVbo = 0, mSceneIbo = 0;
+    GLuint mSceneWindVbo = 0, mSceneWindElements = 0;
+    std::shared_ptr<const wind::WindElements> mSceneElements;
+    GLuint mRotationsBuffer = 0, mRotationsTexture = 0;
+    GLint mMaxBufferTexels = -1;
+    std::shared_ptr<const skel::Skeleton> mSceneSkeleton;
+    std::map<const skel::Skeleton*, WindTable> mWindTables;
     std::vector<DrawRange> mSceneRanges;
     bool mSceneVertexColors = false;
     std::map<const mesh::Mesh*, GpuMesh> mGpuTrees;

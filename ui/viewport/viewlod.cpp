@@ -253,4 +253,15 @@ std::vector<std::shared_ptr<const mesh::Mesh>> ViewLod::allLevelMeshes() const {
     return out;
 }
 
+std::vector<std::shared_ptr<const mesh::Mesh>>
+ViewLod::levelMeshesOf(const mesh::Mesh* full) const {
+    std::vector<std::shared_ptr<const mesh::Mesh>> out;
+    auto it = mLevels.find(full);
+    if (it == mLevels.end()) return out;
+    for (int k = 1; k < kLevels; ++k)
+        if (it->second.levels[std::size_t(k)]) out.push_back(it->second.levels[std::size_t(k)]);
+    if (it->second.motion) out.push_back(it->second.motion);
+    return out;
+}
+
 } // namespace sylva::ui

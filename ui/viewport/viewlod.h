@@ -78,6 +78,8 @@ public:
     std::shared_ptr<const mesh::Mesh> levelMesh(const mesh::Mesh* full, int level) const;
     /// Every distinct mesh of every level (for the GPU buffers).
     std::vector<std::shared_ptr<const mesh::Mesh>> allLevelMeshes() const;
+    /// The coarser levels (and motion level) made for the tree whose full mesh is \p full.
+    std::vector<std::shared_ptr<const mesh::Mesh>> levelMeshesOf(const mesh::Mesh* full) const;
 
     /// Trees whose levels are still being made.
     std::size_t pending() const { return mQueue.size() + (mRunning ? mRunningCount : 0); }

@@ -18,6 +18,7 @@
 
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "ui/generation/windvertexdata.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewportsurface.h"
 
@@ -75,6 +76,12 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     mBakeTimer->setSingleShot(true);
     mBakeTimer->setInterval(100);
     connect(mBakeTimer, &QTimer::timeout, this, [this] { update(); });
+    mWindTimer = new QTimer(this);
+    // About 60 frames a second at most while the wind clock runs; a slower renderer draws
+    // as fast as it can (updates coalesce).
+    mWindTimer->setInterval(16);
+    connect(mWindTimer, &QTimer::timeout, this, [this] { update(); });
+    mWindClock.start();
     mLod = new ViewLod(this);
     connect(mLod, &ViewLod::levelsReady, this, [this] {
         mTreesDirty = true;
@@ -134,9 +141,11 @@ bool Viewport::event(QEvent* event) {
 }
 
 void Viewport::setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame,
-                       std::shared_ptr<const std::vector<ViewVertex>> vertices) {
+                       std::shared_ptr<const std::vector<ViewVertex>> vertices,
+                       std::shared_ptr<const skel::Skeleton> skeleton) {
     mMesh = std::move(mesh);
     mMeshVertices = std::move(vertices);
+    mMeshSkeleton = std::move(skeleton);
     mVertexColors.clear();
     mMeshDirty = true;
     updateBounds();
@@ -185,6 +194,50 @@ void Viewport::setGridVisible(bool visible) {
     update();
 }
 
+void Viewport::setWindEnabled(bool on) {
+    if (on == mWindOn) return;
+    mWindOn = on;
+    updateWindTimer();
+    update();
+}
+
+void Viewport::setWind(const wind::WindSettings& settings) {
+    // Keeps the clock where it is: the trees go on from their pose into the new wind.
+    mWind = settings;
+    updateWindTimer();
+    update();
+}
+
+void Viewport::setWindTime(std::optional<double> seconds) {
+    if (!seconds) {
+        if (mWindFixed) {
+            mWindClockStart = *mWindFixed;
+            mWindClock.restart();
+        }
+        mWindFixed.reset();
+    } else {
+        mWindFixed = *seconds;
+    }
+    updateWindTimer();
+    update();
+}
+
+double Viewport::windTime() const {
+    return mWindFixed ? *mWindFixed : mWindClockStart + double(mWindClock.nsecsElapsed()) * 1e-9;
+}
+
+void Viewport::updateWindTimer() {
+    const bool run = mWindOn && !mWindFixed && mWind.strength > 0.0f;
+    if (run && !mWindTimer->isActive())
+        mWindTimer->start();
+    else if (!run)
+        mWindTimer->stop();
+}
+
+wind::WindFrame Viewport::windFrameAt(float phase) const {
+    return wind::windFrame(mWind, mPaintWindTime + double(phase) * double(mWind.period));
+}
+
 float Viewport::aspect() const {
     return height() > 0 ? float(width()) / float(height()) : 1.0f;
 }
@@ -211,10 +264,12 @@ void Viewport::initializeGL() {
     // The mesh shader's variants: shaders/mesh.frag with TEXTURED and CUTOUT defined or not.
     bool meshOk = true;
     for (int v = 0; v < kMeshVariants && meshOk; ++v) {
+        if ((v & kMeshWind) && (v & kMeshInstanced)) continue; // never drawn (drawInstanced())
         QByteArray defines;
         if (v & kMeshTextured) defines += "#define TEXTURED 1\n";
         if (v & kMeshCutout) defines += "#define CUTOUT 1\n";
         if (v & kMeshInstanced) defines += "#define INSTANCED 1\n";
+        if (v & kMeshWind) defines += "#define WIND 1\n";
         mMeshPrograms[v] = buildShaderProgram(QStringLiteral("mesh.vert"),
                                               QStringLiteral("mesh.frag"), mGlError, defines);
         meshOk = mMeshPrograms[v] != nullptr;
@@ -263,7 +318,7 @@ void Viewport::uploadMesh() {
     mMeshDirty = false;
     const std::vector<ViewVertex>* prepared = mMeshVertices ? mMeshVertices.get() : nullptr;
     // A bad index would make the driver read out of bounds; refuse the mesh instead.
-    if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared))
+    if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared, mMeshSkeleton))
         mGlError = tr("The mesh has an index out of range; it is not drawn.");
 }
 
@@ -376,20 +431,24 @@ void Viewport::updateBounds() {
 
 void Viewport::syncTreeBuffers() {
     mTreesDirty = false;
-    std::vector<std::shared_ptr<const mesh::Mesh>> all;
+    // Each mesh with the skeleton it was made from (its wind data); a tree's levels share it.
+    std::vector<TreeBuffers::Source> all;
     for (const ViewTree& t : mTrees)
-        all.push_back(t.mesh);
+        all.push_back({t.mesh, t.lod.skeleton});
     for (const ViewTree& t : mPreview)
-        all.push_back(t.mesh);
+        all.push_back({t.mesh, t.lod.skeleton});
     const std::size_t treeMeshes = all.size();
+    for (const ViewTree& t : mTrees)
+        for (std::shared_ptr<const mesh::Mesh>& level : mLod->levelMeshesOf(t.mesh.get()))
+            all.push_back({std::move(level), t.lod.skeleton});
     for (std::shared_ptr<const mesh::Mesh>& level : mLod->allLevelMeshes())
-        all.push_back(std::move(level));
+        all.push_back({std::move(level), nullptr}); // listed above unless its tree is gone
     // Every level of every variant drawn: one buffer set each, whatever its instances.
     std::set<const ViewVariant*> variants;
     for (const ViewTree& t : mTrees)
         if (t.lod.instance && t.lod.variant && variants.insert(t.lod.variant.get()).second)
             for (const mesh::DistanceLevel& level : t.lod.variant->levels)
-                all.push_back(level.mesh);
+                all.push_back({level.mesh, t.lod.skeleton});
     mBuffers.sync(all, treeMeshes, mUploads, mLevelUploads);
     std::set<Impostors::Key> keys;
     for (const ViewTree& t : mTrees)
@@ -465,6 +524,8 @@ void Viewport::paintGL() {
     mDrawnPerLevel.fill(0);
     mImpostorDrawCalls = 0;
     mInstancedDrawCalls = 0;
+    mDrawnWindTriangles = 0;
+    mPaintWindTime = windTime();
     const std::vector<DrawRange>& sceneRanges = mBuffers.sceneRanges();
     if (!sceneRanges.empty() || mBuffers.hasTrees()) {
         MeshUniforms u;
@@ -472,60 +533,110 @@ void Viewport::paintGL() {
         u.eye = mCamera.eye();
         u.light = light;
         u.vertexColor = mBuffers.sceneVertexColors();
-        setMeshUniforms(u);
-        glActiveTexture(GL_TEXTURE0);
-        glBindVertexArray(mBuffers.sceneVao());
-        drawRanges(sceneRanges);
-        for (const DrawRange& r : sceneRanges)
-            mDrawnTriangles += r.indexCount / 3;
-        u.vertexColor = false;
-        setMeshUniforms(u);
-        // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
-        std::vector<const TreeDraw*> cards;
-        // Instances of a variant's level, in the order of their nearest instance: one instanced
-        // draw call per level and material for all of them.
-        std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>> groups;
-        std::map<const mesh::Mesh*, std::size_t> groupOf;
+        // What each tree draws (its level), then the frame's wind: every swaying mesh's
+        // element rotations for its tree's time, made here once and uploaded in one buffer
+        // before the first draw (a buffer changed between draws would stall the renderer).
+        struct Drawn {
+            const TreeDraw* draw = nullptr;
+            const mesh::Mesh* mesh = nullptr; ///< null: an impostor card
+            int windBase = -1;                ///< its rotations in the frame's buffer
+        };
+        std::vector<Drawn> drawns;
+        drawns.reserve(order.size());
         for (const TreeDraw& d : order) {
             const ViewTree& t = mTrees[d.index];
-            const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
             ++mDrawnTrees;
-            if (d.level == ViewLod::kImpostorLevel && mImpostors.has(impostorKey(t))) {
-                cards.push_back(&d);
-                continue;
-            }
-            if (t.lod.instance && t.lod.variant) {
+            Drawn entry{&d};
+            if ((d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) &&
+                t.lod.instance && t.lod.variant) {
                 // Below the impostor an instance draws its variant's level for its size on
                 // screen (the drawlist's choice; its coarsest while the atlas bakes).
                 const std::vector<mesh::DistanceLevel>& levels = t.lod.variant->levels;
                 const std::size_t k = d.variantLevel >= 0
                                           ? std::min(std::size_t(d.variantLevel), levels.size() - 1)
                                           : levels.size() - 1;
-                const mesh::Mesh* m = levels[k].mesh.get();
+                entry.mesh = levels[k].mesh.get();
                 ++mDrawnPerLevel[std::size_t(std::min(d.level, ViewLod::kImpostorLevel - 1))];
                 mDrawnMotion += d.motion ? 1 : 0;
-                if (highlight > 0.0f || !mBuffers.find(m)) {
-                    drawTreeMesh(*m, t.transform, highlight);
-                    continue;
-                }
-                auto [it, added] = groupOf.emplace(m, groups.size());
-                if (added) groups.push_back({m, {}});
+            } else if (d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) {
+                int used = 0;
+                bool motion = false;
+                // A frame drawn at reduced resolution while the view moves also draws the
+                // trees' motion levels; the sharp frame that follows draws them at rest.
+                entry.mesh = mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
+                ++mDrawnPerLevel[std::size_t(used)];
+                mDrawnMotion += motion ? 1 : 0;
+            }
+            drawns.push_back(entry);
+        }
+        std::vector<int> previewBases(mPreview.size(), -1);
+        int sceneBase = -1;
+        GLuint rotations = 0;
+        if (windActive()) {
+            mWindRotations.clear();
+            auto add = [this](const wind::WindElements* elements, float phase) {
+                if (!elements) return -1;
+                const int base = int(mWindRotations.size());
+                appendWindRotations(*elements, windFrameAt(phase), mWindRotations);
+                return base;
+            };
+            if (mBuffers.sceneWindElements()) sceneBase = add(mBuffers.sceneElements().get(), 0);
+            for (Drawn& d : drawns)
+                if (d.mesh)
+                    if (const TreeBuffers::GpuMesh* gpu = mBuffers.find(d.mesh);
+                        gpu && gpu->windElements)
+                        d.windBase = add(gpu->elements.get(), mTrees[d.draw->index].windPhase);
+            for (std::size_t i = 0; i < mPreview.size(); ++i)
+                if (const TreeBuffers::GpuMesh* gpu = mBuffers.find(mPreview[i].mesh.get());
+                    gpu && gpu->windElements)
+                    previewBases[i] = add(gpu->elements.get(), mPreview[i].windPhase);
+            rotations = mBuffers.uploadWindRotations(mWindRotations);
+            glActiveTexture(GL_TEXTURE3);
+            glBindTexture(GL_TEXTURE_BUFFER, rotations);
+            glActiveTexture(GL_TEXTURE0);
+        }
+        if (!rotations) sceneBase = -1;
+        u.wind = windFrameAt(0.0f);
+        u.windBase = std::max(sceneBase, 0);
+        setMeshUniforms(u);
+        glActiveTexture(GL_TEXTURE0);
+        glBindVertexArray(mBuffers.sceneVao());
+        mDrawWind = sceneBase >= 0;
+        if (mDrawWind) bindWindElements(mBuffers.sceneWindElements());
+        drawRanges(sceneRanges);
+        for (const DrawRange& r : sceneRanges) {
+            mDrawnTriangles += r.indexCount / 3;
+            if (mDrawWind) mDrawnWindTriangles += r.indexCount / 3;
+        }
+        mDrawWind = false;
+        u.vertexColor = false;
+        setMeshUniforms(u);
+        // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
+        std::vector<const TreeDraw*> cards;
+        // Instances of a variant's level, in the order of their nearest instance: one instanced
+        // draw call per level and material for all of them (swaying ones are drawn one by one).
+        std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>> groups;
+        std::map<const mesh::Mesh*, std::size_t> groupOf;
+        for (const Drawn& d : drawns) {
+            const ViewTree& t = mTrees[d.draw->index];
+            const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
+            if (!d.mesh) {
+                cards.push_back(d.draw);
+                continue;
+            }
+            if (t.lod.instance && highlight == 0.0f && d.windBase < 0) {
+                auto [it, added] = groupOf.emplace(d.mesh, groups.size());
+                if (added) groups.push_back({d.mesh, {}});
                 groups[it->second].second.push_back(t.transform);
                 continue;
             }
-            int used = 0;
-            bool motion = false;
-            // A frame drawn at reduced resolution while the view moves also draws the trees'
-            // motion levels; the sharp frame that follows draws them at rest.
-            const mesh::Mesh* drawn =
-                mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
-            ++mDrawnPerLevel[std::size_t(used)];
-            mDrawnMotion += motion ? 1 : 0;
-            drawTreeMesh(*drawn, t.transform, highlight);
+            drawTreeMesh(*d.mesh, t.transform, highlight, t.windPhase, rotations ? d.windBase : -1);
         }
         drawInstanced(groups);
-        for (const ViewTree& t : mPreview)
-            if (t.mesh) drawTreeMesh(*t.mesh, t.transform, 0.25f);
+        for (std::size_t i = 0; i < mPreview.size(); ++i)
+            if (mPreview[i].mesh)
+                drawTreeMesh(*mPreview[i].mesh, mPreview[i].transform, 0.25f, mPreview[i].windPhase,
+                             rotations ? previewBases[i] : -1);
         if (!cards.empty()) {
             mImpostors.begin(viewProj, mCamera.eye(), light);
             for (const TreeDraw* d : cards) {
@@ -560,17 +671,33 @@ void Viewport::setBand(const QRect& band) {
     update();
 }
 
-void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight) {
+void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight,
+                            float windPhase, int windBase) {
     const TreeBuffers::GpuMesh* gpu = mBuffers.find(&m);
     if (!gpu) return;
     MeshUniforms u = mMeshUniforms;
     u.model = transform;
     u.highlight = highlight;
+    mDrawWind = windBase >= 0 && gpu->windElements != 0;
+    if (mDrawWind) {
+        u.wind = windFrameAt(windPhase);
+        u.windBase = windBase;
+        bindWindElements(gpu->windElements);
+    }
     setMeshUniforms(u);
     glBindVertexArray(gpu->vao);
     drawRanges(gpu->ranges);
-    for (const DrawRange& r : gpu->ranges)
+    for (const DrawRange& r : gpu->ranges) {
         mDrawnTriangles += r.indexCount / 3;
+        if (mDrawWind) mDrawnWindTriangles += r.indexCount / 3;
+    }
+    mDrawWind = false;
+}
+
+void Viewport::bindWindElements(GLuint texture) {
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_BUFFER, texture);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 void Viewport::drawInstanced(
@@ -639,7 +766,19 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
             instances[i] = {mTrees[i].lod.variant.get(),
                             glm::length(glm::vec3(mTrees[i].transform[0]))};
     // Picking keeps the full mesh; only drawing follows the level of detail.
-    return buildDrawList(view, drawn, mTreeBounds, instances);
+    if (!windActive()) return buildDrawList(view, drawn, mTreeBounds, instances);
+    // Swaying trees reach beyond their rest boxes: widened across by half their height (the
+    // model bends a trunk at most 0.3 rad and its limbs 0.6 rad more) so that a tree at the
+    // view's edge is not culled while its crown sways into view. Heights stay as they are, and
+    // with them the level each tree is drawn at.
+    std::vector<Bounds> swaying = mTreeBounds;
+    for (Bounds& b : swaying) {
+        if (b.empty()) continue;
+        const float reach = 0.5f * (b.hi.y - b.lo.y);
+        b.lo -= glm::vec3(reach, 0.0f, reach);
+        b.hi += glm::vec3(reach, 0.0f, reach);
+    }
+    return buildDrawList(view, drawn, swaying, instances);
 }
 
 Impostors::Key Viewport::impostorKey(const ViewTree& t) {
@@ -706,6 +845,17 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
         program.setUniformValue("uHighlight", u.highlight);
         program.setUniformValue("uTexture", 0);
         program.setUniformValue("uNormalMap", 1);
+        if (variant & kMeshWind) {
+            const wind::WindFrame& w = u.wind;
+            program.setUniformValue("uWindElements", 2);
+            program.setUniformValue("uWindRotations", 3);
+            program.setUniformValue("uWindBase", u.windBase);
+            program.setUniformValue("uWindStrength", w.strength);
+            program.setUniformValue("uWindGustiness", w.gustiness);
+            program.setUniformValue("uWindTime", w.time);
+            program.setUniformValue("uWindOmega", w.omega);
+            program.setUniformValue("uWindBaseCycles", w.baseCycles);
+        }
         stamp = mMeshUniformsStamp;
     }
     return program;
@@ -715,7 +865,7 @@ void Viewport::drawRanges(const std::vector<DrawRange>& ranges, GLsizei instance
     for (const DrawRange& r : ranges) {
         QOpenGLShaderProgram& program =
             useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0) |
-                           (instances > 0 ? kMeshInstanced : 0));
+                           (mDrawWind ? kMeshWind : 0) | (instances > 0 ? kMeshInstanced : 0));
         setUniform(program, "uAlbedo", r.color);
         if (r.texture != 0) {
             glActiveTexture(GL_TEXTURE1);

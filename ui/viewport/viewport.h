@@ -5,9 +5,11 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QPoint>
@@ -20,6 +22,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/wind/windmodel.h"
 #include "ui/generation/vertexdata.h"
 #include "ui/viewport/drawlist.h"
 #include "ui/viewport/grid.h"
@@ -39,6 +42,9 @@ class QTimer;
 namespace sylva::mesh {
 struct Mesh;
 }
+namespace sylva::skel {
+struct Skeleton;
+}
 
 namespace sylva::ui {
 
@@ -48,8 +54,11 @@ struct ViewTree {
     std::uint32_t id = 0; ///< the document's tree id; 0 for trees scattered by a domain
     std::shared_ptr<const mesh::Mesh> mesh;
     glm::mat4 transform{1.0f};
-    /// What coarser levels are made from when the tree is small on screen (empty: none).
+    /// What coarser levels are made from when the tree is small on screen (empty: none); its
+    /// skeleton also gives the mesh's wind data (setWindEnabled()).
     TreeLodSource lod;
+    /// Where in the wind's loop this tree plays, 0..1 of the period (windPhaseOf(its id)).
+    float windPhase = 0.0f;
 };
 
 /// What a tool (ui/viewport/toolcontroller.h) gets from the viewport. press() returns true
@@ -108,8 +117,11 @@ public:
     /// camera frames its bounds. \p vertices: the mesh's vertices as interleaveVertices()
     /// makes them (ui/generation/vertexdata.h), when the caller made them on a worker; else the
     /// viewport makes them when it uploads.
+    /// \p skeleton: what the mesh was made from, which gives it wind data (null: it stands
+    /// still in the wind).
     void setMesh(std::shared_ptr<const mesh::Mesh> mesh, bool frame = true,
-                 std::shared_ptr<const std::vector<ViewVertex>> vertices = nullptr);
+                 std::shared_ptr<const std::vector<ViewVertex>> vertices = nullptr,
+                 std::shared_ptr<const skel::Skeleton> skeleton = nullptr);
     /// Colours the mesh per vertex (linear RGB, one per vertex, e.g. attributeColors()), or by
     /// its materials again when \p colors is empty or does not match the mesh.
     void setVertexColors(std::vector<glm::vec3> colors);
@@ -201,6 +213,23 @@ public:
     void setGridVisible(bool visible);
     bool isGridVisible() const { return mGridVisible; }
 
+    /// View ▸ Wind: trees with wind data (a skeleton and node ids) sway on the GPU by the
+    /// engine's wind model (ui/viewport/shaders/wind.glsl, docs/wind.md), each tree its
+    /// windPhase later in the loop; the view then draws frames continuously while the wind
+    /// clock runs. Impostors stand still. Off: the picture is the one without wind.
+    void setWindEnabled(bool on);
+    bool windEnabled() const { return mWindOn; }
+    /// The wind the trees sway in (the project's; the engine's default until set).
+    void setWind(const wind::WindSettings& settings);
+    const wind::WindSettings& wind() const { return mWind; }
+    /// Freezes the wind clock at \p seconds (scripts, tests and pictures: the same time gives
+    /// the same frame), or lets it run with the wall clock again (nullopt).
+    void setWindTime(std::optional<double> seconds);
+    /// The wind clock now, in seconds.
+    double windTime() const;
+    /// Triangles drawn swaying in the last frame.
+    std::size_t drawnWindTriangles() const { return mDrawnWindTriangles; }
+
     /// Culls the back faces of Sylva's bark tubes (on by default; DrawRange::twoSided says
     /// what never is). Off only for comparisons: the picture is the same.
     void setBackFaceCulling(bool on) {
@@ -284,6 +313,7 @@ private:
 
     std::shared_ptr<const mesh::Mesh> mMesh;
     std::shared_ptr<const std::vector<ViewVertex>> mMeshVertices; ///< made on a worker, or none
+    std::shared_ptr<const skel::Skeleton> mMeshSkeleton;          ///< the mesh's, or none
     std::vector<glm::vec3> mVertexColors;
     glm::vec3 mBoundsLo{-0.5f, 0.0f, -0.5f};
     glm::vec3 mBoundsHi{0.5f, 1.0f, 0.5f};
@@ -309,7 +339,11 @@ private:
     QString mGlError;
     /// The mesh shader's variants (a bit set): compiled apart so that bark does not pay for
     /// the leaves' texture and cut-out, and keeps the early depth test.
-    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshInstanced = 4, kMeshVariants = 8;
+    /// WIND sways the vertices (wind.glsl) and is drawn only for meshes with wind data;
+    /// INSTANCED takes the transform per instance (never with WIND: swaying instances are drawn
+    /// one by one, each with its own place in the wind's loop).
+    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshWind = 4, kMeshInstanced = 8,
+                         kMeshVariants = 16;
     /// shaders/mesh.vert's per-instance transform (INSTANCED), four locations from here.
     static constexpr GLuint kInstanceAttribute = 12;
     GLuint mInstanceVbo = 0;
@@ -321,6 +355,8 @@ private:
         glm::vec3 light{0.0f, 1.0f, 0.0f};
         bool vertexColor = false;
         float highlight = 0.0f;
+        wind::WindFrame wind; ///< its time is the drawn tree's
+        int windBase = 0;     ///< the drawn tree's first element in the frame's rotations
     };
     void setMeshUniforms(const MeshUniforms& uniforms);
     QOpenGLShaderProgram& useMeshProgram(int variant);
@@ -345,7 +381,25 @@ private:
     void bakeImpostors(const std::vector<TreeDraw>& order);
     /// The atlas a tree draws far away: its skeleton's (shared by a variant's instances).
     static Impostors::Key impostorKey(const ViewTree& t);
-    void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight);
+    /// \p windBase: where the mesh's element rotations start in the frame's rotations
+    /// (-1: drawn without wind).
+    void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight,
+                      float windPhase, int windBase);
+    std::vector<glm::vec4> mWindRotations; ///< the frame's, kept for its capacity
+    /// The wind's frame for a tree \p phase of the period into the loop.
+    wind::WindFrame windFrameAt(float phase) const;
+    bool mWindOn = false;
+    wind::WindSettings mWind;
+    std::optional<double> mWindFixed; ///< the frozen wind clock
+    QElapsedTimer mWindClock;
+    double mWindClockStart = 0.0; ///< the clock's seconds when it was (re)started
+    QTimer* mWindTimer = nullptr; ///< the next frame while the wind clock runs
+    bool mDrawWind = false;       ///< drawRanges() takes the WIND variant
+    std::size_t mDrawnWindTriangles = 0;
+    void updateWindTimer();
+    bool windActive() const { return mWindOn && mWind.strength > 0.0f; }
+    void bindWindElements(GLuint texture);
+    double mPaintWindTime = 0.0; ///< the wind clock at the frame's start
     /// Each variant level's instances (nearest level first) with instanced draw calls.
     void
     drawInstanced(const std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>>& groups);

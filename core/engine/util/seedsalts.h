@@ -33,6 +33,8 @@ inline constexpr std::uint64_t kPlacedTree = 0x0A11;
 /// Wind: the phase of each sway element (mixed with the element's first node) and, plus one, of
 /// each node's leaf flutter.
 inline constexpr std::uint64_t kWindPhase = 0x771D0;
+/// The editor's viewport: where in the wind's loop a tree plays, mixed with the tree's id.
+inline constexpr std::uint64_t kViewWindPhase = 0x771D7;
 /// A species' variants (forest instancing): mixed with the project seed, then the species name's
 /// hash, then the variant index.
 inline constexpr std::uint64_t kVariant = 0x5A1A7;

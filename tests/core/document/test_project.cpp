@@ -61,6 +61,20 @@ TEST(Project, RoundTripsByteIdentically) {
     EXPECT_EQ(doc::serializeProject(again), saved);
 }
 
+TEST(Project, FloatsAreSavedAsTheDecimalsTheyWereWrittenAs) {
+    // 0.3 is held as a float; widened to a double it would save as 0.30000001192092896, so an
+    // unedited project saved again would differ from its file.
+    const doc::Project p = doc::parseProject(kContract, "/proj/forest.sylva");
+    const QByteArray saved = doc::serializeProject(p);
+    EXPECT_TRUE(saved.contains("[0.3,-1,0.2]")) << saved.toStdString();
+    EXPECT_FALSE(saved.contains("0.3000000")) << saved.toStdString();
+    doc::Project windy = p;
+    windy.wind = doc::ProjectWind{{0.1f, 0.0f, -0.7f}, 0.3f, 0.1f, 0.45f};
+    const QByteArray w = doc::serializeProject(windy);
+    EXPECT_TRUE(w.contains("\"strength\": 0.3")) << w.toStdString();
+    EXPECT_TRUE(w.contains("[0.1,0,-0.7]")) << w.toStdString();
+}
+
 TEST(Project, WindIsSavedOnlyWhenSetAndRoundTrips) {
     doc::Project p = doc::parseProject(kContract, "/proj/forest.sylva");
     EXPECT_FALSE(p.wind);

@@ -24,6 +24,9 @@ echo "-- api_species.py"
 echo "-- api_wind.py"
 "$SYLVA" --discard-autosave --script "$HERE/api_wind.py" "$DEMO" || fail "api_wind.py"
 
+echo "-- view_wind.py (View > Wind, the wind clock)"
+"$SYLVA" --discard-autosave --script "$HERE/view_wind.py" "$DEMO" || fail "view_wind.py"
+
 echo "-- project_layout.py (win.project() before the first layout)"
 "$SYLVA" --discard-autosave --script "$HERE/project_layout.py" "$DEMO" || fail "project_layout.py"
 

@@ -132,7 +132,7 @@ void BrushTool::dab(const glm::vec3& centre) {
                 in.position = t.position;
                 in.rotation = float(glm::radians(t.rotation));
                 in.scale = float(t.scale);
-                preview.push_back({0, d.mesh, in.transform(), {}});
+                preview.push_back({0, d.mesh, in.transform(), {}, 0.0f});
                 break;
             }
     }
