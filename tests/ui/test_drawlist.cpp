@@ -6,12 +6,14 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/mesh/mesh.h"
 #include "ui/viewport/drawlist.h"
 #include "ui/viewport/viewlod.h"
 
 using sylva::ui::Bounds;
 using sylva::ui::buildDrawList;
 using sylva::ui::DrawListView;
+using sylva::ui::InstanceOf;
 using sylva::ui::TreeDraw;
 using sylva::ui::ViewLod;
 
@@ -37,6 +39,24 @@ Bounds tree(float x, float z) {
     b.lo = {x - 2.0f, 0.0f, z - 2.0f};
     b.hi = {x + 2.0f, 10.0f, z + 2.0f};
     return b;
+}
+
+/// A mesh of \p triangles degenerate triangles (only their count matters here).
+std::shared_ptr<const sylva::mesh::Mesh> meshOf(std::size_t triangles) {
+    auto m = std::make_shared<sylva::mesh::Mesh>();
+    m->positions.assign(3, glm::vec3(0.0f));
+    for (std::size_t t = 0; t < triangles; ++t)
+        m->indices.insert(m->indices.end(), {0u, 1u, 2u});
+    return m;
+}
+
+/// A 10 m variant with levels for 0, 25, 50 and 100 m on the reference view (1080 px, 60°).
+std::shared_ptr<sylva::ui::ViewVariant> variant() {
+    auto v = std::make_shared<sylva::ui::ViewVariant>();
+    v->height = 10.0f;
+    v->levels = {
+        {0.0, meshOf(1000)}, {25.0, meshOf(500)}, {50.0, meshOf(200)}, {100.0, meshOf(50)}};
+    return v;
 }
 
 } // namespace
@@ -97,6 +117,69 @@ private Q_SLOTS:
         QCOMPARE(list[0].distance, 0.0f);
         QCOMPARE(list[0].level, 0);
         QCOMPARE(list[1].index, std::size_t(0));
+    }
+
+    /// Instances of a variant draw the variant's level for their size on screen: farther, or
+    /// smaller (scale), is coarser, never finer; a view that moves draws coarser levels; with the
+    /// distance LOD off every instance is at the variant's full mesh.
+    void instancesTakeTheirVariantsLevelBySize() {
+        const auto v = variant();
+        // The reference view: a distance d there is the level for d.
+        const double refFov = 60.0 * 3.14159265358979323846 / 180.0;
+        QCOMPARE(sylva::ui::variantLevelFor(*v, 10.0, 1.0, refFov, 1080.0), std::size_t(0));
+        QCOMPARE(sylva::ui::variantLevelFor(*v, 30.0, 1.0, refFov, 1080.0), std::size_t(1));
+        QCOMPARE(sylva::ui::variantLevelFor(*v, 60.0, 1.0, refFov, 1080.0), std::size_t(2));
+        // Half the scale looks as small as twice the distance; half the pixels too.
+        QCOMPARE(sylva::ui::variantLevelFor(*v, 30.0, 0.5, refFov, 1080.0), std::size_t(2));
+        QCOMPARE(sylva::ui::variantLevelFor(*v, 30.0, 1.0, refFov, 540.0), std::size_t(2));
+        QCOMPARE(sylva::ui::variantLevelFor(*v, 30.0, 1.0, refFov, 1080.0, 4.0), std::size_t(3));
+
+        // Trees along -z: the triangles drawn never grow with the distance, and fall.
+        std::vector<Bounds> bounds;
+        std::vector<InstanceOf> instances;
+        for (int k = 0; k < 40; ++k) {
+            bounds.push_back(tree(0.0f, -3.0f * float(k)));
+            instances.push_back({v.get(), 1.0f});
+        }
+        const std::vector<bool> drawn(bounds.size(), true);
+        std::vector<TreeDraw> list = buildDrawList(view(), drawn, bounds, instances);
+        QCOMPARE(list.size(), bounds.size());
+        std::size_t previous = 1000, nearTriangles = 0, farTriangles = 0;
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const TreeDraw& d = list[i];
+            if (d.level == ViewLod::kImpostorLevel) {
+                QCOMPARE(d.variantLevel, -1); // the impostor, not a level
+                previous = 0;
+                continue;
+            }
+            QVERIFY(d.variantLevel >= 0);
+            const std::size_t t = v->levels[std::size_t(d.variantLevel)].mesh->triangleCount();
+            QVERIFY(t <= previous);
+            previous = t;
+            (i < 10 ? nearTriangles : farTriangles) += i < 10 || i >= 30 ? t : 0;
+        }
+        QVERIFY2(2 * farTriangles <= nearTriangles,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(farTriangles).arg(nearTriangles)));
+
+        // Moving: coarser levels, marked as motion.
+        DrawListView moving = view();
+        moving.variantFactor = 3.0;
+        const std::vector<TreeDraw> coarse = buildDrawList(moving, drawn, bounds, instances);
+        bool anyMotion = false;
+        for (std::size_t i = 0; i < coarse.size(); ++i) {
+            QVERIFY(coarse[i].variantLevel >= list[i].variantLevel);
+            QCOMPARE(coarse[i].motion, coarse[i].variantLevel > list[i].variantLevel);
+            anyMotion = anyMotion || coarse[i].motion;
+        }
+        QVERIFY(anyMotion);
+
+        DrawListView off = view();
+        off.levels = false;
+        for (const TreeDraw& d : buildDrawList(off, drawn, bounds, instances))
+            QCOMPARE(d.variantLevel, 0);
+        // Trees that are no instance have no variant level.
+        for (const TreeDraw& d : buildDrawList(view(), drawn, bounds))
+            QCOMPARE(d.variantLevel, -1);
     }
 
     void frustumPlanesSeeAStraddlingBox() {

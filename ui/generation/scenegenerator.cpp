@@ -1,6 +1,8 @@
 #include "ui/generation/scenegenerator.h"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +46,51 @@ mesh::Mesh surfaces(const env::ObstacleScene* obstacles, const env::ObstacleScen
     return out;
 }
 
+float meshHeight(const mesh::Mesh& m) {
+    float lo = 0.0f, hi = 0.0f;
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        lo = i ? std::min(lo, m.positions[i].y) : m.positions[i].y;
+        hi = i ? std::max(hi, m.positions[i].y) : m.positions[i].y;
+    }
+    return hi - lo;
+}
+
+/// The variants as the viewport draws them: their levels (the full mesh alone where the
+/// forest made none) and heights.
+std::vector<std::shared_ptr<const ViewVariant>>
+viewVariants(const std::vector<forest::ForestVariant>& variants) {
+    std::vector<std::shared_ptr<const ViewVariant>> out;
+    for (const forest::ForestVariant& v : variants) {
+        auto view = std::make_shared<ViewVariant>();
+        view->species = v.species;
+        view->levels = v.levels;
+        if (view->levels.empty() && v.mesh) view->levels.push_back({0.0, v.mesh});
+        if (view->levels.empty() || !view->levels.front().mesh) {
+            out.push_back(nullptr);
+            continue;
+        }
+        view->height = meshHeight(*view->levels.front().mesh);
+        if (v.meshSettings) {
+            view->referenceHeightPx = v.meshSettings->lod.screenHeightPx;
+            view->referenceFovYDegrees = v.meshSettings->lod.fovYDegrees;
+        }
+        out.push_back(std::move(view));
+    }
+    return out;
+}
+
+/// The variant of \p species whose height is nearest \p height (null when it has none).
+std::shared_ptr<const ViewVariant>
+nearestVariant(const std::vector<std::shared_ptr<const ViewVariant>>& variants,
+               std::uint32_t species, float height) {
+    std::shared_ptr<const ViewVariant> best;
+    for (const auto& v : variants)
+        if (v && v->species == species && v->height > 0.0f &&
+            (!best || std::abs(v->height - height) < std::abs(best->height - height)))
+            best = v;
+    return best;
+}
+
 std::uint64_t pointerKey(const void* a, const void* b) {
     return mixSeed(reinterpret_cast<std::uintptr_t>(a), reinterpret_cast<std::uintptr_t>(b));
 }
@@ -82,9 +129,12 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             caches->ground = forest.ground;
         }
         // Formats with instancing (glTF) write each variant once: File ▸ Export hands them over.
-        options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
-            for (const forest::ForestVariant& v : variants)
+        // The viewport draws each variant's levels once per frame for all its instances.
+        std::vector<std::shared_ptr<const ViewVariant>> variants;
+        options.onVariants = [&](const std::vector<forest::ForestVariant>& made) {
+            for (const forest::ForestVariant& v : made)
                 result.exportVariants.push_back({v.name, v.mesh});
+            variants = viewVariants(made);
         };
         double height = 0.0;
         const forest::ForestStats stats = forest::buildForest(
@@ -106,6 +156,19 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                         drawn.lod.skeleton = tree.skeleton;
                         drawn.lod.settings = tree.meshSettings;
                         drawn.lod.builtDistance = tree.meshCameraDistance;
+                    }
+                    // Instances draw their variant's levels; a unique tree far away draws the
+                    // impostor of its species' variant nearest its height, scaled to it (one
+                    // atlas per variant, not one per unique tree: issue 32).
+                    const auto v = static_cast<std::size_t>(tree.variant);
+                    if (tree.variant >= 0 && v < variants.size() && variants[v]) {
+                        drawn.lod.variant = variants[v];
+                        drawn.lod.instance = true;
+                    } else if (tree.mesh && !tree.mesh->positions.empty()) {
+                        const float h = meshHeight(*tree.mesh);
+                        drawn.lod.variant = nearestVariant(variants, tree.instance.species, h);
+                        if (drawn.lod.variant)
+                            drawn.lod.impostorScale = h / drawn.lod.variant->height;
                     }
                     height = std::max(height, tree.metrics.heightM);
                     result.trees.push_back(std::move(drawn));

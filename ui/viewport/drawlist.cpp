@@ -1,6 +1,7 @@
 #include "ui/viewport/drawlist.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "ui/viewport/viewlod.h"
 
@@ -27,8 +28,20 @@ bool intersectsFrustum(const std::array<glm::vec4, 6>& planes, const Bounds& b) 
     return true;
 }
 
+std::size_t variantLevelFor(const ViewVariant& variant, double distance, double scale, double fovY,
+                            double viewportHeightPx, double factor) {
+    if (variant.levels.size() <= 1 || viewportHeightPx <= 0.0 || scale <= 1e-6) return 0;
+    const double refFov = variant.referenceFovYDegrees * 3.14159265358979323846 / 180.0;
+    // The same projected height at the reference view: d' = d · (ref / viewport) ·
+    // tan(fov/2) / tan(ref/2), in the variant's own frame (scale 1).
+    const double d = distance / scale * (variant.referenceHeightPx / viewportHeightPx) *
+                     (std::tan(0.5 * fovY) / std::tan(0.5 * refFov)) * factor;
+    return mesh::levelFor(variant.levels, d);
+}
+
 std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<bool>& drawn,
-                                    const std::vector<Bounds>& bounds) {
+                                    const std::vector<Bounds>& bounds,
+                                    const std::vector<InstanceOf>& instances) {
     // Frustum culling: a tree whose world box lies outside one of the six planes is not drawn
     // (a forest seen from inside draws only what is in front of the camera).
     const std::array<glm::vec4, 6> planes = frustumPlanes(view.viewProj);
@@ -47,6 +60,16 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
                 d.level = ViewLod::levelFor(
                     ViewLod::equivalentHeights(double(d.distance), double(b.hi.y - b.lo.y),
                                                double(view.fovY), view.viewportHeightPx));
+            if (i < instances.size() && instances[i].variant &&
+                d.level != ViewLod::kImpostorLevel) {
+                const InstanceOf& of = instances[i];
+                const auto levelAt = [&](double factor) {
+                    return int(variantLevelFor(*of.variant, double(d.distance), double(of.scale),
+                                               double(view.fovY), view.viewportHeightPx, factor));
+                };
+                d.variantLevel = levelAt(view.levels ? view.variantFactor : 0.0);
+                d.motion = view.levels && view.variantFactor > 1.0 && d.variantLevel > levelAt(1.0);
+            }
         }
         order.push_back(d);
     }

@@ -1,7 +1,10 @@
 #include "ui/viewport/impostors.h"
 
 #include <QOpenGLShaderProgram>
+#include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
 
@@ -38,6 +41,10 @@ bool Impostors::initialize(QOpenGLFunctions_3_3_Core* gl, QString& error) {
 }
 
 void Impostors::release() {
+    // The worker's atlases are dropped; its thread finishes the one it bakes.
+    for (auto& [key, job] : mBaking)
+        job.future.waitForFinished();
+    mBaking.clear();
     if (!mGl) return;
     for (auto& [key, card] : mCards) {
         const GLuint textures[3] = {card.color, card.normal, card.depth};
@@ -73,26 +80,94 @@ GLuint Impostors::upload(const Image& image) {
     return t;
 }
 
-void Impostors::bake(Key key, std::shared_ptr<const void> owner, const mesh::Mesh& source,
-                     const mesh::ImpostorMaterials& materials) {
-    if (!mGl || !mProgram || !key || source.triangleCount() == 0 || has(key)) return;
-    mesh::ImpostorSettings settings;
-    settings.grid = kGrid;
-    settings.cellPixels = kCell;
-    settings.supersample = 2;
-    const mesh::Impostor imp = mesh::bakeImpostor(source, materials, settings);
-    Card card;
-    card.owner = std::move(owner);
-    card.centre = imp.centre;
-    card.radius = imp.radius;
-    card.color = upload(imp.color);
-    card.normal = upload(imp.normal);
-    card.depth = upload(imp.depth);
-    mGl->glBindTexture(GL_TEXTURE_2D, 0);
-    mCards.emplace(key, std::move(card));
+void Impostors::request(Key key, std::shared_ptr<const void> owner,
+                        std::shared_ptr<const mesh::Mesh> source,
+                        mesh::ImpostorMaterials materials) {
+    if (!mGl || !mProgram || !key || !source || source->triangleCount() == 0 || has(key) ||
+        isBaking(key))
+        return;
+    mPool.setMaxThreadCount(1);
+    Baking job;
+    job.owner = std::move(owner);
+    job.future =
+        QtConcurrent::run(&mPool, [source = std::move(source), materials = std::move(materials)]() {
+            // Not niced (the levels' worker is): a few atlases a forest, one per variant, and
+            // until they are baked its far trees draw meshes, which costs every frame; niced,
+            // they waited minutes on a loaded machine.
+            mesh::ImpostorSettings settings;
+            settings.grid = kGrid;
+            settings.cellPixels = kCell;
+            settings.supersample = 2;
+            Baked baked;
+            try {
+                baked.impostor = mesh::bakeImpostor(*source, materials, settings);
+                baked.extent = cardExtent(baked.impostor);
+            } catch (...) {
+                baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
+            }
+            return baked;
+        });
+    mBaking.emplace(key, std::move(job));
+}
+
+glm::vec3 Impostors::cardExtent(const mesh::Impostor& imp) {
+    const Image& color = imp.color;
+    const int grid = imp.settings.grid, cell = imp.settings.cellPixels;
+    if (color.channels != 4 || grid <= 0 || cell <= 0 || color.width != grid * cell ||
+        color.height != grid * cell)
+        return {1.0f, -1.0f, 1.0f};
+    float x = 0.0f, lo = 1.0f, hi = -1.0f;
+    for (int py = 0; py < color.height; ++py)
+        for (int px = 0; px < color.width; ++px) {
+            if (color.pixels[(std::size_t(py) * std::size_t(color.width) + std::size_t(px)) * 4 +
+                             3] == 0)
+                continue;
+            // The texel's place on its view's card: x right, y up, -1..1.
+            const float cx = 2.0f * (float(px % cell) + 0.5f) / float(cell) - 1.0f;
+            const float cy = 1.0f - 2.0f * (float(py % cell) + 0.5f) / float(cell);
+            x = std::max(x, std::abs(cx));
+            lo = std::min(lo, cy);
+            hi = std::max(hi, cy);
+        }
+    if (hi < lo) return {1.0f, -1.0f, 1.0f};
+    // The blend of three views reprojected through their depth reaches a little past each
+    // view's own silhouette (neighbouring views are 90° / (grid - 1) apart): a margin of a
+    // tenth of the radius and two texels.
+    const float margin = 0.1f + 4.0f / float(cell);
+    return {std::min(1.0f, x + margin), std::max(-1.0f, lo - margin), std::min(1.0f, hi + margin)};
+}
+
+std::size_t Impostors::collect() {
+    std::size_t n = 0;
+    for (auto it = mBaking.begin(); it != mBaking.end();) {
+        if (!it->second.future.isFinished()) {
+            ++it;
+            continue;
+        }
+        const Baked baked = it->second.future.result();
+        const mesh::Impostor& imp = baked.impostor;
+        if (mGl && !imp.color.pixels.empty()) {
+            Card card;
+            card.owner = std::move(it->second.owner);
+            card.centre = imp.centre;
+            card.radius = imp.radius;
+            card.extent = baked.extent;
+            card.color = upload(imp.color);
+            card.normal = upload(imp.normal);
+            card.depth = upload(imp.depth);
+            mGl->glBindTexture(GL_TEXTURE_2D, 0);
+            mCards.emplace(it->first, std::move(card));
+            ++n;
+        }
+        it = mBaking.erase(it);
+    }
+    return n;
 }
 
 void Impostors::retain(const std::function<bool(Key)>& keep) {
+    // A job for a key no longer kept finishes on the worker (it holds its own mesh) unheard.
+    for (auto it = mBaking.begin(); it != mBaking.end();)
+        it = keep(it->first) ? std::next(it) : mBaking.erase(it);
     for (auto it = mCards.begin(); it != mCards.end();) {
         if (keep(it->first)) {
             ++it;
@@ -140,6 +215,7 @@ std::size_t Impostors::end() {
         const Card& c = card->second;
         setUniform(*mProgram, "uCentre", c.centre);
         mProgram->setUniformValue("uRadius", c.radius);
+        setUniform(*mProgram, "uExtent", c.extent);
         gl.glActiveTexture(GL_TEXTURE2);
         gl.glBindTexture(GL_TEXTURE_2D, c.depth);
         gl.glActiveTexture(GL_TEXTURE1);

@@ -5,8 +5,10 @@
 #include <memory>
 #include <vector>
 
+#include <QFuture>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QString>
+#include <QThreadPool>
 
 #include <glm/glm.hpp>
 
@@ -24,9 +26,10 @@ namespace sylva::ui {
 /// high drawn as one camera-facing card with the engine's baked hemi-octahedral impostor
 /// (mesh::bakeImpostor, the same atlas `sylva-cli lods` writes, docs/lods.md): the three atlas
 /// views around the view direction blended and reprojected through their depth (no popping
-/// while the view turns), lit with the atlas' normals like the meshes. Atlases are baked on the
-/// GUI thread at paint time from the tree's coarsest mesh level, a few per frame (bake()), and
-/// kept per full mesh (instances of a variant share theirs) while a tree draws it.
+/// while the view turns), lit with the atlas' normals like the meshes. Atlases are baked on a
+/// worker thread (request(); the GUI thread only uploads them, collect()) from a coarse mesh
+/// level, and kept per key while a tree draws it: one per variant (its instances and the
+/// unique trees of its species it stands in for share it), or one per tree without a variant.
 class Impostors {
 public:
     /// The atlas: kGrid × kGrid views of kCell pixels.
@@ -42,10 +45,22 @@ public:
     /// variant share it, whatever level of detail each draws), else its mesh.
     using Key = const void*;
     bool has(Key key) const { return mCards.count(key) > 0; }
-    /// Bakes the impostor of the tree \p key (kept alive by \p owner) from \p source (a coarse
-    /// level of it: the atlas' views are a few dozen pixels) and uploads its maps.
-    void bake(Key key, std::shared_ptr<const void> owner, const mesh::Mesh& source,
-              const mesh::ImpostorMaterials& materials);
+    /// Whether the atlas of \p key is being baked.
+    bool isBaking(Key key) const { return mBaking.count(key) > 0; }
+    /// Atlases being baked.
+    std::size_t baking() const { return mBaking.size(); }
+    /// Starts baking the impostor of \p key (kept alive by \p owner) on the worker from
+    /// \p source (a coarse level: the atlas' views are a few dozen pixels); nothing when it is
+    /// baked or being baked.
+    void request(Key key, std::shared_ptr<const void> owner,
+                 std::shared_ptr<const mesh::Mesh> source, mesh::ImpostorMaterials materials);
+    /// Uploads the atlases the worker finished (context current); returns how many.
+    std::size_t collect();
+    /// The card's part that any view of \p imp covers, in units of the bounding sphere's radius
+    /// around its centre: (x, y_min, y_max), the card spanning [-x, x] × [y_min, y_max] (a
+    /// tree is narrower than high: most of the square card is empty, and a software renderer
+    /// pays for every pixel of it), with a margin for the views' blending. (1, -1, 1) at most.
+    static glm::vec3 cardExtent(const mesh::Impostor& imp);
     /// Drops the impostors whose key \p keep does not accept.
     void retain(const std::function<bool(Key)>& keep);
     std::size_t size() const { return mCards.size(); }
@@ -63,6 +78,12 @@ private:
         GLuint color = 0, normal = 0, depth = 0;
         glm::vec3 centre{0.0f};
         float radius = 1.0f;
+        /// The part of the card any view covers (cardExtent()).
+        glm::vec3 extent{1.0f, -1.0f, 1.0f};
+    };
+    struct Baked {
+        mesh::Impostor impostor;
+        glm::vec3 extent{1.0f, -1.0f, 1.0f};
     };
     struct Instance {
         glm::mat4 model;
@@ -74,6 +95,12 @@ private:
     GLuint mVao = 0, mInstances = 0;
     std::map<Key, std::vector<Instance>> mQueue;
     std::map<Key, Card> mCards;
+    struct Baking {
+        std::shared_ptr<const void> owner;
+        QFuture<Baked> future;
+    };
+    std::map<Key, Baking> mBaking;
+    QThreadPool mPool; ///< one thread
 };
 
 } // namespace sylva::ui

@@ -111,6 +111,7 @@ public:
               std::size_t& levelUploads);
     const GpuMesh* find(const mesh::Mesh* m) const;
     bool hasTrees() const { return !mGpuTrees.empty(); }
+    std::size_t treeMeshCount() const { return mGpuTrees.size(); }
 
     /// Texture files drawn without their texture, one line each, in the order met.
     const QStringList& textureProblems() const { return mTextureProblems; }

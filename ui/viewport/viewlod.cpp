@@ -65,9 +65,13 @@ double ViewLod::levelHeights(int level) {
 }
 
 int ViewLod::levelFor(double equivalentHeights) {
+    static const double impostorAt = qEnvironmentVariableIsSet("SYLVA_IMPOSTOR_HEIGHTS")
+                                         ? qEnvironmentVariable("SYLVA_IMPOSTOR_HEIGHTS").toDouble()
+                                         : kLevelHeights[kImpostorLevel];
     int level = 0;
-    for (int k = 1; k < kLevels; ++k)
+    for (int k = 1; k < kImpostorLevel; ++k)
         if (equivalentHeights >= kLevelHeights[k]) level = k;
+    if (equivalentHeights >= impostorAt) level = kImpostorLevel;
     return level;
 }
 
@@ -110,7 +114,8 @@ void ViewLod::setTrees(
     for (const auto& [full, source] : trees) {
         if (!full || alive.count(full.get())) continue;
         alive.emplace(full.get(), full);
-        if (!mEnabled || !source.skeleton || !source.settings) continue;
+        // Instances draw their variant's levels, made once per variant by the forest.
+        if (!mEnabled || !source.skeleton || !source.settings || source.instance) continue;
         if (mLevels.count(full.get()) || mRunningKeys.count(full.get())) continue;
         queue.push_back({full, source});
     }
@@ -228,6 +233,14 @@ const mesh::Mesh* ViewLod::meshFor(const mesh::Mesh* full, int level, int* used,
         return motion;
     }
     return chosen;
+}
+
+std::shared_ptr<const mesh::Mesh> ViewLod::levelMesh(const mesh::Mesh* full, int level) const {
+    auto it = mLevels.find(full);
+    if (!mEnabled || it == mLevels.end()) return nullptr;
+    for (int k = std::min(level, kLevels - 1); k > 0; --k)
+        if (it->second.levels[std::size_t(k)]) return it->second.levels[std::size_t(k)];
+    return nullptr;
 }
 
 std::vector<std::shared_ptr<const mesh::Mesh>> ViewLod::allLevelMeshes() const {

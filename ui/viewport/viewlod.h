@@ -74,6 +74,8 @@ public:
     /// moves, a software renderer draws every tree as if it were this many times as far (the
     /// sharp frame at rest draws the levels above).
     static constexpr double kMotionFactor = 3.0;
+    /// The coarsest built level of \p full not above \p level (1..), shared; null when none.
+    std::shared_ptr<const mesh::Mesh> levelMesh(const mesh::Mesh* full, int level) const;
     /// Every distinct mesh of every level (for the GPU buffers).
     std::vector<std::shared_ptr<const mesh::Mesh>> allLevelMeshes() const;
     /// The coarser levels (and motion level) made for the tree whose full mesh is \p full.

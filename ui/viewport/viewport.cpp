@@ -71,6 +71,11 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
         mSharpNext = true;
         update();
     });
+    // While atlases bake on the worker, a frame now and then uploads the finished ones.
+    mBakeTimer = new QTimer(this);
+    mBakeTimer->setSingleShot(true);
+    mBakeTimer->setInterval(100);
+    connect(mBakeTimer, &QTimer::timeout, this, [this] { update(); });
     mWindTimer = new QTimer(this);
     // About 60 frames a second at most while the wind clock runs; a slower renderer draws
     // as fast as it can (updates coalesce).
@@ -259,9 +264,11 @@ void Viewport::initializeGL() {
     // The mesh shader's variants: shaders/mesh.frag with TEXTURED and CUTOUT defined or not.
     bool meshOk = true;
     for (int v = 0; v < kMeshVariants && meshOk; ++v) {
+        if ((v & kMeshWind) && (v & kMeshInstanced)) continue; // never drawn (drawInstanced())
         QByteArray defines;
         if (v & kMeshTextured) defines += "#define TEXTURED 1\n";
         if (v & kMeshCutout) defines += "#define CUTOUT 1\n";
+        if (v & kMeshInstanced) defines += "#define INSTANCED 1\n";
         if (v & kMeshWind) defines += "#define WIND 1\n";
         mMeshPrograms[v] = buildShaderProgram(QStringLiteral("mesh.vert"),
                                               QStringLiteral("mesh.frag"), mGlError, defines);
@@ -283,6 +290,7 @@ void Viewport::initializeGL() {
     });
     mGrid.initialize(this);
     glGenVertexArrays(1, &mEmptyVao);
+    glGenBuffers(1, &mInstanceVbo);
     mOverlays.initialize(this);
     mGlReady = true;
     mMeshDirty = true;
@@ -297,6 +305,8 @@ void Viewport::releaseGl() {
     mGrid.release();
     glDeleteVertexArrays(1, &mEmptyVao);
     mEmptyVao = 0;
+    glDeleteBuffers(1, &mInstanceVbo);
+    mInstanceVbo = 0;
     for (auto& program : mMeshPrograms)
         program.reset();
     mLineProgram.reset();
@@ -433,6 +443,12 @@ void Viewport::syncTreeBuffers() {
             all.push_back({std::move(level), t.lod.skeleton});
     for (std::shared_ptr<const mesh::Mesh>& level : mLod->allLevelMeshes())
         all.push_back({std::move(level), nullptr}); // listed above unless its tree is gone
+    // Every level of every variant drawn: one buffer set each, whatever its instances.
+    std::set<const ViewVariant*> variants;
+    for (const ViewTree& t : mTrees)
+        if (t.lod.instance && t.lod.variant && variants.insert(t.lod.variant.get()).second)
+            for (const mesh::DistanceLevel& level : t.lod.variant->levels)
+                all.push_back({level.mesh, t.lod.skeleton});
     mBuffers.sync(all, treeMeshes, mUploads, mLevelUploads);
     std::set<Impostors::Key> keys;
     for (const ViewTree& t : mTrees)
@@ -464,9 +480,6 @@ void Viewport::paintGL() {
     // readable from every side.
     const glm::vec3 light =
         glm::normalize(-0.5f * mCamera.forward() + 0.8f * mCamera.up() - 0.6f * mCamera.right());
-    const std::vector<TreeDraw> order = treesToDraw(viewProj);
-    bakeImpostors(order);
-
     // While the view moves, a software renderer draws fewer pixels (motionScale()); the sharp
     // frame follows when it rests.
     const bool moving = viewProj != mLastViewProj || mTransformsMoved;
@@ -483,6 +496,9 @@ void Viewport::paintGL() {
         mSharpTimer->start();
     }
     mSharpNext = false;
+    mLastDrawList = treesToDraw(viewProj);
+    const std::vector<TreeDraw>& order = mLastDrawList;
+    bakeImpostors(order);
 
     glClearColor(kBackgroundBottom.x, kBackgroundBottom.y, kBackgroundBottom.z, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -507,6 +523,7 @@ void Viewport::paintGL() {
     mDrawnMotion = 0;
     mDrawnPerLevel.fill(0);
     mImpostorDrawCalls = 0;
+    mInstancedDrawCalls = 0;
     mDrawnWindTriangles = 0;
     mPaintWindTime = windTime();
     const std::vector<DrawRange>& sceneRanges = mBuffers.sceneRanges();
@@ -530,7 +547,18 @@ void Viewport::paintGL() {
             const ViewTree& t = mTrees[d.index];
             ++mDrawnTrees;
             Drawn entry{&d};
-            if (d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) {
+            if ((d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) &&
+                t.lod.instance && t.lod.variant) {
+                // Below the impostor an instance draws its variant's level for its size on
+                // screen (the drawlist's choice; its coarsest while the atlas bakes).
+                const std::vector<mesh::DistanceLevel>& levels = t.lod.variant->levels;
+                const std::size_t k = d.variantLevel >= 0
+                                          ? std::min(std::size_t(d.variantLevel), levels.size() - 1)
+                                          : levels.size() - 1;
+                entry.mesh = levels[k].mesh.get();
+                ++mDrawnPerLevel[std::size_t(std::min(d.level, ViewLod::kImpostorLevel - 1))];
+                mDrawnMotion += d.motion ? 1 : 0;
+            } else if (d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) {
                 int used = 0;
                 bool motion = false;
                 // A frame drawn at reduced resolution while the view moves also draws the
@@ -585,6 +613,10 @@ void Viewport::paintGL() {
         setMeshUniforms(u);
         // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
         std::vector<const TreeDraw*> cards;
+        // Instances of a variant's level, in the order of their nearest instance: one instanced
+        // draw call per level and material for all of them (swaying ones are drawn one by one).
+        std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>> groups;
+        std::map<const mesh::Mesh*, std::size_t> groupOf;
         for (const Drawn& d : drawns) {
             const ViewTree& t = mTrees[d.draw->index];
             const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
@@ -592,8 +624,15 @@ void Viewport::paintGL() {
                 cards.push_back(d.draw);
                 continue;
             }
+            if (t.lod.instance && highlight == 0.0f && d.windBase < 0) {
+                auto [it, added] = groupOf.emplace(d.mesh, groups.size());
+                if (added) groups.push_back({d.mesh, {}});
+                groups[it->second].second.push_back(t.transform);
+                continue;
+            }
             drawTreeMesh(*d.mesh, t.transform, highlight, t.windPhase, rotations ? d.windBase : -1);
         }
+        drawInstanced(groups);
         for (std::size_t i = 0; i < mPreview.size(); ++i)
             if (mPreview[i].mesh)
                 drawTreeMesh(*mPreview[i].mesh, mPreview[i].transform, 0.25f, mPreview[i].windPhase,
@@ -602,7 +641,12 @@ void Viewport::paintGL() {
             mImpostors.begin(viewProj, mCamera.eye(), light);
             for (const TreeDraw* d : cards) {
                 const ViewTree& t = mTrees[d->index];
-                mImpostors.draw(impostorKey(t), t.transform,
+                // A unique tree standing in with its variant's atlas: scaled to its height.
+                const glm::mat4 model =
+                    t.lod.impostorScale != 1.0f
+                        ? glm::scale(t.transform, glm::vec3(t.lod.impostorScale))
+                        : t.transform;
+                mImpostors.draw(impostorKey(t), model,
                                 t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
                 ++mDrawnPerLevel[ViewLod::kImpostorLevel];
                 mDrawnTriangles += 2;
@@ -656,6 +700,51 @@ void Viewport::bindWindElements(GLuint texture) {
     glActiveTexture(GL_TEXTURE0);
 }
 
+void Viewport::drawInstanced(
+    const std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>>& groups) {
+    if (groups.empty()) return;
+    // Every instance's transform in one buffer, each level's instances one run of it.
+    std::vector<glm::mat4> all;
+    for (const auto& [m, list] : groups)
+        all.insert(all.end(), list.begin(), list.end());
+    glBindBuffer(GL_ARRAY_BUFFER, mInstanceVbo);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(all.size() * sizeof(glm::mat4)), all.data(),
+                 GL_STREAM_DRAW);
+    MeshUniforms u = mMeshUniforms;
+    u.model = glm::mat4(1.0f);
+    u.highlight = 0.0f;
+    setMeshUniforms(u);
+    std::size_t first = 0;
+    for (const auto& [m, list] : groups) {
+        const TreeBuffers::GpuMesh* gpu = mBuffers.find(m);
+        glBindVertexArray(gpu->vao);
+        std::size_t triangles = 0;
+        for (const DrawRange& r : gpu->ranges)
+            triangles += r.indexCount / 3;
+        mDrawnTriangles += triangles * list.size();
+        // Under a software renderer, runs of about kFlushTriangles, each flushed (drawRanges),
+        // so the rasteriser's threads start on the nearer instances while this one bins on.
+        const std::size_t run =
+            mSoftware
+                ? std::max<std::size_t>(1, kFlushTriangles / std::max<std::size_t>(1, triangles))
+                : list.size();
+        for (std::size_t done = 0; done < list.size(); done += run) {
+            // The instance transform (shaders/mesh.vert, INSTANCED): locations 12-15, a column
+            // each, one step per instance.
+            for (GLuint c = 0; c < 4; ++c) {
+                glEnableVertexAttribArray(kInstanceAttribute + c);
+                glVertexAttribPointer(
+                    kInstanceAttribute + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4),
+                    reinterpret_cast<const void*>(((first + done) * 4 + c) * sizeof(glm::vec4)));
+                glVertexAttribDivisor(kInstanceAttribute + c, 1);
+            }
+            drawRanges(gpu->ranges, GLsizei(std::min(run, list.size() - done)));
+        }
+        first += list.size();
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
 std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     std::vector<bool> drawn(mTrees.size());
     for (std::size_t i = 0; i < mTrees.size(); ++i)
@@ -666,8 +755,18 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     view.fovY = mCamera.fovY();
     view.viewportHeightPx = double(height()) * devicePixelRatioF();
     view.levels = mLod->isEnabled();
+    // A frame at reduced resolution while the view moves draws coarser variant levels too.
+    static const double bias = qEnvironmentVariableIsSet("SYLVA_LOD_BIAS")
+                                   ? qEnvironmentVariable("SYLVA_LOD_BIAS").toDouble()
+                                   : 1.0;
+    view.variantFactor = (mLastReduced ? ViewLod::kMotionFactor : 1.0) * bias;
+    std::vector<InstanceOf> instances(mTrees.size());
+    for (std::size_t i = 0; i < mTrees.size(); ++i)
+        if (mTrees[i].lod.instance && mTrees[i].lod.variant)
+            instances[i] = {mTrees[i].lod.variant.get(),
+                            glm::length(glm::vec3(mTrees[i].transform[0]))};
     // Picking keeps the full mesh; only drawing follows the level of detail.
-    if (!windActive()) return buildDrawList(view, drawn, mTreeBounds);
+    if (!windActive()) return buildDrawList(view, drawn, mTreeBounds, instances);
     // Swaying trees reach beyond their rest boxes: widened across by half their height (the
     // model bends a trunk at most 0.3 rad and its limbs 0.6 rad more) so that a tree at the
     // view's edge is not culled while its crown sways into view. Heights stay as they are, and
@@ -679,47 +778,51 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
         b.lo -= glm::vec3(reach, 0.0f, reach);
         b.hi += glm::vec3(reach, 0.0f, reach);
     }
-    return buildDrawList(view, drawn, swaying);
+    return buildDrawList(view, drawn, swaying, instances);
 }
 
 Impostors::Key Viewport::impostorKey(const ViewTree& t) {
+    if (t.lod.variant) return static_cast<Impostors::Key>(t.lod.variant.get());
     return t.lod.skeleton ? static_cast<Impostors::Key>(t.lod.skeleton.get())
                           : static_cast<Impostors::Key>(t.mesh.get());
 }
 
 void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
-    // A few atlases a frame (each a few milliseconds from the tree's coarsest mesh), so that a
-    // forest coming into view does not stall one frame; the trees still waiting are drawn with
-    // their coarsest mesh meanwhile. Instances of a variant share one atlas.
-    constexpr std::size_t kBakesPerFrame = 4;
+    // Atlases bake on the impostors' worker (one per variant: its instances and the unique
+    // trees of its species share it); the trees still waiting are drawn with their coarsest
+    // mesh meanwhile, and a frame now and then uploads what is done.
     static const mesh::ImpostorTextures textures(exporter::resourcesDir() / "textures");
-    std::size_t baked = 0;
+    if (mImpostors.collect() > 0) mTreesDirty = true;
     mImpostorsWanted = 0;
     for (const TreeDraw& d : order) {
         const ViewTree& t = mTrees[d.index];
-        if (d.level != ViewLod::kImpostorLevel || mImpostors.has(impostorKey(t))) continue;
-        if (baked == kBakesPerFrame) {
-            ++mImpostorsWanted;
-            continue;
+        const Impostors::Key key = impostorKey(t);
+        if (d.level != ViewLod::kImpostorLevel || mImpostors.has(key)) continue;
+        ++mImpostorsWanted;
+        if (mImpostors.isBaking(key)) continue;
+        std::shared_ptr<const void> owner;
+        std::shared_ptr<const mesh::Mesh> source;
+        if (t.lod.variant) {
+            // The variant's level made for a tree about twice the atlas' cell high on the
+            // reference view (the bake supersamples twice): all its views can show.
+            const ViewVariant& v = *t.lod.variant;
+            const double refFov = v.referenceFovYDegrees * 3.14159265358979323846 / 180.0;
+            const double distance = double(v.height) * v.referenceHeightPx /
+                                    (2.0 * std::tan(0.5 * refFov) * 2.0 * Impostors::kCell);
+            source = v.levels[mesh::levelFor(v.levels, distance)].mesh;
+            owner = t.lod.variant;
+        } else {
+            // Baked from the tree's coarse level once the worker has made it, or from its own
+            // mesh when it has no levels coming.
+            source = mLod->levelMesh(t.mesh.get(), ViewLod::kImpostorLevel - 1);
+            if (!source && mLod->pending() > 0 && t.lod.skeleton) continue;
+            if (!source) source = t.mesh;
+            owner = t.lod.skeleton ? std::shared_ptr<const void>(t.lod.skeleton)
+                                   : std::shared_ptr<const void>(t.mesh);
         }
-        int used = 0;
-        const mesh::Mesh* source = mLod->meshFor(t.mesh.get(), ViewLod::kImpostorLevel - 1, &used);
-        // Baked from the coarse level (cheap, and all the atlas' 64-pixel views can show) once
-        // the worker has made it, or at once from a mesh that is cheap already (an instance's
-        // far variant level); a tree without levels is baked from its own mesh.
-        constexpr std::size_t kCheapSource = 20000; // triangles: a few milliseconds to bake
-        if (used != ViewLod::kImpostorLevel - 1 && mLod->pending() > 0 && source &&
-            source->triangleCount() > kCheapSource) {
-            ++mImpostorsWanted;
-            continue;
-        }
-        const std::shared_ptr<const void> owner = t.lod.skeleton
-                                                      ? std::shared_ptr<const void>(t.lod.skeleton)
-                                                      : std::shared_ptr<const void>(t.mesh);
-        mImpostors.bake(impostorKey(t), owner, source ? *source : *t.mesh, textures);
-        ++baked;
+        mImpostors.request(key, std::move(owner), std::move(source), textures);
     }
-    if (mImpostorsWanted > 0) update(); // the next frame takes the next ones
+    if (mImpostorsWanted > 0 && !mBakeTimer->isActive()) mBakeTimer->start();
 }
 
 void Viewport::setMeshUniforms(const MeshUniforms& uniforms) {
@@ -758,11 +861,11 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
     return program;
 }
 
-void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
+void Viewport::drawRanges(const std::vector<DrawRange>& ranges, GLsizei instances) {
     for (const DrawRange& r : ranges) {
         QOpenGLShaderProgram& program =
             useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0) |
-                           (mDrawWind ? kMeshWind : 0));
+                           (mDrawWind ? kMeshWind : 0) | (instances > 0 ? kMeshInstanced : 0));
         setUniform(program, "uAlbedo", r.color);
         if (r.texture != 0) {
             glActiveTexture(GL_TEXTURE1);
@@ -774,6 +877,20 @@ void Viewport::drawRanges(const std::vector<DrawRange>& ranges) {
             glDisable(GL_CULL_FACE);
         else
             glEnable(GL_CULL_FACE);
+        if (instances > 0) {
+            // One call for every instance; under a software renderer a flush after it hands
+            // the rasteriser's threads what is binned so far (see below).
+            glDrawElementsInstanced(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
+                                    reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u),
+                                    instances);
+            ++mInstancedDrawCalls;
+            mUnflushed += std::size_t(r.indexCount / 3) * std::size_t(instances);
+            if (mSoftware && mUnflushed >= kFlushTriangles) {
+                glFlush();
+                mUnflushed = 0;
+            }
+            continue;
+        }
         if (!mSoftware) {
             glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
                            reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));

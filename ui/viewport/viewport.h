@@ -184,10 +184,20 @@ public:
     }
     /// Instanced draw calls the last frame's impostors took (one per atlas in view).
     std::size_t impostorDrawCalls() const { return mImpostorDrawCalls; }
+    /// Instanced draw calls the last frame's variant instances took (one per variant level in
+    /// view and material), and the tree meshes on the GPU (one buffer set each: a variant's
+    /// levels once, whatever its instances).
+    std::size_t instancedDrawCalls() const { return mInstancedDrawCalls; }
+    /// What the last frame drew, nearest first, with the levels (ui/viewport/drawlist.h).
+    const std::vector<TreeDraw>& lastDrawList() const { return mLastDrawList; }
+    std::size_t gpuTreeMeshes() const { return mBuffers.treeMeshCount(); }
     /// The distance level of detail (ui/viewport/viewlod.h).
     ViewLod& lod() { return *mLod; }
     /// Trees whose coarser levels or impostor are still to be made (0: the view is final).
-    std::size_t lodPending() const { return mLod->pending() + mImpostorsWanted; }
+    /// (As of the last frame: draw one after the view changed.)
+    std::size_t lodPending() const {
+        return mLod->pending() + mImpostorsWanted + mImpostors.baking();
+    }
 
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
@@ -294,7 +304,9 @@ private:
     void releaseGl();
     void applyFrame();
     void uploadMesh();
-    void drawRanges(const std::vector<DrawRange>& ranges);
+    /// \p instances > 0: each range drawn once per instance of the instance buffer's bound run
+    /// (drawInstanced()), with the instanced mesh program.
+    void drawRanges(const std::vector<DrawRange>& ranges, GLsizei instances = 0);
     float aspect() const;
 
     std::size_t vertexCount() const;
@@ -327,8 +339,14 @@ private:
     QString mGlError;
     /// The mesh shader's variants (a bit set): compiled apart so that bark does not pay for
     /// the leaves' texture and cut-out, and keeps the early depth test.
-    /// WIND sways the vertices (wind.glsl) and is drawn only for meshes with wind data.
-    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshWind = 4, kMeshVariants = 8;
+    /// WIND sways the vertices (wind.glsl) and is drawn only for meshes with wind data;
+    /// INSTANCED takes the transform per instance (never with WIND: swaying instances are drawn
+    /// one by one, each with its own place in the wind's loop).
+    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshWind = 4, kMeshInstanced = 8,
+                         kMeshVariants = 16;
+    /// shaders/mesh.vert's per-instance transform (INSTANCED), four locations from here.
+    static constexpr GLuint kInstanceAttribute = 12;
+    GLuint mInstanceVbo = 0;
     /// What every mesh variant shares in a draw; a variant is brought up to date when used.
     struct MeshUniforms {
         glm::mat4 viewProj{1.0f};
@@ -382,6 +400,9 @@ private:
     bool windActive() const { return mWindOn && mWind.strength > 0.0f; }
     void bindWindElements(GLuint texture);
     double mPaintWindTime = 0.0; ///< the wind clock at the frame's start
+    /// Each variant level's instances (nearest level first) with instanced draw calls.
+    void
+    drawInstanced(const std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>>& groups);
     void updateBounds();
     std::vector<ViewTree> mTrees;
     std::vector<ViewTree> mPreview;
@@ -408,6 +429,9 @@ private:
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
     std::size_t mImpostorDrawCalls = 0;
+    std::size_t mInstancedDrawCalls = 0;
+    std::vector<TreeDraw> mLastDrawList;
+    QTimer* mBakeTimer = nullptr;
     std::size_t mDrawnMotion = 0;
     ViewLod* mLod = nullptr; ///< a child
     Impostors mImpostors;

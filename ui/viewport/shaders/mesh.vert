@@ -8,7 +8,13 @@ layout(location = 2) in vec3 aColor;
 layout(location = 3) in vec2 aUv;
 layout(location = 4) in float aOcclusion;
 uniform mat4 uViewProj;
+#ifdef INSTANCED
+// Instances of a variant's level drawn in one call: the transform per instance (issue 32).
+layout(location = 12) in mat4 aModel;
+#define uModel aModel
+#else
 uniform mat4 uModel; // a tree's instance transform: rotation, uniform scale, translation
+#endif
 uniform vec3 uEye;
 out vec3 vNormal;
 out vec3 vColor;
