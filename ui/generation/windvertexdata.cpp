@@ -9,6 +9,7 @@
 #include "engine/mesh/mesh.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
+#include "engine/wind/windelements.h"
 
 namespace sylva::ui {
 
@@ -54,25 +55,9 @@ std::vector<ViewWindVertex> windVertices(const mesh::Mesh& m, const wind::WindEl
         v.u = static_cast<std::uint16_t>(
             std::lround(std::clamp(elements.nodeU[node], 0.0f, 1.0f) * 65535.0f));
     }
-    // Leaf cards as wind::addWindData reads them (4 vertices, triangles b, b+1, b+2, b, b+2,
-    // b+3; the stem at b): the flutter weight grows with the distance from the stem.
-    for (const mesh::Submesh& sm : m.submeshes) {
-        if (sm.material != "leaf") continue;
-        for (std::uint32_t k = sm.firstIndex; k + 6 <= sm.firstIndex + sm.indexCount; k += 6) {
-            if (k + 6 > m.indices.size()) break;
-            const std::uint32_t b = m.indices[k];
-            if (b + 3 >= nv || m.indices[k + 1] != b + 1 || m.indices[k + 2] != b + 2 ||
-                m.indices[k + 5] != b + 3)
-                continue;
-            const glm::vec3 stem = m.positions[b];
-            const glm::vec3 along = m.positions[b + 3] - stem;
-            const float len = glm::length(along);
-            if (len <= 0.0f) continue;
-            for (std::uint32_t c = 0; c < 4; ++c)
-                out[b + c].flutter = glm::packHalf1x16(
-                    std::max(0.0f, glm::dot(m.positions[b + c] - stem, along / len)));
-        }
-    }
+    // Leaf cards: the flutter weight as the exports' _WIND data has it.
+    wind::forEachLeafFlutter(
+        m, [&](std::uint32_t v, float flutter) { out[v].flutter = glm::packHalf1x16(flutter); });
     return out;
 }
 

@@ -129,6 +129,27 @@ mesh::WindVertex windVertexOf(const WindElements& elements, std::size_t node) {
     return v;
 }
 
+void forEachLeafFlutter(const mesh::Mesh& m,
+                        const std::function<void(std::uint32_t vertex, float flutter)>& weight) {
+    const auto nv = static_cast<std::uint32_t>(m.positions.size());
+    for (const mesh::Submesh& sm : m.submeshes) {
+        if (sm.material != "leaf") continue;
+        for (std::uint32_t k = sm.firstIndex; k + 6 <= sm.firstIndex + sm.indexCount; k += 6) {
+            if (k + 6 > m.indices.size()) break;
+            const std::uint32_t b = m.indices[k];
+            if (b + 3 >= nv || m.indices[k + 1] != b + 1 || m.indices[k + 2] != b + 2 ||
+                m.indices[k + 5] != b + 3)
+                continue;
+            const glm::vec3 stem = m.positions[b];
+            const glm::vec3 along = m.positions[b + 3] - stem;
+            const float len = glm::length(along);
+            if (len <= 0.0f) continue;
+            for (std::uint32_t c = 0; c < 4; ++c)
+                weight(b + c, std::max(0.0f, glm::dot(m.positions[b + c] - stem, along / len)));
+        }
+    }
+}
+
 void addWindData(mesh::Mesh& m, const skel::Skeleton& skeleton) {
     if (m.node.size() != m.positions.size())
         throw InvalidInput("wind data needs the mesh's node ids (tube_mesh node_ids)");
@@ -152,24 +173,7 @@ void addWindData(mesh::Mesh& m, const skel::Skeleton& skeleton) {
         }
         m.wind.push_back(perNode[node]);
     }
-    // Leaf cards (4 vertices, triangles b, b+1, b+2, b, b+2, b+3; v = 0 at the stem): the
-    // flutter weight is the distance from the stem along the card, so the stem stays on its twig.
-    for (const mesh::Submesh& sm : m.submeshes) {
-        if (sm.material != "leaf") continue;
-        for (std::uint32_t k = sm.firstIndex; k + 6 <= sm.firstIndex + sm.indexCount; k += 6) {
-            const std::uint32_t b = m.indices[k];
-            if (b + 3 >= nv || m.indices[k + 1] != b + 1 || m.indices[k + 2] != b + 2 ||
-                m.indices[k + 5] != b + 3)
-                continue;
-            const glm::vec3 stem = m.positions[b];
-            const glm::vec3 along = m.positions[b + 3] - stem;
-            const float len = glm::length(along);
-            if (len <= 0.0f) continue;
-            for (std::uint32_t c = 0; c < 4; ++c)
-                m.wind[b + c].leaf.y =
-                    std::max(0.0f, glm::dot(m.positions[b + c] - stem, along / len));
-        }
-    }
+    forEachLeafFlutter(m, [&](std::uint32_t v, float flutter) { m.wind[v].leaf.y = flutter; });
 }
 
 glm::vec3 displaceNode(const WindElements& elements, const skel::Skeleton& skeleton,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -44,6 +45,13 @@ WindElements buildWindElements(const skel::Skeleton& skeleton);
 
 /// The wind data of one node (what a vertex made for that node carries, leaf flutter aside).
 mesh::WindVertex windVertexOf(const WindElements& elements, std::size_t node);
+
+/// Calls \p weight(vertex, flutter) for every vertex of \p mesh's leaf cards (the "leaf"
+/// submeshes' 4-vertex cards: triangles b, b+1, b+2, b, b+2, b+3, the stem at b): the flutter
+/// weight is the distance from the stem along the card, so the stem stays on its twig. The one
+/// rule of the exports' `_WIND` data and the viewport's.
+void forEachLeafFlutter(const mesh::Mesh& mesh,
+                        const std::function<void(std::uint32_t vertex, float flutter)>& weight);
 
 /// Fills \p mesh.wind from \p skeleton (docs/wind.md). Needs Mesh::node (TubeSettings::nodeIds):
 /// each vertex takes its node's elements; leaf-card vertices (the "leaf" submeshes) also get a
