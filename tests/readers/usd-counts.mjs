@@ -6,20 +6,11 @@
 // usage: node usd-counts.mjs LAYER.usda
 import { readFileSync } from "node:fs";
 import path from "node:path";
-import { fileURLToPath } from "node:url";
 
-globalThis.window = globalThis;
-process.type = "renderer";
-const dir = path.join(path.dirname(fileURLToPath(import.meta.url)), "node_modules", "tinyusdz");
-const { default: init } = await import(path.join(dir, "tinyusdz.js"));
-const native = await init({ wasmBinary: readFileSync(path.join(dir, "tinyusdz.wasm")) });
+import { fail, native } from "./tinyusdz-native.mjs";
 
 const file = process.argv[2];
 const bytes = new Uint8Array(readFileSync(file));
-const fail = (what, usd) => {
-  console.error(`tinyusdz: ${what}: ${usd.error()}`);
-  process.exit(1);
-};
 
 // The layer, composed when it names subLayers.
 const layer = new native.TinyUSDZLoaderNative();

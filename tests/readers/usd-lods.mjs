@@ -5,21 +5,11 @@
 // material each is bound to (its colour and normal maps).
 // usage: node usd-lods.mjs SPECIES_lods.usda
 import { readFileSync } from "node:fs";
-import path from "node:path";
-import { fileURLToPath } from "node:url";
 
-globalThis.window = globalThis;
-process.type = "renderer";
-const dir = path.join(path.dirname(fileURLToPath(import.meta.url)), "node_modules", "tinyusdz");
-const { default: init } = await import(path.join(dir, "tinyusdz.js"));
-const native = await init({ wasmBinary: readFileSync(path.join(dir, "tinyusdz.wasm")) });
+import { fail, native } from "./tinyusdz-native.mjs";
 
 const file = process.argv[2];
 const text = readFileSync(file, "utf8");
-const fail = (what, usd) => {
-  console.error(`tinyusdz: ${what}: ${usd.error()}`);
-  process.exit(1);
-};
 
 // The layer as tinyusdz parsed it: the variant set's declaration, selection and variants.
 const layer = new native.TinyUSDZLoaderNative();
