@@ -469,17 +469,7 @@ void bindForest(py::module_& m) {
             [](Project& p, const py::object& v) { p.project.cameraPosition = toVec3(v, "camera"); },
             "camera position for the level of detail (metres)")
         .def_property(
-            "wind",
-            [](const Project& p) -> py::object {
-                const auto& w = p.project.wind;
-                if (!w) return py::none();
-                py::dict d;
-                d["direction"] = fromVec3(w->direction);
-                d["strength"] = w->strength;
-                d["gustiness"] = w->gustiness;
-                d["frequency"] = w->frequency;
-                return d;
-            },
+            "wind", [](const Project& p) { return windTo(p.project.wind); },
             [](Project& p, const py::object& v) {
                 if (v.is_none()) {
                     p.project.wind.reset();

@@ -55,6 +55,16 @@ py::object seasonTo(const std::string& season) {
     return season.empty() ? py::object(py::none()) : py::object(py::str(season));
 }
 
+py::object windTo(const std::optional<doc::ProjectWind>& w) {
+    if (!w) return py::none();
+    py::dict d;
+    d["direction"] = fromVec3(w->direction);
+    d["strength"] = w->strength;
+    d["gustiness"] = w->gustiness;
+    d["frequency"] = w->frequency;
+    return d;
+}
+
 doc::ProjectInstance newTree(const doc::Project& project, std::size_t treesBefore,
                              const std::string& species, const py::handle& position,
                              double rotation, double scale, std::optional<std::uint64_t> seed,

@@ -51,6 +51,9 @@ struct Tree {
 std::string seasonFrom(const py::object& season);
 /// "" → None, else the name.
 py::object seasonTo(const std::string& season);
+/// A project's wind as Python sees it: None when unset, else a dict of direction, strength,
+/// gustiness and frequency (`sylva.Project.wind` and the editor's `doc.wind()`).
+py::object windTo(const std::optional<doc::ProjectWind>& wind);
 
 Tree treeOf(std::uint64_t id, const doc::ProjectInstance& t);
 

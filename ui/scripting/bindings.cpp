@@ -429,17 +429,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             "clear_wind", [](DocumentApi&) { document().setWind(std::nullopt); },
             "Unsets the project's wind (the engine's default; nothing saved); one undo step.")
         .def(
-            "wind",
-            [](DocumentApi&) -> py::object {
-                const auto& w = document().project().wind;
-                if (!w) return py::none();
-                py::dict d;
-                d["direction"] = fromVec3(w->direction);
-                d["strength"] = w->strength;
-                d["gustiness"] = w->gustiness;
-                d["frequency"] = w->frequency;
-                return d;
-            },
+            "wind", [](DocumentApi&) { return python::windTo(document().project().wind); },
             "The project's wind as a dict (direction, strength, gustiness, frequency), or None.")
         .def("undo", [](DocumentApi&) { document().undoStack()->undo(); })
         .def("redo", [](DocumentApi&) { document().undoStack()->redo(); })
