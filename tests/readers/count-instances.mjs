@@ -3,18 +3,10 @@
 // instances (the summed InstancedMesh counts of the nodes that carry Sylva's ids), ids (the
 // ids those nodes list), unique (mesh nodes of unique trees), meshes (geometry objects).
 // Usage: node count-instances.mjs FILE.glb
-import fs from 'node:fs';
-import { Texture } from 'three';
-import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+import { loadGltf } from './load-gltf.mjs';
 
 const file = process.argv[2];
-const data = fs.readFileSync(file);
-const buffer = data.buffer.slice(data.byteOffset, data.byteOffset + data.byteLength);
-
-const loader = new GLTFLoader();
-// Images need a DOM or createImageBitmap to decode: give every texture an empty one instead.
-loader.register(() => ({ name: 'sylva_stub_textures', loadTexture: async () => new Texture() }));
-const gltf = await new Promise((resolve, reject) => loader.parse(buffer, '', resolve, reject));
+const gltf = await loadGltf(file);
 
 let instances = 0, ids = 0, unique = 0, meshes = 0, mismatched = 0;
 gltf.scene.traverse((o) => {

@@ -3,17 +3,10 @@
 // MSFT_lod.ids name, each loaded through the parser (three.js has no built-in MSFT_lod). Prints
 // JSON: levels [{name, triangles, material}] in chain order and the MSFT_screencoverage list.
 // Usage: node lod-levels.mjs FILE.glb
-import fs from 'node:fs';
-import { Texture } from 'three';
-import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+import { loadGltf } from './load-gltf.mjs';
 
 const file = process.argv[2];
-const data = fs.readFileSync(file);
-const buffer = data.buffer.slice(data.byteOffset, data.byteOffset + data.byteLength);
-
-const loader = new GLTFLoader();
-loader.register(() => ({ name: 'sylva_stub_textures', loadTexture: async () => new Texture() }));
-const gltf = await new Promise((resolve, reject) => loader.parse(buffer, '', resolve, reject));
+const gltf = await loadGltf(file);
 
 const json = gltf.parser.json;
 const topIndex = json.scenes[json.scene ?? 0].nodes[0];

@@ -2,16 +2,11 @@
 // with an AnimationMixer and prints, as JSON, how far the skinned mesh's highest vertex (a twig
 // tip) and its lowest (the trunk's base ring) move over the clip, the clip's duration and the
 // skin's joint count. Usage: node wind-motion.mjs FILE.glb
-import fs from 'node:fs';
-import { AnimationMixer, Texture, Vector3 } from 'three';
-import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
+import { AnimationMixer, Vector3 } from 'three';
+import { loadGltf } from './load-gltf.mjs';
 
 const file = process.argv[2];
-const data = fs.readFileSync(file);
-const buffer = data.buffer.slice(data.byteOffset, data.byteOffset + data.byteLength);
-const loader = new GLTFLoader();
-loader.register(() => ({ name: 'sylva_stub_textures', loadTexture: async () => new Texture() }));
-const gltf = await new Promise((resolve, reject) => loader.parse(buffer, '', resolve, reject));
+const gltf = await loadGltf(file);
 
 const clip = gltf.animations.find((a) => a.name === 'wind');
 if (!clip) throw new Error('no "wind" animation');
