@@ -290,6 +290,7 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
     }
     tubes.radiusScale *= compensation;
     tubes.resolution = level.resolution;
+    tubes.twigResolution = std::min(tubes.twigResolution, level.resolution);
     tubes.simplifyTolerance = std::max(tubes.simplifyTolerance, level.simplifyTolerance);
     leafFraction = level.leafFraction;
     const skel::Skeleton kept = dropSmallSubtrees(

@@ -454,9 +454,18 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
             ribbon[c] = radius[static_cast<std::size_t>(own)] < settings.ribbonBelowRadius;
             if (ribbon[c]) out.cameraRibbons = true;
         }
+    requireRange("twig radius", settings.twigBelowRadius, 0.0, 1e6);
+    requireRange("twig resolution", settings.twigResolution, 3, 64);
+    std::vector<std::uint8_t> twig(count, 0);
+    if (settings.twigBelowRadius > 0.0)
+        for (std::size_t c = 0; c < count; ++c) {
+            const std::int32_t own = chains.nodes[chains.begin[c] + (chains.lateral[c] ? 1 : 0)];
+            twig[c] = radius[static_cast<std::size_t>(own)] < settings.twigBelowRadius;
+        }
     for (std::size_t c = 0; c < count; ++c) {
-        const Layout l = chainLayout(chains.begin[c + 1] - chains.begin[c], chains.lateral[c],
-                                     settings.caps, res, ribbon[c] != 0);
+        const Layout l =
+            chainLayout(chains.begin[c + 1] - chains.begin[c], chains.lateral[c], settings.caps,
+                        twig[c] ? settings.twigResolution : res, ribbon[c] != 0);
         vOff[c + 1] = vOff[c] + l.vertices;
         iOff[c + 1] = iOff[c] + l.indices;
     }
@@ -504,14 +513,19 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
     }
 
     // cos, sin and u of each ring vertex; the seam repeats the first with u = 1.
-    std::vector<glm::vec3> cs(static_cast<std::size_t>(res) + 1);
-    for (int j = 0; j < res; ++j) {
-        const double a = 2.0 * std::numbers::pi * j / res;
-        cs[static_cast<std::size_t>(j)] = {static_cast<float>(std::cos(a)),
-                                           static_cast<float>(std::sin(a)),
-                                           static_cast<float>(j) / static_cast<float>(res)};
-    }
-    cs[static_cast<std::size_t>(res)] = {cs[0].x, cs[0].y, 1.0f};
+    auto ringTable = [](int sides) {
+        std::vector<glm::vec3> t(static_cast<std::size_t>(sides) + 1);
+        for (int j = 0; j < sides; ++j) {
+            const double a = 2.0 * std::numbers::pi * j / sides;
+            t[static_cast<std::size_t>(j)] = {static_cast<float>(std::cos(a)),
+                                              static_cast<float>(std::sin(a)),
+                                              static_cast<float>(j) / static_cast<float>(sides)};
+        }
+        t[static_cast<std::size_t>(sides)] = {t[0].x, t[0].y, 1.0f};
+        return t;
+    };
+    const std::vector<glm::vec3> cs = ringTable(res);
+    const std::vector<glm::vec3> csTwig = ringTable(settings.twigResolution);
     float rMax = 0.0f;
     for (float r : radius)
         rMax = std::max(rMax, r);
@@ -550,7 +564,8 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                         meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
                                    static_cast<float>(settings.ribbonWidthScale));
                     else
-                        meshChain(w, s, radius, nodes, m, lateral, settings.caps, cs);
+                        meshChain(w, s, radius, nodes, m, lateral, settings.caps,
+                                  twig[c] ? csTwig : cs);
                 }
 #pragma omp ordered
                 scratch.appendTo(out, nv, ni, wind, ids);

@@ -38,7 +38,13 @@ struct TubeSettings {
     /// triangles a segment, turned toward ribbonCamera (LOD: branches a pixel or two wide look
     /// the same from the camera at a third of the cost of the thinnest tube); metres, 0 = none.
     double ribbonBelowRadius = 0.0;
-    glm::vec3 ribbonCamera{0.0f};  ///< in the skeleton's frame
+    glm::vec3 ribbonCamera{0.0f}; ///< in the skeleton's frame
+    /// Axes whose own base radius (after scaling) is below this get twigResolution sides
+    /// instead of resolution: a twig a centimetre thick shows no roundness that eight sides
+    /// draw better than four (issue #33: most of a spruce's triangles were such twigs);
+    /// metres, 0 = every axis gets resolution.
+    double twigBelowRadius = 0.0;
+    int twigResolution = 4;        ///< 3..64, used with twigBelowRadius
     double ribbonWidthScale = 1.0; ///< ribbon width = 2 · radius · this
     bool windAttributes = false;   ///< fill Mesh::branchOrder and Mesh::flexibility
     bool nodeIds = false;          ///< fill Mesh::node (for colouring by node attributes)

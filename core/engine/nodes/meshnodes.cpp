@@ -96,6 +96,9 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.tubes.initialThickness = ranged(p, "initial_thickness", 0.2, 0.0, 1e3);
     s.tubes.thicknessMultiplier = ranged(p, "thickness_multiplier", 0.8, 1e-6, 1.0);
     s.tubes.radiusScale = ranged(p, "radius_scale", 1.0, 0.0, 1e3);
+    s.tubes.twigBelowRadius = ranged(p, "twig_radius", 0.0, 0.0, 1e3);
+    s.tubes.twigResolution = rangedInt(p, "twig_resolution", 4, 3, 64);
+    s.tubes.minBranchRadius = ranged(p, "bare_twig_radius", 0.0, 0.0, 1e3);
     s.tubes.windAttributes = p.boolean("wind_attributes", false);
     s.tubes.nodeIds = p.boolean("node_ids", false) || p.boolean("wind_data", false);
     s.leaves = p.boolean("leaves", true);
@@ -264,6 +267,12 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
            number("thickness_multiplier", 0.8, 1e-6, 1, "",
                   "Radius factor per branching level (thickness: branching)"),
            number("radius_scale", 1.0, 0, 1e3, "", "Multiplies every radius"),
+           number("twig_radius", 0.0, 0, 1e3, "m",
+                  "Axes thinner than this at their base get twig_resolution sides; 0: off"),
+           integer("twig_resolution", 4, 3, 64, "Sides of the tubes thinner than twig_radius"),
+           number("bare_twig_radius", 0.0, 0, 1e3, "m",
+                  "Side shoots thinner than this at their base get no bark, their leaf cards "
+                  "stay (twigs hidden in needle sprays); 0: off"),
            boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
            boolean("node_ids", false, "Write the skeleton node of each vertex"),
            boolean("wind_data", false,

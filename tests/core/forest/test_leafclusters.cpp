@@ -170,6 +170,36 @@ TEST(LeafClusters, ConifersAndShrubsCarrySpraysAtTheSameSilhouette) {
     }
 }
 
+// Issue #33: the Norway spruce's bark. Its hanging side shoots, a centimetre thick inside
+// their needle sprays, get no bark below bare_twig_radius and four sides below twig_radius:
+// at least 2.5x fewer triangles than every twig an 8-sided tube, at the same silhouette.
+TEST(LeafClusters, SpruceTwigsCostLessBarkAtTheSameSilhouette) {
+    graph::registerBuiltinNodeTypes();
+    graph::SpeciesGraph g = sylva::testing::loadPreset(kPresets / "norway-spruce.json");
+    graph::Evaluator lean(g);
+    const std::shared_ptr<const mesh::Mesh> a = lean.evaluate(1).mesh;
+    graph::Evaluator full(g);
+    full.setParam("mesh", "twig_radius", Value(0));
+    full.setParam("mesh", "bare_twig_radius", Value(0));
+    const std::shared_ptr<const mesh::Mesh> b = full.evaluate(1).mesh;
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(leafTriangles(*a), leafTriangles(*b));
+    const double ratio =
+        static_cast<double>(b->triangleCount()) / static_cast<double>(a->triangleCount());
+    const auto cams = views(*b);
+    std::vector<std::uint8_t> scratch;
+    double iou[2];
+    for (int v = 0; v < 2; ++v)
+        iou[v] = test::iou(test::coverage(*b, glm::mat4(1.0f), cams[v], scratch, true),
+                           test::coverage(*a, glm::mat4(1.0f), cams[v], scratch, true));
+    std::printf("norway-spruce: %zu triangles with every twig, %zu lean (%.1fx); IoU side %.4f, "
+                "camera %.4f\n",
+                b->triangleCount(), a->triangleCount(), ratio, iou[0], iou[1]);
+    EXPECT_GE(ratio, 2.5);
+    EXPECT_GE(iou[0], 0.98);
+    EXPECT_GE(iou[1], 0.98);
+}
+
 namespace {
 
 // Tile \p k of a cluster atlas (numbered from the bottom left along rows; image rows run down).

@@ -212,3 +212,17 @@ TEST(Lod, ChainDecreasesAndKeepsLeafArea) {
     EXPECT_LT(submeshArea(chain[3].mesh, "bark"),
               submeshArea(mesh::buildTreeMesh(s, plain), "bark"));
 }
+
+// tube_mesh's bare_twig_radius (TubeSettings::minBranchRadius) at full detail: the thin
+// laterals lose their bark, every leaf keeps its card (issue #33: the spruce's twigs hidden
+// in its needle sprays).
+TEST(Lod, BareTwigsKeepTheirLeaves) {
+    const skel::Skeleton s = leafyTree();
+    mesh::TreeMeshSettings settings;
+    const mesh::Mesh all = mesh::buildTreeMesh(s, settings);
+    settings.tubes.minBranchRadius = 0.05;
+    const mesh::Mesh bare = mesh::buildTreeMesh(s, settings);
+    EXPECT_LT(submeshArea(bare, "bark"), 0.9 * submeshArea(all, "bark"));
+    EXPECT_GT(submeshArea(bare, "bark"), 0.0);
+    EXPECT_DOUBLE_EQ(submeshArea(bare, "leaf"), submeshArea(all, "leaf"));
+}

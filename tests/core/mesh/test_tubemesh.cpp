@@ -441,3 +441,29 @@ TEST(TubeMesh, ThinAxesBecomeRibbonsFacingTheCamera) {
                     0.0f, 1e-4f);
     }
 }
+
+// Twigs get fewer sides (issue #33: the spruce's bark): an axis whose own base radius is below
+// twigBelowRadius is meshed with twigResolution sides, the rest with resolution, and the mesh
+// stays closed and well formed with caps (a cap has as many sides as its ring).
+TEST(TubeMesh, ThinAxesGetTwigResolution) {
+    const auto s = tree("F[+!(0.02)F[-F]]F");
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    settings.twigBelowRadius = 0.015;
+    settings.twigResolution = 4;
+    const auto m = mesh::buildTubeMesh(s, settings);
+    // The trunk: three rings of 9; the two laterals (base ring at the fork and one node): 5.
+    EXPECT_EQ(m.vertexCount(), 3u * 9u + (2u + 2u) * 5u);
+    EXPECT_EQ(m.triangleCount(), 2u * 16u + 2u * 8u);
+    settings.caps = true;
+    const auto c = mesh::buildTubeMesh(s, settings);
+    EXPECT_EQ(c.triangleCount(), 2u * 16u + 2u * 8u + 2u * 8u + 2u * 4u);
+    checkWellFormed(c);
+    // Off (radius 0), or every axis thicker than it: as before.
+    settings.caps = false;
+    settings.twigBelowRadius = 0.0;
+    EXPECT_EQ(mesh::buildTubeMesh(s, settings).vertexCount(), (3u + 2u + 2u) * 9u);
+    settings.twigBelowRadius = 0.015;
+    settings.twigResolution = 2;
+    EXPECT_THROW(mesh::buildTubeMesh(s, settings), InvalidInput);
+}
