@@ -145,7 +145,7 @@ def closeup(build, species, eye, target, png, folder):
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24",
            os.path.join(build, "app/editor/sylva"), "--size", "640x480", "--script", script,
            seeded_copy(species, 1, folder)]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, SYLVA_MSAA="4", LC_ALL="C"))
 
 
 def library(build, png, folder, project="resources/demo/library.sylva"):
@@ -160,7 +160,7 @@ def library(build, png, folder, project="resources/demo/library.sylva"):
     cmd = ["xvfb-run", "-a", "-s", "-screen 0 1600x1000x24",
            os.path.join(build, "app/editor/sylva"), "--size", "1200x600", "--script", script,
            os.path.join(ROOT, project)]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, LC_ALL="C"))
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=dict(os.environ, SYLVA_MSAA="4", LC_ALL="C"))
 
 
 def solidity(build):

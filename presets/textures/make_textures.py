@@ -980,45 +980,55 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
         segs_twig, segs = [], []
         bend = rng.uniform(-0.15, 0.15)
         if kind == "pine":
-            # Shoots spreading from a short fork, each ending in a shaving brush: needles
-            # round its last half, forward and to the sides, sky between the brushes.
-            fork = rng.uniform(0.06, 0.12)
-            stem_top = (0.5 + bend * 0.3, fork)
-            segs_twig.append((0.5, 0.0, stem_top[0], stem_top[1], 0.011))
-            shoots = int(rng.integers(4, 6))
+            # Two or three shoots from a short fork, each the last years' growth of a pine
+            # branch: a bare base, then paired needles (fascicles) 0.2-0.3 of the tile long,
+            # pointing forward at 15-60 degrees on both sides and crossing the shoot, each pair
+            # a little apart and bent (twisted needles), thick enough (about 3 texels of the
+            # 256 tile at the base, tapering) to survive two mip levels, darker at the base and
+            # lighter at the tips; sky between the shoots, so that from a few metres a card
+            # reads as spiky tufts at the branch ends, not as a frond (issue #33).
+            fork = rng.uniform(0.05, 0.10)
+            stem_top = (0.5 + bend * 0.2, fork)
+            segs_twig.append((0.5, 0.0, stem_top[0], stem_top[1], 0.012))
+            shoots = int(rng.integers(2, 4))
+            spread = rng.uniform(50, 70)
             for i in range(shoots):
-                a = math.radians(-64 + 128 * (i + rng.uniform(0.25, 0.75)) / shoots)
-                L = rng.uniform(0.40, 0.54) * (1.0 - 0.3 * abs(math.sin(a)))
+                a = math.radians(-spread + 2 * spread * (i + rng.uniform(0.3, 0.7)) / shoots)
+                L = rng.uniform(0.36, 0.46) * (1.0 - 0.25 * abs(math.sin(a)))
                 x0, y0 = stem_top
-                x1 = float(np.clip(x0 + math.sin(a) * L, 0.14, 0.86))
-                y1 = min(0.80, y0 + math.cos(a) * L)
-                segs_twig.append((x0, y0, x1, y1, 0.007))
+                x1 = float(np.clip(x0 + math.sin(a) * L, 0.22, 0.78))
+                y1 = min(0.70, y0 + math.cos(a) * L)
+                segs_twig.append((x0, y0, x1, y1, 0.008))
                 ux, uy = x1 - x0, y1 - y0
                 ln = math.hypot(ux, uy)
                 ux, uy = ux / ln, uy / ln
-                pairs = int(30 * scale)
+                pairs = int(24 * scale)
                 for j in range(pairs):
-                    # Denser toward the tip, where the brush is; each needle at its own angle
-                    # (not mirrored in pairs, which drew a fern's herringbone), many crossing
-                    # the shoot as the needles behind it do.
                     u = (j + rng.random()) / pairs
-                    s = 1.0 - 0.55 * u * u
+                    s = 0.22 + 0.78 * math.sqrt(u)  # denser toward the tip
                     px, py = x0 + (x1 - x0) * s, y0 + (y1 - y0) * s
-                    for side in (-1, 1):
-                        ang = math.radians(float(np.clip(rng.normal(0.0, 38.0), -85, 85)))
+                    side = -1 if rng.random() < 0.5 else 1
+                    ang0 = side * rng.uniform(12, 62) * (1.0 - 0.45 * max(0.0, s - 0.85) / 0.15)
+                    for pair in (0, 1):
+                        ang = math.radians(ang0 + pair * side * rng.uniform(5, 14))
                         vx = ux * math.cos(ang) - uy * math.sin(ang)
                         vy = ux * math.sin(ang) + uy * math.cos(ang)
-                        nl = rng.uniform(0.12, 0.21) * (1.0 - 0.3 * abs(ang) / math.radians(85))
-                        ex, ey = px + vx * nl, py + vy * nl
-                        # kept inside the tile: a needle cut by the edge shows the card
+                        nl = rng.uniform(0.20, 0.30) * (1.0 - 0.25 * abs(ang) / math.radians(70))
+                        # bent a little: the second half turned by the twist
+                        tw = math.radians(rng.uniform(-9, 9))
+                        wx = vx * math.cos(tw) - vy * math.sin(tw)
+                        wy = vx * math.sin(tw) + vy * math.cos(tw)
                         f = 1.0
-                        for _ in range(8):
+                        for _ in range(10):  # kept inside the tile
+                            mx, my = px + vx * nl * 0.5 * f, py + vy * nl * 0.5 * f
+                            ex, ey = mx + wx * nl * 0.5 * f, my + wy * nl * 0.5 * f
                             if 0.01 <= ex <= 0.99 and 0.01 <= ey <= 0.99:
                                 break
                             f *= 0.85
-                            ex, ey = px + vx * nl * f, py + vy * nl * f
-                        tone = base * rng.uniform(0.75, 1.15)
-                        segs.append((px, py, ex, ey, 0.0048, tone * 0.65, np.minimum(tone * 1.3, 1)))
+                        tone = base * rng.uniform(0.78, 1.18)
+                        mid = tone * 0.95
+                        segs.append((px, py, mx, my, 0.0062, tone * 0.55, mid))
+                        segs.append((mx, my, ex, ey, 0.0048, mid, np.minimum(tone * 1.4, 1)))
         else:  # spruce
             top = rng.uniform(0.86, 0.96)
             axes = [(0.5, 0.0, 0.5 + bend, top, 1.0)]
@@ -1102,7 +1112,7 @@ def library():
 
     save_bark("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
     leaf = pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
-    needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.21, 0.36, 0.30))
+    needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.22, 0.38, 0.35))
 
     save_bark("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
     leaf = sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)

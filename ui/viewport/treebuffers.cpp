@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <filesystem>
 
 #include <QImage>
@@ -9,6 +10,7 @@
 #include "engine/export/materials.h"
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
+#include "engine/util/alphamips.h"
 #include "engine/wind/windelements.h"
 #include "ui/generation/windvertexdata.h"
 #include "ui/viewport/textureimage.h"
@@ -304,7 +306,19 @@ GLuint TreeBuffers::textureFor(const std::string& material, const std::string& f
         mGl->glBindTexture(GL_TEXTURE_2D, id);
         mGl->glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
                           GL_UNSIGNED_BYTE, image.constBits());
-        mGl->glGenerateMipmap(GL_TEXTURE_2D);
+        if (material == "leaf") {
+            // Cut-out cards: mipmaps whose alpha keeps level 0's coverage, so that needles and
+            // leaves neither thin away nor swell into wedges as they recede (issue #33).
+            Image full(image.width(), image.height(), 4);
+            std::memcpy(full.pixels.data(), image.constBits(), full.pixels.size());
+            const std::vector<Image> mips = alphaTestedMips(full);
+            for (std::size_t k = 0; k < mips.size(); ++k)
+                mGl->glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(k + 1), GL_RGBA8, mips[k].width,
+                                  mips[k].height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                                  mips[k].pixels.data());
+        } else {
+            mGl->glGenerateMipmap(GL_TEXTURE_2D);
+        }
         mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         mGl->glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         const GLint wrap = material == "leaf" ? GL_CLAMP_TO_EDGE : GL_REPEAT;

@@ -862,11 +862,24 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
 }
 
 void Viewport::drawRanges(const std::vector<DrawRange>& ranges, GLsizei instances) {
+    // Leaf cards cut out by alpha to coverage where the target is multisampled (issue #33);
+    // the written alpha is then 1 (ALPHA_TO_ONE), as every other draw's.
+    GLint samples = 0;
+    glGetIntegerv(GL_SAMPLES, &samples);
     for (const DrawRange& r : ranges) {
         QOpenGLShaderProgram& program =
             useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0) |
                            (mDrawWind ? kMeshWind : 0) | (instances > 0 ? kMeshInstanced : 0));
         setUniform(program, "uAlbedo", r.color);
+        const bool toCoverage = r.alphaTest && r.texture != 0 && samples > 1;
+        if (r.alphaTest && r.texture != 0) program.setUniformValue("uAlphaToCoverage", toCoverage);
+        if (toCoverage) {
+            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+        } else {
+            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+            glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+        }
         if (r.texture != 0) {
             glActiveTexture(GL_TEXTURE1);
             glBindTexture(GL_TEXTURE_2D, r.normalMap);
@@ -916,6 +929,8 @@ void Viewport::drawRanges(const std::vector<DrawRange>& ranges, GLsizei instance
     }
     glBindTexture(GL_TEXTURE_2D, 0);
     glDisable(GL_CULL_FACE);
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

@@ -213,7 +213,11 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         }
         groups = std::move(kept);
     }
-    const CardSpan span = growForCards(out, groups.size());
+    std::size_t cardCount = groups.size();
+    if (clusters.crossed)
+        for (const std::vector<std::uint32_t>& g : groups)
+            cardCount += g.size() > 1;
+    const CardSpan span = growForCards(out, cardCount);
     const std::size_t v0 = span.firstVertex;
     const std::size_t i0 = span.firstIndex;
     const bool wind = span.wind;
@@ -224,6 +228,7 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     const glm::vec2 inset(2.0f / 1024.0f, 2.0f / 512.0f);
     const glm::vec2 tileSize(1.0f / static_cast<float>(kClusterAtlasColumns),
                              1.0f / static_cast<float>(kClusterAtlasRows));
+    std::size_t card = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::vector<std::uint32_t>& group = groups[g];
         const skel::Leaf& first = leaves[group.front()];
@@ -245,35 +250,54 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
             tile = static_cast<int>(rng.below(kClusterSprays));
             mirror = rng.uniformf(0.0f, 1.0f) < 0.5f;
         }
-        const glm::vec2 origin =
-            tileSize * glm::vec2(static_cast<float>(tile % kClusterAtlasColumns),
-                                 static_cast<float>(tile / kClusterAtlasColumns));
-        const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
-        const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
-        const std::size_t v = v0 + 4 * g;
         const bool known =
             skeleton && first.node >= 0 && static_cast<std::size_t>(first.node) < skeleton->size();
-        for (std::size_t c = 0; c < 4; ++c) {
-            out.positions[v + c] = corners[c];
-            out.normals[v + c] = normal;
-            out.uvs[v + c] = origin + inset + local[c] * (tileSize - 2.0f * inset);
-            if (ids)
-                out.node[v + c] =
-                    first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;
-            if (wind) {
-                out.branchOrder[v + c] =
-                    known ? skeleton->order[static_cast<std::size_t>(first.node)] : 0;
-                out.flexibility[v + c] = 1.0f;
+        const int sheets = clusters.crossed && group.size() > 1 ? 2 : 1;
+        for (int sheet = 0; sheet < sheets; ++sheet, ++card) {
+            if (sheet == 1) {
+                // The crossing card: the same centre line (stem edge to tip edge), turned a
+                // quarter round it.
+                const glm::vec3 lo = 0.5f * (corners[0] + corners[1]);
+                const glm::vec3 hi = 0.5f * (corners[2] + corners[3]);
+                const glm::vec3 half = 0.5f * (corners[0] - corners[1]);
+                const glm::vec3 turned = normal * glm::length(half);
+                corners[0] = lo + turned;
+                corners[1] = lo - turned;
+                corners[2] = hi - turned;
+                corners[3] = hi + turned;
+                const float len = glm::length(half);
+                normal = len > 0.0f ? -half / len : normal; // as the winding faces
+                mirror = !mirror;
+                tile = (tile + 3) % kClusterSprays; // another spray: no twin pictures
             }
+            const glm::vec2 origin =
+                tileSize * glm::vec2(static_cast<float>(tile % kClusterAtlasColumns),
+                                     static_cast<float>(tile / kClusterAtlasColumns));
+            const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
+            const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
+            const std::size_t v = v0 + 4 * card;
+            for (std::size_t c = 0; c < 4; ++c) {
+                out.positions[v + c] = corners[c];
+                out.normals[v + c] = normal;
+                out.uvs[v + c] = origin + inset + local[c] * (tileSize - 2.0f * inset);
+                if (ids)
+                    out.node[v + c] =
+                        first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;
+                if (wind) {
+                    out.branchOrder[v + c] =
+                        known ? skeleton->order[static_cast<std::size_t>(first.node)] : 0;
+                    out.flexibility[v + c] = 1.0f;
+                }
+            }
+            const auto b = static_cast<std::uint32_t>(v);
+            const std::uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
+            for (std::size_t t = 0; t < 6; ++t)
+                out.indices[i0 + 6 * card + t] = tri[t];
         }
-        const auto b = static_cast<std::uint32_t>(v);
-        const std::uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
-        for (std::size_t t = 0; t < 6; ++t)
-            out.indices[i0 + 6 * g + t] = tri[t];
     }
     out.submeshes.push_back(
-        {"leaf", static_cast<std::uint32_t>(i0), static_cast<std::uint32_t>(6 * groups.size())});
-    return groups.size();
+        {"leaf", static_cast<std::uint32_t>(i0), static_cast<std::uint32_t>(6 * cardCount)});
+    return cardCount;
 }
 
 } // namespace sylva::mesh

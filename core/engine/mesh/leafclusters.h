@@ -27,6 +27,11 @@ struct LeafClusterSettings {
     /// Mean leaves a card carries; 0 or 1: one card a leaf (appendLeafCards); [0, 64].
     int leavesPerCard = 0;
     std::uint64_t seed = 0; ///< which spray tile a cluster shows, mirrored or not
+    /// Each card of two or more leaves gets a second one crossing it along its stem-to-tip
+    /// centre line, at right angles (the same size and tile, mirrored the other way): a tuft
+    /// of needles round its shoot seen from any side, not a flat frond edge on (issue #33:
+    /// the Scots pine). Twice the cards.
+    bool crossed = false;
 };
 
 /// Appends the leaves as cluster cards ("leaf" submesh). Leaves are grouped by cubic cells whose
@@ -40,6 +45,7 @@ struct LeafClusterSettings {
 /// \p accept (when given) refuses, tested as a leaf whose card (size long, cards.aspect x size
 /// wide, times cards.sizeScale) holds it, is not made: its leaves keep their own cards (a forest
 /// refuses cards that reach into an obstacle; adaptation already checked the leaves).
+/// With LeafClusterSettings::crossed a group's card comes with its crossing card.
 /// Deterministic. \return the number of cards made.
 std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
                                    const LeafCardSettings& cards,

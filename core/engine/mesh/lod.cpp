@@ -236,6 +236,7 @@ void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
         LeafClusterSettings clusters;
         clusters.leavesPerCard = settings.leafClusterSize;
         clusters.seed = settings.seed;
+        clusters.crossed = settings.leafClusterCrossed;
         appendLeafClusterCards(mesh, leaves, settings.leafCards, clusters, skeleton,
                                settings.acceptLeafCard);
     } else {

@@ -120,6 +120,7 @@ struct TreeMeshSettings {
     /// leaf. With it the leaf submesh shows leafClusterTexture (the species' cluster atlas).
     int leafClusterSize = 0;
     std::string leafClusterTexture;
+    bool leafClusterCrossed = false; ///< LeafClusterSettings::crossed (tube_mesh's option)
 };
 
 /// Bark tubes plus leaf cards, at the level of detail the settings ask for.

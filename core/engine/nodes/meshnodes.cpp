@@ -135,6 +135,7 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     }
     s.leafClusterSize = rangedInt(p, "leaf_cluster_size", 0, 0, 64);
     s.leafClusterTexture = texture("leaf_cluster_texture_file");
+    s.leafClusterCrossed = p.boolean("leaf_cluster_crossed", false);
     if (s.leafClusterSize > 1 && s.leafClusterTexture.empty())
         throw InvalidInput("leaf_cluster_size " + std::to_string(s.leafClusterSize) +
                            " needs leaf_cluster_texture_file (the species' cluster atlas)");
@@ -283,7 +284,10 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
            number("leaf_aspect", 0.5, 1e-6, 4, "", "Leaf card width / length"),
            integer("leaf_cluster_size", 0, 0, 64,
                    "Leaves one card carries on average (needs leaf_cluster_texture_file); "
-                   "0: one card a leaf")});
+                   "0: one card a leaf"),
+           boolean("leaf_cluster_crossed", false,
+                   "Each cluster card crossed by a second at right angles along its centre "
+                   "line (tufts of needles round their shoot)")});
     group(tube.params, "Level of detail",
           {number("lod_distance", -1.0, -1, 1e7, "m",
                   "Camera distance the mesh is made for; -1: full detail"),

@@ -140,6 +140,64 @@ TEST(LeafClusters, GroupsReachTheMeanSizeAndKeepEveryLeafOnce) {
     EXPECT_THROW(mesh::appendLeafClusterCards(a, leaves, {}, cs), InvalidInput);
 }
 
+// Issue #33: crossed cluster cards (the Scots pine's tufts): every card of two or more
+// leaves comes with a second one of the same size along the same centre line, at right
+// angles to it, showing another spray; a leaf alone keeps one card.
+TEST(LeafClusters, CrossedCardsShareTheCentreLineAtRightAngles) {
+    std::vector<skel::Leaf> leaves;
+    for (int i = 0; i < 300; ++i) {
+        skel::Leaf l;
+        l.position = glm::vec3(0.07f * (i % 10), 0.05f * ((i / 10) % 6), 0.09f * (i / 60));
+        l.orientation = glm::angleAxis(0.3f * static_cast<float>(i), glm::vec3(0.3f, 1, 0.2f));
+        l.size = 0.1f;
+        leaves.push_back(l);
+    }
+    skel::Leaf alone;
+    alone.position = glm::vec3(50.0f);
+    alone.size = 0.1f;
+    leaves.push_back(alone);
+    mesh::LeafClusterSettings cs;
+    cs.leavesPerCard = 6;
+    cs.seed = 3;
+    mesh::Mesh flat, crossed;
+    const std::size_t groups = mesh::appendLeafClusterCards(flat, leaves, {}, cs);
+    cs.crossed = true;
+    const std::size_t cards = mesh::appendLeafClusterCards(crossed, leaves, {}, cs);
+    std::size_t singles = 0;
+    for (const auto& g : mesh::groupLeaves(leaves, 1.0, 6))
+        singles += g.size() == 1;
+    EXPECT_GE(singles, 1u);
+    EXPECT_EQ(cards, 2 * groups - singles); // a leaf alone has one card
+    ASSERT_EQ(crossed.vertexCount(), 4 * cards);
+    std::size_t f = 0, c = 0, pairs = 0;
+    const glm::vec2 grid(mesh::kClusterAtlasColumns, mesh::kClusterAtlasRows);
+    while (f < flat.vertexCount()) {
+        // The first card of each group is the flat one, as it was.
+        for (int k = 0; k < 4; ++k)
+            EXPECT_EQ(crossed.positions[c + k], flat.positions[f + k]);
+        const glm::vec3* p = &crossed.positions[c];
+        if (glm::floor(crossed.uvs[c] * grid) == glm::vec2(3, 1)) { // the single-leaf tile
+            f += 4;
+            c += 4;
+            continue;
+        }
+        const glm::vec3* q = &crossed.positions[c + 4];
+        EXPECT_LT(glm::length(0.5f * (p[0] + p[1]) - 0.5f * (q[0] + q[1])), 1e-5f);
+        EXPECT_LT(glm::length(0.5f * (p[2] + p[3]) - 0.5f * (q[2] + q[3])), 1e-5f);
+        EXPECT_NEAR(glm::length(p[0] - p[1]), glm::length(q[0] - q[1]), 1e-5f);
+        EXPECT_NEAR(glm::dot(glm::normalize(p[0] - p[1]), glm::normalize(q[0] - q[1])), 0.0f,
+                    1e-4f);
+        EXPECT_NE(glm::floor(crossed.uvs[c] * grid), glm::floor(crossed.uvs[c + 4] * grid));
+        // Its normal faces as its winding does.
+        const glm::vec3 face = glm::cross(q[1] - q[0], q[2] - q[0]);
+        EXPECT_GT(glm::dot(face, crossed.normals[c + 4]), 0.0f);
+        ++pairs;
+        f += 4;
+        c += 8;
+    }
+    EXPECT_EQ(pairs, groups - singles);
+}
+
 TEST(LeafClusters, BroadleavesCostAQuarterOfTheLeafTrianglesAtTheSameSilhouette) {
     graph::registerBuiltinNodeTypes();
     printHeader();

@@ -4,8 +4,9 @@
 // leaf lit from behind lets a little light through. Textures are sRGB: decoded to linear before
 // lighting, with gamma 2 (a square and a square root: under a software renderer two pow() per
 // pixel cost 5 % of a frame, and the difference to 2.2 does not show). Leaf cards are
-// cut out by their texture's alpha, sharpened with the mipmap level so that far leaves keep
-// their area instead of fading away.
+// cut out by their texture's alpha, whose mipmaps keep the cut-out's coverage so that far
+// leaves and needles keep their area (engine/util/alphamips.h); with multisampling the cut-out
+// goes through alpha to coverage, antialiased (uAlphaToCoverage).
 // Compiled in four variants (the loader puts TEXTURED and CUTOUT defines after the version
 // line) rather than branching on uniforms: a software renderer (Mesa llvmpipe) runs both sides
 // of a branch with masks, and a shader that can discard loses the early depth test for every
@@ -20,6 +21,9 @@ uniform bool uVertexColor; // colour by a node attribute instead of the material
 uniform sampler2D uTexture;
 uniform vec3 uLightDir;
 uniform float uHighlight; // a selected tree: blended towards orange
+#ifdef CUTOUT
+uniform bool uAlphaToCoverage; // GL_SAMPLE_ALPHA_TO_COVERAGE is on (multisampled target)
+#endif
 out vec4 fragColor;
 #ifdef TEXTURED
 // The texture's tangent-space normal map (make_textures.py: OpenGL convention, +X along u, +Y
@@ -51,9 +55,13 @@ void main() {
 #ifdef TEXTURED
     vec4 tex = texture(uTexture, vUv);
 #ifdef CUTOUT
-    vec2 texel = vUv * vec2(textureSize(uTexture, 0));
-    float lod = 0.5 * log2(max(dot(dFdx(texel), dFdx(texel)), dot(dFdy(texel), dFdy(texel))));
-    if (tex.a * (1.0 + 0.25 * max(lod, 0.0)) < 0.5) discard;
+    // The alpha sharpened to a ramp a pixel wide about 0.5 (Golus, "Anti-aliased Alpha Test",
+    // 2017): as alpha to coverage, an edge antialiased over the samples and a needle under a
+    // pixel wide covering part of one, where a hard test drew it as a solid lobe or not at
+    // all (issue #33: the pine's brushes read as fern fronds); without multisampling the
+    // plain test at 0.5.
+    float cut = (tex.a - 0.5) / max(fwidth(tex.a), 1e-4) + 0.5;
+    if (cut < (uAlphaToCoverage ? 0.01 : 0.5)) discard;
 #endif
     vec3 material = tex.rgb * tex.rgb;
 #else
@@ -78,5 +86,9 @@ void main() {
     vec3 color = albedo * (0.55 * ambient * ao +
                            1.35 * vec3(1.0, 0.96, 0.90) * diffuse * (0.4 + 0.6 * ao));
     color = mix(color, vec3(1.0, 0.45, 0.05), uHighlight);
+#if defined(TEXTURED) && defined(CUTOUT)
+    fragColor = vec4(sqrt(color), clamp(cut, 0.0, 1.0)); // GL_SAMPLE_ALPHA_TO_ONE: written 1
+#else
     fragColor = vec4(sqrt(color), 1.0);
+#endif
 }
