@@ -1112,7 +1112,7 @@ def library():
 
     save_bark("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
     leaf = pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
-    needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.22, 0.38, 0.35))
+    needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.20, 0.34, 0.27))
 
     save_bark("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
     leaf = sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)

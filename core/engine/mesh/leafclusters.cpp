@@ -84,6 +84,7 @@ struct FittedCard {
     /// The card as a leaf whose card (size long, aspect x size wide) holds it: what the
     /// obstacle check of a forest tests.
     skel::Leaf bounds;
+    skel::Leaf crossBounds; ///< the same for the crossing card (LeafClusterSettings::crossed)
 };
 
 FittedCard fitCard(const std::vector<skel::Leaf>& leaves, const std::vector<std::uint32_t>& group,
@@ -158,6 +159,11 @@ FittedCard fitCard(const std::vector<skel::Leaf>& leaves, const std::vector<std:
         glm::quat_cast(glm::mat3(glm::vec3(-across), glm::vec3(along), glm::vec3(n)));
     f.bounds.size = static_cast<float>(std::max(length, width / aspect) / scale);
     f.bounds.node = leaves[group.front()].node;
+    // The crossing card is the card turned a quarter round its centre line: across -> n.
+    f.crossBounds = f.bounds;
+    f.crossBounds.position = glm::vec3(lo + cm * across);
+    f.crossBounds.orientation =
+        glm::quat_cast(glm::mat3(glm::vec3(-n), glm::vec3(along), glm::vec3(-across)));
     return f;
 }
 
@@ -204,7 +210,11 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         std::vector<std::vector<std::uint32_t>> kept;
         kept.reserve(groups.size());
         for (std::vector<std::uint32_t>& g : groups) {
-            if (g.size() < 2 || accept(fitCard(leaves, g, aspect, scale).bounds)) {
+            const auto fits = [&] {
+                const FittedCard f = fitCard(leaves, g, aspect, scale);
+                return accept(f.bounds) && (!clusters.crossed || accept(f.crossBounds));
+            };
+            if (g.size() < 2 || fits()) {
                 kept.push_back(std::move(g));
             } else {
                 for (std::uint32_t i : g)

@@ -302,12 +302,17 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
     };
     // The level under the bar, measured: the rhododendron's 4 % level, 46 px in area at its
     // switch distance. (The pine's, 0.876 before its needle clusters, is at 0.910 now.)
-    const Known below[] = {{"rhododendron", 3, 0.890, 0.827}};
+    // The pine's LOD3 (164 px in area) since its needles are tufts at the ends of bare limbs
+    // (issue #33): its clumps are specks at that size.
+    const Known below[] = {{"rhododendron", 3, 0.890, 0.827}, {"scots-pine", 3, 0.895, 0.868}};
     // Levels the camera LOD makes coarser than 80 % of their budget (its steps jump past it).
     // (Measured with the needle-cluster and fuller-crown presets: willow LOD1 21 %, pine LOD1
     // 27.9 % and LOD2 6.4 %, cypress LOD1 25.7 %.)
     const std::map<std::string, std::set<std::size_t>> coarser = {
-        {"weeping-willow", {1}}, {"scots-pine", {1, 2}}, {"italian-cypress", {1}}};
+        {"weeping-willow", {1}},
+        {"scots-pine", {1, 2}},
+        {"italian-cypress", {1}},
+        {"norway-spruce", {1}}}; // 26.6 % since its LOD0 lost its twigs' bark (issue #33)
     // The date palm has 456 triangles: 12 % and 4 % of them are not reached before it is 4 px.
     const std::map<std::string, std::set<std::size_t>> unmet = {{"date-palm", {2, 3}}};
     const char* only = std::getenv("SYLVA_LOD_SPECIES");
