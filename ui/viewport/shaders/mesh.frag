@@ -23,6 +23,7 @@ uniform vec3 uLightDir;
 uniform float uHighlight; // a selected tree: blended towards orange
 #ifdef CUTOUT
 uniform bool uAlphaToCoverage; // GL_SAMPLE_ALPHA_TO_COVERAGE is on (multisampled target)
+uniform vec3 uEye;             // the vertex shader's: the camera, world space
 #endif
 out vec4 fragColor;
 #ifdef TEXTURED
@@ -60,7 +61,12 @@ void main() {
     // pixel wide covering part of one, where a hard test drew it as a solid lobe or not at
     // all (issue #33: the pine's brushes read as fern fronds); without multisampling the
     // plain test at 0.5.
-    float cut = (tex.a - 0.5) / max(fwidth(tex.a), 1e-4) + 0.5;
+    // A card seen within about 15 degrees of edge on fades out (gone at 5): its picture
+    // squeezed into a streak read as a smear (issue #33: the rhododendron), and the cards
+    // around it cover the crown.
+    float edgeOn = abs(dot(normalize(vNormal), normalize(uEye - vWorld)));
+    float a = tex.a * smoothstep(0.08, 0.25, edgeOn);
+    float cut = (a - 0.5) / max(fwidth(a), 1e-4) + 0.5;
     if (cut < (uAlphaToCoverage ? 0.01 : 0.5)) discard;
 #endif
     vec3 material = tex.rgb * tex.rgb;
