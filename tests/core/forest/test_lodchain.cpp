@@ -304,7 +304,8 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
     // switch distance. (The pine's, 0.876 before its needle clusters, is at 0.910 now.)
     // The pine's LOD3 (164 px in area) since its needles are tufts at the ends of bare limbs
     // (issue #33): its clumps are specks at that size.
-    const Known below[] = {{"rhododendron", 3, 0.890, 0.827}, {"scots-pine", 3, 0.895, 0.868}};
+    // The rhododendron's at 0.890 / 0.827 before its rosette cards stood up (issue #33).
+    const Known below[] = {{"rhododendron", 3, 0.851, 0.772}, {"scots-pine", 3, 0.895, 0.868}};
     // Levels the camera LOD makes coarser than 80 % of their budget (its steps jump past it).
     // (Measured with the needle-cluster and fuller-crown presets: willow LOD1 21 %, pine LOD1
     // 27.9 % and LOD2 6.4 %, cypress LOD1 25.7 %.)
