@@ -70,6 +70,10 @@ CLOSEUPS = [
     ("silver-birch", (2.2, 3.2, 4.5), (0.0, 4.0, 0.0)),
     ("english-oak", (3.5, 2.0, 6.0), (0.0, 3.2, 0.0)),
     ("scots-pine", (4.5, 10.5, 6.5), (0.0, 11.5, 0.0)),
+    # issue #33: the pine's needle tufts, the spruce's sprays, the rhododendron's trusses
+    ("scots-pine", (2.5, 11.0, 3.5), (0.0, 12.0, 0.0), "scots-pine-needles"),
+    ("norway-spruce", (3.0, 4.0, 5.0), (0.0, 3.5, 0.0)),
+    ("rhododendron", (2.2, 2.0, 2.6), (0.0, 1.4, 0.0)),
 ]
 
 
@@ -224,10 +228,11 @@ def main():
                 if not args.no_doc and not args.only:
                     seasons_doc(species)
             if args.closeups:
-                for sp, eye, target in CLOSEUPS:
-                    raw = os.path.join(tmp, "%s-closeup.png" % sp)
+                for sp, eye, target, *name in CLOSEUPS:
+                    out = name[0] if name else "%s-closeup" % sp
+                    raw = os.path.join(tmp, "%s.png" % out)
                     closeup(args.build, sp, eye, target, raw, tmp)
-                    thumbnail(raw, os.path.join(args.out, "%s-closeup.png" % sp), 360, colors=96)
+                    thumbnail(raw, os.path.join(args.out, "%s.png" % out), 360, colors=96)
                 for sp, eye, target in BARK_CLOSEUPS:
                     raw = os.path.join(tmp, "%s-bark.png" % sp)
                     closeup(args.build, sp, eye, target, raw, tmp)
@@ -249,12 +254,13 @@ def main():
                 tris.append(triangles(args.build, f, tmp))
                 print(sp, seed, tris[-1], file=sys.stderr)
             rows.append((sp, tris))
-        for sp, eye, target in CLOSEUPS:
+        for sp, eye, target, *name in CLOSEUPS:
             if sp not in species:
                 continue
-            raw = os.path.join(tmp, "%s-closeup.png" % sp)
+            out = name[0] if name else "%s-closeup" % sp
+            raw = os.path.join(tmp, "%s.png" % out)
             closeup(args.build, sp, eye, target, raw, tmp)
-            thumbnail(raw, os.path.join(args.out, "%s-closeup.png" % sp), 360, colors=96)
+            thumbnail(raw, os.path.join(args.out, "%s.png" % out), 360, colors=96)
         if not args.only:
             raw = os.path.join(tmp, "library.png")
             library(args.build, raw, tmp)
