@@ -2,8 +2,9 @@
 // engine's CPU rasteriser (the impostor bake's, which applies Mesh::colors) from the side, its
 // leaves in one plain leaf green so that what varies between pixels is only the cards' tint:
 // the hue's spread across the crown must be clearly above zero with the preset's variation and
-// zero with it set to [0, 0, 0]; then with the species' own textures, the crown must vary more
-// with the tint than without. Prints the figures (docs/geometry.md, "Leaf colour variation").
+// zero with it set to [0, 0, 0]; with the species' own textures, the crown's leaves must stay
+// within 15 % of their brightness without it. Prints the figures (docs/geometry.md, "Leaf
+// colour variation").
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,6 +25,7 @@ const std::filesystem::path kPresets = SYLVA_PRESETS_DIR;
 struct Spread {
     double hue = 0.0;   ///< std dev of the leaf pixels' hue, degrees
     double value = 0.0; ///< std dev of their HSV value, 0..1
+    double meanValue = 0.0;
     std::size_t pixels = 0;
 };
 
@@ -58,6 +60,7 @@ Spread measure(const Image& img, const mesh::Mesh& m, bool plain) {
     const double dn = static_cast<double>(n);
     s.hue = std::sqrt(std::max(0.0, sh2 / dn - (sh / dn) * (sh / dn)));
     s.value = std::sqrt(std::max(0.0, sv2 / dn - (sv / dn) * (sv / dn)));
+    s.meanValue = sv / dn;
     return s;
 }
 
@@ -105,30 +108,33 @@ Rendered render(const char* species, const char* season, bool plain) {
 } // namespace
 
 TEST(LeafTintRender, PlainLeavesShowOnlyTheCardsTint) {
-    for (const char* species : {"english-oak", "european-beech", "norway-maple"}) {
-        const Rendered r = render(species, "summer", true);
-        std::printf("%s plain, summer: hue spread %.2f° (%.2f° without), value spread %.3f "
-                    "(%.3f), %zu leaf pixels\n",
-                    species, r.tinted.hue, r.untinted.hue, r.tinted.value, r.untinted.value,
-                    r.tinted.pixels);
-        EXPECT_GT(r.tinted.pixels, 5000u) << species;
-        EXPECT_GT(r.tinted.hue, 1.0) << species;
-        EXPECT_GT(r.tinted.value, 0.02) << species;
-        EXPECT_LT(r.untinted.hue, 0.05) << species;
-        EXPECT_LT(r.untinted.value, 0.002) << species;
-    }
+    for (const char* season : {"summer", "autumn"})
+        for (const char* species : {"english-oak", "european-beech", "norway-maple"}) {
+            const Rendered r = render(species, season, true);
+            std::printf("%s plain, %s: hue spread %.2f° (%.2f° without), value spread %.3f "
+                        "(%.3f), %zu leaf pixels\n",
+                        species, season, r.tinted.hue, r.untinted.hue, r.tinted.value,
+                        r.untinted.value, r.tinted.pixels);
+            EXPECT_GT(r.tinted.pixels, 5000u) << species;
+            EXPECT_GT(r.tinted.hue, 1.5) << species << " " << season;
+            EXPECT_GT(r.tinted.value, 0.01) << species << " " << season;
+            EXPECT_LT(r.untinted.hue, 0.05) << species << " " << season;
+            EXPECT_LT(r.untinted.value, 0.002) << species << " " << season;
+        }
 }
 
-TEST(LeafTintRender, TexturedCrownsVaryMoreWithTheTint) {
+// The cost of a multiplier that cannot brighten: the textured crown's leaves are darker on
+// average. Bounded so that a change of the spread's shape cannot quietly darken the library.
+TEST(LeafTintRender, TexturedCrownsStayNearTheirBrightness) {
     for (const char* season : {"summer", "autumn"})
         for (const char* species : {"english-oak", "european-beech", "norway-maple"}) {
             const Rendered r = render(species, season, false);
-            std::printf("%s textured, %s: hue spread %.2f° (%.2f° without), value spread %.3f "
-                        "(%.3f)\n",
-                        species, season, r.tinted.hue, r.untinted.hue, r.tinted.value,
-                        r.untinted.value);
-            EXPECT_GT(r.tinted.hue + 10.0 * r.tinted.value,
-                      1.05 * (r.untinted.hue + 10.0 * r.untinted.value))
-                << species << " " << season;
+            const double ratio = r.tinted.meanValue / r.untinted.meanValue;
+            std::printf("%s textured, %s: mean value %.3f (%.3f without, x%.3f), hue spread "
+                        "%.2f° (%.2f°)\n",
+                        species, season, r.tinted.meanValue, r.untinted.meanValue, ratio,
+                        r.tinted.hue, r.untinted.hue);
+            EXPECT_GT(ratio, 0.85) << species << " " << season;
+            EXPECT_LT(ratio, 1.0) << species << " " << season;
         }
 }
