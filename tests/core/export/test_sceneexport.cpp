@@ -296,29 +296,37 @@ TEST(SceneExport, BlenderReadsTheSameLeafTintsFromGlbFbxAndObj) {
         out.add({{"oak", tree, glm::vec3(0.0f), 0.0f, 1.0f}});
         out.commit();
     }
-    const std::string script = "import bpy,sys,numpy\n"
-                               "if not hasattr(numpy,'bool'): numpy.bool=bool\n"
-                               "ok=True\n"
-                               "for f in ['oak.glb','oak.fbx','oak.obj']:\n"
-                               "  bpy.ops.wm.read_factory_settings(use_empty=True)\n"
-                               "  p='" +
-                               dir.string() +
-                               "/'+f\n"
-                               "  if f.endswith('glb'): bpy.ops.import_scene.gltf(filepath=p)\n"
-                               "  elif f.endswith('fbx'): bpy.ops.import_scene.fbx(filepath=p)\n"
-                               "  else: bpy.ops.wm.obj_import(filepath=p)\n"
-                               "  g=[]\n"
-                               "  for o in bpy.data.objects:\n"
-                               "    if o.type!='MESH': continue\n"
-                               "    for a in o.data.color_attributes:\n"
-                               "      v=numpy.zeros(len(a.data)*4,dtype=numpy.float32)\n"
-                               "      a.data.foreach_get('color',v)\n"
-                               "      g.append(v.reshape(-1,4)[:,1].min())\n"
-                               "  print('sylva-check',f,g)\n"
-                               "  ok=ok and len(g)>0 and abs(min(g)-" +
-                               std::to_string(darkest / 255.0) +
-                               ")<0.01\n"
-                               "sys.exit(0 if ok else 1)\n";
+    const std::string script =
+        "import bpy,sys,numpy\n"
+        "if not hasattr(numpy,'bool'): numpy.bool=bool\n"
+        "ok=True\n"
+        "for f in ['oak.glb','oak.fbx','oak.obj']:\n"
+        "  bpy.ops.wm.read_factory_settings(use_empty=True)\n"
+        "  p='" +
+        dir.string() +
+        "/'+f\n"
+        "  if f.endswith('glb'): bpy.ops.import_scene.gltf(filepath=p)\n"
+        "  elif f.endswith('fbx'): bpy.ops.import_scene.fbx(filepath=p)\n"
+        "  else: bpy.ops.wm.obj_import(filepath=p)\n"
+        "  g=[]\n"
+        "  for o in bpy.data.objects:\n"
+        "    if o.type!='MESH': continue\n"
+        "    for a in o.data.color_attributes:\n"
+        "      v=numpy.zeros(len(a.data)*4,dtype=numpy.float32)\n"
+        "      a.data.foreach_get('color',v)\n"
+        "      g.append(v.reshape(-1,4)[:,1].min())\n"
+        "  if f.endswith('glb'):\n"
+        // Blender's glTF importer multiplies the base colour by COLOR_0 (a Color Attribute
+        // node in the leaf material), as the glTF specification asks.
+        "    v=[m.name for m in bpy.data.materials if m.use_nodes and any(n.type=="
+        "'VERTEX_COLOR' for n in m.node_tree.nodes)]\n"
+        "    print('sylva-check materials using the colours',v)\n"
+        "    ok=ok and any('leaf' in n for n in v)\n"
+        "  print('sylva-check',f,g)\n"
+        "  ok=ok and len(g)>0 and abs(min(g)-" +
+        std::to_string(darkest / 255.0) +
+        ")<0.01\n"
+        "sys.exit(0 if ok else 1)\n";
     {
         std::ofstream out(dir / "check.py");
         out << script;
