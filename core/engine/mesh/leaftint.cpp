@@ -1,7 +1,6 @@
 #include "engine/mesh/leaftint.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 #include "engine/util/random.h"
@@ -160,10 +159,11 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
         for (std::size_t k = v; k < end; ++k)
             centre += glm::dvec3(mesh.positions[k]);
         centre /= static_cast<double>(end - v);
-        const glm::vec3 c(centre);
+        // The centre to a millimetre: two sheets of one crossed cluster card (the same centre
+        // line, their corners rounded differently) get one colour.
         std::uint64_t h = seed;
         for (int k = 0; k < 3; ++k)
-            h = mixSeed(h, std::bit_cast<std::uint32_t>(c[k]));
+            h = mixSeed(h, static_cast<std::uint64_t>(std::llround(centre[k] * 1000.0)));
         const glm::dvec3 patch =
             invPatch > 0.0 ? valueNoise(centre * invPatch, patchSeed) : glm::dvec3(0.0);
         double r[3];

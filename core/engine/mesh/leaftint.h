@@ -52,7 +52,8 @@ glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double sa
 
 /// Gives the quads (four vertices a card, as appendLeafCards and appendLeafClusterCards make
 /// them) from \p firstVertex to the end of \p mesh their Mesh::colors: each card one colour,
-/// from a random of \p seed and the card's centre (the same card, the same colour, whatever
+/// from a random of \p seed and the card's centre to a millimetre (the two sheets of a crossed
+/// card share it; the same card, the same colour, whatever
 /// the thread count or the order cards are made in) mixed half and half with a smooth noise
 /// over the crown (LeafTintSettings::patchSize). Vertices before \p firstVertex get white when
 /// the mesh had no colours. Does nothing when \p variation is not active.

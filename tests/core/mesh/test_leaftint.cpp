@@ -222,3 +222,20 @@ TEST(LeafTint, ImpostorBakeShowsTheTint) {
     // 64/255 linear is about 0.53 in sRGB.
     EXPECT_NEAR(tinted.at(8, 8)[1], 0.53 * 255, 6);
 }
+
+TEST(LeafTint, CrossedSheetsOfOneCardShareTheirColour) {
+    // A cluster card and its crossing sheet (the same centre line turned a quarter round it,
+    // as leafclusters makes crossed cards) take one colour; a card beside them another.
+    mesh::Mesh m;
+    const glm::vec3 lo(0.31f, 2.17f, -0.43f), hi(0.36f, 2.49f, -0.41f);
+    const glm::vec3 a(0.07f, 0.0f, 0.013f), b(0.0f, 0.011f, 0.071f);
+    for (const glm::vec3& half : {a, b})
+        for (const glm::vec3& p : {lo + half, lo - half, hi - half, hi + half})
+            m.positions.push_back(p);
+    for (const glm::vec3& p : {lo, lo + a, hi + a, hi})
+        m.positions.push_back(p + glm::vec3(0.5f, 0.0f, 0.0f));
+    mesh::tintLeafCards(m, 0, {8.0, 0.2, 0.2}, kGreen, 1.5, 3);
+    ASSERT_EQ(m.colors.size(), 12u);
+    EXPECT_EQ(m.colors[0], m.colors[4]);
+    EXPECT_NE(m.colors[0], m.colors[8]);
+}
