@@ -239,3 +239,15 @@ TEST(LeafTint, CrossedSheetsOfOneCardShareTheirColour) {
     EXPECT_EQ(m.colors[0], m.colors[4]);
     EXPECT_NE(m.colors[0], m.colors[8]);
 }
+
+TEST(LeafTint, CardsAddedLaterKeepTheColoursInStep) {
+    // Mesh::colors stays empty or of the positions' size: cards appended to a tinted mesh (the
+    // leaves node after tube_mesh) are white until tinted.
+    const skel::Skeleton s = leafyTree();
+    mesh::Mesh m = mesh::buildTreeMesh(s, tinted(10.0, 0.2, 0.2));
+    const std::size_t before = m.positions.size();
+    mesh::appendLeafCards(m, s.leaves, {});
+    ASSERT_EQ(m.colors.size(), m.positions.size());
+    EXPECT_EQ(m.colors.back(), glm::u8vec4(255));
+    EXPECT_NE(m.colors[before - 1], glm::u8vec4(255));
+}
