@@ -3,32 +3,18 @@
 #include <cmath>
 #include <set>
 
-#include "../common/testwords.h"
-#include "engine/lsystem/turtle.h"
+#include "../common/testtrees.h"
 #include "engine/mesh/impostor.h"
 #include "engine/mesh/leafcards.h"
-#include "engine/mesh/leafplacement.h"
 #include "engine/mesh/leaftint.h"
 #include "engine/mesh/lod.h"
 
 using namespace sylva;
+using sylva::testing::leafyTree;
 
 namespace {
 
 const glm::vec3 kGreen{0.26f, 0.40f, 0.12f};
-
-skel::Skeleton leafyTree() {
-    lsys::TurtleSettings t;
-    t.angleDegrees = 30;
-    t.step = 0.5;
-    t.width = 0.3;
-    skel::Skeleton s =
-        lsys::interpret(sylva::testing::makeWord(sylva::testing::testTreeWord(5)), t);
-    mesh::LeafPlacement p;
-    p.maxBranchRadius = 0.05;
-    s.leaves = mesh::placeLeaves(s, p);
-    return s;
-}
 
 mesh::TreeMeshSettings tinted(double hue, double saturation, double brightness) {
     mesh::TreeMeshSettings settings;
