@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/mesh/leafcards.h"
+#include "engine/mesh/leaftint.h"
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/season.h"
 #include "engine/mesh/tubemesh.h"
@@ -121,6 +122,8 @@ struct TreeMeshSettings {
     int leafClusterSize = 0;
     std::string leafClusterTexture;
     bool leafClusterCrossed = false; ///< LeafClusterSettings::crossed (tube_mesh's option)
+    /// How the leaf cards' colours vary (Mesh::colors), per season; none by default.
+    LeafTintSettings leafTint;
 };
 
 /// Bark tubes plus leaf cards, at the level of detail the settings ask for.

@@ -78,6 +78,23 @@ LodSettings lodFromParams(const Value& p) {
     return lod;
 }
 
+// [hue degrees, saturation, brightness] (mesh/leaftint.h); unset: no variation.
+LeafColorVariation colorVariation(const Value& p, const char* key) {
+    LeafColorVariation v;
+    const Value* given = p.find(key);
+    if (!given || given->isNull()) return v;
+    const Value::Array& a = given->toArray(key);
+    if (a.size() != 3)
+        throw InvalidInput(std::string(key) + " must be [hue degrees, saturation, brightness]");
+    v.hue = a[0].toNumber(key);
+    v.saturation = a[1].toNumber(key);
+    v.brightness = a[2].toNumber(key);
+    requireRange((std::string(key) + " hue (degrees)").c_str(), v.hue, 0.0, 90.0);
+    requireRange((std::string(key) + " saturation").c_str(), v.saturation, 0.0, 1.0);
+    requireRange((std::string(key) + " brightness").c_str(), v.brightness, 0.0, 1.0);
+    return v;
+}
+
 } // namespace
 
 TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
@@ -127,12 +144,18 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.season = parseSeason(p.string("season", "summer"));
     s.deciduous = p.boolean("deciduous", false);
     if (const Value* autumn = p.find("autumn_color"); autumn && !autumn->isNull()) {
-        // Read by make_textures.py (the autumn leaf texture); checked here so a typo shows.
+        // Read by make_textures.py (the autumn leaf texture) and by the autumn leaf tint.
         const Value::Array& a = autumn->toArray("autumn_color");
         if (a.size() != 3) throw InvalidInput("autumn_color must be [r, g, b]");
-        for (const Value& c : a)
-            requireRange("autumn_color", c.toNumber("autumn_color"), 0.0, 1.0);
+        for (int k = 0; k < 3; ++k) {
+            const double c = a[static_cast<std::size_t>(k)].toNumber("autumn_color");
+            requireRange("autumn_color", c, 0.0, 1.0);
+            s.leafTint.autumnColor[k] = static_cast<float>(c);
+        }
     }
+    s.leafTint.summer = colorVariation(p, "leaf_color_variation");
+    s.leafTint.autumn = colorVariation(p, "leaf_autumn_color_variation");
+    s.leafTint.patchSize = ranged(p, "leaf_color_patch", s.leafTint.patchSize, 0.0, 1e3);
     s.leafClusterSize = rangedInt(p, "leaf_cluster_size", 0, 0, 64);
     s.leafClusterTexture = texture("leaf_cluster_texture_file");
     s.leafClusterCrossed = p.boolean("leaf_cluster_crossed", false);
@@ -322,6 +345,16 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
          vector("autumn_color", vec(0.6, 0.4, 0.1), 0, 1, "",
                 "Autumn leaf colour (sRGB 0..1): make_textures.py draws the species' "
                 "autumn leaves from it")});
+    group(tube.params, "Leaf colour",
+          {vector("leaf_color_variation", vec(0, 0, 0), 0, 90, "",
+                  "How leaf cards differ in colour in spring and summer (an evergreen all "
+                  "year): [hue ± degrees (0..90), saturation ± fraction (0..1), the darkest "
+                  "card's loss of brightness (0..1)]; 0: every card alike"),
+           vector("leaf_autumn_color_variation", vec(0, 0, 0), 0, 90, "",
+                  "The same for a deciduous species in autumn (turning around autumn_color)"),
+           number("leaf_color_patch", 1.5, 0, 1e3, "m",
+                  "Half the variation follows patches about this large over the crown, half is "
+                  "each card's own; 0: each card on its own")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;
