@@ -352,7 +352,8 @@ namespace {
 /// The impostor of \p species (seed 1, LOD0, \p grid × \p grid views of 128 pixels, the
 /// default 8 × 8) against the tree from 16 random views of the upper hemisphere; returns the
 /// worst and mean IoU.
-std::pair<double, double> compareImpostor(const std::string& species, double minIou, int grid = 8) {
+std::pair<double, double> compareImpostor(const std::string& species, double minIou, int grid = 8,
+                                          const std::map<int, double>& knownViews = {}) {
     const Species s = grow(species, 1);
     const mesh::Mesh lod0 = mesh::buildTreeMesh(*s.skeleton, s.settings);
     mesh::ImpostorSettings settings = testChain().impostorSettings;
@@ -374,6 +375,16 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
         const Image truth = mesh::renderOrthographicView(lod0, textures, dir, imp.centre,
                                                          imp.radius, kViewPixels, 4);
         const Image drawn = mesh::renderImpostor(imp, dir, kViewPixels);
+        // What the measure can resolve in this view: the tree against itself moved by half a
+        // pixel (diagonally). A tree of fronds 1-2 px wide at this size (the date palm) keeps
+        // less than 0.9 of its own outline under that shift; there the bar is that floor.
+        glm::vec3 viewRight, viewUp;
+        mesh::impostorViewBasis(dir, viewRight, viewUp);
+        const float halfPixel = imp.radius / static_cast<float>(kViewPixels);
+        const Image shifted = mesh::renderOrthographicView(
+            lod0, textures, dir, imp.centre + halfPixel * 0.70710678f * (viewRight + viewUp),
+            imp.radius, kViewPixels, 4);
+        const double floorIou = test::iou(silhouette(truth), silhouette(shifted));
         if (const char* out = std::getenv("SYLVA_IMPOSTOR_PICTURES")) {
             const std::filesystem::path dirOut(out);
             std::filesystem::create_directories(dirOut);
@@ -427,13 +438,15 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
         diff /= static_cast<double>(both);
         const double meanDiff = glm::length(meanT - meanD) / static_cast<double>(both);
         std::cout << "view " << v << " (elevation " << std::asin(y) * 180 / std::numbers::pi
-                  << " deg): IoU " << iou << ", colour difference " << diff
-                  << ", mean colours apart " << meanDiff << " (" << truthMask.size()
-                  << " px, missed " << missed << ", extra " << extra << ")\n";
+                  << " deg): IoU " << iou << " (the tree moved half a pixel: " << floorIou
+                  << "), colour difference " << diff << ", mean colours apart " << meanDiff << " ("
+                  << truthMask.size() << " px, missed " << missed << ", extra " << extra << ")\n";
         worstIou = std::min(worstIou, iou);
         worstColour = std::max(worstColour, diff);
         sumIou += iou;
-        EXPECT_GE(iou, minIou) << species << " view " << v;
+        const auto known = knownViews.find(v);
+        EXPECT_GE(iou, known != knownViews.end() ? known->second : std::min(minIou, floorIou))
+            << species << " view " << v << " (the tree moved half a pixel: " << floorIou << ")";
         EXPECT_LE(diff, kMaxColourDifference) << species << " view " << v;
     }
     std::cout << species << " impostor: IoU worst " << worstIou << ", mean " << sumIou / 16
@@ -443,15 +456,15 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
 
 } // namespace
 
-// Issue #32's bar for every species of the library, on the default 8 x 8 atlas: IoU >= 0.9 in
-// each of the 16 random views (worst views measured with the relief-mapping sampler: oak 0.926,
-// birch 0.955, beech 0.936, maple 0.953, willow 0.958, poplar 0.924, pine 0.905, spruce 0.962,
-// cypress 0.942, rhododendron 0.973, privet 0.96; with the former fixed-point parallax walk:
-// oak 0.86, poplar 0.83, pine 0.82, cypress 0.83, privet 0.90).
-// The date palm is the exception: its long thin fronds, seen edge-on from one atlas view and
-// broad from the next 25 degrees away, leave ghost frond tips where the three blended views
-// each meet a frond of their own (measured 0.807 worst, 0.896 mean, 8 of 16 views under 0.9;
-// 0.714 / 0.807 before). Its views are held at 0.8 and its mean at 0.88.
+// Issue #32's bar for every species of the library, on the default 8 x 8 atlas: mean IoU of the
+// 16 random views >= 0.9, and each view >= 0.9 or, where lower, what the measure resolves in
+// that view: the tree's IoU against itself moved by half a pixel (the rule test_lodcoverage
+// holds small trees to). Worst views measured (docs/lods.md): oak 0.955, birch 0.949, beech
+// 0.958, maple 0.954, willow 0.966, poplar 0.965, pine 0.923, spruce 0.969, cypress 0.939,
+// rhododendron 0.972, privet 0.962; the date palm 0.813 / mean 0.917: at 64 px its fronds are
+// 1-2 px wide, and the palm moved half a pixel keeps only 0.82-0.94 of its own outline (7 of its
+// 16 views under 0.9). 15 of its views pass that rule; view 11 (elevation 16 degrees, 10 degrees
+// from the nearest atlas view) measures 0.813 against a floor of 0.872 and is held at 0.80.
 // SYLVA_IMPOSTOR_SPECIES=<name> runs one species.
 TEST(LodChain, LibraryImpostorsMatchTheTreeInEveryView) {
     const char* only = std::getenv("SYLVA_IMPOSTOR_SPECIES");
@@ -460,15 +473,20 @@ TEST(LodChain, LibraryImpostorsMatchTheTreeInEveryView) {
                                 "date-palm", "italian-cypress", "rhododendron", "privet-hedge"}) {
         if (only && std::string(only) != species) continue;
         const bool palm = std::string(species) == "date-palm";
-        EXPECT_GE(compareImpostor(species, palm ? 0.8 : 0.9).second, palm ? 0.88 : 0.9) << species;
+        EXPECT_GE(
+            compareImpostor(species, 0.9, 8,
+                            palm ? std::map<int, double>{{11, 0.80}} : std::map<int, double>{})
+                .second,
+            0.9)
+            << species;
     }
 }
 
 // The alder's open crown of small leaves (not in the library) is speckle at 64 pixels: a leaf
-// that turns out of view between two atlas views changes the mask (measured 0.868 worst, 0.907
-// mean; 0.78 / 0.86 with the former parallax walk): every view is held at 0.85, the mean at 0.9.
+// that turns out of view between two atlas views changes the mask (measured 0.907 worst, 0.923
+// mean; 0.868 / 0.907 with the fixed 0.2 shell, 0.78 / 0.86 with the former parallax walk).
 TEST(LodChain, SparseCrownImpostor) {
-    EXPECT_GE(compareImpostor("alder", 0.85).second, 0.9);
+    EXPECT_GE(compareImpostor("alder", 0.9).second, 0.9);
 }
 
 TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {
@@ -544,4 +562,23 @@ TEST(Image, PngRoundTrip) {
     EXPECT_EQ(back.pixels, image.pixels);
     EXPECT_THROW(readPng(dir / "missing.png"), IoError);
     std::filesystem::remove_all(dir);
+}
+
+// Seen from exactly an atlas view's own direction the impostor is that view's picture: the
+// march sinks through the whole sphere in one step there, and the fixed 0.2-radius shell once
+// stepped over every surface (an empty picture, IoU 0).
+TEST(LodChain, ImpostorFromAnAtlasViewIsThatView) {
+    const Species s = grow("alder", 1);
+    const mesh::Mesh lod0 = mesh::buildTreeMesh(*s.skeleton, s.settings);
+    const mesh::ImpostorTextures textures(kTextures);
+    const mesh::Impostor imp = mesh::bakeImpostor(lod0, textures, testChain().impostorSettings);
+    for (glm::vec2 uv : {glm::vec2(1.0f, 1.0f / 7.0f), glm::vec2(3.0f / 7.0f, 4.0f / 7.0f)}) {
+        const glm::vec3 dir = mesh::impostorViewDirection(uv, true);
+        const Image truth = mesh::renderOrthographicView(lod0, textures, dir, imp.centre,
+                                                         imp.radius, kViewPixels, 4);
+        const Image drawn = mesh::renderImpostor(imp, dir, kViewPixels);
+        const double iou = test::iou(silhouette(truth), silhouette(drawn));
+        std::cout << "atlas view (" << uv.x << ", " << uv.y << "): IoU " << iou << "\n";
+        EXPECT_GE(iou, 0.9);
+    }
 }
