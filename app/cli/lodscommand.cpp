@@ -93,12 +93,15 @@ int runLods(const std::vector<std::string>& argv) {
     if (args.flag("--json")) {
         std::fwrite(files.description.data(), 1, files.description.size(), stdout);
     } else {
-        std::printf("%-32s %8s %14s %12s %12s %12s\n", "level", "budget", "from (m)", "screen size",
-                    "triangles", "vertices");
+        std::printf("%-32s %8s %14s %12s %12s %12s %10s\n", "level", "budget", "from (m)",
+                    "screen size", "triangles", "vertices", "silhouette");
         for (const exporter::GameLodLevel& l : files.levels)
-            std::printf("%-32s %7.0f%% %14.1f %12.3f %12zu %12zu%s\n", l.name.c_str(),
+            std::printf("%-32s %7.0f%% %14.1f %12.3f %12zu %12zu %10.3f%s\n", l.name.c_str(),
                         l.budget * 100.0, l.distance, l.screenSize, l.triangles, l.vertices,
-                        l.budgetMet ? "" : "  (over budget: the coarsest the LOD makes)");
+                        l.silhouetteIoU, l.budgetMet ? "" : "  (over budget)");
+        for (const mesh::DroppedLevel& d : files.dropped)
+            std::printf("%-32s %7.0f%%  dropped: %s\n", "(no level)", d.budget * 100.0,
+                        d.reason.c_str());
         if (files.impostor)
             std::printf("%-32s %8s %14.1f %12.3f %12d %12d\n",
                         (speciesFileStem(args.positional()[0]) + "_impostor").c_str(), "",
