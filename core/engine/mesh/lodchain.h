@@ -21,7 +21,8 @@ struct LodChainSettings {
     /// switch distance (the camera LOD's LodSettings::leafClusterPixels, 2 for a forest's trees,
     /// which draw each mesh over a band of distances; a chain level is drawn from its switch
     /// distance on, where finer clusters keep the crown's outline: 0.5 keeps LOD0's silhouette,
-    /// IoU >= 0.9, for 34 of the library's 36 levels, 2 for 25; docs/lods.md). 0.25..8.
+    /// IoU >= 0.9, for 35 of the library's 36 levels, 2 for 25; minSilhouetteIoU checks each level;
+    /// docs/lods.md). 0.25..8.
     double leafClusterPixels = 0.5;
     /// A level whose silhouette IoU against LOD0 at its switch distance (silhouetteIoU) is
     /// under this is made again with leaf clusters 1.4, 0.7 and 2 times leafClusterPixels, and

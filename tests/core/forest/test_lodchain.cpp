@@ -22,6 +22,7 @@
 //   covers, blue: only the tree).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -29,6 +30,7 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <omp.h>
@@ -52,6 +54,8 @@ const std::filesystem::path kTextures = kPresets / ".." / "resources" / "texture
 /// (LodChainSettings::impostorPixels).
 constexpr int kViewPixels = 64;
 constexpr double kMaxColourDifference = 0.1;
+/// The impostor's coverage (the sum of its alpha) against the tree's, per view: 1 +- this.
+constexpr double kCoverageTolerance = 0.15;
 constexpr int kClosePixels = 1;
 
 struct Species {
@@ -399,7 +403,7 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
     EXPECT_EQ(imp.depth.channels, 1);
     const mesh::ImpostorTextures textures(kTextures);
     Rng rng(32);
-    double worstIou = 1.0, worstColour = 0.0, sumIou = 0.0;
+    double worstIou = 1.0, worstColour = 0.0, sumIou = 0.0, worstCoverage = 2.0;
     for (int v = 0; v < 16; ++v) {
         // Uniform on the upper hemisphere.
         const float y = rng.uniformf(0.0f, 1.0f), phi = rng.uniformf(0.0f, 6.2831853f);
@@ -468,12 +472,24 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
                 }
             }
         EXPECT_GT(both, 100u);
+        // How much the impostor covers against the tree (the sum of coverage): an impostor
+        // thinner than the tree lightens the crown where it takes over (an alpha test then
+        // drops more of it).
+        double coverTree = 0.0, coverDrawn = 0.0;
+        for (int k = 0; k < kViewPixels * kViewPixels; ++k) {
+            coverTree += truth.pixels[4 * static_cast<std::size_t>(k) + 3];
+            coverDrawn += drawn.pixels[4 * static_cast<std::size_t>(k) + 3];
+        }
+        const double coverage = coverDrawn / coverTree;
+        worstCoverage = std::min(worstCoverage, coverage);
+        EXPECT_NEAR(coverage, 1.0, kCoverageTolerance) << species << " view " << v;
         diff /= static_cast<double>(both);
         const double meanDiff = glm::length(meanT - meanD) / static_cast<double>(both);
         std::cout << "view " << v << " (elevation " << std::asin(y) * 180 / std::numbers::pi
                   << " deg): IoU " << iou << " (the tree moved half a pixel: " << floorIou
-                  << "), colour difference " << diff << ", mean colours apart " << meanDiff << " ("
-                  << truthMask.size() << " px, missed " << missed << ", extra " << extra << ")\n";
+                  << "), coverage " << coverage << ", colour difference " << diff
+                  << ", mean colours apart " << meanDiff << " (" << truthMask.size()
+                  << " px, missed " << missed << ", extra " << extra << ")\n";
         worstIou = std::min(worstIou, iou);
         worstColour = std::max(worstColour, diff);
         sumIou += iou;
@@ -483,7 +499,8 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
         EXPECT_LE(diff, kMaxColourDifference) << species << " view " << v;
     }
     std::cout << species << " impostor: IoU worst " << worstIou << ", mean " << sumIou / 16
-              << "; worst colour difference " << worstColour << "\n";
+              << "; worst colour difference " << worstColour << "; least coverage " << worstCoverage
+              << "\n";
     return {worstIou, sumIou / 16};
 }
 
@@ -551,34 +568,60 @@ TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {
     EXPECT_LT(dark, empty / 2);
 }
 
-// SYLVA_LOD_STRIP=<file.png>: the english oak's chain side by side, each level at the same size
-// (LOD0..LOD3, then the impostor from the same direction and from 25 degrees around), to look at.
+// SYLVA_LOD_STRIP=<file.png>: the chain side by side, one row a species (english oak,
+// rhododendron, scots pine, date palm; SYLVA_LOD_STRIP_SPECIES=a,b,... for others), each level at
+// the same size (LOD0..LOD3, a blank where a level was dropped, then the impostor from the same
+// direction and from 25 degrees around), to look at.
 TEST(LodChain, StripPicture) {
     const char* out = std::getenv("SYLVA_LOD_STRIP");
     if (!out) GTEST_SKIP() << "SYLVA_LOD_STRIP not set";
-    const Species s = grow("english-oak", 1);
-    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
-        *s.skeleton, s.settings, testChain(), mesh::ImpostorTextures(kTextures));
+    std::vector<std::string> species{"english-oak", "rhododendron", "scots-pine", "date-palm"};
+    if (const char* list = std::getenv("SYLVA_LOD_STRIP_SPECIES")) {
+        species.clear();
+        std::stringstream in(list);
+        for (std::string item; std::getline(in, item, ',');)
+            species.push_back(item);
+    }
     const mesh::ImpostorTextures textures(kTextures);
-    const int px = 256;
+    const int px = 256, columns = 6;
     const glm::vec3 dir = glm::normalize(glm::vec3(0.3f, 0.25f, 1.0f));
-    std::vector<Image> tiles;
-    for (const mesh::BudgetLevel& l : chain.levels)
-        tiles.push_back(
-            mesh::renderOrthographicView(l.mesh, textures, dir, chain.centre, chain.radius, px, 2));
-    tiles.push_back(mesh::renderImpostor(*chain.impostor, dir, px));
-    tiles.push_back(
-        mesh::renderImpostor(*chain.impostor, glm::normalize(glm::vec3(0.75f, 0.25f, 0.8f)), px));
-    Image strip(px * static_cast<int>(tiles.size()), px, 3);
-    for (std::size_t k = 0; k < tiles.size(); ++k)
-        for (int y = 0; y < px; ++y)
-            for (int x = 0; x < px; ++x) {
-                const std::uint8_t* p = tiles[k].at(x, y);
-                std::uint8_t* q = strip.at(static_cast<int>(k) * px + x, y);
-                const float a = p[3] / 255.0f;
-                for (int c = 0; c < 3; ++c) // over a pale sky
-                    q[c] = static_cast<std::uint8_t>(p[c] * a + (c == 2 ? 235 : 215) * (1 - a));
-            }
+    Image strip(px * columns, px * static_cast<int>(species.size()), 3);
+    std::fill(strip.pixels.begin(), strip.pixels.end(), std::uint8_t{255});
+    for (std::size_t row = 0; row < species.size(); ++row) {
+        const Species s = grow(species[row], 1);
+        // The CLI's default atlas (8 x 8 views of 256 px): the strip draws it at its cells' size.
+        const mesh::LodChainSettings defaults;
+        const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
+            *s.skeleton, s.settings, defaults, mesh::ImpostorTextures(kTextures));
+        std::vector<Image> tiles(columns);
+        // Levels by their budget's column (a dropped level leaves its column grey).
+        for (const mesh::BudgetLevel& l : chain.levels) {
+            const auto column = static_cast<std::size_t>(
+                std::find(defaults.budgets.begin(), defaults.budgets.end(), l.budget) -
+                defaults.budgets.begin());
+            tiles[column] = mesh::renderOrthographicView(l.mesh, textures, dir, chain.centre,
+                                                         chain.radius, px, 2);
+        }
+        tiles[4] = mesh::renderImpostor(*chain.impostor, dir, px);
+        tiles[5] = mesh::renderImpostor(*chain.impostor,
+                                        glm::normalize(glm::vec3(0.75f, 0.25f, 0.8f)), px);
+        for (int k = 0; k < columns; ++k)
+            for (int y = 0; y < px; ++y)
+                for (int x = 0; x < px; ++x) {
+                    std::uint8_t* q = strip.at(k * px + x, static_cast<int>(row) * px + y);
+                    if (tiles[k].width != px) {
+                        std::fill_n(q, 3, std::uint8_t{190});
+                        continue;
+                    }
+                    const std::uint8_t* p = tiles[k].at(x, y);
+                    // The mesh levels antialiased; the impostor as its shader draws it (an alpha
+                    // test at 0.5, the glTF material's MASK).
+                    float a = p[3] / 255.0f;
+                    if (k >= 4) a = a >= 0.5f ? 1.0f : 0.0f;
+                    for (int c = 0; c < 3; ++c) // over a pale sky
+                        q[c] = static_cast<std::uint8_t>(p[c] * a + (c == 2 ? 235 : 215) * (1 - a));
+                }
+    }
     writePng(out, strip);
 }
 
