@@ -120,23 +120,48 @@ def tree_object(collection, name, mesh, mats):
     return obj
 
 
+def _import_wind_glb(owner, settings):
+    """\p owner (a sylva.Tree or sylva.Forest) written as Sylva's wind GLB with the wind of
+    \p settings and imported with Blender's glTF importer; returns the objects it made."""
+    import numpy
+    numpy.bool = bool  # Blender 3.4's glTF importer still uses the removed alias
+    d = settings.wind_direction
+    with tempfile.TemporaryDirectory(prefix="sylva-wind-") as folder:
+        glb = os.path.join(folder, "wind.glb")
+        owner.export(glb, wind=True, direction=(d[0], d[2], -d[1]),
+                     strength=settings.wind_strength, gustiness=settings.wind_gustiness,
+                     bones=settings.wind_bones, clip_length=settings.wind_clip)
+        before = set(bpy.data.objects)
+        bpy.ops.import_scene.gltf(filepath=glb)
+    return [o for o in bpy.data.objects if o not in before]
+
+
+def _cover_clip(scene, frames):
+    """Widens the scene's frame range to \p frames when shorter, so playback shows a loop."""
+    scene.frame_end = max(scene.frame_end, scene.frame_start + int(frames))
+
+
+def _clip_frames(obj):
+    """The length in frames of \p obj's action, 0 without one."""
+    action = obj.animation_data.action if obj.animation_data else None
+    return action.frame_range[1] - action.frame_range[0] if action is not None else 0.0
+
+
+def _tag_forest_tree(obj, tree, variants):
+    """The forest tree's identity as custom properties of its object (exports carry it too)."""
+    obj["sylva_species"] = tree.species
+    obj["sylva_seed"] = str(tree.seed)  # 64-bit: too large for an ID property int
+    obj["sylva_id"] = str(tree.id)  # the tree's stable id
+    obj["sylva_variant"] = variants[tree.variant].name if tree.instanced else ""
+
+
 def wind_tree_objects(context, tree, settings, location):
     """A grown sylva tree with wind: written as Sylva's wind GLB (rig of at most
     settings.wind_bones bones, skin, the looping "wind" clip) and imported with Blender's glTF
     importer, so that the tree is an armature (its root at \p location) with the wind action
     and the skinned mesh as its child. Returns the armature. The scene's frame range is widened
     to the clip when shorter, so that playback shows a whole loop."""
-    import numpy
-    numpy.bool = bool  # Blender 3.4's glTF importer still uses the removed alias
-    d = settings.wind_direction
-    with tempfile.TemporaryDirectory(prefix="sylva-wind-") as folder:
-        glb = os.path.join(folder, "tree.glb")
-        tree.export(glb, wind=True, direction=(d[0], d[2], -d[1]),
-                    strength=settings.wind_strength, gustiness=settings.wind_gustiness,
-                    bones=settings.wind_bones, clip_length=settings.wind_clip)
-        before = set(bpy.data.objects)
-        bpy.ops.import_scene.gltf(filepath=glb)
-    new = [o for o in bpy.data.objects if o not in before]
+    new = _import_wind_glb(tree, settings)
     armatures = [o for o in new if o.type == "ARMATURE"]
     if len(armatures) != 1:
         raise ValueError(f"the wind GLB gave {len(armatures)} armatures, expected one")
@@ -145,11 +170,7 @@ def wind_tree_objects(context, tree, settings, location):
     for obj in new:
         if obj.parent is None:
             obj.location = obj.location + location
-    action = armature.animation_data.action if armature.animation_data else None
-    if action is not None:
-        scene = context.scene
-        scene.frame_end = max(scene.frame_end, scene.frame_start + int(action.frame_range[1]
-                                                                       - action.frame_range[0]))
+    _cover_clip(context.scene, _clip_frames(armature))
     armature["sylva_species"] = tree.species
     if tree.seed is not None:
         armature["sylva_seed"] = str(tree.seed)
@@ -242,10 +263,7 @@ def grow_forest(sylva, context, settings):
         obj.location = (x, -z, y)
         obj.rotation_euler = (0.0, 0.0, tree.rotation)  # about Sylva's +Y = Blender's +Z
         obj.scale = (tree.scale,) * 3
-        obj["sylva_species"] = tree.species
-        obj["sylva_seed"] = str(tree.seed)  # 64-bit: too large for an ID property int
-        obj["sylva_id"] = str(tree.id)  # the tree's stable id (exports carry it too)
-        obj["sylva_variant"] = variants[tree.variant].name if tree.instanced else ""
+        _tag_forest_tree(obj, tree, variants)
     return forest
 
 
@@ -256,17 +274,7 @@ def wind_forest_objects(context, forest, settings, col):
     an armature with its "wind" action and its skinned mesh as the child. Blender's importer
     makes one mesh per skinned node; the trees of a variant are given back one shared mesh
     datablock (their vertex groups name their own bones in the same joint order)."""
-    import numpy
-    numpy.bool = bool  # Blender 3.4's glTF importer still uses the removed alias
-    d = settings.wind_direction
-    with tempfile.TemporaryDirectory(prefix="sylva-wind-forest-") as folder:
-        glb = os.path.join(folder, "forest.glb")
-        forest.export(glb, wind=True, direction=(d[0], d[2], -d[1]),
-                      strength=settings.wind_strength, gustiness=settings.wind_gustiness,
-                      bones=settings.wind_bones, clip_length=settings.wind_clip)
-        before = set(bpy.data.objects)
-        bpy.ops.import_scene.gltf(filepath=glb)
-    new = [o for o in bpy.data.objects if o not in before]
+    new = _import_wind_glb(forest, settings)
     for obj in new:
         for c in list(obj.users_collection):
             c.objects.unlink(obj)
@@ -279,13 +287,8 @@ def wind_forest_objects(context, forest, settings, col):
         armature = by_name.get(tree.name)
         if armature is None or armature.type != "ARMATURE":
             continue  # a tree pruned away has no rig
-        armature["sylva_species"] = tree.species
-        armature["sylva_seed"] = str(tree.seed)
-        armature["sylva_id"] = str(tree.id)
-        armature["sylva_variant"] = variants[tree.variant].name if tree.instanced else ""
-        action = armature.animation_data.action if armature.animation_data else None
-        if action is not None:
-            longest = max(longest, action.frame_range[1] - action.frame_range[0])
+        _tag_forest_tree(armature, tree, variants)
+        longest = max(longest, _clip_frames(armature))
         skinned = by_name.get(tree.name + "_mesh")
         if skinned is None or not tree.instanced:
             continue
@@ -298,5 +301,4 @@ def wind_forest_objects(context, forest, settings, col):
             skinned.data = data
             if old.users == 0:
                 bpy.data.meshes.remove(old)
-    scene = context.scene
-    scene.frame_end = max(scene.frame_end, scene.frame_start + int(longest))
+    _cover_clip(context.scene, longest)

@@ -7,7 +7,9 @@ import subprocess
 import sys
 
 import bpy
-from mathutils import Vector
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from windmotion import assert_sways, measure_motion  # noqa: E402
 
 cli, presets, work = sys.argv[sys.argv.index("--") + 1:][:3]
 os.makedirs(work, exist_ok=True)
@@ -29,36 +31,10 @@ first, last = int(action.frame_range[0]), int(action.frame_range[1])
 assert last - first == 120, (first, last)  # 4 s at 30 fps
 
 
-def positions():
-    out = []
-    for mesh in skinned:
-        evaluated = mesh.evaluated_get(bpy.context.evaluated_depsgraph_get())
-        m = evaluated.to_mesh()
-        out += [mesh.matrix_world @ v.co for v in m.vertices]
-        evaluated.to_mesh_clear()
-    return out
-
-
-scene.frame_set(first)
-rest = positions()
-zs = [v.z for v in rest]
-height = max(zs) - min(zs)
-tip = max(range(len(rest)), key=lambda i: rest[i].z)
-low = min(range(len(rest)),
-          key=lambda i: abs(rest[i].z - min(zs) - 0.1 * height) + Vector(rest[i].xy).length)
-tip_moved = low_moved = 0.0
-for frame in range(first, last + 1, 6):
-    scene.frame_set(frame)
-    p = positions()
-    tip_moved = max(tip_moved, (p[tip] - rest[tip]).length)
-    low_moved = max(low_moved, (p[low] - rest[low]).length)
-scene.frame_set(last)
-loop = max((a - b).length for a, b in zip(positions(), rest))
+height, tip_moved, low_moved, loop = measure_motion(skinned, first, last)
 print(f"wind fbx: {len(arm.data.bones)} bones, frames {first}..{last}, height {height:.2f} m, "
       f"tip {tip_moved:.3f} m, lower trunk {low_moved:.4f} m, first/last apart {loop:.2e} m")
-assert tip_moved > 0.05, tip_moved
-assert tip_moved >= 5 * low_moved, (tip_moved, low_moved)
-assert loop < 1e-3, loop
+assert_sways(tip_moved, low_moved, loop)
 
 # A forest: every tree its own armature with the action and its skinned mesh (a tree whose mesh
 # was the Model above its bones lost half the forest to Blender's parenting before).

@@ -9,7 +9,9 @@ import numpy
 
 numpy.bool = bool  # Blender 3.4's glTF importer still uses the removed alias
 import bpy  # noqa: E402
-from mathutils import Vector  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from windmotion import assert_sways, measure_motion  # noqa: E402
 
 cli, presets, work = sys.argv[sys.argv.index("--") + 1:][:3]
 os.makedirs(work, exist_ok=True)
@@ -24,38 +26,9 @@ assert len(armatures) == 1 and len(skinned) == 1, (armatures, skinned)
 action = armatures[0].animation_data.action
 assert action and action.name.startswith("wind"), action
 assert 2 <= len(armatures[0].data.bones) <= 64, len(armatures[0].data.bones)
-mesh = skinned[0]
-scene = bpy.context.scene
-
-
-def positions():
-    evaluated = mesh.evaluated_get(bpy.context.evaluated_depsgraph_get())
-    m = evaluated.to_mesh()
-    out = [mesh.matrix_world @ v.co for v in m.vertices]
-    evaluated.to_mesh_clear()
-    return out
-
-
 first, last = int(action.frame_range[0]), int(action.frame_range[1])
-scene.frame_set(first)
-rest = positions()
-zs = [v.z for v in rest]
-height = max(zs) - min(zs)
-tip = max(range(len(rest)), key=lambda i: rest[i].z)
-# A point on the lower trunk: the vertex nearest the axis at a tenth of the height.
-low = min(range(len(rest)),
-          key=lambda i: abs(rest[i].z - min(zs) - 0.1 * height) + Vector(rest[i].xy).length)
-tip_moved = low_moved = 0.0
-for frame in range(first, last + 1, 6):
-    scene.frame_set(frame)
-    p = positions()
-    tip_moved = max(tip_moved, (p[tip] - rest[tip]).length)
-    low_moved = max(low_moved, (p[low] - rest[low]).length)
-scene.frame_set(last)
-loop = max((a - b).length for a, b in zip(positions(), rest))
+height, tip_moved, low_moved, loop = measure_motion(skinned, first, last)
 print(f"wind: frames {first}..{last}, tip {tip_moved:.3f} m, lower trunk {low_moved:.4f} m, "
       f"first/last frame apart {loop:.2e} m")
-assert tip_moved > 0.05, tip_moved
-assert tip_moved >= 5 * low_moved, (tip_moved, low_moved)
-assert loop < 1e-3, loop
+assert_sways(tip_moved, low_moved, loop)
 print("PASS blender_wind_glb")

@@ -27,6 +27,7 @@
 #include <QTreeView>
 #include <functional>
 
+#include "demowindow.h"
 #include "document/autosave.h"
 #include "document/document.h"
 #include "document/presetlibrary.h"
@@ -117,11 +118,7 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true); // settings and autosave in a test folder
         QVERIFY(mDir.isValid());
         // The demo project saved into a scratch folder (paths rebased), so saving is safe.
-        doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory())
-                      .filePath("../resources/demo/alder-reference.sylva"));
-        mProject = mDir.filePath(QStringLiteral("demo.sylva"));
-        demo.save(mProject);
+        mProject = test::copyDemoProject(mDir);
 
         mWindow = std::make_unique<MainWindow>();
         mWindow->setAskHandler([this](const QString& question, bool) {

@@ -28,6 +28,7 @@
 #include <QTextBlock>
 #include <QTimer>
 
+#include "demowindow.h"
 #include "document/document.h"
 #include "document/presetlibrary.h"
 #include "engine/mesh/mesh.h"
@@ -115,18 +116,8 @@ private Q_SLOTS:
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(mDir.isValid());
-        doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory())
-                      .filePath("../resources/demo/alder-reference.sylva"));
-        const QString project = mDir.filePath(QStringLiteral("demo.sylva"));
-        demo.save(project);
-        mWindow = std::make_unique<MainWindow>();
-        mWindow->setAskHandler([](const QString&, bool) { return MainWindow::Answer::Discard; });
-        mWindow->resize(1400, 950);
-        mWindow->show();
-        QVERIFY(QTest::qWaitForWindowExposed(mWindow.get()));
-        QApplication::setActiveWindow(mWindow.get());
-        QVERIFY(mWindow->openProject(project));
+        mWindow = test::openDemoWindow(mDir, {1400, 950});
+        QVERIFY(mWindow);
         QVERIFY(mWindow->waitForGeneration(kTimeoutMs));
         mWindow->editSpecies(QStringLiteral("alder"));
         QTRY_VERIFY(bench()->isVisible());

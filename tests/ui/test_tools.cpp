@@ -18,6 +18,7 @@
 #include <QTest>
 #include <QTimer>
 
+#include "demowindow.h"
 #include "document/document.h"
 #include "document/presetlibrary.h"
 #include "engine/environment/obstaclescene.h"
@@ -111,19 +112,8 @@ private Q_SLOTS:
     void initTestCase() {
         QStandardPaths::setTestModeEnabled(true);
         QVERIFY(mDir.isValid());
-        doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory())
-                      .filePath("../resources/demo/alder-reference.sylva"));
-        const QString project = mDir.filePath(QStringLiteral("demo.sylva"));
-        demo.save(project);
-        mWindow = std::make_unique<MainWindow>();
-        mWindow->setAskHandler([](const QString&, bool) { return MainWindow::Answer::Discard; });
-        mWindow->resize(1400, 900);
-        mWindow->show();
-        QVERIFY(QTest::qWaitForWindowExposed(mWindow.get()));
-        mWindow->activateWindow();
-        QApplication::setActiveWindow(mWindow.get());
-        QVERIFY(mWindow->openProject(project));
+        mWindow = test::openDemoWindow(mDir, {1400, 900});
+        QVERIFY(mWindow);
         settle();
     }
 

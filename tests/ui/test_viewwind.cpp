@@ -20,6 +20,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "demowindow.h"
 #include "document/document.h"
 #include "document/presetlibrary.h"
 #include "document/speciesfile.h"
@@ -77,17 +78,8 @@ private Q_SLOTS:
         QStandardPaths::setTestModeEnabled(true); // settings in a test folder
         QSettings().remove(QStringLiteral("view/wind"));
         QVERIFY(mDir.isValid());
-        doc::Document demo;
-        demo.open(QDir(doc::PresetLibrary::directory())
-                      .filePath("../resources/demo/alder-reference.sylva"));
-        const QString project = mDir.filePath(QStringLiteral("demo.sylva"));
-        demo.save(project);
-        mWindow = std::make_unique<MainWindow>();
-        mWindow->setAskHandler([](const QString&, bool) { return MainWindow::Answer::Discard; });
-        mWindow->resize(1000, 700);
-        mWindow->show();
-        QVERIFY(QTest::qWaitForWindowExposed(mWindow.get()));
-        QVERIFY(mWindow->openProject(project));
+        mWindow = test::openDemoWindow(mDir, {1000, 700});
+        QVERIFY(mWindow);
         QVERIFY(mWindow->waitForGeneration(kTimeoutMs));
         QVERIFY2(mWindow->lastError().isEmpty(), qPrintable(mWindow->lastError()));
         QVERIFY(!mWindow->viewport()->trees().empty());

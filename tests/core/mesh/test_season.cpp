@@ -2,9 +2,7 @@
 
 #include <filesystem>
 
-#include "../common/testwords.h"
-#include "engine/lsystem/turtle.h"
-#include "engine/mesh/leafplacement.h"
+#include "../common/testtrees.h"
 #include "engine/mesh/lod.h"
 #include "engine/mesh/season.h"
 #include "engine/util/error.h"
@@ -13,18 +11,7 @@ using namespace sylva;
 
 namespace {
 
-skel::Skeleton leafyTree() {
-    lsys::TurtleSettings t;
-    t.angleDegrees = 30;
-    t.step = 0.5;
-    t.width = 0.3;
-    skel::Skeleton s =
-        lsys::interpret(sylva::testing::makeWord(sylva::testing::testTreeWord(5)), t);
-    mesh::LeafPlacement p;
-    p.maxBranchRadius = 0.05;
-    s.leaves = mesh::placeLeaves(s, p);
-    return s;
-}
+using sylva::testing::leafyTree;
 
 std::uint32_t leafTriangles(const mesh::Mesh& m) {
     std::uint32_t n = 0;
