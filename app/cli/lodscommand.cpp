@@ -51,7 +51,7 @@ std::string speciesFileStem(const std::string& path) {
 int runLods(const std::vector<std::string>& argv) {
     const Args args(argv,
                     {"-o", "--output", "--seed", "--budgets", "--impostor-grid", "--impostor-cell",
-                     "--impostor-pixels"},
+                     "--impostor-pixels", "--min-silhouette"},
                     {"--json", "--no-glb", "--no-obj", "--no-fbx", "--no-usd", "--no-impostor",
                      "--octahedral"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("lods"));
@@ -67,6 +67,15 @@ int runLods(const std::vector<std::string>& argv) {
         chainSettings.impostorSettings.cellPixels = static_cast<int>(*c);
     if (const auto p = args.integer("--impostor-pixels", 1, 4096))
         chainSettings.impostorPixels = static_cast<double>(*p);
+    if (const auto m = args.value("--min-silhouette")) {
+        char* end = nullptr;
+        const double v = std::strtod(m->c_str(), &end);
+        if (m->empty() || !end || *end != '\0' || !(v >= 0.0 && v <= 1.0))
+            throw InvalidInput("--min-silhouette: '" + *m +
+                               "' is not a number from 0 to 1 (the IoU each level keeps; 0: "
+                               "no check)");
+        chainSettings.minSilhouetteIoU = v;
+    }
     chainSettings.impostorSettings.hemisphere = !args.flag("--octahedral");
     chainSettings.impostor = !args.flag("--no-impostor");
     mesh::validateLodChain(chainSettings);

@@ -416,6 +416,13 @@ PY
   run_cli 0 lods "$DATA/../../presets/date-palm.json" -o table --no-obj --no-fbx --no-usd \
     --no-glb --impostor-cell 16
   [[ $(grep -c "dropped: budget below the coarsest mesh" out.txt) == 2 ]] || fail "$(cat out.txt)"
+  # --min-silhouette: 0 checks nothing (every level with the default 0.5-px clusters), out of
+  # range is an error naming the range
+  run_cli 0 lods "$DATA/lsystem/bush.lsys" -o nocheck --json --no-obj --no-fbx --no-usd --no-glb \
+    --impostor-cell 16 --min-silhouette 0
+  [[ $(grep -c '"leaf_cluster_px": 0.5' out.txt) == 3 ]] || fail "$(cat out.txt)"
+  run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --min-silhouette 1.5
+  grep -q "from 0 to 1" err.txt || fail "$(cat err.txt)"
   ;;
 lods_fbx_blender)
   # Blender imports the FBX chain's levels with the triangles (as polygons) the JSON reports.
