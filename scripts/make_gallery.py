@@ -10,6 +10,7 @@ xvfb, python3-pil and a release build.
   /usr/bin/python3 scripts/make_gallery.py [--build build/release] [--only english-oak,...]
       [--seeds 1,2,3] [--out docs/gallery] [--size 480] [--thumb 240] [--no-doc]
       [--seasons] [--closeups]   (only the season strips / only the close-ups)
+      [--tints]   (only the leaf colour strips: before and after, summer and autumn)
 """
 import argparse
 import json
@@ -116,6 +117,65 @@ def season_strip(build, species, folder, dst, size, thumb):
     strip.save(dst, optimize=True)
 
 
+# Leaf colour variation (issue #33): these species, before (variation 0) and after, in summer
+# and autumn, from the gallery's camera and from nearer (TINT_CLOSE: eye, target in metres).
+TINT_SPECIES = ("english-oak", "european-beech", "norway-maple")
+TINT_CLOSE = {"english-oak": ((7.0, 5.0, 13.0), (0.0, 6.0, 0.0)),
+              "european-beech": ((6.0, 9.0, 11.0), (0.0, 9.5, 0.0)),
+              "norway-maple": ((6.0, 7.0, 11.0), (0.0, 7.5, 0.0))}
+
+
+def tint_copy(species, season, tinted, folder):
+    """season_copy() with the leaf colour variation kept (tinted) or set to zero."""
+    path = season_copy(species, season, folder)
+    with open(path) as f:
+        doc = json.load(f)
+    for node in doc["graph"]["nodes"]:
+        if node["type"] == "tube_mesh" and not tinted:
+            for key in list(node["params"]):
+                if key.endswith("_variation"):
+                    node["params"][key] = 0
+    out = os.path.join(folder, "%s-%s-%s.json" % (species, season, "on" if tinted else "off"))
+    with open(out, "w") as f:
+        json.dump(doc, f)
+    return out
+
+
+def tint_strip(build, species, folder, dst, size):
+    """Summer without and with the variation, autumn without and with; whole tree above, a
+    nearer view of the crown below, each labelled."""
+    from PIL import ImageDraw
+    rows = [[], []]
+    for season in ("summer", "autumn"):
+        for tinted in (False, True):
+            f = tint_copy(species, season, tinted, folder)
+            label = "%s, %s" % (season, "varied" if tinted else "one tint")
+            raw = os.path.join(folder, "%s-%s-%d.png" % (species, season, tinted))
+            render(build, f, raw, size)
+            near = os.path.join(folder, "%s-%s-%d-near.png" % (species, season, tinted))
+            eye, target = TINT_CLOSE[species]
+            script = os.path.join(folder, "near.py")
+            with open(script, "w") as out:
+                out.write("import sylva\nwin = sylva.window()\nwin.look_from(%r, %r)\n"
+                          "win.screenshot(%r, viewport_only=True)\n" % (eye, target, near))
+            subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24",
+                            os.path.join(build, "app/editor/sylva"), "--size",
+                            "%dx%d" % (size, size), "--script", script, f],
+                           check=True, stdout=subprocess.DEVNULL,
+                           env=dict(os.environ, LC_ALL="C", SYLVA_MSAA="4"))
+            for row, src in zip(rows, (raw, near)):
+                img = Image.open(src).convert("RGB")
+                img.thumbnail((size // 2, size // 2), Image.LANCZOS)
+                ImageDraw.Draw(img).text((6, 4), label, fill=(20, 20, 20))
+                row.append(img)
+    w, h = rows[0][0].width, rows[0][0].height
+    strip = Image.new("RGB", (4 * w, 2 * h))
+    for j, row in enumerate(rows):
+        for i, img in enumerate(row):
+            strip.paste(img, (i * w, j * h))
+    strip.save(dst, optimize=True)
+
+
 def seasons_doc(species):
     lines = ["| species | spring · summer · autumn · winter |", "|---|---|"]
     for sp in species:
@@ -211,7 +271,18 @@ def main():
     ap.add_argument("--seasons", action="store_true",
                     help="only the season strips (docs/gallery/seasons-*.png, the seasons table)")
     ap.add_argument("--closeups", action="store_true", help="only the close-ups")
+    ap.add_argument("--tints", action="store_true",
+                    help="only the leaf colour strips (docs/gallery/tints-*.png)")
     args = ap.parse_args()
+    if args.tints:
+        species = [s for s in args.only.split(",") if s] if args.only else TINT_SPECIES
+        os.makedirs(args.out, exist_ok=True)
+        with tempfile.TemporaryDirectory() as tmp:
+            for sp in species:
+                tint_strip(args.build, sp, tmp, os.path.join(args.out, "tints-%s.png" % sp),
+                           args.size)
+                print(sp, "tints", file=sys.stderr)
+        return
     if args.seasons or args.closeups:
         species = [s for s in args.only.split(",") if s] if args.only else SPECIES
         os.makedirs(args.out, exist_ok=True)

@@ -46,6 +46,10 @@ def _image(path):
     return img
 
 
+# The colour attribute holding the leaf tints (linear multipliers of the leaf texture).
+TINT_ATTRIBUTE = "sylva_tint"
+
+
 def _material(name, texture, leaf):
     mat = bpy.data.materials.get(name)
     if mat is not None:
@@ -59,7 +63,20 @@ def _material(name, texture, leaf):
     if img is not None:
         tex = nodes.new("ShaderNodeTexImage")
         tex.image = img
-        mat.node_tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+        color = tex.outputs["Color"]
+        if leaf:
+            # Each leaf card's tint (sylva.Mesh.colors, the colour attribute TINT_ATTRIBUTE,
+            # white where a species sets no variation) multiplies the texture, as glTF's
+            # COLOR_0 does.
+            tint = nodes.new("ShaderNodeVertexColor")
+            tint.layer_name = TINT_ATTRIBUTE
+            mix = nodes.new("ShaderNodeMixRGB")
+            mix.blend_type = "MULTIPLY"
+            mix.inputs["Fac"].default_value = 1.0
+            mat.node_tree.links.new(color, mix.inputs["Color1"])
+            mat.node_tree.links.new(tint.outputs["Color"], mix.inputs["Color2"])
+            color = mix.outputs["Color"]
+        mat.node_tree.links.new(color, bsdf.inputs["Base Color"])
         if leaf:
             mat.node_tree.links.new(tex.outputs["Alpha"], bsdf.inputs["Alpha"])
             mat.blend_method = "CLIP"
@@ -106,6 +123,13 @@ def mesh_data(name, mesh, mats):
     if len(mesh.uvs):
         uv = me.uv_layers.new(name="UVMap")
         uv.data.foreach_set("uv", mesh.uvs[tris.ravel()].astype(np.float32).ravel())
+    # The leaf tints, always present so that the leaf material's multiply finds them: white
+    # where the species sets no variation. Byte colours (4 bytes a vertex); .color is linear.
+    tint = me.color_attributes.new(TINT_ATTRIBUTE, "BYTE_COLOR", "POINT")
+    colors = np.ones((nv, 4), dtype=np.float32)
+    if len(mesh.colors) == nv:
+        colors = mesh.colors.astype(np.float32) / 255.0
+    tint.data.foreach_set("color", colors.ravel())
     me.update()
     if len(mesh.normals):
         me.use_auto_smooth = True

@@ -163,6 +163,14 @@ void bindSpecies(py::module_& m) {
                                [](const MeshRef& r) {
                                    return makeArray(&r.mesh->uvs.data()->x, r.mesh->uvs.size(), 2);
                                })
+        .def_property_readonly(
+            "colors",
+            [](const MeshRef& r) {
+                return makeArray(&r.mesh->colors.data()->x, r.mesh->colors.size(), 4);
+            },
+            "per-vertex RGBA multipliers of the material colour (uint8, linear, 255 = 1: the "
+            "leaf cards' tint, white on bark); empty (0 x 4) when the species sets no "
+            "leaf_*_variation)")
         .def_property_readonly("indices",
                                [](const MeshRef& r) {
                                    return makeArray(r.mesh->indices.data(),

@@ -117,6 +117,23 @@ tree_determinism)
   cmp -s a/t.obj c/t.obj || fail "thread count changed the output"
   run_cli 0 tree "$DATA/lsystem/stochastic.lsys" -o b/t.obj --seed 12
   ! cmp -s a/t.obj b/t.obj || fail "another seed gave the same tree" ;;
+leaf_tints_threads_identical)
+  # Leaf colour variation (issue #33): the library trees' tinted cards, in summer and autumn,
+  # give the same GLB, USD and OBJ bytes on 1 and 2 threads; the colours are there.
+  lib="$DATA/../../resources/demo/library.sylva"
+  for t in 1 2; do
+    mkdir -p "t$t"
+    for f in lib.glb lib.usda lib.obj; do
+      OMP_NUM_THREADS=$t "$CLI" forest "$lib" -o "t$t/$f" >/dev/null 2>err.txt || fail "$t threads, $f: $(cat err.txt)"
+    done
+    OMP_NUM_THREADS=$t "$CLI" tree "$DATA/../../presets/norway-maple.json" --season autumn -o "t$t/maple.glb" >/dev/null 2>err.txt || fail "$t threads, maple: $(cat err.txt)"
+  done
+  for f in lib.glb lib.usda lib.obj maple.glb; do
+    cmp -s "t1/$f" "t2/$f" || fail "1 and 2 threads differ: $f"
+  done
+  grep -q "COLOR_0" t1/maple.glb || fail "no COLOR_0 in the maple"
+  [[ $(grep -c "primvars:displayColor" t1/lib.usda) -ge 10 ]] || fail "displayColor on fewer than 10 species"
+  grep -qE "^v [^ ]+ [^ ]+ [^ ]+ 0\.[0-9]+ " t1/lib.obj || fail "no tinted OBJ vertex" ;;
 bad_syntax_reports_position)
   run_cli 1 expand "$DATA/lsystem/bad-syntax.lsys"
   grep -Eq "bad-syntax.lsys:3:[0-9]+: error: .*" err.txt || fail "message: $(cat err.txt)"

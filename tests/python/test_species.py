@@ -50,6 +50,19 @@ def test_leaves_are_their_own_material(presets):
     assert leaf.shape[1] == 3 and len(leaf) > 0
 
 
+def test_leaf_tints_are_per_vertex_colours(presets):
+    # A library species sets leaf_hue_variation and the others: each leaf card one linear RGBA multiplier,
+    # white on bark; a species without it has no colours.
+    tree = sylva.load_species(presets / "english-oak.json").grow(seed=1)
+    mesh = tree.mesh
+    assert mesh.colors.shape == (mesh.vertex_count, 4) and mesh.colors.dtype == np.uint8
+    bark = np.unique(mesh.indices_of("bark"))
+    assert np.all(mesh.colors[bark] == 255)
+    leaf = np.unique(mesh.indices_of("leaf"))
+    assert len(np.unique(mesh.colors[leaf], axis=0)) > 100
+    assert sylva.load_species(presets / "alder.json").grow(seed=3).mesh.colors.shape == (0, 4)
+
+
 def test_same_seed_same_tree_other_seed_other_tree(presets):
     s = sylva.load_species(presets / "alder.json")
     a = s.grow(seed=5).mesh.positions

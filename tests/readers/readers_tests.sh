@@ -63,6 +63,39 @@ all_ids = ids + [n["extras"]["sylva_id"] for n in nodes if "sylva_id" in n.get("
 assert len(set(all_ids)) == len(all_ids) == stats["trees"], "ids are not one per tree"
 PY
   ;;
+three_leaf_tints)
+  # Leaf tints (issue #33, Mesh::colors as COLOR_0): three.js reads them as a normalized
+  # colour attribute its material multiplies by, varied on the leaves, white on the bark.
+  run_cli tree "$DATA/../../presets/english-oak.json" --seed 2 -o oak.glb
+  node "$READERS/leaf-tints.mjs" oak.glb > three.json 2> three.err || fail "three.js: $(cat three.err)"
+  cat three.json
+  python3 - <<'PY' || fail "three.js does not read the leaf tints: $(cat three.json)"
+import json
+meshes = json.load(open("three.json"))["meshes"]
+leaf = [m for m in meshes if "leaf" in m["material"]]
+bark = [m for m in meshes if "leaf" not in m["material"]]
+assert leaf and bark, meshes
+for m in meshes:
+    assert m["color"] and m["itemSize"] == 4 and m["normalized"] and m["vertexColors"], m
+assert all(m["distinct"] > 100 and 0.2 < m["minGreen"] < 0.95 for m in leaf), leaf
+assert all(m["distinct"] == 1 and m["minGreen"] == 1 for m in bark), bark
+PY
+  ;;
+tinyusdz_leaf_tints)
+  # The same oak as USD: tinyusdz parses displayColor on the leaf mesh, one colour a card face.
+  [[ -d "$READERS/node_modules/tinyusdz" ]] || { echo "SKIP: tinyusdz missing (run scripts/install-readers.sh)"; exit 77; }
+  run_cli tree "$DATA/../../presets/english-oak.json" --seed 2 -o oak.usda
+  node "$READERS/usd-tints.mjs" oak.usda > tinyusdz.json 2> tinyusdz.err || fail "tinyusdz: $(cat tinyusdz.err)"
+  cat tinyusdz.json
+  python3 - <<'PY' || fail "tinyusdz does not read the leaf tints: $(cat tinyusdz.json)"
+import json
+t = json.load(open("tinyusdz.json"))
+assert t["all"] >= 2, t
+assert len(t["meshes"]) == 1 and "leaf" in t["meshes"][0]["name"], t
+m = t["meshes"][0]
+assert m["interpolation"] == "uniform" and m["colors"] == m["faces"] > 1000, m
+PY
+  ;;
 wind_glb)
   # Wind (docs/wind.md): 0 validator errors, three.js plays the clip and the twig tip moves
   # more than the trunk's base, and two exports are byte-identical.

@@ -180,12 +180,20 @@ private Q_SLOTS:
         QCOMPARE(v[1].occlusion, 1.0f);
         QCOMPARE(v[2].normal, glm::vec3(0, 0, 4)); // the first triangle only
         QCOMPARE(v[3].uv, glm::vec2(0.5f, 0.25f));
-        // Colours that do not match the vertices are left at zero; given normals are kept.
+        // Colours that do not match the vertices give white (the material's own colour, which
+        // the shader multiplies by it); given normals are kept.
         m.normals.assign(4, glm::vec3(0, 1, 0));
         for (const ViewVertex& p : interleaveVertices(m, {{1, 1, 1}})) {
             QCOMPARE(p.normal, glm::vec3(0, 1, 0));
-            QCOMPARE(p.color, glm::vec3(0.0f));
+            QCOMPARE(p.color, glm::vec3(1.0f));
         }
+        // Without attribute colours, the mesh's leaf tint (Mesh::colors, linear bytes).
+        m.colors = {{255, 255, 255, 255}, {51, 102, 255, 255}, {0, 0, 0, 255}, {255, 0, 0, 255}};
+        const std::vector<ViewVertex> tinted = interleaveVertices(m, {});
+        QCOMPARE(tinted[1].color, glm::vec3(0.2f, 0.4f, 1.0f));
+        QCOMPARE(tinted[3].color, glm::vec3(1.0f, 0.0f, 0.0f));
+        // The attribute shown wins over the tint.
+        QCOMPARE(interleaveVertices(m, colors)[1].color, glm::vec3(0, 1, 0));
     }
 };
 

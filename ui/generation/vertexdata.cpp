@@ -32,11 +32,15 @@ std::vector<ViewVertex> interleaveVertices(const mesh::Mesh& m,
         m.normals.size() == vertexCount ? std::vector<glm::vec3>{} : smoothNormals(m);
     const std::vector<glm::vec3>& normals = computed.empty() ? m.normals : computed;
     const bool colored = colors.size() == vertexCount;
+    const bool tinted = m.colors.size() == vertexCount;
     const bool hasUvs = m.uvs.size() == vertexCount;
     const std::vector<float> occlusion = mesh::crownOcclusion(m);
     std::vector<ViewVertex> out(vertexCount);
     for (std::size_t i = 0; i < vertexCount; ++i)
-        out[i] = {m.positions[i], normals[i], colored ? colors[i] : glm::vec3(0.0f),
+        out[i] = {m.positions[i], normals[i],
+                  colored  ? colors[i]
+                  : tinted ? glm::vec3(m.colors[i]) / 255.0f
+                           : glm::vec3(1.0f),
                   hasUvs ? m.uvs[i] : glm::vec2(0.0f), occlusion[i]};
     return out;
 }

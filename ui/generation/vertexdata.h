@@ -18,15 +18,17 @@ namespace sylva::ui {
 struct ViewVertex {
     glm::vec3 position;
     glm::vec3 normal; ///< not normalised (the fragment shader normalises)
-    glm::vec3 color;  ///< the attribute colour, or zero
+    /// The attribute colour, else the mesh's tint (Mesh::colors, linear), else white
+    glm::vec3 color;
     glm::vec2 uv;
     float occlusion; ///< the crown's ambient occlusion, 0..1
 };
 static_assert(sizeof(ViewVertex) == 48, "the viewport's vertex layout is 12 floats");
 
 /// The vertices of \p m as the viewport uploads them: position, normal (area-weighted smooth
-/// normals when the mesh has none), uv (zero without uvs), attribute colour (zero when
-/// \p colors does not match the vertices) and the crown's ambient occlusion.
+/// normals when the mesh has none), uv (zero without uvs), attribute colour (when \p colors
+/// matches the vertices; else the mesh's leaf tint, else white: what the material's colour is
+/// multiplied by) and the crown's ambient occlusion.
 /// Pure, so any thread can make them: the species preview makes them on its worker beside the
 /// mesh, and the GUI thread only copies them to the GPU. Triangles with an index out of range
 /// are left out of the normals.

@@ -3,6 +3,7 @@
 #include "engine/export/materials.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,7 @@
 #include <unistd.h>
 #endif
 
+#include "engine/mesh/leaftint.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -94,6 +96,17 @@ private:
 
 enum class Section { Header, V, VT, VN, F };
 
+// Mesh::colors channels (linear) as the sRGB values OBJ readers expect, once for all bytes.
+float srgbOfByte(std::uint8_t v) {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i)
+            t[static_cast<std::size_t>(i)] = mesh::srgbFromByte(static_cast<std::uint8_t>(i));
+        return t;
+    }();
+    return table[v];
+}
+
 struct Task {
     const ObjObject* object = nullptr;
     Section section = Section::Header;
@@ -101,6 +114,7 @@ struct Task {
     ObjOffsets base;                // offsets of this object's first v/vt/vn
     std::uint64_t vertices = 0;     // the object's vertex count (relative indices count back)
     bool hasUv = false, hasNormal = false;
+    bool hasColor = false; // `v x y z r g b`
     bool identity = true;
     glm::mat3 normalMatrix{1.0f};
     /// The normal matrix is a rotation (the transform rotates, translates and scales uniformly,
@@ -210,6 +224,13 @@ void formatTask(TextBuffer& w, const Task& t, const ObjOptions& o) {
                 c = formatFixedT<D>(c, p.y);
                 *c++ = ' ';
                 c = formatFixedT<D>(c, p.z);
+                if (t.hasColor) {
+                    const glm::u8vec4 col = m.colors[i];
+                    for (int k = 0; k < 3; ++k) {
+                        *c++ = ' ';
+                        c = formatFixedT<3>(c, srgbOfByte(col[k]));
+                    }
+                }
                 *c++ = '\n';
                 w.done(c);
             }
@@ -353,6 +374,7 @@ std::vector<Task> makeTasks(const std::vector<ObjObject>& objects, ObjOffsets& o
         t.base = offsets;
         t.hasUv = o.uvs && m.uvs.size() == nv && nv > 0;
         t.hasNormal = o.normals && m.normals.size() == nv && nv > 0;
+        t.hasColor = o.colors && m.colors.size() == nv && nv > 0;
         t.vertices = nv;
         t.identity = object.transform == glm::mat4(1.0f);
         if (!t.identity) {

@@ -26,8 +26,11 @@ struct ObjObject {
 
 /// What the writer emits and how precisely.
 struct ObjOptions {
-    bool normals = true;      ///< `vn` (when the mesh has them)
-    bool uvs = true;          ///< `vt` (when the mesh has them)
+    bool normals = true; ///< `vn` (when the mesh has them)
+    bool uvs = true;     ///< `vt` (when the mesh has them)
+    /// Vertex colours (Mesh::colors, leaf tints) as `v x y z r g b`, sRGB to 3 decimals: the
+    /// extension Blender's and Assimp's OBJ readers take (when the mesh has them).
+    bool colors = true;
     bool materials = true;    ///< `usemtl <submesh material>` before each run of faces
     std::string mtllib;       ///< written as `mtllib <name>` at the top when not empty
     int positionDecimals = 6; ///< fixed decimals of `v` (6 = micrometres), 1..9

@@ -22,6 +22,7 @@
 
 #include "engine/export/fbxfix.h"
 #include "engine/export/objwriter.h"
+#include "engine/mesh/leaftint.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -61,7 +62,7 @@ aiMaterial* makeMaterial(const Material& m) {
 
 // One Assimp mesh for the triangles [first, first+count) of \p m, with its vertices compacted.
 aiMesh* makeMesh(const mesh::Mesh& m, std::uint32_t first, std::uint32_t count,
-                 unsigned materialIndex, const std::string& name) {
+                 unsigned materialIndex, const std::string& name, bool srgbColors) {
     auto* out = new aiMesh();
     out->mName = aiString(name);
     out->mMaterialIndex = materialIndex;
@@ -85,11 +86,23 @@ aiMesh* makeMesh(const mesh::Mesh& m, std::uint32_t first, std::uint32_t count,
         out->mTextureCoords[0] = new aiVector3D[nv];
         out->mNumUVComponents[0] = 2;
     }
+    // Leaf tints: as sRGB for FBX, what its readers take a vertex colour for (Blender's
+    // importer stores them as byte colours, which it reads as sRGB; Maya and Unreal do the
+    // same); linear for glTF, whose COLOR_0 is linear.
+    const bool colors = m.colors.size() == m.positions.size();
+    if (colors) out->mColors[0] = new aiColor4D[nv];
     for (unsigned k = 0; k < nv; ++k) {
         const std::uint32_t v = used[k];
         out->mVertices[k] = aiVector3D(m.positions[v].x, m.positions[v].y, m.positions[v].z);
         if (normals) out->mNormals[k] = aiVector3D(m.normals[v].x, m.normals[v].y, m.normals[v].z);
         if (uvs) out->mTextureCoords[0][k] = aiVector3D(m.uvs[v].x, m.uvs[v].y, 0.0f);
+        if (colors) {
+            const glm::u8vec4 c = m.colors[v];
+            out->mColors[0][k] =
+                srgbColors ? aiColor4D(mesh::srgbFromByte(c.x), mesh::srgbFromByte(c.y),
+                                       mesh::srgbFromByte(c.z), c.w / 255.0f)
+                           : aiColor4D(c.x / 255.0f, c.y / 255.0f, c.z / 255.0f, c.w / 255.0f);
+        }
     }
     out->mNumFaces = count / 3;
     out->mFaces = new aiFace[out->mNumFaces];
@@ -126,7 +139,7 @@ aiTexture* embeddedTexture(const std::filesystem::path& file) {
     return tex;
 }
 
-std::unique_ptr<aiScene> buildScene(const SceneDesc& desc, bool embedTextures) {
+std::unique_ptr<aiScene> buildScene(const SceneDesc& desc, bool embedTextures, bool srgbColors) {
     auto scene = std::make_unique<aiScene>();
     std::vector<Material> materials = desc.materials;
     std::unordered_map<std::string, unsigned> materialIndex;
@@ -152,7 +165,7 @@ std::unique_ptr<aiScene> buildScene(const SceneDesc& desc, bool embedTextures) {
             }
             meshParts[mi].push_back(static_cast<unsigned>(meshes.size()));
             meshes.push_back(makeMesh(*sm.mesh, part.firstIndex, part.indexCount, it->second,
-                                      sm.name + "_" + part.material));
+                                      sm.name + "_" + part.material, srgbColors));
         }
     }
     scene->mNumMeshes = static_cast<unsigned>(meshes.size());
@@ -367,7 +380,8 @@ void writeScene(const std::filesystem::path& path, const SceneDesc& desc, SceneF
     // A .glb and an .fbx are single files: their textures go inside. A text glTF keeps
     // references to the textures/ folder beside it.
     auto job = std::make_shared<ExportJob>();
-    job->scene = buildScene(desc, format != SceneFormat::Gltf);
+    job->scene = buildScene(desc, format != SceneFormat::Gltf,
+                            format == SceneFormat::Fbx || format == SceneFormat::FbxAscii);
     job->format = format;
     progress.checkCancelled();
     std::thread worker([job] { job->run(); });

@@ -257,6 +257,18 @@ Image renderOrthographicView(const Mesh& mesh, const ImpostorMaterials& material
         mats[s] = materials ? materials(mesh.submeshes[s]) : ImpostorMaterial{};
     const bool hasUv = mesh.uvs.size() == mesh.positions.size();
     const bool hasNormals = mesh.normals.size() == mesh.positions.size();
+    // The leaf tints (Mesh::colors, linear multipliers) applied to the texture's sRGB values:
+    // a linear factor f is f^(1/2.2) there, so the impostor shows the cards' variation.
+    const bool hasColors = mesh.colors.size() == mesh.positions.size();
+    std::vector<glm::vec3> tint(hasColors ? mesh.positions.size() : 0);
+    if (hasColors) {
+        float factor[256];
+        for (int i = 0; i < 256; ++i)
+            factor[i] = std::pow(static_cast<float>(i) / 255.0f, 1.0f / 2.2f);
+        for (std::size_t i = 0; i < tint.size(); ++i)
+            tint[i] = {factor[mesh.colors[i].x], factor[mesh.colors[i].y],
+                       factor[mesh.colors[i].z]};
+    }
     for (std::size_t t = 0; t < submeshOf.size(); ++t) {
         const std::uint32_t ia = mesh.indices[3 * t], ib = mesh.indices[3 * t + 1],
                             ic = mesh.indices[3 * t + 2];
@@ -275,6 +287,10 @@ Image renderOrthographicView(const Mesh& mesh, const ImpostorMaterials& material
                     const glm::vec2 uv = w0 * mesh.uvs[ia] + w1 * mesh.uvs[ib] + w2 * mesh.uvs[ic];
                     c = sampleWrapped(*m.texture, uv);
                     if (m.alphaTest && c.w < 0.5f) return;
+                }
+                if (hasColors) {
+                    const glm::vec3 f = w0 * tint[ia] + w1 * tint[ib] + w2 * tint[ic];
+                    c = glm::vec4(glm::vec3(c) * f, c.w);
                 }
                 z[k] = d;
                 albedo[k] = glm::vec4(glm::vec3(c), 1.0f);

@@ -21,6 +21,8 @@ CardSpan growForCards(Mesh& out, std::size_t cards) {
     }
     span.ids = !out.node.empty();
     if (span.ids) out.node.resize(nv, Mesh::kNoNode);
+    // Leaf tints (leaftint.h) are given after the cards are made: white until then.
+    if (!out.colors.empty()) out.colors.resize(nv, glm::u8vec4(255));
     out.indices.resize(span.firstIndex + 6 * cards);
     return span;
 }

@@ -8,6 +8,7 @@
 #include "engine/mesh/leafclusters.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/seedsalts.h"
 
 namespace sylva::mesh {
 
@@ -232,6 +233,7 @@ namespace {
 // One card a leaf, or cluster cards when the species has a cluster atlas.
 void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
                   const TreeMeshSettings& settings, const skel::Skeleton* skeleton) {
+    const std::size_t firstVertex = mesh.positions.size();
     if (settings.leafClusterSize > 1) {
         LeafClusterSettings clusters;
         clusters.leavesPerCard = settings.leafClusterSize;
@@ -241,6 +243,10 @@ void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
     } else {
         appendLeafCards(mesh, leaves, settings.leafCards, skeleton);
     }
+    tintLeafCards(mesh, firstVertex,
+                  leafVariationFor(settings.leafTint, settings.season, settings.deciduous),
+                  leafReferenceColor(settings.leafTint, settings.season, settings.deciduous),
+                  settings.leafTint.patchSize, mixSeed(settings.seed, salt::kLeafTint));
 }
 
 Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/mesh/leafcards.h"
+#include "engine/mesh/leaftint.h"
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/season.h"
 #include "engine/mesh/tubemesh.h"
@@ -120,6 +121,8 @@ struct TreeMeshSettings {
     /// leaf. With it the leaf submesh shows leafClusterTexture (the species' cluster atlas).
     int leafClusterSize = 0;
     std::string leafClusterTexture;
+    /// How the leaf cards' colours vary (Mesh::colors), per season; none by default.
+    LeafTintSettings leafTint;
 };
 
 /// Bark tubes plus leaf cards, at the level of detail the settings ask for.

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/ext/vector_uint4_sized.hpp>
 #include <glm/glm.hpp>
 
 namespace sylva::mesh {
@@ -52,6 +53,10 @@ struct Mesh {
     std::vector<std::uint32_t> node;
     /// Optional (empty or of positions' size): the wind model's data, filled by wind::addWindData.
     std::vector<WindVertex> wind;
+    /// Optional (empty or of positions' size): a colour the vertex multiplies its material's
+    /// colour by, linear RGBA, 255 = x1: leaf cards' per-card tint (mesh/leaftint.h), white on
+    /// bark. 4 bytes a vertex; written as glTF COLOR_0, FBX vertex colours, USD displayColor.
+    std::vector<glm::u8vec4> colors;
     static constexpr std::uint32_t kNoNode = 0xffffffffu;
     /// The bark holds flat ribbons turned to one camera (the camera LOD's thinnest twigs): a
     /// viewer must draw this bark from both sides (closed tubes alone can cull back faces).

@@ -557,6 +557,8 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
             }
         }
     }
+    // Bark is not tinted: white where the mesh carries colours (leaf cards made before).
+    if (!out.colors.empty()) out.colors.resize(out.positions.size(), glm::u8vec4(255));
     progress.report(1.0, "mesh");
 }
 

@@ -78,6 +78,16 @@ LodSettings lodFromParams(const Value& p) {
     return lod;
 }
 
+// A season's leaf colour spread (mesh/leaftint.h): `<prefix>hue_variation` (degrees),
+// `<prefix>saturation_variation`, `<prefix>brightness_variation`; unset: none.
+LeafColorVariation colorVariation(const Value& p, const std::string& prefix) {
+    LeafColorVariation v;
+    v.hue = ranged(p, (prefix + "hue_variation").c_str(), 0.0, 0.0, 90.0);
+    v.saturation = ranged(p, (prefix + "saturation_variation").c_str(), 0.0, 0.0, 1.0);
+    v.brightness = ranged(p, (prefix + "brightness_variation").c_str(), 0.0, 0.0, 1.0);
+    return v;
+}
+
 } // namespace
 
 TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
@@ -124,12 +134,18 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.season = parseSeason(p.string("season", "summer"));
     s.deciduous = p.boolean("deciduous", false);
     if (const Value* autumn = p.find("autumn_color"); autumn && !autumn->isNull()) {
-        // Read by make_textures.py (the autumn leaf texture); checked here so a typo shows.
+        // Read by make_textures.py (the autumn leaf texture) and by the autumn leaf tint.
         const Value::Array& a = autumn->toArray("autumn_color");
         if (a.size() != 3) throw InvalidInput("autumn_color must be [r, g, b]");
-        for (const Value& c : a)
-            requireRange("autumn_color", c.toNumber("autumn_color"), 0.0, 1.0);
+        for (int k = 0; k < 3; ++k) {
+            const double c = a[static_cast<std::size_t>(k)].toNumber("autumn_color");
+            requireRange("autumn_color", c, 0.0, 1.0);
+            s.leafTint.autumnColor[k] = static_cast<float>(c);
+        }
     }
+    s.leafTint.summer = colorVariation(p, "leaf_");
+    s.leafTint.autumn = colorVariation(p, "leaf_autumn_");
+    s.leafTint.patchSize = ranged(p, "leaf_color_patch", s.leafTint.patchSize, 0.0, 1e3);
     s.leafClusterSize = rangedInt(p, "leaf_cluster_size", 0, 0, 64);
     s.leafClusterTexture = texture("leaf_cluster_texture_file");
     if (s.leafClusterSize > 1 && s.leafClusterTexture.empty())
@@ -309,6 +325,23 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
          vector("autumn_color", vec(0.6, 0.4, 0.1), 0, 1, "",
                 "Autumn leaf colour (sRGB 0..1): make_textures.py draws the species' "
                 "autumn leaves from it")});
+    group(
+        tube.params, "Leaf colour",
+        {number("leaf_hue_variation", 0.0, 0, 90, "°",
+                "Leaf cards' hue turned by up to ± this in spring and summer (an evergreen "
+                "all year); 0 with the two below: every card alike"),
+         number("leaf_saturation_variation", 0.0, 0, 1, "",
+                "Leaf cards' saturation scaled by up to ± this fraction"),
+         number("leaf_brightness_variation", 0.0, 0, 1, "",
+                "The darkest leaf card's loss of brightness (most keep near the texture's)"),
+         number("leaf_autumn_hue_variation", 0.0, 0, 90, "°",
+                "The same three in autumn for a deciduous species, around autumn_color"),
+         number("leaf_autumn_saturation_variation", 0.0, 0, 1, "", "Autumn: saturation ± fraction"),
+         number("leaf_autumn_brightness_variation", 0.0, 0, 1, "",
+                "Autumn: the darkest card's loss of brightness"),
+         number("leaf_color_patch", 1.5, 0, 1e3, "m",
+                "Most of the variation follows patches about this large over the crown, the "
+                "rest is each card's own; 0: each card on its own")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;

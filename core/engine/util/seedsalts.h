@@ -48,5 +48,7 @@ inline constexpr std::uint64_t kBrushStroke = 7919;
 inline constexpr std::uint64_t kPlaceTool = 104729;
 /// Leaf cluster cards: which atlas tile a cluster shows and whether it is mirrored.
 inline constexpr std::uint64_t kLeafClusters = 0x5b7a11ull;
+/// Leaf cards' colour variation (mesh/leaftint.h): each card's own random and the crown's noise.
+inline constexpr std::uint64_t kLeafTint = 0x7147ull;
 
 } // namespace sylva::salt

@@ -17,10 +17,13 @@
 #include "engine/lsystem/derivation.h"
 #include "engine/lsystem/grammar.h"
 #include "engine/lsystem/turtle.h"
+#include "engine/mesh/leafcards.h"
+#include "engine/mesh/leaftint.h"
 #include "engine/mesh/lod.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/memorypolicy.h"
+#include "engine/util/random.h"
 
 using namespace sylva;
 
@@ -202,6 +205,46 @@ void BM_TubeMesh(benchmark::State& state) {
     runTubeMesh(state, mesh::appendTubes);
 }
 BENCHMARK(BM_TubeMesh)->Arg(1)->Arg(2)->ArgName("threads")->Unit(benchmark::kMillisecond);
+
+// Leaf colour variation (issue #33): tinting 100k leaf cards (a large broadleaf has 5-10k
+// cluster cards, 20-40k single ones), the oak's library spread and patches; against the cost
+// of making those cards (appendLeafCards), same run.
+const std::vector<skel::Leaf>& manyLeaves() {
+    static const std::vector<skel::Leaf> leaves = [] {
+        std::vector<skel::Leaf> out(100000);
+        Rng rng(5);
+        for (skel::Leaf& l : out) {
+            l.position = {rng.uniformf(-6, 6), rng.uniformf(2, 12), rng.uniformf(-6, 6)};
+            l.orientation = glm::angleAxis(rng.uniformf(0, 6.28f), glm::vec3(0, 1, 0));
+            l.size = 0.1f;
+        }
+        return out;
+    }();
+    return leaves;
+}
+
+void BM_LeafTint(benchmark::State& state) {
+    mesh::Mesh m;
+    mesh::appendLeafCards(m, manyLeaves(), {});
+    const mesh::LeafColorVariation spread{6.0, 0.2, 0.2};
+    for (auto _ : state) {
+        m.colors.clear();
+        mesh::tintLeafCards(m, 0, spread, {0.26f, 0.40f, 0.12f}, 1.5, 7);
+        benchmark::DoNotOptimize(m.colors.data());
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * manyLeaves().size()));
+}
+BENCHMARK(BM_LeafTint)->Unit(benchmark::kMillisecond);
+
+void BM_LeafCards(benchmark::State& state) {
+    for (auto _ : state) {
+        mesh::Mesh m;
+        mesh::appendLeafCards(m, manyLeaves(), {});
+        benchmark::DoNotOptimize(m.positions.data());
+    }
+    state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * manyLeaves().size()));
+}
+BENCHMARK(BM_LeafCards)->Unit(benchmark::kMillisecond);
 
 // The first, straightforward mesher (tests/core/mesh/referencetubemesh.cpp), same input.
 void BM_TubeMeshReference(benchmark::State& state) {

@@ -381,6 +381,36 @@ TEST(GltfMesh, SubmeshesShareVerticesAndTexturesAreEmbeddedOnce) {
     EXPECT_EQ(uvs, (std::vector<float>{0, 1, 1, 1, 0, 0, 1, 0}));
 }
 
+TEST(GltfMesh, LeafTintsAreColor0AsNormalizedBytes) {
+    // Mesh::colors are linear multipliers: COLOR_0 as glTF defines it, four normalized bytes.
+    const fs::path dir = tempDir("color");
+    mesh::Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    m.indices = {0, 1, 2};
+    m.submeshes = {{"leaf", 0, 3, ""}};
+    m.colors = {{255, 255, 255, 255}, {200, 180, 90, 255}, {64, 128, 32, 255}};
+    {
+        GltfBuilder b(dir / "tint.glb", GltfFormat::Glb);
+        MaterialTable table(b, exporter::defaultMaterials(), {}, true);
+        addTreeMesh(b, m, "tinted", table);
+        m.colors.clear();
+        addTreeMesh(b, m, "plain", table);
+        b.addScene("", {});
+        b.finish();
+    }
+    const ParsedGlb g = parseGlb(readFile(dir / "tint.glb"));
+    const Json& attributes = g.json["meshes"][0]["primitives"][0]["attributes"];
+    ASSERT_TRUE(attributes.contains("COLOR_0"));
+    const Json& a = g.json["accessors"][attributes["COLOR_0"].get<std::size_t>()];
+    EXPECT_EQ(a["componentType"], 5121);
+    EXPECT_EQ(a["type"], "VEC4");
+    EXPECT_EQ(a["normalized"], true);
+    const auto bytes = readAccessor<std::uint8_t>(g, attributes["COLOR_0"].get<int>(), 4);
+    EXPECT_EQ(bytes,
+              (std::vector<std::uint8_t>{255, 255, 255, 255, 200, 180, 90, 255, 64, 128, 32, 255}));
+    EXPECT_FALSE(g.json["meshes"][1]["primitives"][0]["attributes"].contains("COLOR_0"));
+}
+
 namespace {
 mesh::Mesh triangle(float size) {
     mesh::Mesh m;

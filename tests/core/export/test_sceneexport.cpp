@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +19,7 @@
 #include "engine/export/sceneexport.h"
 #include "engine/export/treeexport.h"
 #include "engine/lsystem/turtle.h"
+#include "engine/mesh/leaftint.h"
 #include "engine/mesh/lod.h"
 #include "engine/util/error.h"
 #include "engine/util/value.h"
@@ -202,6 +205,140 @@ TEST(SceneExport, ObjAndMtlReadBack) {
             EXPECT_EQ(std::string(tex.C_Str()), "textures/leaf.png");
         }
     }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(SceneExport, LeafTintsTravelAsVertexColours) {
+    // glTF (Assimp's glb2 as the LOD export writes it) carries them linear, FBX and OBJ as
+    // sRGB, the convention of their readers: read back and linearized, each is a card's colour.
+    lsys::TurtleSettings t;
+    t.angleDegrees = 30;
+    t.width = 0.3;
+    const auto s = lsys::interpret(sylva::testing::makeWord(sylva::testing::testTreeWord(3)), t);
+    mesh::TreeMeshSettings settings;
+    settings.leafTint.summer = {10.0, 0.2, 0.25};
+    const mesh::Mesh m = mesh::buildTreeMesh(s, settings);
+    ASSERT_EQ(m.colors.size(), m.positions.size());
+    std::set<std::array<int, 3>> cards;
+    for (const glm::u8vec4& c : m.colors)
+        cards.insert({c.x, c.y, c.z});
+    ASSERT_GT(cards.size(), 10u);
+    const auto dir = tempDir("tint");
+    exporter::SceneDesc scene;
+    scene.meshes = {{"oak", &m}};
+    scene.instances = {{"oak_0", 0, {0, 0, 0}, glm::quat(1, 0, 0, 0), glm::vec3(1)}};
+    exporter::writeScene(dir / "tint.glb", scene, exporter::SceneFormat::Glb);
+    exporter::writeScene(dir / "tint.fbx", scene, exporter::SceneFormat::Fbx);
+    exporter::writeObjFile(dir / "tint.obj", {{"oak_0", &m}});
+    for (const char* name : {"tint.glb", "tint.fbx", "tint.obj"}) {
+        SCOPED_TRACE(name);
+        const bool srgb = std::string(name) != "tint.glb";
+        Assimp::Importer importer;
+        const aiScene* sc = importer.ReadFile((dir / name).string(), 0);
+        ASSERT_NE(sc, nullptr) << importer.GetErrorString();
+        std::size_t leafVertices = 0, varied = 0;
+        for (unsigned i = 0; i < sc->mNumMeshes; ++i) {
+            const aiMesh* am = sc->mMeshes[i];
+            ASSERT_TRUE(am->HasVertexColors(0)) << am->mName.C_Str();
+            aiString material;
+            sc->mMaterials[am->mMaterialIndex]->Get(AI_MATKEY_NAME, material);
+            const bool leaf = std::string(material.C_Str()).find("leaf") != std::string::npos;
+            std::set<std::array<int, 3>> seen;
+            for (unsigned v = 0; v < am->mNumVertices; ++v) {
+                const aiColor4D c = am->mColors[0][v];
+                std::array<int, 3> lin;
+                for (int k = 0; k < 3; ++k) {
+                    const float x = k == 0 ? c.r : k == 1 ? c.g : c.b;
+                    lin[static_cast<std::size_t>(k)] =
+                        static_cast<int>(std::lround((srgb ? mesh::srgbToLinear(x) : x) * 255.0f));
+                }
+                if (!leaf) {
+                    ASSERT_EQ(lin, (std::array<int, 3>{255, 255, 255})) << "bark is white";
+                    continue;
+                }
+                ++leafVertices;
+                seen.insert(lin);
+                // OBJ's three decimals of sRGB: a byte either way at most.
+                bool near = false;
+                for (const auto& card : cards)
+                    near = near ||
+                           (std::abs(card[0] - lin[0]) <= 1 && std::abs(card[1] - lin[1]) <= 1 &&
+                            std::abs(card[2] - lin[2]) <= 1);
+                ASSERT_TRUE(near) << lin[0] << " " << lin[1] << " " << lin[2];
+            }
+            varied += seen.size();
+        }
+        EXPECT_GT(leafVertices, 0u);
+        EXPECT_GT(varied, cards.size() / 2);
+    }
+    std::filesystem::remove_all(dir);
+}
+
+// Blender, a reader nobody here wrote, reads the leaf tints of the files `sylva-cli` writes
+// (our glTF writer, Assimp's FBX, our OBJ) as the same linear colours.
+TEST(SceneExport, BlenderReadsTheSameLeafTintsFromGlbFbxAndObj) {
+    if (std::system("command -v blender >/dev/null 2>&1") != 0)
+        GTEST_SKIP() << "blender not installed: Blender's reading of vertex colours not checked";
+    lsys::TurtleSettings t;
+    t.angleDegrees = 30;
+    t.width = 0.3;
+    const auto s = lsys::interpret(sylva::testing::makeWord(sylva::testing::testTreeWord(3)), t);
+    mesh::TreeMeshSettings settings;
+    settings.leafTint.summer = {10.0, 0.2, 0.25};
+    const auto tree = std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(s, settings));
+    // The darkest green of a card, linear.
+    int darkest = 255;
+    for (const glm::u8vec4& c : tree->colors)
+        darkest = std::min<int>(darkest, c.y);
+    const auto dir = tempDir("blender_tint");
+    for (const char* name : {"oak.glb", "oak.fbx", "oak.obj"}) {
+        exporter::TreeExporter out(dir / name);
+        out.add({{"oak", tree, glm::vec3(0.0f), 0.0f, 1.0f}});
+        out.commit();
+    }
+    const std::string script =
+        "import bpy,sys,numpy\n"
+        "if not hasattr(numpy,'bool'): numpy.bool=bool\n"
+        "ok=True\n"
+        "for f in ['oak.glb','oak.fbx','oak.obj']:\n"
+        "  bpy.ops.wm.read_factory_settings(use_empty=True)\n"
+        "  p='" +
+        dir.string() +
+        "/'+f\n"
+        "  if f.endswith('glb'): bpy.ops.import_scene.gltf(filepath=p)\n"
+        "  elif f.endswith('fbx'): bpy.ops.import_scene.fbx(filepath=p)\n"
+        "  else: bpy.ops.wm.obj_import(filepath=p)\n"
+        "  g=[]\n"
+        "  for o in bpy.data.objects:\n"
+        "    if o.type!='MESH': continue\n"
+        "    for a in o.data.color_attributes:\n"
+        "      v=numpy.zeros(len(a.data)*4,dtype=numpy.float32)\n"
+        "      a.data.foreach_get('color',v)\n"
+        "      g.append(v.reshape(-1,4)[:,1].min())\n"
+        "  if f.endswith('glb'):\n"
+        // Blender's glTF importer multiplies the base colour by COLOR_0 (a Color Attribute
+        // node in the leaf material), as the glTF specification asks.
+        "    v=[m.name for m in bpy.data.materials if m.use_nodes and any(n.type=="
+        "'VERTEX_COLOR' for n in m.node_tree.nodes)]\n"
+        "    print('sylva-check materials using the colours',v)\n"
+        "    ok=ok and any('leaf' in n for n in v)\n"
+        "  print('sylva-check',f,g)\n"
+        "  ok=ok and len(g)>0 and abs(min(g)-" +
+        std::to_string(darkest / 255.0) +
+        ")<0.01\n"
+        "sys.exit(0 if ok else 1)\n";
+    {
+        std::ofstream out(dir / "check.py");
+        out << script;
+    }
+    const std::string cmd = "blender -b --python-exit-code 1 --python " +
+                            (dir / "check.py").string() + " >" + (dir / "blender.log").string() +
+                            " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::ifstream in(dir / "blender.log");
+    std::stringstream log;
+    log << in.rdbuf();
+    EXPECT_EQ(rc, 0) << "blender output:\n" << log.str();
     std::filesystem::remove_all(dir);
 }
 

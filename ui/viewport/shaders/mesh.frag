@@ -73,7 +73,8 @@ void main() {
     vec3 sky = vec3(0.62, 0.70, 0.85);
     vec3 ground = vec3(0.30, 0.25, 0.20);
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    vec3 albedo = uVertexColor ? vColor : material;
+    // Without an attribute to show, vColor is the leaf cards' tint (white elsewhere).
+    vec3 albedo = uVertexColor ? vColor : material * vColor;
     float ao = clamp(vOcclusion, 0.0, 1.0);
     vec3 color = albedo * (0.55 * ambient * ao +
                            1.35 * vec3(1.0, 0.96, 0.90) * diffuse * (0.4 + 0.6 * ao));

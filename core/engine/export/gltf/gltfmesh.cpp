@@ -129,6 +129,13 @@ int addTreeMesh(GltfBuilder& builder, const mesh::Mesh& m, std::string_view name
             uvs[i] = {m.uvs[i].x, 1.0f - m.uvs[i].y};
         base.attributes.emplace_back("TEXCOORD_0", builder.addVec2(uvs));
     }
+    if (m.colors.size() == m.positions.size()) {
+        // Linear RGBA multipliers of the base colour, as glTF defines COLOR_0 (leaf tints).
+        const auto* bytes = reinterpret_cast<const std::uint8_t*>(m.colors.data());
+        base.attributes.emplace_back(
+            "COLOR_0", builder.addUint8(std::span<const std::uint8_t>(bytes, 4 * m.colors.size()),
+                                        4, Target::ArrayBuffer, true));
+    }
     for (const auto& attribute : extra)
         base.attributes.push_back(attribute);
 

@@ -184,6 +184,49 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
             indent(out, a);
             out += ")\n";
         }
+        if (m.colors.size() == m.positions.size()) {
+            // Leaf tints (Mesh::colors) as displayColor, linear as USD's colours are; only on
+            // a run that has any (bark is white). A card is one face of one colour: `uniform`,
+            // a quarter of the text; per vertex where a face's corners differ.
+            bool tinted = false, flat = true;
+            for (std::uint32_t v : used)
+                tinted = tinted || m.colors[v] != glm::u8vec4(255);
+            for (std::size_t f = 0; f < faces.size() && flat && tinted; ++f) {
+                const std::uint32_t* t = &m.indices[faces[f].first];
+                const glm::u8vec4 c0 = m.colors[t[0]];
+                flat = m.colors[t[1]] == c0 && m.colors[t[2]] == c0 &&
+                       (faces[f].count == 3 || m.colors[faces[f].fourth] == c0);
+            }
+            if (tinted) {
+                auto color = [&](const glm::u8vec4& c) {
+                    out += '(';
+                    appendFixed(out, c.x / 255.0f, 3);
+                    out += ',';
+                    appendFixed(out, c.y / 255.0f, 3);
+                    out += ',';
+                    appendFixed(out, c.z / 255.0f, 3);
+                    out += ')';
+                };
+                indent(out, a);
+                out += "color3f[] primvars:displayColor = [";
+                if (flat) {
+                    for (std::size_t f = 0; f < faces.size(); ++f) {
+                        if (f) out += ',';
+                        color(m.colors[m.indices[faces[f].first]]);
+                    }
+                } else {
+                    for (std::size_t k = 0; k < used.size(); ++k) {
+                        if (k) out += ',';
+                        color(m.colors[used[k]]);
+                    }
+                }
+                out += "] (\n";
+                indent(out, a + 4);
+                out += flat ? "interpolation = \"uniform\"\n" : "interpolation = \"vertex\"\n";
+                indent(out, a);
+                out += ")\n";
+            }
+        }
         indent(out, a);
         out += "point3f[] points = [";
         for (std::size_t k = 0; k < used.size(); ++k) {

@@ -1,0 +1,214 @@
+#include "engine/mesh/leaftint.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/util/random.h"
+
+namespace sylva::mesh {
+
+namespace {
+
+// The summer green of make_textures.py's leaves (their mean, sRGB), and spring's lighter one.
+constexpr glm::vec3 kSummerGreen{0.26f, 0.40f, 0.12f};
+constexpr glm::vec3 kSpringGreen{0.42f, 0.58f, 0.18f};
+
+glm::vec3 rgbToHsv(const glm::vec3& c) {
+    const float mx = std::max({c.x, c.y, c.z}), mn = std::min({c.x, c.y, c.z});
+    const float d = mx - mn;
+    float h = 0.0f;
+    if (d > 1e-6f) {
+        if (mx == c.x)
+            h = (c.y - c.z) / d;
+        else if (mx == c.y)
+            h = 2.0f + (c.z - c.x) / d;
+        else
+            h = 4.0f + (c.x - c.y) / d;
+        h /= 6.0f;
+        if (h < 0.0f) h += 1.0f;
+    }
+    return {h, mx > 0.0f ? d / mx : 0.0f, mx};
+}
+
+glm::vec3 hsvToRgb(const glm::vec3& hsv) {
+    const float h = (hsv.x - std::floor(hsv.x)) * 6.0f, s = hsv.y, v = hsv.z;
+    const int i = static_cast<int>(std::floor(h)) % 6;
+    const float f = h - std::floor(h);
+    const float p = v * (1.0f - s), q = v * (1.0f - s * f), t = v * (1.0f - s * (1.0f - f));
+    switch (i) {
+    case 0:
+        return {v, t, p};
+    case 1:
+        return {q, v, p};
+    case 2:
+        return {p, v, t};
+    case 3:
+        return {p, q, v};
+    case 4:
+        return {t, p, v};
+    default:
+        return {v, p, q};
+    }
+}
+
+// A value in [-1, 1) from a hash.
+double signedUnit(std::uint64_t h) {
+    return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0;
+}
+
+double smooth(double t) {
+    return t * t * (3.0 - 2.0 * t);
+}
+
+// Three value noises in [-1, 1]: random values at the integer lattice, smoothly interpolated.
+glm::dvec3 valueNoise(const glm::dvec3& p, std::uint64_t seed) {
+    const glm::dvec3 f = glm::floor(p);
+    const glm::dvec3 t = p - f;
+    const auto ix = static_cast<std::int64_t>(f.x), iy = static_cast<std::int64_t>(f.y),
+               iz = static_cast<std::int64_t>(f.z);
+    auto lattice = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+        const std::uint64_t h = mixSeed(
+            mixSeed(mixSeed(seed, static_cast<std::uint64_t>(x)), static_cast<std::uint64_t>(y)),
+            static_cast<std::uint64_t>(z));
+        return glm::dvec3(signedUnit(mixSeed(h, 1)), signedUnit(mixSeed(h, 2)),
+                          signedUnit(mixSeed(h, 3)));
+    };
+    const double sx = smooth(t.x), sy = smooth(t.y), sz = smooth(t.z);
+    glm::dvec3 c[2][2];
+    for (int dz = 0; dz < 2; ++dz)
+        for (int dy = 0; dy < 2; ++dy) {
+            const glm::dvec3 a = lattice(ix, iy + dy, iz + dz);
+            const glm::dvec3 b = lattice(ix + 1, iy + dy, iz + dz);
+            c[dz][dy] = a + (b - a) * sx;
+        }
+    const glm::dvec3 y0 = c[0][0] + (c[0][1] - c[0][0]) * sy;
+    const glm::dvec3 y1 = c[1][0] + (c[1][1] - c[1][0]) * sy;
+    return y0 + (y1 - y0) * sz;
+}
+
+std::uint8_t toByte(double v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+// A card's own share of its variation; the rest follows the crown's patches. Patches are
+// what makes a crown read as lit branches and shaded ones; cards of their own alone read as
+// confetti (measured by eye on the gallery's oak, beech and maple: 0.4).
+constexpr double kOwnShare = 0.4;
+
+} // namespace
+
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+float linearToSrgb(float c) {
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+const LeafColorVariation& leafVariationFor(const LeafTintSettings& settings, Season season,
+                                           bool deciduous) {
+    return deciduous && season == Season::Autumn ? settings.autumn : settings.summer;
+}
+
+glm::vec3 leafReferenceColor(const LeafTintSettings& settings, Season season, bool deciduous) {
+    if (!deciduous) return kSummerGreen;
+    if (season == Season::Autumn) return settings.autumnColor;
+    return season == Season::Spring ? kSpringGreen : kSummerGreen;
+}
+
+namespace {
+
+// What a multiplier needs of its reference colour, worked out once for all cards.
+struct Reference {
+    glm::vec3 hsv;
+    double lin[3];
+    bool strong[3]; ///< carries a quarter of the strongest channel or more (see multiplier())
+};
+
+Reference reference(const glm::vec3& referenceSrgb) {
+    const glm::vec3 ref = glm::clamp(referenceSrgb, glm::vec3(0.02f), glm::vec3(1.0f));
+    Reference r;
+    r.hsv = rgbToHsv(ref);
+    double strongest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        r.lin[k] = srgbToLinear(ref[k]);
+        strongest = std::max(strongest, r.lin[k]);
+    }
+    for (int k = 0; k < 3; ++k)
+        r.strong[k] = r.lin[k] >= 0.25 * strongest;
+    return r;
+}
+
+glm::u8vec4 multiplier(const Reference& r, double hue, double saturation, double value) {
+    glm::vec3 hsv = r.hsv;
+    hsv.x += static_cast<float>(hue / 360.0);
+    hsv.y = std::clamp(hsv.y * static_cast<float>(1.0 + saturation), 0.0f, 1.0f);
+    hsv.z *= static_cast<float>(std::clamp(value, 0.0, 1.0));
+    const glm::vec3 turned = hsvToRgb(hsv);
+    double m[3];
+    for (int k = 0; k < 3; ++k)
+        m[k] = srgbToLinear(turned[k]) / r.lin[k];
+    // A multiplier cannot brighten: when a channel would have to grow (green turned toward
+    // yellow needs more red), the others shrink instead, so the hue turns as asked and the
+    // card is a little darker. Channels that carry under a quarter of the colour's strongest
+    // are left out of that (a leaf green's blue, an autumn orange's blue: their ratios swing
+    // wildly for no visible change), and every channel keeps a quarter at least, so as not to
+    // strip it from a texture's highlights.
+    double scale = 1.0;
+    for (int k = 0; k < 3; ++k)
+        if (r.strong[k]) scale = std::max(scale, m[k]);
+    glm::u8vec4 out(255);
+    for (int k = 0; k < 3; ++k)
+        out[k] = toByte(std::clamp(m[k] / scale, 0.25, 1.0));
+    return out;
+}
+
+} // namespace
+
+glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double saturation,
+                           double value) {
+    return multiplier(reference(referenceSrgb), hue, saturation, value);
+}
+
+void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation& variation,
+                   const glm::vec3& referenceSrgb, double patchSize, std::uint64_t seed) {
+    if (!variation.active()) return;
+    const std::size_t n = mesh.positions.size();
+    mesh.colors.resize(n, glm::u8vec4(255));
+    if (firstVertex >= n) return;
+    const std::uint64_t patchSeed = mixSeed(seed, 0x9a7c);
+    const Reference ref = reference(referenceSrgb);
+    const double invPatch = patchSize > 0.0 ? 1.0 / patchSize : 0.0;
+    for (std::size_t v = firstVertex; v < n; v += 4) {
+        const std::size_t end = std::min(n, v + 4);
+        glm::dvec3 centre(0.0);
+        for (std::size_t k = v; k < end; ++k)
+            centre += glm::dvec3(mesh.positions[k]);
+        centre /= static_cast<double>(end - v);
+        // The centre to a millimetre: two sheets of one crossed cluster card (the same centre
+        // line, their corners rounded differently) get one colour.
+        std::uint64_t h = seed;
+        for (int k = 0; k < 3; ++k)
+            h = mixSeed(h, static_cast<std::uint64_t>(std::llround(centre[k] * 1000.0)));
+        const glm::dvec3 patch =
+            invPatch > 0.0 ? valueNoise(centre * invPatch, patchSeed) : glm::dvec3(0.0);
+        double r[3];
+        for (int k = 0; k < 3; ++k) {
+            const double own = signedUnit(mixSeed(h, static_cast<std::uint64_t>(k)));
+            // Value noise keeps to about ±0.3 (std): doubled, the patches reach the range.
+            r[k] = invPatch > 0.0
+                       ? std::clamp(kOwnShare * own + (1.0 - kOwnShare) * 2.0 * patch[k], -1.0, 1.0)
+                       : own;
+        }
+        // Squared: most cards keep near the texture's brightness, a few are clearly darker
+        // (a crown a third as much darker on average as with a linear spread: one of the same
+        // look is b/3 darker, not b/2).
+        const double dark = 0.5 + 0.5 * r[2];
+        const glm::u8vec4 tint = multiplier(ref, variation.hue * r[0], variation.saturation * r[1],
+                                            1.0 - variation.brightness * dark * dark);
+        for (std::size_t k = v; k < end; ++k)
+            mesh.colors[k] = tint;
+    }
+}
+
+} // namespace sylva::mesh

@@ -1,0 +1,239 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "../common/testtrees.h"
+#include "engine/mesh/impostor.h"
+#include "engine/mesh/leafcards.h"
+#include "engine/mesh/leaftint.h"
+#include "engine/mesh/lod.h"
+
+using namespace sylva;
+using sylva::testing::leafyTree;
+
+namespace {
+
+const glm::vec3 kGreen{0.26f, 0.40f, 0.12f};
+
+mesh::TreeMeshSettings tinted(double hue, double saturation, double brightness) {
+    mesh::TreeMeshSettings settings;
+    settings.seed = 7;
+    settings.leafTint.summer = {hue, saturation, brightness};
+    settings.leafTint.autumn = {3 * hue, saturation, brightness};
+    return settings;
+}
+
+// The first vertex of the leaf submesh.
+std::size_t firstLeafVertex(const mesh::Mesh& m) {
+    for (const mesh::Submesh& s : m.submeshes)
+        if (s.material == "leaf") return m.indices[s.firstIndex];
+    return m.positions.size();
+}
+
+// The hue (degrees) of a leaf green multiplied by each card's tint, in linear light.
+std::vector<double> cardHues(const mesh::Mesh& m) {
+    std::vector<double> hues;
+    for (std::size_t v = firstLeafVertex(m); v + 3 < m.positions.size(); v += 4) {
+        glm::vec3 c;
+        for (int k = 0; k < 3; ++k)
+            c[k] = mesh::srgbToLinear(kGreen[k]) * m.colors[v][k] / 255.0f;
+        const float mx = std::max({c.x, c.y, c.z}), mn = std::min({c.x, c.y, c.z});
+        double h = 0.0;
+        if (mx == c.y)
+            h = 60.0 * (2.0 + (c.z - c.x) / (mx - mn));
+        else if (mx == c.x)
+            h = 60.0 * (c.y - c.z) / (mx - mn);
+        else
+            h = 60.0 * (4.0 + (c.x - c.y) / (mx - mn));
+        hues.push_back(h);
+    }
+    return hues;
+}
+
+double stddev(const std::vector<double>& v) {
+    double mean = 0.0, sq = 0.0;
+    for (double x : v)
+        mean += x;
+    mean /= static_cast<double>(v.size());
+    for (double x : v)
+        sq += (x - mean) * (x - mean);
+    return std::sqrt(sq / static_cast<double>(v.size()));
+}
+
+} // namespace
+
+TEST(LeafTint, NoChangeIsWhiteAndAMultiplierNeverBrightens) {
+    EXPECT_EQ(mesh::tintMultiplier(kGreen, 0.0, 0.0, 1.0), glm::u8vec4(255));
+    // Darker by a fifth of its HSV value: every channel alike, about 0.8^2.3 in linear light.
+    const glm::u8vec4 dark = mesh::tintMultiplier(kGreen, 0.0, 0.0, 0.8);
+    EXPECT_NEAR(dark.x, dark.y, 8);
+    EXPECT_NEAR(dark.y / 255.0, std::pow(0.8, 2.3), 0.03);
+    // Toward yellow (hue down from green), green keeps red (it would have to grow) and loses
+    // blue; toward blue (hue up), the other way round.
+    const glm::u8vec4 yellow = mesh::tintMultiplier(kGreen, -20.0, 0.0, 1.0);
+    EXPECT_EQ(yellow.x, 255);
+    EXPECT_LT(yellow.y, 200);
+    EXPECT_LT(yellow.z, 200);
+    const glm::u8vec4 blue = mesh::tintMultiplier(kGreen, 20.0, 0.0, 1.0);
+    EXPECT_LT(blue.x, 200);
+    EXPECT_EQ(blue.z, 255);
+    // More saturated: the weakest channel goes down; never below a quarter.
+    const glm::u8vec4 vivid = mesh::tintMultiplier(kGreen, 0.0, 0.5, 1.0);
+    EXPECT_LT(vivid.z, 200);
+    EXPECT_GE(mesh::tintMultiplier(kGreen, 90.0, 1.0, 0.0).z, 63);
+}
+
+TEST(LeafTint, EachCardOneColourBarkWhiteDeterministic) {
+    const skel::Skeleton s = leafyTree();
+    const mesh::Mesh a = mesh::buildTreeMesh(s, tinted(10.0, 0.2, 0.2));
+    const mesh::Mesh b = mesh::buildTreeMesh(s, tinted(10.0, 0.2, 0.2));
+    ASSERT_EQ(a.colors.size(), a.positions.size());
+    EXPECT_EQ(a.colors, b.colors);
+    const std::size_t leaf = firstLeafVertex(a);
+    ASSERT_LT(leaf, a.positions.size());
+    for (std::size_t v = 0; v < leaf; ++v)
+        ASSERT_EQ(a.colors[v], glm::u8vec4(255)) << "bark vertex " << v;
+    std::set<std::uint32_t> distinct;
+    for (std::size_t v = leaf; v < a.positions.size(); v += 4) {
+        for (std::size_t k = 1; k < 4; ++k)
+            ASSERT_EQ(a.colors[v + k], a.colors[v]) << "card at " << v;
+        const glm::u8vec4 c = a.colors[v];
+        distinct.insert(c.x | c.y << 8 | c.z << 16);
+    }
+    const std::size_t cards = (a.positions.size() - leaf) / 4;
+    EXPECT_GT(distinct.size(), cards / 4) << "cards differ";
+    // Another tree seed: other colours.
+    mesh::TreeMeshSettings other = tinted(10.0, 0.2, 0.2);
+    other.seed = 8;
+    EXPECT_NE(mesh::buildTreeMesh(s, other).colors, a.colors);
+}
+
+TEST(LeafTint, VariationStaysInItsRangeAndZeroMeansNone) {
+    const skel::Skeleton s = leafyTree();
+    EXPECT_TRUE(mesh::buildTreeMesh(s, tinted(0.0, 0.0, 0.0)).colors.empty());
+    // Brightness alone: every channel between the darkest card's and white.
+    const mesh::Mesh m = mesh::buildTreeMesh(s, tinted(0.0, 0.0, 0.3));
+    const glm::u8vec4 darkest = mesh::tintMultiplier(kGreen, 0.0, 0.0, 0.7);
+    double lo = 255.0, hi = 0.0;
+    for (std::size_t v = firstLeafVertex(m); v < m.positions.size(); ++v)
+        for (int k = 0; k < 3; ++k) {
+            ASSERT_GE(m.colors[v][k] + 1, darkest[k]);
+            lo = std::min<double>(lo, m.colors[v][k]);
+            hi = std::max<double>(hi, m.colors[v][k]);
+        }
+    EXPECT_GT(hi - lo, 0.5 * (255 - darkest.y)) << "the range is used";
+    // Hue: the cards' hues spread with the setting, and not at all without it.
+    const double spread = stddev(cardHues(mesh::buildTreeMesh(s, tinted(12.0, 0.0, 0.0))));
+    EXPECT_GT(spread, 2.0);
+    EXPECT_LT(spread, 12.0);
+    EXPECT_LT(stddev(cardHues(mesh::buildTreeMesh(s, tinted(0.0, 0.0, 0.2)))), 0.5);
+}
+
+TEST(LeafTint, AutumnHasItsOwnSpreadEvergreensKeepSummers) {
+    const skel::Skeleton s = leafyTree();
+    mesh::TreeMeshSettings autumn = tinted(8.0, 0.0, 0.0);
+    autumn.season = mesh::Season::Autumn;
+    autumn.deciduous = true;
+    autumn.leafTint.autumnColor = {0.92f, 0.52f, 0.08f};
+    EXPECT_EQ(&mesh::leafVariationFor(autumn.leafTint, autumn.season, true),
+              &autumn.leafTint.autumn);
+    EXPECT_EQ(&mesh::leafVariationFor(autumn.leafTint, autumn.season, false),
+              &autumn.leafTint.summer);
+    EXPECT_EQ(mesh::leafReferenceColor(autumn.leafTint, autumn.season, true),
+              autumn.leafTint.autumnColor);
+    const mesh::Mesh m = mesh::buildTreeMesh(s, autumn);
+    ASSERT_EQ(m.colors.size(), m.positions.size());
+    // Only the autumn spread set: no variation in summer.
+    autumn.leafTint.summer = {};
+    autumn.season = mesh::Season::Summer;
+    EXPECT_TRUE(mesh::buildTreeMesh(s, autumn).colors.empty());
+}
+
+TEST(LeafTint, CarriedThroughLodLevelsAndClusters) {
+    const skel::Skeleton s = leafyTree();
+    mesh::TreeMeshSettings settings = tinted(10.0, 0.2, 0.2);
+    settings.leafClusterSize = 4;
+    const std::vector<mesh::LodChainLevel> chain = mesh::buildLodChain(s, settings);
+    ASSERT_GE(chain.size(), 2u);
+    for (const mesh::LodChainLevel& level : chain) {
+        ASSERT_EQ(level.mesh.colors.size(), level.mesh.positions.size())
+            << "level at " << level.distance << " m";
+        std::set<std::uint32_t> distinct;
+        for (std::size_t v = firstLeafVertex(level.mesh); v < level.mesh.positions.size(); ++v) {
+            const glm::u8vec4 c = level.mesh.colors[v];
+            distinct.insert(c.x | c.y << 8 | c.z << 16);
+        }
+        EXPECT_GT(distinct.size(), 3u) << "level at " << level.distance << " m";
+    }
+    // A leaf card of the same place keeps its colour from level to level: at 25 m (no leaf
+    // merged by the default bands' thresholds at this size) most cards are where they were.
+    const mesh::Mesh& near = chain[0].mesh;
+    const mesh::Mesh& far = chain[1].mesh;
+    auto centre = [](const mesh::Mesh& m, std::size_t v) {
+        return (m.positions[v] + m.positions[v + 1] + m.positions[v + 2] + m.positions[v + 3]) /
+               4.0f;
+    };
+    std::size_t same = 0, matched = 0;
+    for (std::size_t v = firstLeafVertex(far); v + 3 < far.positions.size(); v += 4)
+        for (std::size_t w = firstLeafVertex(near); w + 3 < near.positions.size(); w += 4)
+            if (centre(far, v) == centre(near, w)) {
+                ++matched;
+                same += far.colors[v] == near.colors[w];
+                break;
+            }
+    EXPECT_EQ(same, matched);
+}
+
+TEST(LeafTint, ImpostorBakeShowsTheTint) {
+    // One card facing the view, plain white material: the baked colour is the tint's.
+    mesh::Mesh card;
+    card.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    card.normals.assign(4, glm::vec3(0, 0, 1));
+    card.indices = {0, 1, 2, 0, 2, 3};
+    card.submeshes = {{"leaf", 0, 6}};
+    const mesh::ImpostorMaterials white = [](const mesh::Submesh&) {
+        mesh::ImpostorMaterial m;
+        m.colour = glm::vec3(1.0f);
+        return m;
+    };
+    const Image plain =
+        mesh::renderOrthographicView(card, white, {0, 0, -1}, glm::vec3(0.0f), 1.5f, 16, 1);
+    card.colors.assign(4, glm::u8vec4(255, 64, 64, 255));
+    const Image tinted =
+        mesh::renderOrthographicView(card, white, {0, 0, -1}, glm::vec3(0.0f), 1.5f, 16, 1);
+    EXPECT_EQ(plain.at(8, 8)[0], 255);
+    EXPECT_EQ(plain.at(8, 8)[1], 255);
+    EXPECT_EQ(tinted.at(8, 8)[0], 255);
+    // 64/255 linear is about 0.53 in sRGB.
+    EXPECT_NEAR(tinted.at(8, 8)[1], 0.53 * 255, 6);
+}
+
+TEST(LeafTint, CrossedSheetsOfOneCardShareTheirColour) {
+    // A cluster card and its crossing sheet (the same centre line turned a quarter round it,
+    // as leafclusters makes crossed cards) take one colour; a card beside them another.
+    mesh::Mesh m;
+    const glm::vec3 lo(0.31f, 2.17f, -0.43f), hi(0.36f, 2.49f, -0.41f);
+    const glm::vec3 a(0.07f, 0.0f, 0.013f), b(0.0f, 0.011f, 0.071f);
+    for (const glm::vec3& half : {a, b})
+        for (const glm::vec3& p : {lo + half, lo - half, hi - half, hi + half})
+            m.positions.push_back(p);
+    for (const glm::vec3& p : {lo, lo + a, hi + a, hi})
+        m.positions.push_back(p + glm::vec3(0.5f, 0.0f, 0.0f));
+    mesh::tintLeafCards(m, 0, {8.0, 0.2, 0.2}, kGreen, 1.5, 3);
+    ASSERT_EQ(m.colors.size(), 12u);
+    EXPECT_EQ(m.colors[0], m.colors[4]);
+    EXPECT_NE(m.colors[0], m.colors[8]);
+}
+
+TEST(LeafTint, CardsAddedLaterKeepTheColoursInStep) {
+    // Mesh::colors stays empty or of the positions' size: cards appended to a tinted mesh (the
+    // leaves node after tube_mesh) are white until tinted.
+    const skel::Skeleton s = leafyTree();
+    mesh::Mesh m = mesh::buildTreeMesh(s, tinted(10.0, 0.2, 0.2));
+    const std::size_t before = m.positions.size();
+    mesh::appendLeafCards(m, s.leaves, {});
+    ASSERT_EQ(m.colors.size(), m.positions.size());
+    EXPECT_EQ(m.colors.back(), glm::u8vec4(255));
+    EXPECT_NE(m.colors[before - 1], glm::u8vec4(255));
+}
