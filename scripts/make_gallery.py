@@ -136,8 +136,9 @@ def tint_copy(species, season, tinted, folder):
         doc = json.load(f)
     for node in doc["graph"]["nodes"]:
         if node["type"] == "tube_mesh" and not tinted:
-            node["params"]["leaf_color_variation"] = [0, 0, 0]
-            node["params"]["leaf_autumn_color_variation"] = [0, 0, 0]
+            for key in list(node["params"]):
+                if key.endswith("_variation"):
+                    node["params"][key] = 0
     out = os.path.join(folder, "%s-%s-%s.json" % (species, season, "on" if tinted else "off"))
     with open(out, "w") as f:
         json.dump(doc, f)

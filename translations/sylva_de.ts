@@ -592,6 +592,13 @@
         <source>Exported the LOD chain of %1 (%2 levels and the impostor) to %3</source>
         <translation>LOD-Kette von %1 (%2 Stufen und der Impostor) nach %3 exportiert</translation>
     </message>
+    <message numerus="yes">
+        <source>; %n budget(s) left out: the tree has too few triangles for them</source>
+        <translation>
+            <numerusform>; %n Budget ausgelassen: der Baum hat zu wenige Dreiecke dafür</numerusform>
+            <numerusform>; %n Budgets ausgelassen: der Baum hat zu wenige Dreiecke dafür</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MainWindow</name>

@@ -592,6 +592,13 @@
         <source>Exported the LOD chain of %1 (%2 levels and the impostor) to %3</source>
         <translation>Chaîne de LOD de %1 (%2 niveaux et l’imposteur) exportée vers %3</translation>
     </message>
+    <message numerus="yes">
+        <source>; %n budget(s) left out: the tree has too few triangles for them</source>
+        <translation>
+            <numerusform>; %n budget omis : l’arbre a trop peu de triangles pour lui</numerusform>
+            <numerusform>; %n budgets omis : l’arbre a trop peu de triangles pour eux</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::MainWindow</name>

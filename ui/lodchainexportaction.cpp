@@ -129,10 +129,16 @@ bool LodChainExportAction::exportTo(const QString& dir) {
         return false;
     }
     mFiles = std::move(files);
-    Q_EMIT finished(true, tr("Exported the LOD chain of %1 (%2 levels and the impostor) to %3")
-                              .arg(QString::fromStdString(source->name))
-                              .arg(mFiles.levels.size())
-                              .arg(QDir::toNativeSeparators(dir)));
+    QString message = tr("Exported the LOD chain of %1 (%2 levels and the impostor) to %3")
+                          .arg(QString::fromStdString(source->name))
+                          .arg(mFiles.levels.size())
+                          .arg(QDir::toNativeSeparators(dir));
+    // A tree of a few hundred triangles cannot reach the smallest budgets: say why the chain is
+    // shorter (the description lists them under dropped_levels).
+    if (!mFiles.dropped.empty())
+        message += tr("; %n budget(s) left out: the tree has too few triangles for them", "",
+                      static_cast<int>(mFiles.dropped.size()));
+    Q_EMIT finished(true, message);
     return true;
 }
 

@@ -51,7 +51,7 @@ std::string speciesFileStem(const std::string& path) {
 int runLods(const std::vector<std::string>& argv) {
     const Args args(argv,
                     {"-o", "--output", "--seed", "--budgets", "--impostor-grid", "--impostor-cell",
-                     "--impostor-pixels"},
+                     "--impostor-pixels", "--min-silhouette"},
                     {"--json", "--no-glb", "--no-obj", "--no-fbx", "--no-usd", "--no-impostor",
                      "--octahedral"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("lods"));
@@ -67,6 +67,15 @@ int runLods(const std::vector<std::string>& argv) {
         chainSettings.impostorSettings.cellPixels = static_cast<int>(*c);
     if (const auto p = args.integer("--impostor-pixels", 1, 4096))
         chainSettings.impostorPixels = static_cast<double>(*p);
+    if (const auto m = args.value("--min-silhouette")) {
+        char* end = nullptr;
+        const double v = std::strtod(m->c_str(), &end);
+        if (m->empty() || !end || *end != '\0' || !(v >= 0.0 && v <= 1.0))
+            throw InvalidInput("--min-silhouette: '" + *m +
+                               "' is not a number from 0 to 1 (the IoU each level keeps; 0: "
+                               "no check)");
+        chainSettings.minSilhouetteIoU = v;
+    }
     chainSettings.impostorSettings.hemisphere = !args.flag("--octahedral");
     chainSettings.impostor = !args.flag("--no-impostor");
     mesh::validateLodChain(chainSettings);
@@ -93,12 +102,15 @@ int runLods(const std::vector<std::string>& argv) {
     if (args.flag("--json")) {
         std::fwrite(files.description.data(), 1, files.description.size(), stdout);
     } else {
-        std::printf("%-32s %8s %14s %12s %12s %12s\n", "level", "budget", "from (m)", "screen size",
-                    "triangles", "vertices");
+        std::printf("%-32s %8s %14s %12s %12s %12s %10s\n", "level", "budget", "from (m)",
+                    "screen size", "triangles", "vertices", "silhouette");
         for (const exporter::GameLodLevel& l : files.levels)
-            std::printf("%-32s %7.0f%% %14.1f %12.3f %12zu %12zu%s\n", l.name.c_str(),
+            std::printf("%-32s %7.0f%% %14.1f %12.3f %12zu %12zu %10.3f%s\n", l.name.c_str(),
                         l.budget * 100.0, l.distance, l.screenSize, l.triangles, l.vertices,
-                        l.budgetMet ? "" : "  (over budget: the coarsest the LOD makes)");
+                        l.silhouetteIoU, l.budgetMet ? "" : "  (over budget)");
+        for (const mesh::DroppedLevel& d : files.dropped)
+            std::printf("%-32s %7.0f%%  dropped: %s\n", "(no level)", d.budget * 100.0,
+                        d.reason.c_str());
         if (files.impostor)
             std::printf("%-32s %8s %14.1f %12.3f %12d %12d\n",
                         (speciesFileStem(args.positional()[0]) + "_impostor").c_str(), "",

@@ -118,6 +118,7 @@ constexpr CommandHelp kHelp[] = {
      "usage: sylva-cli lods <species.json|grammar> -o <folder> [--seed S] [--json]\n"
      "                      [--budgets 1,0.35,0.12,0.04] [--impostor-grid N]\n"
      "                      [--impostor-cell PX] [--impostor-pixels PX] [--octahedral]\n"
+     "                      [--min-silhouette IOU]\n"
      "                      [--no-impostor] [--no-glb] [--no-fbx] [--no-usd] [--no-obj]\n"
      "\n"
      "Writes a species' LOD chain for game engines (docs/lods.md): LOD0..LODn by triangle\n"
@@ -138,6 +139,9 @@ constexpr CommandHelp kHelp[] = {
      "  --impostor-pixels PX  the impostor takes over where the tree spans PX pixels of a\n"
      "                        1080-pixel view (default 64)\n"
      "  --octahedral          views of the whole sphere instead of the upper hemisphere\n"
+     "  --min-silhouette IOU  the silhouette IoU each level keeps against LOD0 at its switch\n"
+     "                        distance, else it is remade with other leaf clusters; 0: no\n"
+     "                        check (default 0.9)\n"
      "  --no-impostor         mesh levels only\n"
      "  --no-glb, --no-fbx, --no-usd, --no-obj   skip that file kind\n"
      "  -h, --help            show this text\n"},

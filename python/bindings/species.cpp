@@ -170,7 +170,7 @@ void bindSpecies(py::module_& m) {
             },
             "per-vertex RGBA multipliers of the material colour (uint8, linear, 255 = 1: the "
             "leaf cards' tint, white on bark); empty (0 x 4) when the species sets no "
-            "leaf_color_variation")
+            "leaf_*_variation)")
         .def_property_readonly("indices",
                                [](const MeshRef& r) {
                                    return makeArray(r.mesh->indices.data(),

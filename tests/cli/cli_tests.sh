@@ -410,6 +410,37 @@ lods_chain)
     # siblings right under the root (Unity builds its LOD Group from _LOD<i> children of one parent)
     for i in 0 1 2 3; do grep -Eq "^(├╴|└╴)bush_LOD$i \(mesh" info.txt || fail "FBX lacks bush_LOD$i under the root: $(tail info.txt)"; done
   fi ;;
+lods_dropped_levels)
+  # The date palm has 456 triangles: its 12 % and 4 % budgets (54 and 18) are under the coarsest
+  # mesh the camera LOD makes before the palm is 4 px high. They are dropped and reported (not
+  # written as over-budget copies of LOD1), and the impostor follows LOD1.
+  run_cli 0 lods "$DATA/../../presets/date-palm.json" -o palm --json --no-obj --no-fbx --no-usd \
+    --impostor-cell 16
+  python3 - <<'PY' || fail "$(cat out.txt)"
+import json
+d = json.load(open("out.txt"))
+names = [l["name"] for l in d["levels"]]
+assert names == ["date-palm_LOD0", "date-palm_LOD1"], names
+assert [x["budget"] for x in d["dropped_levels"]] == [0.12, 0.04], d["dropped_levels"]
+for x in d["dropped_levels"]:
+    assert x["coarsest_triangles"] > x["budget_triangles"], x
+    assert "4 px" in x["reason"], x
+for l in d["levels"]:
+    assert l["budget_met"] and l["triangles"] <= l["budget"] * d["levels"][0]["triangles"], l
+    assert l["silhouette_iou"] >= 0.9, l
+assert d["impostor"]["switch_distance_m"] >= 1.5 * d["levels"][1]["switch_distance_m"] - 1e-6
+PY
+  run_cli 0 lods "$DATA/../../presets/date-palm.json" -o table --no-obj --no-fbx --no-usd \
+    --no-glb --impostor-cell 16
+  [[ $(grep -c "dropped: budget below the coarsest mesh" out.txt) == 2 ]] || fail "$(cat out.txt)"
+  # --min-silhouette: 0 checks nothing (every level with the default 0.5-px clusters), out of
+  # range is an error naming the range
+  run_cli 0 lods "$DATA/lsystem/bush.lsys" -o nocheck --json --no-obj --no-fbx --no-usd --no-glb \
+    --impostor-cell 16 --min-silhouette 0
+  [[ $(grep -c '"leaf_cluster_px": 0.5' out.txt) == 3 ]] || fail "$(cat out.txt)"
+  run_cli 1 lods "$DATA/lsystem/bush.lsys" -o bad --min-silhouette 1.5
+  grep -q "from 0 to 1" err.txt || fail "$(cat err.txt)"
+  ;;
 lods_fbx_blender)
   # Blender imports the FBX chain's levels with the triangles (as polygons) the JSON reports.
   command -v blender >/dev/null || { echo "SKIP: blender not installed"; exit 77; }

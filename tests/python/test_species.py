@@ -51,7 +51,7 @@ def test_leaves_are_their_own_material(presets):
 
 
 def test_leaf_tints_are_per_vertex_colours(presets):
-    # A library species sets leaf_color_variation: each leaf card one linear RGBA multiplier,
+    # A library species sets leaf_hue_variation and the others: each leaf card one linear RGBA multiplier,
     # white on bark; a species without it has no colours.
     tree = sylva.load_species(presets / "english-oak.json").grow(seed=1)
     mesh = tree.mesh

@@ -112,6 +112,23 @@ private Q_SLOTS:
         QCOMPARE(action->lastFiles().levels.size(), std::size_t(4));
     }
 
+    // The date palm (456 triangles) cannot reach the 12 % and 4 % budgets: the chain is LOD0,
+    // LOD1 and the impostor, and the status message says why it is shorter.
+    void saysWhichBudgetsWereLeftOut() {
+        QVERIFY(open(QDir(qEnvironmentVariable("SYLVA_PRESETS_DIR"))
+                         .filePath(QStringLiteral("date-palm.json"))));
+        LodChainExportAction* action = mWindow->lodChainExport();
+        QSignalSpy finished(action, &LodChainExportAction::finished);
+        QVERIFY(action->exportTo(mDir.filePath(QStringLiteral("palm"))));
+        QCOMPARE(finished.count(), 1);
+        const QString message = finished.first().at(1).toString();
+        QVERIFY2(message.contains(QStringLiteral("(2 levels and the impostor)")) &&
+                     message.contains(QStringLiteral("2 budget(s) left out")),
+                 qPrintable(message));
+        QCOMPARE(action->lastFiles().levels.size(), std::size_t(2));
+        QCOMPARE(action->lastFiles().dropped.size(), std::size_t(2));
+    }
+
     // Cancel in the progress dialog: the export stops and leaves no file in the folder (the
     // english oak: its chain takes seconds, the click comes as soon as the dialog shows).
     void cancellingLeavesNothing() {

@@ -57,11 +57,14 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
         level.distance = l.distance;
         level.screenSize = l.screenSize;
         level.budgetMet = l.budgetMet;
+        level.silhouetteIoU = l.silhouetteIoU;
+        level.leafClusterPixels = l.leafClusterPixels;
         level.triangles = l.mesh.triangleCount();
         level.vertices = l.mesh.vertexCount();
         if (options.obj) level.obj = dir / (level.name + ".obj");
         files.levels.push_back(level);
     }
+    files.dropped = chain.dropped;
 
     // The impostor's maps first: the glTF embeds the same bytes.
     std::string colorPng, normalPng, depthPng;
@@ -243,11 +246,22 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
                   {"budget", l.budget},
                   {"budget_met", l.budgetMet},
                   {"switch_distance_m", l.distance},
-                  {"screen_size", l.screenSize}};
+                  {"screen_size", l.screenSize},
+                  {"silhouette_iou", gltf::tidy(static_cast<float>(l.silhouetteIoU))},
+                  {"leaf_cluster_px", l.leafClusterPixels}};
         if (!l.obj.empty()) j["obj"] = l.obj.filename().string();
         levels.push_back(j);
     }
     doc["levels"] = levels;
+    // Budgets the chain left out (a tree of a few hundred triangles): a pipeline sees why its
+    // LOD3 is missing instead of a level that silently breaks its budget.
+    Json dropped = Json::array();
+    for (const mesh::DroppedLevel& d : chain.dropped)
+        dropped.push_back({{"budget", d.budget},
+                           {"budget_triangles", d.budgetTriangles},
+                           {"coarsest_triangles", d.coarsestTriangles},
+                           {"reason", d.reason}});
+    doc["dropped_levels"] = dropped;
     if (chain.impostor) {
         const mesh::Impostor& imp = *chain.impostor;
         doc["impostor"] = {

@@ -25,12 +25,15 @@ struct GameLodLevel {
     std::string name; ///< "<species>_LOD<i>" (node, object and file name)
     double budget = 1.0, distance = 0.0, screenSize = 1.0;
     bool budgetMet = true;
+    double silhouetteIoU = 1.0;     ///< against LOD0 at its switch distance (mesh::silhouetteIoU)
+    double leafClusterPixels = 0.0; ///< the leaf clusters it was made with (0 for LOD0)
     std::size_t triangles = 0, vertices = 0;
     std::filesystem::path obj;
 };
 
 struct GameLodFiles {
     std::vector<GameLodLevel> levels;
+    std::vector<mesh::DroppedLevel> dropped; ///< budgets left out (mesh::BudgetLodChain::dropped)
     std::filesystem::path glb, fbx, usd, mtl, json;
     std::filesystem::path impostorColor, impostorNormal, impostorDepth; ///< empty: no impostor
     bool impostor = false;

@@ -109,8 +109,10 @@ Impostor bakeImpostor(const Mesh& mesh, const ImpostorMaterials& materials,
 /// RGBA, blending the three atlas views around the direction (barycentric weights over the
 /// grid's triangle); each view is met by the viewer's ray through the pixel, marched against the
 /// depth that view stored (relief mapping: the first point where the ray passes behind the
-/// stored surface, by at most a fifth of the radius, where the view has coverage), and sampled
-/// bilinearly there; a view the ray does not meet adds nothing.
+/// stored surface, by at most 0.05 of the radius or one march step, where the view has
+/// coverage), and sampled bilinearly there; a view the ray does not meet adds nothing, and one
+/// whose ray passed behind its own stored surface abstains (the coverage is the others').
+/// Alpha = coverage, colour unpremultiplied.
 Image renderImpostor(const Impostor& impostor, const glm::vec3& direction, int pixels);
 
 } // namespace sylva::mesh

@@ -116,20 +116,38 @@ glm::vec3 leafReferenceColor(const LeafTintSettings& settings, Season season, bo
     return season == Season::Spring ? kSpringGreen : kSummerGreen;
 }
 
-glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double saturation,
-                           double value) {
+namespace {
+
+// What a multiplier needs of its reference colour, worked out once for all cards.
+struct Reference {
+    glm::vec3 hsv;
+    double lin[3];
+    bool strong[3]; ///< carries a quarter of the strongest channel or more (see multiplier())
+};
+
+Reference reference(const glm::vec3& referenceSrgb) {
     const glm::vec3 ref = glm::clamp(referenceSrgb, glm::vec3(0.02f), glm::vec3(1.0f));
-    glm::vec3 hsv = rgbToHsv(ref);
+    Reference r;
+    r.hsv = rgbToHsv(ref);
+    double strongest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        r.lin[k] = srgbToLinear(ref[k]);
+        strongest = std::max(strongest, r.lin[k]);
+    }
+    for (int k = 0; k < 3; ++k)
+        r.strong[k] = r.lin[k] >= 0.25 * strongest;
+    return r;
+}
+
+glm::u8vec4 multiplier(const Reference& r, double hue, double saturation, double value) {
+    glm::vec3 hsv = r.hsv;
     hsv.x += static_cast<float>(hue / 360.0);
     hsv.y = std::clamp(hsv.y * static_cast<float>(1.0 + saturation), 0.0f, 1.0f);
     hsv.z *= static_cast<float>(std::clamp(value, 0.0, 1.0));
     const glm::vec3 turned = hsvToRgb(hsv);
-    double m[3], lin[3], strongest = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        lin[k] = srgbToLinear(ref[k]);
-        strongest = std::max(strongest, lin[k]);
-        m[k] = srgbToLinear(turned[k]) / lin[k];
-    }
+    double m[3];
+    for (int k = 0; k < 3; ++k)
+        m[k] = srgbToLinear(turned[k]) / r.lin[k];
     // A multiplier cannot brighten: when a channel would have to grow (green turned toward
     // yellow needs more red), the others shrink instead, so the hue turns as asked and the
     // card is a little darker. Channels that carry under a quarter of the colour's strongest
@@ -138,11 +156,18 @@ glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double sa
     // strip it from a texture's highlights.
     double scale = 1.0;
     for (int k = 0; k < 3; ++k)
-        if (lin[k] >= 0.25 * strongest) scale = std::max(scale, m[k]);
+        if (r.strong[k]) scale = std::max(scale, m[k]);
     glm::u8vec4 out(255);
     for (int k = 0; k < 3; ++k)
         out[k] = toByte(std::clamp(m[k] / scale, 0.25, 1.0));
     return out;
+}
+
+} // namespace
+
+glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double saturation,
+                           double value) {
+    return multiplier(reference(referenceSrgb), hue, saturation, value);
 }
 
 void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation& variation,
@@ -152,6 +177,7 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
     mesh.colors.resize(n, glm::u8vec4(255));
     if (firstVertex >= n) return;
     const std::uint64_t patchSeed = mixSeed(seed, 0x9a7c);
+    const Reference ref = reference(referenceSrgb);
     const double invPatch = patchSize > 0.0 ? 1.0 / patchSize : 0.0;
     for (std::size_t v = firstVertex; v < n; v += 4) {
         const std::size_t end = std::min(n, v + 4);
@@ -178,9 +204,8 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
         // (a crown a third as much darker on average as with a linear spread: one of the same
         // look is b/3 darker, not b/2).
         const double dark = 0.5 + 0.5 * r[2];
-        const glm::u8vec4 tint =
-            tintMultiplier(referenceSrgb, variation.hue * r[0], variation.saturation * r[1],
-                           1.0 - variation.brightness * dark * dark);
+        const glm::u8vec4 tint = multiplier(ref, variation.hue * r[0], variation.saturation * r[1],
+                                            1.0 - variation.brightness * dark * dark);
         for (std::size_t k = v; k < end; ++k)
             mesh.colors[k] = tint;
     }

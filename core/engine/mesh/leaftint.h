@@ -21,14 +21,15 @@ struct LeafColorVariation {
     bool active() const { return hue > 0.0 || saturation > 0.0 || brightness > 0.0; }
 };
 
-/// A species' leaf colour variation (tube_mesh's `leaf_color_variation`,
-/// `leaf_autumn_color_variation`, `leaf_color_patch`, `autumn_color`).
+/// A species' leaf colour variation (tube_mesh's `leaf_hue_variation`,
+/// `leaf_saturation_variation`, `leaf_brightness_variation`, their `leaf_autumn_*` twins,
+/// `leaf_color_patch`, `autumn_color`).
 struct LeafTintSettings {
     LeafColorVariation summer; ///< spring and summer, and an evergreen all year
     LeafColorVariation autumn; ///< a deciduous species in autumn
-    /// Metres: half of a card's variation follows a smooth noise of about this size over the
-    /// crown (a branch's leaves alike, its neighbour's a little different), half is its own;
-    /// 0: every card on its own. [0, 1000].
+    /// Metres: most of a card's variation (60 %) follows a smooth noise of about this size over
+    /// the crown (a branch's leaves alike, its neighbour's a little different), the rest is its
+    /// own; 0: every card on its own. [0, 1000].
     double patchSize = 1.5;
     glm::vec3 autumnColor{0.6f, 0.4f, 0.1f}; ///< sRGB 0..1: the colour autumn's hue turns around
 };
@@ -54,8 +55,8 @@ glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double sa
 /// them) from \p firstVertex to the end of \p mesh their Mesh::colors: each card one colour,
 /// from a random of \p seed and the card's centre to a millimetre (the two sheets of a crossed
 /// card share it; the same card, the same colour, whatever
-/// the thread count or the order cards are made in) mixed half and half with a smooth noise
-/// over the crown (LeafTintSettings::patchSize). Vertices before \p firstVertex get white when
+/// the thread count or the order cards are made in) mixed 40 : 60 with a smooth noise over the
+/// crown (LeafTintSettings::patchSize). Vertices before \p firstVertex get white when
 /// the mesh had no colours. Does nothing when \p variation is not active.
 void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation& variation,
                    const glm::vec3& referenceSrgb, double patchSize, std::uint64_t seed);

@@ -1,5 +1,6 @@
 #include "engine/mesh/lodchain.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -20,6 +21,7 @@ void validateLodChain(const LodChainSettings& s) {
     requireRange("LOD budget tolerance", s.tolerance, 0.0, 0.9);
     requireRange("impostor pixels", s.impostorPixels, 1.0, 4096.0);
     requireRange("LOD leaf cluster pixels", s.leafClusterPixels, 0.25, 8.0);
+    requireRange("LOD minimum silhouette IoU", s.minSilhouetteIoU, 0.0, 1.0);
     validateImpostor(s.impostorSettings);
 }
 
@@ -75,6 +77,84 @@ std::size_t levelFor(const std::vector<DistanceLevel>& levels, double distance) 
     return k;
 }
 
+double silhouetteIoU(const Mesh& reference, const Mesh& level, const glm::vec3& centre,
+                     float radius, const LodSettings& lod, double distance, int views) {
+    const double halfFov = lod.fovYDegrees * std::numbers::pi / 360.0;
+    const double metresPerPixel =
+        2.0 * std::max(distance, 1e-6) * std::tan(halfFov) / lod.screenHeightPx;
+    // A square around the bounding sphere, the centre on a pixel corner (as a camera aimed at it
+    // puts it); a pixel counts when any triangle overlaps it at all (conservative rasterisation:
+    // a twig thinner than a pixel still shows in an antialiased frame).
+    const int pixels =
+        2 * (static_cast<int>(std::ceil(static_cast<double>(radius) / metresPerPixel)) + 1);
+    if (pixels > 2000) return 1.0; // too near to matter: no chain level switches that near
+    const double scale = 1.0 / metresPerPixel;
+    std::vector<std::uint8_t> a(static_cast<std::size_t>(pixels) * pixels),
+        b(static_cast<std::size_t>(pixels) * pixels);
+    const auto mask = [&](const Mesh& mesh, const glm::vec3& right, const glm::vec3& up,
+                          std::vector<std::uint8_t>& covered) {
+        std::fill(covered.begin(), covered.end(), 0);
+        std::vector<glm::dvec2> screen(mesh.positions.size());
+        for (std::size_t i = 0; i < screen.size(); ++i) {
+            const glm::vec3 d = mesh.positions[i] - centre;
+            screen[i] = {glm::dot(d, right) * scale + 0.5 * pixels,
+                         0.5 * pixels - glm::dot(d, up) * scale};
+        }
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const glm::dvec2 v[3] = {screen[mesh.indices[t]], screen[mesh.indices[t + 1]],
+                                     screen[mesh.indices[t + 2]]};
+            const double area =
+                (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+            const double sign = area >= 0.0 ? 1.0 : -1.0;
+            const int x0 =
+                std::max(0, static_cast<int>(std::floor(std::min({v[0].x, v[1].x, v[2].x}))));
+            const int x1 = std::min(
+                pixels - 1, static_cast<int>(std::floor(std::max({v[0].x, v[1].x, v[2].x}))));
+            const int y0 =
+                std::max(0, static_cast<int>(std::floor(std::min({v[0].y, v[1].y, v[2].y}))));
+            const int y1 = std::min(
+                pixels - 1, static_cast<int>(std::floor(std::max({v[0].y, v[1].y, v[2].y}))));
+            // Each edge's half-plane pushed out by half a pixel along its normal's L1 extent:
+            // the pixel square overlaps it. Within the bounding box this is the usual
+            // overestimating conservative rasteriser.
+            double ex[3], ey[3], e0[3];
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec2 p = v[k], q = v[(k + 1) % 3];
+                ex[k] = -sign * (q.y - p.y);
+                ey[k] = sign * (q.x - p.x);
+                e0[k] = -(ex[k] * p.x + ey[k] * p.y) + 0.5 * (std::abs(ex[k]) + std::abs(ey[k]));
+            }
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x) {
+                    const double px = x + 0.5, py = y + 0.5;
+                    if (ex[0] * px + ey[0] * py + e0[0] >= 0.0 &&
+                        ex[1] * px + ey[1] * py + e0[1] >= 0.0 &&
+                        ex[2] * px + ey[2] * py + e0[2] >= 0.0)
+                        covered[static_cast<std::size_t>(y) * pixels + x] = 1;
+                }
+        }
+    };
+    double sum = 0.0;
+    for (int k = 0; k < views; ++k) {
+        // Around the tree, every other view 20 degrees above the horizon.
+        const double az = 2.0 * std::numbers::pi * k / views, el = (k % 2) ? 0.35 : 0.0;
+        const glm::vec3 dir(static_cast<float>(std::cos(el) * std::sin(az)),
+                            static_cast<float>(std::sin(el)),
+                            static_cast<float>(std::cos(el) * std::cos(az)));
+        glm::vec3 right, up;
+        impostorViewBasis(dir, right, up);
+        mask(reference, right, up, a);
+        mask(level, right, up, b);
+        std::size_t both = 0, either = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            both += a[i] && b[i];
+            either += a[i] || b[i];
+        }
+        sum += either ? static_cast<double>(both) / static_cast<double>(either) : 1.0;
+    }
+    return sum / views;
+}
+
 BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
                                    const LodChainSettings& chain,
                                    const ImpostorMaterials& materials, Progress& progress) {
@@ -90,9 +170,9 @@ BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMes
     const double t0 = static_cast<double>(lod0.mesh.triangleCount());
     out.levels.push_back(std::move(lod0));
 
-    auto meshAt = [&](double distance) {
+    auto meshAt = [&](double distance, double clusterPixels) {
         TreeMeshSettings s = settings;
-        s.lod.leafClusterPixels = chain.leafClusterPixels;
+        s.lod.leafClusterPixels = clusterPixels;
         s.useLod = true;
         s.hasCamera = false;
         s.cameraDistance = distance;
@@ -107,41 +187,84 @@ BudgetLodChain buildBudgetLodChain(const skel::Skeleton& skeleton, const TreeMes
                       ? settings.lod.bands[1].distance
                       : distanceForScreenSize(settings.lod, out.radius, 1.0);
     from = std::min(from, farthest);
-    for (std::size_t i = 1; i < chain.budgets.size(); ++i) {
-        const double budget = chain.budgets[i] * t0;
+    // The nearest distance from `from` on where the camera LOD with leaf clusters of
+    // \p clusterPixels has no more than \p budget triangles; false when not even at `farthest`.
+    const auto search = [&](double budget, double clusterPixels, BudgetLevel& level) {
         const double accept = budget * (1.0 - chain.tolerance);
-        BudgetLevel level;
-        level.budget = chain.budgets[i];
-        Mesh m = meshAt(from);
-        double lo = from;
+        Mesh m = meshAt(from, clusterPixels);
         if (static_cast<double>(m.triangleCount()) <= budget) {
             level.distance = from;
             level.mesh = std::move(m);
-        } else {
-            Mesh far = meshAt(farthest);
-            if (static_cast<double>(far.triangleCount()) > budget) {
-                level.distance = farthest;
-                level.mesh = std::move(far);
-                level.budgetMet = false;
+            return true;
+        }
+        Mesh far = meshAt(farthest, clusterPixels);
+        if (static_cast<double>(far.triangleCount()) > budget) {
+            level.distance = farthest;
+            level.mesh = std::move(far);
+            return false;
+        }
+        // Bisection in log distance for the nearest distance within budget.
+        double lo = from, hi = farthest;
+        Mesh best = std::move(far);
+        for (int it = 0; it < 24 && hi / lo > 1.005; ++it) {
+            const double mid = std::sqrt(lo * hi);
+            Mesh mm = meshAt(mid, clusterPixels);
+            const auto tris = static_cast<double>(mm.triangleCount());
+            if (tris <= budget) {
+                hi = mid;
+                best = std::move(mm);
+                if (tris >= accept) break;
             } else {
-                // Bisection in log distance for the nearest distance within budget.
-                double hi = farthest;
-                Mesh best = std::move(far);
-                for (int it = 0; it < 24 && hi / lo > 1.005; ++it) {
-                    const double mid = std::sqrt(lo * hi);
-                    Mesh mm = meshAt(mid);
-                    const auto tris = static_cast<double>(mm.triangleCount());
-                    if (tris <= budget) {
-                        hi = mid;
-                        best = std::move(mm);
-                        if (tris >= accept) break;
-                    } else {
-                        lo = mid;
-                    }
-                }
-                level.distance = hi;
-                level.mesh = std::move(best);
+                lo = mid;
             }
+        }
+        level.distance = hi;
+        level.mesh = std::move(best);
+        return true;
+    };
+    for (std::size_t i = 1; i < chain.budgets.size(); ++i) {
+        const double budget = chain.budgets[i] * t0;
+        // Leaf cluster sizes tried, in order, until the level keeps LOD0's silhouette at its
+        // switch distance (chain.minSilhouetteIoU); else the one that keeps the most. The
+        // clusters' sizes change the outline of a crown only a few pixels across by a pixel or
+        // two, either way, so the first size is not always the best there.
+        std::vector<double> clusters{chain.leafClusterPixels};
+        if (chain.minSilhouetteIoU > 0.0)
+            for (double f : {1.4, 0.7, 2.0})
+                clusters.push_back(std::clamp(chain.leafClusterPixels * f, 0.25, 8.0));
+        BudgetLevel level;
+        bool found = false;
+        for (std::size_t c = 0; c < clusters.size(); ++c) {
+            if (c > 0 && clusters[c] == clusters[c - 1]) continue;
+            BudgetLevel candidate;
+            candidate.budget = chain.budgets[i];
+            candidate.leafClusterPixels = clusters[c];
+            if (!search(budget, clusters[c], candidate)) {
+                if (c == 0) break; // the budget cannot be met at all: the level is dropped
+                continue;
+            }
+            candidate.silhouetteIoU =
+                silhouetteIoU(out.levels.front().mesh, candidate.mesh, out.centre, out.radius,
+                              settings.lod, candidate.distance);
+            if (!found || candidate.silhouetteIoU > level.silhouetteIoU) {
+                level = std::move(candidate);
+                found = true;
+            }
+            if (level.silhouetteIoU >= chain.minSilhouetteIoU) break;
+        }
+        if (!found) {
+            // Even the coarsest mesh the camera LOD makes before the tree is 4 px high is above
+            // this budget (a tree of a few hundred triangles): the level is left out and
+            // reported; the next level or the impostor takes over from the level before.
+            DroppedLevel d;
+            d.budget = chain.budgets[i];
+            d.budgetTriangles = static_cast<std::size_t>(std::floor(budget));
+            d.coarsestTriangles = meshAt(farthest, chain.leafClusterPixels).triangleCount();
+            d.reason = "budget below the coarsest mesh the camera LOD makes before the tree is "
+                       "4 px high (" +
+                       std::to_string(d.coarsestTriangles) + " triangles)";
+            out.dropped.push_back(std::move(d));
+            continue;
         }
         level.screenSize = screenSizeAt(settings.lod, out.radius, level.distance);
         from = level.distance;

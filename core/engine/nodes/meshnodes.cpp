@@ -78,20 +78,13 @@ LodSettings lodFromParams(const Value& p) {
     return lod;
 }
 
-// [hue degrees, saturation, brightness] (mesh/leaftint.h); unset: no variation.
-LeafColorVariation colorVariation(const Value& p, const char* key) {
+// A season's leaf colour spread (mesh/leaftint.h): `<prefix>hue_variation` (degrees),
+// `<prefix>saturation_variation`, `<prefix>brightness_variation`; unset: none.
+LeafColorVariation colorVariation(const Value& p, const std::string& prefix) {
     LeafColorVariation v;
-    const Value* given = p.find(key);
-    if (!given || given->isNull()) return v;
-    const Value::Array& a = given->toArray(key);
-    if (a.size() != 3)
-        throw InvalidInput(std::string(key) + " must be [hue degrees, saturation, brightness]");
-    v.hue = a[0].toNumber(key);
-    v.saturation = a[1].toNumber(key);
-    v.brightness = a[2].toNumber(key);
-    requireRange((std::string(key) + " hue (degrees)").c_str(), v.hue, 0.0, 90.0);
-    requireRange((std::string(key) + " saturation").c_str(), v.saturation, 0.0, 1.0);
-    requireRange((std::string(key) + " brightness").c_str(), v.brightness, 0.0, 1.0);
+    v.hue = ranged(p, (prefix + "hue_variation").c_str(), 0.0, 0.0, 90.0);
+    v.saturation = ranged(p, (prefix + "saturation_variation").c_str(), 0.0, 0.0, 1.0);
+    v.brightness = ranged(p, (prefix + "brightness_variation").c_str(), 0.0, 0.0, 1.0);
     return v;
 }
 
@@ -153,8 +146,8 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
             s.leafTint.autumnColor[k] = static_cast<float>(c);
         }
     }
-    s.leafTint.summer = colorVariation(p, "leaf_color_variation");
-    s.leafTint.autumn = colorVariation(p, "leaf_autumn_color_variation");
+    s.leafTint.summer = colorVariation(p, "leaf_");
+    s.leafTint.autumn = colorVariation(p, "leaf_autumn_");
     s.leafTint.patchSize = ranged(p, "leaf_color_patch", s.leafTint.patchSize, 0.0, 1e3);
     s.leafClusterSize = rangedInt(p, "leaf_cluster_size", 0, 0, 64);
     s.leafClusterTexture = texture("leaf_cluster_texture_file");
@@ -345,16 +338,23 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
          vector("autumn_color", vec(0.6, 0.4, 0.1), 0, 1, "",
                 "Autumn leaf colour (sRGB 0..1): make_textures.py draws the species' "
                 "autumn leaves from it")});
-    group(tube.params, "Leaf colour",
-          {vector("leaf_color_variation", vec(0, 0, 0), 0, 90, "",
-                  "How leaf cards differ in colour in spring and summer (an evergreen all "
-                  "year): [hue ± degrees (0..90), saturation ± fraction (0..1), the darkest "
-                  "card's loss of brightness (0..1)]; 0: every card alike"),
-           vector("leaf_autumn_color_variation", vec(0, 0, 0), 0, 90, "",
-                  "The same for a deciduous species in autumn (turning around autumn_color)"),
-           number("leaf_color_patch", 1.5, 0, 1e3, "m",
-                  "Half the variation follows patches about this large over the crown, half is "
-                  "each card's own; 0: each card on its own")});
+    group(
+        tube.params, "Leaf colour",
+        {number("leaf_hue_variation", 0.0, 0, 90, "°",
+                "Leaf cards' hue turned by up to ± this in spring and summer (an evergreen "
+                "all year); 0 with the two below: every card alike"),
+         number("leaf_saturation_variation", 0.0, 0, 1, "",
+                "Leaf cards' saturation scaled by up to ± this fraction"),
+         number("leaf_brightness_variation", 0.0, 0, 1, "",
+                "The darkest leaf card's loss of brightness (most keep near the texture's)"),
+         number("leaf_autumn_hue_variation", 0.0, 0, 90, "°",
+                "The same three in autumn for a deciduous species, around autumn_color"),
+         number("leaf_autumn_saturation_variation", 0.0, 0, 1, "", "Autumn: saturation ± fraction"),
+         number("leaf_autumn_brightness_variation", 0.0, 0, 1, "",
+                "Autumn: the darkest card's loss of brightness"),
+         number("leaf_color_patch", 1.5, 0, 1e3, "m",
+                "Most of the variation follows patches about this large over the crown, the "
+                "rest is each card's own; 0: each card on its own")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;

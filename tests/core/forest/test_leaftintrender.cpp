@@ -2,7 +2,7 @@
 // engine's CPU rasteriser (the impostor bake's, which applies Mesh::colors) from the side, its
 // leaves in one plain leaf green so that what varies between pixels is only the cards' tint:
 // the hue's spread across the crown must be clearly above zero with the preset's variation and
-// zero with it set to [0, 0, 0]; with the species' own textures, the crown's leaves must stay
+// zero with it set to 0; with the species' own textures, the crown's leaves must stay
 // within 15 % of their brightness without it. Prints the figures (docs/geometry.md, "Leaf
 // colour variation").
 #include <gtest/gtest.h>
@@ -78,9 +78,10 @@ Rendered render(const char* species, const char* season, bool plain) {
     const std::shared_ptr<const mesh::Mesh> a = with.evaluate(1).mesh;
     graph::Evaluator without(g);
     without.setParam(meshNode, "season", Value(std::string(season)));
-    const Value zero(Value::Array{Value(0.0), Value(0.0), Value(0.0)});
-    without.setParam(meshNode, "leaf_color_variation", zero);
-    without.setParam(meshNode, "leaf_autumn_color_variation", zero);
+    for (const char* key : {"leaf_hue_variation", "leaf_saturation_variation",
+                            "leaf_brightness_variation", "leaf_autumn_hue_variation",
+                            "leaf_autumn_saturation_variation", "leaf_autumn_brightness_variation"})
+        without.setParam(meshNode, key, Value(0.0));
     const std::shared_ptr<const mesh::Mesh> b = without.evaluate(1).mesh;
     EXPECT_TRUE(a && b);
     if (!a || !b) return {};

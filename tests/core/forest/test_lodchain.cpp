@@ -22,6 +22,7 @@
 //   covers, blue: only the tree).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -29,6 +30,7 @@
 #include <map>
 #include <numbers>
 #include <set>
+#include <sstream>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <omp.h>
@@ -52,6 +54,11 @@ const std::filesystem::path kTextures = kPresets / ".." / "resources" / "texture
 /// (LodChainSettings::impostorPixels).
 constexpr int kViewPixels = 64;
 constexpr double kMaxColourDifference = 0.1;
+/// The impostor's coverage (the sum of its alpha) against the tree's, per view: at least this
+/// (thinner, the crown lightens where it takes over; the views diluting each other's coverage
+/// measured 0.75-0.9) and at most kMaxCoverage (the date palm's view 11 is 1.15: its ghost
+/// frond tips).
+constexpr double kMinCoverage = 0.85, kMaxCoverage = 1.2;
 constexpr int kClosePixels = 1;
 
 struct Species {
@@ -237,24 +244,19 @@ std::vector<std::pair<double, double>> levelSilhouettes(const mesh::BudgetLodCha
 
 /// Each level's triangles against its budget: printed; at most the budget, and at least
 /// (1 - \p tolerance) of it, unless the level is in \p coarser (the camera LOD's discrete steps
-/// jump past the band: the level is cheaper than asked) or in \p unmet (the camera LOD cannot
-/// reach the budget before the tree is 4 px high: the coarsest it makes, marked budgetMet false).
+/// jump past the band: the level is cheaper than asked).
 void checkBudgets(const mesh::BudgetLodChain& chain, const std::string& name, double tolerance,
-                  const std::set<std::size_t>& coarser = {},
-                  const std::set<std::size_t>& unmet = {}) {
+                  const std::set<std::size_t>& coarser = {}) {
     const auto t0 = static_cast<double>(chain.levels[0].mesh.triangleCount());
     for (std::size_t i = 0; i < chain.levels.size(); ++i) {
         const mesh::BudgetLevel& l = chain.levels[i];
         const double ratio = static_cast<double>(l.mesh.triangleCount()) / t0;
         std::cout << name << " LOD" << i << ": " << l.mesh.triangleCount() << " triangles ("
                   << ratio << " of LOD0, budget " << l.budget << ") from " << l.distance
-                  << " m, screen size " << l.screenSize << "\n";
+                  << " m, screen size " << l.screenSize << ", leaf clusters " << l.leafClusterPixels
+                  << " px, silhouette (engine) " << l.silhouetteIoU << "\n";
         if (i > 0) {
             EXPECT_GE(l.distance, chain.levels[i - 1].distance) << name << " LOD" << i;
-        }
-        if (unmet.count(i)) {
-            EXPECT_FALSE(l.budgetMet) << name << " LOD" << i << ": fixed?";
-            continue;
         }
         EXPECT_TRUE(l.budgetMet) << name << " LOD" << i;
         EXPECT_LE(ratio, l.budget + 1e-9) << name << " LOD" << i;
@@ -280,6 +282,47 @@ TEST(LodChain, BudgetsAreMet) {
     EXPECT_GE(chain.impostorDistance, chain.levels.back().distance);
 }
 
+// A budget the camera LOD cannot reach before the tree is 4 px high is left out of the chain and
+// reported with the fewest triangles the LOD makes; the chain goes on from the level before.
+TEST(LodChain, UnreachableBudgetsAreDroppedAndReported) {
+    const Species s = grow("alder", 1);
+    mesh::LodChainSettings settings = testChain();
+    settings.budgets = {1.0, 0.35, 0.0005, 0.0001};
+    settings.impostorSettings.cellPixels = 16;
+    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(*s.skeleton, s.settings, settings,
+                                                                 mesh::ImpostorTextures(kTextures));
+    ASSERT_EQ(chain.levels.size(), 2u);
+    ASSERT_EQ(chain.dropped.size(), 2u);
+    EXPECT_DOUBLE_EQ(chain.dropped[0].budget, 0.0005);
+    EXPECT_DOUBLE_EQ(chain.dropped[1].budget, 0.0001);
+    for (const mesh::DroppedLevel& d : chain.dropped) {
+        EXPECT_GT(d.coarsestTriangles, d.budgetTriangles);
+        EXPECT_NE(d.reason.find("4 px"), std::string::npos) << d.reason;
+    }
+    EXPECT_TRUE(chain.levels[1].budgetMet);
+    // The impostor follows the last level that was made.
+    EXPECT_GE(chain.impostorDistance, 1.5 * chain.levels[1].distance - 1e-9);
+}
+
+// The chain's own silhouette measure: 1 for the same mesh, lower for the mesh moved by pixels.
+TEST(LodChain, SilhouetteMeasure) {
+    const mesh::BudgetLodChain& chain = alderChain();
+    const mesh::Mesh& m = chain.levels[0].mesh;
+    const mesh::LodSettings ref;
+    const double d = chain.levels[2].distance;
+    EXPECT_DOUBLE_EQ(mesh::silhouetteIoU(m, m, chain.centre, chain.radius, ref, d), 1.0);
+    mesh::Mesh moved = m;
+    const double metresPerPixel =
+        2.0 * d * std::tan(ref.fovYDegrees * std::numbers::pi / 360.0) / ref.screenHeightPx;
+    for (glm::vec3& p : moved.positions)
+        p.y += static_cast<float>(3.0 * metresPerPixel);
+    const double shifted = mesh::silhouetteIoU(m, moved, chain.centre, chain.radius, ref, d);
+    EXPECT_LT(shifted, 0.9);
+    EXPECT_GT(shifted, 0.2);
+    EXPECT_NEAR(mesh::silhouetteIoU(m, chain.levels[2].mesh, chain.centre, chain.radius, ref, d),
+                chain.levels[2].silhouetteIoU, 1e-12);
+}
+
 TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
     for (const auto& [mean, worst] : levelSilhouettes(alderChain(), "alder")) {
         EXPECT_GE(mean, 0.9);
@@ -295,17 +338,10 @@ TEST(LodChain, EveryLevelKeepsTheSilhouetteAtItsDistance) {
 // down to 0.71: docs/lods.md). Where the bar does not hold today the measured value is held
 // instead (the tables below). SYLVA_LOD_SPECIES=<name> runs one species.
 TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
-    struct Known {
-        const char* species;
-        std::size_t level;
-        double mean, worst; ///< measured (seed 1), held 0.01 below
-    };
-    // The level under the bar, measured: the rhododendron's 4 % level, 46 px in area at its
-    // switch distance. (The pine's, 0.876 before its needle clusters, is at 0.910 now.)
-    // The pine's LOD3 (164 px in area) since its needles are tufts at the ends of bare limbs
-    // (issue #33): its clumps are specks at that size.
-    // The rhododendron's at 0.890 / 0.827 before its rosette cards stood up (issue #33).
-    const Known below[] = {{"rhododendron", 3, 0.851, 0.772}, {"scots-pine", 3, 0.895, 0.868}};
+    // Every level at the bar. The rhododendron's 4 % level (46 px in area at 437 m) measured
+    // 0.890 / worst 0.827 with 0.5-px leaf clusters; the chain now checks each level's
+    // silhouette itself (mesh::silhouetteIoU) and made that one with 0.7-px clusters (377 m,
+    // 59 px: 0.931 / 0.894).
     // Levels the camera LOD makes coarser than 80 % of their budget (its steps jump past it).
     // (Measured with the needle-cluster and fuller-crown presets: willow LOD1 21 %, pine LOD1
     // 27.9 % and LOD2 6.4 %, cypress LOD1 25.7 %.)
@@ -314,8 +350,9 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
         {"scots-pine", {1, 2}},
         {"italian-cypress", {1}},
         {"norway-spruce", {1}}}; // 26.6 % since its LOD0 lost its twigs' bark (issue #33)
-    // The date palm has 456 triangles: 12 % and 4 % of them are not reached before it is 4 px.
-    const std::map<std::string, std::set<std::size_t>> unmet = {{"date-palm", {2, 3}}};
+    // The date palm has 456 triangles: 12 % and 4 % of them (54 and 18) are not reached before
+    // it is 4 px high (its coarsest mesh has 66): those two levels are dropped and reported.
+    const std::map<std::string, std::size_t> dropped = {{"date-palm", 2}};
     const char* only = std::getenv("SYLVA_LOD_SPECIES");
     int levels = 0, atBar = 0;
     for (const char* species : {"english-oak", "silver-birch", "european-beech", "norway-maple",
@@ -327,27 +364,27 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
         settings.impostor = false;
         const mesh::BudgetLodChain chain =
             mesh::buildBudgetLodChain(*s.skeleton, s.settings, settings);
-        ASSERT_EQ(chain.levels.size(), settings.budgets.size()) << species;
+        const auto d = dropped.find(species);
+        ASSERT_EQ(chain.dropped.size(), d == dropped.end() ? 0u : d->second) << species;
+        ASSERT_EQ(chain.levels.size() + chain.dropped.size(), settings.budgets.size()) << species;
+        for (const mesh::DroppedLevel& l : chain.dropped) {
+            std::cout << species << " dropped the " << l.budget << " level: " << l.reason << "\n";
+            EXPECT_GT(l.coarsestTriangles, l.budgetTriangles) << species;
+        }
         const auto c = coarser.find(species);
-        const auto u = unmet.find(species);
         checkBudgets(chain, species, settings.tolerance,
-                     c == coarser.end() ? std::set<std::size_t>{} : c->second,
-                     u == unmet.end() ? std::set<std::size_t>{} : u->second);
+                     c == coarser.end() ? std::set<std::size_t>{} : c->second);
         const auto measured = levelSilhouettes(chain, species);
         for (std::size_t i = 0; i < measured.size(); ++i) {
             const std::size_t level = i + 1;
-            const Known* known = nullptr;
-            for (const Known& k : below)
-                if (k.species == std::string(species) && k.level == level) known = &k;
             ++levels;
-            if (!known) {
-                ++atBar;
-                EXPECT_GE(measured[i].first, 0.9) << species << " LOD" << level;
-                EXPECT_GE(measured[i].second, 0.85) << species << " LOD" << level;
-            } else {
-                EXPECT_GE(measured[i].first, known->mean - 0.01) << species << " LOD" << level;
-                EXPECT_GE(measured[i].second, known->worst - 0.01) << species << " LOD" << level;
-            }
+            atBar += measured[i].first >= 0.9 && measured[i].second >= 0.85;
+            EXPECT_GE(measured[i].first, 0.9) << species << " LOD" << level;
+            EXPECT_GE(measured[i].second, 0.85) << species << " LOD" << level;
+            // The chain's own measure agrees with this oracle (different rasterisers, an
+            // orthographic view instead of the perspective one).
+            EXPECT_NEAR(chain.levels[level].silhouetteIoU, measured[i].first, 0.02)
+                << species << " LOD" << level;
         }
     }
     std::cout << atBar << " of " << levels << " levels at the 0.9 bar\n";
@@ -358,7 +395,8 @@ namespace {
 /// The impostor of \p species (seed 1, LOD0, \p grid × \p grid views of 128 pixels, the
 /// default 8 × 8) against the tree from 16 random views of the upper hemisphere; returns the
 /// worst and mean IoU.
-std::pair<double, double> compareImpostor(const std::string& species, double minIou, int grid = 8) {
+std::pair<double, double> compareImpostor(const std::string& species, double minIou, int grid = 8,
+                                          const std::map<int, double>& knownViews = {}) {
     const Species s = grow(species, 1);
     const mesh::Mesh lod0 = mesh::buildTreeMesh(*s.skeleton, s.settings);
     mesh::ImpostorSettings settings = testChain().impostorSettings;
@@ -371,7 +409,7 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
     EXPECT_EQ(imp.depth.channels, 1);
     const mesh::ImpostorTextures textures(kTextures);
     Rng rng(32);
-    double worstIou = 1.0, worstColour = 0.0, sumIou = 0.0;
+    double worstIou = 1.0, worstColour = 0.0, sumIou = 0.0, worstCoverage = 2.0;
     for (int v = 0; v < 16; ++v) {
         // Uniform on the upper hemisphere.
         const float y = rng.uniformf(0.0f, 1.0f), phi = rng.uniformf(0.0f, 6.2831853f);
@@ -380,6 +418,16 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
         const Image truth = mesh::renderOrthographicView(lod0, textures, dir, imp.centre,
                                                          imp.radius, kViewPixels, 4);
         const Image drawn = mesh::renderImpostor(imp, dir, kViewPixels);
+        // What the measure can resolve in this view: the tree against itself moved by half a
+        // pixel (diagonally). A tree of fronds 1-2 px wide at this size (the date palm) keeps
+        // less than 0.9 of its own outline under that shift; there the bar is that floor.
+        glm::vec3 viewRight, viewUp;
+        mesh::impostorViewBasis(dir, viewRight, viewUp);
+        const float halfPixel = imp.radius / static_cast<float>(kViewPixels);
+        const Image shifted = mesh::renderOrthographicView(
+            lod0, textures, dir, imp.centre + halfPixel * 0.70710678f * (viewRight + viewUp),
+            imp.radius, kViewPixels, 4);
+        const double floorIou = test::iou(silhouette(truth), silhouette(shifted));
         if (const char* out = std::getenv("SYLVA_IMPOSTOR_PICTURES")) {
             const std::filesystem::path dirOut(out);
             std::filesystem::create_directories(dirOut);
@@ -430,34 +478,50 @@ std::pair<double, double> compareImpostor(const std::string& species, double min
                 }
             }
         EXPECT_GT(both, 100u);
+        // How much the impostor covers against the tree (the sum of coverage): an impostor
+        // thinner than the tree lightens the crown where it takes over (an alpha test then
+        // drops more of it).
+        double coverTree = 0.0, coverDrawn = 0.0;
+        for (int k = 0; k < kViewPixels * kViewPixels; ++k) {
+            coverTree += truth.pixels[4 * static_cast<std::size_t>(k) + 3];
+            coverDrawn += drawn.pixels[4 * static_cast<std::size_t>(k) + 3];
+        }
+        const double coverage = coverDrawn / coverTree;
+        worstCoverage = std::min(worstCoverage, coverage);
+        EXPECT_GE(coverage, kMinCoverage) << species << " view " << v;
+        EXPECT_LE(coverage, kMaxCoverage) << species << " view " << v;
         diff /= static_cast<double>(both);
         const double meanDiff = glm::length(meanT - meanD) / static_cast<double>(both);
         std::cout << "view " << v << " (elevation " << std::asin(y) * 180 / std::numbers::pi
-                  << " deg): IoU " << iou << ", colour difference " << diff
+                  << " deg): IoU " << iou << " (the tree moved half a pixel: " << floorIou
+                  << "), coverage " << coverage << ", colour difference " << diff
                   << ", mean colours apart " << meanDiff << " (" << truthMask.size()
                   << " px, missed " << missed << ", extra " << extra << ")\n";
         worstIou = std::min(worstIou, iou);
         worstColour = std::max(worstColour, diff);
         sumIou += iou;
-        EXPECT_GE(iou, minIou) << species << " view " << v;
+        const auto known = knownViews.find(v);
+        EXPECT_GE(iou, known != knownViews.end() ? known->second : std::min(minIou, floorIou))
+            << species << " view " << v << " (the tree moved half a pixel: " << floorIou << ")";
         EXPECT_LE(diff, kMaxColourDifference) << species << " view " << v;
     }
     std::cout << species << " impostor: IoU worst " << worstIou << ", mean " << sumIou / 16
-              << "; worst colour difference " << worstColour << "\n";
+              << "; worst colour difference " << worstColour << "; least coverage " << worstCoverage
+              << "\n";
     return {worstIou, sumIou / 16};
 }
 
 } // namespace
 
-// Issue #32's bar for every species of the library, on the default 8 x 8 atlas: IoU >= 0.9 in
-// each of the 16 random views (worst views measured with the relief-mapping sampler: oak 0.926,
-// birch 0.955, beech 0.936, maple 0.953, willow 0.958, poplar 0.924, pine 0.905, spruce 0.962,
-// cypress 0.942, rhododendron 0.973, privet 0.96; with the former fixed-point parallax walk:
-// oak 0.86, poplar 0.83, pine 0.82, cypress 0.83, privet 0.90).
-// The date palm is the exception: its long thin fronds, seen edge-on from one atlas view and
-// broad from the next 25 degrees away, leave ghost frond tips where the three blended views
-// each meet a frond of their own (measured 0.807 worst, 0.896 mean, 8 of 16 views under 0.9;
-// 0.714 / 0.807 before). Its views are held at 0.8 and its mean at 0.88.
+// Issue #32's bar for every species of the library, on the default 8 x 8 atlas: mean IoU of the
+// 16 random views >= 0.9, and each view >= 0.9 or, where lower, what the measure resolves in
+// that view: the tree's IoU against itself moved by half a pixel (the rule test_lodcoverage
+// holds small trees to). Worst views measured (docs/lods.md): oak 0.955, birch 0.949, beech
+// 0.958, maple 0.954, willow 0.966, poplar 0.965, pine 0.923, spruce 0.969, cypress 0.939,
+// rhododendron 0.972, privet 0.962; the date palm 0.812 / mean 0.915: at 64 px its fronds are
+// 1-2 px wide, and the palm moved half a pixel keeps only 0.82-0.94 of its own outline (7 of its
+// 16 views under 0.9). 15 of its views pass that rule; view 11 (elevation 16 degrees, 10 degrees
+// from the nearest atlas view) measures 0.812 against a floor of 0.872 and is held at 0.80.
 // SYLVA_IMPOSTOR_SPECIES=<name> runs one species.
 TEST(LodChain, LibraryImpostorsMatchTheTreeInEveryView) {
     const char* only = std::getenv("SYLVA_IMPOSTOR_SPECIES");
@@ -466,15 +530,20 @@ TEST(LodChain, LibraryImpostorsMatchTheTreeInEveryView) {
                                 "date-palm", "italian-cypress", "rhododendron", "privet-hedge"}) {
         if (only && std::string(only) != species) continue;
         const bool palm = std::string(species) == "date-palm";
-        EXPECT_GE(compareImpostor(species, palm ? 0.8 : 0.9).second, palm ? 0.88 : 0.9) << species;
+        EXPECT_GE(
+            compareImpostor(species, 0.9, 8,
+                            palm ? std::map<int, double>{{11, 0.80}} : std::map<int, double>{})
+                .second,
+            0.9)
+            << species;
     }
 }
 
 // The alder's open crown of small leaves (not in the library) is speckle at 64 pixels: a leaf
-// that turns out of view between two atlas views changes the mask (measured 0.868 worst, 0.907
-// mean; 0.78 / 0.86 with the former parallax walk): every view is held at 0.85, the mean at 0.9.
+// that turns out of view between two atlas views changes the mask (measured 0.903 worst, 0.923
+// mean; 0.868 / 0.907 with the fixed 0.2 shell, 0.78 / 0.86 with the former parallax walk).
 TEST(LodChain, SparseCrownImpostor) {
-    EXPECT_GE(compareImpostor("alder", 0.85).second, 0.9);
+    EXPECT_GE(compareImpostor("alder", 0.9).second, 0.9);
 }
 
 TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {
@@ -506,34 +575,60 @@ TEST(LodChain, ImpostorIsTheSameOnAnyThreadCount) {
     EXPECT_LT(dark, empty / 2);
 }
 
-// SYLVA_LOD_STRIP=<file.png>: the english oak's chain side by side, each level at the same size
-// (LOD0..LOD3, then the impostor from the same direction and from 25 degrees around), to look at.
+// SYLVA_LOD_STRIP=<file.png>: the chain side by side, one row a species (english oak,
+// rhododendron, scots pine, date palm; SYLVA_LOD_STRIP_SPECIES=a,b,... for others), each level at
+// the same size (LOD0..LOD3, a blank where a level was dropped, then the impostor from the same
+// direction and from 25 degrees around), to look at.
 TEST(LodChain, StripPicture) {
     const char* out = std::getenv("SYLVA_LOD_STRIP");
     if (!out) GTEST_SKIP() << "SYLVA_LOD_STRIP not set";
-    const Species s = grow("english-oak", 1);
-    const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
-        *s.skeleton, s.settings, testChain(), mesh::ImpostorTextures(kTextures));
+    std::vector<std::string> species{"english-oak", "rhododendron", "scots-pine", "date-palm"};
+    if (const char* list = std::getenv("SYLVA_LOD_STRIP_SPECIES")) {
+        species.clear();
+        std::stringstream in(list);
+        for (std::string item; std::getline(in, item, ',');)
+            species.push_back(item);
+    }
     const mesh::ImpostorTextures textures(kTextures);
-    const int px = 256;
+    const int px = 256, columns = 6;
     const glm::vec3 dir = glm::normalize(glm::vec3(0.3f, 0.25f, 1.0f));
-    std::vector<Image> tiles;
-    for (const mesh::BudgetLevel& l : chain.levels)
-        tiles.push_back(
-            mesh::renderOrthographicView(l.mesh, textures, dir, chain.centre, chain.radius, px, 2));
-    tiles.push_back(mesh::renderImpostor(*chain.impostor, dir, px));
-    tiles.push_back(
-        mesh::renderImpostor(*chain.impostor, glm::normalize(glm::vec3(0.75f, 0.25f, 0.8f)), px));
-    Image strip(px * static_cast<int>(tiles.size()), px, 3);
-    for (std::size_t k = 0; k < tiles.size(); ++k)
-        for (int y = 0; y < px; ++y)
-            for (int x = 0; x < px; ++x) {
-                const std::uint8_t* p = tiles[k].at(x, y);
-                std::uint8_t* q = strip.at(static_cast<int>(k) * px + x, y);
-                const float a = p[3] / 255.0f;
-                for (int c = 0; c < 3; ++c) // over a pale sky
-                    q[c] = static_cast<std::uint8_t>(p[c] * a + (c == 2 ? 235 : 215) * (1 - a));
-            }
+    Image strip(px * columns, px * static_cast<int>(species.size()), 3);
+    std::fill(strip.pixels.begin(), strip.pixels.end(), std::uint8_t{255});
+    for (std::size_t row = 0; row < species.size(); ++row) {
+        const Species s = grow(species[row], 1);
+        // The CLI's default atlas (8 x 8 views of 256 px): the strip draws it at its cells' size.
+        const mesh::LodChainSettings defaults;
+        const mesh::BudgetLodChain chain = mesh::buildBudgetLodChain(
+            *s.skeleton, s.settings, defaults, mesh::ImpostorTextures(kTextures));
+        std::vector<Image> tiles(columns);
+        // Levels by their budget's column (a dropped level leaves its column grey).
+        for (const mesh::BudgetLevel& l : chain.levels) {
+            const auto column = static_cast<std::size_t>(
+                std::find(defaults.budgets.begin(), defaults.budgets.end(), l.budget) -
+                defaults.budgets.begin());
+            tiles[column] = mesh::renderOrthographicView(l.mesh, textures, dir, chain.centre,
+                                                         chain.radius, px, 2);
+        }
+        tiles[4] = mesh::renderImpostor(*chain.impostor, dir, px);
+        tiles[5] = mesh::renderImpostor(*chain.impostor,
+                                        glm::normalize(glm::vec3(0.75f, 0.25f, 0.8f)), px);
+        for (int k = 0; k < columns; ++k)
+            for (int y = 0; y < px; ++y)
+                for (int x = 0; x < px; ++x) {
+                    std::uint8_t* q = strip.at(k * px + x, static_cast<int>(row) * px + y);
+                    if (tiles[k].width != px) {
+                        std::fill_n(q, 3, std::uint8_t{190});
+                        continue;
+                    }
+                    const std::uint8_t* p = tiles[k].at(x, y);
+                    // The mesh levels antialiased; the impostor as its shader draws it (an alpha
+                    // test at 0.5, the glTF material's MASK).
+                    float a = p[3] / 255.0f;
+                    if (k >= 4) a = a >= 0.5f ? 1.0f : 0.0f;
+                    for (int c = 0; c < 3; ++c) // over a pale sky
+                        q[c] = static_cast<std::uint8_t>(p[c] * a + (c == 2 ? 235 : 215) * (1 - a));
+                }
+    }
     writePng(out, strip);
 }
 
@@ -550,4 +645,23 @@ TEST(Image, PngRoundTrip) {
     EXPECT_EQ(back.pixels, image.pixels);
     EXPECT_THROW(readPng(dir / "missing.png"), IoError);
     std::filesystem::remove_all(dir);
+}
+
+// Seen from exactly an atlas view's own direction the impostor is that view's picture: the
+// march sinks through the whole sphere in one step there, and the fixed 0.2-radius shell once
+// stepped over every surface (an empty picture, IoU 0).
+TEST(LodChain, ImpostorFromAnAtlasViewIsThatView) {
+    const Species s = grow("alder", 1);
+    const mesh::Mesh lod0 = mesh::buildTreeMesh(*s.skeleton, s.settings);
+    const mesh::ImpostorTextures textures(kTextures);
+    const mesh::Impostor imp = mesh::bakeImpostor(lod0, textures, testChain().impostorSettings);
+    for (glm::vec2 uv : {glm::vec2(1.0f, 1.0f / 7.0f), glm::vec2(3.0f / 7.0f, 4.0f / 7.0f)}) {
+        const glm::vec3 dir = mesh::impostorViewDirection(uv, true);
+        const Image truth = mesh::renderOrthographicView(lod0, textures, dir, imp.centre,
+                                                         imp.radius, kViewPixels, 4);
+        const Image drawn = mesh::renderImpostor(imp, dir, kViewPixels);
+        const double iou = test::iou(silhouette(truth), silhouette(drawn));
+        std::cout << "atlas view (" << uv.x << ", " << uv.y << "): IoU " << iou << "\n";
+        EXPECT_GE(iou, 0.9);
+    }
 }
