@@ -222,29 +222,34 @@ std::size_t Impostors::end() {
     gl.glDisable(GL_CULL_FACE);
     gl.glBindBuffer(GL_ARRAY_BUFFER, mInstances);
     std::size_t calls = 0;
+    // Drop the atlases no longer drawn.
     for (auto it = mQueue.begin(); it != mQueue.end();) {
         const auto& levels = it->second;
-        const auto card = mCards.find(it->first);
         const bool empty = std::all_of(levels.begin(), levels.end(),
                                        [](const std::vector<Instance>& l) { return l.empty(); });
-        if (empty || card == mCards.end()) {
-            it = empty ? mQueue.erase(it) : std::next(it);
-            continue;
-        }
-        const Card& c = card->second;
-        setUniform(*mProgram, "uCentre", c.centre);
-        mProgram->setUniformValue("uRadius", c.radius);
-        setUniform(*mProgram, "uExtent", c.extent);
-        gl.glActiveTexture(GL_TEXTURE2);
-        gl.glBindTexture(GL_TEXTURE_2D, c.depth);
-        gl.glActiveTexture(GL_TEXTURE1);
-        gl.glBindTexture(GL_TEXTURE_2D, c.normal);
-        gl.glActiveTexture(GL_TEXTURE0);
-        gl.glBindTexture(GL_TEXTURE_2D, c.color);
-        for (std::size_t level = 0; level < levels.size(); ++level) {
+        it = empty || !mCards.count(it->first) ? mQueue.erase(it) : std::next(it);
+    }
+    // The finest level first: its cards are the largest, nearest ones, and a card drawn behind
+    // them is cut by the depth test before its fragments are shaded. Each atlas' instances are
+    // nearest first already (the draw list's order).
+    for (std::size_t level = 0; level <= std::size_t(kMaxLevel); ++level)
+        for (const auto& [key, levels] : mQueue) {
             const std::vector<Instance>& list = levels[level];
             if (list.empty()) continue;
+            const Card& c = mCards.at(key);
+            setUniform(*mProgram, "uCentre", c.centre);
+            mProgram->setUniformValue("uRadius", c.radius);
+            setUniform(*mProgram, "uExtent", c.extent);
             mProgram->setUniformValue("uLevel", float(level));
+            // Fewer samples of the march for cards a few pixels across (a texel of their
+            // level's atlas moves by less than a pixel between samples).
+            mProgram->setUniformValue("uSteps", level >= 2 ? kFarSteps : kNearSteps);
+            gl.glActiveTexture(GL_TEXTURE2);
+            gl.glBindTexture(GL_TEXTURE_2D, c.depth);
+            gl.glActiveTexture(GL_TEXTURE1);
+            gl.glBindTexture(GL_TEXTURE_2D, c.normal);
+            gl.glActiveTexture(GL_TEXTURE0);
+            gl.glBindTexture(GL_TEXTURE_2D, c.color);
             // Orphaned each time: the driver need not wait for the previous draw's copy.
             gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(Instance)), nullptr,
                             GL_STREAM_DRAW);
@@ -253,8 +258,6 @@ std::size_t Impostors::end() {
             gl.glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(list.size()));
             ++calls;
         }
-        ++it;
-    }
     gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
     for (GLenum unit : {GL_TEXTURE2, GL_TEXTURE1, GL_TEXTURE0}) {
         gl.glActiveTexture(unit);

@@ -81,6 +81,8 @@ public:
     static int levelFor(float radiusPixels);
     /// The finest mipmap level kept beyond the base (the views are cell / 8 at the coarsest).
     static constexpr int kMaxLevel = 3;
+    /// Samples of the shader's depth march for cards read at levels 0-1 and 2-3.
+    static constexpr int kNearSteps = 4, kFarSteps = 3;
     /// Returns the number of draw calls made.
     std::size_t end();
 

@@ -762,13 +762,19 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     view.viewProj = viewProj;
     view.eye = mCamera.eye();
     view.fovY = mCamera.fovY();
-    view.viewportHeightPx = double(height()) * devicePixelRatioF();
+    // A frame drawn at reduced resolution while the view moves (a software renderer): each
+    // tree's level, and where the impostor takes over, follow the pixels it spans on the
+    // target drawn into, as at rest on the window: a tree half as many pixels high there is
+    // drawn as if twice as far (an impostor then spans no more target pixels than at rest).
+    const double target = mLastReduced ? double(mMotionScale) : 1.0;
+    view.viewportHeightPx = double(height()) * devicePixelRatioF() * target;
     view.levels = mLod->isEnabled();
-    // A frame at reduced resolution while the view moves draws coarser variant levels too.
+    // Variant levels while the view moves: ViewLod::kMotionFactor times as far as at rest on
+    // the window (the target's scale above is part of it, not on top).
     static const double bias = qEnvironmentVariableIsSet("SYLVA_LOD_BIAS")
                                    ? qEnvironmentVariable("SYLVA_LOD_BIAS").toDouble()
                                    : 1.0;
-    view.variantFactor = (mLastReduced ? ViewLod::kMotionFactor : 1.0) * bias;
+    view.variantFactor = (mLastReduced ? ViewLod::kMotionFactor * target : 1.0) * bias;
     std::vector<InstanceOf> instances(mTrees.size());
     for (std::size_t i = 0; i < mTrees.size(); ++i)
         if (mTrees[i].lod.instance && mTrees[i].lod.variant)

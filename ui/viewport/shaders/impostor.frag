@@ -8,7 +8,7 @@
 // Everything that depends on the view direction alone is the card's (impostor.vert). Per
 // pixel: one blurred fetch that cuts out the empty part of the card, then ONE of the three
 // views, chosen by an ordered dither against the weights (on average the blend, a third of
-// the fetches; measured in docs/perf/lods.md), IMPOSTOR_STEPS depth fetches of the march, the
+// the fetches; measured in docs/perf/lods.md), uSteps depth fetches of the march, the
 // colour and the normal. Every fetch reads the card's one mipmap level (uLevel, a uniform):
 // neighbouring pixels may take other views and hits, so the level cannot come from their
 // texture coordinates, and under llvmpipe a level that varies per pixel costs about as much as
@@ -25,11 +25,9 @@ uniform sampler2D uDepth;
 uniform int uGrid;
 uniform int uCell;
 uniform float uLevel; // Impostors::levelFor(): about a texel a pixel
+uniform int uSteps;   // samples of the march, 2 or more (Impostors::kNearSteps, kFarSteps)
 uniform vec3 uLightDir;
 out vec4 fragColor;
-#ifndef IMPOSTOR_STEPS
-#define IMPOSTOR_STEPS 4
-#endif
 
 void main() {
     float grid = float(uGrid);
@@ -52,16 +50,15 @@ void main() {
 
     // The march (docs/lods.md): the viewer's ray, in height over the view's plane (its point
     // at height h is t0 + h · step), from the top of the stored depths (1) to the back (-1) in
-    // IMPOSTOR_STEPS samples; the first sample behind the stored surface that the ray met from
+    // uSteps samples; the first sample behind the stored surface that the ray met from
     // in front (the surface no more than kShell above the ray's sample before) is refined by
     // the secant between the two. A ray that meets nothing of the view shows nothing of it.
     // Coverage is the colour's alpha test at the hit (the depth of empty texels is bled from
     // their neighbours, so a ray that "hits" beside a twig finds no colour there).
-    const int kSteps = IMPOSTOR_STEPS;
     const float kShell = 0.2;
     float hPrev = 1.0, fPrev = -1.0, hit = 2.0;
-    for (int i = 0; i < kSteps; ++i) {
-        float h = 1.0 - 2.0 * float(i) / float(kSteps - 1);
+    for (int i = 0; i < uSteps; ++i) {
+        float h = 1.0 - 2.0 * float(i) / float(uSteps - 1);
         vec2 at = cell + clamp(t0 + h * step, halfTexel, 1.0 - halfTexel) / grid;
         float d = textureLod(uDepth, at, uLevel).r * 2.0 - 1.0;
         float f = d - h; // >= 0: the ray is behind the surface
