@@ -8,6 +8,7 @@
 
 #include "engine/mesh/mesh.h"
 #include "ui/viewport/drawlist.h"
+#include "ui/viewport/impostors.h"
 #include "ui/viewport/viewlod.h"
 
 using sylva::ui::Bounds;
@@ -180,6 +181,29 @@ private Q_SLOTS:
         // Trees that are no instance have no variant level.
         for (const TreeDraw& d : buildDrawList(view(), drawn, bounds))
             QCOMPARE(d.variantLevel, -1);
+    }
+
+    /// An impostor's card is read at one mipmap level (a uniform, issue 32): the level where a
+    /// texel of its view's cell is about a pixel, so a card half the cell's size reads level 1.
+    void impostorLevelFollowsTheCardsSize() {
+        using sylva::ui::Impostors;
+        const float fullSize = 0.5f * float(Impostors::kCell); // radius: the cell's texels
+        QCOMPARE(Impostors::levelFor(fullSize), 0);
+        QCOMPARE(Impostors::levelFor(4.0f * fullSize), 0); // magnified: the base level
+        QCOMPARE(Impostors::levelFor(fullSize / 2.0f), 1);
+        QCOMPARE(Impostors::levelFor(fullSize / 4.0f), 2);
+        QCOMPARE(Impostors::levelFor(fullSize / 8.0f), 3);
+        QCOMPARE(Impostors::levelFor(0.5f), Impostors::kMaxLevel); // the coarsest kept
+        QCOMPARE(Impostors::levelFor(0.0f), Impostors::kMaxLevel);
+        // Rounded: 1.4 texels a pixel is still level 0, 1.5 and more level 1.
+        QCOMPARE(Impostors::levelFor(fullSize / 1.4f), 0);
+        QCOMPARE(Impostors::levelFor(fullSize / 1.5f), 1);
+        int last = 0;
+        for (float r = 200.0f; r > 0.25f; r *= 0.9f) {
+            const int level = Impostors::levelFor(r);
+            QVERIFY(level >= last);
+            last = level;
+        }
     }
 
     void frustumPlanesSeeAStraddlingBox() {

@@ -482,7 +482,11 @@ private Q_SLOTS:
               viewport()->drawnPerLevel()[0], viewport()->drawnPerLevel()[1],
               viewport()->drawnPerLevel()[2], viewport()->drawnPerLevel()[3]);
         QVERIFY(viewport()->drawnPerLevel()[ViewLod::kImpostorLevel] > variants.size());
-        QVERIFY(viewport()->impostorDrawCalls() <= variants.size() + others);
+        // One call per atlas and mipmap level (Impostors::levelFor: the trees of one atlas at
+        // twenty times the distance span one or two levels), far fewer than the trees.
+        QVERIFY(viewport()->impostorDrawCalls() <= 2 * (variants.size() + others));
+        QVERIFY(viewport()->impostorDrawCalls() <
+                viewport()->drawnPerLevel()[ViewLod::kImpostorLevel]);
         viewport()->frameScene();
         viewport()->camera().lookFrom(eye, target);
         viewport()->update();

@@ -582,6 +582,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 d["triangles"] = f.triangles;
                 d["triangles_drawn"] = f.trianglesDrawn;
                 d["trees_per_level"] = f.treesPerLevel;
+                d["triangles_per_level"] = f.trianglesPerLevel;
                 d["motion_trees"] = f.motionTrees;
                 return d;
             },

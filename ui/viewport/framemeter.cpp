@@ -45,6 +45,8 @@ FrameStats FrameMeter::measure(int frames, float orbitDegrees) {
     stats.trianglesDrawn = mViewport.drawnTriangles();
     const auto& levels = mViewport.drawnPerLevel();
     stats.treesPerLevel.assign(levels.begin(), levels.end());
+    const auto& triangles = mViewport.drawnTrianglesPerLevel();
+    stats.trianglesPerLevel.assign(triangles.begin(), triangles.end());
     stats.motionTrees = mViewport.drawnMotion();
     return stats;
 }

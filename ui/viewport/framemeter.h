@@ -12,10 +12,11 @@ class Viewport;
 /// what the viewport drew.
 struct FrameStats {
     double fps = 0, msPerFrame = 0, cpuMsPerFrame = 0, guiCpuMsPerFrame = 0;
-    std::size_t treesDrawn = 0, triangles = 0; ///< triangles: the shown result's (the caller's)
-    std::size_t trianglesDrawn = 0;            ///< in the last frame, at its LOD
-    std::vector<std::size_t> treesPerLevel;    ///< in the last frame, level 0 = full
-    std::size_t motionTrees = 0;               ///< in the last frame, drawn at their motion level
+    std::size_t treesDrawn = 0, triangles = 0;  ///< triangles: the shown result's (the caller's)
+    std::size_t trianglesDrawn = 0;             ///< in the last frame, at its LOD
+    std::vector<std::size_t> treesPerLevel;     ///< in the last frame, level 0 = full
+    std::vector<std::size_t> trianglesPerLevel; ///< the triangles those trees drew
+    std::size_t motionTrees = 0;                ///< in the last frame, drawn at their motion level
 };
 
 /// The frame benchmark of a viewport (`win.measure_frames` in Python, the performance notes):

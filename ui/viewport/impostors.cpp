@@ -71,7 +71,7 @@ GLuint Impostors::upload(const Image& image) {
     gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     // Mipmaps of the whole atlas mix neighbouring views below cell / 8 pixels: the levels stop
     // there (the colour is bled into empty texels, so the levels above keep the edges clean).
-    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3);
+    gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, kMaxLevel);
     gl.glGenerateMipmap(GL_TEXTURE_2D);
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -181,7 +181,17 @@ void Impostors::retain(const std::function<bool(Key)>& keep) {
     }
 }
 
-void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light) {
+int Impostors::levelFor(float radiusPixels) {
+    // The card's square (2 radii) holds kCell texels of a view.
+    const float texelsPerPixel = float(kCell) / std::max(2.0f * radiusPixels, 1e-3f);
+    return std::clamp(int(std::floor(std::log2(std::max(texelsPerPixel, 1.0f)) + 0.5f)), 0,
+                      kMaxLevel);
+}
+
+void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light,
+                      float pixelsPerUnit) {
+    mEye = eye;
+    mPixelsPerUnit = pixelsPerUnit;
     mProgram->bind();
     setUniform(*mProgram, "uViewProj", viewProj);
     setUniform(*mProgram, "uEye", eye);
@@ -191,12 +201,19 @@ void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm
     mProgram->setUniformValue("uColor", 0);
     mProgram->setUniformValue("uNormal", 1);
     mProgram->setUniformValue("uDepth", 2);
-    for (auto& [key, list] : mQueue)
-        list.clear();
+    for (auto& [key, levels] : mQueue)
+        for (std::vector<Instance>& list : levels)
+            list.clear();
 }
 
 void Impostors::draw(Key key, const glm::mat4& transform, float highlight) {
-    if (mCards.count(key)) mQueue[key].push_back({transform, highlight});
+    const auto card = mCards.find(key);
+    if (card == mCards.end()) return;
+    const glm::vec3 centre(transform * glm::vec4(card->second.centre, 1.0f));
+    const float radius = card->second.radius * glm::length(glm::vec3(transform[0]));
+    const float distance = std::max(glm::length(centre - mEye), 1e-3f);
+    mQueue[key][std::size_t(levelFor(radius * mPixelsPerUnit / distance))].push_back(
+        {transform, highlight});
 }
 
 std::size_t Impostors::end() {
@@ -205,32 +222,43 @@ std::size_t Impostors::end() {
     gl.glDisable(GL_CULL_FACE);
     gl.glBindBuffer(GL_ARRAY_BUFFER, mInstances);
     std::size_t calls = 0;
+    // Drop the atlases no longer drawn.
     for (auto it = mQueue.begin(); it != mQueue.end();) {
-        const std::vector<Instance>& list = it->second;
-        const auto card = mCards.find(it->first);
-        if (list.empty() || card == mCards.end()) {
-            it = list.empty() ? mQueue.erase(it) : std::next(it);
-            continue;
-        }
-        const Card& c = card->second;
-        setUniform(*mProgram, "uCentre", c.centre);
-        mProgram->setUniformValue("uRadius", c.radius);
-        setUniform(*mProgram, "uExtent", c.extent);
-        gl.glActiveTexture(GL_TEXTURE2);
-        gl.glBindTexture(GL_TEXTURE_2D, c.depth);
-        gl.glActiveTexture(GL_TEXTURE1);
-        gl.glBindTexture(GL_TEXTURE_2D, c.normal);
-        gl.glActiveTexture(GL_TEXTURE0);
-        gl.glBindTexture(GL_TEXTURE_2D, c.color);
-        // Orphaned each time: the driver need not wait for the previous draw's copy.
-        gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(Instance)), nullptr,
-                        GL_STREAM_DRAW);
-        gl.glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(list.size() * sizeof(Instance)),
-                           list.data());
-        gl.glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(list.size()));
-        ++calls;
-        ++it;
+        const auto& levels = it->second;
+        const bool empty = std::all_of(levels.begin(), levels.end(),
+                                       [](const std::vector<Instance>& l) { return l.empty(); });
+        it = empty || !mCards.count(it->first) ? mQueue.erase(it) : std::next(it);
     }
+    // The finest level first: its cards are the largest, nearest ones, and a card drawn behind
+    // them is cut by the depth test before its fragments are shaded. Each atlas' instances are
+    // nearest first already (the draw list's order).
+    for (std::size_t level = 0; level <= std::size_t(kMaxLevel); ++level)
+        for (const auto& [key, levels] : mQueue) {
+            const std::vector<Instance>& list = levels[level];
+            if (list.empty()) continue;
+            const Card& c = mCards.at(key);
+            setUniform(*mProgram, "uCentre", c.centre);
+            mProgram->setUniformValue("uRadius", c.radius);
+            setUniform(*mProgram, "uExtent", c.extent);
+            mProgram->setUniformValue("uLevel", float(level));
+            // Fewer samples of the march for cards read at levels 2-3, a few dozen pixels high
+            // at most: the ray's whole march moves a few pixels there (measured: no change in
+            // the picture, docs/perf/lods.md).
+            mProgram->setUniformValue("uSteps", level >= 2 ? kFarSteps : kNearSteps);
+            gl.glActiveTexture(GL_TEXTURE2);
+            gl.glBindTexture(GL_TEXTURE_2D, c.depth);
+            gl.glActiveTexture(GL_TEXTURE1);
+            gl.glBindTexture(GL_TEXTURE_2D, c.normal);
+            gl.glActiveTexture(GL_TEXTURE0);
+            gl.glBindTexture(GL_TEXTURE_2D, c.color);
+            // Orphaned each time: the driver need not wait for the previous draw's copy.
+            gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(Instance)), nullptr,
+                            GL_STREAM_DRAW);
+            gl.glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(list.size() * sizeof(Instance)),
+                               list.data());
+            gl.glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(list.size()));
+            ++calls;
+        }
     gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
     for (GLenum unit : {GL_TEXTURE2, GL_TEXTURE1, GL_TEXTURE0}) {
         gl.glActiveTexture(unit);

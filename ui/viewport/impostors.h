@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -25,8 +26,9 @@ namespace sylva::ui {
 /// The farthest level of the viewport's LOD (ui/viewport/viewlod.h): a tree a few dozen pixels
 /// high drawn as one camera-facing card with the engine's baked hemi-octahedral impostor
 /// (mesh::bakeImpostor, the same atlas `sylva-cli lods` writes, docs/lods.md): the three atlas
-/// views around the view direction blended and reprojected through their depth (no popping
-/// while the view turns), lit with the atlas' normals like the meshes. Atlases are baked on a
+/// views around the view direction blended by an ordered dither (no popping while the view
+/// turns), the viewer's ray marched against the chosen view's depth (shaders/impostor.frag),
+/// lit with the atlas' normals like the meshes. Atlases are baked on a
 /// worker thread (request(); the GUI thread only uploads them, collect()) from a coarse mesh
 /// level, and kept per key while a tree draws it: one per variant (its instances and the
 /// unique trees of its species it stands in for share it), or one per tree without a variant.
@@ -66,9 +68,21 @@ public:
     std::size_t size() const { return mCards.size(); }
 
     /// Starts a frame's impostors; draw() queues a tree, end() draws the queue with one
-    /// instanced draw call per atlas (the instances of a variant share theirs).
-    void begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light);
+    /// instanced draw call per atlas and mipmap level (the instances of a variant share
+    /// theirs). \p pixelsPerUnit: the pixels a unit at distance 1 spans on the target drawn
+    /// into (its height over 2 tan(fovY / 2)).
+    void begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light,
+               float pixelsPerUnit);
     void draw(Key key, const glm::mat4& transform, float highlight);
+    /// The atlas' mipmap level the shader reads a card at whose bounding sphere spans
+    /// \p radiusPixels pixels of radius: the level where a texel is about a pixel, rounded,
+    /// 0..kMaxLevel. The shader reads one level per card (a uniform: under Mesa llvmpipe a
+    /// level that varies per pixel costs about as much as three more fetches).
+    static int levelFor(float radiusPixels);
+    /// The finest mipmap level kept beyond the base (the views are cell / 8 at the coarsest).
+    static constexpr int kMaxLevel = 3;
+    /// Samples of the shader's depth march for cards read at levels 0-1 and 2-3.
+    static constexpr int kNearSteps = 4, kFarSteps = 3;
     /// Returns the number of draw calls made.
     std::size_t end();
 
@@ -93,7 +107,9 @@ private:
     QOpenGLFunctions_3_3_Core* mGl = nullptr;
     std::unique_ptr<QOpenGLShaderProgram> mProgram;
     GLuint mVao = 0, mInstances = 0;
-    std::map<Key, std::vector<Instance>> mQueue;
+    std::map<Key, std::array<std::vector<Instance>, kMaxLevel + 1>> mQueue;
+    glm::vec3 mEye{0.0f};
+    float mPixelsPerUnit = 1.0f;
     std::map<Key, Card> mCards;
     struct Baking {
         std::shared_ptr<const void> owner;

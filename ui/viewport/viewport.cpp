@@ -522,6 +522,7 @@ void Viewport::paintGL() {
     mDrawnTrees = 0;
     mDrawnMotion = 0;
     mDrawnPerLevel.fill(0);
+    mDrawnTrianglesPerLevel.fill(0);
     mImpostorDrawCalls = 0;
     mInstancedDrawCalls = 0;
     mDrawnWindTriangles = 0;
@@ -556,7 +557,10 @@ void Viewport::paintGL() {
                                           ? std::min(std::size_t(d.variantLevel), levels.size() - 1)
                                           : levels.size() - 1;
                 entry.mesh = levels[k].mesh.get();
-                ++mDrawnPerLevel[std::size_t(std::min(d.level, ViewLod::kImpostorLevel - 1))];
+                const std::size_t level =
+                    std::size_t(std::min(d.level, ViewLod::kImpostorLevel - 1));
+                ++mDrawnPerLevel[level];
+                mDrawnTrianglesPerLevel[level] += entry.mesh->triangleCount();
                 mDrawnMotion += d.motion ? 1 : 0;
             } else if (d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) {
                 int used = 0;
@@ -565,6 +569,7 @@ void Viewport::paintGL() {
                 // trees' motion levels; the sharp frame that follows draws them at rest.
                 entry.mesh = mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
                 ++mDrawnPerLevel[std::size_t(used)];
+                mDrawnTrianglesPerLevel[std::size_t(used)] += entry.mesh->triangleCount();
                 mDrawnMotion += motion ? 1 : 0;
             }
             drawns.push_back(entry);
@@ -638,7 +643,10 @@ void Viewport::paintGL() {
                 drawTreeMesh(*mPreview[i].mesh, mPreview[i].transform, 0.25f, mPreview[i].windPhase,
                              rotations ? previewBases[i] : -1);
         if (!cards.empty()) {
-            mImpostors.begin(viewProj, mCamera.eye(), light);
+            // The target's height: the reduced one while the view moves.
+            const float targetHeight = float(full.height()) * (mLastReduced ? mMotionScale : 1.0f);
+            mImpostors.begin(viewProj, mCamera.eye(), light,
+                             targetHeight / (2.0f * std::tan(0.5f * mCamera.fovY())));
             for (const TreeDraw* d : cards) {
                 const ViewTree& t = mTrees[d->index];
                 // A unique tree standing in with its variant's atlas: scaled to its height.
@@ -649,6 +657,7 @@ void Viewport::paintGL() {
                 mImpostors.draw(impostorKey(t), model,
                                 t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
                 ++mDrawnPerLevel[ViewLod::kImpostorLevel];
+                mDrawnTrianglesPerLevel[ViewLod::kImpostorLevel] += 2;
                 mDrawnTriangles += 2;
             }
             mImpostorDrawCalls = mImpostors.end();
@@ -753,13 +762,19 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     view.viewProj = viewProj;
     view.eye = mCamera.eye();
     view.fovY = mCamera.fovY();
-    view.viewportHeightPx = double(height()) * devicePixelRatioF();
+    // A frame drawn at reduced resolution while the view moves (a software renderer): each
+    // tree's level, and where the impostor takes over, follow the pixels it spans on the
+    // target drawn into, as at rest on the window: a tree half as many pixels high there is
+    // drawn as if twice as far (an impostor then spans no more target pixels than at rest).
+    const double target = mLastReduced ? double(mMotionScale) : 1.0;
+    view.viewportHeightPx = double(height()) * devicePixelRatioF() * target;
     view.levels = mLod->isEnabled();
-    // A frame at reduced resolution while the view moves draws coarser variant levels too.
+    // Variant levels while the view moves: ViewLod::kMotionFactor times as far as at rest on
+    // the window (the target's scale above is part of it, not on top).
     static const double bias = qEnvironmentVariableIsSet("SYLVA_LOD_BIAS")
                                    ? qEnvironmentVariable("SYLVA_LOD_BIAS").toDouble()
                                    : 1.0;
-    view.variantFactor = (mLastReduced ? ViewLod::kMotionFactor : 1.0) * bias;
+    view.variantFactor = (mLastReduced ? ViewLod::kMotionFactor * target : 1.0) * bias;
     std::vector<InstanceOf> instances(mTrees.size());
     for (std::size_t i = 0; i < mTrees.size(); ++i)
         if (mTrees[i].lod.instance && mTrees[i].lod.variant)

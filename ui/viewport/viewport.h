@@ -182,6 +182,10 @@ public:
     const std::array<std::size_t, ViewLod::kLevels>& drawnPerLevel() const {
         return mDrawnPerLevel;
     }
+    /// Triangles the last frame's trees drew at each level of detail (impostors: 2 each).
+    const std::array<std::size_t, ViewLod::kLevels>& drawnTrianglesPerLevel() const {
+        return mDrawnTrianglesPerLevel;
+    }
     /// Instanced draw calls the last frame's impostors took (one per atlas in view).
     std::size_t impostorDrawCalls() const { return mImpostorDrawCalls; }
     /// Instanced draw calls the last frame's variant instances took (one per variant level in
@@ -428,6 +432,7 @@ private:
     std::size_t mDrawnTrees = 0;
     std::size_t mDrawnTriangles = 0;
     std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
+    std::array<std::size_t, ViewLod::kLevels> mDrawnTrianglesPerLevel{};
     std::size_t mImpostorDrawCalls = 0;
     std::size_t mInstancedDrawCalls = 0;
     std::vector<TreeDraw> mLastDrawList;

@@ -41,5 +41,5 @@ for label in ("project camera", "project camera again"):
     print(f"{label}: {f['fps']:.1f} fps, {f['ms_per_frame']:.1f} ms/frame, CPU "
           f"{f['cpu_ms_per_frame']:.1f} ms (GUI {f['gui_cpu_ms_per_frame']:.1f}), "
           f"{f['trees_drawn']} trees drawn, {f.get('triangles_drawn')} triangles, per level "
-          f"{f.get('trees_per_level')}; "
+          f"{f.get('trees_per_level')} (triangles {f.get('triangles_per_level')}); "
           f"{memory()}")
