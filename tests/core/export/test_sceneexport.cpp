@@ -106,6 +106,23 @@ void checkSceneReadBack(const aiScene* s, const Fixture& f, bool sharedMeshes) {
     EXPECT_EQ(leafFaces, copies * submeshTriangles(f.a, "leaf") + submeshTriangles(f.b, "leaf"));
 }
 
+/// Runs the Python \p script (it exits 0 when its checks hold) in Blender in the background from
+/// \p dir, and fails the test with Blender's output when it does not.
+void expectBlenderPasses(const std::filesystem::path& dir, const std::string& script) {
+    {
+        std::ofstream out(dir / "check.py");
+        out << script;
+    }
+    const std::string cmd = "blender -b --python-exit-code 1 --python " +
+                            (dir / "check.py").string() + " >" + (dir / "blender.log").string() +
+                            " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::ifstream in(dir / "blender.log");
+    std::stringstream log;
+    log << in.rdbuf();
+    EXPECT_EQ(rc, 0) << "blender output:\n" << log.str();
+}
+
 } // namespace
 
 TEST(SceneExport, GlbReadsBackWithSharedMeshes) {
@@ -327,18 +344,7 @@ TEST(SceneExport, BlenderReadsTheSameLeafTintsFromGlbFbxAndObj) {
         std::to_string(darkest / 255.0) +
         ")<0.01\n"
         "sys.exit(0 if ok else 1)\n";
-    {
-        std::ofstream out(dir / "check.py");
-        out << script;
-    }
-    const std::string cmd = "blender -b --python-exit-code 1 --python " +
-                            (dir / "check.py").string() + " >" + (dir / "blender.log").string() +
-                            " 2>&1";
-    const int rc = std::system(cmd.c_str());
-    std::ifstream in(dir / "blender.log");
-    std::stringstream log;
-    log << in.rdbuf();
-    EXPECT_EQ(rc, 0) << "blender output:\n" << log.str();
+    expectBlenderPasses(dir, script);
     std::filesystem::remove_all(dir);
 }
 
@@ -586,21 +592,6 @@ TEST(SceneExport, BlenderImportsObjGlbFbxAndCompactObj) {
                                std::to_string(f.a.triangleCount()) +
                                ")]\n"
                                "sys.exit(0 if ok else 1)\n";
-    {
-        std::ofstream out(dir / "check.py");
-        out << script;
-    }
-    const std::string cmd = "blender -b --python-exit-code 1 --python " +
-                            (dir / "check.py").string() + " >" + (dir / "blender.log").string() +
-                            " 2>&1";
-    const int rc = std::system(cmd.c_str());
-    std::string log;
-    {
-        std::ifstream in(dir / "blender.log");
-        std::stringstream ss;
-        ss << in.rdbuf();
-        log = ss.str();
-    }
-    EXPECT_EQ(rc, 0) << "blender output:\n" << log;
+    expectBlenderPasses(dir, script);
     std::filesystem::remove_all(dir);
 }
