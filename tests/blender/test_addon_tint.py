@@ -10,13 +10,11 @@ sys.dont_write_bytecode = True  # keep the source tree clean
 import bpy  # noqa: E402
 import numpy as np  # noqa: E402
 
-addon_dir, presets = sys.argv[sys.argv.index("--") + 1:][:2]
-sys.path.insert(0, addon_dir)
-import sylva_blender  # noqa: E402
-from sylva_blender import build  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from addonsession import start_addon  # noqa: E402
 
-bpy.ops.wm.read_factory_settings(use_empty=True)
-sylva_blender.register()
+sylva_blender, presets = start_addon()
+from sylva_blender import build  # noqa: E402
 scene = bpy.context.scene
 s = scene.sylva
 s.tree_file = os.path.join(presets, "english-oak.json")

@@ -9,12 +9,10 @@ sys.dont_write_bytecode = True  # keep the source tree clean
 import bpy  # noqa: E402
 import numpy as np  # noqa: E402
 
-addon_dir, presets = sys.argv[sys.argv.index("--") + 1:][:2]
-sys.path.insert(0, addon_dir)
-import sylva_blender  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from addonsession import start_addon  # noqa: E402
 
-bpy.ops.wm.read_factory_settings(use_empty=True)
-sylva_blender.register()
+sylva_blender, presets = start_addon()
 scene = bpy.context.scene
 scene.cursor.location = (3.0, -2.0, 0.0)
 s = scene.sylva
