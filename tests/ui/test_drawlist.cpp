@@ -110,6 +110,34 @@ private Q_SLOTS:
         QCOMPARE(list[1].level, 0);
     }
 
+    // While the view moves into a half-size target the levels follow that target's pixels,
+    // but the impostor takes over where it does at rest: nearer, the coarsest mesh.
+    void movingFramesKeepTheRestImpostorSwitch() {
+        DrawListView moving = view();
+        moving.viewportHeightPx = 0.5 * kPixels;
+        moving.restHeightPx = kPixels;
+        const auto levelAt = [](double distance, double pixels) {
+            return ViewLod::levelFor(
+                ViewLod::equivalentHeights(distance, 10.0, double(kFov), pixels));
+        };
+        int checked = 0;
+        for (float z = -20.0f; z > -3000.0f; z *= 1.05f) {
+            const std::vector<TreeDraw> list = buildDrawList(moving, {true}, {tree(0, z)});
+            QCOMPARE(list.size(), std::size_t(1));
+            const double d = double(list[0].distance);
+            const int reduced = levelAt(d, 0.5 * kPixels), rest = levelAt(d, kPixels);
+            if (reduced != ViewLod::kImpostorLevel) {
+                QCOMPARE(list[0].level, reduced); // the target's pixels
+            } else if (rest != ViewLod::kImpostorLevel) {
+                QCOMPARE(list[0].level, ViewLod::kImpostorLevel - 1); // a coarse mesh, not a card
+                ++checked;
+            } else {
+                QCOMPARE(list[0].level, ViewLod::kImpostorLevel);
+            }
+        }
+        QVERIFY(checked > 0); // the band between the two switches was crossed
+    }
+
     void treesWithoutABoxAreDrawnFirstAtFullDetail() {
         // The trees' boxes lag behind (fewer than trees): drawn, distance 0, level 0.
         const std::vector<TreeDraw> list = buildDrawList(view(), {true, true, false}, {tree(0, 0)});

@@ -56,10 +56,17 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
             if (!intersectsFrustum(planes, b)) continue;
             d.distance = glm::length(0.5f * (b.lo + b.hi) - view.eye);
             // The level of detail follows the tree's height on screen (ui/viewport/viewlod.h).
-            if (view.levels)
-                d.level = ViewLod::levelFor(
-                    ViewLod::equivalentHeights(double(d.distance), double(b.hi.y - b.lo.y),
-                                               double(view.fovY), view.viewportHeightPx));
+            if (view.levels) {
+                const auto levelOn = [&](double heightPx) {
+                    return ViewLod::levelFor(ViewLod::equivalentHeights(
+                        double(d.distance), double(b.hi.y - b.lo.y), double(view.fovY), heightPx));
+                };
+                d.level = levelOn(view.viewportHeightPx);
+                if (d.level == ViewLod::kImpostorLevel &&
+                    view.restHeightPx > view.viewportHeightPx &&
+                    levelOn(view.restHeightPx) != ViewLod::kImpostorLevel)
+                    d.level = ViewLod::kImpostorLevel - 1;
+            }
             if (i < instances.size() && instances[i].variant &&
                 d.level != ViewLod::kImpostorLevel) {
                 const InstanceOf& of = instances[i];

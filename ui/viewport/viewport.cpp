@@ -768,6 +768,7 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     // drawn as if twice as far (an impostor then spans no more target pixels than at rest).
     const double target = mLastReduced ? double(mMotionScale) : 1.0;
     view.viewportHeightPx = double(height()) * devicePixelRatioF() * target;
+    view.restHeightPx = double(height()) * devicePixelRatioF();
     view.levels = mLod->isEnabled();
     // Variant levels while the view moves: ViewLod::kMotionFactor times as far as at rest on
     // the window (the target's scale above is part of it, not on top).
