@@ -106,6 +106,18 @@ void checkSceneReadBack(const aiScene* s, const Fixture& f, bool sharedMeshes) {
     EXPECT_EQ(leafFaces, copies * submeshTriangles(f.a, "leaf") + submeshTriangles(f.b, "leaf"));
 }
 
+/// A small tree whose leaf cards vary by up to 10° in hue, 0.2 in saturation and 0.25 in
+/// brightness (the leaf tint's summer spread).
+mesh::Mesh tintedTreeMesh() {
+    lsys::TurtleSettings t;
+    t.angleDegrees = 30;
+    t.width = 0.3;
+    const auto s = lsys::interpret(sylva::testing::makeWord(sylva::testing::testTreeWord(3)), t);
+    mesh::TreeMeshSettings settings;
+    settings.leafTint.summer = {10.0, 0.2, 0.25};
+    return mesh::buildTreeMesh(s, settings);
+}
+
 /// Runs the Python \p script (it exits 0 when its checks hold) in Blender in the background from
 /// \p dir, and fails the test with Blender's output when it does not.
 void expectBlenderPasses(const std::filesystem::path& dir, const std::string& script) {
@@ -228,13 +240,7 @@ TEST(SceneExport, ObjAndMtlReadBack) {
 TEST(SceneExport, LeafTintsTravelAsVertexColours) {
     // glTF (Assimp's glb2 as the LOD export writes it) carries them linear, FBX and OBJ as
     // sRGB, the convention of their readers: read back and linearized, each is a card's colour.
-    lsys::TurtleSettings t;
-    t.angleDegrees = 30;
-    t.width = 0.3;
-    const auto s = lsys::interpret(sylva::testing::makeWord(sylva::testing::testTreeWord(3)), t);
-    mesh::TreeMeshSettings settings;
-    settings.leafTint.summer = {10.0, 0.2, 0.25};
-    const mesh::Mesh m = mesh::buildTreeMesh(s, settings);
+    const mesh::Mesh m = tintedTreeMesh();
     ASSERT_EQ(m.colors.size(), m.positions.size());
     std::set<std::array<int, 3>> cards;
     for (const glm::u8vec4& c : m.colors)
@@ -296,13 +302,7 @@ TEST(SceneExport, LeafTintsTravelAsVertexColours) {
 TEST(SceneExport, BlenderReadsTheSameLeafTintsFromGlbFbxAndObj) {
     if (std::system("command -v blender >/dev/null 2>&1") != 0)
         GTEST_SKIP() << "blender not installed: Blender's reading of vertex colours not checked";
-    lsys::TurtleSettings t;
-    t.angleDegrees = 30;
-    t.width = 0.3;
-    const auto s = lsys::interpret(sylva::testing::makeWord(sylva::testing::testTreeWord(3)), t);
-    mesh::TreeMeshSettings settings;
-    settings.leafTint.summer = {10.0, 0.2, 0.25};
-    const auto tree = std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(s, settings));
+    const auto tree = std::make_shared<const mesh::Mesh>(tintedTreeMesh());
     // The darkest green of a card, linear.
     int darkest = 255;
     for (const glm::u8vec4& c : tree->colors)
