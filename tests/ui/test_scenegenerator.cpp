@@ -120,6 +120,15 @@ private Q_SLOTS:
         // The same meshes, shared: the viewport keeps their GPU buffers.
         for (std::size_t i = 0; i < first.trees.size(); ++i)
             QCOMPARE(second.trees[i].mesh.get(), first.trees[i].mesh.get());
+        // And the same variants: the viewport keys their levels' buffers and their impostor
+        // atlas by them (a new ViewVariant each time re-baked every atlas after every edit).
+        int variants = 0;
+        for (std::size_t i = 0; i < first.trees.size(); ++i)
+            if (first.trees[i].lod.variant) {
+                QCOMPARE(second.trees[i].lod.variant.get(), first.trees[i].lod.variant.get());
+                ++variants;
+            }
+        QVERIFY(variants > 0);
         project.instances[0].seed += 1;
         const GenerationResult third = generateProject(project, path, &caches);
         QCOMPARE(third.stats.at("regrown"), 1.0);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,6 +61,14 @@ float meshHeight(const mesh::Mesh& m) {
 /// forest made none) and heights.
 std::vector<std::shared_ptr<const ViewVariant>>
 viewVariants(const std::vector<forest::ForestVariant>& variants) {
+    // The views made last time, by their full mesh: a regeneration that reuses a variant (the
+    // forest's tree cache gives back the same meshes) gives back the same ViewVariant, so the
+    // viewport keeps its buffers and impostor atlas (keyed by it) instead of baking them again
+    // after every edit. Weak: a variant no generation holds any more is not kept alive.
+    static std::mutex made;
+    static std::map<const mesh::Mesh*, std::weak_ptr<const ViewVariant>> before;
+    const std::lock_guard<std::mutex> lock(made);
+    std::erase_if(before, [](const auto& kept) { return kept.second.expired(); });
     std::vector<std::shared_ptr<const ViewVariant>> out;
     for (const forest::ForestVariant& v : variants) {
         auto view = std::make_shared<ViewVariant>();
@@ -69,11 +79,22 @@ viewVariants(const std::vector<forest::ForestVariant>& variants) {
             out.push_back(nullptr);
             continue;
         }
+        const mesh::Mesh* full = view->levels.front().mesh.get();
+        if (auto kept = before[full].lock();
+            kept && kept->species == view->species && kept->levels.size() == view->levels.size() &&
+            std::equal(kept->levels.begin(), kept->levels.end(), view->levels.begin(),
+                       [](const mesh::DistanceLevel& a, const mesh::DistanceLevel& b) {
+                           return a.mesh == b.mesh && a.distance == b.distance;
+                       })) {
+            out.push_back(std::move(kept));
+            continue;
+        }
         view->height = meshHeight(*view->levels.front().mesh);
         if (v.meshSettings) {
             view->referenceHeightPx = v.meshSettings->lod.screenHeightPx;
             view->referenceFovYDegrees = v.meshSettings->lod.fovYDegrees;
         }
+        before[full] = view;
         out.push_back(std::move(view));
     }
     return out;
