@@ -195,10 +195,10 @@ int Impostors::levelFor(float radiusPixels) {
 }
 
 void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, float pixelsPerUnit,
-                      int flatFromLevel) {
+                      bool moving) {
     mEye = eye;
     mPixelsPerUnit = pixelsPerUnit;
-    mFlatFromLevel = std::clamp(flatFromLevel, 0, kMaxLevel + 1);
+    mMoving = moving;
     for (QOpenGLShaderProgram* program : {mProgram.get(), mFlatProgram.get()}) {
         program->bind();
         setUniform(*program, "uViewProj", viewProj);
@@ -207,6 +207,7 @@ void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, float pix
         program->setUniformValue("uCell", kCell);
         program->setUniformValue("uLit", 0);
         program->setUniformValue("uDepth", 2);
+        program->setUniformValue("uOneView", program == mFlatProgram.get() && moving);
     }
     for (auto& [key, levels] : mQueue)
         for (std::vector<Instance>& list : levels)
@@ -245,10 +246,10 @@ std::size_t Impostors::end() {
             const std::vector<Instance>& list = levels[level];
             if (list.empty()) continue;
             const Card& c = mCards.at(key);
-            // Small cards read the one view plane without the march (shaders/impostor.frag's
-            // FLAT): one fetch a pixel.
+            // Small cards, and every card while the view moves, read the view's plane without
+            // the march (shaders/impostor.frag's FLAT): one fetch a pixel.
             QOpenGLShaderProgram* program =
-                int(level) >= mFlatFromLevel ? mFlatProgram.get() : mProgram.get();
+                mMoving || int(level) >= kFlatFromLevel ? mFlatProgram.get() : mProgram.get();
             if (program != bound) {
                 program->bind();
                 bound = program;

@@ -70,12 +70,13 @@ public:
     /// Starts a frame's impostors; draw() queues a tree, end() draws the queue with one
     /// instanced draw call per atlas and mipmap level (the instances of a variant share
     /// theirs). \p pixelsPerUnit: the pixels a unit at distance 1 spans on the target drawn
-    /// into (its height over 2 tan(fovY / 2)). Cards read at mipmap level \p flatFromLevel or
-    /// coarser are drawn without the depth march (one fetch a pixel: the march moves their
-    /// picture by about a pixel, kFlatFromLevel; kMaxLevel + 1: every card marched).
-    /// The lighting is the atlas' own (litImpostorAtlas(): the camera's key light).
+    /// into (its height over 2 tan(fovY / 2)). The lighting is the atlas' own
+    /// (litImpostorAtlas(): the camera's key light). \p moving: a frame drawn while the view
+    /// moves, where every card is drawn without the depth march from its heaviest view alone
+    /// (shaders/impostor.frag's FLAT and uOneView: one fetch a pixel); at rest, cards read at
+    /// kFlatFromLevel or coarser skip the march (the views still dithered).
     void begin(const glm::mat4& viewProj, const glm::vec3& eye, float pixelsPerUnit,
-               int flatFromLevel = kFlatFromLevel);
+               bool moving = false);
     void draw(Key key, const glm::mat4& transform, float highlight);
     /// The atlas' mipmap level the shader reads a card at whose bounding sphere spans
     /// \p radiusPixels pixels of radius: the level where a texel is about a pixel, rounded,
@@ -86,9 +87,8 @@ public:
     static constexpr int kMaxLevel = 3;
     /// Samples of the shader's depth march for cards read at levels 0-1 and 2-3.
     static constexpr int kNearSteps = 4, kFarSteps = 3;
-    /// The finest mipmap level drawn without the march in a sharp frame (a card of a radius of
-    /// about kCell / 8 pixels: the views' parallax there is about a pixel, docs/perf/lods.md);
-    /// while the view moves, the viewport passes one level finer.
+    /// The finest mipmap level drawn without the march at rest (a card of a radius of about
+    /// kCell / 8 pixels: the views' parallax there is about a pixel, docs/perf/lods.md).
     static constexpr int kFlatFromLevel = 2;
     /// Returns the number of draw calls made.
     std::size_t end();
@@ -115,7 +115,7 @@ private:
     QOpenGLFunctions_3_3_Core* mGl = nullptr;
     std::unique_ptr<QOpenGLShaderProgram> mProgram;     ///< marched
     std::unique_ptr<QOpenGLShaderProgram> mFlatProgram; ///< one fetch (FLAT)
-    int mFlatFromLevel = kMaxLevel + 1;
+    bool mMoving = false;
     GLuint mVao = 0, mInstances = 0;
     std::map<Key, std::array<std::vector<Instance>, kMaxLevel + 1>> mQueue;
     glm::vec3 mEye{0.0f};

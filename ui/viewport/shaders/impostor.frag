@@ -9,9 +9,9 @@
 // pixel: one blurred fetch that cuts out the empty part of the card, then ONE of the three
 // views, chosen by an ordered dither against the weights (on average the blend, a third of
 // the fetches; measured in docs/perf/lods.md), uSteps depth fetches of the march and the lit
-// colour. With FLAT defined (cards a few dozen pixels high, Impostors::kFlatFromLevel), no
-// march: the chosen view's plane through the centre, one fetch a pixel (the march would move
-// the picture by about a pixel there). Every fetch reads the card's one mipmap level (uLevel,
+// colour. With FLAT defined (cards a few dozen pixels high, Impostors::kFlatFromLevel, and every
+// card while the view moves), no march: the chosen view's plane through the centre, one fetch
+// a pixel (the march would move the picture by about a pixel there). Every fetch reads the card's one mipmap level (uLevel,
 // a uniform): neighbouring pixels may take other views and hits, so the level cannot come
 // from their texture coordinates, and under llvmpipe a level that varies per pixel costs
 // about as much as three more fetches.
@@ -26,6 +26,11 @@ uniform int uGrid;
 uniform int uCell;
 uniform float uLevel; // Impostors::levelFor(): about a texel a pixel
 uniform int uSteps;   // samples of the march, 2 or more (Impostors::kNearSteps, kFarSteps)
+// The heaviest view alone, no dither (a frame drawn while the view moves, FLAT): without the
+// march the three views' pictures of a trunk lie a pixel or two apart, and dithered between
+// them it would read as a dotted line; one view keeps it whole and may step by about that
+// much when another view becomes the heaviest.
+uniform bool uOneView;
 out vec4 fragColor;
 
 void main() {
@@ -44,7 +49,7 @@ void main() {
     int fine = 2 * ((q.x ^ q.y) & 1) + (q.y & 1);
     int coarse = 2 * (((q.x >> 1) ^ (q.y >> 1)) & 1) + ((q.y >> 1) & 1);
     float r = (float(4 * fine + coarse) + 0.5) / 16.0;
-    bool first = r < vWeight.x, second = !first && r < vWeight.x + vWeight.y;
+    bool first = uOneView || r < vWeight.x, second = !first && r < vWeight.x + vWeight.y;
     vec2 t0 = first ? vT0[0] : second ? vT0[1] : vT0[2];
     vec2 cell = first ? vCell[0] : second ? vCell[1] : vCell[2];
 
