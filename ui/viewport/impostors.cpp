@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/occlusion.h"
 #include "ui/viewport/shaderprogram.h"
 
 namespace sylva::ui {
@@ -102,12 +103,37 @@ void Impostors::request(Key key, std::shared_ptr<const void> owner,
             try {
                 baked.impostor = mesh::bakeImpostor(*source, materials, settings);
                 baked.extent = cardExtent(baked.impostor);
+                baked.occlusion = crownOcclusion(*source);
             } catch (...) {
                 baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
             }
             return baked;
         });
     mBaking.emplace(key, std::move(job));
+}
+
+float Impostors::crownOcclusion(const mesh::Mesh& m) {
+    const std::vector<float> occlusion = mesh::crownOcclusion(m);
+    const auto meanOver = [&](bool leavesOnly) {
+        double sum = 0.0;
+        std::size_t n = 0;
+        const auto add = [&](std::size_t first, std::size_t count) {
+            for (std::size_t i = first; i < first + count && i < m.indices.size(); ++i)
+                if (m.indices[i] < occlusion.size()) {
+                    sum += double(occlusion[m.indices[i]]);
+                    ++n;
+                }
+        };
+        if (!leavesOnly)
+            add(0, m.indices.size());
+        else
+            for (const mesh::Submesh& s : m.submeshes)
+                if (s.material == "leaf") add(s.firstIndex, s.indexCount);
+        return n > 0 ? float(sum / double(n)) : -1.0f;
+    };
+    const float leaves = meanOver(true);
+    const float all = leaves >= 0.0f ? leaves : meanOver(false);
+    return all >= 0.0f ? std::clamp(all, 0.0f, 1.0f) : 1.0f;
 }
 
 glm::vec3 Impostors::cardExtent(const mesh::Impostor& imp) {
@@ -152,6 +178,7 @@ std::size_t Impostors::collect() {
             card.centre = imp.centre;
             card.radius = imp.radius;
             card.extent = baked.extent;
+            card.occlusion = baked.occlusion;
             card.color = upload(imp.color);
             card.normal = upload(imp.normal);
             card.depth = upload(imp.depth);
@@ -241,6 +268,7 @@ std::size_t Impostors::end() {
             mProgram->setUniformValue("uRadius", c.radius);
             setUniform(*mProgram, "uExtent", c.extent);
             mProgram->setUniformValue("uLevel", float(level));
+            mProgram->setUniformValue("uOcclusion", c.occlusion);
             // Fewer samples of the march for cards read at levels 2-3, a few dozen pixels high
             // at most: the ray's whole march moves a few pixels there (measured: no change in
             // the picture, docs/perf/lods.md).

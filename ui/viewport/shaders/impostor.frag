@@ -4,7 +4,7 @@
 // barycentric weights over the grid's triangle (the picture changes continuously while the
 // view turns), the viewer's ray marched against the chosen view's depth map, lit like the
 // meshes (mesh.frag: key light and hemisphere ambient, gamma 2) with the atlas' normals; the
-// crown's occlusion, which the meshes carry per vertex, is a constant here.
+// crown's occlusion, which the meshes carry per vertex, is one value per card here.
 // Everything that depends on the view direction alone is the card's (impostor.vert). Per
 // pixel: one blurred fetch that cuts out the empty part of the card, then ONE of the three
 // views, chosen by an ordered dither against the weights (on average the blend, a third of
@@ -27,6 +27,10 @@ uniform int uCell;
 uniform float uLevel; // Impostors::levelFor(): about a texel a pixel
 uniform int uSteps;   // samples of the march, 2 or more (Impostors::kNearSteps, kFarSteps)
 uniform vec3 uLightDir;
+// The crown's occlusion the meshes carry per vertex, as its mean over the source mesh's leaves
+// (Impostors::crownOcclusion). A constant 0.42 made a tree's impostor 0.50-0.68 times as bright
+// as its own mesh from the same view (tests/ui/test_viewportimpostor.cpp, docs/lods.md).
+uniform float uOcclusion;
 out vec4 fragColor;
 
 void main() {
@@ -83,11 +87,7 @@ void main() {
     vec3 sky = vec3(0.62, 0.70, 0.85);
     vec3 ground = vec3(0.30, 0.25, 0.20);
     vec3 ambient = mix(ground, sky, 0.5 * n.y + 0.5);
-    // The crown's occlusion the meshes carry per vertex, as one constant: 0.42 makes a forest of
-    // impostors as bright as the same trees' meshes at that size (mean leaf colour of the
-    // 1,000-tree benchmark from four times its camera's distance, both ways: 0.75 was 1.6
-    // times brighter, a visible step where the meshes hand over).
-    const float ao = 0.42;
+    float ao = uOcclusion;
     vec3 color = albedo * (0.55 * ambient * ao + 1.35 * vec3(1.0, 0.96, 0.90) * diffuse *
                                                      (0.4 + 0.6 * ao));
     color = mix(color, vec3(1.0, 0.45, 0.05), vHighlight);
