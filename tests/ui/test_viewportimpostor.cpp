@@ -445,9 +445,11 @@ private Q_SLOTS:
                   qPrintable(species), kSizes[s], worstIou, worst, sumIou / kViews, sumRaw / kViews,
                   worstColour, sumColour / kViews, worstBlock, sumBlock / kViews, minBright,
                   maxBright, sumBright / kViews);
-            // The brightness: the impostor's card is lit with its crown's mean occlusion
-            // (Impostors::crownOcclusion); the constant 0.42 before measured 0.50-0.68 here.
-            QVERIFY2(sumBright / kViews > 0.8 && sumBright / kViews < 1.2,
+            // The brightness: the impostor's atlas is lit with its crown's mean occlusion
+            // (Impostors::crownOcclusion) and the leaves' translucency; the constant 0.42 before
+            // measured 0.50-0.68 here, now 0.80-0.99 (the least: the birch's sparse crown at
+            // 56 px).
+            QVERIFY2(sumBright / kViews > 0.75 && sumBright / kViews < 1.2,
                      qPrintable(QString::number(sumBright / kViews)));
             QVERIFY2(minBright > 0.65 && maxBright < 1.35,
                      qPrintable(QStringLiteral("%1-%2").arg(minBright).arg(maxBright)));

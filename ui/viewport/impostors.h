@@ -63,7 +63,7 @@ public:
     /// tree is narrower than high: most of the square card is empty, and a software renderer
     /// pays for every pixel of it), with a margin for the views' blending. (1, -1, 1) at most.
     static glm::vec3 cardExtent(const mesh::Impostor& imp);
-    /// The crown occlusion the card is lit with (the shader's uOcclusion): the mean of
+    /// The crown occlusion the card's atlas is lit with (litImpostorAtlas): the mean of
     /// mesh::crownOcclusion over the corners of \p m's leaf triangles (all its triangles when
     /// it has no leaves), the value the viewport's mesh shader dims the same leaves by per
     /// vertex. Measured against the tree's full mesh (tests/ui/test_viewportimpostor.cpp,
@@ -76,9 +76,12 @@ public:
     /// Starts a frame's impostors; draw() queues a tree, end() draws the queue with one
     /// instanced draw call per atlas and mipmap level (the instances of a variant share
     /// theirs). \p pixelsPerUnit: the pixels a unit at distance 1 spans on the target drawn
-    /// into (its height over 2 tan(fovY / 2)).
-    void begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light,
-               float pixelsPerUnit);
+    /// into (its height over 2 tan(fovY / 2)). Cards read at mipmap level \p flatFromLevel or
+    /// coarser are drawn without the depth march (one fetch a pixel: the march moves their
+    /// picture by about a pixel, kFlatFromLevel; kMaxLevel + 1: every card marched).
+    /// The lighting is the atlas' own (litImpostorAtlas(): the camera's key light).
+    void begin(const glm::mat4& viewProj, const glm::vec3& eye, float pixelsPerUnit,
+               int flatFromLevel = kFlatFromLevel);
     void draw(Key key, const glm::mat4& transform, float highlight);
     /// The atlas' mipmap level the shader reads a card at whose bounding sphere spans
     /// \p radiusPixels pixels of radius: the level where a texel is about a pixel, rounded,
@@ -89,23 +92,26 @@ public:
     static constexpr int kMaxLevel = 3;
     /// Samples of the shader's depth march for cards read at levels 0-1 and 2-3.
     static constexpr int kNearSteps = 4, kFarSteps = 3;
+    /// The finest mipmap level drawn without the march in a sharp frame (a card of a radius of
+    /// about kCell / 8 pixels: the views' parallax there is about a pixel, docs/perf/lods.md);
+    /// while the view moves, the viewport passes one level finer.
+    static constexpr int kFlatFromLevel = 2;
     /// Returns the number of draw calls made.
     std::size_t end();
 
 private:
     struct Card {
         std::shared_ptr<const void> owner; ///< keeps the key alive
-        GLuint color = 0, normal = 0, depth = 0;
+        GLuint lit = 0, depth = 0;         ///< litImpostorAtlas() and the depth map
         glm::vec3 centre{0.0f};
         float radius = 1.0f;
         /// The part of the card any view covers (cardExtent()).
         glm::vec3 extent{1.0f, -1.0f, 1.0f};
-        float occlusion = 1.0f; ///< crownOcclusion()
     };
     struct Baked {
         mesh::Impostor impostor;
+        Image lit; ///< litImpostorAtlas()
         glm::vec3 extent{1.0f, -1.0f, 1.0f};
-        float occlusion = 1.0f;
     };
     struct Instance {
         glm::mat4 model;
@@ -113,7 +119,9 @@ private:
     };
     GLuint upload(const Image& image);
     QOpenGLFunctions_3_3_Core* mGl = nullptr;
-    std::unique_ptr<QOpenGLShaderProgram> mProgram;
+    std::unique_ptr<QOpenGLShaderProgram> mProgram;     ///< marched
+    std::unique_ptr<QOpenGLShaderProgram> mFlatProgram; ///< one fetch (FLAT)
+    int mFlatFromLevel = kMaxLevel + 1;
     GLuint mVao = 0, mInstances = 0;
     std::map<Key, std::array<std::vector<Instance>, kMaxLevel + 1>> mQueue;
     glm::vec3 mEye{0.0f};

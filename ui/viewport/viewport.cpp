@@ -19,6 +19,7 @@
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "ui/generation/windvertexdata.h"
+#include "ui/viewport/impostorlighting.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewportsurface.h"
 
@@ -476,10 +477,9 @@ void Viewport::paintGL() {
     if (!mGrid.isBuilt()) mGrid.build(mCamera.sceneRadius(), mBoundsLo, mBoundsHi);
 
     const glm::mat4 viewProj = mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix();
-    // A key light that follows the camera (above, to the left, from the front) keeps the tree
-    // readable from every side.
-    const glm::vec3 light =
-        glm::normalize(-0.5f * mCamera.forward() + 0.8f * mCamera.up() - 0.6f * mCamera.right());
+    // A key light that follows the camera keeps the tree readable from every side (the
+    // impostors' atlases have it baked in: ui/viewport/impostorlighting.h).
+    const glm::vec3 light = cameraKeyLight(mCamera.forward(), mCamera.up(), mCamera.right());
     // While the view moves, a software renderer draws fewer pixels (motionScale()); the sharp
     // frame follows when it rests.
     const bool moving = viewProj != mLastViewProj || mTransformsMoved;
@@ -645,8 +645,9 @@ void Viewport::paintGL() {
         if (!cards.empty()) {
             // The target's height: the reduced one while the view moves.
             const float targetHeight = float(full.height()) * (mLastReduced ? mMotionScale : 1.0f);
-            mImpostors.begin(viewProj, mCamera.eye(), light,
-                             targetHeight / (2.0f * std::tan(0.5f * mCamera.fovY())));
+            mImpostors.begin(
+                viewProj, mCamera.eye(), targetHeight / (2.0f * std::tan(0.5f * mCamera.fovY())),
+                mLastReduced ? Impostors::kFlatFromLevel - 1 : Impostors::kFlatFromLevel);
             for (const TreeDraw* d : cards) {
                 const ViewTree& t = mTrees[d->index];
                 // A unique tree standing in with its variant's atlas: scaled to its height.
