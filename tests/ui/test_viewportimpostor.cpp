@@ -9,7 +9,7 @@
 // ViewLod::levelHeights(kImpostorLevel)) and 200 px (a card read at mip level 0, magnified:
 // forced here with SYLVA_IMPOSTOR_HEIGHTS, as a tree far larger than where it hands over).
 // The viewport is 320 x 864 px (the field of view's 40 degrees over 864 px: about the
-// perspective of an editor window, where the tree fills a tenth to a quarter of the height; the
+// perspective of an editor window, where the tree fills a fifteenth to a quarter of its height; the
 // impostor is orthographic per tree, so a smaller window would count perspective against it).
 // No multisampling (what the editor chooses under a software renderer).
 //
