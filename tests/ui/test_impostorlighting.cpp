@@ -60,7 +60,7 @@ class TestImpostorLighting : public QObject {
 private Q_SLOTS:
     void keepsCoverageAndSize() {
         const mesh::Impostor imp = syntheticAtlas(4, 8, [](const glm::vec3& v) { return v; });
-        const Image lit = ui::litImpostorAtlas(imp);
+        const Image lit = ui::litImpostorAtlas(imp, 0.8f);
         QCOMPARE(lit.width, imp.color.width);
         QCOMPARE(lit.height, imp.color.height);
         QCOMPARE(lit.channels, 4);
@@ -85,9 +85,9 @@ private Q_SLOTS:
             const glm::vec3 side = glm::normalize(glm::cross(l, glm::vec3(0.0f, 1.0f, 0.0f)));
             return 0.5f * l + 0.866f * side;
         });
-        const Image litToward = ui::litImpostorAtlas(toward);
-        const Image litAway = ui::litImpostorAtlas(away);
-        const Image litAside = ui::litImpostorAtlas(aside);
+        const Image litToward = ui::litImpostorAtlas(toward, 0.8f);
+        const Image litAway = ui::litImpostorAtlas(away, 0.8f);
+        const Image litAside = ui::litImpostorAtlas(aside, 0.8f);
         int checked = 0;
         for (int j = 0; j < grid; ++j)
             for (int i = 0; i < grid; ++i) {
@@ -110,20 +110,21 @@ private Q_SLOTS:
         QVERIFY(checked >= grid * grid - 2);
     }
 
-    // The mesh shader's formula (shaders/mesh.frag, without per-vertex occlusion): a grey
-    // albedo of 128 lit head-on by the key light.
+    // The mesh shader's formula (shaders/mesh.frag, the crown's occlusion 0.8 for the per-vertex
+    // one): a grey albedo of 128 lit head-on by the key light.
     void matchesTheMeshShadersLighting() {
         const mesh::Impostor imp =
             syntheticAtlas(4, 4, [](const glm::vec3& v) { return orbitLight(v); });
-        const Image lit = ui::litImpostorAtlas(imp);
+        const Image lit = ui::litImpostorAtlas(imp, 0.8f);
         const float albedo = std::pow(128.0f / 255.0f, 2.0f);
         const std::uint8_t* p = lit.at(1 * 4 + 1, 1 * 4 + 1); // cell (1, 1): uv (1/3, 1/3)
         const glm::vec3 view11 = mesh::impostorViewDirection(glm::vec2(1.0f / 3.0f), true);
         const glm::vec3 n11 = orbitLight(view11);
         const glm::vec3 ambient11 = glm::mix(glm::vec3(0.30f, 0.25f, 0.20f),
                                              glm::vec3(0.62f, 0.70f, 0.85f), 0.5f * n11.y + 0.5f);
-        const glm::vec3 expected11 = glm::sqrt(
-            albedo * (0.55f * 0.42f * ambient11 + 1.35f * glm::vec3(1.0f, 0.96f, 0.90f) * 0.652f));
+        const glm::vec3 expected11 =
+            glm::sqrt(albedo * (0.55f * 0.8f * ambient11 +
+                                1.35f * glm::vec3(1.0f, 0.96f, 0.90f) * (0.4f + 0.6f * 0.8f)));
         for (int k = 0; k < 3; ++k)
             QVERIFY2(std::abs(float(p[k]) - 255.0f * expected11[k]) <= 2.0f,
                      qPrintable(QStringLiteral("channel %1: %2, expected %3")

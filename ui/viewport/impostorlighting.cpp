@@ -11,7 +11,7 @@ glm::vec3 cameraKeyLight(const glm::vec3& forward, const glm::vec3& up, const gl
     return glm::normalize(-0.5f * forward + 0.8f * up - 0.6f * right);
 }
 
-Image litImpostorAtlas(const mesh::Impostor& imp) {
+Image litImpostorAtlas(const mesh::Impostor& imp, float occlusion) {
     const int grid = imp.settings.grid, cell = imp.settings.cellPixels;
     const Image& color = imp.color;
     const Image& normal = imp.normal;
@@ -20,14 +20,15 @@ Image litImpostorAtlas(const mesh::Impostor& imp) {
         color.width != grid * cell || color.height != grid * cell || normal.width != color.width ||
         normal.height != color.height)
         return lit;
-    // What shaders/mesh.frag does with a leaf's albedo and normal, less the per-vertex
-    // occlusion (one constant for the crown, see below) and the leaves' translucency.
+    // What shaders/mesh.frag does with a leaf's albedo and normal, the per-vertex occlusion
+    // as one value for the crown (see below).
     const glm::vec3 sky(0.62f, 0.70f, 0.85f), ground(0.30f, 0.25f, 0.20f);
     const glm::vec3 keyColor(1.0f, 0.96f, 0.90f);
-    // The crown's occlusion, which the meshes carry per vertex: 0.42 makes a forest of
-    // impostors as bright as the same trees' meshes at that size (mean leaf colour of the
-    // 1,000-tree benchmark from four times its camera's distance, both ways).
-    const float ao = 0.42f;
+    // The crown's occlusion, which the meshes carry per vertex, as its mean over the source
+    // mesh's leaves (Impostors::crownOcclusion): a tree's impostor then measures 0.80-0.99 times
+    // as bright as its mesh from the same view, where the constant 0.42 this was measured
+    // 0.50-0.68 (tests/ui/test_viewportimpostor.cpp, docs/lods.md).
+    const float ao = std::clamp(occlusion, 0.0f, 1.0f);
     for (int j = 0; j < grid; ++j)
         for (int i = 0; i < grid; ++i) {
             // The view toward the viewer and its frame (shaders/impostor.vert's decodeDir and
@@ -44,7 +45,10 @@ Image litImpostorAtlas(const mesh::Impostor& imp) {
                     glm::vec3 n = glm::vec3(nm[0], nm[1], nm[2]) / 127.5f - 1.0f;
                     const float len = glm::length(n);
                     n = len > 1e-6f ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
-                    const float diffuse = std::max(glm::dot(n, light), 0.0f);
+                    const float facing = glm::dot(n, light);
+                    // mesh.frag's leaf translucency (0.35 of the light from behind), for every
+                    // texel: the atlas keeps no material, and most of a crown's texels are leaves.
+                    const float diffuse = std::max(facing, 0.0f) + 0.35f * std::max(-facing, 0.0f);
                     const glm::vec3 ambient = glm::mix(ground, sky, 0.5f * n.y + 0.5f);
                     const glm::vec3 srgb = glm::vec3(c[0], c[1], c[2]) / 255.0f;
                     const glm::vec3 albedo = srgb * srgb;
