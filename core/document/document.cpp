@@ -275,7 +275,9 @@ void Document::removeSpecies(const std::string& name) {
 
 ProjectSpecies Document::inlined(const ProjectSpecies& s) const {
     if (s.graph) return s;
-    return inlineSpeciesFile(s.name, mProject.resolve(s.file), mProject.baseDir);
+    ProjectSpecies out = inlineSpeciesFile(s.name, mProject.resolve(s.file), mProject.baseDir);
+    out.variants = s.variants; // the project's setting, not the file's
+    return out;
 }
 
 Value Document::speciesGraph(const std::string& name) const {
@@ -321,7 +323,8 @@ void Document::applyPreset(const std::string& species, const QString& file) {
     const int i = speciesIndex(species);
     if (i < 0) throw InvalidInput("unknown species '" + species + "'");
     const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
-    const ProjectSpecies applied = inlineSpeciesFile(old.name, file, mProject.baseDir);
+    ProjectSpecies applied = inlineSpeciesFile(old.name, file, mProject.baseDir);
+    applied.variants = old.variants; // a preset is the tree; K stays the project's
     validateSpecies(applied);
     if (applied == old) return;
     mUndo.push(cmd::changeSpecies(*this, i, old, applied, {}, true,

@@ -35,6 +35,7 @@
 #include "ui/speciesworkbench.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewport.h"
+#include "ui/viewport/windshader.h"
 #include "uitest.h"
 
 using namespace sylva;
@@ -161,22 +162,16 @@ private Q_SLOTS:
                                   reinterpret_cast<void*>(offsetof(ViewWindVertex, flutter)));
         gl->glGenTextures(2, textures);
         const std::vector<glm::vec4>* tbos[2] = {&table, &rotations};
+        const int units[2] = {kWindElementsUnit, kWindRotationsUnit};
         for (int k = 0; k < 2; ++k) {
             gl->glBindBuffer(GL_TEXTURE_BUFFER, buffers[2 + k]);
             gl->glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(tbos[k]->size() * sizeof(glm::vec4)),
                              tbos[k]->data(), GL_STATIC_DRAW);
-            gl->glActiveTexture(GLenum(GL_TEXTURE2 + k));
+            gl->glActiveTexture(GLenum(GL_TEXTURE0 + units[k]));
             gl->glBindTexture(GL_TEXTURE_BUFFER, textures[k]);
             gl->glTexBuffer(GL_TEXTURE_BUFFER, GL_RGBA32F, buffers[2 + k]);
         }
-        program.setUniformValue("uWindElements", 2);
-        program.setUniformValue("uWindRotations", 3);
-        program.setUniformValue("uWindBase", 0);
-        program.setUniformValue("uWindStrength", frame.strength);
-        program.setUniformValue("uWindGustiness", frame.gustiness);
-        program.setUniformValue("uWindTime", frame.time);
-        program.setUniformValue("uWindOmega", frame.omega);
-        program.setUniformValue("uWindBaseCycles", frame.baseCycles);
+        setWindUniforms(program, frame, 0);
         program.setUniformValue("uModel", QMatrix4x4());
         program.setUniformValue("uViewProj", QMatrix4x4());
         gl->glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers[4]);

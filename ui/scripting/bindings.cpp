@@ -2,6 +2,7 @@
 // through the same document functions (and so the same undoable commands) as the mouse. The
 // names are a public contract: docs/scripting.md.
 #include <cmath>
+#include <functional>
 #include <optional>
 
 #include <pybind11/embed.h>
@@ -77,15 +78,32 @@ void layOut(MainWindow& w) {
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
 }
 
-void pump(double seconds) {
-    QEventLoop loop;
-    QTimer::singleShot(int(seconds * 1000.0), &loop, &QEventLoop::quit);
-    loop.exec();
+/// Keeps the window live (its events, timers, the workers' results) until \p done answers true
+/// or \p seconds pass, and returns done(); every scripted wait goes through here. It sleeps
+/// until an event comes, woken at least every 20 ms to ask \p done and to let a signal in:
+/// Ctrl-C or SIGTERM raise KeyboardInterrupt in the script at the wait (PythonHost::runScript),
+/// so a script that seems to hang says where it waits. Events are run at least once.
+bool pumpUntil(double seconds, const std::function<bool()>& done) {
+    QElapsedTimer clock;
+    clock.start();
+    const qint64 limit = qint64(seconds * 1000.0);
+    QTimer tick;
+    tick.setTimerType(Qt::PreciseTimer);
+    tick.start(20);
+    while (!done()) {
+        const bool more = clock.elapsed() < limit;
+        QCoreApplication::processEvents(more ? QEventLoop::WaitForMoreEvents
+                                             : QEventLoop::AllEvents);
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        if (!more) break;
+    }
+    return done();
 }
 
 py::dict generate() {
     MainWindow& w = window();
-    if (!w.waitForGeneration()) throw std::runtime_error("the generation did not finish in time");
+    if (!pumpUntil(600.0, [&w] { return !w.isGenerating(); }))
+        throw std::runtime_error("the generation did not finish in time");
     const GenerationResult& r = w.generator().result();
     if (!w.lastError().isEmpty() && !r.ok()) throw InvalidInput(w.lastError().toStdString());
     py::dict stats;
@@ -500,10 +518,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             "wait_for_preview",
             [](WindowApi&, double timeout) {
                 SpeciesPreview* p = window().workbench()->preview();
-                QElapsedTimer t;
-                t.start();
-                while (p->isBusy() && t.elapsed() < timeout * 1000.0)
-                    QApplication::processEvents(QEventLoop::AllEvents, 20);
+                pumpUntil(timeout, [p] { return !p->isBusy(); });
                 for (int k = 0; k < 5; ++k)
                     QApplication::processEvents(QEventLoop::AllEvents, 20);
                 return !p->isBusy();
@@ -597,8 +612,8 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 Viewport* v = window().viewport();
                 v->update();
                 QCoreApplication::processEvents();
-                while (v->lodPending() > 0 && clock.elapsed() < qint64(seconds * 1000.0))
-                    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+                pumpUntil(seconds - 1e-3 * double(clock.elapsed()),
+                          [v] { return v->lodPending() == 0; });
                 QCoreApplication::processEvents();
                 return v->lodPending() == 0;
             },
@@ -671,7 +686,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         [](double seconds) {
             if (seconds < 0 || seconds > 86400)
                 throw InvalidInput("wait() takes 0 to 86400 seconds");
-            pump(seconds);
+            pumpUntil(seconds, [] { return false; });
         },
         py::arg("seconds"), "Keeps the window (and autosave) running for a while.");
     m.def(

@@ -21,7 +21,9 @@ public:
     static MainWindow* window();
 
     /// Runs a script file as `__main__`. Returns its exit status: 0 when it ends, the code of a
-    /// SystemExit (sylva.quit(code)), 1 after an exception, whose traceback goes to stderr.
+    /// SystemExit (sylva.quit(code)), 1 after an exception, whose traceback goes to stderr;
+    /// Ctrl-C or SIGTERM while it runs raise KeyboardInterrupt where it is (also in a wait)
+    /// and give 128 + the signal's number, with the traceback.
     static int runScript(const QString& path);
 
     /// One line of the console: `more` when the statement continues on the next line; the

@@ -22,6 +22,7 @@
 #include "ui/viewport/impostorlighting.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewportsurface.h"
+#include "ui/viewport/windshader.h"
 
 namespace sylva::ui {
 
@@ -596,7 +597,7 @@ void Viewport::paintGL() {
                     gpu && gpu->windElements)
                     previewBases[i] = add(gpu->elements.get(), mPreview[i].windPhase);
             rotations = mBuffers.uploadWindRotations(mWindRotations);
-            glActiveTexture(GL_TEXTURE3);
+            glActiveTexture(GL_TEXTURE0 + kWindRotationsUnit);
             glBindTexture(GL_TEXTURE_BUFFER, rotations);
             glActiveTexture(GL_TEXTURE0);
         }
@@ -704,7 +705,7 @@ void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, flo
 }
 
 void Viewport::bindWindElements(GLuint texture) {
-    glActiveTexture(GL_TEXTURE2);
+    glActiveTexture(GL_TEXTURE0 + kWindElementsUnit);
     glBindTexture(GL_TEXTURE_BUFFER, texture);
     glActiveTexture(GL_TEXTURE0);
 }
@@ -863,17 +864,7 @@ QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
         program.setUniformValue("uHighlight", u.highlight);
         program.setUniformValue("uTexture", 0);
         program.setUniformValue("uNormalMap", 1);
-        if (variant & kMeshWind) {
-            const wind::WindFrame& w = u.wind;
-            program.setUniformValue("uWindElements", 2);
-            program.setUniformValue("uWindRotations", 3);
-            program.setUniformValue("uWindBase", u.windBase);
-            program.setUniformValue("uWindStrength", w.strength);
-            program.setUniformValue("uWindGustiness", w.gustiness);
-            program.setUniformValue("uWindTime", w.time);
-            program.setUniformValue("uWindOmega", w.omega);
-            program.setUniformValue("uWindBaseCycles", w.baseCycles);
-        }
+        if (variant & kMeshWind) setWindUniforms(program, u.wind, u.windBase);
         stamp = mMeshUniformsStamp;
     }
     return program;

@@ -250,6 +250,24 @@ TEST_F(DocumentTest, SpeciesEditInlinesTheSpeciesAndKeepsItsFiles) {
     EXPECT_FALSE(mDoc.project().species[0].file.empty());
 }
 
+// Variants (K) are the project's setting of a species, not part of its file: the first edit that
+// inlines the species, and applying a preset, keep them (they were reset to the default 8: a
+// hand-placed project's "variants": 0 came back as 8 after the first parameter edit, which grew
+// 8 variants nobody used).
+TEST_F(DocumentTest, InliningAndPresetsKeepTheSpeciesVariants) {
+    for (const int k : {0, 3}) {
+        SCOPED_TRACE(k);
+        mDoc.setSpeciesVariants("alder", k);
+        ASSERT_FALSE(mDoc.project().species[0].file.empty());
+        mDoc.setParam("alder", "mesh.resolution", 5.0);
+        EXPECT_TRUE(mDoc.project().species[0].file.empty());
+        EXPECT_EQ(mDoc.project().species[0].variants, k);
+        mDoc.applyPreset("alder", QStringLiteral(SYLVA_SOURCE_DIR "/presets/silver-birch.json"));
+        EXPECT_EQ(mDoc.project().species[0].variants, k);
+        mDoc.undoStack()->setIndex(0);
+    }
+}
+
 // The node editor's edits: each is one undo step, refused edits say why and change nothing,
 // and undoing all of them gives back the exact file.
 TEST_F(DocumentTest, GraphEditsAreCheckedAndUndoable) {

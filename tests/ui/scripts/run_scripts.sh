@@ -1,7 +1,8 @@
 #!/bin/sh
 # Runs the editor's Python scripting tests: `sylva --script` on the demo project (a copy, so
-# saving never touches the repository's file), exit statuses, and a SIGKILL after scripted
-# edits followed by a start that restores them. Usage: run_scripts.sh <sylva> <source dir> <out>
+# saving never touches the repository's file), exit statuses, a SIGTERM in a wait, and a
+# SIGKILL after scripted edits followed by a start that restores them.
+# Usage: run_scripts.sh <sylva> <source dir> <out>
 set -eu
 SYLVA=$1
 SRC=$2
@@ -48,6 +49,25 @@ status=0
 grep -q "Traceback" "$OUT/raises.err" || fail "no traceback on stderr"
 grep -q "ValueError: unknown species 'no-such-species'" "$OUT/raises.err" || fail "no message"
 
+echo "-- interrupted_wait.py (SIGTERM while the script waits)"
+"$SYLVA" --discard-autosave --script "$HERE/interrupted_wait.py" >"$OUT/wait.out" 2>"$OUT/wait.err" &
+pid=$!
+tries=0
+until grep -q waiting "$OUT/wait.out"; do
+  kill -0 "$pid" 2>/dev/null || fail "the editor ended before the script's wait"
+  tries=$((tries + 1))
+  [ "$tries" -lt 600 ] || { kill -KILL "$pid"; fail "the script never reached its wait"; }
+  sleep 0.2
+done
+kill -TERM "$pid"
+status=0
+wait "$pid" || status=$?
+[ "$status" -eq 143 ] || fail "SIGTERM in sylva.wait exited with $status"
+grep -q "KeyboardInterrupt: stopped by SIGTERM" "$OUT/wait.err" || fail "no KeyboardInterrupt"
+grep -q 'interrupted_wait.py", line 9, in keep_the_window_open' "$OUT/wait.err" ||
+  fail "the traceback does not name the wait"
+! grep -q "not interrupted" "$OUT/wait.out" || fail "the script went on after SIGTERM"
+
 echo "-- crash_after_edits.py (SIGKILL)"
 status=0
 "$SYLVA" --discard-autosave --script "$HERE/crash_after_edits.py" "$DEMO" || status=$?
@@ -65,4 +85,4 @@ ls "$OUT/config/Sylva/Sylva/recovery/autosave.sylva" >/dev/null ||
   fail "the first edit after opening was not autosaved"
 echo "-- check_one_edit_restored.py (--restore)"
 "$SYLVA" --restore --script "$HERE/check_one_edit_restored.py" || fail "check_one_edit_restored.py"
-echo "script tests: 10 passed, 0 failed"
+echo "script tests: 11 passed, 0 failed"

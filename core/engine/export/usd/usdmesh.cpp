@@ -16,6 +16,26 @@ void indent(std::string& out, int n) {
     out.append(static_cast<std::size_t>(n), ' ');
 }
 
+/// The elements of an array, element(0) … element(count - 1), comma-joined without spaces (a
+/// mesh array's text: most of a forest's bytes).
+template <class Element> void appendJoined(std::string& out, std::size_t count, Element&& element) {
+    for (std::size_t k = 0; k < count; ++k) {
+        if (k) out += ',';
+        element(k);
+    }
+}
+
+/// Closes a primvar's array and states its interpolation, at indent \p a.
+void closePrimvar(std::string& out, int a, const char* interpolation) {
+    out += "] (\n";
+    indent(out, a + 4);
+    out += "interpolation = \"";
+    out += interpolation;
+    out += "\"\n";
+    indent(out, a);
+    out += ")\n";
+}
+
 } // namespace
 
 std::vector<mesh::Submesh> materialRuns(const mesh::Mesh& m) {
@@ -128,10 +148,8 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
         }
         indent(out, a);
         out += "int[] faceVertexCounts = [";
-        for (std::size_t f = 0; f < faces.size(); ++f) {
-            if (f) out += ',';
-            out += faces[f].count == 4 ? '4' : '3';
-        }
+        appendJoined(out, faces.size(),
+                     [&](std::size_t f) { out += faces[f].count == 4 ? '4' : '3'; });
         out += "]\n";
         indent(out, a);
         out += "int[] faceVertexIndices = [";
@@ -139,8 +157,7 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
         auto index = [&](std::uint32_t v) {
             out.append(buf, std::to_chars(buf, buf + sizeof buf, remap[v]).ptr);
         };
-        for (std::size_t f = 0; f < faces.size(); ++f) {
-            if (f) out += ',';
+        appendJoined(out, faces.size(), [&](std::size_t f) {
             const std::uint32_t* t = &m.indices[faces[f].first];
             index(t[0]);
             out += ',';
@@ -151,54 +168,48 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
                 out += ',';
                 index(faces[f].fourth);
             }
-        }
+        });
         out += "]\n";
+        // A primvar with one value per face where every face's corners agree (`uniform`: a
+        // leaf card is flat and one colour, a quarter of the text), else one per vertex.
+        auto facesFlat = [&](const auto& values) {
+            for (const Face& face : faces) {
+                const std::uint32_t* t = &m.indices[face.first];
+                const auto& v0 = values[t[0]];
+                if (!(values[t[1]] == v0 && values[t[2]] == v0 &&
+                      (face.count == 3 || values[face.fourth] == v0)))
+                    return false;
+            }
+            return true;
+        };
+        auto faceOrVertexValues = [&](bool flat, const auto& value) {
+            if (flat)
+                appendJoined(out, faces.size(),
+                             [&](std::size_t f) { value(m.indices[faces[f].first]); });
+            else
+                appendJoined(out, used.size(), [&](std::size_t k) { value(used[k]); });
+            closePrimvar(out, a, flat ? "uniform" : "vertex");
+        };
         indent(out, a);
         out += "rel material:binding = <" + material + ">\n";
         if (m.normals.size() == m.positions.size()) {
-            // Flat faces (leaf cards: one normal at all four corners) get one normal per face,
-            // `uniform`: a quarter of the text.
-            bool flat = true;
-            for (std::size_t f = 0; f < faces.size() && flat; ++f) {
-                const std::uint32_t* t = &m.indices[faces[f].first];
-                const glm::vec3& n0 = m.normals[t[0]];
-                flat = m.normals[t[1]] == n0 && m.normals[t[2]] == n0 &&
-                       (faces[f].count == 3 || m.normals[faces[f].fourth] == n0);
-            }
+            // Flat faces (leaf cards: one normal at all four corners) get one normal per face.
             indent(out, a);
             out += "normal3f[] normals = [";
-            if (flat) {
-                for (std::size_t f = 0; f < faces.size(); ++f) {
-                    if (f) out += ',';
-                    vec3(m.normals[m.indices[faces[f].first]], nd);
-                }
-            } else {
-                for (std::size_t k = 0; k < used.size(); ++k) {
-                    if (k) out += ',';
-                    vec3(m.normals[used[k]], nd);
-                }
-            }
-            out += "] (\n";
-            indent(out, a + 4);
-            out += flat ? "interpolation = \"uniform\"\n" : "interpolation = \"vertex\"\n";
-            indent(out, a);
-            out += ")\n";
+            faceOrVertexValues(facesFlat(m.normals),
+                               [&](std::uint32_t v) { vec3(m.normals[v], nd); });
         }
         if (m.colors.size() == m.positions.size()) {
             // Leaf tints (Mesh::colors) as displayColor, linear as USD's colours are; only on
-            // a run that has any (bark is white). A card is one face of one colour: `uniform`,
-            // a quarter of the text; per vertex where a face's corners differ.
-            bool tinted = false, flat = true;
+            // a run that has any (bark is white). A card is one face of one colour.
+            bool tinted = false;
             for (std::uint32_t v : used)
                 tinted = tinted || m.colors[v] != glm::u8vec4(255);
-            for (std::size_t f = 0; f < faces.size() && flat && tinted; ++f) {
-                const std::uint32_t* t = &m.indices[faces[f].first];
-                const glm::u8vec4 c0 = m.colors[t[0]];
-                flat = m.colors[t[1]] == c0 && m.colors[t[2]] == c0 &&
-                       (faces[f].count == 3 || m.colors[faces[f].fourth] == c0);
-            }
             if (tinted) {
-                auto color = [&](const glm::u8vec4& c) {
+                indent(out, a);
+                out += "color3f[] primvars:displayColor = [";
+                faceOrVertexValues(facesFlat(m.colors), [&](std::uint32_t v) {
+                    const glm::u8vec4 c = m.colors[v];
                     out += '(';
                     appendFixed(out, c.x / 255.0f, 3);
                     out += ',';
@@ -206,44 +217,26 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
                     out += ',';
                     appendFixed(out, c.z / 255.0f, 3);
                     out += ')';
-                };
-                indent(out, a);
-                out += "color3f[] primvars:displayColor = [";
-                if (flat) {
-                    for (std::size_t f = 0; f < faces.size(); ++f) {
-                        if (f) out += ',';
-                        color(m.colors[m.indices[faces[f].first]]);
-                    }
-                } else {
-                    for (std::size_t k = 0; k < used.size(); ++k) {
-                        if (k) out += ',';
-                        color(m.colors[used[k]]);
-                    }
-                }
-                out += "] (\n";
-                indent(out, a + 4);
-                out += flat ? "interpolation = \"uniform\"\n" : "interpolation = \"vertex\"\n";
-                indent(out, a);
-                out += ")\n";
+                });
             }
         }
         indent(out, a);
         out += "point3f[] points = [";
-        for (std::size_t k = 0; k < used.size(); ++k) {
-            if (k) out += ',';
-            vec3(m.positions[used[k]], pd);
-        }
+        appendJoined(out, used.size(), [&](std::size_t k) { vec3(m.positions[used[k]], pd); });
         out += "]\n";
         if (m.uvs.size() == m.positions.size()) {
             // Leaf cards take their corners from a few cells of the leaf atlas: an indexed
             // primvar (the distinct values once, an index per vertex) is ~1/6 of the text.
             stIndex.clear();
             stValues.clear();
-            for (std::size_t k = 0; k < used.size() && stValues.size() * 4 <= used.size(); ++k) {
-                const glm::vec2 uv = m.uvs[used[k]];
+            auto uvKey = [](const glm::vec2& uv) {
                 std::uint64_t key = 0;
                 std::memcpy(&key, &uv, sizeof uv);
-                if (stIndex.emplace(key, static_cast<std::uint32_t>(stValues.size())).second)
+                return key;
+            };
+            for (std::size_t k = 0; k < used.size() && stValues.size() * 4 <= used.size(); ++k) {
+                const glm::vec2 uv = m.uvs[used[k]];
+                if (stIndex.emplace(uvKey(uv), static_cast<std::uint32_t>(stValues.size())).second)
                     stValues.push_back(uv);
             }
             const bool indexed = stValues.size() * 4 <= used.size();
@@ -256,32 +249,18 @@ std::size_t appendMeshPrims(std::string& out, const mesh::Mesh& m, int at, bool 
             };
             indent(out, a);
             out += "texCoord2f[] primvars:st = [";
-            if (indexed) {
-                for (std::size_t k = 0; k < stValues.size(); ++k) {
-                    if (k) out += ',';
-                    uvText(stValues[k]);
-                }
-            } else {
-                for (std::size_t k = 0; k < used.size(); ++k) {
-                    if (k) out += ',';
-                    uvText(m.uvs[used[k]]);
-                }
-            }
-            out += "] (\n";
-            indent(out, a + 4);
-            out += "interpolation = \"vertex\"\n";
-            indent(out, a);
-            out += ")\n";
+            if (indexed)
+                appendJoined(out, stValues.size(), [&](std::size_t k) { uvText(stValues[k]); });
+            else
+                appendJoined(out, used.size(), [&](std::size_t k) { uvText(m.uvs[used[k]]); });
+            closePrimvar(out, a, "vertex");
             if (indexed) {
                 indent(out, a);
                 out += "int[] primvars:st:indices = [";
-                for (std::size_t k = 0; k < used.size(); ++k) {
-                    if (k) out += ',';
-                    const glm::vec2 uv = m.uvs[used[k]];
-                    std::uint64_t key = 0;
-                    std::memcpy(&key, &uv, sizeof uv);
-                    out.append(buf, std::to_chars(buf, buf + sizeof buf, stIndex.at(key)).ptr);
-                }
+                appendJoined(out, used.size(), [&](std::size_t k) {
+                    const std::uint32_t i = stIndex.at(uvKey(m.uvs[used[k]]));
+                    out.append(buf, std::to_chars(buf, buf + sizeof buf, i).ptr);
+                });
                 out += "]\n";
             }
         }
