@@ -430,6 +430,18 @@ Image renderImpostor(const Impostor& imp, const glm::vec3& direction, int pixels
         weight[1] = 1.0f - f.x;
         weight[2] = 1.0f - f.y;
     }
+    // The view farthest from the direction reprojects worst, and in the blend it can only add
+    // coverage where the nearer views see nothing there: a frond tip it shows beside the
+    // fronds (the date palm 1 degree above the horizon, its third view 27 degrees away at weight
+    // 0.04, added a wedge of frond between two fronds: IoU 0.895; faded out, 0.924). So each
+    // weight gives up kFadeWeight and the rest is renormalised: a view fades out before its
+    // weight reaches zero, still continuously (no popping while the view turns).
+    constexpr float kFadeWeight = 0.05f;
+    float weightSum = 0.0f;
+    for (float& w : weight)
+        weightSum += (w = std::max(0.0f, w - kFadeWeight));
+    for (float& w : weight)
+        w /= weightSum; // the heaviest weight is at least 1/3
     glm::vec3 r[3], u[3], v[3];
     for (int k = 0; k < 3; ++k) {
         v[k] = impostorViewDirection(glm::vec2(corner[k]) / static_cast<float>(n - 1),
