@@ -57,7 +57,7 @@ constexpr int kViewPixels = 64;
 constexpr double kMaxColourDifference = 0.1;
 /// The impostor's coverage (the sum of its alpha) against the tree's, per view: at least this
 /// (thinner, the crown lightens where it takes over; the views diluting each other's coverage
-/// measured 0.75-0.9) and at most kMaxCoverage (the date palm's view 11 is 1.13: its fronds a
+/// measured 0.75-0.9) and at most kMaxCoverage (the date palm's view 11 is 1.12: its fronds a
 /// little wider where the three views do not quite agree).
 constexpr double kMinCoverage = 0.85, kMaxCoverage = 1.2;
 constexpr int kClosePixels = 1;

@@ -64,10 +64,6 @@ void main() {
         c[0] = base + vec2(1.0, 1.0); c[1] = base + vec2(0.0, 1.0); c[2] = base + vec2(1.0, 0.0);
         w = vec3(f.x + f.y - 1.0, 1.0 - f.x, 1.0 - f.y);
     }
-    // The farthest view fades out before its weight reaches zero (docs/lods.md: it reprojects
-    // worst and could only add ghosts where the nearer views see nothing).
-    w = max(w - 0.05, 0.0);
-    w /= w.x + w.y + w.z;
     // Heaviest first: the fragment shader's early cut-out reads that view alone.
     if (w.y > w.x && w.y >= w.z) {
         c = vec2[3](c[1], c[0], c[2]);
