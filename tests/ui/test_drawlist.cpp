@@ -110,32 +110,41 @@ private Q_SLOTS:
         QCOMPARE(list[1].level, 0);
     }
 
-    // While the view moves into a half-size target the levels follow that target's pixels,
-    // but the impostor takes over where it does at rest: nearer, the coarsest mesh.
-    void movingFramesKeepTheRestImpostorSwitch() {
+    /// While the view moves, a tree is drawn as if the target were motionBias times smaller:
+    /// never finer than at rest, and between the two switches an impostor where the sharp
+    /// frame draws a mesh, unless it is higher than maxImpostorPx on the target (then the
+    /// coarsest mesh: no atlas view magnified into blocks).
+    void movingFramesDrawAsIfFarther() {
         DrawListView moving = view();
         moving.viewportHeightPx = 0.5 * kPixels;
-        moving.restHeightPx = kPixels;
+        moving.motionBias = 1.5;
+        moving.maxImpostorPx = 60.0; // 120 px at rest: above the rest switch, as in the viewport
+        DrawListView rest = view();
         const auto levelAt = [](double distance, double pixels) {
             return ViewLod::levelFor(
                 ViewLod::equivalentHeights(distance, 10.0, double(kFov), pixels));
         };
-        int checked = 0;
+        int band = 0, capped = 0;
         for (float z = -20.0f; z > -3000.0f; z *= 1.05f) {
-            const std::vector<TreeDraw> list = buildDrawList(moving, {true}, {tree(0, z)});
-            QCOMPARE(list.size(), std::size_t(1));
-            const double d = double(list[0].distance);
-            const int reduced = levelAt(d, 0.5 * kPixels), rest = levelAt(d, kPixels);
-            if (reduced != ViewLod::kImpostorLevel) {
-                QCOMPARE(list[0].level, reduced); // the target's pixels
-            } else if (rest != ViewLod::kImpostorLevel) {
-                QCOMPARE(list[0].level, ViewLod::kImpostorLevel - 1); // a coarse mesh, not a card
-                ++checked;
+            const std::vector<TreeDraw> m = buildDrawList(moving, {true}, {tree(0, z)});
+            const std::vector<TreeDraw> r = buildDrawList(rest, {true}, {tree(0, z)});
+            QCOMPARE(m.size(), std::size_t(1));
+            QCOMPARE(r.size(), std::size_t(1));
+            const double d = double(m[0].distance);
+            const double onTarget = 10.0 * 0.5 * kPixels / (2.0 * d * std::tan(0.5 * double(kFov)));
+            const int biased = levelAt(d, 0.5 * kPixels / 1.5);
+            if (biased == ViewLod::kImpostorLevel && onTarget > 60.0) {
+                QCOMPARE(m[0].level, ViewLod::kImpostorLevel - 1);
+                ++capped;
             } else {
-                QCOMPARE(list[0].level, ViewLod::kImpostorLevel);
+                QCOMPARE(m[0].level, biased);
             }
+            QVERIFY(m[0].level >= r[0].level);
+            if (m[0].level == ViewLod::kImpostorLevel && r[0].level != ViewLod::kImpostorLevel)
+                ++band;
         }
-        QVERIFY(checked > 0); // the band between the two switches was crossed
+        QVERIFY(band > 0);   // the band between the two switches was crossed
+        QVERIFY(capped > 0); // and trees too large for an impostor stayed meshes
     }
 
     void treesWithoutABoxAreDrawnFirstAtFullDetail() {

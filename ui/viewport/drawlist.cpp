@@ -45,6 +45,7 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
     // Frustum culling: a tree whose world box lies outside one of the six planes is not drawn
     // (a forest seen from inside draws only what is in front of the camera).
     const std::array<glm::vec4, 6> planes = frustumPlanes(view.viewProj);
+    const double heightPx = view.viewportHeightPx / std::max(view.motionBias, 1e-6);
     std::vector<TreeDraw> order;
     order.reserve(drawn.size());
     for (std::size_t i = 0; i < drawn.size(); ++i) {
@@ -57,14 +58,14 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
             d.distance = glm::length(0.5f * (b.lo + b.hi) - view.eye);
             // The level of detail follows the tree's height on screen (ui/viewport/viewlod.h).
             if (view.levels) {
-                const auto levelOn = [&](double heightPx) {
-                    return ViewLod::levelFor(ViewLod::equivalentHeights(
-                        double(d.distance), double(b.hi.y - b.lo.y), double(view.fovY), heightPx));
-                };
-                d.level = levelOn(view.viewportHeightPx);
-                if (d.level == ViewLod::kImpostorLevel &&
-                    view.restHeightPx > view.viewportHeightPx &&
-                    levelOn(view.restHeightPx) != ViewLod::kImpostorLevel)
+                const double worldHeight = double(b.hi.y - b.lo.y);
+                d.level = ViewLod::levelFor(ViewLod::equivalentHeights(
+                    double(d.distance), worldHeight, double(view.fovY), heightPx));
+                const double onTarget =
+                    worldHeight * view.viewportHeightPx /
+                    (2.0 * std::max(double(d.distance), 1e-6) * std::tan(0.5 * double(view.fovY)));
+                if (d.level == ViewLod::kImpostorLevel && view.maxImpostorPx > 0.0 &&
+                    onTarget > view.maxImpostorPx)
                     d.level = ViewLod::kImpostorLevel - 1;
             }
             if (i < instances.size() && instances[i].variant &&
@@ -72,7 +73,7 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
                 const InstanceOf& of = instances[i];
                 const auto levelAt = [&](double factor) {
                     return int(variantLevelFor(*of.variant, double(d.distance), double(of.scale),
-                                               double(view.fovY), view.viewportHeightPx, factor));
+                                               double(view.fovY), heightPx, factor));
                 };
                 d.variantLevel = levelAt(view.levels ? view.variantFactor : 0.0);
                 d.motion = view.levels && view.variantFactor > 1.0 && d.variantLevel > levelAt(1.0);

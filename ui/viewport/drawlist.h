@@ -45,11 +45,14 @@ struct DrawListView {
     glm::vec3 eye{0.0f};
     float fovY = 0.8f;             ///< vertical field of view, radians
     double viewportHeightPx = 1.0; ///< device pixels
-    /// The window's own height (device pixels) when the frame is drawn into a smaller target
-    /// while the view moves (0: viewportHeightPx): the impostor takes over where it does at
-    /// rest, so that a tree near the hand-over is a coarse mesh, not a large impostor card
-    /// (under llvmpipe a card's ray-marched pixels cost more than that mesh).
-    double restHeightPx = 0.0;
+    /// Every tree's level, the impostor's switch and the instances' variant levels as if the
+    /// viewport were this many times smaller (Viewport::kMotionLodBias while the view moves
+    /// under a software renderer, 1 at rest).
+    double motionBias = 1.0;
+    /// A tree higher than this on the target (device pixels, before motionBias; 0: no limit)
+    /// is never an impostor but the coarsest mesh: Impostors::kCell while the view moves, so
+    /// that no atlas cell is magnified into blocks (at rest the switch size keeps it so).
+    double maxImpostorPx = 0.0;
     bool levels = true; ///< false: every tree at level 0 (the distance LOD is off)
     /// Instances pick their variant's level this much farther (ViewLod::kMotionFactor while
     /// the view moves under a software renderer, 1 at rest).

@@ -9,6 +9,8 @@
 #include <iterator>
 
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/occlusion.h"
+#include "ui/viewport/impostorlighting.h"
 #include "ui/viewport/shaderprogram.h"
 
 namespace sylva::ui {
@@ -16,9 +18,13 @@ namespace sylva::ui {
 bool Impostors::initialize(QOpenGLFunctions_3_3_Core* gl, QString& error) {
     mGl = gl;
     // One card drawn from the vertex id alone (shaders/impostor.vert).
+    // Two programs: the marched one and, for small cards, the one-fetch one (FLAT).
     mProgram =
         buildShaderProgram(QStringLiteral("impostor.vert"), QStringLiteral("impostor.frag"), error);
     if (!mProgram) return false;
+    mFlatProgram = buildShaderProgram(QStringLiteral("impostor.vert"),
+                                      QStringLiteral("impostor.frag"), error, "#define FLAT\n");
+    if (!mFlatProgram) return false;
     // The card's corners come from the vertex id; per instance: the model matrix (locations
     // 0-3) and the highlight (4).
     gl->glGenVertexArrays(1, &mVao);
@@ -47,14 +53,15 @@ void Impostors::release() {
     mBaking.clear();
     if (!mGl) return;
     for (auto& [key, card] : mCards) {
-        const GLuint textures[3] = {card.color, card.normal, card.depth};
-        mGl->glDeleteTextures(3, textures);
+        const GLuint textures[2] = {card.lit, card.depth};
+        mGl->glDeleteTextures(2, textures);
     }
     mCards.clear();
     if (mVao) mGl->glDeleteVertexArrays(1, &mVao);
     if (mInstances) mGl->glDeleteBuffers(1, &mInstances);
     mVao = mInstances = 0;
     mProgram.reset();
+    mFlatProgram.reset();
     mGl = nullptr;
 }
 
@@ -102,12 +109,37 @@ void Impostors::request(Key key, std::shared_ptr<const void> owner,
             try {
                 baked.impostor = mesh::bakeImpostor(*source, materials, settings);
                 baked.extent = cardExtent(baked.impostor);
+                baked.lit = litImpostorAtlas(baked.impostor, crownOcclusion(*source));
             } catch (...) {
                 baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
             }
             return baked;
         });
     mBaking.emplace(key, std::move(job));
+}
+
+float Impostors::crownOcclusion(const mesh::Mesh& m) {
+    const std::vector<float> occlusion = mesh::crownOcclusion(m);
+    const auto meanOver = [&](bool leavesOnly) {
+        double sum = 0.0;
+        std::size_t n = 0;
+        const auto add = [&](std::size_t first, std::size_t count) {
+            for (std::size_t i = first; i < first + count && i < m.indices.size(); ++i)
+                if (m.indices[i] < occlusion.size()) {
+                    sum += double(occlusion[m.indices[i]]);
+                    ++n;
+                }
+        };
+        if (!leavesOnly)
+            add(0, m.indices.size());
+        else
+            for (const mesh::Submesh& s : m.submeshes)
+                if (s.material == "leaf") add(s.firstIndex, s.indexCount);
+        return n > 0 ? float(sum / double(n)) : -1.0f;
+    };
+    const float leaves = meanOver(true);
+    const float all = leaves >= 0.0f ? leaves : meanOver(false);
+    return all >= 0.0f ? std::clamp(all, 0.0f, 1.0f) : 1.0f;
 }
 
 glm::vec3 Impostors::cardExtent(const mesh::Impostor& imp) {
@@ -152,8 +184,7 @@ std::size_t Impostors::collect() {
             card.centre = imp.centre;
             card.radius = imp.radius;
             card.extent = baked.extent;
-            card.color = upload(imp.color);
-            card.normal = upload(imp.normal);
+            card.lit = upload(baked.lit);
             card.depth = upload(imp.depth);
             mGl->glBindTexture(GL_TEXTURE_2D, 0);
             mCards.emplace(it->first, std::move(card));
@@ -174,8 +205,8 @@ void Impostors::retain(const std::function<bool(Key)>& keep) {
             continue;
         }
         if (mGl) {
-            const GLuint textures[3] = {it->second.color, it->second.normal, it->second.depth};
-            mGl->glDeleteTextures(3, textures);
+            const GLuint textures[2] = {it->second.lit, it->second.depth};
+            mGl->glDeleteTextures(2, textures);
         }
         it = mCards.erase(it);
     }
@@ -188,19 +219,21 @@ int Impostors::levelFor(float radiusPixels) {
                       kMaxLevel);
 }
 
-void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light,
-                      float pixelsPerUnit) {
+void Impostors::begin(const glm::mat4& viewProj, const glm::vec3& eye, float pixelsPerUnit,
+                      bool moving) {
     mEye = eye;
     mPixelsPerUnit = pixelsPerUnit;
-    mProgram->bind();
-    setUniform(*mProgram, "uViewProj", viewProj);
-    setUniform(*mProgram, "uEye", eye);
-    setUniform(*mProgram, "uLightDir", light);
-    mProgram->setUniformValue("uGrid", kGrid);
-    mProgram->setUniformValue("uCell", kCell);
-    mProgram->setUniformValue("uColor", 0);
-    mProgram->setUniformValue("uNormal", 1);
-    mProgram->setUniformValue("uDepth", 2);
+    mMoving = moving;
+    for (QOpenGLShaderProgram* program : {mProgram.get(), mFlatProgram.get()}) {
+        program->bind();
+        setUniform(*program, "uViewProj", viewProj);
+        setUniform(*program, "uEye", eye);
+        program->setUniformValue("uGrid", kGrid);
+        program->setUniformValue("uCell", kCell);
+        program->setUniformValue("uLit", 0);
+        program->setUniformValue("uDepth", 2);
+        program->setUniformValue("uOneView", program == mFlatProgram.get() && moving);
+    }
     for (auto& [key, levels] : mQueue)
         for (std::vector<Instance>& list : levels)
             list.clear();
@@ -232,25 +265,32 @@ std::size_t Impostors::end() {
     // The finest level first: its cards are the largest, nearest ones, and a card drawn behind
     // them is cut by the depth test before its fragments are shaded. Each atlas' instances are
     // nearest first already (the draw list's order).
+    QOpenGLShaderProgram* bound = nullptr;
     for (std::size_t level = 0; level <= std::size_t(kMaxLevel); ++level)
         for (const auto& [key, levels] : mQueue) {
             const std::vector<Instance>& list = levels[level];
             if (list.empty()) continue;
             const Card& c = mCards.at(key);
-            setUniform(*mProgram, "uCentre", c.centre);
-            mProgram->setUniformValue("uRadius", c.radius);
-            setUniform(*mProgram, "uExtent", c.extent);
-            mProgram->setUniformValue("uLevel", float(level));
+            // Small cards, and every card while the view moves, read the view's plane without
+            // the march (shaders/impostor.frag's FLAT): one fetch a pixel.
+            QOpenGLShaderProgram* program =
+                mMoving || int(level) >= kFlatFromLevel ? mFlatProgram.get() : mProgram.get();
+            if (program != bound) {
+                program->bind();
+                bound = program;
+            }
+            setUniform(*program, "uCentre", c.centre);
+            program->setUniformValue("uRadius", c.radius);
+            setUniform(*program, "uExtent", c.extent);
+            program->setUniformValue("uLevel", float(level));
             // Fewer samples of the march for cards read at levels 2-3, a few dozen pixels high
             // at most: the ray's whole march moves a few pixels there (measured: no change in
             // the picture, docs/perf/lods.md).
-            mProgram->setUniformValue("uSteps", level >= 2 ? kFarSteps : kNearSteps);
+            program->setUniformValue("uSteps", level >= 2 ? kFarSteps : kNearSteps);
             gl.glActiveTexture(GL_TEXTURE2);
             gl.glBindTexture(GL_TEXTURE_2D, c.depth);
-            gl.glActiveTexture(GL_TEXTURE1);
-            gl.glBindTexture(GL_TEXTURE_2D, c.normal);
             gl.glActiveTexture(GL_TEXTURE0);
-            gl.glBindTexture(GL_TEXTURE_2D, c.color);
+            gl.glBindTexture(GL_TEXTURE_2D, c.lit);
             // Orphaned each time: the driver need not wait for the previous draw's copy.
             gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(list.size() * sizeof(Instance)), nullptr,
                             GL_STREAM_DRAW);
@@ -260,7 +300,7 @@ std::size_t Impostors::end() {
             ++calls;
         }
     gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
-    for (GLenum unit : {GL_TEXTURE2, GL_TEXTURE1, GL_TEXTURE0}) {
+    for (GLenum unit : {GL_TEXTURE2, GL_TEXTURE0}) {
         gl.glActiveTexture(unit);
         gl.glBindTexture(GL_TEXTURE_2D, 0);
     }

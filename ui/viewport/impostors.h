@@ -63,6 +63,12 @@ public:
     /// tree is narrower than high: most of the square card is empty, and a software renderer
     /// pays for every pixel of it), with a margin for the views' blending. (1, -1, 1) at most.
     static glm::vec3 cardExtent(const mesh::Impostor& imp);
+    /// The crown occlusion the card's atlas is lit with (litImpostorAtlas): the mean of
+    /// mesh::crownOcclusion over the corners of \p m's leaf triangles (all its triangles when
+    /// it has no leaves), the value the viewport's mesh shader dims the same leaves by per
+    /// vertex. Measured against the tree's full mesh (tests/ui/test_viewportimpostor.cpp,
+    /// docs/lods.md): the constant 0.42 before made impostors 0.50-0.68 as bright as the mesh.
+    static float crownOcclusion(const mesh::Mesh& m);
     /// Drops the impostors whose key \p keep does not accept.
     void retain(const std::function<bool(Key)>& keep);
     std::size_t size() const { return mCards.size(); }
@@ -70,9 +76,13 @@ public:
     /// Starts a frame's impostors; draw() queues a tree, end() draws the queue with one
     /// instanced draw call per atlas and mipmap level (the instances of a variant share
     /// theirs). \p pixelsPerUnit: the pixels a unit at distance 1 spans on the target drawn
-    /// into (its height over 2 tan(fovY / 2)).
-    void begin(const glm::mat4& viewProj, const glm::vec3& eye, const glm::vec3& light,
-               float pixelsPerUnit);
+    /// into (its height over 2 tan(fovY / 2)). The lighting is the atlas' own
+    /// (litImpostorAtlas(): the camera's key light). \p moving: a frame drawn while the view
+    /// moves, where every card is drawn without the depth march from its heaviest view alone
+    /// (shaders/impostor.frag's FLAT and uOneView: one fetch a pixel); at rest, cards read at
+    /// kFlatFromLevel or coarser skip the march (the views still dithered).
+    void begin(const glm::mat4& viewProj, const glm::vec3& eye, float pixelsPerUnit,
+               bool moving = false);
     void draw(Key key, const glm::mat4& transform, float highlight);
     /// The atlas' mipmap level the shader reads a card at whose bounding sphere spans
     /// \p radiusPixels pixels of radius: the level where a texel is about a pixel, rounded,
@@ -83,13 +93,16 @@ public:
     static constexpr int kMaxLevel = 3;
     /// Samples of the shader's depth march for cards read at levels 0-1 and 2-3.
     static constexpr int kNearSteps = 4, kFarSteps = 3;
+    /// The finest mipmap level drawn without the march at rest (a card of a radius of about
+    /// kCell / 8 pixels: the views' parallax there is about a pixel, docs/perf/lods.md).
+    static constexpr int kFlatFromLevel = 2;
     /// Returns the number of draw calls made.
     std::size_t end();
 
 private:
     struct Card {
         std::shared_ptr<const void> owner; ///< keeps the key alive
-        GLuint color = 0, normal = 0, depth = 0;
+        GLuint lit = 0, depth = 0;         ///< litImpostorAtlas() and the depth map
         glm::vec3 centre{0.0f};
         float radius = 1.0f;
         /// The part of the card any view covers (cardExtent()).
@@ -97,6 +110,7 @@ private:
     };
     struct Baked {
         mesh::Impostor impostor;
+        Image lit; ///< litImpostorAtlas()
         glm::vec3 extent{1.0f, -1.0f, 1.0f};
     };
     struct Instance {
@@ -105,7 +119,9 @@ private:
     };
     GLuint upload(const Image& image);
     QOpenGLFunctions_3_3_Core* mGl = nullptr;
-    std::unique_ptr<QOpenGLShaderProgram> mProgram;
+    std::unique_ptr<QOpenGLShaderProgram> mProgram;     ///< marched
+    std::unique_ptr<QOpenGLShaderProgram> mFlatProgram; ///< one fetch (FLAT)
+    bool mMoving = false;
     GLuint mVao = 0, mInstances = 0;
     std::map<Key, std::array<std::vector<Instance>, kMaxLevel + 1>> mQueue;
     glm::vec3 mEye{0.0f};

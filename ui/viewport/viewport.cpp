@@ -19,6 +19,7 @@
 #include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
 #include "ui/generation/windvertexdata.h"
+#include "ui/viewport/impostorlighting.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewportsurface.h"
 
@@ -255,7 +256,7 @@ void Viewport::initializeGL() {
     // A software rasteriser's frame time grows with the pixels drawn; a GPU's hardly does.
     mSoftware = ViewportSurface::isSoftwareRenderer(
         QString::fromLatin1(reinterpret_cast<const char*>(glGetString(GL_RENDERER))));
-    mMotionScale = mSoftware && mSamples <= 1 ? 0.5f : 1.0f;
+    mMotionScale = mSoftware && mSamples <= 1 ? kSoftwareMotionScale : 1.0f;
     if (qEnvironmentVariableIsSet("SYLVA_MOTION_SCALE"))
         mMotionScale =
             std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
@@ -476,10 +477,9 @@ void Viewport::paintGL() {
     if (!mGrid.isBuilt()) mGrid.build(mCamera.sceneRadius(), mBoundsLo, mBoundsHi);
 
     const glm::mat4 viewProj = mCamera.projectionMatrix(aspect()) * mCamera.viewMatrix();
-    // A key light that follows the camera (above, to the left, from the front) keeps the tree
-    // readable from every side.
-    const glm::vec3 light =
-        glm::normalize(-0.5f * mCamera.forward() + 0.8f * mCamera.up() - 0.6f * mCamera.right());
+    // A key light that follows the camera keeps the tree readable from every side (the
+    // impostors' atlases have it baked in: ui/viewport/impostorlighting.h).
+    const glm::vec3 light = cameraKeyLight(mCamera.forward(), mCamera.up(), mCamera.right());
     // While the view moves, a software renderer draws fewer pixels (motionScale()); the sharp
     // frame follows when it rests.
     const bool moving = viewProj != mLastViewProj || mTransformsMoved;
@@ -645,8 +645,8 @@ void Viewport::paintGL() {
         if (!cards.empty()) {
             // The target's height: the reduced one while the view moves.
             const float targetHeight = float(full.height()) * (mLastReduced ? mMotionScale : 1.0f);
-            mImpostors.begin(viewProj, mCamera.eye(), light,
-                             targetHeight / (2.0f * std::tan(0.5f * mCamera.fovY())));
+            mImpostors.begin(viewProj, mCamera.eye(),
+                             targetHeight / (2.0f * std::tan(0.5f * mCamera.fovY())), mLastReduced);
             for (const TreeDraw* d : cards) {
                 const ViewTree& t = mTrees[d->index];
                 // A unique tree standing in with its variant's atlas: scaled to its height.
@@ -765,10 +765,12 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     // A frame drawn at reduced resolution while the view moves (a software renderer): each
     // tree's level, and where the impostor takes over, follow the pixels it spans on the
     // target drawn into, as at rest on the window: a tree half as many pixels high there is
-    // drawn as if twice as far (an impostor then spans no more target pixels than at rest).
+    // drawn as if twice as far (an impostor then spans no more target pixels than at rest),
+    // and kMotionLodBias times farther still.
     const double target = mLastReduced ? double(mMotionScale) : 1.0;
     view.viewportHeightPx = double(height()) * devicePixelRatioF() * target;
-    view.restHeightPx = double(height()) * devicePixelRatioF();
+    view.motionBias = mLastReduced ? kMotionLodBias : 1.0;
+    view.maxImpostorPx = mLastReduced ? kMaxMovingImpostorPx : 0.0;
     view.levels = mLod->isEnabled();
     // Variant levels while the view moves: ViewLod::kMotionFactor times as far as at rest on
     // the window (the target's scale above is part of it, not on top).

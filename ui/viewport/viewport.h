@@ -245,9 +245,20 @@ public:
     /// While the view moves (the camera or a dragged tree changed since the last frame) a
     /// software renderer draws the scene at this fraction of the resolution and scales it up;
     /// a sharp frame follows when the view rests (kSharpAfterMs). 1 on a graphics card, with
-    /// multisampling, or with SYLVA_MOTION_SCALE=1 (0.25 to 1).
+    /// multisampling, or with SYLVA_MOTION_SCALE=1 (0.25 to 1; kSoftwareMotionScale otherwise).
     float motionScale() const { return mMotionScale; }
     static constexpr int kSharpAfterMs = 250;
+    /// The moving frames' resolution under a software renderer (motionScale()).
+    static constexpr float kSoftwareMotionScale = 0.4f;
+    /// While the view moves under a software renderer, every tree picks its level and the
+    /// impostor's switch as if the target were this many times smaller still, drawn by the
+    /// impostors' one-fetch cards (Impostors::begin's moving), but a tree higher than
+    /// kMaxMovingImpostorPx on the target stays its coarsest mesh (an atlas view magnified
+    /// further reads as blocks, bare crowns as blobs). With kSoftwareMotionScale that brings the
+    /// 1,000-tree benchmark to ~30 fps (docs/perf/lods.md); the sharp frame at rest draws the
+    /// levels the window's pixels ask for.
+    static constexpr double kMotionLodBias = 1.5;
+    static constexpr double kMaxMovingImpostorPx = 1.2 * Impostors::kCell;
     /// The viewport's image at full resolution (for screenshots), whether the view moves.
     QImage grabSharp();
     /// Whether the last frame was drawn at the reduced resolution.

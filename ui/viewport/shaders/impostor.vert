@@ -14,7 +14,6 @@ uniform float uRadius;
 // The part of the card any view covers (Impostors::cardExtent): [-x, x] × [y, z].
 uniform vec3 uExtent;
 uniform int uGrid;
-flat out mat3 vNormalMatrix; // tree frame to world, for the atlas' normals
 flat out float vHighlight;
 // The three views blended, the heaviest first: where the viewer's ray through the fragment
 // meets each view's plane through the centre (cell coordinates 0..1: affine over the card, so
@@ -89,7 +88,6 @@ void main() {
     vWeight = w;
 
     vec3 p = uCentre + (st.x * right + st.y * up) * uRadius;
-    vNormalMatrix = mat3(aModel);
     vHighlight = aHighlight;
     gl_Position = uViewProj * aModel * vec4(p, 1.0);
 }
