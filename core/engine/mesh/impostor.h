@@ -107,11 +107,13 @@ Impostor bakeImpostor(const Mesh& mesh, const ImpostorMaterials& materials,
 /// The reference sampler (what the shader in docs/lods.md does): the impostor drawn as a
 /// camera-facing square of side 2 · radius seen from \p direction (toward the viewer), \p pixels²
 /// RGBA, blending the three atlas views around the direction (barycentric weights over the
-/// grid's triangle); each view is met by the viewer's ray through the pixel, marched against the
-/// depth that view stored (relief mapping: the first point where the ray passes behind the
-/// stored surface, by at most 0.05 of the radius or one march step, where the view has
+/// grid's triangle); each view is met by the viewer's ray through the pixel, marched
+/// against the depth that view stored (relief mapping: the first point where the ray passes behind
+/// the stored surface, by at most 0.05 of the radius or one march step, where the view has
 /// coverage), and sampled bilinearly there; a view the ray does not meet adds nothing, and one
-/// whose ray passed behind its own stored surface abstains (the coverage is the others').
+/// whose ray passed behind its own stored surface abstains (the coverage is the others'); a
+/// hit that a heavier view contradicts (it has no coverage within a texel of the hit's point)
+/// is vetoed, by how much heavier that view is (fully at 0.25 more weight).
 /// Alpha = coverage, colour unpremultiplied.
 Image renderImpostor(const Impostor& impostor, const glm::vec3& direction, int pixels);
 
