@@ -841,7 +841,10 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
         }
         mImpostors.request(key, std::move(owner), std::move(source), textures);
     }
-    if (mImpostorsWanted > 0 && !mBakeTimer->isActive()) mBakeTimer->start();
+    // Atlases still baking are collected by the timer's frames too, even when no tree in the
+    // view wants one now (the view moved nearer meanwhile): else lodPending() stays up.
+    if ((mImpostorsWanted > 0 || mImpostors.baking() > 0) && !mBakeTimer->isActive())
+        mBakeTimer->start();
 }
 
 void Viewport::setMeshUniforms(const MeshUniforms& uniforms) {
