@@ -1,6 +1,8 @@
 # Large forests in the editor's viewport (issue #32), run on demand, not by ctest:
 #   xvfb-run -a -s '-screen 0 1600x1000x24' build/release/app/editor/sylva --discard-autosave \
 #       --script tests/bench/editor/forest_scale.py resources/demo/bench-10000.sylva
+# The editor restores its saved view settings (View ▸ Wind sways every tree and redraws all the
+# time): for comparable figures run it with its own settings, XDG_CONFIG_HOME=$(mktemp -d).
 # Prints the time to generate and to make the view's levels and impostors, then frames per
 # second from the project camera (measure_frames turns the view a little each frame), the trees per level of
 # detail and the process' memory (VmRSS, VmHWM).
