@@ -11,10 +11,10 @@
 // the fetches; measured in docs/perf/lods.md), uSteps depth fetches of the march and the lit
 // colour. With FLAT defined (cards a few dozen pixels high, Impostors::kFlatFromLevel, and every
 // card while the view moves), no march: the chosen view's plane through the centre, one fetch
-// a pixel (the march would move the picture by about a pixel there). Every fetch reads the card's one mipmap level (uLevel,
-// a uniform): neighbouring pixels may take other views and hits, so the level cannot come
-// from their texture coordinates, and under llvmpipe a level that varies per pixel costs
-// about as much as three more fetches.
+// a pixel (the march would move the picture by about a pixel there). Every fetch reads the
+// card's one mipmap level (uLevel, a uniform): neighbouring pixels may take other views and
+// hits, so the level cannot come from their texture coordinates, and under llvmpipe a level
+// that varies per pixel costs about as much as three more fetches.
 in vec2 vT0[3];
 flat in vec2 vStep[3];
 flat in vec2 vCell[3];
