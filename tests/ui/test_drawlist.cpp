@@ -147,6 +147,23 @@ private Q_SLOTS:
         QVERIFY(capped > 0); // and trees too large for an impostor stayed meshes
     }
 
+    /// ViewLod::impostorHeightPx() is where levelFor() hands a tree to the impostor, on any
+    /// viewport (the viewport keeps swaying trees as meshes above it while the view moves).
+    void impostorHeightIsTheSwitch() {
+        const double px = ViewLod::impostorHeightPx();
+        QVERIFY(px > 50.0 && px < 150.0);
+        for (double viewport : {450.0, 720.0, 1080.0, 2160.0}) {
+            // A tree 10 m high spanning h pixels of this viewport stands at this distance.
+            const auto levelAtPx = [&](double h) {
+                const double d = 10.0 * viewport / (2.0 * h * std::tan(0.5 * double(kFov)));
+                return ViewLod::levelFor(
+                    ViewLod::equivalentHeights(d, 10.0, double(kFov), viewport));
+            };
+            QCOMPARE(levelAtPx(0.99 * px), ViewLod::kImpostorLevel);
+            QVERIFY(levelAtPx(1.01 * px) < ViewLod::kImpostorLevel);
+        }
+    }
+
     void treesWithoutABoxAreDrawnFirstAtFullDetail() {
         // The trees' boxes lag behind (fewer than trees): drawn, distance 0, level 0.
         const std::vector<TreeDraw> list = buildDrawList(view(), {true, true, false}, {tree(0, 0)});

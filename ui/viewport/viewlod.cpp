@@ -64,10 +64,26 @@ double ViewLod::levelHeights(int level) {
     return level > 0 && level < kLevels ? kLevelHeights[level] : 0.0;
 }
 
+namespace {
+// Where the impostor takes over, in tree heights away at the reference view
+// (SYLVA_IMPOSTOR_HEIGHTS for comparisons).
+double impostorHeights() {
+    static const double at = qEnvironmentVariableIsSet("SYLVA_IMPOSTOR_HEIGHTS")
+                                 ? qEnvironmentVariable("SYLVA_IMPOSTOR_HEIGHTS").toDouble()
+                                 : kLevelHeights[ViewLod::kImpostorLevel];
+    return at;
+}
+} // namespace
+
+double ViewLod::impostorHeightPx() {
+    // A tree spans reference / (2 tan(ref / 2)) / heights pixels at the reference view, and
+    // equivalentHeights() maps every view's pixels onto it one to one.
+    return kReferenceHeightPx / (2.0 * std::tan(0.5 * kReferenceFovY)) /
+           std::max(impostorHeights(), 1e-6);
+}
+
 int ViewLod::levelFor(double equivalentHeights) {
-    static const double impostorAt = qEnvironmentVariableIsSet("SYLVA_IMPOSTOR_HEIGHTS")
-                                         ? qEnvironmentVariable("SYLVA_IMPOSTOR_HEIGHTS").toDouble()
-                                         : kLevelHeights[kImpostorLevel];
+    const double impostorAt = impostorHeights();
     int level = 0;
     for (int k = 1; k < kImpostorLevel; ++k)
         if (equivalentHeights >= kLevelHeights[k]) level = k;

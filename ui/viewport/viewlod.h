@@ -46,6 +46,9 @@ public:
     /// \p equivalentHeights tree heights away (see equivalentHeights()): the coarsest level
     /// built for no more than that distance.
     static int levelFor(double equivalentHeights);
+    /// The height on screen (pixels, on any viewport) under which a tree is drawn as its
+    /// impostor: about 94 px.
+    static double impostorHeightPx();
     /// How far, in tree heights, the reference view would be from a tree \p worldHeight metres
     /// high to show it as large as a camera \p distance metres away with a vertical field of
     /// view \p fovY (radians) shows it on a viewport \p viewportHeightPx pixels high.

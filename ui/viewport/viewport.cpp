@@ -772,6 +772,10 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     view.viewportHeightPx = double(height()) * devicePixelRatioF() * target;
     view.motionBias = mLastReduced ? kMotionLodBias : 1.0;
     view.maxImpostorPx = mLastReduced ? kMaxMovingImpostorPx : 0.0;
+    // Impostors do not sway: with View ▸ Wind on, a moving frame draws no tree as one that the
+    // sharp frame draws as a swaying mesh (the levels below still follow motionBias).
+    if (mLastReduced && windActive())
+        view.maxImpostorPx = std::min(kMaxMovingImpostorPx, ViewLod::impostorHeightPx() * target);
     view.levels = mLod->isEnabled();
     // Variant levels while the view moves: ViewLod::kMotionFactor times as far as at rest on
     // the window (the target's scale above is part of it, not on top).
