@@ -61,11 +61,9 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
                 const double worldHeight = double(b.hi.y - b.lo.y);
                 d.level = ViewLod::levelFor(ViewLod::equivalentHeights(
                     double(d.distance), worldHeight, double(view.fovY), heightPx));
-                const double onTarget =
-                    worldHeight * view.viewportHeightPx /
-                    (2.0 * std::max(double(d.distance), 1e-6) * std::tan(0.5 * double(view.fovY)));
                 if (d.level == ViewLod::kImpostorLevel && view.maxImpostorPx > 0.0 &&
-                    onTarget > view.maxImpostorPx)
+                    ViewLod::heightOnScreenPx(double(d.distance), worldHeight, double(view.fovY),
+                                              view.viewportHeightPx) > view.maxImpostorPx)
                     d.level = ViewLod::kImpostorLevel - 1;
             }
             if (i < instances.size() && instances[i].variant &&

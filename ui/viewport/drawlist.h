@@ -50,8 +50,9 @@ struct DrawListView {
     /// under a software renderer, 1 at rest).
     double motionBias = 1.0;
     /// A tree higher than this on the target (device pixels, before motionBias; 0: no limit)
-    /// is never an impostor but the coarsest mesh: Impostors::kCell while the view moves, so
-    /// that no atlas cell is magnified into blocks (at rest the switch size keeps it so).
+    /// is never an impostor but the coarsest mesh: Viewport::kMaxMovingImpostorPx while the
+    /// view moves, so that no atlas cell is magnified into blocks (at rest the switch size
+    /// keeps it so), and the rest switch's height with View ▸ Wind on (impostors do not sway).
     double maxImpostorPx = 0.0;
     bool levels = true; ///< false: every tree at level 0 (the distance LOD is off)
     /// Instances pick their variant's level this much farther (ViewLod::kMotionFactor while

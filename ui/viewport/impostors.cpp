@@ -120,26 +120,21 @@ void Impostors::request(Key key, std::shared_ptr<const void> owner,
 
 float Impostors::crownOcclusion(const mesh::Mesh& m) {
     const std::vector<float> occlusion = mesh::crownOcclusion(m);
-    const auto meanOver = [&](bool leavesOnly) {
-        double sum = 0.0;
-        std::size_t n = 0;
-        const auto add = [&](std::size_t first, std::size_t count) {
-            for (std::size_t i = first; i < first + count && i < m.indices.size(); ++i)
-                if (m.indices[i] < occlusion.size()) {
-                    sum += double(occlusion[m.indices[i]]);
-                    ++n;
-                }
-        };
-        if (!leavesOnly)
-            add(0, m.indices.size());
-        else
-            for (const mesh::Submesh& s : m.submeshes)
-                if (s.material == "leaf") add(s.firstIndex, s.indexCount);
-        return n > 0 ? float(sum / double(n)) : -1.0f;
+    const bool hasLeaves = std::any_of(m.submeshes.begin(), m.submeshes.end(),
+                                       [](const mesh::Submesh& s) { return s.material == "leaf"; });
+    double sum = 0.0;
+    std::size_t n = 0;
+    const auto add = [&](std::size_t first, std::size_t count) {
+        for (std::size_t i = first; i < first + count && i < m.indices.size(); ++i)
+            if (m.indices[i] < occlusion.size()) {
+                sum += double(occlusion[m.indices[i]]);
+                ++n;
+            }
     };
-    const float leaves = meanOver(true);
-    const float all = leaves >= 0.0f ? leaves : meanOver(false);
-    return all >= 0.0f ? std::clamp(all, 0.0f, 1.0f) : 1.0f;
+    if (!hasLeaves) add(0, m.indices.size());
+    for (const mesh::Submesh& s : m.submeshes)
+        if (hasLeaves && s.material == "leaf") add(s.firstIndex, s.indexCount);
+    return n > 0 ? std::clamp(float(sum / double(n)), 0.0f, 1.0f) : 1.0f;
 }
 
 glm::vec3 Impostors::cardExtent(const mesh::Impostor& imp) {

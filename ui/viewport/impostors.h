@@ -28,7 +28,8 @@ namespace sylva::ui {
 /// (mesh::bakeImpostor, the same atlas `sylva-cli lods` writes, docs/lods.md): the three atlas
 /// views around the view direction blended by an ordered dither (no popping while the view
 /// turns), the viewer's ray marched against the chosen view's depth (shaders/impostor.frag),
-/// lit with the atlas' normals like the meshes. Atlases are baked on a
+/// lit like the meshes by the camera's key light, baked into the atlas when it is uploaded
+/// (ui/viewport/impostorlighting.h). Atlases are baked on a
 /// worker thread (request(); the GUI thread only uploads them, collect()) from a coarse mesh
 /// level, and kept per key while a tree draws it: one per variant (its instances and the
 /// unique trees of its species it stands in for share it), or one per tree without a variant.

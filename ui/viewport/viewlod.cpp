@@ -91,6 +91,11 @@ int ViewLod::levelFor(double equivalentHeights) {
     return level;
 }
 
+double ViewLod::heightOnScreenPx(double distance, double worldHeight, double fovY,
+                                 double viewportHeightPx) {
+    return worldHeight * viewportHeightPx / (2.0 * std::max(distance, 1e-6) * std::tan(0.5 * fovY));
+}
+
 double ViewLod::equivalentHeights(double distance, double worldHeight, double fovY,
                                   double viewportHeightPx) {
     if (worldHeight <= 1e-6 || viewportHeightPx <= 0.0) return 0.0;

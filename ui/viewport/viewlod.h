@@ -54,6 +54,10 @@ public:
     /// view \p fovY (radians) shows it on a viewport \p viewportHeightPx pixels high.
     static double equivalentHeights(double distance, double worldHeight, double fovY,
                                     double viewportHeightPx);
+    /// The pixels a tree \p worldHeight metres high spans, \p distance metres away, with a
+    /// vertical field of view \p fovY (radians) on a viewport \p viewportHeightPx pixels high.
+    static double heightOnScreenPx(double distance, double worldHeight, double fovY,
+                                   double viewportHeightPx);
 
     explicit ViewLod(QObject* parent = nullptr);
     ~ViewLod() override;

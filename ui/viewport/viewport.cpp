@@ -778,7 +778,7 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
         view.maxImpostorPx = std::min(kMaxMovingImpostorPx, ViewLod::impostorHeightPx() * target);
     view.levels = mLod->isEnabled();
     // Variant levels while the view moves: ViewLod::kMotionFactor times as far as at rest on
-    // the window (the target's scale above is part of it, not on top).
+    // the window (the target's scale above is part of it, not on top), and motionBias more.
     static const double bias = qEnvironmentVariableIsSet("SYLVA_LOD_BIAS")
                                    ? qEnvironmentVariable("SYLVA_LOD_BIAS").toDouble()
                                    : 1.0;
