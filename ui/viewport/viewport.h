@@ -256,8 +256,8 @@ public:
     /// kMaxMovingImpostorPx on the target stays its coarsest mesh (an atlas view magnified
     /// further reads as blocks, bare crowns as blobs; 1.2 cells: 27-33 fps, 1.5: the alder
     /// demo's bare crowns blotted). With kSoftwareMotionScale that brings the 1,000-tree
-    /// benchmark to 30-36 fps (docs/perf/lods.md); the sharp frame at rest draws the levels
-    /// the window's pixels ask for.
+    /// benchmark to about 30 fps (27-36, docs/perf/lods.md); the sharp frame at rest draws the
+    /// levels the window's pixels ask for.
     static constexpr double kMotionLodBias = 1.5;
     static constexpr double kMaxMovingImpostorPx = 1.35 * Impostors::kCell;
     /// The viewport's image at full resolution (for screenshots), whether the view moves.
