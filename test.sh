@@ -13,6 +13,10 @@ cd "$(dirname "$0")"
 ./scripts/install-readers.sh
 
 JOBS=${SYLVA_JOBS:-$(nproc)}
+# ccache (CMakeLists.txt uses it when installed): paths relative to this checkout, so a clean
+# clone elsewhere hits the cache a session warmed.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
+export CCACHE_MAXSIZE="${CCACHE_MAXSIZE:-8G}"
 start=$(date +%s)
 
 cmake --preset release >/dev/null
