@@ -1,5 +1,6 @@
 #include "ui/filedialogs.h"
 
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 
@@ -47,9 +48,14 @@ QString FileDialogs::withFilterExtension(const QString& path, const QString& fil
     return path + filter.mid(star + 1, filter.indexOf(QLatin1Char(')'), star) - star - 1);
 }
 
+QString FileDialogs::startFolder(const QString& shown) {
+    return shown.isEmpty() ? QDir::homePath() : QFileInfo(shown).absolutePath();
+}
+
 QString FileDialogs::suggestedName(const QString& shown, const QString& fallback,
                                    const QString& extension) {
-    return QFileInfo(shown.isEmpty() ? fallback : shown).completeBaseName() + extension;
+    return QDir(startFolder(shown))
+        .filePath(QFileInfo(shown.isEmpty() ? fallback : shown).completeBaseName() + extension);
 }
 
 } // namespace sylva::ui

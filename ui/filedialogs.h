@@ -28,7 +28,11 @@ public:
     /// \p path with the first extension of \p filter ("glTF binary (*.glb)" adds ".glb") when it
     /// has none.
     static QString withFilterExtension(const QString& path, const QString& filter);
-    /// \p shown's base name (\p fallback when none) with \p extension (".obj").
+    /// Where the export dialogs open: the folder of \p shown (the project or species file),
+    /// else the home folder; Export and Export LOD chain… start at the same place.
+    static QString startFolder(const QString& shown);
+    /// \p shown's base name (\p fallback when none) with \p extension (".obj"), in
+    /// startFolder(\p shown).
     static QString suggestedName(const QString& shown, const QString& fallback,
                                  const QString& extension);
 };

@@ -12,6 +12,7 @@
 #include <QTimer>
 
 #include "document/errormessage.h"
+#include "ui/filedialogs.h"
 
 namespace sylva::ui {
 
@@ -67,9 +68,10 @@ void LodChainExportAction::update() {
 }
 
 void LodChainExportAction::chooseFolder() {
-    const QString dir =
-        QFileDialog::getExistingDirectory(mWindow, tr("Export LOD chain into folder"),
-                                          mLastFolder.isEmpty() ? QDir::homePath() : mLastFolder);
+    const QString dir = QFileDialog::getExistingDirectory(
+        mWindow, tr("Export LOD chain into folder"),
+        mLastFolder.isEmpty() ? FileDialogs::startFolder(mShown ? mShown() : QString())
+                              : mLastFolder);
     if (dir.isEmpty()) return;
     mLastFolder = dir;
     exportTo(dir);

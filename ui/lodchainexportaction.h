@@ -28,6 +28,8 @@ public:
     LodChainExportAction(QWidget* window, SourceOf source);
 
     QAction* action() const { return mAction; }
+    /// The file shown (the project or species), whose folder the folder dialog starts in.
+    void setShownFile(std::function<QString()> shown) { mShown = std::move(shown); }
     /// Enables the action when there is a chain to export (after a generation, a selection).
     void update();
     /// Writes the chain into \p dir (created when missing), showing the progress dialog and
@@ -48,6 +50,7 @@ private:
 
     QWidget* mWindow;
     SourceOf mSource;
+    std::function<QString()> mShown;
     QAction* mAction;
     QPointer<QProgressDialog> mDialog;
     exporter::GameLodFiles mFiles;

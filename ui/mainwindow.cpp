@@ -19,6 +19,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
+#include <QPointer>
 #include <QProgressBar>
 #include <QScreen>
 #include <QScrollArea>
@@ -101,6 +102,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     });
     statusBar()->addPermanentWidget(mBusy);
     statusBar()->addPermanentWidget(mCancel);
+    // A failed generation stays in the status bar (a permanent widget, which the transient
+    // lines of later previews and timings do not cover) until a generation succeeds.
+    mGenerationError = new QLabel(this);
+    mGenerationError->setObjectName(QStringLiteral("generationError"));
+    mGenerationError->setStyleSheet(QStringLiteral("color: #ffffff; background: #b03030; "
+                                                   "padding: 0 6px"));
+    mGenerationError->hide();
+    statusBar()->addPermanentWidget(mGenerationError, 1);
     mGlLabel = new QLabel(this);
     statusBar()->addPermanentWidget(mGlLabel);
 
@@ -108,6 +117,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     mTools = new ToolController(
         *mDocument, *mViewport,
         [this]() -> const GenerationResult& { return mGenerator->result(); }, this);
+    // The orbit keeps the eye above the terrain and the obstacles under it.
+    mViewport->camera().setGround([tools = QPointer<ToolController>(mTools)](float x, float z) {
+        return tools ? tools->surfaceHeight(x, z) : 0.0f;
+    });
     connect(mTools, &ToolController::treeBranchClicked, this,
             [this](std::uint32_t id, const glm::vec3& local) {
                 // With the species editor open, a click on a tree also shows what grew it.
@@ -255,6 +268,11 @@ void MainWindow::createDocks() {
     mWorkbench->setObjectName(QStringLiteral("speciesWorkbench"));
     connect(mWorkbench, &SpeciesWorkbench::status, this,
             [this](const QString& text, int ms) { statusBar()->showMessage(text, ms); });
+    connect(mWorkbench, &SpeciesWorkbench::previewFailed, this,
+            [this](const QString& where, const QString& message) {
+                mMessages->add(MessagesPanel::Severity::Error,
+                               tr("Species preview (%1): %2").arg(where, message));
+            });
     // A texture drawn without its file, in the scene or in the species preview.
     for (Viewport* view : {mViewport, mWorkbench->previewViewport()})
         connect(view, &Viewport::warning, this, [this](const QString& text) {
@@ -384,6 +402,7 @@ void MainWindow::createMenus() {
         return lodChainSource({lastResult(), mPreview.isActive() ? nullptr : mDocument,
                                glm::vec3(0.0f), glm::vec3(0.0f)});
     });
+    mLodChainExport->setShownFile([this] { return currentPath(); });
     file->addAction(mLodChainExport->action());
     connect(mLodChainExport, &LodChainExportAction::finished, this,
             [this](bool ok, const QString& message) {
@@ -638,6 +657,10 @@ const GenerationResult& MainWindow::lastResult() const {
     return mPreview.isActive() ? mPreview.result() : mGenerator->result();
 }
 
+QString MainWindow::generationError() const {
+    return mGenerationError->isHidden() ? QString() : mGenerationError->text();
+}
+
 bool MainWindow::isGenerating() const {
     return mPreview.isRunning() || mGenerator->isBusy() ||
            (mSpeciesRegen != nullptr && mSpeciesRegen->isActive());
@@ -736,6 +759,10 @@ void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
         }
         mSourceWatcher->watch(sources, stamps);
         reportError(error);
+        const QString line = error.section(QLatin1Char('\n'), 0, 0);
+        mGenerationError->setText(tr("Generation failed: %1").arg(line));
+        mGenerationError->setToolTip(error);
+        mGenerationError->show();
         Q_EMIT generationFinished(false);
         return;
     }
@@ -746,6 +773,8 @@ void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
                             mDocumentStamp);
     mSourceWatcher->watch(sources, stamps);
     mLastError.clear();
+    mGenerationError->hide();
+    mGenerationError->clear();
     showDocument(mFrameNext);
     mFrameNext = false;
     Q_EMIT generationFinished(true);

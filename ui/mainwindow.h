@@ -129,6 +129,8 @@ public:
     /// The last successful generation of what is shown (preview or document).
     const GenerationResult& lastResult() const;
     QString lastError() const { return mLastError; }
+    /// The failed generation the status bar shows until one succeeds; empty when none.
+    QString generationError() const;
     bool isGenerating() const;
     bool isPreview() const { return mPreview.isActive(); }
     /// Waits (running the event loop) until the current generation ends; false on timeout.
@@ -223,6 +225,7 @@ private:
     ColorByMenu* mColorMenu = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;
+    QLabel* mGenerationError = nullptr; ///< the newest generation's error, until one succeeds
     QProgressBar* mBusy = nullptr;
     QToolButton* mCancel = nullptr;
 

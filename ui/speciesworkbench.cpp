@@ -83,9 +83,25 @@ SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
                                   "from a right port to a node to connect, Delete removes"),
                                mView));
     split->addWidget(mGrammar);
+    // A failed preview says so on its own pane, above an emptied view (never a stale tree).
+    mPreviewError = new QLabel(this);
+    mPreviewError->setObjectName(QStringLiteral("previewError"));
+    mPreviewError->setStyleSheet(
+        QStringLiteral("color: #ffffff; background: #b03030; padding: 4px; font-weight: bold"));
+    mPreviewError->setWordWrap(true);
+    mPreviewError->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    mPreviewError->hide();
+    auto* previewPane = new QWidget(this);
+    {
+        auto* l = new QVBoxLayout(previewPane);
+        l->setContentsMargins(0, 0, 0, 0);
+        l->setSpacing(2);
+        l->addWidget(mPreviewError);
+        l->addWidget(mPreviewView, 1);
+    }
     split->addWidget(captioned(tr("<b>Preview</b> — one tree; click a branch to select the node "
                                   "that grew it and see its grammar rule"),
-                               mPreviewView));
+                               previewPane));
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 3);
     split->setStretchFactor(2, 2);
@@ -335,10 +351,25 @@ void SpeciesWorkbench::onPreviewFinished() {
         mFramed = true;
     }
     if (!r.error.isEmpty()) {
+        const QString where =
+            r.errorNode.isEmpty() ? r.species : tr("%1, node '%2'").arg(r.species, r.errorNode);
+        if (r.mesh) {
+            // The same species' last good tree stays while an edit fails; the pane says so.
+            mPreviewError->setText(
+                tr("Preview failed (%1) — showing the last good tree: %2").arg(where, r.error));
+        } else {
+            // Another species' tree must not stand in for this one.
+            mPreviewView->setMesh(nullptr, false);
+            mPreviewError->setText(tr("Preview failed (%1): %2").arg(where, r.error));
+        }
+        mPreviewError->show();
         mPreviewLabel->setText(tr("Preview failed"));
         mPreviewLabel->setToolTip(r.error);
         Q_EMIT status(r.error, 8000);
+        Q_EMIT previewFailed(where, r.error);
     } else {
+        mPreviewError->hide();
+        mPreviewError->clear();
         mPreviewLabel->setToolTip(tr("Evaluation %1 ms").arg(r.evaluateMs, 0, 'f', 1));
     }
     mPreviewView->update();

@@ -58,6 +58,8 @@ public:
 Q_SIGNALS:
     /// A line for the status bar ("Preview 23 ms", a refused connection's reason).
     void status(const QString& text, int timeoutMs);
+    /// The species preview failed: \p where names the species and the failing node.
+    void previewFailed(const QString& where, const QString& message);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -76,6 +78,7 @@ private:
     doc::Document& mDocument;
     QComboBox* mSpeciesCombo;
     QLabel* mPreviewLabel;
+    QLabel* mPreviewError;
     QLabel* mRefusal;
     NodeGraphScene* mScene;
     NodeGraphView* mView;

@@ -1,5 +1,7 @@
 #include "document/document.h"
 
+#include "document/linkedfiles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -59,6 +61,9 @@ void Document::newProject() {
 std::vector<std::string> Document::open(const QString& path) {
     LoadReport report;
     Project p = loadProjectOrScene(path, &report); // throws: nothing changed yet
+    // Every linked file (species, grammar, mesh) is read and checked before the open project
+    // is replaced: a bad one leaves it exactly as it was (bytes, path, undo history).
+    checkLinkedFiles(p);
     replace(std::move(p), QFileInfo(path).absoluteFilePath());
     std::vector<std::string> messages = report.warnings;
     messages.insert(messages.end(), report.upgrades.begin(), report.upgrades.end());

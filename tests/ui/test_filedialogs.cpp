@@ -47,9 +47,13 @@ private Q_SLOTS:
     void suggestsTheShownFilesName() {
         QCOMPARE(FileDialogs::suggestedName(QStringLiteral("/p/alder.species.json"),
                                             QStringLiteral("forest"), QStringLiteral(".obj")),
-                 QStringLiteral("alder.species.obj"));
+                 QStringLiteral("/p/alder.species.obj"));
         QCOMPARE(FileDialogs::suggestedName({}, QStringLiteral("sylva"), QStringLiteral(".png")),
-                 QStringLiteral("sylva.png"));
+                 QDir::home().filePath(QStringLiteral("sylva.png")));
+        // Issue #40: Export opened in the working folder, Export LOD chain in the home folder;
+        // both start where the project is.
+        QCOMPARE(FileDialogs::startFolder(QStringLiteral("/p/forest.sylva")), QStringLiteral("/p"));
+        QCOMPARE(FileDialogs::startFolder({}), QDir::homePath());
     }
 
     void dialogsAddTheirExtension() {

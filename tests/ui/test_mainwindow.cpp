@@ -27,8 +27,10 @@
 
 #include "document/presetlibrary.h"
 #include "engine/mesh/mesh.h"
+#include "engine/skeleton/skeleton.h"
 #include "ui/document/messagespanel.h"
 #include "ui/document/statspanel.h"
+#include "ui/generation/treegenerator.h"
 #include "ui/mainwindow.h"
 #include "ui/viewport/orbitcamera.h"
 #include "ui/viewport/viewport.h"
@@ -559,6 +561,21 @@ private Q_SLOTS:
         QVERIFY(finished.wait(kGenerationTimeoutMs));
         QVERIFY2(finished.first().first().toBool(), qPrintable(mWindow->lastError()));
         QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statTrees")), QStringLiteral("42"));
+        // Issue #40: a forest's segments and leaves are counted (they showed "–"): the sums of
+        // its trees' skeletons.
+        {
+            qlonglong segments = 0, leaves = 0;
+            for (const DrawnTree& t : mWindow->lastResult().trees) {
+                QVERIFY(t.lod.skeleton);
+                segments += qlonglong(t.lod.skeleton->segmentCount());
+                leaves += qlonglong(t.lod.skeleton->leaves.size());
+            }
+            QVERIFY(segments > 0);
+            QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statSegments")).toLongLong(),
+                     segments);
+            QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statLeaves")).toLongLong(),
+                     leaves);
+        }
         // The scene's CO2 in tonnes (57.4 t for the demo, as sylva-cli stats sums it).
         QCOMPARE(mWindow->statsPanel()->value(QStringLiteral("statCo2")),
                  QStringLiteral("%1 t").arg(mWindow->lastResult().stats.at("co2_kg") / 1000.0, 0,

@@ -93,6 +93,32 @@ private Q_SLOTS:
         QVERIFY(failed.front().front().toString().contains(QStringLiteral("bush seventy")));
         QCOMPARE(tools.brush().mix, Mix({{"bush", 70.0}, {"shrub", 30.0}}));
     }
+
+    // Issue #40: with the bar's species shown and Mix left empty, the first stroke painted every
+    // species (the bar pushed its settings only when a field changed).
+    void theBrushPaintsWhatTheBarShowsUntouched() {
+        doc::Document document;
+        document.open(QDir(QStringLiteral(SYLVA_TEST_DATA_DIR))
+                          .filePath(QStringLiteral("projects/small.sylva")));
+        Viewport view;
+        GenerationResult none;
+        ToolController tools(document, view, [&none]() -> const GenerationResult& { return none; });
+        ToolOptionsBar bar(tools, document);
+        auto* species = bar.findChild<QComboBox*>(QStringLiteral("toolSpecies"));
+        QVERIFY(!species->currentText().isEmpty());
+        QCOMPARE(tools.brush().mix, Mix({{species->currentText().toStdString(), 1.0}}));
+        // A document opened after the bar was made: its first species, at once.
+        doc::Document other;
+        ToolController tools2(other, view, [&none]() -> const GenerationResult& { return none; });
+        ToolOptionsBar bar2(tools2, other);
+        other.open(QDir(QStringLiteral(SYLVA_TEST_DATA_DIR))
+                       .filePath(QStringLiteral("projects/small.sylva")));
+        auto* species2 = bar2.findChild<QComboBox*>(QStringLiteral("toolSpecies"));
+        QCOMPARE(tools2.brush().mix, Mix({{species2->currentText().toStdString(), 1.0}}));
+        // A mix typed and painted with before the field lost focus.
+        bar2.findChild<QLineEdit*>(QStringLiteral("brushMix"))->setText(QStringLiteral("shrub 2"));
+        QCOMPARE(tools2.brush().mix, Mix({{"shrub", 2.0}}));
+    }
 };
 
 QTEST_MAIN(TestToolOptionsBar)

@@ -9,6 +9,8 @@
 #include <memory>
 #include <set>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <QApplication>
 #include <QDir>
 #include <QMouseEvent>
@@ -137,6 +139,42 @@ private Q_SLOTS:
             }
         qInfo("%d of the rays hit a tree", hits);
         QVERIFY(hits > 20);
+    }
+
+    /// Issue #40: a click on a distant tree's drawn crown selected nothing, because picking
+    /// tested the full mesh while the view drew a coarse level or an impostor card. Trees drawn
+    /// coarse are picked by their box; those drawn at full detail still by their triangles.
+    void coarseTreesArePickedByWhatIsDrawn() {
+        auto m = std::make_shared<mesh::Mesh>();
+        m->positions = {
+            {-1.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 6.0f, 0.0f}, {0.0f, 6.0f, 2.0f}};
+        m->indices = {0, 1, 2};
+        std::vector<ViewTree> trees(1);
+        trees[0].mesh = m;
+        const std::vector<Bounds> bounds{worldBounds(*m, trees[0].transform)};
+        // Through the box beside the crown's one triangle.
+        const Ray ray{{0.9f, 5.0f, 10.0f}, {0.0f, 0.0f, -1.0f}};
+        QCOMPARE(pickTree(ray, trees, bounds).index, -1);
+        QCOMPARE(pickTree(ray, trees, bounds, {}, {true}).index, 0);
+        // A tree in front drawn at full detail, whose triangles the ray misses, does not hide it.
+        std::vector<ViewTree> two{trees[0], trees[0]};
+        two[0].transform = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 3.0f));
+        const std::vector<Bounds> boxes{worldBounds(*m, two[0].transform),
+                                        worldBounds(*m, two[1].transform)};
+        QCOMPARE(pickTree(ray, two, boxes, {}, {false, true}).index, 1);
+        // In the demo window: every tree the last frame drew coarse is picked at its box's
+        // centre (the full mesh may have a gap there).
+        const std::vector<ViewTree>& shown = viewport()->trees();
+        int coarse = 0;
+        for (const TreeDraw& d : viewport()->lastDrawList()) {
+            if (d.level == 0 && d.variantLevel <= 0) continue;
+            const Bounds& b = viewport()->treeBounds()[d.index];
+            const auto p = viewport()->project(0.5f * (b.lo + b.hi));
+            if (!p) continue;
+            ++coarse;
+            QVERIFY2(viewport()->pickAt(*p).index >= 0, qPrintable(QString::number(d.index)));
+        }
+        qInfo("%d of %zu trees drawn coarse", coarse, shown.size());
     }
 
     /// Click where the hand-placed tree's trunk is drawn: it is selected (and highlighted);

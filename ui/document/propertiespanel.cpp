@@ -53,7 +53,9 @@ int PropertiesPanel::addSpins(const QString& label, int count, double lo, double
         box->setRange(lo, hi);
         box->setSingleStep(step);
         box->setDecimals(decimals);
-        box->setSuffix(suffix);
+        // Three boxes in a row leave no room for a unit in each (it was cut off): the row's
+        // label carries it instead ("Position (m):").
+        if (count == 1) box->setSuffix(suffix);
         box->setKeyboardTracking(false); // one edit per Enter, arrow click or focus change
         box->setAccelerated(true);
         // Narrow enough for three in a row in the dock; the value's width, not the range's.
@@ -64,7 +66,10 @@ int PropertiesPanel::addSpins(const QString& label, int count, double lo, double
         h->addWidget(box);
         mSpins.push_back(box);
     }
-    mForm->addRow(label, row);
+    QString rowLabel = label;
+    if (count > 1 && !suffix.trimmed().isEmpty() && rowLabel.endsWith(QLatin1Char(':')))
+        rowLabel = tr("%1 (%2):").arg(rowLabel.chopped(1), suffix.trimmed());
+    mForm->addRow(rowLabel, row);
     return first;
 }
 
@@ -371,8 +376,9 @@ void PropertiesPanel::rebuild() {
             for (const doc::ProjectInstance& t : mDocument.project().instances)
                 trees += t.species == s.name ? 1 : 0;
             mInfo->setText(
-                tr("<b>%1</b><br>%2<br>%3 hand-placed tree(s). Rename it in the outliner; edit "
-                   "its parameters from the Python console (doc.set_param).")
+                tr("<b>%1</b><br>%2<br>%3 hand-placed tree(s). Rename it in the outliner; "
+                   "tune its graph and parameters in the Species Editor (Scene ▸ Edit "
+                   "species…, Ctrl+Shift+E).")
                     .arg(QString::fromStdString(s.name).toHtmlEscaped(),
                          s.file.empty()
                              ? tr("Stored in the project.")

@@ -59,16 +59,29 @@ void StatsPanel::showResult(const GenerationResult& result) {
     mFile->setToolTip(result.path);
     mVertices->setText(QString::number(result.vertexCount()));
     mTriangles->setText(QString::number(result.triangleCount()));
-    // A project's forest: how many trees; its segments and leaves are not counted.
+    // A project's forest: how many trees, and the segments and leaves of all of them (an
+    // instance counts its variant's skeleton).
     const auto trees = result.stats.find("trees");
     const bool forest = trees != result.stats.end();
     mTrees->setText(QString::number(forest ? qlonglong(trees->second) : 1));
-    mSegments->setText(forest ? QStringLiteral("–")
-                              : QString::number(qlonglong(result.segments())));
-    qlonglong leaves = result.skeleton ? qlonglong(result.skeleton->leaves.size()) : 0;
-    if (auto it = result.stats.find("leaves"); it != result.stats.end())
-        leaves = qlonglong(it->second);
-    mLeaves->setText(forest ? QStringLiteral("–") : QString::number(leaves));
+    if (forest) {
+        qlonglong segments = 0, leaves = 0;
+        bool counted = false;
+        for (const DrawnTree& t : result.trees)
+            if (t.lod.skeleton) {
+                counted = true;
+                segments += qlonglong(t.lod.skeleton->segmentCount());
+                leaves += qlonglong(t.lod.skeleton->leaves.size());
+            }
+        mSegments->setText(counted ? QString::number(segments) : QStringLiteral("–"));
+        mLeaves->setText(counted ? QString::number(leaves) : QStringLiteral("–"));
+    } else {
+        mSegments->setText(QString::number(qlonglong(result.segments())));
+        qlonglong leaves = result.skeleton ? qlonglong(result.skeleton->leaves.size()) : 0;
+        if (auto it = result.stats.find("leaves"); it != result.stats.end())
+            leaves = qlonglong(it->second);
+        mLeaves->setText(QString::number(leaves));
+    }
     mHeight->setText(tr("%1 m").arg(locale.toString(result.height(), 'f', 2)));
     mTime->setText(tr("%1 ms").arg(locale.toString(result.elapsedMs, 'f', 1)));
     // A project's scene total (sylva-cli stats gives the per-tree figures).

@@ -79,12 +79,14 @@ void DocumentGenerator::onFinished() {
         return;
     }
     if (!result.ok()) {
+        mFailure = result.error.isEmpty() ? tr("the generation failed") : result.error;
         Q_EMIT finished(false, result.error);
         return;
     }
     mEditToResultMs = double(mSinceEdit.nsecsElapsed()) * 1e-6;
     mResultRequest = mSinceEdit;
     mResult = std::move(result);
+    mFailure.clear();
     Q_EMIT finished(true, {});
 }
 

@@ -34,6 +34,9 @@ public:
     const GenerationResult& result() const { return mResult; }
     /// Milliseconds from the edit that asked for the last result to its end (the mesh ready).
     double editToResultMs() const { return mEditToResultMs; }
+    /// The error of the newest finished generation; empty when it succeeded. result() then
+    /// still holds the last good build, which is not the document's current state.
+    const QString& failure() const { return mFailure; }
     /// Milliseconds since the edit (or reload) that asked for the last result.
     double msSinceResultRequest() const {
         return mResultRequest.isValid() ? double(mResultRequest.nsecsElapsed()) * 1e-6 : 0.0;
@@ -62,6 +65,7 @@ private:
     GenerationResult mResult;
     QElapsedTimer mResultRequest; ///< the request behind mResult
     double mEditToResultMs = 0.0;
+    QString mFailure;
 };
 
 } // namespace sylva::ui

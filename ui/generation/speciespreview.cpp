@@ -119,6 +119,8 @@ void SpeciesPreview::start() {
     }
     if (!failed.error.isEmpty()) {
         mResult = failed;
+        mEditToResultMs = mEditToScreenMs = 0.0;
+        mAwaitingScreen = false;
         Q_EMIT finished();
         return;
     }
@@ -198,7 +200,15 @@ void SpeciesPreview::onFinished() {
         r.skeleton = mResult.skeleton;
     }
     mResult = std::move(r);
+    if (!mResult.error.isEmpty()) {
+        // A failed preview is not a fresh one: no timing reads as if it were.
+        mEditToResultMs = mEditToScreenMs = 0.0;
+        mAwaitingScreen = false;
+        Q_EMIT finished();
+        return;
+    }
     mEditToResultMs = double(mSinceEdit.nsecsElapsed()) * 1e-6;
+    mEditToScreenMs = 0.0;
     mResultEdit = mSinceEdit;
     mAwaitingScreen = true;
     Q_EMIT finished();

@@ -59,6 +59,8 @@ public:
     void refresh();
     bool isBusy() const { return mRunning || mPending; }
     const PreviewResult& result() const { return mResult; }
+    /// The last preview failed (result().error): it has no edit → result or screen time.
+    bool failed() const { return !mResult.error.isEmpty(); }
     /// Milliseconds from the edit behind result() to its arrival on the GUI thread.
     double editToResultMs() const { return mEditToResultMs; }
     /// Called by the view once the result is on screen: the edit → mesh-on-screen time.

@@ -2,6 +2,7 @@
 // through the same document functions (and so the same undoable commands) as the mouse. The
 // names are a public contract: docs/scripting.md.
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <optional>
 
@@ -12,6 +13,7 @@
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QLayout>
+#include <QStatusBar>
 #include <QTimer>
 
 #include "document/autosave.h"
@@ -106,6 +108,10 @@ py::dict generate() {
         throw std::runtime_error("the generation did not finish in time");
     const GenerationResult& r = w.generator().result();
     if (!w.lastError().isEmpty() && !r.ok()) throw InvalidInput(w.lastError().toStdString());
+    // The newest generation failed: result() is the last good build, which is not this
+    // document's (after a failed open or edit): never hand its numbers out as the document's.
+    if (!w.generator().failure().isEmpty())
+        throw InvalidInput(w.generator().failure().toStdString());
     py::dict stats;
     auto stat = [&r](const char* key) {
         auto it = r.stats.find(key);
@@ -335,6 +341,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 // never exactly 0; 0 means no preview ran (the species editor was never open),
                 // which must not read as "instant".
                 SpeciesPreview* p = window().workbench()->preview();
+                if (p->failed()) return py::none();
                 if (p->editToScreenMs() > 0.0) return py::float_(p->editToScreenMs());
                 if (p->editToResultMs() > 0.0) return py::float_(p->editToResultMs());
                 return py::none();
@@ -353,10 +360,31 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 for (const auto& [id, run] : p->result().runs)
                     runs[py::str(id)] = py::make_tuple(run.ran, run.ms, run.evaluations);
                 d["nodes"] = runs;
+                const PreviewResult& r = p->result();
+                d["species"] = r.species.toStdString();
+                d["error"] = r.error.isEmpty() ? py::object(py::none())
+                                               : py::object(py::str(r.error.toStdString()));
+                d["error_node"] = r.errorNode.toStdString();
+                d["triangles"] = r.mesh ? r.mesh->triangleCount() : 0;
+                d["vertices"] = r.mesh ? r.mesh->vertexCount() : 0;
+                // What the preview pane draws: the result's own mesh, not another tree.
+                const auto& shown = window().workbench()->previewViewport()->shownMesh();
+                d["shown_is_result"] = shown != nullptr && shown == r.mesh;
+                std::uint64_t hash = 1469598103934665603ull; // FNV-1a over the positions
+                if (shown)
+                    for (const glm::vec3& v : shown->positions)
+                        for (float c : {v.x, v.y, v.z}) {
+                            std::uint32_t bits;
+                            std::memcpy(&bits, &c, sizeof bits);
+                            hash = (hash ^ bits) * 1099511628211ull;
+                        }
+                d["shown_hash"] = hash;
                 return d;
             },
-            "The last preview: edit → result and → screen, the evaluation alone, and per node "
-            "(ran, ms, evaluations).")
+            "The last preview: edit → result and → screen, the evaluation alone, per node (ran, "
+            "ms, evaluations), its species, error (None when it succeeded) and failing node, its "
+            "triangles and vertices, whether the pane shows that very mesh (shown_is_result) and "
+            "a hash of the positions it shows (shown_hash).")
         .def("obstacles",
              [](DocumentApi&) { return python::obstaclesList(document().project().obstacles); })
         .def(
@@ -491,13 +519,19 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "screenshot",
             [](WindowApi&, const std::string& path, bool viewportOnly) {
+                // What the last edit made, not the forest before it: wait for its generation
+                // (and the Statistics and Outliner it updates) before grabbing.
+                MainWindow& w = window();
+                pumpUntil(600.0, [&w] { return !w.isGenerating(); });
                 QApplication::processEvents();
                 const bool ok = viewportOnly
                                     ? window().saveScreenshot(QString::fromStdString(path))
                                     : window().saveWindowScreenshot(QString::fromStdString(path));
                 if (!ok) throw IoError(window().lastError().toStdString());
             },
-            py::arg("path"), py::arg("viewport_only") = false)
+            py::arg("path"), py::arg("viewport_only") = false,
+            "Saves the window (or only the 3D view) as a PNG, after the generation of the last "
+            "edit has finished, so the picture shows the document as it is now.")
         .def("resize", [](WindowApi&, int w, int h) { window().resize(w, h); })
         .def(
             "edit_species",
@@ -521,9 +555,11 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 pumpUntil(timeout, [p] { return !p->isBusy(); });
                 for (int k = 0; k < 5; ++k)
                     QApplication::processEvents(QEventLoop::AllEvents, 20);
-                return !p->isBusy();
+                return !p->isBusy() && !p->failed();
             },
-            py::arg("timeout") = 60.0, "Waits until the species preview is up to date.")
+            py::arg("timeout") = 60.0,
+            "Waits until the species preview is up to date; False when it timed out or the "
+            "preview failed (the error is on the preview pane and in Messages).")
         .def(
             "set_tool",
             [](WindowApi&, const std::string& name) {
@@ -670,6 +706,20 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 return saved ? window().autosave().recoveryFile().toStdString() : std::string();
             },
             "Writes the autosave copy now; its path, or '' when there was nothing unsaved.")
+        .def(
+            "view_camera",
+            [](WindowApi&) {
+                const OrbitCamera& c = window().viewport()->camera();
+                return py::make_tuple(fromVec3(c.eye()), fromVec3(c.target()));
+            },
+            "The 3D view's camera as it is now: (eye, target), world metres.")
+        .def(
+            "status",
+            [](WindowApi&) {
+                return py::make_tuple(window().statusBar()->currentMessage().toStdString(),
+                                      window().generationError().toStdString());
+            },
+            "The status bar: (its transient line, the failed generation it keeps showing or '').")
         .def("messages", [](WindowApi&) {
             std::vector<std::string> out;
             for (int i = 0; i < window().messages()->count(); ++i)

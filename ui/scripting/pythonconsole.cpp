@@ -21,8 +21,8 @@ PythonConsole::PythonConsole(QWidget* parent) : QWidget(parent) {
     mOutput->setReadOnly(true);
     mOutput->setFont(mono);
     mOutput->setPlaceholderText(
-        tr("Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or "
-           "doc.add_tree(\"alder\", (0, 0, 0)).")
+        tr("Python %1: sylva and doc = sylva.document() are ready. Try doc.trees(), "
+           "doc.species() or doc.add_tree(doc.species()[0], (0, 0, 0)).")
             .arg(PythonHost::version()));
     layout->addWidget(mOutput);
     auto* row = new QHBoxLayout;

@@ -32,6 +32,7 @@ void OrbitCamera::lookFrom(const glm::vec3& eye, const glm::vec3& target) {
     setYaw(std::atan2(d.x, d.z));
     setPitch(std::asin(std::clamp(d.y / length, -1.0f, 1.0f)));
     setDistance(length);
+    keepAboveGround();
 }
 
 void OrbitCamera::setDistanceLimits(float minDistance, float maxDistance) {
@@ -78,16 +79,41 @@ glm::mat4 OrbitCamera::projectionMatrix(float aspect) const {
 void OrbitCamera::orbit(float dxPixels, float dyPixels) {
     setYaw(mYaw - dxPixels * kRadiansPerPixel);
     setPitch(mPitch + dyPixels * kRadiansPerPixel);
+    keepAboveGround();
+}
+
+void OrbitCamera::setGround(GroundHeight ground) {
+    mGround = std::move(ground);
+    keepAboveGround();
+}
+
+void OrbitCamera::keepAboveGround() {
+    if (!mGround) return;
+    // The ground under the eye changes as the eye rises (a slope, an obstacle's edge): a few
+    // rounds settle it.
+    for (int round = 0; round < 4; ++round) {
+        const glm::vec3 e = eye();
+        const float floorY = mGround(e.x, e.z) + kGroundClearance;
+        if (!(e.y < floorY - 1e-4f)) return;
+        const float s = (floorY - mTarget.y) / mDistance;
+        if (s < std::sin(kMaxPitch)) {
+            setPitch(std::max(mPitch, std::asin(std::max(s, -1.0f))));
+        } else {
+            mTarget.y += floorY - e.y; // the target itself is under the ground
+        }
+    }
 }
 
 void OrbitCamera::pan(float dxPixels, float dyPixels, float viewportHeight) {
     if (viewportHeight <= 0.0f) return;
     const float worldPerPixel = 2.0f * mDistance * std::tan(0.5f * mFovY) / viewportHeight;
     mTarget += (-dxPixels * right() + dyPixels * up()) * worldPerPixel;
+    keepAboveGround();
 }
 
 void OrbitCamera::zoom(float steps) {
     setDistance(mDistance * std::pow(kZoomPerStep, steps));
+    keepAboveGround();
 }
 
 void OrbitCamera::frame(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
@@ -128,6 +154,7 @@ void OrbitCamera::framePoints(std::span<const glm::vec3> points, float aspect) {
     mMinDistance = 0.01f * mSceneRadius;
     mMaxDistance = std::max(20.0f * std::max(fit, mSceneRadius), mMinDistance);
     setDistance(fit);
+    keepAboveGround();
 }
 
 } // namespace sylva::ui

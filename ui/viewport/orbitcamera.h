@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -82,6 +83,15 @@ public:
     /// Radius of the last framed bounds (metres); 1 before any frame().
     float sceneRadius() const { return mSceneRadius; }
 
+    /// The height of the ground (terrain, obstacles) under a point (x, z) of the world.
+    using GroundHeight = std::function<float(float x, float z)>;
+    /// With a ground, orbit(), pan(), zoom(), lookFrom() and frame() keep the eye at least
+    /// kGroundClearance above it, as DCC viewports and game editors do: the pitch stops where
+    /// the eye would go under (or, when no pitch can, the target rises). Without one (the
+    /// default), the camera goes anywhere.
+    void setGround(GroundHeight ground);
+    static constexpr float kGroundClearance = 0.3f;
+
 private:
     glm::vec3 mTarget{0.0f, 1.0f, 0.0f};
     float mDistance = 5.0f;
@@ -91,6 +101,9 @@ private:
     float mMinDistance = 0.01f;
     float mMaxDistance = 1.0e5f;
     float mSceneRadius = 1.0f;
+    GroundHeight mGround;
+
+    void keepAboveGround();
 };
 
 } // namespace sylva::ui

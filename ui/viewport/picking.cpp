@@ -85,7 +85,8 @@ bool isHidden(const std::vector<bool>& hidden, std::size_t i) {
 } // namespace
 
 TreeHit pickTree(const Ray& ray, const std::vector<ViewTree>& trees,
-                 const std::vector<Bounds>& bounds, const std::vector<bool>& hidden) {
+                 const std::vector<Bounds>& bounds, const std::vector<bool>& hidden,
+                 const std::vector<bool>& byBounds) {
     // Boxes the ray enters, nearest first: a tree beyond the best hit so far is not tested.
     std::vector<std::pair<float, std::size_t>> candidates;
     for (std::size_t i = 0; i < trees.size() && i < bounds.size(); ++i) {
@@ -101,6 +102,11 @@ TreeHit pickTree(const Ray& ray, const std::vector<ViewTree>& trees,
             best.index = static_cast<int>(i);
         }
     }
+    if (best.index >= 0) return best;
+    // No triangle hit: a tree drawn coarse (a coarser level, an impostor card) covers pixels
+    // its full mesh does not; the nearest such box the ray enters is what was clicked.
+    for (const auto& [entry, i] : candidates)
+        if (isHidden(byBounds, i)) return {static_cast<int>(i), entry};
     return best;
 }
 

@@ -52,8 +52,13 @@ struct TreeHit {
 /// tree) the ray misses, or enters beyond the best hit so far, are skipped, so a click through a
 /// gap in a crown picks what is behind it and a forest of 1,000 trees tests only the few boxes
 /// the ray crosses. Hidden trees (\p hidden, by index; may be empty) are never picked.
+/// Trees drawn coarser than their mesh (\p byBounds, by index; may be empty: a coarse level or
+/// an impostor card, whose pixels are not the full mesh's): when the ray hits no tree's
+/// triangles, the nearest of their world boxes it enters is the hit, so a click on a distant
+/// tree's drawn crown selects it (a hit on triangles still wins, as before).
 TreeHit pickTree(const Ray& ray, const std::vector<ViewTree>& trees,
-                 const std::vector<Bounds>& bounds, const std::vector<bool>& hidden = {});
+                 const std::vector<Bounds>& bounds, const std::vector<bool>& hidden = {},
+                 const std::vector<bool>& byBounds = {});
 
 /// The same without the boxes: every triangle of every tree (the oracle for tests).
 TreeHit pickTreeBruteForce(const Ray& ray, const std::vector<ViewTree>& trees,

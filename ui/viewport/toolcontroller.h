@@ -88,6 +88,8 @@ public:
     /// The crown radius the spacing rules use for a species: the median of its grown trees'
     /// half crown widths in the last generation (2 m when it has none yet).
     float crownRadius(std::uint32_t species) const;
+    /// The highest surface at (x, z) in the last generation: terrain (or y = 0), obstacles.
+    float surfaceHeight(float x, float z) const { return mContext.surfaceHeight(x, z); }
 
     // ViewportTool
     bool press(QMouseEvent* event) override;

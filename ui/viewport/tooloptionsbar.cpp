@@ -111,9 +111,14 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
     mMix->setToolTip(tr("Species and weights the brush paints; empty: the chosen species"));
     mMix->setMinimumWidth(160);
     addWidget(mMix);
-    connect(mRadius, &QDoubleSpinBox::valueChanged, this, &ToolOptionsBar::applyBrushSettings);
-    connect(mDensity, &QDoubleSpinBox::valueChanged, this, &ToolOptionsBar::applyBrushSettings);
-    connect(mMix, &QLineEdit::editingFinished, this, &ToolOptionsBar::applyBrushSettings);
+    connect(mRadius, &QDoubleSpinBox::valueChanged, this, [this] { applyBrushSettings(); });
+    connect(mDensity, &QDoubleSpinBox::valueChanged, this, [this] { applyBrushSettings(); });
+    connect(mMix, &QLineEdit::editingFinished, this, [this] { applyBrushSettings(); });
+    // A mix typed and then painted with at once (the view takes no focus from the field, so
+    // editingFinished may not come): taken as soon as it reads; errors wait for editingFinished.
+    connect(mMix, &QLineEdit::textChanged, this, [this] { applyBrushSettings(false); });
+    // The brush paints what the bar shows from the first stroke, untouched fields included.
+    syncSpecies();
 }
 
 void ToolOptionsBar::syncSpecies() {
@@ -124,9 +129,10 @@ void ToolOptionsBar::syncSpecies() {
         mSpecies->addItem(QString::fromStdString(sp.name));
     if (!current.isEmpty()) mSpecies->setCurrentText(current);
     mTools.setPlaceSpecies(mSpecies->currentText().toStdString());
+    applyBrushSettings(false);
 }
 
-void ToolOptionsBar::applyBrushSettings() {
+void ToolOptionsBar::applyBrushSettings(bool reportErrors) {
     ToolController::Brush brush;
     brush.radius = float(mRadius->value());
     brush.density = float(mDensity->value());
@@ -134,7 +140,7 @@ void ToolOptionsBar::applyBrushSettings() {
         brush.mix = parseBrushMix(mMix->text(), mSpecies->currentText());
         mTools.setBrush(brush);
     } catch (...) {
-        Q_EMIT failed(QString::fromStdString(doc::currentErrorMessage()));
+        if (reportErrors) Q_EMIT failed(QString::fromStdString(doc::currentErrorMessage()));
     }
 }
 

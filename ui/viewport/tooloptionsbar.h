@@ -40,7 +40,9 @@ Q_SIGNALS:
     void failed(const QString& message);
 
 private:
-    void applyBrushSettings();
+    /// The radius, density and mix shown, to the brush; a mix that does not parse is reported
+    /// (failed()) only when \p reportErrors.
+    void applyBrushSettings(bool reportErrors = true);
     void syncSpecies();
 
     ToolController& mTools;

@@ -66,6 +66,9 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setMinimumSize(160, 120);
+    // The eye stays above the ground plane the grid draws (y = 0); the main window adds the
+    // terrain and obstacles under the eye.
+    mCamera.setGround([](float, float) { return 0.0f; });
     mSharpTimer = new QTimer(this);
     mSharpTimer->setSingleShot(true);
     mSharpTimer->setInterval(kSharpAfterMs);
@@ -382,7 +385,12 @@ TreeHit Viewport::pickAt(const QPointF& pos) const {
     std::vector<bool> hidden(mTrees.size(), false);
     for (std::size_t i = 0; i < mTrees.size(); ++i)
         hidden[i] = isHidden(i);
-    return pickTree(rayAt(pos), mTrees, mTreeBounds, hidden);
+    // What the last frame drew: a tree at a coarse level or as an impostor is picked by its
+    // box, not by the full mesh's triangles it no longer shows.
+    std::vector<bool> coarse(mTrees.size(), false);
+    for (const TreeDraw& d : mLastDrawList)
+        if (d.index < coarse.size()) coarse[d.index] = d.level > 0 || d.variantLevel > 0;
+    return pickTree(rayAt(pos), mTrees, mTreeBounds, hidden, coarse);
 }
 
 void Viewport::frameBox(const glm::vec3& lo, const glm::vec3& hi) {

@@ -203,6 +203,8 @@ public:
         return mLod->pending() + mImpostorsWanted + mImpostors.baking();
     }
 
+    /// The mesh setMesh() gave (none after a failed preview).
+    const std::shared_ptr<const mesh::Mesh>& shownMesh() const { return mMesh; }
     OrbitCamera& camera() { return mCamera; }
     const OrbitCamera& camera() const { return mCamera; }
     /// Aims the camera at the mesh's bounds (or the unit box around the origin when empty).

@@ -40,6 +40,13 @@ std::int32_t Skeleton::addNode(const glm::vec3& pos, std::int32_t parentIndex, f
     order.push_back(branchOrder);
     flags.push_back(nodeFlags);
     orientation.push_back(frame);
+    // The optional records stay one entry per node once a generator has started them: a node
+    // appended by a later stage (space colonization growing a crown on an L-system trunk traced
+    // for the species editor) has no source line (0), no light, vigour or age of its own.
+    if (!sourceLine.empty()) sourceLine.push_back(0);
+    if (!light.empty()) light.push_back(0.0f);
+    if (!vigour.empty()) vigour.push_back(0.0f);
+    if (!age.empty()) age.push_back(0);
     return index;
 }
 

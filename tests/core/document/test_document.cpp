@@ -765,3 +765,87 @@ TEST_F(DocumentTest, DomainsGetFreshIdsAndKeepThemThroughEdits) {
     mDoc.setDomain(static_cast<int>(n), edited);
     EXPECT_EQ(mDoc.project().domains[n].id, largest + 1);
 }
+
+// Issue #40: opening a project whose linked obstacle mesh is missing, or whose linked species
+// file is broken, replaced the open document. Opening is atomic: every linked file is read and
+// checked first; on failure the open project keeps its bytes, its path and its undo history,
+// and the error names the linked file (with line:column where it has one).
+TEST_F(DocumentTest, OpeningAProjectWithABadLinkedFileLeavesTheOpenOneAsItWas) {
+    mDoc.addTree(alder(4.0f, 4.0f));
+    const QByteArray before = bytes();
+    const QString path = mDoc.path();
+    const int undoSteps = mDoc.undoStack()->count();
+    const int undoIndex = mDoc.undoStack()->index();
+    ASSERT_GT(undoSteps, 0);
+
+    QFile demo(kDemo);
+    ASSERT_TRUE(demo.open(QIODevice::ReadOnly));
+    const QString presets = QStringLiteral(SYLVA_SOURCE_DIR "/presets/");
+    const QString meshes = QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/meshes/");
+    QString text = QString::fromUtf8(demo.readAll())
+                       .replace(QStringLiteral("../../presets/"), presets)
+                       .replace(QStringLiteral("meshes/"), meshes);
+    auto write = [this](const QString& name, const QString& content) {
+        const QString file = QDir(mDir.path()).filePath(name);
+        QFile f(file);
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(content.toUtf8());
+        return file;
+    };
+    auto expectUnchanged = [&] {
+        EXPECT_EQ(bytes(), before);
+        EXPECT_EQ(mDoc.path(), path);
+        EXPECT_EQ(mDoc.undoStack()->count(), undoSteps);
+        EXPECT_EQ(mDoc.undoStack()->index(), undoIndex);
+    };
+    auto openError = [&](const QString& file) -> std::string {
+        try {
+            mDoc.open(file);
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+        return "";
+    };
+
+    // The good copy opens (the check itself refuses nothing valid); then back to the edit.
+    const QString good = write(QStringLiteral("good.sylva"), text);
+    {
+        Document other;
+        EXPECT_NO_THROW(other.open(good));
+    }
+
+    QString missing = text;
+    missing.replace(meshes + QStringLiteral("boulder.obj"), QStringLiteral("nothere/boulder.obj"));
+    const std::string meshError = openError(write(QStringLiteral("missingmesh.sylva"), missing));
+    EXPECT_NE(meshError.find("boulder.obj"), std::string::npos) << meshError;
+    expectUnchanged();
+
+    write(QStringLiteral("broken.json"),
+          QStringLiteral("{ \"format\": \"sylva-species\",\n"
+                         "  \"name\": \"broken\",\n  \"graph\": [ }\n"));
+    QString brokenSpecies = text;
+    brokenSpecies.replace(presets + QStringLiteral("ternary-tree.json"),
+                          QDir(mDir.path()).filePath(QStringLiteral("broken.json")));
+    const std::string speciesError =
+        openError(write(QStringLiteral("brokenspecies.sylva"), brokenSpecies));
+    EXPECT_NE(speciesError.find("broken.json:3:"), std::string::npos) << speciesError;
+    expectUnchanged();
+
+    // A species whose grammar file does not parse: named with its line and column.
+    write(QStringLiteral("bad.lsys"), QStringLiteral("generations: 2\naxiom: F\nF -> F[+F\n"));
+    write(
+        QStringLiteral("badgrammar.json"),
+        QStringLiteral("{ \"format\": \"sylva-species\", \"format_version\": 1, \"name\": \"b\",\n"
+                       "  \"graph\": { \"nodes\": [\n"
+                       "    { \"id\": \"grow\", \"type\": \"lsystem\", \"params\": { "
+                       "\"grammar_file\": \"bad.lsys\" } },\n"
+                       "    { \"id\": \"mesh\", \"type\": \"tube_mesh\", \"inputs\": [\"grow\"] }"
+                       " ], \"output\": \"mesh\" } }\n"));
+    QString badGrammar = text;
+    badGrammar.replace(presets + QStringLiteral("ternary-tree.json"),
+                       QDir(mDir.path()).filePath(QStringLiteral("badgrammar.json")));
+    const std::string grammarError =
+        openError(write(QStringLiteral("badgrammar.sylva"), badGrammar));
+    EXPECT_NE(grammarError.find("bad.lsys:3:"), std::string::npos) << grammarError;
+    expectUnchanged();
+}

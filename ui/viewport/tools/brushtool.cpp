@@ -15,7 +15,10 @@ namespace sylva::ui {
 
 bool BrushTool::press(QMouseEvent* event) {
     const auto g = mContext.groundAt(event->position().toPoint());
-    if (!g) return false;
+    if (!g) {
+        mContext.noGroundUnderCursor();
+        return false;
+    }
     ++mStrokes;
     mStroke.clear();
     dab(*g);
@@ -102,7 +105,7 @@ void BrushTool::dab(const glm::vec3& centre) {
         }
         doc::ProjectInstance t;
         t.species = species[s].name;
-        t.rotation = 360.0 * rng.uniform();
+        t.rotation = std::round(3600.0 * rng.uniform()) / 10.0; // tenths, as the panel
         t.scale = 0.95 + 0.1 * rng.uniform();
         t.seed = doc::treeSeed(rng.next());
         constexpr int kTries = 20;

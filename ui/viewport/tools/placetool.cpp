@@ -1,5 +1,7 @@
 #include "ui/viewport/tools/placetool.h"
 
+#include <cmath>
+
 #include <QCoreApplication>
 #include <QMouseEvent>
 
@@ -27,7 +29,10 @@ void PlaceTool::click(QMouseEvent* event) {
         return;
     }
     const auto g = mContext.groundAt(pos);
-    if (!g) return;
+    if (!g) {
+        mContext.noGroundUnderCursor();
+        return;
+    }
     if (mContext.inObstacleFootprint(*g)) {
         mContext.message(QCoreApplication::translate(
             "sylva::ui::ToolController", "A tree cannot stand inside an obstacle's footprint"));
@@ -37,7 +42,8 @@ void PlaceTool::click(QMouseEvent* event) {
     doc::ProjectInstance t;
     t.species = name;
     t.position = *g;
-    t.rotation = 360.0 * rng.uniform();
+    // Tenths of a degree, as the Properties panel shows and takes them (17 digits before).
+    t.rotation = std::round(3600.0 * rng.uniform()) / 10.0;
     t.seed = doc::treeSeed(rng.next());
     document.selectTrees({document.addTree(t)});
 }

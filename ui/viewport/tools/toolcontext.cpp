@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <QCoreApplication>
+
 #include "engine/environment/obstaclescene.h"
 #include "ui/generation/treegenerator.h"
 #include "ui/viewport/viewport.h"
@@ -18,7 +20,10 @@ std::optional<glm::vec3> ToolContext::groundAt(const QPoint& pos) const {
         if (hit.hit) return hit.point;
         return std::nullopt;
     }
-    return hitPlane(ray, 0.0f);
+    // Past the far plane the plane's hit is the horizon, not ground anyone can see.
+    const auto hit = hitPlane(ray, 0.0f);
+    if (hit && glm::length(*hit - ray.origin) > viewport.camera().farPlane()) return std::nullopt;
+    return hit;
 }
 
 float ToolContext::groundHeight(float x, float z) const {
@@ -27,6 +32,24 @@ float ToolContext::groundHeight(float x, float z) const {
     const env::SegmentHit h =
         ground->intersect({{x, ground->hi().y + 1.0f, z}, {x, ground->lo().y - 1.0f, z}});
     return h.hit ? h.point.y : 0.0f;
+}
+
+void ToolContext::noGroundUnderCursor() const {
+    if (message)
+        message(QCoreApplication::translate("sylva::ui::ToolController",
+                                            "No ground under the cursor: nothing planted; click "
+                                            "where the ground is drawn"));
+}
+
+float ToolContext::surfaceHeight(float x, float z) const {
+    float height = groundHeight(x, z);
+    const auto& obstacles = result().obstacles;
+    if (obstacles && !obstacles->empty()) {
+        const env::SegmentHit h = obstacles->intersect(
+            {{x, obstacles->hi().y + 1.0f, z}, {x, obstacles->lo().y - 1.0f, z}});
+        if (h.hit) height = std::max(height, h.point.y);
+    }
+    return height;
 }
 
 bool ToolContext::inObstacleFootprint(const glm::vec3& p) const {

@@ -48,8 +48,13 @@ public:
 
     /// The ground under \p pos (widget pixels): the terrain where there is one, else y = 0.
     std::optional<glm::vec3> groundAt(const QPoint& pos) const;
+    /// Says that a click met no ground (the sky, beyond the far plane): nothing was planted.
+    void noGroundUnderCursor() const;
     /// The terrain's height at (x, z), or 0 without terrain.
     float groundHeight(float x, float z) const;
+    /// The highest surface at (x, z): the terrain (or y = 0) and the obstacles standing on it;
+    /// the camera's eye stays above it.
+    float surfaceHeight(float x, float z) const;
     /// Whether a trunk at \p position stands in an obstacle's footprint (what placement
     /// refuses), from the last generation's obstacles.
     bool inObstacleFootprint(const glm::vec3& position) const;
