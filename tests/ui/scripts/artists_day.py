@@ -100,6 +100,28 @@ for path in presets:
     assert win.wait_for_preview(180), name
     previous_hash = doc.preview_stats()["shown_hash"]
 
+# A species whose preview fails: the pane says so and never shows the previous species' tree;
+# Messages has the node's message; no time is reported; wait_for_preview says False.
+failing = os.path.join(OUT, "failing.json")
+with open(failing, "w") as f:
+    json.dump({"format": "sylva-species", "format_version": 1, "name": "failing",
+               "graph": {"nodes": [
+                   {"id": "grow", "type": "lsystem",
+                    "params": {"grammar": "generations: 8\naxiom: F\nF -> FF[+F][-F]\n",
+                               "symbol_limit": 50}},
+                   {"id": "mesh", "type": "tube_mesh", "inputs": ["grow"]}],
+                   "output": "mesh"}}, f)
+doc.add_species("failing", failing)
+win.edit_species("failing")
+assert not win.wait_for_preview(180), "a failed preview reported success"
+st = doc.preview_stats()
+assert st["error"] and st["error_node"] == "grow", st
+assert st["species"] == "failing" and not st["shown_is_result"], st
+assert st["shown_hash"] == 1469598103934665603, "the pane still draws another species' tree"
+assert doc.preview_ms() is None, doc.preview_ms()
+win.screenshot(os.path.join(OUT, "species_failed.png"))
+assert any("failing" in m and "grow" in m for m in win.messages()), win.messages()[-3:]
+
 while doc.undo_count() > 0:
     doc.undo()
 assert doc.serialized() == library_bytes, "undo did not give back the library project"
