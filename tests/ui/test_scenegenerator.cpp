@@ -1,6 +1,8 @@
 // Opening a project in the editor: the forest merged for the viewport equals what the engine's
 // buildForest (the same call as sylva-cli forest) makes, tree for tree, placed in the world,
 // with the obstacles after it; bad projects give a message, never an exception.
+#include <algorithm>
+
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
@@ -91,6 +93,18 @@ private Q_SLOTS:
         QCOMPARE(std::size_t(obstacle->indexCount / 3), forest.obstacles->triangleCount());
         QCOMPARE(r.stats.at("obstacle_triangles"), double(forest.obstacles->triangleCount()));
         QCOMPARE(m.vertexCount(), 3 * forest.obstacles->triangleCount());
+        // Issue #40: the demo's boulder was untextured grey. Obstacles are coloured as stone:
+        // one colour a vertex, varying over the surface.
+        QCOMPARE(m.colors.size(), m.vertexCount());
+        {
+            int lo = 255, hi = 0;
+            for (std::uint32_t i = obstacle->firstIndex;
+                 i < obstacle->firstIndex + obstacle->indexCount; ++i) {
+                lo = std::min(lo, int(m.colors[m.indices[i]].x));
+                hi = std::max(hi, int(m.colors[m.indices[i]].x));
+            }
+            QVERIFY2(hi - lo > 40, qPrintable(QStringLiteral("%1..%2").arg(lo).arg(hi)));
+        }
         QCOMPARE(m.normals.size(), m.vertexCount());
         const env::ObstacleMesh& wall = forest.obstacles->meshes().front();
         QCOMPARE(m.positions[m.indices[obstacle->firstIndex]],

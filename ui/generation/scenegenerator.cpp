@@ -25,7 +25,42 @@ namespace sylva::ui {
 
 namespace {
 
-/// The obstacle and terrain meshes merged, world space, flat-shaded.
+/// Smooth value noise in [0, 1] over the integer lattice (trilinear, smoothstep-weighted).
+float valueNoise(const glm::vec3& p) {
+    const glm::vec3 cell = glm::floor(p);
+    const glm::vec3 f = p - cell;
+    const glm::vec3 w = f * f * (3.0f - 2.0f * f);
+    auto lattice = [&cell](int dx, int dy, int dz) {
+        std::uint64_t h = mixSeed(mixSeed(std::uint64_t(std::int64_t(cell.x) + dx),
+                                          std::uint64_t(std::int64_t(cell.y) + dy)),
+                                  std::uint64_t(std::int64_t(cell.z) + dz));
+        return float(h >> 40) / float(1u << 24);
+    };
+    float v = 0.0f;
+    for (int k = 0; k < 8; ++k) {
+        const int dx = k & 1, dy = (k >> 1) & 1, dz = (k >> 2) & 1;
+        v += (dx ? w.x : 1.0f - w.x) * (dy ? w.y : 1.0f - w.y) * (dz ? w.z : 1.0f - w.z) *
+             lattice(dx, dy, dz);
+    }
+    return v;
+}
+
+/// A stone's colour at \p p (linear multipliers of the obstacle colour): grey-brown blotches a
+/// metre across, grain a decimetre across, and lichen patches, so a boulder or a wall reads as
+/// rock rather than flat grey. Fixed in world space: the same everywhere, every frame.
+glm::u8vec4 stoneColor(const glm::vec3& p) {
+    const float blotch = valueNoise(p * 0.9f);
+    const float grain = valueNoise(p * 7.0f + 31.0f);
+    const float lichen = glm::smoothstep(0.62f, 0.78f, valueNoise(p * 0.5f + 97.0f));
+    const float shade = 0.62f + 0.28f * blotch + 0.10f * grain;
+    glm::vec3 c = shade * glm::vec3(1.0f, 0.95f, 0.88f);
+    c = glm::mix(c, glm::vec3(0.80f, 0.86f, 0.55f) * shade, 0.55f * lichen);
+    const glm::vec3 u8 = glm::clamp(c, 0.0f, 1.0f) * 255.0f + 0.5f;
+    return {std::uint8_t(u8.x), std::uint8_t(u8.y), std::uint8_t(u8.z), 255};
+}
+
+/// The obstacle and terrain meshes merged, world space, flat-shaded; obstacles coloured as
+/// stone (Mesh::colors, which the viewport multiplies with the material's colour).
 mesh::Mesh surfaces(const env::ObstacleScene* obstacles, const env::ObstacleScene* ground) {
     mesh::Mesh out;
     for (auto [scene, material] : {std::pair{obstacles, "obstacle"}, std::pair{ground, "ground"}}) {
@@ -40,6 +75,8 @@ mesh::Mesh surfaces(const env::ObstacleScene* obstacles, const env::ObstacleScen
                     out.indices.push_back(static_cast<std::uint32_t>(out.positions.size()));
                     out.positions.push_back(p);
                     out.normals.push_back(n);
+                    out.colors.push_back(scene == obstacles ? stoneColor(p)
+                                                            : glm::u8vec4(255, 255, 255, 255));
                 }
             }
         const auto count = static_cast<std::uint32_t>(out.indices.size()) - first;

@@ -46,7 +46,9 @@ glm::vec3 TreeBuffers::materialColor(const std::string& material) {
         return {0.11f, 0.30f, 0.06f};
     if (material == "bark" || material.empty()) return {0.17f, 0.10f, 0.055f};
     if (material == "ground") return {0.10f, 0.09f, 0.05f}; // a project's terrain
-    return {0.35f, 0.35f, 0.35f};                           // obstacles and anything else
+    // Obstacles: stone, mottled by the scene mesh's per-vertex colours (scenegenerator's
+    // stoneColor, 0.6..1), so about the grey of before on average.
+    return {0.45f, 0.44f, 0.42f};
 }
 
 bool TreeBuffers::indicesInRange(const mesh::Mesh& m) {
