@@ -3,26 +3,11 @@
 
 #include "engine/util/error.h"
 
-#include <charconv>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 
 namespace sylva::cli {
-
-void appendJsonNumber(std::string& out, const char* key, double value, bool comma) {
-    char buf[32];
-    // Counts as integers: the shortest form of 100000.0 is "1e+05", which scripts read as a float.
-    const bool integral = value > -9.0e15 && value < 9.0e15 &&
-                          value == static_cast<double>(static_cast<long long>(value));
-    const auto end = integral
-                         ? std::to_chars(buf, buf + sizeof buf, static_cast<long long>(value)).ptr
-                         : std::to_chars(buf, buf + sizeof buf, value).ptr;
-    out += '"';
-    out += key;
-    out += "\":";
-    out.append(buf, end);
-    if (comma) out += ',';
-}
 
 doc::Project loadProjectOrScene(const std::string& path) {
     doc::LoadReport report;
@@ -40,42 +25,53 @@ mesh::Season parseSeasonOption(const std::string& name) {
     }
 }
 
-std::string metricsJson(const forest::SceneMetrics& m) {
-    std::string json = "{";
-    appendJsonNumber(json, "trees", static_cast<double>(m.trees));
-    appendJsonNumber(json, "mean_height_m", m.meanHeightM);
-    appendJsonNumber(json, "mean_dbh_m", m.meanDbhM);
-    appendJsonNumber(json, "mean_crown_width_m", m.meanCrownWidthM);
-    appendJsonNumber(json, "wood_volume_m3", m.woodVolumeM3);
-    appendJsonNumber(json, "dry_biomass_kg", m.dryBiomassKg);
-    appendJsonNumber(json, "carbon_kg", m.carbonKg);
-    appendJsonNumber(json, "co2_kg", m.co2Kg);
-    appendJsonNumber(json, "chave_agb_kg", m.chaveAgbKg, false);
-    return json + "}";
-}
-
 const std::vector<std::string> kWindValueOptions = {
     "--wind-direction", "--wind-strength", "--wind-gustiness", "--wind-frequency",
     "--clip-length",    "--clip-fps",      "--bones"};
 
+namespace {
+
+float numberOption(const Args& args, const char* name, float fallback) {
+    const auto text = args.value(name);
+    if (!text) return fallback;
+    char* end = nullptr;
+    const double v = std::strtod(text->c_str(), &end);
+    if (end == text->c_str() || *end != '\0')
+        throw UsageError(std::string(name) + " expects a number, got '" + *text + "'");
+    return static_cast<float>(v);
+}
+
+std::optional<glm::vec3> directionOption(const Args& args) {
+    const auto d = args.value("--wind-direction");
+    if (!d) return std::nullopt;
+    glm::vec3 v;
+    char extra = 0;
+    if (std::sscanf(d->c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3)
+        throw UsageError("--wind-direction expects x,y,z, got '" + *d + "'");
+    return v;
+}
+
+} // namespace
+
+doc::WindOverride windOverride(const Args& args) {
+    doc::WindOverride o;
+    o.direction = directionOption(args);
+    auto number = [&args](const char* name, std::optional<float>& into) {
+        if (args.value(name)) into = numberOption(args, name, 0.0f);
+    };
+    number("--wind-strength", o.strength);
+    number("--wind-gustiness", o.gustiness);
+    number("--wind-frequency", o.frequency);
+    number("--clip-length", o.clipLength);
+    number("--clip-fps", o.clipFps);
+    if (const auto bones = args.integer("--bones", 2, 1024)) o.bones = static_cast<int>(*bones);
+    return o;
+}
+
 exporter::WindExportOptions windOptions(const Args& args) {
     exporter::WindExportOptions o;
-    auto number = [&](const char* name, float& into) {
-        const auto text = args.value(name);
-        if (!text) return;
-        char* end = nullptr;
-        const double v = std::strtod(text->c_str(), &end);
-        if (end == text->c_str() || *end != '\0')
-            throw UsageError(std::string(name) + " expects a number, got '" + *text + "'");
-        into = static_cast<float>(v);
-    };
-    if (const auto d = args.value("--wind-direction")) {
-        glm::vec3 v;
-        char extra = 0;
-        if (std::sscanf(d->c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &extra) != 3)
-            throw UsageError("--wind-direction expects x,y,z, got '" + *d + "'");
-        o.wind.direction = v;
-    }
+    auto number = [&](const char* name, float& into) { into = numberOption(args, name, into); };
+    if (const auto d = directionOption(args)) o.wind.direction = *d;
     number("--wind-strength", o.wind.strength);
     number("--wind-gustiness", o.wind.gustiness);
     number("--wind-frequency", o.wind.frequency);

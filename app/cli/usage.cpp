@@ -86,8 +86,11 @@ constexpr CommandHelp kHelp[] = {
      "                        mesh numbers (default: compact, 0.1 mm)\n"
      "  --fsync               waits until the OBJ or USD is on disk before renaming it\n"
      "  --assimp-gltf         .glb/.gltf through Assimp's exporter (slow; for comparison)\n"
-     "  --wind                every tree with the wind model (docs/wind.md), as tree --wind;\n"
-     "                        --bones, --clip-length, --clip-fps and --wind-* as for tree\n"
+     "  --wind                every tree with the wind model (docs/wind.md), as tree --wind,\n"
+     "                        in the project's \"wind\" (the default when the project has one:\n"
+     "                        .glb, .gltf, .fbx, .obj); --bones, --clip-length, --clip-fps and\n"
+     "                        --wind-* override its settings\n"
+     "  --no-wind             no wind model, even when the project has a wind\n"
      "  -h, --help            show this text\n"
      "\n"
      "Ctrl-C or SIGTERM stops within a second, removes the temporary files and exits 130.\n"},

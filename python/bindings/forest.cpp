@@ -17,6 +17,7 @@
 
 #include "document/filerefs.h"
 #include "document/project.h"
+#include "document/projectexport.h"
 #include "document/scenebuild.h"
 #include "document/speciesfile.h"
 #include "engine/environment/obstaclemesh.h"
@@ -145,14 +146,40 @@ py::dict statsDict(const forest::ForestStats& stats, const forest::ForestScene& 
     return d;
 }
 
-void warnShortfalls(const forest::ForestStats& stats, const forest::ForestScene& s) {
+void warnShortfalls(const forest::ForestStats& stats, const std::vector<std::string>& species) {
     for (const placement::Shortfall& sf : stats.shortfalls)
         PyErr_WarnEx(PyExc_UserWarning,
                      ("domain " + std::to_string(sf.domain + 1) + ": placed " +
                       std::to_string(sf.placed) + " of " + std::to_string(sf.requested) + " '" +
-                      s.species[sf.species].name + "' (no room left)")
+                      species[sf.species] + "' (no room left)")
                          .c_str(),
                      1);
+}
+
+void warnShortfalls(const forest::ForestStats& stats, const forest::ForestScene& s) {
+    std::vector<std::string> species;
+    for (const forest::SceneSpecies& sp : s.species)
+        species.push_back(sp.name);
+    warnShortfalls(stats, species);
+}
+
+/// Python's wind keywords (None: the project's setting) as the settings over a project's wind.
+doc::WindOverride windOverrideFrom(const py::object& direction, const py::object& strength,
+                                   const py::object& gustiness, const py::object& frequency,
+                                   const py::object& bones, const py::object& clipLength,
+                                   const py::object& fps) {
+    auto number = [](const py::object& o) {
+        return o.is_none() ? std::optional<float>() : std::optional<float>(o.cast<float>());
+    };
+    doc::WindOverride w;
+    if (!direction.is_none()) w.direction = toVec3(direction, "direction");
+    w.strength = number(strength);
+    w.gustiness = number(gustiness);
+    w.frequency = number(frequency);
+    w.clipLength = number(clipLength);
+    w.clipFps = number(fps);
+    if (!bones.is_none()) w.bones = bones.cast<int>();
+    return w;
 }
 
 exporter::ExportTree exportTree(const forest::ForestTree& t) {
@@ -402,15 +429,9 @@ void bindForest(py::module_& m) {
                     throw InvalidInput("export(wind=True) needs a forest built with wind data: "
                                        "build_forest(wind=True)");
                 // The project's wind (when it has one) under the keyword arguments.
-                exporter::WindExportOptions base;
-                if (f.projectWind) {
-                    base.wind.direction = f.projectWind->direction;
-                    base.wind.strength = f.projectWind->strength;
-                    base.wind.gustiness = f.projectWind->gustiness;
-                    base.wind.frequency = f.projectWind->frequency;
-                }
-                const exporter::WindExportOptions options = windExportOptions(
-                    direction, strength, gustiness, frequency, bones, clipLength, fps, base);
+                const exporter::WindExportOptions options = doc::exportWind(
+                    f.projectWind, windOverrideFrom(direction, strength, gustiness, frequency,
+                                                    bones, clipLength, fps));
                 py::gil_scoped_release release;
                 std::vector<std::string> written;
                 // As `sylva-cli forest --wind`: .glb/.gltf/.fbx through the wind exporter (one
@@ -743,53 +764,61 @@ void bindForest(py::module_& m) {
             [](const Project& p, const py::object& path, const py::object& progress,
                const py::object& camera, bool lod, bool adapt, bool neighbours, bool instancing,
                const py::object& tile, std::optional<int> threads, bool fullPrecision, bool fsync,
-               bool instanceTables) {
+               bool instanceTables, std::optional<bool> wind, const py::object& direction,
+               const py::object& strength, const py::object& gustiness, const py::object& frequency,
+               const py::object& bones, const py::object& clipLength, const py::object& fps) {
+                // The keywords only translate into the request every front door makes
+                // (document/projectexport): the same bytes and statistics as sylva-cli forest.
                 const BuildOptions b =
                     buildOptions(camera, lod, adapt, neighbours, instancing, tile, threads);
-                const std::string out = toPath(path);
+                doc::ExportRequest request;
+                request.path = toPath(path);
+                request.tile = b.options.tile;
+                request.tileCount = b.options.tileCount;
+                request.camera = b.camera;
+                request.lod = lod;
+                request.adapt = adapt;
+                request.neighbours = neighbours;
+                request.instancing = instancing;
+                request.fullPrecision = fullPrecision;
+                request.fsync = fsync;
+                request.instanceTables = instanceTables;
+                request.wind = wind;
+                if (wind == false && (!direction.is_none() || !strength.is_none() ||
+                                      !gustiness.is_none() || !frequency.is_none() ||
+                                      !bones.is_none() || !clipLength.is_none() || !fps.is_none()))
+                    throw InvalidInput("wind settings need wind=True");
+                request.windOverride = windOverrideFrom(direction, strength, gustiness, frequency,
+                                                        bones, clipLength, fps);
                 PyProgress prog(progress);
-                forest::ForestScene s;
-                forest::ForestStats stats;
+                doc::ExportReport report;
                 withoutGil(prog, [&] {
                     const auto t0 = Clock::now();
-                    s = p.makeScene();
-                    if (b.camera) s.camera = *b.camera;
-                    const double loadMs = msSince(t0);
-                    exporter::TreeExporter exporter(out, {fsync, !fullPrecision});
-                    exporter.setInstanceTables(instanceTables);
-                    exporter.setProgress(prog);
-                    forest::ForestOptions options = b.options;
-                    options.meshInstances = !exporter.writesInstances(); // as sylva-cli forest
-                    options.onVariants = [&](const std::vector<forest::ForestVariant>& v) {
-                        exporter.addVariants(exportVariants(v));
-                    };
-                    double writeMs = 0;
-                    stats = forest::buildForest(
-                        s, options,
-                        [&](const std::vector<forest::ForestTree>& batch) {
-                            const auto t = Clock::now();
-                            std::vector<exporter::ExportTree> trees;
-                            for (const forest::ForestTree& tree : batch)
-                                trees.push_back(exportTree(tree));
-                            exporter.add(trees);
-                            writeMs += msSince(t);
-                        },
-                        prog);
-                    const auto t = Clock::now();
-                    exporter.commit();
-                    stats.wallMs["write"] = writeMs + msSince(t);
-                    stats.wallMs["load"] = loadMs;
+                    forest::ForestScene s = p.makeScene();
+                    const double sceneMs = msSince(t0);
+                    report = doc::exportForest(std::move(s), p.project, request, prog);
+                    report.loadMs += sceneMs;
+                    report.totalMs = msSince(t0);
                 });
-                warnShortfalls(stats, s);
-                return statsDict(stats, s, b.options);
+                warnShortfalls(report.stats, report.species);
+                return py::module_::import("json").attr("loads")(
+                    doc::exportStatsJson(report, omp_get_max_threads()));
             },
             py::arg("path"), py::arg("progress") = py::none(), py::arg("camera") = py::none(),
             py::arg("lod") = true, py::arg("adapt") = true, py::arg("neighbours") = true,
             py::arg("instancing") = true, py::arg("tile") = py::none(),
             py::arg("threads") = py::none(), py::arg("full_precision") = false,
             py::arg("fsync") = false, py::arg("instance_tables") = false,
+            py::arg("wind") = py::none(), py::arg("direction") = py::none(),
+            py::arg("strength") = py::none(), py::arg("gustiness") = py::none(),
+            py::arg("frequency") = py::none(), py::arg("bones") = py::none(),
+            py::arg("clip_length") = py::none(), py::arg("fps") = py::none(),
             "builds and writes the forest batch by batch without keeping it (`sylva-cli forest "
-            "-o path`, same bytes); Ctrl-C leaves no file; returns the statistics")
+            "-o path`, same bytes, .usda tiles included); the wind rig and clip (.glb, .gltf, "
+            ".fbx) or the .wind.csv beside an OBJ are written in the project's wind when it has "
+            "one (wind=None), or as wind=True/False says (--wind, --no-wind), the settings "
+            "given over the project's; Ctrl-C leaves no file; returns the statistics of "
+            "`sylva-cli forest --stats`")
         .def("__repr__", [](const Project& p) {
             return "<sylva.Project " + std::to_string(p.project.species.size()) + " species, " +
                    std::to_string(p.project.domains.size() + (p.ground ? 1 : 0)) + " domains>";

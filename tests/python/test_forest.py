@@ -309,3 +309,63 @@ def test_bad_project_errors_match_cli(data, cli, tmp_path):
     p.add_obstacle(file=tmp_path / "missing.obj")
     with pytest.raises(OSError, match="missing.obj"):
         p.build_forest()
+
+
+def test_every_front_door_writes_the_same_bytes_with_a_wind_and_a_tile(data, cli, tmp_path):
+    """Issue #42: one export use case (document/projectexport) behind `sylva-cli forest` and
+    `Project.export_forest`. A project with a wind: the project's wind is the default of both
+    (the CLI ignored it before); tile 2/4 of OBJ, GLB with its wind, and USD (Python's USD tiles
+    were marked as the whole forest, so `compose` refused them); the same statistics keys."""
+    project = json.loads((data / "projects" / "small.sylva").read_text())
+    base = data / "projects"
+    for s in project["species"]:
+        s["file"] = str((base / s["file"]).resolve())
+    for o in project["obstacles"]:
+        o["file"] = str((base / o["file"]).resolve())
+    project["wind"] = {"direction": [0.6, 0, 0.8], "strength": 1.3, "gustiness": 0.7,
+                       "frequency": 0.9}
+    windy = tmp_path / "windy.sylva"
+    windy.write_text(json.dumps(project))
+    calm = dict(project)
+    del calm["wind"]
+    (tmp_path / "calm.sylva").write_text(json.dumps(calm))
+    for d in ("cli", "py", "calm", "tiles"):
+        (tmp_path / d).mkdir()
+
+    p = sylva.load_project(windy)
+    for name in ("forest.obj", "forest.glb", "forest.usda"):
+        r = cli("forest", windy, "-o", tmp_path / "cli" / name, "--tile", "2/4", "--stats")
+        cli_stats = json.loads(r.stdout)
+        py_stats = p.export_forest(tmp_path / "py" / name, tile=(2, 4))
+        assert sorted(py_stats) == sorted(cli_stats), name
+        for key in ("trees", "trees_in_scene", "tile", "tiles", "vertices", "triangles",
+                    "instanced", "unique", "variants"):
+            assert py_stats[key] == cli_stats[key], (name, key)
+        assert cli_stats["tile"] == 2 and cli_stats["tiles"] == 4
+        a = (tmp_path / "cli" / name).read_bytes()
+        b = (tmp_path / "py" / name).read_bytes()
+        if name.endswith(".obj"):
+            a = a.replace(b"mtllib forest.mtl", b"")
+            b = b.replace(b"mtllib forest.mtl", b"")
+        assert a == b, name
+    # The wind came from the project: the calm project's GLB has none, the windy one's a clip,
+    # and the project's settings shape it (a flag overrides one of them).
+    cli("forest", tmp_path / "calm.sylva", "-o", tmp_path / "calm" / "forest.glb", "--tile", "2/4")
+    assert (tmp_path / "calm" / "forest.glb").read_bytes() != (tmp_path / "cli" / "forest.glb").read_bytes()
+    assert b'"wind"' in (tmp_path / "cli" / "forest.glb").read_bytes()
+    assert (tmp_path / "cli" / "forest.wind.csv").exists()
+    cli("forest", windy, "-o", tmp_path / "calm" / "strong.glb", "--tile", "2/4",
+        "--wind-strength", "0.2")
+    p.export_forest(tmp_path / "py" / "strong.glb", tile="2/4", strength=0.2)
+    assert (tmp_path / "calm" / "strong.glb").read_bytes() == (tmp_path / "py" / "strong.glb").read_bytes()
+    assert (tmp_path / "calm" / "strong.glb").read_bytes() != (tmp_path / "cli" / "forest.glb").read_bytes()
+    cli("forest", windy, "-o", tmp_path / "calm" / "nowind.glb", "--tile", "2/4", "--no-wind")
+    p.export_forest(tmp_path / "py" / "nowind.glb", tile="2/4", wind=False)
+    assert (tmp_path / "calm" / "nowind.glb").read_bytes() == (tmp_path / "py" / "nowind.glb").read_bytes()
+
+    # Python's USD tiles compose into the forest the CLI's single run writes.
+    for i in range(1, 5):
+        p.export_forest(tmp_path / "tiles" / ("forest_%d.usda" % i), tile=(i, 4))
+    cli("compose", tmp_path / "tiles" / "forest.usda",
+        *[tmp_path / "tiles" / ("forest_%d.usda" % i) for i in range(1, 5)])
+    assert (tmp_path / "tiles" / "forest.usda").exists()
