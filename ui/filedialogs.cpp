@@ -30,7 +30,8 @@ QString FileDialogs::exportFile(QWidget* parent, const QString& shown) {
     const QString path = QFileDialog::getSaveFileName(
         parent, tr("Export"),
         suggestedName(shown, QStringLiteral("forest"), QStringLiteral(".obj")),
-        tr("Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)"),
+        tr("Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx);;"
+           "USD text (*.usda)"),
         &filter);
     return path.isEmpty() ? path : withFilterExtension(path, filter);
 }

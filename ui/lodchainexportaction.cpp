@@ -13,38 +13,25 @@
 
 #include "document/errormessage.h"
 #include "ui/filedialogs.h"
+#include "ui/workerdialog.h"
 
 namespace sylva::ui {
 
 namespace {
 
-/// The worker's Progress: the stage and its fraction as a percentage the GUI polls, and the
-/// dialog's Cancel as a flag the engine checks.
-class PollProgress : public Progress {
-public:
-    void report(double fraction, std::string_view stage) override {
-        // Rough shares of the time (english oak: growing 10 %, the levels' search 45 %, the
-        // impostor's views 35 %, writing 10 %).
-        struct Share {
-            std::string_view stage;
-            int from, span;
-        };
-        static constexpr Share kShares[] = {
-            {"grow", 0, 10}, {"levels", 10, 45}, {"impostor", 55, 35}, {"writing", 90, 10}};
-        for (const Share& s : kShares)
-            if (s.stage == stage) {
-                const int v = s.from + static_cast<int>(fraction * s.span);
-                if (v > mPercent.load()) mPercent.store(v);
-            }
-    }
-    bool isCancelled() const override { return mCancel.load(); }
-    int percent() const { return mPercent.load(); }
-    void cancel() { mCancel.store(true); }
-
-private:
-    std::atomic<int> mPercent{0};
-    std::atomic<bool> mCancel{false};
-};
+/// Rough shares of the time (english oak: growing 10 %, the levels' search 45 %, the
+/// impostor's views 35 %, writing 10 %).
+int lodChainPercent(double fraction, std::string_view stage) {
+    struct Share {
+        std::string_view stage;
+        int from, span;
+    };
+    static constexpr Share kShares[] = {
+        {"grow", 0, 10}, {"levels", 10, 45}, {"impostor", 55, 35}, {"writing", 90, 10}};
+    for (const Share& s : kShares)
+        if (s.stage == stage) return s.from + static_cast<int>(fraction * s.span);
+    return -1;
+}
 
 } // namespace
 
@@ -85,49 +72,21 @@ bool LodChainExportAction::exportTo(const QString& dir) {
     }
     if (mDialog) return false; // one export at a time
     mAction->setEnabled(false);
-    PollProgress progress;
+    DialogProgress progress(lodChainPercent);
     exporter::GameLodFiles files;
-    std::exception_ptr error;
-    std::atomic<bool> done{false};
     const std::filesystem::path path = dir.toStdString();
-    // A plain thread: the engine's exceptions come back as they are (QtConcurrent would wrap
-    // them), and the export is joined before this returns, cancelled or not.
-    std::thread worker([&] {
-        try {
-            files = exportLodChain(path, *source, progress);
-        } catch (...) {
-            error = std::current_exception();
-        }
-        done.store(true);
-    });
-
-    mDialog = new QProgressDialog(
+    const WorkerOutcome outcome = runWithProgress(
+        mWindow, tr("Export LOD chain"),
         tr("Exporting the LOD chain of %1…").arg(QString::fromStdString(source->name)),
-        tr("Cancel"), 0, 100, mWindow);
-    mDialog->setObjectName(QStringLiteral("lodChainProgress"));
-    mDialog->setWindowTitle(tr("Export LOD chain"));
-    mDialog->setWindowModality(Qt::WindowModal);
-    mDialog->setMinimumDuration(0);
-    mDialog->setAutoClose(false);
-    mDialog->setAutoReset(false);
-    connect(mDialog, &QProgressDialog::canceled, this, [&progress] { progress.cancel(); });
-    QEventLoop loop;
-    QTimer poll;
-    connect(&poll, &QTimer::timeout, &loop, [&] {
-        if (mDialog) mDialog->setValue(progress.percent());
-        if (done.load()) loop.quit();
-    });
-    poll.start(50);
-    loop.exec();
-    worker.join();
-    delete mDialog;
+        QStringLiteral("lodChainProgress"), progress,
+        [&](Progress& p) { files = exportLodChain(path, *source, p); }, mDialog);
     update();
 
-    if (error) {
+    if (const std::exception_ptr error = outcome.error) {
         const doc::ErrorReport report = doc::describeError(error);
-        const bool cancelled = progress.isCancelled();
-        Q_EMIT finished(false, cancelled ? tr("LOD chain export cancelled: nothing was written.")
-                                         : QString::fromStdString(report.message));
+        Q_EMIT finished(false, outcome.cancelled
+                                   ? tr("LOD chain export cancelled: nothing was written.")
+                                   : QString::fromStdString(report.message));
         return false;
     }
     mFiles = std::move(files);

@@ -62,6 +62,7 @@
 #include "ui/viewport/toolcontroller.h"
 #include "ui/viewport/tooloptionsbar.h"
 #include "ui/viewport/viewport.h"
+#include "ui/workerdialog.h"
 
 namespace sylva::ui {
 
@@ -1001,20 +1002,26 @@ bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
         reportError(tr("Nothing to export yet."));
         return false;
     }
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    QString error;
+    if (mExportDialog) return false; // one export at a time
+    // On a worker with progress and Cancel, as Export LOD chain…: a project's export builds its
+    // forest as sylva-cli forest does.
     ExportCount count;
-    try {
-        count = exportShown(path,
-                            {shown, mPreview.isActive() ? nullptr : mDocument,
-                             mViewport->camera().eye(), mViewport->camera().target()},
-                            options);
-    } catch (...) {
-        error = errorText();
-    }
-    QApplication::restoreOverrideCursor();
-    if (!error.isEmpty()) {
-        reportError(error);
+    const ShownScene scene{shown, mPreview.isActive() ? nullptr : mDocument,
+                           mViewport->camera().eye(), mViewport->camera().target()};
+    DialogProgress progress([](double fraction, std::string_view stage) {
+        // Rough shares: the trees (grown, adapted, meshed) most of it, then the writing.
+        if (stage == "trees") return static_cast<int>(fraction * 85.0);
+        if (stage == "writing" || stage == "write") return 85 + static_cast<int>(fraction * 15.0);
+        return -1;
+    });
+    const WorkerOutcome outcome = runWithProgress(
+        this, tr("Export"), tr("Exporting to %1…").arg(QFileInfo(path).fileName()),
+        QStringLiteral("exportProgress"), progress,
+        [&](Progress& p) { count = exportShown(path, scene, options, p); }, mExportDialog);
+    if (outcome.error) {
+        reportError(outcome.cancelled
+                        ? tr("Export cancelled: nothing was written.")
+                        : QString::fromStdString(doc::describeError(outcome.error).message));
         return false;
     }
     statusBar()->showMessage(

@@ -6,6 +6,8 @@
 
 #include <QDateTime>
 #include <QMainWindow>
+#include <QPointer>
+#include <QProgressDialog>
 #include <QString>
 
 #include "document/document.h"
@@ -225,7 +227,9 @@ private:
     ColorByMenu* mColorMenu = nullptr;
     ColorBy mColorBy = ColorBy::Material;
     QLabel* mGlLabel = nullptr;
-    QLabel* mGenerationError = nullptr; ///< the newest generation's error, until one succeeds
+    QLabel* mGenerationError = nullptr;
+    QPointer<QProgressDialog> mExportDialog; ///< File ▸ Export's, while it runs ///< the newest
+                                             ///< generation's error, until one succeeds
     QProgressBar* mBusy = nullptr;
     QToolButton* mCancel = nullptr;
 

@@ -179,8 +179,14 @@ ExportReport exportForest(forest::ForestScene scene, const Project& project,
     double writeMs = 0.0;
     report.stats = forest::buildForest(
         scene, options,
-        [&](const std::vector<forest::ForestTree>& batch) {
+        [&](const std::vector<forest::ForestTree>& all) {
             const auto t = Clock::now();
+            std::vector<forest::ForestTree> chosen;
+            if (request.trees)
+                for (const forest::ForestTree& tree : all)
+                    if (request.trees->count(tree.instance.id)) chosen.push_back(tree);
+            const std::vector<forest::ForestTree>& batch = request.trees ? chosen : all;
+            report.written += batch.size();
             if (usdWriter) {
                 std::vector<exporter::usd::UsdTree> trees;
                 trees.reserve(batch.size());
@@ -225,6 +231,7 @@ ExportReport exportForest(forest::ForestScene scene, const Project& project,
             report.files.push_back(f);
     report.writeMs = writeMs + msSince(t);
     report.totalMs = msSince(start);
+    report.wind = windOn;
     return report;
 }
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -46,12 +47,17 @@ struct ExportRequest {
     std::optional<bool> wind;
     WindOverride windOverride;
     bool fullPrecision = false, fsync = false, instanceTables = false, assimpGltf = false;
+    /// Only these trees (stable ids: the editor's selection) are written; the forest is still
+    /// built whole, so they adapt to their neighbours as in the full export. Unset: every tree.
+    std::optional<std::set<std::uint64_t>> trees;
 };
 
 /// What an export wrote and its one statistics value.
 struct ExportReport {
     std::vector<std::filesystem::path> files;
     forest::ForestStats stats;
+    std::size_t written = 0; ///< trees written (fewer than stats.trees with a tree filter)
+    bool wind = false;       ///< written with a wind model
     std::size_t obstacleTriangles = 0;
     std::vector<std::string> species; ///< names, by index (shortfalls name them)
     int tile = 1, tiles = 1;          ///< 1-based, as written

@@ -13,6 +13,9 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMouseEvent>
@@ -462,6 +465,45 @@ private Q_SLOTS:
         QVERIFY2(mWindow->lastError().contains(QStringLiteral(".xyz")),
                  qPrintable(mWindow->lastError()));
         QVERIFY(!QFileInfo::exists(QDir::temp().filePath(QStringLiteral("tree.xyz"))));
+    }
+
+    /// Issue #42: File ▸ Export of a project is the export sylva-cli forest makes (one use case,
+    /// doc::exportProject): for a project with a wind, the OBJ (with its wind table), the GLB
+    /// with its rig and clip, and the USD (which the editor did not offer) are the CLI's bytes,
+    /// the project's wind being the default of both; on a worker with a progress dialog.
+    void projectExportWritesWhatTheCliWrites() {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QFile small(QStringLiteral(SYLVA_TEST_DATA_DIR "/projects/small.sylva"));
+        QVERIFY(small.open(QIODevice::ReadOnly));
+        QJsonObject project = QJsonDocument::fromJson(small.readAll()).object();
+        const QDir base(QStringLiteral(SYLVA_TEST_DATA_DIR "/projects"));
+        for (const QString& key : {QStringLiteral("species"), QStringLiteral("obstacles")}) {
+            QJsonArray list = project.value(key).toArray();
+            for (qsizetype i = 0; i < list.size(); ++i) {
+                QJsonObject o = list[i].toObject();
+                o[QStringLiteral("file")] =
+                    QFileInfo(base.filePath(o.value(QStringLiteral("file")).toString()))
+                        .canonicalFilePath();
+                list[i] = o;
+            }
+            project[key] = list;
+        }
+        project[QStringLiteral("wind")] =
+            QJsonObject{{QStringLiteral("direction"), QJsonArray{0.6, 0, 0.8}},
+                        {QStringLiteral("strength"), 1.3},
+                        {QStringLiteral("gustiness"), 0.7},
+                        {QStringLiteral("frequency"), 0.9}};
+        const QString path = dir.filePath(QStringLiteral("windy.sylva"));
+        QVERIFY(writeFile(path, QJsonDocument(project).toJson()));
+        QSignalSpy finished(mWindow.get(), &MainWindow::generationFinished);
+        mWindow->openSpecies(path);
+        QVERIFY(finished.wait(kGenerationTimeoutMs));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(mWindow->lastError()));
+        exportEqualsCli(*mWindow, QStringLiteral("forest"), path,
+                        {QStringLiteral("obj"), QStringLiteral("glb"), QStringLiteral("usda")});
+        mWindow->openDefaultPreset();
+        QVERIFY(finished.wait(kGenerationTimeoutMs));
     }
 
     /// File ▸ Reload automatically: editing the species' grammar file on disk regenerates the

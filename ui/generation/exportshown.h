@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "document/document.h"
+#include "engine/util/progress.h"
 #include "ui/generation/treegenerator.h"
 
 namespace sylva::ui {
@@ -38,14 +39,15 @@ struct ExportCount {
     bool wind = false;     ///< written with the project's wind
 };
 
-/// Exports \p shown to \p path by its extension, exactly as `sylva-cli tree` (a species) or
-/// `sylva-cli forest` (the document's project) writes it; with \p options, only the selected
-/// trees, at the viewport camera's level of detail, and with the project's wind (the forest
-/// is then built again with wind data, as `sylva-cli forest --wind` builds it). Runs on the calling
-/// thread (a rebuild for the camera takes as long as a generation). \throw InvalidInput when the
-/// selection holds no hand-placed tree to export \throw IoError when the rebuild or the writing
-/// fails (the file is then left as it was)
+/// Exports \p shown to \p path by its extension: a species preview's tree exactly as `sylva-cli
+/// tree` writes it; the document's project through doc::exportProject, the export `sylva-cli
+/// forest` and Python's `export_forest` make (the forest built as they build it, the project's
+/// wind by default), with \p options translated into the request: only the selected trees, the
+/// viewport camera's level of detail, no wind. Runs on the calling thread (the editor calls it
+/// on a worker; \p progress reports and cancels). \throw InvalidInput when the selection holds
+/// no hand-placed tree to export \throw IoError when the writing fails (the file is then left as
+/// it was) \throw Cancelled
 ExportCount exportShown(const QString& path, const ShownScene& shown,
-                        const ExportOptions& options = {});
+                        const ExportOptions& options = {}, Progress& progress = noProgress());
 
 } // namespace sylva::ui
