@@ -254,7 +254,10 @@ void cap(Writer& w, const glm::vec3& centre, const glm::vec3& n, const glm::vec3
 
 void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& radius,
                const std::int32_t* nodes, std::size_t m, bool lateral, bool caps,
-               const std::vector<glm::vec3>& cs) {
+               const std::vector<glm::vec3>& cs, const std::uint32_t* ids = nullptr) {
+    auto id = [&](std::size_t k) {
+        return ids != nullptr ? ids[k] : static_cast<std::uint32_t>(nodes[k]);
+    };
     const int res = static_cast<int>(cs.size()) - 1;
     auto P = [&](std::size_t k) { return s.position[static_cast<std::size_t>(nodes[k])]; };
     // The base ring of a lateral uses the lateral's own radius, never wider than the parent.
@@ -281,7 +284,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
 
     for (std::size_t k = 0; k < m; ++k) {
         // A lateral's base ring sits at its parent's node but belongs to the lateral.
-        w.node = static_cast<std::uint32_t>(nodes[k == 0 && lateral ? 1 : k]);
+        w.node = id(k == 0 && lateral ? 1 : k);
         const glm::vec3 p = P(k);
         const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
         const glm::vec3 t = k == 0       ? dNext
@@ -311,7 +314,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
         }
         const glm::vec3 b = glm::cross(t, n);
         const float r = R(k);
-        w.flex = 1.0f - r * w.invRMax;
+        w.flex = std::max(1.0f - r * w.invRMax, 0.0f); // a flared root is wider than rMax
         // Taper slope dr/ds tilts the normals towards the thinner end.
         const std::size_t ka = k > 0 ? k - 1 : k, kb = k + 1 < m ? k + 1 : k;
         const float ds = glm::length(P(kb) - P(ka));
@@ -346,10 +349,69 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     if (caps && !lateral) {
         const std::size_t end = w.v;
         w.v = firstRing - ringVerts - 1;
-        w.node = static_cast<std::uint32_t>(nodes[0]);
+        w.node = id(0);
         cap(w, P(0), n0, b0, -t0, R(0), cs, true);
         w.v = end;
     }
+}
+
+/// A root's axis as its own little chain: the skeleton's nodes plus a ring below the ground and
+/// rings over the flare's height, each with the radius the flare gives it and the node it
+/// belongs to (the nearer node of its segment).
+struct FlaredChain {
+    skel::Skeleton sub; ///< positions and orientations of the rings only
+    std::vector<float> radius;
+    std::vector<std::int32_t> nodes; ///< 0, 1, 2, ... into sub
+    std::vector<std::uint32_t> ids;  ///< the skeleton node of each ring
+};
+
+FlaredChain flareChain(const skel::Skeleton& s, const std::vector<float>& radius,
+                       const std::int32_t* nodes, std::size_t m, const TubeSettings& settings) {
+    FlaredChain f;
+    const auto node0 = static_cast<std::size_t>(nodes[0]);
+    const glm::quat q0 = s.orientation[node0];
+    const double flare = settings.rootFlare;
+    const double height =
+        std::min(settings.flareHeight, kMaxFlareRadii * static_cast<double>(radius[node0]));
+    auto widen = [&](double along) {
+        if (!(height > 0.0) || along >= height) return 1.0;
+        const double u = 1.0 - std::max(along, 0.0) / height;
+        return 1.0 + (flare - 1.0) * u * u;
+    };
+    auto ring = [&](const glm::vec3& p, double r, std::uint32_t id) {
+        f.sub.position.push_back(p);
+        f.sub.orientation.push_back(q0);
+        f.radius.push_back(static_cast<float>(r));
+        f.nodes.push_back(static_cast<std::int32_t>(f.nodes.size()));
+        f.ids.push_back(id);
+    };
+    auto P = [&](std::size_t k) { return s.position[static_cast<std::size_t>(nodes[k])]; };
+    auto R = [&](std::size_t k) {
+        return static_cast<double>(radius[static_cast<std::size_t>(nodes[k])]);
+    };
+    const glm::vec3 down = -safeNormalize(P(1) - P(0), skel::headingOf(q0), kMinDirectionLength);
+    if (settings.groundDepth > 0.0)
+        ring(P(0) + static_cast<float>(settings.groundDepth) * down, R(0) * widen(0.0),
+             static_cast<std::uint32_t>(nodes[0]));
+    // Rings of the flare where it changes fastest, near the ground.
+    constexpr double kFlareRings[] = {0.06, 0.14, 0.25, 0.4, 0.6, 0.8};
+    double along = 0.0;
+    ring(P(0), R(0) * widen(0.0), static_cast<std::uint32_t>(nodes[0]));
+    std::size_t next = 0;
+    for (std::size_t k = 0; k + 1 < m; ++k) {
+        const double len = glm::length(P(k + 1) - P(k));
+        for (; next < std::size(kFlareRings) && kFlareRings[next] * height < along + len; ++next) {
+            const double at = kFlareRings[next] * height;
+            if (at <= along) continue;
+            const double t = (at - along) / len;
+            ring(P(k) + static_cast<float>(t) * (P(k + 1) - P(k)),
+                 (R(k) + t * (R(k + 1) - R(k))) * widen(at),
+                 static_cast<std::uint32_t>(nodes[t < 0.5 ? k : k + 1]));
+        }
+        along += len;
+        ring(P(k + 1), R(k + 1) * widen(along), static_cast<std::uint32_t>(nodes[k + 1]));
+    }
+    return f;
 }
 
 /// A flat strip along the chain, two vertices a node, facing \p camera.
@@ -442,6 +504,9 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
     const Chains chains =
         buildChains(s, radius, settings.minBranchRadius, settings.simplifyTolerance);
     const std::size_t count = chains.count();
+    requireRange("root_flare", settings.rootFlare, 1.0, 4.0);
+    requireRange("flare_height", settings.flareHeight, 0.0, 100.0);
+    requireRange("ground_depth", settings.groundDepth, 0.0, 10.0);
 
     std::vector<std::size_t> vOff(count + 1), iOff(count + 1);
     vOff[0] = out.positions.size();
@@ -462,10 +527,26 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
             const std::int32_t own = chains.nodes[chains.begin[c] + (chains.lateral[c] ? 1 : 0)];
             twig[c] = radius[static_cast<std::size_t>(own)] < settings.twigBelowRadius;
         }
+    // Roots' axes with their flare (a handful of chains: one a tree).
+    const bool flaring =
+        (settings.rootFlare > 1.0 && settings.flareHeight > 0.0) || settings.groundDepth > 0.0;
+    std::vector<FlaredChain> flared;
+    std::vector<std::int32_t> flaredOf(count, -1);
+    if (flaring)
+        for (std::size_t c = 0; c < count; ++c) {
+            const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
+            if (chains.lateral[c] || ribbon[c] || s.parent[static_cast<std::size_t>(nodes[0])] >= 0)
+                continue;
+            flaredOf[c] = static_cast<std::int32_t>(flared.size());
+            flared.push_back(
+                flareChain(s, radius, nodes, chains.begin[c + 1] - chains.begin[c], settings));
+        }
     for (std::size_t c = 0; c < count; ++c) {
-        const Layout l =
-            chainLayout(chains.begin[c + 1] - chains.begin[c], chains.lateral[c], settings.caps,
-                        twig[c] ? settings.twigResolution : res, ribbon[c] != 0);
+        const std::size_t rings = flaredOf[c] >= 0
+                                      ? flared[static_cast<std::size_t>(flaredOf[c])].nodes.size()
+                                      : chains.begin[c + 1] - chains.begin[c];
+        const Layout l = chainLayout(rings, chains.lateral[c], settings.caps,
+                                     twig[c] ? settings.twigResolution : res, ribbon[c] != 0);
         vOff[c + 1] = vOff[c] + l.vertices;
         iOff[c + 1] = iOff[c] + l.indices;
     }
@@ -560,7 +641,11 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                     const std::size_t m = chains.begin[c + 1] - chains.begin[c];
                     const bool lateral = chains.lateral[c] != 0;
                     w.order = s.order[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
-                    if (ribbon[c])
+                    if (flaredOf[c] >= 0) {
+                        const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
+                        meshChain(w, f.sub, f.radius, f.nodes.data(), f.nodes.size(), false,
+                                  settings.caps, twig[c] ? csTwig : cs, f.ids.data());
+                    } else if (ribbon[c])
                         meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
                                    static_cast<float>(settings.ribbonWidthScale));
                     else
