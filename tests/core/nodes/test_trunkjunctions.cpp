@@ -53,6 +53,7 @@ struct Measured {
     double stepSlope = 0.0;
     double forkShare = 1.0;
     double lowLeafShare = 0.0;
+    double breastRadius = 0.0; ///< skeleton radius 1.3 m up (half the DBH), for the record
     bool hasTrunk = false;
 };
 
@@ -170,6 +171,7 @@ Measured measure(const std::filesystem::path& file, std::uint64_t seed) {
         }
         return 0.0;
     };
+    r.breastRadius = radiusAt(Y(trunk[0]) + 1.3);
     // Printed wherever the crown starts above 1 m, checked from kMinClearTrunk up.
     if (r.crownBase > 1.05 && radiusAt(1.0) > 0.0) r.taper = R(trunk[fork]) / radiusAt(1.0);
 
@@ -210,10 +212,10 @@ TEST(TrunkJunctions, EverySpeciesIsOneContinuousTree) {
             const Measured m = measure(file, seed);
             std::printf("%-22s seed %2llu: flare %.3f (at the root %.3f) taper %.3f (crown base "
                         "%.2f m) child/parent "
-                        "%.3f step slope %.3f fork share %.3f low leaves %.4f\n",
+                        "%.3f step slope %.3f fork share %.3f low leaves %.4f r(1.3 m) %.3f\n",
                         name.c_str(), static_cast<unsigned long long>(seed), m.flare, m.rootFlare,
                         m.taper, m.crownBase, m.childParent, m.stepSlope, m.forkShare,
-                        m.lowLeafShare);
+                        m.lowLeafShare, m.breastRadius);
             if (!m.hasTrunk) continue;
             if (m.flare > 0.0) {
                 EXPECT_GE(m.flare, kMinFlare);
