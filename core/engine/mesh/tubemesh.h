@@ -55,6 +55,11 @@ struct TubeSettings {
     /// A root's tube goes on this far below its root node, flared as at the root, so the tree
     /// stands in the ground rather than on it like a post; metres, [0, 10].
     double groundDepth = 0.0;
+    /// Buttresses: a root's cross-section near the ground has this many lobes (0: round),
+    /// standing out up to buttressDepth of the radius at the ground and fading over the
+    /// flare's height; a lobed root's axis gets at least 3 · buttressLobes sides. [0, 12].
+    int buttressLobes = 0;
+    double buttressDepth = 0.35; ///< [0, 1]
     bool windAttributes = false; ///< fill Mesh::branchOrder and Mesh::flexibility
     bool nodeIds = false;        ///< fill Mesh::node (for colouring by node attributes)
     std::size_t maxTriangles = kMaxTubeTriangles; ///< lowered by tests only

@@ -117,6 +117,8 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.tubes.rootFlare = ranged(p, "root_flare", kDefaultRootFlare, 1.0, 4.0);
     s.tubes.flareHeight = ranged(p, "flare_height", kDefaultFlareHeight, 0.0, 100.0);
     s.tubes.groundDepth = ranged(p, "ground_depth", kDefaultGroundDepth, 0.0, 10.0);
+    s.tubes.buttressLobes = rangedInt(p, "buttress_lobes", 0, 0, 12);
+    s.tubes.buttressDepth = ranged(p, "buttress_depth", s.tubes.buttressDepth, 0.0, 1.0);
     s.tubes.windAttributes = p.boolean("wind_attributes", false);
     s.tubes.nodeIds = p.boolean("node_ids", false) || p.boolean("wind_data", false);
     s.leaves = p.boolean("leaves", true);
@@ -306,6 +308,12 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
            number("ground_depth", kDefaultGroundDepth, 0, 10, "m",
                   "The trunk's tube goes on this far below the ground (no tree stands on the "
                   "ground like a post)"),
+           integer("buttress_lobes", 0, 0, 12,
+                   "Buttresses: lobes of the trunk's cross-section near the ground, fading over "
+                   "flare_height (the trunk gets at least 3 sides a lobe); 0: round"),
+           number("buttress_depth", 0.35, 0, 1, "",
+                  "How far the largest buttress stands out at the ground, as a fraction of the "
+                  "radius"),
            boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
            boolean("node_ids", false, "Write the skeleton node of each vertex"),
            boolean("wind_data", false,

@@ -520,3 +520,44 @@ TEST(TubeMesh, RootFlareWidensTheBaseAndSinksIntoTheGround) {
     flared.rootFlare = 4.5;
     EXPECT_THROW(mesh::buildTubeMesh(s, flared), InvalidInput);
 }
+
+// Buttresses (issue #44, oak and beech): a lobed section at the ground, round again above the
+// flare, about the round section's mean radius; a well-formed mesh with outward normals.
+TEST(TubeMesh, ButtressLobesFadeOverTheFlare) {
+    lsys::TurtleSettings t;
+    t.width = 0.2; // radius 0.1
+    t.step = 2.0;
+    const skel::Skeleton s = lsys::interpret(makeWord("FF"), t);
+    mesh::TubeSettings settings;
+    settings.rootFlare = 1.4;
+    settings.flareHeight = 0.6;
+    settings.groundDepth = 0.1;
+    const mesh::Mesh round = mesh::buildTubeMesh(s, settings);
+    settings.buttressLobes = 5;
+    settings.buttressDepth = 0.4;
+    const mesh::Mesh lobed = mesh::buildTubeMesh(s, settings);
+    checkWellFormed(lobed);
+    EXPECT_GT(lobed.positions.size(), round.positions.size()); // 15 sides instead of 8
+    auto ringAt = [&](float y) {
+        std::vector<float> r;
+        for (const glm::vec3& p : lobed.positions)
+            if (std::abs(p.y - y) < 1e-4f && std::hypot(p.x, p.z) > 1e-3f)
+                r.push_back(std::hypot(p.x, p.z));
+        return r;
+    };
+    const std::vector<float> ground = ringAt(0.0f);
+    ASSERT_FALSE(ground.empty());
+    const auto [lo, hi] = std::minmax_element(ground.begin(), ground.end());
+    EXPECT_GT(*hi / *lo, 1.3f);
+    double mean = 0.0;
+    for (float r : ground)
+        mean += r;
+    mean /= static_cast<double>(ground.size());
+    EXPECT_NEAR(mean, 0.14, 0.14 * 0.1);
+    const std::vector<float> above = ringAt(2.0f);
+    ASSERT_FALSE(above.empty());
+    for (float r : above)
+        EXPECT_NEAR(r, 0.1f, 1e-4f);
+    settings.buttressLobes = 13;
+    EXPECT_THROW(mesh::buildTubeMesh(s, settings), InvalidInput);
+}
