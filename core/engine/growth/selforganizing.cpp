@@ -11,6 +11,7 @@
 
 #include "engine/growth/optimaldirection.h"
 #include "engine/growth/pipemodel.h"
+#include "engine/skeleton/radii.h"
 #include "engine/util/error.h"
 #include "engine/util/randomvector.h"
 #include "engine/util/safenormalize.h"
@@ -84,6 +85,8 @@ void SelfOrganizingParams::validate() const {
     requireRange("shedding_threshold", sheddingThreshold, 0, 100);
     requireRange("tip_radius", tipRadius, 1e-6, 1);
     requireRange("pipe_exponent", pipeExponent, 1, 4);
+    requireRange("taper", taper, 0, 1);
+    requireRange("junction_slope", junctionSlope, 0, 10);
     requireRange("leaf_size", leafSize, 0, 10);
     requireRange("leaf_age", leafAge, 0, 200);
     requireRange("max_internodes", static_cast<double>(maxInternodes), 1, 50'000'000);
@@ -862,6 +865,8 @@ std::vector<SelfOrganizingResult> SelfOrganizingSimulation::results() {
         out[t].skeleton.finalize();
         applyPipeModel(out[t].skeleton, static_cast<float>(mTrees[t].params.tipRadius),
                        static_cast<float>(mTrees[t].params.pipeExponent));
+        skel::shapeRadii(out[t].skeleton, {static_cast<float>(mTrees[t].params.taper),
+                                           static_cast<float>(mTrees[t].params.junctionSlope)});
     }
     return out;
 }

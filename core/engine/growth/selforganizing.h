@@ -77,10 +77,12 @@ struct SelfOrganizingParams {
     double sheddingThreshold = 0.1; ///< shed lateral branches with Q/internodes below, [0, 100]
 
     // Thickness (pipe model) and leaves.
-    double tipRadius = 0.004;  ///< radius of a shoot tip, (0, 1]
-    double pipeExponent = 2.5; ///< r^e = Σ r_child^e, [1, 4]
-    double leafSize = 0.08;    ///< leaf card length, 0 = no leaves, [0, 10]
-    int leafAge = 2;           ///< metamers younger than this many cycles carry a leaf, [0, 200]
+    double tipRadius = 0.004;    ///< radius of a shoot tip, (0, 1]
+    double pipeExponent = 2.5;   ///< r^e = Σ r_child^e, [1, 4]
+    double taper = 0.1;          ///< skel::RadiusShaping::taper, 1/m, [0, 1]
+    double junctionSlope = 0.08; ///< skel::RadiusShaping::junctionSlope, [0, 10]
+    double leafSize = 0.08;      ///< leaf card length, 0 = no leaves, [0, 10]
+    int leafAge = 2;             ///< metamers younger than this many cycles carry a leaf, [0, 200]
 
     /// Runaway guard: more internodes than this in one tree throws LimitExceeded.
     std::int64_t maxInternodes = 1'000'000; ///< [1, 50,000,000]

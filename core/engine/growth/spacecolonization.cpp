@@ -42,6 +42,7 @@ void validate(const ColonizationParams& p) {
         throw InvalidInput("tropism must have length in [0, 1], got " +
                            std::to_string(glm::length(p.tropism)));
     requireRange("trunk_height", p.trunkHeight, 0.0, 1000.0);
+    requireRange("clear_trunk", p.clearTrunk, 0.0, 1000.0);
     for (int a = 0; a < 3; ++a)
         requireRange("root component", p.root[a], -1e6, 1e6);
     requireRange("max_iterations", p.maxIterations, 1, 100000);
@@ -385,6 +386,25 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     }
     result.initialNodes = skel.size();
 
+    // The nodes the search sees: the skeleton's, but with the clear trunk's initial nodes moved
+    // far out of everyone's reach (appended to as the skeleton grows; only when needed).
+    std::vector<glm::vec3> searchPositions;
+    if (params.clearTrunk > 0.0f && !skel.empty()) {
+        float base = std::numeric_limits<float>::max();
+        for (const glm::vec3& p : skel.position)
+            base = std::min(base, p.y);
+        searchPositions = skel.position;
+        constexpr float kOutOfReach = 1e15f;
+        bool any = false;
+        for (glm::vec3& p : searchPositions)
+            if (p.y < base + params.clearTrunk) {
+                p = glm::vec3(kOutOfReach);
+                any = true;
+            }
+        if (!any) searchPositions.clear();
+    }
+    const bool clearing = !searchPositions.empty();
+
     const float di2 = params.influenceDistance * params.influenceDistance;
     const float dk2 = params.killDistance * params.killDistance;
     const float D = params.segmentLength;
@@ -418,10 +438,16 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     for (int iteration = 0;; ++iteration) {
         progress.checkCancelled();
         // 1. closest nodes and the kill zone
+        if (clearing)
+            searchPositions.insert(searchPositions.end(),
+                                   skel.position.begin() +
+                                       static_cast<std::ptrdiff_t>(searchPositions.size()),
+                                   skel.position.end());
+        const std::vector<glm::vec3>& searched = clearing ? searchPositions : skel.position;
         if (fast)
-            fast->update(s, skel.position, firstNew, dk2);
+            fast->update(s, searched, firstNew, dk2);
         else
-            updateNaive(s, skel.position, di2, dk2);
+            updateNaive(s, searched, di2, dk2);
         std::erase_if(s.live, [&s](std::uint32_t a) { return s.killed[a] != 0; });
         firstNew = skel.size();
         if (s.live.empty()) {

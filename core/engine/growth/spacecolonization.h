@@ -22,6 +22,10 @@ struct ColonizationParams {
     glm::vec3 tropism{0.0f};    ///< bias added to each direction (gravity: (0,-g,0)); |t| <= 1
     float trunkHeight = 0.0f;   ///< straight trunk from root before colonizing; [0, 1000]
     glm::vec3 root{0.0f};       ///< trunk base when there is no initial skeleton
+    /// No shoot grows from a node of the initial skeleton (or the straight trunk) lower than
+    /// this above its lowest node (metres, [0, 1000], 0: off): a bare bole, no sprays hanging
+    /// off the lower trunk. Such nodes neither attract nor kill points.
+    float clearTrunk = 0.0f;
     int maxIterations = 1000;   ///< growth steps at most; [1, 100000]
     float pipeExponent = 2.41f; ///< see applyPipeModel(); [1, 4]
     float tipRadius = 0.01f;    ///< radius of tips in metres; (0, 10]

@@ -254,7 +254,11 @@ void cap(Writer& w, const glm::vec3& centre, const glm::vec3& n, const glm::vec3
 
 void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& radius,
                const std::int32_t* nodes, std::size_t m, bool lateral, bool caps,
-               const std::vector<glm::vec3>& cs) {
+               const std::vector<glm::vec3>& cs, const std::uint32_t* ids = nullptr,
+               const glm::vec2* lobe = nullptr, const float* lobeAmp = nullptr) {
+    auto id = [&](std::size_t k) {
+        return ids != nullptr ? ids[k] : static_cast<std::uint32_t>(nodes[k]);
+    };
     const int res = static_cast<int>(cs.size()) - 1;
     auto P = [&](std::size_t k) { return s.position[static_cast<std::size_t>(nodes[k])]; };
     // The base ring of a lateral uses the lateral's own radius, never wider than the parent.
@@ -281,7 +285,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
 
     for (std::size_t k = 0; k < m; ++k) {
         // A lateral's base ring sits at its parent's node but belongs to the lateral.
-        w.node = static_cast<std::uint32_t>(nodes[k == 0 && lateral ? 1 : k]);
+        w.node = id(k == 0 && lateral ? 1 : k);
         const glm::vec3 p = P(k);
         const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
         const glm::vec3 t = k == 0       ? dNext
@@ -311,16 +315,29 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
         }
         const glm::vec3 b = glm::cross(t, n);
         const float r = R(k);
-        w.flex = 1.0f - r * w.invRMax;
+        w.flex = std::max(1.0f - r * w.invRMax, 0.0f); // a flared root is wider than rMax
         // Taper slope dr/ds tilts the normals towards the thinner end.
         const std::size_t ka = k > 0 ? k - 1 : k, kb = k + 1 < m ? k + 1 : k;
         const float ds = glm::length(P(kb) - P(ka));
         const float slope = ds > 1e-12f ? (R(kb) - R(ka)) / ds : 0.0f;
         const float inv = 1.0f / std::sqrt(1.0f + slope * slope);
         const glm::vec3 tn = -slope * inv * t;
+        const float amp = lobeAmp != nullptr ? lobeAmp[k] : 0.0f;
         for (int j = 0; j <= res; ++j) {
             const glm::vec3 a = cs[static_cast<std::size_t>(j)];
             const glm::vec3 radial = a.x * n + a.y * b;
+            if (amp > 0.0f) {
+                // r(θ) = r (1 + amp · shape(θ)); the normal of the lobed section leans
+                // against dr/dθ along the ring's tangent.
+                const glm::vec2 sh = lobe[j];
+                const glm::vec3 around = -a.y * n + a.x * b;
+                const float rr = r * (1.0f + amp * sh.x);
+                const glm::vec3 inPlane = safeNormalize(rr * radial - r * amp * sh.y * around,
+                                                        radial, kMinDirectionLength);
+                w.vertex(p + rr * radial,
+                         safeNormalize(inPlane * inv + tn, radial, kMinDirectionLength), {a.z, v});
+                continue;
+            }
             w.vertex(p + r * radial, radial * inv + tn, {a.z, v});
         }
         if (k > 0) {
@@ -346,10 +363,111 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     if (caps && !lateral) {
         const std::size_t end = w.v;
         w.v = firstRing - ringVerts - 1;
-        w.node = static_cast<std::uint32_t>(nodes[0]);
+        w.node = id(0);
         cap(w, P(0), n0, b0, -t0, R(0), cs, true);
         w.v = end;
     }
+}
+
+/// A root's axis as its own little chain: the skeleton's nodes plus a ring below the ground and
+/// rings over the flare's height, each with the radius the flare gives it and the node it
+/// belongs to (the nearer node of its segment).
+struct FlaredChain {
+    skel::Skeleton sub; ///< positions and orientations of the rings only
+    std::vector<float> radius;
+    std::vector<std::int32_t> nodes; ///< 0, 1, 2, ... into sub
+    std::vector<std::uint32_t> ids;  ///< the skeleton node of each ring
+    std::vector<glm::vec3> cs;       ///< cos, sin and u of each ring vertex (its own sides)
+    std::vector<glm::vec2> lobe;     ///< buttress shape and its dθ per ring vertex; empty: round
+    std::vector<float> lobeAmp;      ///< buttress amplitude per ring
+};
+
+// How far each buttress lobe stands out, relative: a fixed irregular table, the same on every
+// platform (lobe i gets entry i).
+constexpr float kLobeWeights[] = {1.0f,  0.7f,  0.9f, 0.6f, 0.85f, 0.75f,
+                                  0.95f, 0.65f, 0.8f, 0.7f, 0.9f,  0.6f};
+
+FlaredChain flareChain(const skel::Skeleton& s, const std::vector<float>& radius,
+                       const std::int32_t* nodes, std::size_t m, const TubeSettings& settings,
+                       const std::vector<glm::vec3>& cs) {
+    FlaredChain f;
+    const int lobes = settings.buttressDepth > 0.0 ? settings.buttressLobes : 0;
+    f.cs = cs;
+    if (lobes > 0) {
+        // Lobe i centred at 2πi/lobes: weight_i · max(0, cos(lobes · θ))², less its mean (the
+        // section keeps about its round area), and its derivative in θ.
+        const int sides = std::max(static_cast<int>(cs.size()) - 1, 3 * lobes);
+        f.cs.resize(static_cast<std::size_t>(sides) + 1);
+        f.lobe.resize(static_cast<std::size_t>(sides) + 1);
+        double mean = 0.0;
+        for (int i = 0; i < lobes; ++i)
+            mean += kLobeWeights[i];
+        mean *= 0.25 / lobes;
+        for (int j = 0; j <= sides; ++j) {
+            const double theta = 2.0 * std::numbers::pi * (j % sides) / sides;
+            const double t = lobes * theta;
+            const auto lobe =
+                static_cast<std::size_t>(std::lround(t / (2.0 * std::numbers::pi)) % lobes);
+            const double c = std::cos(t), sn = std::sin(t), wt = kLobeWeights[lobe];
+            const double shape = c > 0.0 ? wt * c * c : 0.0;
+            const double slope = c > 0.0 ? -2.0 * wt * c * sn * lobes : 0.0;
+            f.cs[static_cast<std::size_t>(j)] = {static_cast<float>(std::cos(theta)),
+                                                 static_cast<float>(std::sin(theta)),
+                                                 static_cast<float>(j) / static_cast<float>(sides)};
+            f.lobe[static_cast<std::size_t>(j)] = {static_cast<float>(shape - mean),
+                                                   static_cast<float>(slope)};
+        }
+    }
+    const auto node0 = static_cast<std::size_t>(nodes[0]);
+    const glm::quat q0 = s.orientation[node0];
+    const double flare = settings.rootFlare;
+    const double height =
+        std::min(settings.flareHeight, kMaxFlareRadii * static_cast<double>(radius[node0]));
+    auto widen = [&](double along) {
+        if (!(height > 0.0) || along >= height) return 1.0;
+        const double u = 1.0 - std::max(along, 0.0) / height;
+        return 1.0 + (flare - 1.0) * u * u;
+    };
+    auto buttress = [&](double along) {
+        if (lobes == 0 || !(height > 0.0) || along >= height) return 0.0;
+        const double u = 1.0 - std::max(along, 0.0) / height;
+        return settings.buttressDepth * u * u * u;
+    };
+    auto ring = [&](const glm::vec3& p, double r, std::uint32_t id, double along) {
+        f.lobeAmp.push_back(static_cast<float>(buttress(along)));
+        f.sub.position.push_back(p);
+        f.sub.orientation.push_back(q0);
+        f.radius.push_back(static_cast<float>(r));
+        f.nodes.push_back(static_cast<std::int32_t>(f.nodes.size()));
+        f.ids.push_back(id);
+    };
+    auto P = [&](std::size_t k) { return s.position[static_cast<std::size_t>(nodes[k])]; };
+    auto R = [&](std::size_t k) {
+        return static_cast<double>(radius[static_cast<std::size_t>(nodes[k])]);
+    };
+    const glm::vec3 down = -safeNormalize(P(1) - P(0), skel::headingOf(q0), kMinDirectionLength);
+    if (settings.groundDepth > 0.0)
+        ring(P(0) + static_cast<float>(settings.groundDepth) * down, R(0) * widen(0.0),
+             static_cast<std::uint32_t>(nodes[0]), 0.0);
+    // Rings of the flare where it changes fastest, near the ground.
+    constexpr double kFlareRings[] = {0.06, 0.14, 0.25, 0.4, 0.6, 0.8};
+    double along = 0.0;
+    ring(P(0), R(0) * widen(0.0), static_cast<std::uint32_t>(nodes[0]), 0.0);
+    std::size_t next = 0;
+    for (std::size_t k = 0; k + 1 < m; ++k) {
+        const double len = glm::length(P(k + 1) - P(k));
+        for (; next < std::size(kFlareRings) && kFlareRings[next] * height < along + len; ++next) {
+            const double at = kFlareRings[next] * height;
+            if (at <= along) continue;
+            const double t = (at - along) / len;
+            ring(P(k) + static_cast<float>(t) * (P(k + 1) - P(k)),
+                 (R(k) + t * (R(k + 1) - R(k))) * widen(at),
+                 static_cast<std::uint32_t>(nodes[t < 0.5 ? k : k + 1]), at);
+        }
+        along += len;
+        ring(P(k + 1), R(k + 1) * widen(along), static_cast<std::uint32_t>(nodes[k + 1]), along);
+    }
+    return f;
 }
 
 /// A flat strip along the chain, two vertices a node, facing \p camera.
@@ -442,6 +560,11 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
     const Chains chains =
         buildChains(s, radius, settings.minBranchRadius, settings.simplifyTolerance);
     const std::size_t count = chains.count();
+    requireRange("root_flare", settings.rootFlare, 1.0, 4.0);
+    requireRange("flare_height", settings.flareHeight, 0.0, 100.0);
+    requireRange("ground_depth", settings.groundDepth, 0.0, 10.0);
+    requireRange("buttress_lobes", settings.buttressLobes, 0, 12);
+    requireRange("buttress_depth", settings.buttressDepth, 0.0, 1.0);
 
     std::vector<std::size_t> vOff(count + 1), iOff(count + 1);
     vOff[0] = out.positions.size();
@@ -462,10 +585,45 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
             const std::int32_t own = chains.nodes[chains.begin[c] + (chains.lateral[c] ? 1 : 0)];
             twig[c] = radius[static_cast<std::size_t>(own)] < settings.twigBelowRadius;
         }
+    // cos, sin and u of each ring vertex; the seam repeats the first with u = 1.
+    auto ringTable = [](int sides) {
+        std::vector<glm::vec3> t(static_cast<std::size_t>(sides) + 1);
+        for (int j = 0; j < sides; ++j) {
+            const double a = 2.0 * std::numbers::pi * j / sides;
+            t[static_cast<std::size_t>(j)] = {static_cast<float>(std::cos(a)),
+                                              static_cast<float>(std::sin(a)),
+                                              static_cast<float>(j) / static_cast<float>(sides)};
+        }
+        t[static_cast<std::size_t>(sides)] = {t[0].x, t[0].y, 1.0f};
+        return t;
+    };
+    const std::vector<glm::vec3> cs = ringTable(res);
+    const std::vector<glm::vec3> csTwig = ringTable(settings.twigResolution);
+    // Roots' axes with their flare (a handful of chains: one a tree).
+    const bool flaring =
+        ((settings.rootFlare > 1.0 || settings.buttressLobes > 0) && settings.flareHeight > 0.0) ||
+        settings.groundDepth > 0.0;
+    std::vector<FlaredChain> flared;
+    std::vector<std::int32_t> flaredOf(count, -1);
+    if (flaring)
+        for (std::size_t c = 0; c < count; ++c) {
+            const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
+            if (chains.lateral[c] || ribbon[c] || s.parent[static_cast<std::size_t>(nodes[0])] >= 0)
+                continue;
+            flaredOf[c] = static_cast<std::int32_t>(flared.size());
+            flared.push_back(flareChain(s, radius, nodes, chains.begin[c + 1] - chains.begin[c],
+                                        settings, twig[c] ? csTwig : cs));
+        }
     for (std::size_t c = 0; c < count; ++c) {
+        std::size_t rings = chains.begin[c + 1] - chains.begin[c];
+        int sides = twig[c] ? settings.twigResolution : res;
+        if (flaredOf[c] >= 0) {
+            const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
+            rings = f.nodes.size();
+            sides = static_cast<int>(f.cs.size()) - 1;
+        }
         const Layout l =
-            chainLayout(chains.begin[c + 1] - chains.begin[c], chains.lateral[c], settings.caps,
-                        twig[c] ? settings.twigResolution : res, ribbon[c] != 0);
+            chainLayout(rings, chains.lateral[c], settings.caps, sides, ribbon[c] != 0);
         vOff[c + 1] = vOff[c] + l.vertices;
         iOff[c + 1] = iOff[c] + l.indices;
     }
@@ -512,20 +670,6 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                                  static_cast<std::uint32_t>(iOff[count] - iOff[0])});
     }
 
-    // cos, sin and u of each ring vertex; the seam repeats the first with u = 1.
-    auto ringTable = [](int sides) {
-        std::vector<glm::vec3> t(static_cast<std::size_t>(sides) + 1);
-        for (int j = 0; j < sides; ++j) {
-            const double a = 2.0 * std::numbers::pi * j / sides;
-            t[static_cast<std::size_t>(j)] = {static_cast<float>(std::cos(a)),
-                                              static_cast<float>(std::sin(a)),
-                                              static_cast<float>(j) / static_cast<float>(sides)};
-        }
-        t[static_cast<std::size_t>(sides)] = {t[0].x, t[0].y, 1.0f};
-        return t;
-    };
-    const std::vector<glm::vec3> cs = ringTable(res);
-    const std::vector<glm::vec3> csTwig = ringTable(settings.twigResolution);
     float rMax = 0.0f;
     for (float r : radius)
         rMax = std::max(rMax, r);
@@ -560,7 +704,12 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                     const std::size_t m = chains.begin[c + 1] - chains.begin[c];
                     const bool lateral = chains.lateral[c] != 0;
                     w.order = s.order[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
-                    if (ribbon[c])
+                    if (flaredOf[c] >= 0) {
+                        const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
+                        meshChain(w, f.sub, f.radius, f.nodes.data(), f.nodes.size(), false,
+                                  settings.caps, f.cs, f.ids.data(),
+                                  f.lobe.empty() ? nullptr : f.lobe.data(), f.lobeAmp.data());
+                    } else if (ribbon[c])
                         meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
                                    static_cast<float>(settings.ribbonWidthScale));
                     else

@@ -46,10 +46,27 @@ struct TubeSettings {
     double twigBelowRadius = 0.0;
     int twigResolution = 4;        ///< 3..64, used with twigBelowRadius
     double ribbonWidthScale = 1.0; ///< ribbon width = 2 · radius · this
-    bool windAttributes = false;   ///< fill Mesh::branchOrder and Mesh::flexibility
-    bool nodeIds = false;          ///< fill Mesh::node (for colouring by node attributes)
+    /// Root flare: a root's tube is this many times its skeleton radius at the ground, widening
+    /// smoothly over the flare's height (1 + (rootFlare - 1)(1 - h/height)²); [1, 4], 1: none.
+    double rootFlare = 1.0;
+    /// Height of the flare above a root node, metres, at most kMaxFlareRadii times the root's
+    /// radius (a twig-thin stem flares over a few centimetres, not a metre); [0, 100].
+    double flareHeight = 0.0;
+    /// A root's tube goes on this far below its root node, flared as at the root, so the tree
+    /// stands in the ground rather than on it like a post; metres, [0, 10].
+    double groundDepth = 0.0;
+    /// Buttresses: a root's cross-section near the ground has this many lobes (0: round),
+    /// standing out up to buttressDepth of the radius at the ground and fading over the
+    /// flare's height; a lobed root's axis gets at least 3 · buttressLobes sides. [0, 12].
+    int buttressLobes = 0;
+    double buttressDepth = 0.35; ///< [0, 1]
+    bool windAttributes = false; ///< fill Mesh::branchOrder and Mesh::flexibility
+    bool nodeIds = false;        ///< fill Mesh::node (for colouring by node attributes)
     std::size_t maxTriangles = kMaxTubeTriangles; ///< lowered by tests only
 };
+
+/// The flare rises at most this many root radii (see TubeSettings::flareHeight).
+inline constexpr double kMaxFlareRadii = 8.0;
 
 /// Smallest radius a ring gets (metres): zero-width branches would give degenerate triangles.
 inline constexpr float kMinTubeRadius = 1e-4f;
@@ -61,11 +78,12 @@ inline constexpr float kMinTubeRadius = 1e-4f;
 /// oriented by rotation-minimizing (parallel-transport, double-reflection) frames, so there is
 /// no twist along a branch. A lateral branch starts with a ring centred on its parent node,
 /// with its own radius clamped to the parent's, so the ring lies inside the parent's surface:
-/// forks have neither gaps nor slivers. UVs: u = 0..1 around, v = arc length / circumference.
-/// Normals are smooth and tilted by the taper. Hidden nodes (kHidden) are skipped with their
-/// subtrees. Deterministic and parallel (OpenMP) with identical output on any thread count.
-/// \throw InvalidInput for a resolution outside 3..64 or an invalid skeleton.
-/// \throw LimitExceeded "tube mesh would have N triangles, more than the limit of 100000000;
+/// forks have neither gaps nor slivers. A root's axis gets the root flare (extra rings over the
+/// flare's height) and goes on below the ground by groundDepth. UVs: u = 0..1 around, v = arc
+/// length / circumference. Normals are smooth and tilted by the taper. Hidden nodes (kHidden) are
+/// skipped with their subtrees. Deterministic and parallel (OpenMP) with identical output on any
+/// thread count. \throw InvalidInput for a resolution outside 3..64 or an invalid skeleton. \throw
+/// LimitExceeded "tube mesh would have N triangles, more than the limit of 100000000;
 ///        ..." past TubeSettings::maxTriangles.
 void appendTubes(Mesh& out, const skel::Skeleton& skeleton, const TubeSettings& settings,
                  Progress& progress = noProgress());

@@ -9,6 +9,7 @@
 #include "engine/lsystem/grammar.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/nodes/paramspecs.h"
+#include "engine/skeleton/radii.h"
 #include "engine/util/error.h"
 
 namespace sylva::nodes {
@@ -85,9 +86,15 @@ graph::NodeOutput evaluateLsystem(const graph::NodeContext& ctx) {
         requireRange("leaf_size", turtle.leafSize, 0, 100);
     }
 
+    skel::RadiusShaping shaping;
+    shaping.taper = static_cast<float>(p.number("taper", shaping.taper));
+    shaping.junctionSlope = static_cast<float>(p.number("junction_slope", shaping.junctionSlope));
+    skel::validate(shaping);
+
     t0 = std::chrono::steady_clock::now();
     auto skeleton = std::make_shared<skel::Skeleton>(lsys::interpret(word, turtle, ctx.progress));
     skeleton->finalize();
+    skel::shapeRadii(*skeleton, shaping);
     out.timingsMs["interpret"] = msSince(t0);
 
     glm::vec3 lo, hi;
@@ -132,6 +139,7 @@ void registerLsystemNode(graph::NodeRegistry& registry) {
            number("width_factor", nullptr, 0, 10, "",
                   "What ! without a parameter multiplies the width by"),
            number("leaf_size", nullptr, 0, 100, "m", "Length of the leaves J places")});
+    group(type.params, "Thickness", {taperParam(), junctionSlopeParam()});
     registry.add(std::move(type));
 }
 

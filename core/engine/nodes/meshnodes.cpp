@@ -31,6 +31,11 @@ const skel::Skeleton& inputSkeleton(const NodeContext& ctx) {
     return *ctx.inputs[0]->skeleton;
 }
 
+// The root flare's defaults: the node's ParamSpec and the reading share them.
+constexpr double kDefaultRootFlare = 1.35;
+constexpr double kDefaultFlareHeight = 1.0;
+constexpr double kDefaultGroundDepth = 0.1;
+
 double ranged(const Value& p, const char* key, double fallback, double lo, double hi) {
     const double v = p.number(key, fallback);
     requireRange(key, v, lo, hi);
@@ -109,6 +114,11 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.tubes.twigBelowRadius = ranged(p, "twig_radius", 0.0, 0.0, 1e3);
     s.tubes.twigResolution = rangedInt(p, "twig_resolution", 4, 3, 64);
     s.tubes.minBranchRadius = ranged(p, "bare_twig_radius", 0.0, 0.0, 1e3);
+    s.tubes.rootFlare = ranged(p, "root_flare", kDefaultRootFlare, 1.0, 4.0);
+    s.tubes.flareHeight = ranged(p, "flare_height", kDefaultFlareHeight, 0.0, 100.0);
+    s.tubes.groundDepth = ranged(p, "ground_depth", kDefaultGroundDepth, 0.0, 10.0);
+    s.tubes.buttressLobes = rangedInt(p, "buttress_lobes", 0, 0, 12);
+    s.tubes.buttressDepth = ranged(p, "buttress_depth", s.tubes.buttressDepth, 0.0, 1.0);
     s.tubes.windAttributes = p.boolean("wind_attributes", false);
     s.tubes.nodeIds = p.boolean("node_ids", false) || p.boolean("wind_data", false);
     s.leaves = p.boolean("leaves", true);
@@ -290,6 +300,20 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
            number("bare_twig_radius", 0.0, 0, 1e3, "m",
                   "Side shoots thinner than this at their base get no bark, their leaf cards "
                   "stay (twigs hidden in needle sprays); 0: off"),
+           number("root_flare", kDefaultRootFlare, 1, 4, "",
+                  "A root's tube at the ground is this many times its radius, widening "
+                  "smoothly over flare_height; 1: no flare"),
+           number("flare_height", kDefaultFlareHeight, 0, 100, "m",
+                  "Height of the root flare, at most 8 root radii"),
+           number("ground_depth", kDefaultGroundDepth, 0, 10, "m",
+                  "The trunk's tube goes on this far below the ground (no tree stands on the "
+                  "ground like a post)"),
+           integer("buttress_lobes", 0, 0, 12,
+                   "Buttresses: lobes of the trunk's cross-section near the ground, fading over "
+                   "flare_height (the trunk gets at least 3 sides a lobe); 0: round"),
+           number("buttress_depth", 0.35, 0, 1, "",
+                  "How far the largest buttress stands out at the ground, as a fraction of the "
+                  "radius"),
            boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
            boolean("node_ids", false, "Write the skeleton node of each vertex"),
            boolean("wind_data", false,

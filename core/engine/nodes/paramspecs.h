@@ -76,6 +76,18 @@ inline Value vec(double x, double y, double z) {
     return Value(Value::Array{x, y, z});
 }
 
+/// The final radius pass's two parameters (skel::RadiusShaping), the same on every generator.
+inline ParamSpec taperParam() {
+    return number("taper", 0.1, 0, 1, "1/m",
+                  "Least taper of an axis: a node at least 1 + taper x length times the one "
+                  "above it (a clear trunk tapers); 0: off");
+}
+inline ParamSpec junctionSlopeParam() {
+    return number("junction_slope", 0.08, 0, 10, "",
+                  "Steepest thinning of an axis above a fork (m per m): no step or collar where "
+                  "a branch leaves; 0: off");
+}
+
 /// Sets the panel section of every spec in \p specs and appends them to \p out.
 inline void group(std::vector<ParamSpec>& out, const std::string& name,
                   std::vector<ParamSpec> specs) {

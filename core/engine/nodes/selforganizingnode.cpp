@@ -44,6 +44,8 @@ constexpr RealParam kReals[] = {
     {"shedding_threshold", &P::sheddingThreshold},
     {"tip_radius", &P::tipRadius},
     {"pipe_exponent", &P::pipeExponent},
+    {"taper", &P::taper},
+    {"junction_slope", &P::junctionSlope},
     {"leaf_size", &P::leafSize},
 };
 
@@ -165,7 +167,8 @@ void registerSelfOrganizingNode(graph::NodeRegistry& registry) {
           {number("shedding_threshold", 0.1, 0, 100, "",
                   "Shed lateral branches whose light per internode falls below"),
            number("tip_radius", 0.004, 0, 1, "m", "Radius of a shoot tip", true),
-           number("pipe_exponent", 2.5, 1, 4, "", "Pipe model exponent"),
+           number("pipe_exponent", 2.5, 1, 4, "", "Pipe model exponent"), taperParam(),
+           junctionSlopeParam(),
            number("leaf_size", 0.08, 0, 10, "m", "Leaf card length; 0: no leaves"),
            integer("leaf_age", 2, 0, 200, "Metamers younger than this many cycles carry a leaf")});
     // Kept in step with the reading table above (a test compares them).

@@ -1,7 +1,9 @@
 #include "engine/nodes/spacecolonizationnode.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "engine/environment/obstaclemesh.h"
@@ -10,6 +12,7 @@
 #include "engine/growth/litattractors.h"
 #include "engine/growth/spacecolonization.h"
 #include "engine/nodes/paramspecs.h"
+#include "engine/skeleton/radii.h"
 #include "engine/util/error.h"
 
 namespace sylva::growth {
@@ -175,10 +178,14 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
            integer("max_iterations", 1000, 1, 100000, "Growth steps at most")});
     group(type.params, "Trunk and thickness",
           {number("trunk_height", 2.0, 0, 1000, "m", "Straight trunk before colonizing"),
+           number("clear_trunk", 0.0, 0, 1000, "m",
+                  "A bare bole: no shoot grows from the trunk or the input skeleton, and no "
+                  "attraction point stays, lower than this above its base; 0: off"),
            vector("root", vec(0, 0, 0), -1e6, 1e6, "m", "Trunk base (without an input skeleton)"),
            number("pipe_exponent", 2.41, 1, 4, "",
                   "Pipe model exponent: r^e = sum of the children's r^e"),
-           number("tip_radius", 0.01, 0, 10, "m", "Radius of branch tips", true)});
+           number("tip_radius", 0.01, 0, 10, "m", "Radius of branch tips", true), taperParam(),
+           junctionSlopeParam()});
     type.evaluate = [](const graph::NodeContext& ctx) -> graph::NodeOutput {
         using Clock = std::chrono::steady_clock;
         const Value& p = ctx.params;
@@ -187,6 +194,7 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
         std::uint64_t seed = 0;
         Envelope envelope = Envelope::sphere(glm::vec3(0, 6, 0), 4.5f);
         LightParams light;
+        skel::RadiusShaping shaping;
         try {
             count = p.integer("attractors", 3000);
             if (count < 1 || count > 2'000'000)
@@ -206,6 +214,11 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
             cp.maxIterations = static_cast<int>(iters);
             cp.pipeExponent = static_cast<float>(p.number("pipe_exponent", 2.41));
             cp.tipRadius = static_cast<float>(p.number("tip_radius", 0.01));
+            cp.clearTrunk = static_cast<float>(p.number("clear_trunk", 0.0));
+            shaping.taper = static_cast<float>(p.number("taper", shaping.taper));
+            shaping.junctionSlope =
+                static_cast<float>(p.number("junction_slope", shaping.junctionSlope));
+            skel::validate(shaping);
             const std::int64_t s = p.integer("seed", 1);
             if (s < 0) throw InvalidInput("seed must be >= 0, got " + std::to_string(s));
             seed = ctx.seedOverridden ? ctx.seed : static_cast<std::uint64_t>(s);
@@ -238,8 +251,19 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
             out.timingsMs = ctx.inputs[0]->timingsMs;
         }
         const auto t0 = Clock::now();
-        const std::vector<glm::vec3> points =
+        std::vector<glm::vec3> points =
             litAttractors(envelope.sample(static_cast<std::size_t>(count), seed), light, seed);
+        if (cp.clearTrunk > 0.0f) {
+            // The crown starts above the clear trunk: points lower than it would only pull
+            // limbs down into sprays hanging beside the bole.
+            float base = cp.root.y;
+            if (initial != nullptr && !initial->empty()) {
+                base = std::numeric_limits<float>::max();
+                for (const glm::vec3& q : initial->position)
+                    base = std::min(base, q.y);
+            }
+            std::erase_if(points, [&](const glm::vec3& q) { return q.y < base + cp.clearTrunk; });
+        }
         const auto t1 = Clock::now();
         ColonizationResult r =
             colonize(points, cp, initial, NeighbourSearch::Accelerated, ctx.progress);
@@ -271,6 +295,7 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
             next.initialNodes = r.initialNodes;
             r = std::move(next);
         }
+        skel::shapeRadii(r.skeleton, shaping);
         const auto t2 = Clock::now();
 
         auto ms = [](auto a, auto b) {

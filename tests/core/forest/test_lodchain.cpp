@@ -350,7 +350,8 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
         {"weeping-willow", {1}},
         {"scots-pine", {1, 2}},
         {"italian-cypress", {1}},
-        {"norway-spruce", {1}}}; // 26.6 % since its LOD0 lost its twigs' bark (issue #33)
+        {"norway-spruce", {1}}, // 26.6 % since its LOD0 lost its twigs' bark (issue #33)
+        {"silver-birch", {1}}}; // 27.9 % since the radius pass and the root flare (issue #44)
     // The date palm has 456 triangles: 12 % and 4 % of them (54 and 18) are not reached before
     // it is 4 px high (its coarsest mesh has 66): those two levels are dropped and reported.
     const std::map<std::string, std::size_t> dropped = {{"date-palm", 2}};

@@ -268,6 +268,35 @@ TEST(SpaceColonization, ContinuesFromInitialSkeleton) {
     expectEveryPointKilledOrOutOfReach(points, r, p);
 }
 
+TEST(SpaceColonization, ClearTrunkGrowsNoShootFromTheLowerTrunk) {
+    // Issue #44: the oak's lower trunk carried sprays. A straight trunk of 3 m under a crown
+    // that reaches down to 1.5 m: with clear_trunk 2.5, no shoot leaves the trunk below 2.5 m
+    // (accelerated and naive alike); without it, some do.
+    skel::Skeleton trunk;
+    trunk.addNode({0, 0, 0}, -1, 0.2f, 0, glm::quat(1, 0, 0, 0));
+    for (int i = 1; i <= 6; ++i)
+        trunk.addNode({0, 0.5f * i, 0}, i - 1, 0.1f, 0, glm::quat(1, 0, 0, 0));
+    trunk.finalize();
+    const auto points = spherePoints(900); // a sphere of 4.5 m round (0, 6, 0)
+    ColonizationParams p = referenceParams();
+    auto lowShoots = [&](const ColonizationResult& r) {
+        int n = 0;
+        for (std::size_t i = trunk.size(); i < r.skeleton.size(); ++i) {
+            const auto parent = static_cast<std::size_t>(r.skeleton.parent[i]);
+            n += parent < trunk.size() && trunk.position[parent].y < 2.5f ? 1 : 0;
+        }
+        return n;
+    };
+    EXPECT_GT(lowShoots(colonize(points, p, &trunk)), 0);
+    p.clearTrunk = 2.5f;
+    const ColonizationResult r = colonize(points, p, &trunk);
+    expectIdentical(r.skeleton, colonize(points, p, &trunk, NeighbourSearch::Naive).skeleton);
+    EXPECT_EQ(lowShoots(r), 0);
+    EXPECT_GT(r.skeleton.size(), trunk.size() + 100);
+    p.clearTrunk = -1.0f;
+    EXPECT_THROW(colonize(points, p, &trunk), InvalidInput);
+}
+
 TEST(SpaceColonization, TrunkReachesTheCrown) {
     ColonizationParams p = referenceParams();
     p.trunkHeight = 1.0f; // too short: the trunk grows on until the crown is in reach

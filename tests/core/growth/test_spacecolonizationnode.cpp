@@ -8,6 +8,7 @@
 #include "engine/graph/graph.h"
 #include "engine/growth/envelope.h"
 #include "engine/growth/spacecolonization.h"
+#include "engine/skeleton/radii.h"
 #include "engine/util/error.h"
 
 using namespace sylva;
@@ -96,9 +97,12 @@ TEST_F(SpaceColonizationNode, MatchesTheLibraryCallAndReportsStats) {
     p.trunkHeight = 2.0f;
     p.seed = 5;
     const auto points = growth::Envelope::sphere({0, 6, 0}, 4.5f).sample(600, 5);
-    const growth::ColonizationResult r = growth::colonize(points, p);
+    growth::ColonizationResult r = growth::colonize(points, p);
+    // The node ends with the final radius pass (its defaults: taper 0.1, junction_slope 0.08).
+    skel::shapeRadii(r.skeleton);
     EXPECT_EQ(out.skeleton->position, r.skeleton.position);
     EXPECT_EQ(out.skeleton->radius, r.skeleton.radius);
+    EXPECT_EQ(out.skeleton->order, r.skeleton.order);
     EXPECT_EQ(out.stats.at("segments"), double(r.skeleton.segmentCount()));
     EXPECT_EQ(out.stats.at("attractors"), 600.0);
     EXPECT_EQ(out.stats.at("attractors_killed") + out.stats.at("attractors_left"), 600.0);

@@ -467,3 +467,97 @@ TEST(TubeMesh, ThinAxesGetTwigResolution) {
     settings.twigResolution = 2;
     EXPECT_THROW(mesh::buildTubeMesh(s, settings), InvalidInput);
 }
+
+// Issue #44: a root's tube flares at the ground and goes on a little below it; the flare's
+// rings belong to real nodes; without the settings the mesh is the old one.
+TEST(TubeMesh, RootFlareWidensTheBaseAndSinksIntoTheGround) {
+    lsys::TurtleSettings t;
+    t.width = 0.2; // radius 0.1
+    t.step = 2.0;
+    const skel::Skeleton s = lsys::interpret(makeWord("FF"), t);
+    mesh::TubeSettings plain;
+    const mesh::Mesh before = mesh::buildTubeMesh(s, plain);
+    mesh::TubeSettings flared = plain;
+    flared.rootFlare = 1.4;
+    flared.flareHeight = 0.6;
+    flared.groundDepth = 0.1;
+    flared.nodeIds = true;
+    const mesh::Mesh m = mesh::buildTubeMesh(s, flared);
+    checkWellFormed(m);
+    EXPECT_GT(m.positions.size(), before.positions.size());
+    // Widest ring radius at a height: the ring vertices lie there (within a millimetre).
+    auto radiusAt = [&](float y) {
+        float r = 0.0f;
+        for (const glm::vec3& p : m.positions)
+            if (std::abs(p.y - y) < 1e-3f) r = std::max(r, std::hypot(p.x, p.z));
+        return r;
+    };
+    float lowest = 0.0f;
+    for (const glm::vec3& p : m.positions)
+        lowest = std::min(lowest, p.y);
+    EXPECT_NEAR(lowest, -0.1f, 1e-4f);
+    EXPECT_NEAR(radiusAt(0.0f), 0.14f, 1e-4f);
+    EXPECT_NEAR(radiusAt(-0.1f), 0.14f, 1e-4f);
+    EXPECT_NEAR(radiusAt(2.0f), 0.1f, 1e-4f); // above the flare: the skeleton's radius
+    // Smoothly narrower upwards through the flare.
+    float previous = radiusAt(0.0f);
+    for (float y : {0.036f, 0.084f, 0.15f, 0.24f, 0.36f, 0.48f}) {
+        const float r = radiusAt(y);
+        EXPECT_GT(r, 0.1f) << y;
+        EXPECT_LT(r, previous) << y;
+        previous = r;
+    }
+    for (std::uint32_t id : m.node)
+        EXPECT_LT(id, s.size());
+    // The flare rises at most kMaxFlareRadii root radii, whatever flareHeight says.
+    flared.flareHeight = 100.0;
+    const mesh::Mesh tall = mesh::buildTubeMesh(s, flared);
+    float highestWide = 0.0f;
+    for (const glm::vec3& p : tall.positions)
+        if (std::hypot(p.x, p.z) > 0.1001f) highestWide = std::max(highestWide, p.y);
+    EXPECT_LT(highestWide, static_cast<float>(mesh::kMaxFlareRadii) * 0.1f + 1e-3f);
+    flared.flareHeight = 0.6;
+    flared.rootFlare = 4.5;
+    EXPECT_THROW(mesh::buildTubeMesh(s, flared), InvalidInput);
+}
+
+// Buttresses (issue #44, oak and beech): a lobed section at the ground, round again above the
+// flare, about the round section's mean radius; a well-formed mesh with outward normals.
+TEST(TubeMesh, ButtressLobesFadeOverTheFlare) {
+    lsys::TurtleSettings t;
+    t.width = 0.2; // radius 0.1
+    t.step = 2.0;
+    const skel::Skeleton s = lsys::interpret(makeWord("FF"), t);
+    mesh::TubeSettings settings;
+    settings.rootFlare = 1.4;
+    settings.flareHeight = 0.6;
+    settings.groundDepth = 0.1;
+    const mesh::Mesh round = mesh::buildTubeMesh(s, settings);
+    settings.buttressLobes = 5;
+    settings.buttressDepth = 0.4;
+    const mesh::Mesh lobed = mesh::buildTubeMesh(s, settings);
+    checkWellFormed(lobed);
+    EXPECT_GT(lobed.positions.size(), round.positions.size()); // 15 sides instead of 8
+    auto ringAt = [&](float y) {
+        std::vector<float> r;
+        for (const glm::vec3& p : lobed.positions)
+            if (std::abs(p.y - y) < 1e-4f && std::hypot(p.x, p.z) > 1e-3f)
+                r.push_back(std::hypot(p.x, p.z));
+        return r;
+    };
+    const std::vector<float> ground = ringAt(0.0f);
+    ASSERT_FALSE(ground.empty());
+    const auto [lo, hi] = std::minmax_element(ground.begin(), ground.end());
+    EXPECT_GT(*hi / *lo, 1.3f);
+    double mean = 0.0;
+    for (float r : ground)
+        mean += r;
+    mean /= static_cast<double>(ground.size());
+    EXPECT_NEAR(mean, 0.14, 0.14 * 0.1);
+    const std::vector<float> above = ringAt(2.0f);
+    ASSERT_FALSE(above.empty());
+    for (float r : above)
+        EXPECT_NEAR(r, 0.1f, 1e-4f);
+    settings.buttressLobes = 13;
+    EXPECT_THROW(mesh::buildTubeMesh(s, settings), InvalidInput);
+}
