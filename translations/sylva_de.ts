@@ -266,6 +266,10 @@
         <source>%1: the project has no trees and no obstacles</source>
         <translation>%1: Das Projekt hat weder Bäume noch Hindernisse</translation>
     </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
 </context>
 <context>
     <name>TextureImage</name>
@@ -419,6 +423,13 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::DocumentGenerator</name>
+    <message>
+        <source>the generation failed</source>
+        <translation>die Erzeugung ist fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::FileDialogs</name>
     <message>
         <source>Open species or project</source>
@@ -441,16 +452,16 @@
         <translation>Exportieren</translation>
     </message>
     <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx)</translation>
-    </message>
-    <message>
         <source>Save screenshot</source>
         <translation>Bildschirmfoto speichern</translation>
     </message>
     <message>
         <source>Images (*.png *.jpg *.bmp)</source>
         <translation>Bilder (*.png *.jpg *.bmp)</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx);;USD text (*.usda)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx);;USD-Text (*.usda)</translation>
     </message>
 </context>
 <context>
@@ -575,10 +586,6 @@
     <message>
         <source>Exporting the LOD chain of %1…</source>
         <translation>LOD-Kette von %1 wird exportiert…</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Abbrechen</translation>
     </message>
     <message>
         <source>Export LOD chain</source>
@@ -906,6 +913,26 @@
     <message>
         <source>Trees sway in the project&apos;s wind (Properties, with nothing selected): the wind model the exports carry</source>
         <translation>Bäume wiegen sich im Wind des Projekts (Eigenschaften, wenn nichts ausgewählt ist): das Windmodell, das auch die Exporte tragen</translation>
+    </message>
+    <message>
+        <source>Species preview (%1): %2</source>
+        <translation>Artvorschau (%1): %2</translation>
+    </message>
+    <message>
+        <source>Generation failed: %1</source>
+        <translation>Erzeugung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>Exporting to %1…</source>
+        <translation>Exportiere nach %1…</translation>
+    </message>
+    <message>
+        <source>Export cancelled: nothing was written.</source>
+        <translation>Export abgebrochen: nichts wurde geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -1424,10 +1451,6 @@
         <translation>Art</translation>
     </message>
     <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; edit its parameters from the Python console (doc.set_param).</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Von Hand platzierte Bäume: %3. Benennen Sie die Art in der Gliederung um; bearbeiten Sie ihre Parameter in der Python-Konsole (doc.set_param).</translation>
-    </message>
-    <message>
         <source>Stored in the project.</source>
         <translation>Im Projekt gespeichert.</translation>
     </message>
@@ -1507,12 +1530,20 @@
         <source>How often the trunks sway; limbs, branches and leaves go faster</source>
         <translation>Wie oft die Stämme schwingen; Äste, Zweige und Blätter schneller</translation>
     </message>
+    <message>
+        <source>%1 (%2):</source>
+        <translation>%1 (%2):</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; tune its graph and parameters in the Species Editor (Scene ▸ Edit species…, Ctrl+Shift+E).</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 von Hand gesetzte(r) Baum/Bäume. Im Outliner umbenennen; Graph und Parameter im Arteditor anpassen (Szene ▸ Art bearbeiten…, Strg+Umschalt+E).</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::PythonConsole</name>
     <message>
-        <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
-        <translation>Python %1: sylva und doc = sylva.document() sind bereit. Probieren Sie doc.trees() oder doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
+        <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees(), doc.species() or doc.add_tree(doc.species()[0], (0, 0, 0)).</source>
+        <translation>Python %1: sylva und doc = sylva.document() sind bereit. Probieren Sie doc.trees(), doc.species() oder doc.add_tree(doc.species()[0], (0, 0, 0)).</translation>
     </message>
 </context>
 <context>
@@ -1575,6 +1606,18 @@
     <message>
         <source>A branch of the clicked tree, grown by node %1: the rule on line %2 (the preview shows that tree, before adaptation)</source>
         <translation>Ein Ast des angeklickten Baums, erzeugt vom Knoten %1: die Regel in Zeile %2 (die Vorschau zeigt diesen Baum vor der Anpassung)</translation>
+    </message>
+    <message>
+        <source>%1, node &apos;%2&apos;</source>
+        <translation>%1, Knoten &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>Preview failed (%1) — showing the last good tree: %2</source>
+        <translation>Vorschau fehlgeschlagen (%1) — der letzte gute Baum wird gezeigt: %2</translation>
+    </message>
+    <message>
+        <source>Preview failed (%1): %2</source>
+        <translation>Vorschau fehlgeschlagen (%1): %2</translation>
     </message>
 </context>
 <context>
@@ -1723,6 +1766,10 @@
     <message>
         <source>Scale trees</source>
         <translation>Bäume skalieren</translation>
+    </message>
+    <message>
+        <source>No ground under the cursor: nothing planted; click where the ground is drawn</source>
+        <translation>Kein Boden unter dem Mauszeiger: nichts gepflanzt; klicken Sie dorthin, wo Boden zu sehen ist</translation>
     </message>
 </context>
 <context>

@@ -266,6 +266,10 @@
         <source>%1: the project has no trees and no obstacles</source>
         <translation>%1&#xa0;: le projet ne contient ni arbres ni obstacles</translation>
     </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
 </context>
 <context>
     <name>TextureImage</name>
@@ -419,6 +423,13 @@
     </message>
 </context>
 <context>
+    <name>sylva::ui::DocumentGenerator</name>
+    <message>
+        <source>the generation failed</source>
+        <translation>la génération a échoué</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::FileDialogs</name>
     <message>
         <source>Open species or project</source>
@@ -441,16 +452,16 @@
         <translation>Exporter</translation>
     </message>
     <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx)</translation>
-    </message>
-    <message>
         <source>Save screenshot</source>
         <translation>Enregistrer une capture d&apos;écran</translation>
     </message>
     <message>
         <source>Images (*.png *.jpg *.bmp)</source>
         <translation>Images (*.png *.jpg *.bmp)</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx);;USD text (*.usda)</source>
+        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx);;USD texte (*.usda)</translation>
     </message>
 </context>
 <context>
@@ -575,10 +586,6 @@
     <message>
         <source>Exporting the LOD chain of %1…</source>
         <translation>Export de la chaîne de LOD de %1…</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Annuler</translation>
     </message>
     <message>
         <source>Export LOD chain</source>
@@ -906,6 +913,26 @@
     <message>
         <source>Trees sway in the project&apos;s wind (Properties, with nothing selected): the wind model the exports carry</source>
         <translation>Les arbres se balancent dans le vent du projet (Propriétés, sans sélection) : le modèle de vent que portent les exports</translation>
+    </message>
+    <message>
+        <source>Species preview (%1): %2</source>
+        <translation>Aperçu de l’espèce (%1) : %2</translation>
+    </message>
+    <message>
+        <source>Generation failed: %1</source>
+        <translation>Échec de la génération : %1</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exporter</translation>
+    </message>
+    <message>
+        <source>Exporting to %1…</source>
+        <translation>Export vers %1…</translation>
+    </message>
+    <message>
+        <source>Export cancelled: nothing was written.</source>
+        <translation>Export annulé : rien n’a été écrit.</translation>
     </message>
 </context>
 <context>
@@ -1424,10 +1451,6 @@
         <translation>Espèce</translation>
     </message>
     <message>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; edit its parameters from the Python console (doc.set_param).</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;Arbres placés à la main&#xa0;: %3. Renommez l&apos;espèce dans le synoptique&#xa0;; modifiez ses paramètres depuis la console Python (doc.set_param).</translation>
-    </message>
-    <message>
         <source>Stored in the project.</source>
         <translation>Stockée dans le projet.</translation>
     </message>
@@ -1507,12 +1530,20 @@
         <source>How often the trunks sway; limbs, branches and leaves go faster</source>
         <translation>La fréquence d&apos;oscillation des troncs ; charpentières, branches et feuilles vont plus vite</translation>
     </message>
+    <message>
+        <source>%1 (%2):</source>
+        <translation>%1 (%2) :</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; tune its graph and parameters in the Species Editor (Scene ▸ Edit species…, Ctrl+Shift+E).</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 arbre(s) placé(s) à la main. Renommez-la dans l’outliner ; réglez son graphe et ses paramètres dans l’éditeur d’espèces (Scène ▸ Modifier l’espèce…, Ctrl+Maj+E).</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::PythonConsole</name>
     <message>
-        <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees() or doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</source>
-        <translation>Python %1&#xa0;: sylva et doc = sylva.document() sont prêts. Essayez doc.trees() ou doc.add_tree(&quot;alder&quot;, (0, 0, 0)).</translation>
+        <source>Python %1: sylva and doc = sylva.document() are ready. Try doc.trees(), doc.species() or doc.add_tree(doc.species()[0], (0, 0, 0)).</source>
+        <translation>Python %1 : sylva et doc = sylva.document() sont prêts. Essayez doc.trees(), doc.species() ou doc.add_tree(doc.species()[0], (0, 0, 0)).</translation>
     </message>
 </context>
 <context>
@@ -1575,6 +1606,18 @@
     <message>
         <source>A branch of the clicked tree, grown by node %1: the rule on line %2 (the preview shows that tree, before adaptation)</source>
         <translation>Une branche de l’arbre cliqué, produite par le nœud %1 : la règle de la ligne %2 (l’aperçu montre cet arbre avant adaptation)</translation>
+    </message>
+    <message>
+        <source>%1, node &apos;%2&apos;</source>
+        <translation>%1, nœud &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>Preview failed (%1) — showing the last good tree: %2</source>
+        <translation>Échec de l’aperçu (%1) — le dernier arbre valide reste affiché : %2</translation>
+    </message>
+    <message>
+        <source>Preview failed (%1): %2</source>
+        <translation>Échec de l’aperçu (%1) : %2</translation>
     </message>
 </context>
 <context>
@@ -1723,6 +1766,10 @@
     <message>
         <source>Scale trees</source>
         <translation>Mettre les arbres à l’échelle</translation>
+    </message>
+    <message>
+        <source>No ground under the cursor: nothing planted; click where the ground is drawn</source>
+        <translation>Pas de sol sous le curseur : rien n’a été planté ; cliquez là où le sol est dessiné</translation>
     </message>
 </context>
 <context>

@@ -181,7 +181,11 @@ private Q_SLOTS:
         QVERIFY(action->exportTo(dir));
         const QJsonObject desc = readJson(QDir(dir).filePath(stem + QStringLiteral("_lods.json")));
         const QJsonArray levels = desc.value(QStringLiteral("levels")).toArray();
-        QCOMPARE(levels.size(), 4);
+        // Four budgets; the adapted bush (about 1,600 triangles, its flared base included since
+        // #44) may be too small on screen for the last before it reaches it: then it is listed
+        // as dropped, as saysWhichBudgetsWereLeftOut checks.
+        QCOMPARE(levels.size() + desc.value(QStringLiteral("dropped_levels")).toArray().size(), 4);
+        QVERIFY(levels.size() >= 3);
         qint64 previous = 0;
         for (int i = 0; i < levels.size(); ++i) {
             const qint64 t = levels[i].toObject().value(QStringLiteral("triangles")).toInteger();
