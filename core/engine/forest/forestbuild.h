@@ -160,7 +160,9 @@ struct ForestStats {
     std::size_t adaptedVariants = 0;
     /// Of the instanced trees, those ForestTree::instanceChecked.
     std::size_t instancedByCheck = 0;
-    std::size_t variants = 0; ///< variants handed to onVariants (each counted once)
+    /// Variants grown and handed to onVariants (each counted once): K for each species with a
+    /// domain tree in the tile, none for a species whose trees are all hand-placed.
+    std::size_t variants = 0;
     std::vector<placement::Shortfall> shortfalls;
     forest::SceneMetrics metrics;
     std::map<std::string, double> cpuMs;  ///< generate, adapt, mesh
