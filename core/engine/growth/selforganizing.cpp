@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include <glm/gtx/quaternion.hpp>
+#include <omp.h>
 
 #include "engine/growth/optimaldirection.h"
 #include "engine/growth/pipemodel.h"
@@ -327,53 +328,80 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
     // Space colonization: each marker belongs to the closest bud that perceives it.
     struct Bud {
         glm::vec3 pos, dir;
-        float r2, cosHalf;
+        float r, r2, cosHalf;
         std::uint32_t key; ///< 2·metamer + (0 terminal | 1 axillary)
     };
     std::vector<Bud> buds;
-    std::vector<glm::vec3> budPos;
-    float rMax = 0.0f;
     for (std::size_t i = 0; i < n; ++i) {
         const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
         const float r = static_cast<float>(sp.perceptionRadius * sp.internodeLength);
         const float c = std::cos(0.5f * radians(sp.perceptionAngle));
-        rMax = std::max(rMax, r);
         if (terminalAlive(i))
-            buds.push_back({mM.end[i], skel::headingOf(mM.frame[i]), r * r, c,
+            buds.push_back({mM.end[i], skel::headingOf(mM.frame[i]), r, r * r, c,
                             static_cast<std::uint32_t>(2 * i)});
         if (axillaryAlive(i))
             buds.push_back({mM.end[i],
-                            skel::headingOf(lateralFrame(mM.frame[i], radians(sp.branchAngle))),
+                            skel::headingOf(lateralFrame(mM.frame[i], radians(sp.branchAngle))), r,
                             r * r, c, static_cast<std::uint32_t>(2 * i + 1)});
     }
     mOptimalTerminal.assign(n, glm::vec3(0.0f));
     mOptimalAxillary.assign(n, glm::vec3(0.0f));
     if (buds.empty()) return;
-    budPos.reserve(buds.size());
-    for (const Bud& b : buds)
-        budPos.push_back(b.pos);
-    const PointGrid grid(budPos, rMax);
+    // Each bud asks the marker grid for the markers it perceives, and every marker keeps the
+    // closest (ties: the lower bud index): the lexicographic minimum of (distance², bud), the
+    // same owner whatever the order the pairs come in. Buds are 5-20 times fewer than the alive
+    // markers, so this asks far fewer queries than a query per marker over a grid of the buds
+    // did (that was ~75 % of a self-organizing broadleaf's time). On several threads each
+    // takes a share of the buds into its own minimum, merged after: the same owners.
     const std::vector<std::uint32_t> alive = mMarkers->aliveIndices();
     const std::vector<glm::vec3>& mp = mMarkers->positions();
-    std::vector<std::int32_t> owner(alive.size(), -1);
-    const auto count = static_cast<std::int64_t>(alive.size());
-#pragma omp parallel for schedule(dynamic, 256) if (count > 1024)
-    for (std::int64_t k = 0; k < count; ++k) {
-        const glm::vec3 m = mp[alive[static_cast<std::size_t>(k)]];
-        std::int32_t best = -1;
-        float bestD2 = std::numeric_limits<float>::max();
-        grid.forEachInRadius(m, rMax, [&](std::uint32_t b, float d2) {
-            const Bud& bud = buds[b];
-            if (d2 >= bud.r2 || d2 > bestD2) return;
-            const glm::vec3 d = m - bud.pos;
-            if (glm::dot(d, bud.dir) < bud.cosHalf * std::sqrt(d2)) return;
-            if (d2 < bestD2 || static_cast<std::int32_t>(b) < best) {
-                bestD2 = d2;
-                best = static_cast<std::int32_t>(b);
-            }
-        });
-        owner[static_cast<std::size_t>(k)] = best;
+    std::vector<glm::vec3> alivePos(alive.size());
+    float rMax = 0.0f;
+    for (std::size_t k = 0; k < alive.size(); ++k)
+        alivePos[k] = mp[alive[k]];
+    for (const Bud& b : buds)
+        rMax = std::max(rMax, b.r);
+    if (alive.empty()) return;
+    const PointGrid grid(alivePos, rMax);
+    const auto budCount = static_cast<std::int64_t>(buds.size());
+    const int threads = budCount > 512 ? std::max(1, omp_get_max_threads()) : 1;
+    struct Best {
+        std::vector<float> d2;
+        std::vector<std::int32_t> bud;
+    };
+    std::vector<Best> best(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads)
+    {
+        Best& mine = best[static_cast<std::size_t>(omp_get_thread_num())];
+        mine.d2.assign(alive.size(), std::numeric_limits<float>::max());
+        mine.bud.assign(alive.size(), -1);
+#pragma omp for schedule(static)
+        for (std::int64_t k = 0; k < budCount; ++k) {
+            const Bud& bud = buds[static_cast<std::size_t>(k)];
+            const auto b = static_cast<std::int32_t>(k);
+            grid.forEachInRadius(bud.pos, bud.r, [&](std::uint32_t m, float d2) {
+                float& bestD2 = mine.d2[m];
+                if (d2 > bestD2) return;
+                const glm::vec3 d = alivePos[m] - bud.pos;
+                if (glm::dot(d, bud.dir) < bud.cosHalf * std::sqrt(d2)) return;
+                if (d2 < bestD2 || b < mine.bud[m]) {
+                    bestD2 = d2;
+                    mine.bud[m] = b;
+                }
+            });
+        }
     }
+    std::vector<std::int32_t> owner = std::move(best[0].bud);
+    for (std::size_t t = 1; t < best.size(); ++t)
+        for (std::size_t k = 0; k < alive.size(); ++k) {
+            const std::int32_t tb = best[t].bud[k];
+            if (tb < 0) continue;
+            const float d2 = best[t].d2[k];
+            if (owner[k] < 0 || d2 < best[0].d2[k] || (d2 == best[0].d2[k] && tb < owner[k])) {
+                best[0].d2[k] = d2;
+                owner[k] = tb;
+            }
+        }
     std::vector<glm::vec3> sum(buds.size(), glm::vec3(0.0f));
     std::vector<std::uint8_t> seen(buds.size(), 0);
     for (std::size_t k = 0; k < alive.size(); ++k) {
