@@ -22,6 +22,8 @@ namespace sylva::growth {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
+/// Metamers::deadBuds bits of a live bud that perceives no marker and never will.
+constexpr std::uint8_t kBarrenTerminal = 4u, kBarrenAxillary = 8u;
 float radians(double degrees) {
     return static_cast<float>(degrees) * kPi / 180.0f;
 }
@@ -336,10 +338,13 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
         const SelfOrganizingParams& sp = mTrees[mM.tree[i]].params;
         const float r = static_cast<float>(sp.perceptionRadius * sp.internodeLength);
         const float c = std::cos(0.5f * radians(sp.perceptionAngle));
-        if (terminalAlive(i))
+        // A barren bud (kBarrenTerminal, kBarrenAxillary) perceived no marker once: markers
+        // are only ever removed and a bud never moves, so it never will; it is not asked again
+        // (most of a grown crown's buds, inside it).
+        if (terminalAlive(i) && !(mM.deadBuds[i] & kBarrenTerminal))
             buds.push_back({mM.end[i], skel::headingOf(mM.frame[i]), r, r * r, c,
                             static_cast<std::uint32_t>(2 * i)});
-        if (axillaryAlive(i))
+        if (axillaryAlive(i) && !(mM.deadBuds[i] & kBarrenAxillary))
             buds.push_back({mM.end[i],
                             skel::headingOf(lateralFrame(mM.frame[i], radians(sp.branchAngle))), r,
                             r * r, c, static_cast<std::uint32_t>(2 * i + 1)});
@@ -355,14 +360,19 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
     // takes a share of the buds into its own minimum, merged after: the same owners.
     const std::vector<std::uint32_t> alive = mMarkers->aliveIndices();
     const std::vector<glm::vec3>& mp = mMarkers->positions();
-    std::vector<glm::vec3> alivePos(alive.size());
-    float rMax = 0.0f;
-    for (std::size_t k = 0; k < alive.size(); ++k)
-        alivePos[k] = mp[alive[k]];
-    for (const Bud& b : buds)
-        rMax = std::max(rMax, b.r);
     if (alive.empty()) return;
-    const PointGrid grid(alivePos, rMax);
+    // Built once over the alive markers, then thinned each cycle: markers are only ever
+    // removed (rebuilding it every cycle was a quarter of the tree's time).
+    const MarkerSet& markers = *mMarkers;
+    if (!mAliveGrid) {
+        float rMax = 0.0f;
+        for (const StandTree& t : mTrees)
+            rMax = std::max(
+                rMax, static_cast<float>(t.params.perceptionRadius * t.params.internodeLength));
+        mAliveGrid.emplace(mp, rMax); // the dead (near obstacles) are dropped just below
+    }
+    mAliveGrid->keepOnly([&](std::uint32_t m) { return markers.alive(m); });
+    const PointGrid& grid = *mAliveGrid;
     const auto budCount = static_cast<std::int64_t>(buds.size());
     const int threads = budCount > 512 ? std::max(1, omp_get_max_threads()) : 1;
     struct Best {
@@ -373,35 +383,58 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
 #pragma omp parallel num_threads(threads)
     {
         Best& mine = best[static_cast<std::size_t>(omp_get_thread_num())];
-        mine.d2.assign(alive.size(), std::numeric_limits<float>::max());
-        mine.bud.assign(alive.size(), -1);
+        mine.d2.assign(mp.size(), std::numeric_limits<float>::max());
+        mine.bud.assign(mp.size(), -1);
 #pragma omp for schedule(static)
         for (std::int64_t k = 0; k < budCount; ++k) {
             const Bud& bud = buds[static_cast<std::size_t>(k)];
             const auto b = static_cast<std::int32_t>(k);
-            grid.forEachInRadius(bud.pos, bud.r, [&](std::uint32_t m, float d2) {
+            bool perceives = false;
+            // The bud perceives a spherical sector (radius r, half-angle θ): the sphere through
+            // its apex and rim, centre r / (2 cos θ) along the axis, holds it and is smaller than
+            // the ball for θ < 60° (0.71 r at the usual 45°: a third of the ball's markers to
+            // test). Made 1 % larger against rounding; each marker is then tested as before, its
+            // distance to the bud included, so the same markers pass.
+            glm::vec3 centre = bud.pos;
+            float reach = bud.r;
+            if (bud.cosHalf > 0.5f) {
+                const float half = bud.r / (2.0f * bud.cosHalf);
+                centre = bud.pos + bud.dir * half;
+                reach = 1.01f * half;
+            }
+            grid.forEachInRadius(centre, reach, [&](std::uint32_t m, float) {
+                const float d2 = distance2(mp[m], bud.pos);
+                if (!(d2 < bud.r2)) return;
                 float& bestD2 = mine.d2[m];
-                if (d2 > bestD2) return;
-                const glm::vec3 d = alivePos[m] - bud.pos;
+                if (perceives && d2 > bestD2) return;
+                const glm::vec3 d = mp[m] - bud.pos;
                 if (glm::dot(d, bud.dir) < bud.cosHalf * std::sqrt(d2)) return;
+                perceives = true;
+                if (d2 > bestD2) return;
                 if (d2 < bestD2 || b < mine.bud[m]) {
                     bestD2 = d2;
                     mine.bud[m] = b;
                 }
             });
+            if (!perceives)
+                mM.deadBuds[bud.key >> 1] |= (bud.key & 1u) ? kBarrenAxillary : kBarrenTerminal;
         }
     }
-    std::vector<std::int32_t> owner = std::move(best[0].bud);
-    for (std::size_t t = 1; t < best.size(); ++t)
-        for (std::size_t k = 0; k < alive.size(); ++k) {
-            const std::int32_t tb = best[t].bud[k];
+    std::vector<std::int32_t> owner(alive.size());
+    for (std::size_t k = 0; k < alive.size(); ++k) {
+        const std::uint32_t m = alive[k];
+        std::int32_t b = best[0].bud[m];
+        float d2 = best[0].d2[m];
+        for (std::size_t t = 1; t < best.size(); ++t) {
+            const std::int32_t tb = best[t].bud[m];
             if (tb < 0) continue;
-            const float d2 = best[t].d2[k];
-            if (owner[k] < 0 || d2 < best[0].d2[k] || (d2 == best[0].d2[k] && tb < owner[k])) {
-                best[0].d2[k] = d2;
-                owner[k] = tb;
+            if (b < 0 || best[t].d2[m] < d2 || (best[t].d2[m] == d2 && tb < b)) {
+                d2 = best[t].d2[m];
+                b = tb;
             }
         }
+        owner[k] = b;
+    }
     std::vector<glm::vec3> sum(buds.size(), glm::vec3(0.0f));
     std::vector<std::uint8_t> seen(buds.size(), 0);
     for (std::size_t k = 0; k < alive.size(); ++k) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -61,6 +62,33 @@ public:
         const float dz =
             p.z < cell.lo.z ? cell.lo.z - p.z : (p.z > cell.hi.z ? p.z - cell.hi.z : 0.0f);
         return (dx * dx + dy * dy) + dz * dz;
+    }
+
+    /// Drops every point whose index fails \p keep, keeping the cells (their bounds made tight
+    /// again; an emptied cell is skipped by every query). Linear in the points held, without
+    /// the construction's sorting: for a set that only shrinks (the self-organizing model's
+    /// alive markers, cycle after cycle). The order of the points kept does not change.
+    template <class Keep> void keepOnly(Keep&& keep) {
+        std::uint32_t out = 0;
+        for (Cell& cell : mCells) {
+            const std::uint32_t begin = out;
+            glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-lo);
+            for (std::uint32_t k = cell.begin; k < cell.end; ++k) {
+                if (!keep(mOrder[k])) continue;
+                mOrder[out] = mOrder[k];
+                mSorted[out] = mSorted[k];
+                lo = glm::min(lo, mSorted[out]);
+                hi = glm::max(hi, mSorted[out]);
+                ++out;
+            }
+            cell.begin = begin;
+            cell.end = out;
+            // An empty cell: lo = +inf, so boxDistance2 is +inf and no query enters it.
+            cell.lo = begin == out ? glm::vec3(std::numeric_limits<float>::infinity()) : lo;
+            cell.hi = begin == out ? glm::vec3(std::numeric_limits<float>::infinity()) : hi;
+        }
+        mOrder.resize(out);
+        mSorted.resize(out);
     }
 
     /// Calls f(pointIndex, distance2) for every point with distance2(point, center) < radius²,
