@@ -202,7 +202,9 @@ SelfOrganizingSimulation::SelfOrganizingSimulation(std::vector<StandTree> trees,
             }
             cell = std::min(cell, static_cast<float>(sp.occupancyRadius * sp.internodeLength));
         }
-        mMarkers.emplace(std::move(markers), cell);
+        // Cells twice the occupancy radius: its queries (one a new metamer) then visit about
+        // 2 x 2 x 2 cells instead of 3 x 3 x 3 (~7 % of a tree's time less).
+        mMarkers.emplace(std::move(markers), 2.0f * cell);
         const float rho = static_cast<float>(p0.occupancyRadius * p0.internodeLength);
         for (std::size_t i = 0; i + 2 < mObstacles.size(); i += 3)
             mMarkers->removeNearTriangle(mObstacles[i], mObstacles[i + 1], mObstacles[i + 2], rho);
@@ -363,6 +365,7 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
     if (alive.empty()) return;
     // Built once over the alive markers, then thinned each cycle: markers are only ever
     // removed (rebuilding it every cycle was a quarter of the tree's time).
+    mMarkers->compact();
     const MarkerSet& markers = *mMarkers;
     if (!mAliveGrid) {
         float rMax = 0.0f;
