@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <limits>
 
 #include "engine/mesh/leafcards.h"
 #include "engine/util/error.h"
@@ -17,34 +17,74 @@ struct CellKey {
     std::int64_t x, y, z;
     bool operator==(const CellKey&) const = default;
 };
-struct CellHash {
-    std::size_t operator()(const CellKey& k) const {
-        std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
-        h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
-        h ^= static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
-        return static_cast<std::size_t>(h);
-    }
-};
-
-std::vector<std::vector<std::uint32_t>> groupByCell(const std::vector<skel::Leaf>& leaves,
-                                                    double cell) {
-    std::unordered_map<CellKey, std::uint32_t, CellHash> index;
-    std::vector<std::vector<std::uint32_t>> groups;
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        // The leaf's middle, not its stem: a leaf belongs where most of it is.
-        const skel::Leaf& leaf = leaves[i];
-        const glm::dvec3 mid =
-            glm::dvec3(leaf.position) +
-            0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) * static_cast<double>(leaf.size);
-        const CellKey key{static_cast<std::int64_t>(std::floor(mid.x / cell)),
-                          static_cast<std::int64_t>(std::floor(mid.y / cell)),
-                          static_cast<std::int64_t>(std::floor(mid.z / cell))};
-        auto [it, fresh] = index.try_emplace(key, static_cast<std::uint32_t>(groups.size()));
-        if (fresh) groups.emplace_back();
-        groups[it->second].push_back(static_cast<std::uint32_t>(i));
-    }
-    return groups;
+std::uint64_t cellHash(const CellKey& k) {
+    std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
+    h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
+    h ^= static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
+    return h;
 }
+
+// The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every cell
+// size tried, so made once a leaf (it was made again at each of groupLeaves' steps).
+std::vector<glm::dvec3> leafMiddles(const std::vector<skel::Leaf>& leaves) {
+    std::vector<glm::dvec3> mids(leaves.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const skel::Leaf& leaf = leaves[i];
+        mids[i] = glm::dvec3(leaf.position) + 0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) *
+                                                  static_cast<double>(leaf.size);
+    }
+    return mids;
+}
+
+CellKey cellOf(const glm::dvec3& mid, double cell) {
+    return {static_cast<std::int64_t>(std::floor(mid.x / cell)),
+            static_cast<std::int64_t>(std::floor(mid.y / cell)),
+            static_cast<std::int64_t>(std::floor(mid.z / cell))};
+}
+
+/// The leaves' cells at one cell size: an open-addressing table of the distinct cells, each
+/// with its group (the order the cells are first met), reused from size to size.
+class CellTable {
+public:
+    explicit CellTable(std::size_t leaves) {
+        std::size_t n = 16;
+        while (n < 2 * leaves)
+            n *= 2;
+        mSlots.resize(n);
+        mMask = n - 1;
+    }
+    /// The number of distinct cells of \p mids at \p cell, or limit + 1 as soon as there are
+    /// more than \p limit; with \p groups, also each cell's leaves (in leaf order).
+    std::size_t fill(const std::vector<glm::dvec3>& mids, double cell, std::size_t limit,
+                     std::vector<std::vector<std::uint32_t>>* groups) {
+        ++mStamp;
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < mids.size(); ++i) {
+            const CellKey key = cellOf(mids[i], cell);
+            std::size_t slot = cellHash(key) & mMask;
+            while (mSlots[slot].stamp == mStamp && !(mSlots[slot].key == key))
+                slot = (slot + 1) & mMask;
+            Slot& s = mSlots[slot];
+            if (s.stamp != mStamp) {
+                s = {key, mStamp, static_cast<std::uint32_t>(count++)};
+                if (count > limit) return limit + 1;
+                if (groups) groups->emplace_back();
+            }
+            if (groups) (*groups)[s.group].push_back(static_cast<std::uint32_t>(i));
+        }
+        return count;
+    }
+
+private:
+    struct Slot {
+        CellKey key{0, 0, 0};
+        std::uint32_t stamp = 0;
+        std::uint32_t group = 0;
+    };
+    std::vector<Slot> mSlots;
+    std::size_t mMask = 0;
+    std::uint32_t mStamp = 0;
+};
 
 // The corners appendLeafCards gives a leaf.
 void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
@@ -182,14 +222,20 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
     for (const skel::Leaf& leaf : leaves)
         mean += leaf.size * sizeScale;
     mean = std::max(mean / static_cast<double>(leaves.size()), 1e-4);
+    // The first cell size of 1.2 x the mean leaf, growing by 8 %, at which there are no more
+    // than leaves / leavesPerCard groups (40 sizes at most, the last taken whatever it gives).
+    // Each size only counts its cells, and stops counting past the limit; the groups are made
+    // once, for the size chosen.
+    const std::vector<glm::dvec3> mids = leafMiddles(leaves);
+    CellTable table(leaves.size());
+    const auto limit = static_cast<std::size_t>(
+        std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));
     double cell = 1.2 * mean;
-    for (int step = 0; step < 40; ++step) {
-        groups = groupByCell(leaves, cell);
-        if (static_cast<double>(leaves.size()) >=
-            static_cast<double>(leavesPerCard) * static_cast<double>(groups.size()))
-            break;
+    for (int step = 0; step < 39; ++step) {
+        if (table.fill(mids, cell, limit, nullptr) <= limit) break;
         cell *= 1.08;
     }
+    table.fill(mids, cell, std::numeric_limits<std::size_t>::max() - 1, &groups);
     return groups;
 }
 
