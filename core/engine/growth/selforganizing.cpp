@@ -24,6 +24,12 @@ namespace {
 constexpr float kPi = 3.14159265358979f;
 /// Metamers::deadBuds bits of a live bud that perceives no marker and never will.
 constexpr std::uint8_t kBarrenTerminal = 4u, kBarrenAxillary = 8u;
+/// Items from which a loop runs on several threads: cheap ones (a voxel look-up, a copy: ns
+/// each) and costly ones (a shoot, a bud's markers: about a microsecond each). Below, a
+/// parallel region saves less than it costs, and under libgomp's default waiting (Python, the
+/// editor) leaves the other threads spinning for milliseconds after it: a 5,000-internode
+/// broadleaf took twice its CPU time on two threads. A 100k-internode tree stays parallel.
+constexpr std::int64_t kParallelCheap = 16384, kParallelCostly = 2048;
 float radians(double degrees) {
     return static_cast<float>(degrees) * kPi / 180.0f;
 }
@@ -302,14 +308,14 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
         // each prefetched kAhead buds early so that their cache misses overlap.
         constexpr std::int64_t kNoBud = -2, kAhead = 24;
         mCells.resize(n);
-#pragma omp parallel for schedule(static) if (count > 1024)
+#pragma omp parallel for schedule(static) if (count >= kParallelCheap)
         for (std::int64_t k = 0; k < count; ++k) {
             const auto i = static_cast<std::size_t>(k);
             mCells[i] = terminalAlive(i) || axillaryAlive(i) ? grid.cellOf(grid.voxelOf(mM.end[i]))
                                                              : kNoBud;
         }
         const bool anyBlocked = grid.anyBlocked();
-#pragma omp parallel for schedule(static) if (count > 1024)
+#pragma omp parallel for schedule(static) if (count >= kParallelCheap)
         for (std::int64_t k = 0; k < count; ++k) {
             const auto i = static_cast<std::size_t>(k);
             if (k + kAhead < count) grid.prefetchCell(mCells[i + kAhead]);
@@ -377,7 +383,7 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
     mAliveGrid->keepOnly([&](std::uint32_t m) { return markers.alive(m); });
     const PointGrid& grid = *mAliveGrid;
     const auto budCount = static_cast<std::int64_t>(buds.size());
-    const int threads = budCount > 512 ? std::max(1, omp_get_max_threads()) : 1;
+    const int threads = budCount >= 2 * kParallelCostly ? std::max(1, omp_get_max_threads()) : 1;
     struct Best {
         std::vector<float> d2;
         std::vector<std::int32_t> bud;
@@ -506,7 +512,7 @@ void SelfOrganizingSimulation::shed() {
     // two groups that two threads move at once (each group in one pass, so no array is read
     // and written by both). Child links are set from the child's side (its mark says whether
     // it is its parent's lateral child), after the parent's own slot has been reset.
-#pragma omp parallel sections if (n > 8192)
+#pragma omp parallel sections if (n >= kParallelCheap)
     {
 #pragma omp section
         {
@@ -685,7 +691,7 @@ void SelfOrganizingSimulation::commitShoots() {
     }
     const auto count = static_cast<std::int64_t>(mGrowing.size());
     const auto cycle = static_cast<std::uint16_t>(mCycle);
-#pragma omp parallel for schedule(static) if (total > 1024)
+#pragma omp parallel for schedule(static) if (total >= kParallelCheap)
     for (std::int64_t k = 0; k < count; ++k) {
         const Growing& g = mGrowing[static_cast<std::size_t>(k)];
         if (g.made == 0) continue;
@@ -795,13 +801,13 @@ void SelfOrganizingSimulation::step() {
     constexpr std::int64_t kAhead = 8;
     if (mShadow) {
         mBudVoxels.resize(mGrowing.size());
-#pragma omp parallel for schedule(static) if (count > 1024)
+#pragma omp parallel for schedule(static) if (count >= kParallelCheap)
         for (std::int64_t k = 0; k < count; ++k) {
             const auto b = static_cast<std::size_t>(k);
             mBudVoxels[b] = mShadow->voxelOf(mM.end[sz(mGrowing[b].metamer)]);
         }
     }
-#pragma omp parallel for schedule(dynamic, 64) if (count > 256)
+#pragma omp parallel for schedule(dynamic, 64) if (count >= kParallelCostly)
     for (std::int64_t k = 0; k < count; ++k) {
         Growing& g = mGrowing[static_cast<std::size_t>(k)];
         const std::size_t i = sz(g.metamer);
@@ -819,7 +825,7 @@ void SelfOrganizingSimulation::step() {
         }
     }
     const Clock::time_point s1 = Clock::now();
-#pragma omp parallel for schedule(dynamic, 64) if (count > 256)
+#pragma omp parallel for schedule(dynamic, 64) if (count >= kParallelCostly)
     for (std::int64_t k = 0; k < count; ++k) {
         Growing& g = mGrowing[static_cast<std::size_t>(k)];
         g.made = makeShoot(g, mShootEnd.data() + g.slot, mShootFrame.data() + g.slot);
@@ -834,7 +840,7 @@ void SelfOrganizingSimulation::step() {
         const std::size_t removed = mSources.size();
         mSources.resize(removed + (n1 - n0));
         const auto added = static_cast<std::int64_t>(n1 - n0);
-#pragma omp parallel for schedule(static) if (added > 1024)
+#pragma omp parallel for schedule(static) if (added >= kParallelCheap)
         for (std::int64_t k = 0; k < added; ++k) {
             const std::size_t i = n0 + static_cast<std::size_t>(k);
             mSources[removed + static_cast<std::size_t>(k)] = {mShadow->voxelOf(mM.end[i]), 1,
