@@ -409,10 +409,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             try {
                 progress.checkCancelled();
                 // Levels only where instances are meshed per tree: writers that instance
-                // (meshInstances off) take the variant mesh itself, and wind exports skin the
-                // full mesh once (the levels carry no wind data).
-                const bool levelsWanted =
-                    options.useLod && options.meshInstances && !options.windData;
+                // (meshInstances off) take the variant mesh itself. With wind data the levels
+                // carry node ids as the variant's mesh does (the wind data is derived per
+                // mesh): a merged wind export draws far instances coarse too (it drew every
+                // one at full detail: bench-1000 with --wind, a 7 GB OBJ).
+                const bool levelsWanted = options.useLod && options.meshInstances;
                 std::uint64_t cacheKey = 0;
                 if (options.cache) {
                     cacheKey = mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),

@@ -64,8 +64,8 @@ struct ForestVariant {
     forest::TreeMetrics metrics; ///< at scale 1
     /// With ForestOptions::useLod: the variant's levels of detail, made once (level 0 = mesh;
     /// mesh::buildDistanceLevels); an instance seen from d metres at scale s draws
-    /// mesh::levelFor(levels, d / s). Empty without useLod, with meshInstances off (instancing
-    /// writers) or with windData.
+    /// mesh::levelFor(levels, d / s). Empty without useLod or with meshInstances off
+    /// (instancing writers); with windData each level carries node ids, as the mesh does.
     std::vector<mesh::DistanceLevel> levels;
 };
 using VariantSink = std::function<void(const std::vector<ForestVariant>&)>;

@@ -319,3 +319,36 @@ TEST(Instancing, HandPlacedTreesAloneGrowNoVariant) {
     options.buildMeshes = false;
     EXPECT_EQ(build(s, options).stats.variants, 2u);
 }
+
+// Issue #41: merged exports with wind data (OBJ, FBX, glTF without instancing, with --wind)
+// draw an instance at its variant's level for its distance too: the levels carry the node ids
+// the wind data is derived from, and far instances get at most half the triangles of the
+// nearest (every instance drew the full variant: bench-1000 with --wind wrote a 7 GB OBJ).
+TEST(Instancing, WithWindDataInstancesStillDrawTheirLevel) {
+    forest::ForestScene s = sparseForest(24, false);
+    s.camera = {0.0f, 10.0f, 80.0f};
+    forest::ForestOptions options;
+    options.useLod = true;
+    options.windData = true;
+    const Built b = build(s, options);
+    for (const forest::ForestVariant& v : b.variants) {
+        ASSERT_GE(v.levels.size(), 2u) << v.name;
+        for (const mesh::DistanceLevel& level : v.levels)
+            EXPECT_EQ(level.mesh->node.size(), level.mesh->positions.size()) << v.name;
+    }
+    std::size_t nearest = 0, farthest = 0;
+    double dNear = 1e30, dFar = 0.0;
+    for (std::size_t i = 0; i < b.trees.size(); ++i) {
+        const forest::ForestTree& t = b.trees[i];
+        if (t.variant < 0) continue;
+        EXPECT_EQ(t.mesh->node.size(), t.mesh->positions.size()) << t.name;
+        const double d = glm::length(s.camera - t.instance.position) /
+                         (double(t.instance.scale) * double(t.instance.growth));
+        if (d < dNear) dNear = d, nearest = i;
+        if (d > dFar) dFar = d, farthest = i;
+    }
+    ASSERT_GT(dFar, dNear);
+    EXPECT_LE(2 * b.trees[farthest].mesh->triangleCount(),
+              b.variants.at(std::size_t(b.trees[farthest].variant)).mesh->triangleCount());
+    EXPECT_LE(b.trees[farthest].mesh->triangleCount(), b.trees[nearest].mesh->triangleCount());
+}
