@@ -478,6 +478,11 @@ void WindExporter::writeTable() {
         out += ",branch" + std::to_string(k) + "_x,branch" + std::to_string(k) + "_y,branch" +
                std::to_string(k) + "_z,branch" + std::to_string(k) + "_stiffness";
     out += ",phase0,phase1,phase2,phase_flutter,level,flutter_weight,reserved0,reserved1\n";
+    // Streamed in blocks (the table of a 1,000-tree forest is gigabytes: held whole, it ran
+    // out of memory).
+    AtomicFile file(mPath.parent_path() / (mPath.stem().string() + ".wind.csv"),
+                    Durability::Durable);
+    constexpr std::size_t kBlock = std::size_t{4} << 20;
     char buf[48];
     for (const WindExportTree& tree : mTrees) {
         mProgress.checkCancelled();
@@ -496,9 +501,14 @@ void WindExporter::writeTable() {
             for (int c = 0; c < 32; ++c)
                 put(w[c]);
             out += '\n';
+            if (out.size() >= kBlock) {
+                file.write(out);
+                out.clear();
+            }
         }
     }
-    writeFileAtomically(mPath.parent_path() / (mPath.stem().string() + ".wind.csv"), out);
+    file.write(out);
+    file.commit();
 }
 
 } // namespace sylva::exporter

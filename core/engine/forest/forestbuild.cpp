@@ -363,9 +363,10 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     std::vector<double> cpuGenerate(static_cast<std::size_t>(threads), 0.0), cpuAdapt(cpuGenerate),
         cpuMesh(cpuGenerate);
 
-    // Variants: K per species of the tile that can be instanced (not self-organizing), grown at
-    // full growth in their own frame, never adapted, meshed at full detail (they are seen at
-    // every distance). Listed by species, then index; firstVariant[s] is species s's first.
+    // Variants: K per species with a domain tree in the tile that can be instanced (not
+    // self-organizing), grown at full growth in their own frame, never adapted, meshed at full
+    // detail (they are seen at every distance). Listed by species, then index; firstVariant[s]
+    // is species s's first.
     std::vector<ForestVariant> variants;
     std::vector<std::int32_t> firstVariant(scene.species.size(), -1);
     std::vector<std::uint32_t> variantCount(scene.species.size(), 0);
@@ -373,9 +374,12 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
     std::vector<forest::SkeletonMeasure> measures; ///< per variant: its instances' metrics
     if (options.instancing) {
         requireRange("variants per species", options.variantsPerSpecies, 1, 256);
+        // Only species with a domain tree in the tile: hand-placed trees are always grown
+        // from their own seed and never show (nor start from) a variant, so a project of
+        // hand-placed trees grows none (library.sylva: 96 variants, 20x its trees' time).
         std::vector<bool> used(scene.species.size(), false);
         for (std::size_t index : selected)
-            used[placed.instances[index].species] = true;
+            if (!placed.instances[index].handPlaced) used[placed.instances[index].species] = true;
         for (std::size_t sp = 0; sp < scene.species.size(); ++sp) {
             if (!used[sp] || plans[sp].selfOrganizing) continue;
             const int k = scene.species[sp].variants >= 0 ? scene.species[sp].variants
@@ -405,10 +409,11 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             try {
                 progress.checkCancelled();
                 // Levels only where instances are meshed per tree: writers that instance
-                // (meshInstances off) take the variant mesh itself, and wind exports skin the
-                // full mesh once (the levels carry no wind data).
-                const bool levelsWanted =
-                    options.useLod && options.meshInstances && !options.windData;
+                // (meshInstances off) take the variant mesh itself. With wind data the levels
+                // carry node ids as the variant's mesh does (the wind data is derived per
+                // mesh): a merged wind export draws far instances coarse too (it drew every
+                // one at full detail: bench-1000 with --wind, a 7 GB OBJ).
+                const bool levelsWanted = options.useLod && options.meshInstances;
                 std::uint64_t cacheKey = 0;
                 if (options.cache) {
                     cacheKey = mixSeed(mixSeed(speciesKeys[variant.species], variant.seed),

@@ -64,8 +64,8 @@ struct ForestVariant {
     forest::TreeMetrics metrics; ///< at scale 1
     /// With ForestOptions::useLod: the variant's levels of detail, made once (level 0 = mesh;
     /// mesh::buildDistanceLevels); an instance seen from d metres at scale s draws
-    /// mesh::levelFor(levels, d / s). Empty without useLod, with meshInstances off (instancing
-    /// writers) or with windData.
+    /// mesh::levelFor(levels, d / s). Empty without useLod or with meshInstances off
+    /// (instancing writers); with windData each level carries node ids, as the mesh does.
     std::vector<mesh::DistanceLevel> levels;
 };
 using VariantSink = std::function<void(const std::vector<ForestVariant>&)>;
@@ -160,7 +160,9 @@ struct ForestStats {
     std::size_t adaptedVariants = 0;
     /// Of the instanced trees, those ForestTree::instanceChecked.
     std::size_t instancedByCheck = 0;
-    std::size_t variants = 0; ///< variants handed to onVariants (each counted once)
+    /// Variants grown and handed to onVariants (each counted once): K for each species with a
+    /// domain tree in the tile, none for a species whose trees are all hand-placed.
+    std::size_t variants = 0;
     std::vector<placement::Shortfall> shortfalls;
     forest::SceneMetrics metrics;
     std::map<std::string, double> cpuMs;  ///< generate, adapt, mesh

@@ -13,6 +13,11 @@ MarkerSet::MarkerSet(std::vector<glm::vec3> positions, float cell)
     mGrid = PointGrid(mPositions, cell);
 }
 
+void MarkerSet::compact() {
+    if (4 * mAlive >= 3 * mGrid.order().size()) return;
+    mGrid.keepOnly([this](std::uint32_t i) { return mAliveFlag[i] != 0; });
+}
+
 std::size_t MarkerSet::removeWithin(const glm::vec3& p, float radius) {
     std::size_t removed = 0;
     mGrid.forEachInRadius(p, radius, [&](std::uint32_t i, float) {

@@ -161,7 +161,9 @@ struct MetamerArrays {
     RawVector<glm::quat> frame; ///< turtle frame of the internode
     RawVector<std::int32_t> parent, mainChild, lateralChild;
     RawVector<std::uint16_t> tree, order, born;
-    RawVector<std::uint8_t> deadBuds; ///< bit 0: terminal bud dead, bit 1: axillary bud dead
+    /// bit 0: terminal bud dead, bit 1: axillary bud dead; bits 2 and 3 (kBarrenTerminal,
+    /// kBarrenAxillary): the bud, alive, perceives no marker and never will (space colonization).
+    RawVector<std::uint8_t> deadBuds;
 
     std::size_t size() const { return end.size(); }
     MetamerTopology topology() const { return {parent, mainChild, lateralChild, tree}; }
@@ -265,8 +267,11 @@ private:
     RawVector<double> mGathered;
     RawVector<std::int32_t> mInternodes, mRemap;
     std::vector<ShedSums> mShedSums;
-    RawVector<std::uint8_t> mMarks;     ///< gatherLightAndMarkShed: shed roots, lateral children
-    std::vector<std::int64_t> mCells;   ///< shadow grid cell of each metamer's buds (light pass)
+    RawVector<std::uint8_t> mMarks;   ///< gatherLightAndMarkShed: shed roots, lateral children
+    std::vector<std::int64_t> mCells; ///< shadow grid cell of each metamer's buds (light pass)
+    /// The alive markers by the buds' perception radius (space colonization): built at the
+    /// first light pass, then only thinned (PointGrid::keepOnly) as markers are consumed.
+    std::optional<PointGrid> mAliveGrid;
     std::vector<glm::ivec3> mBudVoxels; ///< voxel of each growing bud (optimal directions)
     Vigour mVigour;
     std::vector<Growing> mGrowing;

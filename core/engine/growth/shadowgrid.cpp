@@ -13,6 +13,11 @@
 
 namespace sylva::growth {
 
+namespace {
+/// Sources from which applyBatch() runs on several threads.
+constexpr std::int64_t kParallelSources = 32768;
+} // namespace
+
 ShadowKernel ShadowKernel::make(double a, double b, int depth) {
     requireRange("shadow_a", a, 1e-6, 100.0);
     requireRange("shadow_b", b, 1.0 + 1e-6, 100.0);
@@ -158,7 +163,10 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     // thread counts its share, the counts are merged in thread order, then each thread places
     // its share, so the order within a layer is the input order on any number of threads.
     const auto total = static_cast<std::int64_t>(sources.size());
-    const int threads = total > 4096 ? omp_get_max_threads() : 1;
+    // Parallel from kParallelSources on: a smaller batch (one tree's lit attractors: the English
+    // oak's ~10k) takes about a millisecond, and a parallel region then leaves libgomp's
+    // threads spinning for milliseconds after it under the default waiting (Python, the editor).
+    const int threads = total >= kParallelSources ? omp_get_max_threads() : 1;
     const auto depths = static_cast<std::size_t>(maxDepth) + 1;
     const glm::ivec4 noExtent(std::numeric_limits<int>::max(), std::numeric_limits<int>::min(),
                               std::numeric_limits<int>::max(), std::numeric_limits<int>::min());
@@ -274,7 +282,7 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     mDiff.resize(static_cast<std::size_t>(omp_get_max_threads()));
     for (std::vector<std::int32_t>& d : mDiff)
         if (d.size() != planeD) d.assign(planeD, 0);
-#pragma omp parallel if (total > 256)
+#pragma omp parallel if (total >= kParallelSources)
     {
         std::vector<std::int32_t>& diff = mDiff[static_cast<std::size_t>(omp_get_thread_num())];
         std::vector<std::int32_t> colAcc(dz + 1);

@@ -30,6 +30,9 @@ PointGrid::PointGrid(const std::vector<glm::vec3>& points, float cellSize) : mPo
         h *= 1.25;
     }
     mCellSize = static_cast<float>(h);
+    mInvCellSize = 1.0 / static_cast<double>(mCellSize);
+    mBounds.lo = lo;
+    mBounds.hi = hi;
     mOrigin = lo;
     mDims = glm::ivec3(static_cast<int>(std::floor(extent.x / h)) + 1,
                        static_cast<int>(std::floor(extent.y / h)) + 1,
@@ -53,6 +56,10 @@ PointGrid::PointGrid(const std::vector<glm::vec3>& points, float cellSize) : mPo
     for (std::size_t i = 0; i < mPoints.size(); ++i)
         mOrder[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
 
+    mSorted.resize(mPoints.size());
+    for (std::size_t k = 0; k < mOrder.size(); ++k)
+        mSorted[k] = mPoints[mOrder[k]];
+
     mTable.assign(tableSize, -1);
     for (std::size_t t = 0; t < tableSize; ++t) {
         if (count[t] == count[t + 1]) continue;
@@ -72,7 +79,13 @@ PointGrid::PointGrid(const std::vector<glm::vec3>& points, float cellSize) : mPo
 glm::ivec3 PointGrid::cellCoord(const glm::vec3& p) const {
     glm::ivec3 c;
     for (int a = 0; a < 3; ++a) {
-        const double f = std::floor((static_cast<double>(p[a]) - mOrigin[a]) / mCellSize);
+        // floor((p - origin) / cell), the division only where the product by the reciprocal
+        // (at most an ulp or two off) is that close to a whole number: the same cells, without
+        // three divisions a point.
+        const double d = static_cast<double>(p[a]) - mOrigin[a];
+        const double v = d * mInvCellSize;
+        double f = std::floor(v);
+        if (v - f < 1e-9 || f + 1.0 - v < 1e-9) f = std::floor(d / mCellSize);
         c[a] = static_cast<int>(std::clamp(f, 0.0, static_cast<double>(mDims[a] - 1)));
     }
     return c;

@@ -279,3 +279,76 @@ TEST(Instancing, UniqueTreesAreAdaptedFromTheirVariantsSkeleton) {
             EXPECT_NE(t.skeleton->size(), v.skeleton->size()) << t.name << " grown from its seed";
     }
 }
+
+// Issue #41: variants are grown only where a tree may show one. Hand-placed trees are always
+// grown from their own seed, so a project of hand-placed trees grows no variant (library.sylva
+// grew 96, twenty times its trees' time) and builds the same trees as with K = 0.
+TEST(Instancing, HandPlacedTreesAloneGrowNoVariant) {
+    forest::ForestScene s = sparseForest(0, false);
+    s.domains.clear();
+    s.species[0].variants = -1; // the option's K (8)
+    for (std::uint64_t i = 0; i < 3; ++i) {
+        placement::Instance in;
+        in.species = 0;
+        in.id = i + 1;
+        in.seed = 100 + i;
+        in.position = {15.0f * static_cast<float>(i), 0.0f, 0.0f};
+        in.handPlaced = true;
+        s.handPlaced.push_back(in);
+    }
+    forest::ForestOptions options;
+    const Built placedOnly = build(s, options);
+    EXPECT_EQ(placedOnly.stats.variants, 0u);
+    EXPECT_TRUE(placedOnly.variants.empty());
+    EXPECT_EQ(placedOnly.stats.unique, 3u);
+    s.species[0].variants = 0;
+    const Built none = build(s, options);
+    ASSERT_EQ(placedOnly.trees.size(), none.trees.size());
+    for (std::size_t i = 0; i < none.trees.size(); ++i) {
+        EXPECT_EQ(placedOnly.trees[i].variant, -1);
+        EXPECT_EQ(placedOnly.trees[i].mesh->positions, none.trees[i].mesh->positions) << i;
+        EXPECT_EQ(placedOnly.trees[i].mesh->indices, none.trees[i].mesh->indices) << i;
+    }
+    // A domain tree of the species brings its variants back.
+    s.species[0].variants = 2;
+    placement::Domain d;
+    d.min = {100.0f, 100.0f};
+    d.max = {140.0f, 140.0f};
+    d.counts = {{"beech", 1}};
+    s.domains.push_back(d);
+    options.buildMeshes = false;
+    EXPECT_EQ(build(s, options).stats.variants, 2u);
+}
+
+// Issue #41: merged exports with wind data (OBJ, FBX, glTF without instancing, with --wind)
+// draw an instance at its variant's level for its distance too: the levels carry the node ids
+// the wind data is derived from, and far instances get at most half the triangles of the
+// nearest (every instance drew the full variant: bench-1000 with --wind wrote a 7 GB OBJ).
+TEST(Instancing, WithWindDataInstancesStillDrawTheirLevel) {
+    forest::ForestScene s = sparseForest(24, false);
+    s.camera = {0.0f, 10.0f, 80.0f};
+    forest::ForestOptions options;
+    options.useLod = true;
+    options.windData = true;
+    const Built b = build(s, options);
+    for (const forest::ForestVariant& v : b.variants) {
+        ASSERT_GE(v.levels.size(), 2u) << v.name;
+        for (const mesh::DistanceLevel& level : v.levels)
+            EXPECT_EQ(level.mesh->node.size(), level.mesh->positions.size()) << v.name;
+    }
+    std::size_t nearest = 0, farthest = 0;
+    double dNear = 1e30, dFar = 0.0;
+    for (std::size_t i = 0; i < b.trees.size(); ++i) {
+        const forest::ForestTree& t = b.trees[i];
+        if (t.variant < 0) continue;
+        EXPECT_EQ(t.mesh->node.size(), t.mesh->positions.size()) << t.name;
+        const double d = glm::length(s.camera - t.instance.position) /
+                         (double(t.instance.scale) * double(t.instance.growth));
+        if (d < dNear) dNear = d, nearest = i;
+        if (d > dFar) dFar = d, farthest = i;
+    }
+    ASSERT_GT(dFar, dNear);
+    EXPECT_LE(2 * b.trees[farthest].mesh->triangleCount(),
+              b.variants.at(std::size_t(b.trees[farthest].variant)).mesh->triangleCount());
+    EXPECT_LE(b.trees[farthest].mesh->triangleCount(), b.trees[nearest].mesh->triangleCount());
+}
