@@ -379,12 +379,18 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                             hash = (hash ^ bits) * 1099511628211ull;
                         }
                 d["shown_hash"] = hash;
+                // The stages after the result: the upload of the new mesh and its frame
+                // (upload included), on the GUI thread.
+                d["upload_ms"] = window().workbench()->previewViewport()->lastUploadMs();
+                d["frame_ms"] = window().workbench()->previewViewport()->lastPaintMs();
                 return d;
             },
             "The last preview: edit → result and → screen, the evaluation alone, per node (ran, "
             "ms, evaluations), its species, error (None when it succeeded) and failing node, its "
             "triangles and vertices, whether the pane shows that very mesh (shown_is_result) and "
-            "a hash of the positions it shows (shown_hash).")
+            "a hash of the positions it shows (shown_hash), and the GUI thread's stages: the "
+            "mesh's "
+            "upload (upload_ms) and the frame that drew it (frame_ms, upload included).")
         .def("obstacles",
              [](DocumentApi&) { return python::obstaclesList(document().project().obstacles); })
         .def(

@@ -202,6 +202,7 @@ void Viewport::setGridVisible(bool visible) {
 void Viewport::setWindEnabled(bool on) {
     if (on == mWindOn) return;
     mWindOn = on;
+    if (on && mMeshSkeleton) mMeshDirty = true; // its wind data, left out while off
     updateWindTimer();
     update();
 }
@@ -320,11 +321,18 @@ void Viewport::releaseGl() {
 }
 
 void Viewport::uploadMesh() {
+    QElapsedTimer timer;
+    timer.start();
     mMeshDirty = false;
     const std::vector<ViewVertex>* prepared = mMeshVertices ? mMeshVertices.get() : nullptr;
+    // The mesh's wind data (sway elements, per-vertex channels) only while View ▸ Wind is on:
+    // a species preview that does not sway needs the one mesh (setWindEnabled() uploads again).
+    const std::shared_ptr<const skel::Skeleton> windSkeleton =
+        mWindOn ? mMeshSkeleton : std::shared_ptr<const skel::Skeleton>();
     // A bad index would make the driver read out of bounds; refuse the mesh instead.
-    if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared, mMeshSkeleton))
+    if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared, windSkeleton))
         mGlError = tr("The mesh has an index out of range; it is not drawn.");
+    mLastUploadMs = double(timer.nsecsElapsed()) * 1e-6;
 }
 
 void Viewport::setTrees(std::vector<ViewTree> trees, bool frame) {
@@ -474,6 +482,13 @@ void Viewport::resizeGL(int width, int height) {
 }
 
 void Viewport::paintGL() {
+    QElapsedTimer frameTimer;
+    frameTimer.start();
+    struct FrameTime { // the frame's CPU time, however paintGL returns
+        QElapsedTimer& timer;
+        double& ms;
+        ~FrameTime() { ms = double(timer.nsecsElapsed()) * 1e-6; }
+    } frameTime{frameTimer, mLastPaintMs};
     if (!mGlReady) {
         // Without our functions, fall back to the context's basic ones to show a neutral grey.
         QOpenGLFunctions* f = context()->functions();

@@ -203,6 +203,10 @@ public:
         return mLod->pending() + mImpostorsWanted + mImpostors.baking();
     }
 
+    /// Milliseconds the last upload of setMesh()'s mesh took (vertices, indices, textures;
+    /// its wind data only with View ▸ Wind on), and the last frame's paintGL (upload included).
+    double lastUploadMs() const { return mLastUploadMs; }
+    double lastPaintMs() const { return mLastPaintMs; }
     /// The mesh setMesh() gave (none after a failed preview).
     const std::shared_ptr<const mesh::Mesh>& shownMesh() const { return mMesh; }
     OrbitCamera& camera() { return mCamera; }
@@ -407,6 +411,8 @@ private:
     /// The wind's frame for a tree \p phase of the period into the loop.
     wind::WindFrame windFrameAt(float phase) const;
     bool mWindOn = false;
+    double mLastUploadMs = 0.0;
+    double mLastPaintMs = 0.0;
     wind::WindSettings mWind;
     std::optional<double> mWindFixed; ///< the frozen wind clock
     QElapsedTimer mWindClock;

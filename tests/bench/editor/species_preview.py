@@ -22,7 +22,7 @@ sylva.wait(0.5)
 
 
 def measure(label, edit):
-    times, results, evals = [], [], []
+    times, results, evals, uploads, frames = [], [], [], [], []
     for i in range(N):
         edit(i)
         win.wait_for_preview(120)
@@ -31,10 +31,13 @@ def measure(label, edit):
         st = doc.preview_stats()
         results.append(st["edit_to_result_ms"])
         evals.append(st["evaluate_ms"])
+        uploads.append(st.get("upload_ms", 0.0))
+        frames.append(st.get("frame_ms", 0.0))
     ran = [k for k, v in st["nodes"].items() if v[0]]
     print(f"{label:30s} edit→screen {statistics.median(times):7.1f} ms "
           f"[{min(times):.1f}-{max(times):.1f}]  edit→mesh {statistics.median(results):6.1f} ms"
-          f"  evaluation {statistics.median(evals):6.1f} ms  re-ran {','.join(ran)}")
+          f"  evaluation {statistics.median(evals):6.1f} ms  upload {statistics.median(uploads):5.1f} ms"
+          f"  frame {statistics.median(frames):5.1f} ms  re-ran {','.join(ran)}")
 
 
 for cull in (False, True) if hasattr(win, "set_back_face_culling") else (True,):
