@@ -58,7 +58,17 @@ FORBIDDEN = {
     "core/document": re.compile(
         r'#include\s*(<(QWidget|QtWidgets|QMainWindow|QDialog|QAction)|"(ui|python|app)/)'),
     "ui": re.compile(r'#include\s*"app/'),
+    # python/: the bindings and the module, above the document, below the editor and the apps.
+    "python": re.compile(r'#include\s*"(ui|app)/'),
 }
+
+
+def node_type_names(root):
+    """The built-in node types' names, as engine/nodes registers them."""
+    names = set()
+    for path in sources(os.path.join(root, "core/engine/nodes")):
+        names.update(re.findall(r'\.name = "([a-z_]+)"', open(path, encoding="utf-8").read()))
+    return names
 
 
 def sources(folder):
@@ -92,6 +102,17 @@ def check(root):
                 if pattern.search(line):
                     problems.append(f"{os.path.relpath(path, root)}:{n}: {line.strip()} "
                                     f"is not allowed in {base}")
+    # graph/ is the model and the evaluator: it knows no node type by name (types declare their
+    # role, graph::NodeRole, and graph asks it).
+    names = node_type_names(root)
+    if names:
+        quoted = re.compile(r'"(' + "|".join(sorted(names)) + r')"')
+        for path in sources(os.path.join(root, "core/engine/graph")):
+            for n, line in enumerate(open(path, encoding="utf-8"), 1):
+                m = quoted.search(line.split("//")[0])
+                if m:
+                    problems.append(f"{os.path.relpath(path, root)}:{n}: the node type "
+                                    f"\"{m.group(1)}\" named in graph/ (ask NodeType::role)")
     return sorted(set(problems))
 
 

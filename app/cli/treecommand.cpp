@@ -69,7 +69,7 @@ int runTree(const std::vector<std::string>& argv) {
     const exporter::WindExportOptions windSettings = windOptions(args);
     if (wind)
         for (const graph::NodeDesc& node : evaluator.graph().nodes)
-            if (node.type == "tube_mesh")
+            if (graph::roleOf(node.type) == graph::NodeRole::Mesher)
                 evaluator.setParam(node.id, "wind_data", sylva::Value(true));
     if (auto name = args.value("--season")) {
         // The season is the meshing node's parameter: --season autumn is --set mesh.season=autumn

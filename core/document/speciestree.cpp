@@ -11,9 +11,8 @@ SpeciesTree growSpeciesTree(const QString& path, std::optional<std::uint64_t> se
                             Progress& progress) {
     graph::registerBuiltinNodeTypes();
     const graph::SpeciesGraph species = loadSpecies(path);
-    const graph::NodeDesc* out = species.findNode(species.output);
-    if (!out || out->type != "tube_mesh" || out->inputs.size() != 1)
-        throw InvalidInput("a LOD chain needs a species whose output is a tube_mesh node");
+    const graph::NodeDesc* out = graph::meshOutput(species);
+    if (!out) throw InvalidInput("a LOD chain needs a species whose output is a tube_mesh node");
     graph::Evaluator evaluator(species);
     const graph::NodeOutput& grown = evaluator.evaluateNode(
         species.skeletonSource(), seed.has_value(), seed.value_or(0), progress);

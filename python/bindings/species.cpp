@@ -65,7 +65,8 @@ struct GrownTree {
 /// Sets wind_data (per-vertex node ids and wind channels, docs/wind.md) on every tube_mesh.
 void enableWindData(graph::Evaluator& evaluator) {
     for (const graph::NodeDesc& node : evaluator.graph().nodes)
-        if (node.type == "tube_mesh") evaluator.setParam(node.id, "wind_data", sylva::Value(true));
+        if (graph::roleOf(node.type) == graph::NodeRole::Mesher)
+            evaluator.setParam(node.id, "wind_data", sylva::Value(true));
 }
 
 /// The tree's mesh with wind data: its own when it has node ids, else the same tree grown again
@@ -419,8 +420,8 @@ void bindSpecies(py::module_& m) {
                     // `sylva-cli tree --season`); the species keeps its own afterwards.
                     std::optional<graph::SpeciesGraph> own;
                     if (!seasonName.empty()) {
-                        const graph::NodeDesc* mesh = s.graph().findNode(s.graph().output);
-                        if (!mesh || mesh->type != "tube_mesh")
+                        const graph::NodeDesc* mesh = graph::meshOutput(s.graph());
+                        if (!mesh)
                             throw InvalidInput("season needs a species whose output node is a "
                                                "tube_mesh");
                         own = s.evaluator->graph();
@@ -478,8 +479,8 @@ void bindSpecies(py::module_& m) {
                 withoutGil(p, [&] {
                     std::lock_guard lock(*s.lock);
                     const graph::SpeciesGraph& g = s.graph();
-                    const graph::NodeDesc* out = g.findNode(g.output);
-                    if (!out || out->type != "tube_mesh" || out->inputs.size() != 1)
+                    const graph::NodeDesc* out = graph::meshOutput(g);
+                    if (!out)
                         throw InvalidInput("write_lods needs a species whose output is a "
                                            "tube_mesh node");
                     const graph::NodeOutput& grown = s.evaluator->evaluateNode(

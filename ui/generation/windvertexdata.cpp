@@ -122,7 +122,8 @@ float windPhaseOf(std::uint64_t treeId) {
 
 void requestNodeIds(graph::SpeciesGraph& graph) {
     for (graph::NodeDesc& n : graph.nodes)
-        if (n.type == "tube_mesh") n.params.objectRef()["node_ids"] = sylva::Value(true);
+        if (graph::roleOf(n.type) == graph::NodeRole::Mesher)
+            n.params.objectRef()["node_ids"] = sylva::Value(true);
 }
 
 } // namespace sylva::ui

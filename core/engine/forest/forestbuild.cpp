@@ -42,14 +42,14 @@ struct SpeciesPlan {
 SpeciesPlan planSpecies(const SceneSpecies& s) {
     SpeciesPlan plan;
     const graph::SpeciesGraph& g = s.graph;
-    plan.meshNode = g.findNode(g.output);
-    if (!plan.meshNode || plan.meshNode->type != "tube_mesh" || plan.meshNode->inputs.size() != 1)
+    plan.meshNode = graph::meshOutput(g);
+    if (!plan.meshNode)
         throw InvalidInput("species '" + s.name +
                            "': a forest needs the species' output node to be a tube_mesh with "
                            "one input (the skeleton)");
     plan.skeletonNode = g.skeletonSource();
     for (const graph::NodeDesc& n : g.nodes)
-        plan.hasAdaptNode = plan.hasAdaptNode || n.type == "adapt";
+        plan.hasAdaptNode = plan.hasAdaptNode || graph::roleOf(n.type) == graph::NodeRole::Adapt;
     const graph::NodeDesc* grow = g.findNode(plan.skeletonNode);
     plan.selfOrganizing = grow && grow->type == "self_organizing";
     plan.wood.densityKgM3 = g.traits.woodDensity;

@@ -24,8 +24,19 @@ NodeDesc* SpeciesGraph::findNode(const std::string& id) {
 }
 
 const std::string& SpeciesGraph::skeletonSource() const {
-    const NodeDesc* out = findNode(output);
-    return out && out->type == "tube_mesh" && out->inputs.size() == 1 ? out->inputs[0] : output;
+    const NodeDesc* out = meshOutput(*this);
+    return out ? out->inputs[0] : output;
+}
+
+NodeRole roleOf(const std::string& type) {
+    registerBuiltinNodeTypes();
+    const NodeType* t = NodeRegistry::instance().find(type);
+    return t ? t->role : NodeRole::Other;
+}
+
+const NodeDesc* meshOutput(const SpeciesGraph& graph) {
+    const NodeDesc* out = graph.findNode(graph.output);
+    return out && out->inputs.size() == 1 && roleOf(out->type) == NodeRole::Mesher ? out : nullptr;
 }
 
 std::filesystem::path NodeContext::resolve(const std::string& relative) const {

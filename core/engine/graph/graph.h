@@ -67,9 +67,27 @@ struct SpeciesGraph {
     const NodeDesc* findNode(const std::string& id) const;
     NodeDesc* findNode(const std::string& id);
     /// The node whose result is the tree's skeleton before meshing: the output node's single
-    /// input when the output is a tube_mesh, else the output node itself.
+    /// input when the output is a mesher (meshOutput()), else the output node itself.
     const std::string& skeletonSource() const;
 };
+
+/// What a node type is for, declared by the type (engine/nodes), so that code outside nodes/
+/// asks the role instead of testing a type's name.
+enum class NodeRole {
+    Other,     ///< passes or adds data (leaves)
+    Generator, ///< grows a skeleton
+    Adapt,     ///< reacts to the scene's obstacles and neighbours
+    Mesher,    ///< makes the tree's mesh from one skeleton input
+};
+
+/// The role of the registered node type \p type (NodeRole::Other when unknown); registers the
+/// built-in types first.
+NodeRole roleOf(const std::string& type);
+
+/// The graph's output node when it is a mesher with one input (the skeleton it meshes), else
+/// null: the one test of "does this species end in a mesher" (forest plans, LOD chains,
+/// seasons, wind data).
+const NodeDesc* meshOutput(const SpeciesGraph& graph);
 
 /// What a node produces. Generators fill `skeleton`, meshing nodes fill `mesh` (and pass the
 /// skeleton through). `stats` holds counts ("symbols", "segments", ...) and `timingsMs` the time
@@ -157,6 +175,7 @@ struct NodeType {
     /// output is the same kind as its input (leaves) says so with outputFollowsInput.
     PortKind output = PortKind::Skeleton;
     bool outputFollowsInput = false;
+    NodeRole role = NodeRole::Other; ///< what the type is for (forest plans ask it)
 
     const ParamSpec* findParam(const std::string& name) const;
 };

@@ -178,6 +178,7 @@ void registerAdaptNode(graph::NodeRegistry& registry) {
     using namespace sylva::nodes;
     graph::NodeType type;
     type.name = "adapt";
+    type.role = graph::NodeRole::Adapt;
     type.doc = "Bends branches away from obstacles, prunes what still collides and regrows it";
     type.category = "Environment";
     type.minInputs = type.maxInputs = 1;

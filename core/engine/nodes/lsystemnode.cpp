@@ -114,6 +114,7 @@ void registerLsystemNode(graph::NodeRegistry& registry) {
     type.name = "lsystem";
     type.doc = "Derives an L-system grammar and interprets the word with a 3D turtle";
     type.category = "Generator";
+    type.role = graph::NodeRole::Generator;
     type.minInputs = type.maxInputs = 0;
     type.output = graph::PortKind::Skeleton;
     type.evaluate = evaluateLsystem;

@@ -280,6 +280,7 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
     using namespace sylva::nodes;
     graph::NodeType tube;
     tube.name = "tube_mesh";
+    tube.role = graph::NodeRole::Mesher;
     tube.doc = "Meshes the branches as tubes and the leaves as cards";
     tube.category = "Geometry";
     tube.minInputs = tube.maxInputs = 1;

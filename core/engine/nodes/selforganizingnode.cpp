@@ -120,6 +120,7 @@ void registerSelfOrganizingNode(graph::NodeRegistry& registry) {
     type.maxInputs = 0;
     type.doc = "Grows a tree by light and space over yearly cycles (Palubicki et al. 2009)";
     type.category = "Generator";
+    type.role = graph::NodeRole::Generator;
     type.output = graph::PortKind::Skeleton;
     using namespace sylva::nodes;
     group(type.params, "Growth",

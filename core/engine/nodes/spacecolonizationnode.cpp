@@ -142,6 +142,7 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
     type.maxInputs = 1;
     type.doc = "Grows a tree toward attraction points in a crown envelope (Runions et al. 2007)";
     type.category = "Generator";
+    type.role = graph::NodeRole::Generator;
     type.accepts = {graph::PortKind::Skeleton};
     type.output = graph::PortKind::Skeleton;
     using namespace sylva::nodes;
