@@ -713,6 +713,9 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             },
             "Writes the autosave copy now; its path, or '' when there was nothing unsaved.")
         .def(
+            "generating", [](WindowApi&) { return window().isGenerating(); },
+            "Whether a generation (or a species regrowth) is running or about to start.")
+        .def(
             "view_camera",
             [](WindowApi&) {
                 const OrbitCamera& c = window().viewport()->camera();

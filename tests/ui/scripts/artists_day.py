@@ -227,6 +227,14 @@ doc.undo()  # the obstacle
 doc.generate()
 assert win.status()[1] == "", win.status()
 
+# A screenshot right after an edit shows that edit: it waits for the generation (it showed the
+# forest before it, and Statistics disagreed with the Outliner).
+doc.season = "autumn"
+win.screenshot(os.path.join(OUT, "autumn.png"))
+assert not win.generating(), "the screenshot did not wait for the edit's generation"
+doc.undo()
+doc.generate()
+
 # Opening a project with a missing mesh or a broken species file leaves this one as it was.
 edited = doc.serialized()
 steps = doc.undo_count()
