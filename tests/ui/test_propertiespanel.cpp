@@ -4,7 +4,9 @@
 #include <QAbstractItemView>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QTest>
 #include <QUndoStack>
@@ -91,6 +93,40 @@ private Q_SLOTS:
         QCOMPARE(document.undoStack()->index(), now);
         QVERIFY_THROWS_EXCEPTION(std::exception, document.setSpeciesVariants("shrub", 257));
         QVERIFY_THROWS_EXCEPTION(std::exception, document.setSpeciesVariants("nope", 2));
+    }
+
+    // Issue #40: a tree's three position boxes, each with " m", cut their unit off in the dock;
+    // the unit is in the row's label instead, and each box shows its whole value.
+    void positionBoxesShowTheirValueAndTheRowItsUnit() {
+        doc::Document document;
+        document.open(QDir(QStringLiteral(SYLVA_TEST_DATA_DIR))
+                          .filePath(QStringLiteral("projects/small.sylva")));
+        QWidget window;
+        auto* layout = new QHBoxLayout(&window);
+        auto* panel = new PropertiesPanel(document, &window);
+        layout->addWidget(panel);
+        window.resize(300, 600);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        document.selectTrees({document.treeIds().front()});
+        QTest::qWait(50);
+        auto* x = panel->findChild<QDoubleSpinBox*>(QStringLiteral("spin0"));
+        QVERIFY(x);
+        QVERIFY(x->suffix().isEmpty());
+        auto* form = panel->findChild<QFormLayout*>();
+        QVERIFY(form);
+        auto* label = qobject_cast<QLabel*>(form->labelForField(x->parentWidget()));
+        QVERIFY(label);
+        QCOMPARE(label->text(), QStringLiteral("Position (m):"));
+        for (int i = 0; i < 3; ++i) {
+            auto* box = panel->findChild<QDoubleSpinBox*>(QStringLiteral("spin%1").arg(i));
+            box->setValue(-123.45);
+            const int text = box->fontMetrics().horizontalAdvance(box->text());
+            QVERIFY2(
+                text < box->width(),
+                qPrintable(
+                    QStringLiteral("%1 px of text in a %2 px box").arg(text).arg(box->width())));
+        }
     }
 };
 
