@@ -180,6 +180,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         stampSources(result); // before buildForest reads the grammar files
         forest::ForestOptions options;
         options.windData = windData;
+        options.keepGrown = true; // the branches scripts list (doc.branches)
         if (caches && !windData) {
             options.cache = &caches->trees;
             options.obstaclesKey = pointerKey(forest.obstacles.get(), forest.ground.get());
@@ -208,6 +209,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                     drawn.mesh = tree.mesh;
                     drawn.transform = tree.instance.transform();
                     drawn.metrics = tree.metrics;
+                    drawn.grown = tree.grown;
                     // The viewport's coarser levels (ui/viewport/viewlod.h) start from what the
                     // forest made this mesh with.
                     if (tree.meshSettings && tree.skeleton) {

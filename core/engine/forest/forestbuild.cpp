@@ -153,6 +153,7 @@ std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
                           options.buildMeshes,
                           scene.obstacles != nullptr,
                           options.windData};
+    if (options.keepGrown) h = mixSeed(h, 0x6b67); // cached trees then carry their grown skeleton
     mix(flags, sizeof flags);
     return h;
 }
@@ -551,6 +552,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     tree.adaptedFrom = -1;
                     tree.instanceChecked = false;
                     tree.skeleton = variant.skeleton;
+                    if (options.keepGrown) tree.grown = variant.skeleton;
                     tree.meshSettings = variant.meshSettings;
                     tree.metrics =
                         forest::measureTree(measures[v], plan.wood, in.scale * in.growth);
@@ -617,6 +619,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 }
                 if (!skeleton)
                     throw InvalidInput("species '" + species.name + "' produced no skeleton");
+                if (options.keepGrown) tree.grown = skeleton;
                 if (edits) {
                     // After growth, before adaptation; bends are world directions.
                     std::vector<skel::BranchEdit> local = *edits;

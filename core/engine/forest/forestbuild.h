@@ -117,6 +117,9 @@ struct ForestOptions {
     /// false, it is the variant's shared mesh (writers that instance the variants, glTF, USD:
     /// no mesh is made per instance).
     bool meshInstances = true;
+    /// Keep each unique tree's skeleton as grown, before its branch edits and adaptation
+    /// (ForestTree::grown): what an editor lists the branches and their ids of.
+    bool keepGrown = false;
 };
 
 /// One finished tree, in its own local frame; `instance.transform()` places it in the world.
@@ -149,6 +152,9 @@ struct ForestTree {
     double meshCameraDistance = 0.0;
     forest::TreeMetrics metrics;
     env::AdaptStats adapt;
+    /// With ForestOptions::keepGrown: the skeleton as grown, before branch edits and adaptation
+    /// (an instance: its variant's); the ids edits name are this skeleton's branches'.
+    std::shared_ptr<const skel::Skeleton> grown;
     /// What the tree's branch edits did (ForestScene::branchEdits; empty without edits).
     skel::BranchEditReport branchEdits;
 };

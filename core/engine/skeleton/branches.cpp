@@ -179,8 +179,14 @@ void validate(const BranchEdit& e) {
         throw InvalidInput("branch " + e.branch + " is a trunk: it cannot be pruned");
 }
 
-BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& edits) {
+BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& edits,
+                                  std::vector<std::int32_t>* nodeMap) {
     BranchEditReport report;
+    if (nodeMap) {
+        nodeMap->resize(s.size());
+        for (std::size_t i = 0; i < s.size(); ++i)
+            (*nodeMap)[i] = static_cast<Index>(i);
+    }
     if (edits.empty()) return report;
     for (const BranchEdit& e : edits)
         validate(e);
@@ -265,8 +271,40 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
             removing = true;
         }
     }
-    if (removing) compact(s, remove);
+    if (removing) {
+        if (nodeMap) {
+            Index next = 0;
+            for (std::size_t i = 0; i < remove.size(); ++i)
+                (*nodeMap)[i] = remove[i] ? -1 : next++;
+        }
+        compact(s, remove);
+    }
     return report;
+}
+
+std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits) {
+    std::vector<Branch> branches = branchesOf(grown);
+    if (edits.empty()) return branches;
+    Skeleton s = grown;
+    std::vector<Index> map;
+    applyBranchEdits(s, edits, &map);
+    std::vector<Branch> out;
+    out.reserve(branches.size());
+    for (Branch& b : branches) {
+        if (map[at(b.nodes.front())] < 0) continue;
+        for (Index& k : b.nodes)
+            k = map[at(k)];
+        if (b.baseNode >= 0) b.baseNode = map[at(b.baseNode)];
+        b.base = s.position[at(b.baseNode >= 0 ? b.baseNode : b.nodes.front())];
+        b.tip = s.position[at(b.nodes.back())];
+        b.baseRadius = s.radius[at(b.nodes.front())];
+        b.length = 0.0f;
+        for (Index k : b.nodes)
+            if (s.parent[at(k)] >= 0)
+                b.length += glm::length(s.position[at(k)] - s.position[at(s.parent[at(k)])]);
+        out.push_back(std::move(b));
+    }
+    return out;
 }
 
 } // namespace sylva::skel

@@ -72,7 +72,14 @@ struct BranchEditReport {
 /// parents come before those of their branches (so a branch bent after its parent still points
 /// where its edit says); within an edit length, then bend, then radius; pruned nodes are
 /// removed last (indices change; leaves on them go too). An edit whose branch does not exist is
-/// reported, never an error. \throw InvalidInput for an edit out of range.
-BranchEditReport applyBranchEdits(Skeleton& skeleton, const std::vector<BranchEdit>& edits);
+/// reported, never an error. With \p nodeMap: each former node's index after the edits, -1 for a
+/// pruned one. \throw InvalidInput for an edit out of range.
+BranchEditReport applyBranchEdits(Skeleton& skeleton, const std::vector<BranchEdit>& edits,
+                                  std::vector<std::int32_t>* nodeMap = nullptr);
+
+/// The branches of \p grown (their ids) as \p edits leave them: pruned ones left out, the others'
+/// nodes, base, tip, length and radius those of the edited skeleton. What an editor lists and
+/// what edits name: ids never shift when a sibling is pruned.
+std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits);
 
 } // namespace sylva::skel

@@ -165,3 +165,14 @@ TEST(BranchEdits, OutOfRangeEditsAreRefused) {
     EXPECT_THROW(skel::applyBranchEdits(s, {edit("0.1", false, glm::vec3(0))}), InvalidInput);
     EXPECT_THROW(skel::applyBranchEdits(s, {edit("0", true)}), InvalidInput);
 }
+
+TEST(BranchEdits, EditedBranchesKeepTheGrownIds) {
+    const skel::Skeleton s = sample();
+    const std::vector<skel::Branch> bs =
+        skel::editedBranches(s, {edit("0.0", true), edit("0.1", false, glm::vec3(0, 1, 0))});
+    ASSERT_EQ(bs.size(), 2u); // the trunk and 0.1; 0.0 and its twig 0.0.0 are pruned
+    EXPECT_EQ(bs[1].id, "0.1");
+    EXPECT_EQ(bs[1].nodes, std::vector<std::int32_t>{5});
+    EXPECT_NEAR(bs[1].tip.x, 0.0f, 1e-5f);
+    EXPECT_GT(bs[1].tip.y, 2.0f);
+}
