@@ -143,12 +143,13 @@ std::string checkedSeason(const std::string& name, const std::string& where) {
 }
 
 skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
-    static const std::set<std::string> keys = {"branch", "prune",  "bend",
-                                               "length", "radius", "lock"};
+    static const std::set<std::string> keys = {"branch", "prune", "bend",  "length",
+                                               "radius", "lock",  "locked"};
     for (const auto& [key, value] : v.toObject(where))
         if (!keys.count(key))
-            throw InvalidInput(where + ": unknown key \"" + key +
-                               "\" (a branch edit has branch, prune, bend, length, radius, lock)");
+            throw InvalidInput(
+                where + ": unknown key \"" + key +
+                "\" (a branch edit has branch, prune, bend, length, radius, lock, locked)");
     skel::BranchEdit e;
     const Value* branch = v.find("branch");
     if (!branch || !branch->isString())
@@ -161,6 +162,56 @@ skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
         e.length = static_cast<float>(x->toNumber(where + ".length"));
     if (const Value* x = v.find("radius"))
         e.radius = static_cast<float>(x->toNumber(where + ".radius"));
+    if (const Value* locked = v.find("locked")) {
+        const std::string at = where + ".locked";
+        if (!e.lock) throw InvalidInput(at + " belongs to a locked edit (\"lock\": true)");
+        auto numbers = [](const Value& row, std::size_t n, const std::string& what) {
+            const Value::Array& a = row.toArray(what);
+            if (a.size() != n)
+                throw InvalidInput(what + " needs " + std::to_string(n) + " numbers");
+            std::vector<double> out;
+            for (const Value& x : a)
+                out.push_back(x.toNumber(what));
+            return out;
+        };
+        auto quat = [](const std::vector<double>& r, std::size_t i) {
+            glm::quat q;
+            q.x = static_cast<float>(r[i]);
+            q.y = static_cast<float>(r[i + 1]);
+            q.z = static_cast<float>(r[i + 2]);
+            q.w = static_cast<float>(r[i + 3]);
+            return q;
+        };
+        auto vec = [](const std::vector<double>& r, std::size_t i) {
+            return glm::vec3(static_cast<float>(r[i]), static_cast<float>(r[i + 1]),
+                             static_cast<float>(r[i + 2]));
+        };
+        e.lockedBase = vec3Or(*locked, "base", glm::vec3(0.0f), at);
+        if (const Value* nodes = locked->find("nodes"))
+            for (const Value& row : nodes->toArray(at + ".nodes")) {
+                // [parent, order, radius, offset x, y, z, orientation x, y, z, w]
+                const std::vector<double> r = numbers(row, 10, at + ".nodes[]");
+                skel::LockedNode n;
+                if (r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]) || r[1] < 0 ||
+                    r[1] > 65535 || r[0] < -1 || r[0] > 1e9)
+                    throw InvalidInput(at + ".nodes[]: parent and order must be whole numbers");
+                n.parent = static_cast<std::int32_t>(r[0]);
+                n.order = static_cast<std::uint16_t>(r[1]);
+                n.radius = static_cast<float>(r[2]);
+                n.offset = vec(r, 3);
+                n.orientation = quat(r, 6);
+                e.locked.push_back(n);
+            }
+        if (const Value* leaves = locked->find("leaves"))
+            for (const Value& row : leaves->toArray(at + ".leaves")) {
+                // [node, size, offset x, y, z, orientation x, y, z, w]
+                const std::vector<double> r = numbers(row, 9, at + ".leaves[]");
+                if (r[0] != std::floor(r[0]) || r[0] < 0 || r[0] > 1e9)
+                    throw InvalidInput(at + ".leaves[]: node must be a whole number");
+                e.lockedLeaves.push_back({static_cast<std::int32_t>(r[0]), static_cast<float>(r[1]),
+                                          vec(r, 2), quat(r, 5)});
+            }
+    }
     checkBranchEdit(e, where);
     return e;
 }
@@ -230,6 +281,11 @@ void checkBranchEdit(const skel::BranchEdit& e, const std::string& where) {
         throw InvalidInput(where + ".bend must be a non-zero direction [x, y, z]");
     if (e.prune && e.branch.find('.') == std::string::npos)
         throw InvalidInput(where + ": branch " + e.branch + " is a trunk and cannot be pruned");
+    try {
+        skel::validate(e); // the locked geometry's structure
+    } catch (const InvalidInput& x) {
+        throw InvalidInput(where + ": " + x.what());
+    }
 }
 
 bool isEmptyEdit(const skel::BranchEdit& e) {
@@ -494,6 +550,31 @@ QByteArray serializeProject(const Project& project) {
                 if (e.length != 1.0f) eo["length"] = decimalOf(e.length);
                 if (e.radius != 1.0f) eo["radius"] = decimalOf(e.radius);
                 if (e.lock) eo["lock"] = true;
+                if (e.lock && !e.locked.empty()) {
+                    auto q = [](Value::Array& row, const glm::quat& r) {
+                        for (float f : {r.x, r.y, r.z, r.w})
+                            row.emplace_back(decimalOf(f));
+                    };
+                    Value::Array nodes, leaves;
+                    for (const skel::LockedNode& n : e.locked) {
+                        Value::Array row{
+                            static_cast<double>(n.parent), static_cast<double>(n.order),
+                            decimalOf(n.radius),           decimalOf(n.offset.x),
+                            decimalOf(n.offset.y),         decimalOf(n.offset.z)};
+                        q(row, n.orientation);
+                        nodes.emplace_back(std::move(row));
+                    }
+                    for (const skel::LockedLeaf& l : e.lockedLeaves) {
+                        Value::Array row{static_cast<double>(l.node), decimalOf(l.size),
+                                         decimalOf(l.offset.x), decimalOf(l.offset.y),
+                                         decimalOf(l.offset.z)};
+                        q(row, l.orientation);
+                        leaves.emplace_back(std::move(row));
+                    }
+                    eo["locked"] = Value::Object{{"base", arrayOf(e.lockedBase)},
+                                                 {"nodes", Value(std::move(nodes))},
+                                                 {"leaves", Value(std::move(leaves))}};
+                }
                 edits.emplace_back(std::move(eo));
             }
             o["branch_edits"] = Value(std::move(edits));

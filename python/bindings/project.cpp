@@ -129,6 +129,7 @@ py::list branchEditsList(const std::vector<skel::BranchEdit>& edits) {
         if (e.length != 1.0f) d["length"] = e.length;
         if (e.radius != 1.0f) d["radius"] = e.radius;
         if (e.lock) d["lock"] = true;
+        if (e.lock && !e.locked.empty()) d["locked_nodes"] = e.locked.size();
         out.append(d);
     }
     return out;
@@ -142,8 +143,20 @@ skel::BranchEdit branchEditFrom(const std::vector<skel::BranchEdit>& edits,
     e.branch = branch;
     for (const skel::BranchEdit& old : edits)
         if (old.branch == branch) e = old;
+    const bool unlocking = !lock.is_none() && !lock.cast<bool>();
+    if (e.lock && !e.locked.empty() && !unlocking &&
+        !(prune.is_none() && bend.is_none() && length.is_none() && radius.is_none()))
+        throw InvalidInput("branch " + branch +
+                           " is locked: unlock it (lock=False) before changing it");
     if (!prune.is_none()) e.prune = prune.cast<bool>();
-    if (!lock.is_none()) e.lock = lock.cast<bool>();
+    if (!lock.is_none()) {
+        e.lock = lock.cast<bool>();
+        if (!e.lock) { // unlocked: the kept geometry goes too
+            e.lockedBase = glm::vec3(0.0f);
+            e.locked.clear();
+            e.lockedLeaves.clear();
+        }
+    }
     if (!length.is_none()) e.length = length.cast<float>();
     if (!radius.is_none()) e.radius = radius.cast<float>();
     if (!bend.is_none()) {

@@ -280,6 +280,25 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                         known = known || b.id == branch;
                 if (!known)
                     throw InvalidInput("tree " + std::to_string(id) + " has no branch " + branch);
+                if (edit.lock && edit.locked.empty()) {
+                    // Locked now: its geometry as the tree shows it, the other edits applied,
+                    // in the tree's frame (bends are world directions in the document).
+                    skel::BranchEdit kept = edit;
+                    const DrawnTree& drawn = grownTree(id);
+                    const glm::mat3 toLocal = glm::inverse(glm::mat3(drawn.transform));
+                    std::vector<skel::BranchEdit> local = edits;
+                    for (skel::BranchEdit& e : local)
+                        if (e.bend) e.bend = toLocal * *e.bend;
+                    if (kept.bend) kept.bend = toLocal * *kept.bend;
+                    skel::lockBranch(*drawn.grown, local, kept);
+                    skel::BranchEdit stored = edit; // the world bend kept as given
+                    stored.lock = true;
+                    stored.lockedBase = kept.lockedBase;
+                    stored.locked = std::move(kept.locked);
+                    stored.lockedLeaves = std::move(kept.lockedLeaves);
+                    document().editBranch(id, stored);
+                    return;
+                }
                 document().editBranch(id, edit);
             },
             py::arg("tree_id"), py::arg("branch_id"), py::arg("prune") = py::none(),

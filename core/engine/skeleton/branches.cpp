@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <tuple>
 #include <unordered_map>
@@ -177,7 +178,46 @@ void validate(const BranchEdit& e) {
         throw InvalidInput("branch edit bend must be a non-zero direction");
     if (e.prune && e.branch.find('.') == std::string::npos)
         throw InvalidInput("branch " + e.branch + " is a trunk: it cannot be pruned");
+    for (std::size_t i = 0; i < e.locked.size(); ++i)
+        if (e.locked[i].parent < -1 || e.locked[i].parent >= static_cast<std::int32_t>(i))
+            throw InvalidInput("branch " + e.branch + ": locked node " + std::to_string(i) +
+                               " needs a parent before it");
+    if (!e.locked.empty() && e.locked.front().parent != -1)
+        throw InvalidInput("branch " + e.branch + ": the first locked node leaves the parent");
+    for (const LockedLeaf& l : e.lockedLeaves)
+        if (l.node < 0 || l.node >= static_cast<std::int32_t>(e.locked.size()))
+            throw InvalidInput("branch " + e.branch + ": a locked leaf names no locked node");
 }
+
+namespace {
+
+std::string parentId(const std::string& id) {
+    const std::size_t dot = id.rfind('.');
+    return dot == std::string::npos ? std::string() : id.substr(0, dot);
+}
+
+/// Appends \p e's locked geometry to \p s, leaving node \p at (base \p base).
+void graft(Skeleton& s, const BranchEdit& e, Index at, const glm::vec3& base) {
+    const auto first = static_cast<Index>(s.size());
+    for (const LockedNode& n : e.locked) {
+        s.addNode(base + n.offset, n.parent < 0 ? at : first + n.parent, n.radius, n.order,
+                  n.orientation);
+        if (!s.light.empty()) s.light.push_back(0.0f);
+        if (!s.vigour.empty()) s.vigour.push_back(0.0f);
+        if (!s.age.empty()) s.age.push_back(0);
+        if (!s.sourceLine.empty()) s.sourceLine.push_back(0);
+    }
+    for (const LockedLeaf& l : e.lockedLeaves) {
+        Leaf leaf;
+        leaf.position = base + l.offset;
+        leaf.orientation = l.orientation;
+        leaf.size = l.size;
+        leaf.node = first + l.node;
+        s.leaves.push_back(leaf);
+    }
+}
+
+} // namespace
 
 BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& edits,
                                   std::vector<std::int32_t>* nodeMap) {
@@ -202,11 +242,41 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
         return depthOf(a->branch) < depthOf(b->branch);
     });
 
+    const std::size_t grownSize = s.size();
     std::vector<char> remove(s.size(), 0);
     bool removing = false;
     for (const BranchEdit* e : ordered) {
         const auto found = byId.find(e->branch);
         if (found == byId.end()) {
+            // A locked branch whose id is gone is grafted onto its parent, where it was.
+            const auto parent = byId.find(parentId(e->branch));
+            if (e->lock && !e->locked.empty() && parent != byId.end()) {
+                const Branch& p = branches[parent->second];
+                Index node = p.nodes.front();
+                float best = std::numeric_limits<float>::max();
+                for (Index k : p.nodes)
+                    if (const float d = glm::length(s.position[at(k)] - e->lockedBase);
+                        d < best && !remove[at(k)]) {
+                        best = d;
+                        node = k;
+                    }
+                if (!remove[at(node)]) {
+                    report.grafted.emplace_back(e->branch, static_cast<Index>(s.size()));
+                    graft(s, *e, node, s.position[at(node)]);
+                    remove.resize(s.size(), 0);
+                    ++report.applied;
+                    ++report.reattached;
+                    continue;
+                }
+            }
+            // Inside a locked branch put back whole: carried by its kept geometry.
+            const bool carried =
+                std::any_of(report.grafted.begin(), report.grafted.end(),
+                            [&](const auto& g) { return e->branch.rfind(g.first + ".", 0) == 0; });
+            if (carried) {
+                ++report.applied;
+                continue;
+            }
             report.orphaned.push_back(e->branch);
             continue;
         }
@@ -263,20 +333,33 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
                 if (in[i]) s.radius[i] *= e->radius;
 
         if (e->prune) {
-            for (std::size_t i = 0; i < s.size(); ++i)
+            for (std::size_t i = 0; i < in.size(); ++i)
                 if (in[i] && !remove[i]) {
                     remove[i] = 1;
                     ++report.prunedNodes;
                 }
             removing = true;
+        } else if (e->lock && !e->locked.empty() && b.baseNode >= 0) {
+            // The kept geometry replaces what grew (it holds the other edits already).
+            for (std::size_t i = 0; i < in.size(); ++i)
+                if (in[i]) remove[i] = 1;
+            report.grafted.emplace_back(e->branch, static_cast<Index>(s.size()));
+            graft(s, *e, b.baseNode, base);
+            remove.resize(s.size(), 0);
+            removing = true;
         }
     }
     if (removing) {
-        if (nodeMap) {
-            Index next = 0;
-            for (std::size_t i = 0; i < remove.size(); ++i)
-                (*nodeMap)[i] = remove[i] ? -1 : next++;
-        }
+        // Kept nodes, grown and grafted, numbered in one run: what compact() gives them.
+        std::vector<Index> renumber(remove.size(), -1);
+        Index next = 0;
+        for (std::size_t i = 0; i < remove.size(); ++i)
+            if (!remove[i]) renumber[i] = next++;
+        if (nodeMap)
+            for (std::size_t i = 0; i < grownSize; ++i)
+                (*nodeMap)[i] = renumber[i];
+        for (auto& g : report.grafted)
+            g.second = renumber[at(g.second)];
         compact(s, remove);
     }
     return report;
@@ -287,24 +370,102 @@ std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<Bran
     if (edits.empty()) return branches;
     Skeleton s = grown;
     std::vector<Index> map;
-    applyBranchEdits(s, edits, &map);
-    std::vector<Branch> out;
-    out.reserve(branches.size());
-    for (Branch& b : branches) {
-        if (map[at(b.nodes.front())] < 0) continue;
-        for (Index& k : b.nodes)
-            k = map[at(k)];
-        if (b.baseNode >= 0) b.baseNode = map[at(b.baseNode)];
-        b.base = s.position[at(b.baseNode >= 0 ? b.baseNode : b.nodes.front())];
+    const BranchEditReport report = applyBranchEdits(s, edits, &map);
+    std::vector<std::vector<Index>> kids(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (s.parent[i] >= 0) kids[at(s.parent[i])].push_back(static_cast<Index>(i));
+    const std::vector<Index> cont = continuations(s, kids);
+    // A branch from its (edited) first node: its chain walked again in the edited skeleton.
+    auto measure = [&](Branch& b, Index first) {
+        b.nodes.clear();
+        for (Index k = first; k >= 0; k = cont[at(k)])
+            b.nodes.push_back(k);
+        b.baseNode = s.parent[at(first)] >= 0 && !b.parent.empty() ? s.parent[at(first)] : -1;
+        b.base = s.position[at(b.baseNode >= 0 ? b.baseNode : first)];
         b.tip = s.position[at(b.nodes.back())];
-        b.baseRadius = s.radius[at(b.nodes.front())];
+        b.baseRadius = s.radius[at(first)];
+        b.order = s.order[at(first)];
         b.length = 0.0f;
         for (Index k : b.nodes)
             if (s.parent[at(k)] >= 0)
                 b.length += glm::length(s.position[at(k)] - s.position[at(s.parent[at(k)])]);
+    };
+    auto graftedAt = [&](const std::string& id) -> Index {
+        for (const auto& [branch, first] : report.grafted)
+            if (branch == id) return first;
+        return -1;
+    };
+    std::vector<Branch> out;
+    out.reserve(branches.size());
+    for (Branch& b : branches) {
+        Index first = map[at(b.nodes.front())];
+        if (first < 0) first = graftedAt(b.id); // locked: its kept geometry
+        if (first < 0) continue;
+        measure(b, first);
         out.push_back(std::move(b));
     }
+    // Locked branches grafted back onto their parent after their id was gone.
+    for (const auto& [id, first] : report.grafted) {
+        const bool listed =
+            std::any_of(out.begin(), out.end(), [&id](const Branch& b) { return b.id == id; });
+        if (listed) continue;
+        Branch b;
+        b.id = id;
+        b.parent = parentId(id);
+        measure(b, first);
+        out.push_back(std::move(b));
+    }
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i].parentIndex = -1;
+        for (std::size_t k = 0; k < i; ++k)
+            if (out[k].id == out[i].parent) out[i].parentIndex = static_cast<std::int32_t>(k);
+    }
     return out;
+}
+
+void lockBranch(const Skeleton& grown, const std::vector<BranchEdit>& others, BranchEdit& edit) {
+    std::vector<BranchEdit> rest;
+    for (const BranchEdit& e : others)
+        if (e.branch != edit.branch) rest.push_back(e);
+    BranchEdit unlocked = edit;
+    unlocked.lock = false;
+    unlocked.locked.clear();
+    unlocked.lockedLeaves.clear();
+    rest.push_back(unlocked);
+    Skeleton s = grown;
+    std::vector<Index> map;
+    applyBranchEdits(s, rest, &map);
+    const std::vector<Branch> branches = branchesOf(grown);
+    const auto b = std::find_if(branches.begin(), branches.end(),
+                                [&](const Branch& x) { return x.id == edit.branch; });
+    if (b == branches.end()) throw InvalidInput("there is no branch " + edit.branch);
+    if (b->baseNode < 0)
+        throw InvalidInput("branch " + edit.branch + " is a trunk: it cannot be locked");
+    const Index first = map[at(b->nodes.front())];
+    const Index baseNode = map[at(b->baseNode)];
+    if (first < 0 || baseNode < 0) throw InvalidInput("branch " + edit.branch + " is pruned");
+    const glm::vec3 base = s.position[at(baseNode)];
+    const std::vector<char> in = subtree(s, first);
+    std::vector<Index> local(s.size(), -1);
+    edit.lock = true;
+    edit.lockedBase = base;
+    edit.locked.clear();
+    edit.lockedLeaves.clear();
+    for (std::size_t i = at(first); i < s.size(); ++i) {
+        if (!in[i]) continue;
+        LockedNode n;
+        n.parent = static_cast<Index>(i) == first ? -1 : local[at(s.parent[i])];
+        n.order = s.order[i];
+        n.radius = s.radius[i];
+        n.offset = s.position[i] - base;
+        n.orientation = s.orientation[i];
+        local[i] = static_cast<Index>(edit.locked.size());
+        edit.locked.push_back(n);
+    }
+    for (const Leaf& leaf : s.leaves)
+        if (leaf.node >= 0 && static_cast<std::size_t>(leaf.node) < s.size() && in[at(leaf.node)])
+            edit.lockedLeaves.push_back(
+                {local[at(leaf.node)], leaf.size, leaf.position - base, leaf.orientation});
 }
 
 } // namespace sylva::skel

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -37,6 +38,25 @@ struct Branch {
 /// branch after its parent, a parent's branches by rank). Hidden nodes count like the others.
 std::vector<Branch> branchesOf(const Skeleton& skeleton);
 
+/// One node of a locked branch's kept geometry (BranchEdit::locked), in the skeleton's frame.
+struct LockedNode {
+    std::int32_t parent = -1; ///< index into the locked nodes; -1: the node the branch leaves
+    std::uint16_t order = 0;
+    float radius = 0.0f;
+    glm::vec3 offset{0.0f}; ///< from the branch's base, metres
+    glm::quat orientation{1, 0, 0, 0};
+    bool operator==(const LockedNode&) const = default;
+};
+
+/// A leaf card of a locked branch's kept geometry.
+struct LockedLeaf {
+    std::int32_t node = 0; ///< index into the locked nodes
+    float size = 1.0f;
+    glm::vec3 offset{0.0f}; ///< from the branch's base, metres
+    glm::quat orientation{1, 0, 0, 0};
+    bool operator==(const LockedLeaf&) const = default;
+};
+
 /// A hand edit of one branch (a project's "branch_edits"), applied after growth and before
 /// adaptation to obstacles.
 struct BranchEdit {
@@ -47,8 +67,14 @@ struct BranchEdit {
     std::optional<glm::vec3> bend;
     float length = 1.0f; ///< scale of the branch's own segments about its base, [0.05, 20]
     float radius = 1.0f; ///< scale of the radii of the branch and what it carries, [0.05, 20]
-    /// Keep the branch's geometry through regrowth. Stored and reported; not enforced yet.
+    /// Keep the branch's geometry through regrowth: with `locked` geometry, the branch and what
+    /// it carries are replaced by it (after the other edits, which it already holds); when the
+    /// id no longer exists but its parent does, it is grafted onto the parent's node nearest
+    /// `lockedBase`. Without geometry (lockBranch not yet run) the flag alone changes nothing.
     bool lock = false;
+    glm::vec3 lockedBase{0.0f}; ///< where the branch left its parent when locked
+    std::vector<LockedNode> locked;
+    std::vector<LockedLeaf> lockedLeaves;
 
     bool operator==(const BranchEdit&) const = default;
 };
@@ -66,6 +92,9 @@ struct BranchEditReport {
     std::size_t applied = 0;           ///< edits whose branch was found
     std::vector<std::string> orphaned; ///< ids of edits whose branch does not exist
     std::size_t prunedNodes = 0;       ///< nodes removed by prune edits
+    std::size_t reattached = 0; ///< locked edits grafted onto their parent (their id was gone)
+    /// Locked branches replaced by their kept geometry: id and the index of its first node.
+    std::vector<std::pair<std::string, std::int32_t>> grafted;
 };
 
 /// Applies \p edits to \p skeleton: ids are resolved on the skeleton as given; edits of
@@ -76,6 +105,11 @@ struct BranchEditReport {
 /// pruned one. \throw InvalidInput for an edit out of range.
 BranchEditReport applyBranchEdits(Skeleton& skeleton, const std::vector<BranchEdit>& edits,
                                   std::vector<std::int32_t>* nodeMap = nullptr);
+
+/// Sets \p edit's locked geometry (lock, lockedBase, locked, lockedLeaves) to its branch's
+/// subtree in \p grown with \p others (the tree's other edits) applied. \throw InvalidInput
+/// when \p grown has no branch edit.branch or it is a trunk.
+void lockBranch(const Skeleton& grown, const std::vector<BranchEdit>& others, BranchEdit& edit);
 
 /// The branches of \p grown (their ids) as \p edits leave them: pruned ones left out, the others'
 /// nodes, base, tip, length and radius those of the edited skeleton. What an editor lists and

@@ -186,3 +186,50 @@ TEST(BranchEdits, EveryBuildAppliesThemAfterGrowth) {
     EXPECT_EQ(afterOrphan.skeleton->position, before.skeleton->position);
     EXPECT_TRUE(before.stats.warnings.empty());
 }
+
+TEST(BranchEdits, ALockedBranchIsSavedAndKeptThroughAnotherSeed) {
+    doc::Project p = birch();
+    const Built grown = build(p);
+    const std::vector<skel::Branch> branches = skel::branchesOf(*grown.skeleton);
+    const skel::Branch* limb = nullptr;
+    for (const skel::Branch& b : branches)
+        if (b.order == 1 && (!limb || b.length > limb->length)) limb = &b;
+    ASSERT_TRUE(limb);
+    skel::BranchEdit lock;
+    lock.branch = limb->id;
+    lock.length = 0.7f;
+    skel::lockBranch(*grown.skeleton, {}, lock);
+    ASSERT_GT(lock.locked.size(), 3u);
+    p.instances[0].branchEdits = {lock};
+    // The kept geometry goes through the file exactly.
+    const QByteArray saved = doc::serializeProject(p);
+    EXPECT_TRUE(saved.contains("\"locked\"")) << saved.left(2000).toStdString();
+    const doc::Project back = doc::parseProject(saved, "p.sylva");
+    EXPECT_EQ(back.instances[0].branchEdits, p.instances[0].branchEdits);
+    EXPECT_EQ(doc::serializeProject(back), saved);
+    // Regrown from another seed (another topology): the locked branch is there, node for node.
+    p.instances[0].seed = 12;
+    const Built regrown = build(p);
+    EXPECT_EQ(regrown.stats.orphanedEdits, 0u);
+    const skel::Skeleton& s = *regrown.skeleton;
+    const std::size_t n = lock.locked.size();
+    ASSERT_GT(s.size(), n);
+    const std::size_t first = s.size() - n; // grafted nodes come last
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec3 d = s.position[first + i] - s.position[first];
+        const glm::vec3 kept = lock.locked[i].offset - lock.locked[0].offset;
+        EXPECT_NEAR(glm::length(d - kept), 0.0f, 1e-4f) << i;
+        EXPECT_EQ(s.radius[first + i], lock.locked[i].radius);
+    }
+    // Malformed kept geometry: refused with its place.
+    const std::string bad =
+        kHead + R"([ { "branch": "0.1", "lock": true, "locked": { "base": [0, 1, 0],
+        "nodes": [ [3, 1, 0.1, 0, 0, 0, 0, 0, 0, 1] ] } } ] } ] })";
+    EXPECT_NE(errorOf(bad).find("instances[0].branch_edits[0]: branch 0.1: locked node 0"),
+              std::string::npos)
+        << errorOf(bad);
+    const std::string unlocked =
+        kHead + R"([ { "branch": "0.1", "locked": { "nodes": [] } } ] } ] })";
+    EXPECT_NE(errorOf(unlocked).find("belongs to a locked edit"), std::string::npos)
+        << errorOf(unlocked);
+}

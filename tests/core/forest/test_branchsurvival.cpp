@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -30,10 +31,10 @@ struct Change {
     Value value;
 };
 
-std::vector<skel::Branch> grow(graph::Evaluator& e, std::uint64_t seed) {
+std::shared_ptr<const skel::Skeleton> growSkeleton(graph::Evaluator& e, std::uint64_t seed) {
     const graph::NodeOutput& out = e.evaluateNode(e.graph().skeletonSource(), true, seed);
     EXPECT_TRUE(out.skeleton);
-    return out.skeleton ? skel::branchesOf(*out.skeleton) : std::vector<skel::Branch>{};
+    return out.skeleton ? out.skeleton : std::make_shared<const skel::Skeleton>();
 }
 
 /// The edits an artist would make: one on every branch of order 1 and 2 (limbs and their
@@ -97,18 +98,30 @@ TEST(BranchSurvival, EditsOnLibrarySpeciesSurviveRegrowth) {
         const graph::SpeciesGraph g =
             sylva::testing::loadPreset(kPresets / (std::string(sp.name) + ".json"));
         graph::Evaluator base(g);
-        const std::vector<skel::Branch> grown = grow(base, 11);
+        const std::shared_ptr<const skel::Skeleton> seed11 = growSkeleton(base, 11);
+        const std::vector<skel::Branch> grown = skel::branchesOf(*seed11);
         const std::vector<std::string> ids = editedIds(grown, 2);
         const std::vector<std::string> limbs = editedIds(grown, 1);
         ASSERT_GT(ids.size(), 5u) << sp.name;
         std::printf("%s: %zu branches, %zu edits (orders 1-2)\n", sp.name, grown.size(),
                     ids.size());
+        // The same edits locked: each keeps its branch's geometry as grown from seed 11.
+        std::vector<skel::BranchEdit> locked;
+        for (const std::string& id : ids) {
+            skel::BranchEdit e;
+            e.branch = id;
+            e.lock = true;
+            skel::lockBranch(*seed11, {}, e);
+            locked.push_back(std::move(e));
+        }
+        std::shared_ptr<const skel::Skeleton> last;
         auto regrow = [&](const Change& c) {
             graph::Evaluator e(g);
             if (!c.node.empty()) {
                 e.setParam(c.node, c.key, c.value);
             }
-            return grow(e, c.seed);
+            last = growSkeleton(e, c.seed);
+            return skel::branchesOf(*last);
         };
         for (const Change& c : sp.sameTopology) {
             const std::vector<skel::Branch> now = regrow(c);
@@ -123,9 +136,17 @@ TEST(BranchSurvival, EditsOnLibrarySpeciesSurviveRegrowth) {
             // Limbs (order 1), the branches hand edits mostly shape, keep their ids; deeper
             // branches lose theirs more often (their parents' branch counts change).
             EXPECT_GE(share(limbs, now), 0.9) << sp.name << " " << c.what;
-            std::printf(
-                "  %-26s new topology:  %5.1f %% re-attach (order 1 only: %5.1f %% of %zu)\n",
-                c.what.c_str(), 100.0 * s, 100.0 * share(limbs, now), limbs.size());
+            skel::Skeleton edited = *last;
+            const skel::BranchEditReport r = skel::applyBranchEdits(edited, locked);
+            const double kept =
+                1.0 - static_cast<double>(r.orphaned.size()) / static_cast<double>(locked.size());
+            EXPECT_NO_THROW(edited.validate());
+            // Locked edits keep their branch: grafted onto their parent where their id is gone.
+            EXPECT_GE(kept, 0.9) << sp.name << " " << c.what;
+            std::printf("  %-26s new topology:  %5.1f %% re-attach (order 1 only: %5.1f %% of "
+                        "%zu); locked: %5.1f %%\n",
+                        c.what.c_str(), 100.0 * s, 100.0 * share(limbs, now), limbs.size(),
+                        100.0 * kept);
         }
     }
     std::printf("worst share after a topology change: %.1f %%\n", 100.0 * worstTopology);

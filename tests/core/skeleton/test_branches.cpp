@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/forest/metrics.h"
 #include "engine/skeleton/branches.h"
@@ -175,4 +176,55 @@ TEST(BranchEdits, EditedBranchesKeepTheGrownIds) {
     EXPECT_EQ(bs[1].nodes, std::vector<std::int32_t>{5});
     EXPECT_NEAR(bs[1].tip.x, 0.0f, 1e-5f);
     EXPECT_GT(bs[1].tip.y, 2.0f);
+}
+
+TEST(BranchEdits, ALockedBranchKeepsItsGeometryThroughRegrowth) {
+    skel::BranchEdit e = edit("0.0", false, {}, 0.5f);
+    e.lock = true;
+    skel::lockBranch(sample(), {}, e);
+    ASSERT_EQ(e.locked.size(), 4u); // 5, 6, 7 and the twig 9
+    ASSERT_EQ(e.lockedLeaves.size(), 1u);
+    EXPECT_EQ(e.lockedBase, glm::vec3(0, 1, 0));
+    EXPECT_NO_THROW(skel::validate(e));
+    // Regrown larger (the same topology, other lengths): the locked branch keeps its shape,
+    // shortened as it was when locked, at its parent's node where it now is.
+    skel::Skeleton s = sample(1.7f);
+    const skel::BranchEditReport r = skel::applyBranchEdits(s, {e});
+    EXPECT_EQ(r.applied, 1u);
+    EXPECT_NO_THROW(s.validate());
+    EXPECT_EQ(s.size(), 10u);
+    const std::vector<skel::Branch> bs = skel::branchesOf(s);
+    const skel::Branch* a = find(bs, "0.0");
+    ASSERT_TRUE(a);
+    EXPECT_EQ(a->base, glm::vec3(0, 1.7f, 0));
+    EXPECT_NEAR(a->length, 0.5f * 3.0f * std::sqrt(1.04f), 1e-4f);
+    EXPECT_EQ(s.leaves.size(), 1u);
+    // Listed with the grown tree's ids.
+    const std::vector<skel::Branch> listed = skel::editedBranches(sample(1.7f), {e});
+    ASSERT_TRUE(find(listed, "0.0"));
+    EXPECT_NEAR(find(listed, "0.0")->length, a->length, 1e-5f);
+    // What it carries is kept with it: not listed, not edited on its own.
+    EXPECT_FALSE(find(listed, "0.0.0"));
+}
+
+TEST(BranchEdits, ALockedBranchWhoseIdIsGoneIsGraftedOntoItsParent) {
+    skel::BranchEdit e = edit("0.1");
+    e.lock = true;
+    skel::lockBranch(sample(), {}, e);
+    // Regrown without branch B (node 8): "0.1" is gone; it comes back at the trunk's node 2.
+    skel::Skeleton s = sample();
+    skel::applyBranchEdits(s, {edit("0.1", true)});
+    ASSERT_EQ(skel::branchesOf(s).size(), 3u);
+    const skel::BranchEditReport r = skel::applyBranchEdits(s, {e});
+    EXPECT_EQ(r.reattached, 1u);
+    EXPECT_TRUE(r.orphaned.empty());
+    EXPECT_EQ(s.size(), 10u);
+    EXPECT_EQ(s.position.back(), glm::vec3(-1, 2.2f, 0));
+    EXPECT_EQ(s.parent.back(), 2);
+    // Without its geometry a lock changes nothing and an edit of a missing branch is orphaned.
+    skel::Skeleton t = sample();
+    skel::applyBranchEdits(t, {edit("0.1", true)});
+    skel::BranchEdit flagOnly = edit("0.1");
+    flagOnly.lock = true;
+    EXPECT_EQ(skel::applyBranchEdits(t, {flagOnly}).orphaned.size(), 1u);
 }
