@@ -52,6 +52,24 @@ for tree, branch in [(tid, "0.999"), (987654, "0.1")]:
         pass
 assert doc.serialized() == state
 
+# Lock it: its geometry (bent, shortened) is kept through a regrowth from another seed.
+doc.edit_branch(tid, limb["id"], lock=True)
+assert doc.branch_edits(tid)[0]["lock"] and doc.branch_edits(tid)[0]["locked_nodes"] > 1
+try:
+    doc.edit_branch(tid, limb["id"], length=0.5)
+    raise AssertionError("a locked branch changed")
+except ValueError as e:
+    assert "is locked" in str(e), e
+seed = doc.tree(tid).seed
+doc.set_tree(tid, seed=seed + 1)
+kept = {b["id"]: b for b in doc.branches(tid)}[limb["id"]]
+assert abs(kept["length"] - bent["length"]) < 1e-4 * bent["length"], (kept, bent)
+assert all(abs(a - b) < 1e-4 for a, b in zip(
+    [t - b for t, b in zip(kept["tip"], kept["base"])], d)), (kept, bent)
+doc.undo()  # the seed
+doc.edit_branch(tid, limb["id"], lock=False)
+assert "lock" not in doc.branch_edits(tid)[0]
+
 doc.clear_branch_edits(tid)
 assert doc.branch_edits(tid) == []
 assert doc.undo_texts()[-1] == "Clear branch edits"
