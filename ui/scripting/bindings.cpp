@@ -126,6 +126,7 @@ py::dict generate() {
     stats["instanced"] = static_cast<std::size_t>(stat("instanced"));
     stats["unique"] = static_cast<std::size_t>(stat("unique"));
     stats["variants"] = static_cast<std::size_t>(stat("variants"));
+    stats["orphaned_edits"] = static_cast<std::size_t>(stat("orphaned_edits"));
     stats["ms"] = r.elapsedMs;
     stats["edit_to_result_ms"] = w.generator().editToResultMs();
     return stats;

@@ -51,6 +51,7 @@ for tree, branch in [(tid, "0.999"), (987654, "0.1")]:
     except ValueError:
         pass
 assert doc.serialized() == state
+assert doc.generate()["orphaned_edits"] == 0
 
 # Lock it: its geometry (bent, shortened) is kept through a regrowth from another seed.
 doc.edit_branch(tid, limb["id"], lock=True)
