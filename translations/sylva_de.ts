@@ -214,6 +214,18 @@
         <source>Change tree season</source>
         <translation>Jahreszeit des Baums ändern</translation>
     </message>
+    <message>
+        <source>Edit branch</source>
+        <translation>Ast bearbeiten</translation>
+    </message>
+    <message>
+        <source>Prune branch</source>
+        <translation>Ast entfernen</translation>
+    </message>
+    <message>
+        <source>Clear branch edits</source>
+        <translation>Astbearbeitungen löschen</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>

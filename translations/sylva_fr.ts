@@ -214,6 +214,18 @@
         <source>Change tree season</source>
         <translation>Changer la saison de l&apos;arbre</translation>
     </message>
+    <message>
+        <source>Edit branch</source>
+        <translation>Modifier la branche</translation>
+    </message>
+    <message>
+        <source>Prune branch</source>
+        <translation>Élaguer la branche</translation>
+    </message>
+    <message>
+        <source>Clear branch edits</source>
+        <translation>Effacer les modifications des branches</translation>
+    </message>
 </context>
 <context>
     <name>Document</name>

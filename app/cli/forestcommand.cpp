@@ -110,6 +110,8 @@ int runForest(const std::vector<std::string>& argv) {
         std::fprintf(stderr,
                      "sylva-cli: warning: domain %zu: placed %zu of %zu '%s' (no room left)\n",
                      s.domain + 1, s.placed, s.requested, report.species[s.species].c_str());
+    for (const std::string& w : report.stats.warnings)
+        std::fprintf(stderr, "sylva-cli: warning: %s\n", w.c_str());
     if (args.flag("--stats")) {
         const std::string json = doc::exportStatsJson(report, omp_get_max_threads()) + "\n";
         std::fwrite(json.data(), 1, json.size(), stdout);

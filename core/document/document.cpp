@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include <QDir>
 #include <QFile>
@@ -109,6 +110,19 @@ const ProjectInstance& Document::tree(TreeId id) const {
     return mProject.instances[static_cast<std::size_t>(i)];
 }
 
+namespace {
+
+void checkBranchEdits(const std::vector<skel::BranchEdit>& edits) {
+    std::set<std::string> seen;
+    for (const skel::BranchEdit& e : edits) {
+        checkBranchEdit(e, "branch edit");
+        if (!seen.insert(e.branch).second)
+            throw InvalidInput("branch " + e.branch + " is edited twice");
+    }
+}
+
+} // namespace
+
 void Document::validateTree(const ProjectInstance& t) const {
     if (speciesIndex(t.species) < 0) {
         std::string known;
@@ -123,6 +137,7 @@ void Document::validateTree(const ProjectInstance& t) const {
     requireRange("tree scale", t.scale, 0.01, 100);
     requireRange("tree growth", t.growth, 0.01, 1);
     if (!t.season.empty()) (void)mesh::parseSeason(t.season);
+    checkBranchEdits(t.branchEdits);
 }
 
 TreeId Document::addTree(const ProjectInstance& t) {
@@ -187,6 +202,40 @@ ProjectInstance Document::rawRemoveTree(TreeId id) {
     pruneSelection();
     emitChange(DocumentChange::Trees, {id});
     return t;
+}
+
+const std::vector<skel::BranchEdit>& Document::branchEdits(TreeId id) const {
+    return tree(id).branchEdits;
+}
+
+void Document::setBranchEdits(TreeId id, const std::vector<skel::BranchEdit>& edits) {
+    (void)tree(id);
+    checkBranchEdits(edits);
+    mUndo.push(cmd::changeBranchEdits(*this, id, edits));
+}
+
+void Document::editBranch(TreeId id, const skel::BranchEdit& edit) {
+    checkBranchEdit(edit, "branch edit");
+    std::vector<skel::BranchEdit> edits = tree(id).branchEdits;
+    auto same = std::find_if(edits.begin(), edits.end(),
+                             [&](const skel::BranchEdit& e) { return e.branch == edit.branch; });
+    if (isEmptyEdit(edit)) {
+        if (same != edits.end()) edits.erase(same);
+    } else if (same != edits.end()) {
+        *same = edit;
+    } else {
+        edits.push_back(edit);
+    }
+    setBranchEdits(id, edits);
+}
+
+void Document::clearBranchEdits(TreeId id) {
+    setBranchEdits(id, {});
+}
+
+void Document::rawSetBranchEdits(TreeId id, const std::vector<skel::BranchEdit>& edits) {
+    mProject.instances[static_cast<std::size_t>(treeIndex(id))].branchEdits = edits;
+    emitChange(DocumentChange::Trees, {id});
 }
 
 void Document::rawSetTree(TreeId id, const ProjectInstance& t) {

@@ -196,6 +196,20 @@ public:
     /// step. \throw InvalidInput naming the setting and its allowed range (wind::validate).
     void setWind(const std::optional<ProjectWind>& wind);
 
+    // --- hand edits of single branches (docs/branch-edits.md) -------------------------------
+    /// \throw InvalidInput for an unknown tree.
+    const std::vector<skel::BranchEdit>& branchEdits(TreeId id) const;
+    /// Replaces all of a tree's branch edits; one undo step. \throw InvalidInput for an
+    /// unknown tree, an edit out of range (naming its setting and range) or a branch edited
+    /// twice. Whether the branches exist is not checked here: an edit of a branch the grown
+    /// tree lacks is kept and reported (orphaned).
+    void setBranchEdits(TreeId id, const std::vector<skel::BranchEdit>& edits);
+    /// Sets the edit of one branch (edit.branch), replacing its former one; an edit that changes
+    /// nothing removes it. One undo step, like setBranchEdits.
+    void editBranch(TreeId id, const skel::BranchEdit& edit);
+    /// Removes every branch edit of a tree; one undo step (none when it had none).
+    void clearBranchEdits(TreeId id);
+
     // --- selection (not undoable) ----------------------------------------------------------
     const QList<ItemRef>& selection() const { return mSelection; }
     QList<TreeId> selectedTrees() const;
@@ -206,6 +220,7 @@ public:
     void rawInsertTree(int index, TreeId id, const ProjectInstance& tree);
     ProjectInstance rawRemoveTree(TreeId id);
     void rawSetTree(TreeId id, const ProjectInstance& tree);
+    void rawSetBranchEdits(TreeId id, const std::vector<skel::BranchEdit>& edits);
     void rawSetSpecies(int index, const ProjectSpecies& species, const QString& node);
     void rawInsertSpecies(int index, const ProjectSpecies& species);
     void rawRemoveSpecies(int index);

@@ -39,7 +39,8 @@ UpgradeReport upgradeFormat(sylva::Value::Object& root, const std::string& forma
         if (!step)
             throw InvalidInput(where + "no upgrade from format_version " + std::to_string(v));
         step->apply(root);
-        report.applied.push_back(step->description);
+        // A step with no description only allows new keys: nothing a user needs to hear of.
+        if (!step->description.empty()) report.applied.push_back(step->description);
     }
     root["format_version"] = sylva::Value(current);
     return report;

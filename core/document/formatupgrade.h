@@ -13,7 +13,7 @@ namespace sylva::doc {
 /// see the current version (the Glaxnimate approach; version checks live nowhere else).
 struct UpgradeStep {
     int from = 0;
-    std::string description;
+    std::string description; ///< reported on load; empty: a step that only allows new keys
     std::function<void(sylva::Value::Object&)> apply;
 };
 

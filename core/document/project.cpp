@@ -142,6 +142,80 @@ std::string checkedSeason(const std::string& name, const std::string& where) {
     }
 }
 
+skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
+    static const std::set<std::string> keys = {"branch", "prune", "bend",  "length",
+                                               "radius", "lock",  "locked"};
+    for (const auto& [key, value] : v.toObject(where))
+        if (!keys.count(key))
+            throw InvalidInput(
+                where + ": unknown key \"" + key +
+                "\" (a branch edit has branch, prune, bend, length, radius, lock, locked)");
+    skel::BranchEdit e;
+    const Value* branch = v.find("branch");
+    if (!branch || !branch->isString())
+        throw InvalidInput(where + " needs a \"branch\" id such as \"0.3\"");
+    e.branch = branch->toString();
+    if (const Value* b = v.find("prune")) e.prune = b->toBool(where + ".prune");
+    if (const Value* b = v.find("lock")) e.lock = b->toBool(where + ".lock");
+    if (const Value* b = v.find("bend")) e.bend = vec3Of(*b, where + ".bend");
+    if (const Value* x = v.find("length"))
+        e.length = static_cast<float>(x->toNumber(where + ".length"));
+    if (const Value* x = v.find("radius"))
+        e.radius = static_cast<float>(x->toNumber(where + ".radius"));
+    if (const Value* locked = v.find("locked")) {
+        const std::string at = where + ".locked";
+        if (!e.lock) throw InvalidInput(at + " belongs to a locked edit (\"lock\": true)");
+        auto numbers = [](const Value& row, std::size_t n, const std::string& what) {
+            const Value::Array& a = row.toArray(what);
+            if (a.size() != n)
+                throw InvalidInput(what + " needs " + std::to_string(n) + " numbers");
+            std::vector<double> out;
+            for (const Value& x : a)
+                out.push_back(x.toNumber(what));
+            return out;
+        };
+        auto quat = [](const std::vector<double>& r, std::size_t i) {
+            glm::quat q;
+            q.x = static_cast<float>(r[i]);
+            q.y = static_cast<float>(r[i + 1]);
+            q.z = static_cast<float>(r[i + 2]);
+            q.w = static_cast<float>(r[i + 3]);
+            return q;
+        };
+        auto vec = [](const std::vector<double>& r, std::size_t i) {
+            return glm::vec3(static_cast<float>(r[i]), static_cast<float>(r[i + 1]),
+                             static_cast<float>(r[i + 2]));
+        };
+        e.lockedBase = vec3Or(*locked, "base", glm::vec3(0.0f), at);
+        if (const Value* nodes = locked->find("nodes"))
+            for (const Value& row : nodes->toArray(at + ".nodes")) {
+                // [parent, order, radius, offset x, y, z, orientation x, y, z, w]
+                const std::vector<double> r = numbers(row, 10, at + ".nodes[]");
+                skel::LockedNode n;
+                if (r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]) || r[1] < 0 ||
+                    r[1] > 65535 || r[0] < -1 || r[0] > 1e9)
+                    throw InvalidInput(at + ".nodes[]: parent and order must be whole numbers");
+                n.parent = static_cast<std::int32_t>(r[0]);
+                n.order = static_cast<std::uint16_t>(r[1]);
+                n.radius = static_cast<float>(r[2]);
+                n.offset = vec(r, 3);
+                n.orientation = quat(r, 6);
+                e.locked.push_back(n);
+            }
+        if (const Value* leaves = locked->find("leaves"))
+            for (const Value& row : leaves->toArray(at + ".leaves")) {
+                // [node, size, offset x, y, z, orientation x, y, z, w]
+                const std::vector<double> r = numbers(row, 9, at + ".leaves[]");
+                if (r[0] != std::floor(r[0]) || r[0] < 0 || r[0] > 1e9)
+                    throw InvalidInput(at + ".leaves[]: node must be a whole number");
+                e.lockedLeaves.push_back({static_cast<std::int32_t>(r[0]), static_cast<float>(r[1]),
+                                          vec(r, 2), quat(r, 5)});
+            }
+    }
+    checkBranchEdit(e, where);
+    return e;
+}
+
 ProjectInstance parseInstance(const Value& v, std::size_t i) {
     const std::string where = "instances[" + std::to_string(i) + "]";
     ProjectInstance in;
@@ -156,6 +230,17 @@ ProjectInstance parseInstance(const Value& v, std::size_t i) {
     in.growth = v.number("growth", 1.0);
     requireRange((where + ".growth").c_str(), in.growth, 0.0, 1.0);
     in.season = checkedSeason(v.string("season", ""), where + ".season");
+    if (const Value* edits = v.find("branch_edits")) {
+        const Value::Array& a = edits->toArray(where + ".branch_edits");
+        std::set<std::string> seen;
+        for (std::size_t k = 0; k < a.size(); ++k) {
+            const std::string at = where + ".branch_edits[" + std::to_string(k) + "]";
+            skel::BranchEdit e = parseBranchEdit(a[k], at);
+            if (!seen.insert(e.branch).second)
+                throw InvalidInput(at + ": branch " + e.branch + " is edited twice");
+            in.branchEdits.push_back(std::move(e));
+        }
+    }
     return in;
 }
 
@@ -171,6 +256,41 @@ ProjectObstacle parseObstacle(const Value& v, std::size_t i) {
 }
 
 } // namespace
+
+void checkBranchEdit(const skel::BranchEdit& e, const std::string& where) {
+    const bool idOk = !e.branch.empty() && e.branch.front() != '.' && e.branch.back() != '.' &&
+                      e.branch.find("..") == std::string::npos &&
+                      std::all_of(e.branch.begin(), e.branch.end(),
+                                  [](char c) { return c == '.' || (c >= '0' && c <= '9'); }) &&
+                      e.branch.size() <= 200;
+    if (!idOk)
+        throw InvalidInput(where + ".branch \"" + e.branch +
+                           "\" is not a branch id (ranks joined by dots, such as \"0.3.1\")");
+    auto scale = [&](const char* name, float x) {
+        if (!(x >= skel::kBranchScaleMin && x <= skel::kBranchScaleMax)) {
+            char buf[32];
+            const auto res = std::to_chars(buf, buf + sizeof buf, x);
+            throw InvalidInput(where + "." + name + " " + std::string(buf, res.ptr) +
+                               " is out of range [0.05, 20]");
+        }
+    };
+    scale("length", e.length);
+    scale("radius", e.radius);
+    if (e.bend && !(std::isfinite(e.bend->x) && std::isfinite(e.bend->y) &&
+                    std::isfinite(e.bend->z) && glm::length(*e.bend) > 1e-6f))
+        throw InvalidInput(where + ".bend must be a non-zero direction [x, y, z]");
+    if (e.prune && e.branch.find('.') == std::string::npos)
+        throw InvalidInput(where + ": branch " + e.branch + " is a trunk and cannot be pruned");
+    try {
+        skel::validate(e); // the locked geometry's structure
+    } catch (const InvalidInput& x) {
+        throw InvalidInput(where + ": " + x.what());
+    }
+}
+
+bool isEmptyEdit(const skel::BranchEdit& e) {
+    return !e.prune && !e.bend && e.length == 1.0f && e.radius == 1.0f && !e.lock;
+}
 
 const std::vector<UpgradeStep>& projectUpgrades() {
     // format_version 1 is the first released format; steps go here, in order.
@@ -190,6 +310,9 @@ const std::vector<UpgradeStep>& projectUpgrades() {
                  for (Value& d : it->second.arrayRef())
                      if (d.isObject()) d.objectRef()["id"] = static_cast<double>(domain++);
          }},
+        // Nothing to rewrite: format 3 only adds "branch_edits", which a format-2 file has
+        // none of. No description, so that opening a format-2 file reports no upgrade.
+        {2, "", [](Value::Object&) {}},
     };
     return steps;
 }
@@ -407,6 +530,7 @@ QByteArray serializeProject(const Project& project) {
     }
     root["domains"] = Value(std::move(domains));
     Value::Array instances;
+    bool anyEdits = false;
     for (const ProjectInstance& in : p.instances) {
         Value::Object o{{"id", static_cast<double>(in.id)},
                         {"species", in.species},
@@ -417,6 +541,45 @@ QByteArray serializeProject(const Project& project) {
                         {"growth", in.growth}};
         // Only when set: a project without seasons saves as it did before they existed.
         if (!in.season.empty()) o["season"] = in.season;
+        if (!in.branchEdits.empty()) {
+            Value::Array edits;
+            for (const skel::BranchEdit& e : in.branchEdits) {
+                Value::Object eo{{"branch", e.branch}};
+                if (e.prune) eo["prune"] = true;
+                if (e.bend) eo["bend"] = arrayOf(*e.bend);
+                if (e.length != 1.0f) eo["length"] = decimalOf(e.length);
+                if (e.radius != 1.0f) eo["radius"] = decimalOf(e.radius);
+                if (e.lock) eo["lock"] = true;
+                if (e.lock && !e.locked.empty()) {
+                    auto q = [](Value::Array& row, const glm::quat& r) {
+                        for (float f : {r.x, r.y, r.z, r.w})
+                            row.emplace_back(decimalOf(f));
+                    };
+                    Value::Array nodes, leaves;
+                    for (const skel::LockedNode& n : e.locked) {
+                        Value::Array row{
+                            static_cast<double>(n.parent), static_cast<double>(n.order),
+                            decimalOf(n.radius),           decimalOf(n.offset.x),
+                            decimalOf(n.offset.y),         decimalOf(n.offset.z)};
+                        q(row, n.orientation);
+                        nodes.emplace_back(std::move(row));
+                    }
+                    for (const skel::LockedLeaf& l : e.lockedLeaves) {
+                        Value::Array row{static_cast<double>(l.node), decimalOf(l.size),
+                                         decimalOf(l.offset.x), decimalOf(l.offset.y),
+                                         decimalOf(l.offset.z)};
+                        q(row, l.orientation);
+                        leaves.emplace_back(std::move(row));
+                    }
+                    eo["locked"] = Value::Object{{"base", arrayOf(e.lockedBase)},
+                                                 {"nodes", Value(std::move(nodes))},
+                                                 {"leaves", Value(std::move(leaves))}};
+                }
+                edits.emplace_back(std::move(eo));
+            }
+            o["branch_edits"] = Value(std::move(edits));
+            anyEdits = true;
+        }
         instances.emplace_back(std::move(o));
     }
     root["instances"] = Value(std::move(instances));
@@ -437,6 +600,9 @@ QByteArray serializeProject(const Project& project) {
                                      {"gustiness", decimalOf(p.wind->gustiness)},
                                      {"frequency", decimalOf(p.wind->frequency)}};
     if (!p.season.empty()) root["season"] = p.season;
+    // Format 3 only adds branch edits: a project without any is a format-2 file, and a file
+    // written before keeps its bytes through opening and saving.
+    if (!anyEdits) root["format_version"] = 2;
     return QByteArray::fromStdString(Value(std::move(root)).toPrettyJson() + "\n");
 }
 

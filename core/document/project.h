@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "document/formatupgrade.h"
+#include "engine/skeleton/branches.h"
 #include "engine/util/value.h"
 
 namespace sylva::doc {
@@ -19,7 +20,9 @@ namespace sylva::doc {
 /// Current version of the project format ("format": "sylva-project").
 /// 2 (Sylva 0.30, issue 30): trees and domains carry stable ids, species their variant count,
 /// and domains scatter independently of hand-placed trees (see projectUpgrades()).
-inline constexpr int kProjectFormatVersion = 2;
+/// 3 (issue 43): hand-placed trees may carry "branch_edits"; a project without any is still
+/// saved as format 2, so files written before keep their bytes (see serializeProject()).
+inline constexpr int kProjectFormatVersion = 3;
 
 /// Ids of hand-placed trees are in [1, kMaxTreeId] (domain trees' ids are above: see
 /// placement::kDomainIdStride); domain ids in [1, kMaxDomainId].
@@ -67,6 +70,10 @@ struct ProjectInstance {
     double growth = 1.0; ///< growth stage 0..1
     /// The tree's own season ("spring", "summer", "autumn", "winter"); empty: the project's.
     std::string season;
+    /// Hand edits of single branches by their stable ids ("branch_edits"; docs/branch-edits.md),
+    /// applied after growth and before adaptation. At most one edit a branch; bend is a world
+    /// direction.
+    std::vector<skel::BranchEdit> branchEdits;
     bool operator==(const ProjectInstance&) const = default;
 };
 
@@ -157,6 +164,12 @@ Project importReferenceScene(const QString& path);
 /// A `.sylva` project (loadProject), or the reference implementation's scene description (it
 /// has "plants" and no "format"; importReferenceScene). What sylva-cli and the editor open.
 Project loadProjectOrScene(const QString& path, LoadReport* report = nullptr);
+
+/// Checks one branch edit as the file and the Document accept it; InvalidInput names \p where,
+/// the setting and its range.
+void checkBranchEdit(const skel::BranchEdit& edit, const std::string& where);
+/// Whether \p edit changes nothing (no prune, bend, length, radius or lock): not kept.
+bool isEmptyEdit(const skel::BranchEdit& edit);
 
 /// The project format's upgrade steps (exposed for tests).
 const std::vector<UpgradeStep>& projectUpgrades();

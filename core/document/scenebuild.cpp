@@ -91,6 +91,7 @@ forest::ForestScene makeForestScene(const Project& original) {
         in.handPlaced = true;
         if (!pi.season.empty()) in.season = static_cast<std::int8_t>(mesh::parseSeason(pi.season));
         s.handPlaced.push_back(in);
+        if (!pi.branchEdits.empty()) s.branchEdits[pi.id] = pi.branchEdits;
     }
     return s;
 }

@@ -128,6 +128,9 @@ py::dict statsDict(const forest::ForestStats& stats, const forest::ForestScene& 
     }
     d["shortfall"] = missing;
     d["shortfalls"] = shortfalls;
+    d["branch_edits"] = stats.branchEdits;
+    d["orphaned_edits"] = stats.orphanedEdits;
+    d["warnings"] = stats.warnings;
     const forest::SceneMetrics& m = stats.metrics;
     py::dict metrics;
     metrics["trees"] = m.trees;
@@ -660,6 +663,35 @@ void bindForest(py::module_& m) {
             },
             py::arg("id"), py::arg("season"),
             "a hand-placed tree's own season, by its id (None: the project's)")
+        .def(
+            "edit_branch",
+            [](Project& p, std::uint64_t id, const std::string& branch, const py::object& prune,
+               const py::object& bend, const py::object& length, const py::object& radius,
+               const py::object& lock) {
+                for (doc::ProjectInstance& t : p.project.instances)
+                    if (t.id == id) {
+                        t.branchEdits = withBranchEdit(t.branchEdits,
+                                                       branchEditFrom(t.branchEdits, branch, prune,
+                                                                      bend, length, radius, lock));
+                        return;
+                    }
+                throw InvalidInput("there is no tree " + std::to_string(id));
+            },
+            py::arg("id"), py::arg("branch"), py::arg("prune") = py::none(),
+            py::arg("bend") = py::none(), py::arg("length") = py::none(),
+            py::arg("radius") = py::none(), py::arg("lock") = py::none(),
+            "a hand edit of one branch of a hand-placed tree, by the branch's stable id "
+            "(docs/branch-edits.md): None leaves a setting; prune=False, bend=(), length=1.0, "
+            "radius=1.0, lock=False clear it; an edit of a branch the tree lacks is kept and "
+            "reported when the forest is built")
+        .def(
+            "branch_edits",
+            [](const Project& p, std::uint64_t id) {
+                for (const doc::ProjectInstance& t : p.project.instances)
+                    if (t.id == id) return branchEditsList(t.branchEdits);
+                throw InvalidInput("there is no tree " + std::to_string(id));
+            },
+            py::arg("id"), "a hand-placed tree's branch edits as dicts")
         .def(
             "add_obstacle",
             [](Project& p, const py::object& file, const py::object& vertices,

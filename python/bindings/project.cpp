@@ -2,6 +2,8 @@
 
 #include <QDir>
 
+#include <algorithm>
+
 #include "document/scenebuild.h"
 #include "engine/environment/obstaclescene.h"
 #include "engine/mesh/season.h"
@@ -115,6 +117,92 @@ env::MeshTransform transformFrom(const py::handle& translate, const py::handle& 
     t.rotateDeg = o.rotate;
     t.scale = o.scale;
     return t;
+}
+
+py::list branchEditsList(const std::vector<skel::BranchEdit>& edits) {
+    py::list out;
+    for (const skel::BranchEdit& e : edits) {
+        py::dict d;
+        d["branch"] = e.branch;
+        if (e.prune) d["prune"] = true;
+        if (e.bend) d["bend"] = fromVec3(*e.bend);
+        if (e.length != 1.0f) d["length"] = e.length;
+        if (e.radius != 1.0f) d["radius"] = e.radius;
+        if (e.lock) d["lock"] = true;
+        if (e.lock && !e.locked.empty()) d["locked_nodes"] = e.locked.size();
+        out.append(d);
+    }
+    return out;
+}
+
+skel::BranchEdit branchEditFrom(const std::vector<skel::BranchEdit>& edits,
+                                const std::string& branch, const py::object& prune,
+                                const py::object& bend, const py::object& length,
+                                const py::object& radius, const py::object& lock) {
+    skel::BranchEdit e;
+    e.branch = branch;
+    for (const skel::BranchEdit& old : edits)
+        if (old.branch == branch) e = old;
+    const bool unlocking = !lock.is_none() && !lock.cast<bool>();
+    if (e.lock && !e.locked.empty() && !unlocking &&
+        !(prune.is_none() && bend.is_none() && length.is_none() && radius.is_none()))
+        throw InvalidInput("branch " + branch +
+                           " is locked: unlock it (lock=False) before changing it");
+    if (!prune.is_none()) e.prune = prune.cast<bool>();
+    if (!lock.is_none()) {
+        e.lock = lock.cast<bool>();
+        if (!e.lock) { // unlocked: the kept geometry goes too
+            e.lockedBase = glm::vec3(0.0f);
+            e.locked.clear();
+            e.lockedLeaves.clear();
+        }
+    }
+    if (!length.is_none()) e.length = length.cast<float>();
+    if (!radius.is_none()) e.radius = radius.cast<float>();
+    if (!bend.is_none()) {
+        if (py::isinstance<py::bool_>(bend)) {
+            if (bend.cast<bool>()) throw InvalidInput("bend needs three numbers (x, y, z)");
+            e.bend.reset();
+        } else if (py::len(bend) == 0) {
+            e.bend.reset();
+        } else {
+            e.bend = toVec3(bend, "bend");
+        }
+    }
+    doc::checkBranchEdit(e, "branch edit");
+    return e;
+}
+
+std::vector<skel::BranchEdit> withBranchEdit(std::vector<skel::BranchEdit> edits,
+                                             const skel::BranchEdit& edit) {
+    doc::checkBranchEdit(edit, "branch edit");
+    auto same = std::find_if(edits.begin(), edits.end(),
+                             [&](const skel::BranchEdit& e) { return e.branch == edit.branch; });
+    if (doc::isEmptyEdit(edit)) {
+        if (same != edits.end()) edits.erase(same);
+    } else if (same != edits.end()) {
+        *same = edit;
+    } else {
+        edits.push_back(edit);
+    }
+    return edits;
+}
+
+py::list branchesList(const std::vector<skel::Branch>& branches, const glm::mat4& transform,
+                      float scale) {
+    py::list out;
+    for (const skel::Branch& b : branches) {
+        py::dict d;
+        d["id"] = b.id;
+        d["parent"] = b.parent.empty() ? py::object(py::none()) : py::object(py::str(b.parent));
+        d["order"] = b.order;
+        d["base"] = fromVec3(glm::vec3(transform * glm::vec4(b.base, 1.0f)));
+        d["tip"] = fromVec3(glm::vec3(transform * glm::vec4(b.tip, 1.0f)));
+        d["length"] = b.length * scale;
+        d["radius"] = b.baseRadius * scale;
+        out.append(d);
+    }
+    return out;
 }
 
 py::list domainsList(const std::vector<doc::PlacementDomain>& domains) {

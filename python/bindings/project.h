@@ -76,6 +76,25 @@ void applyTransform(doc::ProjectObstacle& o, const py::handle& translate, const 
 env::MeshTransform transformFrom(const py::handle& translate, const py::handle& rotate,
                                  const py::handle& scale);
 
+/// A tree's branch edits as dicts: branch, and of prune, bend (x, y, z), length, radius, lock
+/// those that are set (docs/branch-edits.md).
+py::list branchEditsList(const std::vector<skel::BranchEdit>& edits);
+/// The edit of \p branch in \p edits (a default one when it has none) with the given settings
+/// changed: None leaves a setting; prune=False, bend=False or (), length=1.0, radius=1.0 and
+/// lock=False clear it. Ranges are checked where the edit is set (doc::checkBranchEdit).
+skel::BranchEdit branchEditFrom(const std::vector<skel::BranchEdit>& edits,
+                                const std::string& branch, const py::object& prune,
+                                const py::object& bend, const py::object& length,
+                                const py::object& radius, const py::object& lock);
+/// \p edits with \p edit set (replacing the edit of its branch; removed when it changes
+/// nothing). \throw InvalidInput for an edit out of range.
+std::vector<skel::BranchEdit> withBranchEdit(std::vector<skel::BranchEdit> edits,
+                                             const skel::BranchEdit& edit);
+/// Branches as dicts: id, parent (None for a trunk), order, base and tip (x, y, z) through
+/// \p transform, length and radius times \p scale (docs/branch-edits.md).
+py::list branchesList(const std::vector<skel::Branch>& branches, const glm::mat4& transform,
+                      float scale);
+
 /// Placement domains as dicts: id, shape, min, max (x, z), counts.
 py::list domainsList(const std::vector<doc::PlacementDomain>& domains);
 /// An (x, z) pair on the ground. \throw InvalidInput naming \p what

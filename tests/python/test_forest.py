@@ -369,3 +369,33 @@ def test_every_front_door_writes_the_same_bytes_with_a_wind_and_a_tile(data, cli
     cli("compose", tmp_path / "tiles" / "forest.usda",
         *[tmp_path / "tiles" / ("forest_%d.usda" % i) for i in range(1, 5)])
     assert (tmp_path / "tiles" / "forest.usda").exists()
+
+
+def test_branch_edits_of_a_hand_placed_tree(data, presets, tmp_path):
+    # Issue #43: Project.edit_branch keeps hand edits of single branches by their stable ids;
+    # the forest applies them (pruning a limb lowers the triangles and the wood), and an edit of
+    # a branch the tree lacks is reported, not an error; the project saves as format 3.
+    p = sylva.Project(seed=4)
+    p.add_species("alder", sylva.load_species(presets / "alder.json"))
+    tid = p.add_tree("alder", (0, 0, 0), seed=11)
+    plain = p.build_forest(lod=False)
+    p.edit_branch(tid, "0.1", prune=True)
+    assert p.branch_edits(tid) == [{"branch": "0.1", "prune": True}]
+    pruned = p.build_forest(lod=False)
+    assert pruned.stats["triangles"] < plain.stats["triangles"]
+    assert pruned.stats["metrics"]["wood_volume_m3"] < plain.stats["metrics"]["wood_volume_m3"]
+    assert pruned.stats["branch_edits"] == 1 and pruned.stats["warnings"] == []
+    p.edit_branch(tid, "0.1", prune=False)
+    assert p.branch_edits(tid) == []
+    p.edit_branch(tid, "0.999.3", length=0.5)
+    orphan = p.build_forest(lod=False)
+    assert orphan.stats["orphaned_edits"] == 1
+    assert "branch 0.999.3" in orphan.stats["warnings"][0]
+    with pytest.raises(ValueError, match=r"length 30 is out of range \[0.05, 20\]"):
+        p.edit_branch(tid, "0.1", length=30)
+    with pytest.raises(ValueError, match="non-zero"):
+        p.edit_branch(tid, "0.1", bend=(0, 0, 0))
+    p.save(tmp_path / "edited.sylva")
+    text = (tmp_path / "edited.sylva").read_text()
+    assert '"format_version": 3' in text and '"branch_edits"' in text
+    assert sylva.load_project(tmp_path / "edited.sylva").branch_edits(tid) == p.branch_edits(tid)

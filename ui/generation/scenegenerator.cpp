@@ -180,6 +180,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         stampSources(result); // before buildForest reads the grammar files
         forest::ForestOptions options;
         options.windData = windData;
+        options.keepGrown = true; // the branches scripts list (doc.branches)
         if (caches && !windData) {
             options.cache = &caches->trees;
             options.obstaclesKey = pointerKey(forest.obstacles.get(), forest.ground.get());
@@ -208,6 +209,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                     drawn.mesh = tree.mesh;
                     drawn.transform = tree.instance.transform();
                     drawn.metrics = tree.metrics;
+                    drawn.grown = tree.grown;
                     // The viewport's coarser levels (ui/viewport/viewlod.h) start from what the
                     // forest made this mesh with.
                     if (tree.meshSettings && tree.skeleton) {
@@ -255,6 +257,12 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
         result.stats["instanced_by_check"] = static_cast<double>(stats.instancedByCheck);
         result.stats["variants"] = static_cast<double>(stats.variants);
         result.stats["pruned_nodes"] = static_cast<double>(stats.prunedNodes);
+        // Branch edits whose branch the grown tree lacks (kept in the project, not applied).
+        result.stats["orphaned_edits"] = static_cast<double>(stats.orphanedEdits);
+        QStringList warnings;
+        for (const std::string& w : stats.warnings)
+            warnings << QString::fromStdString(w);
+        result.warning = warnings.join(QLatin1Char('\n'));
         result.stats["co2_kg"] = stats.metrics.co2Kg;
         result.stats["wood_m3"] = stats.metrics.woodVolumeM3;
         result.stats["biomass_kg"] = stats.metrics.dryBiomassKg;
@@ -283,6 +291,7 @@ GenerationResult generateScene(const QString& path, Progress& progress) {
     QStringList warnings;
     for (const std::string& w : report.warnings)
         warnings << QString::fromStdString(w);
+    if (!result.warning.isEmpty()) warnings << result.warning; // the build's own
     result.warning = warnings.join(QLatin1Char('\n'));
     if (result.ok() && result.trees.empty() && result.mesh->empty())
         result.error = QObject::tr("%1: the project has no trees and no obstacles")

@@ -43,6 +43,9 @@ struct DrawnTree {
     glm::mat4 transform{1.0f};
     forest::TreeMetrics metrics;
     TreeLodSource lod; ///< what the viewport makes coarser levels from
+    /// The skeleton as grown, before branch edits and adaptation (forest::ForestTree::grown):
+    /// the branches scripts list and edits name (docs/branch-edits.md).
+    std::shared_ptr<const skel::Skeleton> grown;
 };
 
 /// What one generation run produced. Plain data: it is handed from the worker thread to the UI

@@ -126,9 +126,29 @@ py::dict generate() {
     stats["instanced"] = static_cast<std::size_t>(stat("instanced"));
     stats["unique"] = static_cast<std::size_t>(stat("unique"));
     stats["variants"] = static_cast<std::size_t>(stat("variants"));
+    stats["orphaned_edits"] = static_cast<std::size_t>(stat("orphaned_edits"));
     stats["ms"] = r.elapsedMs;
     stats["edit_to_result_ms"] = w.generator().editToResultMs();
     return stats;
+}
+
+/// The shown tree \p id as grown (after the generation of the last edit), with its transform.
+const DrawnTree& grownTree(doc::TreeId id) {
+    (void)document().tree(id); // InvalidInput for an unknown tree
+    generate();
+    for (const DrawnTree& t : window().generator().result().trees)
+        if (t.docId == id && t.grown) return t;
+    throw InvalidInput("tree " + std::to_string(id) + " has not been grown");
+}
+
+/// The branches of tree \p id as its edits leave them, with the ids of the grown tree.
+std::vector<skel::Branch> editedBranchesOf(const DrawnTree& drawn,
+                                           const std::vector<skel::BranchEdit>& edits) {
+    std::vector<skel::BranchEdit> local = edits;
+    const glm::mat3 toLocal = glm::inverse(glm::mat3(drawn.transform));
+    for (skel::BranchEdit& e : local)
+        if (e.bend) e.bend = toLocal * *e.bend;
+    return skel::editedBranches(*drawn.grown, local);
 }
 
 struct DocumentApi {};
@@ -230,6 +250,75 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "remove_tree", [](DocumentApi&, doc::TreeId id) { document().removeTrees({id}); },
             py::arg("id"))
+        .def(
+            "branches",
+            [](DocumentApi&, doc::TreeId id) {
+                const DrawnTree& drawn = grownTree(id);
+                const doc::ProjectInstance& t = document().tree(id);
+                return python::branchesList(editedBranchesOf(drawn, t.branchEdits), drawn.transform,
+                                            static_cast<float>(t.scale * t.growth));
+            },
+            py::arg("tree_id"),
+            "The branches of a hand-placed tree as grown, its edits applied (pruned ones left "
+            "out), before adaptation to obstacles: dicts of id, parent (None for the trunk), "
+            "order, base and tip (world x, y, z), length and radius (m). Waits for the "
+            "generation. docs/branch-edits.md")
+        .def(
+            "edit_branch",
+            [](DocumentApi&, doc::TreeId id, const std::string& branch, const py::object& prune,
+               const py::object& bend, const py::object& length, const py::object& radius,
+               const py::object& lock) {
+                const std::vector<skel::BranchEdit> edits = document().branchEdits(id);
+                const skel::BranchEdit edit =
+                    python::branchEditFrom(edits, branch, prune, bend, length, radius, lock);
+                // The branch must be the grown tree's (an orphaned edit may still be changed
+                // or cleared).
+                bool known = false;
+                for (const skel::BranchEdit& e : edits)
+                    known = known || e.branch == branch;
+                if (!known)
+                    for (const skel::Branch& b : skel::branchesOf(*grownTree(id).grown))
+                        known = known || b.id == branch;
+                if (!known)
+                    throw InvalidInput("tree " + std::to_string(id) + " has no branch " + branch);
+                if (edit.lock && edit.locked.empty()) {
+                    // Locked now: its geometry as the tree shows it, the other edits applied,
+                    // in the tree's frame (bends are world directions in the document).
+                    skel::BranchEdit kept = edit;
+                    const DrawnTree& drawn = grownTree(id);
+                    const glm::mat3 toLocal = glm::inverse(glm::mat3(drawn.transform));
+                    std::vector<skel::BranchEdit> local = edits;
+                    for (skel::BranchEdit& e : local)
+                        if (e.bend) e.bend = toLocal * *e.bend;
+                    if (kept.bend) kept.bend = toLocal * *kept.bend;
+                    skel::lockBranch(*drawn.grown, local, kept);
+                    skel::BranchEdit stored = edit; // the world bend kept as given
+                    stored.lock = true;
+                    stored.lockedBase = kept.lockedBase;
+                    stored.locked = std::move(kept.locked);
+                    stored.lockedLeaves = std::move(kept.lockedLeaves);
+                    document().editBranch(id, stored);
+                    return;
+                }
+                document().editBranch(id, edit);
+            },
+            py::arg("tree_id"), py::arg("branch_id"), py::arg("prune") = py::none(),
+            py::arg("bend") = py::none(), py::arg("length") = py::none(),
+            py::arg("radius") = py::none(), py::arg("lock") = py::none(),
+            "Edits one branch of a hand-placed tree by its id (one undo step): None leaves a "
+            "setting; prune=False, bend=(), length=1.0, radius=1.0, lock=False clear it. "
+            "ValueError for an unknown tree or branch or a value out of range (length and "
+            "radius in [0.05, 20], bend a non-zero world direction).")
+        .def(
+            "branch_edits",
+            [](DocumentApi&, doc::TreeId id) {
+                return python::branchEditsList(document().branchEdits(id));
+            },
+            py::arg("tree_id"), "A hand-placed tree's branch edits as dicts.")
+        .def(
+            "clear_branch_edits",
+            [](DocumentApi&, doc::TreeId id) { document().clearBranchEdits(id); },
+            py::arg("tree_id"), "Removes every branch edit of a tree (one undo step).")
         .def(
             "duplicate_trees",
             [](DocumentApi&, const std::vector<doc::TreeId>& ids) {

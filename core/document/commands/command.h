@@ -17,6 +17,7 @@ enum MergeId : int {
     kMergeObstacle,
     kMergeDomain,
     kMergeSettings,
+    kMergeBranchEdits,
 };
 
 /// "Change a value" in the Tiled/Glaxnimate manner: the document's value at a key (a tree id, a

@@ -51,4 +51,20 @@ QUndoCommand* changeTree(Document& doc, TreeId id, const ProjectInstance& newTre
         label);
 }
 
+QUndoCommand* changeBranchEdits(Document& doc, TreeId id,
+                                const std::vector<skel::BranchEdit>& newEdits) {
+    const std::vector<skel::BranchEdit>& old = doc.tree(id).branchEdits;
+    QString label = QCoreApplication::translate("Commands", "Edit branch");
+    if (newEdits.empty() && !old.empty())
+        label = QCoreApplication::translate("Commands", "Clear branch edits");
+    else if (newEdits.size() == old.size() + 1 && newEdits.back().prune)
+        label = QCoreApplication::translate("Commands", "Prune branch");
+    return new ChangeValue<TreeId, std::vector<skel::BranchEdit>>(
+        doc, kMergeBranchEdits, id, old, newEdits, true,
+        [](Document& d, const TreeId& key, const std::vector<skel::BranchEdit>& v) {
+            d.rawSetBranchEdits(key, v);
+        },
+        label);
+}
+
 } // namespace sylva::doc::cmd

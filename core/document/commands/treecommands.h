@@ -39,4 +39,10 @@ private:
 /// progress. The text names what changed ("Move tree", "Rotate tree", ...).
 QUndoCommand* changeTree(Document& doc, TreeId id, const ProjectInstance& newTree, bool commit);
 
+/// Replaces a tree's hand edits of single branches (docs/branch-edits.md): one step, obsolete
+/// when nothing changes. The text names what changed ("Prune branch", "Edit branch", "Clear
+/// branch edits").
+QUndoCommand* changeBranchEdits(Document& doc, TreeId id,
+                                const std::vector<skel::BranchEdit>& newEdits);
+
 } // namespace sylva::doc::cmd

@@ -110,7 +110,8 @@ constexpr float kNeighbourCore = 0.5f;
 /// The cache key of one tree (see TreeCache): everything buildTree's result depends on.
 std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
                       const std::vector<env::CrownVolume>& near, const ForestScene& scene,
-                      const ForestOptions& options, double cameraDistance) {
+                      const ForestOptions& options, double cameraDistance,
+                      const std::vector<skel::BranchEdit>* edits) {
     std::uint64_t h = mixSeed(species, options.obstaclesKey);
     auto mix = [&h](const void* data, std::size_t n) {
         const auto* p = static_cast<const unsigned char*>(data);
@@ -136,12 +137,23 @@ std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
     }
     pod(scene.lightDirection);
     if (options.useLod) pod(cameraDistance);
+    if (edits)
+        for (const skel::BranchEdit& e : *edits) {
+            mix(e.branch.data(), e.branch.size() + 1);
+            const glm::vec3 bend = e.bend.value_or(glm::vec3(0.0f));
+            const bool bits[] = {e.prune, e.bend.has_value(), e.lock};
+            mix(bits, sizeof bits);
+            pod(bend);
+            pod(e.length);
+            pod(e.radius);
+        }
     const bool flags[] = {options.useLod,
                           options.adapt,
                           options.neighbours,
                           options.buildMeshes,
                           scene.obstacles != nullptr,
                           options.windData};
+    if (options.keepGrown) h = mixSeed(h, 0x6b67); // cached trees then carry their grown skeleton
     mix(flags, sizeof flags);
     return h;
 }
@@ -520,7 +532,13 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 // itself too (the variants are grown in the scene's season).
                 const bool ownSeason = in.season >= 0 && static_cast<mesh::Season>(in.season) !=
                                                              meshSettings[in.species].season;
-                const bool hasVariants = firstVariant[in.species] >= 0 && !in.handPlaced;
+                // A hand-placed tree's hand edits of single branches (never an instance).
+                const std::vector<skel::BranchEdit>* edits = nullptr;
+                if (in.handPlaced)
+                    if (auto e = scene.branchEdits.find(in.id);
+                        e != scene.branchEdits.end() && !e->second.empty())
+                        edits = &e->second;
+                const bool hasVariants = firstVariant[in.species] >= 0 && !in.handPlaced && !edits;
                 const std::size_t v =
                     hasVariants
                         ? static_cast<std::size_t>(firstVariant[in.species]) +
@@ -534,6 +552,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     tree.adaptedFrom = -1;
                     tree.instanceChecked = false;
                     tree.skeleton = variant.skeleton;
+                    if (options.keepGrown) tree.grown = variant.skeleton;
                     tree.meshSettings = variant.meshSettings;
                     tree.metrics =
                         forest::measureTree(measures[v], plan.wood, in.scale * in.growth);
@@ -569,7 +588,7 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 std::uint64_t cacheKey = 0;
                 if (options.cache && !plan.selfOrganizing) {
                     cacheKey = treeKey(speciesKeys[in.species], in, near, scene, options,
-                                       ctx.cameraDistance);
+                                       ctx.cameraDistance, edits);
                     if (fromVariant) cacheKey = mixSeed(cacheKey, variants[v].seed);
                     if (std::optional<ForestTree> cached = options.cache->findTree(cacheKey)) {
                         tree = std::move(*cached);
@@ -600,6 +619,17 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                 }
                 if (!skeleton)
                     throw InvalidInput("species '" + species.name + "' produced no skeleton");
+                if (options.keepGrown) tree.grown = skeleton;
+                if (edits) {
+                    // After growth, before adaptation; bends are world directions.
+                    std::vector<skel::BranchEdit> local = *edits;
+                    const glm::mat3 toLocal = glm::inverse(glm::mat3(ctx.transform));
+                    for (skel::BranchEdit& e : local)
+                        if (e.bend) e.bend = toLocal * *e.bend;
+                    skel::Skeleton edited = *skeleton;
+                    tree.branchEdits = skel::applyBranchEdits(edited, local);
+                    skeleton = std::make_shared<const skel::Skeleton>(std::move(edited));
+                }
                 cpuGenerate[thread] += msSince(t);
 
                 if (options.adapt && (!plan.hasAdaptNode || plan.selfOrganizing) &&
@@ -692,6 +722,12 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
             stats.collidingTrees += tree.adapt.collidingBefore > 0 ? 1 : 0;
             stats.prunedNodes += tree.adapt.hiddenNodes;
             stats.metrics.add(tree.metrics);
+            stats.branchEdits += tree.branchEdits.applied;
+            stats.orphanedEdits += tree.branchEdits.orphaned.size();
+            for (const std::string& id : tree.branchEdits.orphaned)
+                stats.warnings.push_back("tree " + std::to_string(tree.instance.id) +
+                                         ": the edit of branch " + id +
+                                         " found no such branch (kept, not applied)");
         }
         sink(batch);
         progress.report(static_cast<double>(end) / static_cast<double>(selected.size()), "trees");

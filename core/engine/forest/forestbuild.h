@@ -19,6 +19,7 @@
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/placement/placement.h"
+#include "engine/skeleton/branches.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
 
@@ -49,6 +50,9 @@ struct ForestScene {
     /// The season of every tree without one of its own (Instance::season); unset: each
     /// species' tube_mesh `season` (summer unless the species says otherwise).
     std::optional<mesh::Season> season;
+    /// Hand edits of single branches by tree id (hand-placed trees; docs/branch-edits.md),
+    /// bend directions in the world frame: applied after growth and before adaptation.
+    std::map<std::uint64_t, std::vector<skel::BranchEdit>> branchEdits;
 };
 
 /// One of a species' K variants: grown once from the species at a seed derived from the project
@@ -113,6 +117,9 @@ struct ForestOptions {
     /// false, it is the variant's shared mesh (writers that instance the variants, glTF, USD:
     /// no mesh is made per instance).
     bool meshInstances = true;
+    /// Keep each unique tree's skeleton as grown, before its branch edits and adaptation
+    /// (ForestTree::grown): what an editor lists the branches and their ids of.
+    bool keepGrown = false;
 };
 
 /// One finished tree, in its own local frame; `instance.transform()` places it in the world.
@@ -145,6 +152,11 @@ struct ForestTree {
     double meshCameraDistance = 0.0;
     forest::TreeMetrics metrics;
     env::AdaptStats adapt;
+    /// With ForestOptions::keepGrown: the skeleton as grown, before branch edits and adaptation
+    /// (an instance: its variant's); the ids edits name are this skeleton's branches'.
+    std::shared_ptr<const skel::Skeleton> grown;
+    /// What the tree's branch edits did (ForestScene::branchEdits; empty without edits).
+    skel::BranchEditReport branchEdits;
 };
 
 /// What a build did. CPU times are summed over threads; `wallMs` is elapsed time.
@@ -164,6 +176,12 @@ struct ForestStats {
     /// domain tree in the tile, none for a species whose trees are all hand-placed.
     std::size_t variants = 0;
     std::vector<placement::Shortfall> shortfalls;
+    /// Branch edits applied, and those whose branch the grown tree does not have (orphaned:
+    /// kept in the project, reported in `warnings`, never an error).
+    std::size_t branchEdits = 0, orphanedEdits = 0;
+    /// What a user should hear of, in instance order ("tree 3: branch 0.9 of the edits not
+    /// found").
+    std::vector<std::string> warnings;
     forest::SceneMetrics metrics;
     std::map<std::string, double> cpuMs;  ///< generate, adapt, mesh
     std::map<std::string, double> wallMs; ///< load, place, build (set by callers too)

@@ -849,3 +849,55 @@ TEST_F(DocumentTest, OpeningAProjectWithABadLinkedFileLeavesTheOpenOneAsItWas) {
     EXPECT_NE(grammarError.find("bad.lsys:3:"), std::string::npos) << grammarError;
     expectUnchanged();
 }
+
+// Issue #43: hand edits of single branches go through the document as one undo step each, and
+// undo gives back the exact bytes (a project without edits is a format-2 file again).
+TEST_F(DocumentTest, BranchEditsAreUndoableSteps) {
+    const TreeId id = mDoc.addTree(alder(1.0f, 2.0f));
+    const QByteArray before = bytes();
+    const int steps = mDoc.undoStack()->count();
+    skel::BranchEdit cut;
+    cut.branch = "0.2";
+    cut.prune = true;
+    mDoc.editBranch(id, cut);
+    skel::BranchEdit bend;
+    bend.branch = "0.1";
+    bend.bend = glm::vec3(1.0f, 1.0f, 0.0f);
+    bend.length = 0.8f;
+    mDoc.editBranch(id, bend);
+    EXPECT_EQ(mDoc.undoStack()->count(), steps + 2);
+    EXPECT_EQ(mDoc.undoStack()->undoText(), QStringLiteral("Edit branch"));
+    ASSERT_EQ(mDoc.branchEdits(id).size(), 2u);
+    EXPECT_TRUE(bytes().contains("\"format_version\": 3"));
+    const QByteArray edited = bytes();
+    // An edit that changes nothing removes the branch's edit.
+    skel::BranchEdit plain;
+    plain.branch = "0.2";
+    mDoc.editBranch(id, plain);
+    EXPECT_EQ(mDoc.branchEdits(id).size(), 1u);
+    mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), edited);
+    mDoc.clearBranchEdits(id);
+    EXPECT_EQ(mDoc.undoStack()->undoText(), QStringLiteral("Clear branch edits"));
+    EXPECT_TRUE(mDoc.branchEdits(id).empty());
+    mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), edited);
+    mDoc.undoStack()->undo();
+    mDoc.undoStack()->undo();
+    EXPECT_EQ(bytes(), before);
+    EXPECT_TRUE(bytes().contains("\"format_version\": 2"));
+    // Out of range: refused, naming the setting and its range; nothing pushed.
+    skel::BranchEdit tooLong;
+    tooLong.branch = "0.1";
+    tooLong.length = 25.0f;
+    try {
+        mDoc.editBranch(id, tooLong);
+        ADD_FAILURE() << "accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("length 25 is out of range [0.05, 20]"),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW(mDoc.editBranch(9999, cut), InvalidInput);
+    EXPECT_EQ(bytes(), before);
+}

@@ -19,6 +19,9 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 echo "-- api_edits.py"
 "$SYLVA" --discard-autosave --script "$HERE/api_edits.py" "$DEMO" || fail "api_edits.py"
 
+echo "-- api_branches.py (hand edits of single branches)"
+"$SYLVA" --discard-autosave --script "$HERE/api_branches.py" "$DEMO" || fail "api_branches.py"
+
 echo "-- api_species.py"
 "$SYLVA" --discard-autosave --script "$HERE/api_species.py" "$DEMO" || fail "api_species.py"
 
