@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs every test through ctest:
-#   1. Release build with -Werror: engine GoogleTests, QtTest suites under xvfb-run, CLI
+# Installs what is missing, builds, and runs every test through ctest (ccache when installed):
+#   1. Release build with -Werror: engine GoogleTests, QtTest suites under xvfb-run (the
+#      artist's day among them), the performance gate (label perf), CLI
 #      end-to-end tests, the clang-format check; benchmarks are built, not run.
 #   2. The engine and document-core tests (label engine) again under AddressSanitizer +
 #      UndefinedBehaviorSanitizer.
