@@ -164,7 +164,8 @@ TEST(BranchEdits, EveryBuildAppliesThemAfterGrowth) {
     up.bend = glm::vec3(0.0f, 2.0f, 0.0f);
     bent.instances[0].branchEdits = {up};
     const Built afterBend = build(bent);
-    const skel::Branch& moved = branch(skel::branchesOf(*afterBend.skeleton), limb->id);
+    const std::vector<skel::Branch> bentBranches = skel::branchesOf(*afterBend.skeleton);
+    const skel::Branch& moved = branch(bentBranches, limb->id);
     const glm::vec3 base = glm::vec3(afterBend.transform * glm::vec4(moved.base, 1.0f));
     const glm::vec3 tip = glm::vec3(afterBend.transform * glm::vec4(moved.tip, 1.0f));
     EXPECT_GT(glm::length(moved.tip - limb->tip), 0.1f);
