@@ -405,7 +405,8 @@ std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<Bran
         out.push_back(std::move(b));
     }
     // Locked branches grafted back onto their parent after their id was gone.
-    for (const auto& [id, first] : report.grafted) {
+    for (const auto& [graftedId, first] : report.grafted) {
+        const std::string& id = graftedId; // clang 14 captures no structured binding
         const bool listed =
             std::any_of(out.begin(), out.end(), [&id](const Branch& b) { return b.id == id; });
         if (listed) continue;
