@@ -1,15 +1,11 @@
 #include "ui/lodchainexportaction.h"
 
-#include <atomic>
 #include <string_view>
-#include <thread>
 
 #include <QAction>
 #include <QDir>
-#include <QEventLoop>
 #include <QFileDialog>
 #include <QProgressDialog>
-#include <QTimer>
 
 #include "document/errormessage.h"
 #include "ui/filedialogs.h"

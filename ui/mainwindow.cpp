@@ -1009,10 +1009,9 @@ bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
     const ShownScene scene{shown, mPreview.isActive() ? nullptr : mDocument,
                            mViewport->camera().eye(), mViewport->camera().target()};
     DialogProgress progress([](double fraction, std::string_view stage) {
-        // Rough shares: the trees (grown, adapted, meshed) most of it, then the writing.
-        if (stage == "trees") return static_cast<int>(fraction * 85.0);
-        if (stage == "writing" || stage == "write") return 85 + static_cast<int>(fraction * 15.0);
-        return -1;
+        // The forest build reports its trees (grown, adapted, meshed, written batch by batch);
+        // the file's last copy is the rest.
+        return stage == "trees" ? static_cast<int>(fraction * 95.0) : -1;
     });
     const WorkerOutcome outcome = runWithProgress(
         this, tr("Export"), tr("Exporting to %1…").arg(QFileInfo(path).fileName()),

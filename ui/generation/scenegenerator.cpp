@@ -66,19 +66,24 @@ mesh::Mesh surfaces(const env::ObstacleScene* obstacles, const env::ObstacleScen
     for (auto [scene, material] : {std::pair{obstacles, "obstacle"}, std::pair{ground, "ground"}}) {
         if (!scene) continue;
         const auto first = static_cast<std::uint32_t>(out.indices.size());
-        for (const env::ObstacleMesh& m : scene->meshes())
+        for (const env::ObstacleMesh& m : scene->meshes()) {
+            // One colour a mesh vertex (a vertex is in about six triangles), then per corner.
+            std::vector<glm::u8vec4> colour(m.vertices.size(), glm::u8vec4(255));
+            if (scene == obstacles)
+                for (std::size_t v = 0; v < m.vertices.size(); ++v)
+                    colour[v] = stoneColor(m.vertices[v]);
             for (const glm::uvec3& t : m.triangles) {
                 const glm::vec3 corners[3] = {m.vertices[t.x], m.vertices[t.y], m.vertices[t.z]};
                 const glm::vec3 n =
                     glm::normalize(glm::cross(corners[1] - corners[0], corners[2] - corners[0]));
-                for (const glm::vec3& p : corners) {
+                for (int k = 0; k < 3; ++k) {
                     out.indices.push_back(static_cast<std::uint32_t>(out.positions.size()));
-                    out.positions.push_back(p);
+                    out.positions.push_back(corners[k]);
                     out.normals.push_back(n);
-                    out.colors.push_back(scene == obstacles ? stoneColor(p)
-                                                            : glm::u8vec4(255, 255, 255, 255));
+                    out.colors.push_back(colour[t[k]]);
                 }
             }
+        }
         const auto count = static_cast<std::uint32_t>(out.indices.size()) - first;
         if (count > 0) out.submeshes.push_back({material, first, count});
     }
