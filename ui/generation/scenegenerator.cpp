@@ -161,7 +161,7 @@ std::uint64_t pointerKey(const void* a, const void* b) {
 } // namespace
 
 GenerationResult generateProject(const doc::Project& project, const QString& path,
-                                 SceneCaches* caches, Progress& progress, bool windData) {
+                                 SceneCaches* caches, Progress& progress) {
     return runGuarded(path, [&](GenerationResult& result) {
         // Watch every file the project reads, stamped before it is read (a change during the
         // generation is still seen): the species and mesh files, then the files the species'
@@ -184,9 +184,8 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
             doc::addSpeciesSourceFiles(s.graph, result.sources);
         stampSources(result); // before buildForest reads the grammar files
         forest::ForestOptions options;
-        options.windData = windData;
         options.keepGrown = true; // the branches scripts list (doc.branches)
-        if (caches && !windData) {
+        if (caches) {
             options.cache = &caches->trees;
             options.obstaclesKey = pointerKey(forest.obstacles.get(), forest.ground.get());
             caches->obstacles = forest.obstacles;
@@ -241,7 +240,6 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                                                   tree.instance.rotation,
                                                   tree.instance.scale * tree.instance.growth,
                                                   tree.variant, tree.instance.id});
-                    if (windData) result.exportSkeletons.push_back(tree.skeleton);
                 }
             },
             progress);

@@ -37,11 +37,9 @@ struct SceneCaches {
 /// scene's "co2_kg", "instanced", "unique" and "variants" (ForestStats); "regrown" counts the
 /// trees actually grown (not taken from the cache): unique trees plus variants; an instanced
 /// tree draws its variant's mesh or level and is not counted. Never throws.
-/// \p windData: the trees keep their vertices' nodes and their skeletons
-/// (GenerationResult::exportSkeletons), what a wind export needs (ForestOptions::windData).
+/// (A wind export builds its own forest: doc::exportProject.)
 GenerationResult generateProject(const doc::Project& project, const QString& path,
-                                 SceneCaches* caches, Progress& progress = noProgress(),
-                                 bool windData = false);
+                                 SceneCaches* caches, Progress& progress = noProgress());
 
 /// Loads the project at \p path and generates it (generateProject); loader warnings go to
 /// GenerationResult::warning. A project with no trees and no obstacles is an error here.

@@ -72,8 +72,6 @@ struct GenerationResult {
     std::vector<exporter::ExportTree> exportTrees;
     /// The variants exportTrees' ExportTree::variant indexes (a project's forest only).
     std::vector<exporter::ExportVariant> exportVariants;
-    /// With wind data (generateProject's windData): each exportTrees entry's skeleton.
-    std::vector<std::shared_ptr<const skel::Skeleton>> exportSkeletons;
     bool compactObj = false; ///< OBJ precision: compact for forests, full for one tree (as the CLI)
     /// The files the result was read from (absolute): the species or project file, grammar and
     /// other files its nodes name, a project's species and obstacle meshes. Filled as far as
