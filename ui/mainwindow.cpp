@@ -929,8 +929,12 @@ void MainWindow::onSourcesChanged(const QStringList& changed) {
     }
     const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
     if (!mDocument->path().isEmpty() && changed.contains(own)) {
-        // The project file itself: never throw unsaved edits away without asking.
-        mDocumentStamp = QFileInfo::exists(own) ? QFileInfo(own).lastModified() : QDateTime();
+        // The project file itself: never throw unsaved edits away without asking. Our own save,
+        // reported after later edits (its bytes no longer the document's), is no change.
+        const QDateTime onDisk =
+            QFileInfo::exists(own) ? QFileInfo(own).lastModified() : QDateTime();
+        if (onDisk.isValid() && onDisk == mDocumentStamp) return;
+        mDocumentStamp = onDisk;
         QFile file(own);
         if (file.open(QIODevice::ReadOnly) && file.readAll() == mDocument->serialized())
             return; // what the document holds: our own save (a script's doc.save, say)

@@ -187,8 +187,12 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
         .def(
             "save",
             [](DocumentApi&, std::optional<std::string> path) {
-                document().save(path ? QString::fromStdString(*path) : QString());
-                window().autosave().discard();
+                // As File > Save: the window stamps its own write, so the file watcher does not
+                // take it for a change on disk (and reload over later edits).
+                if (!path && document().path().isEmpty())
+                    throw IoError("the document has no file yet: save it under a name");
+                if (!window().saveAs(path ? QString::fromStdString(*path) : document().path()))
+                    throw IoError(window().lastError().toStdString());
             },
             py::arg("path") = py::none())
         .def("new", [](DocumentApi&) { document().newProject(); })
