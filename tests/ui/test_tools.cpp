@@ -202,7 +202,11 @@ private Q_SLOTS:
         document().selectTrees({});
         const QPoint trunk = trunkOf(1);
         QVERIFY(trunk.x() >= 0);
-        const QPoint from = trunk - QPoint(60, 50), to = trunk + QPoint(60, 30);
+        // The band holds the tree's base (what selection by band tests) with room around it:
+        // the trunk point is 1 m or more above the base, 30 px or more on screen.
+        const QPoint base = screenOf(document().tree(1).position);
+        QVERIFY(base.x() >= 0);
+        const QPoint from = trunk - QPoint(60, 50), to = base + QPoint(60, 30);
         const QImage before = viewport()->grabFramebuffer();
         QTest::mousePress(viewport(), Qt::LeftButton, Qt::ControlModifier, from);
         for (int i = 1; i <= 8; ++i) {
