@@ -279,6 +279,9 @@ private Q_SLOTS:
         // over the heights set), so that the 200-px size draws one too; 56 and 88 px are
         // impostors without it (checked below).
         qputenv("SYLVA_IMPOSTOR_HEIGHTS", "1.0");
+        // The impostor at every size, also where it does not match the tree well enough to be
+        // drawn there (test_impostorswitch.cpp tests that switch).
+        qputenv("SYLVA_IMPOSTOR_FIT", "0");
         QCOMPARE(ViewLod::levelFor(ViewLod::equivalentHeights(10.0, 1.0, 1.0, 1.0)),
                  ViewLod::kImpostorLevel);
         mView = std::make_unique<Viewport>();

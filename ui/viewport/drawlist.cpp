@@ -41,7 +41,8 @@ std::size_t variantLevelFor(const ViewVariant& variant, double distance, double 
 
 std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<bool>& drawn,
                                     const std::vector<Bounds>& bounds,
-                                    const std::vector<InstanceOf>& instances) {
+                                    const std::vector<InstanceOf>& instances,
+                                    const std::vector<double>& impostorPx) {
     // Frustum culling: a tree whose world box lies outside one of the six planes is not drawn
     // (a forest seen from inside draws only what is in front of the camera).
     const std::array<glm::vec4, 6> planes = frustumPlanes(view.viewProj);
@@ -64,6 +65,12 @@ std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<
                 if (d.level == ViewLod::kImpostorLevel && view.maxImpostorPx > 0.0 &&
                     ViewLod::heightOnScreenPx(double(d.distance), worldHeight, double(view.fovY),
                                               view.viewportHeightPx) > view.maxImpostorPx)
+                    d.level = ViewLod::kImpostorLevel - 1;
+                // Its impostor matches it only from a smaller size on (issue 40).
+                if (d.level == ViewLod::kImpostorLevel && i < impostorPx.size() &&
+                    impostorPx[i] > 0.0 &&
+                    ViewLod::heightOnScreenPx(double(d.distance), worldHeight, double(view.fovY),
+                                              heightPx) > impostorPx[i])
                     d.level = ViewLod::kImpostorLevel - 1;
             }
             if (i < instances.size() && instances[i].variant &&

@@ -73,8 +73,12 @@ bool intersectsFrustum(const std::array<glm::vec4, 6>& planes, const Bounds& box
 /// box (past the end of \p bounds) is drawn at full detail. Trees that \p instances (in the
 /// same order, may be shorter) names an instance of a variant get their variant level below
 /// the impostor (variantLevelFor). Pure: no OpenGL.
+/// \p impostorPx (in the same order, may be shorter; <= 0: the default switch) holds, per tree,
+/// the height on screen under which its impostor matches it (Impostors::switchHeightPx()):
+/// a tree higher than that is drawn as its coarsest mesh instead.
 std::vector<TreeDraw> buildDrawList(const DrawListView& view, const std::vector<bool>& drawn,
                                     const std::vector<Bounds>& bounds,
-                                    const std::vector<InstanceOf>& instances = {});
+                                    const std::vector<InstanceOf>& instances = {},
+                                    const std::vector<double>& impostorPx = {});
 
 } // namespace sylva::ui

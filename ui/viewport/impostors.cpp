@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/occlusion.h"
@@ -88,33 +89,57 @@ GLuint Impostors::upload(const Image& image) {
 }
 
 void Impostors::request(Key key, std::shared_ptr<const void> owner,
-                        std::shared_ptr<const mesh::Mesh> source,
-                        mesh::ImpostorMaterials materials) {
+                        std::shared_ptr<const mesh::Mesh> source, mesh::ImpostorMaterials materials,
+                        std::shared_ptr<const mesh::Mesh> reference, double startHeightPx) {
     if (!mGl || !mProgram || !key || !source || source->triangleCount() == 0 || has(key) ||
         isBaking(key))
         return;
     mPool.setMaxThreadCount(1);
     Baking job;
     job.owner = std::move(owner);
-    job.future =
-        QtConcurrent::run(&mPool, [source = std::move(source), materials = std::move(materials)]() {
-            // Not niced (the levels' worker is): a few atlases a forest, one per variant, and
-            // until they are baked its far trees draw meshes, which costs every frame; niced,
-            // they waited minutes on a loaded machine.
-            mesh::ImpostorSettings settings;
-            settings.grid = kGrid;
-            settings.cellPixels = kCell;
-            settings.supersample = 2;
-            Baked baked;
-            try {
-                baked.impostor = mesh::bakeImpostor(*source, materials, settings);
-                baked.extent = cardExtent(baked.impostor);
-                baked.lit = litImpostorAtlas(baked.impostor, crownOcclusion(*source));
-            } catch (...) {
-                baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
+    job.future = QtConcurrent::run(&mPool, [source = std::move(source),
+                                            materials = std::move(materials),
+                                            reference = std::move(reference), startHeightPx]() {
+        // Not niced (the levels' worker is): a few atlases a forest, one per variant, and
+        // until they are baked its far trees draw meshes, which costs every frame; niced,
+        // they waited minutes on a loaded machine.
+        mesh::ImpostorSettings settings;
+        settings.grid = kGrid;
+        settings.cellPixels = kCell;
+        settings.supersample = 2;
+        Baked baked;
+        try {
+            baked.impostor = mesh::bakeImpostor(*source, materials, settings);
+            baked.extent = cardExtent(baked.impostor);
+            baked.lit = litImpostorAtlas(baked.impostor, crownOcclusion(*source));
+            // Where the impostor matches the tree (issue 40: a willow's impostor lost its
+            // hanging curtains where it took over): measured against the full tree, the
+            // switch moved down to where the silhouettes agree.
+            const mesh::Mesh& tree = reference ? *reference : *source;
+            float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
+            for (const glm::vec3& p : tree.positions) {
+                lo = std::min(lo, p.y);
+                hi = std::max(hi, p.y);
             }
-            return baked;
-        });
+            const double start = std::max(startHeightPx, kFloorHeightPx);
+            // SYLVA_IMPOSTOR_FIT=0: the default switch for every atlas (tests that measure
+            // the impostor itself at sizes where it would not be drawn).
+            static const bool measure =
+                qEnvironmentVariableIsSet("SYLVA_IMPOSTOR_FIT")
+                    ? qEnvironmentVariableIntValue("SYLVA_IMPOSTOR_FIT") != 0
+                    : true;
+            if (hi > lo && measure) {
+                baked.fit = mesh::impostorSwitchHeight(tree, baked.impostor, double(hi - lo), start,
+                                                       0.9, kFloorHeightPx);
+                baked.later = baked.fit.heightPx < start;
+            } else {
+                baked.fit.heightPx = start;
+            }
+        } catch (...) {
+            baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
+        }
+        return baked;
+    });
     mBaking.emplace(key, std::move(job));
 }
 
@@ -179,6 +204,8 @@ std::size_t Impostors::collect() {
             card.centre = imp.centre;
             card.radius = imp.radius;
             card.extent = baked.extent;
+            card.fit = baked.fit;
+            card.later = baked.later;
             card.lit = upload(baked.lit);
             card.depth = upload(imp.depth);
             mGl->glBindTexture(GL_TEXTURE_2D, 0);
@@ -188,6 +215,21 @@ std::size_t Impostors::collect() {
         it = mBaking.erase(it);
     }
     return n;
+}
+
+double Impostors::switchHeightPx(Key key) const {
+    const auto it = mCards.find(key);
+    return it == mCards.end() ? -1.0 : it->second.fit.heightPx;
+}
+
+const mesh::ImpostorSwitch* Impostors::switchOf(Key key) const {
+    const auto it = mCards.find(key);
+    return it == mCards.end() ? nullptr : &it->second.fit;
+}
+
+std::size_t Impostors::switchedLater() const {
+    return std::size_t(std::count_if(mCards.begin(), mCards.end(),
+                                     [](const auto& entry) { return entry.second.later; }));
 }
 
 void Impostors::retain(const std::function<bool(Key)>& keep) {

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/mesh/impostor.h"
+#include "engine/mesh/impostorfit.h"
 
 class QOpenGLShaderProgram;
 
@@ -53,10 +54,25 @@ public:
     /// Atlases being baked.
     std::size_t baking() const { return mBaking.size(); }
     /// Starts baking the impostor of \p key (kept alive by \p owner) on the worker from
-    /// \p source (a coarse level: the atlas' views are a few dozen pixels); nothing when it is
-    /// baked or being baked.
+    /// \p source (a coarse level: the atlas' views are a few dozen pixels), and measuring
+    /// where it may take over from \p reference (the tree's full mesh, the source when null):
+    /// the largest height on screen up to \p startHeightPx where its silhouette matches the
+    /// tree's (mesh::impostorSwitchHeight, IoU >= 0.9); nothing when it is baked or being baked.
     void request(Key key, std::shared_ptr<const void> owner,
-                 std::shared_ptr<const mesh::Mesh> source, mesh::ImpostorMaterials materials);
+                 std::shared_ptr<const mesh::Mesh> source, mesh::ImpostorMaterials materials,
+                 std::shared_ptr<const mesh::Mesh> reference = nullptr,
+                 double startHeightPx = 94.0);
+    /// The tree height on screen (pixels) under which the atlas of \p key is drawn (measured
+    /// when it was baked); a negative value while it is not baked.
+    double switchHeightPx(Key key) const;
+    /// What that measure found for \p key (empty while it is not baked).
+    const mesh::ImpostorSwitch* switchOf(Key key) const;
+    /// Impostors whose silhouette does not match their tree where the default switch would
+    /// draw them, and so switch later (for View ▸ Statistics and the tests).
+    std::size_t switchedLater() const;
+    /// The lowest height the measure searches down to (a tree that small is an impostor
+    /// whatever it loses: its mesh would cost a forest's far trees their frame).
+    static constexpr double kFloorHeightPx = 24.0;
     /// Uploads the atlases the worker finished (context current); returns how many.
     std::size_t collect();
     /// The card's part that any view of \p imp covers, in units of the bounding sphere's radius
@@ -108,11 +124,15 @@ private:
         float radius = 1.0f;
         /// The part of the card any view covers (cardExtent()).
         glm::vec3 extent{1.0f, -1.0f, 1.0f};
+        mesh::ImpostorSwitch fit; ///< where it may take over (mesh::impostorSwitchHeight)
+        bool later = false;       ///< fit.heightPx is under the default switch
     };
     struct Baked {
         mesh::Impostor impostor;
         Image lit; ///< litImpostorAtlas()
         glm::vec3 extent{1.0f, -1.0f, 1.0f};
+        mesh::ImpostorSwitch fit;
+        bool later = false;
     };
     struct Instance {
         glm::mat4 model;

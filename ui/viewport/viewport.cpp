@@ -811,8 +811,12 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
         if (mTrees[i].lod.instance && mTrees[i].lod.variant)
             instances[i] = {mTrees[i].lod.variant.get(),
                             glm::length(glm::vec3(mTrees[i].transform[0]))};
+    // Where each baked impostor matches its tree (Impostors::switchHeightPx()).
+    std::vector<double> impostorPx(mTrees.size(), -1.0);
+    for (std::size_t i = 0; i < mTrees.size(); ++i)
+        impostorPx[i] = mImpostors.switchHeightPx(impostorKey(mTrees[i]));
     // Picking keeps the full mesh; only drawing follows the level of detail.
-    if (!windActive()) return buildDrawList(view, drawn, mTreeBounds, instances);
+    if (!windActive()) return buildDrawList(view, drawn, mTreeBounds, instances, impostorPx);
     // Swaying trees reach beyond their rest boxes: widened across by half their height (the
     // model bends a trunk at most 0.3 rad and its limbs 0.6 rad more) so that a tree at the
     // view's edge is not culled while its crown sways into view. Heights stay as they are, and
@@ -824,7 +828,7 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
         b.lo -= glm::vec3(reach, 0.0f, reach);
         b.hi += glm::vec3(reach, 0.0f, reach);
     }
-    return buildDrawList(view, drawn, swaying, instances);
+    return buildDrawList(view, drawn, swaying, instances, impostorPx);
 }
 
 Impostors::Key Viewport::impostorKey(const ViewTree& t) {
@@ -847,7 +851,7 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
         ++mImpostorsWanted;
         if (mImpostors.isBaking(key)) continue;
         std::shared_ptr<const void> owner;
-        std::shared_ptr<const mesh::Mesh> source;
+        std::shared_ptr<const mesh::Mesh> source, reference;
         if (t.lod.variant) {
             // The variant's level made for a tree about twice the atlas' cell high on the
             // reference view (the bake supersamples twice): all its views can show.
@@ -856,6 +860,7 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
             const double distance = double(v.height) * v.referenceHeightPx /
                                     (2.0 * std::tan(0.5 * refFov) * 2.0 * Impostors::kCell);
             source = v.levels[mesh::levelFor(v.levels, distance)].mesh;
+            reference = v.levels.front().mesh;
             owner = t.lod.variant;
         } else {
             // Baked from the tree's coarse level once the worker has made it, or from its own
@@ -863,10 +868,12 @@ void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
             source = mLod->levelMesh(t.mesh.get(), ViewLod::kImpostorLevel - 1);
             if (!source && mLod->pending() > 0 && t.lod.skeleton) continue;
             if (!source) source = t.mesh;
+            reference = t.mesh;
             owner = t.lod.skeleton ? std::shared_ptr<const void>(t.lod.skeleton)
                                    : std::shared_ptr<const void>(t.mesh);
         }
-        mImpostors.request(key, std::move(owner), std::move(source), textures);
+        mImpostors.request(key, std::move(owner), std::move(source), textures, std::move(reference),
+                           ViewLod::impostorHeightPx());
     }
     // Atlases still baking are collected by the timer's frames too, even when no tree in the
     // view wants one now (the view moved nearer meanwhile): else lodPending() stays up.

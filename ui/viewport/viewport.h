@@ -186,6 +186,13 @@ public:
     const std::array<std::size_t, ViewLod::kLevels>& drawnTrianglesPerLevel() const {
         return mDrawnTrianglesPerLevel;
     }
+    /// The height on screen (pixels) under which tree \p index is drawn as its impostor: where
+    /// its baked atlas matches its mesh (Impostors::switchHeightPx()); negative while none is
+    /// baked. Impostors that switch later than the default: impostorsSwitchedLater().
+    double impostorSwitchPx(std::size_t index) const {
+        return index < mTrees.size() ? mImpostors.switchHeightPx(impostorKey(mTrees[index])) : -1.0;
+    }
+    std::size_t impostorsSwitchedLater() const { return mImpostors.switchedLater(); }
     /// Instanced draw calls the last frame's impostors took (one per atlas in view).
     std::size_t impostorDrawCalls() const { return mImpostorDrawCalls; }
     /// Instanced draw calls the last frame's variant instances took (one per variant level in

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "engine/mesh/silhouette.h"
 #include "engine/util/error.h"
 
 namespace sylva::mesh {
@@ -89,51 +90,7 @@ double silhouetteIoU(const Mesh& reference, const Mesh& level, const glm::vec3& 
         2 * (static_cast<int>(std::ceil(static_cast<double>(radius) / metresPerPixel)) + 1);
     if (pixels > 2000) return 1.0; // too near to matter: no chain level switches that near
     const double scale = 1.0 / metresPerPixel;
-    std::vector<std::uint8_t> a(static_cast<std::size_t>(pixels) * pixels),
-        b(static_cast<std::size_t>(pixels) * pixels);
-    const auto mask = [&](const Mesh& mesh, const glm::vec3& right, const glm::vec3& up,
-                          std::vector<std::uint8_t>& covered) {
-        std::fill(covered.begin(), covered.end(), 0);
-        std::vector<glm::dvec2> screen(mesh.positions.size());
-        for (std::size_t i = 0; i < screen.size(); ++i) {
-            const glm::vec3 d = mesh.positions[i] - centre;
-            screen[i] = {glm::dot(d, right) * scale + 0.5 * pixels,
-                         0.5 * pixels - glm::dot(d, up) * scale};
-        }
-        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-            const glm::dvec2 v[3] = {screen[mesh.indices[t]], screen[mesh.indices[t + 1]],
-                                     screen[mesh.indices[t + 2]]};
-            const double area =
-                (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
-            const double sign = area >= 0.0 ? 1.0 : -1.0;
-            const int x0 =
-                std::max(0, static_cast<int>(std::floor(std::min({v[0].x, v[1].x, v[2].x}))));
-            const int x1 = std::min(
-                pixels - 1, static_cast<int>(std::floor(std::max({v[0].x, v[1].x, v[2].x}))));
-            const int y0 =
-                std::max(0, static_cast<int>(std::floor(std::min({v[0].y, v[1].y, v[2].y}))));
-            const int y1 = std::min(
-                pixels - 1, static_cast<int>(std::floor(std::max({v[0].y, v[1].y, v[2].y}))));
-            // Each edge's half-plane pushed out by half a pixel along its normal's L1 extent:
-            // the pixel square overlaps it. Within the bounding box this is the usual
-            // overestimating conservative rasteriser.
-            double ex[3], ey[3], e0[3];
-            for (int k = 0; k < 3; ++k) {
-                const glm::dvec2 p = v[k], q = v[(k + 1) % 3];
-                ex[k] = -sign * (q.y - p.y);
-                ey[k] = sign * (q.x - p.x);
-                e0[k] = -(ex[k] * p.x + ey[k] * p.y) + 0.5 * (std::abs(ex[k]) + std::abs(ey[k]));
-            }
-            for (int y = y0; y <= y1; ++y)
-                for (int x = x0; x <= x1; ++x) {
-                    const double px = x + 0.5, py = y + 0.5;
-                    if (ex[0] * px + ey[0] * py + e0[0] >= 0.0 &&
-                        ex[1] * px + ey[1] * py + e0[1] >= 0.0 &&
-                        ex[2] * px + ey[2] * py + e0[2] >= 0.0)
-                        covered[static_cast<std::size_t>(y) * pixels + x] = 1;
-                }
-        }
-    };
+    std::vector<std::uint8_t> a, b;
     double sum = 0.0;
     for (int k = 0; k < views; ++k) {
         // Around the tree, every other view 20 degrees above the horizon.
@@ -143,14 +100,9 @@ double silhouetteIoU(const Mesh& reference, const Mesh& level, const glm::vec3& 
                             static_cast<float>(std::cos(el) * std::cos(az)));
         glm::vec3 right, up;
         impostorViewBasis(dir, right, up);
-        mask(reference, right, up, a);
-        mask(level, right, up, b);
-        std::size_t both = 0, either = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            both += a[i] && b[i];
-            either += a[i] || b[i];
-        }
-        sum += either ? static_cast<double>(both) / static_cast<double>(either) : 1.0;
+        coverageMask(reference, centre, right, up, scale, pixels, a);
+        coverageMask(level, centre, right, up, scale, pixels, b);
+        sum += maskIoU(a, b);
     }
     return sum / views;
 }
