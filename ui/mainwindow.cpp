@@ -34,6 +34,7 @@
 #include "document/errormessage.h"
 #include "document/filerefs.h"
 #include "document/presetlibrary.h"
+#include "document/projectsettings.h"
 #include "engine/skeleton/skeleton.h"
 #include "ui/document/documentactions.h"
 #include "ui/document/messagespanel.h"
@@ -159,7 +160,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         Q_EMIT generationFinished(false);
     });
     connect(mDocument, &doc::Document::changed, this, &MainWindow::onDocumentChanged);
-    mSettingsSeen = mDocument->settings();
     applyWind();
     connect(mDocument, &doc::Document::titleChanged, this, &MainWindow::updateTitle);
     connect(mDocument, &doc::Document::selectionChanged, this, [this] {
@@ -713,15 +713,13 @@ void MainWindow::onPreviewGenerated(const GenerationResult& run) {
 }
 
 void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
-    const doc::Document::Settings seen = mSettingsSeen;
-    mSettingsSeen = mDocument->settings();
-    if (seen.wind != mSettingsSeen.wind) applyWind();
-    if (change.what == doc::DocumentChange::Settings) {
-        // The wind only moves what is drawn: nothing to regrow when nothing else changed.
-        doc::Document::Settings rest = mSettingsSeen;
-        rest.wind = seen.wind;
-        if (rest == seen) return;
-    }
+    const QString wind = QString::fromLatin1(doc::settingChange::kWind);
+    if (change.what & doc::DocumentChange::Reset || change.settings.contains(wind)) applyWind();
+    // The wind only moves what is drawn: nothing to regrow when nothing else changed.
+    if (change.what == doc::DocumentChange::Settings &&
+        std::all_of(change.settings.begin(), change.settings.end(),
+                    [&wind](const QString& s) { return s == wind; }))
+        return;
     if (change.what & doc::DocumentChange::Reset) {
         const QFileInfo own(mDocument->path());
         mDocumentStamp =
@@ -896,13 +894,7 @@ void MainWindow::setWindTime(std::optional<double> seconds) {
 }
 
 void MainWindow::applyWind() {
-    wind::WindSettings w;
-    if (const std::optional<doc::ProjectWind>& p = mDocument->project().wind) {
-        w.direction = p->direction;
-        w.strength = p->strength;
-        w.gustiness = p->gustiness;
-        w.frequency = p->frequency;
-    }
+    const wind::WindSettings w = mDocument->project().wind.value_or(wind::WindSettings{});
     for (Viewport* v : {mViewport, mWorkbench ? mWorkbench->previewViewport() : nullptr})
         if (v) v->setWind(w);
 }

@@ -217,8 +217,6 @@ private:
     LodChainExportAction* mLodChainExport = nullptr;
     QAction* mAutoReloadAction = nullptr;
     QAction* mWindAction = nullptr;
-    /// The project's settings last seen: an edit of the wind alone regrows nothing.
-    doc::Document::Settings mSettingsSeen;
     /// Gives both views the project's wind.
     void applyWind();
     SourceWatcher* mSourceWatcher = nullptr; ///< the files the shown result was read from

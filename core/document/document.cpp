@@ -15,6 +15,7 @@
 #include "document/commands/speciescommands.h"
 #include "document/commands/treecommands.h"
 #include "document/filerefs.h"
+#include "document/projectsettings.h"
 #include "document/speciesfile.h"
 #include "document/speciesgraphedit.h"
 #include "engine/graph/graph.h"
@@ -300,9 +301,11 @@ void Document::renameSpecies(const std::string& from, const std::string& to) {
 void Document::setSpeciesVariants(const std::string& species, int variants) {
     const int i = speciesIndex(species);
     if (i < 0) throw InvalidInput("unknown species '" + species + "'");
-    if (variants < 0 || variants > 256)
-        throw InvalidInput("variants of species '" + species + "' must be 0 to 256, not " +
-                           std::to_string(variants));
+    const SettingSpec& spec = settings::kVariants;
+    if (variants < spec.min || variants > spec.max)
+        throw InvalidInput("variants of species '" + species + "' must be " +
+                           std::to_string(int(spec.min)) + " to " + std::to_string(int(spec.max)) +
+                           ", not " + std::to_string(variants));
     const ProjectSpecies& old = mProject.species[static_cast<std::size_t>(i)];
     if (old.variants == variants) return;
     ProjectSpecies changed = old;
@@ -701,17 +704,14 @@ void Document::setTreeSeason(TreeId id, const std::string& season) {
     setTree(id, t);
 }
 
-void Document::setWind(const std::optional<ProjectWind>& wind) {
-    if (wind) {
-        sylva::wind::WindSettings check;
-        check.direction = wind->direction;
-        check.strength = wind->strength;
-        check.gustiness = wind->gustiness;
-        check.frequency = wind->frequency;
-        sylva::wind::validate(check); // InvalidInput naming the setting and its allowed range
+void Document::setWind(const std::optional<wind::WindSettings>& wind) {
+    std::optional<wind::WindSettings> w = wind;
+    if (w) {
+        sylva::wind::validate(*w); // InvalidInput naming the setting and its allowed range
+        w->period = sylva::wind::WindSettings{}.period; // an export's setting, not the project's
     }
     Settings s = settings();
-    s.wind = wind;
+    s.wind = w;
     mUndo.push(cmd::changeSettings(*this, s, true,
                                    QCoreApplication::translate("Commands", "Change wind")));
 }
@@ -751,13 +751,23 @@ void Document::rawSetDomain(int index, const PlacementDomain& d) {
 }
 
 void Document::rawSetSettings(const Settings& s) {
+    const Settings before = settings();
     mProject.seed = s.seed;
     mProject.cameraPosition = s.cameraPosition;
     mProject.cameraTarget = s.cameraTarget;
     mProject.lightDirection = s.lightDirection;
     mProject.season = s.season;
     mProject.wind = s.wind;
-    emitChange(DocumentChange::Settings);
+    DocumentChange change;
+    change.what = DocumentChange::Settings;
+    if (before.seed != s.seed) change.settings << QString::fromLatin1(settingChange::kSeed);
+    if (before.cameraPosition != s.cameraPosition || before.cameraTarget != s.cameraTarget)
+        change.settings << QString::fromLatin1(settingChange::kCamera);
+    if (before.lightDirection != s.lightDirection)
+        change.settings << QString::fromLatin1(settingChange::kLight);
+    if (before.season != s.season) change.settings << QString::fromLatin1(settingChange::kSeason);
+    if (before.wind != s.wind) change.settings << QString::fromLatin1(settingChange::kWind);
+    Q_EMIT changed(change);
 }
 
 // --- selection --------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include <QList>
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QUndoStack>
 
 #include "document/project.h"
@@ -33,6 +34,9 @@ struct DocumentChange {
         Reset = 1u << 5,     ///< a new or opened document: everything
     };
     unsigned what = 0;
+    /// With Settings: which ones changed (doc::settingChange: "seed", "camera", "light", "season",
+    /// "wind"), so that a view redraws its wind without regrowing anything.
+    QStringList settings;
     QList<TreeId> trees;
     QString species;
     QString node;
@@ -194,7 +198,7 @@ public:
     void setTreeSeason(TreeId id, const std::string& season);
     /// Sets the project's wind (nullopt: unset, the engine's default, nothing saved); one undo
     /// step. \throw InvalidInput naming the setting and its allowed range (wind::validate).
-    void setWind(const std::optional<ProjectWind>& wind);
+    void setWind(const std::optional<wind::WindSettings>& wind);
 
     // --- hand edits of single branches (docs/branch-edits.md) -------------------------------
     /// \throw InvalidInput for an unknown tree.
@@ -234,7 +238,7 @@ public:
         std::uint64_t seed = 0;
         glm::vec3 cameraPosition{0.0f}, cameraTarget{0.0f}, lightDirection{0.0f};
         std::string season; ///< Project::season
-        std::optional<ProjectWind> wind;
+        std::optional<wind::WindSettings> wind;
         bool operator==(const Settings&) const = default;
     };
     Settings settings() const;

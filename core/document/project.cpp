@@ -1,6 +1,7 @@
 #include "document/project.h"
 
 #include "document/formatupgrade.h"
+#include "document/projectsettings.h"
 #include "engine/graph/vectorparam.h"
 #include "engine/mesh/season.h"
 #include "engine/util/atomicfile.h"
@@ -82,8 +83,11 @@ ProjectSpecies parseSpeciesRef(const Value& v, std::size_t i) {
     }
     if (const Value* k = v.find("variants")) {
         const double x = k->toNumber(where + ".variants");
-        if (!(x >= 0 && x <= 256 && x == std::floor(x)))
-            throw InvalidInput(where + ".variants must be a whole number in [0, 256]");
+        const SettingSpec& spec = settings::kVariants;
+        if (!(x >= spec.min && x <= spec.max && x == std::floor(x)))
+            throw InvalidInput(where + ".variants must be a whole number in [" +
+                               std::to_string(int(spec.min)) + ", " +
+                               std::to_string(int(spec.max)) + "]");
         s.variants = static_cast<int>(x);
     }
     if (s.file.empty() == !s.graph.has_value())
@@ -417,17 +421,12 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
                 throw InvalidInput("light.direction must not be zero");
         }
         if (const Value* w = root.find("wind")) {
-            ProjectWind wind;
+            wind::WindSettings wind;
             wind.direction = vec3Or(*w, "direction", wind.direction, "wind");
             wind.strength = static_cast<float>(w->number("strength", wind.strength));
             wind.gustiness = static_cast<float>(w->number("gustiness", wind.gustiness));
             wind.frequency = static_cast<float>(w->number("frequency", wind.frequency));
-            sylva::wind::WindSettings check;
-            check.direction = wind.direction;
-            check.strength = wind.strength;
-            check.gustiness = wind.gustiness;
-            check.frequency = wind.frequency;
-            sylva::wind::validate(check); // names the setting and its allowed range
+            sylva::wind::validate(wind); // names the setting and its allowed range
             p.wind = wind;
         }
         p.season = checkedSeason(root.string("season", ""), "season");

@@ -14,6 +14,7 @@
 #include "document/formatupgrade.h"
 #include "engine/skeleton/branches.h"
 #include "engine/util/value.h"
+#include "engine/wind/windmodel.h"
 
 namespace sylva::doc {
 
@@ -92,16 +93,6 @@ struct ProjectObstacle {
     bool operator==(const ProjectObstacle&) const = default;
 };
 
-/// The project's wind ("wind" in the file; docs/wind.md): what the viewport plays and what wind
-/// exports use. Absent from files that never set it, which then keep their bytes.
-struct ProjectWind {
-    glm::vec3 direction{1.0f, 0.0f, 0.0f}; ///< where the wind blows to; only x and z count
-    float strength = 0.5f;                 ///< 0 .. 2
-    float gustiness = 0.3f;                ///< 0 .. 1
-    float frequency = 0.5f;                ///< Hz of the trunk's sway, 0.05 .. 5
-    bool operator==(const ProjectWind&) const = default;
-};
-
 /// The document behind a `.sylva` file. Paths are kept as written (relative to the project) and
 /// resolved with resolve().
 struct Project {
@@ -116,7 +107,11 @@ struct Project {
     std::uint64_t nextTreeId = 1;
     glm::vec3 cameraPosition{0.0f, 20.0f, 80.0f}, cameraTarget{0.0f};
     glm::vec3 lightDirection{0.3f, -1.0f, 0.2f};
-    std::optional<ProjectWind> wind; ///< unset: the engine's default wind, nothing saved
+    /// The project's wind ("wind" in the file; docs/wind.md): what the viewport plays and what
+    /// wind exports use; the model's own settings, stored once. Unset: the engine's default,
+    /// nothing saved (files that never set it keep their bytes). Its period (a clip's length)
+    /// is an export's setting: a project's wind keeps the default one, and the file has none.
+    std::optional<wind::WindSettings> wind;
     /// The season of every tree without its own ("spring", "summer", "autumn", "winter");
     /// empty: each species' own (summer, the look of files written before seasons existed).
     std::string season;

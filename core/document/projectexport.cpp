@@ -52,15 +52,10 @@ forest::ForestOptions forestOptions(const ExportRequest& r) {
 
 } // namespace
 
-exporter::WindExportOptions exportWind(const std::optional<ProjectWind>& projectWind,
+exporter::WindExportOptions exportWind(const std::optional<wind::WindSettings>& projectWind,
                                        const WindOverride& override) {
     exporter::WindExportOptions o;
-    if (projectWind) {
-        o.wind.direction = projectWind->direction;
-        o.wind.strength = projectWind->strength;
-        o.wind.gustiness = projectWind->gustiness;
-        o.wind.frequency = projectWind->frequency;
-    }
+    if (projectWind) o.wind = *projectWind; // its period is the default: a clip's is below
     if (override.direction) o.wind.direction = *override.direction;
     if (override.strength) o.wind.strength = *override.strength;
     if (override.gustiness) o.wind.gustiness = *override.gustiness;

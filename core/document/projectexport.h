@@ -67,7 +67,7 @@ struct ExportReport {
 
 /// The wind an export writes: the project's wind (or the engine's defaults) with \p override
 /// over it, validated (InvalidInput naming the range).
-exporter::WindExportOptions exportWind(const std::optional<ProjectWind>& projectWind,
+exporter::WindExportOptions exportWind(const std::optional<wind::WindSettings>& projectWind,
                                        const WindOverride& override);
 
 /// What identifies a run for `sylva-cli compose` (written into every `.usda` tile as

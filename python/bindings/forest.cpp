@@ -18,6 +18,7 @@
 #include "document/filerefs.h"
 #include "document/project.h"
 #include "document/projectexport.h"
+#include "document/projectsettings.h"
 #include "document/scenebuild.h"
 #include "document/speciesfile.h"
 #include "engine/environment/obstaclemesh.h"
@@ -65,7 +66,7 @@ struct Forest {
     /// Built with wind data (build_forest(wind=True)): node ids in the meshes, skeletons kept.
     bool windData = false;
     /// The project's wind when it was built (the defaults of export(wind=True)).
-    std::optional<doc::ProjectWind> projectWind;
+    std::optional<wind::WindSettings> projectWind;
 };
 
 struct BuildOptions {
@@ -500,7 +501,7 @@ void bindForest(py::module_& m) {
                     return;
                 }
                 // Keys not given take the defaults; unknown keys are refused.
-                doc::ProjectWind w;
+                wind::WindSettings w;
                 for (const auto& [key, value] : v.cast<py::dict>()) {
                     const std::string k = key.cast<std::string>();
                     if (k == "direction")
@@ -565,15 +566,19 @@ void bindForest(py::module_& m) {
             [](Project& p, const std::string& species, int k) {
                 for (doc::ProjectSpecies& s : p.project.species)
                     if (s.name == species) {
-                        requireRange(("variants of '" + species + "'").c_str(), k, 0, 256);
+                        requireRange(("variants of '" + species + "'").c_str(), k,
+                                     doc::settings::kVariants.min, doc::settings::kVariants.max);
                         s.variants = k;
                         return;
                     }
                 throw InvalidInput("the project has no species '" + species + "'");
             },
             py::arg("species"), py::arg("k"),
-            "how many variants the species' instanced trees share (0..256, default 8; 0: every "
-            "tree of the species is grown for its place)")
+            ("how many variants the species' instanced trees share (" +
+             doc::settings::kVariants.rangeText() + ", default " +
+             std::to_string(doc::kDefaultVariants) +
+             "; 0: every tree of the species is grown for its place)")
+                .c_str())
         .def_property_readonly(
             "obstacles", [](const Project& p) { return obstaclesList(p.project.obstacles); },
             "the obstacle files (dicts: file, translate, rotate, scale); arrays are not listed")

@@ -57,7 +57,7 @@ py::object seasonTo(const std::string& season) {
     return season.empty() ? py::object(py::none()) : py::object(py::str(season));
 }
 
-py::object windTo(const std::optional<doc::ProjectWind>& w) {
+py::object windTo(const std::optional<wind::WindSettings>& w) {
     if (!w) return py::none();
     py::dict d;
     d["direction"] = fromVec3(w->direction);

@@ -53,7 +53,7 @@ std::string seasonFrom(const py::object& season);
 py::object seasonTo(const std::string& season);
 /// A project's wind as Python sees it: None when unset, else a dict of direction, strength,
 /// gustiness and frequency (`sylva.Project.wind` and the editor's `doc.wind()`).
-py::object windTo(const std::optional<doc::ProjectWind>& wind);
+py::object windTo(const std::optional<wind::WindSettings>& wind);
 
 Tree treeOf(std::uint64_t id, const doc::ProjectInstance& t);
 

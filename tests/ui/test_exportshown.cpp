@@ -112,7 +112,7 @@ private Q_SLOTS:
         QVERIFY(!exportShown(path, shown()).wind);
         QVERIFY(!glbJson(path).contains(QStringLiteral("skins")));
 
-        doc::ProjectWind wind;
+        wind::WindSettings wind;
         wind.strength = 1.25f;
         wind.direction = glm::vec3(0, 0, 1);
         mDocument.setWind(wind);

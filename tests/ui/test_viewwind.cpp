@@ -23,6 +23,7 @@
 #include "demowindow.h"
 #include "document/document.h"
 #include "document/presetlibrary.h"
+#include "document/projectsettings.h"
 #include "document/speciesfile.h"
 #include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
@@ -236,6 +237,16 @@ private Q_SLOTS:
             mWindow->properties()->findChild<QDoubleSpinBox*>(QStringLiteral("windGustiness"));
         QVERIFY(strength && direction && gustiness);
         QCOMPARE(strength->value(), 0.5); // the engine's default until the project sets it
+        // The rows are the settings spec's (issue 42): range, step, decimals and help.
+        for (const auto& [box, spec] : {std::pair{strength, &doc::settings::kWindStrength},
+                                        std::pair{gustiness, &doc::settings::kWindGustiness},
+                                        std::pair{direction, &doc::settings::kWindDirection}}) {
+            QCOMPARE(box->minimum(), spec->min);
+            QCOMPARE(box->maximum(), spec->max);
+            QCOMPARE(box->singleStep(), spec->step);
+            QCOMPARE(box->decimals(), spec->decimals);
+            QCOMPARE(box->toolTip(), spec->translatedHelp());
+        }
         strength->setFocus();
         strength->selectAll();
         QTest::keyClicks(strength, QStringLiteral("1.5"));

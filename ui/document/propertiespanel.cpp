@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "document/errormessage.h"
+#include "document/projectsettings.h"
 
 namespace sylva::ui {
 
@@ -39,6 +40,13 @@ PropertiesPanel::PropertiesPanel(doc::Document& document, QWidget* parent)
             refresh();
     });
     rebuild();
+}
+
+int PropertiesPanel::addSetting(const doc::SettingSpec& spec) {
+    QString unit = QString::fromUtf8(spec.unit);
+    if (!unit.isEmpty() && unit != QStringLiteral("°")) unit.prepend(QLatin1Char(' '));
+    return addSpins(spec.translatedLabel() + tr(":"), 1, spec.min, spec.max, spec.step,
+                    spec.decimals, unit, spec.translatedHelp());
 }
 
 int PropertiesPanel::addSpins(const QString& label, int count, double lo, double hi, double step,
@@ -154,47 +162,42 @@ void PropertiesPanel::rebuild() {
         });
         // The wind the viewport plays (View ▸ Wind) and wind exports use; the engine's
         // defaults shown until the project sets it. Each change is one "Change wind" step.
-        const int windDir = addSpins(tr("Wind direction:"), 1, 0, 360, 15, 0, tr("°"),
-                                     tr("Where the wind blows to, about the vertical: 0° along "
-                                        "+X, 90° along +Z"));
+        namespace spec = doc::settings;
+        const int windDir = addSetting(spec::kWindDirection);
         mSpins[std::size_t(windDir)]->setWrapping(true);
-        const int windStrength =
-            addSpins(tr("Wind strength:"), 1, 0, 2, 0.1, 2, {},
-                     tr("0 calm, 1 strong, 2 storm: trees bend with its square"));
-        const int windGust = addSpins(tr("Gustiness:"), 1, 0, 1, 0.05, 2, {},
-                                      tr("0 a steady wind, 1 gusts that double the pressure"));
-        const int windFrequency =
-            addSpins(tr("Sway frequency:"), 1, 0.05, 5, 0.05, 2, tr(" Hz"),
-                     tr("How often the trunks sway; limbs, branches and leaves go faster"));
+        const int windStrength = addSetting(spec::kWindStrength);
+        const int windGust = addSetting(spec::kWindGustiness);
+        const int windFrequency = addSetting(spec::kWindFrequency);
         mSpins[std::size_t(windDir)]->setObjectName(QStringLiteral("windDirection"));
         mSpins[std::size_t(windStrength)]->setObjectName(QStringLiteral("windStrength"));
         mSpins[std::size_t(windGust)]->setObjectName(QStringLiteral("windGustiness"));
         mSpins[std::size_t(windFrequency)]->setObjectName(QStringLiteral("windFrequency"));
-        auto windEdit = [this](int spinIndex, std::function<void(doc::ProjectWind&, double)> set) {
+        auto windEdit = [this](int spinIndex,
+                               std::function<void(wind::WindSettings&, double)> set) {
             connect(mSpins[std::size_t(spinIndex)], &QDoubleSpinBox::valueChanged, this,
                     [this, set](double value) {
                         apply([this, set, value] {
-                            doc::ProjectWind w =
-                                mDocument.project().wind.value_or(doc::ProjectWind{});
+                            wind::WindSettings w =
+                                mDocument.project().wind.value_or(wind::WindSettings{});
                             set(w, value);
                             mDocument.setWind(w);
                         });
                     });
         };
-        windEdit(windDir, [](doc::ProjectWind& w, double degrees) {
+        windEdit(windDir, [](wind::WindSettings& w, double degrees) {
             const double a = degrees * 3.14159265358979323846 / 180.0;
             // Whole numbers where the angle is a right one, not 6e-17 in the file.
             auto clean = [](double v) { return std::abs(v) < 1e-7 ? 0.0f : float(v); };
             w.direction = {clean(std::cos(a)), 0.0f, clean(std::sin(a))};
         });
-        windEdit(windStrength, [](doc::ProjectWind& w, double v) { w.strength = float(v); });
-        windEdit(windGust, [](doc::ProjectWind& w, double v) { w.gustiness = float(v); });
-        windEdit(windFrequency, [](doc::ProjectWind& w, double v) { w.frequency = float(v); });
+        windEdit(windStrength, [](wind::WindSettings& w, double v) { w.strength = float(v); });
+        windEdit(windGust, [](wind::WindSettings& w, double v) { w.gustiness = float(v); });
+        windEdit(windFrequency, [](wind::WindSettings& w, double v) { w.frequency = float(v); });
         mRefresh = [this, windDir, windStrength, windGust, windFrequency] {
             mInfo->setText(mDocument.path().isEmpty() ? tr("not saved yet") : mDocument.path());
             mSeed->setText(QString::number(mDocument.project().seed));
             showSeason(mDocument.project().season);
-            const doc::ProjectWind w = mDocument.project().wind.value_or(doc::ProjectWind{});
+            const wind::WindSettings w = mDocument.project().wind.value_or(wind::WindSettings{});
             double degrees = std::atan2(double(w.direction.z), double(w.direction.x)) * 180.0 /
                              3.14159265358979323846;
             if (degrees < 0.0) degrees += 360.0;
@@ -355,13 +358,7 @@ void PropertiesPanel::rebuild() {
         mInfo->setTextInteractionFlags(Qt::TextSelectableByMouse);
         mForm->addRow(mInfo);
         // K (issue 30): how many different trees of the species a forest repeats.
-        const int variants =
-            addSpins(tr("Variants:"), 1, 0, 256, 1, 0, {},
-                     tr("How many different trees of this species the forest is made of: a tree "
-                        "that touches no obstacle and no neighbour's crown shows one of them, "
-                        "turned and scaled; one that does is cut back from one of them. Fewer "
-                        "variants generate and export faster; 0 grows every tree for its "
-                        "place."));
+        const int variants = addSetting(doc::settings::kVariants);
         mSpins[std::size_t(variants)]->setSpecialValueText(tr("0 (every tree unique)"));
         connectAll(variants, 1, [this, i, variants] {
             if (i >= int(mDocument.project().species.size())) return;

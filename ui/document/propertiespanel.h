@@ -14,6 +14,10 @@ class QFormLayout;
 class QLineEdit;
 class QLabel;
 
+namespace sylva::doc {
+struct SettingSpec;
+}
+
 namespace sylva::ui {
 
 /// The Properties dock: typed editors for the selected tree, obstacle, domain, species, the
@@ -40,6 +44,9 @@ private:
     /// mSpins.
     int addSpins(const QString& label, int count, double lo, double hi, double step, int decimals,
                  const QString& suffix, const QString& tooltip);
+    /// A row of one spin box for a project setting: its label, range, step, decimals, unit and
+    /// help from its spec (core/document/projectsettings.h); returns its index in mSpins.
+    int addSetting(const doc::SettingSpec& spec);
     double spin(int i) const;
     glm::vec3 vec3At(int first) const;
     /// A Season row: \p unset names what an empty season means (the species' own, or the

@@ -560,7 +560,7 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             [](DocumentApi&, py::object direction, py::object strength, py::object gustiness,
                py::object frequency) {
                 // Settings not given keep the project's (or, when it has none, the default's).
-                doc::ProjectWind w = document().project().wind.value_or(doc::ProjectWind{});
+                wind::WindSettings w = document().project().wind.value_or(wind::WindSettings{});
                 if (!direction.is_none()) w.direction = toVec3(direction, "direction");
                 if (!strength.is_none()) w.strength = strength.cast<float>();
                 if (!gustiness.is_none()) w.gustiness = gustiness.cast<float>();

@@ -20,10 +20,10 @@ float roundCycles(float x) {
 } // namespace
 
 void validate(const WindSettings& s) {
-    requireRange("wind strength", s.strength, 0.0, 2.0);
-    requireRange("wind gustiness", s.gustiness, 0.0, 1.0);
-    requireRange("wind frequency", s.frequency, 0.05, 5.0);
-    requireRange("wind period", s.period, 0.5, 600.0);
+    requireRange("wind strength", s.strength, kStrengthRange.lo, kStrengthRange.hi);
+    requireRange("wind gustiness", s.gustiness, kGustinessRange.lo, kGustinessRange.hi);
+    requireRange("wind frequency", s.frequency, kFrequencyRange.lo, kFrequencyRange.hi);
+    requireRange("wind period", s.period, kPeriodRange.lo, kPeriodRange.hi);
     if (!std::isfinite(s.direction.x) || !std::isfinite(s.direction.y) ||
         !std::isfinite(s.direction.z))
         throw InvalidInput("wind direction must be three finite numbers");

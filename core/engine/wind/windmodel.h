@@ -8,6 +8,14 @@ namespace sylva::wind {
 
 /// The wind a tree stands in (docs/wind.md). Every consumer (the per-vertex shader data, the
 /// baked clip, the viewport's vertex shader) evaluates the same model with these.
+/// The allowed range of a wind setting: the one place it is stated (validate(), the project's
+/// settings spec core/document/projectsettings.h, the Properties panel, Python and the CLI).
+struct WindRange {
+    double lo, hi;
+};
+inline constexpr WindRange kStrengthRange{0.0, 2.0}, kGustinessRange{0.0, 1.0},
+    kFrequencyRange{0.05, 5.0}, kPeriodRange{0.5, 600.0};
+
 struct WindSettings {
     glm::vec3 direction{1.0f, 0.0f, 0.0f}; ///< where the wind blows to; only x and z count
     float strength = 0.5f;                 ///< 0 (calm) .. 2 (storm); bending grows with its square
@@ -16,6 +24,7 @@ struct WindSettings {
     /// Seconds after which the motion repeats exactly (a baked clip's length): every frequency
     /// of the model is a whole multiple of 1 / period. 0.5 .. 600.
     float period = 4.0f;
+    bool operator==(const WindSettings&) const = default;
 };
 
 /// Throws InvalidInput naming the allowed range of a setting outside it.

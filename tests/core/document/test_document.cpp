@@ -5,6 +5,7 @@
 #include "document/document.h"
 #include "document/filerefs.h"
 #include "document/presetlibrary.h"
+#include "document/projectsettings.h"
 #include "document/speciesfile.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -158,7 +159,7 @@ TEST_F(DocumentTest, WindIsOneUndoableStepWithExactBytes) {
     QList<doc::DocumentChange> changes;
     QObject::connect(&mDoc, &Document::changed,
                      [&](const doc::DocumentChange& c) { changes << c; });
-    doc::ProjectWind wind;
+    wind::WindSettings wind;
     wind.direction = {0.0f, 0.0f, -1.0f};
     wind.strength = 1.25f;
     wind.gustiness = 0.7f;
@@ -169,12 +170,15 @@ TEST_F(DocumentTest, WindIsOneUndoableStepWithExactBytes) {
     EXPECT_EQ(*mDoc.project().wind, wind);
     EXPECT_FALSE(changes.isEmpty());
     EXPECT_TRUE(changes.last().what & doc::DocumentChange::Settings);
+    // The change says which setting it was (the window redraws its wind, regrows nothing).
+    EXPECT_EQ(changes.last().settings, QStringList{QStringLiteral("wind")});
     const QByteArray windy = bytes();
     EXPECT_NE(windy.indexOf("\"wind\""), -1);
     // Setting the same wind again leaves no step.
     mDoc.setWind(wind);
     EXPECT_EQ(mDoc.undoStack()->count(), steps + 1);
     mDoc.undoStack()->undo();
+    EXPECT_EQ(changes.last().settings, QStringList{QStringLiteral("wind")});
     EXPECT_EQ(bytes(), original); // an unset wind is not written: the exact bytes come back
     EXPECT_FALSE(mDoc.project().wind.has_value());
     mDoc.undoStack()->redo();
@@ -185,7 +189,7 @@ TEST_F(DocumentTest, WindIsOneUndoableStepWithExactBytes) {
     mDoc.undoStack()->undo();
     EXPECT_EQ(bytes(), windy);
     // Out of range: a clear error naming the range, nothing changed.
-    doc::ProjectWind storm = wind;
+    wind::WindSettings storm = wind;
     storm.strength = 3.0f;
     const int before = mDoc.undoStack()->count();
     try {
@@ -900,4 +904,64 @@ TEST_F(DocumentTest, BranchEditsAreUndoableSteps) {
     }
     EXPECT_THROW(mDoc.editBranch(9999, cut), InvalidInput);
     EXPECT_EQ(bytes(), before);
+}
+
+// Issue 42: one spec for the project's settings. Its ranges are the engine's (a wind at each
+// end of a range is accepted, past it refused by the document and by the parser alike), its
+// defaults the engine's, and a settings edit names what it changed.
+TEST_F(DocumentTest, SettingsSpecIsWhatTheDocumentAndTheFileAccept) {
+    namespace spec = doc::settings;
+    const wind::WindSettings defaults;
+    EXPECT_EQ(spec::kWindStrength.defaultValue, double(defaults.strength));
+    EXPECT_EQ(spec::kWindGustiness.defaultValue, double(defaults.gustiness));
+    EXPECT_EQ(spec::kWindFrequency.defaultValue, double(defaults.frequency));
+    EXPECT_EQ(spec::kVariants.defaultValue, double(doc::kDefaultVariants));
+    EXPECT_EQ(spec::kWindFrequency.rangeText(), "0.05 .. 5 Hz");
+    EXPECT_EQ(spec::find("wind.strength"), &spec::kWindStrength);
+    EXPECT_EQ(spec::find("no.such"), nullptr);
+    struct Field {
+        const doc::SettingSpec* spec;
+        float wind::WindSettings::*member;
+    };
+    for (const Field& f : {Field{&spec::kWindStrength, &wind::WindSettings::strength},
+                           Field{&spec::kWindGustiness, &wind::WindSettings::gustiness},
+                           Field{&spec::kWindFrequency, &wind::WindSettings::frequency}}) {
+        for (const double v : {f.spec->min, f.spec->max}) {
+            wind::WindSettings w;
+            w.*f.member = float(v);
+            EXPECT_NO_THROW(mDoc.setWind(w)) << f.spec->key << " " << v;
+        }
+        for (const double v : {f.spec->min - 0.01, f.spec->max + 0.01}) {
+            wind::WindSettings w;
+            w.*f.member = float(v);
+            EXPECT_THROW(mDoc.setWind(w), InvalidInput) << f.spec->key << " " << v;
+            EXPECT_THROW(f.spec->check(v), InvalidInput) << f.spec->key << " " << v;
+        }
+    }
+    // The species' K: the document's setter and the file's parser both hold the spec's range.
+    ASSERT_FALSE(mDoc.project().species.empty());
+    const std::string species = mDoc.project().species.front().name;
+    EXPECT_NO_THROW(mDoc.setSpeciesVariants(species, int(spec::kVariants.max)));
+    EXPECT_THROW(mDoc.setSpeciesVariants(species, int(spec::kVariants.max) + 1), InvalidInput);
+    QByteArray text = bytes();
+    const QByteArray k =
+        QByteArray("\"variants\": ") + QByteArray::number(int(spec::kVariants.max));
+    ASSERT_NE(text.indexOf(k), -1) << text.constData();
+    text.replace(k,
+                 QByteArray("\"variants\": ") + QByteArray::number(int(spec::kVariants.max) + 1));
+    try {
+        doc::parseProject(text, QString());
+        ADD_FAILURE() << "variants past the spec's range were accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("[0, 256]"), std::string::npos) << e.what();
+    }
+    // A settings edit names what it changed; one that changes two names both.
+    QList<doc::DocumentChange> changes;
+    QObject::connect(&mDoc, &Document::changed,
+                     [&](const doc::DocumentChange& c) { changes << c; });
+    mDoc.setSeed(mDoc.project().seed + 1);
+    ASSERT_FALSE(changes.isEmpty());
+    EXPECT_EQ(changes.last().settings, QStringList{QStringLiteral("seed")});
+    mDoc.setLight({0.1f, -1.0f, 0.4f});
+    EXPECT_EQ(changes.last().settings, QStringList{QStringLiteral("light")});
 }

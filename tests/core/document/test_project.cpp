@@ -69,7 +69,7 @@ TEST(Project, FloatsAreSavedAsTheDecimalsTheyWereWrittenAs) {
     EXPECT_TRUE(saved.contains("[0.3,-1,0.2]")) << saved.toStdString();
     EXPECT_FALSE(saved.contains("0.3000000")) << saved.toStdString();
     doc::Project windy = p;
-    windy.wind = doc::ProjectWind{{0.1f, 0.0f, -0.7f}, 0.3f, 0.1f, 0.45f};
+    windy.wind = wind::WindSettings{{0.1f, 0.0f, -0.7f}, 0.3f, 0.1f, 0.45f};
     const QByteArray w = doc::serializeProject(windy);
     EXPECT_TRUE(w.contains("\"strength\": 0.3")) << w.toStdString();
     EXPECT_TRUE(w.contains("[0.1,0,-0.7]")) << w.toStdString();
@@ -79,7 +79,7 @@ TEST(Project, WindIsSavedOnlyWhenSetAndRoundTrips) {
     doc::Project p = doc::parseProject(kContract, "/proj/forest.sylva");
     EXPECT_FALSE(p.wind);
     EXPECT_FALSE(doc::serializeProject(p).contains("\"wind\""));
-    p.wind = doc::ProjectWind{{0.0f, 0.0f, -1.0f}, 1.25f, 0.75f, 0.4f};
+    p.wind = wind::WindSettings{{0.0f, 0.0f, -1.0f}, 1.25f, 0.75f, 0.4f};
     const QByteArray saved = doc::serializeProject(p);
     EXPECT_TRUE(saved.contains("\"wind\""));
     const doc::Project again = doc::parseProject(saved, "/proj/forest.sylva");
