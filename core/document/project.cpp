@@ -7,6 +7,7 @@
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/text.h"
 #include "engine/wind/windmodel.h"
 
 #include <QDir>
@@ -45,16 +46,6 @@ glm::vec2 vec2Of(const Value& v, const std::string& what) {
     const Value::Array& a = v.toArray(what);
     if (a.size() != 2) throw InvalidInput(what + " must be [x, z]");
     return {static_cast<float>(a[0].toNumber(what)), static_cast<float>(a[1].toNumber(what))};
-}
-
-/// A float as the double of its shortest decimal: 0.3f saves as 0.3, not as the double
-/// 0.30000001192092896 it widens to, so opening and saving a file gives back its own text.
-double decimalOf(float f) {
-    char buf[32];
-    const auto res = std::to_chars(buf, buf + sizeof buf, f);
-    double d = 0.0;
-    std::from_chars(buf, res.ptr, d);
-    return d;
 }
 
 Value arrayOf(const glm::vec3& v) {
@@ -272,9 +263,7 @@ void checkBranchEdit(const skel::BranchEdit& e, const std::string& where) {
                            "\" is not a branch id (ranks joined by dots, such as \"0.3.1\")");
     auto scale = [&](const char* name, float x) {
         if (!(x >= skel::kBranchScaleMin && x <= skel::kBranchScaleMax)) {
-            char buf[32];
-            const auto res = std::to_chars(buf, buf + sizeof buf, x);
-            throw InvalidInput(where + "." + name + " " + std::string(buf, res.ptr) +
+            throw InvalidInput(where + "." + name + " " + shortestDecimal(x) +
                                " is out of range [0.05, 20]");
         }
     };

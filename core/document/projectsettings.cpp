@@ -6,28 +6,19 @@
 
 #include "document/project.h"
 #include "engine/util/error.h"
+#include "engine/util/text.h"
 #include "engine/wind/windmodel.h"
 
 namespace sylva::doc {
-
-namespace {
-
-std::string shortest(double v) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
-}
-
-} // namespace
 
 void SettingSpec::check(double value) const {
     requireRange(key, value, min, max);
 }
 
 std::string SettingSpec::rangeText() const {
-    std::string out = shortest(min);
+    std::string out = shortestDecimal(min);
     out.append(" .. ");
-    out.append(shortest(max));
+    out.append(shortestDecimal(max));
     const std::string u(unit);
     if (!u.empty() && u != "°") out.push_back(' ');
     out.append(u);

@@ -18,6 +18,7 @@
 #include "engine/environment/fbxcheck.h"
 #include "engine/environment/scenegraphwalk.h"
 #include "engine/util/error.h"
+#include "engine/util/text.h"
 #include "engine/util/value.h"
 
 namespace sylva::env {
@@ -887,12 +888,6 @@ void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems) {
         // A glTF by extension, or anything that looks like JSON (Assimp sniffs the content of
         // a file whose extension it does not know).
         checkGltfJson(file, readAll(in));
-}
-
-std::string lowerAscii(std::string text) {
-    for (char& ch : text)
-        if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
-    return text;
 }
 
 std::string objGeometryOnly(std::string text) {

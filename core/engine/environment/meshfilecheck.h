@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <string>
 
+#include "engine/util/text.h"
+
 namespace sylva::env {
 
 /// Most triangles an obstacle or terrain mesh may hold, and most items any element of a PLY
@@ -47,9 +49,6 @@ inline constexpr std::size_t kMaxObstacleTriangles = 10'000'000;
 /// 9·\p maxItems.
 /// \throw IoError when the file cannot be read.
 void checkMeshFile(const std::filesystem::path& file, std::size_t maxItems = kMaxObstacleTriangles);
-
-/// \p text with A–Z made a–z (file names and extensions, as Assimp compares them).
-std::string lowerAscii(std::string text);
 
 /// The text of an OBJ file with its line (`l`) and point (`p`) elements and its material
 /// libraries (`mtllib`, and `mg`) made comments, as Debian's Assimp 5.2.5 would split it into

@@ -6,6 +6,7 @@
 
 #include "engine/lsystem/scanner.h"
 #include "engine/util/error.h"
+#include "engine/util/text.h"
 
 namespace sylva::lsys {
 
@@ -618,11 +619,7 @@ private:
         mGrammar.rules.push_back(std::move(rule));
     }
 
-    static std::string formatNumber(double v) {
-        char buf[64];
-        const auto r = std::to_chars(buf, buf + sizeof buf, v);
-        return std::string(buf, r.ptr);
-    }
+    static std::string formatNumber(double v) { return shortestDecimal(v); }
 
     // ---- legacy format ----------------------------------------------------------------------
 

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "engine/util/error.h"
+#include "engine/util/text.h"
 
 namespace sylva::exporter::gltf {
 
@@ -86,11 +87,7 @@ void requireFinite(const Json& j) {
 } // namespace
 
 double tidy(float value) {
-    char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, value);
-    double out = 0.0;
-    std::from_chars(buf, r.ptr, out);
-    return out;
+    return decimalOf(value);
 }
 
 GltfBuilder::GltfBuilder(fs::path path, GltfFormat format, Progress& progress,
