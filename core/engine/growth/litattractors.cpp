@@ -110,15 +110,35 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
             std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
             median[b] = v[v.size() / 2];
         }
+        // Each point's band, its eligibility for an outer centre (lit half of its band) and
+        // for an inner one, and sqrt(exposure), made once, not once a centre: the centres are
+        // chosen among the eligible points only, in index order, by the same score expression
+        // and the same strict '>' (the same centres, bit for bit). `nearest` is kept for every
+        // point (the inner centres read it).
+        std::vector<std::uint32_t> outer, inner;
+        std::vector<float> rootExposure(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const float m = median[bandOf(points[i])];
+            rootExposure[i] = std::sqrt(exposure[i]);
+            if (shadow[i] <= m)
+                outer.push_back(static_cast<std::uint32_t>(i));
+            else if (shadow[i] < shedAbove)
+                inner.push_back(static_cast<std::uint32_t>(i));
+        }
         std::vector<float> nearest(points.size(), std::numeric_limits<float>::max());
+        auto closer = [&](const glm::vec3& centre) {
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                const glm::vec3 d = points[i] - centre;
+                nearest[i] = std::min(nearest[i], glm::dot(d, d));
+            }
+        };
         const std::size_t k = std::min(points.size(), static_cast<std::size_t>(params.clusters));
         for (std::size_t c = 0; c < k; ++c) {
             std::size_t best = 0;
             float bestScore = -1.0f;
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                if (shadow[i] > median[bandOf(points[i])]) continue;
+            for (std::uint32_t i : outer) {
                 const float spread = centres.empty() ? 1.0f : std::sqrt(nearest[i]);
-                const float score = std::sqrt(exposure[i]) * spread * jitter[i];
+                const float score = rootExposure[i] * spread * jitter[i];
                 if (score > bestScore) {
                     bestScore = score;
                     best = i;
@@ -127,10 +147,7 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
             centres.push_back(points[best]);
             radii.push_back(params.clusterRadius * halfExtent *
                             (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                const glm::vec3 d = points[i] - points[best];
-                nearest[i] = std::min(nearest[i], glm::dot(d, d));
-            }
+            closer(points[best]);
         }
         // Inner clusters: among the shaded inside that is not shed, as far from every centre
         // as possible, so the limbs carry foliage through the depth of the crown.
@@ -138,8 +155,7 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
         for (int c = 0; c < innerCount; ++c) {
             std::size_t best = points.size();
             float bestScore = -1.0f;
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                if (shadow[i] <= median[bandOf(points[i])] || shadow[i] >= shedAbove) continue;
+            for (std::uint32_t i : inner) {
                 const float score = std::sqrt(nearest[i]) * jitter[i];
                 if (score > bestScore) {
                     bestScore = score;
@@ -150,10 +166,7 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
             centres.push_back(points[best]);
             radii.push_back(innerR *
                             (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                const glm::vec3 d = points[i] - points[best];
-                nearest[i] = std::min(nearest[i], glm::dot(d, d));
-            }
+            closer(points[best]);
         }
     }
 

@@ -27,12 +27,14 @@ struct Placer {
     const LeafPlacement& p;
     glm::vec3 light;
     std::vector<skel::Leaf>& out;
+    // The petiole angle's sine and cosine, made once (they were made again for every leaf).
+    float sinPetiole = std::sin(static_cast<float>(p.petioleAngle * kDeg));
+    float cosPetiole = std::cos(static_cast<float>(p.petioleAngle * kDeg));
 
     // A leaf at \p base on a branch with tangent \p t, radial direction \p radial.
     void leaf(const glm::vec3& base, const glm::vec3& t, const glm::vec3& radial, float forward,
               Rng& rng, std::int32_t node) {
-        const float pa = static_cast<float>(p.petioleAngle * kDeg);
-        glm::vec3 h = glm::normalize(std::sin(pa) * radial + std::cos(pa) * t + forward * t);
+        glm::vec3 h = glm::normalize(sinPetiole * radial + cosPetiole * t + forward * t);
         glm::vec3 n = static_cast<float>(p.normalWeight) * radial +
                       static_cast<float>(p.upWeight) * glm::vec3(0, 1, 0) +
                       static_cast<float>(p.lightWeight) * light;
