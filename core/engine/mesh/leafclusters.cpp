@@ -384,7 +384,15 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
         if (count > limit) cell *= 1.08;
     }
     if (count > limit) count = CellTable(leaves.size()).fill(mids, cell, leaves.size(), groupOf);
+    // Each group's storage at its size, allocated in group order: the groups lie one after
+    // the other in memory for the passes over them (grown leaf by leaf they were scattered,
+    // and reading each group's first leaf missed the cache).
+    std::vector<std::uint32_t> sizes(count, 0);
+    for (std::uint32_t g : groupOf)
+        ++sizes[g];
     groups.resize(count);
+    for (std::size_t g = 0; g < count; ++g)
+        groups[g].reserve(sizes[g]);
     for (std::size_t i = 0; i < leaves.size(); ++i)
         groups[groupOf[i]].push_back(static_cast<std::uint32_t>(i));
     return groups;
