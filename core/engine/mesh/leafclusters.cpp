@@ -120,16 +120,18 @@ void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 ou
     out[3] = leaf.position + l + h;
 }
 
-// Largest eigenvectors of \p n (at most 4) symmetric 3x3 matrices by power iteration, each
+// Largest eigenvectors of \p n (at most kFitLanes) symmetric 3x3 matrices by power iteration, each
 // from its \p v (replaced by the result): 24 steps, a matrix whose product vanishes keeps its
 // vector. The n chains are independent and advance in step, two to an SSE2 register: each
 // lane's arithmetic is glm's (m * v, then v / length(v)), operation for operation, and SSE2's
 // packed operations round as the scalar ones do: the same vectors, bit for bit.
+constexpr std::size_t kFitLanes = 8;
+
 void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
 #if defined(__SSE2__)
     // Lanes past n: a zero matrix, whose product vanishes at the first step.
-    alignas(16) double m[9][4] = {};
-    alignas(16) double x[4] = {}, y[4] = {}, z[4] = {};
+    alignas(16) double m[9][kFitLanes] = {};
+    alignas(16) double x[kFitLanes] = {}, y[kFitLanes] = {}, z[kFitLanes] = {};
     for (std::size_t k = 0; k < n; ++k) {
         for (int col = 0; col < 3; ++col)
             for (int row = 0; row < 3; ++row)
@@ -138,8 +140,9 @@ void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
         y[k] = v[k].y;
         z[k] = v[k].z;
     }
-    __m128d M[2][9], X[2], Y[2], Z[2], done[2];
-    for (int h = 0; h < 2; ++h) {
+    constexpr int kPairs = static_cast<int>(kFitLanes / 2);
+    __m128d M[kPairs][9], X[kPairs], Y[kPairs], Z[kPairs], done[kPairs];
+    for (int h = 0; h < kPairs; ++h) {
         for (int e = 0; e < 9; ++e)
             M[h][e] = _mm_load_pd(&m[e][2 * h]);
         X[h] = _mm_load_pd(&x[2 * h]);
@@ -149,7 +152,7 @@ void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
     }
     const __m128d tiny = _mm_set1_pd(1e-18);
     for (int i = 0; i < 24; ++i)
-        for (int h = 0; h < 2; ++h) {
+        for (int h = 0; h < kPairs; ++h) {
             const __m128d* q = M[h];
             const __m128d nx = _mm_add_pd(
                 _mm_add_pd(_mm_mul_pd(q[0], X[h]), _mm_mul_pd(q[3], Y[h])), _mm_mul_pd(q[6], Z[h]));
@@ -165,7 +168,7 @@ void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
             Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_div_pd(ny, len)));
             Z[h] = _mm_or_pd(_mm_and_pd(keep, Z[h]), _mm_andnot_pd(keep, _mm_div_pd(nz, len)));
         }
-    for (int h = 0; h < 2; ++h) {
+    for (int h = 0; h < kPairs; ++h) {
         _mm_store_pd(&x[2 * h], X[h]);
         _mm_store_pd(&y[2 * h], Y[h]);
         _mm_store_pd(&z[2 * h], Z[h]);
@@ -173,7 +176,7 @@ void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
     for (std::size_t k = 0; k < n; ++k)
         v[k] = glm::dvec3(x[k], y[k], z[k]);
 #else
-    bool done[4] = {false, false, false, false};
+    bool done[kFitLanes] = {};
     for (int i = 0; i < 24; ++i)
         for (std::size_t k = 0; k < n; ++k) {
             if (done[k]) continue;
@@ -317,14 +320,15 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<st
 }
 
 /// The cards of the groups of two or more leaves (the others' stay default): the two power
-/// iterations of four groups at a time in step (each group's own arithmetic, in its own order:
-/// the same cards as one group at a time, without waiting on one chain of divisions and square
-/// roots after another: they were 20 % of the English oak's time).
+/// iterations of kFitLanes groups at a time in step (each group's own arithmetic, in its own
+/// order: the same cards as one group at a time, without waiting on one chain of divisions and
+/// square roots after another: they were 20 % of the English oak's time; eight in step keep the
+/// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
 std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
                                  const std::vector<std::vector<std::uint32_t>>& groups,
                                  float aspect, float scale) {
     std::vector<FittedCard> cards(groups.size());
-    constexpr std::size_t kLanes = 4;
+    constexpr std::size_t kLanes = kFitLanes;
     FitInput in[kLanes];
     std::size_t lane[kLanes];
     std::size_t g = 0;
