@@ -110,14 +110,21 @@ private:
 };
 
 // The corners appendLeafCards gives a leaf.
-void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
+// The same from the leaf's heading and left axes (made once by a caller that needs them too).
+void leafCorners(const skel::Leaf& leaf, const glm::vec3& heading, const glm::vec3& left,
+                 float aspect, float scale, glm::vec3 out[4]) {
     const float len = leaf.size * scale;
-    const glm::vec3 h = skel::headingOf(leaf.orientation) * len;
-    const glm::vec3 l = skel::leftOf(leaf.orientation) * (0.5f * aspect * len);
+    const glm::vec3 h = heading * len;
+    const glm::vec3 l = left * (0.5f * aspect * len);
     out[0] = leaf.position + l;
     out[1] = leaf.position - l;
     out[2] = leaf.position - l + h;
     out[3] = leaf.position + l + h;
+}
+
+void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
+    leafCorners(leaf, skel::headingOf(leaf.orientation), skel::leftOf(leaf.orientation), aspect,
+                scale, out);
 }
 
 // Largest eigenvectors of \p n (at most kFitLanes) symmetric 3x3 matrices by power iteration, each
@@ -225,13 +232,16 @@ void prepareFit(const std::vector<skel::Leaf>& leaves, const std::vector<std::ui
     pts.reserve(4 * group.size());
     glm::dvec3 heading(0.0), up(0.0), left(0.0);
     for (std::uint32_t i : group) {
+        // Each axis made once a leaf (the corners and the sums both need them).
+        const glm::vec3 h = skel::headingOf(leaves[i].orientation);
+        const glm::vec3 l = skel::leftOf(leaves[i].orientation);
         glm::vec3 c[4];
-        leafCorners(leaves[i], aspect, scale, c);
+        leafCorners(leaves[i], h, l, aspect, scale, c);
         for (const glm::vec3& q : c)
             pts.emplace_back(q);
-        heading += glm::dvec3(skel::headingOf(leaves[i].orientation));
+        heading += glm::dvec3(h);
         up += glm::dvec3(skel::upOf(leaves[i].orientation));
-        left += glm::dvec3(skel::leftOf(leaves[i].orientation));
+        left += glm::dvec3(l);
     }
     glm::dvec3 m(0.0);
     for (const glm::dvec3& q : pts)
