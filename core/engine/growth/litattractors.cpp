@@ -5,6 +5,10 @@
 #include <limits>
 #include <string>
 
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
+
 #include "engine/growth/shadowgrid.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -26,6 +30,62 @@ void requireIn(const char* name, double v, double lo, double hi, bool openLow) {
 constexpr double kShadowA = 1.0;
 constexpr double kShadowB = 2.0;
 constexpr int kShadowDepth = 4;
+
+/// Candidate cluster centres in index order, struct of arrays: the squared distance to the
+/// nearest centre chosen so far kept up to date four points at a time (SSE2 rounds as the
+/// scalar code did), the scores made four at a time, the best taken in order.
+class Candidates {
+public:
+    void add(const glm::vec3& p, float weight, float jitter) {
+        mX.push_back(p.x);
+        mY.push_back(p.y);
+        mZ.push_back(p.z);
+        mWeight.push_back(weight);
+        mJitter.push_back(jitter);
+        mNearest.push_back(std::numeric_limits<float>::max());
+    }
+    std::size_t size() const { return mX.size(); }
+    glm::vec3 point(std::size_t k) const { return {mX[k], mY[k], mZ[k]}; }
+
+    /// nearest = min(nearest, |p - centre|^2), as glm::dot(d, d) sums it.
+    void closer(const glm::vec3& centre) {
+        for (std::size_t k = 0; k < mX.size(); ++k) {
+            const float dx = mX[k] - centre.x, dy = mY[k] - centre.y, dz = mZ[k] - centre.z;
+            mNearest[k] = std::min(mNearest[k], (dx * dx + dy * dy) + dz * dz);
+        }
+    }
+
+    /// The first candidate of the highest score (size() when none beats -1): score =
+    /// weight x spread x jitter (weighted) or spread x jitter, spread = sqrt(nearest) or 1.
+    std::size_t best(bool spread, bool weighted) {
+        const std::size_t n = mX.size();
+        mScore.resize(n);
+        std::size_t k = 0;
+#if defined(__SSE2__)
+        const __m128 one = _mm_set1_ps(1.0f);
+        for (; k + 4 <= n; k += 4) {
+            const __m128 s = spread ? _mm_sqrt_ps(_mm_loadu_ps(&mNearest[k])) : one;
+            const __m128 w = weighted ? _mm_mul_ps(_mm_loadu_ps(&mWeight[k]), s) : s;
+            _mm_storeu_ps(&mScore[k], _mm_mul_ps(w, _mm_loadu_ps(&mJitter[k])));
+        }
+#endif
+        for (; k < n; ++k) {
+            const float s = spread ? std::sqrt(mNearest[k]) : 1.0f;
+            mScore[k] = (weighted ? mWeight[k] * s : s) * mJitter[k];
+        }
+        std::size_t best = n;
+        float bestScore = -1.0f;
+        for (k = 0; k < n; ++k)
+            if (mScore[k] > bestScore) {
+                bestScore = mScore[k];
+                best = k;
+            }
+        return best;
+    }
+
+private:
+    std::vector<float> mX, mY, mZ, mWeight, mJitter, mNearest, mScore;
+};
 
 } // namespace
 
@@ -110,50 +170,40 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
             std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
             median[b] = v[v.size() / 2];
         }
-        std::vector<float> nearest(points.size(), std::numeric_limits<float>::max());
+        // Each point's eligibility (the lit half of its band for an outer centre, the shaded
+        // inside that is not shed for an inner one) and sqrt(exposure), made once, not once a
+        // centre; the centres are chosen among the eligible points in index order by the same
+        // score expression and the same strict '>' (the same centres, bit for bit).
+        Candidates outer, inner;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const float m = median[bandOf(points[i])];
+            if (shadow[i] <= m)
+                outer.add(points[i], std::sqrt(exposure[i]), jitter[i]);
+            else if (shadow[i] < shedAbove)
+                inner.add(points[i], 1.0f, jitter[i]);
+        }
         const std::size_t k = std::min(points.size(), static_cast<std::size_t>(params.clusters));
         for (std::size_t c = 0; c < k; ++c) {
-            std::size_t best = 0;
-            float bestScore = -1.0f;
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                if (shadow[i] > median[bandOf(points[i])]) continue;
-                const float spread = centres.empty() ? 1.0f : std::sqrt(nearest[i]);
-                const float score = std::sqrt(exposure[i]) * spread * jitter[i];
-                if (score > bestScore) {
-                    bestScore = score;
-                    best = i;
-                }
-            }
-            centres.push_back(points[best]);
+            const std::size_t best = outer.best(!centres.empty(), true);
+            const glm::vec3 centre = best < outer.size() ? outer.point(best) : points[0];
+            centres.push_back(centre);
             radii.push_back(params.clusterRadius * halfExtent *
                             (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                const glm::vec3 d = points[i] - points[best];
-                nearest[i] = std::min(nearest[i], glm::dot(d, d));
-            }
+            outer.closer(centre);
+            inner.closer(centre);
         }
         // Inner clusters: among the shaded inside that is not shed, as far from every centre
         // as possible, so the limbs carry foliage through the depth of the crown.
         const float innerR = params.innerRadius * params.clusterRadius * halfExtent;
         for (int c = 0; c < innerCount; ++c) {
-            std::size_t best = points.size();
-            float bestScore = -1.0f;
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                if (shadow[i] <= median[bandOf(points[i])] || shadow[i] >= shedAbove) continue;
-                const float score = std::sqrt(nearest[i]) * jitter[i];
-                if (score > bestScore) {
-                    bestScore = score;
-                    best = i;
-                }
-            }
-            if (best == points.size()) break;
-            centres.push_back(points[best]);
+            const std::size_t best = inner.best(true, false);
+            if (best == inner.size()) break;
+            const glm::vec3 centre = inner.point(best);
+            centres.push_back(centre);
             radii.push_back(innerR *
                             (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
-            for (std::size_t i = 0; i < points.size(); ++i) {
-                const glm::vec3 d = points[i] - points[best];
-                nearest[i] = std::min(nearest[i], glm::dot(d, d));
-            }
+            outer.closer(centre);
+            inner.closer(centre);
         }
     }
 

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "engine/mesh/leafcards.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -36,72 +40,150 @@ std::vector<glm::dvec3> leafMiddles(const std::vector<skel::Leaf>& leaves) {
     return mids;
 }
 
+// floor(v) as an integer, without a call to floor (not inlined below SSE4.1: it was a tenth of
+// groupLeaves): the same value for every v in the int64 range.
+std::int64_t floorToInt(double v) {
+    const auto i = static_cast<std::int64_t>(v);
+    return static_cast<double>(i) > v ? i - 1 : i;
+}
+
 CellKey cellOf(const glm::dvec3& mid, double cell) {
-    return {static_cast<std::int64_t>(std::floor(mid.x / cell)),
-            static_cast<std::int64_t>(std::floor(mid.y / cell)),
-            static_cast<std::int64_t>(std::floor(mid.z / cell))};
+    return {floorToInt(mid.x / cell), floorToInt(mid.y / cell), floorToInt(mid.z / cell)};
 }
 
 /// The leaves' cells at one cell size: an open-addressing table of the distinct cells, each
 /// with its group (the order the cells are first met), reused from size to size.
 class CellTable {
 public:
-    explicit CellTable(std::size_t leaves) {
+    /// A table for up to \p cells distinct cells.
+    explicit CellTable(std::size_t cells) {
         std::size_t n = 16;
-        while (n < 2 * leaves)
+        while (n < 2 * cells)
             n *= 2;
         mSlots.resize(n);
         mMask = n - 1;
     }
     /// The number of distinct cells of \p mids at \p cell, or limit + 1 as soon as there are
-    /// more than \p limit; with \p groups, also each cell's leaves (in leaf order).
+    /// more than \p limit (at most the table's size), and each leaf's group: the index of its
+    /// cell in the order the cells are first met.
     std::size_t fill(const std::vector<glm::dvec3>& mids, double cell, std::size_t limit,
-                     std::vector<std::vector<std::uint32_t>>* groups) {
+                     std::vector<std::uint32_t>& groupOf) {
         ++mStamp;
-        std::size_t count = 0;
+        mKeys.clear();
+        groupOf.resize(mids.size());
+        // Leaves come branch by branch: a leaf often shares the cell of the leaf before it,
+        // found without a look into the table.
+        std::uint32_t last = kNone;
         for (std::size_t i = 0; i < mids.size(); ++i) {
             const CellKey key = cellOf(mids[i], cell);
-            std::size_t slot = cellHash(key) & mMask;
-            while (mSlots[slot].stamp == mStamp && !(mSlots[slot].key == key))
-                slot = (slot + 1) & mMask;
-            Slot& s = mSlots[slot];
-            if (s.stamp != mStamp) {
-                s = {key, mStamp, static_cast<std::uint32_t>(count++)};
-                if (count > limit) return limit + 1;
-                if (groups) groups->emplace_back();
+            if (last == kNone || !(mKeys[last] == key)) {
+                std::size_t slot = cellHash(key) & mMask;
+                while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
+                    slot = (slot + 1) & mMask;
+                Slot& s = mSlots[slot];
+                if (s.stamp != mStamp) {
+                    s = {mStamp, static_cast<std::uint32_t>(mKeys.size())};
+                    mKeys.push_back(key);
+                    if (mKeys.size() > limit) return limit + 1;
+                }
+                last = s.group;
             }
-            if (groups) (*groups)[s.group].push_back(static_cast<std::uint32_t>(i));
+            groupOf[i] = last;
         }
-        return count;
+        return mKeys.size();
     }
 
 private:
+    // A slot is 8 bytes and the table is sized for the limit, the keys kept apart in the order
+    // the cells are met: the table's random reads stay in L2 (with the keys in the slots, 32
+    // bytes a slot, sized for every leaf, it was 2 MiB for the English oak's 19,900 leaves and
+    // its probes missed the cache).
     struct Slot {
-        CellKey key{0, 0, 0};
         std::uint32_t stamp = 0;
         std::uint32_t group = 0;
     };
+    static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
     std::vector<Slot> mSlots;
+    std::vector<CellKey> mKeys; ///< the cells of the current fill, by group
     std::size_t mMask = 0;
     std::uint32_t mStamp = 0;
 };
 
 // The corners appendLeafCards gives a leaf.
-void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
+// The same from the leaf's heading and left axes (made once by a caller that needs them too).
+void leafCorners(const skel::Leaf& leaf, const glm::vec3& heading, const glm::vec3& left,
+                 float aspect, float scale, glm::vec3 out[4]) {
     const float len = leaf.size * scale;
-    const glm::vec3 h = skel::headingOf(leaf.orientation) * len;
-    const glm::vec3 l = skel::leftOf(leaf.orientation) * (0.5f * aspect * len);
+    const glm::vec3 h = heading * len;
+    const glm::vec3 l = left * (0.5f * aspect * len);
     out[0] = leaf.position + l;
     out[1] = leaf.position - l;
     out[2] = leaf.position - l + h;
     out[3] = leaf.position + l + h;
 }
 
-// Largest eigenvectors of \p n symmetric 3x3 matrices by power iteration, each from its
-// \p v (replaced by the result): 24 steps, a matrix whose product vanishes keeps its vector.
-// The n chains are independent and advance in step.
+void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
+    leafCorners(leaf, skel::headingOf(leaf.orientation), skel::leftOf(leaf.orientation), aspect,
+                scale, out);
+}
+
+// Largest eigenvectors of \p n (at most kFitLanes) symmetric 3x3 matrices by power iteration, each
+// from its \p v (replaced by the result): 24 steps, a matrix whose product vanishes keeps its
+// vector. The n chains are independent and advance in step, two to an SSE2 register: each
+// lane's arithmetic is glm's (m * v, then v / length(v)), operation for operation, and SSE2's
+// packed operations round as the scalar ones do: the same vectors, bit for bit.
+constexpr std::size_t kFitLanes = 8;
+
 void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
-    bool done[4] = {false, false, false, false};
+#if defined(__SSE2__)
+    // Lanes past n: a zero matrix, whose product vanishes at the first step.
+    alignas(16) double m[9][kFitLanes] = {};
+    alignas(16) double x[kFitLanes] = {}, y[kFitLanes] = {}, z[kFitLanes] = {};
+    for (std::size_t k = 0; k < n; ++k) {
+        for (int col = 0; col < 3; ++col)
+            for (int row = 0; row < 3; ++row)
+                m[3 * col + row][k] = c[k][col][row];
+        x[k] = v[k].x;
+        y[k] = v[k].y;
+        z[k] = v[k].z;
+    }
+    constexpr int kPairs = static_cast<int>(kFitLanes / 2);
+    __m128d M[kPairs][9], X[kPairs], Y[kPairs], Z[kPairs], done[kPairs];
+    for (int h = 0; h < kPairs; ++h) {
+        for (int e = 0; e < 9; ++e)
+            M[h][e] = _mm_load_pd(&m[e][2 * h]);
+        X[h] = _mm_load_pd(&x[2 * h]);
+        Y[h] = _mm_load_pd(&y[2 * h]);
+        Z[h] = _mm_load_pd(&z[2 * h]);
+        done[h] = _mm_setzero_pd();
+    }
+    const __m128d tiny = _mm_set1_pd(1e-18);
+    for (int i = 0; i < 24; ++i)
+        for (int h = 0; h < kPairs; ++h) {
+            const __m128d* q = M[h];
+            const __m128d nx = _mm_add_pd(
+                _mm_add_pd(_mm_mul_pd(q[0], X[h]), _mm_mul_pd(q[3], Y[h])), _mm_mul_pd(q[6], Z[h]));
+            const __m128d ny = _mm_add_pd(
+                _mm_add_pd(_mm_mul_pd(q[1], X[h]), _mm_mul_pd(q[4], Y[h])), _mm_mul_pd(q[7], Z[h]));
+            const __m128d nz = _mm_add_pd(
+                _mm_add_pd(_mm_mul_pd(q[2], X[h]), _mm_mul_pd(q[5], Y[h])), _mm_mul_pd(q[8], Z[h]));
+            const __m128d len = _mm_sqrt_pd(
+                _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, nx), _mm_mul_pd(ny, ny)), _mm_mul_pd(nz, nz)));
+            done[h] = _mm_or_pd(done[h], _mm_cmplt_pd(len, tiny));
+            const __m128d keep = done[h];
+            X[h] = _mm_or_pd(_mm_and_pd(keep, X[h]), _mm_andnot_pd(keep, _mm_div_pd(nx, len)));
+            Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_div_pd(ny, len)));
+            Z[h] = _mm_or_pd(_mm_and_pd(keep, Z[h]), _mm_andnot_pd(keep, _mm_div_pd(nz, len)));
+        }
+    for (int h = 0; h < kPairs; ++h) {
+        _mm_store_pd(&x[2 * h], X[h]);
+        _mm_store_pd(&y[2 * h], Y[h]);
+        _mm_store_pd(&z[2 * h], Z[h]);
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        v[k] = glm::dvec3(x[k], y[k], z[k]);
+#else
+    bool done[kFitLanes] = {};
     for (int i = 0; i < 24; ++i)
         for (std::size_t k = 0; k < n; ++k) {
             if (done[k]) continue;
@@ -113,6 +195,7 @@ void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
             }
             v[k] = next / len;
         }
+#endif
 }
 
 glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
@@ -149,13 +232,16 @@ void prepareFit(const std::vector<skel::Leaf>& leaves, const std::vector<std::ui
     pts.reserve(4 * group.size());
     glm::dvec3 heading(0.0), up(0.0), left(0.0);
     for (std::uint32_t i : group) {
+        // Each axis made once a leaf (the corners and the sums both need them).
+        const glm::vec3 h = skel::headingOf(leaves[i].orientation);
+        const glm::vec3 l = skel::leftOf(leaves[i].orientation);
         glm::vec3 c[4];
-        leafCorners(leaves[i], aspect, scale, c);
+        leafCorners(leaves[i], h, l, aspect, scale, c);
         for (const glm::vec3& q : c)
             pts.emplace_back(q);
-        heading += glm::dvec3(skel::headingOf(leaves[i].orientation));
+        heading += glm::dvec3(h);
         up += glm::dvec3(skel::upOf(leaves[i].orientation));
-        left += glm::dvec3(skel::leftOf(leaves[i].orientation));
+        left += glm::dvec3(l);
     }
     glm::dvec3 m(0.0);
     for (const glm::dvec3& q : pts)
@@ -244,14 +330,15 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<st
 }
 
 /// The cards of the groups of two or more leaves (the others' stay default): the two power
-/// iterations of four groups at a time in step (each group's own arithmetic, in its own order:
-/// the same cards as one group at a time, without waiting on one chain of divisions and square
-/// roots after another: they were 20 % of the English oak's time).
+/// iterations of kFitLanes groups at a time in step (each group's own arithmetic, in its own
+/// order: the same cards as one group at a time, without waiting on one chain of divisions and
+/// square roots after another: they were 20 % of the English oak's time; eight in step keep the
+/// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
 std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
                                  const std::vector<std::vector<std::uint32_t>>& groups,
                                  float aspect, float scale) {
     std::vector<FittedCard> cards(groups.size());
-    constexpr std::size_t kLanes = 4;
+    constexpr std::size_t kLanes = kFitLanes;
     FitInput in[kLanes];
     std::size_t lane[kLanes];
     std::size_t g = 0;
@@ -299,15 +386,29 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
     // Each size only counts its cells, and stops counting past the limit; the groups are made
     // once, for the size chosen.
     const std::vector<glm::dvec3> mids = leafMiddles(leaves);
-    CellTable table(leaves.size());
+    // The groups come from the count that passed, not from one more pass over the leaves.
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));
+    CellTable table(std::min(limit + 1, leaves.size()));
+    std::vector<std::uint32_t> groupOf;
     double cell = 1.2 * mean;
-    for (int step = 0; step < 39; ++step) {
-        if (table.fill(mids, cell, limit, nullptr) <= limit) break;
-        cell *= 1.08;
+    std::size_t count = limit + 1;
+    for (int step = 0; step < 39 && count > limit; ++step) {
+        count = table.fill(mids, cell, limit, groupOf);
+        if (count > limit) cell *= 1.08;
     }
-    table.fill(mids, cell, std::numeric_limits<std::size_t>::max() - 1, &groups);
+    if (count > limit) count = CellTable(leaves.size()).fill(mids, cell, leaves.size(), groupOf);
+    // Each group's storage at its size, allocated in group order: the groups lie one after
+    // the other in memory for the passes over them (grown leaf by leaf they were scattered,
+    // and reading each group's first leaf missed the cache).
+    std::vector<std::uint32_t> sizes(count, 0);
+    for (std::uint32_t g : groupOf)
+        ++sizes[g];
+    groups.resize(count);
+    for (std::size_t g = 0; g < count; ++g)
+        groups[g].reserve(sizes[g]);
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+        groups[groupOf[i]].push_back(static_cast<std::uint32_t>(i));
     return groups;
 }
 

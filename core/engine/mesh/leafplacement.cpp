@@ -27,12 +27,14 @@ struct Placer {
     const LeafPlacement& p;
     glm::vec3 light;
     std::vector<skel::Leaf>& out;
+    // The petiole angle's sine and cosine, made once (they were made again for every leaf).
+    float sinPetiole = std::sin(static_cast<float>(p.petioleAngle * kDeg));
+    float cosPetiole = std::cos(static_cast<float>(p.petioleAngle * kDeg));
 
     // A leaf at \p base on a branch with tangent \p t, radial direction \p radial.
     void leaf(const glm::vec3& base, const glm::vec3& t, const glm::vec3& radial, float forward,
               Rng& rng, std::int32_t node) {
-        const float pa = static_cast<float>(p.petioleAngle * kDeg);
-        glm::vec3 h = glm::normalize(std::sin(pa) * radial + std::cos(pa) * t + forward * t);
+        glm::vec3 h = glm::normalize(sinPetiole * radial + cosPetiole * t + forward * t);
         glm::vec3 n = static_cast<float>(p.normalWeight) * radial +
                       static_cast<float>(p.upWeight) * glm::vec3(0, 1, 0) +
                       static_cast<float>(p.lightWeight) * light;
@@ -50,32 +52,75 @@ struct Placer {
         out.push_back(leaf);
     }
 
-    // Angles of the leaves at position index k (radians).
-    void angles(std::uint64_t k, std::vector<double>& a) const {
+    // The cosines and sines of the leaves' angles at position index k (radians), as floats.
+    // They depend on k only (spiral) or on its parity: made once each, from the same double
+    // angle as before (std::sincos of a double was a tenth of the placement).
+    void angles(std::uint64_t k, std::vector<glm::vec2>& a) {
         a.clear();
-        switch (p.phyllotaxis) {
-        case Phyllotaxis::Alternate:
-            a.push_back(std::numbers::pi * static_cast<double>(k % 2));
-            break;
-        case Phyllotaxis::Opposite: {
-            const double base = 0.5 * std::numbers::pi * static_cast<double>(k % 2);
-            a.push_back(base);
-            a.push_back(base + std::numbers::pi);
-            break;
+        if (p.phyllotaxis == Phyllotaxis::Spiral) {
+            const std::uint64_t j = k % 100000;
+            if (j >= spiral.size() && j < kSpiralTable)
+                for (std::uint64_t q = spiral.size(); q <= j; ++q)
+                    spiral.push_back(trig(137.5 * kDeg * static_cast<double>(q)));
+            a.push_back(j < spiral.size() ? spiral[j]
+                                          : trig(137.5 * kDeg * static_cast<double>(j)));
+            return;
         }
-        case Phyllotaxis::Whorled: {
-            const double gap = 2.0 * std::numbers::pi / p.whorlCount;
-            const double base = 0.5 * gap * static_cast<double>(k % 2);
-            for (int i = 0; i < p.whorlCount; ++i)
-                a.push_back(base + gap * i);
-            break;
+        std::vector<glm::vec2>& cached = parity[k % 2];
+        if (cached.empty()) {
+            switch (p.phyllotaxis) {
+            case Phyllotaxis::Alternate:
+                cached.push_back(trig(std::numbers::pi * static_cast<double>(k % 2)));
+                break;
+            case Phyllotaxis::Opposite: {
+                const double base = 0.5 * std::numbers::pi * static_cast<double>(k % 2);
+                cached.push_back(trig(base));
+                cached.push_back(trig(base + std::numbers::pi));
+                break;
+            }
+            case Phyllotaxis::Whorled: {
+                const double gap = 2.0 * std::numbers::pi / p.whorlCount;
+                const double base = 0.5 * gap * static_cast<double>(k % 2);
+                for (int i = 0; i < p.whorlCount; ++i)
+                    cached.push_back(trig(base + gap * i));
+                break;
+            }
+            case Phyllotaxis::Spiral:
+                break;
+            }
         }
-        case Phyllotaxis::Spiral:
-            a.push_back(137.5 * kDeg * static_cast<double>(k % 100000));
-            break;
-        }
+        a = cached;
     }
+
+    static glm::vec2 trig(double ang) {
+        return {static_cast<float>(std::cos(ang)), static_cast<float>(std::sin(ang))};
+    }
+    static constexpr std::uint64_t kSpiralTable = 1u << 16;
+    std::vector<glm::vec2> spiral{};    ///< by k % 100000, filled as far as asked
+    std::vector<glm::vec2> parity[2]{}; ///< the other arrangements, by k % 2
 };
+
+// At least as many leaves as placeLeaves makes (one more a segment than its density gives):
+// the output reserved once, not grown by copying.
+std::size_t leafBound(const skel::Skeleton& s, const LeafPlacement& p,
+                      const std::vector<std::uint8_t>& hidden,
+                      const std::vector<std::uint32_t>& children) {
+    const std::size_t perPosition = p.phyllotaxis == Phyllotaxis::Opposite  ? 2
+                                    : p.phyllotaxis == Phyllotaxis::Whorled ? p.whorlCount
+                                                                            : 1;
+    std::size_t bound = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const std::int32_t par = s.parent[i];
+        if (par < 0 || hidden[i]) continue;
+        if (p.alongBranches && s.radius[i] <= p.maxBranchRadius) {
+            const float len =
+                glm::length(s.position[i] - s.position[static_cast<std::size_t>(par)]);
+            bound += perPosition * (static_cast<std::size_t>(p.density * len) + 1);
+        }
+        if (p.atTips && children[i] == 0) bound += static_cast<std::size_t>(p.tipCount);
+    }
+    return bound;
+}
 
 } // namespace
 
@@ -108,7 +153,8 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
     }
     // Running position index along each axis so phyllotaxis continues across segments.
     std::vector<std::uint64_t> index(n, 0);
-    std::vector<double> a;
+    std::vector<glm::vec2> a;
+    out.reserve(out.size() + leafBound(s, p, hidden, children));
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
@@ -127,9 +173,8 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
                 const glm::vec3 axis = a0 + f * (a1 - a0);
                 const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
                 placer.angles(k, a);
-                for (double ang : a) {
-                    const glm::vec3 radial = static_cast<float>(std::cos(ang)) * e1 +
-                                             static_cast<float>(std::sin(ang)) * e2;
+                for (const glm::vec2& cs : a) {
+                    const glm::vec3 radial = cs.x * e1 + cs.y * e2;
                     placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
                                 static_cast<std::int32_t>(i));
                 }
