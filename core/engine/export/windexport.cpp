@@ -6,12 +6,13 @@
 #include <cstring>
 #include <map>
 
+#include "engine/export/exportnames.h"
+#include "engine/export/fbx/sceneexport.h"
+#include "engine/export/formats.h"
 #include "engine/export/gltf/gltfbuilder.h"
 #include "engine/export/gltf/gltfmesh.h"
-#include "engine/export/lodexport.h"
 #include "engine/export/materials.h"
-#include "engine/export/objwriter.h"
-#include "engine/export/sceneexport.h"
+#include "engine/export/obj/objwriter.h"
 #include "engine/export/treeexport.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
@@ -22,13 +23,6 @@ namespace sylva::exporter {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lowerExtension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    for (char& c : ext)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
 
 template <class T> std::span<const std::byte> bytesOf(const std::vector<T>& v) {
     return std::as_bytes(std::span(v.data(), v.size()));
@@ -48,9 +42,13 @@ WindExporter::WindExporter(fs::path path, WindExportOptions options, Progress& p
     : mPath(std::move(path)), mOptions(options), mProgress(progress) {
     wind::validate(mOptions.wind);
     wind::validate(mOptions.rig);
-    const std::string ext = lowerExtension(mPath);
-    if (ext != ".glb" && ext != ".gltf" && ext != ".fbx" && ext != ".obj")
-        throw InvalidInput("wind export writes .glb, .gltf, .fbx or .obj, not '" + ext + "'");
+    const FormatRow* format = findFormat(mPath);
+    if (!format || format->wind == WindSupport::None)
+        throw InvalidInput("wind export writes " + extensionList([](const FormatRow& r) {
+                               return r.wind != WindSupport::None;
+                           }) +
+                           ", not '" + mPath.extension().string() + "'");
+    mFormat = format->format;
 }
 
 WindExporter::~WindExporter() = default;
@@ -101,12 +99,21 @@ WindExporter::Prepared WindExporter::prepare(const WindExportTree& tree,
 }
 
 std::vector<fs::path> WindExporter::commit() {
-    const std::string ext = lowerExtension(mPath);
     std::vector<fs::path> written;
-    if (ext == ".glb" || ext == ".gltf")
+    // The rig's writers; a format with the table only (OBJ: its caller writes the geometry)
+    // gets the table.
+    switch (mFormat) {
+    case Format::Glb:
+    case Format::Gltf:
         written = writeGltf();
-    else if (ext == ".fbx")
+        break;
+    case Format::Fbx:
         written = writeFbx();
+        break;
+    case Format::Obj:
+    case Format::Usda:
+        break;
+    }
     writeTable();
     written.push_back(mPath.parent_path() / (mPath.stem().string() + ".wind.csv"));
     return written;
@@ -114,7 +121,7 @@ std::vector<fs::path> WindExporter::commit() {
 
 std::vector<fs::path> WindExporter::writeGltf() {
     using namespace gltf;
-    const bool glb = lowerExtension(mPath) == ".glb";
+    const bool glb = mFormat == Format::Glb;
     GltfBuilder b(mPath, glb ? GltfFormat::Glb : GltfFormat::Gltf, mProgress);
     std::vector<Material> materials = defaultMaterials();
     for (const WindExportTree& t : mTrees)
