@@ -113,6 +113,20 @@ def check(root):
                 if m:
                     problems.append(f"{os.path.relpath(path, root)}:{n}: the node type "
                                     f"\"{m.group(1)}\" named in graph/ (ask NodeType::role)")
+    # Only the format table (engine/export/formats.cpp) switches on an export format's file
+    # extension; everything else asks it (formatFor, findFormat, FormatRow). Reading obstacle
+    # meshes (engine/environment) is not exporting and has its own checks.
+    extension = re.compile(r'(==|!=)\s*"\.(obj|usda|usdc|usd|glb|gltf|fbx)"|'
+                           r'"\.(obj|usda|usdc|usd|glb|gltf|fbx)"\s*(==|!=)|'
+                           r'[hH]asExtension\([^)]*"\.(obj|usda|usdc|usd|glb|gltf|fbx)"')
+    for base in ("core/engine/export", "core/document", "app", "python", "ui"):
+        for path in sources(os.path.join(root, base)):
+            if path.endswith(os.path.join("engine", "export", "formats.cpp")):
+                continue
+            for n, line in enumerate(open(path, encoding="utf-8"), 1):
+                if extension.search(line.split("//")[0]):
+                    problems.append(f"{os.path.relpath(path, root)}:{n}: a file extension "
+                                    f"tested outside the format table (engine/export/formats.h)")
     return sorted(set(problems))
 
 

@@ -5,6 +5,7 @@
 #include <QFileInfo>
 
 #include "document/presetlibrary.h"
+#include "engine/export/formats.h"
 
 namespace sylva::ui {
 
@@ -29,10 +30,10 @@ QString FileDialogs::exportFile(QWidget* parent, const QString& shown) {
     QString filter;
     const QString path = QFileDialog::getSaveFileName(
         parent, tr("Export"),
-        suggestedName(shown, QStringLiteral("forest"), QStringLiteral(".obj")),
-        tr("Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx);;"
-           "USD text (*.usda)"),
-        &filter);
+        suggestedName(shown, QStringLiteral("forest"),
+                      QString::fromLatin1(exporter::formatTable().front().extension)),
+        // The format table's rows (engine/export/formats.h): a new format appears here.
+        QString::fromStdString(exporter::dialogFilter()), &filter);
     return path.isEmpty() ? path : withFilterExtension(path, filter);
 }
 

@@ -6,6 +6,7 @@
 
 #include "document/project.h"
 #include "document/projectexport.h"
+#include "engine/export/formats.h"
 #include "engine/placement/placement.h"
 #include "engine/util/error.h"
 
@@ -33,13 +34,6 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
     return v;
 }
 
-bool isUsda(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (char& c : ext)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == ".usda";
-}
-
 } // namespace
 
 int runForest(const std::vector<std::string>& argv) {
@@ -54,10 +48,14 @@ int runForest(const std::vector<std::string>& argv) {
     auto output = args.value("-o");
     if (!output) output = args.value("--output");
     if (!output) throw UsageError("forest needs an output file: -o out.obj");
-    const bool usda = isUsda(*output);
-    if (usda && args.flag("--instance-tables"))
-        throw UsageError("--instance-tables is for .obj, .glb and .fbx: a .usda holds its "
-                         "instances itself");
+    // What the output's format can carry (the format table); an unknown extension is the
+    // export's error.
+    const exporter::FormatRow* format = exporter::findFormat(*output);
+    if (format && !format->instanceTables && args.flag("--instance-tables"))
+        throw UsageError(
+            "--instance-tables is for " +
+            exporter::extensionList([](const exporter::FormatRow& r) { return r.instanceTables; }) +
+            ": a " + format->extension + " holds its instances itself");
     if (auto threads = args.integer("--threads", 1, 1024))
         omp_set_num_threads(static_cast<int>(*threads));
     // The flags only translate into the request every front door makes (document/projectexport).
@@ -80,8 +78,12 @@ int runForest(const std::vector<std::string>& argv) {
         throw UsageError("--wind and --no-wind contradict each other");
     if (args.flag("--wind")) request.wind = true;
     if (args.flag("--no-wind")) request.wind = false;
-    if (args.flag("--wind") && usda)
-        throw UsageError("--wind writes .glb, .gltf, .fbx or .obj (with its .wind.csv), not .usda");
+    if (args.flag("--wind") && format && format->wind == exporter::WindSupport::None)
+        throw UsageError("--wind writes " +
+                         exporter::extensionList([](const exporter::FormatRow& r) {
+                             return r.wind != exporter::WindSupport::None;
+                         }) +
+                         " (with its .wind.csv), not " + format->extension);
     request.windOverride = windOverride(args);
     request.fullPrecision = args.flag("--full-precision");
     request.fsync = args.flag("--fsync");

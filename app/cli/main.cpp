@@ -24,10 +24,10 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  expand <grammar> [-n N] [--seed S]      print the derived L-system string\n"
-    "  tree <grammar|species.json> -o out.{obj,usda,glb,fbx}  generate one tree\n"
+    "  tree <grammar|species.json> -o out.{formats}  generate one tree\n"
     "       [-n N] [--seed S] [--set node.param=value]... [--stats] [--fsync] [--compact]\n"
     "       [--wind [wind options]]\n"
-    "  forest <project.sylva> -o out.{obj,usda,glb,fbx}  generate a forest\n"
+    "  forest <project.sylva> -o out.{formats}  generate a forest\n"
     "       [--camera x,y,z] [--threads N] [--tile i/N] [--stats] [--no-lod]\n"
     "       [--no-adapt] [--no-neighbours] [--no-instancing] [--grow-unique]\n"
     "       [--instance-tables] [--naive-placement] [--fsync] [--full-precision] [--assimp-gltf]\n"
@@ -61,7 +61,7 @@ void printError(const std::string& message) {
 int run(int argc, char** argv) {
     using namespace sylva::cli;
     if (argc < 2) {
-        std::fputs(kUsage, stderr);
+        std::fputs(expandFormats(kUsage).c_str(), stderr);
         return kBadUsage;
     }
     sylva::keepFreedMemory();
@@ -79,7 +79,7 @@ int run(int argc, char** argv) {
                 return kOk;
             }
             if (!args.empty()) throw UsageError(command + " takes at most one command name");
-            std::fputs(kUsage, stdout);
+            std::fputs(expandFormats(kUsage).c_str(), stdout);
             return kOk;
         }
         if (command == "expand") return runExpand(args);

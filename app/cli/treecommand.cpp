@@ -93,9 +93,14 @@ int runTree(const std::vector<std::string>& argv) {
     // default action ends the process with nothing on disk yet).
     TerminalProgress progress;
     const std::string name = exporter::objectNameFor(evaluator.graph().name);
-    const bool obj = std::filesystem::path(*output).extension() == ".obj";
-    if (!wind || obj) {
-        TreeExporter exporter(*output, {args.flag("--fsync"), args.flag("--compact")});
+    // The geometry by the format table's row; with wind, a format that carries the rig goes
+    // through the wind exporter alone, one with the table only (OBJ) as without plus its table.
+    if (!wind || exporter::formatFor(*output).wind != exporter::WindSupport::Rig) {
+        exporter::ForestWriterOptions options;
+        options.species = {name};
+        options.fsync = args.flag("--fsync");
+        options.compact = args.flag("--compact");
+        TreeExporter exporter(*output, options);
         exporter.add({ExportTree{name, result.mesh}});
         exporter.setProgress(progress);
         exporter.commit();

@@ -1,6 +1,9 @@
 #include "usage.h"
 
 #include <cstring>
+#include <deque>
+
+#include "engine/export/formats.h"
 
 namespace sylva::cli {
 
@@ -11,7 +14,8 @@ struct CommandHelp {
     const char* text;
 };
 
-// Kept in step with docs/cli.md; tests/cli/cli_tests.sh checks every command prints its own.
+// Kept in step with docs/cli.md; "{formats}" and "{extensions}" stand for the format table's
+// extensions (expandFormats); tests/cli/cli_tests.sh checks every command prints its own.
 constexpr CommandHelp kHelp[] = {
     {"expand",
      "usage: sylva-cli expand <grammar> [-n GENERATIONS] [--seed S] [--limit SYMBOLS]\n"
@@ -28,7 +32,7 @@ constexpr CommandHelp kHelp[] = {
      "                        past it the command fails with exit status 1)\n"
      "  -h, --help            show this text\n"},
     {"tree",
-     "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{obj,usda,glb,gltf,fbx}\n"
+     "usage: sylva-cli tree <grammar.lsys|species.json> -o out.{formats}\n"
      "                      [options]\n"
      "\n"
      "Generates one tree and writes it in the format of the output's extension.\n"
@@ -57,14 +61,14 @@ constexpr CommandHelp kHelp[] = {
      "  --wind-frequency F    the trunk's sway in Hz, 0.05..5 (default 0.5)\n"
      "  -h, --help            show this text\n"},
     {"forest",
-     "usage: sylva-cli forest <project.sylva|scene.json> -o out.{obj,usda,glb,gltf,fbx}\n"
+     "usage: sylva-cli forest <project.sylva|scene.json> -o out.{formats}\n"
      "                        [options]\n"
      "\n"
      "Builds the whole forest of a project (placement, adaptation to obstacles and neighbours,\n"
      "LOD meshing, metrics) and writes it as one file, one object per tree.\n"
      "\n"
      "options:\n"
-     "  -o, --output FILE     the file to write (.obj, .usda, .glb, .gltf, .fbx); .usda: a USD\n"
+     "  -o, --output FILE     the file to write ({extensions}); .usda: a USD\n"
      "                        stage (PointInstancers, unique trees as meshes; docs/usd.md)\n"
      "  --camera x,y,z        camera position for LOD (metres; default: the project's camera)\n"
      "  --threads N           threads, 1..1024 (the output is the same for any N)\n"
@@ -170,9 +174,24 @@ constexpr CommandHelp kHelp[] = {
 
 } // namespace
 
+std::string expandFormats(std::string text) {
+    const std::pair<const char*, std::string> keys[] = {
+        {"{formats}", exporter::extensionList(nullptr, ",", ",", false)},
+        {"{extensions}", exporter::extensionList(nullptr, ", ", ", ")}};
+    for (const auto& key : keys)
+        for (std::size_t at = text.find(key.first); at != std::string::npos;
+             at = text.find(key.first, at))
+            text.replace(at, std::strlen(key.first), key.second);
+    return text;
+}
+
 const char* commandHelp(const std::string& command) {
-    for (const CommandHelp& h : kHelp)
-        if (command == h.name) return h.text;
+    static std::deque<std::string> expanded(std::size(kHelp)); // made once, kept for the process
+    for (std::size_t i = 0; i < std::size(kHelp); ++i)
+        if (command == kHelp[i].name) {
+            if (expanded[i].empty()) expanded[i] = expandFormats(kHelp[i].text);
+            return expanded[i].c_str();
+        }
     return nullptr;
 }
 

@@ -6,6 +6,7 @@
 #include "document/scenebuild.h"
 #include "document/statsjson.h"
 #include "engine/export/treeexport.h"
+#include "engine/export/usd/usdforestwriter.h"
 #include "engine/util/error.h"
 #include "engine/wind/windmodel.h"
 
@@ -19,11 +20,14 @@ double msSince(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-bool hasExtension(const std::filesystem::path& path, const char* extension) {
-    std::string ext = path.extension().string();
-    for (char& c : ext)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext == extension;
+/// The extensions a wind export writes: ".glb, .gltf, .fbx or .obj" (the table's rows with wind).
+std::string windFormats() {
+    return exporter::extensionList(
+               [](const exporter::FormatRow& r) { return r.wind == exporter::WindSupport::Rig; },
+               ", ", ", ") +
+           " or " + exporter::extensionList([](const exporter::FormatRow& r) {
+               return r.wind == exporter::WindSupport::Table;
+           });
 }
 
 /// The project as one export writes it: the request's season over the trees' own.
@@ -107,16 +111,19 @@ ExportReport exportProject(const Project& project, const ExportRequest& request,
 ExportReport exportForest(forest::ForestScene scene, const Project& project,
                           const ExportRequest& request, Progress& progress) {
     const auto start = Clock::now();
-    const bool usda = hasExtension(request.path, ".usda");
-    const bool obj = hasExtension(request.path, ".obj");
-    if (usda && request.instanceTables)
-        throw InvalidInput("instance tables are for .obj, .glb and .fbx: a .usda holds its "
-                           "instances itself");
-    if (request.wind.value_or(false) && usda)
-        throw InvalidInput("a wind export writes .glb, .gltf, .fbx or .obj (with its .wind.csv), "
-                           "not .usda");
+    // The format table says what the output's format can carry.
+    const exporter::FormatRow& format = exporter::formatFor(request.path);
+    if (request.instanceTables && !format.instanceTables)
+        throw InvalidInput(
+            std::string("instance tables are for ") +
+            exporter::extensionList([](const exporter::FormatRow& r) { return r.instanceTables; }) +
+            ": a " + format.extension + " holds its instances itself");
+    const bool windable = format.wind != exporter::WindSupport::None;
+    if (request.wind.value_or(false) && !windable)
+        throw InvalidInput("a wind export writes " + windFormats() + " (with its .wind.csv), not " +
+                           format.extension);
     // The project's wind is the default of every front door; the request's settings override it.
-    const bool windOn = request.wind.value_or(project.wind.has_value() && !usda);
+    const bool windOn = request.wind.value_or(project.wind.has_value() && windable);
     const std::optional<exporter::WindExportOptions> wind =
         windOn ? std::optional(exportWind(project.wind, request.windOverride)) : std::nullopt;
     if (request.camera) scene.camera = *request.camera;
@@ -130,40 +137,29 @@ ExportReport exportForest(forest::ForestScene scene, const Project& project,
         report.species.push_back(s.name);
     report.obstacleTriangles = scene.obstacles ? scene.obstacles->triangleCount() : 0;
 
-    // One writer by the extension: USD streams trees and instances itself (with its tile); the
-    // others go through TreeExporter (OBJ streamed, glTF written by our own, FBX through
-    // Assimp); with wind, .glb/.gltf/.fbx through the wind exporter (rig, clip, _WIND* data)
-    // and an OBJ as without, plus its wind table.
+    // One writer by the format table's row (obj/, gltf/, usd/, fbx/), fed species and variants
+    // as numbers; with wind, a format that carries the rig (.glb, .gltf, .fbx) goes through the
+    // wind exporter (rig, clip, _WIND* data) instead, and one that carries the table only (OBJ)
+    // is written as without, plus its wind table.
     std::optional<exporter::TreeExporter> writer;
-    std::optional<exporter::usd::UsdStageWriter> usdWriter;
-    if (usda) {
-        exporter::usd::UsdLayerOptions layer;
+    if (!wind || format.wind != exporter::WindSupport::Rig) {
+        exporter::ForestWriterOptions o;
         for (const forest::SceneSpecies& s : scene.species)
-            layer.species.push_back(s.name);
-        layer.tile = request.tile;
-        layer.tileCount = request.tileCount;
-        layer.sceneKey = sceneKey(project, request);
-        layer.compact = !request.fullPrecision;
-        layer.durability = request.fsync ? Durability::Durable : Durability::Atomic;
-        layer.shippedTextures = exporter::resourcesDir() / "textures";
-        usdWriter.emplace(request.path, std::move(layer));
-        options.meshInstances = false; // instances take the variants' meshes
-        options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
-            std::vector<exporter::usd::UsdVariant> out;
-            for (const forest::ForestVariant& v : variants)
-                out.push_back({v.species, v.index, v.mesh});
-            usdWriter->setVariants(std::move(out));
-        };
-    } else if (!wind || obj) {
-        writer.emplace(request.path, exporter::ObjChoices{request.fsync, !request.fullPrecision});
+            o.species.push_back(s.name);
+        o.fsync = request.fsync;
+        o.compact = !request.fullPrecision;
+        o.tile = request.tile;
+        o.tileCount = request.tileCount;
+        if (format.tileLayers) o.sceneKey = sceneKey(project, request);
+        o.assimpGltf = request.assimpGltf;
+        writer.emplace(request.path, std::move(o));
         writer->setInstanceTables(request.instanceTables);
         writer->setProgress(progress);
-        writer->setAssimpGltf(request.assimpGltf);
         options.meshInstances = !writer->writesInstances();
         options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
             std::vector<exporter::ExportVariant> out;
             for (const forest::ForestVariant& v : variants)
-                out.push_back({v.name, v.mesh});
+                out.push_back({v.name, v.mesh, v.species, v.index});
             writer->addVariants(out);
         };
     }
@@ -182,23 +178,14 @@ ExportReport exportForest(forest::ForestScene scene, const Project& project,
                     if (request.trees->count(tree.instance.id)) chosen.push_back(tree);
             const std::vector<forest::ForestTree>& batch = request.trees ? chosen : all;
             report.written += batch.size();
-            if (usdWriter) {
-                std::vector<exporter::usd::UsdTree> trees;
-                trees.reserve(batch.size());
-                for (const forest::ForestTree& tree : batch)
-                    trees.push_back({tree.instance.id, tree.instance.species, tree.variant,
-                                     tree.instance.position, tree.instance.rotation,
-                                     tree.instance.scale * tree.instance.growth, tree.mesh,
-                                     tree.meshCameraDistance});
-                usdWriter->add(trees, progress);
-            } else if (writer) {
+            if (writer) {
                 std::vector<exporter::ExportTree> trees;
                 trees.reserve(batch.size());
                 for (const forest::ForestTree& tree : batch)
-                    trees.push_back({tree.name, tree.mesh, tree.instance.position,
-                                     tree.instance.rotation,
-                                     tree.instance.scale * tree.instance.growth, tree.variant,
-                                     tree.instance.id});
+                    trees.push_back(
+                        {tree.name, tree.mesh, tree.instance.position, tree.instance.rotation,
+                         tree.instance.scale * tree.instance.growth, tree.variant, tree.instance.id,
+                         tree.instance.species, tree.meshCameraDistance});
                 writer->add(trees);
             }
             if (windWriter) {
@@ -214,12 +201,10 @@ ExportReport exportForest(forest::ForestScene scene, const Project& project,
         },
         progress);
     const auto t = Clock::now();
-    if (usdWriter) {
-        usdWriter->commit(progress);
-        report.files.push_back(request.path);
-        report.usd = usdWriter->stats();
-    } else if (writer) {
+    if (writer) {
         report.files = writer->commit();
+        if (const auto* usd = dynamic_cast<const exporter::UsdForestWriter*>(&writer->writer()))
+            report.usd = usd->stats();
     }
     if (windWriter)
         for (const std::filesystem::path& f : windWriter->commit())

@@ -1,5 +1,7 @@
 #include "convert.h"
 
+#include <deque>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -8,6 +10,7 @@
 #include <dlfcn.h>
 
 #include "document/errormessage.h"
+#include "engine/export/formats.h"
 #include "engine/util/error.h"
 
 namespace sylva::python {
@@ -260,6 +263,22 @@ std::string dataDir(const char* env, const char* sub, const char* probe) {
 
 std::string presetsDir() {
     return dataDir("SYLVA_PRESETS_DIR", "presets", "ternary-tree.json");
+}
+
+const char* withFormats(const char* text) {
+    static std::deque<std::string> kept;
+    std::string out = text;
+    const std::pair<const char*, std::string> keys[] = {
+        {"{formats}", exporter::extensionList()},
+        {"{wind-rig}",
+         exporter::extensionList(
+             [](const exporter::FormatRow& r) { return r.wind == exporter::WindSupport::Rig; },
+             ", ", ", ")}};
+    for (const auto& key : keys)
+        for (std::size_t at = out.find(key.first); at != std::string::npos;
+             at = out.find(key.first, at))
+            out.replace(at, std::string(key.first).size(), key.second);
+    return kept.emplace_back(std::move(out)).c_str();
 }
 
 std::string resourcesDir() {

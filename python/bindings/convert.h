@@ -98,6 +98,11 @@ void registerErrorTranslator();
 /// (textures). $SYLVA_PRESETS_DIR / $SYLVA_RESOURCES_DIR, else next to an installed module
 /// (<prefix>/share/sylva/...), else the source tree the module was built from.
 std::string presetsDir();
+/// A docstring with the format table's extensions: "{formats}" as ".obj, .usda, .glb, .gltf or
+/// .fbx", "{wind-rig}" as the formats that carry the wind's rig (".glb, .gltf, .fbx"); kept for
+/// the process (pybind11 keeps the pointer).
+const char* withFormats(const char* text);
+
 std::string resourcesDir();
 
 } // namespace sylva::python

@@ -193,21 +193,28 @@ exporter::ExportTree exportTree(const forest::ForestTree& t) {
             t.instance.rotation,
             t.instance.scale * t.instance.growth,
             t.variant,
-            t.instance.id};
+            t.instance.id,
+            t.instance.species,
+            t.meshCameraDistance};
 }
 
 std::vector<exporter::ExportVariant> exportVariants(const std::vector<forest::ForestVariant>& v) {
     std::vector<exporter::ExportVariant> out;
     for (const forest::ForestVariant& variant : v)
-        out.push_back({variant.name, variant.mesh});
+        out.push_back({variant.name, variant.mesh, variant.species, variant.index});
     return out;
 }
 
 std::vector<std::string> writeForest(const std::vector<forest::ForestTree>& trees,
                                      const std::vector<exporter::ExportVariant>& variants,
+                                     const std::vector<std::string>& species,
                                      const std::string& path, bool fullPrecision, bool fsync,
                                      bool instanceTables) {
-    exporter::TreeExporter exporter(path, {fsync, !fullPrecision});
+    exporter::ForestWriterOptions options;
+    options.species = species;
+    options.fsync = fsync;
+    options.compact = !fullPrecision;
+    exporter::TreeExporter exporter(path, options);
     exporter.setInstanceTables(instanceTables);
     exporter.addVariants(variants);
     std::vector<exporter::ExportTree> batch;
@@ -426,8 +433,8 @@ void bindForest(py::module_& m) {
                         !fps.is_none())
                         throw InvalidInput("wind settings need wind=True");
                     py::gil_scoped_release release;
-                    return writeForest(*f.trees, exportVariants(*f.variants), p, fullPrecision,
-                                       fsync, instanceTables);
+                    return writeForest(*f.trees, exportVariants(*f.variants), f.speciesNames, p,
+                                       fullPrecision, fsync, instanceTables);
                 }
                 if (!f.windData)
                     throw InvalidInput("export(wind=True) needs a forest built with wind data: "
@@ -441,9 +448,9 @@ void bindForest(py::module_& m) {
                 // As `sylva-cli forest --wind`: .glb/.gltf/.fbx through the wind exporter (one
                 // rig per unique mesh: instances of a variant share its arrays and clip); an OBJ
                 // as without wind plus its .wind.csv table.
-                if (std::filesystem::path(p).extension() == ".obj")
-                    written = writeForest(*f.trees, exportVariants(*f.variants), p, fullPrecision,
-                                          fsync, instanceTables);
+                if (exporter::formatFor(p).wind == exporter::WindSupport::Table)
+                    written = writeForest(*f.trees, exportVariants(*f.variants), f.speciesNames, p,
+                                          fullPrecision, fsync, instanceTables);
                 exporter::WindExporter windExporter(p, options);
                 std::vector<exporter::WindExportTree> trees;
                 trees.reserve(f.trees->size());
@@ -850,12 +857,14 @@ void bindForest(py::module_& m) {
             py::arg("strength") = py::none(), py::arg("gustiness") = py::none(),
             py::arg("frequency") = py::none(), py::arg("bones") = py::none(),
             py::arg("clip_length") = py::none(), py::arg("fps") = py::none(),
-            "builds and writes the forest batch by batch without keeping it (`sylva-cli forest "
-            "-o path`, same bytes, .usda tiles included); the wind rig and clip (.glb, .gltf, "
-            ".fbx) or the .wind.csv beside an OBJ are written in the project's wind when it has "
-            "one (wind=None), or as wind=True/False says (--wind, --no-wind), the settings "
-            "given over the project's; Ctrl-C leaves no file; returns the statistics of "
-            "`sylva-cli forest --stats`")
+            withFormats(
+                "builds and writes the forest batch by batch without keeping it (`sylva-cli "
+                "forest -o path`: {formats}, same bytes, .usda tiles included); the wind rig and "
+                "clip ({wind-rig}) or the .wind.csv beside an OBJ are written in the project's "
+                "wind when it has "
+                "one (wind=None), or as wind=True/False says (--wind, --no-wind), the settings "
+                "given over the project's; Ctrl-C leaves no file; returns the statistics of "
+                "`sylva-cli forest --stats`"))
         .def("__repr__", [](const Project& p) {
             return "<sylva.Project " + std::to_string(p.project.species.size()) + " species, " +
                    std::to_string(p.project.domains.size() + (p.ground ? 1 : 0)) + " domains>";

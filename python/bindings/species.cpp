@@ -292,7 +292,7 @@ void bindSpecies(py::module_& m) {
                const py::object& frequency, const py::object& bones, const py::object& clipLength,
                const py::object& fps) {
                 const std::string p = toPath(path);
-                const bool obj = std::filesystem::path(p).extension() == ".obj";
+                const bool rig = exporter::formatFor(p).wind == exporter::WindSupport::Rig;
                 std::optional<exporter::WindExportOptions> windOptions;
                 if (wind)
                     windOptions = windExportOptions(direction, strength, gustiness, frequency,
@@ -307,8 +307,12 @@ void bindSpecies(py::module_& m) {
                     const std::string name = exporter::objectNameFor(t.species);
                     // As `sylva-cli tree --wind`: .glb/.gltf/.fbx through the wind exporter (rig,
                     // clip, _WIND* data); an OBJ as without wind plus its .wind.csv table.
-                    if (!wind || obj) {
-                        exporter::TreeExporter exporter(p, {fsync, compact});
+                    if (!wind || !rig) {
+                        exporter::ForestWriterOptions options;
+                        options.species = {name};
+                        options.fsync = fsync;
+                        options.compact = compact;
+                        exporter::TreeExporter exporter(p, options);
                         exporter.add({exporter::ExportTree{name, t.mesh}});
                         for (const auto& f : exporter.commit())
                             written.push_back(f.string());
@@ -328,13 +332,17 @@ void bindSpecies(py::module_& m) {
             py::arg("strength") = py::none(), py::arg("gustiness") = py::none(),
             py::arg("frequency") = py::none(), py::arg("bones") = py::none(),
             py::arg("clip_length") = py::none(), py::arg("fps") = py::none(),
-            "writes the tree as `sylva-cli tree` does (by extension: .obj + .mtl + textures, "
-            ".glb, .gltf, .fbx); returns the paths written. wind=True writes it as "
-            "`sylva-cli tree --wind`: a rig of at most `bones` bones (default 64), skin weights, "
-            "a looping clip 'wind' of `clip_length` s (default 4) at `fps` (30), the _WIND* "
-            "vertex data, Unreal's Pivot Painter 2 textures and <stem>.wind.csv; direction (x, y, "
-            "z), strength (0..2), gustiness "
-            "(0..1) and frequency (Hz, 0.05..5) are the wind's (docs/wind.md)")
+            withFormats(
+                "writes the tree as `sylva-cli tree` does (by extension: {formats}; an OBJ with "
+                "its "
+                ".mtl and textures); returns the paths written. wind=True writes it as "
+                "`sylva-cli tree --wind`: a rig of at most `bones` bones (default 64), skin "
+                "weights, "
+                "a looping clip 'wind' of `clip_length` s (default 4) at `fps` (30), the _WIND* "
+                "vertex data, Unreal's Pivot Painter 2 textures and <stem>.wind.csv; direction (x, "
+                "y, "
+                "z), strength (0..2), gustiness "
+                "(0..1) and frequency (Hz, 0.05..5) are the wind's (docs/wind.md)"))
         .def("__repr__", [](const GrownTree& t) {
             return "<sylva.GrownTree " + t.species + ": " +
                    std::to_string(t.mesh ? t.mesh->vertexCount() : 0) + " vertices>";

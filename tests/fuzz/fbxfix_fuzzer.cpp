@@ -1,6 +1,6 @@
 // Fuzzes the binary FBX repair and the ASCII unit rewrite: any bytes are repaired or rejected
 // with InvalidInput, and a repaired file is itself well-formed (repairing it again succeeds).
-#include "engine/export/fbxfix.h"
+#include "engine/export/fbx/fbxfix.h"
 #include "engine/util/error.h"
 
 #include <cstddef>

@@ -71,15 +71,15 @@ Case forestCase(const char* project) {
             options.onVariants = [&](const std::vector<forest::ForestVariant>& variants) {
                 std::vector<exporter::ExportVariant> v;
                 for (const forest::ForestVariant& variant : variants)
-                    v.push_back({variant.name, variant.mesh});
+                    v.push_back({variant.name, variant.mesh, variant.species, variant.index});
                 exporter.addVariants(v);
             };
             forest::buildForest(*scene, options, [&](const std::vector<forest::ForestTree>& batch) {
                 std::vector<exporter::ExportTree> trees;
                 for (const forest::ForestTree& t : batch)
                     trees.push_back({t.name, t.mesh, t.instance.position, t.instance.rotation,
-                                     t.instance.scale * t.instance.growth, t.variant,
-                                     t.instance.id});
+                                     t.instance.scale * t.instance.growth, t.variant, t.instance.id,
+                                     t.instance.species});
                 exporter.add(trees);
             });
             exporter.commit();

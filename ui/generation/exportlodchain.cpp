@@ -3,7 +3,7 @@
 #include <QFileInfo>
 
 #include "document/speciestree.h"
-#include "engine/export/lodexport.h"
+#include "engine/export/exportnames.h"
 #include "engine/export/treeexport.h"
 #include "engine/util/error.h"
 

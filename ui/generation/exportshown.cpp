@@ -35,7 +35,13 @@ ExportCount exportShown(const QString& path, const ShownScene& shown, const Expo
     }
     // A species preview: its one tree, as sylva-cli tree writes it.
     const GenerationResult& source = shown.result;
-    exporter::TreeExporter writer(path.toStdString(), {false, source.compactObj});
+    exporter::ForestWriterOptions writerOptions;
+    writerOptions.compact = source.compactObj;
+    // The species by number; its one name is the object name the tree carries (a USD stage's
+    // species scope).
+    writerOptions.species = {source.exportTrees.empty() ? std::string("tree")
+                                                        : source.exportTrees.front().name};
+    exporter::TreeExporter writer(path.toStdString(), writerOptions);
     writer.setProgress(progress);
     writer.addVariants(source.exportVariants);
     writer.add(source.exportTrees);

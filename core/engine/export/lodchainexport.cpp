@@ -1,17 +1,13 @@
 #include "engine/export/lodchainexport.h"
 
-#include <span>
 #include <system_error>
 
 #include <nlohmann/json.hpp>
 
-#include "engine/export/gltf/gltfbuilder.h"
+#include "engine/export/exportnames.h"
+#include "engine/export/formats.h"
 #include "engine/export/gltf/gltfmesh.h"
-#include "engine/export/lodexport.h"
 #include "engine/export/materials.h"
-#include "engine/export/objwriter.h"
-#include "engine/export/sceneexport.h"
-#include "engine/export/usd/usdlodchain.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -24,10 +20,6 @@ using Json = nlohmann::ordered_json;
 
 Json vec3(const glm::vec3& v) {
     return Json::array({gltf::tidy(v.x), gltf::tidy(v.y), gltf::tidy(v.z)});
-}
-
-std::span<const std::byte> bytesOf(const std::string& s) {
-    return {reinterpret_cast<const std::byte*>(s.data()), s.size()};
 }
 
 } // namespace
@@ -61,7 +53,7 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
         level.leafClusterPixels = l.leafClusterPixels;
         level.triangles = l.mesh.triangleCount();
         level.vertices = l.mesh.vertexCount();
-        if (options.obj) level.obj = dir / (level.name + ".obj");
+        if (options.obj) level.obj = dir / (level.name + formatRow(Format::Obj).extension);
         files.levels.push_back(level);
     }
     files.dropped = chain.dropped;
@@ -87,143 +79,12 @@ GameLodFiles writeFiles(const fs::path& dir, const std::string& species,
         progress.checkCancelled();
     }
 
-    if (options.obj) {
-        files.mtl = dir / (base + ".mtl");
-        writeMtlFile(files.mtl, materials);
-        written.push_back(files.mtl);
-        ObjOptions obj;
-        obj.mtllib = files.mtl.filename().string();
-        for (std::size_t i = 0; i < chain.levels.size(); ++i) {
-            writeObjFile(files.levels[i].obj, {{files.levels[i].name, &chain.levels[i].mesh}}, obj);
-            written.push_back(files.levels[i].obj);
-            progress.checkCancelled();
-        }
-    }
-
-    if (options.fbx) {
-        // Assimp's FBX exporter writes no FbxLODGroup: the levels are sibling nodes named by
-        // the _LOD<i> convention Unity's importer turns into an LOD Group (docs/lods.md).
-        SceneDesc scene;
-        scene.materials = materials;
-        scene.textureSource = options.shippedTextures;
-        for (std::size_t i = 0; i < chain.levels.size(); ++i) {
-            scene.meshes.push_back({files.levels[i].name, &chain.levels[i].mesh});
-            SceneInstance node;
-            node.name = files.levels[i].name;
-            node.mesh = i;
-            scene.instances.push_back(node);
-        }
-        files.fbx = dir / (base + "_LODs.fbx");
-        writeScene(files.fbx, scene, SceneFormat::Fbx);
-        written.push_back(files.fbx);
-        progress.checkCancelled();
-    }
-
+    // Each format's folder writes its files (the format table's rows with a LOD chain).
     const std::string impostorName = base + "_impostor";
-    if (options.gltf) {
-        files.glb = dir / (base + "_LODs.glb");
-        gltf::GltfBuilder builder(files.glb, gltf::GltfFormat::Glb, progress);
-        gltf::MaterialTable table(builder, materials, options.shippedTextures, true);
-        std::vector<int> meshes;
-        for (std::size_t i = 0; i < chain.levels.size(); ++i) {
-            table.describe(chain.levels[i].mesh);
-            meshes.push_back(
-                gltf::addTreeMesh(builder, chain.levels[i].mesh, files.levels[i].name, table));
-        }
-        std::vector<int> lower;
-        for (std::size_t i = 1; i < chain.levels.size(); ++i) {
-            gltf::Node n;
-            n.name = files.levels[i].name;
-            n.mesh = meshes[i];
-            n.extras = {{"sylva_lod", i}, {"sylva_switch_distance_m", chain.levels[i].distance}};
-            lower.push_back(builder.addNode(n));
-        }
-        Json coverage = Json::array();
-        for (std::size_t i = 1; i < chain.levels.size(); ++i)
-            coverage.push_back(chain.levels[i].screenSize);
-        if (chain.impostor) {
-            const mesh::Impostor& imp = *chain.impostor;
-            const Json sampler = {
-                {"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 33071}, {"wrapT", 33071}};
-            const int s = builder.addSampler(sampler);
-            const int color = builder.addTexture(
-                builder.addImage(bytesOf(colorPng), "image/png", impostorName + "_color"), s);
-            const int normal = builder.addTexture(
-                builder.addImage(bytesOf(normalPng), "image/png", impostorName + "_normal"), s);
-            const int depth = builder.addTexture(
-                builder.addImage(bytesOf(depthPng), "image/png", impostorName + "_depth"), s);
-            Json material = {
-                {"name", impostorName},
-                {"pbrMetallicRoughness",
-                 {{"baseColorTexture", {{"index", color}}},
-                  {"metallicFactor", 0.0},
-                  {"roughnessFactor", 1.0}}},
-                {"alphaMode", "MASK"},
-                {"alphaCutoff", 0.5},
-                {"doubleSided", true},
-                {"extras",
-                 {{"sylva_impostor",
-                   {{"layout", imp.settings.hemisphere ? "hemi-octahedral" : "octahedral"},
-                    {"grid", imp.settings.grid},
-                    {"cell_pixels", imp.settings.cellPixels},
-                    {"centre", vec3(imp.centre)},
-                    {"radius", gltf::tidy(imp.radius)},
-                    {"color_texture", color},
-                    {"normal_texture", normal},
-                    {"depth_texture", depth},
-                    {"spec", "docs/lods.md"}}}}}};
-            const int materialIndex = builder.addMaterial(material);
-            mesh::Mesh card = mesh::impostorCard(imp);
-            for (glm::vec2& uv : card.uvs) // glTF's uv origin is the image's top-left
-                uv.y = 1.0f - uv.y;
-            gltf::Primitive prim;
-            prim.attributes = {
-                {"POSITION", builder.addVec3(card.positions, gltf::Target::ArrayBuffer, true)},
-                {"NORMAL", builder.addVec3(card.normals)},
-                {"TEXCOORD_0", builder.addVec2(card.uvs)}};
-            prim.indices = builder.addIndices(card.indices);
-            prim.material = materialIndex;
-            gltf::Node n;
-            n.name = impostorName;
-            n.mesh = builder.addMesh(impostorName, {prim});
-            n.extras = {{"sylva_lod", "impostor"},
-                        {"sylva_switch_distance_m", chain.impostorDistance}};
-            lower.push_back(builder.addNode(n));
-            coverage.push_back(chain.impostorScreenSize);
-        }
-        coverage.push_back(0.0); // never culled
-        gltf::Node top;
-        top.name = files.levels[0].name;
-        top.mesh = meshes[0];
-        if (!lower.empty()) {
-            top.extensions["MSFT_lod"] = {{"ids", lower}};
-            top.extras = {{"MSFT_screencoverage", coverage}};
-            builder.useExtension("MSFT_lod");
-        }
-        const int topIndex = builder.addNode(top);
-        builder.addScene(base, {topIndex});
-        builder.root()["asset"]["extras"] = {{"sylva_lod_description", base + "_lods.json"}};
-        builder.finish();
-        written.push_back(files.glb);
-    }
-    if (options.usd) {
-        usd::UsdLodChainNames names;
-        names.species = species;
-        names.prim = base;
-        for (const GameLodLevel& l : files.levels)
-            names.levelNames.push_back(l.name);
-        names.materials = materials;
-        if (chain.impostor) {
-            names.impostorName = impostorName;
-            names.impostorColor = files.impostorColor.filename().string();
-            names.impostorNormal = files.impostorNormal.filename().string();
-            names.impostorDepth = files.impostorDepth.filename().string();
-        }
-        files.usd = dir / (base + "_lods.usda");
-        writeFileAtomically(files.usd, usd::formatLodChainStage(chain, names, progress));
-        written.push_back(files.usd);
-        progress.checkCancelled();
-    }
+    const LodChainWrite w{dir,     species,  base,      impostorName, chain,   materials,
+                          options, colorPng, normalPng, depthPng,     progress};
+    for (const FormatRow& row : formatTable())
+        if (row.lodChain && options.wants(row.format)) row.lodChain(w, files, written);
     if (!options.shippedTextures.empty() && (options.obj || options.fbx || options.usd))
         copyTextures(materials, options.shippedTextures, dir);
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/export/formats.h"
+#include "engine/export/materials.h"
 #include "engine/mesh/lodchain.h"
 #include "engine/util/progress.h"
 
@@ -18,6 +20,22 @@ struct GameLodOptions {
     /// Sylva's shipped textures (bark.png, leaf.png) for materials without a file of their own;
     /// also copied into <dir>/textures for the OBJ and FBX files. Empty: none.
     std::filesystem::path shippedTextures;
+    /// Whether the chain is written in \p format (the format table's rows with a lodChain).
+    bool wants(Format format) const {
+        switch (format) {
+        case Format::Obj:
+            return obj;
+        case Format::Glb:
+            return gltf;
+        case Format::Fbx:
+            return fbx;
+        case Format::Usda:
+            return usd;
+        case Format::Gltf:
+            break;
+        }
+        return false;
+    }
 };
 
 /// One written level.
@@ -39,6 +57,24 @@ struct GameLodFiles {
     bool impostor = false;
     double impostorDistance = 0.0, impostorScreenSize = 0.0;
     std::string description; ///< the JSON written to `json` (what `sylva-cli lods --json` prints)
+};
+
+/// What one format's LOD chain writer is given (FormatRow::lodChain: obj/objlodchain,
+/// gltf/gltflodchain, fbx/fbxlodchain, usd/usdlodchainwriter); it writes its files, fills its
+/// fields of GameLodFiles and appends what it wrote to `written`.
+struct LodChainWrite {
+    const std::filesystem::path& dir;
+    const std::string& species;      ///< as given (USD's sylva:species)
+    const std::string& base;         ///< fileSafeName(species): the files' stem
+    const std::string& impostorName; ///< base + "_impostor"
+    const mesh::BudgetLodChain& chain;
+    const std::vector<Material>& materials; ///< the mesh levels' materials
+    const GameLodOptions& options;
+    /// The impostor's maps as PNG (empty without an impostor), written beside the chain.
+    const std::string& colorPng;
+    const std::string& normalPng;
+    const std::string& depthPng;
+    Progress& progress;
 };
 
 /// Writes a species' game LOD chain into \p dir (created when missing), every file atomically:

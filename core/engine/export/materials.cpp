@@ -1,6 +1,8 @@
 #include "engine/export/materials.h"
 
-#include "engine/export/objwriter.h"
+#include <cstdlib>
+
+#include "engine/export/obj/objwriter.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -178,6 +180,23 @@ std::size_t copyTextures(const std::vector<Material>& materials,
             ++copied;
         }
     return copied;
+}
+
+std::filesystem::path resourcesDir() {
+    if (const char* env = std::getenv("SYLVA_RESOURCES_DIR"); env && *env) return env;
+    std::error_code ec;
+    namespace fs = std::filesystem;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        // build/<preset>/app/cli/sylva-cli or <build>/app/cli/sylva-cli → <source>/resources;
+        // <prefix>/bin → <prefix>/share/sylva/resources
+        for (const fs::path& candidate :
+             {exe.parent_path() / "../../../../resources", exe.parent_path() / "../../../resources",
+              exe.parent_path() / "../share/sylva/resources"}) {
+            if (fs::exists(candidate / "textures", ec)) return fs::weakly_canonical(candidate, ec);
+        }
+    }
+    return {};
 }
 
 } // namespace sylva::exporter

@@ -79,4 +79,8 @@ std::size_t copyTextures(const std::vector<Material>& materials,
                          const std::filesystem::path& sourceDir,
                          const std::filesystem::path& exportDir);
 
+/// Folder of Sylva's shipped resources (textures): $SYLVA_RESOURCES_DIR, the source tree next
+/// to the build folder, or the installed share/sylva/resources; empty when none is found.
+std::filesystem::path resourcesDir();
+
 } // namespace sylva::exporter

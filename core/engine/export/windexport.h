@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/export/formats.h"
 #include "engine/export/pivotpainter.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
@@ -83,6 +84,7 @@ private:
     writePivotPainterFiles(const std::vector<std::pair<std::string, const Prepared*>>& prepared);
 
     std::filesystem::path mPath;
+    Format mFormat = Format::Obj; ///< the format table's row of mPath
     WindExportOptions mOptions;
     Progress& mProgress;
     std::vector<WindExportTree> mTrees;

@@ -334,17 +334,4 @@ Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& setti
     return withTextures(std::move(mesh), settings);
 }
 
-std::vector<LodChainLevel> buildLodChain(const skel::Skeleton& skeleton,
-                                         const TreeMeshSettings& settings, Progress& progress) {
-    validateLod(settings.lod);
-    std::vector<LodChainLevel> chain;
-    for (const LodBand& band : settings.lod.bands) {
-        TreeMeshSettings s = settings;
-        s.useLod = true;
-        s.cameraDistance = band.distance;
-        chain.push_back({band.distance, buildTreeMesh(skeleton, s, progress)});
-    }
-    return chain;
-}
-
 } // namespace sylva::mesh

@@ -130,15 +130,4 @@ struct TreeMeshSettings {
 Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
                    Progress& progress = noProgress());
 
-/// One level of a LOD chain.
-struct LodChainLevel {
-    double distance = 0.0; ///< where the band starts
-    Mesh mesh;
-};
-
-/// A LOD chain for game engines: one mesh per band of settings.lod (LOD0 = nearest).
-std::vector<LodChainLevel> buildLodChain(const skel::Skeleton& skeleton,
-                                         const TreeMeshSettings& settings,
-                                         Progress& progress = noProgress());
-
 } // namespace sylva::mesh

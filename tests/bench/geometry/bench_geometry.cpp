@@ -13,7 +13,7 @@
 #include "../../core/common/testwords.h"
 #include "../../core/lsystem/referenceturtle.h"
 #include "../../core/mesh/referencetubemesh.h"
-#include "engine/export/objwriter.h"
+#include "engine/export/obj/objwriter.h"
 #include "engine/lsystem/derivation.h"
 #include "engine/lsystem/grammar.h"
 #include "engine/lsystem/turtle.h"

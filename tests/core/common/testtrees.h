@@ -1,7 +1,11 @@
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/leafplacement.h"
+#include "engine/mesh/lod.h"
 #include "engine/skeleton/skeleton.h"
 #include "testwords.h"
 
@@ -19,6 +23,20 @@ inline skel::Skeleton leafyTree() {
     p.maxBranchRadius = 0.05;
     s.leaves = mesh::placeLeaves(s, p);
     return s;
+}
+
+/// The distance LOD's mesh at the start of each of \p settings' bands (what a forest draws
+/// there; the levels the dropped mesh::buildLodChain made, built by the live path).
+inline std::vector<std::pair<double, mesh::Mesh>>
+bandLevels(const skel::Skeleton& s, const mesh::TreeMeshSettings& settings) {
+    std::vector<std::pair<double, mesh::Mesh>> levels;
+    for (const mesh::LodBand& band : settings.lod.bands) {
+        mesh::TreeMeshSettings at = settings;
+        at.useLod = true;
+        at.cameraDistance = band.distance;
+        levels.emplace_back(band.distance, mesh::buildTreeMesh(s, at));
+    }
+    return levels;
 }
 
 } // namespace sylva::testing

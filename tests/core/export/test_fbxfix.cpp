@@ -11,8 +11,8 @@
 #include <iterator>
 #include <string>
 
-#include "engine/export/fbxfix.h"
-#include "engine/export/sceneexport.h"
+#include "engine/export/fbx/fbxfix.h"
+#include "engine/export/fbx/sceneexport.h"
 #include "engine/mesh/mesh.h"
 #include "engine/util/error.h"
 

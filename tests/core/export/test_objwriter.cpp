@@ -11,7 +11,7 @@
 #include <assimp/scene.h>
 
 #include "../common/testwords.h"
-#include "engine/export/objwriter.h"
+#include "engine/export/obj/objwriter.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/lod.h"
 #include "engine/util/error.h"

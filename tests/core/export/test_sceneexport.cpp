@@ -14,9 +14,9 @@
 #include <assimp/scene.h>
 
 #include "../common/testwords.h"
+#include "engine/export/fbx/sceneexport.h"
 #include "engine/export/materials.h"
-#include "engine/export/objwriter.h"
-#include "engine/export/sceneexport.h"
+#include "engine/export/obj/objwriter.h"
 #include "engine/export/treeexport.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/leaftint.h"

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/packing.hpp>
 
-#include "engine/export/sceneexport.h"
+#include "engine/export/fbx/sceneexport.h"
 #include "engine/export/treeexport.h"
 #include "engine/export/usd/usdcompose.h"
 #include "engine/export/usd/usdformat.h"
@@ -347,16 +347,20 @@ TEST(SceneExport, CancelledExportLeavesNoFile) {
     }
 }
 
-TEST(TreeExporter, WritesUsdWithSpeciesFromTheForestsNames) {
-    // What the editor's File > Export and Python's export_forest hand over: names, ids, variants.
+TEST(TreeExporter, WritesUsdWithSpeciesAndVariantsByNumber) {
+    // What every front door hands over: species and variants as numbers, the names only labels
+    // (these say nothing of the species: nothing is parsed back out of them).
     const fs::path dir = tempDir("treeexporter");
-    exporter::TreeExporter out(dir / "f.usda");
-    out.addVariants({{"english-oak_v0", barkAndLeaf(1)},
-                     {"english-oak_v1", barkAndLeaf(2)},
-                     {"birch_v0", barkAndLeaf(3)}});
-    out.add({{"english-oak_1", barkAndLeaf(1), {1, 0, 0}, 0.5f, 1.0f, 1, 1},
-             {"birch_2", barkAndLeaf(3), {2, 0, 0}, 0.0f, 1.0f, 2, 2},
-             {"birch_3", barkAndLeaf(0.5f), {3, 0, 0}, 0.0f, 0.8f, -1, 3}});
+    exporter::ForestWriterOptions options;
+    options.species = {"english-oak", "birch"};
+    exporter::TreeExporter out(dir / "f.usda", options);
+    EXPECT_TRUE(out.writesInstances());
+    out.addVariants({{"first", barkAndLeaf(1), 0, 0},
+                     {"second_v7", barkAndLeaf(2), 0, 1},
+                     {"third", barkAndLeaf(3), 1, 0}});
+    out.add({{"x_1", barkAndLeaf(1), {1, 0, 0}, 0.5f, 1.0f, 1, 1, 0},
+             {"y", barkAndLeaf(3), {2, 0, 0}, 0.0f, 1.0f, 2, 2, 1},
+             {"english-oak_3", barkAndLeaf(0.5f), {3, 0, 0}, 0.0f, 0.8f, -1, 3, 1}});
     const auto written = out.commit();
     ASSERT_FALSE(written.empty());
     const std::string text = readAll(dir / "f.usda");
@@ -366,6 +370,10 @@ TEST(TreeExporter, WritesUsdWithSpeciesFromTheForestsNames) {
     EXPECT_NE(text.find("def Xform \"tree_3\""), std::string::npos);
     EXPECT_NE(text.find("custom string sylva:species = \"birch\""), std::string::npos);
     EXPECT_EQ(count(text, "def Xform \"variant_"), 3u);
+    // A tree whose variant is of another species is refused, whatever its label says.
+    exporter::TreeExporter bad(dir / "g.usda", options);
+    bad.addVariants({{"birch_v0", barkAndLeaf(1), 1, 0}});
+    EXPECT_THROW(bad.add({{"birch_1", barkAndLeaf(1), {}, 0.0f, 1.0f, 0, 1, 0}}), InvalidInput);
 }
 
 // What keeps a forest's text small (issue 30): leaf cards are quads with one normal each and

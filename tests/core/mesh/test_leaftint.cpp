@@ -154,22 +154,23 @@ TEST(LeafTint, CarriedThroughLodLevelsAndClusters) {
     const skel::Skeleton s = leafyTree();
     mesh::TreeMeshSettings settings = tinted(10.0, 0.2, 0.2);
     settings.leafClusterSize = 4;
-    const std::vector<mesh::LodChainLevel> chain = mesh::buildLodChain(s, settings);
+    const auto chain = sylva::testing::bandLevels(s, settings);
     ASSERT_GE(chain.size(), 2u);
-    for (const mesh::LodChainLevel& level : chain) {
-        ASSERT_EQ(level.mesh.colors.size(), level.mesh.positions.size())
-            << "level at " << level.distance << " m";
+    for (const auto& level : chain) {
+        ASSERT_EQ(level.second.colors.size(), level.second.positions.size())
+            << "level at " << level.first << " m";
         std::set<std::uint32_t> distinct;
-        for (std::size_t v = firstLeafVertex(level.mesh); v < level.mesh.positions.size(); ++v) {
-            const glm::u8vec4 c = level.mesh.colors[v];
+        for (std::size_t v = firstLeafVertex(level.second); v < level.second.positions.size();
+             ++v) {
+            const glm::u8vec4 c = level.second.colors[v];
             distinct.insert(c.x | c.y << 8 | c.z << 16);
         }
-        EXPECT_GT(distinct.size(), 3u) << "level at " << level.distance << " m";
+        EXPECT_GT(distinct.size(), 3u) << "level at " << level.first << " m";
     }
     // A leaf card of the same place keeps its colour from level to level: at 25 m (no leaf
     // merged by the default bands' thresholds at this size) most cards are where they were.
-    const mesh::Mesh& near = chain[0].mesh;
-    const mesh::Mesh& far = chain[1].mesh;
+    const mesh::Mesh& near = chain[0].second;
+    const mesh::Mesh& far = chain[1].second;
     auto centre = [](const mesh::Mesh& m, std::size_t v) {
         return (m.positions[v] + m.positions[v + 1] + m.positions[v + 2] + m.positions[v + 3]) /
                4.0f;

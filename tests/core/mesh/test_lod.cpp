@@ -177,13 +177,13 @@ TEST(Lod, ChainDecreasesAndKeepsLeafArea) {
     ASSERT_GT(s.leaves.size(), 100u);
     mesh::TreeMeshSettings settings;
     settings.lod.bands = {{0, 8, 1.0}, {20, 6, 0.6}, {50, 4, 0.35}, {120, 3, 0.15}};
-    const auto chain = mesh::buildLodChain(s, settings);
+    const auto chain = sylva::testing::bandLevels(s, settings);
     ASSERT_EQ(chain.size(), 4u);
-    const double leafArea0 = submeshArea(chain[0].mesh, "leaf");
+    const double leafArea0 = submeshArea(chain[0].second, "leaf");
     ASSERT_GT(leafArea0, 0.0);
     for (std::size_t i = 1; i < chain.size(); ++i) {
-        EXPECT_LT(chain[i].mesh.triangleCount(), chain[i - 1].mesh.triangleCount()) << i;
-        EXPECT_NEAR(submeshArea(chain[i].mesh, "leaf") / leafArea0, 1.0, 0.05) << i;
+        EXPECT_LT(chain[i].second.triangleCount(), chain[i - 1].second.triangleCount()) << i;
+        EXPECT_NEAR(submeshArea(chain[i].second, "leaf") / leafArea0, 1.0, 0.05) << i;
     }
     // Cards the LOD makes (clusters, enlarged survivors of thinning) are only drawn when
     // accepted: a forest refuses those that would reach into an obstacle.
@@ -196,7 +196,7 @@ TEST(Lod, ChainDecreasesAndKeepsLeafArea) {
     mesh::TreeMeshSettings plain = settings;
     plain.tubes.resolution = 3;
     plain.leaves = false;
-    EXPECT_LT(submeshArea(chain[3].mesh, "bark"),
+    EXPECT_LT(submeshArea(chain[3].second, "bark"),
               submeshArea(mesh::buildTreeMesh(s, plain), "bark"));
 }
 

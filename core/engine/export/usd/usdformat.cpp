@@ -1,6 +1,6 @@
 #include "engine/export/usd/usdformat.h"
 
-#include "engine/export/objwriter.h"
+#include "engine/export/obj/objwriter.h"
 
 #include <charconv>
 

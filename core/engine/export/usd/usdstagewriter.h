@@ -77,8 +77,7 @@ public:
     UsdStageWriter(const UsdStageWriter&) = delete;
     UsdStageWriter& operator=(const UsdStageWriter&) = delete;
 
-    /// The index of species \p name, added after the known ones when it is new (writers that
-    /// learn the species from the trees: TreeExporter).
+    /// The index of species \p name, added after the known ones when it is new.
     std::uint32_t speciesIndex(const std::string& name);
     /// The variants every instance refers to; call before the first add().
     void setVariants(std::vector<UsdVariant> variants);

@@ -59,8 +59,8 @@ enum class SceneFormat {
     FbxAscii,
 };
 
-/// The format for a file name's extension (.glb, .gltf, .fbx = binary FBX); throws InvalidInput
-/// otherwise.
+/// Assimp's form of a file name's format (formatFor(): .glb, .gltf, .fbx = binary FBX); throws
+/// InvalidInput for another extension, and for a format Assimp does not write here (.obj, .usda).
 SceneFormat sceneFormatFor(const std::filesystem::path& path);
 
 /// Exports through Assimp's exporter. Each Mesh becomes one Assimp mesh per submesh (bark,

@@ -1,4 +1,4 @@
-#include "engine/export/sceneexport.h"
+#include "engine/export/fbx/sceneexport.h"
 
 #include <algorithm>
 #include <cctype>
@@ -20,8 +20,9 @@
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
-#include "engine/export/fbxfix.h"
-#include "engine/export/objwriter.h"
+#include "engine/export/fbx/fbxfix.h"
+#include "engine/export/formats.h"
+#include "engine/export/obj/objwriter.h"
 #include "engine/mesh/leaftint.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
@@ -241,13 +242,20 @@ std::unique_ptr<aiScene> buildScene(const SceneDesc& desc, bool embedTextures, b
 } // namespace
 
 SceneFormat sceneFormatFor(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext == ".glb") return SceneFormat::Glb;
-    if (ext == ".gltf") return SceneFormat::Gltf;
-    if (ext == ".fbx") return SceneFormat::Fbx;
-    throw InvalidInput("unknown scene format '" + ext + "' (use .obj, .usda, .glb, .gltf or .fbx)");
+    const FormatRow& row = formatFor(path);
+    switch (row.format) {
+    case Format::Glb:
+        return SceneFormat::Glb;
+    case Format::Gltf:
+        return SceneFormat::Gltf;
+    case Format::Fbx:
+        return SceneFormat::Fbx;
+    case Format::Obj:
+    case Format::Usda:
+        break;
+    }
+    throw InvalidInput(std::string("Assimp's exporter writes no ") + row.name + " ('" +
+                       row.extension + "'; use .glb, .gltf or .fbx)");
 }
 
 namespace {

@@ -1,4 +1,4 @@
-#include "engine/export/fbxfix.h"
+#include "engine/export/fbx/fbxfix.h"
 
 #include <array>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "engine/export/objwriter.h"
+#include "engine/export/obj/objwriter.h"
 
 #include "engine/export/materials.h"
 
