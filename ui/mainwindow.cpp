@@ -238,6 +238,7 @@ void MainWindow::createDocks() {
 
     mProperties = new PropertiesPanel(*mDocument, this);
     mProperties->setObjectName(QStringLiteral("propertiesPanel"));
+    mProperties->setResult([this]() -> const GenerationResult& { return mGenerator->result(); });
     connect(mProperties, &PropertiesPanel::failed, this, &MainWindow::reportError);
     // In a scroll area: a tree's editors are wider than the project's, and the dock (and with
     // it the viewport) must not jump when the selection changes.
@@ -799,6 +800,17 @@ void MainWindow::showDocument(bool frame) {
     mLodChainExport->update();
     mStats->showResult(result);
     mStats->showSelection(*mDocument, result);
+    QHash<doc::TreeId, QSet<QString>> orphans;
+    for (const DrawnTree& t : result.trees)
+        for (const std::string& id : t.orphanedEdits)
+            orphans[t.docId].insert(QString::fromStdString(id));
+    mOutlinerModel->setOrphanedEdits(orphans);
+    // The generation's warnings (orphaned branch edits among them) in Messages, each once
+    // while it lasts, not again at every regeneration.
+    const QStringList warnings = result.warning.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    for (const QString& w : warnings)
+        if (!mShownWarnings.contains(w)) mMessages->add(MessagesPanel::Severity::Warning, w);
+    mShownWarnings = warnings;
     updateTitle();
     applyColoring();
     mGlLabel->setText(mViewport->glInfo());

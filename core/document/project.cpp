@@ -1,5 +1,7 @@
 #include "document/project.h"
 
+#include "document/jsonlocate.h"
+
 #include "document/formatupgrade.h"
 #include "engine/graph/vectorparam.h"
 #include "engine/mesh/season.h"
@@ -13,8 +15,10 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -216,7 +220,10 @@ skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
     return e;
 }
 
-ProjectInstance parseInstance(const Value& v, std::size_t i) {
+/// Says where in the file a malformed branch edit is: (edit index, key or "", message).
+using BranchEditError = std::function<void(std::size_t, const std::string&, const std::string&)>;
+
+ProjectInstance parseInstance(const Value& v, std::size_t i, const BranchEditError& located) {
     const std::string where = "instances[" + std::to_string(i) + "]";
     ProjectInstance in;
     in.id = idOf(v, where, kMaxTreeId);
@@ -235,9 +242,27 @@ ProjectInstance parseInstance(const Value& v, std::size_t i) {
         std::set<std::string> seen;
         for (std::size_t k = 0; k < a.size(); ++k) {
             const std::string at = where + ".branch_edits[" + std::to_string(k) + "]";
-            skel::BranchEdit e = parseBranchEdit(a[k], at);
-            if (!seen.insert(e.branch).second)
+            skel::BranchEdit e;
+            try {
+                e = parseBranchEdit(a[k], at);
+            } catch (const InvalidInput& x) {
+                // file:line:col of the entry, or of its key the message names (".length ...").
+                const std::string message = x.what();
+                std::string key;
+                if (message.rfind(at + ".", 0) == 0)
+                    for (std::size_t c = at.size() + 1;
+                         c < message.size() &&
+                         (std::isalpha(static_cast<unsigned char>(message[c])) ||
+                          message[c] == '_');
+                         ++c)
+                        key += message[c];
+                located(k, key, message);
+                throw;
+            }
+            if (!seen.insert(e.branch).second) {
+                located(k, "branch", at + ": branch " + e.branch + " is edited twice");
                 throw InvalidInput(at + ": branch " + e.branch + " is edited twice");
+            }
             in.branchEdits.push_back(std::move(e));
         }
     }
@@ -375,7 +400,8 @@ bool Project::usesSpecies(const std::string& name) const {
 Project parseProject(const QByteArray& json, const QString& fileName, LoadReport* report) {
     const std::string file = fileName.toStdString();
     const std::string where = file.empty() ? std::string() : file + ": ";
-    Value root = Value::parseJson(json.toStdString(), file);
+    const std::string text = json.toStdString();
+    Value root = Value::parseJson(text, file);
     if (!root.isObject()) throw InvalidInput(where + "a project file must hold a JSON object");
     const UpgradeReport upgrade = upgradeFormat(
         root.objectRef(), "sylva-project", kProjectFormatVersion, projectUpgrades(), file, false);
@@ -396,7 +422,16 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
                 p.domains.push_back(parseDomain(v->toArray()[i], i));
         if (const Value* v = root.find("instances"))
             for (std::size_t i = 0; i < v->toArray("instances").size(); ++i)
-                p.instances.push_back(parseInstance(v->toArray()[i], i));
+                p.instances.push_back(parseInstance(
+                    v->toArray()[i], i,
+                    [&](std::size_t k, const std::string& key, const std::string& message) {
+                        std::vector<JsonStep> path{std::string("instances"), i,
+                                                   std::string("branch_edits"), k};
+                        if (!key.empty()) path.emplace_back(key);
+                        const JsonPlace place = locateJson(text, path);
+                        throw InvalidInput(
+                            std::vector<Diagnostic>{{file, place.line, place.column, message}});
+                    }));
         if (const Value* v = root.find("obstacles"))
             for (std::size_t i = 0; i < v->toArray("obstacles").size(); ++i)
                 p.obstacles.push_back(parseObstacle(v->toArray()[i], i));

@@ -585,13 +585,19 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                                          !plan.hasAdaptNode && !plan.selfOrganizing;
                 if (fromVariant) tree.adaptedFrom = static_cast<std::int32_t>(v);
 
-                std::uint64_t cacheKey = 0;
+                std::uint64_t cacheKey = 0, grownKey = 0;
                 if (options.cache && !plan.selfOrganizing) {
                     cacheKey = treeKey(speciesKeys[in.species], in, near, scene, options,
                                        ctx.cameraDistance, edits);
+                    grownKey = treeKey(speciesKeys[in.species], in, near, scene, options,
+                                       ctx.cameraDistance, nullptr);
                     if (fromVariant) cacheKey = mixSeed(cacheKey, variants[v].seed);
                     if (std::optional<ForestTree> cached = options.cache->findTree(cacheKey)) {
                         tree = std::move(*cached);
+                        // Its skeleton as grown stays at hand for its next branch edit.
+                        if (in.handPlaced && !plan.selfOrganizing && !plan.hasAdaptNode &&
+                            tree.grown)
+                            options.cache->storeGrown(grownKey, tree.grown);
                         tree.name = species.name + "_" + std::to_string(in.id);
                         continue;
                     }
@@ -604,10 +610,19 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     skeleton = standGrown[index];
                 } else if (fromVariant) {
                     skeleton = variants[v].skeleton;
+                } else if (std::shared_ptr<const skel::Skeleton> kept =
+                               edits && options.cache && !plan.hasAdaptNode
+                                   ? options.cache->findGrown(grownKey)
+                                   : nullptr) {
+                    // Only its branch edits changed: the tree as grown is kept, the edits are
+                    // applied to it again (a hand edit on screen at once, issue 43).
+                    skeleton = std::move(kept);
                 } else {
                     const graph::NodeOutput& grown =
                         evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode);
                     skeleton = grown.skeleton;
+                    if (options.cache && in.handPlaced && !plan.hasAdaptNode && skeleton)
+                        options.cache->storeGrown(grownKey, skeleton);
                     // A species' own adapt node reports what it did through its stats.
                     auto stat = [&](const char* key) {
                         auto it = grown.stats.find(key);

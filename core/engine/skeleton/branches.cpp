@@ -349,6 +349,14 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
             removing = true;
         }
     }
+    // A thicker branch never ends up thicker than the node it leaves from (the radius pass's
+    // rule 3, shapeRadii): radii are clamped from the root up once any radius was raised.
+    const bool thickened =
+        std::any_of(edits.begin(), edits.end(), [](const BranchEdit& e) { return e.radius > 1.0f; });
+    if (thickened)
+        for (std::size_t i = 0; i < s.size(); ++i)
+            if (const Index p = s.parent[i]; p >= 0 && s.radius[i] > s.radius[at(p)])
+                s.radius[i] = s.radius[at(p)];
     if (removing) {
         // Kept nodes, grown and grafted, numbered in one run: what compact() gives them.
         std::vector<Index> renumber(remove.size(), -1);
@@ -365,9 +373,13 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
     return report;
 }
 
-std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits) {
+std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits,
+                                   Skeleton* edited) {
     std::vector<Branch> branches = branchesOf(grown);
-    if (edits.empty()) return branches;
+    if (edits.empty()) {
+        if (edited) *edited = grown;
+        return branches;
+    }
     Skeleton s = grown;
     std::vector<Index> map;
     const BranchEditReport report = applyBranchEdits(s, edits, &map);
@@ -421,6 +433,7 @@ std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<Bran
         for (std::size_t k = 0; k < i; ++k)
             if (out[k].id == out[i].parent) out[i].parentIndex = static_cast<std::int32_t>(k);
     }
+    if (edited) *edited = std::move(s);
     return out;
 }
 

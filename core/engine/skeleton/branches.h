@@ -113,7 +113,9 @@ void lockBranch(const Skeleton& grown, const std::vector<BranchEdit>& others, Br
 
 /// The branches of \p grown (their ids) as \p edits leave them: pruned ones left out, the others'
 /// nodes, base, tip, length and radius those of the edited skeleton. What an editor lists and
-/// what edits name: ids never shift when a sibling is pruned.
-std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits);
+/// what edits name: ids never shift when a sibling is pruned. With \p edited: the edited
+/// skeleton the branches' nodes index (what the branch tool picks and highlights).
+std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits,
+                                   Skeleton* edited = nullptr);
 
 } // namespace sylva::skel
