@@ -353,6 +353,8 @@ void MainWindow::createMenus() {
     mDocumentActions = new DocumentActions(
         *mDocument, [this] { return mViewport->camera().target(); }, this);
     connect(mDocumentActions, &DocumentActions::failed, this, &MainWindow::reportError);
+    mDocumentActions->setResult(
+        [this]() -> const GenerationResult& { return mGenerator->result(); });
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->setObjectName(QStringLiteral("fileMenu"));
     QAction* newAction = file->addAction(tr("&New project"), this, &MainWindow::newDocument);

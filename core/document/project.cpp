@@ -147,13 +147,14 @@ std::string checkedSeason(const std::string& name, const std::string& where) {
 }
 
 skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
-    static const std::set<std::string> keys = {"branch", "prune", "bend",  "length",
-                                               "radius", "lock",  "locked"};
+    static const std::set<std::string> keys = {"branch", "prune", "bend",   "length",
+                                               "radius", "lock",  "locked", "anchor"};
     for (const auto& [key, value] : v.toObject(where))
         if (!keys.count(key))
             throw InvalidInput(
                 where + ": unknown key \"" + key +
-                "\" (a branch edit has branch, prune, bend, length, radius, lock, locked)");
+                "\" (a branch edit has branch, prune, bend, length, radius, lock, locked, "
+                "anchor)");
     skel::BranchEdit e;
     const Value* branch = v.find("branch");
     if (!branch || !branch->isString())
@@ -166,6 +167,25 @@ skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
         e.length = static_cast<float>(x->toNumber(where + ".length"));
     if (const Value* x = v.find("radius"))
         e.radius = static_cast<float>(x->toNumber(where + ".radius"));
+    if (const Value* anchor = v.find("anchor")) {
+        // [base x, y, z, direction x, y, z, length]: where the branch was when edited.
+        const std::string at = where + ".anchor";
+        const Value::Array& a = anchor->toArray(at);
+        if (a.size() != 7)
+            throw InvalidInput(at + " needs 7 numbers (base x, y, z, direction x, y, z, length)");
+        float f[7];
+        for (std::size_t i = 0; i < 7; ++i) {
+            f[i] = static_cast<float>(a[i].toNumber(at));
+            if (!std::isfinite(f[i])) throw InvalidInput(at + " must hold finite numbers");
+        }
+        skel::BranchAnchor an;
+        an.base = {f[0], f[1], f[2]};
+        an.direction = {f[3], f[4], f[5]};
+        an.length = f[6];
+        if (glm::length(an.direction) < 1e-3f || an.length < 0.0f)
+            throw InvalidInput(at + ": the direction must not be zero, the length not negative");
+        e.anchor = an;
+    }
     if (const Value* locked = v.find("locked")) {
         const std::string at = where + ".locked";
         if (!e.lock) throw InvalidInput(at + " belongs to a locked edit (\"lock\": true)");
@@ -585,6 +605,14 @@ QByteArray serializeProject(const Project& project) {
                 if (e.length != 1.0f) eo["length"] = decimalOf(e.length);
                 if (e.radius != 1.0f) eo["radius"] = decimalOf(e.radius);
                 if (e.lock) eo["lock"] = true;
+                if (e.anchor) {
+                    Value::Array a;
+                    for (float f : {e.anchor->base.x, e.anchor->base.y, e.anchor->base.z,
+                                    e.anchor->direction.x, e.anchor->direction.y,
+                                    e.anchor->direction.z, e.anchor->length})
+                        a.emplace_back(decimalOf(f));
+                    eo["anchor"] = Value(std::move(a));
+                }
                 if (e.lock && !e.locked.empty()) {
                     auto q = [](Value::Array& row, const glm::quat& r) {
                         for (float f : {r.x, r.y, r.z, r.w})

@@ -70,7 +70,7 @@ BranchProperties::BranchProperties(doc::Document& document, doc::Document::Branc
     connect(mPrune, &QPushButton::clicked, this, [this] {
         apply([this] {
             if (mDocument.selectedBranch() != mBranch) mDocument.setSelectedBranch(mBranch);
-            pruneSelectedBranch(mDocument);
+            pruneSelectedBranch(mDocument, shownTree(mResult(), mBranch.tree));
         });
     });
     refresh();

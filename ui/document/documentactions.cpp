@@ -48,7 +48,9 @@ void DocumentActions::reportCurrentError() {
 void DocumentActions::deleteSelection() {
     try {
         if (mDocument.selectedBranch()) { // the Branch tool's selection: Delete prunes it
-            pruneSelectedBranch(mDocument);
+            pruneSelectedBranch(mDocument,
+                                mResult ? shownTree(mResult(), mDocument.selectedBranch()->tree)
+                                        : nullptr);
             return;
         }
         const QList<doc::ItemRef> selection = mDocument.selection();

@@ -35,7 +35,13 @@ skel::BranchEdit branchEditOf(const doc::Document& document, doc::TreeId id,
 }
 
 void applyBranchEdit(doc::Document& document, const DrawnTree* drawn, doc::TreeId id,
-                     const skel::BranchEdit& edit) {
+                     const skel::BranchEdit& given) {
+    skel::BranchEdit edit = given;
+    // Where the branch is in the tree as grown: the edit finds it there again after a change
+    // of topology shifts the ids (docs/branch-edits.md#anchors).
+    if (!edit.anchor && drawn && drawn->grown)
+        for (const skel::Branch& b : skel::branchesOf(*drawn->grown))
+            if (b.id == edit.branch) edit.anchor = skel::anchorOf(b);
     if (!edit.lock || !edit.locked.empty()) {
         document.editBranch(id, edit);
         return;
@@ -56,7 +62,7 @@ void applyBranchEdit(doc::Document& document, const DrawnTree* drawn, doc::TreeI
     document.editBranch(id, stored);
 }
 
-void pruneSelectedBranch(doc::Document& document) {
+void pruneSelectedBranch(doc::Document& document, const DrawnTree* drawn) {
     const std::optional<doc::Document::BranchRef> selected = document.selectedBranch();
     if (!selected) return;
     skel::BranchEdit edit = branchEditOf(document, selected->tree, selected->branch);
@@ -64,7 +70,7 @@ void pruneSelectedBranch(doc::Document& document) {
         throw InvalidInput("branch " + selected->branch +
                            " is locked: unlock it before pruning it");
     edit.prune = true;
-    document.editBranch(selected->tree, edit);
+    applyBranchEdit(document, drawn, selected->tree, edit);
     document.setSelectedBranch(std::nullopt);
 }
 

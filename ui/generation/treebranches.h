@@ -24,7 +24,8 @@ std::vector<skel::Branch> editedBranchesOf(const DrawnTree& drawn,
 /// The shown tree of the document's tree \p id in \p result (its grown skeleton kept), or null.
 const DrawnTree* shownTree(const GenerationResult& result, doc::TreeId id);
 
-/// Sets \p edit on tree \p id through the document, one undo step. An edit that locks without
+/// Sets \p edit on tree \p id through the document, one undo step; with \p drawn, an edit
+/// without an anchor gets its branch's (skel::BranchAnchor). An edit that locks without
 /// kept geometry gets it first from \p drawn (skel::lockBranch: the branch as the tree shows
 /// it, the tree's other edits applied), so that the lock keeps the geometry, not only a flag.
 /// \throw InvalidInput as Document::editBranch, or when the tree is not shown to lock from.
@@ -38,6 +39,7 @@ skel::BranchEdit branchEditOf(const doc::Document& document, doc::TreeId id,
 /// Prunes the document's selected branch (Delete with a branch selected, in the Branch tool or
 /// from Edit ▸ Delete): one undo step, then the branch is let go (its tree stays selected).
 /// \throw InvalidInput for a locked branch or a trunk; nothing without a selected branch.
-void pruneSelectedBranch(doc::Document& document);
+/// \p drawn: the selected branch's tree as shown (the edit's anchor), or null.
+void pruneSelectedBranch(doc::Document& document, const DrawnTree* drawn = nullptr);
 
 } // namespace sylva::ui

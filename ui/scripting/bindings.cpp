@@ -131,6 +131,7 @@ py::dict generate() {
     stats["orphaned_edits"] = static_cast<std::size_t>(stat("orphaned_edits"));
     stats["ms"] = r.elapsedMs;
     stats["edit_to_result_ms"] = w.generator().editToResultMs();
+    stats["timings_ms"] = r.timingsMs; // wall time per forest stage (species, place, trees...)
     return stats;
 }
 
@@ -277,9 +278,14 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                         known = known || b.id == branch;
                 if (!known)
                     throw InvalidInput("tree " + std::to_string(id) + " has no branch " + branch);
-                applyBranchEdit(document(),
-                                edit.lock && edit.locked.empty() ? &grownTree(id) : nullptr, id,
-                                edit);
+                // The shown tree: the edit's anchor, and a lock's geometry (which needs it).
+                const DrawnTree* drawn = nullptr;
+                try {
+                    drawn = &grownTree(id);
+                } catch (const InvalidInput&) {
+                    if (edit.lock && edit.locked.empty()) throw;
+                }
+                applyBranchEdit(document(), drawn, id, edit);
             },
             py::arg("tree_id"), py::arg("branch_id"), py::arg("prune") = py::none(),
             py::arg("bend") = py::none(), py::arg("length") = py::none(),

@@ -56,7 +56,7 @@ void TreeCache::beginBuild() {
     std::lock_guard lock(mMutex);
     ++mBuild;
     mHits = mMisses = 0;
-    mVariantHits = mVariantMisses = 0;
+    mVariantHits = mVariantMisses = mGrownHits = 0;
 }
 
 void TreeCache::endBuild() {
@@ -80,7 +80,13 @@ std::shared_ptr<const skel::Skeleton> TreeCache::findGrown(std::uint64_t key) {
     auto it = mGrown.find(key);
     if (it == mGrown.end()) return nullptr;
     it->second.build = mBuild;
+    ++mGrownHits;
     return it->second.value;
+}
+
+std::size_t TreeCache::grownHits() const {
+    std::lock_guard lock(mMutex);
+    return mGrownHits;
 }
 
 void TreeCache::storeGrown(std::uint64_t key, std::shared_ptr<const skel::Skeleton> grown) {

@@ -40,6 +40,8 @@ public:
     /// edit on screen within 50 ms). Null when not kept.
     std::shared_ptr<const skel::Skeleton> findGrown(std::uint64_t key);
     void storeGrown(std::uint64_t key, std::shared_ptr<const skel::Skeleton> grown);
+    /// Trees of the current (or last) build whose skeleton as grown was taken from the cache.
+    std::size_t grownHits() const;
 
     /// Trees taken from the cache and trees grown during the current (or last) build. An
     /// instanced tree takes its variant's mesh or level and never asks the cache: it counts
@@ -59,7 +61,7 @@ private:
     mutable std::mutex mMutex;
     std::uint64_t mBuild = 0;
     std::size_t mHits = 0, mMisses = 0;
-    std::size_t mVariantHits = 0, mVariantMisses = 0;
+    std::size_t mVariantHits = 0, mVariantMisses = 0, mGrownHits = 0;
     std::unordered_map<std::uint64_t, Entry<ForestTree>> mTrees;
     std::unordered_map<std::uint64_t, Entry<ForestVariant>> mVariants;
     std::unordered_map<std::uint64_t, Entry<CrownShape>> mCrowns;

@@ -157,7 +157,9 @@ TEST(BranchEdits, AThickenedBranchIsNoThickerThanWhereItLeaves) {
     // 0.1 x 5 would be twice the trunk node it leaves (0.25): clamped as the radius pass does.
     EXPECT_FLOAT_EQ(s.radius[5], s.radius[1]);
     for (std::size_t i = 0; i < s.size(); ++i)
-        if (s.parent[i] >= 0) EXPECT_LE(s.radius[i], s.radius[std::size_t(s.parent[i])]) << i;
+        if (s.parent[i] >= 0) {
+            EXPECT_LE(s.radius[i], s.radius[std::size_t(s.parent[i])]) << i;
+        }
     EXPECT_FLOAT_EQ(s.radius[9], 0.15f); // the twig, x5, still under its parent
     EXPECT_FLOAT_EQ(s.radius[8], 0.1f);  // the other branch untouched
 }

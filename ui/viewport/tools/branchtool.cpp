@@ -201,7 +201,8 @@ void BranchTool::release(QMouseEvent* event) {
             dir[c] = std::round(dir[c] * 1000.0f) / 1000.0f;
         if (glm::length(dir) < 1e-3f) return;
         edit.bend = dir;
-        applyBranchEdit(mContext.document, nullptr, d.branch.tree, edit);
+        applyBranchEdit(mContext.document, shownTree(mContext.result(), d.branch.tree),
+                        d.branch.tree, edit);
     } catch (...) {
         mContext.message(QString::fromStdString(doc::currentErrorMessage()));
     }
@@ -223,7 +224,8 @@ bool BranchTool::key(QKeyEvent* event) {
     if ((event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace) &&
         mContext.document.selectedBranch()) {
         try {
-            pruneSelectedBranch(mContext.document);
+            const auto& b = mContext.document.selectedBranch();
+            pruneSelectedBranch(mContext.document, shownTree(mContext.result(), b->tree));
         } catch (...) {
             mContext.message(QString::fromStdString(doc::currentErrorMessage()));
         }
