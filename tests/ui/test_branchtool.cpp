@@ -197,7 +197,8 @@ private Q_SLOTS:
         settle();
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        const QString saved = dir.filePath(QStringLiteral("edited.sylva"));
+        // Beside the opened copy, which stays: the species files are found from it.
+        const QString saved = mDir.filePath(QStringLiteral("edited.sylva"));
         QVERIFY(mWindow->saveAs(saved));
         QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("editor")));
         QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("cli")));
@@ -242,6 +243,10 @@ private Q_SLOTS:
         QVERIFY(model);
         const QModelIndex tree = model->indexOf({doc::ItemRef::Kind::Tree, mTree});
         QCOMPARE(model->rowCount(tree), 1);
+        std::size_t orphans = 0;
+        for (const DrawnTree& t : mWindow->generator().result().trees)
+            if (t.docId == mTree) orphans = t.orphanedEdits.size();
+        QCOMPARE(orphans, std::size_t(1));
         const QString text = model->index(0, 0, tree).data().toString();
         QVERIFY2(text.contains(QStringLiteral("0.999")) &&
                      text.contains(QStringLiteral("orphaned")),

@@ -146,6 +146,28 @@ std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
             pod(bend);
             pod(e.length);
             pod(e.radius);
+            // Where an anchored edit goes, and what a locked one puts back, are its result too.
+            const bool anchored = e.anchor.has_value();
+            pod(anchored);
+            if (e.anchor) {
+                pod(e.anchor->base);
+                pod(e.anchor->direction);
+                pod(e.anchor->length);
+            }
+            pod(e.lockedBase);
+            for (const skel::LockedNode& n : e.locked) {
+                pod(n.parent);
+                pod(n.order);
+                pod(n.radius);
+                pod(n.offset);
+                pod(n.orientation);
+            }
+            for (const skel::LockedLeaf& l : e.lockedLeaves) {
+                pod(l.node);
+                pod(l.size);
+                pod(l.offset);
+                pod(l.orientation);
+            }
         }
     const bool flags[] = {options.useLod,
                           options.adapt,
