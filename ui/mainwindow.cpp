@@ -166,7 +166,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         QSet<std::uint32_t> ids;
         for (doc::TreeId id : mDocument->selectedTrees())
             ids.insert(id);
+        // A selected branch is drawn over its tree by the Branch tool: the tree is not tinted,
+        // so that the branch stands out.
+        if (mDocument->selectedBranch()) ids.clear();
         mViewport->setHighlightedTrees(ids);
+        mViewport->update();
         mStats->showSelection(*mDocument, mGenerator->result());
     });
     connect(mViewport, &Viewport::frameSwapped, this, [this] {

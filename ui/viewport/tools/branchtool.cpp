@@ -63,13 +63,7 @@ std::optional<doc::Document::BranchRef> BranchTool::branchAt(const QPoint& pos) 
     const TreeHit pick = viewport.pickAt(pos);
     if (pick.index < 0) return std::nullopt;
     const doc::TreeId id = viewport.trees()[std::size_t(pick.index)].id;
-    if (id == 0) {
-        mContext.message(QCoreApplication::translate(
-            "sylva::ui::ToolController",
-            "Only hand-placed trees take branch edits: this one was scattered by "
-            "a domain"));
-        return std::nullopt;
-    }
+    if (id == 0) return std::nullopt; // a domain's tree: press() says so
     const Shown* s = shown(id);
     if (!s || s->edited.size() == 0) return std::nullopt;
     const Ray ray = viewport.rayAt(pos);
@@ -145,7 +139,14 @@ bool BranchTool::press(QMouseEvent* event) {
     if (event->modifiers() != Qt::NoModifier) return false;
     const QPoint pos = event->position().toPoint();
     const auto hit = branchAt(pos);
-    if (!hit) return false; // the camera orbits; a click lets the branch go
+    if (!hit) {
+        const TreeHit pick = mContext.viewport.pickAt(pos);
+        if (pick.index >= 0 && mContext.viewport.trees()[std::size_t(pick.index)].id == 0)
+            mContext.message(QCoreApplication::translate(
+                "sylva::ui::ToolController",
+                "Only hand-placed trees take branch edits: this one was scattered by a domain"));
+        return false; // the camera orbits; a click lets the branch go
+    }
     mContext.document.setSelectedBranch(hit);
     mContext.viewport.update();
     const Shown* s = shown(hit->tree);
