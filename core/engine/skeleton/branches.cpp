@@ -271,13 +271,21 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
     // within reach, nearest first, each edit and branch taken once (a greedy matching, so that
     // an edit does not take the branch another edit fits better).
     std::unordered_map<const BranchEdit*, std::ptrdiff_t> target;
+    // A locked edit keeps its own id (and, where that is gone, is grafted where it was): its
+    // kept geometry is its anchor.
+    for (const BranchEdit& e : edits)
+        if (e.lock && !e.locked.empty())
+            if (const auto found = byId.find(e.branch); found != byId.end()) {
+                claimed[found->second] = 1;
+                target[&e] = static_cast<std::ptrdiff_t>(found->second);
+            }
     std::size_t maxDepth = 0;
     for (const BranchEdit& e : edits)
         maxDepth = std::max(maxDepth, depthOf(e.branch));
     for (std::size_t depth = 0; depth <= maxDepth; ++depth) {
         std::vector<std::tuple<float, const BranchEdit*, std::size_t>> pairs;
         for (const BranchEdit& e : edits) {
-            if (!e.anchor || depthOf(e.branch) != depth) continue;
+            if (!e.anchor || depthOf(e.branch) != depth || (e.lock && !e.locked.empty())) continue;
             for (std::size_t i = 0; i < branches.size(); ++i) {
                 if (depthOf(branches[i].id) != depth) continue;
                 float c = anchorCost(*e.anchor, branches[i]);
