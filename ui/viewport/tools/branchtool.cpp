@@ -33,12 +33,12 @@ const BranchTool::Shown* BranchTool::shown(doc::TreeId tree) const {
     const DrawnTree* drawn = shownTree(mContext.result(), tree);
     if (!drawn || mContext.document.treeIndex(tree) < 0) return nullptr;
     const std::vector<skel::BranchEdit>& edits = mContext.document.branchEdits(tree);
-    if (mShown && mShown->tree == tree && mShown->grown == drawn->grown.get() &&
-        mShown->edits == edits && mShown->transform == drawn->transform)
+    if (mShown && mShown->tree == tree && mShown->grown == drawn->grown && mShown->edits == edits &&
+        mShown->transform == drawn->transform)
         return &*mShown;
     Shown s;
     s.tree = tree;
-    s.grown = drawn->grown.get();
+    s.grown = drawn->grown;
     s.edits = edits;
     s.transform = drawn->transform;
     s.branches = editedBranchesOf(*drawn, edits, &s.edited);

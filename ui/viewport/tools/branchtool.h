@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,7 +41,7 @@ private:
     /// index, and each node's branch; remade when the tree or its edits change.
     struct Shown {
         doc::TreeId tree = 0;
-        const skel::Skeleton* grown = nullptr;
+        std::shared_ptr<const skel::Skeleton> grown; ///< held: a new one is never taken for it
         std::vector<skel::BranchEdit> edits;
         std::vector<skel::Branch> branches;
         skel::Skeleton edited;
