@@ -166,7 +166,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         QSet<std::uint32_t> ids;
         for (doc::TreeId id : mDocument->selectedTrees())
             ids.insert(id);
+        // A selected branch is drawn over its tree by the Branch tool: the tree is not tinted,
+        // so that the branch stands out.
+        if (mDocument->selectedBranch()) ids.clear();
         mViewport->setHighlightedTrees(ids);
+        mViewport->update();
         mStats->showSelection(*mDocument, mGenerator->result());
     });
     connect(mViewport, &Viewport::frameSwapped, this, [this] {
@@ -238,6 +242,7 @@ void MainWindow::createDocks() {
 
     mProperties = new PropertiesPanel(*mDocument, this);
     mProperties->setObjectName(QStringLiteral("propertiesPanel"));
+    mProperties->setResult([this]() -> const GenerationResult& { return mGenerator->result(); });
     connect(mProperties, &PropertiesPanel::failed, this, &MainWindow::reportError);
     // In a scroll area: a tree's editors are wider than the project's, and the dock (and with
     // it the viewport) must not jump when the selection changes.
@@ -352,6 +357,8 @@ void MainWindow::createMenus() {
     mDocumentActions = new DocumentActions(
         *mDocument, [this] { return mViewport->camera().target(); }, this);
     connect(mDocumentActions, &DocumentActions::failed, this, &MainWindow::reportError);
+    mDocumentActions->setResult(
+        [this]() -> const GenerationResult& { return mGenerator->result(); });
     QMenu* file = menuBar()->addMenu(tr("&File"));
     file->setObjectName(QStringLiteral("fileMenu"));
     QAction* newAction = file->addAction(tr("&New project"), this, &MainWindow::newDocument);
@@ -797,6 +804,17 @@ void MainWindow::showDocument(bool frame) {
     mLodChainExport->update();
     mStats->showResult(result);
     mStats->showSelection(*mDocument, result);
+    QHash<doc::TreeId, QSet<QString>> orphans;
+    for (const DrawnTree& t : result.trees)
+        for (const std::string& id : t.orphanedEdits)
+            orphans[t.docId].insert(QString::fromStdString(id));
+    mOutlinerModel->setOrphanedEdits(orphans);
+    // The generation's warnings (orphaned branch edits among them) in Messages, each once
+    // while it lasts, not again at every regeneration.
+    const QStringList warnings = result.warning.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    for (const QString& w : warnings)
+        if (!mShownWarnings.contains(w)) mMessages->add(MessagesPanel::Severity::Warning, w);
+    mShownWarnings = warnings;
     updateTitle();
     applyColoring();
     mGlLabel->setText(mViewport->glInfo());

@@ -235,7 +235,8 @@ private:
     /// children go).
     SpeciesPreviewSession mPreview;
     QString mLastError;
-    bool mFrameNext = false; ///< frame (or look from the project camera) at the next result
+    bool mFrameNext = false;    ///< frame (or look from the project camera) at the next result
+    QStringList mShownWarnings; ///< the last generation's warnings, already in Messages
     double mEditToScreenMs = 0.0;
     bool mAwaitingFrame = false;
     AskHandler mAsk;

@@ -48,6 +48,7 @@ void Document::replace(Project project, const QString& path) {
     for (const ProjectInstance& t : mProject.instances)
         mTreeIds.push_back(static_cast<TreeId>(t.id));
     mSelection.clear();
+    mSelectedBranch.reset();
     mUndo.setClean();
     emitChange(DocumentChange::Reset);
     Q_EMIT selectionChanged();
@@ -782,7 +783,24 @@ QList<TreeId> Document::selectedTrees() const {
 void Document::setSelection(const QList<ItemRef>& items) {
     if (items == mSelection) return;
     mSelection = items;
+    // A selected branch stays only while its tree alone is selected.
+    if (mSelectedBranch &&
+        mSelection != QList<ItemRef>{{ItemRef::Kind::Tree, mSelectedBranch->tree}})
+        mSelectedBranch.reset();
     pruneSelection();
+    Q_EMIT selectionChanged();
+}
+
+void Document::setSelectedBranch(const std::optional<BranchRef>& branch) {
+    if (branch == mSelectedBranch) return;
+    if (branch) (void)tree(branch->tree); // InvalidInput for an unknown tree
+    mSelectedBranch = branch;
+    const QList<ItemRef> items =
+        branch ? QList<ItemRef>{{ItemRef::Kind::Tree, branch->tree}} : mSelection;
+    if (items != mSelection) {
+        mSelection = items;
+        pruneSelection();
+    }
     Q_EMIT selectionChanged();
 }
 
@@ -811,7 +829,9 @@ void Document::pruneSelection() {
             return false;
         }
     });
-    if (mSelection.size() != before) Q_EMIT selectionChanged();
+    const bool branchGone = mSelectedBranch && treeIndex(mSelectedBranch->tree) < 0;
+    if (branchGone) mSelectedBranch.reset();
+    if (mSelection.size() != before || branchGone) Q_EMIT selectionChanged();
 }
 
 void Document::emitChange(unsigned what, QList<TreeId> trees, QString species, QString node) {

@@ -219,6 +219,17 @@ public:
     QList<TreeId> selectedTrees() const;
     void setSelection(const QList<ItemRef>& items);
     void selectTrees(const QList<TreeId>& ids);
+    /// The branch the Branch tool selected (docs/editor.md#the-branch-tool): a hand-placed tree
+    /// and a branch id of its grown tree; its tree is then the selection. Cleared when the
+    /// selection changes to anything else or the tree goes.
+    struct BranchRef {
+        TreeId tree = 0;
+        std::string branch;
+        bool operator==(const BranchRef&) const = default;
+    };
+    const std::optional<BranchRef>& selectedBranch() const { return mSelectedBranch; }
+    /// Selects \p branch (and its tree), or none. \throw InvalidInput for an unknown tree.
+    void setSelectedBranch(const std::optional<BranchRef>& branch);
 
     // --- for commands only (core/document/commands): raw changes with their signals --------
     void rawInsertTree(int index, TreeId id, const ProjectInstance& tree);
@@ -277,6 +288,7 @@ private:
     QString mPath;
     QUndoStack mUndo;
     QList<ItemRef> mSelection;
+    std::optional<BranchRef> mSelectedBranch;
 };
 
 } // namespace sylva::doc

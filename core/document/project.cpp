@@ -1,5 +1,7 @@
 #include "document/project.h"
 
+#include "document/jsonlocate.h"
+
 #include "document/formatupgrade.h"
 #include "document/projectsettings.h"
 #include "engine/graph/vectorparam.h"
@@ -15,8 +17,10 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -138,13 +142,14 @@ std::string checkedSeason(const std::string& name, const std::string& where) {
 }
 
 skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
-    static const std::set<std::string> keys = {"branch", "prune", "bend",  "length",
-                                               "radius", "lock",  "locked"};
+    static const std::set<std::string> keys = {"branch", "prune", "bend",   "length",
+                                               "radius", "lock",  "locked", "anchor"};
     for (const auto& [key, value] : v.toObject(where))
         if (!keys.count(key))
             throw InvalidInput(
                 where + ": unknown key \"" + key +
-                "\" (a branch edit has branch, prune, bend, length, radius, lock, locked)");
+                "\" (a branch edit has branch, prune, bend, length, radius, lock, locked, "
+                "anchor)");
     skel::BranchEdit e;
     const Value* branch = v.find("branch");
     if (!branch || !branch->isString())
@@ -157,6 +162,25 @@ skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
         e.length = static_cast<float>(x->toNumber(where + ".length"));
     if (const Value* x = v.find("radius"))
         e.radius = static_cast<float>(x->toNumber(where + ".radius"));
+    if (const Value* anchor = v.find("anchor")) {
+        // [base x, y, z, direction x, y, z, length]: where the branch was when edited.
+        const std::string at = where + ".anchor";
+        const Value::Array& a = anchor->toArray(at);
+        if (a.size() != 7)
+            throw InvalidInput(at + " needs 7 numbers (base x, y, z, direction x, y, z, length)");
+        float f[7];
+        for (std::size_t i = 0; i < 7; ++i) {
+            f[i] = static_cast<float>(a[i].toNumber(at));
+            if (!std::isfinite(f[i])) throw InvalidInput(at + " must hold finite numbers");
+        }
+        skel::BranchAnchor an;
+        an.base = {f[0], f[1], f[2]};
+        an.direction = {f[3], f[4], f[5]};
+        an.length = f[6];
+        if (glm::length(an.direction) < 1e-3f || an.length < 0.0f)
+            throw InvalidInput(at + ": the direction must not be zero, the length not negative");
+        e.anchor = an;
+    }
     if (const Value* locked = v.find("locked")) {
         const std::string at = where + ".locked";
         if (!e.lock) throw InvalidInput(at + " belongs to a locked edit (\"lock\": true)");
@@ -211,7 +235,10 @@ skel::BranchEdit parseBranchEdit(const Value& v, const std::string& where) {
     return e;
 }
 
-ProjectInstance parseInstance(const Value& v, std::size_t i) {
+/// Says where in the file a malformed branch edit is: (edit index, key or "", message).
+using BranchEditError = std::function<void(std::size_t, const std::string&, const std::string&)>;
+
+ProjectInstance parseInstance(const Value& v, std::size_t i, const BranchEditError& located) {
     const std::string where = "instances[" + std::to_string(i) + "]";
     ProjectInstance in;
     in.id = idOf(v, where, kMaxTreeId);
@@ -230,9 +257,27 @@ ProjectInstance parseInstance(const Value& v, std::size_t i) {
         std::set<std::string> seen;
         for (std::size_t k = 0; k < a.size(); ++k) {
             const std::string at = where + ".branch_edits[" + std::to_string(k) + "]";
-            skel::BranchEdit e = parseBranchEdit(a[k], at);
-            if (!seen.insert(e.branch).second)
+            skel::BranchEdit e;
+            try {
+                e = parseBranchEdit(a[k], at);
+            } catch (const InvalidInput& x) {
+                // file:line:col of the entry, or of its key the message names (".length ...").
+                const std::string message = x.what();
+                std::string key;
+                if (message.rfind(at + ".", 0) == 0)
+                    for (std::size_t c = at.size() + 1;
+                         c < message.size() &&
+                         (std::isalpha(static_cast<unsigned char>(message[c])) ||
+                          message[c] == '_');
+                         ++c)
+                        key += message[c];
+                located(k, key, message);
+                throw;
+            }
+            if (!seen.insert(e.branch).second) {
+                located(k, "branch", at + ": branch " + e.branch + " is edited twice");
                 throw InvalidInput(at + ": branch " + e.branch + " is edited twice");
+            }
             in.branchEdits.push_back(std::move(e));
         }
     }
@@ -368,7 +413,8 @@ bool Project::usesSpecies(const std::string& name) const {
 Project parseProject(const QByteArray& json, const QString& fileName, LoadReport* report) {
     const std::string file = fileName.toStdString();
     const std::string where = file.empty() ? std::string() : file + ": ";
-    Value root = Value::parseJson(json.toStdString(), file);
+    const std::string text = json.toStdString();
+    Value root = Value::parseJson(text, file);
     if (!root.isObject()) throw InvalidInput(where + "a project file must hold a JSON object");
     const UpgradeReport upgrade = upgradeFormat(
         root.objectRef(), "sylva-project", kProjectFormatVersion, projectUpgrades(), file, false);
@@ -389,7 +435,16 @@ Project parseProject(const QByteArray& json, const QString& fileName, LoadReport
                 p.domains.push_back(parseDomain(v->toArray()[i], i));
         if (const Value* v = root.find("instances"))
             for (std::size_t i = 0; i < v->toArray("instances").size(); ++i)
-                p.instances.push_back(parseInstance(v->toArray()[i], i));
+                p.instances.push_back(parseInstance(
+                    v->toArray()[i], i,
+                    [&](std::size_t k, const std::string& key, const std::string& message) {
+                        std::vector<JsonStep> path{std::string("instances"), i,
+                                                   std::string("branch_edits"), k};
+                        if (!key.empty()) path.emplace_back(key);
+                        const JsonPlace place = locateJson(text, path);
+                        throw InvalidInput(
+                            std::vector<Diagnostic>{{file, place.line, place.column, message}});
+                    }));
         if (const Value* v = root.find("obstacles"))
             for (std::size_t i = 0; i < v->toArray("obstacles").size(); ++i)
                 p.obstacles.push_back(parseObstacle(v->toArray()[i], i));
@@ -538,6 +593,14 @@ QByteArray serializeProject(const Project& project) {
                 if (e.length != 1.0f) eo["length"] = decimalOf(e.length);
                 if (e.radius != 1.0f) eo["radius"] = decimalOf(e.radius);
                 if (e.lock) eo["lock"] = true;
+                if (e.anchor) {
+                    Value::Array a;
+                    for (float f : {e.anchor->base.x, e.anchor->base.y, e.anchor->base.z,
+                                    e.anchor->direction.x, e.anchor->direction.y,
+                                    e.anchor->direction.z, e.anchor->length})
+                        a.emplace_back(decimalOf(f));
+                    eo["anchor"] = Value(std::move(a));
+                }
                 if (e.lock && !e.locked.empty()) {
                     auto q = [](Value::Array& row, const glm::quat& r) {
                         for (float f : {r.x, r.y, r.z, r.w})

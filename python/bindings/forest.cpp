@@ -276,6 +276,40 @@ env::ObstacleMesh meshFromArrays(const std::string& name, const py::object& vert
 
 } // namespace
 
+/// Locks \p edit as the editor does (skel::lockBranch): the project's forest is built without
+/// meshes, keeping the tree's skeleton as grown, and the branch's subtree as it is shown — the
+/// tree's other edits and this edit's own applied — is kept in the edit, in the tree's frame
+/// (bends are world directions). \throw InvalidInput for a branch the grown tree lacks or a
+/// trunk.
+static void lockAsGrown(const Project& p, const doc::ProjectInstance& tree,
+                        skel::BranchEdit& edit) {
+    forest::ForestScene scene = p.makeScene();
+    forest::ForestOptions options;
+    options.buildMeshes = false;
+    options.keepGrown = true;
+    std::shared_ptr<const skel::Skeleton> grown;
+    glm::mat4 transform(1.0f);
+    forest::buildForest(scene, options, [&](const std::vector<forest::ForestTree>& batch) {
+        for (const forest::ForestTree& t : batch)
+            if (t.instance.handPlaced && t.instance.id == tree.id) {
+                grown = t.grown;
+                transform = t.instance.transform();
+            }
+    });
+    if (!grown) throw InvalidInput("tree " + std::to_string(tree.id) + " was not grown");
+    const glm::mat3 toLocal = glm::inverse(glm::mat3(transform));
+    std::vector<skel::BranchEdit> others = tree.branchEdits;
+    for (skel::BranchEdit& e : others)
+        if (e.bend) e.bend = toLocal * *e.bend;
+    skel::BranchEdit kept = edit;
+    if (kept.bend) kept.bend = toLocal * *kept.bend;
+    skel::lockBranch(*grown, others, kept);
+    edit.lock = true;
+    edit.lockedBase = kept.lockedBase;
+    edit.locked = std::move(kept.locked);
+    edit.lockedLeaves = std::move(kept.lockedLeaves);
+}
+
 void bindForest(py::module_& m) {
     py::class_<ForestTreeRef>(m, "ForestTree",
                               "One tree of a built forest: its mesh in its own frame and the "
@@ -682,9 +716,11 @@ void bindForest(py::module_& m) {
                const py::object& lock) {
                 for (doc::ProjectInstance& t : p.project.instances)
                     if (t.id == id) {
-                        t.branchEdits = withBranchEdit(t.branchEdits,
-                                                       branchEditFrom(t.branchEdits, branch, prune,
-                                                                      bend, length, radius, lock));
+                        skel::BranchEdit edit = branchEditFrom(t.branchEdits, branch, prune, bend,
+                                                               length, radius, lock);
+                        if (edit.lock && edit.locked.empty())
+                            lockAsGrown(p, t, edit); // the geometry, not only the flag
+                        t.branchEdits = withBranchEdit(t.branchEdits, edit);
                         return;
                     }
                 throw InvalidInput("there is no tree " + std::to_string(id));

@@ -399,3 +399,60 @@ def test_branch_edits_of_a_hand_placed_tree(data, presets, tmp_path):
     text = (tmp_path / "edited.sylva").read_text()
     assert '"format_version": 3' in text and '"branch_edits"' in text
     assert sylva.load_project(tmp_path / "edited.sylva").branch_edits(tid) == p.branch_edits(tid)
+
+    # lock=True keeps the branch's geometry (the tree is grown to copy it), not only a flag: the
+    # locked nodes are stored, and the forest applies the locked edit.
+    p.edit_branch(tid, "0.999.3", length=1.0)
+    p.edit_branch(tid, "0.1", bend=(1, 1, 0), lock=True)
+    locked = p.branch_edits(tid)[0]
+    assert locked["lock"] and locked["locked_nodes"] > 1, locked
+    with pytest.raises(ValueError, match="is locked"):
+        p.edit_branch(tid, "0.1", length=0.5)
+    regrown = p.build_forest(lod=False)
+    assert regrown.stats["branch_edits"] == 1 and regrown.stats["orphaned_edits"] == 0
+    with pytest.raises(ValueError, match="no branch 0.77"):
+        p.edit_branch(tid, "0.77", lock=True)
+
+
+def glb_json(path):
+    import struct
+
+    data = path.read_bytes()
+    magic, version, length = struct.unpack_from("<4sII", data, 0)
+    assert magic == b"glTF" and version == 2 and length == len(data)
+    chunk_length, chunk_type = struct.unpack_from("<II", data, 12)
+    assert chunk_type == 0x4E4F534A  # JSON
+    return json.loads(data[20:20 + chunk_length])
+
+
+def test_edited_tree_exports_the_same_through_every_door(presets, cli, tmp_path):
+    # Issue #43: a project with hand edits of single branches exports the same bytes from
+    # sylva-cli and Python (OBJ, and glTF with the wind rig), and the rig is built from the
+    # edited tree: pruning a limb lowers the rigged triangles, the wood and the CO2.
+    p = sylva.Project(seed=4)
+    p.add_species("alder", sylva.load_species(presets / "alder.json"))
+    tid = p.add_tree("alder", (0, 0, 0), seed=11)
+    p.save(tmp_path / "plain.sylva")
+    p.edit_branch(tid, "0.1", prune=True)
+    p.edit_branch(tid, "0.2", bend=(1, 1, 0), length=0.8, radius=1.3)
+    p.save(tmp_path / "edited.sylva")
+    for name, wind in (("forest.obj", False), ("forest.glb", True)):
+        extra = ["--wind", "--bones", 16, "--clip-length", 2] if wind else []
+        (tmp_path / "cli").mkdir(exist_ok=True)
+        cli("forest", tmp_path / "edited.sylva", "-o", tmp_path / "cli" / name, *extra)
+        kwargs = dict(wind=True, bones=16, clip_length=2.0) if wind else {}
+        (tmp_path / "py").mkdir(exist_ok=True)
+        sylva.load_project(tmp_path / "edited.sylva").export_forest(tmp_path / "py" / name, **kwargs)
+        assert (tmp_path / "cli" / name).read_bytes() == (tmp_path / "py" / name).read_bytes(), name
+    edited = sylva.load_project(tmp_path / "edited.sylva").build_forest(wind=True, lod=False)
+    plain = sylva.load_project(tmp_path / "plain.sylva").build_forest(wind=True, lod=False)
+    assert edited.stats["branch_edits"] == 2 and edited.stats["orphaned_edits"] == 0
+    assert edited.stats["triangles"] < plain.stats["triangles"]
+    assert edited.stats["metrics"]["co2_kg"] < plain.stats["metrics"]["co2_kg"]
+    edited.export(tmp_path / "edited.glb", wind=True, bones=16, clip_length=2.0)
+    plain.export(tmp_path / "plain.glb", wind=True, bones=16, clip_length=2.0)
+    rigged = [glb_json(tmp_path / n) for n in ("edited.glb", "plain.glb")]
+    counts = [sum(d["accessors"][pr["attributes"]["POSITION"]]["count"]
+                  for m in d["meshes"] for pr in m["primitives"]) for d in rigged]
+    assert all(len(d["skins"]) == 1 for d in rigged)
+    assert counts[0] < counts[1], counts

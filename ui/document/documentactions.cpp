@@ -11,6 +11,7 @@
 #include "document/errormessage.h"
 #include "document/presetlibrary.h"
 #include "engine/util/error.h"
+#include "ui/generation/treebranches.h"
 
 namespace sylva::ui {
 
@@ -46,6 +47,12 @@ void DocumentActions::reportCurrentError() {
 
 void DocumentActions::deleteSelection() {
     try {
+        if (mDocument.selectedBranch()) { // the Branch tool's selection: Delete prunes it
+            pruneSelectedBranch(mDocument,
+                                mResult ? shownTree(mResult(), mDocument.selectedBranch()->tree)
+                                        : nullptr);
+            return;
+        }
         const QList<doc::ItemRef> selection = mDocument.selection();
         QList<doc::TreeId> trees = mDocument.selectedTrees();
         if (!trees.isEmpty()) {

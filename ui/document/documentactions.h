@@ -14,6 +14,8 @@ class Document;
 
 namespace sylva::ui {
 
+struct GenerationResult;
+
 /// The Edit and Scene menus' actions on the document's contents and selection, kept out of the
 /// window as Tiled keeps its `MapDocumentActionHandler`: delete, duplicate, select all trees,
 /// add a tree, add a domain, add a species from a file, import an obstacle. Each is a Document
@@ -27,6 +29,9 @@ public:
     DocumentActions(doc::Document& document, std::function<glm::vec3()> target,
                     QWidget* dialogParent);
 
+    /// The shown generation: Delete with a branch selected prunes it with its anchor.
+    void setResult(std::function<const GenerationResult&()> result) { mResult = std::move(result); }
+
     QAction* deleteAction() const { return mDelete; }
     QAction* duplicateAction() const { return mDuplicate; }
     QAction* selectAllAction() const { return mSelectAll; }
@@ -35,7 +40,8 @@ public:
     QAction* importObstacleAction() const { return mImportObstacle; }
     QAction* addDomainAction() const { return mAddDomain; }
 
-    /// Removes the selected trees, or else the first selected obstacle, domain or species.
+    /// Prunes the Branch tool's selected branch; else removes the selected trees, or else the
+    /// first selected obstacle, domain or species.
     void deleteSelection();
     /// Copies the selected trees beside them and selects the copies.
     void duplicateSelection();
@@ -64,6 +70,7 @@ private:
     QAction* mAddTree = nullptr;
     QAction* mImportObstacle = nullptr;
     QAction* mAddDomain = nullptr;
+    std::function<const GenerationResult&()> mResult;
 };
 
 } // namespace sylva::ui

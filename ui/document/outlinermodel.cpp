@@ -1,5 +1,6 @@
 #include "ui/document/outlinermodel.h"
 
+#include <QColor>
 #include <QFileInfo>
 
 #include "document/errormessage.h"
@@ -10,7 +11,7 @@ namespace sylva::ui {
 namespace {
 
 // internalId: kind in the top byte, group (or species row for nodes) in the next 24 bits.
-enum Kind : quintptr { kGroup = 1, kItem = 2, kNode = 3 };
+enum Kind : quintptr { kGroup = 1, kItem = 2, kNode = 3, kEdit = 4 };
 quintptr pack(Kind kind, int a) {
     return (quintptr(kind) << 56) | quintptr(a);
 }
@@ -103,7 +104,18 @@ QModelIndex OutlinerModel::index(int row, int column, const QModelIndex& parent)
     if (kindOf(parent) == kItem && argOf(parent) == SpeciesGroup &&
         parent.row() < int(mNodes.size()) && row < mNodes[std::size_t(parent.row())].size())
         return createIndex(row, 0, pack(kNode, parent.row()));
+    if (kindOf(parent) == kItem && argOf(parent) == TreesGroup &&
+        parent.row() < int(mDocument.project().instances.size()) &&
+        row < int(mDocument.project().instances[std::size_t(parent.row())].branchEdits.size()))
+        return createIndex(row, 0, pack(kEdit, parent.row()));
     return {};
+}
+
+void OutlinerModel::setOrphanedEdits(const QHash<doc::TreeId, QSet<QString>>& orphans) {
+    if (orphans == mOrphans) return;
+    beginResetModel();
+    mOrphans = orphans;
+    endResetModel();
 }
 
 QModelIndex OutlinerModel::parent(const QModelIndex& child) const {
@@ -113,6 +125,8 @@ QModelIndex OutlinerModel::parent(const QModelIndex& child) const {
         return createIndex(argOf(child), 0, pack(kGroup, argOf(child)));
     case kNode:
         return createIndex(argOf(child), 0, pack(kItem, SpeciesGroup));
+    case kEdit:
+        return createIndex(argOf(child), 0, pack(kItem, TreesGroup));
     default:
         return {};
     }
@@ -124,6 +138,9 @@ int OutlinerModel::rowCount(const QModelIndex& parent) const {
     if (kindOf(parent) == kItem && argOf(parent) == SpeciesGroup &&
         parent.row() < int(mNodes.size()))
         return int(mNodes[std::size_t(parent.row())].size());
+    if (kindOf(parent) == kItem && argOf(parent) == TreesGroup &&
+        parent.row() < int(mDocument.project().instances.size()))
+        return int(mDocument.project().instances[std::size_t(parent.row())].branchEdits.size());
     return 0;
 }
 
@@ -161,6 +178,29 @@ QVariant OutlinerModel::data(const QModelIndex& index, int role) const {
     }
     if (kindOf(index) == kNode) {
         if (role == Qt::DisplayRole) return mNodes[std::size_t(argOf(index))][row];
+        return {};
+    }
+    if (kindOf(index) == kEdit) {
+        const std::size_t tree = std::size_t(argOf(index));
+        const skel::BranchEdit& e = p.instances[tree].branchEdits[std::size_t(row)];
+        const QString id = QString::fromStdString(e.branch);
+        const bool orphaned = mOrphans.value(mDocument.treeIds()[tree]).contains(id);
+        if (role == Qt::DisplayRole) {
+            QStringList what;
+            if (e.prune) what << tr("pruned");
+            if (e.bend) what << tr("bent");
+            if (e.length != 1.0f) what << tr("length ×%1").arg(double(e.length));
+            if (e.radius != 1.0f) what << tr("radius ×%1").arg(double(e.radius));
+            if (e.lock) what << tr("locked");
+            const QString text = tr("Branch %1: %2").arg(id, what.join(QStringLiteral(", ")));
+            return orphaned ? tr("%1 (orphaned)").arg(text) : text;
+        }
+        if (role == Qt::ToolTipRole)
+            return orphaned ? tr("The grown tree has no branch %1 now: the edit is kept and "
+                                 "applies again when the branch grows back")
+                                  .arg(id)
+                            : tr("A hand edit of branch %1 (Branch tool, doc.edit_branch)").arg(id);
+        if (role == Qt::ForegroundRole && orphaned) return QColor(200, 90, 40);
         return {};
     }
     switch (argOf(index)) {
@@ -249,6 +289,8 @@ std::optional<doc::ItemRef> OutlinerModel::itemAt(const QModelIndex& index) cons
         return std::nullopt;
     }
     if (kindOf(index) == kNode) return doc::ItemRef{K::Species, std::uint32_t(argOf(index))};
+    if (kindOf(index) == kEdit)
+        return doc::ItemRef{K::Tree, mDocument.treeIds()[std::size_t(argOf(index))]};
     const auto row = std::uint32_t(index.row());
     switch (argOf(index)) {
     case SpeciesGroup:

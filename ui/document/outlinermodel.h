@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QAbstractItemModel>
+#include <QHash>
 #include <QSet>
 #include <QStringList>
 
@@ -10,8 +11,9 @@ namespace sylva::ui {
 
 /// The document as a tree for the Outliner dock (QtNodes' and Tiled's model/view split: the
 /// model only reads the document and turns edits into document calls). Top level: Species (each
-/// with its graph's nodes), Trees, Domains, Obstacles, Camera, Light. Trees are checkable
-/// (shown in the viewport or hidden); species are renamed in place (an undoable edit).
+/// with its graph's nodes), Trees (each with its hand edits of single branches, orphaned ones
+/// marked), Domains, Obstacles, Camera, Light. Trees are checkable (shown in the viewport or
+/// hidden); species are renamed in place (an undoable edit).
 class OutlinerModel : public QAbstractItemModel {
     Q_OBJECT
 
@@ -37,6 +39,8 @@ public:
 
     /// Trees hidden in the viewport (their check box cleared). Not part of the document.
     const QSet<doc::TreeId>& hiddenTrees() const { return mHidden; }
+    /// The branch edits each tree's last generation found no branch for (marked "orphaned").
+    void setOrphanedEdits(const QHash<doc::TreeId, QSet<QString>>& orphans);
 
 Q_SIGNALS:
     void hiddenTreesChanged(const QSet<sylva::doc::TreeId>& hidden);
@@ -52,6 +56,7 @@ private:
     doc::Document& mDocument;
     std::vector<QStringList> mNodes; ///< per species: "id (type)" of its graph's nodes
     QSet<doc::TreeId> mHidden;
+    QHash<doc::TreeId, QSet<QString>> mOrphans;
 };
 
 } // namespace sylva::ui

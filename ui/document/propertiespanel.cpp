@@ -15,6 +15,7 @@
 
 #include "document/errormessage.h"
 #include "document/projectsettings.h"
+#include "ui/document/branchproperties.h"
 
 namespace sylva::ui {
 
@@ -240,8 +241,16 @@ void PropertiesPanel::rebuild() {
         connect(mSpecies, &QComboBox::currentIndexChanged, this, [this, edit] { apply(edit); });
         connect(mSeason, &QComboBox::currentIndexChanged, this, [this, edit] { apply(edit); });
         connect(mSeed, &QLineEdit::editingFinished, this, [this, edit] { apply(edit); });
-        mRefresh = [this, id, pos, rot, scale, growth] {
+        // The Branch tool's selected branch of this tree: its own settings below the tree's.
+        BranchProperties* branch = nullptr;
+        if (const auto& b = mDocument.selectedBranch(); b && b->tree == id && mResult) {
+            branch = new BranchProperties(mDocument, *b, mResult, mBody);
+            connect(branch, &BranchProperties::failed, this, &PropertiesPanel::failed);
+            mForm->addRow(branch);
+        }
+        mRefresh = [this, id, pos, rot, scale, growth, branch] {
             if (mDocument.treeIndex(id) < 0) return;
+            if (branch) branch->refresh();
             const doc::ProjectInstance& t = mDocument.tree(id);
             mSpecies->setCurrentText(QString::fromStdString(t.species));
             for (int k = 0; k < 3; ++k)

@@ -20,6 +20,8 @@ struct SettingSpec;
 
 namespace sylva::ui {
 
+struct GenerationResult;
+
 /// The Properties dock: typed editors for the selected tree, obstacle, domain, species, the
 /// camera and the light, or the project's own settings when nothing is selected. Every change
 /// goes through the document's edit functions (one undo step each); a value the document
@@ -29,6 +31,8 @@ class PropertiesPanel : public QWidget {
 
 public:
     explicit PropertiesPanel(doc::Document& document, QWidget* parent = nullptr);
+    /// The shown generation (a selected branch's lock keeps the geometry shown).
+    void setResult(std::function<const GenerationResult&()> result) { mResult = std::move(result); }
 
     /// The item shown, or none for the project.
     std::optional<doc::ItemRef> item() const { return mItem; }
@@ -66,6 +70,7 @@ private:
     QLabel* mInfo = nullptr;
     std::function<void()> mRefresh; ///< puts the document's values into the editors
     bool mUpdating = false;
+    std::function<const GenerationResult&()> mResult;
 };
 
 } // namespace sylva::ui

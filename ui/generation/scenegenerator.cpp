@@ -214,6 +214,7 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                     drawn.transform = tree.instance.transform();
                     drawn.metrics = tree.metrics;
                     drawn.grown = tree.grown;
+                    drawn.orphanedEdits = tree.branchEdits.orphaned;
                     // The viewport's coarser levels (ui/viewport/viewlod.h) start from what the
                     // forest made this mesh with.
                     if (tree.meshSettings && tree.skeleton) {

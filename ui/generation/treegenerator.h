@@ -46,6 +46,8 @@ struct DrawnTree {
     /// The skeleton as grown, before branch edits and adaptation (forest::ForestTree::grown):
     /// the branches scripts list and edits name (docs/branch-edits.md).
     std::shared_ptr<const skel::Skeleton> grown;
+    /// Branch edits of the tree whose branch the grown tree lacks (kept, not applied).
+    std::vector<std::string> orphanedEdits;
 };
 
 /// What one generation run produced. Plain data: it is handed from the worker thread to the UI

@@ -28,11 +28,13 @@
 #include "ui/document/messagespanel.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/generation/speciespreview.h"
+#include "ui/generation/treebranches.h"
 #include "ui/mainwindow.h"
 #include "ui/nodes/nodegraphscene.h"
 #include "ui/scripting/pythonhost.h"
 #include "ui/speciesworkbench.h"
 #include "ui/viewport/toolcontroller.h"
+#include "ui/viewport/tools/branchtool.h"
 #include "ui/viewport/viewport.h"
 
 namespace py = pybind11;
@@ -129,6 +131,7 @@ py::dict generate() {
     stats["orphaned_edits"] = static_cast<std::size_t>(stat("orphaned_edits"));
     stats["ms"] = r.elapsedMs;
     stats["edit_to_result_ms"] = w.generator().editToResultMs();
+    stats["timings_ms"] = r.timingsMs; // wall time per forest stage (species, place, trees...)
     return stats;
 }
 
@@ -139,16 +142,6 @@ const DrawnTree& grownTree(doc::TreeId id) {
     for (const DrawnTree& t : window().generator().result().trees)
         if (t.docId == id && t.grown) return t;
     throw InvalidInput("tree " + std::to_string(id) + " has not been grown");
-}
-
-/// The branches of tree \p id as its edits leave them, with the ids of the grown tree.
-std::vector<skel::Branch> editedBranchesOf(const DrawnTree& drawn,
-                                           const std::vector<skel::BranchEdit>& edits) {
-    std::vector<skel::BranchEdit> local = edits;
-    const glm::mat3 toLocal = glm::inverse(glm::mat3(drawn.transform));
-    for (skel::BranchEdit& e : local)
-        if (e.bend) e.bend = toLocal * *e.bend;
-    return skel::editedBranches(*drawn.grown, local);
 }
 
 struct DocumentApi {};
@@ -285,26 +278,14 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                         known = known || b.id == branch;
                 if (!known)
                     throw InvalidInput("tree " + std::to_string(id) + " has no branch " + branch);
-                if (edit.lock && edit.locked.empty()) {
-                    // Locked now: its geometry as the tree shows it, the other edits applied,
-                    // in the tree's frame (bends are world directions in the document).
-                    skel::BranchEdit kept = edit;
-                    const DrawnTree& drawn = grownTree(id);
-                    const glm::mat3 toLocal = glm::inverse(glm::mat3(drawn.transform));
-                    std::vector<skel::BranchEdit> local = edits;
-                    for (skel::BranchEdit& e : local)
-                        if (e.bend) e.bend = toLocal * *e.bend;
-                    if (kept.bend) kept.bend = toLocal * *kept.bend;
-                    skel::lockBranch(*drawn.grown, local, kept);
-                    skel::BranchEdit stored = edit; // the world bend kept as given
-                    stored.lock = true;
-                    stored.lockedBase = kept.lockedBase;
-                    stored.locked = std::move(kept.locked);
-                    stored.lockedLeaves = std::move(kept.lockedLeaves);
-                    document().editBranch(id, stored);
-                    return;
+                // The shown tree: the edit's anchor, and a lock's geometry (which needs it).
+                const DrawnTree* drawn = nullptr;
+                try {
+                    drawn = &grownTree(id);
+                } catch (const InvalidInput&) {
+                    if (edit.lock && edit.locked.empty()) throw;
                 }
-                document().editBranch(id, edit);
+                applyBranchEdit(document(), drawn, id, edit);
             },
             py::arg("tree_id"), py::arg("branch_id"), py::arg("prune") = py::none(),
             py::arg("bend") = py::none(), py::arg("length") = py::none(),
@@ -593,6 +574,26 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                  return std::vector<doc::TreeId>(ids.begin(), ids.end());
              })
         .def(
+            "selected_branch",
+            [](DocumentApi&) -> py::object {
+                const auto& b = document().selectedBranch();
+                if (!b) return py::none();
+                return py::make_tuple(b->tree, b->branch);
+            },
+            "The branch the Branch tool selected: (tree_id, branch_id), or None.")
+        .def(
+            "select_branch",
+            [](DocumentApi&, doc::TreeId id, const std::string& branch) {
+                bool known = false;
+                for (const skel::Branch& b : skel::branchesOf(*grownTree(id).grown))
+                    known = known || b.id == branch;
+                if (!known)
+                    throw InvalidInput("tree " + std::to_string(id) + " has no branch " + branch);
+                document().setSelectedBranch(doc::Document::BranchRef{id, branch});
+            },
+            py::arg("tree_id"), py::arg("branch_id"),
+            "Selects a branch as a click of the Branch tool does.")
+        .def(
             "select",
             [](DocumentApi&, const std::vector<doc::TreeId>& ids) {
                 document().selectTrees(QList<doc::TreeId>(ids.begin(), ids.end()));
@@ -665,10 +666,10 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 ToolController::Tool tool;
                 if (!ToolController::fromName(QString::fromStdString(name), tool))
                     throw InvalidInput("unknown tool '" + name +
-                                       "' (select, move, place, brush, erase)");
+                                       "' (select, move, place, brush, erase, branch)");
                 window().tools().setTool(tool);
             },
-            py::arg("name"), "select, move, place, brush or erase, as the toolbar.")
+            py::arg("name"), "select, move, place, brush, erase or branch, as the toolbar.")
         .def("tool",
              [](WindowApi&) { return ToolController::name(window().tools().tool()).toStdString(); })
         .def(
@@ -704,6 +705,19 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             py::arg("x"), py::arg("y"), py::arg("z"),
             "Where a world point is drawn, in global screen pixels (what xdotool takes), or None; "
             "for the window as it is shown (its layout is applied first).")
+        .def(
+            "branch_at",
+            [](WindowApi&, int x, int y) -> py::object {
+                layOut(window());
+                Viewport* v = window().viewport();
+                const auto hit =
+                    window().tools().branchTool().branchAt(v->mapFromGlobal(QPoint(x, y)));
+                if (!hit) return py::none();
+                return py::make_tuple(hit->tree, hit->branch);
+            },
+            py::arg("x"), py::arg("y"),
+            "The branch the Branch tool would select at global screen pixel (x, y) (what "
+            "win.project gives): (tree_id, branch_id), or None.")
         .def(
             "look_from",
             [](WindowApi&, py::object eye, py::object target) {

@@ -3,6 +3,7 @@
 #include <QKeyEvent>
 
 #include "engine/util/error.h"
+#include "ui/viewport/tools/branchtool.h"
 #include "ui/viewport/tools/brushtool.h"
 #include "ui/viewport/tools/erasetool.h"
 #include "ui/viewport/tools/placetool.h"
@@ -26,12 +27,14 @@ QString ToolController::name(Tool tool) {
         return QStringLiteral("brush");
     case Tool::Erase:
         return QStringLiteral("erase");
+    case Tool::Branch:
+        return QStringLiteral("branch");
     }
     return {};
 }
 
 bool ToolController::fromName(const QString& text, Tool& tool) {
-    for (Tool t : {Tool::Select, Tool::Move, Tool::Place, Tool::Brush, Tool::Erase})
+    for (Tool t : {Tool::Select, Tool::Move, Tool::Place, Tool::Brush, Tool::Erase, Tool::Branch})
         if (name(t) == text) {
             tool = t;
             return true;
@@ -51,6 +54,7 @@ ToolController::ToolController(doc::Document& document, Viewport& viewport,
     mPlace = std::make_unique<PlaceTool>(mContext);
     mBrush = std::make_unique<BrushTool>(mContext);
     mErase = std::make_unique<EraseTool>(mContext);
+    mBranch = std::make_unique<BranchTool>(mContext);
     viewport.setTool(this);
     viewport.setOverlay([this] { return handleLines(); });
 }
@@ -69,12 +73,17 @@ SceneTool& ToolController::current() {
         return *mBrush;
     case Tool::Erase:
         return *mErase;
+    case Tool::Branch:
+        return *mBranch;
     }
     return *mSelect;
 }
 
 void ToolController::setTool(Tool tool) {
     if (tool == mTool) return;
+    // The selected branch belongs to the Branch tool: another tool selects its tree.
+    if (mTool == Tool::Branch && mContext.document.selectedBranch())
+        mContext.document.setSelectedBranch(std::nullopt);
     mTool = tool;
     mContext.viewport.setPreviewTrees({});
     mContext.viewport.update(); // the Move tool's handles come or go
@@ -119,6 +128,7 @@ ToolController::Handle ToolController::handleAt(const QPoint& pos) const {
 }
 
 std::vector<OverlayLine> ToolController::handleLines() const {
+    if (mTool == Tool::Branch) return mBranch->lines();
     if (mTool != Tool::Move) return {};
     return mMove->handleLines();
 }
@@ -140,6 +150,7 @@ void ToolController::click(QMouseEvent* event) {
 }
 
 bool ToolController::key(QKeyEvent* event) {
+    if (current().key(event)) return true;
     const bool shift = event->modifiers() & Qt::ShiftModifier;
     switch (event->key()) {
     case Qt::Key_BracketLeft:

@@ -23,6 +23,7 @@ class SelectTool;
 class PlaceTool;
 class BrushTool;
 class EraseTool;
+class BranchTool;
 
 /// The viewport's tools (a toolbar and shortcuts, docs/editor.md). Each gesture becomes document
 /// edits (one undo step per gesture); the camera keeps working with every tool (left drag
@@ -46,6 +47,8 @@ class EraseTool;
 ///   obstacle's footprint, random rotation and ±5 % scale. One stroke is one undo step and the
 ///   forest regrows once, when the stroke ends.
 /// - Erase: removes the hand-placed trees the brush passes over; one stroke, one step.
+/// - Branch: click selects the branch under the cursor, drag bends it, Delete prunes it
+///   (BranchTool; docs/editor.md#the-branch-tool).
 ///
 /// Each tool is its own class (ui/viewport/tools/: SelectTool, MoveTool, PlaceTool, BrushTool,
 /// EraseTool, over a ToolContext they share); this class keeps the current one, hands it the
@@ -54,9 +57,10 @@ class ToolController : public QObject, public ViewportTool {
     Q_OBJECT
 
 public:
-    enum class Tool { Select, Move, Place, Brush, Erase };
+    enum class Tool { Select, Move, Place, Brush, Erase, Branch };
     static QString name(Tool tool);
-    /// "select", "move", "place", "brush", "erase" (the script names); false for another.
+    /// "select", "move", "place", "brush", "erase", "branch" (the script names); false for
+    /// another.
     static bool fromName(const QString& name, Tool& tool);
 
     using Brush = BrushSettings;
@@ -80,8 +84,11 @@ public:
     using Handle = MoveTool::Handle;
     /// The handle drawn within a few pixels of \p pos (widget pixels).
     Handle handleAt(const QPoint& pos) const;
-    /// The handles as lines for the viewport to draw over the scene.
+    /// The handles as lines for the viewport to draw over the scene (the Branch tool: its
+    /// selected branch).
     std::vector<OverlayLine> handleLines() const;
+    /// The Branch tool (its picking, for tests and scripts).
+    BranchTool& branchTool() { return *mBranch; }
 
     /// Selects the previous (\p step -1) or next (+1) hand-placed tree in document order.
     void stepSelection(int step);
@@ -117,6 +124,7 @@ private:
     std::unique_ptr<PlaceTool> mPlace;
     std::unique_ptr<BrushTool> mBrush;
     std::unique_ptr<EraseTool> mErase;
+    std::unique_ptr<BranchTool> mBranch;
 };
 
 } // namespace sylva::ui

@@ -57,6 +57,9 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
             "one undo step")},
         {ToolController::Tool::Erase, tr("Erase"), QStringLiteral("E"),
          tr("Remove the hand-placed trees the brush passes over")},
+        {ToolController::Tool::Branch, tr("Branch"), QStringLiteral("K"),
+         tr("Click a branch of a hand-placed tree to select it (its settings in Properties), "
+            "drag it to bend it about its base, Delete prunes it; each is one undo step")},
     };
     for (const auto& t : toolList) {
         QAction* a = addAction(t.label);

@@ -1,5 +1,7 @@
 #include "document/commands/treecommands.h"
 
+#include <algorithm>
+
 namespace sylva::doc::cmd {
 
 AddTree::AddTree(Document& doc, int index, TreeId id, ProjectInstance tree, QUndoCommand* parent)
@@ -57,8 +59,18 @@ QUndoCommand* changeBranchEdits(Document& doc, TreeId id,
     QString label = QCoreApplication::translate("Commands", "Edit branch");
     if (newEdits.empty() && !old.empty())
         label = QCoreApplication::translate("Commands", "Clear branch edits");
-    else if (newEdits.size() == old.size() + 1 && newEdits.back().prune)
-        label = QCoreApplication::translate("Commands", "Prune branch");
+    else {
+        // A branch newly pruned (a new edit, or an edit that bent or scaled it before).
+        bool pruned = false;
+        for (const skel::BranchEdit& e : newEdits) {
+            if (!e.prune) continue;
+            const auto before =
+                std::find_if(old.begin(), old.end(),
+                             [&e](const skel::BranchEdit& o) { return o.branch == e.branch; });
+            pruned = pruned || before == old.end() || !before->prune;
+        }
+        if (pruned) label = QCoreApplication::translate("Commands", "Prune branch");
+    }
     return new ChangeValue<TreeId, std::vector<skel::BranchEdit>>(
         doc, kMergeBranchEdits, id, old, newEdits, true,
         [](Document& d, const TreeId& key, const std::vector<skel::BranchEdit>& v) {

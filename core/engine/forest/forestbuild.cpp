@@ -146,6 +146,28 @@ std::uint64_t treeKey(std::uint64_t species, const placement::Instance& in,
             pod(bend);
             pod(e.length);
             pod(e.radius);
+            // Where an anchored edit goes, and what a locked one puts back, are its result too.
+            const bool anchored = e.anchor.has_value();
+            pod(anchored);
+            if (e.anchor) {
+                pod(e.anchor->base);
+                pod(e.anchor->direction);
+                pod(e.anchor->length);
+            }
+            pod(e.lockedBase);
+            for (const skel::LockedNode& n : e.locked) {
+                pod(n.parent);
+                pod(n.order);
+                pod(n.radius);
+                pod(n.offset);
+                pod(n.orientation);
+            }
+            for (const skel::LockedLeaf& l : e.lockedLeaves) {
+                pod(l.node);
+                pod(l.size);
+                pod(l.offset);
+                pod(l.orientation);
+            }
         }
     const bool flags[] = {options.useLod,
                           options.adapt,
@@ -585,13 +607,19 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                                          !plan.hasAdaptNode && !plan.selfOrganizing;
                 if (fromVariant) tree.adaptedFrom = static_cast<std::int32_t>(v);
 
-                std::uint64_t cacheKey = 0;
+                std::uint64_t cacheKey = 0, grownKey = 0;
                 if (options.cache && !plan.selfOrganizing) {
                     cacheKey = treeKey(speciesKeys[in.species], in, near, scene, options,
                                        ctx.cameraDistance, edits);
+                    grownKey = treeKey(speciesKeys[in.species], in, near, scene, options,
+                                       ctx.cameraDistance, nullptr);
                     if (fromVariant) cacheKey = mixSeed(cacheKey, variants[v].seed);
                     if (std::optional<ForestTree> cached = options.cache->findTree(cacheKey)) {
                         tree = std::move(*cached);
+                        // Its skeleton as grown stays at hand for its next branch edit.
+                        if (in.handPlaced && !plan.selfOrganizing && !plan.hasAdaptNode &&
+                            tree.grown)
+                            options.cache->storeGrown(grownKey, tree.grown);
                         tree.name = species.name + "_" + std::to_string(in.id);
                         continue;
                     }
@@ -604,10 +632,19 @@ ForestStats buildForest(const ForestScene& scene, const ForestOptions& options,
                     skeleton = standGrown[index];
                 } else if (fromVariant) {
                     skeleton = variants[v].skeleton;
+                } else if (std::shared_ptr<const skel::Skeleton> kept =
+                               edits && options.cache && !plan.hasAdaptNode
+                                   ? options.cache->findGrown(grownKey)
+                                   : nullptr) {
+                    // Only its branch edits changed: the tree as grown is kept, the edits are
+                    // applied to it again (a hand edit on screen at once, issue 43).
+                    skeleton = std::move(kept);
                 } else {
                     const graph::NodeOutput& grown =
                         evaluator.evaluateTree(in.seed, ctx, noProgress(), plan.skeletonNode);
                     skeleton = grown.skeleton;
+                    if (options.cache && in.handPlaced && !plan.hasAdaptNode && skeleton)
+                        options.cache->storeGrown(grownKey, skeleton);
                     // A species' own adapt node reports what it did through its stats.
                     auto stat = [&](const char* key) {
                         auto it = grown.stats.find(key);

@@ -56,7 +56,7 @@ void TreeCache::beginBuild() {
     std::lock_guard lock(mMutex);
     ++mBuild;
     mHits = mMisses = 0;
-    mVariantHits = mVariantMisses = 0;
+    mVariantHits = mVariantMisses = mGrownHits = 0;
 }
 
 void TreeCache::endBuild() {
@@ -64,6 +64,7 @@ void TreeCache::endBuild() {
     std::erase_if(mTrees, [this](const auto& kv) { return kv.second.build != mBuild; });
     std::erase_if(mVariants, [this](const auto& kv) { return kv.second.build != mBuild; });
     std::erase_if(mCrowns, [this](const auto& kv) { return kv.second.build != mBuild; });
+    std::erase_if(mGrown, [this](const auto& kv) { return kv.second.build != mBuild; });
 }
 
 void TreeCache::clear() {
@@ -71,6 +72,26 @@ void TreeCache::clear() {
     mTrees.clear();
     mVariants.clear();
     mCrowns.clear();
+    mGrown.clear();
+}
+
+std::shared_ptr<const skel::Skeleton> TreeCache::findGrown(std::uint64_t key) {
+    std::lock_guard lock(mMutex);
+    auto it = mGrown.find(key);
+    if (it == mGrown.end()) return nullptr;
+    it->second.build = mBuild;
+    ++mGrownHits;
+    return it->second.value;
+}
+
+std::size_t TreeCache::grownHits() const {
+    std::lock_guard lock(mMutex);
+    return mGrownHits;
+}
+
+void TreeCache::storeGrown(std::uint64_t key, std::shared_ptr<const skel::Skeleton> grown) {
+    std::lock_guard lock(mMutex);
+    mGrown[key] = {std::move(grown), mBuild};
 }
 
 std::optional<ForestTree> TreeCache::findTree(std::uint64_t key) {

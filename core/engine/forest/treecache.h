@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -34,6 +35,13 @@ public:
     void storeVariant(std::uint64_t key, const ForestVariant& variant);
     std::optional<CrownShape> findCrown(std::uint64_t key);
     void storeCrown(std::uint64_t key, const CrownShape& crown);
+    /// A tree's skeleton as grown, by its key without its branch edits: a branch edit re-applies
+    /// the edits to it (then adapts and meshes) instead of growing the tree again (issue 43: an
+    /// edit on screen within 50 ms). Null when not kept.
+    std::shared_ptr<const skel::Skeleton> findGrown(std::uint64_t key);
+    void storeGrown(std::uint64_t key, std::shared_ptr<const skel::Skeleton> grown);
+    /// Trees of the current (or last) build whose skeleton as grown was taken from the cache.
+    std::size_t grownHits() const;
 
     /// Trees taken from the cache and trees grown during the current (or last) build. An
     /// instanced tree takes its variant's mesh or level and never asks the cache: it counts
@@ -53,10 +61,11 @@ private:
     mutable std::mutex mMutex;
     std::uint64_t mBuild = 0;
     std::size_t mHits = 0, mMisses = 0;
-    std::size_t mVariantHits = 0, mVariantMisses = 0;
+    std::size_t mVariantHits = 0, mVariantMisses = 0, mGrownHits = 0;
     std::unordered_map<std::uint64_t, Entry<ForestTree>> mTrees;
     std::unordered_map<std::uint64_t, Entry<ForestVariant>> mVariants;
     std::unordered_map<std::uint64_t, Entry<CrownShape>> mCrowns;
+    std::unordered_map<std::uint64_t, Entry<std::shared_ptr<const skel::Skeleton>>> mGrown;
 };
 
 /// 64-bit FNV-1a of a species graph's content (see TreeCache).

@@ -115,6 +115,15 @@ std::size_t depthOf(const std::string& id) {
 
 } // namespace
 
+BranchAnchor anchorOf(const Branch& b) {
+    BranchAnchor a;
+    a.base = b.base;
+    const glm::vec3 d = b.tip - b.base;
+    a.direction = glm::length(d) > 1e-9f ? glm::normalize(d) : glm::vec3(0.0f, 1.0f, 0.0f);
+    a.length = b.length;
+    return a;
+}
+
 std::vector<Branch> branchesOf(const Skeleton& s) {
     const std::size_t n = s.size();
     std::vector<std::vector<Index>> kids(n);
@@ -235,6 +244,75 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
     for (std::size_t i = 0; i < branches.size(); ++i)
         byId.emplace(branches[i].id, i);
 
+    // Where each edit goes: anchored edits to the branch at their anchor (their id's own when it
+    // is still there), the others, and anchored ones that find none, by id. Parents first, so a
+    // branch's edit claims it before a deeper one could.
+    float height = 0.0f;
+    if (s.size() > 0) {
+        float lo = s.position[0].y, hi = lo;
+        for (const glm::vec3& p : s.position) {
+            lo = std::min(lo, p.y);
+            hi = std::max(hi, p.y);
+        }
+        height = hi - lo;
+    }
+    const float cosLimit = std::cos(glm::radians(kAnchorAngle));
+    std::vector<char> claimed(branches.size(), 0);
+    auto anchorCost = [&](const BranchAnchor& a, const Branch& b) {
+        const float reach = kAnchorReach * height + a.length;
+        const glm::vec3 d = b.tip - b.base;
+        if (glm::length(d) < 1e-9f) return std::numeric_limits<float>::max();
+        const float c = glm::dot(glm::normalize(d), a.direction);
+        const float dist = glm::length(b.base - a.base);
+        if (dist > reach || c < cosLimit) return std::numeric_limits<float>::max();
+        return dist / std::max(reach, 1e-6f) + (1.0f - c) / (1.0f - cosLimit);
+    };
+    // Anchored edits, one depth after another (parents first): the pairs of edit and branch
+    // within reach, nearest first, each edit and branch taken once (a greedy matching, so that
+    // an edit does not take the branch another edit fits better).
+    std::unordered_map<const BranchEdit*, std::ptrdiff_t> target;
+    // A locked edit keeps its own id (and, where that is gone, is grafted where it was): its
+    // kept geometry is its anchor.
+    for (const BranchEdit& e : edits)
+        if (e.lock && !e.locked.empty())
+            if (const auto found = byId.find(e.branch); found != byId.end()) {
+                claimed[found->second] = 1;
+                target[&e] = static_cast<std::ptrdiff_t>(found->second);
+            }
+    std::size_t maxDepth = 0;
+    for (const BranchEdit& e : edits)
+        maxDepth = std::max(maxDepth, depthOf(e.branch));
+    for (std::size_t depth = 0; depth <= maxDepth; ++depth) {
+        std::vector<std::tuple<float, const BranchEdit*, std::size_t>> pairs;
+        for (const BranchEdit& e : edits) {
+            if (!e.anchor || depthOf(e.branch) != depth || (e.lock && !e.locked.empty())) continue;
+            for (std::size_t i = 0; i < branches.size(); ++i) {
+                if (depthOf(branches[i].id) != depth) continue;
+                float c = anchorCost(*e.anchor, branches[i]);
+                if (c == std::numeric_limits<float>::max()) continue;
+                if (branches[i].id == e.branch) c *= 0.5f; // its own id, where it was: kept
+                pairs.emplace_back(c, &e, i);
+            }
+        }
+        std::stable_sort(pairs.begin(), pairs.end(), [](const auto& x, const auto& y) {
+            return std::get<0>(x) < std::get<0>(y);
+        });
+        for (const auto& [cost, e, i] : pairs) {
+            (void)cost;
+            if (claimed[i] || target.count(e)) continue;
+            claimed[i] = 1;
+            target[e] = static_cast<std::ptrdiff_t>(i);
+        }
+    }
+    auto resolve = [&](const BranchEdit& e) -> std::ptrdiff_t {
+        if (auto t = target.find(&e); t != target.end()) return t->second;
+        // By id: an edit without an anchor, or one whose anchor found no branch near.
+        const auto found = byId.find(e.branch);
+        if (found == byId.end() || claimed[found->second]) return -1;
+        claimed[found->second] = 1;
+        return static_cast<std::ptrdiff_t>(found->second);
+    };
+
     std::vector<const BranchEdit*> ordered;
     for (const BranchEdit& e : edits)
         ordered.push_back(&e);
@@ -246,8 +324,8 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
     std::vector<char> remove(s.size(), 0);
     bool removing = false;
     for (const BranchEdit* e : ordered) {
-        const auto found = byId.find(e->branch);
-        if (found == byId.end()) {
+        const std::ptrdiff_t found = resolve(*e);
+        if (found < 0) {
             // A locked branch whose id is gone is grafted onto its parent, where it was.
             const auto parent = byId.find(parentId(e->branch));
             if (e->lock && !e->locked.empty() && parent != byId.end()) {
@@ -281,7 +359,8 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
             continue;
         }
         ++report.applied;
-        const Branch& b = branches[found->second];
+        const Branch& b = branches[static_cast<std::size_t>(found)];
+        if (b.id != e->branch) report.moved.emplace_back(e->branch, b.id);
         const Index first = b.nodes.front();
         const std::vector<char> in = subtree(s, first);
         const glm::vec3 base = s.position[at(b.baseNode >= 0 ? b.baseNode : first)];
@@ -349,6 +428,14 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
             removing = true;
         }
     }
+    // A thicker branch never ends up thicker than the node it leaves from (the radius pass's
+    // rule 3, shapeRadii): radii are clamped from the root up once any radius was raised.
+    const bool thickened = std::any_of(edits.begin(), edits.end(),
+                                       [](const BranchEdit& e) { return e.radius > 1.0f; });
+    if (thickened)
+        for (std::size_t i = 0; i < s.size(); ++i)
+            if (const Index p = s.parent[i]; p >= 0 && s.radius[i] > s.radius[at(p)])
+                s.radius[i] = s.radius[at(p)];
     if (removing) {
         // Kept nodes, grown and grafted, numbered in one run: what compact() gives them.
         std::vector<Index> renumber(remove.size(), -1);
@@ -365,9 +452,13 @@ BranchEditReport applyBranchEdits(Skeleton& s, const std::vector<BranchEdit>& ed
     return report;
 }
 
-std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits) {
+std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits,
+                                   Skeleton* edited) {
     std::vector<Branch> branches = branchesOf(grown);
-    if (edits.empty()) return branches;
+    if (edits.empty()) {
+        if (edited) *edited = grown;
+        return branches;
+    }
     Skeleton s = grown;
     std::vector<Index> map;
     const BranchEditReport report = applyBranchEdits(s, edits, &map);
@@ -421,6 +512,7 @@ std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<Bran
         for (std::size_t k = 0; k < i; ++k)
             if (out[k].id == out[i].parent) out[i].parentIndex = static_cast<std::int32_t>(k);
     }
+    if (edited) *edited = std::move(s);
     return out;
 }
 

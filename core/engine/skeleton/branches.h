@@ -57,10 +57,27 @@ struct LockedLeaf {
     bool operator==(const LockedLeaf&) const = default;
 };
 
+/// Where an edited branch was in the tree as grown when the edit was made (the skeleton's
+/// frame): what re-attaches the edit when a change of topology shifts the ids
+/// (docs/branch-edits.md#anchors).
+struct BranchAnchor {
+    glm::vec3 base{0.0f};      ///< Branch::base, metres
+    glm::vec3 direction{0.0f}; ///< unit base -> tip
+    float length = 0.0f;       ///< Branch::length, metres
+    bool operator==(const BranchAnchor&) const = default;
+};
+
+/// The anchor of \p branch (its base, direction and length).
+BranchAnchor anchorOf(const Branch& branch);
+
 /// A hand edit of one branch (a project's "branch_edits"), applied after growth and before
 /// adaptation to obstacles.
 struct BranchEdit {
     std::string branch; ///< Branch::id
+    /// Where the branch was when edited: the edit goes to the branch there (the id's own when it
+    /// still is there, else the branch of the same depth whose base and direction are nearest,
+    /// within kAnchorReach and kAnchorAngle); without one, or when none is near, by id alone.
+    std::optional<BranchAnchor> anchor;
     bool prune = false; ///< remove the branch and everything it carries
     /// Turn the branch and everything it carries rigidly about its base so that its base -> tip
     /// direction points along this direction (the skeleton's frame; need not be unit length).
@@ -79,6 +96,11 @@ struct BranchEdit {
     bool operator==(const BranchEdit&) const = default;
 };
 
+/// How far an anchored edit looks for its branch: a base within this share of the tree's height
+/// (plus half the branch's length), a direction within kAnchorAngle degrees.
+inline constexpr float kAnchorReach = 0.25f;
+inline constexpr float kAnchorAngle = 60.0f;
+
 /// The range of BranchEdit::length and ::radius.
 inline constexpr float kBranchScaleMin = 0.05f;
 inline constexpr float kBranchScaleMax = 20.0f;
@@ -93,6 +115,8 @@ struct BranchEditReport {
     std::vector<std::string> orphaned; ///< ids of edits whose branch does not exist
     std::size_t prunedNodes = 0;       ///< nodes removed by prune edits
     std::size_t reattached = 0; ///< locked edits grafted onto their parent (their id was gone)
+    /// Anchored edits applied to another branch than their id's (ids shifted): old id, new id.
+    std::vector<std::pair<std::string, std::string>> moved;
     /// Locked branches replaced by their kept geometry: id and the index of its first node.
     std::vector<std::pair<std::string, std::int32_t>> grafted;
 };
@@ -113,7 +137,9 @@ void lockBranch(const Skeleton& grown, const std::vector<BranchEdit>& others, Br
 
 /// The branches of \p grown (their ids) as \p edits leave them: pruned ones left out, the others'
 /// nodes, base, tip, length and radius those of the edited skeleton. What an editor lists and
-/// what edits name: ids never shift when a sibling is pruned.
-std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits);
+/// what edits name: ids never shift when a sibling is pruned. With \p edited: the edited
+/// skeleton the branches' nodes index (what the branch tool picks and highlights).
+std::vector<Branch> editedBranches(const Skeleton& grown, const std::vector<BranchEdit>& edits,
+                                   Skeleton* edited = nullptr);
 
 } // namespace sylva::skel

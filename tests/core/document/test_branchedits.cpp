@@ -4,6 +4,7 @@
 #include "document/project.h"
 #include "document/scenebuild.h"
 #include "engine/forest/forestbuild.h"
+#include "engine/forest/treecache.h"
 #include "engine/skeleton/branches.h"
 #include "engine/util/error.h"
 
@@ -103,7 +104,8 @@ TEST(BranchEdits, SavedAsFormat3AndReadBack) {
 TEST(BranchEdits, MalformedEditsAreRefusedWithTheirPlace) {
     EXPECT_NE(
         errorOf(kHead + R"([ { "branch": "0.1", "length": 30 } ] } ] })")
-            .find("p.sylva: instances[0].branch_edits[0].length 30 is out of range [0.05, 20]"),
+            .find("p.sylva:3:82: error: instances[0].branch_edits[0].length 30 is out of range "
+                  "[0.05, 20]"),
         std::string::npos)
         << errorOf(kHead + R"([ { "branch": "0.1", "length": 30 } ] } ] })");
     EXPECT_NE(errorOf(kHead + R"([ { "branch": "0.1", "radius": 0.01 } ] } ] })")
@@ -128,6 +130,67 @@ TEST(BranchEdits, MalformedEditsAreRefusedWithTheirPlace) {
               std::string::npos);
     EXPECT_NE(errorOf(kHead + R"({ "branch": "0.1" } } ] })").find("branch_edits"),
               std::string::npos);
+}
+
+TEST(BranchEdits, MalformedEditsSayFileLineAndColumn) {
+    // The entry, or the key the message names, where it is written.
+    const std::string text = R"({ "format": "sylva-project", "format_version": 3,
+  "species": [ { "name": "a", "file": "a.json" } ],
+  "instances": [
+    { "id": 1, "species": "a", "branch_edits": [
+        { "branch": "0.1" },
+        { "branch": "0.2",
+          "radius": 40 } ] },
+    { "id": 2, "species": "a", "branch_edits": [ { "prune": true } ] } ] })";
+    EXPECT_NE(errorOf(text).find("p.sylva:7:11: error: instances[0].branch_edits[1].radius 40 is "
+                                 "out of range [0.05, 20]"),
+              std::string::npos)
+        << errorOf(text);
+    std::string second = text;
+    second.replace(second.find("\"radius\": 40"), 12, "\"radius\": 2 ");
+    EXPECT_NE(errorOf(second).find("p.sylva:8:50: error: instances[1].branch_edits[0] needs a "
+                                   "\"branch\""),
+              std::string::npos)
+        << errorOf(second);
+}
+
+TEST(BranchEdits, AnEditReappliesToTheKeptGrownTree) {
+    // With a TreeCache (the editor's), a branch edit re-applies the edits to the skeleton as
+    // grown instead of growing the tree again; the result is the same as a build from scratch.
+    doc::Project p = birch();
+    forest::TreeCache cache;
+    forest::ForestOptions options;
+    options.buildMeshes = false;
+    options.keepGrown = true;
+    options.cache = &cache;
+    auto run = [&](const doc::Project& project, forest::ForestOptions o) {
+        std::shared_ptr<const skel::Skeleton> out;
+        forest::buildForest(doc::makeForestScene(project), o,
+                            [&](const std::vector<forest::ForestTree>& batch) {
+                                for (const forest::ForestTree& t : batch)
+                                    out = t.skeleton;
+                            });
+        return out;
+    };
+    run(p, options);
+    EXPECT_EQ(cache.grownHits(), 0u);
+    skel::BranchEdit e;
+    e.branch = "0.2";
+    e.bend = glm::vec3(0.0f, 1.0f, 1.0f);
+    p.instances[0].branchEdits = {e};
+    const std::shared_ptr<const skel::Skeleton> edited = run(p, options);
+    EXPECT_EQ(cache.grownHits(), 1u);
+    e.bend = glm::vec3(1.0f, 1.0f, 0.0f);
+    p.instances[0].branchEdits = {e};
+    const std::shared_ptr<const skel::Skeleton> again = run(p, options);
+    EXPECT_EQ(cache.grownHits(), 1u); // counted per build
+    forest::ForestOptions fresh = options;
+    fresh.cache = nullptr;
+    const std::shared_ptr<const skel::Skeleton> scratch = run(p, fresh);
+    ASSERT_TRUE(again && scratch);
+    EXPECT_EQ(again->position, scratch->position);
+    EXPECT_EQ(again->radius, scratch->radius);
+    EXPECT_NE(edited->position, again->position);
 }
 
 TEST(BranchEdits, EveryBuildAppliesThemAfterGrowth) {

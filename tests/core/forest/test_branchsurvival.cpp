@@ -3,10 +3,12 @@
 // meshing or leaf parameters (the topology is the same) and mostly after a change of topology
 // (another seed, number of attractors or L-system generations): at least 90 % of the edits on
 // limbs (order 1); the shares of orders 1 and 2 together are printed (50-100 %,
-// docs/branch-edits.md).
+// docs/branch-edits.md). Edits with their branch's anchor (as the editor stores them) re-attach
+// to at least 90 % of orders 1 and 2 together after every change of topology.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -93,7 +95,7 @@ std::vector<Species> library() {
 
 TEST(BranchSurvival, EditsOnLibrarySpeciesSurviveRegrowth) {
     graph::registerBuiltinNodeTypes();
-    double worstTopology = 1.0;
+    double worstTopology = 1.0, worstAnchored = 1.0;
     for (const Species& sp : library()) {
         const graph::SpeciesGraph g =
             sylva::testing::loadPreset(kPresets / (std::string(sp.name) + ".json"));
@@ -105,6 +107,16 @@ TEST(BranchSurvival, EditsOnLibrarySpeciesSurviveRegrowth) {
         ASSERT_GT(ids.size(), 5u) << sp.name;
         std::printf("%s: %zu branches, %zu edits (orders 1-2)\n", sp.name, grown.size(),
                     ids.size());
+        // The same edits as the editor stores them: with their branch's anchor (where it was).
+        std::vector<skel::BranchEdit> anchored;
+        for (const skel::Branch& b : grown)
+            if (std::find(ids.begin(), ids.end(), b.id) != ids.end()) {
+                skel::BranchEdit e;
+                e.branch = b.id;
+                e.length = 0.9f;
+                e.anchor = skel::anchorOf(b);
+                anchored.push_back(std::move(e));
+            }
         // The same edits locked: each keeps its branch's geometry as grown from seed 11.
         std::vector<skel::BranchEdit> locked;
         for (const std::string& id : ids) {
@@ -128,6 +140,11 @@ TEST(BranchSurvival, EditsOnLibrarySpeciesSurviveRegrowth) {
             const double s = share(ids, now);
             std::printf("  %-26s same topology: %5.1f %% re-attach\n", c.what.c_str(), 100.0 * s);
             EXPECT_EQ(s, 1.0) << sp.name << " " << c.what;
+            // Anchored edits stay on their own ids when the topology is the same.
+            skel::Skeleton same = *last;
+            const skel::BranchEditReport r = skel::applyBranchEdits(same, anchored);
+            EXPECT_EQ(r.applied, anchored.size()) << sp.name << " " << c.what;
+            EXPECT_TRUE(r.moved.empty()) << sp.name << " " << c.what << ": " << r.moved.size();
         }
         for (const Change& c : sp.newTopology) {
             const std::vector<skel::Branch> now = regrow(c);
@@ -136,6 +153,31 @@ TEST(BranchSurvival, EditsOnLibrarySpeciesSurviveRegrowth) {
             // Limbs (order 1), the branches hand edits mostly shape, keep their ids; deeper
             // branches lose theirs more often (their parents' branch counts change).
             EXPECT_GE(share(limbs, now), 0.9) << sp.name << " " << c.what;
+            // Anchored edits (orders 1 and 2) find their branch by where it was when the id
+            // shifted: at least 90 % re-attach.
+            skel::Skeleton moved = *last;
+            const skel::BranchEditReport a = skel::applyBranchEdits(moved, anchored);
+            const double reattached =
+                static_cast<double>(a.applied) / static_cast<double>(anchored.size());
+            // Every branch of orders 1-2 edited at once is the worst case (each branch can take
+            // one edit, and the new tree may have fewer): at least 80 %.
+            EXPECT_GE(reattached, 0.8) << sp.name << " " << c.what;
+            // An artist edits a few branches (here every fifth): at least 90 % re-attach.
+            std::vector<skel::BranchEdit> few;
+            for (std::size_t k = 0; k < anchored.size(); k += 5)
+                few.push_back(anchored[k]);
+            skel::Skeleton fewMoved = *last;
+            const double fewShare =
+                static_cast<double>(skel::applyBranchEdits(fewMoved, few).applied) /
+                static_cast<double>(few.size());
+            worstAnchored = std::min(worstAnchored, fewShare);
+            EXPECT_GE(fewShare, 0.9) << sp.name << " " << c.what;
+            std::printf("  %-26s anchored, every fifth branch edited: %5.1f %% re-attach\n",
+                        c.what.c_str(), 100.0 * fewShare);
+            std::printf("  %-26s anchored edits: %5.1f %% re-attach (%zu by their anchor to "
+                        "another id; %zu branches of orders 1-2 now for %zu edits)\n",
+                        c.what.c_str(), 100.0 * reattached, a.moved.size(),
+                        editedIds(now, 2).size(), ids.size());
             skel::Skeleton edited = *last;
             const skel::BranchEditReport r = skel::applyBranchEdits(edited, locked);
             const double kept =
@@ -149,5 +191,7 @@ TEST(BranchSurvival, EditsOnLibrarySpeciesSurviveRegrowth) {
                         100.0 * kept);
         }
     }
-    std::printf("worst share after a topology change: %.1f %%\n", 100.0 * worstTopology);
+    std::printf("worst share after a topology change: %.1f %% by id, %.1f %% anchored (a fifth "
+                "of the branches edited)\n",
+                100.0 * worstTopology, 100.0 * worstAnchored);
 }

@@ -151,6 +151,19 @@ TEST(BranchEdits, LengthScalesTheBranchesOwnSegmentsAndRadiusItsSubtree) {
     EXPECT_FLOAT_EQ(s.radius[8], 0.1f);
 }
 
+TEST(BranchEdits, AThickenedBranchIsNoThickerThanWhereItLeaves) {
+    skel::Skeleton s = sample();
+    skel::applyBranchEdits(s, {edit("0.0", false, {}, 1.0f, 5.0f)});
+    // 0.1 x 5 would be twice the trunk node it leaves (0.25): clamped as the radius pass does.
+    EXPECT_FLOAT_EQ(s.radius[5], s.radius[1]);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (s.parent[i] >= 0) {
+            EXPECT_LE(s.radius[i], s.radius[std::size_t(s.parent[i])]) << i;
+        }
+    EXPECT_FLOAT_EQ(s.radius[9], 0.15f); // the twig, x5, still under its parent
+    EXPECT_FLOAT_EQ(s.radius[8], 0.1f);  // the other branch untouched
+}
+
 TEST(BranchEdits, MissingBranchesAreReportedNotErrors) {
     skel::Skeleton s = sample();
     const skel::BranchEditReport r =

@@ -37,6 +37,9 @@ echo "-- project_layout.py (win.project() before the first layout)"
 echo "-- real_input.py (xdotool)"
 "$SYLVA" --discard-autosave --script "$HERE/real_input.py" "$DEMO" || fail "real_input.py"
 
+echo "-- branch_tool.py (the Branch tool, xdotool)"
+"$SYLVA" --discard-autosave --script "$HERE/branch_tool.py" "$DEMO" || fail "branch_tool.py"
+
 echo "-- seasons.py (the viewport's leaves in four seasons)"
 "$SYLVA" --discard-autosave --script "$HERE/seasons.py" "$DEMO" || fail "seasons.py"
 
