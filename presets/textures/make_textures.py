@@ -223,9 +223,14 @@ def bark_smooth(seed, base, mottle, lenticels=0.0, rings=0.0):
 def bark_birch():
     shape = (BARK, BARK)
     base = colorize(0.85 + 0.15 * noise(shape, 20, 20, 11), (0.74, 0.72, 0.68), (0.95, 0.94, 0.91))
-    # Horizontal dark lenticels, the birch's signature.
-    l = noise(shape, 14, 1.5, 12)
-    lent = np.clip((l - 0.72) * 9, 0, 1)
+    # Horizontal dark lenticels, the birch's signature: three sizes at unrelated spacings, each
+    # where a slow mask lets it be, so they come in irregular clusters and gaps (one noise of 14
+    # columns drew them evenly spaced, like a ruler's ticks; issue #44).
+    mask = noise(shape, 90, 140, 17)
+    fine = np.clip((noise(shape, 9, 1.2, 12) - 0.74) * 9, 0, 1) * np.clip((mask - 0.35) * 3, 0, 1)
+    mid = np.clip((noise(shape, 20, 2, 18) - 0.76) * 9, 0, 1) * np.clip((0.65 - mask) * 3, 0, 1)
+    long_ = np.clip((noise(shape, 45, 3, 19) - 0.8) * 8, 0, 1) * np.clip((noise(shape, 80, 60, 20) - 0.45) * 4, 0, 1)
+    lent = np.clip(fine + mid + long_, 0, 1)
     # Black diamond patches and rough dark bands.
     patch = noise(shape, 45, 25, 13)
     patch = np.clip((patch - 0.7) * 6, 0, 1) * (0.7 + 0.3 * noise(shape, 4, 2, 14))
