@@ -259,6 +259,32 @@ def bark_plates(seed, plate, crack_col, count=60, stretch=(1.0, 2.2), flaky=0.5)
     return rgb, height
 
 
+def bark_pine(seed):
+    """Scots pine (issue #44: one colour of even plates read as a diamond lattice): thick plates
+    of two sizes split by wavy cracks of varying width, each plate grey-brown or orange-brown
+    (a slow noise and its own random decide, so both bark kinds of the stem meet in patches),
+    the orange ones flaking into thin papery scales."""
+    shape = (BARK, BARK)
+    big1, big2, ident = cells(shape, 34, seed, (1.0, 2.4))
+    small1, small2, _ = cells(shape, 140, seed + 7, (1.0, 1.6))
+    warp = noise(shape, 6, 10, seed + 1) - 0.5
+    width = 5.0 + 5.0 * noise(shape, 40, 60, seed + 2)
+    crack = np.clip((big2 - big1 + 3.0 * warp) / width, 0, 1) ** 0.6
+    flake_edge = np.clip((small2 - small1) / 2.5, 0, 1)
+    rng = np.random.default_rng(seed + 5)
+    own = rng.random(34)[ident]
+    orange = np.clip((0.3 * noise(shape, 70, 110, seed + 3) + 0.7 * own - 0.62) * 6, 0, 1)
+    grey = np.asarray((0.40, 0.35, 0.30), np.float32)
+    rust = np.asarray((0.74, 0.43, 0.24), np.float32)
+    col = grey * (1 - orange[..., None]) + rust * orange[..., None]
+    f = noise(shape, 2, 5, seed + 4)
+    shade = (0.75 + 0.3 * (own - 0.5) + 0.25 * (f - 0.5)) * (1 - 0.35 * orange * (1 - flake_edge))
+    crack_col = np.asarray((0.13, 0.10, 0.08), np.float32)
+    rgb = crack_col + (col * shade[..., None] - crack_col) * crack[..., None]
+    height = crack * (0.65 + 0.3 * own) + 0.1 * orange * flake_edge + 0.06 * (f - 0.5)
+    return np.clip(rgb, 0, 1), height
+
+
 def bark_palm():
     shape = (BARK, BARK)
     v = np.arange(BARK)[:, None] / BARK
@@ -1121,7 +1147,7 @@ def library():
     leaf = simple_leaf("lombardy-poplar_leaf.png", 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
     cluster_atlas("lombardy-poplar_leafcluster.png", leaf, 0.5, 153)
 
-    save_bark("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
+    save_bark("scots-pine_bark.png", bark_pine(161))
     # Needle greens less teal than they were (issue #44: blue 0.8 of green read as teal)
     leaf = pine_shoot("scots-pine_leaf.png", 256, 256, (0.28, 0.42, 0.26), 162)
     needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.22, 0.34, 0.20))
