@@ -130,14 +130,15 @@ TINT_CLOSE = {"english-oak": ((7.0, 5.0, 13.0), (0.0, 6.0, 0.0)),
 
 
 def tint_copy(species, season, tinted, folder):
-    """season_copy() with the leaf colour variation kept (tinted) or set to zero."""
+    """season_copy() with the leaf colour variation and light shading kept (tinted) or set to
+    zero."""
     path = season_copy(species, season, folder)
     with open(path) as f:
         doc = json.load(f)
     for node in doc["graph"]["nodes"]:
         if node["type"] == "tube_mesh" and not tinted:
             for key in list(node["params"]):
-                if key.endswith("_variation"):
+                if key.endswith("_variation") or key == "leaf_light_shading":
                     node["params"][key] = 0
     out = os.path.join(folder, "%s-%s-%s.json" % (species, season, "on" if tinted else "off"))
     with open(out, "w") as f:

@@ -223,9 +223,14 @@ def bark_smooth(seed, base, mottle, lenticels=0.0, rings=0.0):
 def bark_birch():
     shape = (BARK, BARK)
     base = colorize(0.85 + 0.15 * noise(shape, 20, 20, 11), (0.74, 0.72, 0.68), (0.95, 0.94, 0.91))
-    # Horizontal dark lenticels, the birch's signature.
-    l = noise(shape, 14, 1.5, 12)
-    lent = np.clip((l - 0.72) * 9, 0, 1)
+    # Horizontal dark lenticels, the birch's signature: three sizes at unrelated spacings, each
+    # where a slow mask lets it be, so they come in irregular clusters and gaps (one noise of 14
+    # columns drew them evenly spaced, like a ruler's ticks; issue #44).
+    mask = noise(shape, 90, 140, 17)
+    fine = np.clip((noise(shape, 9, 1.2, 12) - 0.74) * 9, 0, 1) * np.clip((mask - 0.35) * 3, 0, 1)
+    mid = np.clip((noise(shape, 20, 2, 18) - 0.76) * 9, 0, 1) * np.clip((0.65 - mask) * 3, 0, 1)
+    long_ = np.clip((noise(shape, 45, 3, 19) - 0.8) * 8, 0, 1) * np.clip((noise(shape, 80, 60, 20) - 0.45) * 4, 0, 1)
+    lent = np.clip(fine + mid + long_, 0, 1)
     # Black diamond patches and rough dark bands.
     patch = noise(shape, 45, 25, 13)
     patch = np.clip((patch - 0.7) * 6, 0, 1) * (0.7 + 0.3 * noise(shape, 4, 2, 14))
@@ -252,6 +257,32 @@ def bark_plates(seed, plate, crack_col, count=60, stretch=(1.0, 2.2), flaky=0.5)
     # Each plate a little tilted slab (its own height), the cracks between them deep.
     height = edge * (0.7 + 0.3 * tint) + 0.08 * (f - 0.5)
     return rgb, height
+
+
+def bark_pine(seed):
+    """Scots pine (issue #44: one colour of even plates read as a diamond lattice): thick plates
+    of two sizes split by wavy cracks of varying width, each plate grey-brown or orange-brown
+    (a slow noise and its own random decide, so both bark kinds of the stem meet in patches),
+    the orange ones flaking into thin papery scales."""
+    shape = (BARK, BARK)
+    big1, big2, ident = cells(shape, 34, seed, (1.0, 2.4))
+    small1, small2, _ = cells(shape, 140, seed + 7, (1.0, 1.6))
+    warp = noise(shape, 6, 10, seed + 1) - 0.5
+    width = 5.0 + 5.0 * noise(shape, 40, 60, seed + 2)
+    crack = np.clip((big2 - big1 + 3.0 * warp) / width, 0, 1) ** 0.6
+    flake_edge = np.clip((small2 - small1) / 2.5, 0, 1)
+    rng = np.random.default_rng(seed + 5)
+    own = rng.random(34)[ident]
+    orange = np.clip((0.3 * noise(shape, 70, 110, seed + 3) + 0.7 * own - 0.62) * 6, 0, 1)
+    grey = np.asarray((0.40, 0.35, 0.30), np.float32)
+    rust = np.asarray((0.74, 0.43, 0.24), np.float32)
+    col = grey * (1 - orange[..., None]) + rust * orange[..., None]
+    f = noise(shape, 2, 5, seed + 4)
+    shade = (0.75 + 0.3 * (own - 0.5) + 0.25 * (f - 0.5)) * (1 - 0.35 * orange * (1 - flake_edge))
+    crack_col = np.asarray((0.13, 0.10, 0.08), np.float32)
+    rgb = crack_col + (col * shade[..., None] - crack_col) * crack[..., None]
+    height = crack * (0.65 + 0.3 * own) + 0.1 * orange * flake_edge + 0.06 * (f - 0.5)
+    return np.clip(rgb, 0, 1), height
 
 
 def bark_palm():
@@ -505,8 +536,10 @@ def pine_shoot(name, w, h, base, seed, fascicles=46, twig=(0.45, 0.30, 0.18)):
     return finish_leaf(name, w, h, mask, np.clip(rgb, 0, 1))
 
 
-def sprig(name, w, h, base, seed, needle=0.18, density=70, angle=55, twig=(0.40, 0.27, 0.17)):
-    """Spruce: a twig with short stiff needles on both sides and side shoots."""
+def sprig(name, w, h, base, seed, needle=0.11, density=90, angle=55, twig=(0.26, 0.22, 0.12)):
+    """Spruce: a shoot with short stiff needles all round it (a bottlebrush seen from the side:
+    each needle at its own angle and foreshortened, not a flat comb of mirrored pairs, which
+    read as a lobed leaf; issue #44) on a thin twig, and side shoots."""
     rng = np.random.default_rng(seed)
     x, t = canvas(w, h)
     aspect = (w / h) / 2.0
@@ -519,19 +552,20 @@ def sprig(name, w, h, base, seed, needle=0.18, density=70, angle=55, twig=(0.40,
             axes.append((0.0, t0, side * math.sin(a) * L / aspect * 0.5, t0 + math.cos(a) * L, 0.7))
     twigs, needles = [], []
     for (x0, t0, x1, t1, scale) in axes:
-        twigs.append((x0, t0, x1, t1, 0.012))
+        twigs.append((x0, t0, x1, t1, 0.006))
         dx, dt = (x1 - x0) * aspect * 2, t1 - t0
         L = math.hypot(dx, dt)
         ux, ut = dx / L, dt / L
-        n = int(density * L)
+        n = int(1.5 * density * L)
         for i in range(n):
             s = (i + rng.random()) / n
             px, pt = x0 * aspect * 2 + dx * s, t0 + dt * s
             for side in (-1, 1):
-                a = math.radians(angle + rng.uniform(-15, 15)) * side
+                a = math.radians(rng.uniform(angle - 30, angle + 40)) * side
                 vx = ux * math.cos(a) - ut * math.sin(a)
                 vt = ux * math.sin(a) + ut * math.cos(a)
-                nl = needle * scale * (1 - 0.4 * s) * rng.uniform(0.8, 1.1)
+                # foreshortened: needles pointing toward or away from the viewer look shorter
+                nl = needle * scale * (1 - 0.4 * s) * rng.uniform(0.8, 1.1) * rng.uniform(0.35, 1.0)
                 needles.append((px / (aspect * 2), pt, (px + vx * nl) / (aspect * 2), pt + vt * nl, 0.008))
     mt = strokes(x, t, twigs, aspect)
     mn = strokes(x, t, needles, aspect)
@@ -1046,15 +1080,18 @@ def needle_sprays(kind, seed, base, twig, tile, scale):
                 ux, uy = x1 - x0, y1 - y0
                 ln = math.hypot(ux, uy)
                 ux, uy = ux / ln, uy / ln
-                n = int(150 * ln * scale)
+                n = int(190 * ln * scale)
                 for j in range(n):
                     s = (j + rng.random()) / n
                     px, py = x0 + (x1 - x0) * s, y0 + (y1 - y0) * s
                     for side in (-1, 1):
-                        ang = math.radians(rng.uniform(45, 75)) * side
+                        # all round the shoot (issue #44: mirrored pairs at one angle drew a
+                        # flat comb that read as a lobed leaf): each needle at its own angle,
+                        # foreshortened when it points toward or away from the viewer
+                        ang = math.radians(rng.uniform(25, 100)) * side
                         vx = ux * math.cos(ang) - uy * math.sin(ang)
                         vy = ux * math.sin(ang) + uy * math.cos(ang)
-                        nl = rng.uniform(0.065, 0.09) * w * (1 - 0.35 * s)
+                        nl = rng.uniform(0.065, 0.09) * w * (1 - 0.35 * s) * rng.uniform(0.4, 1.0)
                         ex = float(np.clip(px + vx * nl, 0.01, 0.99))
                         ey = float(np.clip(py + vy * nl, 0.01, 0.99))
                         # the shoot's new growth (its last fifth) lighter
@@ -1110,9 +1147,10 @@ def library():
     leaf = simple_leaf("lombardy-poplar_leaf.png", 128, 256, poplar_width, (0.24, 0.46, 0.10), 152, stem=0.15, veins=6, vein_angle=0.5)
     cluster_atlas("lombardy-poplar_leafcluster.png", leaf, 0.5, 153)
 
-    save_bark("scots-pine_bark.png", bark_plates(161, (0.74, 0.42, 0.25), (0.18, 0.12, 0.09), count=50, stretch=(1.0, 2.0)))
-    leaf = pine_shoot("scots-pine_leaf.png", 256, 256, (0.26, 0.42, 0.34), 162)
-    needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.20, 0.34, 0.27))
+    save_bark("scots-pine_bark.png", bark_pine(161))
+    # Needle greens less teal than they were (issue #44: blue 0.8 of green read as teal)
+    leaf = pine_shoot("scots-pine_leaf.png", 256, 256, (0.28, 0.42, 0.26), 162)
+    needle_atlas("scots-pine_leafcluster.png", "pine", leaf, 163, (0.22, 0.34, 0.20))
 
     save_bark("norway-spruce_bark.png", bark_plates(171, (0.48, 0.33, 0.24), (0.16, 0.11, 0.08), count=160, stretch=(1.0, 0.8), flaky=0.8))
     leaf = sprig("norway-spruce_leaf.png", 128, 256, (0.11, 0.27, 0.11), 172)

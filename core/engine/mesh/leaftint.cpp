@@ -171,8 +171,10 @@ glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double sa
 }
 
 void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation& variation,
-                   const glm::vec3& referenceSrgb, double patchSize, std::uint64_t seed) {
-    if (!variation.active()) return;
+                   const glm::vec3& referenceSrgb, double patchSize, std::uint64_t seed,
+                   std::span<const float> cardLight, double lightShading) {
+    const bool shaded = lightShading > 0.0 && !cardLight.empty();
+    if (!variation.active() && !shaded) return;
     const std::size_t n = mesh.positions.size();
     mesh.colors.resize(n, glm::u8vec4(255));
     if (firstVertex >= n) return;
@@ -204,8 +206,12 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
         // (a crown a third as much darker on average as with a linear spread: one of the same
         // look is b/3 darker, not b/2).
         const double dark = 0.5 + 0.5 * r[2];
+        const std::size_t card = (v - firstVertex) / 4;
+        const double lit =
+            shaded && card < cardLight.size() ? static_cast<double>(cardLight[card]) : 1.0;
         const glm::u8vec4 tint = multiplier(ref, variation.hue * r[0], variation.saturation * r[1],
-                                            1.0 - variation.brightness * dark * dark);
+                                            (1.0 - variation.brightness * dark * dark) *
+                                                (1.0 - lightShading * (1.0 - lit)));
         for (std::size_t k = v; k < end; ++k)
             mesh.colors[k] = tint;
     }

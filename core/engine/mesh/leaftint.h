@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -32,6 +33,10 @@ struct LeafTintSettings {
     /// own; 0: every card on its own. [0, 1000].
     double patchSize = 1.5;
     glm::vec3 autumnColor{0.6f, 0.4f, 0.1f}; ///< sRGB 0..1: the colour autumn's hue turns around
+    /// Fraction of its brightness the most shaded card loses by the growth's own light
+    /// (leafCardLight: outer, sun-facing cards lighter, inner darker), in every season; 0: the
+    /// light records are not shown. [0, 1].
+    double lightShading = 0.0;
 };
 
 /// The variation a season shows (autumn's for a deciduous species in autumn, else summer's).
@@ -57,9 +62,12 @@ glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double sa
 /// card share it; the same card, the same colour, whatever
 /// the thread count or the order cards are made in) mixed 40 : 60 with a smooth noise over the
 /// crown (LeafTintSettings::patchSize). Vertices before \p firstVertex get white when
-/// the mesh had no colours. Does nothing when \p variation is not active.
+/// the mesh had no colours. \p cardLight (one value a card in [0, 1], leafCardLight's) darkens
+/// each card's HSV value by the factor 1 - \p lightShading · (1 - light) on top of the
+/// variation. Does nothing when \p variation is not active and no light shading is asked.
 void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation& variation,
-                   const glm::vec3& referenceSrgb, double patchSize, std::uint64_t seed);
+                   const glm::vec3& referenceSrgb, double patchSize, std::uint64_t seed,
+                   std::span<const float> cardLight = {}, double lightShading = 0.0);
 
 /// Linear 0..1 to an sRGB 0..1 value, and back (IEC 61966-2-1).
 float linearToSrgb(float linear);

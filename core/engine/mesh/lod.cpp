@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/mesh/leafclusters.h"
+#include "engine/mesh/leaflight.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
@@ -244,10 +245,14 @@ void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
     } else {
         appendLeafCards(mesh, leaves, settings.leafCards, skeleton);
     }
+    std::vector<float> light;
+    if (settings.leafTint.lightShading > 0.0 && skeleton != nullptr)
+        light = leafCardLight(mesh, firstVertex, leaves, *skeleton);
     tintLeafCards(mesh, firstVertex,
                   leafVariationFor(settings.leafTint, settings.season, settings.deciduous),
                   leafReferenceColor(settings.leafTint, settings.season, settings.deciduous),
-                  settings.leafTint.patchSize, mixSeed(settings.seed, salt::kLeafTint));
+                  settings.leafTint.patchSize, mixSeed(settings.seed, salt::kLeafTint), light,
+                  settings.leafTint.lightShading);
 }
 
 Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {

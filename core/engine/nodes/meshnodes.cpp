@@ -159,6 +159,7 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.leafTint.summer = colorVariation(p, "leaf_");
     s.leafTint.autumn = colorVariation(p, "leaf_autumn_");
     s.leafTint.patchSize = ranged(p, "leaf_color_patch", s.leafTint.patchSize, 0.0, 1e3);
+    s.leafTint.lightShading = ranged(p, "leaf_light_shading", 0.0, 0.0, 1.0);
     s.leafClusterSize = rangedInt(p, "leaf_cluster_size", 0, 0, 64);
     s.leafClusterTexture = texture("leaf_cluster_texture_file");
     s.leafClusterCrossed = p.boolean("leaf_cluster_crossed", false);
@@ -379,7 +380,10 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
                 "Autumn: the darkest card's loss of brightness"),
          number("leaf_color_patch", 1.5, 0, 1e3, "m",
                 "Most of the variation follows patches about this large over the crown, the "
-                "rest is each card's own; 0: each card on its own")});
+                "rest is each card's own; 0: each card on its own"),
+         number("leaf_light_shading", 0.0, 0, 1, "",
+                "The most shaded leaf card's loss of brightness by the growth's light records "
+                "(outer, sun-facing cards lighter, inner darker); 0: not shown")});
     registry.add(std::move(tube));
 
     graph::NodeType leaves;

@@ -10,6 +10,7 @@
 #include "engine/graph/vectorparam.h"
 #include "engine/growth/envelope.h"
 #include "engine/growth/litattractors.h"
+#include "engine/growth/nodelight.h"
 #include "engine/growth/spacecolonization.h"
 #include "engine/nodes/paramspecs.h"
 #include "engine/skeleton/radii.h"
@@ -297,6 +298,8 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
             r = std::move(next);
         }
         skel::shapeRadii(r.skeleton, shaping);
+        // The crown's own shade, for the leaves' tint and the editor's Colour by light.
+        recordLight(r.skeleton, light.voxelSize);
         const auto t2 = Clock::now();
 
         auto ms = [](auto a, auto b) {

@@ -210,11 +210,7 @@ void graft(Skeleton& s, const BranchEdit& e, Index at, const glm::vec3& base) {
     const auto first = static_cast<Index>(s.size());
     for (const LockedNode& n : e.locked) {
         s.addNode(base + n.offset, n.parent < 0 ? at : first + n.parent, n.radius, n.order,
-                  n.orientation);
-        if (!s.light.empty()) s.light.push_back(0.0f);
-        if (!s.vigour.empty()) s.vigour.push_back(0.0f);
-        if (!s.age.empty()) s.age.push_back(0);
-        if (!s.sourceLine.empty()) s.sourceLine.push_back(0);
+                  n.orientation); // extends the growth records and source lines too
     }
     for (const LockedLeaf& l : e.lockedLeaves) {
         Leaf leaf;

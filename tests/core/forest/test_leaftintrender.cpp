@@ -78,9 +78,10 @@ Rendered render(const char* species, const char* season, bool plain) {
     const std::shared_ptr<const mesh::Mesh> a = with.evaluate(1).mesh;
     graph::Evaluator without(g);
     without.setParam(meshNode, "season", Value(std::string(season)));
-    for (const char* key : {"leaf_hue_variation", "leaf_saturation_variation",
-                            "leaf_brightness_variation", "leaf_autumn_hue_variation",
-                            "leaf_autumn_saturation_variation", "leaf_autumn_brightness_variation"})
+    for (const char* key :
+         {"leaf_hue_variation", "leaf_saturation_variation", "leaf_brightness_variation",
+          "leaf_autumn_hue_variation", "leaf_autumn_saturation_variation",
+          "leaf_autumn_brightness_variation", "leaf_light_shading"})
         without.setParam(meshNode, key, Value(0.0));
     const std::shared_ptr<const mesh::Mesh> b = without.evaluate(1).mesh;
     EXPECT_TRUE(a && b);
@@ -126,6 +127,8 @@ TEST(LeafTintRender, PlainLeavesShowOnlyTheCardsTint) {
 
 // The cost of a multiplier that cannot brighten: the textured crown's leaves are darker on
 // average. Bounded so that a change of the spread's shape cannot quietly darken the library.
+// Issue #44 lowered the bound from 0.85 to 0.8 on purpose: leaf_light_shading darkens the
+// shaded half of the cards, the crown's underside included (measured ×0.84–0.91).
 TEST(LeafTintRender, TexturedCrownsStayNearTheirBrightness) {
     for (const char* season : {"summer", "autumn"})
         for (const char* species : {"english-oak", "european-beech", "norway-maple"}) {
@@ -135,7 +138,7 @@ TEST(LeafTintRender, TexturedCrownsStayNearTheirBrightness) {
                         "%.2f° (%.2f°)\n",
                         species, season, r.tinted.meanValue, r.untinted.meanValue, ratio,
                         r.tinted.hue, r.untinted.hue);
-            EXPECT_GT(ratio, 0.85) << species << " " << season;
+            EXPECT_GT(ratio, 0.8) << species << " " << season;
             EXPECT_LT(ratio, 1.0) << species << " " << season;
         }
 }

@@ -350,8 +350,9 @@ TEST(LodChain, LibraryLevelsKeepTheSilhouetteWithinBudget) {
         {"weeping-willow", {1}},
         {"scots-pine", {1, 2}},
         {"italian-cypress", {1}},
-        {"norway-spruce", {1}}, // 26.6 % since its LOD0 lost its twigs' bark (issue #33)
-        {"silver-birch", {1}}}; // 27.9 % since the radius pass and the root flare (issue #44)
+        {"norway-spruce", {1}}}; // 26.6 % since its LOD0 lost its twigs' bark (issue #33)
+    // (The birch's LOD1, 27.9 % with the radius pass and the root flare, is 28.3 % with its
+    // smaller, more numerous leaves of issue #44: back in its band.)
     // The date palm has 456 triangles: 12 % and 4 % of them (54 and 18) are not reached before
     // it is 4 px high (its coarsest mesh has 66): those two levels are dropped and reported.
     const std::map<std::string, std::size_t> dropped = {{"date-palm", 2}};

@@ -27,7 +27,7 @@ const std::filesystem::path kPresets = SYLVA_PRESETS_DIR;
 // The thresholds the issue states.
 constexpr double kMinFlare = 1.25;     ///< ground radius / radius 1 m up
 constexpr double kMaxTaper = 0.92;     ///< radius under the crown / radius 1 m up
-constexpr double kMinClearTrunk = 2.0; ///< taper checked where the crown starts this high (m)
+constexpr double kMinClearTrunk = 1.0; ///< taper checked where the clear trunk is this long (m)
 /// Along the trunk's axis the radius falls by at most this much per metre between consecutive
 /// nodes (a cone of about 6°): a fall faster than that reads as a step or a collar.
 constexpr double kMaxStepSlope = 0.1;
