@@ -342,6 +342,120 @@
     </message>
 </context>
 <context>
+    <name>sylva::doc::ProjectSettings</name>
+    <message>
+        <source>Wind direction</source>
+        <translation>Windrichtung</translation>
+    </message>
+    <message>
+        <source>Where the wind blows to, about the vertical: 0° along +X, 90° along +Z</source>
+        <translation>Wohin der Wind weht, um die Senkrechte: 0° entlang +X, 90° entlang +Z</translation>
+    </message>
+    <message>
+        <source>Wind strength</source>
+        <translation>Windstärke</translation>
+    </message>
+    <message>
+        <source>0 calm, 1 strong, 2 storm: trees bend with its square</source>
+        <translation>0 windstill, 1 stark, 2 Sturm: Bäume biegen sich mit ihrem Quadrat</translation>
+    </message>
+    <message>
+        <source>Gustiness</source>
+        <translation>Böigkeit</translation>
+    </message>
+    <message>
+        <source>0 a steady wind, 1 gusts that double the pressure</source>
+        <translation>0 gleichmäßiger Wind, 1 Böen, die den Druck verdoppeln</translation>
+    </message>
+    <message>
+        <source>Sway frequency</source>
+        <translation>Schwingfrequenz</translation>
+    </message>
+    <message>
+        <source>How often the trunks sway; limbs, branches and leaves go faster</source>
+        <translation>Wie oft die Stämme schwingen; Äste, Zweige und Blätter schneller</translation>
+    </message>
+    <message>
+        <source>Variants</source>
+        <translation>Varianten</translation>
+    </message>
+    <message>
+        <source>How many different trees of this species the forest is made of: a tree that touches no obstacle and no neighbour&apos;s crown shows one of them, turned and scaled; one that does is cut back from one of them. Fewer variants generate and export faster; 0 grows every tree for its place.</source>
+        <translation>Wie viele verschiedene Bäume dieser Art den Wald bilden: ein Baum, der kein Hindernis und keine Nachbarkrone berührt, zeigt einen davon, gedreht und skaliert; einer, der es tut, wird aus einem davon zurückgeschnitten. Weniger Varianten erzeugen und exportieren schneller; 0 lässt jeden Baum für seinen Platz wachsen.</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::BranchProperties</name>
+    <message>
+        <source>Branch %1</source>
+        <translation>Ast %1</translation>
+    </message>
+    <message>
+        <source>Edit:</source>
+        <translation>Bearbeitung:</translation>
+    </message>
+    <message>
+        <source>Length scale:</source>
+        <translation>Längenfaktor:</translation>
+    </message>
+    <message>
+        <source>Scales the branch&apos;s own length about its base, 0.05 to 20; what it carries follows</source>
+        <translation>Skaliert die eigene Länge des Asts um seine Basis, 0,05 bis 20; was er trägt, folgt</translation>
+    </message>
+    <message>
+        <source>Radius scale:</source>
+        <translation>Radiusfaktor:</translation>
+    </message>
+    <message>
+        <source>Scales the thickness of the branch and what it carries, 0.05 to 20</source>
+        <translation>Skaliert die Dicke des Asts und dessen, was er trägt, 0,05 bis 20</translation>
+    </message>
+    <message>
+        <source>Keep its geometry through regrowth</source>
+        <translation>Geometrie beim Neuwachsen behalten</translation>
+    </message>
+    <message>
+        <source>Locked: the branch and what it carries keep their exact shape when the species or the seed changes</source>
+        <translation>Gesperrt: Der Ast und was er trägt behalten ihre genaue Form, wenn sich die Art oder der Seed ändert</translation>
+    </message>
+    <message>
+        <source>Lock:</source>
+        <translation>Sperren:</translation>
+    </message>
+    <message>
+        <source>Prune</source>
+        <translation>Schneiden</translation>
+    </message>
+    <message>
+        <source>Removes the branch and everything it carries (Delete)</source>
+        <translation>Entfernt den Ast und alles, was er trägt (Entf)</translation>
+    </message>
+    <message>
+        <source>pruned</source>
+        <translation>geschnitten</translation>
+    </message>
+    <message>
+        <source>bent</source>
+        <translation>gebogen</translation>
+    </message>
+    <message>
+        <source>length ×%1</source>
+        <translation>Länge ×%1</translation>
+    </message>
+    <message>
+        <source>radius ×%1</source>
+        <translation>Radius ×%1</translation>
+    </message>
+    <message>
+        <source>locked</source>
+        <translation>gesperrt</translation>
+    </message>
+    <message>
+        <source>none (as grown)</source>
+        <translation>keine (wie gewachsen)</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::ColorByMenu</name>
     <message>
         <source>&amp;Colour by</source>
@@ -470,10 +584,6 @@
     <message>
         <source>Images (*.png *.jpg *.bmp)</source>
         <translation>Bilder (*.png *.jpg *.bmp)</translation>
-    </message>
-    <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx);;USD text (*.usda)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binär (*.glb);;glTF (*.gltf);;FBX binär (*.fbx);;USD-Text (*.usda)</translation>
     </message>
 </context>
 <context>
@@ -1062,6 +1172,42 @@
         <source>%1 %2: %3 trees</source>
         <translation>%1 %2: %3 Bäume</translation>
     </message>
+    <message>
+        <source>pruned</source>
+        <translation>geschnitten</translation>
+    </message>
+    <message>
+        <source>bent</source>
+        <translation>gebogen</translation>
+    </message>
+    <message>
+        <source>length ×%1</source>
+        <translation>Länge ×%1</translation>
+    </message>
+    <message>
+        <source>radius ×%1</source>
+        <translation>Radius ×%1</translation>
+    </message>
+    <message>
+        <source>locked</source>
+        <translation>gesperrt</translation>
+    </message>
+    <message>
+        <source>Branch %1: %2</source>
+        <translation>Ast %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 (orphaned)</source>
+        <translation>%1 (verwaist)</translation>
+    </message>
+    <message>
+        <source>The grown tree has no branch %1 now: the edit is kept and applies again when the branch grows back</source>
+        <translation>Der gewachsene Baum hat jetzt keinen Ast %1: Die Bearbeitung bleibt erhalten und gilt wieder, sobald der Ast nachwächst</translation>
+    </message>
+    <message>
+        <source>A hand edit of branch %1 (Branch tool, doc.edit_branch)</source>
+        <translation>Eine Handbearbeitung von Ast %1 (Ast-Werkzeug, doc.edit_branch)</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::ParameterPanel</name>
@@ -1419,14 +1565,6 @@
         <translation>Anzahl der Bäume dieser Art, die der Bereich verteilt</translation>
     </message>
     <message>
-        <source>Variants:</source>
-        <translation>Varianten:</translation>
-    </message>
-    <message>
-        <source>How many different trees of this species the forest is made of: a tree that touches no obstacle and no neighbour&apos;s crown shows one of them, turned and scaled; one that does is cut back from one of them. Fewer variants generate and export faster; 0 grows every tree for its place.</source>
-        <translation>Wie viele verschiedene Bäume dieser Art den Wald bilden: ein Baum, der kein Hindernis und keine Nachbarkrone berührt, zeigt einen davon, gedreht und skaliert; einer, der es tut, wird aus einem davon zurückgeschnitten. Weniger Varianten erzeugen und exportieren schneller; 0 lässt jeden Baum für seinen Platz wachsen.</translation>
-    </message>
-    <message>
         <source>0 (every tree unique)</source>
         <translation>0 (jeder Baum einzeln)</translation>
     </message>
@@ -1507,48 +1645,16 @@
         <translation>Die eigene Jahreszeit dieses Baums oder die des Projekts</translation>
     </message>
     <message>
-        <source>Wind direction:</source>
-        <translation>Windrichtung:</translation>
-    </message>
-    <message>
-        <source>Where the wind blows to, about the vertical: 0° along +X, 90° along +Z</source>
-        <translation>Wohin der Wind weht, um die Senkrechte: 0° entlang +X, 90° entlang +Z</translation>
-    </message>
-    <message>
-        <source>Wind strength:</source>
-        <translation>Windstärke:</translation>
-    </message>
-    <message>
-        <source>0 calm, 1 strong, 2 storm: trees bend with its square</source>
-        <translation>0 windstill, 1 stark, 2 Sturm: Bäume biegen sich mit ihrem Quadrat</translation>
-    </message>
-    <message>
-        <source>Gustiness:</source>
-        <translation>Böigkeit:</translation>
-    </message>
-    <message>
-        <source>0 a steady wind, 1 gusts that double the pressure</source>
-        <translation>0 gleichmäßiger Wind, 1 Böen, die den Druck verdoppeln</translation>
-    </message>
-    <message>
-        <source>Sway frequency:</source>
-        <translation>Schwingfrequenz:</translation>
-    </message>
-    <message>
-        <source> Hz</source>
-        <translation> Hz</translation>
-    </message>
-    <message>
-        <source>How often the trunks sway; limbs, branches and leaves go faster</source>
-        <translation>Wie oft die Stämme schwingen; Äste, Zweige und Blätter schneller</translation>
-    </message>
-    <message>
         <source>%1 (%2):</source>
         <translation>%1 (%2):</translation>
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; tune its graph and parameters in the Species Editor (Scene ▸ Edit species…, Ctrl+Shift+E).</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 von Hand gesetzte(r) Baum/Bäume. Im Outliner umbenennen; Graph und Parameter im Arteditor anpassen (Szene ▸ Art bearbeiten…, Strg+Umschalt+E).</translation>
+    </message>
+    <message>
+        <source>:</source>
+        <translation>:</translation>
     </message>
 </context>
 <context>
@@ -1783,6 +1889,14 @@
         <source>No ground under the cursor: nothing planted; click where the ground is drawn</source>
         <translation>Kein Boden unter dem Mauszeiger: nichts gepflanzt; klicken Sie dorthin, wo Boden zu sehen ist</translation>
     </message>
+    <message>
+        <source>Only hand-placed trees take branch edits: this one was scattered by a domain</source>
+        <translation>Nur von Hand gesetzte Bäume nehmen Astbearbeitungen an: Dieser wurde von einer Domäne verteilt</translation>
+    </message>
+    <message>
+        <source>Branch %1 is locked: unlock it in Properties before bending it</source>
+        <translation>Ast %1 ist gesperrt: Entsperren Sie ihn in den Eigenschaften, bevor Sie ihn biegen</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::ToolOptionsBar</name>
@@ -1873,6 +1987,14 @@
     <message>
         <source>Species and weights the brush paints; empty: the chosen species</source>
         <translation>Arten und Gewichte, die der Pinsel malt; leer: die gewählte Art</translation>
+    </message>
+    <message>
+        <source>Branch</source>
+        <translation>Ast</translation>
+    </message>
+    <message>
+        <source>Click a branch of a hand-placed tree to select it (its settings in Properties), drag it to bend it about its base, Delete prunes it; each is one undo step</source>
+        <translation>Klicken Sie auf einen Ast eines von Hand gesetzten Baums, um ihn auszuwählen (seine Einstellungen in den Eigenschaften), ziehen Sie ihn, um ihn um seine Basis zu biegen, Entf schneidet ihn; jeder Schritt ist ein Rückgängig-Schritt</translation>
     </message>
 </context>
 <context>

@@ -342,6 +342,120 @@
     </message>
 </context>
 <context>
+    <name>sylva::doc::ProjectSettings</name>
+    <message>
+        <source>Wind direction</source>
+        <translation>Direction du vent</translation>
+    </message>
+    <message>
+        <source>Where the wind blows to, about the vertical: 0° along +X, 90° along +Z</source>
+        <translation>Vers où souffle le vent, autour de la verticale : 0° selon +X, 90° selon +Z</translation>
+    </message>
+    <message>
+        <source>Wind strength</source>
+        <translation>Force du vent</translation>
+    </message>
+    <message>
+        <source>0 calm, 1 strong, 2 storm: trees bend with its square</source>
+        <translation>0 calme, 1 fort, 2 tempête : les arbres ploient avec son carré</translation>
+    </message>
+    <message>
+        <source>Gustiness</source>
+        <translation>Rafales</translation>
+    </message>
+    <message>
+        <source>0 a steady wind, 1 gusts that double the pressure</source>
+        <translation>0 un vent régulier, 1 des rafales qui doublent la pression</translation>
+    </message>
+    <message>
+        <source>Sway frequency</source>
+        <translation>Fréquence de balancement</translation>
+    </message>
+    <message>
+        <source>How often the trunks sway; limbs, branches and leaves go faster</source>
+        <translation>La fréquence d&apos;oscillation des troncs ; charpentières, branches et feuilles vont plus vite</translation>
+    </message>
+    <message>
+        <source>Variants</source>
+        <translation>Variantes</translation>
+    </message>
+    <message>
+        <source>How many different trees of this species the forest is made of: a tree that touches no obstacle and no neighbour&apos;s crown shows one of them, turned and scaled; one that does is cut back from one of them. Fewer variants generate and export faster; 0 grows every tree for its place.</source>
+        <translation>Combien d&apos;arbres différents de cette espèce composent la forêt : un arbre qui ne touche aucun obstacle ni la couronne d&apos;un voisin en montre un, tourné et mis à l&apos;échelle ; un arbre qui en touche est taillé à partir de l&apos;un d&apos;eux. Moins de variantes se génèrent et s&apos;exportent plus vite ; 0 fait pousser chaque arbre pour sa place.</translation>
+    </message>
+</context>
+<context>
+    <name>sylva::ui::BranchProperties</name>
+    <message>
+        <source>Branch %1</source>
+        <translation>Branche %1</translation>
+    </message>
+    <message>
+        <source>Edit:</source>
+        <translation>Modification :</translation>
+    </message>
+    <message>
+        <source>Length scale:</source>
+        <translation>Facteur de longueur :</translation>
+    </message>
+    <message>
+        <source>Scales the branch&apos;s own length about its base, 0.05 to 20; what it carries follows</source>
+        <translation>Met à l’échelle la longueur propre de la branche autour de sa base, de 0,05 à 20 ; ce qu’elle porte suit</translation>
+    </message>
+    <message>
+        <source>Radius scale:</source>
+        <translation>Facteur de rayon :</translation>
+    </message>
+    <message>
+        <source>Scales the thickness of the branch and what it carries, 0.05 to 20</source>
+        <translation>Met à l’échelle l’épaisseur de la branche et de ce qu’elle porte, de 0,05 à 20</translation>
+    </message>
+    <message>
+        <source>Keep its geometry through regrowth</source>
+        <translation>Garder sa géométrie à la repousse</translation>
+    </message>
+    <message>
+        <source>Locked: the branch and what it carries keep their exact shape when the species or the seed changes</source>
+        <translation>Verrouillée : la branche et ce qu’elle porte gardent leur forme exacte quand l’espèce ou la graine change</translation>
+    </message>
+    <message>
+        <source>Lock:</source>
+        <translation>Verrouiller :</translation>
+    </message>
+    <message>
+        <source>Prune</source>
+        <translation>Élaguer</translation>
+    </message>
+    <message>
+        <source>Removes the branch and everything it carries (Delete)</source>
+        <translation>Supprime la branche et tout ce qu’elle porte (Suppr)</translation>
+    </message>
+    <message>
+        <source>pruned</source>
+        <translation>élaguée</translation>
+    </message>
+    <message>
+        <source>bent</source>
+        <translation>courbée</translation>
+    </message>
+    <message>
+        <source>length ×%1</source>
+        <translation>longueur ×%1</translation>
+    </message>
+    <message>
+        <source>radius ×%1</source>
+        <translation>rayon ×%1</translation>
+    </message>
+    <message>
+        <source>locked</source>
+        <translation>verrouillée</translation>
+    </message>
+    <message>
+        <source>none (as grown)</source>
+        <translation>aucune (telle que poussée)</translation>
+    </message>
+</context>
+<context>
     <name>sylva::ui::ColorByMenu</name>
     <message>
         <source>&amp;Colour by</source>
@@ -470,10 +584,6 @@
     <message>
         <source>Images (*.png *.jpg *.bmp)</source>
         <translation>Images (*.png *.jpg *.bmp)</translation>
-    </message>
-    <message>
-        <source>Wavefront OBJ (*.obj);;glTF binary (*.glb);;glTF (*.gltf);;FBX binary (*.fbx);;USD text (*.usda)</source>
-        <translation>Wavefront OBJ (*.obj);;glTF binaire (*.glb);;glTF (*.gltf);;FBX binaire (*.fbx);;USD texte (*.usda)</translation>
     </message>
 </context>
 <context>
@@ -1062,6 +1172,42 @@
         <source>%1 %2: %3 trees</source>
         <translation>%1 %2&#xa0;: %3 arbres</translation>
     </message>
+    <message>
+        <source>pruned</source>
+        <translation>élaguée</translation>
+    </message>
+    <message>
+        <source>bent</source>
+        <translation>courbée</translation>
+    </message>
+    <message>
+        <source>length ×%1</source>
+        <translation>longueur ×%1</translation>
+    </message>
+    <message>
+        <source>radius ×%1</source>
+        <translation>rayon ×%1</translation>
+    </message>
+    <message>
+        <source>locked</source>
+        <translation>verrouillée</translation>
+    </message>
+    <message>
+        <source>Branch %1: %2</source>
+        <translation>Branche %1 : %2</translation>
+    </message>
+    <message>
+        <source>%1 (orphaned)</source>
+        <translation>%1 (orpheline)</translation>
+    </message>
+    <message>
+        <source>The grown tree has no branch %1 now: the edit is kept and applies again when the branch grows back</source>
+        <translation>L’arbre poussé n’a plus de branche %1 : la modification est gardée et s’applique de nouveau quand la branche repousse</translation>
+    </message>
+    <message>
+        <source>A hand edit of branch %1 (Branch tool, doc.edit_branch)</source>
+        <translation>Une retouche à la main de la branche %1 (outil Branche, doc.edit_branch)</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::ParameterPanel</name>
@@ -1419,14 +1565,6 @@
         <translation>Nombre d&apos;arbres de cette espèce que la zone disperse</translation>
     </message>
     <message>
-        <source>Variants:</source>
-        <translation>Variantes :</translation>
-    </message>
-    <message>
-        <source>How many different trees of this species the forest is made of: a tree that touches no obstacle and no neighbour&apos;s crown shows one of them, turned and scaled; one that does is cut back from one of them. Fewer variants generate and export faster; 0 grows every tree for its place.</source>
-        <translation>Combien d&apos;arbres différents de cette espèce composent la forêt : un arbre qui ne touche aucun obstacle ni la couronne d&apos;un voisin en montre un, tourné et mis à l&apos;échelle ; un arbre qui en touche est taillé à partir de l&apos;un d&apos;eux. Moins de variantes se génèrent et s&apos;exportent plus vite ; 0 fait pousser chaque arbre pour sa place.</translation>
-    </message>
-    <message>
         <source>0 (every tree unique)</source>
         <translation>0 (chaque arbre unique)</translation>
     </message>
@@ -1507,48 +1645,16 @@
         <translation>La saison propre de cet arbre, ou celle du projet</translation>
     </message>
     <message>
-        <source>Wind direction:</source>
-        <translation>Direction du vent :</translation>
-    </message>
-    <message>
-        <source>Where the wind blows to, about the vertical: 0° along +X, 90° along +Z</source>
-        <translation>Vers où souffle le vent, autour de la verticale : 0° selon +X, 90° selon +Z</translation>
-    </message>
-    <message>
-        <source>Wind strength:</source>
-        <translation>Force du vent :</translation>
-    </message>
-    <message>
-        <source>0 calm, 1 strong, 2 storm: trees bend with its square</source>
-        <translation>0 calme, 1 fort, 2 tempête : les arbres ploient avec son carré</translation>
-    </message>
-    <message>
-        <source>Gustiness:</source>
-        <translation>Rafales :</translation>
-    </message>
-    <message>
-        <source>0 a steady wind, 1 gusts that double the pressure</source>
-        <translation>0 un vent régulier, 1 des rafales qui doublent la pression</translation>
-    </message>
-    <message>
-        <source>Sway frequency:</source>
-        <translation>Fréquence d&apos;oscillation :</translation>
-    </message>
-    <message>
-        <source> Hz</source>
-        <translation> Hz</translation>
-    </message>
-    <message>
-        <source>How often the trunks sway; limbs, branches and leaves go faster</source>
-        <translation>La fréquence d&apos;oscillation des troncs ; charpentières, branches et feuilles vont plus vite</translation>
-    </message>
-    <message>
         <source>%1 (%2):</source>
         <translation>%1 (%2) :</translation>
     </message>
     <message>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 hand-placed tree(s). Rename it in the outliner; tune its graph and parameters in the Species Editor (Scene ▸ Edit species…, Ctrl+Shift+E).</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;%2&lt;br&gt;%3 arbre(s) placé(s) à la main. Renommez-la dans l’outliner ; réglez son graphe et ses paramètres dans l’éditeur d’espèces (Scène ▸ Modifier l’espèce…, Ctrl+Maj+E).</translation>
+    </message>
+    <message>
+        <source>:</source>
+        <translation> :</translation>
     </message>
 </context>
 <context>
@@ -1783,6 +1889,14 @@
         <source>No ground under the cursor: nothing planted; click where the ground is drawn</source>
         <translation>Pas de sol sous le curseur : rien n’a été planté ; cliquez là où le sol est dessiné</translation>
     </message>
+    <message>
+        <source>Only hand-placed trees take branch edits: this one was scattered by a domain</source>
+        <translation>Seuls les arbres placés à la main acceptent les retouches de branches : celui-ci a été semé par un domaine</translation>
+    </message>
+    <message>
+        <source>Branch %1 is locked: unlock it in Properties before bending it</source>
+        <translation>La branche %1 est verrouillée : déverrouillez-la dans Propriétés avant de la courber</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::ToolOptionsBar</name>
@@ -1873,6 +1987,14 @@
     <message>
         <source>Species and weights the brush paints; empty: the chosen species</source>
         <translation>Espèces et poids que peint le pinceau&#xa0;; vide&#xa0;: l&apos;espèce choisie</translation>
+    </message>
+    <message>
+        <source>Branch</source>
+        <translation>Branche</translation>
+    </message>
+    <message>
+        <source>Click a branch of a hand-placed tree to select it (its settings in Properties), drag it to bend it about its base, Delete prunes it; each is one undo step</source>
+        <translation>Cliquez sur une branche d’un arbre placé à la main pour la sélectionner (ses réglages dans Propriétés), faites-la glisser pour la courber autour de sa base, Suppr l’élague ; chaque action est une étape d’annulation</translation>
     </message>
 </context>
 <context>
