@@ -52,6 +52,15 @@ ImpostorSwitch impostorSwitchHeight(const Mesh& reference, const Impostor& impos
         out.met = iou >= minIoU;
         if (out.met || height <= floorHeightPx) break;
     }
+    if (!out.met) {
+        // Never as good as asked: where it is best (the largest such height), since switching
+        // later than that only costs meshes without bringing the silhouettes closer.
+        const auto best =
+            std::max_element(out.tried.begin(), out.tried.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+        out.heightPx = best->first;
+        out.iou = best->second;
+    }
     return out;
 }
 
