@@ -17,10 +17,7 @@ double impostorSilhouetteIoU(const Mesh& reference, const Impostor& impostor, in
     std::vector<std::uint8_t> tree, card(static_cast<std::size_t>(pixels) * pixels);
     double sum = 0.0;
     for (int k = 0; k < views; ++k) {
-        const double az = 2.0 * std::numbers::pi * k / views, el = (k % 2) ? 0.35 : 0.0;
-        const glm::vec3 dir(static_cast<float>(std::cos(el) * std::sin(az)),
-                            static_cast<float>(std::sin(el)),
-                            static_cast<float>(std::cos(el) * std::cos(az)));
+        const glm::vec3 dir = silhouetteView(k, views);
         glm::vec3 right, up;
         impostorViewBasis(dir, right, up);
         coverageMask(reference, impostor.centre, right, up, scale, pixels, tree);

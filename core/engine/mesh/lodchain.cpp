@@ -93,11 +93,7 @@ double silhouetteIoU(const Mesh& reference, const Mesh& level, const glm::vec3& 
     std::vector<std::uint8_t> a, b;
     double sum = 0.0;
     for (int k = 0; k < views; ++k) {
-        // Around the tree, every other view 20 degrees above the horizon.
-        const double az = 2.0 * std::numbers::pi * k / views, el = (k % 2) ? 0.35 : 0.0;
-        const glm::vec3 dir(static_cast<float>(std::cos(el) * std::sin(az)),
-                            static_cast<float>(std::sin(el)),
-                            static_cast<float>(std::cos(el) * std::cos(az)));
+        const glm::vec3 dir = silhouetteView(k, views);
         glm::vec3 right, up;
         impostorViewBasis(dir, right, up);
         coverageMask(reference, centre, right, up, scale, pixels, a);

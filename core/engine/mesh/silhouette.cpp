@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 
 namespace sylva::mesh {
 
@@ -79,6 +80,12 @@ std::vector<std::uint8_t> closeMask(const std::vector<std::uint8_t>& mask, int w
     for (std::size_t k = 0; k < closed.size(); ++k)
         closed[k] = closed[k] || mask[k];
     return closed;
+}
+
+glm::vec3 silhouetteView(int k, int views) {
+    const double az = 2.0 * std::numbers::pi * k / std::max(views, 1), el = (k % 2) ? 0.35 : 0.0;
+    return {static_cast<float>(std::cos(el) * std::sin(az)), static_cast<float>(std::sin(el)),
+            static_cast<float>(std::cos(el) * std::cos(az))};
 }
 
 double maskIoU(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {

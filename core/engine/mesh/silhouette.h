@@ -26,6 +26,10 @@ void coverageMask(const Mesh& mesh, const glm::vec3& centre, const glm::vec3& ri
 std::vector<std::uint8_t> closeMask(const std::vector<std::uint8_t>& mask, int width, int height,
                                     int radius = 1);
 
+/// View \p k of \p views that the silhouette checks take (silhouetteIoU, impostorfit): around
+/// the tree, every other one 20 degrees above the horizon; a unit direction toward the viewer.
+glm::vec3 silhouetteView(int k, int views);
+
 /// Intersection over union of two masks of the same size (1 when both are empty).
 double maskIoU(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b);
 
