@@ -3,7 +3,9 @@
 #include <cstring>
 #include <deque>
 
+#include "document/projectsettings.h"
 #include "engine/export/formats.h"
+#include "engine/util/text.h"
 
 namespace sylva::cli {
 
@@ -14,8 +16,10 @@ struct CommandHelp {
     const char* text;
 };
 
-// Kept in step with docs/cli.md; "{formats}" and "{extensions}" stand for the format table's
-// extensions (expandFormats); tests/cli/cli_tests.sh checks every command prints its own.
+// Kept in step with docs/cli.md; "{wind.*}" stand for a setting's range and default from the
+// project settings' spec (core/document/projectsettings.h); "{formats}" and "{extensions}" stand
+// for the format table's extensions (expandFormats); tests/cli/cli_tests.sh checks every command
+// prints its own.
 constexpr CommandHelp kHelp[] = {
     {"expand",
      "usage: sylva-cli expand <grammar> [-n GENERATIONS] [--seed S] [--limit SYMBOLS]\n"
@@ -57,8 +61,8 @@ constexpr CommandHelp kHelp[] = {
      "  --clip-length S       clip seconds, 0.5..600 (default 4); the motion repeats after it\n"
      "  --clip-fps N          clip frames per second, 1..240 (default 30)\n"
      "  --wind-direction x,y,z  where the wind blows to (default 1,0,0; only x and z count)\n"
-     "  --wind-strength S     0..2 (default 0.5)   --wind-gustiness G  0..1 (default 0.3)\n"
-     "  --wind-frequency F    the trunk's sway in Hz, 0.05..5 (default 0.5)\n"
+     "  --wind-strength S     {wind.strength}   --wind-gustiness G  {wind.gustiness}\n"
+     "  --wind-frequency F    the trunk's sway in Hz, {wind.frequency}\n"
      "  -h, --help            show this text\n"},
     {"forest",
      "usage: sylva-cli forest <project.sylva|scene.json> -o out.{formats}\n"
@@ -174,10 +178,21 @@ constexpr CommandHelp kHelp[] = {
 
 } // namespace
 
+namespace {
+/// "0..2 (default 0.5)": a setting's range and default from the project settings' spec.
+std::string rangeOf(const doc::SettingSpec& spec) {
+    return shortestDecimal(spec.min) + ".." + shortestDecimal(spec.max) + " (default " +
+           shortestDecimal(spec.defaultValue) + ")";
+}
+} // namespace
+
 std::string expandFormats(std::string text) {
     const std::pair<const char*, std::string> keys[] = {
         {"{formats}", exporter::extensionList(nullptr, ",", ",", false)},
-        {"{extensions}", exporter::extensionList(nullptr, ", ", ", ")}};
+        {"{extensions}", exporter::extensionList(nullptr, ", ", ", ")},
+        {"{wind.strength}", rangeOf(doc::settings::kWindStrength)},
+        {"{wind.gustiness}", rangeOf(doc::settings::kWindGustiness)},
+        {"{wind.frequency}", rangeOf(doc::settings::kWindFrequency)}};
     for (const auto& key : keys)
         for (std::size_t at = text.find(key.first); at != std::string::npos;
              at = text.find(key.first, at))

@@ -9,6 +9,7 @@
 #include "document/speciesfile.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
+#include "engine/util/text.h"
 
 #include <gtest/gtest.h>
 
@@ -912,9 +913,9 @@ TEST_F(DocumentTest, BranchEditsAreUndoableSteps) {
 TEST_F(DocumentTest, SettingsSpecIsWhatTheDocumentAndTheFileAccept) {
     namespace spec = doc::settings;
     const wind::WindSettings defaults;
-    EXPECT_EQ(spec::kWindStrength.defaultValue, double(defaults.strength));
-    EXPECT_EQ(spec::kWindGustiness.defaultValue, double(defaults.gustiness));
-    EXPECT_EQ(spec::kWindFrequency.defaultValue, double(defaults.frequency));
+    EXPECT_EQ(spec::kWindStrength.defaultValue, decimalOf(defaults.strength));
+    EXPECT_EQ(spec::kWindGustiness.defaultValue, decimalOf(defaults.gustiness));
+    EXPECT_EQ(spec::kWindFrequency.defaultValue, decimalOf(defaults.frequency));
     EXPECT_EQ(spec::kVariants.defaultValue, double(doc::kDefaultVariants));
     EXPECT_EQ(spec::kWindFrequency.rangeText(), "0.05 .. 5 Hz");
     EXPECT_EQ(spec::find("wind.strength"), &spec::kWindStrength);
