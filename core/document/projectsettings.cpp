@@ -94,18 +94,6 @@ const SettingSpec kVariants{
                       "turned and scaled; one that does is cut back from one of them. Fewer "
                       "variants generate and export faster; 0 grows every tree for its place.")};
 
-const std::vector<const SettingSpec*>& all() {
-    static const std::vector<const SettingSpec*> list{&kWindDirection, &kWindStrength,
-                                                      &kWindGustiness, &kWindFrequency, &kVariants};
-    return list;
-}
-
-const SettingSpec* find(const std::string& key) {
-    for (const SettingSpec* s : all())
-        if (key == s->key) return s;
-    return nullptr;
-}
-
 } // namespace settings
 
 } // namespace sylva::doc

@@ -40,10 +40,6 @@ extern const SettingSpec kWindGustiness;
 extern const SettingSpec kWindFrequency;
 /// A species' K: how many variants its instanced trees share ("variants" of a species entry).
 extern const SettingSpec kVariants;
-/// Every numeric setting, in the order the Properties panel shows them.
-const std::vector<const SettingSpec*>& all();
-/// The setting of \p key, or null.
-const SettingSpec* find(const std::string& key);
 } // namespace settings
 
 /// The names DocumentChange::settings uses: what a settings edit changed.

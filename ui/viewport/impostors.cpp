@@ -97,49 +97,44 @@ void Impostors::request(Key key, std::shared_ptr<const void> owner,
     mPool.setMaxThreadCount(1);
     Baking job;
     job.owner = std::move(owner);
-    job.future = QtConcurrent::run(&mPool, [source = std::move(source),
-                                            materials = std::move(materials),
-                                            reference = std::move(reference), startHeightPx]() {
-        // Not niced (the levels' worker is): a few atlases a forest, one per variant, and
-        // until they are baked its far trees draw meshes, which costs every frame; niced,
-        // they waited minutes on a loaded machine.
-        mesh::ImpostorSettings settings;
-        settings.grid = kGrid;
-        settings.cellPixels = kCell;
-        settings.supersample = 2;
-        Baked baked;
-        try {
-            baked.impostor = mesh::bakeImpostor(*source, materials, settings);
-            baked.extent = cardExtent(baked.impostor);
-            baked.lit = litImpostorAtlas(baked.impostor, crownOcclusion(*source));
-            // Where the impostor matches the tree (issue 40: a willow's impostor lost its
-            // hanging curtains where it took over): measured against the full tree, the
-            // switch moved down to where the silhouettes agree.
-            const mesh::Mesh& tree = reference ? *reference : *source;
-            float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
-            for (const glm::vec3& p : tree.positions) {
-                lo = std::min(lo, p.y);
-                hi = std::max(hi, p.y);
+    job.future =
+        QtConcurrent::run(&mPool, [source = std::move(source), materials = std::move(materials),
+                                   reference = std::move(reference), startHeightPx]() {
+            // Not niced (the levels' worker is): a few atlases a forest, one per variant, and
+            // until they are baked its far trees draw meshes, which costs every frame; niced,
+            // they waited minutes on a loaded machine.
+            mesh::ImpostorSettings settings;
+            settings.grid = kGrid;
+            settings.cellPixels = kCell;
+            settings.supersample = 2;
+            Baked baked;
+            try {
+                baked.impostor = mesh::bakeImpostor(*source, materials, settings);
+                baked.extent = cardExtent(baked.impostor);
+                baked.lit = litImpostorAtlas(baked.impostor, crownOcclusion(*source));
+                // Where the impostor matches the tree (issue 40: a willow's impostor lost its
+                // hanging curtains where it took over): measured against the full tree, the
+                // switch moved down to where the silhouettes agree.
+                const mesh::Mesh& tree = reference ? *reference : *source;
+                const float height = mesh::verticalExtent(tree);
+                const double start = std::max(startHeightPx, kFloorHeightPx);
+                // SYLVA_IMPOSTOR_FIT=0: the default switch for every atlas (tests that measure
+                // the impostor itself at sizes where it would not be drawn).
+                static const bool measure =
+                    qEnvironmentVariableIsSet("SYLVA_IMPOSTOR_FIT")
+                        ? qEnvironmentVariableIntValue("SYLVA_IMPOSTOR_FIT") != 0
+                        : true;
+                if (height > 0.0f && measure) {
+                    baked.fit = mesh::impostorSwitchHeight(tree, baked.impostor, double(height),
+                                                           start, 0.9, kFloorHeightPx);
+                } else {
+                    baked.fit.heightPx = start;
+                }
+            } catch (...) {
+                baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
             }
-            const double start = std::max(startHeightPx, kFloorHeightPx);
-            // SYLVA_IMPOSTOR_FIT=0: the default switch for every atlas (tests that measure
-            // the impostor itself at sizes where it would not be drawn).
-            static const bool measure =
-                qEnvironmentVariableIsSet("SYLVA_IMPOSTOR_FIT")
-                    ? qEnvironmentVariableIntValue("SYLVA_IMPOSTOR_FIT") != 0
-                    : true;
-            if (hi > lo && measure) {
-                baked.fit = mesh::impostorSwitchHeight(tree, baked.impostor, double(hi - lo), start,
-                                                       0.9, kFloorHeightPx);
-                baked.later = baked.fit.heightPx < start;
-            } else {
-                baked.fit.heightPx = start;
-            }
-        } catch (...) {
-            baked.impostor = mesh::Impostor{}; // an empty atlas: the tree keeps its mesh
-        }
-        return baked;
-    });
+            return baked;
+        });
     mBaking.emplace(key, std::move(job));
 }
 
@@ -205,7 +200,6 @@ std::size_t Impostors::collect() {
             card.radius = imp.radius;
             card.extent = baked.extent;
             card.fit = baked.fit;
-            card.later = baked.later;
             card.lit = upload(baked.lit);
             card.depth = upload(imp.depth);
             mGl->glBindTexture(GL_TEXTURE_2D, 0);
@@ -222,14 +216,12 @@ double Impostors::switchHeightPx(Key key) const {
     return it == mCards.end() ? -1.0 : it->second.fit.heightPx;
 }
 
-const mesh::ImpostorSwitch* Impostors::switchOf(Key key) const {
-    const auto it = mCards.find(key);
-    return it == mCards.end() ? nullptr : &it->second.fit;
-}
-
 std::size_t Impostors::switchedLater() const {
-    return std::size_t(std::count_if(mCards.begin(), mCards.end(),
-                                     [](const auto& entry) { return entry.second.later; }));
+    return std::size_t(std::count_if(mCards.begin(), mCards.end(), [](const auto& entry) {
+        // The first height tried is the default switch.
+        const mesh::ImpostorSwitch& fit = entry.second.fit;
+        return !fit.tried.empty() && fit.heightPx < fit.tried.front().first;
+    }));
 }
 
 void Impostors::retain(const std::function<bool(Key)>& keep) {

@@ -65,8 +65,6 @@ public:
     /// The tree height on screen (pixels) under which the atlas of \p key is drawn (measured
     /// when it was baked); a negative value while it is not baked.
     double switchHeightPx(Key key) const;
-    /// What that measure found for \p key (empty while it is not baked).
-    const mesh::ImpostorSwitch* switchOf(Key key) const;
     /// Impostors whose silhouette does not match their tree where the default switch would
     /// draw them, and so switch later (for View ▸ Statistics and the tests).
     std::size_t switchedLater() const;
@@ -125,14 +123,12 @@ private:
         /// The part of the card any view covers (cardExtent()).
         glm::vec3 extent{1.0f, -1.0f, 1.0f};
         mesh::ImpostorSwitch fit; ///< where it may take over (mesh::impostorSwitchHeight)
-        bool later = false;       ///< fit.heightPx is under the default switch
     };
     struct Baked {
         mesh::Impostor impostor;
         Image lit; ///< litImpostorAtlas()
         glm::vec3 extent{1.0f, -1.0f, 1.0f};
         mesh::ImpostorSwitch fit;
-        bool later = false;
     };
     struct Instance {
         glm::mat4 model;

@@ -10,6 +10,7 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include "engine/mesh/impostor.h"
 #include "engine/mesh/lod.h"
 #include "engine/mesh/mesh.h"
 
@@ -31,15 +32,6 @@ constexpr double kReuseFactor = 1.25;
 constexpr int kLevelResolution[ViewLod::kLevels] = {0, 6, 4, 3};
 // Trees handed to the worker at a time: levels show up while the rest are still made.
 constexpr std::size_t kChunk = 8;
-
-float heightOf(const mesh::Mesh& m) {
-    float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
-    for (const glm::vec3& p : m.positions) {
-        lo = std::min(lo, p.y);
-        hi = std::max(hi, p.y);
-    }
-    return hi > lo ? hi - lo : 0.0f;
-}
 
 // Level \p level of a tree: the engine's camera LOD for the level's distance. Its first band
 // is the species' own, the second the level's resolution from just past 0 m, so every level
@@ -173,7 +165,7 @@ void ViewLod::startNext() {
             Built built;
             built.full = job.full.get();
             built.levels[0] = job.full;
-            const double height = std::max(0.1f, heightOf(*job.full));
+            const double height = std::max(0.1f, mesh::verticalExtent(*job.full));
             for (int k = 1; k < kImpostorLevel; ++k) {
                 const double distance = kLevelHeights[k] * height;
                 // Not much coarser than what the project's camera LOD already made: reuse.

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <vector>
 
 #include "engine/mesh/raster.h"
@@ -208,6 +209,15 @@ Mesh impostorCard(const Impostor& imp) {
     m.indices = {0, 1, 2, 0, 2, 3};
     m.submeshes.push_back({"impostor", 0, 6});
     return m;
+}
+
+float verticalExtent(const Mesh& mesh) {
+    float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
+    for (const glm::vec3& p : mesh.positions) {
+        lo = std::min(lo, p.y);
+        hi = std::max(hi, p.y);
+    }
+    return hi > lo ? hi - lo : 0.0f;
 }
 
 void boundingSphere(const Mesh& mesh, glm::vec3& centre, float& radius) {

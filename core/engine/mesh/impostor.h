@@ -89,6 +89,9 @@ Mesh impostorCard(const Impostor& impostor);
 
 /// Bounding sphere of \p mesh (the centre of its bounds, the farthest vertex from it).
 void boundingSphere(const Mesh& mesh, glm::vec3& centre, float& radius);
+/// The height of \p mesh's bounds along y (0 for an empty mesh): a tree's height, to which its
+/// size on screen refers.
+float verticalExtent(const Mesh& mesh);
 
 /// One orthographic view of \p mesh from \p direction as the baker takes it: \p pixels² RGBA
 /// (albedo, coverage as alpha from \p supersample² samples a pixel), the square

@@ -918,8 +918,6 @@ TEST_F(DocumentTest, SettingsSpecIsWhatTheDocumentAndTheFileAccept) {
     EXPECT_EQ(spec::kWindFrequency.defaultValue, decimalOf(defaults.frequency));
     EXPECT_EQ(spec::kVariants.defaultValue, double(doc::kDefaultVariants));
     EXPECT_EQ(spec::kWindFrequency.rangeText(), "0.05 .. 5 Hz");
-    EXPECT_EQ(spec::find("wind.strength"), &spec::kWindStrength);
-    EXPECT_EQ(spec::find("no.such"), nullptr);
     struct Field {
         const doc::SettingSpec* spec;
         float wind::WindSettings::*member;

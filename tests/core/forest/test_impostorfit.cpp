@@ -41,12 +41,7 @@ Grown grow(const std::string& name) {
         mesh::treeMeshSettingsFromParams(g.findNode(g.output)->params, 1, g.baseDir);
     Grown out;
     out.full = mesh::buildTreeMesh(*grown.skeleton, settings);
-    float lo = 1e9f, hi = -1e9f;
-    for (const glm::vec3& p : out.full.positions) {
-        lo = std::min(lo, p.y);
-        hi = std::max(hi, p.y);
-    }
-    out.height = double(hi - lo);
+    out.height = double(mesh::verticalExtent(out.full));
     // The viewport's coarse level (ViewLod's level 2, buildLevel()).
     const int base = settings.lod.bands.empty() ? 8 : settings.lod.bands.front().resolution;
     settings.lod.bands = {{0.0, base, 1.0}, {1e-3, std::min(base, 4), 1.0}};
