@@ -64,6 +64,16 @@ private Q_SLOTS:
         tools.setTool(ToolController::Tool::Erase);
         QVERIFY(eraseAction->isChecked());
         QVERIFY(!brushAction->isChecked());
+        // The bar greys out the options the current tool does not read.
+        QVERIFY(bar.findChild<QDoubleSpinBox*>(QStringLiteral("brushRadius"))->isEnabled());
+        QVERIFY(!bar.findChild<QLineEdit*>(QStringLiteral("brushMix"))->isEnabled());
+        QVERIFY(!bar.findChild<QComboBox*>(QStringLiteral("toolSpecies"))->isEnabled());
+        tools.setTool(ToolController::Tool::Branch);
+        QVERIFY(!bar.findChild<QDoubleSpinBox*>(QStringLiteral("brushRadius"))->isEnabled());
+        tools.setTool(ToolController::Tool::Brush);
+        QVERIFY(bar.findChild<QLineEdit*>(QStringLiteral("brushMix"))->isEnabled());
+        QVERIFY(bar.findChild<QComboBox*>(QStringLiteral("toolSpecies"))->isEnabled());
+        tools.setTool(ToolController::Tool::Erase);
 
         // The species list is the document's.
         document.open(QDir(QStringLiteral(SYLVA_TEST_DATA_DIR))

@@ -74,9 +74,11 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
     connect(&mTools, &ToolController::toolChanged, this, [this](ToolController::Tool tool) {
         for (QAction* a : mToolGroup->actions())
             a->setChecked(a->objectName() == QStringLiteral("tool_") + ToolController::name(tool));
+        showOptionsOf(tool);
     });
     addSeparator();
-    addWidget(new QLabel(tr(" Species: "), this));
+    auto* speciesLabel = new QLabel(tr(" Species: "), this);
+    addWidget(speciesLabel);
     mSpecies = new QComboBox(this);
     mSpecies->setObjectName(QStringLiteral("toolSpecies"));
     mSpecies->setToolTip(tr("The species the Place tool plants, and the Brush when no mix "
@@ -90,7 +92,8 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
     connect(&mDocument, &doc::Document::changed, this, [this](const doc::DocumentChange& c) {
         if (c.what & (doc::DocumentChange::Species | doc::DocumentChange::Reset)) syncSpecies();
     });
-    addWidget(new QLabel(tr(" Radius: "), this));
+    auto* radiusLabel = new QLabel(tr(" Radius: "), this);
+    addWidget(radiusLabel);
     mRadius = new QDoubleSpinBox(this);
     mRadius->setObjectName(QStringLiteral("brushRadius"));
     mRadius->setRange(0.5, 100);
@@ -98,7 +101,8 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
     mRadius->setSuffix(tr(" m"));
     mRadius->setToolTip(tr("Brush and eraser radius, metres"));
     addWidget(mRadius);
-    addWidget(new QLabel(tr(" Density: "), this));
+    auto* densityLabel = new QLabel(tr(" Density: "), this);
+    addWidget(densityLabel);
     mDensity = new QDoubleSpinBox(this);
     mDensity->setObjectName(QStringLiteral("brushDensity"));
     mDensity->setRange(0.01, 50);
@@ -107,7 +111,8 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
     mDensity->setToolTip(tr("Trees tried per 100 m² under the brush; spacing rules keep "
                             "trunks out of each other's crowns and out of obstacles"));
     addWidget(mDensity);
-    addWidget(new QLabel(tr(" Mix: "), this));
+    auto* mixLabel = new QLabel(tr(" Mix: "), this);
+    addWidget(mixLabel);
     mMix = new QLineEdit(this);
     mMix->setObjectName(QStringLiteral("brushMix"));
     mMix->setPlaceholderText(tr("e.g. alder 70, ternary 30"));
@@ -122,6 +127,21 @@ ToolOptionsBar::ToolOptionsBar(ToolController& tools, doc::Document& document, Q
     connect(mMix, &QLineEdit::textChanged, this, [this] { applyBrushSettings(false); });
     // The brush paints what the bar shows from the first stroke, untouched fields included.
     syncSpecies();
+    mSpeciesRow = {speciesLabel, mSpecies};
+    mRadiusRow = {radiusLabel, mRadius};
+    mBrushRows = {densityLabel, mDensity, mixLabel, mMix};
+    showOptionsOf(mTools.tool());
+}
+
+void ToolOptionsBar::showOptionsOf(ToolController::Tool tool) {
+    using T = ToolController::Tool;
+    const auto enable = [](const QList<QWidget*>& row, bool on) {
+        for (QWidget* w : row)
+            w->setEnabled(on);
+    };
+    enable(mSpeciesRow, tool == T::Place || tool == T::Brush);
+    enable(mRadiusRow, tool == T::Brush || tool == T::Erase);
+    enable(mBrushRows, tool == T::Brush);
 }
 
 void ToolOptionsBar::syncSpecies() {

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include <QList>
 #include <QString>
 #include <QToolBar>
 
@@ -44,6 +45,10 @@ private:
     /// (failed()) only when \p reportErrors.
     void applyBrushSettings(bool reportErrors = true);
     void syncSpecies();
+    /// Enables the options \p tool uses (the species for Place and Brush, the radius for Brush
+    /// and Erase, density and mix for Brush) and greys out the rest, so that the bar says
+    /// which of its fields the current tool reads.
+    void showOptionsOf(ToolController::Tool tool);
 
     ToolController& mTools;
     doc::Document& mDocument;
@@ -52,6 +57,8 @@ private:
     QDoubleSpinBox* mRadius = nullptr;
     QDoubleSpinBox* mDensity = nullptr;
     QLineEdit* mMix = nullptr;
+    /// Each option's label and field, greyed out together.
+    QList<QWidget*> mSpeciesRow, mRadiusRow, mBrushRows;
 };
 
 } // namespace sylva::ui
