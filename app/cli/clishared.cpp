@@ -1,7 +1,9 @@
 #include "clishared.h"
 #include "cliargs.h"
 
+#include "document/projectsettings.h"
 #include "engine/util/error.h"
+#include "engine/wind/windmodel.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -25,20 +27,50 @@ mesh::Season parseSeasonOption(const std::string& name) {
     }
 }
 
-const std::vector<std::string> kWindValueOptions = {
-    "--wind-direction", "--wind-strength", "--wind-gustiness", "--wind-frequency",
-    "--clip-length",    "--clip-fps",      "--bones"};
-
 namespace {
 
-float numberOption(const Args& args, const char* name, float fallback) {
+/// The project's wind settings a command-line option overrides: the option's name and range are
+/// the settings spec's (document/projectsettings), so the usage, the parser and the editor's
+/// Properties agree.
+struct WindSettingOption {
+    const doc::SettingSpec& spec;
+    float wind::WindSettings::*setting;
+    std::optional<float> doc::WindOverride::*override;
+};
+const WindSettingOption kWindSettingOptions[] = {
+    {doc::settings::kWindStrength, &wind::WindSettings::strength, &doc::WindOverride::strength},
+    {doc::settings::kWindGustiness, &wind::WindSettings::gustiness, &doc::WindOverride::gustiness},
+    {doc::settings::kWindFrequency, &wind::WindSettings::frequency, &doc::WindOverride::frequency}};
+
+std::vector<std::string> windValueOptions() {
+    std::vector<std::string> names{"--wind-direction"};
+    for (const WindSettingOption& o : kWindSettingOptions)
+        names.emplace_back(o.spec.cliOption);
+    names.insert(names.end(), {"--clip-length", "--clip-fps", "--bones"});
+    return names;
+}
+
+std::optional<float> numberOption(const Args& args, const char* name) {
     const auto text = args.value(name);
-    if (!text) return fallback;
+    if (!text) return std::nullopt;
     char* end = nullptr;
     const double v = std::strtod(text->c_str(), &end);
     if (end == text->c_str() || *end != '\0')
         throw UsageError(std::string(name) + " expects a number, got '" + *text + "'");
     return static_cast<float>(v);
+}
+
+/// A setting's option, checked against the spec's range: InvalidInput "--wind-strength:
+/// wind.strength must be in [0, 2], got 3" (exit status 1, as every value out of range).
+std::optional<float> settingOption(const Args& args, const doc::SettingSpec& spec) {
+    const std::optional<float> v = numberOption(args, spec.cliOption);
+    if (!v) return v;
+    try {
+        spec.check(*v);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(std::string(spec.cliOption) + ": " + e.what());
+    }
+    return v;
 }
 
 std::optional<glm::vec3> directionOption(const Args& args) {
@@ -53,30 +85,26 @@ std::optional<glm::vec3> directionOption(const Args& args) {
 
 } // namespace
 
+const std::vector<std::string> kWindValueOptions = windValueOptions();
+
 doc::WindOverride windOverride(const Args& args) {
     doc::WindOverride o;
     o.direction = directionOption(args);
-    auto number = [&args](const char* name, std::optional<float>& into) {
-        if (args.value(name)) into = numberOption(args, name, 0.0f);
-    };
-    number("--wind-strength", o.strength);
-    number("--wind-gustiness", o.gustiness);
-    number("--wind-frequency", o.frequency);
-    number("--clip-length", o.clipLength);
-    number("--clip-fps", o.clipFps);
+    for (const WindSettingOption& setting : kWindSettingOptions)
+        o.*setting.override = settingOption(args, setting.spec);
+    o.clipLength = numberOption(args, "--clip-length");
+    o.clipFps = numberOption(args, "--clip-fps");
     if (const auto bones = args.integer("--bones", 2, 1024)) o.bones = static_cast<int>(*bones);
     return o;
 }
 
 exporter::WindExportOptions windOptions(const Args& args) {
     exporter::WindExportOptions o;
-    auto number = [&](const char* name, float& into) { into = numberOption(args, name, into); };
     if (const auto d = directionOption(args)) o.wind.direction = *d;
-    number("--wind-strength", o.wind.strength);
-    number("--wind-gustiness", o.wind.gustiness);
-    number("--wind-frequency", o.wind.frequency);
-    number("--clip-length", o.wind.period);
-    number("--clip-fps", o.rig.fps);
+    for (const WindSettingOption& setting : kWindSettingOptions)
+        if (const auto v = settingOption(args, setting.spec)) o.wind.*setting.setting = *v;
+    if (const auto v = numberOption(args, "--clip-length")) o.wind.period = *v;
+    if (const auto v = numberOption(args, "--clip-fps")) o.rig.fps = *v;
     if (const auto bones = args.integer("--bones", 2, 1024))
         o.rig.maxBones = static_cast<int>(*bones);
     wind::validate(o.wind);

@@ -26,7 +26,8 @@ mesh::Season parseSeasonOption(const std::string& name);
 extern const std::vector<std::string> kWindValueOptions;
 /// `--wind-direction x,y,z`, `--wind-strength`, `--wind-gustiness`, `--wind-frequency`,
 /// `--clip-length`, `--clip-fps`, `--bones` (docs/cli.md); UsageError for a malformed value,
-/// InvalidInput (with the range) for one out of range.
+/// InvalidInput (with the range) for one out of range: the wind settings' ranges are the project
+/// settings' spec (doc::settings), each checked as its option is read.
 exporter::WindExportOptions windOptions(const Args& args);
 /// The same options as settings over a project's wind (`sylva-cli forest --wind`: the project's
 /// wind is the default, each flag given overrides its setting); UsageError as windOptions.

@@ -56,7 +56,8 @@ const SettingSpec kWindStrength{
     0.1,
     2,
     QT_TRANSLATE_NOOP("sylva::doc::ProjectSettings",
-                      "0 calm, 1 strong, 2 storm: trees bend with its square")};
+                      "0 calm, 1 strong, 2 storm: trees bend with its square"),
+    "--wind-strength"};
 const SettingSpec kWindGustiness{
     "wind.gustiness",
     QT_TRANSLATE_NOOP("sylva::doc::ProjectSettings", "Gustiness"),
@@ -67,7 +68,8 @@ const SettingSpec kWindGustiness{
     0.05,
     2,
     QT_TRANSLATE_NOOP("sylva::doc::ProjectSettings",
-                      "0 a steady wind, 1 gusts that double the pressure")};
+                      "0 a steady wind, 1 gusts that double the pressure"),
+    "--wind-gustiness"};
 const SettingSpec kWindFrequency{
     "wind.frequency",
     QT_TRANSLATE_NOOP("sylva::doc::ProjectSettings", "Sway frequency"),
@@ -78,7 +80,8 @@ const SettingSpec kWindFrequency{
     0.05,
     2,
     QT_TRANSLATE_NOOP("sylva::doc::ProjectSettings",
-                      "How often the trunks sway; limbs, branches and leaves go faster")};
+                      "How often the trunks sway; limbs, branches and leaves go faster"),
+    "--wind-frequency"};
 const SettingSpec kVariants{
     "species.variants",
     QT_TRANSLATE_NOOP("sylva::doc::ProjectSettings", "Variants"),

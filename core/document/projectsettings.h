@@ -22,6 +22,9 @@ struct SettingSpec {
     double step = 1.0;
     int decimals = 0;
     const char* help;
+    /// The command-line option that overrides it ("--wind-strength"); nullptr where none does
+    /// (the wind's direction is given as a vector there, not in degrees).
+    const char* cliOption = nullptr;
 
     /// InvalidInput "<key> must be in [min, max], got <value>" unless min <= value <= max.
     void check(double value) const;

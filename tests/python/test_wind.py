@@ -3,6 +3,7 @@ animation (read from the GLB's own JSON chunk), the same bytes as `sylva-cli tre
 settings checked with their ranges; the project's wind is readable and settable."""
 import json
 import pathlib
+import re
 import struct
 
 import pytest
@@ -58,6 +59,26 @@ def test_wind_settings_are_checked(presets, tmp_path):
     with pytest.raises(ValueError, match="wind=True"):
         tree.export(tmp_path / "x.glb", strength=1)
     assert not (tmp_path / "x.glb").exists()
+
+
+def test_cli_wind_flags_take_the_settings_range(presets, tmp_path, cli):
+    """The CLI's wind options are checked against the project settings' spec, the range the
+    editor's Properties and Python's project wind accept, and each is named with its option."""
+    out = tmp_path / "x.glb"
+    demo = presets.parent / "resources" / "demo" / "forest.sylva"
+    cases = [("--wind-strength", 3, r"--wind-strength: wind.strength must be in \[0, 2\], got 3"),
+             ("--wind-gustiness", 1.5, r"--wind-gustiness: wind.gustiness must be in \[0, 1\]"),
+             ("--wind-frequency", 0, r"--wind-frequency: wind.frequency must be in \[0.05, 5\]")]
+    for flag, bad, text in cases:
+        for command in (["tree", presets / "ternary-tree.json"], ["forest", demo]):
+            r = cli(*command, "-o", out, "--wind", flag, bad, check=False)
+            assert r.returncode == 1, r.stderr
+            assert re.search(text, r.stderr), r.stderr
+            assert not out.exists()
+    # Both ends of each range are accepted.
+    cli("tree", presets / "ternary-tree.json", "-o", out, "--wind", "--wind-strength", 2,
+        "--wind-gustiness", 0, "--wind-frequency", 5)
+    assert out.exists()
 
 
 def test_project_wind(tmp_path):
