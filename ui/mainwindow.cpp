@@ -119,6 +119,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     mTools = new ToolController(
         *mDocument, *mViewport,
         [this]() -> const GenerationResult& { return mGenerator->result(); }, this);
+    mWorkbench->editBranchesWith(*mTools, *mGenerator); // the Branch tool in its preview
     // The orbit keeps the eye above the terrain and the obstacles under it.
     mViewport->camera().setGround([tools = QPointer<ToolController>(mTools)](float x, float z) {
         return tools ? tools->surfaceHeight(x, z) : 0.0f;

@@ -13,6 +13,7 @@
 #include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/nodegraphview.h"
 #include "ui/nodes/parameterpanel.h"
+#include "ui/speciesbranchediting.h"
 #include "ui/viewport/picking.h"
 #include "ui/viewport/viewport.h"
 
@@ -152,7 +153,8 @@ QString SpeciesWorkbench::species() const {
 bool SpeciesWorkbench::eventFilter(QObject* watched, QEvent* event) {
     if (watched == mPreviewView && event->type() == QEvent::MouseButtonPress) {
         mPressAt = static_cast<QMouseEvent*>(event)->position().toPoint();
-    } else if (watched == mPreviewView && event->type() == QEvent::MouseButtonRelease) {
+    } else if (watched == mPreviewView && event->type() == QEvent::MouseButtonRelease &&
+               !mShowingTree) {
         auto* m = static_cast<QMouseEvent*>(event);
         // A click, not the end of an orbit drag.
         if (m->button() == Qt::LeftButton &&
@@ -326,10 +328,32 @@ void SpeciesWorkbench::refillSpecies() {
     if (!names.contains(current)) setSpecies(names.isEmpty() ? QString() : names.front());
 }
 
+void SpeciesWorkbench::editBranchesWith(ToolController& tools, DocumentGenerator& generator) {
+    if (!mBranchEditing)
+        mBranchEditing = new SpeciesBranchEditing(mDocument, *this, tools, generator);
+}
+
+void SpeciesWorkbench::showTree(const ViewTree* tree, bool frame) {
+    if (tree) {
+        if (!mShowingTree) mPreviewView->setMesh(nullptr, false);
+        mShowingTree = true;
+        mPreviewView->setTrees({*tree}, frame);
+        mPreviewView->setToolTip(tr("Branch tool: click a branch of the tree to select it, drag it "
+                                    "to bend it, Delete prunes it"));
+        return;
+    }
+    if (!mShowingTree) return;
+    mShowingTree = false;
+    mPreviewView->setTrees({}, false);
+    mPreviewView->setToolTip(tr("Click a branch or a leaf to select the node that grew it"));
+    mFramed = false; // the species' tree framed again
+    onPreviewFinished();
+}
+
 void SpeciesWorkbench::onPreviewFinished() {
     const PreviewResult& r = mPreview->result();
     mScene->setRuns(r.runs, r.errorNode, r.error);
-    if (r.mesh) {
+    if (r.mesh && !mShowingTree) {
         // Frame the first tree of a species, and again when an edit (a preset, a larger crown)
         // makes the tree outgrow what was framed; a smaller tree (the generations slider
         // stepping back) keeps the view, so stepping does not jump.
@@ -359,7 +383,7 @@ void SpeciesWorkbench::onPreviewFinished() {
                 tr("Preview failed (%1) — showing the last good tree: %2").arg(where, r.error));
         } else {
             // Another species' tree must not stand in for this one.
-            mPreviewView->setMesh(nullptr, false);
+            if (!mShowingTree) mPreviewView->setMesh(nullptr, false);
             mPreviewError->setText(tr("Preview failed (%1): %2").arg(where, r.error));
         }
         mPreviewError->show();

@@ -19,8 +19,12 @@ class GrammarEditor;
 class NodeGraphScene;
 class NodeGraphView;
 class ParameterPanel;
+class DocumentGenerator;
+class SpeciesBranchEditing;
 class SpeciesPreview;
+class ToolController;
 class Viewport;
+struct ViewTree;
 
 /// Where a species is tuned: its node graph, the grammar of the selected lsystem node, and a live
 /// preview of one tree with each node's compute time; the selected node's parameters are in a
@@ -47,6 +51,16 @@ public:
     /// and, for an L-system, the rule behind the nearest branch is marked. The scene's tree may be
     /// adapted to obstacles; the preview's is not, so a bent branch is matched where it grew.
     void showBranchOf(const QString& species, std::uint64_t seed, const glm::vec3& local);
+
+    /// Lets the window's Branch tool edit a hand-placed tree in the preview (SpeciesBranchEditing:
+    /// the tools' current tool, the document's generation for the tree as drawn).
+    void editBranchesWith(ToolController& tools, DocumentGenerator& generator);
+    SpeciesBranchEditing* branchEditing() const { return mBranchEditing; }
+    /// Shows \p tree (a project's tree as the scene draws it, in its place) in the preview
+    /// instead of the species' tree, framed when \p frame; null: the species' tree again.
+    /// Clicks then belong to the preview's tool, not to node picking.
+    void showTree(const ViewTree* tree, bool frame);
+    bool showsTree() const { return mShowingTree; }
 
     NodeGraphScene* graphScene() const { return mScene; }
     NodeGraphView* graphView() const { return mView; }
@@ -90,6 +104,8 @@ private:
     glm::vec3 mFramedLo{0.0f}, mFramedHi{0.0f}; ///< the bounds the preview was last framed on
     QPoint mPressAt; ///< where a click on the preview began (a drag orbits instead)
     std::optional<glm::vec3> mPendingBranch; ///< a scene click waiting for its tree's preview
+    SpeciesBranchEditing* mBranchEditing = nullptr;
+    bool mShowingTree = false; ///< showTree(): a project's tree, not the species' preview
 };
 
 } // namespace sylva::ui

@@ -109,6 +109,9 @@ class SylvaSettings(bpy.types.PropertyGroup):
                                                     "only the horizontal part counts)")
     wind_bones: IntProperty(name="Bones", default=64, min=2, max=1024,
                             description="At most this many bones in the tree's armature")
+    project_file: StringProperty(name="Project", subtype="FILE_PATH",
+                                 description="A Sylva project (.sylva) saved by the editor: "
+                                             "its trees with their branch edits")
     wind_clip: FloatProperty(name="Clip length", default=4.0, min=0.5, max=600.0, unit="TIME",
                              description="Seconds after which the wind action loops")
 
@@ -187,6 +190,33 @@ class SYLVA_OT_grow_forest(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class SYLVA_OT_import_project(bpy.types.Operator):
+    bl_idname = "sylva.import_project"
+    bl_label = "Import project"
+    bl_description = ("Build the trees of a Sylva project file, with its hand edits of single "
+                      "branches (replaces the last import: press again after the project "
+                      "changed)")
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        s = context.scene.sylva
+        try:
+            forest = build.import_project(import_sylva(), context, s.project_file, s)
+        except (ImportError, ValueError, OSError) as e:
+            self.report({"ERROR"}, str(e))
+            return {"CANCELLED"}
+        except KeyboardInterrupt:
+            self.report({"WARNING"}, "interrupted")
+            return {"CANCELLED"}
+        st = forest.stats
+        message = (f"{st['trees']} trees, {st['triangles']} triangles, "
+                   f"{st['branch_edits']} branch edits applied")
+        if st.get("orphaned_edits"):
+            message += f", {st['orphaned_edits']} orphaned (their branch is gone)"
+        self.report({"WARNING"} if st.get("orphaned_edits") else {"INFO"}, message)
+        return {"FINISHED"}
+
+
 class SYLVA_PT_panel(bpy.types.Panel):
     bl_label = "Sylva"
     bl_space_type = "VIEW_3D"
@@ -228,6 +258,10 @@ class SYLVA_PT_panel(bpy.types.Panel):
         box.prop(s, "instancing")
         box.prop(s, "auto_regrow")
         box.operator(SYLVA_OT_grow_forest.bl_idname, icon="OUTLINER_COLLECTION")
+        box = layout.box()
+        box.label(text="Project")
+        box.prop(s, "project_file")
+        box.operator(SYLVA_OT_import_project.bl_idname, icon="IMPORT")
 
 
 _regrow_pending = False
@@ -274,7 +308,7 @@ def regrow_pending():
 
 
 CLASSES = (SylvaSpeciesCount, SylvaSettings, SYLVA_OT_add_species, SYLVA_OT_remove_species,
-           SYLVA_OT_grow_tree, SYLVA_OT_grow_forest, SYLVA_PT_panel)
+           SYLVA_OT_grow_tree, SYLVA_OT_grow_forest, SYLVA_OT_import_project, SYLVA_PT_panel)
 
 
 def register():

@@ -7,6 +7,7 @@ import bpy
 import numpy as np
 
 FOREST_COLLECTION = "Sylva Forest"
+PROJECT_COLLECTION = "Sylva Project"  # import_project's trees
 
 
 def to_blender(p):
@@ -201,11 +202,13 @@ def wind_tree_objects(context, tree, settings, location):
     return armature
 
 
-def forest_collection(scene):
-    """The forest's collection, emptied (its meshes removed too), or a new one."""
-    col = bpy.data.collections.get(FOREST_COLLECTION)
+def forest_collection(scene, name=None):
+    """The forest's collection (or the one called \p name), emptied (its meshes removed too),
+    or a new one."""
+    name = name or FOREST_COLLECTION
+    col = bpy.data.collections.get(name)
     if col is None:
-        col = bpy.data.collections.new(FOREST_COLLECTION)
+        col = bpy.data.collections.new(name)
         scene.collection.children.link(col)
     actions = set()
     for obj in list(col.objects):
@@ -267,6 +270,40 @@ def grow_forest(sylva, context, settings):
     if settings.wind:
         wind_forest_objects(context, forest, settings, col)
         return forest
+    forest_objects(sylva, forest, col, settings.lod)
+    return forest
+
+
+def import_project(sylva, context, path, settings):
+    """Builds the Sylva project file \p path (a .sylva, as the editor saved it: its species,
+    trees, domains, obstacles, camera and each hand-placed tree's branch edits) as `sylva-cli
+    forest` builds it, and puts its trees in the "Sylva Project" collection, replacing those of
+    the last import: importing again after the project changed is its regrow. The branch
+    edits are the project's own, applied by the engine after growth, so every import keeps
+    them. Adapt, Level of detail (from the project's camera) and Share variants are \p settings'.
+    Returns the sylva.Forest."""
+    path = bpy.path.abspath(path)
+    if not path:
+        raise ValueError("choose a Sylva project file (.sylva)")
+    project = sylva.load_project(path)
+    wm = context.window_manager
+    wm.progress_begin(0, 100)
+    try:
+        forest = project.build_forest(progress=lambda f, stage: wm.progress_update(int(f * 100)),
+                                      lod=settings.lod, adapt=settings.adapt,
+                                      instancing=settings.instancing)
+    finally:
+        wm.progress_end()
+    col = forest_collection(context.scene, PROJECT_COLLECTION)
+    forest_objects(sylva, forest, col, settings.lod)
+    for obj in col.objects:
+        obj["sylva_project"] = path
+    return forest
+
+
+def forest_objects(sylva, forest, col, lod):
+    """One object per tree of \p forest in \p col (Y-up metres to Blender's Z-up), each tagged
+    with its ids; without \p lod, instanced trees link their variant's one mesh."""
     mats = materials(sylva)
     variants = forest.variants
     shared = {}  # variant index -> its one Blender mesh, linked by every tree that shows it
@@ -274,7 +311,7 @@ def grow_forest(sylva, context, settings):
         # Without the camera's LOD an instanced tree shows its variant's very mesh: a linked
         # duplicate (one mesh datablock per variant), so 10,000 trees stay light. With it, each
         # tree has its own level of detail and its own mesh.
-        if tree.instanced and not settings.lod:
+        if tree.instanced and not lod:
             data = shared.get(tree.variant)
             if data is None:
                 v = variants[tree.variant]
@@ -288,7 +325,6 @@ def grow_forest(sylva, context, settings):
         obj.rotation_euler = (0.0, 0.0, tree.rotation)  # about Sylva's +Y = Blender's +Z
         obj.scale = (tree.scale,) * 3
         _tag_forest_tree(obj, tree, variants)
-    return forest
 
 
 def wind_forest_objects(context, forest, settings, col):

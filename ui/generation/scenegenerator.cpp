@@ -280,6 +280,10 @@ GenerationResult generateProject(const doc::Project& project, const QString& pat
                                        : stats.unique + stats.variants);
         for (const auto& [stage, ms] : stats.wallMs)
             result.timingsMs[stage] = ms;
+        // Inside "trees": the CPU time of growing (or re-applying branch edits), adapting and
+        // meshing, summed over the workers.
+        for (const auto& [stage, ms] : stats.cpuMs)
+            result.timingsMs["trees_" + stage] = ms;
         result.speciesName =
             QObject::tr("%1 (%n trees)", nullptr, int(stats.trees)).arg(result.speciesName);
     });

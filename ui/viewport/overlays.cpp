@@ -44,15 +44,61 @@ void Overlays::drawBand(QOpenGLShaderProgram& program, const QRect& band, const 
     drawOnTop(program, data, pixels, 6);
 }
 
+std::vector<float> screenBands(const std::vector<OverlayLine>& lines, const glm::mat4& viewProj,
+                               const glm::vec2& pixels) {
+    std::vector<float> out;
+    if (pixels.x < 1.0f || pixels.y < 1.0f) return out;
+    for (const OverlayLine& l : lines) {
+        if (l.width <= 1.0f) continue;
+        glm::vec4 ca = viewProj * glm::vec4(l.a, 1.0f), cb = viewProj * glm::vec4(l.b, 1.0f);
+        // In front of the near plane where z > -w: cut what lies behind it.
+        const float da = ca.z + ca.w, db = cb.z + cb.w;
+        if (da <= 0.0f && db <= 0.0f) continue;
+        if (da < 0.0f) ca += (cb - ca) * (da / (da - db));
+        if (db < 0.0f) cb += (ca - cb) * (db / (db - da));
+        if (ca.w <= 1e-9f || cb.w <= 1e-9f) continue;
+        const glm::vec3 na = glm::vec3(ca) / ca.w, nb = glm::vec3(cb) / cb.w;
+        const glm::vec2 sa = (glm::vec2(na) * 0.5f + 0.5f) * pixels;
+        const glm::vec2 sb = (glm::vec2(nb) * 0.5f + 0.5f) * pixels;
+        const glm::vec2 d = sb - sa;
+        const float length = glm::length(d);
+        const glm::vec2 along = length > 1e-6f ? d / length : glm::vec2(1.0f, 0.0f);
+        const glm::vec2 half = along * (0.5f * l.width);
+        const glm::vec2 across(-half.y, half.x);
+        auto vertex = [&out, &pixels, &l](const glm::vec2& px, float z) {
+            const glm::vec2 ndc = px / pixels * 2.0f - 1.0f;
+            out.insert(out.end(), {ndc.x, ndc.y, z, l.color.x, l.color.y, l.color.z, l.color.w});
+        };
+        const glm::vec2 a0 = sa - half - across, a1 = sa - half + across;
+        const glm::vec2 b0 = sb + half - across, b1 = sb + half + across;
+        vertex(a0, na.z);
+        vertex(b0, nb.z);
+        vertex(b1, nb.z);
+        vertex(a0, na.z);
+        vertex(b1, nb.z);
+        vertex(a1, na.z);
+    }
+    return out;
+}
+
 void Overlays::drawLines(QOpenGLShaderProgram& program, const std::vector<OverlayLine>& lines,
                          const glm::mat4& viewProj) {
     if (lines.empty()) return;
     std::vector<float> data;
     data.reserve(lines.size() * 14);
     for (const OverlayLine& l : lines)
-        for (const glm::vec3& p : {l.a, l.b})
-            data.insert(data.end(), {p.x, p.y, p.z, l.color.x, l.color.y, l.color.z, l.color.w});
-    drawOnTop(program, data, viewProj, 0);
+        if (l.width <= 1.0f)
+            for (const glm::vec3& p : {l.a, l.b})
+                data.insert(data.end(),
+                            {p.x, p.y, p.z, l.color.x, l.color.y, l.color.z, l.color.w});
+    // Wide ones as bands in the size of what is drawn to (the reduced target while the view
+    // moves), in device coordinates.
+    GLint view[4] = {0, 0, 0, 0};
+    mGl->glGetIntegerv(GL_VIEWPORT, view);
+    const std::vector<float> bands =
+        screenBands(lines, viewProj, glm::vec2(float(view[2]), float(view[3])));
+    if (!bands.empty()) drawOnTop(program, bands, glm::mat4(1.0f), int(bands.size() / 7));
+    if (!data.empty()) drawOnTop(program, data, viewProj, 0);
 }
 
 void Overlays::drawOnTop(QOpenGLShaderProgram& program, const std::vector<float>& data,
@@ -71,7 +117,8 @@ void Overlays::drawOnTop(QOpenGLShaderProgram& program, const std::vector<float>
                       GL_STREAM_DRAW);
     const auto vertices = GLsizei(data.size() / 7);
     if (triangleVertices > 0) mGl->glDrawArrays(GL_TRIANGLES, 0, triangleVertices);
-    mGl->glDrawArrays(GL_LINES, triangleVertices, vertices - triangleVertices);
+    if (vertices > triangleVertices)
+        mGl->glDrawArrays(GL_LINES, triangleVertices, vertices - triangleVertices);
     mGl->glBindBuffer(GL_ARRAY_BUFFER, 0);
     mGl->glDisable(GL_BLEND);
     mGl->glEnable(GL_DEPTH_TEST);

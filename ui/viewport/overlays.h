@@ -16,7 +16,17 @@ namespace sylva::ui {
 struct OverlayLine {
     glm::vec3 a{0.0f}, b{0.0f};
     glm::vec4 color{1.0f};
+    /// Pixels across: a line wider than 1 is drawn as a band facing the screen (square ends,
+    /// so that a polyline has no gaps at its joints); core OpenGL draws no line wider than 1.
+    float width = 1.0f;
 };
+
+/// The bands of the \p lines wider than a pixel as triangles in normalised device coordinates
+/// (7 floats a vertex: x, y, z, colour; six vertices a line), for a view of \p pixels (width,
+/// height): each band is width pixels across on screen whatever its distance. A line is cut
+/// where it crosses the near plane; one wholly behind it gives nothing. Pure, for tests.
+std::vector<float> screenBands(const std::vector<OverlayLine>& lines, const glm::mat4& viewProj,
+                               const glm::vec2& pixels);
 
 /// What the viewport draws over the scene, blended and without the depth test so that it stays
 /// visible through the trees and the ground they stand in: a tool's handles and the rubber band.

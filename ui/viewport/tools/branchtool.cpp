@@ -113,17 +113,27 @@ std::vector<OverlayLine> BranchTool::lines() const {
                glm::translate(glm::mat4(1.0f), -baseWorld);
     }
     const glm::mat4 m = turn * s->transform;
-    const glm::vec4 yellow(1.0f, 0.9f, 0.1f, 1.0f), orange(1.0f, 0.45f, 0.05f, 0.9f);
-    std::vector<OverlayLine> out;
+    // Bands a few pixels wide over a dark edge, so that the branch reads over leaves, bark and
+    // sky alike (a 1-pixel line was lost in the foliage): the edges first, then what it carries,
+    // the branch itself on top.
+    const glm::vec4 yellow(1.0f, 0.9f, 0.1f, 1.0f), orange(1.0f, 0.5f, 0.05f, 1.0f);
+    const glm::vec4 edge(0.05f, 0.03f, 0.0f, 0.75f);
+    constexpr float kOwnWidth = 4.0f, kCarriedWidth = 2.5f, kEdge = 2.0f;
+    std::vector<OverlayLine> edges, carried, branchOwn;
     for (std::size_t i = std::size_t(first); i < k.size(); ++i) {
         if (!in[i]) continue;
         const std::int32_t p = k.parent[i];
         if (p < 0) continue;
         const glm::vec3 a = toWorld(static_cast<std::int32_t>(i) == first ? s->transform : m,
                                     k.position[std::size_t(p)]);
-        out.push_back({a, toWorld(m, k.position[i]), own[i] ? yellow : orange});
+        const glm::vec3 b = toWorld(m, k.position[i]);
+        const float width = own[i] ? kOwnWidth : kCarriedWidth;
+        edges.push_back({a, b, edge, width + kEdge});
+        (own[i] ? branchOwn : carried).push_back({a, b, own[i] ? yellow : orange, width});
     }
-    return out;
+    edges.insert(edges.end(), carried.begin(), carried.end());
+    edges.insert(edges.end(), branchOwn.begin(), branchOwn.end()); // the branch itself on top
+    return edges;
 }
 
 std::optional<glm::vec3> BranchTool::onDragPlane(const QPoint& pos) const {
