@@ -12,13 +12,8 @@
 #include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
-#include <QImage>
-#include <QKeySequence>
 #include <QLabel>
-#include <QMenu>
-#include <QMenuBar>
 #include <QMessageBox>
-#include <QPainter>
 #include <QPointer>
 #include <QProgressBar>
 #include <QScreen>
@@ -32,26 +27,18 @@
 
 #include "document/autosave.h"
 #include "document/errormessage.h"
-#include "document/filerefs.h"
 #include "document/presetlibrary.h"
-#include "document/projectsettings.h"
 #include "engine/skeleton/skeleton.h"
 #include "ui/document/documentactions.h"
 #include "ui/document/messagespanel.h"
 #include "ui/document/outlinermodel.h"
 #include "ui/document/outlinerview.h"
 #include "ui/document/presetbrowser.h"
-#include "ui/document/presetsmenu.h"
 #include "ui/document/propertiespanel.h"
 #include "ui/document/sourcewatcher.h"
 #include "ui/document/statspanel.h"
 #include "ui/filedialogs.h"
 #include "ui/generation/documentgenerator.h"
-#include "ui/generation/exportshown.h"
-#include "ui/generation/windvertexdata.h"
-#include "ui/helpmenu.h"
-#include "ui/languagemenu.h"
-#include "ui/lodchainexportaction.h"
 #include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/parameterpanel.h"
 #include "ui/preferencesdialog.h"
@@ -61,9 +48,7 @@
 #include "ui/speciesworkbench.h"
 #include "ui/viewport/colorbymenu.h"
 #include "ui/viewport/toolcontroller.h"
-#include "ui/viewport/tooloptionsbar.h"
 #include "ui/viewport/viewport.h"
-#include "ui/workerdialog.h"
 
 namespace sylva::ui {
 
