@@ -12,13 +12,8 @@
 #include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
-#include <QImage>
-#include <QKeySequence>
 #include <QLabel>
-#include <QMenu>
-#include <QMenuBar>
 #include <QMessageBox>
-#include <QPainter>
 #include <QPointer>
 #include <QProgressBar>
 #include <QScreen>
@@ -32,26 +27,18 @@
 
 #include "document/autosave.h"
 #include "document/errormessage.h"
-#include "document/filerefs.h"
 #include "document/presetlibrary.h"
-#include "document/projectsettings.h"
 #include "engine/skeleton/skeleton.h"
 #include "ui/document/documentactions.h"
 #include "ui/document/messagespanel.h"
 #include "ui/document/outlinermodel.h"
 #include "ui/document/outlinerview.h"
 #include "ui/document/presetbrowser.h"
-#include "ui/document/presetsmenu.h"
 #include "ui/document/propertiespanel.h"
 #include "ui/document/sourcewatcher.h"
 #include "ui/document/statspanel.h"
 #include "ui/filedialogs.h"
 #include "ui/generation/documentgenerator.h"
-#include "ui/generation/exportshown.h"
-#include "ui/generation/windvertexdata.h"
-#include "ui/helpmenu.h"
-#include "ui/languagemenu.h"
-#include "ui/lodchainexportaction.h"
 #include "ui/nodes/nodegraphscene.h"
 #include "ui/nodes/parameterpanel.h"
 #include "ui/preferencesdialog.h"
@@ -61,9 +48,7 @@
 #include "ui/speciesworkbench.h"
 #include "ui/viewport/colorbymenu.h"
 #include "ui/viewport/toolcontroller.h"
-#include "ui/viewport/tooloptionsbar.h"
 #include "ui/viewport/viewport.h"
-#include "ui/workerdialog.h"
 
 namespace sylva::ui {
 
@@ -354,175 +339,6 @@ void MainWindow::editSpecies(const QString& species) {
     mPresetBrowser->setTargetSpecies(mWorkbench->species());
 }
 
-void MainWindow::createMenus() {
-    mDocumentActions = new DocumentActions(
-        *mDocument, [this] { return mViewport->camera().target(); }, this);
-    connect(mDocumentActions, &DocumentActions::failed, this, &MainWindow::reportError);
-    mDocumentActions->setResult(
-        [this]() -> const GenerationResult& { return mGenerator->result(); });
-    QMenu* file = menuBar()->addMenu(tr("&File"));
-    file->setObjectName(QStringLiteral("fileMenu"));
-    QAction* newAction = file->addAction(tr("&New project"), this, &MainWindow::newDocument);
-    newAction->setObjectName(QStringLiteral("actionNew"));
-    newAction->setShortcut(QKeySequence::New);
-    QAction* open =
-        file->addAction(tr("&Open species or project…"), this, &MainWindow::showOpenDialog);
-    open->setObjectName(QStringLiteral("actionOpen"));
-    open->setShortcut(QKeySequence::Open);
-    auto* recent = new RecentFilesMenu(this);
-    connect(recent, &RecentFilesMenu::openRequested, this, &MainWindow::openSpecies);
-    file->addMenu(recent);
-    QAction* saveAction = file->addAction(tr("&Save"), this, &MainWindow::save);
-    saveAction->setObjectName(QStringLiteral("actionSave"));
-    saveAction->setShortcut(QKeySequence::Save);
-    QAction* saveAsAction = file->addAction(tr("Save &as…"), this, &MainWindow::showSaveAsDialog);
-    saveAsAction->setObjectName(QStringLiteral("actionSaveAs"));
-    saveAsAction->setShortcut(QKeySequence::SaveAs);
-    QAction* revertAction = file->addAction(tr("Re&vert"), this, &MainWindow::revert);
-    revertAction->setObjectName(QStringLiteral("actionRevert"));
-    file->addSeparator();
-    mReloadAction = file->addAction(tr("&Reload"), this, &MainWindow::reload);
-    mReloadAction->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(tr("Ctrl+R"))});
-    mAutoReloadAction = file->addAction(tr("Reload &automatically"));
-    mAutoReloadAction->setCheckable(true);
-    mAutoReloadAction->setChecked(true);
-    connect(mAutoReloadAction, &QAction::toggled, mSourceWatcher, &SourceWatcher::setEnabled);
-    mExportAction = file->addAction(tr("&Export…"), this, &MainWindow::showExportDialog);
-    mExportAction->setShortcut(QKeySequence(tr("Ctrl+E")));
-    mExportAction->setEnabled(false);
-    mExportSelectionAction = file->addAction(tr("Export only the selection"));
-    mExportSelectionAction->setObjectName(QStringLiteral("actionExportSelection"));
-    mExportSelectionAction->setCheckable(true);
-    mExportSelectionAction->setToolTip(tr("File ▸ Export writes only the selected trees"));
-    mExportViewLodAction = file->addAction(tr("Export with the viewport camera's detail"));
-    mExportViewLodAction->setObjectName(QStringLiteral("actionExportViewLod"));
-    mExportViewLodAction->setCheckable(true);
-    mExportViewLodAction->setToolTip(
-        tr("File ▸ Export chooses each tree's level of detail for the viewport's camera instead "
-           "of the project's camera"));
-    mExportWindAction = file->addAction(tr("Export with the project's wind"));
-    mExportWindAction->setObjectName(QStringLiteral("actionExportWind"));
-    mExportWindAction->setCheckable(true);
-    mExportWindAction->setChecked(true);
-    mExportWindAction->setToolTip(
-        tr("When the project has a wind, File ▸ Export writes it as sylva-cli forest --wind: a "
-           "rig and a looping wind clip per tree (.glb, .gltf, .fbx)"));
-    mLodChainExport = new LodChainExportAction(this, [this] {
-        return lodChainSource({lastResult(), mPreview.isActive() ? nullptr : mDocument,
-                               glm::vec3(0.0f), glm::vec3(0.0f)});
-    });
-    mLodChainExport->setShownFile([this] { return currentPath(); });
-    file->addAction(mLodChainExport->action());
-    connect(mLodChainExport, &LodChainExportAction::finished, this,
-            [this](bool ok, const QString& message) {
-                if (ok)
-                    statusBar()->showMessage(message, 10000);
-                else
-                    reportError(message);
-            });
-    connect(mDocument, &doc::Document::selectionChanged, mLodChainExport,
-            &LodChainExportAction::update);
-    QAction* shot =
-        file->addAction(tr("Save s&creenshot…"), this, &MainWindow::showScreenshotDialog);
-    shot->setShortcut(QKeySequence(tr("Ctrl+Alt+S")));
-    file->addSeparator();
-    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
-
-    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    edit->setObjectName(QStringLiteral("editMenu"));
-    QAction* undo = mDocument->undoStack()->createUndoAction(this, tr("&Undo"));
-    undo->setObjectName(QStringLiteral("actionUndo"));
-    undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = mDocument->undoStack()->createRedoAction(this, tr("&Redo"));
-    redo->setObjectName(QStringLiteral("actionRedo"));
-    redo->setShortcuts({QKeySequence(tr("Ctrl+Shift+Z")), QKeySequence(tr("Ctrl+Y"))});
-    edit->addAction(undo);
-    edit->addAction(redo);
-    edit->addSeparator();
-    edit->addActions({mDocumentActions->deleteAction(), mDocumentActions->duplicateAction(),
-                      mDocumentActions->selectAllAction()});
-    mOutliner->addAction(mDocumentActions->deleteAction());
-    mOutliner->addAction(mDocumentActions->duplicateAction());
-    edit->addSeparator();
-    QAction* prefs = edit->addAction(tr("&Preferences…"), this, &MainWindow::showPreferences);
-    prefs->setObjectName(QStringLiteral("actionPreferences"));
-    prefs->setMenuRole(QAction::PreferencesRole);
-
-    QMenu* scene = menuBar()->addMenu(tr("&Scene"));
-    scene->setObjectName(QStringLiteral("sceneMenu"));
-    scene->addAction(mDocumentActions->addSpeciesAction());
-    QAction* editSpeciesAction = scene->addAction(tr("&Edit species…"), this, [this] {
-        // The selected species, else the species of the selected tree, else the shown one.
-        QString name;
-        for (const doc::ItemRef& item : mDocument->selection()) {
-            if (item.kind == doc::ItemRef::Kind::Species &&
-                item.id < mDocument->project().species.size())
-                name = QString::fromStdString(mDocument->project().species[item.id].name);
-        }
-        if (name.isEmpty())
-            for (doc::TreeId id : mDocument->selectedTrees())
-                name = QString::fromStdString(mDocument->tree(id).species);
-        editSpecies(name);
-    });
-    editSpeciesAction->setObjectName(QStringLiteral("actionEditSpecies"));
-    editSpeciesAction->setShortcut(QKeySequence(tr("Ctrl+Shift+E")));
-    scene->addActions({mDocumentActions->addTreeAction(), mDocumentActions->importObstacleAction(),
-                       mDocumentActions->addDomainAction()});
-
-    auto* presets =
-        new PresetsMenu([this] { return mPreview.isActive() ? mPreview.path() : QString(); }, this);
-    connect(presets, &PresetsMenu::openRequested, this, &MainWindow::openSpecies);
-    mPresetsMenu = presets;
-    menuBar()->addMenu(presets);
-
-    QMenu* view = menuBar()->addMenu(tr("&View"));
-    view->setObjectName(QStringLiteral("viewMenu"));
-    QAction* frame =
-        view->addAction(tr("&Frame selection or all"), this, &MainWindow::frameSelectionOrAll);
-    frame->setShortcut(QKeySequence(Qt::Key_F));
-    frame->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-    QAction* grid = view->addAction(tr("Show &grid"));
-    grid->setCheckable(true);
-    grid->setChecked(true);
-    grid->setShortcut(QKeySequence(Qt::Key_G));
-    connect(grid, &QAction::toggled, mViewport, &Viewport::setGridVisible);
-    // Shortcuts of the View menu act while the viewport has focus, like the F key itself.
-    mWindAction = view->addAction(tr("&Wind"));
-    mWindAction->setObjectName(QStringLiteral("actionViewWind"));
-    mWindAction->setCheckable(true);
-    mWindAction->setToolTip(tr("Trees sway in the project's wind (Properties, with nothing "
-                               "selected): the wind model the exports carry"));
-    mWindAction->setChecked(QSettings().value(QStringLiteral("view/wind"), false).toBool());
-    connect(mWindAction, &QAction::toggled, this, [this](bool on) {
-        QSettings().setValue(QStringLiteral("view/wind"), on);
-        for (Viewport* v : {mViewport, mWorkbench ? mWorkbench->previewViewport() : nullptr})
-            if (v) v->setWindEnabled(on);
-    });
-    for (Viewport* v : {mViewport, mWorkbench ? mWorkbench->previewViewport() : nullptr})
-        if (v) v->setWindEnabled(mWindAction->isChecked());
-    mViewport->addAction(frame);
-    mViewport->addAction(grid);
-    mViewport->addAction(mWindAction);
-    mColorMenu = new ColorByMenu(mColorBy, this);
-    connect(mColorMenu, &ColorByMenu::chosen, this, &MainWindow::setColorBy);
-    view->addMenu(mColorMenu);
-    view->addSeparator();
-    QMenu* docks = view->addMenu(tr("&Panels"));
-    docks->setObjectName(QStringLiteral("panelsMenu"));
-    for (const auto& [name, d] : mDocks)
-        docks->addAction(d->toggleViewAction());
-    view->addMenu(new LanguageMenu(this));
-
-    menuBar()->addMenu(new HelpMenu(this));
-}
-
-void MainWindow::createToolBar() {
-    mToolBar = new ToolOptionsBar(*mTools, *mDocument, this);
-    connect(mToolBar, &ToolOptionsBar::failed, this, &MainWindow::reportError);
-    addToolBar(mToolBar);
-}
-
 void MainWindow::frameSelectionOrAll() {
     const QList<doc::TreeId> ids = mDocument->selectedTrees();
     Bounds box;
@@ -694,133 +510,6 @@ void MainWindow::setBusy(bool busy) {
     mCancel->setVisible(busy);
 }
 
-void MainWindow::onPreviewGenerated(const GenerationResult& run) {
-    setBusy(false);
-    mSourceWatcher->watch(run.sources, run.sourceStamps);
-    if (!run.ok()) {
-        reportError(run.error);
-        Q_EMIT generationFinished(false);
-        return;
-    }
-    mLastError.clear();
-    const GenerationResult& result = mPreview.result();
-    mViewport->clearViewFrom();
-    mViewport->setTrees({});
-    mViewport->setMesh(result.mesh, true, nullptr, result.skeleton);
-    mExportAction->setEnabled(!result.exportTrees.empty());
-    mLodChainExport->update();
-    mStats->showResult(result);
-    updateTitle();
-    statusBar()->showMessage(
-        tr("Generated %1 in %2 ms").arg(result.speciesName).arg(result.elapsedMs, 0, 'f', 1),
-        10000);
-    applyColoring();
-    if (!mViewport->glError().isEmpty()) statusBar()->showMessage(mViewport->glError());
-    mGlLabel->setText(mViewport->glInfo());
-    Q_EMIT generationFinished(true);
-}
-
-void MainWindow::onDocumentChanged(const doc::DocumentChange& change) {
-    const QString wind = QString::fromLatin1(doc::settingChange::kWind);
-    if (change.what & doc::DocumentChange::Reset || change.settings.contains(wind)) applyWind();
-    // The wind only moves what is drawn: nothing to regrow when nothing else changed.
-    if (change.what == doc::DocumentChange::Settings &&
-        std::all_of(change.settings.begin(), change.settings.end(),
-                    [&wind](const QString& s) { return s == wind; }))
-        return;
-    if (change.what & doc::DocumentChange::Reset) {
-        const QFileInfo own(mDocument->path());
-        mDocumentStamp =
-            !mDocument->path().isEmpty() && own.exists() ? own.lastModified() : QDateTime();
-        mPreview.cancelIfRunning();
-        mPreview.leave();
-        mFrameNext = true;
-        mStats->showGenerating(mDocument->displayName());
-        updateTitle();
-    } else if (mPreview.isActive()) {
-        // An edit of the document (a script adding a tree to a new project): show it.
-        mPreview.leave();
-        mFrameNext = true;
-    } else if (change.what == doc::DocumentChange::Species && !change.species.isEmpty()) {
-        // A species edit: nothing to regrow when no tree grows from it; while the species
-        // editor is open, its preview goes first and the forest follows when the edits pause.
-        if (!mDocument->project().usesSpecies(change.species.toStdString())) return;
-        if (mWorkbench && mWorkbench->isVisible()) {
-            mSpeciesRegen->start();
-            return;
-        }
-    }
-    mGenerator->regenerate();
-}
-
-void MainWindow::onDocumentGenerated(bool ok, const QString& error) {
-    setBusy(false);
-    if (mPreview.isActive()) return;
-    const GenerationResult& result = mGenerator->result();
-    if (!ok) {
-        QStringList sources = doc::projectSourceFiles(mDocument->project());
-        QList<QDateTime> stamps = modificationTimes(sources);
-        if (!mDocument->path().isEmpty()) {
-            sources << mDocument->path();
-            stamps << mDocumentStamp;
-        }
-        mSourceWatcher->watch(sources, stamps);
-        reportError(error);
-        const QString line = error.section(QLatin1Char('\n'), 0, 0);
-        mGenerationError->setText(tr("Generation failed: %1").arg(line));
-        mGenerationError->setToolTip(error);
-        mGenerationError->show();
-        Q_EMIT generationFinished(false);
-        return;
-    }
-    QStringList sources = result.sources;
-    QList<QDateTime> stamps = result.sourceStamps;
-    if (!mDocument->path().isEmpty()) // stamped when opened or saved, not by the generation
-        listProjectFileLast(sources, stamps, QFileInfo(mDocument->path()).absoluteFilePath(),
-                            mDocumentStamp);
-    mSourceWatcher->watch(sources, stamps);
-    mLastError.clear();
-    mGenerationError->hide();
-    mGenerationError->clear();
-    showDocument(mFrameNext);
-    mFrameNext = false;
-    Q_EMIT generationFinished(true);
-}
-
-void MainWindow::showDocument(bool frame) {
-    const GenerationResult& result = mGenerator->result();
-    std::vector<ViewTree> trees;
-    trees.reserve(result.trees.size());
-    for (const DrawnTree& t : result.trees)
-        trees.push_back({t.docId, t.mesh, t.transform, t.lod, windPhaseOf(t.instanceId)});
-    if (frame) {
-        mViewport->setViewFrom(result.cameraEye, result.cameraTarget);
-    }
-    mViewport->setVertexColors({});
-    mViewport->setTrees(std::move(trees), false);
-    mViewport->setMesh(result.mesh, frame);
-    mAwaitingFrame = true;
-    mViewport->update();
-    mExportAction->setEnabled(!result.exportTrees.empty());
-    mLodChainExport->update();
-    mStats->showResult(result);
-    mStats->showSelection(*mDocument, result);
-    QHash<doc::TreeId, QSet<QString>> orphans;
-    for (const DrawnTree& t : result.trees)
-        for (const std::string& id : t.orphanedEdits)
-            orphans[t.docId].insert(QString::fromStdString(id));
-    mOutlinerModel->setOrphanedEdits(orphans);
-    // The generation's warnings (orphaned branch edits among them) in Messages, each once
-    // while it lasts, not again at every regeneration.
-    const QStringList warnings = result.warning.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-    for (const QString& w : warnings)
-        if (!mShownWarnings.contains(w)) mMessages->add(MessagesPanel::Severity::Warning, w);
-    mShownWarnings = warnings;
-    updateTitle();
-    applyColoring();
-    mGlLabel->setText(mViewport->glInfo());
-}
-
 void MainWindow::updateTitle() {
     if (mPreview.isActive()) {
         setWindowTitle(tr("%1 (preview) — Sylva").arg(mPreview.result().speciesName));
@@ -930,41 +619,6 @@ QStringList MainWindow::watchedFiles() const {
     return mSourceWatcher->files();
 }
 
-// The policy for files changed on disk (SourceWatcher says which): a preview is generated again,
-// the project's own file reloads (asking first when there are unsaved edits), and any other
-// source regrows the forest.
-void MainWindow::onSourcesChanged(const QStringList& changed) {
-    if (mPreview.isActive()) {
-        reload();
-        return;
-    }
-    const QString own = QFileInfo(mDocument->path()).absoluteFilePath();
-    if (!mDocument->path().isEmpty() && changed.contains(own)) {
-        // The project file itself: never throw unsaved edits away without asking. Our own save,
-        // reported after later edits (its bytes no longer the document's), is no change.
-        const QDateTime onDisk =
-            QFileInfo::exists(own) ? QFileInfo(own).lastModified() : QDateTime();
-        if (onDisk.isValid() && onDisk == mDocumentStamp) return;
-        mDocumentStamp = onDisk;
-        QFile file(own);
-        if (file.open(QIODevice::ReadOnly) && file.readAll() == mDocument->serialized())
-            return; // what the document holds: our own save (a script's doc.save, say)
-        if (QFileInfo::exists(own) &&
-            (!mDocument->isModified() ||
-             askUser(tr("%1 changed on disk. Reload it and lose your unsaved edits?")
-                         .arg(mDocument->displayName()),
-                     false) == Answer::Yes)) {
-            try {
-                mDocument->open(own);
-            } catch (...) {
-                reportError(errorText());
-            }
-        }
-        return;
-    }
-    mGenerator->regenerateAll(); // a species, grammar or mesh file: regrow everything
-}
-
 void MainWindow::reportError(const QString& message) {
     setBusy(isGenerating());
     mLastError = message;
@@ -972,87 +626,6 @@ void MainWindow::reportError(const QString& message) {
     mMessages->add(MessagesPanel::Severity::Error, message);
     // The status bar shows one line; the dock shows the whole message.
     statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0));
-}
-
-// --- output -----------------------------------------------------------------------------
-
-bool MainWindow::saveScreenshot(const QString& path) {
-    const QImage image = mViewport->grabSharp();
-    if (image.isNull()) {
-        reportError(tr("Could not read the viewport's image (no OpenGL context)."));
-        return false;
-    }
-    if (!image.save(path)) {
-        reportError(tr("Could not write %1.").arg(QDir::toNativeSeparators(path)));
-        return false;
-    }
-    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 10000);
-    return true;
-}
-
-bool MainWindow::saveWindowScreenshot(const QString& path) {
-    QPixmap image = grab();
-    {
-        // The 3D views draw into native windows, which a widget grab does not see.
-        QPainter painter(&image);
-        for (Viewport* view : findChildren<Viewport*>())
-            if (view->isVisible() && view->window() == this)
-                painter.drawImage(QRect(view->mapTo(this, QPoint(0, 0)), view->size()),
-                                  view->grabSharp());
-    }
-    if (image.isNull() || !image.save(path)) {
-        reportError(tr("Could not write %1.").arg(QDir::toNativeSeparators(path)));
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::exportTo(const QString& path) {
-    return exportTo(path, {});
-}
-
-bool MainWindow::exportTo(const QString& path, const ExportOptions& options) {
-    const GenerationResult& shown = lastResult();
-    if (shown.exportTrees.empty()) {
-        reportError(tr("Nothing to export yet."));
-        return false;
-    }
-    if (mExportDialog) return false; // one export at a time
-    // On a worker with progress and Cancel, as Export LOD chain…: a project's export builds its
-    // forest as sylva-cli forest does.
-    ExportCount count;
-    const ShownScene scene{shown, mPreview.isActive() ? nullptr : mDocument,
-                           mViewport->camera().eye(), mViewport->camera().target()};
-    DialogProgress progress([](double fraction, std::string_view stage) {
-        // The forest build reports its trees (grown, adapted, meshed, written batch by batch);
-        // the file's last copy is the rest.
-        return stage == "trees" ? static_cast<int>(fraction * 95.0) : -1;
-    });
-    const WorkerOutcome outcome = runWithProgress(
-        this, tr("Export"), tr("Exporting to %1…").arg(QFileInfo(path).fileName()),
-        QStringLiteral("exportProgress"), progress,
-        [&](Progress& p) { count = exportShown(path, scene, options, p); }, mExportDialog);
-    if (outcome.error) {
-        reportError(outcome.cancelled
-                        ? tr("Export cancelled: nothing was written.")
-                        : QString::fromStdString(doc::describeError(outcome.error).message));
-        return false;
-    }
-    statusBar()->showMessage(
-        (count.wind ? tr("Exported %n tree(s) with the project's wind to %1 (%2 files)", nullptr,
-                         int(count.trees))
-                    : tr("Exported %n tree(s) to %1 (%2 files)", nullptr, int(count.trees)))
-            .arg(QDir::toNativeSeparators(path))
-            .arg(count.files),
-        10000);
-    return true;
-}
-
-void MainWindow::showExportDialog() {
-    const QString path = FileDialogs::exportFile(this, currentPath());
-    if (!path.isEmpty())
-        exportTo(path, {mExportSelectionAction->isChecked(), mExportViewLodAction->isChecked(),
-                        mExportWindAction->isChecked()});
 }
 
 void MainWindow::showOpenDialog() {
@@ -1082,11 +655,6 @@ void MainWindow::setAutosaveInterval(int seconds) {
 void MainWindow::showSaveAsDialog() {
     const QString path = FileDialogs::saveProject(this, mDocument->path());
     if (!path.isEmpty()) saveAs(path);
-}
-
-void MainWindow::showScreenshotDialog() {
-    const QString path = FileDialogs::screenshot(this, currentPath());
-    if (!path.isEmpty()) saveScreenshot(path);
 }
 
 } // namespace sylva::ui

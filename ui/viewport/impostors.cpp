@@ -9,12 +9,75 @@
 #include <iterator>
 #include <limits>
 
+#include "engine/export/materials.h"
 #include "engine/mesh/mesh.h"
 #include "engine/mesh/occlusion.h"
+#include "ui/viewport/drawlist.h"
 #include "ui/viewport/impostorlighting.h"
 #include "ui/viewport/shaderprogram.h"
+#include "ui/viewport/viewlod.h"
+#include "ui/viewport/viewtree.h"
 
 namespace sylva::ui {
+
+Impostors::Impostors() {
+    mBakeTimer.setSingleShot(true);
+    mBakeTimer.setInterval(100);
+    QObject::connect(&mBakeTimer, &QTimer::timeout, [this] {
+        if (mWake) mWake();
+    });
+}
+
+Impostors::Key Impostors::keyOf(const ViewTree& t) {
+    if (t.lod.variant) return static_cast<Key>(t.lod.variant.get());
+    return t.lod.skeleton ? static_cast<Key>(t.lod.skeleton.get()) : static_cast<Key>(t.mesh.get());
+}
+
+bool Impostors::schedule(const std::vector<TreeDraw>& order, const std::vector<ViewTree>& trees,
+                         const ViewLod& lod) {
+    // Atlases bake on the worker (one per variant: its instances and the unique trees of its
+    // species share it); the trees still waiting are drawn with their coarsest mesh meanwhile,
+    // and a frame now and then uploads what is done.
+    static const mesh::ImpostorTextures textures(exporter::resourcesDir() / "textures");
+    const bool collected = collect() > 0;
+    mWanted = 0;
+    for (const TreeDraw& d : order) {
+        const ViewTree& t = trees[d.index];
+        const Key key = keyOf(t);
+        if (d.level != ViewLod::kImpostorLevel || has(key)) continue;
+        ++mWanted;
+        if (isBaking(key)) continue;
+        std::shared_ptr<const void> owner;
+        std::shared_ptr<const mesh::Mesh> source, reference;
+        if (t.lod.variant) {
+            // The variant's level made for a tree about twice the atlas' cell high on the
+            // reference view (the bake supersamples twice): all its views can show.
+            const ViewVariant& v = *t.lod.variant;
+            const double refFov = v.referenceFovYDegrees * 3.14159265358979323846 / 180.0;
+            const double distance = double(v.height) * v.referenceHeightPx /
+                                    (2.0 * std::tan(0.5 * refFov) * 2.0 * kCell);
+            source = v.levels[mesh::levelFor(v.levels, distance)].mesh;
+            reference = v.levels.front().mesh;
+            owner = t.lod.variant;
+        } else {
+            // Baked from the tree's coarse level once the worker has made it, or from its own
+            // mesh when it has no levels coming.
+            source = lod.levelMesh(t.mesh.get(), ViewLod::kImpostorLevel - 1);
+            if (!source && lod.pending() > 0 && t.lod.skeleton) continue;
+            if (!source) source = t.mesh;
+            reference = t.mesh;
+            owner = t.lod.skeleton ? std::shared_ptr<const void>(t.lod.skeleton)
+                                   : std::shared_ptr<const void>(t.mesh);
+        }
+        request(key, std::move(owner), std::move(source), textures, std::move(reference),
+                ViewLod::impostorHeightPx());
+    }
+    // Atlases still baking are collected by the timer's frames too, even when no tree in the
+    // view wants one now (the view moved nearer meanwhile): else the view's pending count
+    // stays up.
+    if ((mWanted > 0 || baking() > 0) && !mBakeTimer.isActive()) mBakeTimer.start();
+    return collected;
+}
 
 bool Impostors::initialize(QOpenGLFunctions_3_3_Core* gl, QString& error) {
     mGl = gl;
@@ -24,7 +87,7 @@ bool Impostors::initialize(QOpenGLFunctions_3_3_Core* gl, QString& error) {
         buildShaderProgram(QStringLiteral("impostor.vert"), QStringLiteral("impostor.frag"), error);
     if (!mProgram) return false;
     mFlatProgram = buildShaderProgram(QStringLiteral("impostor.vert"),
-                                      QStringLiteral("impostor.frag"), error, "#define FLAT\n");
+                                      QStringLiteral("impostor.frag"), error, kFlatDefines);
     if (!mFlatProgram) return false;
     // The card's corners come from the vertex id; per instance: the model matrix (locations
     // 0-3) and the highlight (4).

@@ -10,6 +10,7 @@
 #include <QOpenGLFunctions_3_3_Core>
 #include <QString>
 #include <QThreadPool>
+#include <QTimer>
 
 #include <glm/glm.hpp>
 
@@ -24,6 +25,10 @@ struct Mesh;
 
 namespace sylva::ui {
 
+class ViewLod;
+struct TreeDraw;
+struct ViewTree;
+
 /// The farthest level of the viewport's LOD (ui/viewport/viewlod.h): a tree a few dozen pixels
 /// high drawn as one camera-facing card with the engine's baked hemi-octahedral impostor
 /// (mesh::bakeImpostor, the same atlas `sylva-cli lods` writes, docs/lods.md): the three atlas
@@ -34,11 +39,16 @@ namespace sylva::ui {
 /// worker thread (request(); the GUI thread only uploads them, collect()) from a coarse mesh
 /// level, and kept per key while a tree draws it: one per variant (its instances and the
 /// unique trees of its species it stands in for share it), or one per tree without a variant.
+/// It schedules its own baking (schedule(), once a frame): what the frame's trees want, and a
+/// frame now and then (setWake()) while atlases bake.
 class Impostors {
 public:
+    Impostors();
     /// The atlas: kGrid × kGrid views of kCell pixels.
     static constexpr int kGrid = 8;
     static constexpr int kCell = 64;
+    /// The defines of the one-fetch program (shaders/impostor.frag's FLAT).
+    static constexpr const char* kFlatDefines = "#define FLAT\n";
 
     /// Builds the impostor shader; false (and \p error) when it does not compile.
     bool initialize(QOpenGLFunctions_3_3_Core* gl, QString& error);
@@ -48,6 +58,22 @@ public:
     /// What an atlas is kept for: the tree's skeleton when it has one (the instances of a
     /// variant share it, whatever level of detail each draws), else its mesh.
     using Key = const void*;
+    /// The atlas a tree draws far away: its variant's (shared by its instances and the unique
+    /// trees of its species that stand in with it), else its skeleton's, else its mesh's.
+    static Key keyOf(const ViewTree& t);
+    /// A frame's scheduling, before it draws: uploads what the worker finished (true when any
+    /// came: the frame's tree buffers are then stale) and requests the atlas of every tree of
+    /// \p order drawn at the impostor level that has none yet: a variant's from its level made
+    /// for a tree about twice the atlas' cell high, a unique tree's from \p lod's level below
+    /// the impostor once made (or its own mesh when it has no levels coming). The trees still
+    /// waiting draw their coarsest mesh meanwhile (wanted()). While atlases are wanted or bake,
+    /// the wake function (setWake()) is called about every 100 ms so that a frame collects them.
+    bool schedule(const std::vector<TreeDraw>& order, const std::vector<ViewTree>& trees,
+                  const ViewLod& lod);
+    /// Trees of the last schedule() drawn at the impostor level without their atlas.
+    std::size_t wanted() const { return mWanted; }
+    /// What schedule() calls for a frame while atlases bake (the viewport's update()).
+    void setWake(std::function<void()> wake) { mWake = std::move(wake); }
     bool has(Key key) const { return mCards.count(key) > 0; }
     /// Whether the atlas of \p key is being baked.
     bool isBaking(Key key) const { return mBaking.count(key) > 0; }
@@ -149,7 +175,10 @@ private:
         QFuture<Baked> future;
     };
     std::map<Key, Baking> mBaking;
-    QThreadPool mPool; ///< one thread
+    QThreadPool mPool;       ///< one thread
+    std::size_t mWanted = 0; ///< at the last schedule()
+    QTimer mBakeTimer;       ///< the next frame while atlases bake
+    std::function<void()> mWake;
 };
 
 } // namespace sylva::ui

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "engine/mesh/mesh.h"
-#include "ui/viewport/viewport.h"
+#include "ui/viewport/viewtree.h"
 
 namespace sylva::ui {
 

@@ -28,7 +28,7 @@ QByteArray shaderSource(const QString& name) {
     return file.readAll();
 }
 
-QByteArray expandIncludes(const QByteArray& source) {
+QByteArray expandIncludes(const QByteArray& source, QString* missing) {
     // GLSL has no #include: a line `#include "name"` becomes that resource's text (one level,
     // which is all the shaders use).
     if (!source.contains("#include")) return source;
@@ -36,7 +36,10 @@ QByteArray expandIncludes(const QByteArray& source) {
     for (const QByteArray& line : source.split('\n')) {
         const QByteArray t = line.trimmed();
         if (t.startsWith("#include \"") && t.endsWith('"')) {
-            out += shaderSource(QString::fromLatin1(t.mid(10, t.size() - 11)));
+            const QString name = QString::fromLatin1(t.mid(10, t.size() - 11));
+            const QByteArray text = shaderSource(name);
+            if (text.isEmpty() && missing && missing->isEmpty()) *missing = name;
+            out += text;
             out += '\n';
         } else {
             out += line;
@@ -50,11 +53,17 @@ QByteArray expandIncludes(const QByteArray& source) {
 std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
                                                          const QString& fragment, QString& error,
                                                          const QByteArray& defines) {
-    QByteArray vertexSource = expandIncludes(shaderSource(vertex));
-    QByteArray fragmentSource = expandIncludes(shaderSource(fragment));
+    QString missing;
+    QByteArray vertexSource = expandIncludes(shaderSource(vertex), &missing);
+    QByteArray fragmentSource = expandIncludes(shaderSource(fragment), &missing);
     if (vertexSource.isEmpty() || fragmentSource.isEmpty()) {
         error =
             QStringLiteral("shader error: missing shader resource %1 or %2").arg(vertex, fragment);
+        return nullptr;
+    }
+    if (!missing.isEmpty()) {
+        error = QStringLiteral("shader error: %1 or %2 includes %3, which is no shader resource")
+                    .arg(vertex, fragment, missing);
         return nullptr;
     }
     if (!defines.isEmpty()) {

@@ -18,12 +18,14 @@ namespace sylva::ui {
 QByteArray shaderSource(const QString& name);
 
 /// \p source with each line `#include "name"` replaced by the resource shaderSource(name).
-QByteArray expandIncludes(const QByteArray& source);
+/// \p missing (when given) hears the first name that is no resource (its line is left out).
+QByteArray expandIncludes(const QByteArray& source, QString* missing = nullptr);
 
 /// A linked program of the shader files \p vertex and \p fragment (names in
 /// ui/viewport/shaders/, their `#include "name"` lines expanded). \p defines (lines such as
 /// "#define CUTOUT 1\n") go right after each shader's #version line. Null, with \p error set, when
-/// a file is missing or GLSL does not compile or link. Needs a current OpenGL context.
+/// a file or an included file is missing or GLSL does not compile or link. Needs a current
+/// OpenGL context.
 std::unique_ptr<QOpenGLShaderProgram> buildShaderProgram(const QString& vertex,
                                                          const QString& fragment, QString& error,
                                                          const QByteArray& defines = {});

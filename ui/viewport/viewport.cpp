@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 
+#include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -16,23 +17,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "engine/export/treeexport.h"
 #include "engine/mesh/mesh.h"
-#include "ui/generation/windvertexdata.h"
 #include "ui/viewport/impostorlighting.h"
 #include "ui/viewport/shaderprogram.h"
 #include "ui/viewport/viewportsurface.h"
-#include "ui/viewport/windshader.h"
 
 namespace sylva::ui {
-
-namespace {
-
-// sRGB colours of the background gradient.
-constexpr glm::vec3 kBackgroundTop{0.42f, 0.53f, 0.68f};
-constexpr glm::vec3 kBackgroundBottom{0.84f, 0.86f, 0.88f};
-
-} // namespace
 
 void Viewport::installDefaultSurfaceFormat() {
     ViewportSurface::installDefaultSurfaceFormat();
@@ -77,16 +67,9 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
         update();
     });
     // While atlases bake on the worker, a frame now and then uploads the finished ones.
-    mBakeTimer = new QTimer(this);
-    mBakeTimer->setSingleShot(true);
-    mBakeTimer->setInterval(100);
-    connect(mBakeTimer, &QTimer::timeout, this, [this] { update(); });
-    mWindTimer = new QTimer(this);
-    // About 60 frames a second at most while the wind clock runs; a slower renderer draws
-    // as fast as it can (updates coalesce).
-    mWindTimer->setInterval(16);
-    connect(mWindTimer, &QTimer::timeout, this, [this] { update(); });
-    mWindClock.start();
+    mImpostors.setWake([this] { update(); });
+    mWind = new WindClock(this);
+    connect(mWind, &WindClock::frameDue, this, [this] { update(); });
     mLod = new ViewLod(this);
     connect(mLod, &ViewLod::levelsReady, this, [this] {
         mTreesDirty = true;
@@ -200,48 +183,20 @@ void Viewport::setGridVisible(bool visible) {
 }
 
 void Viewport::setWindEnabled(bool on) {
-    if (on == mWindOn) return;
-    mWindOn = on;
+    if (on == mWind->enabled()) return;
+    mWind->setEnabled(on);
     if (on && mMeshSkeleton) mMeshDirty = true; // its wind data, left out while off
-    updateWindTimer();
     update();
 }
 
 void Viewport::setWind(const wind::WindSettings& settings) {
-    // Keeps the clock where it is: the trees go on from their pose into the new wind.
-    mWind = settings;
-    updateWindTimer();
+    mWind->setSettings(settings);
     update();
 }
 
 void Viewport::setWindTime(std::optional<double> seconds) {
-    if (!seconds) {
-        if (mWindFixed) {
-            mWindClockStart = *mWindFixed;
-            mWindClock.restart();
-        }
-        mWindFixed.reset();
-    } else {
-        mWindFixed = *seconds;
-    }
-    updateWindTimer();
+    mWind->setFixedTime(seconds);
     update();
-}
-
-double Viewport::windTime() const {
-    return mWindFixed ? *mWindFixed : mWindClockStart + double(mWindClock.nsecsElapsed()) * 1e-9;
-}
-
-void Viewport::updateWindTimer() {
-    const bool run = mWindOn && !mWindFixed && mWind.strength > 0.0f;
-    if (run && !mWindTimer->isActive())
-        mWindTimer->start();
-    else if (!run)
-        mWindTimer->stop();
-}
-
-wind::WindFrame Viewport::windFrameAt(float phase) const {
-    return wind::windFrame(mWind, mPaintWindTime + double(phase) * double(mWind.period));
 }
 
 float Viewport::aspect() const {
@@ -267,26 +222,12 @@ void Viewport::initializeGL() {
             std::clamp(qEnvironmentVariable("SYLVA_MOTION_SCALE").toFloat(), 0.25f, 1.0f);
     if (mSamples > 1) mMotionScale = 1.0f; // no blit into a multisampled framebuffer
 
-    // The mesh shader's variants: shaders/mesh.frag with TEXTURED and CUTOUT defined or not.
-    bool meshOk = true;
-    for (int v = 0; v < kMeshVariants && meshOk; ++v) {
-        if ((v & kMeshWind) && (v & kMeshInstanced)) continue; // never drawn (drawInstanced())
-        QByteArray defines;
-        if (v & kMeshTextured) defines += "#define TEXTURED 1\n";
-        if (v & kMeshCutout) defines += "#define CUTOUT 1\n";
-        if (v & kMeshInstanced) defines += "#define INSTANCED 1\n";
-        if (v & kMeshWind) defines += "#define WIND 1\n";
-        mMeshPrograms[v] = buildShaderProgram(QStringLiteral("mesh.vert"),
-                                              QStringLiteral("mesh.frag"), mGlError, defines);
-        meshOk = mMeshPrograms[v] != nullptr;
-    }
-    if (meshOk)
-        mLineProgram =
-            buildShaderProgram(QStringLiteral("line.vert"), QStringLiteral("line.frag"), mGlError);
-    if (mLineProgram)
-        mBackgroundProgram = buildShaderProgram(QStringLiteral("background.vert"),
-                                                QStringLiteral("background.frag"), mGlError);
-    if (!mBackgroundProgram) return;
+    // The passes' shaders, in the order of the error reported when one fails.
+    if (!mTreePass.initialize(this, &mBuffers, mLod, &mImpostors, mWind, mSoftware, mGlError))
+        return;
+    mLineProgram =
+        buildShaderProgram(QStringLiteral("line.vert"), QStringLiteral("line.frag"), mGlError);
+    if (!mLineProgram || !mBackground.initialize(this, mGlError)) return;
     if (!mImpostors.initialize(this, mGlError)) return;
 
     mBuffers.initialize(this, [this](const QString& problem) {
@@ -295,8 +236,6 @@ void Viewport::initializeGL() {
             this, [this, problem] { Q_EMIT warning(problem); }, Qt::QueuedConnection);
     });
     mGrid.initialize(this);
-    glGenVertexArrays(1, &mEmptyVao);
-    glGenBuffers(1, &mInstanceVbo);
     mOverlays.initialize(this);
     mGlReady = true;
     mMeshDirty = true;
@@ -309,14 +248,9 @@ void Viewport::releaseGl() {
     mOverlays.release();
     mImpostors.release();
     mGrid.release();
-    glDeleteVertexArrays(1, &mEmptyVao);
-    mEmptyVao = 0;
-    glDeleteBuffers(1, &mInstanceVbo);
-    mInstanceVbo = 0;
-    for (auto& program : mMeshPrograms)
-        program.reset();
+    mTreePass.release();
+    mBackground.release();
     mLineProgram.reset();
-    mBackgroundProgram.reset();
     mGlReady = false;
 }
 
@@ -328,7 +262,7 @@ void Viewport::uploadMesh() {
     // The mesh's wind data (sway elements, per-vertex channels) only while View ▸ Wind is on:
     // a species preview that does not sway needs the one mesh (setWindEnabled() uploads again).
     const std::shared_ptr<const skel::Skeleton> windSkeleton =
-        mWindOn ? mMeshSkeleton : std::shared_ptr<const skel::Skeleton>();
+        mWind->enabled() ? mMeshSkeleton : std::shared_ptr<const skel::Skeleton>();
     // A bad index would make the driver read out of bounds; refuse the mesh instead.
     if (!mBuffers.uploadScene(mMesh.get(), mVertexColors, prepared, windSkeleton))
         mGlError = tr("The mesh has an index out of range; it is not drawn.");
@@ -470,7 +404,7 @@ void Viewport::syncTreeBuffers() {
     mBuffers.sync(all, treeMeshes, mUploads, mLevelUploads);
     std::set<Impostors::Key> keys;
     for (const ViewTree& t : mTrees)
-        keys.insert(impostorKey(t));
+        keys.insert(Impostors::keyOf(t));
     mImpostors.retain([&keys](Impostors::Key k) { return keys.count(k) > 0; });
 }
 
@@ -521,172 +455,25 @@ void Viewport::paintGL() {
     }
     mSharpNext = false;
     mLastDrawList = treesToDraw(viewProj);
-    const std::vector<TreeDraw>& order = mLastDrawList;
-    bakeImpostors(order);
+    if (mImpostors.schedule(mLastDrawList, mTrees, *mLod)) mTreesDirty = true;
 
-    glClearColor(kBackgroundBottom.x, kBackgroundBottom.y, kBackgroundBottom.z, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    mBackgroundProgram->bind();
-    setUniform(*mBackgroundProgram, "uTop", kBackgroundTop);
-    setUniform(*mBackgroundProgram, "uBottom", kBackgroundBottom);
-    glBindVertexArray(mEmptyVao);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-
+    mBackground.draw();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
-
     if (mGridVisible) mGrid.draw(*mLineProgram, viewProj);
-
     glDepthMask(GL_TRUE);
-    mUnflushed = 0;
-    mDrawnTriangles = 0;
-    mDrawnTrees = 0;
-    mDrawnMotion = 0;
-    mDrawnPerLevel.fill(0);
-    mDrawnTrianglesPerLevel.fill(0);
-    mImpostorDrawCalls = 0;
-    mInstancedDrawCalls = 0;
-    mDrawnWindTriangles = 0;
-    mPaintWindTime = windTime();
-    const std::vector<DrawRange>& sceneRanges = mBuffers.sceneRanges();
-    if (!sceneRanges.empty() || mBuffers.hasTrees()) {
-        MeshUniforms u;
-        u.viewProj = viewProj;
-        u.eye = mCamera.eye();
-        u.light = light;
-        u.vertexColor = mBuffers.sceneVertexColors();
-        // What each tree draws (its level), then the frame's wind: every swaying mesh's
-        // element rotations for its tree's time, made here once and uploaded in one buffer
-        // before the first draw (a buffer changed between draws would stall the renderer).
-        struct Drawn {
-            const TreeDraw* draw = nullptr;
-            const mesh::Mesh* mesh = nullptr; ///< null: an impostor card
-            int windBase = -1;                ///< its rotations in the frame's buffer
-        };
-        std::vector<Drawn> drawns;
-        drawns.reserve(order.size());
-        for (const TreeDraw& d : order) {
-            const ViewTree& t = mTrees[d.index];
-            ++mDrawnTrees;
-            Drawn entry{&d};
-            if ((d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) &&
-                t.lod.instance && t.lod.variant) {
-                // Below the impostor an instance draws its variant's level for its size on
-                // screen (the drawlist's choice; its coarsest while the atlas bakes).
-                const std::vector<mesh::DistanceLevel>& levels = t.lod.variant->levels;
-                const std::size_t k = d.variantLevel >= 0
-                                          ? std::min(std::size_t(d.variantLevel), levels.size() - 1)
-                                          : levels.size() - 1;
-                entry.mesh = levels[k].mesh.get();
-                const std::size_t level =
-                    std::size_t(std::min(d.level, ViewLod::kImpostorLevel - 1));
-                ++mDrawnPerLevel[level];
-                mDrawnTrianglesPerLevel[level] += entry.mesh->triangleCount();
-                mDrawnMotion += d.motion ? 1 : 0;
-            } else if (d.level != ViewLod::kImpostorLevel || !mImpostors.has(impostorKey(t))) {
-                int used = 0;
-                bool motion = false;
-                // A frame drawn at reduced resolution while the view moves also draws the
-                // trees' motion levels; the sharp frame that follows draws them at rest.
-                entry.mesh = mLod->meshFor(t.mesh.get(), d.level, &used, mLastReduced, &motion);
-                ++mDrawnPerLevel[std::size_t(used)];
-                mDrawnTrianglesPerLevel[std::size_t(used)] += entry.mesh->triangleCount();
-                mDrawnMotion += motion ? 1 : 0;
-            }
-            drawns.push_back(entry);
-        }
-        std::vector<int> previewBases(mPreview.size(), -1);
-        int sceneBase = -1;
-        GLuint rotations = 0;
-        if (windActive()) {
-            mWindRotations.clear();
-            auto add = [this](const wind::WindElements* elements, float phase) {
-                if (!elements) return -1;
-                const int base = int(mWindRotations.size());
-                appendWindRotations(*elements, windFrameAt(phase), mWindRotations);
-                return base;
-            };
-            if (mBuffers.sceneWindElements()) sceneBase = add(mBuffers.sceneElements().get(), 0);
-            for (Drawn& d : drawns)
-                if (d.mesh)
-                    if (const TreeBuffers::GpuMesh* gpu = mBuffers.find(d.mesh);
-                        gpu && gpu->windElements)
-                        d.windBase = add(gpu->elements.get(), mTrees[d.draw->index].windPhase);
-            for (std::size_t i = 0; i < mPreview.size(); ++i)
-                if (const TreeBuffers::GpuMesh* gpu = mBuffers.find(mPreview[i].mesh.get());
-                    gpu && gpu->windElements)
-                    previewBases[i] = add(gpu->elements.get(), mPreview[i].windPhase);
-            rotations = mBuffers.uploadWindRotations(mWindRotations);
-            glActiveTexture(GL_TEXTURE0 + kWindRotationsUnit);
-            glBindTexture(GL_TEXTURE_BUFFER, rotations);
-            glActiveTexture(GL_TEXTURE0);
-        }
-        if (!rotations) sceneBase = -1;
-        u.wind = windFrameAt(0.0f);
-        u.windBase = std::max(sceneBase, 0);
-        setMeshUniforms(u);
-        glActiveTexture(GL_TEXTURE0);
-        glBindVertexArray(mBuffers.sceneVao());
-        mDrawWind = sceneBase >= 0;
-        if (mDrawWind) bindWindElements(mBuffers.sceneWindElements());
-        drawRanges(sceneRanges);
-        for (const DrawRange& r : sceneRanges) {
-            mDrawnTriangles += r.indexCount / 3;
-            if (mDrawWind) mDrawnWindTriangles += r.indexCount / 3;
-        }
-        mDrawWind = false;
-        u.vertexColor = false;
-        setMeshUniforms(u);
-        // Nearest first, so that the depth test spares the rasteriser what is hidden behind.
-        std::vector<const TreeDraw*> cards;
-        // Instances of a variant's level, in the order of their nearest instance: one instanced
-        // draw call per level and material for all of them (swaying ones are drawn one by one).
-        std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>> groups;
-        std::map<const mesh::Mesh*, std::size_t> groupOf;
-        for (const Drawn& d : drawns) {
-            const ViewTree& t = mTrees[d.draw->index];
-            const float highlight = t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f;
-            if (!d.mesh) {
-                cards.push_back(d.draw);
-                continue;
-            }
-            if (t.lod.instance && highlight == 0.0f && d.windBase < 0) {
-                auto [it, added] = groupOf.emplace(d.mesh, groups.size());
-                if (added) groups.push_back({d.mesh, {}});
-                groups[it->second].second.push_back(t.transform);
-                continue;
-            }
-            drawTreeMesh(*d.mesh, t.transform, highlight, t.windPhase, rotations ? d.windBase : -1);
-        }
-        drawInstanced(groups);
-        for (std::size_t i = 0; i < mPreview.size(); ++i)
-            if (mPreview[i].mesh)
-                drawTreeMesh(*mPreview[i].mesh, mPreview[i].transform, 0.25f, mPreview[i].windPhase,
-                             rotations ? previewBases[i] : -1);
-        if (!cards.empty()) {
-            // The target's height: the reduced one while the view moves.
-            const float targetHeight = float(full.height()) * (mLastReduced ? mMotionScale : 1.0f);
-            mImpostors.begin(viewProj, mCamera.eye(),
-                             targetHeight / (2.0f * std::tan(0.5f * mCamera.fovY())), mLastReduced);
-            for (const TreeDraw* d : cards) {
-                const ViewTree& t = mTrees[d->index];
-                // A unique tree standing in with its variant's atlas: scaled to its height.
-                const glm::mat4 model =
-                    t.lod.impostorScale != 1.0f
-                        ? glm::scale(t.transform, glm::vec3(t.lod.impostorScale))
-                        : t.transform;
-                mImpostors.draw(impostorKey(t), model,
-                                t.id && mHighlighted.contains(t.id) ? 0.45f : 0.0f);
-                ++mDrawnPerLevel[ViewLod::kImpostorLevel];
-                mDrawnTrianglesPerLevel[ViewLod::kImpostorLevel] += 2;
-                mDrawnTriangles += 2;
-            }
-            mImpostorDrawCalls = mImpostors.end();
-        }
-    }
+
+    mWind->startFrame();
+    TreeFrame frame;
+    frame.viewProj = viewProj;
+    frame.eye = mCamera.eye();
+    frame.light = light;
+    // The target's height: the reduced one while the view moves.
+    const float targetHeight = float(full.height()) * (mLastReduced ? mMotionScale : 1.0f);
+    frame.pixelsPerUnit = targetHeight / (2.0f * std::tan(0.5f * mCamera.fovY()));
+    frame.reduced = mLastReduced;
+    mStats = mTreePass.draw(frame, mTrees, mPreview, mLastDrawList, mHighlighted);
+
     if (mOverlay) mOverlays.drawLines(*mLineProgram, mOverlay(), viewProj);
     mOverlays.drawBand(*mLineProgram, mBand, size());
     glBindVertexArray(0);
@@ -702,80 +489,6 @@ void Viewport::setBand(const QRect& band) {
     if (band == mBand) return;
     mBand = band;
     update();
-}
-
-void Viewport::drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight,
-                            float windPhase, int windBase) {
-    const TreeBuffers::GpuMesh* gpu = mBuffers.find(&m);
-    if (!gpu) return;
-    MeshUniforms u = mMeshUniforms;
-    u.model = transform;
-    u.highlight = highlight;
-    mDrawWind = windBase >= 0 && gpu->windElements != 0;
-    if (mDrawWind) {
-        u.wind = windFrameAt(windPhase);
-        u.windBase = windBase;
-        bindWindElements(gpu->windElements);
-    }
-    setMeshUniforms(u);
-    glBindVertexArray(gpu->vao);
-    drawRanges(gpu->ranges);
-    for (const DrawRange& r : gpu->ranges) {
-        mDrawnTriangles += r.indexCount / 3;
-        if (mDrawWind) mDrawnWindTriangles += r.indexCount / 3;
-    }
-    mDrawWind = false;
-}
-
-void Viewport::bindWindElements(GLuint texture) {
-    glActiveTexture(GL_TEXTURE0 + kWindElementsUnit);
-    glBindTexture(GL_TEXTURE_BUFFER, texture);
-    glActiveTexture(GL_TEXTURE0);
-}
-
-void Viewport::drawInstanced(
-    const std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>>& groups) {
-    if (groups.empty()) return;
-    // Every instance's transform in one buffer, each level's instances one run of it.
-    std::vector<glm::mat4> all;
-    for (const auto& [m, list] : groups)
-        all.insert(all.end(), list.begin(), list.end());
-    glBindBuffer(GL_ARRAY_BUFFER, mInstanceVbo);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(all.size() * sizeof(glm::mat4)), all.data(),
-                 GL_STREAM_DRAW);
-    MeshUniforms u = mMeshUniforms;
-    u.model = glm::mat4(1.0f);
-    u.highlight = 0.0f;
-    setMeshUniforms(u);
-    std::size_t first = 0;
-    for (const auto& [m, list] : groups) {
-        const TreeBuffers::GpuMesh* gpu = mBuffers.find(m);
-        glBindVertexArray(gpu->vao);
-        std::size_t triangles = 0;
-        for (const DrawRange& r : gpu->ranges)
-            triangles += r.indexCount / 3;
-        mDrawnTriangles += triangles * list.size();
-        // Under a software renderer, runs of about kFlushTriangles, each flushed (drawRanges),
-        // so the rasteriser's threads start on the nearer instances while this one bins on.
-        const std::size_t run =
-            mSoftware
-                ? std::max<std::size_t>(1, kFlushTriangles / std::max<std::size_t>(1, triangles))
-                : list.size();
-        for (std::size_t done = 0; done < list.size(); done += run) {
-            // The instance transform (shaders/mesh.vert, INSTANCED): locations 12-15, a column
-            // each, one step per instance.
-            for (GLuint c = 0; c < 4; ++c) {
-                glEnableVertexAttribArray(kInstanceAttribute + c);
-                glVertexAttribPointer(
-                    kInstanceAttribute + c, 4, GL_FLOAT, GL_FALSE, sizeof(glm::mat4),
-                    reinterpret_cast<const void*>(((first + done) * 4 + c) * sizeof(glm::vec4)));
-                glVertexAttribDivisor(kInstanceAttribute + c, 1);
-            }
-            drawRanges(gpu->ranges, GLsizei(std::min(run, list.size() - done)));
-        }
-        first += list.size();
-    }
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
@@ -797,7 +510,7 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     view.maxImpostorPx = mLastReduced ? kMaxMovingImpostorPx : 0.0;
     // Impostors do not sway: with View ▸ Wind on, a moving frame draws no tree as one that the
     // sharp frame draws as a swaying mesh (the levels below still follow motionBias).
-    if (mLastReduced && windActive())
+    if (mLastReduced && mWind->active())
         view.maxImpostorPx = std::min(kMaxMovingImpostorPx, ViewLod::impostorHeightPx() * target);
     view.levels = mLod->isEnabled();
     // Variant levels while the view moves: ViewLod::kMotionFactor times as far as at rest on
@@ -814,9 +527,9 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
     // Where each baked impostor matches its tree (Impostors::switchHeightPx()).
     std::vector<double> impostorPx(mTrees.size(), -1.0);
     for (std::size_t i = 0; i < mTrees.size(); ++i)
-        impostorPx[i] = mImpostors.switchHeightPx(impostorKey(mTrees[i]));
+        impostorPx[i] = mImpostors.switchHeightPx(Impostors::keyOf(mTrees[i]));
     // Picking keeps the full mesh; only drawing follows the level of detail.
-    if (!windActive()) return buildDrawList(view, drawn, mTreeBounds, instances, impostorPx);
+    if (!mWind->active()) return buildDrawList(view, drawn, mTreeBounds, instances, impostorPx);
     // Swaying trees reach beyond their rest boxes: widened across by half their height (the
     // model bends a trunk at most 0.3 rad and its limbs 0.6 rad more) so that a tree at the
     // view's edge is not culled while its crown sways into view. Heights stay as they are, and
@@ -829,154 +542,6 @@ std::vector<TreeDraw> Viewport::treesToDraw(const glm::mat4& viewProj) const {
         b.hi += glm::vec3(reach, 0.0f, reach);
     }
     return buildDrawList(view, drawn, swaying, instances, impostorPx);
-}
-
-Impostors::Key Viewport::impostorKey(const ViewTree& t) {
-    if (t.lod.variant) return static_cast<Impostors::Key>(t.lod.variant.get());
-    return t.lod.skeleton ? static_cast<Impostors::Key>(t.lod.skeleton.get())
-                          : static_cast<Impostors::Key>(t.mesh.get());
-}
-
-void Viewport::bakeImpostors(const std::vector<TreeDraw>& order) {
-    // Atlases bake on the impostors' worker (one per variant: its instances and the unique
-    // trees of its species share it); the trees still waiting are drawn with their coarsest
-    // mesh meanwhile, and a frame now and then uploads what is done.
-    static const mesh::ImpostorTextures textures(exporter::resourcesDir() / "textures");
-    if (mImpostors.collect() > 0) mTreesDirty = true;
-    mImpostorsWanted = 0;
-    for (const TreeDraw& d : order) {
-        const ViewTree& t = mTrees[d.index];
-        const Impostors::Key key = impostorKey(t);
-        if (d.level != ViewLod::kImpostorLevel || mImpostors.has(key)) continue;
-        ++mImpostorsWanted;
-        if (mImpostors.isBaking(key)) continue;
-        std::shared_ptr<const void> owner;
-        std::shared_ptr<const mesh::Mesh> source, reference;
-        if (t.lod.variant) {
-            // The variant's level made for a tree about twice the atlas' cell high on the
-            // reference view (the bake supersamples twice): all its views can show.
-            const ViewVariant& v = *t.lod.variant;
-            const double refFov = v.referenceFovYDegrees * 3.14159265358979323846 / 180.0;
-            const double distance = double(v.height) * v.referenceHeightPx /
-                                    (2.0 * std::tan(0.5 * refFov) * 2.0 * Impostors::kCell);
-            source = v.levels[mesh::levelFor(v.levels, distance)].mesh;
-            reference = v.levels.front().mesh;
-            owner = t.lod.variant;
-        } else {
-            // Baked from the tree's coarse level once the worker has made it, or from its own
-            // mesh when it has no levels coming.
-            source = mLod->levelMesh(t.mesh.get(), ViewLod::kImpostorLevel - 1);
-            if (!source && mLod->pending() > 0 && t.lod.skeleton) continue;
-            if (!source) source = t.mesh;
-            reference = t.mesh;
-            owner = t.lod.skeleton ? std::shared_ptr<const void>(t.lod.skeleton)
-                                   : std::shared_ptr<const void>(t.mesh);
-        }
-        mImpostors.request(key, std::move(owner), std::move(source), textures, std::move(reference),
-                           ViewLod::impostorHeightPx());
-    }
-    // Atlases still baking are collected by the timer's frames too, even when no tree in the
-    // view wants one now (the view moved nearer meanwhile): else lodPending() stays up.
-    if ((mImpostorsWanted > 0 || mImpostors.baking() > 0) && !mBakeTimer->isActive())
-        mBakeTimer->start();
-}
-
-void Viewport::setMeshUniforms(const MeshUniforms& uniforms) {
-    mMeshUniforms = uniforms;
-    ++mMeshUniformsStamp;
-}
-
-QOpenGLShaderProgram& Viewport::useMeshProgram(int variant) {
-    QOpenGLShaderProgram& program = *mMeshPrograms[std::size_t(variant)];
-    program.bind();
-    std::uint64_t& stamp = mMeshProgramStamps[std::size_t(variant)];
-    if (stamp != mMeshUniformsStamp) {
-        // Only what changed since this variant was last used is stale; setting all is cheap.
-        const MeshUniforms& u = mMeshUniforms;
-        setUniform(program, "uViewProj", u.viewProj);
-        setUniform(program, "uModel", u.model);
-        setUniform(program, "uEye", u.eye);
-        setUniform(program, "uLightDir", u.light);
-        program.setUniformValue("uVertexColor", u.vertexColor);
-        program.setUniformValue("uHighlight", u.highlight);
-        program.setUniformValue("uTexture", 0);
-        program.setUniformValue("uNormalMap", 1);
-        if (variant & kMeshWind) setWindUniforms(program, u.wind, u.windBase);
-        stamp = mMeshUniformsStamp;
-    }
-    return program;
-}
-
-void Viewport::drawRanges(const std::vector<DrawRange>& ranges, GLsizei instances) {
-    // Leaf cards cut out by alpha to coverage where the target is multisampled (issue #33);
-    // the written alpha is then 1 (ALPHA_TO_ONE), as every other draw's.
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    for (const DrawRange& r : ranges) {
-        QOpenGLShaderProgram& program =
-            useMeshProgram((r.texture != 0 ? kMeshTextured : 0) | (r.alphaTest ? kMeshCutout : 0) |
-                           (mDrawWind ? kMeshWind : 0) | (instances > 0 ? kMeshInstanced : 0));
-        setUniform(program, "uAlbedo", r.color);
-        const bool toCoverage = r.alphaTest && r.texture != 0 && samples > 1;
-        if (r.alphaTest && r.texture != 0) program.setUniformValue("uAlphaToCoverage", toCoverage);
-        if (toCoverage) {
-            glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            glEnable(GL_SAMPLE_ALPHA_TO_ONE);
-        } else {
-            glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-            glDisable(GL_SAMPLE_ALPHA_TO_ONE);
-        }
-        if (r.texture != 0) {
-            glActiveTexture(GL_TEXTURE1);
-            glBindTexture(GL_TEXTURE_2D, r.normalMap);
-            glActiveTexture(GL_TEXTURE0);
-        }
-        glBindTexture(GL_TEXTURE_2D, r.texture);
-        if (r.twoSided || !mCullBackFaces)
-            glDisable(GL_CULL_FACE);
-        else
-            glEnable(GL_CULL_FACE);
-        if (instances > 0) {
-            // One call for every instance; under a software renderer a flush after it hands
-            // the rasteriser's threads what is binned so far (see below).
-            glDrawElementsInstanced(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                                    reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u),
-                                    instances);
-            ++mInstancedDrawCalls;
-            mUnflushed += std::size_t(r.indexCount / 3) * std::size_t(instances);
-            if (mSoftware && mUnflushed >= kFlushTriangles) {
-                glFlush();
-                mUnflushed = 0;
-            }
-            continue;
-        }
-        if (!mSoftware) {
-            glDrawElements(GL_TRIANGLES, GLsizei(r.indexCount), GL_UNSIGNED_INT,
-                           reinterpret_cast<void*>(std::uintptr_t(r.firstIndex) * 4u));
-            continue;
-        }
-        // Mesa llvmpipe transforms and bins on this thread and rasterises on its own threads
-        // only when the frame is flushed, so a frame used one core at a time: a flush every
-        // kFlushTriangles hands them what is drawn so far (the nearer trees, or the first
-        // part of one large mesh) while this thread goes on with the rest.
-        std::size_t first = r.firstIndex, left = r.indexCount / 3;
-        while (left > 0) {
-            const std::size_t n = std::min(left, kFlushTriangles - mUnflushed);
-            glDrawElements(GL_TRIANGLES, GLsizei(3 * n), GL_UNSIGNED_INT,
-                           reinterpret_cast<void*>(std::uintptr_t(first) * 4u));
-            first += 3 * n;
-            left -= n;
-            mUnflushed += n;
-            if (mUnflushed >= kFlushTriangles) {
-                glFlush();
-                mUnflushed = 0;
-            }
-        }
-    }
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
-    glDisable(GL_SAMPLE_ALPHA_TO_ONE);
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <QElapsedTimer>
 #include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QPoint>
@@ -24,6 +23,7 @@
 
 #include "engine/wind/windmodel.h"
 #include "ui/generation/vertexdata.h"
+#include "ui/viewport/backgroundpass.h"
 #include "ui/viewport/drawlist.h"
 #include "ui/viewport/grid.h"
 #include "ui/viewport/impostors.h"
@@ -32,8 +32,11 @@
 #include "ui/viewport/picking.h"
 #include "ui/viewport/reducedtarget.h"
 #include "ui/viewport/treebuffers.h"
+#include "ui/viewport/treepass.h"
 #include "ui/viewport/viewlod.h"
 #include "ui/viewport/viewportsurface.h"
+#include "ui/viewport/viewtree.h"
+#include "ui/viewport/windclock.h"
 
 class QOpenGLContext;
 class QOpenGLShaderProgram;
@@ -47,19 +50,6 @@ struct Skeleton;
 }
 
 namespace sylva::ui {
-
-/// One tree of a forest as the viewport draws it: its own mesh in its own frame, placed by
-/// \p transform (rotation, uniform scale, translation).
-struct ViewTree {
-    std::uint32_t id = 0; ///< the document's tree id; 0 for trees scattered by a domain
-    std::shared_ptr<const mesh::Mesh> mesh;
-    glm::mat4 transform{1.0f};
-    /// What coarser levels are made from when the tree is small on screen (empty: none); its
-    /// skeleton also gives the mesh's wind data (setWindEnabled()).
-    TreeLodSource lod;
-    /// Where in the wind's loop this tree plays, 0..1 of the period (windPhaseOf(its id)).
-    float windPhase = 0.0f;
-};
 
 /// What a tool (ui/viewport/toolcontroller.h) gets from the viewport. press() returns true
 /// when the tool takes the drag (the camera then does not move); move() and release() follow
@@ -90,7 +80,9 @@ public:
 /// This class holds the scene, the camera, input and the frame's order; its jobs live beside
 /// it: the native window and surface format (viewportsurface), the GLSL (shaders/, loaded by
 /// shaderprogram), the GPU buffers and textures (treebuffers), what to draw at which level
-/// (drawlist, pure), the grid, the overlays and rubber band, the reduced-resolution target.
+/// (drawlist, pure), the frame's passes in their order (backgroundpass, grid, treepass over
+/// meshpass and impostors, overlays with the rubber band), the wind clock (windclock), the
+/// impostors' baking (impostors), the reduced-resolution target.
 class Viewport : public QWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
 
@@ -172,33 +164,34 @@ public:
     /// Coarser levels of detail uploaded (ui/viewport/viewlod.h), not counted in uploads().
     std::size_t levelUploads() const { return mLevelUploads; }
     /// Trees drawn in the last frame: those whose box is outside the view are skipped.
-    std::size_t drawnTrees() const { return mDrawnTrees; }
+    std::size_t drawnTrees() const { return mStats.trees; }
     /// Trees the last frame drew at their motion level (the view was moving).
-    std::size_t drawnMotion() const { return mDrawnMotion; }
+    std::size_t drawnMotion() const { return mStats.motion; }
 
     /// Triangles drawn in the last frame (trees at their level of detail, obstacles, terrain).
-    std::size_t drawnTriangles() const { return mDrawnTriangles; }
+    std::size_t drawnTriangles() const { return mStats.triangles; }
     /// Trees drawn at each level of detail in the last frame (0 = full).
     const std::array<std::size_t, ViewLod::kLevels>& drawnPerLevel() const {
-        return mDrawnPerLevel;
+        return mStats.perLevel;
     }
     /// Triangles the last frame's trees drew at each level of detail (impostors: 2 each).
     const std::array<std::size_t, ViewLod::kLevels>& drawnTrianglesPerLevel() const {
-        return mDrawnTrianglesPerLevel;
+        return mStats.trianglesPerLevel;
     }
     /// The height on screen (pixels) under which tree \p index is drawn as its impostor: where
     /// its baked atlas matches its mesh (Impostors::switchHeightPx()); negative while none is
     /// baked. Impostors that switch later than the default: impostorsSwitchedLater().
     double impostorSwitchPx(std::size_t index) const {
-        return index < mTrees.size() ? mImpostors.switchHeightPx(impostorKey(mTrees[index])) : -1.0;
+        return index < mTrees.size() ? mImpostors.switchHeightPx(Impostors::keyOf(mTrees[index]))
+                                     : -1.0;
     }
     std::size_t impostorsSwitchedLater() const { return mImpostors.switchedLater(); }
     /// Instanced draw calls the last frame's impostors took (one per atlas in view).
-    std::size_t impostorDrawCalls() const { return mImpostorDrawCalls; }
+    std::size_t impostorDrawCalls() const { return mStats.impostorDrawCalls; }
     /// Instanced draw calls the last frame's variant instances took (one per variant level in
     /// view and material), and the tree meshes on the GPU (one buffer set each: a variant's
     /// levels once, whatever its instances).
-    std::size_t instancedDrawCalls() const { return mInstancedDrawCalls; }
+    std::size_t instancedDrawCalls() const { return mStats.instancedDrawCalls; }
     /// What the last frame drew, nearest first, with the levels (ui/viewport/drawlist.h).
     const std::vector<TreeDraw>& lastDrawList() const { return mLastDrawList; }
     std::size_t gpuTreeMeshes() const { return mBuffers.treeMeshCount(); }
@@ -207,7 +200,7 @@ public:
     /// Trees whose coarser levels or impostor are still to be made (0: the view is final).
     /// (As of the last frame: draw one after the view changed.)
     std::size_t lodPending() const {
-        return mLod->pending() + mImpostorsWanted + mImpostors.baking();
+        return mLod->pending() + mImpostors.wanted() + mImpostors.baking();
     }
 
     /// Milliseconds the last upload of setMesh()'s mesh took (vertices, indices, textures;
@@ -235,25 +228,25 @@ public:
     /// windPhase later in the loop; the view then draws frames continuously while the wind
     /// clock runs. Impostors stand still. Off: the picture is the one without wind.
     void setWindEnabled(bool on);
-    bool windEnabled() const { return mWindOn; }
+    bool windEnabled() const { return mWind->enabled(); }
     /// The wind the trees sway in (the project's; the engine's default until set).
     void setWind(const wind::WindSettings& settings);
-    const wind::WindSettings& wind() const { return mWind; }
+    const wind::WindSettings& wind() const { return mWind->settings(); }
     /// Freezes the wind clock at \p seconds (scripts, tests and pictures: the same time gives
     /// the same frame), or lets it run with the wall clock again (nullopt).
     void setWindTime(std::optional<double> seconds);
     /// The wind clock now, in seconds.
-    double windTime() const;
+    double windTime() const { return mWind->time(); }
     /// Triangles drawn swaying in the last frame.
-    std::size_t drawnWindTriangles() const { return mDrawnWindTriangles; }
+    std::size_t drawnWindTriangles() const { return mStats.windTriangles; }
 
     /// Culls the back faces of Sylva's bark tubes (on by default; DrawRange::twoSided says
     /// what never is). Off only for comparisons: the picture is the same.
     void setBackFaceCulling(bool on) {
-        mCullBackFaces = on;
+        mTreePass.meshes().setBackFaceCulling(on);
         update();
     }
-    bool backFaceCulling() const { return mCullBackFaces; }
+    bool backFaceCulling() const { return mTreePass.meshes().backFaceCulling(); }
 
     /// While the view moves (the camera or a dragged tree changed since the last frame) a
     /// software renderer draws the scene at this fraction of the resolution and scales it up;
@@ -333,9 +326,6 @@ private:
     void releaseGl();
     void applyFrame();
     void uploadMesh();
-    /// \p instances > 0: each range drawn once per instance of the instance buffer's bound run
-    /// (drawInstanced()), with the instanced mesh program.
-    void drawRanges(const std::vector<DrawRange>& ranges, GLsizei instances = 0);
     float aspect() const;
 
     std::size_t vertexCount() const;
@@ -357,48 +347,19 @@ private:
     QPoint mLastMouse;
 
     ViewportSurface* mSurface = nullptr;
-    bool mSoftware = false;     ///< a software renderer (Mesa llvmpipe …)
-    bool mCullBackFaces = true; ///< of the bark (setBackFaceCulling())
-    /// Triangles between the flushes of a frame under a software renderer (drawRanges()).
-    static constexpr std::size_t kFlushTriangles = 40000;
-    std::size_t mUnflushed = 0; ///< triangles drawn since the last flush
+    bool mSoftware = false; ///< a software renderer (Mesa llvmpipe …)
     QRect mBand;
     bool mGlReady = false;
     QString mGlInfo;
     QString mGlError;
-    /// The mesh shader's variants (a bit set): compiled apart so that bark does not pay for
-    /// the leaves' texture and cut-out, and keeps the early depth test.
-    /// WIND sways the vertices (wind.glsl) and is drawn only for meshes with wind data;
-    /// INSTANCED takes the transform per instance (never with WIND: swaying instances are drawn
-    /// one by one, each with its own place in the wind's loop).
-    static constexpr int kMeshTextured = 1, kMeshCutout = 2, kMeshWind = 4, kMeshInstanced = 8,
-                         kMeshVariants = 16;
-    /// shaders/mesh.vert's per-instance transform (INSTANCED), four locations from here.
-    static constexpr GLuint kInstanceAttribute = 12;
-    GLuint mInstanceVbo = 0;
-    /// What every mesh variant shares in a draw; a variant is brought up to date when used.
-    struct MeshUniforms {
-        glm::mat4 viewProj{1.0f};
-        glm::mat4 model{1.0f};
-        glm::vec3 eye{0.0f};
-        glm::vec3 light{0.0f, 1.0f, 0.0f};
-        bool vertexColor = false;
-        float highlight = 0.0f;
-        wind::WindFrame wind; ///< its time is the drawn tree's
-        int windBase = 0;     ///< the drawn tree's first element in the frame's rotations
-    };
-    void setMeshUniforms(const MeshUniforms& uniforms);
-    QOpenGLShaderProgram& useMeshProgram(int variant);
-    std::array<std::unique_ptr<QOpenGLShaderProgram>, kMeshVariants> mMeshPrograms;
-    std::array<std::uint64_t, kMeshVariants> mMeshProgramStamps{};
-    MeshUniforms mMeshUniforms;
-    std::uint64_t mMeshUniformsStamp = 1;
-    std::unique_ptr<QOpenGLShaderProgram> mLineProgram;
-    std::unique_ptr<QOpenGLShaderProgram> mBackgroundProgram;
-    GLuint mEmptyVao = 0; ///< the background's (its triangle comes from the vertex ids)
+    std::unique_ptr<QOpenGLShaderProgram> mLineProgram; ///< the grid's and the overlays'
     TreeBuffers mBuffers;
+    // The frame's passes, in their order.
+    BackgroundPass mBackground;
     Grid mGrid;
+    TreePass mTreePass;
     Overlays mOverlays;
+    DrawStats mStats; ///< the last frame's
 
     void syncTreeBuffers();
     /// The trees to draw this frame, nearest first, with their levels (ui/viewport/drawlist.h).
@@ -407,33 +368,9 @@ private:
     bool isHidden(std::size_t index) const {
         return mTrees[index].id != 0 && mHidden.contains(mTrees[index].id);
     }
-    void bakeImpostors(const std::vector<TreeDraw>& order);
-    /// The atlas a tree draws far away: its skeleton's (shared by a variant's instances).
-    static Impostors::Key impostorKey(const ViewTree& t);
-    /// \p windBase: where the mesh's element rotations start in the frame's rotations
-    /// (-1: drawn without wind).
-    void drawTreeMesh(const mesh::Mesh& m, const glm::mat4& transform, float highlight,
-                      float windPhase, int windBase);
-    std::vector<glm::vec4> mWindRotations; ///< the frame's, kept for its capacity
-    /// The wind's frame for a tree \p phase of the period into the loop.
-    wind::WindFrame windFrameAt(float phase) const;
-    bool mWindOn = false;
     double mLastUploadMs = 0.0;
     double mLastPaintMs = 0.0;
-    wind::WindSettings mWind;
-    std::optional<double> mWindFixed; ///< the frozen wind clock
-    QElapsedTimer mWindClock;
-    double mWindClockStart = 0.0; ///< the clock's seconds when it was (re)started
-    QTimer* mWindTimer = nullptr; ///< the next frame while the wind clock runs
-    bool mDrawWind = false;       ///< drawRanges() takes the WIND variant
-    std::size_t mDrawnWindTriangles = 0;
-    void updateWindTimer();
-    bool windActive() const { return mWindOn && mWind.strength > 0.0f; }
-    void bindWindElements(GLuint texture);
-    double mPaintWindTime = 0.0; ///< the wind clock at the frame's start
-    /// Each variant level's instances (nearest level first) with instanced draw calls.
-    void
-    drawInstanced(const std::vector<std::pair<const mesh::Mesh*, std::vector<glm::mat4>>>& groups);
+    WindClock* mWind = nullptr; ///< a child
     void updateBounds();
     std::vector<ViewTree> mTrees;
     std::vector<ViewTree> mPreview;
@@ -456,18 +393,9 @@ private:
     bool mTransformsMoved = false;
     QTimer* mSharpTimer = nullptr;
     ReducedTarget mReduced;
-    std::size_t mDrawnTrees = 0;
-    std::size_t mDrawnTriangles = 0;
-    std::array<std::size_t, ViewLod::kLevels> mDrawnPerLevel{};
-    std::array<std::size_t, ViewLod::kLevels> mDrawnTrianglesPerLevel{};
-    std::size_t mImpostorDrawCalls = 0;
-    std::size_t mInstancedDrawCalls = 0;
     std::vector<TreeDraw> mLastDrawList;
-    QTimer* mBakeTimer = nullptr;
-    std::size_t mDrawnMotion = 0;
     ViewLod* mLod = nullptr; ///< a child
     Impostors mImpostors;
-    std::size_t mImpostorsWanted = 0; ///< at the last paint
 };
 
 } // namespace sylva::ui

@@ -24,16 +24,8 @@ flat out vec2 vStep[3];
 flat out vec2 vCell[3];
 flat out vec3 vWeight;
 
-vec3 decodeDir(vec2 uv) {
-    vec2 p = uv * 2.0 - 1.0;
-    float x = 0.5 * (p.x + p.y), z = 0.5 * (p.x - p.y);
-    return normalize(vec3(x, 1.0 - abs(x) - abs(z), z));
-}
-vec2 encodeDir(vec3 d) {
-    d.y = max(d.y, 0.0);
-    d /= abs(d.x) + abs(d.y) + abs(d.z);
-    return clamp(vec2(d.x + d.z, d.x - d.z) * 0.5 + 0.5, 0.0, 1.0);
-}
+// The atlas' views: decodeDir, basis, atlasViews (Sylva bakes hemisphere atlases).
+#include "impostoratlas.glsl"
 
 void main() {
     const vec2 corners[6] = vec2[6](vec2(-1, -1), vec2(1, -1), vec2(1, 1),
@@ -43,26 +35,16 @@ void main() {
     vec3 eyeLocal = (inverse(aModel) * vec4(uEye, 1.0)).xyz;
     vec3 d = eyeLocal - uCentre;
     vec3 view = length(d) > 1e-6 ? normalize(d) : vec3(0.0, 0.0, 1.0);
-    vec3 hint = abs(view.y) > 0.9999 ? vec3(0.0, 0.0, -1.0) : vec3(0.0, 1.0, 0.0);
-    vec3 right = normalize(cross(hint, view));
-    vec3 up = cross(view, right);
+    vec3 right, up;
+    basis(view, right, up);
     vec3 billboard = st.x * right + st.y * up; // the card's point, in bounding-sphere units
 
     // Barycentric weights over the grid's triangle around the view direction, so that the
     // picture changes continuously while the view turns.
     float n1 = float(uGrid - 1);
-    vec2 g = encodeDir(view) * n1;
-    vec2 base = clamp(floor(g), vec2(0.0), vec2(n1 - 1.0));
-    vec2 f = g - base;
     vec2 c[3];
     vec3 w;
-    if (f.x + f.y <= 1.0) {
-        c[0] = base; c[1] = base + vec2(1.0, 0.0); c[2] = base + vec2(0.0, 1.0);
-        w = vec3(1.0 - f.x - f.y, f.x, f.y);
-    } else {
-        c[0] = base + vec2(1.0, 1.0); c[1] = base + vec2(0.0, 1.0); c[2] = base + vec2(1.0, 0.0);
-        w = vec3(f.x + f.y - 1.0, 1.0 - f.x, 1.0 - f.y);
-    }
+    atlasViews(view, uGrid, true, c, w);
     // Heaviest first: the fragment shader's early cut-out reads that view alone.
     if (w.y > w.x && w.y >= w.z) {
         c = vec2[3](c[1], c[0], c[2]);
@@ -72,10 +54,8 @@ void main() {
         w = w.zyx;
     }
     for (int k = 0; k < 3; ++k) {
-        vec3 vk = decodeDir(c[k] / n1);
-        vec3 h = abs(vk.y) > 0.9999 ? vec3(0.0, 0.0, -1.0) : vec3(0.0, 1.0, 0.0);
-        vec3 rk = normalize(cross(h, vk));
-        vec3 uk = cross(vk, rk);
+        vec3 vk = decodeDir(c[k] / n1, true), rk, uk;
+        basis(vk, rk, uk);
         // The point moved along the viewer's ray onto the view's plane (q = p - view · s), then
         // by the stored depth h: s - h / facing (docs/lods.md's one step).
         float invFacing = 1.0 / max(dot(view, vk), 0.05);
