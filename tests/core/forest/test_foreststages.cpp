@@ -16,6 +16,8 @@ namespace {
 graph::SpeciesGraph chain(std::vector<graph::NodeDesc> nodes) {
     graph::SpeciesGraph g;
     g.name = "s";
+    for (graph::NodeDesc& n : nodes)
+        if (n.params.isNull()) n.params = Value::Object{}; // `{}` above is JSON null
     g.nodes = std::move(nodes);
     g.output = g.nodes.back().id;
     return g;
