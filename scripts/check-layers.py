@@ -113,6 +113,34 @@ def check(root):
                 if m:
                     problems.append(f"{os.path.relpath(path, root)}:{n}: the node type "
                                     f"\"{m.group(1)}\" named in graph/ (ask NodeType::role)")
+    # Outside engine/nodes no code tests a node type by its name either: it asks the type's
+    # traits (graph::findType, roleOf, standGrowthOf, graph::meshOutput) or, to make a default
+    # graph, engine/nodes (nodes::grammarSpecies). A name used as a type: compared, assigned to
+    # a `type`, the type of a NodeDesc, or looked up in the registry. (The same word as a stats
+    # key or a JSON key, "adapt" or "leaves", is not a type.) Tests may name types.
+    if names:
+        n = "(" + "|".join(sorted(names)) + ")"
+        wrap = r'(?:QLatin1String|QStringLiteral|QString|std::string)?\(?\s*'
+        # Compared with something named type (a material "leaves" is not a node type).
+        as_type = re.compile(r'[tT]ype\w*(?:\(\))?\s*(==|!=)\s*' + wrap + '"' + n + '"|'
+                             r'"' + n + r'"\s*\)?\s*(==|!=)\s*[\w.>-]*[tT]ype|'
+                             r'\btype\s*=\s*"' + n + '"|'
+                             r'NodeDesc\s*\w*\s*\{\s*"[^"]*"\s*,\s*"' + n + '"|'
+                             r'(findType|roleOf|standGrowthOf|NodeRegistry::instance\(\)\.find)'
+                             r'\(\s*"' + n + '"')
+        nodes_dir = os.path.join("core", "engine", "nodes") + os.sep
+        for base in ("core", "app", "python", "ui"):
+            for path in sources(os.path.join(root, base)):
+                rel = os.path.relpath(path, root)
+                if rel.startswith(nodes_dir):
+                    continue
+                for line_no, line in enumerate(open(path, encoding="utf-8"), 1):
+                    m = as_type.search(line.split("//")[0])
+                    if m:
+                        name = next(g for g in m.groups() if g and g in names)
+                        problems.append(f"{rel}:{line_no}: the node type \"{name}\" tested "
+                                        f"outside engine/nodes (ask its traits: graph::findType, "
+                                        f"roleOf, standGrowthOf, meshOutput)")
     # Only the format table (engine/export/formats.cpp) switches on an export format's file
     # extension; everything else asks it (formatFor, findFormat, FormatRow). Reading obstacle
     # meshes (engine/environment) is not exporting and has its own checks.

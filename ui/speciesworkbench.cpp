@@ -20,9 +20,21 @@
 #include <QMouseEvent>
 #include <limits>
 
+#include "engine/graph/graph.h"
 #include "engine/mesh/mesh.h"
 
 namespace sylva::ui {
+
+namespace {
+
+/// Whether the grammar editor edits nodes of this type: the type declares a text `grammar`.
+bool takesGrammar(const QString& type) {
+    const graph::NodeType* t = graph::findType(type.toStdString());
+    const graph::ParamSpec* p = t ? t->findParam("grammar") : nullptr;
+    return p && p->kind == graph::ParamKind::Text;
+}
+
+} // namespace
 
 SpeciesWorkbench::SpeciesWorkbench(doc::Document& document, QWidget* parent)
     : QWidget(parent), mDocument(document) {
@@ -172,7 +184,7 @@ std::pair<QString, QString> SpeciesWorkbench::growingNodes() const {
         const graph::SpeciesGraph g = mDocument.engineSpecies(species().toStdString());
         const graph::NodeDesc* n = g.findNode(g.output);
         while (n) {
-            if (n->type == "leaves" && leavesNode.isEmpty())
+            if (graph::roleOf(n->type) == graph::NodeRole::Leaves && leavesNode.isEmpty())
                 leavesNode = QString::fromStdString(n->id);
             if (n->inputs.empty()) {
                 generator = QString::fromStdString(n->id);
@@ -280,7 +292,7 @@ void SpeciesWorkbench::showSelectionInPanels() {
     const QString id = ids.isEmpty() ? QString() : ids.front();
     mParameters->setNode(species(), id);
     NodeItem* n = mScene->node(id);
-    if (n && n->nodeType() == QLatin1String("lsystem")) mGrammar->setNode(species(), id);
+    if (n && takesGrammar(n->nodeType())) mGrammar->setNode(species(), id);
 }
 
 void SpeciesWorkbench::showEvent(QShowEvent* event) {
@@ -307,7 +319,7 @@ void SpeciesWorkbench::setSpecies(const QString& species) {
     // Select the generator (first node), so the panels show something useful at once.
     const QList<NodeItem*> nodes = mScene->nodes();
     for (NodeItem* n : nodes)
-        if (n->nodeType() == QLatin1String("lsystem")) {
+        if (takesGrammar(n->nodeType())) {
             mScene->selectNode(n->id());
             break;
         }

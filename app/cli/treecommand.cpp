@@ -55,8 +55,10 @@ int runTree(const std::vector<std::string>& argv) {
     if (!n) n = args.integer("--generations", 0, 1000);
     if (n) {
         bool any = false;
+        // Every generator that counts generations (the type declares the parameter).
         for (const graph::NodeDesc& node : evaluator.graph().nodes)
-            if (node.type == "lsystem") {
+            if (const graph::NodeType* type = graph::findType(node.type);
+                type && type->findParam("generations")) {
                 evaluator.setParam(node.id, "generations", sylva::Value(static_cast<double>(*n)));
                 any = true;
             }
@@ -75,9 +77,8 @@ int runTree(const std::vector<std::string>& argv) {
         // The season is the meshing node's parameter: --season autumn is --set mesh.season=autumn
         // on the output node.
         const mesh::Season season = parseSeasonOption(*name);
-        const graph::NodeDesc* out = evaluator.graph().findNode(evaluator.graph().output);
-        if (!out || out->type != "tube_mesh")
-            throw UsageError("--season needs a species whose output node is a tube_mesh");
+        const graph::NodeDesc* out = graph::meshOutput(evaluator.graph());
+        if (!out) throw UsageError("--season needs a species whose output node is a tube_mesh");
         evaluator.setParam(out->id, "season", sylva::Value(std::string(mesh::seasonName(season))));
     }
 

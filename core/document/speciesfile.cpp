@@ -1,6 +1,7 @@
 #include "document/speciesfile.h"
 
 #include "document/formatupgrade.h"
+#include "engine/nodes/builtinnodes.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/error.h"
 
@@ -21,16 +22,12 @@ const std::vector<UpgradeStep>& speciesUpgrades() {
 }
 
 graph::SpeciesGraph wrapGrammar(const QString& path) {
-    graph::SpeciesGraph g;
     const QFileInfo info(path);
+    // The built-in generator and mesher: nodes/ names them.
+    graph::SpeciesGraph g = nodes::grammarSpecies(info.fileName().toStdString());
     g.name = info.completeBaseName().toStdString();
     g.baseDir = info.absolutePath().toStdString();
     g.sourceFile = path.toStdString();
-    graph::NodeDesc grow{
-        "grow", "lsystem", Value::Object{{"grammar_file", info.fileName().toStdString()}}, {}};
-    graph::NodeDesc mesh{"mesh", "tube_mesh", Value::Object{}, {"grow"}};
-    g.nodes = {grow, mesh};
-    g.output = "mesh";
     return g;
 }
 

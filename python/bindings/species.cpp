@@ -430,8 +430,8 @@ void bindSpecies(py::module_& m) {
                     if (!seasonName.empty()) {
                         const graph::NodeDesc* mesh = graph::meshOutput(s.graph());
                         if (!mesh)
-                            throw InvalidInput("season needs a species whose output node is a "
-                                               "tube_mesh");
+                            throw InvalidInput(
+                                "season needs a species whose output node is a tube_mesh");
                         own = s.evaluator->graph();
                         s.evaluator->setParam(mesh->id, "season", sylva::Value(seasonName));
                     }

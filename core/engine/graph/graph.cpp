@@ -28,10 +28,19 @@ const std::string& SpeciesGraph::skeletonSource() const {
     return out ? out->inputs[0] : output;
 }
 
-NodeRole roleOf(const std::string& type) {
+const NodeType* findType(const std::string& type) {
     registerBuiltinNodeTypes();
-    const NodeType* t = NodeRegistry::instance().find(type);
+    return NodeRegistry::instance().find(type);
+}
+
+NodeRole roleOf(const std::string& type) {
+    const NodeType* t = findType(type);
     return t ? t->role : NodeRole::Other;
+}
+
+const StandGrowth* standGrowthOf(const std::string& type) {
+    const NodeType* t = findType(type);
+    return t ? t->stand.get() : nullptr;
 }
 
 const NodeDesc* meshOutput(const SpeciesGraph& graph) {

@@ -74,15 +74,50 @@ struct SpeciesGraph {
 /// What a node type is for, declared by the type (engine/nodes), so that code outside nodes/
 /// asks the role instead of testing a type's name.
 enum class NodeRole {
-    Other,     ///< passes or adds data (leaves)
+    Other,     ///< passes or adds data
+    Leaves,    ///< places leaves on the skeleton it passes on
     Generator, ///< grows a skeleton
     Adapt,     ///< reacts to the scene's obstacles and neighbours
     Mesher,    ///< makes the tree's mesh from one skeleton input
 };
 
+/// One tree of a stand (NodeType::stand): where it stands, its seed and its generator node's
+/// parameters.
+struct StandMember {
+    glm::vec3 position{0.0f};
+    std::uint64_t seed = 0;
+    const Value* params = nullptr;
+};
+
+/// The trait of a generator whose trees of one scene grow together, competing for light and
+/// space (self_organizing), instead of each from its seed alone: the forest grows them in a
+/// stage of their own, standing upright at their placed position, and never instances them.
+struct StandGrowth {
+    /// The stand a tree joins, from its generator's parameters: trees of one key grow together.
+    /// \throw InvalidInput for parameters the generator refuses.
+    std::function<int(const Value& params)> standOf;
+    /// Grows one stand's trees together among the obstacles (triangles, three points each);
+    /// one skeleton per member, in the members' order, relative to its position.
+    std::function<std::vector<skel::Skeleton>(const std::vector<StandMember>& members,
+                                              const std::vector<glm::vec3>& obstacleTriangles,
+                                              Progress& progress)>
+        grow;
+};
+
+struct NodeType;
+
+/// The registered node type \p type, null when unknown; registers the built-in types first.
+/// What code outside engine/nodes asks instead of testing a type's name: its role, its stand
+/// growth, its parameters (findParam).
+const NodeType* findType(const std::string& type);
+
 /// The role of the registered node type \p type (NodeRole::Other when unknown); registers the
 /// built-in types first.
 NodeRole roleOf(const std::string& type);
+
+/// The stand growth of the registered node type \p type; null when its trees grow alone (or
+/// the type is unknown). Registers the built-in types first.
+const StandGrowth* standGrowthOf(const std::string& type);
 
 /// The graph's output node when it is a mesher with one input (the skeleton it meshes), else
 /// null: the one test of "does this species end in a mesher" (forest plans, LOD chains,
@@ -176,6 +211,9 @@ struct NodeType {
     PortKind output = PortKind::Skeleton;
     bool outputFollowsInput = false;
     NodeRole role = NodeRole::Other; ///< what the type is for (forest plans ask it)
+    /// Set by a generator whose trees grow in a stand (see StandGrowth); null: each tree grows
+    /// from its seed alone.
+    std::shared_ptr<const StandGrowth> stand = nullptr;
 
     const ParamSpec* findParam(const std::string& name) const;
 };

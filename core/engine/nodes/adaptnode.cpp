@@ -16,6 +16,39 @@ namespace sylva::env {
 
 namespace {
 
+/// Every parameter, in panel order: the one statement of its default and range, which the
+/// reading goes through (nodes::ParamReader).
+const std::vector<graph::ParamSpec>& adaptSpecs() {
+    using namespace sylva::nodes;
+    static const std::vector<ParamSpec> table = [] {
+        std::vector<ParamSpec> specs;
+        group(
+            specs, "Bending",
+            {number("max_bend", 0.1, 0, 1.5707963267948966, "rad",
+                    "Maximum bend: rotation at the root's first branch level (reference 000)"),
+             number(
+                 "bend_multiplier", 0.9, 0, 1, "",
+                 "Bend multiplier per branching level; deeper branches bend less (reference 000)"),
+             boolean("return_to_vertical", true,
+                     "Let the trunk bend back upright above the obstacles it touched"),
+             boolean("recheck_all", true,
+                     "Re-check every branch after bending, not only colliders")});
+        group(specs, "Pruning",
+              {boolean("prune", true, "Hide branches that still collide after bending"),
+               boolean("redistribute", true, "Give the pruned length back to the visible branches"),
+               vector("light_direction", nullptr, -1e9, 1e9, "",
+                      "Direction light travels; redistribution favours branches facing it")});
+        group(specs, "Placement (a species on its own)",
+              {other("obstacles", ParamKind::Object,
+                     "Obstacle meshes [{file, translate, rotate, scale}] (a scene gives its own)"),
+               vector("position", nullptr, -1e9, 1e9, "m", "Where the tree stands"),
+               number("rotation", 0.0, -1e6, 1e6, "°", "Turn about +Y"),
+               number("scale", 1.0, 1e-6, 1e6, "", "Uniform scale")});
+        return specs;
+    }();
+    return table;
+}
+
 using graph::NodeContext;
 using graph::NodeOutput;
 using sylva::Value;
@@ -68,10 +101,9 @@ NodeOutput evaluateAdapt(const NodeContext& ctx) {
     glm::vec3 position(0.0f);
     if (const Value* v = p.find("position"); v && !v->isNull())
         position = vec3OrUniform(*v, "position");
-    const double rotation = p.number("rotation", 0.0);
-    const double scale = p.number("scale", 1.0);
-    requireRange("rotation", rotation, -1e6, 1e6);
-    requireRange("scale", scale, 1e-6, 1e6);
+    const nodes::ParamReader read(adaptSpecs(), p);
+    const double rotation = read.number("rotation");
+    const double scale = read.number("scale");
     glm::mat4 m = glm::translate(glm::mat4(1.0f), position);
     m = glm::rotate(m, glm::radians(static_cast<float>(rotation)), glm::vec3(0, 1, 0));
     m = glm::scale(m, glm::vec3(static_cast<float>(scale)));
@@ -160,17 +192,16 @@ ObstacleSpec obstacleSpecFromValue(const Value& v, const std::filesystem::path& 
 }
 
 AdaptParams adaptParamsFromValue(const Value& p) {
+    const nodes::ParamReader read(adaptSpecs(), p);
     AdaptParams a;
-    a.maxBend = static_cast<float>(p.number("max_bend", a.maxBend));
-    a.bendMultiplier = static_cast<float>(p.number("bend_multiplier", a.bendMultiplier));
-    a.prune = p.boolean("prune", a.prune);
-    a.redistribute = p.boolean("redistribute", a.redistribute);
-    a.recheckAll = p.boolean("recheck_all", a.recheckAll);
-    a.returnToVertical = p.boolean("return_to_vertical", a.returnToVertical);
+    a.maxBend = static_cast<float>(read.number("max_bend"));
+    a.bendMultiplier = static_cast<float>(read.number("bend_multiplier"));
+    a.prune = read.boolean("prune");
+    a.redistribute = read.boolean("redistribute");
+    a.recheckAll = read.boolean("recheck_all");
+    a.returnToVertical = read.boolean("return_to_vertical");
     if (const Value* l = p.find("light_direction"); l && !l->isNull())
         a.lightDirection = vec3OrUniform(*l, "light_direction");
-    requireRange("max_bend", a.maxBend, 0.0, 1.5707963267948966);
-    requireRange("bend_multiplier", a.bendMultiplier, 0.0, 1.0);
     return a;
 }
 
@@ -184,26 +215,7 @@ void registerAdaptNode(graph::NodeRegistry& registry) {
     type.minInputs = type.maxInputs = 1;
     type.output = graph::PortKind::Skeleton;
     type.evaluate = evaluateAdapt;
-    group(
-        type.params, "Bending",
-        {number("max_bend", 0.1, 0, 1.5707963267948966, "rad",
-                "Maximum bend: rotation at the root's first branch level (reference 000)"),
-         number("bend_multiplier", 0.9, 0, 1, "",
-                "Bend multiplier per branching level; deeper branches bend less (reference 000)"),
-         boolean("return_to_vertical", true,
-                 "Let the trunk bend back upright above the obstacles it touched"),
-         boolean("recheck_all", true, "Re-check every branch after bending, not only colliders")});
-    group(type.params, "Pruning",
-          {boolean("prune", true, "Hide branches that still collide after bending"),
-           boolean("redistribute", true, "Give the pruned length back to the visible branches"),
-           vector("light_direction", nullptr, -1e9, 1e9, "",
-                  "Direction light travels; redistribution favours branches facing it")});
-    group(type.params, "Placement (a species on its own)",
-          {other("obstacles", ParamKind::Object,
-                 "Obstacle meshes [{file, translate, rotate, scale}] (a scene gives its own)"),
-           vector("position", nullptr, -1e9, 1e9, "m", "Where the tree stands"),
-           number("rotation", 0.0, -1e6, 1e6, "°", "Turn about +Y"),
-           number("scale", 1.0, 1e-6, 1e6, "", "Uniform scale")});
+    type.params = adaptSpecs();
     registry.add(std::move(type));
 }
 

@@ -1,6 +1,6 @@
 // Registers the engine's node types. Each node folder file provides a register function; this
 // file is the one place that knows them all, so adding a node type is one line here.
-#include "engine/graph/graph.h"
+#include "engine/nodes/builtinnodes.h"
 
 #include <mutex>
 
@@ -25,3 +25,16 @@ void registerBuiltinNodeTypes() {
 }
 
 } // namespace sylva::graph
+
+namespace sylva::nodes {
+
+graph::SpeciesGraph grammarSpecies(const std::string& grammarFile) {
+    graph::SpeciesGraph g;
+    graph::NodeDesc grow{"grow", "lsystem", Value::Object{{"grammar_file", grammarFile}}, {}};
+    graph::NodeDesc mesh{"mesh", "tube_mesh", Value::Object{}, {"grow"}};
+    g.nodes = {grow, mesh};
+    g.output = "mesh";
+    return g;
+}
+
+} // namespace sylva::nodes

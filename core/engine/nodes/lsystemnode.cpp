@@ -29,6 +29,43 @@ std::string readTextFile(const std::filesystem::path& path) {
     return s.str();
 }
 
+/// Every parameter, in panel order: the one statement of its default and range, which the
+/// reading goes through (ParamReader).
+const std::vector<ParamSpec>& lsystemParams() {
+    static const std::vector<ParamSpec> table = [] {
+        std::vector<ParamSpec> specs;
+        group(
+            specs, "Grammar",
+            {other(
+                 "grammar", ParamKind::Text,
+                 "The L-system: header, axiom and rules (docs/grammar.md); replaces grammar_file"),
+             other("grammar_file", ParamKind::File,
+                   "A grammar file, relative to the species file (used when grammar is unset)"),
+             integer("generations", nullptr, 0, 1000,
+                     "n: rewriting steps; unset: the grammar's `generations:`"),
+             integer("seed", nullptr, 0, kMaxSeed,
+                     "Seed of stochastic rules and rand(); unset: the grammar's `seed:`"),
+             number("symbol_limit", 20e6, 1, 2e9, "",
+                    "Derivation stops with an error past this many modules (runaway guard)"),
+             number("time_limit", lsys::kDefaultDeriveTimeLimit, 1e-3, lsys::kMaxDeriveTimeLimit,
+                    "s",
+                    "Derivation stops with an error after this many seconds (runaway guard)")});
+        group(
+            specs, "Turtle",
+            {number("angle", nullptr, -360, 360, "°",
+                    "δ: turn of + - & ^ \\ / without a parameter; unset: the grammar's `angle:`"),
+             number("step", nullptr, 0, 1e4, "m",
+                    "Length of F and f without a parameter; unset: the grammar's `step:`"),
+             number("width", nullptr, 0, 1e3, "m", "Initial branch diameter; unset: the grammar's"),
+             number("width_factor", nullptr, 0, 10, "",
+                    "What ! without a parameter multiplies the width by"),
+             number("leaf_size", nullptr, 0, 100, "m", "Length of the leaves J places")});
+        group(specs, "Thickness", {taperParam(), junctionSlopeParam()});
+        return specs;
+    }();
+    return table;
+}
+
 /// `lsystem`: grammar text (inline `grammar` or `grammar_file`) → derived word → turtle skeleton.
 graph::NodeOutput evaluateLsystem(const graph::NodeContext& ctx) {
     const Value& p = ctx.params;
@@ -49,46 +86,36 @@ graph::NodeOutput evaluateLsystem(const graph::NodeContext& ctx) {
     auto t0 = std::chrono::steady_clock::now();
     const lsys::Grammar grammar = lsys::parseGrammar(text, fileName);
 
+    const nodes::ParamReader read(lsystemParams(), p);
     lsys::DeriveOptions options;
-    if (p.contains("generations")) {
-        const std::int64_t n = p.integer("generations", 0);
-        requireRange("generations", static_cast<double>(n), 0, 1000);
-        options.generations = static_cast<int>(n);
-    }
+    // Unset generations and seed are the grammar's own (`generations:`, `seed:`).
+    if (p.contains("generations"))
+        options.generations = static_cast<int>(read.integerOr("generations", 0));
     if (ctx.seedOverridden)
         options.seed = ctx.seed;
     else if (p.contains("seed"))
-        options.seed = static_cast<std::uint64_t>(p.integer("seed", 0));
-    if (p.contains("symbol_limit")) {
-        const double limit = p.number("symbol_limit", 20e6);
-        requireRange("symbol_limit", limit, 1, 2e9);
-        options.symbolLimit = static_cast<std::size_t>(limit);
-    }
-    if (p.contains("time_limit")) {
-        options.timeLimitSeconds = p.number("time_limit", lsys::kDefaultDeriveTimeLimit);
-        requireRange("time_limit (s)", options.timeLimitSeconds, 1e-3, lsys::kMaxDeriveTimeLimit);
-    }
+        options.seed = static_cast<std::uint64_t>(read.integerOr("seed", 0));
+    options.symbolLimit = static_cast<std::size_t>(read.number("symbol_limit"));
+    options.timeLimitSeconds = read.number("time_limit");
     options.traceRules = ctx.traceSources;
     const lsys::ModuleString word = lsys::derive(grammar, options, ctx.progress);
     out.timingsMs["expand"] = msSince(t0);
 
+    // Unset: the grammar's own, which must be in the parameter's range too.
     lsys::TurtleSettings turtle;
-    turtle.angleDegrees = p.number("angle", grammar.angleDegrees);
-    turtle.step = p.number("step", grammar.step);
-    turtle.width = p.number("width", grammar.width);
-    turtle.widthFactor = p.number("width_factor", grammar.widthFactor);
-    requireRange("angle", turtle.angleDegrees, -360, 360);
-    requireRange("step", turtle.step, 0, 1e4);
-    requireRange("width", turtle.width, 0, 1e3);
-    requireRange("width_factor", turtle.widthFactor, 0, 10);
-    if (p.contains("leaf_size")) {
-        turtle.leafSize = p.number("leaf_size", turtle.leafSize);
-        requireRange("leaf_size", turtle.leafSize, 0, 100);
-    }
+    turtle.angleDegrees = read.numberOr("angle", grammar.angleDegrees);
+    turtle.step = read.numberOr("step", grammar.step);
+    turtle.width = read.numberOr("width", grammar.width);
+    turtle.widthFactor = read.numberOr("width_factor", grammar.widthFactor);
+    read.requireIn("angle", turtle.angleDegrees);
+    read.requireIn("step", turtle.step);
+    read.requireIn("width", turtle.width);
+    read.requireIn("width_factor", turtle.widthFactor);
+    turtle.leafSize = read.numberOr("leaf_size", turtle.leafSize);
 
     skel::RadiusShaping shaping;
-    shaping.taper = static_cast<float>(p.number("taper", shaping.taper));
-    shaping.junctionSlope = static_cast<float>(p.number("junction_slope", shaping.junctionSlope));
+    shaping.taper = static_cast<float>(read.number("taper"));
+    shaping.junctionSlope = static_cast<float>(read.number("junction_slope"));
     skel::validate(shaping);
 
     t0 = std::chrono::steady_clock::now();
@@ -118,29 +145,7 @@ void registerLsystemNode(graph::NodeRegistry& registry) {
     type.minInputs = type.maxInputs = 0;
     type.output = graph::PortKind::Skeleton;
     type.evaluate = evaluateLsystem;
-    group(type.params, "Grammar",
-          {other("grammar", ParamKind::Text,
-                 "The L-system: header, axiom and rules (docs/grammar.md); replaces grammar_file"),
-           other("grammar_file", ParamKind::File,
-                 "A grammar file, relative to the species file (used when grammar is unset)"),
-           integer("generations", nullptr, 0, 1000,
-                   "n: rewriting steps; unset: the grammar's `generations:`"),
-           integer("seed", nullptr, 0, kMaxSeed,
-                   "Seed of stochastic rules and rand(); unset: the grammar's `seed:`"),
-           number("symbol_limit", 20e6, 1, 2e9, "",
-                  "Derivation stops with an error past this many modules (runaway guard)"),
-           number("time_limit", lsys::kDefaultDeriveTimeLimit, 1e-3, lsys::kMaxDeriveTimeLimit, "s",
-                  "Derivation stops with an error after this many seconds (runaway guard)")});
-    group(type.params, "Turtle",
-          {number("angle", nullptr, -360, 360, "°",
-                  "δ: turn of + - & ^ \\ / without a parameter; unset: the grammar's `angle:`"),
-           number("step", nullptr, 0, 1e4, "m",
-                  "Length of F and f without a parameter; unset: the grammar's `step:`"),
-           number("width", nullptr, 0, 1e3, "m", "Initial branch diameter; unset: the grammar's"),
-           number("width_factor", nullptr, 0, 10, "",
-                  "What ! without a parameter multiplies the width by"),
-           number("leaf_size", nullptr, 0, 100, "m", "Length of the leaves J places")});
-    group(type.params, "Thickness", {taperParam(), junctionSlopeParam()});
+    type.params = lsystemParams();
     registry.add(std::move(type));
 }
 

@@ -393,6 +393,7 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
     leaves.minInputs = leaves.maxInputs = 1;
     leaves.accepts = {graph::PortKind::Skeleton, graph::PortKind::Mesh};
     leaves.outputFollowsInput = true;
+    leaves.role = graph::NodeRole::Leaves;
     leaves.evaluate = evaluateLeaves;
     group(leaves.params, "Where",
           {choice("placement", "branches_and_tips",

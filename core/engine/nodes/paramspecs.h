@@ -1,8 +1,11 @@
 #pragma once
 
 // Short builders for the node types' parameter metadata (graph::ParamSpec), so that each
-// node's table reads as one line per parameter.
+// node's table reads as one line per parameter, and the one way a node reads its parameters
+// (ParamReader): through that table, so a default and a range are stated once.
 
+#include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -96,5 +99,69 @@ inline void group(std::vector<ParamSpec>& out, const std::string& name,
         out.push_back(std::move(p));
     }
 }
+
+/// Reads a node's parameter values through its specs: an absent value is the spec's default,
+/// stated once in the node's table; the range was checked against the same spec when the graph
+/// was validated (graph::Evaluator::validate, checkParam). Asking for a name the table lacks,
+/// or for the default of a spec without one, is a programming error (std::logic_error).
+class ParamReader {
+public:
+    ParamReader(const std::vector<ParamSpec>& specs, const Value& values)
+        : mSpecs(specs), mValues(values) {}
+
+    /// A Number or Integer parameter; a given value is checked against the spec's range (as
+    /// validation did) for a node evaluated without it.
+    double number(const std::string& name) const {
+        checked(name);
+        return mValues.number(name, defaultOf(name).toNumber(name));
+    }
+    std::int64_t integer(const std::string& name) const {
+        checked(name);
+        return mValues.integer(name, static_cast<std::int64_t>(defaultOf(name).toNumber(name)));
+    }
+    bool boolean(const std::string& name) const {
+        return mValues.boolean(name, defaultOf(name).toBool(name));
+    }
+    /// An Enum (or text) parameter.
+    std::string text(const std::string& name) const {
+        return mValues.string(name, defaultOf(name).toString(name));
+    }
+    /// A parameter whose spec has no default (unset: the node derives it, e.g. from the
+    /// grammar): the value, or \p fallback.
+    double numberOr(const std::string& name, double fallback) const {
+        checked(name);
+        return mValues.number(name, fallback);
+    }
+    std::int64_t integerOr(const std::string& name, std::int64_t fallback) const {
+        checked(name);
+        return mValues.integer(name, fallback);
+    }
+    /// Checks a value that did not come from the parameters (a grammar's own angle) against
+    /// the spec's range.
+    void requireIn(const std::string& name, double value) const {
+        graph::checkParam(spec(name), Value(value));
+    }
+    const Value& values() const { return mValues; }
+
+    const ParamSpec& spec(const std::string& name) const {
+        for (const ParamSpec& p : mSpecs)
+            if (p.name == name) return p;
+        throw std::logic_error("parameter '" + name + "' is not in the node's table");
+    }
+
+private:
+    void checked(const std::string& name) const {
+        const ParamSpec& p = spec(name);
+        if (const Value* v = mValues.find(name); v && !v->isNull()) graph::checkParam(p, *v);
+    }
+    const Value& defaultOf(const std::string& name) const {
+        const ParamSpec& p = spec(name);
+        if (p.defaultValue.isNull())
+            throw std::logic_error("parameter '" + name + "' has no default: use numberOr");
+        return p.defaultValue;
+    }
+    const std::vector<ParamSpec>& mSpecs;
+    const Value& mValues;
+};
 
 } // namespace sylva::nodes

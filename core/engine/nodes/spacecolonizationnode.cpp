@@ -188,8 +188,9 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
                   "Pipe model exponent: r^e = sum of the children's r^e"),
            number("tip_radius", 0.01, 0, 10, "m", "Radius of branch tips", true), taperParam(),
            junctionSlopeParam()});
-    type.evaluate = [](const graph::NodeContext& ctx) -> graph::NodeOutput {
+    type.evaluate = [specs = type.params](const graph::NodeContext& ctx) -> graph::NodeOutput {
         using Clock = std::chrono::steady_clock;
+        const ParamReader read(specs, ctx.params);
         const Value& p = ctx.params;
         ColonizationParams cp;
         std::int64_t count = 0;
@@ -198,41 +199,32 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
         LightParams light;
         skel::RadiusShaping shaping;
         try {
-            count = p.integer("attractors", 3000);
-            if (count < 1 || count > 2'000'000)
-                throw InvalidInput("attractors must be in [1, 2000000], got " +
-                                   std::to_string(count));
-            cp.influenceDistance = static_cast<float>(p.number("influence_distance", 3.0));
-            cp.killDistance = static_cast<float>(p.number("kill_distance", 0.6));
-            cp.segmentLength = static_cast<float>(p.number("segment_length", 0.2));
-            cp.randomness = static_cast<float>(p.number("randomness", 0.147));
+            count = read.integer("attractors");
+            cp.influenceDistance = static_cast<float>(read.number("influence_distance"));
+            cp.killDistance = static_cast<float>(read.number("kill_distance"));
+            cp.segmentLength = static_cast<float>(read.number("segment_length"));
+            cp.randomness = static_cast<float>(read.number("randomness"));
             cp.tropism = vec3Param(p, "tropism", glm::vec3(0.0f), "tropism");
-            cp.trunkHeight = static_cast<float>(p.number("trunk_height", 2.0));
+            cp.trunkHeight = static_cast<float>(read.number("trunk_height"));
             cp.root = vec3Param(p, "root", glm::vec3(0.0f), "root");
-            const std::int64_t iters = p.integer("max_iterations", 1000);
-            if (iters < 1 || iters > 100000)
-                throw InvalidInput("max_iterations must be in [1, 100000], got " +
-                                   std::to_string(iters));
-            cp.maxIterations = static_cast<int>(iters);
-            cp.pipeExponent = static_cast<float>(p.number("pipe_exponent", 2.41));
-            cp.tipRadius = static_cast<float>(p.number("tip_radius", 0.01));
-            cp.clearTrunk = static_cast<float>(p.number("clear_trunk", 0.0));
-            shaping.taper = static_cast<float>(p.number("taper", shaping.taper));
-            shaping.junctionSlope =
-                static_cast<float>(p.number("junction_slope", shaping.junctionSlope));
+            cp.maxIterations = static_cast<int>(read.integer("max_iterations"));
+            cp.pipeExponent = static_cast<float>(read.number("pipe_exponent"));
+            cp.tipRadius = static_cast<float>(read.number("tip_radius"));
+            cp.clearTrunk = static_cast<float>(read.number("clear_trunk"));
+            shaping.taper = static_cast<float>(read.number("taper"));
+            shaping.junctionSlope = static_cast<float>(read.number("junction_slope"));
             skel::validate(shaping);
-            const std::int64_t s = p.integer("seed", 1);
-            if (s < 0) throw InvalidInput("seed must be >= 0, got " + std::to_string(s));
+            const std::int64_t s = read.integer("seed");
             seed = ctx.seedOverridden ? ctx.seed : static_cast<std::uint64_t>(s);
             cp.seed = seed;
             validate(cp);
-            light.clusters = static_cast<int>(p.integer("light_clusters", 0));
-            light.clusterRadius = static_cast<float>(p.number("light_cluster_radius", 0.35));
-            light.clusterSpread = static_cast<float>(p.number("light_cluster_spread", 0.5));
-            light.shadedFraction = static_cast<float>(p.number("shaded_fraction", 0.0));
-            light.voxelSize = static_cast<float>(p.number("light_voxel_size", 0.6));
-            light.innerClusters = static_cast<int>(p.integer("light_inner_clusters", 0));
-            light.innerRadius = static_cast<float>(p.number("light_inner_radius", 0.7));
+            light.clusters = static_cast<int>(read.integer("light_clusters"));
+            light.clusterRadius = static_cast<float>(read.number("light_cluster_radius"));
+            light.clusterSpread = static_cast<float>(read.number("light_cluster_spread"));
+            light.shadedFraction = static_cast<float>(read.number("shaded_fraction"));
+            light.voxelSize = static_cast<float>(read.number("light_voxel_size"));
+            light.innerClusters = static_cast<int>(read.integer("light_inner_clusters"));
+            light.innerRadius = static_cast<float>(read.number("light_inner_radius"));
             validate(light);
             const Value* env = p.find("envelope");
             if (env != nullptr) envelope = envelopeFromParams(*env, ctx);
