@@ -39,7 +39,10 @@ for o in [o for o in bpy.context.scene.objects if o.type == "MESH"]:
             continue
         nodes, links = m.node_tree.nodes, m.node_tree.links
         bsdf = next((n for n in nodes if n.type == "BSDF_PRINCIPLED"), None)
-        tex = next((n for n in nodes if n.type == "TEX_IMAGE"), None)
+        # The image that feeds the base colour (the importer also adds normal and roughness).
+        tex = next((l.from_node for l in links if bsdf and l.to_node == bsdf
+                    and l.to_socket.name == "Base Color" and l.from_node.type == "TEX_IMAGE"),
+                   None)
         if bsdf:
             bsdf.inputs["Specular"].default_value = 0.1
             bsdf.inputs["Roughness"].default_value = 0.8
