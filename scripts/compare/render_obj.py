@@ -27,6 +27,21 @@ for o in objs:
         if bsdf:
             bsdf.inputs["Specular"].default_value = 0.1
             bsdf.inputs["Roughness"].default_value = 0.8
+        # Bark vertex colours (Sylva's Scots pine: grey low, orange high) multiply the texture
+        # that feeds the base colour, as glTF and USD readers do.
+        base = next((l.from_node for l in links if bsdf and l.to_node == bsdf
+                     and l.to_socket.name == "Base Color" and l.from_node.type == "TEX_IMAGE"),
+                    None)
+        if base and "bark" in m.name.lower() and o.data.color_attributes:
+            attr = nodes.new("ShaderNodeVertexColor")
+            attr.layer_name = o.data.color_attributes[0].name
+            mix = nodes.new("ShaderNodeMix")
+            mix.data_type = "RGBA"
+            mix.blend_type = "MULTIPLY"
+            mix.inputs["Factor"].default_value = 1.0
+            links.new(base.outputs["Color"], mix.inputs[6])
+            links.new(attr.outputs["Color"], mix.inputs[7])
+            links.new(mix.outputs[2], bsdf.inputs["Base Color"])
         if bsdf and tex and "leaf" in m.name.lower():
             links.new(tex.outputs["Alpha"], bsdf.inputs["Alpha"])
             m.blend_method = "CLIP"

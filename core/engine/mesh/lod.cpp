@@ -290,7 +290,8 @@ Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSetti
     const LodLevel level = selectLod(settings.lod, settings.cameraDistance);
     const double compensation = ringWidthCompensation(tubes.resolution, level.resolution);
     if (level.band > 0) {
-        tubes.caps = false; // a cap is a disc across a branch end: a pixel or less out here
+        tubes.caps = false;     // a cap is a disc across a branch end: a pixel or less out here
+        tubes.barkRelief = 0.0; // bark as geometry is the nearest level's only
         if (settings.hasCamera && level.ribbonRadius > 0.0) {
             tubes.ribbonBelowRadius = level.ribbonRadius;
             tubes.ribbonCamera = settings.cameraLocal;

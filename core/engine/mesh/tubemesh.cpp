@@ -255,7 +255,8 @@ void cap(Writer& w, const glm::vec3& centre, const glm::vec3& n, const glm::vec3
 void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& radius,
                const std::int32_t* nodes, std::size_t m, bool lateral, bool caps,
                const std::vector<glm::vec3>& cs, const std::uint32_t* ids = nullptr,
-               const glm::vec2* lobe = nullptr, const float* lobeAmp = nullptr) {
+               const glm::vec2* lobe = nullptr, const float* lobeAmp = nullptr,
+               const float* relief = nullptr) {
     auto id = [&](std::size_t k) {
         return ids != nullptr ? ids[k] : static_cast<std::uint32_t>(nodes[k]);
     };
@@ -323,7 +324,38 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
         const float inv = 1.0f / std::sqrt(1.0f + slope * slope);
         const glm::vec3 tn = -slope * inv * t;
         const float amp = lobeAmp != nullptr ? lobeAmp[k] : 0.0f;
-        for (int j = 0; j <= res; ++j) {
+        if (relief != nullptr) {
+            // ρ(k, j) = R(k) (1 + lobe + relief): the normal of the displaced surface,
+            // ρ·radial - ∂ρ/∂θ·around - ρ·∂ρ/∂s·t, from differences over the neighbouring
+            // vertices (the seam's neighbours across it).
+            auto lobeAt = [&](std::size_t kk, int j) {
+                return lobe != nullptr ? lobeAmp[kk] * lobe[static_cast<std::size_t>(j)].x : 0.0f;
+            };
+            auto rho = [&](std::size_t kk, int j) {
+                return R(kk) * (1.0f + lobeAt(kk, j) +
+                                relief[kk * ringVerts + static_cast<std::size_t>(j)]);
+            };
+            const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
+            for (int j = 0; j <= res; ++j) {
+                const glm::vec3 a = cs[static_cast<std::size_t>(j)];
+                const glm::vec3 radial = a.x * n + a.y * b;
+                const glm::vec3 around = -a.y * n + a.x * b;
+                const int jPrev = j == 0 ? res - 1 : j - 1, jNext = j == res ? 1 : j + 1;
+                const float rr = rho(k, j);
+                float dRdTheta = (rho(k, jNext) - rho(k, jPrev)) / (2.0f * dTheta);
+                if (lobe != nullptr) // the lobes' own slope is known exactly
+                    dRdTheta = R(k) * (amp * lobe[static_cast<std::size_t>(j)].y +
+                                       (relief[k * ringVerts + static_cast<std::size_t>(jNext)] -
+                                        relief[k * ringVerts + static_cast<std::size_t>(jPrev)]) /
+                                           (2.0f * dTheta));
+                const float dRds = ds > 1e-12f ? (rho(kb, j) - rho(ka, j)) / ds : 0.0f;
+                w.vertex(p + rr * radial,
+                         safeNormalize(rr * radial - dRdTheta * around - rr * dRds * t, radial,
+                                       kMinDirectionLength),
+                         {a.z, v});
+            }
+        }
+        for (int j = 0; relief == nullptr && j <= res; ++j) {
             const glm::vec3 a = cs[static_cast<std::size_t>(j)];
             const glm::vec3 radial = a.x * n + a.y * b;
             if (amp > 0.0f) {
@@ -380,6 +412,7 @@ struct FlaredChain {
     std::vector<glm::vec3> cs;       ///< cos, sin and u of each ring vertex (its own sides)
     std::vector<glm::vec2> lobe;     ///< buttress shape and its dθ per ring vertex; empty: round
     std::vector<float> lobeAmp;      ///< buttress amplitude per ring
+    std::vector<float> relief; ///< bark relief per ring vertex (rings × sides+1); empty: none
 };
 
 // How far each buttress lobe stands out, relative: a fixed irregular table, the same on every
@@ -468,6 +501,93 @@ FlaredChain flareChain(const skel::Skeleton& s, const std::vector<float>& radius
         ring(P(k + 1), R(k + 1) * widen(along), static_cast<std::uint32_t>(nodes[k + 1]), along);
     }
     return f;
+}
+
+/// Any axis as its own little chain (as flareChain makes a root's), so that bark relief can add
+/// rings to it: a lateral's base ring keeps its radius (its own, never wider than its parent's)
+/// and every ring the orientation of the axis' own first node (what meshChain's frame reads).
+FlaredChain plainChain(const skel::Skeleton& s, const std::vector<float>& radius,
+                       const std::int32_t* nodes, std::size_t m, bool lateral,
+                       const std::vector<glm::vec3>& cs) {
+    FlaredChain f;
+    f.cs = cs;
+    const glm::quat q = s.orientation[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
+    for (std::size_t k = 0; k < m; ++k) {
+        const auto node = static_cast<std::size_t>(nodes[k]);
+        float r = radius[node];
+        if (k == 0 && lateral) r = std::min(radius[static_cast<std::size_t>(nodes[1])], r);
+        f.sub.position.push_back(s.position[node]);
+        f.sub.orientation.push_back(q);
+        f.radius.push_back(r);
+        f.nodes.push_back(static_cast<std::int32_t>(k));
+        f.ids.push_back(static_cast<std::uint32_t>(nodes[k == 0 && lateral ? 1 : k]));
+        f.lobeAmp.push_back(0.0f);
+    }
+    return f;
+}
+
+/// Bark relief on a chain made by flareChain or plainChain: rings added where the relief shows
+/// (every barkRingSpacing columns along the axis) and the relief of each ring vertex.
+/// \p columns around, each \p width metres wide at the axis' base; \p parentRadius: a lateral's
+/// relief fades in over this distance from its base (0: a root's axis, no fade).
+void addBarkRelief(FlaredChain& f, const TubeSettings& settings, int columns, float width,
+                   float parentRadius, std::uint32_t seed) {
+    const auto depth = static_cast<float>(settings.barkRelief);
+    const auto rMin = static_cast<float>(settings.barkReliefRadius);
+    auto amplitude = [&](float r, float along) {
+        float a = depth * (rMin > 0.0f ? std::clamp((r - rMin) / (0.5f * rMin), 0.0f, 1.0f) : 1.0f);
+        if (parentRadius > 0.0f) a *= std::clamp(along / parentRadius, 0.0f, 1.0f);
+        return a;
+    };
+    const float spacing = static_cast<float>(barkRingSpacing(settings.barkPattern)) * width;
+    FlaredChain g;
+    g.cs = std::move(f.cs);
+    g.lobe = std::move(f.lobe);
+    std::vector<float> along, amp;
+    float at = 0.0f;
+    auto push = [&](const glm::vec3& p, const glm::quat& q, float r, std::uint32_t id,
+                    float lobeAmp, float s) {
+        g.sub.position.push_back(p);
+        g.sub.orientation.push_back(q);
+        g.radius.push_back(r);
+        g.nodes.push_back(static_cast<std::int32_t>(g.nodes.size()));
+        g.ids.push_back(id);
+        g.lobeAmp.push_back(lobeAmp);
+        along.push_back(s);
+        amp.push_back(amplitude(r, s));
+    };
+    const std::size_t m = f.nodes.size();
+    push(f.sub.position[0], f.sub.orientation[0], f.radius[0], f.ids[0], f.lobeAmp[0], 0.0f);
+    for (std::size_t k = 0; k + 1 < m; ++k) {
+        const glm::vec3 a = f.sub.position[k], b = f.sub.position[k + 1];
+        const float len = glm::length(b - a);
+        const float ra = f.radius[k], rb = f.radius[k + 1];
+        const bool shows = amplitude(ra, at) > 0.0f || amplitude(rb, at + len) > 0.0f;
+        const int pieces =
+            shows && spacing > 0.0f ? std::max(1, static_cast<int>(std::ceil(len / spacing))) : 1;
+        for (int i = 1; i < pieces; ++i) {
+            const float t = static_cast<float>(i) / static_cast<float>(pieces);
+            push(a + t * (b - a), f.sub.orientation[k], ra + t * (rb - ra),
+                 f.ids[t < 0.5f ? k : k + 1], f.lobeAmp[k] + t * (f.lobeAmp[k + 1] - f.lobeAmp[k]),
+                 at + t * len);
+        }
+        at += len;
+        push(b, f.sub.orientation[k + 1], rb, f.ids[k + 1], f.lobeAmp[k + 1], at);
+    }
+    const int sides = static_cast<int>(g.cs.size()) - 1;
+    const std::size_t ringVerts = static_cast<std::size_t>(sides) + 1;
+    g.relief.assign(g.nodes.size() * ringVerts, 0.0f);
+    for (std::size_t k = 0; k < g.nodes.size(); ++k) {
+        if (!(amp[k] > 0.0f)) continue;
+        float* row = g.relief.data() + k * ringVerts;
+        for (int j = 0; j < sides; ++j)
+            row[j] = amp[k] *
+                     barkReliefShape(settings.barkPattern,
+                                     static_cast<float>(j * columns) / static_cast<float>(sides),
+                                     along[k] / width, columns, seed);
+        row[sides] = row[0];
+    }
+    f = std::move(g);
 }
 
 /// A flat strip along the chain, two vertices a node, facing \p camera.
@@ -565,6 +685,10 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
     requireRange("ground_depth", settings.groundDepth, 0.0, 10.0);
     requireRange("buttress_lobes", settings.buttressLobes, 0, 12);
     requireRange("buttress_depth", settings.buttressDepth, 0.0, 1.0);
+    requireRange("bark_relief", settings.barkRelief, 0.0, 0.5);
+    requireRange("bark_relief_scale", settings.barkReliefScale, 0.01, 2.0);
+    requireRange("bark_relief_radius", settings.barkReliefRadius, 0.0, 100.0);
+    requireRange("bark_relief_sides", settings.barkReliefSides, 3, 128);
 
     std::vector<std::size_t> vOff(count + 1), iOff(count + 1);
     vOff[0] = out.positions.size();
@@ -605,15 +729,36 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         settings.groundDepth > 0.0;
     std::vector<FlaredChain> flared;
     std::vector<std::int32_t> flaredOf(count, -1);
-    if (flaring)
-        for (std::size_t c = 0; c < count; ++c) {
-            const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
-            if (chains.lateral[c] || ribbon[c] || s.parent[static_cast<std::size_t>(nodes[0])] >= 0)
-                continue;
-            flaredOf[c] = static_cast<std::int32_t>(flared.size());
-            flared.push_back(flareChain(s, radius, nodes, chains.begin[c + 1] - chains.begin[c],
-                                        settings, twig[c] ? csTwig : cs));
+    for (std::size_t c = 0; c < count; ++c) {
+        const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
+        const std::size_t m = chains.begin[c + 1] - chains.begin[c];
+        const bool lateral = chains.lateral[c] != 0;
+        const bool root = !lateral && s.parent[static_cast<std::size_t>(nodes[0])] < 0;
+        // Bark relief on thick axes: columns about barkReliefScale wide at the axis' base.
+        const std::int32_t own = nodes[lateral ? 1 : 0];
+        const float r0 = radius[static_cast<std::size_t>(own)];
+        const bool relief =
+            settings.barkRelief > 0.0 && !ribbon[c] && !twig[c] && r0 >= settings.barkReliefRadius;
+        if (!(flaring && root && !ribbon[c]) && !relief) continue;
+        int columns = 0;
+        std::vector<glm::vec3> reliefCs;
+        if (relief) {
+            const double around = 2.0 * std::numbers::pi * r0;
+            columns = std::max(3, static_cast<int>(std::lround(around / settings.barkReliefScale)));
+            columns =
+                std::min(columns, std::max(settings.barkReliefSides / kBarkSidesPerColumn, 1));
+            reliefCs = ringTable(std::max(columns * kBarkSidesPerColumn, res));
         }
+        const std::vector<glm::vec3>& ring = relief ? reliefCs : twig[c] ? csTwig : cs;
+        flaredOf[c] = static_cast<std::int32_t>(flared.size());
+        flared.push_back(flaring && root ? flareChain(s, radius, nodes, m, settings, ring)
+                                         : plainChain(s, radius, nodes, m, lateral, ring));
+        if (relief)
+            addBarkRelief(flared.back(), settings, columns,
+                          static_cast<float>(2.0 * std::numbers::pi * r0 / columns),
+                          lateral ? radius[static_cast<std::size_t>(nodes[0])] : 0.0f,
+                          static_cast<std::uint32_t>(own));
+    }
     for (std::size_t c = 0; c < count; ++c) {
         std::size_t rings = chains.begin[c + 1] - chains.begin[c];
         int sides = twig[c] ? settings.twigResolution : res;
@@ -713,9 +858,10 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                     w.order = s.order[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
                     if (flaredOf[c] >= 0) {
                         const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
-                        meshChain(w, f.sub, f.radius, f.nodes.data(), f.nodes.size(), false,
+                        meshChain(w, f.sub, f.radius, f.nodes.data(), f.nodes.size(), lateral,
                                   settings.caps, f.cs, f.ids.data(),
-                                  f.lobe.empty() ? nullptr : f.lobe.data(), f.lobeAmp.data());
+                                  f.lobe.empty() ? nullptr : f.lobe.data(), f.lobeAmp.data(),
+                                  f.relief.empty() ? nullptr : f.relief.data());
                     } else if (ribbon[c])
                         meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
                                    static_cast<float>(settings.ribbonWidthScale));
@@ -729,6 +875,23 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         }
     }
     // Bark is not tinted: white where the mesh carries colours (leaf cards made before).
+    if (settings.barkColorTop > settings.barkColorBottom && !s.empty()) {
+        // The bark's colour by height: the low colour blending into the high one.
+        out.colors.resize(existing, glm::u8vec4(255));
+        const auto ground = static_cast<double>(s.position[0].y);
+        const double span = settings.barkColorTop - settings.barkColorBottom;
+        auto byte = [](float c) {
+            return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f));
+        };
+        for (std::size_t k = existing; k < out.positions.size(); ++k) {
+            const double u = std::clamp(
+                (out.positions[k].y - ground - settings.barkColorBottom) / span, 0.0, 1.0);
+            const auto t = static_cast<float>(u * u * (3.0 - 2.0 * u));
+            const glm::vec3 c =
+                settings.barkColorLow + t * (settings.barkColorHigh - settings.barkColorLow);
+            out.colors.push_back({byte(c.x), byte(c.y), byte(c.z), 255});
+        }
+    }
     if (!out.colors.empty()) out.colors.resize(out.positions.size(), glm::u8vec4(255));
     progress.report(1.0, "mesh");
 }

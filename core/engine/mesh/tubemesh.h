@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "engine/mesh/barkrelief.h"
 #include "engine/mesh/mesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
@@ -60,6 +61,29 @@ struct TubeSettings {
     /// flare's height; a lobed root's axis gets at least 3 · buttressLobes sides. [0, 12].
     int buttressLobes = 0;
     double buttressDepth = 0.35; ///< [0, 1]
+    /// Bark relief as geometry (issue #44): axes whose own base radius (after scaling) is at
+    /// least barkReliefRadius get their surface displaced outward by up to barkRelief times the
+    /// ring's radius in barkPattern (the skeleton's radius is the furrows' bottom), columns
+    /// about barkReliefScale metres wide, kBarkSidesPerColumn ring vertices a column (at most
+    /// barkReliefSides, at least resolution) and rings every barkRingSpacing columns along the
+    /// axis. The relief fades in from the threshold radius to 1.5 times it along an axis and
+    /// over the first parent radius of a lateral (its base stays inside its parent). LOD sets
+    /// barkRelief to 0 past its first band. barkRelief [0, 0.5], 0: none; scale [0.01, 2] m;
+    /// radius [0, 100] m; sides [3, 128].
+    double barkRelief = 0.0;
+    BarkPattern barkPattern = BarkPattern::Ridges;
+    double barkReliefScale = 0.08;
+    double barkReliefRadius = 0.08;
+    int barkReliefSides = 64;
+    /// Bark colour by height (issue #44: the Scots pine grey-brown low, orange high): where
+    /// barkColorTop > barkColorBottom (metres above the first root node), bark vertices get
+    /// Mesh::colors, barkColorLow up to barkColorBottom blending smoothly into barkColorHigh at
+    /// barkColorTop (a factor on the bark texture, as the leaf tints are on theirs); otherwise
+    /// the bark stays white. Colours in [0, 1].
+    glm::vec3 barkColorLow{1.0f};
+    glm::vec3 barkColorHigh{1.0f};
+    double barkColorBottom = 0.0;
+    double barkColorTop = 0.0;
     bool windAttributes = false; ///< fill Mesh::branchOrder and Mesh::flexibility
     bool nodeIds = false;        ///< fill Mesh::node (for colouring by node attributes)
     std::size_t maxTriangles = kMaxTubeTriangles; ///< lowered by tests only

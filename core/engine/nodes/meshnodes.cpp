@@ -119,6 +119,35 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.tubes.groundDepth = ranged(p, "ground_depth", kDefaultGroundDepth, 0.0, 10.0);
     s.tubes.buttressLobes = rangedInt(p, "buttress_lobes", 0, 0, 12);
     s.tubes.buttressDepth = ranged(p, "buttress_depth", s.tubes.buttressDepth, 0.0, 1.0);
+    s.tubes.barkRelief = ranged(p, "bark_relief", 0.0, 0.0, 0.5);
+    s.tubes.barkPattern = parseBarkPattern(p.string("bark_relief_pattern", "ridges"));
+    s.tubes.barkReliefScale = ranged(p, "bark_relief_scale", s.tubes.barkReliefScale, 0.01, 2.0);
+    s.tubes.barkReliefRadius =
+        ranged(p, "bark_relief_radius", s.tubes.barkReliefRadius, 0.0, 100.0);
+    s.tubes.barkReliefSides = rangedInt(p, "bark_relief_sides", s.tubes.barkReliefSides, 3, 128);
+    auto color = [&](const char* key, glm::vec3 fallback) {
+        const Value* v = p.find(key);
+        if (!v || v->isNull()) return fallback;
+        const Value::Array& a = v->toArray(key);
+        if (a.size() != 3) throw InvalidInput(std::string(key) + " must be [r, g, b]");
+        glm::vec3 c;
+        for (int k = 0; k < 3; ++k) {
+            const double x = a[static_cast<std::size_t>(k)].toNumber(key);
+            requireRange(key, x, 0.0, 1.0);
+            c[k] = static_cast<float>(x);
+        }
+        return c;
+    };
+    s.tubes.barkColorLow = color("bark_color_low", s.tubes.barkColorLow);
+    s.tubes.barkColorHigh = color("bark_color_high", s.tubes.barkColorHigh);
+    if (const Value* h = p.find("bark_color_heights"); h && !h->isNull()) {
+        const Value::Array& a = h->toArray("bark_color_heights");
+        if (a.size() != 2) throw InvalidInput("bark_color_heights must be [bottom, top]");
+        s.tubes.barkColorBottom = a[0].toNumber("bark_color_heights");
+        s.tubes.barkColorTop = a[1].toNumber("bark_color_heights");
+        requireRange("bark_color_heights bottom", s.tubes.barkColorBottom, 0.0, 1e3);
+        requireRange("bark_color_heights top", s.tubes.barkColorTop, s.tubes.barkColorBottom, 1e3);
+    }
     s.tubes.windAttributes = p.boolean("wind_attributes", false);
     s.tubes.nodeIds = p.boolean("node_ids", false) || p.boolean("wind_data", false);
     s.leaves = p.boolean("leaves", true);
@@ -316,6 +345,24 @@ void registerMeshNodes(graph::NodeRegistry& registry) {
            number("buttress_depth", 0.35, 0, 1, "",
                   "How far the largest buttress stands out at the ground, as a fraction of the "
                   "radius"),
+           number("bark_relief", 0.0, 0, 0.5, "",
+                  "Bark as geometry at the nearest level: thick axes' surface stands out up to "
+                  "this fraction of their radius in bark_relief_pattern; 0: none"),
+           choice("bark_relief_pattern", "ridges", {"ridges", "plates"},
+                  "Ridges split by furrows (oak, maple) or plates between cracks (pine)"),
+           number("bark_relief_scale", 0.08, 0.01, 2, "m", "Width of a ridge or plate"),
+           number("bark_relief_radius", 0.08, 0, 100, "m",
+                  "Axes thinner than this at their base get no relief (it fades in up to 1.5 "
+                  "times this)"),
+           integer("bark_relief_sides", 64, 3, 128,
+                   "Most ring vertices an axis with relief gets (4 a ridge or plate)"),
+           vector("bark_color_low", vec(1, 1, 1), 0, 1, "",
+                  "Bark colour factor up to the bottom of bark_color_heights"),
+           vector("bark_color_high", vec(1, 1, 1), 0, 1, "",
+                  "Bark colour factor from the top of bark_color_heights up"),
+           other("bark_color_heights", ParamKind::Object,
+                 "[bottom, top] metres above the ground over which the bark's colour blends "
+                 "from bark_color_low to bark_color_high (vertex colours); unset: none"),
            boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
            boolean("node_ids", false, "Write the skeleton node of each vertex"),
            boolean("wind_data", false,

@@ -1,0 +1,114 @@
+#include "engine/mesh/barkrelief.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "engine/util/error.h"
+
+namespace sylva::mesh {
+
+namespace {
+
+std::uint32_t hash3(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    std::uint32_t h = a * 0x9E3779B1u ^ (b + 0x7F4A7C15u) * 0x85EBCA77u ^ c * 0xC2B2AE3Du;
+    h ^= h >> 15;
+    h *= 0x2C1B3C6Du;
+    h ^= h >> 12;
+    h *= 0x297A2D39u;
+    h ^= h >> 15;
+    return h;
+}
+
+/// Uniform in [0, 1) from a lattice point.
+float unit(std::int32_t i, std::int32_t j, std::uint32_t seed) {
+    return static_cast<float>(
+               hash3(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j), seed) >> 8) *
+           (1.0f / 16777216.0f);
+}
+
+std::int32_t wrap(std::int32_t i, int period) {
+    const std::int32_t m = i % period;
+    return m < 0 ? m + period : m;
+}
+
+float smooth(float t) {
+    return t * t * (3.0f - 2.0f * t);
+}
+
+float smoothstep(float a, float b, float x) {
+    return smooth(std::clamp((x - a) / (b - a), 0.0f, 1.0f));
+}
+
+/// Value noise in [0, 1), lattice spacing 1, periodic in x with \p period lattice cells.
+float noise(float x, float y, int period, std::uint32_t seed) {
+    const float fx = std::floor(x), fy = std::floor(y);
+    const auto ix = static_cast<std::int32_t>(fx), iy = static_cast<std::int32_t>(fy);
+    const float tx = smooth(x - fx), ty = smooth(y - fy);
+    const std::int32_t x0 = wrap(ix, period), x1 = wrap(ix + 1, period);
+    const float a = unit(x0, iy, seed), b = unit(x1, iy, seed);
+    const float c = unit(x0, iy + 1, seed), d = unit(x1, iy + 1, seed);
+    return (a + (b - a) * tx) + ((c + (d - c) * tx) - (a + (b - a) * tx)) * ty;
+}
+
+float ridges(float x, float y, int columns, std::uint32_t seed) {
+    // The ridges meander over a few of their widths along the axis.
+    // (Its lattice is two columns wide where the columns are even, so that it closes the ring.)
+    const bool even = columns % 2 == 0;
+    const float warp =
+        0.9f * (noise(even ? x * 0.5f : x, y * 0.25f, even ? columns / 2 : columns, seed) - 0.5f);
+    const float xs = x + warp;
+    const float fx = std::floor(xs);
+    const std::int32_t col = wrap(static_cast<std::int32_t>(fx), columns);
+    const float f = xs - fx;
+    // Flat-topped ridge, V furrow at the column's edges.
+    const float ridge = std::sqrt(std::max(std::sin(std::numbers::pi_v<float> * f), 0.0f));
+    // Each ridge is broken across into segments of 2-4 widths, each its own height.
+    const float along = y / 3.0f + unit(col, -1, seed);
+    const float fa = std::floor(along);
+    const float u = along - fa;
+    const float height = 0.55f + 0.45f * unit(col, static_cast<std::int32_t>(fa), seed ^ 0x51u);
+    const float brk =
+        0.35f + 0.65f * smoothstep(0.0f, 0.15f, u) * smoothstep(0.0f, 0.15f, 1.0f - u);
+    return ridge * height * brk;
+}
+
+float plates(float x, float y, int columns, std::uint32_t seed) {
+    const float warp = 0.5f * (noise(x, y * 0.5f, columns, seed) - 0.5f);
+    const float xs = x + warp;
+    const float fx = std::floor(xs);
+    const std::int32_t col = wrap(static_cast<std::int32_t>(fx), columns);
+    const float f = xs - fx;
+    // Plates about 1.6 widths long, each column's cracks across at its own offsets.
+    const float along = y / 1.6f + unit(col, -7, seed);
+    const float fa = std::floor(along);
+    const float u = along - fa;
+    const auto row = static_cast<std::int32_t>(fa);
+    const float edge = smoothstep(0.0f, 0.2f, f) * smoothstep(0.0f, 0.2f, 1.0f - f);
+    const float edgeAlong = smoothstep(0.0f, 0.12f, u) * smoothstep(0.0f, 0.12f, 1.0f - u);
+    const float height = 0.45f + 0.55f * unit(col, row, seed ^ 0xA7u);
+    // A plate's upper end stands out a little more than its lower (scales lie on each other).
+    const float tilt = 0.85f + 0.15f * u;
+    return std::min(edge, edgeAlong) * height * tilt;
+}
+
+} // namespace
+
+BarkPattern parseBarkPattern(const std::string& name) {
+    if (name == "ridges") return BarkPattern::Ridges;
+    if (name == "plates") return BarkPattern::Plates;
+    throw InvalidInput("bark_relief_pattern must be \"ridges\" or \"plates\", got \"" + name +
+                       "\"");
+}
+
+double barkRingSpacing(BarkPattern pattern) {
+    return pattern == BarkPattern::Ridges ? 1.5 : 0.4;
+}
+
+float barkReliefShape(BarkPattern pattern, float x, float y, int columns, std::uint32_t seed) {
+    columns = std::max(columns, 1);
+    return pattern == BarkPattern::Ridges ? ridges(x, y, columns, seed)
+                                          : plates(x, y, columns, seed);
+}
+
+} // namespace sylva::mesh

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace sylva::mesh {
+
+/// The shape of a species' bark as geometry (issue #44): the tube mesher displaces the rings of
+/// thick axes outward by this pattern at the nearest level of detail.
+enum class BarkPattern : std::uint8_t {
+    Ridges, ///< long ridges split by V furrows, meandering and broken across (oak, maple)
+    Plates, ///< flat plates of varying height between cracks around and along (pine)
+};
+
+/// "ridges" or "plates"; throws InvalidInput naming the allowed values otherwise.
+BarkPattern parseBarkPattern(const std::string& name);
+
+/// Ring vertices a column (a ridge or a plate) of the pattern gets around the axis.
+inline constexpr int kBarkSidesPerColumn = 4;
+
+/// Ring spacing along the axis, in column widths, where the pattern is drawn: ridges run along
+/// the axis and need fewer rings than plates, whose cracks also run around it.
+double barkRingSpacing(BarkPattern pattern);
+
+/// How far the bark stands out at a point, in [0, 1] (0: the bottom of a furrow or crack, on the
+/// skeleton's radius). \p x is the position around the axis in columns, periodic with period
+/// \p columns (so the ring closes), \p y the arc length along the axis in column widths; \p seed
+/// varies the pattern from axis to axis. Deterministic: integer hashing and float arithmetic
+/// only, the same on every platform.
+float barkReliefShape(BarkPattern pattern, float x, float y, int columns, std::uint32_t seed);
+
+} // namespace sylva::mesh
