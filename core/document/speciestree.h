@@ -6,7 +6,7 @@
 
 #include <QString>
 
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "engine/util/progress.h"
 

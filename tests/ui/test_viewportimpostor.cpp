@@ -50,8 +50,8 @@
 
 #include "document/presetlibrary.h"
 #include "document/speciestree.h"
-#include "engine/mesh/lod.h"
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/treemesh.h"
 #include "ui/viewport/viewlod.h"
 #include "ui/viewport/viewport.h"
 #include "uitest.h"

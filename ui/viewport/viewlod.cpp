@@ -11,8 +11,8 @@
 #include <unistd.h>
 
 #include "engine/mesh/impostor.h"
-#include "engine/mesh/lod.h"
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/treemesh.h"
 
 namespace sylva::ui {
 

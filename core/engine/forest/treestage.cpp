@@ -2,7 +2,7 @@
 
 #include "engine/forest/treecache.h"
 #include "engine/forest/treekey.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"

@@ -5,11 +5,8 @@
 #include <numbers>
 #include <string>
 
-#include "engine/mesh/leafclusters.h"
-#include "engine/mesh/leaflight.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
-#include "engine/util/seedsalts.h"
 
 namespace sylva::mesh {
 
@@ -216,128 +213,6 @@ std::vector<skel::Leaf> thinLeaves(const std::vector<skel::Leaf>& leaves, double
             l.size *= s;
     }
     return kept;
-}
-
-namespace {
-
-/// How much wider a ring of \p res sides must be to cover, seen from a random direction, as
-/// much as one of \p base sides: their mean widths are perimeter / pi = 2 n r sin(pi/n) / pi.
-double ringWidthCompensation(int base, int res) {
-    if (res >= base) return 1.0;
-    const auto width = [](int n) { return n * std::sin(std::numbers::pi / n); };
-    return width(base) / width(res);
-}
-
-} // namespace
-
-namespace {
-// One card a leaf, or cluster cards when the species has a cluster atlas.
-void appendLeaves(Mesh& mesh, const std::vector<skel::Leaf>& leaves,
-                  const TreeMeshSettings& settings, const skel::Skeleton* skeleton) {
-    const std::size_t firstVertex = mesh.positions.size();
-    if (settings.leafClusterSize > 1) {
-        LeafClusterSettings clusters;
-        clusters.leavesPerCard = settings.leafClusterSize;
-        clusters.seed = settings.seed;
-        clusters.crossed = settings.leafClusterCrossed;
-        appendLeafClusterCards(mesh, leaves, settings.leafCards, clusters, skeleton,
-                               settings.acceptLeafCard);
-    } else {
-        appendLeafCards(mesh, leaves, settings.leafCards, skeleton);
-    }
-    std::vector<float> light;
-    if (settings.leafTint.lightShading > 0.0 && skeleton != nullptr)
-        light = leafCardLight(mesh, firstVertex, leaves, *skeleton);
-    tintLeafCards(mesh, firstVertex,
-                  leafVariationFor(settings.leafTint, settings.season, settings.deciduous),
-                  leafReferenceColor(settings.leafTint, settings.season, settings.deciduous),
-                  settings.leafTint.patchSize, mixSeed(settings.seed, salt::kLeafTint), light,
-                  settings.leafTint.lightShading);
-}
-
-Mesh withTextures(Mesh mesh, const TreeMeshSettings& settings) {
-    for (Submesh& s : mesh.submeshes) {
-        if (s.material == "bark") s.texture = settings.barkTexture;
-        if (s.material == "leaf") {
-            // A cluster card shows the species' cluster atlas; a deciduous tree's the season's
-            // version of its atlas or leaf (the summer one where none was drawn).
-            const std::string& summer =
-                settings.leafClusterSize > 1 ? settings.leafClusterTexture : settings.leafTexture;
-            s.texture = settings.deciduous ? seasonTextureFile(summer, settings.season) : summer;
-        }
-    }
-    return mesh;
-}
-
-Mesh buildUntexturedTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
-                             Progress& progress) {
-    TubeSettings tubes = settings.tubes;
-    double leafFraction = 1.0;
-    Mesh mesh;
-    if (!settings.useLod) {
-        appendTubes(mesh, skeleton, tubes, progress);
-        if (settings.leaves && !skeleton.leaves.empty()) {
-            if (settings.deciduous && settings.season != Season::Summer) {
-                const std::vector<skel::Leaf> leaves =
-                    seasonLeaves(skeleton.leaves, settings.season, true, settings.seed);
-                if (!leaves.empty()) appendLeaves(mesh, leaves, settings, &skeleton);
-            } else {
-                appendLeaves(mesh, skeleton.leaves, settings, &skeleton);
-            }
-        }
-        return mesh;
-    }
-    const LodLevel level = selectLod(settings.lod, settings.cameraDistance);
-    const double compensation = ringWidthCompensation(tubes.resolution, level.resolution);
-    if (level.band > 0) {
-        tubes.caps = false;     // a cap is a disc across a branch end: a pixel or less out here
-        tubes.barkRelief = 0.0; // bark as geometry is the nearest level's only
-        if (settings.hasCamera && level.ribbonRadius > 0.0) {
-            tubes.ribbonBelowRadius = level.ribbonRadius;
-            tubes.ribbonCamera = settings.cameraLocal;
-            // A ribbon facing the camera is as wide as the full-detail ring's mean width.
-            const int n = tubes.resolution;
-            tubes.ribbonWidthScale =
-                n * std::sin(std::numbers::pi / n) / std::numbers::pi / compensation;
-        }
-    }
-    tubes.radiusScale *= compensation;
-    tubes.resolution = level.resolution;
-    tubes.twigResolution = std::min(tubes.twigResolution, level.resolution);
-    tubes.simplifyTolerance = std::max(tubes.simplifyTolerance, level.simplifyTolerance);
-    leafFraction = level.leafFraction;
-    const skel::Skeleton kept = dropSmallSubtrees(
-        skeleton, level.minSubtreeExtent, settings.leafCards.sizeScale, level.leafyTwigExtent);
-    appendTubes(mesh, kept, tubes, progress);
-    // The season's leaves first, so that clusters and thinning work on what the tree shows.
-    const std::vector<skel::Leaf> seasonal =
-        settings.deciduous && settings.season != Season::Summer
-            ? seasonLeaves(kept.leaves, settings.season, true, settings.seed)
-            : std::vector<skel::Leaf>();
-    const std::vector<skel::Leaf>& shown =
-        settings.deciduous && settings.season != Season::Summer ? seasonal : kept.leaves;
-    if (settings.leaves && !shown.empty()) {
-        std::vector<skel::Leaf> leaves = clusterLeaves(
-            shown, level.leafCell, settings.leafCards.sizeScale, settings.acceptLeafCard);
-        if (leafFraction < 1.0) {
-            leaves = thinLeaves(leaves, leafFraction, settings.seed);
-            // Enlarged survivors that would reach into an obstacle are left out.
-            if (settings.acceptLeafCard)
-                std::erase_if(leaves, std::not_fn(settings.acceptLeafCard));
-        }
-        appendLeaves(mesh, leaves, settings, &kept);
-    }
-    return mesh;
-}
-} // namespace
-
-Mesh buildTreeMesh(const skel::Skeleton& skeleton, const TreeMeshSettings& settings,
-                   Progress& progress) {
-    Mesh mesh = buildUntexturedTreeMesh(skeleton, settings, progress);
-    if (settings.barkTexture.empty() && settings.leafTexture.empty() &&
-        settings.leafClusterTexture.empty())
-        return mesh;
-    return withTextures(std::move(mesh), settings);
 }
 
 } // namespace sylva::mesh

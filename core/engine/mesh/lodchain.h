@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "engine/mesh/impostor.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 
 namespace sylva::mesh {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 
 namespace sylva {
 class Value;

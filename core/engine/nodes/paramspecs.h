@@ -122,9 +122,25 @@ public:
     bool boolean(const std::string& name) const {
         return mValues.boolean(name, defaultOf(name).toBool(name));
     }
-    /// An Enum (or text) parameter.
+    /// An Enum (checked against its choices) or text parameter.
     std::string text(const std::string& name) const {
+        checked(name);
         return mValues.string(name, defaultOf(name).toString(name));
+    }
+    /// A Vector parameter: [x, y, z], or one number for all three (each in the spec's range).
+    glm::dvec3 vector(const std::string& name) const {
+        checked(name);
+        const Value* v = mValues.find(name);
+        const Value& a = v && !v->isNull() ? *v : defaultOf(name);
+        if (a.isNumber()) return glm::dvec3(a.toNumber()); // checkParam's one number for all three
+        const Value::Array& c = a.toArray(name);
+        return {c.at(0).toNumber(name), c.at(1).toNumber(name), c.at(2).toNumber(name)};
+    }
+    /// A parameter the node reads itself (Object, File): its value, or nullptr when unset.
+    const Value* given(const std::string& name) const {
+        spec(name);
+        const Value* v = mValues.find(name);
+        return v && !v->isNull() ? v : nullptr;
     }
     /// A parameter whose spec has no default (unset: the node derives it, e.g. from the
     /// grammar): the value, or \p fallback.

@@ -19,7 +19,7 @@
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/leaftint.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/util/atomicfile.h"
 #include "engine/util/memorypolicy.h"

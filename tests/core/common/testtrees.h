@@ -5,7 +5,7 @@
 
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/leafplacement.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/skeleton/skeleton.h"
 #include "testwords.h"
 

@@ -13,7 +13,7 @@
 #include "../common/testwords.h"
 #include "engine/export/obj/objwriter.h"
 #include "engine/lsystem/turtle.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 

@@ -20,7 +20,7 @@
 #include "engine/export/treeexport.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/mesh/leaftint.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/util/error.h"
 #include "engine/util/value.h"
 

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "engine/forest/forestbuild.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
 #include "presetfile.h"

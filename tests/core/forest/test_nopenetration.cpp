@@ -27,7 +27,7 @@
 #include "engine/environment/obstaclescene.h"
 #include "engine/forest/forestbuild.h"
 #include "engine/graph/graph.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/nodes/meshnodes.h"
 #include "presetfile.h"

@@ -7,7 +7,7 @@
 #include "engine/mesh/impostor.h"
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/leaftint.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 
 using namespace sylva;
 using sylva::testing::leafyTree;

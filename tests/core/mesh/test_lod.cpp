@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "../common/testtrees.h"
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/util/error.h"
 
 using namespace sylva;

@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "../common/testtrees.h"
-#include "engine/mesh/lod.h"
 #include "engine/mesh/season.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/util/error.h"
 
 using namespace sylva;

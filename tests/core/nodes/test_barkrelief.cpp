@@ -13,8 +13,8 @@
 
 #include "../forest/presetfile.h"
 #include "engine/graph/graph.h"
-#include "engine/mesh/lod.h"
 #include "engine/mesh/mesh.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/nodes/meshnodes.h"
 #include "engine/skeleton/skeleton.h"
 
@@ -151,7 +151,10 @@ TEST(BarkRelief, BadParametersNameTheirRange) {
         mesh::treeMeshSettingsFromParams(Value(p), 1, {});
         FAIL() << "no error for an unknown pattern";
     } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find("\"ridges\" or \"plates\""), std::string::npos);
+        // The choices from tube_mesh's table, as the parameter panel and docs show them.
+        EXPECT_NE(std::string(e.what()).find("bark_relief_pattern must be one of ridges | plates"),
+                  std::string::npos)
+            << e.what();
     }
 }
 

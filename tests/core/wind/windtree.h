@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "engine/mesh/lod.h"
+#include "engine/mesh/treemesh.h"
 #include "engine/skeleton/skeleton.h"
 
 namespace sylva::windtest {
