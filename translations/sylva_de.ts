@@ -1737,6 +1737,10 @@
         <source>Preview failed (%1): %2</source>
         <translation>Vorschau fehlgeschlagen (%1): %2</translation>
     </message>
+    <message>
+        <source>Branch tool: click a branch of the tree to select it, drag it to bend it, Delete prunes it</source>
+        <translation>Zweig-Werkzeug: Klicken Sie auf einen Zweig des Baums, um ihn auszuwählen, ziehen Sie ihn, um ihn zu biegen; Entf schneidet ihn ab</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>

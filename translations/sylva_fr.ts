@@ -1737,6 +1737,10 @@
         <source>Preview failed (%1): %2</source>
         <translation>Échec de l’aperçu (%1) : %2</translation>
     </message>
+    <message>
+        <source>Branch tool: click a branch of the tree to select it, drag it to bend it, Delete prunes it</source>
+        <translation>Outil Branche : cliquez sur une branche de l’arbre pour la sélectionner, faites-la glisser pour la courber ; Suppr la taille</translation>
+    </message>
 </context>
 <context>
     <name>sylva::ui::StatsPanel</name>
