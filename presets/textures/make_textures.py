@@ -260,28 +260,35 @@ def bark_plates(seed, plate, crack_col, count=60, stretch=(1.0, 2.2), flaky=0.5)
 
 
 def bark_pine(seed):
-    """Scots pine (issue #44: one colour of even plates read as a diamond lattice): thick plates
-    of two sizes split by wavy cracks of varying width, each plate grey-brown or orange-brown
-    (a slow noise and its own random decide, so both bark kinds of the stem meet in patches),
-    the orange ones flaking into thin papery scales."""
+    """Scots pine (issue #44): grey-brown plates of two sizes split by wavy dark cracks of
+    varying width (one colour of even plates read as a diamond lattice), each plate's surface
+    split again into thin papery scales with lifted, lighter edges. No orange of its own: the
+    preset's bark_color_low/high vertex colours keep it grey-brown low on the stem and turn it
+    orange high up, where the same scales read as flaking bark (an orange patch drawn here
+    showed everywhere, low too)."""
     shape = (BARK, BARK)
-    big1, big2, ident = cells(shape, 34, seed, (1.0, 2.4))
-    small1, small2, _ = cells(shape, 140, seed + 7, (1.0, 1.6))
+    big1, big2, ident = cells(shape, 34, seed, (1.0, 2.8))
+    small1, small2, scale = cells(shape, 140, seed + 7, (1.0, 1.6))
     warp = noise(shape, 6, 10, seed + 1) - 0.5
     width = 5.0 + 5.0 * noise(shape, 40, 60, seed + 2)
     crack = np.clip((big2 - big1 + 3.0 * warp) / width, 0, 1) ** 0.6
     flake_edge = np.clip((small2 - small1) / 2.5, 0, 1)
     rng = np.random.default_rng(seed + 5)
     own = rng.random(34)[ident]
-    orange = np.clip((0.3 * noise(shape, 70, 110, seed + 3) + 0.7 * own - 0.62) * 6, 0, 1)
-    grey = np.asarray((0.40, 0.35, 0.30), np.float32)
-    rust = np.asarray((0.74, 0.43, 0.24), np.float32)
-    col = grey * (1 - orange[..., None]) + rust * orange[..., None]
+    scale_own = rng.random(140)[scale]
+    # Plates a little warmer or greyer, by their own random and a slow noise (no two alike).
+    warm = np.clip(0.6 * own + 0.4 * noise(shape, 70, 110, seed + 3), 0, 1)[..., None]
+    grey = np.asarray((0.60, 0.54, 0.49), np.float32)
+    brown = np.asarray((0.72, 0.56, 0.43), np.float32)
+    col = grey * (1 - warm) + brown * warm
     f = noise(shape, 2, 5, seed + 4)
-    shade = (0.75 + 0.3 * (own - 0.5) + 0.25 * (f - 0.5)) * (1 - 0.35 * orange * (1 - flake_edge))
-    crack_col = np.asarray((0.13, 0.10, 0.08), np.float32)
+    # A scale's edge is a thin dark line with a lighter lifted lip beside it.
+    lip = np.clip(1 - np.abs(flake_edge - 0.35) / 0.2, 0, 1)
+    shade = ((0.82 + 0.3 * (own - 0.5) + 0.1 * (scale_own - 0.5) + 0.22 * (f - 0.5)) *
+             (0.84 + 0.16 * flake_edge) + 0.06 * lip)
+    crack_col = np.asarray((0.12, 0.10, 0.08), np.float32)
     rgb = crack_col + (col * shade[..., None] - crack_col) * crack[..., None]
-    height = crack * (0.65 + 0.3 * own) + 0.1 * orange * flake_edge + 0.06 * (f - 0.5)
+    height = crack * (0.65 + 0.3 * own) + 0.1 * flake_edge + 0.04 * scale_own + 0.06 * (f - 0.5)
     return np.clip(rgb, 0, 1), height
 
 

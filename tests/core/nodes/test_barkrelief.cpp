@@ -17,6 +17,7 @@
 #include "engine/mesh/treemesh.h"
 #include "engine/nodes/meshnodes.h"
 #include "engine/skeleton/skeleton.h"
+#include "engine/util/image.h"
 
 using namespace sylva;
 
@@ -158,32 +159,72 @@ TEST(BarkRelief, BadParametersNameTheirRange) {
     }
 }
 
-TEST(BarkRelief, PineBarkGreyLowOrangeHigh) {
+// The pine's bark vertex colours, averaged below 2 m and above 9 m (seed 11).
+struct LowHigh {
+    glm::dvec3 low{0.0}, high{0.0};
+};
+
+LowHigh pineBarkColours() {
     const Grown g = grow("scots-pine", 11);
     const mesh::Mesh& m = *g.mesh;
-    ASSERT_EQ(m.colors.size(), m.positions.size());
-    glm::dvec3 low(0.0), high(0.0);
+    EXPECT_EQ(m.colors.size(), m.positions.size());
+    LowHigh r;
     int nLow = 0, nHigh = 0;
     for (const mesh::Submesh& sm : m.submeshes) {
         if (sm.material != "bark") continue;
         for (std::size_t t = sm.firstIndex; t < sm.firstIndex + sm.indexCount; ++t) {
             const std::uint32_t v = m.indices[t];
+            if (v >= m.colors.size()) continue;
             const glm::dvec3 c = glm::dvec3(m.colors[v]) / 255.0;
             if (m.positions[v].y < 2.0f) {
-                low += c;
+                r.low += c;
                 ++nLow;
             } else if (m.positions[v].y > 9.0f) {
-                high += c;
+                r.high += c;
                 ++nHigh;
             }
         }
     }
-    ASSERT_GT(nLow, 0);
-    ASSERT_GT(nHigh, 0);
-    low /= nLow;
-    high /= nHigh;
+    EXPECT_GT(nLow, 0);
+    EXPECT_GT(nHigh, 0);
+    r.low /= std::max(nLow, 1);
+    r.high /= std::max(nHigh, 1);
+    return r;
+}
+
+TEST(BarkRelief, PineBarkGreyLowOrangeHigh) {
+    const LowHigh c = pineBarkColours();
     // Low: grey (channels within a few percent); high: orange (red well above blue).
-    EXPECT_LT(low.x - low.z, 0.06);
-    EXPECT_GT(high.x - high.z, 0.35);
-    EXPECT_GT(high.x, low.x);
+    EXPECT_LT(c.low.x - c.low.z, 0.06);
+    EXPECT_GT(c.high.x - c.high.z, 0.35);
+    EXPECT_GT(c.high.x, c.low.x);
+}
+
+// The orange comes from the height tint, not the texture: the pine's bark texture is grey-brown
+// plates (its orange patches showed low on the stem too), and tinted it reads grey-brown low and
+// orange high (its mean times the vertex colours, as the viewport and the exporters multiply).
+TEST(BarkRelief, PineBarkTextureGreyBrownTintedOrangeHigh) {
+    const Image tex = readPng(kPresets / "textures" / "scots-pine_bark.png");
+    ASSERT_FALSE(tex.empty());
+    glm::dvec3 mean(0.0);
+    std::size_t orange = 0;
+    for (int y = 0; y < tex.height; ++y)
+        for (int x = 0; x < tex.width; ++x) {
+            const std::uint8_t* p = tex.at(x, y);
+            const glm::dvec3 c(p[0] / 255.0, p[1] / 255.0, p[2] / 255.0);
+            mean += c;
+            orange += c.x - c.z > 0.3 ? 1 : 0;
+        }
+    const double texels = static_cast<double>(tex.width) * tex.height;
+    mean /= texels;
+    const LowHigh c = pineBarkColours();
+    const glm::dvec3 low = mean * c.low, high = mean * c.high;
+    std::printf("pine bark texture: mean %.3f %.3f %.3f, orange texels %.2f %%; tinted low %.3f "
+                "%.3f %.3f, high %.3f %.3f %.3f\n",
+                mean.x, mean.y, mean.z, 100.0 * static_cast<double>(orange) / texels, low.x, low.y,
+                low.z, high.x, high.y, high.z);
+    // The texture drawn with orange patches had 10.7 % of its texels this orange.
+    EXPECT_LT(static_cast<double>(orange) / texels, 0.01);
+    EXPECT_LT(low.x - low.z, 0.07);
+    EXPECT_GT(high.x - high.z, 0.3);
 }
