@@ -42,14 +42,6 @@ const WindSettingOption kWindSettingOptions[] = {
     {doc::settings::kWindGustiness, &wind::WindSettings::gustiness, &doc::WindOverride::gustiness},
     {doc::settings::kWindFrequency, &wind::WindSettings::frequency, &doc::WindOverride::frequency}};
 
-std::vector<std::string> windValueOptions() {
-    std::vector<std::string> names{"--wind-direction"};
-    for (const WindSettingOption& o : kWindSettingOptions)
-        names.emplace_back(o.spec.cliOption);
-    names.insert(names.end(), {"--clip-length", "--clip-fps", "--bones"});
-    return names;
-}
-
 std::optional<float> numberOption(const Args& args, const char* name) {
     const auto text = args.value(name);
     if (!text) return std::nullopt;
@@ -85,7 +77,17 @@ std::optional<glm::vec3> directionOption(const Args& args) {
 
 } // namespace
 
-const std::vector<std::string> kWindValueOptions = windValueOptions();
+const std::vector<std::string>& windValueOptions() {
+    // Made on first use: the specs are another translation unit's statics.
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n{"--wind-direction"};
+        for (const WindSettingOption& o : kWindSettingOptions)
+            n.emplace_back(o.spec.cliOption);
+        n.insert(n.end(), {"--clip-length", "--clip-fps", "--bones"});
+        return n;
+    }();
+    return names;
+}
 
 doc::WindOverride windOverride(const Args& args) {
     doc::WindOverride o;

@@ -23,7 +23,7 @@ doc::Project loadProjectOrScene(const std::string& path);
 mesh::Season parseSeasonOption(const std::string& name);
 
 /// The wind options every exporting command takes (value options, then flags), for Args.
-extern const std::vector<std::string> kWindValueOptions;
+const std::vector<std::string>& windValueOptions();
 /// `--wind-direction x,y,z`, `--wind-strength`, `--wind-gustiness`, `--wind-frequency`,
 /// `--clip-length`, `--clip-fps`, `--bones` (docs/cli.md); UsageError for a malformed value,
 /// InvalidInput (with the range) for one out of range: the wind settings' ranges are the project

@@ -39,7 +39,7 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option) {
 int runForest(const std::vector<std::string>& argv) {
     std::vector<std::string> valueOptions{"-o",        "--output", "--camera",
                                           "--threads", "--tile",   "--season"};
-    valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
+    valueOptions.insert(valueOptions.end(), windValueOptions().begin(), windValueOptions().end());
     const Args args(argv, valueOptions,
                     {"--stats", "--no-lod", "--no-adapt", "--no-neighbours", "--no-instancing",
                      "--grow-unique", "--instance-tables", "--naive-placement", "--fsync",

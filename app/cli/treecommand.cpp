@@ -40,7 +40,7 @@ void applySet(graph::Evaluator& evaluator, const std::string& assignment) {
 int runTree(const std::vector<std::string>& argv) {
     std::vector<std::string> valueOptions{"-o",     "--output", "-n",      "--generations",
                                           "--seed", "--set",    "--season"};
-    valueOptions.insert(valueOptions.end(), kWindValueOptions.begin(), kWindValueOptions.end());
+    valueOptions.insert(valueOptions.end(), windValueOptions().begin(), windValueOptions().end());
     const Args args(argv, valueOptions, {"--stats", "--fsync", "--compact", "--wind"});
     if (args.positional().size() != 1) throw UsageError(commandUsageLine("tree"));
     auto output = args.value("-o");

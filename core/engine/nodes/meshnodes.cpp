@@ -33,171 +33,168 @@ const skel::Skeleton& inputSkeleton(const NodeContext& ctx) {
 
 // tube_mesh's parameters: the one statement of each one's default and range, read through
 // ParamReader by treeMeshSettingsFromParams and shown by the parameter panel and docs.
-std::vector<graph::ParamSpec> makeTubeMeshParams() {
-    using namespace sylva::nodes;
-    std::vector<graph::ParamSpec> params;
-    group(
-        params, "Tubes",
-        {integer("resolution", 8, 3, 64, "Sides of each branch tube"),
-         boolean("caps", true, "Close the tips of the tubes"),
-         choice("thickness", "skeleton", {"skeleton", "branching"},
-                "Radii from the skeleton, or by branching (initial × multiplier per level)"),
-         number("initial_thickness", 0.2, 0, 1e3, "m", "Trunk radius (thickness: branching)"),
-         number("thickness_multiplier", 0.8, 1e-6, 1, "",
-                "Radius factor per branching level (thickness: branching)"),
-         number("radius_scale", 1.0, 0, 1e3, "", "Multiplies every radius"),
-         number("twig_radius", 0.0, 0, 1e3, "m",
-                "Axes thinner than this at their base get twig_resolution sides; 0: off"),
-         integer("twig_resolution", 4, 3, 64, "Sides of the tubes thinner than twig_radius"),
-         number("bare_twig_radius", 0.0, 0, 1e3, "m",
-                "Side shoots thinner than this at their base get no bark, their leaf cards "
-                "stay (twigs hidden in needle sprays); 0: off"),
-         number("root_flare", 1.35, 1, 4, "",
-                "A root's tube at the ground is this many times its radius, widening "
-                "smoothly over flare_height; 1: no flare"),
-         number("flare_height", 1.0, 0, 100, "m", "Height of the root flare, at most 8 root radii"),
-         number("ground_depth", 0.1, 0, 10, "m",
-                "The trunk's tube goes on this far below the ground (no tree stands on the "
-                "ground like a post)"),
-         integer("buttress_lobes", 0, 0, 12,
-                 "Buttresses: lobes of the trunk's cross-section near the ground, fading over "
-                 "flare_height (the trunk gets at least 3 sides a lobe); 0: round"),
-         number("buttress_depth", 0.35, 0, 1, "",
-                "How far the largest buttress stands out at the ground, as a fraction of the "
-                "radius"),
-         number("bark_relief", 0.0, 0, 0.5, "",
-                "Bark as geometry at the nearest level: thick axes' surface stands out up to "
-                "this fraction of their radius in bark_relief_pattern; 0: none"),
-         choice("bark_relief_pattern", "ridges", {"ridges", "plates"},
-                "Ridges split by furrows (oak, maple) or plates between cracks (pine)"),
-         number("bark_relief_scale", 0.08, 0.01, 2, "m", "Width of a ridge or plate"),
-         number("bark_relief_radius", 0.08, 0, 100, "m",
-                "Axes thinner than this at their base get no relief (it fades in up to 1.5 "
-                "times this)"),
-         integer("bark_relief_sides", 64, 3, 128,
-                 "Most ring vertices an axis with relief gets (4 a ridge or plate)"),
-         vector("bark_color_low", vec(1, 1, 1), 0, 1, "",
-                "Bark colour factor up to the bottom of bark_color_heights"),
-         vector("bark_color_high", vec(1, 1, 1), 0, 1, "",
-                "Bark colour factor from the top of bark_color_heights up"),
-         other("bark_color_heights", ParamKind::Object,
-               "[bottom, top] metres above the ground over which the bark's colour blends "
-               "from bark_color_low to bark_color_high (vertex colours); unset: none"),
-         boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
-         boolean("node_ids", false, "Write the skeleton node of each vertex"),
-         boolean("wind_data", false,
-                 "Keep what the wind model needs per vertex (its node; docs/wind.md)")});
-    group(params, "Leaves",
-          {boolean("leaves", true, "Draw the skeleton's leaves as cards"),
-           number("leaf_scale", 1.0, 1e-6, 100, "", "Multiplies every leaf card's length"),
-           number("leaf_aspect", 0.5, 1e-6, 4, "", "Leaf card width / length"),
-           integer("leaf_cluster_size", 0, 0, 64,
-                   "Leaves one card carries on average (needs leaf_cluster_texture_file); "
-                   "0: one card a leaf"),
-           boolean("leaf_cluster_crossed", false,
-                   "Each cluster card crossed by a second at right angles along its centre "
-                   "line (tufts of needles round their shoot)")});
-    group(params, "Level of detail",
-          {number("lod_distance", -1.0, -1, 1e7, "m",
-                  "Camera distance the mesh is made for; -1: full detail"),
-           other("lod_bands", ParamKind::Object,
-                 "[[distance, resolution, leaf_fraction], ...] from near to far; unset: 8, 5 "
-                 "and 3 sides from 0, 25 and 60 m, never more than resolution"),
-           number("lod_min_twig_pixels", 1.0, 0, 1e3, "px",
-                  "Drop a lateral subtree smaller than this on screen (leaves included)"),
-           number("lod_leafy_twig_pixels", 4.0, 0, 1e3, "px",
-                  "A leafy subtree smaller than this keeps its leaves, loses its bark"),
-           number("lod_simplify_pixels", 0.5, 0, 1e3, "px", "Straighten axes within this"),
-           number("lod_leaf_cluster_pixels", 2.0, 0, 1e3, "px",
-                  "Merge leaves within this into one card of the same area; 0: off"),
-           number("lod_ribbon_pixels", 2.0, 0, 1e3, "px",
-                  "Axes thinner than this become camera-facing ribbons"),
-           number("lod_screen_height", 1080.0, 1, 1e5, "px", "Viewport height the pixels refer to"),
-           number("lod_fov", 60.0, 1, 179, "°", "Vertical field of view")});
-    group(params, "Textures",
-          {other("bark_texture_file", ParamKind::File,
-                 "Bark PNG (tiles; u around, v along); none: Sylva's bark.png"),
-           other("leaf_texture_file", ParamKind::File,
-                 "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png"),
-           other("leaf_cluster_texture_file", ParamKind::File,
-                 "Leaf cluster atlas RGBA PNG: 4 x 2 tiles, seven sprays and the single leaf")});
-    group(
-        params, "Season",
-        {choice("season", "summer", {"spring", "summer", "autumn", "winter"},
-                "Time of year (a project's or tree's season replaces it)"),
-         boolean("deciduous", false,
+const std::vector<graph::ParamSpec>& tubeMeshParams() {
+    static const std::vector<graph::ParamSpec> params = [] {
+        using namespace sylva::nodes;
+        std::vector<graph::ParamSpec> params;
+        group(
+            params, "Tubes",
+            {integer("resolution", 8, 3, 64, "Sides of each branch tube"),
+             boolean("caps", true, "Close the tips of the tubes"),
+             choice("thickness", "skeleton", {"skeleton", "branching"},
+                    "Radii from the skeleton, or by branching (initial × multiplier per level)"),
+             number("initial_thickness", 0.2, 0, 1e3, "m", "Trunk radius (thickness: branching)"),
+             number("thickness_multiplier", 0.8, 1e-6, 1, "",
+                    "Radius factor per branching level (thickness: branching)"),
+             number("radius_scale", 1.0, 0, 1e3, "", "Multiplies every radius"),
+             number("twig_radius", 0.0, 0, 1e3, "m",
+                    "Axes thinner than this at their base get twig_resolution sides; 0: off"),
+             integer("twig_resolution", 4, 3, 64, "Sides of the tubes thinner than twig_radius"),
+             number("bare_twig_radius", 0.0, 0, 1e3, "m",
+                    "Side shoots thinner than this at their base get no bark, their leaf cards "
+                    "stay (twigs hidden in needle sprays); 0: off"),
+             number("root_flare", 1.35, 1, 4, "",
+                    "A root's tube at the ground is this many times its radius, widening "
+                    "smoothly over flare_height; 1: no flare"),
+             number("flare_height", 1.0, 0, 100, "m",
+                    "Height of the root flare, at most 8 root radii"),
+             number("ground_depth", 0.1, 0, 10, "m",
+                    "The trunk's tube goes on this far below the ground (no tree stands on the "
+                    "ground like a post)"),
+             integer("buttress_lobes", 0, 0, 12,
+                     "Buttresses: lobes of the trunk's cross-section near the ground, fading over "
+                     "flare_height (the trunk gets at least 3 sides a lobe); 0: round"),
+             number("buttress_depth", 0.35, 0, 1, "",
+                    "How far the largest buttress stands out at the ground, as a fraction of the "
+                    "radius"),
+             number("bark_relief", 0.0, 0, 0.5, "",
+                    "Bark as geometry at the nearest level: thick axes' surface stands out up to "
+                    "this fraction of their radius in bark_relief_pattern; 0: none"),
+             choice("bark_relief_pattern", "ridges", {"ridges", "plates"},
+                    "Ridges split by furrows (oak, maple) or plates between cracks (pine)"),
+             number("bark_relief_scale", 0.08, 0.01, 2, "m", "Width of a ridge or plate"),
+             number("bark_relief_radius", 0.08, 0, 100, "m",
+                    "Axes thinner than this at their base get no relief (it fades in up to 1.5 "
+                    "times this)"),
+             integer("bark_relief_sides", 64, 3, 128,
+                     "Most ring vertices an axis with relief gets (4 a ridge or plate)"),
+             vector("bark_color_low", vec(1, 1, 1), 0, 1, "",
+                    "Bark colour factor up to the bottom of bark_color_heights"),
+             vector("bark_color_high", vec(1, 1, 1), 0, 1, "",
+                    "Bark colour factor from the top of bark_color_heights up"),
+             other("bark_color_heights", ParamKind::Object,
+                   "[bottom, top] metres above the ground over which the bark's colour blends "
+                   "from bark_color_low to bark_color_high (vertex colours); unset: none"),
+             boolean("wind_attributes", false, "Write wind weights (game engines' wind shaders)"),
+             boolean("node_ids", false, "Write the skeleton node of each vertex"),
+             boolean("wind_data", false,
+                     "Keep what the wind model needs per vertex (its node; docs/wind.md)")});
+        group(params, "Leaves",
+              {boolean("leaves", true, "Draw the skeleton's leaves as cards"),
+               number("leaf_scale", 1.0, 1e-6, 100, "", "Multiplies every leaf card's length"),
+               number("leaf_aspect", 0.5, 1e-6, 4, "", "Leaf card width / length"),
+               integer("leaf_cluster_size", 0, 0, 64,
+                       "Leaves one card carries on average (needs leaf_cluster_texture_file); "
+                       "0: one card a leaf"),
+               boolean("leaf_cluster_crossed", false,
+                       "Each cluster card crossed by a second at right angles along its centre "
+                       "line (tufts of needles round their shoot)")});
+        group(params, "Level of detail",
+              {number("lod_distance", -1.0, -1, 1e7, "m",
+                      "Camera distance the mesh is made for; -1: full detail"),
+               other("lod_bands", ParamKind::Object,
+                     "[[distance, resolution, leaf_fraction], ...] from near to far; unset: 8, 5 "
+                     "and 3 sides from 0, 25 and 60 m, never more than resolution"),
+               number("lod_min_twig_pixels", 1.0, 0, 1e3, "px",
+                      "Drop a lateral subtree smaller than this on screen (leaves included)"),
+               number("lod_leafy_twig_pixels", 4.0, 0, 1e3, "px",
+                      "A leafy subtree smaller than this keeps its leaves, loses its bark"),
+               number("lod_simplify_pixels", 0.5, 0, 1e3, "px", "Straighten axes within this"),
+               number("lod_leaf_cluster_pixels", 2.0, 0, 1e3, "px",
+                      "Merge leaves within this into one card of the same area; 0: off"),
+               number("lod_ribbon_pixels", 2.0, 0, 1e3, "px",
+                      "Axes thinner than this become camera-facing ribbons"),
+               number("lod_screen_height", 1080.0, 1, 1e5, "px",
+                      "Viewport height the pixels refer to"),
+               number("lod_fov", 60.0, 1, 179, "°", "Vertical field of view")});
+        group(
+            params, "Textures",
+            {other("bark_texture_file", ParamKind::File,
+                   "Bark PNG (tiles; u around, v along); none: Sylva's bark.png"),
+             other("leaf_texture_file", ParamKind::File,
+                   "Leaf card RGBA PNG, stem at the bottom; none: Sylva's leaf.png"),
+             other("leaf_cluster_texture_file", ParamKind::File,
+                   "Leaf cluster atlas RGBA PNG: 4 x 2 tiles, seven sprays and the single leaf")});
+        group(
+            params, "Season",
+            {choice("season", "summer", {"spring", "summer", "autumn", "winter"},
+                    "Time of year (a project's or tree's season replaces it)"),
+             boolean(
+                 "deciduous", false,
                  "Sheds its leaves: fewer and smaller in spring, fewer in autumn, none in winter; "
                  "off: the same all year (conifers, evergreens)"),
-         vector("autumn_color", vec(0.6, 0.4, 0.1), 0, 1, "",
-                "Autumn leaf colour (sRGB 0..1): make_textures.py draws the species' "
-                "autumn leaves from it")});
-    group(
-        params, "Leaf colour",
-        {number("leaf_hue_variation", 0.0, 0, 90, "°",
-                "Leaf cards' hue turned by up to ± this in spring and summer (an evergreen "
-                "all year); 0 with the two below: every card alike"),
-         number("leaf_saturation_variation", 0.0, 0, 1, "",
-                "Leaf cards' saturation scaled by up to ± this fraction"),
-         number("leaf_brightness_variation", 0.0, 0, 1, "",
-                "The darkest leaf card's loss of brightness (most keep near the texture's)"),
-         number("leaf_autumn_hue_variation", 0.0, 0, 90, "°",
-                "The same three in autumn for a deciduous species, around autumn_color"),
-         number("leaf_autumn_saturation_variation", 0.0, 0, 1, "", "Autumn: saturation ± fraction"),
-         number("leaf_autumn_brightness_variation", 0.0, 0, 1, "",
-                "Autumn: the darkest card's loss of brightness"),
-         number("leaf_color_patch", 1.5, 0, 1e3, "m",
-                "Most of the variation follows patches about this large over the crown, the "
-                "rest is each card's own; 0: each card on its own"),
-         number("leaf_light_shading", 0.0, 0, 1, "",
-                "The most shaded leaf card's loss of brightness by the growth's light records "
-                "(outer, sun-facing cards lighter, inner darker); 0: not shown")});
-    return params;
-}
-
-std::vector<graph::ParamSpec> makeLeavesParams() {
-    using namespace sylva::nodes;
-    std::vector<graph::ParamSpec> params;
-    group(params, "Where",
-          {choice("placement", "branches_and_tips",
-                  {"branches_and_tips", "branches", "tips", "grammar"},
-                  "Along young branches, at tips, both, or only the grammar's J leaves"),
-           boolean("keep_grammar_leaves", false, "Keep the grammar's J leaves as well"),
-           number("density", 8.0, 0, 1000, "1/m", "Leaves per metre of young branch"),
-           integer("tip_count", 3, 0, 32, "Leaves per branch tip"),
-           number("max_branch_radius", 0.02, 0, 1e3, "m", "Thicker branches carry no leaves")});
-    group(params, "Arrangement",
-          {choice("phyllotaxis", "spiral", {"spiral", "alternate", "opposite", "whorled"},
-                  "How leaves are arranged around the branch"),
-           integer("whorl_count", 3, 2, 12, "Leaves per whorl (phyllotaxis: whorled)"),
-           number("petiole_angle", 50.0, 0, 90, "°", "Angle between branch and leaf")});
-    group(params, "Size and orientation",
-          {number("size", 0.12, 1e-6, 100, "m", "Leaf card length"),
-           number("size_variation", 0.2, 0, 1, "", "Size × (1 ± variation)"),
-           number("leaf_aspect", 0.5, 1e-6, 4, "", "Card width / length"),
-           number("normal_weight", 0.4, 0, 1e3, "", "Card faces away from the branch"),
-           number("up_weight", 0.4, 0, 1e3, "", "Card faces up"),
-           number("light_weight", 0.2, 0, 1e3, "", "Card faces the light"),
-           vector("light_direction", vec(0.3, 1.0, 0.2), -1e9, 1e9, "",
-                  "Towards the light (normalised)")});
-    return params;
-}
-
-const std::vector<graph::ParamSpec>& tubeMeshParams() {
-    static const std::vector<graph::ParamSpec> params = makeTubeMeshParams();
+             vector("autumn_color", vec(0.6, 0.4, 0.1), 0, 1, "",
+                    "Autumn leaf colour (sRGB 0..1): make_textures.py draws the species' "
+                    "autumn leaves from it")});
+        group(
+            params, "Leaf colour",
+            {number("leaf_hue_variation", 0.0, 0, 90, "°",
+                    "Leaf cards' hue turned by up to ± this in spring and summer (an evergreen "
+                    "all year); 0 with the two below: every card alike"),
+             number("leaf_saturation_variation", 0.0, 0, 1, "",
+                    "Leaf cards' saturation scaled by up to ± this fraction"),
+             number("leaf_brightness_variation", 0.0, 0, 1, "",
+                    "The darkest leaf card's loss of brightness (most keep near the texture's)"),
+             number("leaf_autumn_hue_variation", 0.0, 0, 90, "°",
+                    "The same three in autumn for a deciduous species, around autumn_color"),
+             number("leaf_autumn_saturation_variation", 0.0, 0, 1, "",
+                    "Autumn: saturation ± fraction"),
+             number("leaf_autumn_brightness_variation", 0.0, 0, 1, "",
+                    "Autumn: the darkest card's loss of brightness"),
+             number("leaf_color_patch", 1.5, 0, 1e3, "m",
+                    "Most of the variation follows patches about this large over the crown, the "
+                    "rest is each card's own; 0: each card on its own"),
+             number("leaf_light_shading", 0.0, 0, 1, "",
+                    "The most shaded leaf card's loss of brightness by the growth's light records "
+                    "(outer, sun-facing cards lighter, inner darker); 0: not shown")});
+        return params;
+    }();
     return params;
 }
 
 const std::vector<graph::ParamSpec>& leavesParams() {
-    static const std::vector<graph::ParamSpec> params = makeLeavesParams();
+    static const std::vector<graph::ParamSpec> params = [] {
+        using namespace sylva::nodes;
+        std::vector<graph::ParamSpec> params;
+        group(params, "Where",
+              {choice("placement", "branches_and_tips",
+                      {"branches_and_tips", "branches", "tips", "grammar"},
+                      "Along young branches, at tips, both, or only the grammar's J leaves"),
+               boolean("keep_grammar_leaves", false, "Keep the grammar's J leaves as well"),
+               number("density", 8.0, 0, 1000, "1/m", "Leaves per metre of young branch"),
+               integer("tip_count", 3, 0, 32, "Leaves per branch tip"),
+               number("max_branch_radius", 0.02, 0, 1e3, "m", "Thicker branches carry no leaves")});
+        group(params, "Arrangement",
+              {choice("phyllotaxis", "spiral", {"spiral", "alternate", "opposite", "whorled"},
+                      "How leaves are arranged around the branch"),
+               integer("whorl_count", 3, 2, 12, "Leaves per whorl (phyllotaxis: whorled)"),
+               number("petiole_angle", 50.0, 0, 90, "°", "Angle between branch and leaf")});
+        group(params, "Size and orientation",
+              {number("size", 0.12, 1e-6, 100, "m", "Leaf card length"),
+               number("size_variation", 0.2, 0, 1, "", "Size × (1 ± variation)"),
+               number("leaf_aspect", 0.5, 1e-6, 4, "", "Card width / length"),
+               number("normal_weight", 0.4, 0, 1e3, "", "Card faces away from the branch"),
+               number("up_weight", 0.4, 0, 1e3, "", "Card faces up"),
+               number("light_weight", 0.2, 0, 1e3, "", "Card faces the light"),
+               vector("light_direction", vec(0.3, 1.0, 0.2), -1e9, 1e9, "",
+                      "Towards the light (normalised)")});
+        return params;
+    }();
     return params;
 }
 
 int whole(const nodes::ParamReader& r, const char* key) {
     return static_cast<int>(r.integer(key));
-}
-
-glm::vec3 vec3Of(const nodes::ParamReader& r, const char* key) {
-    return glm::vec3(r.vector(key));
 }
 
 LodSettings lodFromParams(const nodes::ParamReader& r) {
@@ -270,8 +267,8 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.tubes.barkReliefScale = r.number("bark_relief_scale");
     s.tubes.barkReliefRadius = r.number("bark_relief_radius");
     s.tubes.barkReliefSides = whole(r, "bark_relief_sides");
-    s.tubes.barkColorLow = vec3Of(r, "bark_color_low");
-    s.tubes.barkColorHigh = vec3Of(r, "bark_color_high");
+    s.tubes.barkColorLow = r.vector("bark_color_low");
+    s.tubes.barkColorHigh = r.vector("bark_color_high");
     if (const Value* h = r.given("bark_color_heights")) {
         const Value::Array& a = h->toArray("bark_color_heights");
         if (a.size() != 2) throw InvalidInput("bark_color_heights must be [bottom, top]");
@@ -308,7 +305,7 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.season = parseSeason(r.text("season"));
     s.deciduous = r.boolean("deciduous");
     // Read by make_textures.py (the autumn leaf texture) and by the autumn leaf tint.
-    s.leafTint.autumnColor = vec3Of(r, "autumn_color");
+    s.leafTint.autumnColor = r.vector("autumn_color");
     s.leafTint.summer = colorVariation(r, "leaf_");
     s.leafTint.autumn = colorVariation(r, "leaf_autumn_");
     s.leafTint.patchSize = r.number("leaf_color_patch");
@@ -387,7 +384,7 @@ NodeOutput evaluateLeaves(const NodeContext& ctx) {
         placement.normalWeight = r.number("normal_weight");
         placement.upWeight = r.number("up_weight");
         placement.lightWeight = r.number("light_weight");
-        placement.lightDirection = vec3Of(r, "light_direction");
+        placement.lightDirection = r.vector("light_direction");
         placement.seed = mixSeed(ctx.seed, salt::kLeafPlacement);
         leaves = placeLeaves(skeleton, placement);
     } catch (const InvalidInput& e) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/graph/graph.h"
+#include "engine/graph/vectorparam.h"
 
 namespace sylva::nodes {
 
@@ -127,14 +128,11 @@ public:
         checked(name);
         return mValues.string(name, defaultOf(name).toString(name));
     }
-    /// A Vector parameter: [x, y, z], or one number for all three (each in the spec's range).
-    glm::dvec3 vector(const std::string& name) const {
+    /// A Vector parameter, [x, y, z] (graph::vec3Of), each component in the spec's range.
+    glm::vec3 vector(const std::string& name) const {
         checked(name);
         const Value* v = mValues.find(name);
-        const Value& a = v && !v->isNull() ? *v : defaultOf(name);
-        if (a.isNumber()) return glm::dvec3(a.toNumber()); // checkParam's one number for all three
-        const Value::Array& c = a.toArray(name);
-        return {c.at(0).toNumber(name), c.at(1).toNumber(name), c.at(2).toNumber(name)};
+        return graph::vec3Of(v && !v->isNull() ? *v : defaultOf(name), name);
     }
     /// A parameter the node reads itself (Object, File): its value, or nullptr when unset.
     const Value* given(const std::string& name) const {

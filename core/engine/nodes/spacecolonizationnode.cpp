@@ -204,9 +204,9 @@ void registerSpaceColonizationNode(graph::NodeRegistry& registry) {
             cp.killDistance = static_cast<float>(read.number("kill_distance"));
             cp.segmentLength = static_cast<float>(read.number("segment_length"));
             cp.randomness = static_cast<float>(read.number("randomness"));
-            cp.tropism = vec3Param(p, "tropism", glm::vec3(0.0f), "tropism");
+            cp.tropism = read.vector("tropism");
             cp.trunkHeight = static_cast<float>(read.number("trunk_height"));
-            cp.root = vec3Param(p, "root", glm::vec3(0.0f), "root");
+            cp.root = read.vector("root");
             cp.maxIterations = static_cast<int>(read.integer("max_iterations"));
             cp.pipeExponent = static_cast<float>(read.number("pipe_exponent"));
             cp.tipRadius = static_cast<float>(read.number("tip_radius"));
