@@ -252,11 +252,18 @@ void cap(Writer& w, const glm::vec3& centre, const glm::vec3& n, const glm::vec3
     }
 }
 
+/// How many times the bark texture goes round an axis of base radius \p r0 with textures
+/// \p width metres wide (TubeSettings::barkTextureWidth; 0: once).
+float barkTiles(float r0, float width) {
+    if (width <= 0.0f) return 1.0f;
+    return std::max(1.0f, std::round(2.0f * std::numbers::pi_v<float> * r0 / width));
+}
+
 void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& radius,
                const std::int32_t* nodes, std::size_t m, bool lateral, bool caps,
                const std::vector<glm::vec3>& cs, const std::uint32_t* ids = nullptr,
                const glm::vec2* lobe = nullptr, const float* lobeAmp = nullptr,
-               const float* relief = nullptr) {
+               const float* relief = nullptr, float uTiles = 1.0f) {
     auto id = [&](std::size_t k) {
         return ids != nullptr ? ids[k] : static_cast<std::uint32_t>(nodes[k]);
     };
@@ -312,7 +319,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             nL -= glm::dot(nL, t) * t;
             n = safeNormalize(nL, anyPerpendicular(t), kMinDirectionLength);
             const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
-            v += std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
+            v += uTiles * std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
         }
         const glm::vec3 b = glm::cross(t, n);
         const float r = R(k);
@@ -352,7 +359,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
                 w.vertex(p + rr * radial,
                          safeNormalize(rr * radial - dRdTheta * around - rr * dRds * t, radial,
                                        kMinDirectionLength),
-                         {a.z, v});
+                         {uTiles * a.z, v});
             }
         }
         for (int j = 0; relief == nullptr && j <= res; ++j) {
@@ -367,10 +374,11 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
                 const glm::vec3 inPlane = safeNormalize(rr * radial - r * amp * sh.y * around,
                                                         radial, kMinDirectionLength);
                 w.vertex(p + rr * radial,
-                         safeNormalize(inPlane * inv + tn, radial, kMinDirectionLength), {a.z, v});
+                         safeNormalize(inPlane * inv + tn, radial, kMinDirectionLength),
+                         {uTiles * a.z, v});
                 continue;
             }
-            w.vertex(p + r * radial, radial * inv + tn, {a.z, v});
+            w.vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, v});
         }
         if (k > 0) {
             const std::size_t a0 = ringStart - ringVerts;
@@ -689,6 +697,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
     requireRange("bark_relief_scale", settings.barkReliefScale, 0.01, 2.0);
     requireRange("bark_relief_radius", settings.barkReliefRadius, 0.0, 100.0);
     requireRange("bark_relief_sides", settings.barkReliefSides, 3, 128);
+    requireRange("bark_texture_width", settings.barkTextureWidth, 0.0, 10.0);
 
     std::vector<std::size_t> vOff(count + 1), iOff(count + 1);
     vOff[0] = out.positions.size();
@@ -829,6 +838,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         if (vOff[c + 1] - vOff[runs.back()] >= kRunVertices || c + 1 == count)
             runs.push_back(c + 1);
     const std::size_t runCount = runs.size() - 1;
+    const auto textureWidth = static_cast<float>(settings.barkTextureWidth);
     // One tree's bark (the English oak: 57k vertices, about a millisecond) is meshed on one
     // thread: a parallel region of that size saves a fraction of a millisecond and, under
     // libgomp's default waiting (Python, the editor, Blender), leaves the other threads
@@ -855,19 +865,22 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                     const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
                     const std::size_t m = chains.begin[c + 1] - chains.begin[c];
                     const bool lateral = chains.lateral[c] != 0;
-                    w.order = s.order[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
+                    const std::int32_t own = nodes[lateral ? 1 : 0];
+                    w.order = s.order[static_cast<std::size_t>(own)];
+                    const float tiles =
+                        barkTiles(radius[static_cast<std::size_t>(own)], textureWidth);
                     if (flaredOf[c] >= 0) {
                         const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
                         meshChain(w, f.sub, f.radius, f.nodes.data(), f.nodes.size(), lateral,
                                   settings.caps, f.cs, f.ids.data(),
                                   f.lobe.empty() ? nullptr : f.lobe.data(), f.lobeAmp.data(),
-                                  f.relief.empty() ? nullptr : f.relief.data());
+                                  f.relief.empty() ? nullptr : f.relief.data(), tiles);
                     } else if (ribbon[c])
                         meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
                                    static_cast<float>(settings.ribbonWidthScale));
                     else
                         meshChain(w, s, radius, nodes, m, lateral, settings.caps,
-                                  twig[c] ? csTwig : cs);
+                                  twig[c] ? csTwig : cs, nullptr, nullptr, nullptr, nullptr, tiles);
                 }
 #pragma omp ordered
                 scratch.appendTo(out, nv, ni, wind, ids);

@@ -75,6 +75,13 @@ struct TubeSettings {
     double barkReliefScale = 0.08;
     double barkReliefRadius = 0.08;
     int barkReliefSides = 64;
+    /// The bark texture's width in metres: an axis whose own base circumference (after
+    /// scaling) holds k widths gets the texture k times around (k = round(circumference /
+    /// width), at least 1) and as often along per circumference, so its features keep their
+    /// size in metres from the trunk to the twigs (texels stay square). 0: once around each
+    /// axis, whatever its girth (the texture's features as wide on a trunk as on a twig
+    /// scaled up, a metre on a thick oak). [0, 10] m.
+    double barkTextureWidth = 0.0;
     /// Bark colour by height (issue #44: the Scots pine grey-brown low, orange high): where
     /// barkColorTop > barkColorBottom (metres above the first root node), bark vertices get
     /// Mesh::colors, barkColorLow up to barkColorBottom blending smoothly into barkColorHigh at
@@ -103,11 +110,12 @@ inline constexpr float kMinTubeRadius = 1e-4f;
 /// no twist along a branch. A lateral branch starts with a ring centred on its parent node,
 /// with its own radius clamped to the parent's, so the ring lies inside the parent's surface:
 /// forks have neither gaps nor slivers. A root's axis gets the root flare (extra rings over the
-/// flare's height) and goes on below the ground by groundDepth. UVs: u = 0..1 around, v = arc
-/// length / circumference. Normals are smooth and tilted by the taper. Hidden nodes (kHidden) are
-/// skipped with their subtrees. Deterministic and parallel (OpenMP) with identical output on any
-/// thread count. \throw InvalidInput for a resolution outside 3..64 or an invalid skeleton. \throw
-/// LimitExceeded "tube mesh would have N triangles, more than the limit of 100000000;
+/// flare's height) and goes on below the ground by groundDepth. UVs: u = 0..k around (k from
+/// barkTextureWidth, 1 without), v = k · arc length / circumference. Normals are smooth and tilted
+/// by the taper. Hidden nodes (kHidden) are skipped with their subtrees. Deterministic and parallel
+/// (OpenMP) with identical output on any thread count. \throw InvalidInput for a resolution
+/// outside 3..64 or an invalid skeleton. \throw LimitExceeded "tube mesh would have N triangles,
+/// more than the limit of 100000000;
 ///        ..." past TubeSettings::maxTriangles.
 void appendTubes(Mesh& out, const skel::Skeleton& skeleton, const TubeSettings& settings,
                  Progress& progress = noProgress());

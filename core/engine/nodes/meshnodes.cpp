@@ -78,6 +78,10 @@ const std::vector<graph::ParamSpec>& tubeMeshParams() {
                     "times this)"),
              integer("bark_relief_sides", 64, 3, 128,
                      "Most ring vertices an axis with relief gets (4 a ridge or plate)"),
+             number("bark_texture_width", 0, 0, 10, "m",
+                    "Width of the bark texture in metres: a thick axis gets it as many times "
+                    "around as its girth holds, so bark features keep their size from trunk to "
+                    "twig; 0: once around each axis"),
              vector("bark_color_low", vec(1, 1, 1), 0, 1, "",
                     "Bark colour factor up to the bottom of bark_color_heights"),
              vector("bark_color_high", vec(1, 1, 1), 0, 1, "",
@@ -267,6 +271,7 @@ TreeMeshSettings treeMeshSettingsFromParams(const Value& p, std::uint64_t seed,
     s.tubes.barkReliefScale = r.number("bark_relief_scale");
     s.tubes.barkReliefRadius = r.number("bark_relief_radius");
     s.tubes.barkReliefSides = whole(r, "bark_relief_sides");
+    s.tubes.barkTextureWidth = r.number("bark_texture_width");
     s.tubes.barkColorLow = r.vector("bark_color_low");
     s.tubes.barkColorHigh = r.vector("bark_color_high");
     if (const Value* h = r.given("bark_color_heights")) {

@@ -117,6 +117,36 @@ TEST(TubeMesh, RingsLieAtTheRadius) {
     checkWellFormed(m);
 }
 
+// bark_texture_width: an axis gets the texture round(circumference / width) times around and
+// as often along, so its features keep their size in metres; an axis too thin for two widths,
+// and width 0, keep the texture once around (the same bytes).
+TEST(TubeMesh, BarkTextureWidthTilesThickAxes) {
+    const auto s = tree("F!(0.06)F");
+    mesh::TubeSettings settings;
+    settings.caps = false;
+    settings.resolution = 5;
+    const auto once = mesh::buildTubeMesh(s, settings);
+    settings.barkTextureWidth = 0.1; // the base's circumference 2π·0.05 = 0.314 m: 3 widths
+    const auto tiled = mesh::buildTubeMesh(s, settings);
+    ASSERT_EQ(tiled.vertexCount(), once.vertexCount());
+    EXPECT_EQ(tiled.positions, once.positions);
+    for (std::size_t v = 0; v < once.vertexCount(); ++v) {
+        EXPECT_NEAR(tiled.uvs[v].x, 3.0f * once.uvs[v].x, 1e-6f) << v;
+        EXPECT_NEAR(tiled.uvs[v].y, 3.0f * once.uvs[v].y, 1e-5f) << v;
+    }
+    EXPECT_FLOAT_EQ(tiled.uvs[5].x, 3.0f); // the seam: whole tiles, no jump in the texture
+    settings.barkTextureWidth = 0.5;       // 0.63 widths: once around
+    EXPECT_EQ(mesh::buildTubeMesh(s, settings).uvs, once.uvs);
+    settings.barkTextureWidth = -0.1;
+    try {
+        mesh::buildTubeMesh(s, settings);
+        FAIL() << "a negative width was accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("bark_texture_width"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("[0, 10]"), std::string::npos) << e.what();
+    }
+}
+
 TEST(TubeMesh, PlanarBendDoesNotTwist) {
     // Yaw turns keep the turtle's up (+Z); a rotation-minimizing frame started on +Z stays there.
     const auto s = tree("F+(30)F+(30)F-(50)F+(80)F");
