@@ -60,22 +60,21 @@ struct Sum {
     double count = 0.0;
 };
 
-/// The leaves' cells: open addressing over cellKey's 63-bit keys, sized for every leaf (a
+/// The leaves' cells: open addressing over cellKey's 63-bit keys, doubled when half full (a
 /// std::unordered_map was a node allocation and a pointer chase a cell: most of this file's
-/// time in perf record of the English oak).
+/// time in perf record of the English oak; the oak's ~20k leaves fill about 2k cells).
 class CellSums {
 public:
-    explicit CellSums(std::size_t leaves) {
-        std::size_t n = 16;
-        while (n < 2 * leaves)
-            n *= 2;
-        mKeys.assign(n, kEmpty);
-        mSums.resize(n);
-        mMask = n - 1;
-    }
+    CellSums() { resize(1024); }
     Sum& operator[](std::uint64_t key) {
         std::size_t slot = slotOf(key);
-        if (mKeys[slot] == kEmpty) mKeys[slot] = key;
+        if (mKeys[slot] != kEmpty) return mSums[slot];
+        if (2 * (mUsed + 1) > mKeys.size()) {
+            resize(2 * mKeys.size());
+            slot = slotOf(key);
+        }
+        ++mUsed;
+        mKeys[slot] = key;
         return mSums[slot];
     }
     const Sum* find(std::uint64_t key) const {
@@ -85,16 +84,34 @@ public:
 
 private:
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0}; ///< no cellKey has bit 63
-    // The slot of key, or the empty slot where it would go.
+    void resize(std::size_t n) {
+        std::vector<std::uint64_t> keys(n, kEmpty);
+        std::vector<Sum> sums(n);
+        std::swap(keys, mKeys);
+        std::swap(sums, mSums);
+        mShift = 64;
+        for (std::size_t k = n; k > 1; k /= 2)
+            --mShift;
+        for (std::size_t i = 0; i < keys.size(); ++i)
+            if (keys[i] != kEmpty) {
+                const std::size_t slot = slotOf(keys[i]);
+                mKeys[slot] = keys[i];
+                mSums[slot] = sums[i];
+            }
+    }
+    // The slot of key, or the empty slot where it would go: the product's top bits (which
+    // every bit of the key reaches).
     std::size_t slotOf(std::uint64_t key) const {
-        std::size_t slot = (key * 0x9E3779B97F4A7C15ull) >> 20 & mMask;
+        const std::size_t mask = mKeys.size() - 1;
+        std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> mShift);
         while (mKeys[slot] != kEmpty && mKeys[slot] != key)
-            slot = (slot + 1) & mMask;
+            slot = (slot + 1) & mask;
         return slot;
     }
     std::vector<std::uint64_t> mKeys;
     std::vector<Sum> mSums;
-    std::size_t mMask = 0;
+    std::size_t mUsed = 0;
+    int mShift = 54;
 };
 
 } // namespace
@@ -105,7 +122,7 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
     const std::size_t n = skeleton.size();
     if (n == 0 || skeleton.light.size() != n || firstVertex >= mesh.positions.size()) return {};
     const std::vector<float> perTip = ownLight(skeleton);
-    CellSums cells(leaves.size());
+    CellSums cells;
     Sum all;
     for (const skel::Leaf& leaf : leaves) {
         if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
