@@ -235,7 +235,7 @@ struct FittedCard {
     glm::vec3 normal;
     /// The card as a leaf whose card (size long, aspect x size wide) holds it: what the
     /// obstacle check of a forest tests.
-    skel::Leaf bounds;
+    skel::Leaf bounds;      ///< made only for an accept callback
     skel::Leaf crossBounds; ///< the same for the crossing card (LeafClusterSettings::crossed)
 };
 
@@ -299,7 +299,7 @@ glm::dmat3 secondMatrix(const FitInput& in, const glm::dvec3& e1, glm::dvec3& se
 
 FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<std::uint32_t>& group,
                      float aspect, float scale, const FitInput& in, const glm::dvec3& e1,
-                     glm::dvec3 e2) {
+                     glm::dvec3 e2, bool bounds) {
     const std::vector<glm::dvec3>& pts = in.pts;
     const glm::dvec3 &heading = in.heading, &up = in.up, &m = in.m;
     e2 = e2 - glm::dot(e2, e1) * e1;
@@ -337,6 +337,9 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<st
     f.corners[2] = glm::vec3(hi + c0 * across);
     f.corners[3] = glm::vec3(hi + c1 * across);
     f.normal = glm::vec3(n);
+    // The bounds only for the obstacle check (two quat_casts a card whose branches the cards'
+    // turning every way mispredicted, for nothing without one).
+    if (!bounds) return f;
     const double length = a1 - a0, width = c1 - c0;
     f.bounds.position = glm::vec3(lo + cm * across);
     f.bounds.orientation =
@@ -358,7 +361,7 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<st
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
 std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
                                  const std::vector<std::vector<std::uint32_t>>& groups,
-                                 float aspect, float scale) {
+                                 float aspect, float scale, bool bounds) {
     std::vector<FittedCard> cards(groups.size());
     constexpr std::size_t kLanes = kFitLanes;
     FitInput in[kLanes];
@@ -383,7 +386,8 @@ std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
             c[k] = secondMatrix(in[k], e1[k], e2[k]);
         principal(c, e2, n);
         for (std::size_t k = 0; k < n; ++k)
-            cards[lane[k]] = finishFit(leaves, groups[lane[k]], aspect, scale, in[k], e1[k], e2[k]);
+            cards[lane[k]] =
+                finishFit(leaves, groups[lane[k]], aspect, scale, in[k], e1[k], e2[k], bounds);
     }
     return cards;
 }
@@ -448,7 +452,7 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     std::vector<std::vector<std::uint32_t>> groups =
         groupLeaves(leaves, cards.sizeScale, clusters.leavesPerCard);
     // Each group's card, fitted once (it was fitted again for the mesh after the check).
-    std::vector<FittedCard> fitted = fitCards(leaves, groups, aspect, scale);
+    std::vector<FittedCard> fitted = fitCards(leaves, groups, aspect, scale, bool(accept));
     if (accept) {
         std::vector<std::vector<std::uint32_t>> kept;
         std::vector<FittedCard> keptFits;
