@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -107,6 +108,42 @@ private:
     std::vector<CellKey> mKeys; ///< the cells of the current fill, by group
     std::size_t mMask = 0;
     std::uint32_t mStamp = 0;
+};
+
+/// Groups of leaf indices, one after the other in one array (compressed rows): a group a
+/// vector was an allocation a group (5,000 for the English oak, and as many frees).
+class LeafGroups {
+public:
+    std::size_t size() const { return mOffsets.size() - 1; }
+    std::span<const std::uint32_t> operator[](std::size_t g) const {
+        return {mLeaves.data() + mOffsets[g], mOffsets[g + 1] - mOffsets[g]};
+    }
+    void reserve(std::size_t groups, std::size_t leaves) {
+        mOffsets.reserve(groups + 1);
+        mLeaves.reserve(leaves);
+    }
+    void add(std::span<const std::uint32_t> group) {
+        mLeaves.insert(mLeaves.end(), group.begin(), group.end());
+        mOffsets.push_back(static_cast<std::uint32_t>(mLeaves.size()));
+    }
+    /// The groups of \p groupOf (each leaf's group, count groups), leaves in index order.
+    static LeafGroups of(const std::vector<std::uint32_t>& groupOf, std::size_t count) {
+        LeafGroups out;
+        out.mOffsets.assign(count + 1, 0);
+        for (std::uint32_t g : groupOf)
+            ++out.mOffsets[g + 1];
+        for (std::size_t g = 0; g < count; ++g)
+            out.mOffsets[g + 1] += out.mOffsets[g];
+        out.mLeaves.resize(groupOf.size());
+        std::vector<std::uint32_t> next(out.mOffsets.begin(), out.mOffsets.end() - 1);
+        for (std::size_t i = 0; i < groupOf.size(); ++i)
+            out.mLeaves[next[groupOf[i]]++] = static_cast<std::uint32_t>(i);
+        return out;
+    }
+
+private:
+    std::vector<std::uint32_t> mOffsets{0}; ///< group g is [mOffsets[g], mOffsets[g + 1])
+    std::vector<std::uint32_t> mLeaves;
 };
 
 // The corners appendLeafCards gives a leaf.
@@ -247,7 +284,7 @@ struct FitInput {
     glm::dmat3 cov{0.0};
 };
 
-void prepareFit(const std::vector<skel::Leaf>& leaves, const std::vector<std::uint32_t>& group,
+void prepareFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                 float aspect, float scale, FitInput& in) {
     std::vector<glm::dvec3>& pts = in.pts;
     pts.clear();
@@ -297,7 +334,7 @@ glm::dmat3 secondMatrix(const FitInput& in, const glm::dvec3& e1, glm::dvec3& se
     return rest;
 }
 
-FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<std::uint32_t>& group,
+FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                      float aspect, float scale, const FitInput& in, const glm::dvec3& e1,
                      glm::dvec3 e2, bool bounds) {
     const std::vector<glm::dvec3>& pts = in.pts;
@@ -359,8 +396,7 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<st
 /// order: the same cards as one group at a time, without waiting on one chain of divisions and
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
-std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
-                                 const std::vector<std::vector<std::uint32_t>>& groups,
+std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
                                  float aspect, float scale, bool bounds) {
     std::vector<FittedCard> cards(groups.size());
     constexpr std::size_t kLanes = kFitLanes;
@@ -392,16 +428,15 @@ std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
     return cards;
 }
 
-} // namespace
-
-std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf>& leaves,
-                                                    double sizeScale, int leavesPerCard) {
-    std::vector<std::vector<std::uint32_t>> groups;
-    if (leaves.empty()) return groups;
+// groupLeaves' groups as LeafGroups.
+LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeScale,
+                            int leavesPerCard) {
+    if (leaves.empty()) return {};
+    std::vector<std::uint32_t> groupOf(leaves.size());
     if (leavesPerCard <= 1) {
         for (std::size_t i = 0; i < leaves.size(); ++i)
-            groups.push_back({static_cast<std::uint32_t>(i)});
-        return groups;
+            groupOf[i] = static_cast<std::uint32_t>(i);
+        return LeafGroups::of(groupOf, leaves.size());
     }
     double mean = 0.0;
     for (const skel::Leaf& leaf : leaves)
@@ -416,7 +451,6 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));
     CellTable table(std::min(limit + 1, leaves.size()));
-    std::vector<std::uint32_t> groupOf;
     double cell = 1.2 * mean;
     std::size_t count = limit + 1;
     for (int step = 0; step < 39 && count > limit; ++step) {
@@ -424,18 +458,19 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
         if (count > limit) cell *= 1.08;
     }
     if (count > limit) count = CellTable(leaves.size()).fill(mids, cell, leaves.size(), groupOf);
-    // Each group's storage at its size, allocated in group order: the groups lie one after
-    // the other in memory for the passes over them (grown leaf by leaf they were scattered,
-    // and reading each group's first leaf missed the cache).
-    std::vector<std::uint32_t> sizes(count, 0);
-    for (std::uint32_t g : groupOf)
-        ++sizes[g];
-    groups.resize(count);
-    for (std::size_t g = 0; g < count; ++g)
-        groups[g].reserve(sizes[g]);
-    for (std::size_t i = 0; i < leaves.size(); ++i)
-        groups[groupOf[i]].push_back(static_cast<std::uint32_t>(i));
-    return groups;
+    // The groups one after the other in group order, each in leaf order.
+    return LeafGroups::of(groupOf, count);
+}
+
+} // namespace
+
+std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf>& leaves,
+                                                    double sizeScale, int leavesPerCard) {
+    const LeafGroups groups = groupLeafIndices(leaves, sizeScale, leavesPerCard);
+    std::vector<std::vector<std::uint32_t>> out(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        out[g].assign(groups[g].begin(), groups[g].end());
+    return out;
 }
 
 std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
@@ -449,25 +484,24 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     if (leaves.empty()) return 0;
     const auto aspect = static_cast<float>(cards.aspect);
     const auto scale = static_cast<float>(cards.sizeScale);
-    std::vector<std::vector<std::uint32_t>> groups =
-        groupLeaves(leaves, cards.sizeScale, clusters.leavesPerCard);
+    LeafGroups groups = groupLeafIndices(leaves, cards.sizeScale, clusters.leavesPerCard);
     // Each group's card, fitted once (it was fitted again for the mesh after the check).
     std::vector<FittedCard> fitted = fitCards(leaves, groups, aspect, scale, bool(accept));
     if (accept) {
-        std::vector<std::vector<std::uint32_t>> kept;
+        LeafGroups kept;
         std::vector<FittedCard> keptFits;
-        kept.reserve(groups.size());
+        kept.reserve(groups.size(), leaves.size());
         keptFits.reserve(groups.size());
         for (std::size_t k = 0; k < groups.size(); ++k) {
-            std::vector<std::uint32_t>& g = groups[k];
+            const std::span<const std::uint32_t> g = groups[k];
             const FittedCard& f = fitted[k];
             if (g.size() < 2 ||
                 (accept(f.bounds) && (!clusters.crossed || accept(f.crossBounds)))) {
-                kept.push_back(std::move(g));
+                kept.add(g);
                 keptFits.push_back(f);
             } else {
-                for (std::uint32_t i : g) {
-                    kept.push_back({i});
+                for (const std::uint32_t& i : g) {
+                    kept.add({&i, 1});
                     keptFits.emplace_back();
                 }
             }
@@ -477,8 +511,8 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     }
     std::size_t cardCount = groups.size();
     if (clusters.crossed)
-        for (const std::vector<std::uint32_t>& g : groups)
-            cardCount += g.size() > 1;
+        for (std::size_t g = 0; g < groups.size(); ++g)
+            cardCount += groups[g].size() > 1;
     const CardSpan span = growForCards(out, cardCount);
     const std::size_t v0 = span.firstVertex;
     const std::size_t i0 = span.firstIndex;
@@ -492,7 +526,7 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
                              1.0f / static_cast<float>(kClusterAtlasRows));
     std::size_t card = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        const std::vector<std::uint32_t>& group = groups[g];
+        const std::span<const std::uint32_t> group = groups[g];
         const skel::Leaf& first = leaves[group.front()];
         glm::vec3 corners[4];
         glm::vec3 normal;
