@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -69,28 +70,33 @@ public:
     std::size_t fill(const std::vector<glm::dvec3>& mids, double cell, std::size_t limit,
                      std::vector<std::uint32_t>& groupOf) {
         ++mStamp;
-        mKeys.clear();
+        // Room for every key a fill may write (one past the limit), written in place below.
+        mKeys.resize(std::min(limit, mids.size()) + 1);
         groupOf.resize(mids.size());
-        // Leaves come branch by branch: a leaf often shares the cell of the leaf before it,
-        // found without a look into the table.
-        std::uint32_t last = kNone;
+        // Every leaf looks its cell up, and a new cell is written whether or not it is new (a
+        // slot that was the key's already is written with what it had; the key at the next
+        // group's place, which only a new cell claims): the only branch left is the probe's,
+        // which a half-empty table seldom takes. A shortcut for a leaf in the cell of the leaf
+        // before it, and the choice between a found cell and a new one, were branches taken
+        // about every other leaf, mispredicted (perf record of the English oak:
+        // CellTable::fill 10 % of the tree).
+        std::uint32_t count = 0;
         for (std::size_t i = 0; i < mids.size(); ++i) {
             const CellKey key = cellOf(mids[i], cell);
-            if (last == kNone || !(mKeys[last] == key)) {
-                std::size_t slot = cellHash(key) & mMask;
-                while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
-                    slot = (slot + 1) & mMask;
-                Slot& s = mSlots[slot];
-                if (s.stamp != mStamp) {
-                    s = {mStamp, static_cast<std::uint32_t>(mKeys.size())};
-                    mKeys.push_back(key);
-                    if (mKeys.size() > limit) return limit + 1;
-                }
-                last = s.group;
-            }
-            groupOf[i] = last;
+            std::size_t slot = cellHash(key) & mMask;
+            while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
+                slot = (slot + 1) & mMask;
+            Slot& s = mSlots[slot];
+            const bool fresh = s.stamp != mStamp;
+            const std::uint32_t group = fresh ? count : s.group;
+            s.stamp = mStamp;
+            s.group = group;
+            mKeys[count] = key;
+            count += fresh ? 1u : 0u;
+            groupOf[i] = group;
+            if (count > limit) return limit + 1;
         }
-        return mKeys.size();
+        return count;
     }
 
 private:
@@ -102,11 +108,46 @@ private:
         std::uint32_t stamp = 0;
         std::uint32_t group = 0;
     };
-    static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
     std::vector<Slot> mSlots;
     std::vector<CellKey> mKeys; ///< the cells of the current fill, by group
     std::size_t mMask = 0;
     std::uint32_t mStamp = 0;
+};
+
+/// Groups of leaf indices, one after the other in one array (compressed rows): a group a
+/// vector was an allocation a group (5,000 for the English oak, and as many frees).
+class LeafGroups {
+public:
+    std::size_t size() const { return mOffsets.size() - 1; }
+    std::span<const std::uint32_t> operator[](std::size_t g) const {
+        return {mLeaves.data() + mOffsets[g], mOffsets[g + 1] - mOffsets[g]};
+    }
+    void reserve(std::size_t groups, std::size_t leaves) {
+        mOffsets.reserve(groups + 1);
+        mLeaves.reserve(leaves);
+    }
+    void add(std::span<const std::uint32_t> group) {
+        mLeaves.insert(mLeaves.end(), group.begin(), group.end());
+        mOffsets.push_back(static_cast<std::uint32_t>(mLeaves.size()));
+    }
+    /// The groups of \p groupOf (each leaf's group, count groups), leaves in index order.
+    static LeafGroups of(const std::vector<std::uint32_t>& groupOf, std::size_t count) {
+        LeafGroups out;
+        out.mOffsets.assign(count + 1, 0);
+        for (std::uint32_t g : groupOf)
+            ++out.mOffsets[g + 1];
+        for (std::size_t g = 0; g < count; ++g)
+            out.mOffsets[g + 1] += out.mOffsets[g];
+        out.mLeaves.resize(groupOf.size());
+        std::vector<std::uint32_t> next(out.mOffsets.begin(), out.mOffsets.end() - 1);
+        for (std::size_t i = 0; i < groupOf.size(); ++i)
+            out.mLeaves[next[groupOf[i]]++] = static_cast<std::uint32_t>(i);
+        return out;
+    }
+
+private:
+    std::vector<std::uint32_t> mOffsets{0}; ///< group g is [mOffsets[g], mOffsets[g + 1])
+    std::vector<std::uint32_t> mLeaves;
 };
 
 // The corners appendLeafCards gives a leaf.
@@ -129,20 +170,36 @@ void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 ou
 
 // Largest eigenvectors of \p n (at most kFitLanes) symmetric 3x3 matrices by power iteration, each
 // from its \p v (replaced by the result): 24 steps, a matrix whose product vanishes keeps its
-// vector. The n chains are independent and advance in step, two to an SSE2 register: each
-// lane's arithmetic is glm's (m * v, then v / length(v)), operation for operation, and SSE2's
-// packed operations round as the scalar ones do: the same vectors, bit for bit.
+// vector. The direction after 24 products does not depend on where the vector is normalised, so
+// it is normalised once every kBlock products (after the matrix is scaled to unit absolute sum,
+// so that four products neither overflow nor underflow): a division and a square root a block,
+// not three divisions and a square root a step (perf record of the English oak: principal 6.6 %
+// of the tree, all of it waiting on the divider). The result is the same up to rounding. The n
+// chains are independent and advance in step, two to an SSE2 register.
 constexpr std::size_t kFitLanes = 8;
+constexpr int kPowerSteps = 24;
+constexpr int kBlock = 4;
+// A product of kBlock steps of a unit-sum matrix under this vanishes: the matrix's product
+// does (1e-18 a step).
+constexpr double kVanish = 1e-72;
 
 void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
+    double scale[kFitLanes];
+    for (std::size_t k = 0; k < n; ++k) {
+        double sum = 0.0;
+        for (int col = 0; col < 3; ++col)
+            for (int row = 0; row < 3; ++row)
+                sum += std::abs(c[k][col][row]);
+        scale[k] = sum > 0.0 ? 1.0 / sum : 0.0;
+    }
 #if defined(__SSE2__)
-    // Lanes past n: a zero matrix, whose product vanishes at the first step.
+    // Lanes past n: a zero matrix, whose product vanishes at the first block.
     alignas(16) double m[9][kFitLanes] = {};
     alignas(16) double x[kFitLanes] = {}, y[kFitLanes] = {}, z[kFitLanes] = {};
     for (std::size_t k = 0; k < n; ++k) {
         for (int col = 0; col < 3; ++col)
             for (int row = 0; row < 3; ++row)
-                m[3 * col + row][k] = c[k][col][row];
+                m[3 * col + row][k] = c[k][col][row] * scale[k];
         x[k] = v[k].x;
         y[k] = v[k].y;
         z[k] = v[k].z;
@@ -157,23 +214,30 @@ void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
         Z[h] = _mm_load_pd(&z[2 * h]);
         done[h] = _mm_setzero_pd();
     }
-    const __m128d tiny = _mm_set1_pd(1e-18);
-    for (int i = 0; i < 24; ++i)
+    const __m128d tiny = _mm_set1_pd(kVanish);
+    const __m128d one = _mm_set1_pd(1.0);
+    for (int i = 0; i < kPowerSteps; i += kBlock)
         for (int h = 0; h < kPairs; ++h) {
             const __m128d* q = M[h];
-            const __m128d nx = _mm_add_pd(
-                _mm_add_pd(_mm_mul_pd(q[0], X[h]), _mm_mul_pd(q[3], Y[h])), _mm_mul_pd(q[6], Z[h]));
-            const __m128d ny = _mm_add_pd(
-                _mm_add_pd(_mm_mul_pd(q[1], X[h]), _mm_mul_pd(q[4], Y[h])), _mm_mul_pd(q[7], Z[h]));
-            const __m128d nz = _mm_add_pd(
-                _mm_add_pd(_mm_mul_pd(q[2], X[h]), _mm_mul_pd(q[5], Y[h])), _mm_mul_pd(q[8], Z[h]));
+            __m128d nx = X[h], ny = Y[h], nz = Z[h];
+            for (int b = 0; b < kBlock; ++b) {
+                const __m128d px = nx, py = ny, pz = nz;
+                nx = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[0], px), _mm_mul_pd(q[3], py)),
+                                _mm_mul_pd(q[6], pz));
+                ny = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[1], px), _mm_mul_pd(q[4], py)),
+                                _mm_mul_pd(q[7], pz));
+                nz = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[2], px), _mm_mul_pd(q[5], py)),
+                                _mm_mul_pd(q[8], pz));
+            }
             const __m128d len = _mm_sqrt_pd(
                 _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, nx), _mm_mul_pd(ny, ny)), _mm_mul_pd(nz, nz)));
             done[h] = _mm_or_pd(done[h], _mm_cmplt_pd(len, tiny));
             const __m128d keep = done[h];
-            X[h] = _mm_or_pd(_mm_and_pd(keep, X[h]), _mm_andnot_pd(keep, _mm_div_pd(nx, len)));
-            Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_div_pd(ny, len)));
-            Z[h] = _mm_or_pd(_mm_and_pd(keep, Z[h]), _mm_andnot_pd(keep, _mm_div_pd(nz, len)));
+            // A kept lane's len may be 0: its quotient is discarded.
+            const __m128d inv = _mm_div_pd(one, _mm_or_pd(len, _mm_and_pd(keep, one)));
+            X[h] = _mm_or_pd(_mm_and_pd(keep, X[h]), _mm_andnot_pd(keep, _mm_mul_pd(nx, inv)));
+            Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_mul_pd(ny, inv)));
+            Z[h] = _mm_or_pd(_mm_and_pd(keep, Z[h]), _mm_andnot_pd(keep, _mm_mul_pd(nz, inv)));
         }
     for (int h = 0; h < kPairs; ++h) {
         _mm_store_pd(&x[2 * h], X[h]);
@@ -183,18 +247,17 @@ void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
     for (std::size_t k = 0; k < n; ++k)
         v[k] = glm::dvec3(x[k], y[k], z[k]);
 #else
-    bool done[kFitLanes] = {};
-    for (int i = 0; i < 24; ++i)
-        for (std::size_t k = 0; k < n; ++k) {
-            if (done[k]) continue;
-            const glm::dvec3 next = c[k] * v[k];
+    for (std::size_t k = 0; k < n; ++k) {
+        const glm::dmat3 a = c[k] * scale[k];
+        for (int i = 0; i < kPowerSteps; i += kBlock) {
+            glm::dvec3 next = v[k];
+            for (int b = 0; b < kBlock; ++b)
+                next = a * next;
             const double len = glm::length(next);
-            if (len < 1e-18) {
-                done[k] = true;
-                continue;
-            }
-            v[k] = next / len;
+            if (len < kVanish) break;
+            v[k] = next * (1.0 / len);
         }
+    }
 #endif
 }
 
@@ -213,7 +276,7 @@ struct FittedCard {
     glm::vec3 normal;
     /// The card as a leaf whose card (size long, aspect x size wide) holds it: what the
     /// obstacle check of a forest tests.
-    skel::Leaf bounds;
+    skel::Leaf bounds;      ///< made only for an accept callback
     skel::Leaf crossBounds; ///< the same for the crossing card (LeafClusterSettings::crossed)
 };
 
@@ -225,7 +288,7 @@ struct FitInput {
     glm::dmat3 cov{0.0};
 };
 
-void prepareFit(const std::vector<skel::Leaf>& leaves, const std::vector<std::uint32_t>& group,
+void prepareFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                 float aspect, float scale, FitInput& in) {
     std::vector<glm::dvec3>& pts = in.pts;
     pts.clear();
@@ -275,9 +338,9 @@ glm::dmat3 secondMatrix(const FitInput& in, const glm::dvec3& e1, glm::dvec3& se
     return rest;
 }
 
-FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<std::uint32_t>& group,
+FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                      float aspect, float scale, const FitInput& in, const glm::dvec3& e1,
-                     glm::dvec3 e2) {
+                     glm::dvec3 e2, bool bounds) {
     const std::vector<glm::dvec3>& pts = in.pts;
     const glm::dvec3 &heading = in.heading, &up = in.up, &m = in.m;
     e2 = e2 - glm::dot(e2, e1) * e1;
@@ -315,6 +378,9 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<st
     f.corners[2] = glm::vec3(hi + c0 * across);
     f.corners[3] = glm::vec3(hi + c1 * across);
     f.normal = glm::vec3(n);
+    // The bounds only for the obstacle check (two quat_casts a card whose branches the cards'
+    // turning every way mispredicted, for nothing without one).
+    if (!bounds) return f;
     const double length = a1 - a0, width = c1 - c0;
     f.bounds.position = glm::vec3(lo + cm * across);
     f.bounds.orientation =
@@ -334,9 +400,8 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, const std::vector<st
 /// order: the same cards as one group at a time, without waiting on one chain of divisions and
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
-std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
-                                 const std::vector<std::vector<std::uint32_t>>& groups,
-                                 float aspect, float scale) {
+std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
+                                 float aspect, float scale, bool bounds) {
     std::vector<FittedCard> cards(groups.size());
     constexpr std::size_t kLanes = kFitLanes;
     FitInput in[kLanes];
@@ -361,21 +426,21 @@ std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves,
             c[k] = secondMatrix(in[k], e1[k], e2[k]);
         principal(c, e2, n);
         for (std::size_t k = 0; k < n; ++k)
-            cards[lane[k]] = finishFit(leaves, groups[lane[k]], aspect, scale, in[k], e1[k], e2[k]);
+            cards[lane[k]] =
+                finishFit(leaves, groups[lane[k]], aspect, scale, in[k], e1[k], e2[k], bounds);
     }
     return cards;
 }
 
-} // namespace
-
-std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf>& leaves,
-                                                    double sizeScale, int leavesPerCard) {
-    std::vector<std::vector<std::uint32_t>> groups;
-    if (leaves.empty()) return groups;
+// groupLeaves' groups as LeafGroups.
+LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeScale,
+                            int leavesPerCard) {
+    if (leaves.empty()) return {};
+    std::vector<std::uint32_t> groupOf(leaves.size());
     if (leavesPerCard <= 1) {
         for (std::size_t i = 0; i < leaves.size(); ++i)
-            groups.push_back({static_cast<std::uint32_t>(i)});
-        return groups;
+            groupOf[i] = static_cast<std::uint32_t>(i);
+        return LeafGroups::of(groupOf, leaves.size());
     }
     double mean = 0.0;
     for (const skel::Leaf& leaf : leaves)
@@ -390,7 +455,6 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));
     CellTable table(std::min(limit + 1, leaves.size()));
-    std::vector<std::uint32_t> groupOf;
     double cell = 1.2 * mean;
     std::size_t count = limit + 1;
     for (int step = 0; step < 39 && count > limit; ++step) {
@@ -398,18 +462,19 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
         if (count > limit) cell *= 1.08;
     }
     if (count > limit) count = CellTable(leaves.size()).fill(mids, cell, leaves.size(), groupOf);
-    // Each group's storage at its size, allocated in group order: the groups lie one after
-    // the other in memory for the passes over them (grown leaf by leaf they were scattered,
-    // and reading each group's first leaf missed the cache).
-    std::vector<std::uint32_t> sizes(count, 0);
-    for (std::uint32_t g : groupOf)
-        ++sizes[g];
-    groups.resize(count);
-    for (std::size_t g = 0; g < count; ++g)
-        groups[g].reserve(sizes[g]);
-    for (std::size_t i = 0; i < leaves.size(); ++i)
-        groups[groupOf[i]].push_back(static_cast<std::uint32_t>(i));
-    return groups;
+    // The groups one after the other in group order, each in leaf order.
+    return LeafGroups::of(groupOf, count);
+}
+
+} // namespace
+
+std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf>& leaves,
+                                                    double sizeScale, int leavesPerCard) {
+    const LeafGroups groups = groupLeafIndices(leaves, sizeScale, leavesPerCard);
+    std::vector<std::vector<std::uint32_t>> out(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        out[g].assign(groups[g].begin(), groups[g].end());
+    return out;
 }
 
 std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
@@ -423,25 +488,24 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     if (leaves.empty()) return 0;
     const auto aspect = static_cast<float>(cards.aspect);
     const auto scale = static_cast<float>(cards.sizeScale);
-    std::vector<std::vector<std::uint32_t>> groups =
-        groupLeaves(leaves, cards.sizeScale, clusters.leavesPerCard);
+    LeafGroups groups = groupLeafIndices(leaves, cards.sizeScale, clusters.leavesPerCard);
     // Each group's card, fitted once (it was fitted again for the mesh after the check).
-    std::vector<FittedCard> fitted = fitCards(leaves, groups, aspect, scale);
+    std::vector<FittedCard> fitted = fitCards(leaves, groups, aspect, scale, bool(accept));
     if (accept) {
-        std::vector<std::vector<std::uint32_t>> kept;
+        LeafGroups kept;
         std::vector<FittedCard> keptFits;
-        kept.reserve(groups.size());
+        kept.reserve(groups.size(), leaves.size());
         keptFits.reserve(groups.size());
         for (std::size_t k = 0; k < groups.size(); ++k) {
-            std::vector<std::uint32_t>& g = groups[k];
+            const std::span<const std::uint32_t> g = groups[k];
             const FittedCard& f = fitted[k];
             if (g.size() < 2 ||
                 (accept(f.bounds) && (!clusters.crossed || accept(f.crossBounds)))) {
-                kept.push_back(std::move(g));
+                kept.add(g);
                 keptFits.push_back(f);
             } else {
-                for (std::uint32_t i : g) {
-                    kept.push_back({i});
+                for (const std::uint32_t& i : g) {
+                    kept.add({&i, 1});
                     keptFits.emplace_back();
                 }
             }
@@ -451,8 +515,8 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     }
     std::size_t cardCount = groups.size();
     if (clusters.crossed)
-        for (const std::vector<std::uint32_t>& g : groups)
-            cardCount += g.size() > 1;
+        for (std::size_t g = 0; g < groups.size(); ++g)
+            cardCount += groups[g].size() > 1;
     const CardSpan span = growForCards(out, cardCount);
     const std::size_t v0 = span.firstVertex;
     const std::size_t i0 = span.firstIndex;
@@ -466,7 +530,7 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
                              1.0f / static_cast<float>(kClusterAtlasRows));
     std::size_t card = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
-        const std::vector<std::uint32_t>& group = groups[g];
+        const std::span<const std::uint32_t> group = groups[g];
         const skel::Leaf& first = leaves[group.front()];
         glm::vec3 corners[4];
         glm::vec3 normal;
