@@ -411,10 +411,6 @@
         <translation>Skaliert die Dicke des Asts und dessen, was er trägt, 0,05 bis 20</translation>
     </message>
     <message>
-        <source>Keep its geometry through regrowth</source>
-        <translation>Geometrie beim Neuwachsen behalten</translation>
-    </message>
-    <message>
         <source>Locked: the branch and what it carries keep their exact shape when the species or the seed changes</source>
         <translation>Gesperrt: Der Ast und was er trägt behalten ihre genaue Form, wenn sich die Art oder der Seed ändert</translation>
     </message>
@@ -453,6 +449,10 @@
     <message>
         <source>none (as grown)</source>
         <translation>keine (wie gewachsen)</translation>
+    </message>
+    <message>
+        <source>Keep through regrowth</source>
+        <translation>Beim Neuwachsen behalten</translation>
     </message>
 </context>
 <context>

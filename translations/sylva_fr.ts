@@ -411,10 +411,6 @@
         <translation>Met à l’échelle l’épaisseur de la branche et de ce qu’elle porte, de 0,05 à 20</translation>
     </message>
     <message>
-        <source>Keep its geometry through regrowth</source>
-        <translation>Garder sa géométrie à la repousse</translation>
-    </message>
-    <message>
         <source>Locked: the branch and what it carries keep their exact shape when the species or the seed changes</source>
         <translation>Verrouillée : la branche et ce qu’elle porte gardent leur forme exacte quand l’espèce ou la graine change</translation>
     </message>
@@ -453,6 +449,10 @@
     <message>
         <source>none (as grown)</source>
         <translation>aucune (telle que poussée)</translation>
+    </message>
+    <message>
+        <source>Keep through regrowth</source>
+        <translation>Garder à la repousse</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include <QAbstractItemModel>
+#include <QApplication>
 #include <QCheckBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -118,6 +119,20 @@ private Q_SLOTS:
         auto* box = mWindow->findChild<QGroupBox*>(QStringLiteral("branchProperties"));
         QVERIFY(box);
         QVERIFY(box->title().contains(QString::fromStdString(branch)));
+        // The branch's rows make Properties scroll: its editors still fit beside the
+        // scroll bar (the position's third field was cut off).
+        QApplication::processEvents();
+        auto* panel = mWindow->findChild<QWidget*>(QStringLiteral("propertiesPanel"));
+        QVERIFY(panel && panel->parentWidget());
+        const QWidget* view = panel->parentWidget(); // the scroll area's viewport
+        for (const QDoubleSpinBox* spin : panel->findChildren<QDoubleSpinBox*>()) {
+            if (!spin->isVisibleTo(panel)) continue;
+            const int right = spin->mapTo(view, QPoint(spin->width(), 0)).x();
+            QVERIFY2(right <= view->width(), qPrintable(QStringLiteral("%1 ends at %2 of %3")
+                                                            .arg(spin->objectName())
+                                                            .arg(right)
+                                                            .arg(view->width())));
+        }
         QVERIFY(viewport()->grabFramebuffer().save(test::outputPath("branch_selected.png")));
         // A click on the sky lets it go.
         QTest::mouseClick(viewport(), Qt::LeftButton, {}, QPoint(5, 5));

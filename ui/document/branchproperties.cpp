@@ -39,7 +39,7 @@ BranchProperties::BranchProperties(doc::Document& document, doc::Document::Branc
                           "carries follows"));
     mRadius = scaleBox(QStringLiteral("branchRadius"), tr("Radius scale:"),
                        tr("Scales the thickness of the branch and what it carries, 0.05 to 20"));
-    mLock = new QCheckBox(tr("Keep its geometry through regrowth"), this);
+    mLock = new QCheckBox(tr("Keep through regrowth"), this);
     mLock->setObjectName(QStringLiteral("branchLock"));
     mLock->setToolTip(tr("Locked: the branch and what it carries keep their exact shape when "
                          "the species or the seed changes"));
