@@ -364,7 +364,8 @@ private:
     // bench_spacecolonization 3k-100k points 14-20 % faster, the English oak 2-5 %, since the
     // point loop went branch-free; 32 against 16: 3k-100k points 9-13 % faster, perf_gate
     // spacecol 11 %, the oak 2 %, as the nodes were offered to whole cells four at a time;
-    // 64 no better than 32).
+    // 64 no better than 32 then; 64 against 32 once the offers took eight lanes (offerAvx):
+    // perf_gate spacecol 6 %, the oak 1 %).
     static float cellSizeFor(const std::vector<glm::vec3>& points, float di) {
         glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
         for (const glm::vec3& p : points) {
@@ -376,7 +377,7 @@ private:
             std::cbrt(e.x * e.y * e.z * kPointsPerCell / static_cast<double>(points.size()));
         return static_cast<float>(std::max(h, static_cast<double>(di) / 8.0));
     }
-    static constexpr double kPointsPerCell = 32.0;
+    static constexpr double kPointsPerCell = 64.0;
 
     std::vector<float> mX, mY, mZ, mBest2; ///< per point, grouped by cell, padded
     std::vector<std::int32_t> mNode;
