@@ -116,7 +116,8 @@ __attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, co
     return std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3]));
 }
 
-const bool kHasAvx = __builtin_cpu_supports("avx");
+// The processor's features read first (a static initializer may run before libgcc's own).
+const bool kHasAvx = (__builtin_cpu_init(), __builtin_cpu_supports("avx"));
 #endif
 
 /// The oracle: every live point against every node, every iteration.
