@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <string>
@@ -117,7 +118,9 @@ __attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, co
 }
 
 // The processor's features read first (a static initializer may run before libgcc's own).
-const bool kHasAvx = (__builtin_cpu_init(), __builtin_cpu_supports("avx"));
+// SYLVA_NO_AVX=1 takes the SSE2 offers on any processor (its tests run them on one with AVX).
+const bool kHasAvx =
+    (__builtin_cpu_init(), __builtin_cpu_supports("avx")) && std::getenv("SYLVA_NO_AVX") == nullptr;
 #endif
 
 /// The oracle: every live point against every node, every iteration.
@@ -197,7 +200,10 @@ public:
         const bool parallel = cellCount * static_cast<std::int64_t>(newNodes) > 200000;
 #pragma omp parallel for schedule(dynamic, 32) if (parallel)
         for (std::int64_t k = 0; k < cellCount; ++k)
-            updateCell(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
+            if (useAvx())
+                updateCell<true>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
+            else
+                updateCell<false>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
         std::erase_if(mActive, [this](std::uint32_t c) { return mCells[c].live == 0; });
     }
 
@@ -224,6 +230,17 @@ private:
         }
     }
 
+    static bool useAvx() {
+#if SYLVA_OFFER_AVX
+        return kHasAvx;
+#else
+        return false;
+#endif
+    }
+
+    // Avx: the offers by offerAvx (one instance a path: a call in the SSE2 loop's lambda cost
+    // that loop 6 %, its registers saved round the call).
+    template <bool Avx>
     void updateCell(PointState& s, Cell& cell, std::size_t firstNew, float dk2) {
         const std::size_t newNodes = mNX.size();
         const float* nx = mNX.data();
@@ -250,7 +267,7 @@ private:
             const auto node = static_cast<std::int32_t>(firstNew + j);
             touched = true;
 #if SYLVA_OFFER_AVX
-            if (kHasAvx) {
+            if constexpr (Avx) {
                 max2 = offerAvx(X, Y, Z, B, N, lanes, px, py, pz, node);
                 return;
             }
@@ -360,7 +377,7 @@ private:
         clearPadding(cell.begin, kept);
     }
 
-    // About kPointsPerCell points per cell, never finer than d_i / 8 (the pruning works on
+    // About pointsPerCell() points per cell, never finer than d_i / 8 (the pruning works on
     // cells: smaller cells prune more points but cost more node-to-cell tests; 16 against 8:
     // bench_spacecolonization 3k-100k points 14-20 % faster, the English oak 2-5 %, since the
     // point loop went branch-free; 32 against 16: 3k-100k points 9-13 % faster, perf_gate
@@ -375,10 +392,14 @@ private:
         }
         const glm::dvec3 e = glm::max(glm::dvec3(hi - lo), glm::dvec3(1e-3));
         const double h =
-            std::cbrt(e.x * e.y * e.z * kPointsPerCell / static_cast<double>(points.size()));
+            std::cbrt(e.x * e.y * e.z * pointsPerCell() / static_cast<double>(points.size()));
         return static_cast<float>(std::max(h, static_cast<double>(di) / 8.0));
     }
-    static constexpr double kPointsPerCell = 64.0;
+    // 64 with the eight-lane offers, 32 with SSE2's four (64 there: perf_gate spacecol 0.379
+    // -> 0.40).
+    static double pointsPerCell() {
+        return useAvx() ? 64.0 : 32.0;
+    }
 
     std::vector<float> mX, mY, mZ, mBest2; ///< per point, grouped by cell, padded
     std::vector<std::int32_t> mNode;
