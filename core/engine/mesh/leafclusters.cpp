@@ -338,23 +338,46 @@ glm::dmat3 secondMatrix(const FitInput& in, const glm::dvec3& e1, glm::dvec3& se
     return rest;
 }
 
+// A card's plane and axes: n (toward the leaves' up), along (the stem edge toward where the
+// leaves start: their mean heading in the plane, e1 when they point every way) and across.
+struct CardAxes {
+    glm::dvec3 n, along, across;
+};
+
+// The axes of \p n cards, each stage for every card before the next: a card's chain of four
+// normalisations (a square root and a division each) waited on the one before; cards side by
+// side overlap theirs (perf record of the English oak: finishFit 4.6 %, on those chains). Each
+// card's arithmetic is its own, in its order: the same axes as one card at a time.
+void cardAxes(const FitInput* in, const std::span<const std::uint32_t>* group, const glm::dvec3* e1,
+              glm::dvec3* e2, CardAxes* out, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) {
+        e2[k] = e2[k] - glm::dot(e2[k], e1[k]) * e1[k];
+        if (glm::length(e2[k]) < 1e-9) e2[k] = anyPerpendicular(e1[k]);
+        e2[k] = glm::normalize(e2[k]);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        glm::dvec3 c = glm::normalize(glm::cross(e1[k], e2[k]));
+        if (glm::dot(c, in[k].up) < 0.0) c = -c;
+        out[k].n = c;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        const glm::dvec3& heading = in[k].heading;
+        const glm::dvec3& c = out[k].n;
+        const glm::dvec3 along = heading - glm::dot(heading, c) * c;
+        out[k].along = glm::length(along) > 0.2 * static_cast<double>(group[k].size())
+                           ? glm::normalize(along)
+                           : (glm::dot(e1[k], heading) < 0.0 ? -e1[k] : e1[k]);
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        out[k].across = glm::normalize(glm::cross(out[k].n, out[k].along));
+}
+
 FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
-                     float aspect, float scale, const FitInput& in, const glm::dvec3& e1,
-                     glm::dvec3 e2, bool bounds) {
+                     float aspect, float scale, const FitInput& in, const CardAxes& axes,
+                     bool bounds) {
     const std::vector<glm::dvec3>& pts = in.pts;
-    const glm::dvec3 &heading = in.heading, &up = in.up, &m = in.m;
-    e2 = e2 - glm::dot(e2, e1) * e1;
-    if (glm::length(e2) < 1e-9) e2 = anyPerpendicular(e1);
-    e2 = glm::normalize(e2);
-    glm::dvec3 n = glm::normalize(glm::cross(e1, e2));
-    if (glm::dot(n, up) < 0.0) n = -n;
-    // The stem edge toward where the leaves start: the card's "up" is their mean
-    // heading in the plane (e1 when they point every way).
-    glm::dvec3 along = heading - glm::dot(heading, n) * n;
-    along = glm::length(along) > 0.2 * static_cast<double>(group.size())
-                ? glm::normalize(along)
-                : (glm::dot(e1, heading) < 0.0 ? -e1 : e1);
-    const glm::dvec3 across = glm::normalize(glm::cross(n, along));
+    const glm::dvec3& m = in.m;
+    const glm::dvec3 &n = axes.n, &along = axes.along, &across = axes.across;
     double a0 = 1e300, a1 = -1e300, c0 = 1e300, c1 = -1e300;
     for (const glm::dvec3& q : pts) {
         const double a = glm::dot(q - m, along), c = glm::dot(q - m, across);
@@ -425,9 +448,13 @@ std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Le
         for (std::size_t k = 0; k < n; ++k)
             c[k] = secondMatrix(in[k], e1[k], e2[k]);
         principal(c, e2, n);
+        std::span<const std::uint32_t> members[kLanes];
         for (std::size_t k = 0; k < n; ++k)
-            cards[lane[k]] =
-                finishFit(leaves, groups[lane[k]], aspect, scale, in[k], e1[k], e2[k], bounds);
+            members[k] = groups[lane[k]];
+        CardAxes axes[kLanes];
+        cardAxes(in, members, e1, e2, axes, n);
+        for (std::size_t k = 0; k < n; ++k)
+            cards[lane[k]] = finishFit(leaves, members[k], aspect, scale, in[k], axes[k], bounds);
     }
     return cards;
 }
