@@ -165,6 +165,18 @@ class SYLVA_OT_grow_tree(bpy.types.Operator):
         return {"FINISHED"}
 
 
+def _build_reporting(operator, make):
+    """Runs a forest build for \p operator: its result, or None with the error or the
+    interruption reported (the grow-forest and import-project buttons)."""
+    try:
+        return make()
+    except (ImportError, ValueError, OSError) as e:
+        operator.report({"ERROR"}, str(e))
+    except KeyboardInterrupt:
+        operator.report({"WARNING"}, "interrupted")
+    return None
+
+
 class SYLVA_OT_grow_forest(bpy.types.Operator):
     bl_idname = "sylva.grow_forest"
     bl_label = "Grow forest"
@@ -173,14 +185,9 @@ class SYLVA_OT_grow_forest(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
-        try:
-            sylva = import_sylva()
-            forest = build.grow_forest(sylva, context, context.scene.sylva)
-        except (ImportError, ValueError, OSError) as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
-        except KeyboardInterrupt:
-            self.report({"WARNING"}, "interrupted")
+        forest = _build_reporting(
+            self, lambda: build.grow_forest(import_sylva(), context, context.scene.sylva))
+        if forest is None:
             return {"CANCELLED"}
         st = forest.stats
         self.report({"INFO"}, f"{st['trees']} trees ({st['instanced']} instanced, "
@@ -200,13 +207,9 @@ class SYLVA_OT_import_project(bpy.types.Operator):
 
     def execute(self, context):
         s = context.scene.sylva
-        try:
-            forest = build.import_project(import_sylva(), context, s.project_file, s)
-        except (ImportError, ValueError, OSError) as e:
-            self.report({"ERROR"}, str(e))
-            return {"CANCELLED"}
-        except KeyboardInterrupt:
-            self.report({"WARNING"}, "interrupted")
+        forest = _build_reporting(
+            self, lambda: build.import_project(import_sylva(), context, s.project_file, s))
+        if forest is None:
             return {"CANCELLED"}
         st = forest.stats
         message = (f"{st['trees']} trees, {st['triangles']} triangles, "

@@ -89,6 +89,15 @@ assert moved > 0.05, f"the bend moved the tree's centre by {moved} m"
 # The project changed (the tree's season) and imported again: the edits are still applied.
 fall, fall_bark = imported(autumn)
 assert fall_bark == cut_bark, (fall_bark, cut_bark)
+# A missing project file: the button reports it and cancels; the last import stays.
+s.project_file = os.path.join(os.path.dirname(autumn), "missing.sylva")
+try:
+    result = bpy.ops.sylva.import_project()
+except RuntimeError as e:  # an operator's ERROR report, raised in background mode
+    assert "missing.sylva" in str(e), e
+    result = {"CANCELLED"}
+assert result == {"CANCELLED"}, result
+assert len(bpy.data.collections[build.PROJECT_COLLECTION].objects) == 1
 print(f"regrown in autumn: {fall_bark} bark triangles, as edited; the bend moved the centre "
       f"{moved:.2f} m; the import matches the module's build within {diff:.1e} m")
 print("OK")
