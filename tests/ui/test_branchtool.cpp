@@ -21,6 +21,7 @@
 #include "demowindow.h"
 #include "document/document.h"
 #include "engine/export/lodchainexport.h"
+#include "limbonscreen.h"
 #include "ui/document/messagespanel.h"
 #include "ui/document/outlinermodel.h"
 #include "ui/generation/documentgenerator.h"
@@ -69,20 +70,7 @@ private:
     std::pair<QPoint, std::string> limbOnScreen() {
         const DrawnTree* t = drawn();
         if (!t) return {};
-        const auto branches = editedBranchesOf(*t, document().branchEdits(mTree));
-        for (const skel::Branch& b : branches) {
-            if (b.order != 1) continue;
-            for (float f : {0.3f, 0.45f, 0.6f, 0.2f}) {
-                const glm::vec3 local = b.base + f * (b.tip - b.base);
-                const auto p =
-                    viewport()->project(glm::vec3(t->transform * glm::vec4(local, 1.0f)));
-                if (!p) continue;
-                const auto hit = tool().branchAt(p->toPoint());
-                if (hit && hit->tree == mTree && hit->branch.find('.') != std::string::npos)
-                    return {p->toPoint(), hit->branch};
-            }
-        }
-        return {};
+        return test::limbOnScreen(*viewport(), tool(), *t, mTree, document().branchEdits(mTree));
     }
 
     /// The radius of a branch's first node as grown.

@@ -12,6 +12,7 @@
 
 #include "demowindow.h"
 #include "document/document.h"
+#include "limbonscreen.h"
 #include "ui/generation/documentgenerator.h"
 #include "ui/generation/treebranches.h"
 #include "ui/mainwindow.h"
@@ -55,18 +56,7 @@ private:
     std::pair<QPoint, std::string> limbInPreview() {
         const DrawnTree* t = drawn();
         if (!t) return {};
-        for (const skel::Branch& b : editedBranchesOf(*t, document().branchEdits(mTree))) {
-            if (b.order != 1) continue;
-            for (float f : {0.3f, 0.45f, 0.6f, 0.2f}) {
-                const glm::vec3 local = b.base + f * (b.tip - b.base);
-                const auto p = preview()->project(glm::vec3(t->transform * glm::vec4(local, 1.0f)));
-                if (!p) continue;
-                const auto hit = tool().branchAt(p->toPoint());
-                if (hit && hit->tree == mTree && hit->branch.find('.') != std::string::npos)
-                    return {p->toPoint(), hit->branch};
-            }
-        }
-        return {};
+        return test::limbOnScreen(*preview(), tool(), *t, mTree, document().branchEdits(mTree));
     }
 
 private Q_SLOTS:
