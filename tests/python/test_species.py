@@ -235,3 +235,36 @@ def test_project_and_tree_seasons(presets, tmp_path):
     p.season = "autumn"
     p.save(tmp_path / "seasons.sylva")
     assert sylva.load_project(tmp_path / "seasons.sylva").season == "autumn"
+
+
+_MMAPPED_BLOCKS = r"""
+import ctypes, sys
+class MallInfo2(ctypes.Structure):
+    _fields_ = [(n, ctypes.c_size_t) for n in
+                ("arena", "ordblks", "smblks", "hblks", "hblkhd", "usmblks", "fsmblks",
+                 "uordblks", "fordblks", "keepcost")]
+libc = ctypes.CDLL(None)
+libc.mallinfo2.restype = MallInfo2
+import sylva
+before = libc.mallinfo2().hblks
+block = bytearray(8 << 20)  # 8 MiB: past glibc's default mmap threshold
+print(libc.mallinfo2().hblks - before)
+"""
+
+
+def test_import_keeps_freed_tree_arrays_unless_told_not_to(tmp_path):
+    """At import the module raises glibc's mmap threshold (docs/python.md, memory): an 8 MiB
+    array then comes from the heap, not from a fresh mapping; SYLVA_MALLOC=system leaves the
+    host's policy, under which it is mapped."""
+    import os
+    import subprocess
+    import sys
+
+    def mapped(env_extra):
+        env = dict(os.environ, **env_extra)
+        out = subprocess.run([sys.executable, "-c", _MMAPPED_BLOCKS], env=env, check=True,
+                             capture_output=True, text=True).stdout
+        return int(out.strip())
+
+    assert mapped({}) == 0
+    assert mapped({"SYLVA_MALLOC": "system"}) == 1
