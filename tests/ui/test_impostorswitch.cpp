@@ -5,10 +5,14 @@
 // (Mesa llvmpipe): the Italian cypress, whose 64-px atlas loses its narrow spire at the default
 // switch (~94 px high), switches later, and is drawn as its coarse mesh between its own switch
 // and the default one; the Norway maple, whose impostor matches at the default, keeps it.
+// And when the levels of a tree just edited arrive: a frame only where they change the view
+// (a tree seen far), none for a tree seen near, which draws its full mesh either way.
 #include <cmath>
+#include <cstdint>
 #include <memory>
 
 #include <QApplication>
+#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QTest>
@@ -47,6 +51,44 @@ private:
     std::array<std::size_t, ViewLod::kLevels> frame() {
         mView->grabSharp();
         return mView->drawnPerLevel();
+    }
+
+    /// \p species grown from \p seed, with what its levels are made from.
+    static ViewTree grown(const QString& species, std::uint64_t seed) {
+        const doc::SpeciesTree t = doc::growSpeciesTree(
+            QDir(doc::PresetLibrary::directory()).filePath(species + QStringLiteral(".json")),
+            seed);
+        ViewTree tree;
+        if (!t.skeleton) return tree;
+        tree.mesh =
+            std::make_shared<const mesh::Mesh>(mesh::buildTreeMesh(*t.skeleton, t.settings));
+        tree.lod.skeleton = t.skeleton;
+        tree.lod.settings = std::make_shared<const mesh::TreeMeshSettings>(t.settings);
+        return tree;
+    }
+
+    /// Waits for the trees' levels, then half a second more (a sharp frame after a moving one).
+    bool settle() {
+        QElapsedTimer waited;
+        waited.start();
+        while (mView->lodPending() > 0) {
+            if (waited.elapsed() > kTimeoutMs) return false;
+            QTest::qWait(50);
+        }
+        QTest::qWait(500);
+        return true;
+    }
+
+    /// Shows \p tree in place of the one in view (an edit: a new mesh, no levels yet) and
+    /// returns the frames painted up to the first frame that shows it.
+    std::size_t edit(const ViewTree& tree) {
+        mView->setTrees({tree});
+        const std::size_t before = mView->framesPainted();
+        QElapsedTimer waited;
+        waited.start();
+        while (mView->framesPainted() == before && waited.elapsed() < 10000)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        return mView->framesPainted();
     }
 
     /// Grows \p species (seed 1), waits for its levels and atlas, returns its switch height.
@@ -117,6 +159,37 @@ private Q_SLOTS:
         QCOMPARE(mView->impostorsSwitchedLater(), std::size_t(0));
         look(centre, height, float(0.9 * at));
         QCOMPARE(frame()[ViewLod::kImpostorLevel], std::size_t(1));
+    }
+
+    void levelsRepaintOnlyWhereTheyShow() {
+        const ViewTree first = grown(QStringLiteral("english-oak"), 1);
+        QVERIFY(first.mesh);
+        mView->setTrees({first});
+        const Bounds box = mView->treeBounds().front();
+        const glm::vec3 centre = 0.5f * (box.lo + box.hi);
+        const float height = box.hi.y - box.lo.y;
+
+        // Near (400 px high in a 480 px view): the full mesh, with or without levels.
+        look(centre, height, 400.0f);
+        QVERIFY(settle());
+        QCOMPARE(frame()[0], std::size_t(1));
+        QVERIFY(settle());
+        std::size_t shown = edit(grown(QStringLiteral("english-oak"), 2));
+        QVERIFY(mView->lodPending() > 0); // its levels come after the frame that shows it
+        QVERIFY(settle());
+        QCOMPARE(mView->framesPainted(), shown);
+
+        // Far (150 px): a coarser level, drawn once the edited tree's levels are made.
+        look(centre, height, 150.0f);
+        QVERIFY(settle());
+        QCOMPARE(frame()[0], std::size_t(0));
+        QVERIFY(settle());
+        shown = edit(grown(QStringLiteral("english-oak"), 3));
+        QCOMPARE(mView->drawnPerLevel()[0], std::size_t(1)); // the new mesh, no levels yet
+        QVERIFY(mView->lodPending() > 0);
+        QVERIFY(settle());
+        QVERIFY(mView->framesPainted() > shown);
+        QCOMPARE(mView->drawnPerLevel()[0], std::size_t(0));
     }
 };
 

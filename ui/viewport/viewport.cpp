@@ -72,8 +72,11 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
     connect(mWind, &WindClock::frameDue, this, [this] { update(); });
     mLod = new ViewLod(this);
     connect(mLod, &ViewLod::levelsReady, this, [this] {
+        // The new levels' buffers go up with the next frame; a frame now only where they change
+        // what the view shows (a tree seen near draws its full mesh either way: repainting it
+        // doubled the work of every edit and drag under a software renderer).
         mTreesDirty = true;
-        update();
+        if (levelsChangeView()) update();
     });
 }
 
@@ -323,6 +326,19 @@ std::optional<QPointF> Viewport::project(const glm::vec3& world) const {
     return QPointF((ndc.x + 1.0f) * 0.5f * float(width()), (1.0f - ndc.y) * 0.5f * float(height()));
 }
 
+bool Viewport::levelsChangeView() const {
+    if (mLastReduced) return true; // a frame at rest follows anyway
+    for (const TreeDraw& d : mLastDrawList) {
+        if (d.level <= 0 || d.index >= mTrees.size()) continue;
+        const ViewTree& t = mTrees[d.index];
+        // An impostor is baked from the levels; an instance draws its variant's levels.
+        if (d.level >= ViewLod::kImpostorLevel) return true;
+        if (t.lod.instance && t.lod.variant) continue;
+        if (mLod->meshFor(t.mesh.get(), d.level) != t.mesh.get()) return true;
+    }
+    return false;
+}
+
 TreeHit Viewport::pickAt(const QPointF& pos) const {
     std::vector<bool> hidden(mTrees.size(), false);
     for (std::size_t i = 0; i < mTrees.size(); ++i)
@@ -423,6 +439,7 @@ void Viewport::paintGL() {
         double& ms;
         ~FrameTime() { ms = double(timer.nsecsElapsed()) * 1e-6; }
     } frameTime{frameTimer, mLastPaintMs};
+    ++mFramesPainted;
     if (!mGlReady) {
         // Without our functions, fall back to the context's basic ones to show a neutral grey.
         QOpenGLFunctions* f = context()->functions();

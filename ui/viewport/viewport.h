@@ -207,6 +207,8 @@ public:
     /// its wind data only with View ▸ Wind on), and the last frame's paintGL (upload included).
     double lastUploadMs() const { return mLastUploadMs; }
     double lastPaintMs() const { return mLastPaintMs; }
+    /// Frames painted since the viewport was made (tests count the repaints an edit causes).
+    std::size_t framesPainted() const { return mFramesPainted; }
     /// The mesh setMesh() gave (none after a failed preview).
     const std::shared_ptr<const mesh::Mesh>& shownMesh() const { return mMesh; }
     OrbitCamera& camera() { return mCamera; }
@@ -321,6 +323,9 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
+    /// Whether levels that just arrived change what the last frame drew: a tree it drew at a
+    /// coarser level than its full mesh (or as an impostor) now has that level.
+    bool levelsChangeView() const;
     enum class DragMode { None, Orbit, Pan };
 
     void releaseGl();
@@ -370,6 +375,7 @@ private:
     }
     double mLastUploadMs = 0.0;
     double mLastPaintMs = 0.0;
+    std::size_t mFramesPainted = 0;
     WindClock* mWind = nullptr; ///< a child
     void updateBounds();
     std::vector<ViewTree> mTrees;
