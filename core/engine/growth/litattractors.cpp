@@ -1,6 +1,7 @@
 #include "engine/growth/litattractors.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -31,60 +32,139 @@ constexpr double kShadowA = 1.0;
 constexpr double kShadowB = 2.0;
 constexpr int kShadowDepth = 4;
 
-/// Candidate cluster centres in index order, struct of arrays: the squared distance to the
-/// nearest centre chosen so far kept up to date four points at a time (SSE2 rounds as the
-/// scalar code did), the scores made four at a time, the best taken in order.
+/// What Candidates::visit scores after its distance update.
+enum class Score { None, Spread, WeightedSpread };
+
+/// Candidate cluster centres in index order, struct of arrays. Each centre chosen is visited
+/// once: every candidate's squared distance to it (summed as glm::dot sums it) lowers the
+/// distance to the nearest centre and marks the candidate lit when it is within that centre's
+/// radius, and the same pass scores the candidates for the next centre and keeps the first of
+/// the highest score, four at a time on SSE2 (each lane rounds as the scalar code does).
 class Candidates {
 public:
-    void add(const glm::vec3& p, float weight, float jitter) {
+    void reserve(std::size_t n) {
+        for (std::vector<float>* v : {&mX, &mY, &mZ, &mWeight, &mJitter, &mNearest})
+            v->reserve(n);
+        mLit.reserve(n);
+        mIndex.reserve(n);
+    }
+    void add(const glm::vec3& p, float weight, float jitter, std::size_t index) {
         mX.push_back(p.x);
         mY.push_back(p.y);
         mZ.push_back(p.z);
         mWeight.push_back(weight);
         mJitter.push_back(jitter);
         mNearest.push_back(std::numeric_limits<float>::max());
+        mLit.push_back(0);
+        mIndex.push_back(static_cast<std::uint32_t>(index));
     }
     std::size_t size() const { return mX.size(); }
     glm::vec3 point(std::size_t k) const { return {mX[k], mY[k], mZ[k]}; }
 
-    /// nearest = min(nearest, |p - centre|^2), as glm::dot(d, d) sums it.
-    void closer(const glm::vec3& centre) {
-        for (std::size_t k = 0; k < mX.size(); ++k) {
-            const float dx = mX[k] - centre.x, dy = mY[k] - centre.y, dz = mZ[k] - centre.z;
-            mNearest[k] = std::min(mNearest[k], (dx * dx + dy * dy) + dz * dz);
-        }
+    /// The first candidate of the highest score (size() when none beats -1) without a visit:
+    /// score = weight x spread x jitter (weighted) or spread x jitter, spread = sqrt(nearest)
+    /// (Score::Spread, Score::WeightedSpread) or 1 (Score::None, weighted).
+    std::size_t best(Score score) const {
+        Best b;
+        for (std::size_t k = 0; k < mX.size(); ++k)
+            b.offer(scoreOf(k, score), k);
+        return b.index(mX.size());
     }
 
-    /// The first candidate of the highest score (size() when none beats -1): score =
-    /// weight x spread x jitter (weighted) or spread x jitter, spread = sqrt(nearest) or 1.
-    std::size_t best(bool spread, bool weighted) {
+    /// A centre chosen, of squared radius \p r2: nearest = min(nearest, |p - centre|^2), lit
+    /// when |p - centre|^2 <= r2; then best(score) of the updated distances (size() for
+    /// Score::None, which scores nothing).
+    std::size_t visit(const glm::vec3& centre, float r2, Score score) {
         const std::size_t n = mX.size();
-        mScore.resize(n);
         std::size_t k = 0;
+        Best b;
 #if defined(__SSE2__)
-        const __m128 one = _mm_set1_ps(1.0f);
+        const __m128 cx = _mm_set1_ps(centre.x), cy = _mm_set1_ps(centre.y),
+                     cz = _mm_set1_ps(centre.z), vr2 = _mm_set1_ps(r2);
+        __m128 top = _mm_set1_ps(-1.0f);
+        __m128i topIndex = _mm_set1_epi32(static_cast<int>(n)), index = _mm_setr_epi32(0, 1, 2, 3);
+        const __m128i four = _mm_set1_epi32(4);
         for (; k + 4 <= n; k += 4) {
-            const __m128 s = spread ? _mm_sqrt_ps(_mm_loadu_ps(&mNearest[k])) : one;
-            const __m128 w = weighted ? _mm_mul_ps(_mm_loadu_ps(&mWeight[k]), s) : s;
-            _mm_storeu_ps(&mScore[k], _mm_mul_ps(w, _mm_loadu_ps(&mJitter[k])));
+            const __m128 dx = _mm_sub_ps(_mm_loadu_ps(&mX[k]), cx);
+            const __m128 dy = _mm_sub_ps(_mm_loadu_ps(&mY[k]), cy);
+            const __m128 dz = _mm_sub_ps(_mm_loadu_ps(&mZ[k]), cz);
+            const __m128 d2 =
+                _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+            // minps(d2, nearest) = d2 < nearest ? d2 : nearest, std::min(nearest, d2) exactly.
+            const __m128 nearest = _mm_min_ps(d2, _mm_loadu_ps(&mNearest[k]));
+            _mm_storeu_ps(&mNearest[k], nearest);
+            const __m128i lit = _mm_castps_si128(_mm_cmple_ps(d2, vr2));
+            __m128i* litAt = reinterpret_cast<__m128i*>(&mLit[k]);
+            _mm_storeu_si128(litAt, _mm_or_si128(_mm_loadu_si128(litAt), lit));
+            if (score != Score::None) {
+                const __m128 s = _mm_sqrt_ps(nearest);
+                const __m128 w =
+                    score == Score::WeightedSpread ? _mm_mul_ps(_mm_loadu_ps(&mWeight[k]), s) : s;
+                const __m128 v = _mm_mul_ps(w, _mm_loadu_ps(&mJitter[k]));
+                // Strictly greater: within a lane the earlier candidate keeps a tie.
+                const __m128 greater = _mm_cmpgt_ps(v, top);
+                top = _mm_or_ps(_mm_and_ps(greater, v), _mm_andnot_ps(greater, top));
+                const __m128i g = _mm_castps_si128(greater);
+                topIndex = _mm_or_si128(_mm_and_si128(g, index), _mm_andnot_si128(g, topIndex));
+                index = _mm_add_epi32(index, four);
+            }
+        }
+        if (score != Score::None) {
+            // Lane by lane: the highest score, the lowest index among equal ones.
+            alignas(16) float tops[4];
+            alignas(16) std::int32_t indices[4];
+            _mm_store_ps(tops, top);
+            _mm_store_si128(reinterpret_cast<__m128i*>(indices), topIndex);
+            for (int l = 0; l < 4; ++l)
+                b.offerLane(tops[l], static_cast<std::size_t>(indices[l]));
         }
 #endif
         for (; k < n; ++k) {
-            const float s = spread ? std::sqrt(mNearest[k]) : 1.0f;
-            mScore[k] = (weighted ? mWeight[k] * s : s) * mJitter[k];
+            const float dx = mX[k] - centre.x, dy = mY[k] - centre.y, dz = mZ[k] - centre.z;
+            const float d2 = (dx * dx + dy * dy) + dz * dz;
+            mNearest[k] = std::min(mNearest[k], d2);
+            if (d2 <= r2) mLit[k] = ~0u;
+            if (score != Score::None) b.offer(scoreOf(k, score), k);
         }
-        std::size_t best = n;
-        float bestScore = -1.0f;
-        for (k = 0; k < n; ++k)
-            if (mScore[k] > bestScore) {
-                bestScore = mScore[k];
-                best = k;
-            }
-        return best;
+        return score == Score::None ? n : b.index(n);
+    }
+
+    /// Marks lit[index] for every candidate lit by a visit.
+    void markLit(std::vector<std::uint8_t>& lit) const {
+        for (std::size_t k = 0; k < mX.size(); ++k)
+            if (mLit[k] != 0) lit[mIndex[k]] = 1;
     }
 
 private:
-    std::vector<float> mX, mY, mZ, mWeight, mJitter, mNearest, mScore;
+    /// The first of the highest scores offered in index order (strict '>' from -1).
+    struct Best {
+        float score = -1.0f;
+        std::size_t at = std::numeric_limits<std::size_t>::max();
+        void offer(float s, std::size_t k) {
+            if (s > score) {
+                score = s;
+                at = k;
+            }
+        }
+        /// A lane's best of candidates interleaved with the other lanes': a tie goes to the
+        /// lower index.
+        void offerLane(float s, std::size_t k) {
+            if (s > score || (s == score && k < at)) {
+                score = s;
+                at = k;
+            }
+        }
+        std::size_t index(std::size_t none) const { return score > -1.0f ? at : none; }
+    };
+
+    float scoreOf(std::size_t k, Score score) const {
+        const float s = score == Score::None ? 1.0f : std::sqrt(mNearest[k]);
+        return (score == Score::Spread ? s : mWeight[k] * s) * mJitter[k];
+    }
+
+    std::vector<float> mX, mY, mZ, mWeight, mJitter, mNearest;
+    std::vector<std::uint32_t> mLit; ///< ~0u once within a centre's radius
+    std::vector<std::uint32_t> mIndex;
 };
 
 } // namespace
@@ -145,8 +225,8 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
         }
     }
 
-    std::vector<glm::vec3> centres;
-    std::vector<float> radii;
+    // Each point's lit flag (within some cluster's radius), set by the candidates' visits.
+    std::vector<std::uint8_t> lit;
     if (params.clusters > 0) {
         Rng rng(mixSeed(seed, salt::kLitAttractors));
         std::vector<float> jitter(points.size());
@@ -157,67 +237,72 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
         // grows a tuft at the trunk's fork), while the lower sides of a narrow crown are lit.
         constexpr int kBands = 8;
         const float bandHeight = std::max((hi.y - lo.y) / kBands, 1e-6f);
-        auto bandOf = [&](const glm::vec3& p) {
-            return std::clamp(static_cast<int>((p.y - lo.y) / bandHeight), 0, kBands - 1);
-        };
-        std::vector<std::vector<float>> bands(kBands);
+        std::vector<std::uint8_t> band(points.size());
+        std::array<std::size_t, kBands + 1> bandStart{};
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            band[i] = static_cast<std::uint8_t>(
+                std::clamp(static_cast<int>((points[i].y - lo.y) / bandHeight), 0, kBands - 1));
+            ++bandStart[band[i] + 1u];
+        }
+        for (int b = 0; b < kBands; ++b)
+            bandStart[b + 1] += bandStart[b];
+        // Each band's shadows in point order, one array (a counting sort by band).
+        std::vector<float> byBand(points.size());
+        std::array<std::size_t, kBands> fill{};
+        std::copy_n(bandStart.begin(), kBands, fill.begin());
         for (std::size_t i = 0; i < points.size(); ++i)
-            bands[bandOf(points[i])].push_back(shadow[i]);
-        std::vector<float> median(kBands, 0.0f);
+            byBand[fill[band[i]]++] = shadow[i];
+        std::array<float, kBands> median{};
         for (int b = 0; b < kBands; ++b) {
-            std::vector<float>& v = bands[b];
-            if (v.empty()) continue;
-            std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-            median[b] = v[v.size() / 2];
+            const auto first = byBand.begin() + static_cast<std::ptrdiff_t>(bandStart[b]);
+            const auto count = static_cast<std::ptrdiff_t>(bandStart[b + 1] - bandStart[b]);
+            if (count == 0) continue;
+            std::nth_element(first, first + count / 2, first + count);
+            median[b] = first[count / 2];
         }
         // Each point's eligibility (the lit half of its band for an outer centre, the shaded
         // inside that is not shed for an inner one) and sqrt(exposure), made once, not once a
         // centre; the centres are chosen among the eligible points in index order by the same
         // score expression and the same strict '>' (the same centres, bit for bit).
         Candidates outer, inner;
+        outer.reserve(points.size());
+        inner.reserve(points.size());
         for (std::size_t i = 0; i < points.size(); ++i) {
-            const float m = median[bandOf(points[i])];
-            if (shadow[i] <= m)
-                outer.add(points[i], std::sqrt(exposure[i]), jitter[i]);
+            if (shadow[i] <= median[band[i]])
+                outer.add(points[i], std::sqrt(exposure[i]), jitter[i], i);
             else if (shadow[i] < shedAbove)
-                inner.add(points[i], 1.0f, jitter[i]);
+                inner.add(points[i], 1.0f, jitter[i], i);
         }
         const std::size_t k = std::min(points.size(), static_cast<std::size_t>(params.clusters));
+        // Each centre's visit scores the candidates for the next one.
+        std::size_t best = outer.best(Score::None);
         for (std::size_t c = 0; c < k; ++c) {
-            const std::size_t best = outer.best(!centres.empty(), true);
             const glm::vec3 centre = best < outer.size() ? outer.point(best) : points[0];
-            centres.push_back(centre);
-            radii.push_back(params.clusterRadius * halfExtent *
-                            (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
-            outer.closer(centre);
-            inner.closer(centre);
+            const float r = params.clusterRadius * halfExtent *
+                            (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f));
+            best = outer.visit(centre, r * r, c + 1 < k ? Score::WeightedSpread : Score::None);
+            inner.visit(centre, r * r, Score::None);
         }
         // Inner clusters: among the shaded inside that is not shed, as far from every centre
         // as possible, so the limbs carry foliage through the depth of the crown.
         const float innerR = params.innerRadius * params.clusterRadius * halfExtent;
-        for (int c = 0; c < innerCount; ++c) {
-            const std::size_t best = inner.best(true, false);
-            if (best == inner.size()) break;
+        best = innerCount > 0 ? inner.best(Score::Spread) : inner.size();
+        for (int c = 0; c < innerCount && best < inner.size(); ++c) {
             const glm::vec3 centre = inner.point(best);
-            centres.push_back(centre);
-            radii.push_back(innerR *
-                            (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f)));
-            outer.closer(centre);
-            inner.closer(centre);
+            const float r =
+                innerR * (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f));
+            outer.visit(centre, r * r, Score::None);
+            best = inner.visit(centre, r * r, c + 1 < innerCount ? Score::Spread : Score::None);
         }
+        lit.assign(points.size(), 0);
+        outer.markLit(lit);
+        inner.markLit(lit);
     }
 
     std::vector<glm::vec3> kept;
     kept.reserve(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        if (shadow[i] >= shedAbove) continue;
-        bool lit = centres.empty();
-        for (std::size_t c = 0; c < centres.size() && !lit; ++c) {
-            const glm::vec3 d = points[i] - centres[c];
-            lit = glm::dot(d, d) <= radii[c] * radii[c];
-        }
-        if (lit) kept.push_back(points[i]);
-    }
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (shadow[i] < shedAbove && (lit.empty() || lit[i] != 0)) kept.push_back(points[i]);
     return kept;
 }
 
