@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -42,23 +43,23 @@ enum class Score { None, Spread, WeightedSpread };
 /// the highest score, four at a time on SSE2 (each lane rounds as the scalar code does).
 class Candidates {
 public:
-    void reserve(std::size_t n) {
-        for (std::vector<float>* v : {&mX, &mY, &mZ, &mWeight, &mJitter, &mNearest})
-            v->reserve(n);
-        mLit.reserve(n);
-        mIndex.reserve(n);
+    /// Room for \p capacity candidates (one more slot: an offer always writes).
+    explicit Candidates(std::size_t capacity)
+        : mX(capacity + 1), mY(capacity + 1), mZ(capacity + 1), mWeight(capacity + 1),
+          mJitter(capacity + 1), mNearest(capacity + 1, std::numeric_limits<float>::max()),
+          mLit(capacity + 1, 0), mIndex(capacity + 1) {}
+    /// Appends the point when \p take; written either way, so that choosing between the
+    /// outer and the inner candidates (about half and half) takes no branch.
+    void offer(bool take, const glm::vec3& p, float weight, float jitter, std::size_t index) {
+        mX[mCount] = p.x;
+        mY[mCount] = p.y;
+        mZ[mCount] = p.z;
+        mWeight[mCount] = weight;
+        mJitter[mCount] = jitter;
+        mIndex[mCount] = static_cast<std::uint32_t>(index);
+        mCount += take ? 1 : 0;
     }
-    void add(const glm::vec3& p, float weight, float jitter, std::size_t index) {
-        mX.push_back(p.x);
-        mY.push_back(p.y);
-        mZ.push_back(p.z);
-        mWeight.push_back(weight);
-        mJitter.push_back(jitter);
-        mNearest.push_back(std::numeric_limits<float>::max());
-        mLit.push_back(0);
-        mIndex.push_back(static_cast<std::uint32_t>(index));
-    }
-    std::size_t size() const { return mX.size(); }
+    std::size_t size() const { return mCount; }
     glm::vec3 point(std::size_t k) const { return {mX[k], mY[k], mZ[k]}; }
 
     /// The first candidate of the highest score (size() when none beats -1) without a visit:
@@ -66,16 +67,16 @@ public:
     /// (Score::Spread, Score::WeightedSpread) or 1 (Score::None, weighted).
     std::size_t best(Score score) const {
         Best b;
-        for (std::size_t k = 0; k < mX.size(); ++k)
+        for (std::size_t k = 0; k < mCount; ++k)
             b.offer(scoreOf(k, score), k);
-        return b.index(mX.size());
+        return b.index(mCount);
     }
 
     /// A centre chosen, of squared radius \p r2: nearest = min(nearest, |p - centre|^2), lit
     /// when |p - centre|^2 <= r2; then best(score) of the updated distances (size() for
     /// Score::None, which scores nothing).
     std::size_t visit(const glm::vec3& centre, float r2, Score score) {
-        const std::size_t n = mX.size();
+        const std::size_t n = mCount;
         std::size_t k = 0;
         Best b;
 #if defined(__SSE2__)
@@ -129,10 +130,10 @@ public:
         return score == Score::None ? n : b.index(n);
     }
 
-    /// Marks lit[index] for every candidate lit by a visit.
+    /// Marks lit[index] for every candidate lit by a visit (a point is a candidate once).
     void markLit(std::vector<std::uint8_t>& lit) const {
-        for (std::size_t k = 0; k < mX.size(); ++k)
-            if (mLit[k] != 0) lit[mIndex[k]] = 1;
+        for (std::size_t k = 0; k < mCount; ++k)
+            lit[mIndex[k]] = static_cast<std::uint8_t>(mLit[k] & 1u);
     }
 
 private:
@@ -165,6 +166,82 @@ private:
     std::vector<float> mX, mY, mZ, mWeight, mJitter, mNearest;
     std::vector<std::uint32_t> mLit; ///< ~0u once within a centre's radius
     std::vector<std::uint32_t> mIndex;
+    std::size_t mCount = 0;
+};
+
+/// A point's shadow from its voxel's fixed-point value, as ShadowGrid::shadow() makes it.
+float shadowOf(std::int32_t raw) {
+    return static_cast<float>(raw / ShadowGrid::kScale - kShadowA);
+}
+
+/// Order statistics of the points' fixed-point shadows: the value of rank r (the (r+1)-th
+/// smallest) of all of them and of each height band's. shadowOf() does not decrease, so
+/// shadowOf(the rank r value) is the rank r shadow: the float values std::nth_element over
+/// the shadows gave. The values are sums of the kernel's increments, all multiples of
+/// 2^shift: where they span few multiples they are counted (a histogram per band and one of
+/// all), otherwise std::nth_element picks them from a copy.
+class ShadowRanks {
+public:
+    ShadowRanks(const std::vector<std::int32_t>& raw, const std::vector<std::uint8_t>& band,
+                int bands, int shift)
+        : mRaw(raw), mBand(band), mShift(shift) {
+        std::int32_t top = 0, bottom = 0;
+        for (const std::int32_t r : raw) {
+            top = std::max(top, r);
+            bottom = std::min(bottom, r);
+        }
+        const std::size_t units = (static_cast<std::size_t>(top) >> shift) + 1;
+        // A histogram no larger than a few times the points (the oak's ~5,000 span ~500).
+        if (bottom < 0 || units > 4 * raw.size() + 4096) return;
+        mUnits = units;
+        const std::size_t groups = band.empty() ? 1 : static_cast<std::size_t>(bands) + 1;
+        mCounts.assign(groups * units, 0);
+        std::uint32_t* all = mCounts.data() + (groups - 1) * units;
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+            const auto u = static_cast<std::size_t>(raw[i]) >> shift;
+            ++all[u];
+            if (!band.empty()) ++mCounts[band[i] * units + u];
+        }
+    }
+    /// Rank \p rank among all points (rank < their count).
+    std::int32_t all(std::size_t rank) const {
+        if (mUnits == 0) {
+            std::vector<std::int32_t> copy = mRaw;
+            return select(copy, rank);
+        }
+        const std::size_t groups = mCounts.size() / mUnits;
+        return counted(mCounts.data() + (groups - 1) * mUnits, rank);
+    }
+    /// Rank \p rank among the points of band \p b (rank < their count).
+    std::int32_t inBand(int b, std::size_t rank) const {
+        if (mUnits == 0) {
+            std::vector<std::int32_t> copy;
+            for (std::size_t i = 0; i < mRaw.size(); ++i)
+                if (mBand[i] == b) copy.push_back(mRaw[i]);
+            return select(copy, rank);
+        }
+        return counted(mCounts.data() + static_cast<std::size_t>(b) * mUnits, rank);
+    }
+
+private:
+    static std::int32_t select(std::vector<std::int32_t>& v, std::size_t rank) {
+        std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(rank), v.end());
+        return v[rank];
+    }
+    std::int32_t counted(const std::uint32_t* counts, std::size_t rank) const {
+        std::size_t seen = 0;
+        for (std::size_t u = 0; u < mUnits; ++u) {
+            seen += counts[u];
+            if (seen > rank) return static_cast<std::int32_t>(u << mShift);
+        }
+        return static_cast<std::int32_t>((mUnits - 1) << mShift); // rank beyond the count
+    }
+
+    const std::vector<std::int32_t>& mRaw;
+    const std::vector<std::uint8_t>& mBand;
+    int mShift;
+    std::size_t mUnits = 0; ///< 0: no histogram, nth_element
+    std::vector<std::uint32_t> mCounts;
 };
 
 } // namespace
@@ -203,77 +280,68 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
     for (std::size_t i = 0; i < points.size(); ++i)
         sources[i].voxel = grid.voxelOf(points[i]);
     grid.applyBatch(sources, std::span<const ShadowKernel>(&kernel, 1));
-    std::vector<float> shadow(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        shadow[i] = static_cast<float>(grid.shadow(sources[i].voxel) - kShadowA);
+    const std::size_t n = points.size();
+    std::vector<std::int32_t> raw(n);
+    std::vector<float> shadow(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        raw[i] = grid.raw(sources[i].voxel);
+        shadow[i] = shadowOf(raw[i]);
     }
-    // Exposure in (0, 1]: 1 unshaded, falling with the shadow (Palubicki's Q = max(C - s + a, 0)
-    // would be 0 for most of a dense crown's inside; a ratio keeps the order among them).
-    std::vector<float> exposure(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i)
-        exposure[i] = 1.0f / (1.0f + std::max(shadow[i], 0.0f));
+    // Every value is a sum of the kernel's increments: a multiple of their lowest power of two.
+    int shift = 31;
+    for (const std::int32_t d : kernel.delta)
+        shift = std::min(shift, std::countr_zero(static_cast<std::uint32_t>(d)));
+
+    // Height bands (below) exist with clusters only.
+    constexpr int kBands = 8;
+    std::vector<std::uint8_t> band;
+    if (params.clusters > 0) {
+        const float bandHeight = std::max((hi.y - lo.y) / kBands, 1e-6f);
+        band.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+            band[i] = static_cast<std::uint8_t>(
+                std::clamp(static_cast<int>((points[i].y - lo.y) / bandHeight), 0, kBands - 1));
+    }
+    const ShadowRanks ranks(raw, band, kBands, shift);
 
     // The shadow above which a point is shed: the (1 - shadedFraction) quantile.
     float shedAbove = std::numeric_limits<float>::max();
     if (params.shadedFraction > 0.0f) {
-        std::vector<float> sorted = shadow;
         const std::size_t keep = static_cast<std::size_t>(
-            std::floor((1.0 - params.shadedFraction) * static_cast<double>(sorted.size())));
-        if (keep < sorted.size()) {
-            std::nth_element(sorted.begin(), sorted.begin() + keep, sorted.end());
-            shedAbove = sorted[keep];
-        }
+            std::floor((1.0 - params.shadedFraction) * static_cast<double>(n)));
+        if (keep < n) shedAbove = shadowOf(ranks.all(keep));
     }
 
     // Each point's lit flag (within some cluster's radius), set by the candidates' visits.
     std::vector<std::uint8_t> lit;
     if (params.clusters > 0) {
         Rng rng(mixSeed(seed, salt::kLitAttractors));
-        std::vector<float> jitter(points.size());
+        std::vector<float> jitter(n);
         for (float& j : jitter)
             j = rng.uniformf(0.75f, 1.0f);
         // Centres only on the lit half of each height band (the sky's light comes from the side
         // too): a cluster inside the shaded crown would be foliage where no light reaches (it also
         // grows a tuft at the trunk's fork), while the lower sides of a narrow crown are lit.
-        constexpr int kBands = 8;
-        const float bandHeight = std::max((hi.y - lo.y) / kBands, 1e-6f);
-        std::vector<std::uint8_t> band(points.size());
-        std::array<std::size_t, kBands + 1> bandStart{};
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            band[i] = static_cast<std::uint8_t>(
-                std::clamp(static_cast<int>((points[i].y - lo.y) / bandHeight), 0, kBands - 1));
-            ++bandStart[band[i] + 1u];
-        }
-        for (int b = 0; b < kBands; ++b)
-            bandStart[b + 1] += bandStart[b];
-        // Each band's shadows in point order, one array (a counting sort by band).
-        std::vector<float> byBand(points.size());
-        std::array<std::size_t, kBands> fill{};
-        std::copy_n(bandStart.begin(), kBands, fill.begin());
-        for (std::size_t i = 0; i < points.size(); ++i)
-            byBand[fill[band[i]]++] = shadow[i];
+        std::array<std::size_t, kBands> bandCount{};
+        for (const std::uint8_t b : band)
+            ++bandCount[b];
         std::array<float, kBands> median{};
-        for (int b = 0; b < kBands; ++b) {
-            const auto first = byBand.begin() + static_cast<std::ptrdiff_t>(bandStart[b]);
-            const auto count = static_cast<std::ptrdiff_t>(bandStart[b + 1] - bandStart[b]);
-            if (count == 0) continue;
-            std::nth_element(first, first + count / 2, first + count);
-            median[b] = first[count / 2];
-        }
+        for (int b = 0; b < kBands; ++b)
+            if (bandCount[b] > 0) median[b] = shadowOf(ranks.inBand(b, bandCount[b] / 2));
         // Each point's eligibility (the lit half of its band for an outer centre, the shaded
         // inside that is not shed for an inner one) and sqrt(exposure), made once, not once a
         // centre; the centres are chosen among the eligible points in index order by the same
         // score expression and the same strict '>' (the same centres, bit for bit).
-        Candidates outer, inner;
-        outer.reserve(points.size());
-        inner.reserve(points.size());
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            if (shadow[i] <= median[band[i]])
-                outer.add(points[i], std::sqrt(exposure[i]), jitter[i], i);
-            else if (shadow[i] < shedAbove)
-                inner.add(points[i], 1.0f, jitter[i], i);
+        // Exposure in (0, 1]: 1 unshaded, falling with the shadow (Palubicki's Q = max(C - s + a,
+        // 0) would be 0 for most of a dense crown's inside; a ratio keeps the order among them).
+        Candidates outer(n), inner(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool isOuter = shadow[i] <= median[band[i]];
+            const float exposure = 1.0f / (1.0f + std::max(shadow[i], 0.0f));
+            outer.offer(isOuter, points[i], std::sqrt(exposure), jitter[i], i);
+            inner.offer(!isOuter && shadow[i] < shedAbove, points[i], 1.0f, jitter[i], i);
         }
-        const std::size_t k = std::min(points.size(), static_cast<std::size_t>(params.clusters));
+        const std::size_t k = std::min(n, static_cast<std::size_t>(params.clusters));
         // Each centre's visit scores the candidates for the next one.
         std::size_t best = outer.best(Score::None);
         for (std::size_t c = 0; c < k; ++c) {
@@ -294,15 +362,19 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
             outer.visit(centre, r * r, Score::None);
             best = inner.visit(centre, r * r, c + 1 < innerCount ? Score::Spread : Score::None);
         }
-        lit.assign(points.size(), 0);
+        lit.assign(n, 0);
         outer.markLit(lit);
         inner.markLit(lit);
     }
 
-    std::vector<glm::vec3> kept;
-    kept.reserve(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i)
-        if (shadow[i] < shedAbove && (lit.empty() || lit[i] != 0)) kept.push_back(points[i]);
+    // Every point written, the kept ones counted (a branch here would be mispredicted often).
+    std::vector<glm::vec3> kept(n + 1);
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        kept[m] = points[i];
+        m += shadow[i] < shedAbove && (lit.empty() || lit[i] != 0) ? 1 : 0;
+    }
+    kept.resize(m);
     return kept;
 }
 
