@@ -7,10 +7,7 @@
 #include <limits>
 #include <string>
 
-#if defined(__SSE2__)
-#include <xmmintrin.h>
-#endif
-
+#include "engine/growth/litcandidates.h"
 #include "engine/growth/shadowgrid.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -32,142 +29,6 @@ void requireIn(const char* name, double v, double lo, double hi, bool openLow) {
 constexpr double kShadowA = 1.0;
 constexpr double kShadowB = 2.0;
 constexpr int kShadowDepth = 4;
-
-/// What Candidates::visit scores after its distance update.
-enum class Score { None, Spread, WeightedSpread };
-
-/// Candidate cluster centres in index order, struct of arrays. Each centre chosen is visited
-/// once: every candidate's squared distance to it (summed as glm::dot sums it) lowers the
-/// distance to the nearest centre and marks the candidate lit when it is within that centre's
-/// radius, and the same pass scores the candidates for the next centre and keeps the first of
-/// the highest score, four at a time on SSE2 (each lane rounds as the scalar code does).
-class Candidates {
-public:
-    /// Room for \p capacity candidates (one more slot: an offer always writes).
-    explicit Candidates(std::size_t capacity)
-        : mX(capacity + 1), mY(capacity + 1), mZ(capacity + 1), mWeight(capacity + 1),
-          mJitter(capacity + 1), mNearest(capacity + 1, std::numeric_limits<float>::max()),
-          mLit(capacity + 1, 0), mIndex(capacity + 1) {}
-    /// Appends the point when \p take; written either way, so that choosing between the
-    /// outer and the inner candidates (about half and half) takes no branch.
-    void offer(bool take, const glm::vec3& p, float weight, float jitter, std::size_t index) {
-        mX[mCount] = p.x;
-        mY[mCount] = p.y;
-        mZ[mCount] = p.z;
-        mWeight[mCount] = weight;
-        mJitter[mCount] = jitter;
-        mIndex[mCount] = static_cast<std::uint32_t>(index);
-        mCount += take ? 1 : 0;
-    }
-    std::size_t size() const { return mCount; }
-    glm::vec3 point(std::size_t k) const { return {mX[k], mY[k], mZ[k]}; }
-
-    /// The first candidate of the highest score (size() when none beats -1) without a visit:
-    /// score = weight x spread x jitter (weighted) or spread x jitter, spread = sqrt(nearest)
-    /// (Score::Spread, Score::WeightedSpread) or 1 (Score::None, weighted).
-    std::size_t best(Score score) const {
-        Best b;
-        for (std::size_t k = 0; k < mCount; ++k)
-            b.offer(scoreOf(k, score), k);
-        return b.index(mCount);
-    }
-
-    /// A centre chosen, of squared radius \p r2: nearest = min(nearest, |p - centre|^2), lit
-    /// when |p - centre|^2 <= r2; then best(score) of the updated distances (size() for
-    /// Score::None, which scores nothing).
-    std::size_t visit(const glm::vec3& centre, float r2, Score score) {
-        const std::size_t n = mCount;
-        std::size_t k = 0;
-        Best b;
-#if defined(__SSE2__)
-        const __m128 cx = _mm_set1_ps(centre.x), cy = _mm_set1_ps(centre.y),
-                     cz = _mm_set1_ps(centre.z), vr2 = _mm_set1_ps(r2);
-        __m128 top = _mm_set1_ps(-1.0f);
-        __m128i topIndex = _mm_set1_epi32(static_cast<int>(n)), index = _mm_setr_epi32(0, 1, 2, 3);
-        const __m128i four = _mm_set1_epi32(4);
-        for (; k + 4 <= n; k += 4) {
-            const __m128 dx = _mm_sub_ps(_mm_loadu_ps(&mX[k]), cx);
-            const __m128 dy = _mm_sub_ps(_mm_loadu_ps(&mY[k]), cy);
-            const __m128 dz = _mm_sub_ps(_mm_loadu_ps(&mZ[k]), cz);
-            const __m128 d2 =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-            // minps(d2, nearest) = d2 < nearest ? d2 : nearest, std::min(nearest, d2) exactly.
-            const __m128 nearest = _mm_min_ps(d2, _mm_loadu_ps(&mNearest[k]));
-            _mm_storeu_ps(&mNearest[k], nearest);
-            const __m128i lit = _mm_castps_si128(_mm_cmple_ps(d2, vr2));
-            __m128i* litAt = reinterpret_cast<__m128i*>(&mLit[k]);
-            _mm_storeu_si128(litAt, _mm_or_si128(_mm_loadu_si128(litAt), lit));
-            if (score != Score::None) {
-                const __m128 s = _mm_sqrt_ps(nearest);
-                const __m128 w =
-                    score == Score::WeightedSpread ? _mm_mul_ps(_mm_loadu_ps(&mWeight[k]), s) : s;
-                const __m128 v = _mm_mul_ps(w, _mm_loadu_ps(&mJitter[k]));
-                // Strictly greater: within a lane the earlier candidate keeps a tie.
-                const __m128 greater = _mm_cmpgt_ps(v, top);
-                top = _mm_or_ps(_mm_and_ps(greater, v), _mm_andnot_ps(greater, top));
-                const __m128i g = _mm_castps_si128(greater);
-                topIndex = _mm_or_si128(_mm_and_si128(g, index), _mm_andnot_si128(g, topIndex));
-                index = _mm_add_epi32(index, four);
-            }
-        }
-        if (score != Score::None) {
-            // Lane by lane: the highest score, the lowest index among equal ones.
-            alignas(16) float tops[4];
-            alignas(16) std::int32_t indices[4];
-            _mm_store_ps(tops, top);
-            _mm_store_si128(reinterpret_cast<__m128i*>(indices), topIndex);
-            for (int l = 0; l < 4; ++l)
-                b.offerLane(tops[l], static_cast<std::size_t>(indices[l]));
-        }
-#endif
-        for (; k < n; ++k) {
-            const float dx = mX[k] - centre.x, dy = mY[k] - centre.y, dz = mZ[k] - centre.z;
-            const float d2 = (dx * dx + dy * dy) + dz * dz;
-            mNearest[k] = std::min(mNearest[k], d2);
-            if (d2 <= r2) mLit[k] = ~0u;
-            if (score != Score::None) b.offer(scoreOf(k, score), k);
-        }
-        return score == Score::None ? n : b.index(n);
-    }
-
-    /// Marks lit[index] for every candidate lit by a visit (a point is a candidate once).
-    void markLit(std::vector<std::uint8_t>& lit) const {
-        for (std::size_t k = 0; k < mCount; ++k)
-            lit[mIndex[k]] = static_cast<std::uint8_t>(mLit[k] & 1u);
-    }
-
-private:
-    /// The first of the highest scores offered in index order (strict '>' from -1).
-    struct Best {
-        float score = -1.0f;
-        std::size_t at = std::numeric_limits<std::size_t>::max();
-        void offer(float s, std::size_t k) {
-            if (s > score) {
-                score = s;
-                at = k;
-            }
-        }
-        /// A lane's best of candidates interleaved with the other lanes': a tie goes to the
-        /// lower index.
-        void offerLane(float s, std::size_t k) {
-            if (s > score || (s == score && k < at)) {
-                score = s;
-                at = k;
-            }
-        }
-        std::size_t index(std::size_t none) const { return score > -1.0f ? at : none; }
-    };
-
-    float scoreOf(std::size_t k, Score score) const {
-        const float s = score == Score::None ? 1.0f : std::sqrt(mNearest[k]);
-        return (score == Score::Spread ? s : mWeight[k] * s) * mJitter[k];
-    }
-
-    std::vector<float> mX, mY, mZ, mWeight, mJitter, mNearest;
-    std::vector<std::uint32_t> mLit; ///< ~0u once within a centre's radius
-    std::vector<std::uint32_t> mIndex;
-    std::size_t mCount = 0;
-};
 
 /// A point's shadow from its voxel's fixed-point value, as ShadowGrid::shadow() makes it.
 float shadowOf(std::int32_t raw) {
@@ -334,7 +195,7 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
         // score expression and the same strict '>' (the same centres, bit for bit).
         // Exposure in (0, 1]: 1 unshaded, falling with the shadow (Palubicki's Q = max(C - s + a,
         // 0) would be 0 for most of a dense crown's inside; a ratio keeps the order among them).
-        Candidates outer(n), inner(n);
+        LitCandidates outer(n), inner(n);
         for (std::size_t i = 0; i < n; ++i) {
             const bool isOuter = shadow[i] <= median[band[i]];
             const float exposure = 1.0f / (1.0f + std::max(shadow[i], 0.0f));
@@ -342,25 +203,29 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
             inner.offer(!isOuter && shadow[i] < shedAbove, points[i], 1.0f, jitter[i], i);
         }
         const std::size_t k = std::min(n, static_cast<std::size_t>(params.clusters));
-        // Each centre's visit scores the candidates for the next one.
-        std::size_t best = outer.best(Score::None);
+        // Each centre's visit scores the candidates for the next one. The distances are kept
+        // while a later score needs them; the lit flags are set by every visit.
+        std::size_t best = outer.best(CandidateScore::Weight);
         for (std::size_t c = 0; c < k; ++c) {
             const glm::vec3 centre = best < outer.size() ? outer.point(best) : points[0];
             const float r = params.clusterRadius * halfExtent *
                             (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f));
-            best = outer.visit(centre, r * r, c + 1 < k ? Score::WeightedSpread : Score::None);
-            inner.visit(centre, r * r, Score::None);
+            best = outer.visit(centre, r * r,
+                               c + 1 < k ? CandidateVisit::WeightedSpread : CandidateVisit::Lit);
+            inner.visit(centre, r * r,
+                        innerCount > 0 ? CandidateVisit::Nearest : CandidateVisit::Lit);
         }
         // Inner clusters: among the shaded inside that is not shed, as far from every centre
         // as possible, so the limbs carry foliage through the depth of the crown.
         const float innerR = params.innerRadius * params.clusterRadius * halfExtent;
-        best = innerCount > 0 ? inner.best(Score::Spread) : inner.size();
+        best = innerCount > 0 ? inner.best(CandidateScore::Spread) : inner.size();
         for (int c = 0; c < innerCount && best < inner.size(); ++c) {
             const glm::vec3 centre = inner.point(best);
             const float r =
                 innerR * (1.0f + params.clusterSpread * (rng.uniformf(0.0f, 1.0f) - 0.5f));
-            outer.visit(centre, r * r, Score::None);
-            best = inner.visit(centre, r * r, c + 1 < innerCount ? Score::Spread : Score::None);
+            outer.visit(centre, r * r, CandidateVisit::Lit);
+            best = inner.visit(centre, r * r,
+                               c + 1 < innerCount ? CandidateVisit::Spread : CandidateVisit::Lit);
         }
         lit.assign(n, 0);
         outer.markLit(lit);

@@ -8,6 +8,7 @@
 
 #include "engine/growth/envelope.h"
 #include "engine/growth/litattractors.h"
+#include "engine/growth/litcandidates.h"
 #include "engine/growth/shadowgrid.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -277,4 +278,63 @@ TEST(LitAttractors, SameAsTheStraightforwardVersion) {
             ++compared;
         }
     EXPECT_EQ(compared, 24);
+}
+
+// The candidates' visits on every lane count this processor has (scalar, SSE2, AVX) give the
+// same distances, lit flags and best candidates, for every kind of visit and counts that leave
+// tails of every length.
+TEST(LitAttractors, CandidateVisitsAgreeOnEveryLaneCount) {
+    std::vector<CandidateLanes> lanes = {CandidateLanes::Scalar, CandidateLanes::Sse2};
+    if (LitCandidates::hasAvx()) lanes.push_back(CandidateLanes::Avx);
+    const CandidateVisit kinds[] = {CandidateVisit::WeightedSpread, CandidateVisit::Nearest,
+                                    CandidateVisit::Spread, CandidateVisit::Lit,
+                                    CandidateVisit::WeightedSpread};
+    for (std::size_t count : {1u, 7u, 8u, 13u, 500u, 1003u}) {
+        const std::vector<glm::vec3> pts =
+            Envelope::sphere(glm::vec3(0, 4, 0), 3.0f).sample(count, count);
+        Rng rng(count);
+        std::vector<LitCandidates> sets;
+        for (std::size_t l = 0; l < lanes.size(); ++l)
+            sets.emplace_back(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            // Equal scores on purpose: ties go to the lower index on every lane count.
+            const float w = static_cast<float>(rng.below(4)) / 4.0f + 0.25f;
+            const float j = i % 3 == 0 ? 1.0f : rng.uniformf(0.75f, 1.0f);
+            for (LitCandidates& s : sets)
+                s.offer(i % 5 != 0, pts[i], w, j, i);
+        }
+        std::vector<std::size_t> firsts;
+        for (const LitCandidates& s : sets)
+            firsts.push_back(s.best(CandidateScore::Weight));
+        for (std::size_t l = 1; l < sets.size(); ++l)
+            EXPECT_EQ(firsts[l], firsts[0]);
+        for (int v = 0; v < 12; ++v) {
+            const CandidateVisit what = kinds[v % 5];
+            const glm::vec3 centre = pts[rng.below(count)];
+            const float r2 = rng.uniformf(0.1f, 2.0f);
+            std::vector<std::size_t> best;
+            for (std::size_t l = 0; l < sets.size(); ++l)
+                best.push_back(sets[l].visit(centre, r2, what, lanes[l]));
+            for (std::size_t l = 1; l < sets.size(); ++l) {
+                EXPECT_EQ(best[l], best[0]) << count << " candidates, visit " << v;
+                for (std::size_t k = 0; k < sets[0].size(); ++k) {
+                    ASSERT_EQ(sets[l].nearest(k), sets[0].nearest(k)) << k;
+                    ASSERT_EQ(sets[l].lit(k), sets[0].lit(k)) << k;
+                }
+            }
+            if (sets[0].size() > 0 &&
+                (what == CandidateVisit::Spread || what == CandidateVisit::WeightedSpread)) {
+                EXPECT_LT(best[0], sets[0].size());
+            }
+        }
+        std::vector<std::uint8_t> lit(count, 0);
+        sets[0].markLit(lit);
+        std::size_t marked = 0;
+        for (std::size_t i = 0; i < count; ++i)
+            marked += lit[i];
+        std::size_t litCount = 0;
+        for (std::size_t k = 0; k < sets[0].size(); ++k)
+            litCount += sets[0].lit(k) ? 1 : 0;
+        EXPECT_EQ(marked, litCount);
+    }
 }
