@@ -290,18 +290,20 @@ TEST(LitAttractors, CandidateVisitsAgreeOnEveryLaneCount) {
                                     CandidateVisit::Spread, CandidateVisit::Lit,
                                     CandidateVisit::WeightedSpread};
     for (std::size_t count : {1u, 7u, 8u, 13u, 500u, 1003u}) {
-        const std::vector<glm::vec3> pts =
-            Envelope::sphere(glm::vec3(0, 4, 0), 3.0f).sample(count, count);
+        const std::vector<glm::vec3> pts = Envelope::sphere(glm::vec3(0, 4, 0), 3.0f)
+                                               .sample(std::max<std::size_t>(count, 19), count);
         Rng rng(count);
         std::vector<LitCandidates> sets;
         for (std::size_t l = 0; l < lanes.size(); ++l)
             sets.emplace_back(count);
         for (std::size_t i = 0; i < count; ++i) {
-            // Equal scores on purpose: ties go to the lower index on every lane count.
-            const float w = static_cast<float>(rng.below(4)) / 4.0f + 0.25f;
-            const float j = i % 3 == 0 ? 1.0f : rng.uniformf(0.75f, 1.0f);
+            // Equal scores on purpose (the same point, weight and jitter again further on,
+            // in the same lane or another): ties go to the lower index on every lane count.
+            const std::size_t twin = i % 19;
+            const float w = static_cast<float>(twin % 4) / 4.0f + 0.25f;
+            const float j = twin % 3 == 0 ? 1.0f : 0.8f;
             for (LitCandidates& s : sets)
-                s.offer(i % 5 != 0, pts[i], w, j, i);
+                s.offer(i % 5 != 0, pts[twin], w, j, i);
         }
         std::vector<std::size_t> firsts;
         for (const LitCandidates& s : sets)
@@ -310,7 +312,7 @@ TEST(LitAttractors, CandidateVisitsAgreeOnEveryLaneCount) {
             EXPECT_EQ(firsts[l], firsts[0]);
         for (int v = 0; v < 12; ++v) {
             const CandidateVisit what = kinds[v % 5];
-            const glm::vec3 centre = pts[rng.below(count)];
+            const glm::vec3 centre = pts[rng.below(pts.size())] + glm::vec3(0.01f * v);
             const float r2 = rng.uniformf(0.1f, 2.0f);
             std::vector<std::size_t> best;
             for (std::size_t l = 0; l < sets.size(); ++l)
