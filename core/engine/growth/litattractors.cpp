@@ -102,8 +102,9 @@ public:
             bottom = std::min(bottom, r);
         }
         const std::size_t units = (static_cast<std::size_t>(top) >> shift) + 1;
-        // A histogram no larger than a few times the points (the oak's ~5,000 span ~500).
-        if (bottom < 0 || units > 4 * raw.size() + 4096) return;
+        // A histogram no larger than a few times the points and 65,536 steps (9 x 256 KiB at
+        // most; the oak's 5,000 points span ~500 steps).
+        if (bottom < 0 || units > std::min<std::size_t>(4 * raw.size() + 4096, 65536)) return;
         mUnits = units;
         const std::size_t groups = band.empty() ? 1 : static_cast<std::size_t>(bands) + 1;
         mCounts.assign(groups * units, 0);
