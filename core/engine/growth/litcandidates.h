@@ -81,8 +81,7 @@ private:
 
     /// Frees what an aligned new[] allocated.
     struct AlignedDelete {
-        template <class T>
-        void operator()(T* p) const {
+        template <class T> void operator()(T* p) const {
             ::operator delete[](p, std::align_val_t{64});
         }
     };
