@@ -248,8 +248,9 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
         for (std::size_t i = 0; i < n; ++i) {
             const bool isOuter = shadow[i] <= median[band[i]];
             outer.offer(isOuter, points[i], weight[i], jitter[i], i);
-            // '&', not '&&': no branch on isOuter (about half the points either way).
-            inner.offer(!isOuter & (shadow[i] < shedAbove), points[i], 1.0f, jitter[i], i);
+            // '&' on ints, not '&&': no branch on isOuter (about half the points either way).
+            inner.offer((static_cast<int>(!isOuter) & static_cast<int>(shadow[i] < shedAbove)) != 0,
+                        points[i], 1.0f, jitter[i], i);
         }
         const std::size_t k = std::min(n, static_cast<std::size_t>(params.clusters));
         // Each centre's visit scores the candidates for the next one. The distances are kept
@@ -285,7 +286,7 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
     std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
         kept[m] = points[i];
-        m += (shadow[i] < shedAbove) & (lit[i] != 0) ? 1 : 0;
+        m += static_cast<std::size_t>(static_cast<int>(shadow[i] < shedAbove) & lit[i]);
     }
     kept.resize(m);
     return kept;
