@@ -63,6 +63,10 @@ public:
 private:
     Envelope() = default;
     float profileAt(float t) const;
+    /// contains() and sample() for one shape (sample() tests its tries without a switch).
+    template <EnvelopeShape S> bool containsAs(const glm::vec3& p) const;
+    template <EnvelopeShape S>
+    std::vector<glm::vec3> sampleAs(std::size_t count, std::uint64_t seed) const;
 
     EnvelopeShape mShape = EnvelopeShape::Sphere;
     glm::vec3 mCenter{0.0f}; ///< centre, or base centre

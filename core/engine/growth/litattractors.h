@@ -43,8 +43,8 @@ void validate(const LightParams& params);
 /// one by one among the points, each the one that maximises √exposure × distance to the centres
 /// already chosen (× a seeded jitter in [0.75, 1]), among the points at most as shaded as the
 /// median of their height band (one of eight), so they sit on the lit outside of the crown and
-/// spread over it (the most exposed first); a point is kept when it lies within its nearest
-/// cluster's radius and it is not among the shadedFraction most shaded. The innerClusters are
+/// spread over it (the most exposed first); a point is kept when it lies within some cluster's
+/// radius and it is not among the shadedFraction most shaded. The innerClusters are
 /// picked the same way after them among the inside points (more shaded than their band's median,
 /// not shed), spread by distance alone. Deterministic for a seed.
 std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,

@@ -8,6 +8,10 @@
 
 #include <omp.h>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "engine/util/error.h"
 #include "engine/util/hugepages.h"
 
@@ -35,6 +39,32 @@ ShadowGrid::ShadowGrid(float voxelSize, float floorY, int margin)
     : mVoxelSize(voxelSize), mMargin(std::max(margin, 0)) {
     requireRange("voxel size", voxelSize, 1e-4, 1e3);
     mFloor = static_cast<int>(std::floor(floorY / voxelSize));
+}
+
+void ShadowGrid::voxelsOf(std::span<const glm::vec3> points, std::span<ShadowSource> out) const {
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    // The points as one array of floats, twelve (four points) at a time.
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float));
+    const float* f = &points.data()->x;
+    const __m128 size = _mm_set1_ps(mVoxelSize), one = _mm_set1_ps(1.0f);
+    alignas(16) std::int32_t v[12];
+    for (; i + 4 <= points.size(); i += 4) {
+        for (int r = 0; r < 3; ++r) {
+            const __m128 q = _mm_div_ps(_mm_loadu_ps(f + 3 * i + 4 * r), size);
+            // floor(q): the truncation, one less where it is above q. Exact within the int
+            // range; beyond it (and for NaN) the truncation is INT_MIN, and INT_MIN - 1 rounds
+            // back to it as a float: INT_MIN, as the scalar conversion of floor(q) gives.
+            const __m128 t = _mm_cvtepi32_ps(_mm_cvttps_epi32(q));
+            const __m128 fl = _mm_sub_ps(t, _mm_and_ps(_mm_cmpgt_ps(t, q), one));
+            _mm_store_si128(reinterpret_cast<__m128i*>(v + 4 * r), _mm_cvttps_epi32(fl));
+        }
+        for (std::size_t k = 0; k < 4; ++k)
+            out[i + k].voxel = {v[3 * k], v[3 * k + 1], v[3 * k + 2]};
+    }
+#endif
+    for (; i < points.size(); ++i)
+        out[i].voxel = voxelOf(points[i]);
 }
 
 glm::vec3 ShadowGrid::centreOf(const glm::ivec3& v) const {

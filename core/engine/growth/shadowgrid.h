@@ -54,6 +54,10 @@ public:
         const glm::vec3 s = glm::floor(p / mVoxelSize);
         return {static_cast<int>(s.x), static_cast<int>(s.y), static_cast<int>(s.z)};
     }
+    /// voxelOf() of each point into out[i].voxel (out.size() >= points.size()), four
+    /// coordinates at a time on SSE2: the same divisions, and a floor from truncation that is
+    /// exact wherever the scalar conversion is defined (the same ints everywhere else too).
+    void voxelsOf(std::span<const glm::vec3> points, std::span<ShadowSource> out) const;
     /// Centre of a voxel in metres.
     glm::vec3 centreOf(const glm::ivec3& v) const;
 

@@ -117,6 +117,53 @@ __attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, co
     return std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3]));
 }
 
+/// The node-to-cell bound of every new node, eight nodes at a time (the SSE2 loop's
+/// subtractions, maxima, products and sums in each lane), and offerAvx inlined for each node
+/// that passes it, in index order. max2 only shrinks, so testing a block against the max2 of
+/// its start processes at most a node more for nothing (which changes no result), as the SSE2
+/// loop does a block of four. Returns the cell's new max2; \p touched when a node was offered.
+__attribute__((target("avx"))) float
+scanNodesAvx(const float* nx, const float* ny, const float* nz, std::size_t newNodes,
+             std::size_t firstNew, const glm::vec3& lo, const glm::vec3& hi, float* X, float* Y,
+             float* Z, float* B, std::int32_t* N, std::uint32_t lanes, float max2, bool& touched) {
+    const __m256 vlx = _mm256_set1_ps(lo.x), vly = _mm256_set1_ps(lo.y), vlz = _mm256_set1_ps(lo.z);
+    const __m256 vhx = _mm256_set1_ps(hi.x), vhy = _mm256_set1_ps(hi.y), vhz = _mm256_set1_ps(hi.z);
+    const __m256 zero = _mm256_setzero_ps();
+    std::size_t j = 0;
+    for (; j + 8 <= newNodes; j += 8) {
+        const __m256 x = _mm256_loadu_ps(nx + j);
+        const __m256 y = _mm256_loadu_ps(ny + j);
+        const __m256 z = _mm256_loadu_ps(nz + j);
+        const __m256 dx =
+            _mm256_max_ps(_mm256_max_ps(_mm256_sub_ps(vlx, x), _mm256_sub_ps(x, vhx)), zero);
+        const __m256 dy =
+            _mm256_max_ps(_mm256_max_ps(_mm256_sub_ps(vly, y), _mm256_sub_ps(y, vhy)), zero);
+        const __m256 dz =
+            _mm256_max_ps(_mm256_max_ps(_mm256_sub_ps(vlz, z), _mm256_sub_ps(z, vhz)), zero);
+        const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
+                                        _mm256_mul_ps(dz, dz));
+        int mask = _mm256_movemask_ps(_mm256_cmp_ps(d2, _mm256_set1_ps(max2), _CMP_LT_OQ));
+        for (; mask != 0; mask &= mask - 1) {
+            const std::size_t k =
+                j + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask)));
+            max2 = offerAvx(X, Y, Z, B, N, lanes, nx[k], ny[k], nz[k],
+                            static_cast<std::int32_t>(firstNew + k));
+            touched = true;
+        }
+    }
+    for (; j < newNodes; ++j) {
+        const float dx = std::max(std::max(lo.x - nx[j], nx[j] - hi.x), 0.0f);
+        const float dy = std::max(std::max(lo.y - ny[j], ny[j] - hi.y), 0.0f);
+        const float dz = std::max(std::max(lo.z - nz[j], nz[j] - hi.z), 0.0f);
+        if ((dx * dx + dy * dy) + dz * dz < max2) {
+            max2 = offerAvx(X, Y, Z, B, N, lanes, nx[j], ny[j], nz[j],
+                            static_cast<std::int32_t>(firstNew + j));
+            touched = true;
+        }
+    }
+    return max2;
+}
+
 // The processor's features read first (a static initializer may run before libgcc's own).
 // SYLVA_NO_AVX=1 takes the SSE2 offers on any processor (its tests run them on one with AVX).
 const bool kHasAvx =
@@ -238,8 +285,8 @@ private:
 #endif
     }
 
-    // Avx: the offers by offerAvx (one instance a path: a call in the SSE2 loop's lambda cost
-    // that loop 6 %, its registers saved round the call).
+    // Avx: the bound tests and offers by scanNodesAvx (offerAvx inlined in it; one instance a
+    // path: a call in the SSE2 loop's lambda cost that loop 6 %, its registers saved round it).
     template <bool Avx>
     void updateCell(PointState& s, Cell& cell, std::size_t firstNew, float dk2) {
         const std::size_t newNodes = mNX.size();
@@ -266,12 +313,6 @@ private:
             const float px = nx[j], py = ny[j], pz = nz[j];
             const auto node = static_cast<std::int32_t>(firstNew + j);
             touched = true;
-#if SYLVA_OFFER_AVX
-            if constexpr (Avx) {
-                max2 = offerAvx(X, Y, Z, B, N, lanes, px, py, pz, node);
-                return;
-            }
-#endif
 #if defined(__SSE2__)
             const __m128 vx = _mm_set1_ps(px), vy = _mm_set1_ps(py), vz = _mm_set1_ps(pz);
             const __m128i vnode = _mm_set1_epi32(node);
@@ -316,6 +357,13 @@ private:
         // shrinks while nodes are processed, so a node that fails the test stays skipped; one
         // tested against a stale max2 is processed for nothing but changes no result.
         std::size_t j = 0;
+#if SYLVA_OFFER_AVX
+        if constexpr (Avx) {
+            max2 = scanNodesAvx(nx, ny, nz, newNodes, firstNew, cell.lo, cell.hi, X, Y, Z, B, N,
+                                lanes, max2, touched);
+            j = newNodes;
+        }
+#endif
 #if defined(__SSE2__)
         {
             const __m128 vlx = _mm_set1_ps(lx), vly = _mm_set1_ps(ly), vlz = _mm_set1_ps(lz);

@@ -1,7 +1,9 @@
 // The shadow propagation environment: pyramid values by hand, incremental == full.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <omp.h>
 
@@ -270,5 +272,32 @@ TEST(ShadowGrid, GrowingPastTheVoxelLimitThrowsBeforeAllocating) {
         EXPECT_NE(m.find("more than the limit of 268435456 (1.3 GB); use a larger voxel_size"),
                   std::string::npos)
             << m;
+    }
+}
+
+// voxelsOf (four coordinates at a time) against voxelOf: random points, points on voxel faces
+// (exact multiples, where the floor must not step down), negative ones, beyond 2^23 voxels
+// (already integers), beyond the int range, infinities and NaN, tails of every length.
+TEST(ShadowGrid, VoxelsOfEqualsVoxelOf) {
+    for (float size : {0.6f, 0.5f, 1e-3f, 3.0f}) {
+        const ShadowGrid grid(size, 0.0f, 4);
+        sylva::Rng rng(7);
+        std::vector<glm::vec3> pts;
+        for (int i = 0; i < 400; ++i)
+            pts.push_back(
+                glm::vec3(rng.uniformf(-50, 50), rng.uniformf(-5, 30), rng.uniformf(-1e3f, 1e3f)));
+        for (int k = -20; k <= 20; ++k)
+            pts.push_back(glm::vec3(k * size, -k * size, 0.5f * k * size));
+        const float inf = std::numeric_limits<float>::infinity();
+        pts.push_back({8388608.0f * size, -8388609.0f * size, 16777216.5f});
+        pts.push_back({3e9f, -3e9f, 2147483520.0f * size});
+        pts.push_back({inf, -inf, std::numeric_limits<float>::quiet_NaN()});
+        pts.push_back({-0.0f, 0.0f, -1e-30f});
+        for (std::size_t n = pts.size() - 7; n <= pts.size(); ++n) {
+            std::vector<ShadowSource> out(n);
+            grid.voxelsOf(std::span<const glm::vec3>(pts.data(), n), out);
+            for (std::size_t i = 0; i < n; ++i)
+                ASSERT_EQ(out[i].voxel, grid.voxelOf(pts[i])) << size << " " << i;
+        }
     }
 }
