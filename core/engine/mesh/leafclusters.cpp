@@ -5,11 +5,8 @@
 #include <limits>
 #include <span>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 #include "engine/mesh/leafcards.h"
+#include "engine/mesh/powereigen.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
@@ -166,99 +163,6 @@ void leafCorners(const skel::Leaf& leaf, const glm::vec3& heading, const glm::ve
 void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
     leafCorners(leaf, skel::headingOf(leaf.orientation), skel::leftOf(leaf.orientation), aspect,
                 scale, out);
-}
-
-// Largest eigenvectors of \p n (at most kFitLanes) symmetric 3x3 matrices by power iteration, each
-// from its \p v (replaced by the result): 24 steps, a matrix whose product vanishes keeps its
-// vector. The direction after 24 products does not depend on where the vector is normalised, so
-// it is normalised once every kBlock products (after the matrix is scaled to unit absolute sum,
-// so that four products neither overflow nor underflow): a division and a square root a block,
-// not three divisions and a square root a step (perf record of the English oak: principal 6.6 %
-// of the tree, all of it waiting on the divider). The result is the same up to rounding. The n
-// chains are independent and advance in step, two to an SSE2 register.
-constexpr std::size_t kFitLanes = 8;
-constexpr int kPowerSteps = 24;
-constexpr int kBlock = 4;
-// A product of kBlock steps of a unit-sum matrix under this vanishes: the matrix's product
-// does (1e-18 a step).
-constexpr double kVanish = 1e-72;
-
-void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
-    double scale[kFitLanes];
-    for (std::size_t k = 0; k < n; ++k) {
-        double sum = 0.0;
-        for (int col = 0; col < 3; ++col)
-            for (int row = 0; row < 3; ++row)
-                sum += std::abs(c[k][col][row]);
-        scale[k] = sum > 0.0 ? 1.0 / sum : 0.0;
-    }
-#if defined(__SSE2__)
-    // Lanes past n: a zero matrix, whose product vanishes at the first block.
-    alignas(16) double m[9][kFitLanes] = {};
-    alignas(16) double x[kFitLanes] = {}, y[kFitLanes] = {}, z[kFitLanes] = {};
-    for (std::size_t k = 0; k < n; ++k) {
-        for (int col = 0; col < 3; ++col)
-            for (int row = 0; row < 3; ++row)
-                m[3 * col + row][k] = c[k][col][row] * scale[k];
-        x[k] = v[k].x;
-        y[k] = v[k].y;
-        z[k] = v[k].z;
-    }
-    constexpr int kPairs = static_cast<int>(kFitLanes / 2);
-    __m128d M[kPairs][9], X[kPairs], Y[kPairs], Z[kPairs], done[kPairs];
-    for (int h = 0; h < kPairs; ++h) {
-        for (int e = 0; e < 9; ++e)
-            M[h][e] = _mm_load_pd(&m[e][2 * h]);
-        X[h] = _mm_load_pd(&x[2 * h]);
-        Y[h] = _mm_load_pd(&y[2 * h]);
-        Z[h] = _mm_load_pd(&z[2 * h]);
-        done[h] = _mm_setzero_pd();
-    }
-    const __m128d tiny = _mm_set1_pd(kVanish);
-    const __m128d one = _mm_set1_pd(1.0);
-    for (int i = 0; i < kPowerSteps; i += kBlock)
-        for (int h = 0; h < kPairs; ++h) {
-            const __m128d* q = M[h];
-            __m128d nx = X[h], ny = Y[h], nz = Z[h];
-            for (int b = 0; b < kBlock; ++b) {
-                const __m128d px = nx, py = ny, pz = nz;
-                nx = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[0], px), _mm_mul_pd(q[3], py)),
-                                _mm_mul_pd(q[6], pz));
-                ny = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[1], px), _mm_mul_pd(q[4], py)),
-                                _mm_mul_pd(q[7], pz));
-                nz = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[2], px), _mm_mul_pd(q[5], py)),
-                                _mm_mul_pd(q[8], pz));
-            }
-            const __m128d len = _mm_sqrt_pd(
-                _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, nx), _mm_mul_pd(ny, ny)), _mm_mul_pd(nz, nz)));
-            done[h] = _mm_or_pd(done[h], _mm_cmplt_pd(len, tiny));
-            const __m128d keep = done[h];
-            // A kept lane's len may be 0: its quotient is discarded.
-            const __m128d inv = _mm_div_pd(one, _mm_or_pd(len, _mm_and_pd(keep, one)));
-            X[h] = _mm_or_pd(_mm_and_pd(keep, X[h]), _mm_andnot_pd(keep, _mm_mul_pd(nx, inv)));
-            Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_mul_pd(ny, inv)));
-            Z[h] = _mm_or_pd(_mm_and_pd(keep, Z[h]), _mm_andnot_pd(keep, _mm_mul_pd(nz, inv)));
-        }
-    for (int h = 0; h < kPairs; ++h) {
-        _mm_store_pd(&x[2 * h], X[h]);
-        _mm_store_pd(&y[2 * h], Y[h]);
-        _mm_store_pd(&z[2 * h], Z[h]);
-    }
-    for (std::size_t k = 0; k < n; ++k)
-        v[k] = glm::dvec3(x[k], y[k], z[k]);
-#else
-    for (std::size_t k = 0; k < n; ++k) {
-        const glm::dmat3 a = c[k] * scale[k];
-        for (int i = 0; i < kPowerSteps; i += kBlock) {
-            glm::dvec3 next = v[k];
-            for (int b = 0; b < kBlock; ++b)
-                next = a * next;
-            const double len = glm::length(next);
-            if (len < kVanish) break;
-            v[k] = next * (1.0 / len);
-        }
-    }
-#endif
 }
 
 glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
@@ -419,14 +323,14 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std:
 }
 
 /// The cards of the groups of two or more leaves (the others' stay default): the two power
-/// iterations of kFitLanes groups at a time in step (each group's own arithmetic, in its own
+/// iterations of kPowerLanes groups at a time in step (each group's own arithmetic, in its own
 /// order: the same cards as one group at a time, without waiting on one chain of divisions and
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
 std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
                                  float aspect, float scale, bool bounds) {
     std::vector<FittedCard> cards(groups.size());
-    constexpr std::size_t kLanes = kFitLanes;
+    constexpr std::size_t kLanes = kPowerLanes;
     FitInput in[kLanes];
     std::size_t lane[kLanes];
     std::size_t g = 0;
@@ -444,10 +348,10 @@ std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Le
             c[k] = in[k].cov;
             e1[k] = firstSeed(in[k]);
         }
-        principal(c, e1, n);
+        largestEigenvectors(c, e1, n);
         for (std::size_t k = 0; k < n; ++k)
             c[k] = secondMatrix(in[k], e1[k], e2[k]);
-        principal(c, e2, n);
+        largestEigenvectors(c, e2, n);
         std::span<const std::uint32_t> members[kLanes];
         for (std::size_t k = 0; k < n; ++k)
             members[k] = groups[lane[k]];
