@@ -5,6 +5,7 @@
 #include <limits>
 #include <span>
 
+#include "engine/mesh/cardfit.h"
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/powereigen.h"
 #include "engine/util/error.h"
@@ -53,10 +54,12 @@ CellKey cellOf(const glm::dvec3& mid, double cell) {
 /// with its group (the order the cells are first met), reused from size to size.
 class CellTable {
 public:
-    /// A table for up to \p cells distinct cells.
+    /// A table for up to \p cells distinct cells: four slots a cell, a quarter full at most
+    /// (half full, the English oak's two fills took 0.50 ms a tree, 0.46 ms so: fewer probes
+    /// past a neighbour's slot, each a mispredicted branch; eight slots a cell, no better).
     explicit CellTable(std::size_t cells) {
         std::size_t n = 16;
-        while (n < 2 * cells)
+        while (n < 4 * cells)
             n *= 2;
         mSlots.resize(n);
         mMask = n - 1;
@@ -147,24 +150,6 @@ private:
     std::vector<std::uint32_t> mLeaves;
 };
 
-// The corners appendLeafCards gives a leaf.
-// The same from the leaf's heading and left axes (made once by a caller that needs them too).
-void leafCorners(const skel::Leaf& leaf, const glm::vec3& heading, const glm::vec3& left,
-                 float aspect, float scale, glm::vec3 out[4]) {
-    const float len = leaf.size * scale;
-    const glm::vec3 h = heading * len;
-    const glm::vec3 l = left * (0.5f * aspect * len);
-    out[0] = leaf.position + l;
-    out[1] = leaf.position - l;
-    out[2] = leaf.position - l + h;
-    out[3] = leaf.position + l + h;
-}
-
-void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
-    leafCorners(leaf, skel::headingOf(leaf.orientation), skel::leftOf(leaf.orientation), aspect,
-                scale, out);
-}
-
 glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
     const glm::dvec3 a = std::abs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     return glm::normalize(glm::cross(v, a));
@@ -178,62 +163,24 @@ constexpr double kCardShrink = 0.9;
 struct FittedCard {
     glm::vec3 corners[4];
     glm::vec3 normal;
-    /// The card as a leaf whose card (size long, aspect x size wide) holds it: what the
-    /// obstacle check of a forest tests.
-    skel::Leaf bounds;      ///< made only for an accept callback
+};
+
+// A fitted card as a leaf whose card (size long, aspect x size wide) holds it: what the
+// obstacle check of a forest tests; made only for an accept callback (kept apart: the oak's
+// ~4,800 fits a tree were written, zeroed first, and read back at 132 bytes each, not 60).
+struct CardBounds {
+    skel::Leaf bounds;
     skel::Leaf crossBounds; ///< the same for the crossing card (LeafClusterSettings::crossed)
 };
 
-// What a group's card is fitted from: its leaves' corners, their mean and covariance, and
-// the sums of the leaves' axes.
-struct FitInput {
-    std::vector<glm::dvec3> pts;
-    glm::dvec3 heading{0.0}, up{0.0}, left{0.0}, m{0.0};
-    glm::dmat3 cov{0.0};
-};
-
-void prepareFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
-                float aspect, float scale, FitInput& in) {
-    std::vector<glm::dvec3>& pts = in.pts;
-    pts.clear();
-    pts.reserve(4 * group.size());
-    glm::dvec3 heading(0.0), up(0.0), left(0.0);
-    for (std::uint32_t i : group) {
-        // Each axis made once a leaf (the corners and the sums both need them).
-        const glm::vec3 h = skel::headingOf(leaves[i].orientation);
-        const glm::vec3 l = skel::leftOf(leaves[i].orientation);
-        glm::vec3 c[4];
-        leafCorners(leaves[i], h, l, aspect, scale, c);
-        for (const glm::vec3& q : c)
-            pts.emplace_back(q);
-        heading += glm::dvec3(h);
-        up += glm::dvec3(skel::upOf(leaves[i].orientation));
-        left += glm::dvec3(l);
-    }
-    glm::dvec3 m(0.0);
-    for (const glm::dvec3& q : pts)
-        m += q;
-    m /= static_cast<double>(pts.size());
-    glm::dmat3 cov(0.0);
-    for (const glm::dvec3& q : pts) {
-        const glm::dvec3 d = q - m;
-        cov += glm::outerProduct(d, d);
-    }
-    in.heading = heading;
-    in.up = up;
-    in.left = left;
-    in.m = m;
-    in.cov = cov;
-}
-
-glm::dvec3 firstSeed(const FitInput& in) {
+glm::dvec3 firstSeed(const CardFitInput& in) {
     const glm::dvec3 seed1 =
         glm::length(in.heading) > 1e-9 ? glm::normalize(in.heading) : glm::dvec3(0, 1, 0);
     return seed1 + glm::dvec3(1e-3, 2e-3, 3e-3);
 }
 
 // The covariance without e1's part, and the start of the second power iteration.
-glm::dmat3 secondMatrix(const FitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
+glm::dmat3 secondMatrix(const CardFitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
     const double l1 = glm::dot(e1, in.cov * e1);
     const glm::dmat3 rest = in.cov - l1 * glm::outerProduct(e1, e1);
     glm::dvec3 s2 = in.left - glm::dot(in.left, e1) * e1;
@@ -252,8 +199,8 @@ struct CardAxes {
 // normalisations (a square root and a division each) waited on the one before; cards side by
 // side overlap theirs (perf record of the English oak: finishFit 4.6 %, on those chains). Each
 // card's arithmetic is its own, in its order: the same axes as one card at a time.
-void cardAxes(const FitInput* in, const std::span<const std::uint32_t>* group, const glm::dvec3* e1,
-              glm::dvec3* e2, CardAxes* out, std::size_t n) {
+void cardAxes(const CardFitInput* in, const std::span<const std::uint32_t>* group,
+              const glm::dvec3* e1, glm::dvec3* e2, CardAxes* out, std::size_t n) {
     for (std::size_t k = 0; k < n; ++k) {
         e2[k] = e2[k] - glm::dot(e2[k], e1[k]) * e1[k];
         if (glm::length(e2[k]) < 1e-9) e2[k] = anyPerpendicular(e1[k]);
@@ -276,20 +223,13 @@ void cardAxes(const FitInput* in, const std::span<const std::uint32_t>* group, c
         out[k].across = glm::normalize(glm::cross(out[k].n, out[k].along));
 }
 
-FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
-                     float aspect, float scale, const FitInput& in, const CardAxes& axes,
-                     bool bounds) {
-    const std::vector<glm::dvec3>& pts = in.pts;
+void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
+               float aspect, float scale, const CardFitInput& in, const CardAxes& axes,
+               FittedCard& f, CardBounds* bounds) {
     const glm::dvec3& m = in.m;
     const glm::dvec3 &n = axes.n, &along = axes.along, &across = axes.across;
-    double a0 = 1e300, a1 = -1e300, c0 = 1e300, c1 = -1e300;
-    for (const glm::dvec3& q : pts) {
-        const double a = glm::dot(q - m, along), c = glm::dot(q - m, across);
-        a0 = std::min(a0, a);
-        a1 = std::max(a1, a);
-        c0 = std::min(c0, c);
-        c1 = std::max(c1, c);
-    }
+    double a0, a1, c0, c1;
+    cardExtent(in, along, across, a0, a1, c0, c1);
     // The corners' box is larger than the leaves it holds (their outlines are not a
     // rectangle): shrunk about its middle so the card covers about what they cover.
     const double shrink = kCardShrink;
@@ -299,7 +239,6 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std:
     c0 = cm + shrink * (c0 - cm);
     c1 = cm + shrink * (c1 - cm);
     const glm::dvec3 lo = m + a0 * along, hi = m + a1 * along;
-    FittedCard f;
     f.corners[0] = glm::vec3(lo + c1 * across);
     f.corners[1] = glm::vec3(lo + c0 * across);
     f.corners[2] = glm::vec3(hi + c0 * across);
@@ -307,19 +246,19 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std:
     f.normal = glm::vec3(n);
     // The bounds only for the obstacle check (two quat_casts a card whose branches the cards'
     // turning every way mispredicted, for nothing without one).
-    if (!bounds) return f;
+    if (!bounds) return;
+    CardBounds& b = *bounds;
     const double length = a1 - a0, width = c1 - c0;
-    f.bounds.position = glm::vec3(lo + cm * across);
-    f.bounds.orientation =
+    b.bounds.position = glm::vec3(lo + cm * across);
+    b.bounds.orientation =
         glm::quat_cast(glm::mat3(glm::vec3(-across), glm::vec3(along), glm::vec3(n)));
-    f.bounds.size = static_cast<float>(std::max(length, width / aspect) / scale);
-    f.bounds.node = leaves[group.front()].node;
+    b.bounds.size = static_cast<float>(std::max(length, width / aspect) / scale);
+    b.bounds.node = leaves[group.front()].node;
     // The crossing card is the card turned a quarter round its centre line: across -> n.
-    f.crossBounds = f.bounds;
-    f.crossBounds.position = glm::vec3(lo + cm * across);
-    f.crossBounds.orientation =
+    b.crossBounds = b.bounds;
+    b.crossBounds.position = glm::vec3(lo + cm * across);
+    b.crossBounds.orientation =
         glm::quat_cast(glm::mat3(glm::vec3(-n), glm::vec3(along), glm::vec3(-across)));
-    return f;
 }
 
 /// The cards of the groups of two or more leaves (the others' stay default): the two power
@@ -328,20 +267,24 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std:
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
 std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
-                                 float aspect, float scale, bool bounds) {
+                                 float aspect, float scale, std::vector<CardBounds>* bounds) {
     std::vector<FittedCard> cards(groups.size());
+    if (bounds) bounds->assign(groups.size(), CardBounds{});
     constexpr std::size_t kLanes = kPowerLanes;
-    FitInput in[kLanes];
+    CardFitInput in[kLanes];
     std::size_t lane[kLanes];
     std::size_t g = 0;
     while (g < groups.size()) {
         std::size_t n = 0;
+        std::span<const std::uint32_t> members[kLanes];
         for (; g < groups.size() && n < kLanes; ++g) {
             if (groups[g].size() < 2) continue;
-            prepareFit(leaves, groups[g], aspect, scale, in[n]);
+            members[n] = groups[g];
             lane[n++] = g;
         }
         if (n == 0) break;
+        for (std::size_t k = 0; k < n; ++k)
+            prepareCardFit(leaves, members[k], aspect, scale, in[k]);
         glm::dmat3 c[kLanes];
         glm::dvec3 e1[kLanes], e2[kLanes];
         for (std::size_t k = 0; k < n; ++k) {
@@ -352,13 +295,11 @@ std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Le
         for (std::size_t k = 0; k < n; ++k)
             c[k] = secondMatrix(in[k], e1[k], e2[k]);
         largestEigenvectors(c, e2, n);
-        std::span<const std::uint32_t> members[kLanes];
-        for (std::size_t k = 0; k < n; ++k)
-            members[k] = groups[lane[k]];
         CardAxes axes[kLanes];
         cardAxes(in, members, e1, e2, axes, n);
         for (std::size_t k = 0; k < n; ++k)
-            cards[lane[k]] = finishFit(leaves, members[k], aspect, scale, in[k], axes[k], bounds);
+            finishFit(leaves, members[k], aspect, scale, in[k], axes[k], cards[lane[k]],
+                      bounds ? &(*bounds)[lane[k]] : nullptr);
     }
     return cards;
 }
@@ -421,7 +362,9 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     const auto scale = static_cast<float>(cards.sizeScale);
     LeafGroups groups = groupLeafIndices(leaves, cards.sizeScale, clusters.leavesPerCard);
     // Each group's card, fitted once (it was fitted again for the mesh after the check).
-    std::vector<FittedCard> fitted = fitCards(leaves, groups, aspect, scale, bool(accept));
+    std::vector<CardBounds> bounds;
+    std::vector<FittedCard> fitted =
+        fitCards(leaves, groups, aspect, scale, accept ? &bounds : nullptr);
     if (accept) {
         LeafGroups kept;
         std::vector<FittedCard> keptFits;
@@ -429,11 +372,11 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         keptFits.reserve(groups.size());
         for (std::size_t k = 0; k < groups.size(); ++k) {
             const std::span<const std::uint32_t> g = groups[k];
-            const FittedCard& f = fitted[k];
+            const CardBounds& b = bounds[k];
             if (g.size() < 2 ||
-                (accept(f.bounds) && (!clusters.crossed || accept(f.crossBounds)))) {
+                (accept(b.bounds) && (!clusters.crossed || accept(b.crossBounds)))) {
                 kept.add(g);
-                keptFits.push_back(f);
+                keptFits.push_back(fitted[k]);
             } else {
                 for (const std::uint32_t& i : g) {
                     kept.add({&i, 1});
