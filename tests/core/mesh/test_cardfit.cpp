@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <vector>
 
@@ -21,10 +22,45 @@ std::vector<skel::Leaf> randomLeaves(Rng& rng, int count) {
                                                     rng.uniformf(-1, 1), rng.uniformf(-1, 1)));
         leaf.size = rng.uniformf(0.03f, 0.2f);
     }
+    // Frames with zero components (signed zeros through the products) and the identity.
+    leaves[3].orientation = glm::quat(1, 0, 0, 0);
+    leaves[7].orientation = glm::quat(0, 0, 1, 0);
+    leaves[8].orientation = glm::quat(-0.0f, 0.6f, -0.0f, 0.8f);
+    leaves[12].orientation = glm::quat(0.5f, -0.5f, 0.5f, -0.5f);
     return leaves;
 }
 
+// The same bits (a float's or a double's -0.0 and its 0.0 differ).
+template <typename V> bool sameBits(const V& a, const V& b) {
+    return std::memcmp(&a, &b, sizeof(V)) == 0;
+}
+
 } // namespace
+
+// The SSE2 preparation (four leaves a register) is the straightforward one bit for bit, for
+// groups of every size (every remainder of four), in any order of the leaves.
+TEST(CardFit, PreparationMatchesTheStraightforwardOne) {
+    Rng rng(9);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
+    mesh::CardFitInput fast, plain;
+    for (std::uint32_t size = 1; size <= 23; ++size)
+        for (int trial = 0; trial < 6; ++trial) {
+            std::vector<std::uint32_t> group(size);
+            for (std::uint32_t& i : group)
+                i = static_cast<std::uint32_t>(rng.below(leaves.size()));
+            if (trial == 0) std::iota(group.begin(), group.end(), 0u); // the special frames
+            mesh::prepareCardFit(leaves, group, 0.45f, 1.7f, fast);
+            mesh::prepareCardFitPlain(leaves, group, 0.45f, 1.7f, plain);
+            ASSERT_EQ(fast.corners.size(), plain.corners.size());
+            for (std::size_t k = 0; k < fast.corners.size(); ++k)
+                EXPECT_TRUE(sameBits(fast.corners[k], plain.corners[k])) << size << " " << k;
+            EXPECT_TRUE(sameBits(fast.heading, plain.heading)) << size;
+            EXPECT_TRUE(sameBits(fast.up, plain.up)) << size;
+            EXPECT_TRUE(sameBits(fast.left, plain.left)) << size;
+            EXPECT_TRUE(sameBits(fast.m, plain.m)) << size;
+            EXPECT_TRUE(sameBits(fast.cov, plain.cov)) << size;
+        }
+}
 
 // A card's corners, mean and covariance are the leaves' corners as appendLeafCards makes them
 // (four a leaf, in order), and the SSE2 extent is the straightforward one bit for bit, for
