@@ -73,29 +73,47 @@ public:
         // Room for every key a fill may write (one past the limit), written in place below.
         mKeys.resize(std::min(limit, mids.size()) + 1);
         groupOf.resize(mids.size());
+        mCells.resize(kChunk);
+        mHashes.resize(kChunk);
         // Every leaf looks its cell up; only a new cell is written. A shortcut for a leaf in
         // the cell of the leaf before it was a branch taken about every other leaf, mispredicted
         // (perf record of the English oak: CellTable::fill 10 % of the tree). Writing every
         // leaf's slot whether or not its cell was new (no branch on it) was slower once the
         // table was a quarter full: 0.46 ms a tree for the oak's two fills, 0.43 ms with the
         // branch (a leaf's table read waited on the slot writes of the leaves before it).
+        // A chunk's cells and hashes first, then their lookups, each slot fetched kAhead
+        // leaves before its lookup and the key it holds kKeyAhead leaves before (the table is
+        // in L2: every lookup waited on it, two dependent reads; 0.43 -> 0.35 ms a tree for the
+        // oak's fills).
         std::uint32_t count = 0;
-        for (std::size_t i = 0; i < mids.size(); ++i) {
-            const CellKey key = cellOf(mids[i], cell);
-            std::size_t slot = cellHash(key) & mMask;
-            while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
-                slot = (slot + 1) & mMask;
-            Slot& s = mSlots[slot];
-            std::uint32_t group = s.group;
-            if (s.stamp != mStamp) {
-                group = count;
-                s.stamp = mStamp;
-                s.group = group;
-                mKeys[count] = key;
-                ++count;
+        for (std::size_t c0 = 0; c0 < mids.size(); c0 += kChunk) {
+            const std::size_t c1 = std::min(mids.size(), c0 + kChunk);
+            for (std::size_t i = c0; i < c1; ++i) {
+                mCells[i - c0] = cellOf(mids[i], cell);
+                mHashes[i - c0] = static_cast<std::uint32_t>(cellHash(mCells[i - c0]) & mMask);
             }
-            groupOf[i] = group;
-            if (count > limit) return limit + 1;
+            for (std::size_t i = c0; i < c1; ++i) {
+                const std::size_t k = i - c0;
+                if (k + kAhead < c1 - c0) __builtin_prefetch(&mSlots[mHashes[k + kAhead]]);
+                if (k + kKeyAhead < c1 - c0)
+                    __builtin_prefetch(&mKeys[std::min<std::size_t>(
+                        mSlots[mHashes[k + kKeyAhead]].group, mKeys.size() - 1)]);
+                const CellKey& key = mCells[k];
+                std::size_t slot = mHashes[k];
+                while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
+                    slot = (slot + 1) & mMask;
+                Slot& s = mSlots[slot];
+                std::uint32_t group = s.group;
+                if (s.stamp != mStamp) {
+                    group = count;
+                    s.stamp = mStamp;
+                    s.group = group;
+                    mKeys[count] = key;
+                    ++count;
+                }
+                groupOf[i] = group;
+                if (count > limit) return limit + 1;
+            }
         }
         return count;
     }
@@ -110,7 +128,10 @@ private:
         std::uint32_t group = 0;
     };
     std::vector<Slot> mSlots;
-    std::vector<CellKey> mKeys; ///< the cells of the current fill, by group
+    static constexpr std::size_t kChunk = 512, kAhead = 10, kKeyAhead = 4;
+    std::vector<CellKey> mKeys;         ///< the cells of the current fill, by group
+    std::vector<CellKey> mCells;        ///< a chunk's cells
+    std::vector<std::uint32_t> mHashes; ///< and their first slots
     std::size_t mMask = 0;
     std::uint32_t mStamp = 0;
 };
