@@ -70,10 +70,31 @@ glm::dvec3 ValueNoise::operator()(const glm::dvec3& p) {
     const auto ix = static_cast<std::int64_t>(f.x), iy = static_cast<std::int64_t>(f.y),
                iz = static_cast<std::int64_t>(f.z);
     if (!mValid || ix != mCell[0] || iy != mCell[1] || iz != mCell[2]) {
-        for (int dz = 0; dz < 2; ++dz)
-            for (int dy = 0; dy < 2; ++dy)
-                for (int dx = 0; dx < 2; ++dx)
-                    mCorner[dz][dy][dx] = kept(ix + dx, iy + dy, iz + dz);
+        const std::int64_t gx = ix - mOrigin[0], gy = iy - mOrigin[1], gz = iz - mOrigin[2];
+        if (gx >= 0 && gy >= 0 && gz >= 0 && gx + 1 < mSize[0] && gy + 1 < mSize[1] &&
+            gz + 1 < mSize[2]) {
+            // The cell's eight points in the grid: one bounds test, not eight.
+            const auto sx = static_cast<std::size_t>(mSize[0]);
+            const std::size_t sxy = sx * static_cast<std::size_t>(mSize[1]);
+            const auto base = static_cast<std::size_t>((gz * mSize[1] + gy) * mSize[0] + gx);
+            for (int dz = 0; dz < 2; ++dz)
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx) {
+                        const std::size_t i = base + static_cast<std::size_t>(dz) * sxy +
+                                              static_cast<std::size_t>(dy) * sx +
+                                              static_cast<std::size_t>(dx);
+                        if (!mMade[i]) {
+                            mGrid[i] = lattice(ix + dx, iy + dy, iz + dz);
+                            mMade[i] = 1;
+                        }
+                        mCorner[dz][dy][dx] = mGrid[i];
+                    }
+        } else {
+            for (int dz = 0; dz < 2; ++dz)
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx)
+                        mCorner[dz][dy][dx] = kept(ix + dx, iy + dy, iz + dz);
+        }
         mCell[0] = ix;
         mCell[1] = iy;
         mCell[2] = iz;

@@ -17,7 +17,8 @@ namespace sylva::mesh {
 /// tintLeafCards' time). A lattice value is 24 hashes of the point; with cover(), the values of
 /// a box's lattice are kept in a grid, each made the first time a cell needs it (the oak's
 /// cards change cell every other card: about 5,000 cells of 48 hashes a tree, most of them the
-/// same points again). The same values with or without it.
+/// same points again); a cell inside the grid takes its eight points with one bounds test.
+/// The same values with or without it.
 class ValueNoise {
 public:
     explicit ValueNoise(std::uint64_t seed) : mSeed(seed) {}
