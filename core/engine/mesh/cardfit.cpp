@@ -43,6 +43,15 @@ void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
     in.cov = cov;
 }
 
+void leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+    mids.resize(leaves.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const skel::Leaf& leaf = leaves[i];
+        mids[i] = glm::dvec3(leaf.position) + 0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) *
+                                                  static_cast<double>(leaf.size);
+    }
+}
+
 void cardExtentPlain(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
                      double& a0, double& a1, double& c0, double& c1) {
     a0 = 1e300, a1 = -1e300, c0 = 1e300, c1 = -1e300;
@@ -211,6 +220,37 @@ void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::
     in.left = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(leftZ));
 }
 
+void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+    const std::size_t n = leaves.size();
+    mids.resize(n);
+    const __m128d half = _mm_set1_pd(0.5);
+    for (std::size_t b = 0; b < n; b += 4) {
+        const std::size_t r = std::min<std::size_t>(4, n - b);
+        const skel::Leaf* leaf[4];
+        for (std::size_t j = 0; j < 4; ++j)
+            leaf[j] = &leaves[b + std::min(j, r - 1)];
+        __m128 qx = _mm_loadu_ps(&leaf[0]->orientation.x);
+        __m128 qy = _mm_loadu_ps(&leaf[1]->orientation.x);
+        __m128 qz = _mm_loadu_ps(&leaf[2]->orientation.x);
+        __m128 qw = _mm_loadu_ps(&leaf[3]->orientation.x);
+        _MM_TRANSPOSE4_PS(qx, qy, qz, qw);
+        __m128 heading[4];
+        toPoints(rotate(qx, qy, qz, qw, 0.0f, 1.0f, 0.0f), heading);
+        for (std::size_t j = 0; j < r; ++j) {
+            // position + (0.5 * heading) * size, in double, as leafMiddlesPlain.
+            const glm::vec3& p = leaf[j]->position;
+            const __m128d size = _mm_set1_pd(static_cast<double>(leaf[j]->size));
+            const __m128d xy =
+                _mm_add_pd(xyOf(p), _mm_mul_pd(_mm_mul_pd(half, xyOf(heading[j])), size));
+            const __m128d z =
+                _mm_add_sd(zOf(p), _mm_mul_sd(_mm_mul_sd(half, zOf(heading[j])), size));
+            alignas(16) double v[2];
+            _mm_store_pd(v, xy);
+            mids[b + j] = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(z));
+        }
+    }
+}
+
 void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
                 double& a0, double& a1, double& c0, double& c1) {
     // Lane 0 the along products, lane 1 the across ones: dot = (x + y) + z, as glm::dot.
@@ -240,6 +280,10 @@ void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec
 }
 
 #else
+
+void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+    leafMiddlesPlain(leaves, mids);
+}
 
 void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                     float aspect, float scale, CardFitInput& in) {

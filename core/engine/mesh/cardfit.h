@@ -28,6 +28,10 @@ inline void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::
                 scale, out);
 }
 
+/// Each leaf's middle, position + 0.5 * size * heading in double (where a leaf belongs when
+/// leaves are grouped in cells): four leaves at a time on SSE2, bit for bit leafMiddlesPlain.
+void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids);
+
 /// What a cluster card (leafclusters.h) is fitted from: its leaves' card corners (four a leaf,
 /// in leaf order), their mean and covariance (made in double from the float corners, summed in
 /// that order), and the sums of the leaves' heading, up and left axes.
@@ -54,11 +58,12 @@ void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::
 void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
                 double& a0, double& a1, double& c0, double& c1);
 
-/// prepareCardFit and cardExtent the straightforward way (glm, one operation after the
+/// prepareCardFit, leafMiddles and cardExtent the straightforward way (glm, one operation after the
 /// other), for tests.
 void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
                          std::span<const std::uint32_t> group, float aspect, float scale,
                          CardFitInput& in);
+void leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids);
 void cardExtentPlain(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
                      double& a0, double& a1, double& c0, double& c1);
 

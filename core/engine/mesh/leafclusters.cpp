@@ -27,18 +27,6 @@ std::uint64_t cellHash(const CellKey& k) {
     return h;
 }
 
-// The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every cell
-// size tried, so made once a leaf (it was made again at each of groupLeaves' steps).
-std::vector<glm::dvec3> leafMiddles(const std::vector<skel::Leaf>& leaves) {
-    std::vector<glm::dvec3> mids(leaves.size());
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        const skel::Leaf& leaf = leaves[i];
-        mids[i] = glm::dvec3(leaf.position) + 0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) *
-                                                  static_cast<double>(leaf.size);
-    }
-    return mids;
-}
-
 // floor(v) as an integer, without a call to floor (not inlined below SSE4.1: it was a tenth of
 // groupLeaves): the same value for every v in the int64 range.
 std::int64_t floorToInt(double v) {
@@ -344,7 +332,10 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
     // than leaves / leavesPerCard groups (40 sizes at most, the last taken whatever it gives).
     // Each size only counts its cells, and stops counting past the limit; the groups are made
     // once, for the size chosen.
-    const std::vector<glm::dvec3> mids = leafMiddles(leaves);
+    // The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every
+    // cell size tried, so made once a leaf.
+    std::vector<glm::dvec3> mids;
+    leafMiddles(leaves, mids);
     // The groups come from the count that passed, not from one more pass over the leaves.
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));

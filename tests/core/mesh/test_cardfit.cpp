@@ -99,3 +99,19 @@ TEST(CardFit, ExtentMatchesTheStraightforwardOne) {
         }
     }
 }
+
+// The leaves' middles four at a time are the straightforward ones bit for bit, for every
+// remainder of four.
+TEST(CardFit, MiddlesMatchTheStraightforwardOnes) {
+    Rng rng(4);
+    const std::vector<skel::Leaf> all = randomLeaves(rng, 40);
+    for (std::size_t count = 0; count <= all.size(); ++count) {
+        const std::vector<skel::Leaf> leaves(all.begin(), all.begin() + count);
+        std::vector<glm::dvec3> fast, plain;
+        mesh::leafMiddles(leaves, fast);
+        mesh::leafMiddlesPlain(leaves, plain);
+        ASSERT_EQ(fast.size(), count);
+        for (std::size_t i = 0; i < count; ++i)
+            EXPECT_TRUE(sameBits(fast[i], plain[i])) << count << " " << i;
+    }
+}
