@@ -415,6 +415,18 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     const glm::vec2 inset(2.0f / 1024.0f, 2.0f / 512.0f);
     const glm::vec2 tileSize(1.0f / static_cast<float>(kClusterAtlasColumns),
                              1.0f / static_cast<float>(kClusterAtlasRows));
+    // Each tile's corners' uvs, plain and mirrored, made once (not once a vertex).
+    glm::vec2 tileUvs[kClusterSprays + 1][2][4];
+    for (int tile = 0; tile <= kClusterSprays; ++tile)
+        for (int mirror = 0; mirror < 2; ++mirror) {
+            const glm::vec2 origin =
+                tileSize * glm::vec2(static_cast<float>(tile % kClusterAtlasColumns),
+                                     static_cast<float>(tile / kClusterAtlasColumns));
+            const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
+            const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
+            for (int c = 0; c < 4; ++c)
+                tileUvs[tile][mirror][c] = origin + inset + local[c] * (tileSize - 2.0f * inset);
+        }
     std::size_t card = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::span<const std::uint32_t> group = groups[g];
@@ -439,6 +451,10 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         }
         const bool known =
             skeleton && first.node >= 0 && static_cast<std::size_t>(first.node) < skeleton->size();
+        const std::uint32_t nodeId =
+            first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;
+        const auto order = known ? skeleton->order[static_cast<std::size_t>(first.node)]
+                                 : decltype(skeleton->order)::value_type{0};
         const int sheets = clusters.crossed && group.size() > 1 ? 2 : 1;
         for (int sheet = 0; sheet < sheets; ++sheet, ++card) {
             if (sheet == 1) {
@@ -457,24 +473,17 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
                 mirror = !mirror;
                 tile = (tile + 3) % kClusterSprays; // another spray: no twin pictures
             }
-            const glm::vec2 origin =
-                tileSize * glm::vec2(static_cast<float>(tile % kClusterAtlasColumns),
-                                     static_cast<float>(tile / kClusterAtlasColumns));
-            const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
-            const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
             const std::size_t v = v0 + 4 * card;
+            const glm::vec2* uv = tileUvs[tile][mirror ? 1 : 0];
             for (std::size_t c = 0; c < 4; ++c) {
                 out.positions[v + c] = corners[c];
                 out.normals[v + c] = normal;
-                out.uvs[v + c] = origin + inset + local[c] * (tileSize - 2.0f * inset);
-                if (ids)
-                    out.node[v + c] =
-                        first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;
-                if (wind) {
-                    out.branchOrder[v + c] =
-                        known ? skeleton->order[static_cast<std::size_t>(first.node)] : 0;
-                    out.flexibility[v + c] = 1.0f;
-                }
+                out.uvs[v + c] = uv[c];
+            }
+            if (ids) std::fill_n(out.node.begin() + static_cast<std::ptrdiff_t>(v), 4, nodeId);
+            if (wind) {
+                std::fill_n(out.branchOrder.begin() + static_cast<std::ptrdiff_t>(v), 4, order);
+                std::fill_n(out.flexibility.begin() + static_cast<std::ptrdiff_t>(v), 4, 1.0f);
             }
             const auto b = static_cast<std::uint32_t>(v);
             const std::uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
