@@ -7,6 +7,7 @@
 
 #include "engine/mesh/cardfit.h"
 #include "engine/mesh/leafcards.h"
+#include "engine/mesh/leafcell.h"
 #include "engine/mesh/powereigen.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -16,26 +17,12 @@ namespace sylva::mesh {
 
 namespace {
 
-struct CellKey {
-    std::int64_t x, y, z;
-    bool operator==(const CellKey&) const = default;
-};
+using CellKey = LeafCell;
 std::uint64_t cellHash(const CellKey& k) {
     std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
     h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
     h ^= static_cast<std::uint64_t>(k.z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
     return h;
-}
-
-// floor(v) as an integer, without a call to floor (not inlined below SSE4.1: it was a tenth of
-// groupLeaves): the same value for every v in the int64 range.
-std::int64_t floorToInt(double v) {
-    const auto i = static_cast<std::int64_t>(v);
-    return static_cast<double>(i) > v ? i - 1 : i;
-}
-
-CellKey cellOf(const glm::dvec3& mid, double cell) {
-    return {floorToInt(mid.x / cell), floorToInt(mid.y / cell), floorToInt(mid.z / cell)};
 }
 
 /// The leaves' cells at one cell size: an open-addressing table of the distinct cells, each
@@ -77,7 +64,7 @@ public:
         for (std::size_t c0 = 0; c0 < mids.size(); c0 += kChunk) {
             const std::size_t c1 = std::min(mids.size(), c0 + kChunk);
             for (std::size_t i = c0; i < c1; ++i) {
-                mCells[i - c0] = cellOf(mids[i], cell);
+                mCells[i - c0] = leafCell(mids[i], cell);
                 mHashes[i - c0] = static_cast<std::uint32_t>(cellHash(mCells[i - c0]) & mMask);
             }
             for (std::size_t i = c0; i < c1; ++i) {
