@@ -67,9 +67,11 @@ void largestEigenvectors(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
         for (int s = 0; s < 2; ++s) {
             const __m128d* a = M[h];
             __m128d p[9];
+            // The power of a symmetric matrix is symmetric, bit for bit (entry (c, r) and
+            // entry (r, c) multiply the same pairs in the same order): six entries made.
             for (int col = 0; col < 3; ++col)
-                for (int row = 0; row < 3; ++row)
-                    p[3 * col + row] =
+                for (int row = col; row < 3; ++row)
+                    p[3 * col + row] = p[3 * row + col] =
                         _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[row], a[3 * col]),
                                               _mm_mul_pd(a[3 + row], a[3 * col + 1])),
                                    _mm_mul_pd(a[6 + row], a[3 * col + 2]));
@@ -101,6 +103,12 @@ void largestEigenvectors(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
             } else {
                 // A kept lane's len may be 0: its quotient is discarded.
                 inv = _mm_div_pd(one, _mm_or_pd(_mm_sqrt_pd(len2), _mm_and_pd(keep, one)));
+            }
+            if (_mm_movemask_pd(keep) == 0) { // no lane kept: the usual case
+                X[h] = _mm_mul_pd(nx, inv);
+                Y[h] = _mm_mul_pd(ny, inv);
+                Z[h] = _mm_mul_pd(nz, inv);
+                continue;
             }
             X[h] = _mm_or_pd(_mm_and_pd(keep, X[h]), _mm_andnot_pd(keep, _mm_mul_pd(nx, inv)));
             Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_mul_pd(ny, inv)));
