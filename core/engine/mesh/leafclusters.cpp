@@ -5,11 +5,10 @@
 #include <limits>
 #include <span>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
+#include "engine/mesh/cardfit.h"
 #include "engine/mesh/leafcards.h"
+#include "engine/mesh/leafcell.h"
+#include "engine/mesh/powereigen.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/seedsalts.h"
@@ -18,10 +17,7 @@ namespace sylva::mesh {
 
 namespace {
 
-struct CellKey {
-    std::int64_t x, y, z;
-    bool operator==(const CellKey&) const = default;
-};
+using CellKey = LeafCell;
 std::uint64_t cellHash(const CellKey& k) {
     std::uint64_t h = static_cast<std::uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
     h ^= static_cast<std::uint64_t>(k.y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
@@ -29,37 +25,16 @@ std::uint64_t cellHash(const CellKey& k) {
     return h;
 }
 
-// The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every cell
-// size tried, so made once a leaf (it was made again at each of groupLeaves' steps).
-std::vector<glm::dvec3> leafMiddles(const std::vector<skel::Leaf>& leaves) {
-    std::vector<glm::dvec3> mids(leaves.size());
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        const skel::Leaf& leaf = leaves[i];
-        mids[i] = glm::dvec3(leaf.position) + 0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) *
-                                                  static_cast<double>(leaf.size);
-    }
-    return mids;
-}
-
-// floor(v) as an integer, without a call to floor (not inlined below SSE4.1: it was a tenth of
-// groupLeaves): the same value for every v in the int64 range.
-std::int64_t floorToInt(double v) {
-    const auto i = static_cast<std::int64_t>(v);
-    return static_cast<double>(i) > v ? i - 1 : i;
-}
-
-CellKey cellOf(const glm::dvec3& mid, double cell) {
-    return {floorToInt(mid.x / cell), floorToInt(mid.y / cell), floorToInt(mid.z / cell)};
-}
-
 /// The leaves' cells at one cell size: an open-addressing table of the distinct cells, each
 /// with its group (the order the cells are first met), reused from size to size.
 class CellTable {
 public:
-    /// A table for up to \p cells distinct cells.
+    /// A table for up to \p cells distinct cells: four slots a cell, a quarter full at most
+    /// (half full, the English oak's two fills took 0.50 ms a tree, 0.46 ms so: fewer probes
+    /// past a neighbour's slot, each a mispredicted branch; eight slots a cell, no better).
     explicit CellTable(std::size_t cells) {
         std::size_t n = 16;
-        while (n < 2 * cells)
+        while (n < 4 * cells)
             n *= 2;
         mSlots.resize(n);
         mMask = n - 1;
@@ -73,28 +48,47 @@ public:
         // Room for every key a fill may write (one past the limit), written in place below.
         mKeys.resize(std::min(limit, mids.size()) + 1);
         groupOf.resize(mids.size());
-        // Every leaf looks its cell up, and a new cell is written whether or not it is new (a
-        // slot that was the key's already is written with what it had; the key at the next
-        // group's place, which only a new cell claims): the only branch left is the probe's,
-        // which a half-empty table seldom takes. A shortcut for a leaf in the cell of the leaf
-        // before it, and the choice between a found cell and a new one, were branches taken
-        // about every other leaf, mispredicted (perf record of the English oak:
-        // CellTable::fill 10 % of the tree).
+        mCells.resize(kChunk);
+        mHashes.resize(kChunk);
+        // Every leaf looks its cell up; only a new cell is written. A shortcut for a leaf in
+        // the cell of the leaf before it was a branch taken about every other leaf, mispredicted
+        // (perf record of the English oak: CellTable::fill 10 % of the tree). Writing every
+        // leaf's slot whether or not its cell was new (no branch on it) was slower once the
+        // table was a quarter full: 0.46 ms a tree for the oak's two fills, 0.43 ms with the
+        // branch (a leaf's table read waited on the slot writes of the leaves before it).
+        // A chunk's cells and hashes first, then their lookups, each slot fetched kAhead
+        // leaves before its lookup and the key it holds kKeyAhead leaves before (the table is
+        // in L2: every lookup waited on it, two dependent reads; 0.43 -> 0.35 ms a tree for the
+        // oak's fills).
         std::uint32_t count = 0;
-        for (std::size_t i = 0; i < mids.size(); ++i) {
-            const CellKey key = cellOf(mids[i], cell);
-            std::size_t slot = cellHash(key) & mMask;
-            while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
-                slot = (slot + 1) & mMask;
-            Slot& s = mSlots[slot];
-            const bool fresh = s.stamp != mStamp;
-            const std::uint32_t group = fresh ? count : s.group;
-            s.stamp = mStamp;
-            s.group = group;
-            mKeys[count] = key;
-            count += fresh ? 1u : 0u;
-            groupOf[i] = group;
-            if (count > limit) return limit + 1;
+        for (std::size_t c0 = 0; c0 < mids.size(); c0 += kChunk) {
+            const std::size_t c1 = std::min(mids.size(), c0 + kChunk);
+            for (std::size_t i = c0; i < c1; ++i) {
+                mCells[i - c0] = leafCell(mids[i], cell);
+                mHashes[i - c0] = static_cast<std::uint32_t>(cellHash(mCells[i - c0]) & mMask);
+            }
+            for (std::size_t i = c0; i < c1; ++i) {
+                const std::size_t k = i - c0;
+                if (k + kAhead < c1 - c0) __builtin_prefetch(&mSlots[mHashes[k + kAhead]]);
+                if (k + kKeyAhead < c1 - c0)
+                    __builtin_prefetch(&mKeys[std::min<std::size_t>(
+                        mSlots[mHashes[k + kKeyAhead]].group, mKeys.size() - 1)]);
+                const CellKey& key = mCells[k];
+                std::size_t slot = mHashes[k];
+                while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
+                    slot = (slot + 1) & mMask;
+                Slot& s = mSlots[slot];
+                std::uint32_t group = s.group;
+                if (s.stamp != mStamp) {
+                    group = count;
+                    s.stamp = mStamp;
+                    s.group = group;
+                    mKeys[count] = key;
+                    ++count;
+                }
+                groupOf[i] = group;
+                if (count > limit) return limit + 1;
+            }
         }
         return count;
     }
@@ -109,7 +103,10 @@ private:
         std::uint32_t group = 0;
     };
     std::vector<Slot> mSlots;
-    std::vector<CellKey> mKeys; ///< the cells of the current fill, by group
+    static constexpr std::size_t kChunk = 512, kAhead = 10, kKeyAhead = 4;
+    std::vector<CellKey> mKeys;         ///< the cells of the current fill, by group
+    std::vector<CellKey> mCells;        ///< a chunk's cells
+    std::vector<std::uint32_t> mHashes; ///< and their first slots
     std::size_t mMask = 0;
     std::uint32_t mStamp = 0;
 };
@@ -150,117 +147,6 @@ private:
     std::vector<std::uint32_t> mLeaves;
 };
 
-// The corners appendLeafCards gives a leaf.
-// The same from the leaf's heading and left axes (made once by a caller that needs them too).
-void leafCorners(const skel::Leaf& leaf, const glm::vec3& heading, const glm::vec3& left,
-                 float aspect, float scale, glm::vec3 out[4]) {
-    const float len = leaf.size * scale;
-    const glm::vec3 h = heading * len;
-    const glm::vec3 l = left * (0.5f * aspect * len);
-    out[0] = leaf.position + l;
-    out[1] = leaf.position - l;
-    out[2] = leaf.position - l + h;
-    out[3] = leaf.position + l + h;
-}
-
-void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
-    leafCorners(leaf, skel::headingOf(leaf.orientation), skel::leftOf(leaf.orientation), aspect,
-                scale, out);
-}
-
-// Largest eigenvectors of \p n (at most kFitLanes) symmetric 3x3 matrices by power iteration, each
-// from its \p v (replaced by the result): 24 steps, a matrix whose product vanishes keeps its
-// vector. The direction after 24 products does not depend on where the vector is normalised, so
-// it is normalised once every kBlock products (after the matrix is scaled to unit absolute sum,
-// so that four products neither overflow nor underflow): a division and a square root a block,
-// not three divisions and a square root a step (perf record of the English oak: principal 6.6 %
-// of the tree, all of it waiting on the divider). The result is the same up to rounding. The n
-// chains are independent and advance in step, two to an SSE2 register.
-constexpr std::size_t kFitLanes = 8;
-constexpr int kPowerSteps = 24;
-constexpr int kBlock = 4;
-// A product of kBlock steps of a unit-sum matrix under this vanishes: the matrix's product
-// does (1e-18 a step).
-constexpr double kVanish = 1e-72;
-
-void principal(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
-    double scale[kFitLanes];
-    for (std::size_t k = 0; k < n; ++k) {
-        double sum = 0.0;
-        for (int col = 0; col < 3; ++col)
-            for (int row = 0; row < 3; ++row)
-                sum += std::abs(c[k][col][row]);
-        scale[k] = sum > 0.0 ? 1.0 / sum : 0.0;
-    }
-#if defined(__SSE2__)
-    // Lanes past n: a zero matrix, whose product vanishes at the first block.
-    alignas(16) double m[9][kFitLanes] = {};
-    alignas(16) double x[kFitLanes] = {}, y[kFitLanes] = {}, z[kFitLanes] = {};
-    for (std::size_t k = 0; k < n; ++k) {
-        for (int col = 0; col < 3; ++col)
-            for (int row = 0; row < 3; ++row)
-                m[3 * col + row][k] = c[k][col][row] * scale[k];
-        x[k] = v[k].x;
-        y[k] = v[k].y;
-        z[k] = v[k].z;
-    }
-    constexpr int kPairs = static_cast<int>(kFitLanes / 2);
-    __m128d M[kPairs][9], X[kPairs], Y[kPairs], Z[kPairs], done[kPairs];
-    for (int h = 0; h < kPairs; ++h) {
-        for (int e = 0; e < 9; ++e)
-            M[h][e] = _mm_load_pd(&m[e][2 * h]);
-        X[h] = _mm_load_pd(&x[2 * h]);
-        Y[h] = _mm_load_pd(&y[2 * h]);
-        Z[h] = _mm_load_pd(&z[2 * h]);
-        done[h] = _mm_setzero_pd();
-    }
-    const __m128d tiny = _mm_set1_pd(kVanish);
-    const __m128d one = _mm_set1_pd(1.0);
-    for (int i = 0; i < kPowerSteps; i += kBlock)
-        for (int h = 0; h < kPairs; ++h) {
-            const __m128d* q = M[h];
-            __m128d nx = X[h], ny = Y[h], nz = Z[h];
-            for (int b = 0; b < kBlock; ++b) {
-                const __m128d px = nx, py = ny, pz = nz;
-                nx = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[0], px), _mm_mul_pd(q[3], py)),
-                                _mm_mul_pd(q[6], pz));
-                ny = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[1], px), _mm_mul_pd(q[4], py)),
-                                _mm_mul_pd(q[7], pz));
-                nz = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[2], px), _mm_mul_pd(q[5], py)),
-                                _mm_mul_pd(q[8], pz));
-            }
-            const __m128d len = _mm_sqrt_pd(
-                _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, nx), _mm_mul_pd(ny, ny)), _mm_mul_pd(nz, nz)));
-            done[h] = _mm_or_pd(done[h], _mm_cmplt_pd(len, tiny));
-            const __m128d keep = done[h];
-            // A kept lane's len may be 0: its quotient is discarded.
-            const __m128d inv = _mm_div_pd(one, _mm_or_pd(len, _mm_and_pd(keep, one)));
-            X[h] = _mm_or_pd(_mm_and_pd(keep, X[h]), _mm_andnot_pd(keep, _mm_mul_pd(nx, inv)));
-            Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_mul_pd(ny, inv)));
-            Z[h] = _mm_or_pd(_mm_and_pd(keep, Z[h]), _mm_andnot_pd(keep, _mm_mul_pd(nz, inv)));
-        }
-    for (int h = 0; h < kPairs; ++h) {
-        _mm_store_pd(&x[2 * h], X[h]);
-        _mm_store_pd(&y[2 * h], Y[h]);
-        _mm_store_pd(&z[2 * h], Z[h]);
-    }
-    for (std::size_t k = 0; k < n; ++k)
-        v[k] = glm::dvec3(x[k], y[k], z[k]);
-#else
-    for (std::size_t k = 0; k < n; ++k) {
-        const glm::dmat3 a = c[k] * scale[k];
-        for (int i = 0; i < kPowerSteps; i += kBlock) {
-            glm::dvec3 next = v[k];
-            for (int b = 0; b < kBlock; ++b)
-                next = a * next;
-            const double len = glm::length(next);
-            if (len < kVanish) break;
-            v[k] = next * (1.0 / len);
-        }
-    }
-#endif
-}
-
 glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
     const glm::dvec3 a = std::abs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     return glm::normalize(glm::cross(v, a));
@@ -274,62 +160,24 @@ constexpr double kCardShrink = 0.9;
 struct FittedCard {
     glm::vec3 corners[4];
     glm::vec3 normal;
-    /// The card as a leaf whose card (size long, aspect x size wide) holds it: what the
-    /// obstacle check of a forest tests.
-    skel::Leaf bounds;      ///< made only for an accept callback
+};
+
+// A fitted card as a leaf whose card (size long, aspect x size wide) holds it: what the
+// obstacle check of a forest tests; made only for an accept callback (kept apart: the oak's
+// ~4,800 fits a tree were written, zeroed first, and read back at 132 bytes each, not 60).
+struct CardBounds {
+    skel::Leaf bounds;
     skel::Leaf crossBounds; ///< the same for the crossing card (LeafClusterSettings::crossed)
 };
 
-// What a group's card is fitted from: its leaves' corners, their mean and covariance, and
-// the sums of the leaves' axes.
-struct FitInput {
-    std::vector<glm::dvec3> pts;
-    glm::dvec3 heading{0.0}, up{0.0}, left{0.0}, m{0.0};
-    glm::dmat3 cov{0.0};
-};
-
-void prepareFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
-                float aspect, float scale, FitInput& in) {
-    std::vector<glm::dvec3>& pts = in.pts;
-    pts.clear();
-    pts.reserve(4 * group.size());
-    glm::dvec3 heading(0.0), up(0.0), left(0.0);
-    for (std::uint32_t i : group) {
-        // Each axis made once a leaf (the corners and the sums both need them).
-        const glm::vec3 h = skel::headingOf(leaves[i].orientation);
-        const glm::vec3 l = skel::leftOf(leaves[i].orientation);
-        glm::vec3 c[4];
-        leafCorners(leaves[i], h, l, aspect, scale, c);
-        for (const glm::vec3& q : c)
-            pts.emplace_back(q);
-        heading += glm::dvec3(h);
-        up += glm::dvec3(skel::upOf(leaves[i].orientation));
-        left += glm::dvec3(l);
-    }
-    glm::dvec3 m(0.0);
-    for (const glm::dvec3& q : pts)
-        m += q;
-    m /= static_cast<double>(pts.size());
-    glm::dmat3 cov(0.0);
-    for (const glm::dvec3& q : pts) {
-        const glm::dvec3 d = q - m;
-        cov += glm::outerProduct(d, d);
-    }
-    in.heading = heading;
-    in.up = up;
-    in.left = left;
-    in.m = m;
-    in.cov = cov;
-}
-
-glm::dvec3 firstSeed(const FitInput& in) {
+glm::dvec3 firstSeed(const CardFitInput& in) {
     const glm::dvec3 seed1 =
         glm::length(in.heading) > 1e-9 ? glm::normalize(in.heading) : glm::dvec3(0, 1, 0);
     return seed1 + glm::dvec3(1e-3, 2e-3, 3e-3);
 }
 
 // The covariance without e1's part, and the start of the second power iteration.
-glm::dmat3 secondMatrix(const FitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
+glm::dmat3 secondMatrix(const CardFitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
     const double l1 = glm::dot(e1, in.cov * e1);
     const glm::dmat3 rest = in.cov - l1 * glm::outerProduct(e1, e1);
     glm::dvec3 s2 = in.left - glm::dot(in.left, e1) * e1;
@@ -348,8 +196,8 @@ struct CardAxes {
 // normalisations (a square root and a division each) waited on the one before; cards side by
 // side overlap theirs (perf record of the English oak: finishFit 4.6 %, on those chains). Each
 // card's arithmetic is its own, in its order: the same axes as one card at a time.
-void cardAxes(const FitInput* in, const std::span<const std::uint32_t>* group, const glm::dvec3* e1,
-              glm::dvec3* e2, CardAxes* out, std::size_t n) {
+void cardAxes(const CardFitInput* in, const std::span<const std::uint32_t>* group,
+              const glm::dvec3* e1, glm::dvec3* e2, CardAxes* out, std::size_t n) {
     for (std::size_t k = 0; k < n; ++k) {
         e2[k] = e2[k] - glm::dot(e2[k], e1[k]) * e1[k];
         if (glm::length(e2[k]) < 1e-9) e2[k] = anyPerpendicular(e1[k]);
@@ -372,20 +220,13 @@ void cardAxes(const FitInput* in, const std::span<const std::uint32_t>* group, c
         out[k].across = glm::normalize(glm::cross(out[k].n, out[k].along));
 }
 
-FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
-                     float aspect, float scale, const FitInput& in, const CardAxes& axes,
-                     bool bounds) {
-    const std::vector<glm::dvec3>& pts = in.pts;
+void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
+               float aspect, float scale, const CardFitInput& in, const CardAxes& axes,
+               FittedCard& f, CardBounds* bounds) {
     const glm::dvec3& m = in.m;
     const glm::dvec3 &n = axes.n, &along = axes.along, &across = axes.across;
-    double a0 = 1e300, a1 = -1e300, c0 = 1e300, c1 = -1e300;
-    for (const glm::dvec3& q : pts) {
-        const double a = glm::dot(q - m, along), c = glm::dot(q - m, across);
-        a0 = std::min(a0, a);
-        a1 = std::max(a1, a);
-        c0 = std::min(c0, c);
-        c1 = std::max(c1, c);
-    }
+    double a0, a1, c0, c1;
+    cardExtent(in, along, across, a0, a1, c0, c1);
     // The corners' box is larger than the leaves it holds (their outlines are not a
     // rectangle): shrunk about its middle so the card covers about what they cover.
     const double shrink = kCardShrink;
@@ -395,7 +236,6 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std:
     c0 = cm + shrink * (c0 - cm);
     c1 = cm + shrink * (c1 - cm);
     const glm::dvec3 lo = m + a0 * along, hi = m + a1 * along;
-    FittedCard f;
     f.corners[0] = glm::vec3(lo + c1 * across);
     f.corners[1] = glm::vec3(lo + c0 * across);
     f.corners[2] = glm::vec3(hi + c0 * across);
@@ -403,58 +243,60 @@ FittedCard finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std:
     f.normal = glm::vec3(n);
     // The bounds only for the obstacle check (two quat_casts a card whose branches the cards'
     // turning every way mispredicted, for nothing without one).
-    if (!bounds) return f;
+    if (!bounds) return;
+    CardBounds& b = *bounds;
     const double length = a1 - a0, width = c1 - c0;
-    f.bounds.position = glm::vec3(lo + cm * across);
-    f.bounds.orientation =
+    b.bounds.position = glm::vec3(lo + cm * across);
+    b.bounds.orientation =
         glm::quat_cast(glm::mat3(glm::vec3(-across), glm::vec3(along), glm::vec3(n)));
-    f.bounds.size = static_cast<float>(std::max(length, width / aspect) / scale);
-    f.bounds.node = leaves[group.front()].node;
+    b.bounds.size = static_cast<float>(std::max(length, width / aspect) / scale);
+    b.bounds.node = leaves[group.front()].node;
     // The crossing card is the card turned a quarter round its centre line: across -> n.
-    f.crossBounds = f.bounds;
-    f.crossBounds.position = glm::vec3(lo + cm * across);
-    f.crossBounds.orientation =
+    b.crossBounds = b.bounds;
+    b.crossBounds.position = glm::vec3(lo + cm * across);
+    b.crossBounds.orientation =
         glm::quat_cast(glm::mat3(glm::vec3(-n), glm::vec3(along), glm::vec3(-across)));
-    return f;
 }
 
 /// The cards of the groups of two or more leaves (the others' stay default): the two power
-/// iterations of kFitLanes groups at a time in step (each group's own arithmetic, in its own
+/// iterations of kPowerLanes groups at a time in step (each group's own arithmetic, in its own
 /// order: the same cards as one group at a time, without waiting on one chain of divisions and
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
 std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
-                                 float aspect, float scale, bool bounds) {
+                                 float aspect, float scale, std::vector<CardBounds>* bounds) {
     std::vector<FittedCard> cards(groups.size());
-    constexpr std::size_t kLanes = kFitLanes;
-    FitInput in[kLanes];
+    if (bounds) bounds->assign(groups.size(), CardBounds{});
+    constexpr std::size_t kLanes = kPowerLanes;
+    CardFitInput in[kLanes];
     std::size_t lane[kLanes];
     std::size_t g = 0;
     while (g < groups.size()) {
         std::size_t n = 0;
+        std::span<const std::uint32_t> members[kLanes];
         for (; g < groups.size() && n < kLanes; ++g) {
             if (groups[g].size() < 2) continue;
-            prepareFit(leaves, groups[g], aspect, scale, in[n]);
+            members[n] = groups[g];
             lane[n++] = g;
         }
         if (n == 0) break;
+        for (std::size_t k = 0; k < n; ++k)
+            prepareCardFit(leaves, members[k], aspect, scale, in[k]);
         glm::dmat3 c[kLanes];
         glm::dvec3 e1[kLanes], e2[kLanes];
         for (std::size_t k = 0; k < n; ++k) {
             c[k] = in[k].cov;
             e1[k] = firstSeed(in[k]);
         }
-        principal(c, e1, n);
+        largestEigenvectors(c, e1, n);
         for (std::size_t k = 0; k < n; ++k)
             c[k] = secondMatrix(in[k], e1[k], e2[k]);
-        principal(c, e2, n);
-        std::span<const std::uint32_t> members[kLanes];
-        for (std::size_t k = 0; k < n; ++k)
-            members[k] = groups[lane[k]];
+        largestEigenvectors(c, e2, n);
         CardAxes axes[kLanes];
         cardAxes(in, members, e1, e2, axes, n);
         for (std::size_t k = 0; k < n; ++k)
-            cards[lane[k]] = finishFit(leaves, members[k], aspect, scale, in[k], axes[k], bounds);
+            finishFit(leaves, members[k], aspect, scale, in[k], axes[k], cards[lane[k]],
+                      bounds ? &(*bounds)[lane[k]] : nullptr);
     }
     return cards;
 }
@@ -477,7 +319,10 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
     // than leaves / leavesPerCard groups (40 sizes at most, the last taken whatever it gives).
     // Each size only counts its cells, and stops counting past the limit; the groups are made
     // once, for the size chosen.
-    const std::vector<glm::dvec3> mids = leafMiddles(leaves);
+    // The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every
+    // cell size tried, so made once a leaf.
+    std::vector<glm::dvec3> mids;
+    leafMiddles(leaves, mids);
     // The groups come from the count that passed, not from one more pass over the leaves.
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));
@@ -517,7 +362,9 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     const auto scale = static_cast<float>(cards.sizeScale);
     LeafGroups groups = groupLeafIndices(leaves, cards.sizeScale, clusters.leavesPerCard);
     // Each group's card, fitted once (it was fitted again for the mesh after the check).
-    std::vector<FittedCard> fitted = fitCards(leaves, groups, aspect, scale, bool(accept));
+    std::vector<CardBounds> bounds;
+    std::vector<FittedCard> fitted =
+        fitCards(leaves, groups, aspect, scale, accept ? &bounds : nullptr);
     if (accept) {
         LeafGroups kept;
         std::vector<FittedCard> keptFits;
@@ -525,11 +372,11 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         keptFits.reserve(groups.size());
         for (std::size_t k = 0; k < groups.size(); ++k) {
             const std::span<const std::uint32_t> g = groups[k];
-            const FittedCard& f = fitted[k];
+            const CardBounds& b = bounds[k];
             if (g.size() < 2 ||
-                (accept(f.bounds) && (!clusters.crossed || accept(f.crossBounds)))) {
+                (accept(b.bounds) && (!clusters.crossed || accept(b.crossBounds)))) {
                 kept.add(g);
-                keptFits.push_back(f);
+                keptFits.push_back(fitted[k]);
             } else {
                 for (const std::uint32_t& i : g) {
                     kept.add({&i, 1});
@@ -555,6 +402,18 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
     const glm::vec2 inset(2.0f / 1024.0f, 2.0f / 512.0f);
     const glm::vec2 tileSize(1.0f / static_cast<float>(kClusterAtlasColumns),
                              1.0f / static_cast<float>(kClusterAtlasRows));
+    // Each tile's corners' uvs, plain and mirrored, made once (not once a vertex).
+    glm::vec2 tileUvs[kClusterSprays + 1][2][4];
+    for (int tile = 0; tile <= kClusterSprays; ++tile)
+        for (int mirror = 0; mirror < 2; ++mirror) {
+            const glm::vec2 origin =
+                tileSize * glm::vec2(static_cast<float>(tile % kClusterAtlasColumns),
+                                     static_cast<float>(tile / kClusterAtlasColumns));
+            const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
+            const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
+            for (int c = 0; c < 4; ++c)
+                tileUvs[tile][mirror][c] = origin + inset + local[c] * (tileSize - 2.0f * inset);
+        }
     std::size_t card = 0;
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::span<const std::uint32_t> group = groups[g];
@@ -579,6 +438,10 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         }
         const bool known =
             skeleton && first.node >= 0 && static_cast<std::size_t>(first.node) < skeleton->size();
+        const std::uint32_t nodeId =
+            first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;
+        const auto order = known ? skeleton->order[static_cast<std::size_t>(first.node)]
+                                 : decltype(skeleton->order)::value_type{0};
         const int sheets = clusters.crossed && group.size() > 1 ? 2 : 1;
         for (int sheet = 0; sheet < sheets; ++sheet, ++card) {
             if (sheet == 1) {
@@ -597,24 +460,17 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
                 mirror = !mirror;
                 tile = (tile + 3) % kClusterSprays; // another spray: no twin pictures
             }
-            const glm::vec2 origin =
-                tileSize * glm::vec2(static_cast<float>(tile % kClusterAtlasColumns),
-                                     static_cast<float>(tile / kClusterAtlasColumns));
-            const float u0 = mirror ? 1.0f : 0.0f, u1 = mirror ? 0.0f : 1.0f;
-            const glm::vec2 local[4] = {{u0, 0}, {u1, 0}, {u1, 1}, {u0, 1}};
             const std::size_t v = v0 + 4 * card;
+            const glm::vec2* uv = tileUvs[tile][mirror ? 1 : 0];
             for (std::size_t c = 0; c < 4; ++c) {
                 out.positions[v + c] = corners[c];
                 out.normals[v + c] = normal;
-                out.uvs[v + c] = origin + inset + local[c] * (tileSize - 2.0f * inset);
-                if (ids)
-                    out.node[v + c] =
-                        first.node >= 0 ? static_cast<std::uint32_t>(first.node) : Mesh::kNoNode;
-                if (wind) {
-                    out.branchOrder[v + c] =
-                        known ? skeleton->order[static_cast<std::size_t>(first.node)] : 0;
-                    out.flexibility[v + c] = 1.0f;
-                }
+                out.uvs[v + c] = uv[c];
+            }
+            if (ids) std::fill_n(out.node.begin() + static_cast<std::ptrdiff_t>(v), 4, nodeId);
+            if (wind) {
+                std::fill_n(out.branchOrder.begin() + static_cast<std::ptrdiff_t>(v), 4, order);
+                std::fill_n(out.flexibility.begin() + static_cast<std::ptrdiff_t>(v), 4, 1.0f);
             }
             const auto b = static_cast<std::uint32_t>(v);
             const std::uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};

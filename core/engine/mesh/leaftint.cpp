@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/mesh/valuenoise.h"
+#include "engine/util/exactround.h"
 #include "engine/util/random.h"
 
 namespace sylva::mesh {
@@ -31,9 +33,9 @@ glm::vec3 rgbToHsv(const glm::vec3& c) {
 }
 
 glm::vec3 hsvToRgb(const glm::vec3& hsv) {
-    const float h = (hsv.x - std::floor(hsv.x)) * 6.0f, s = hsv.y, v = hsv.z;
-    const int i = static_cast<int>(std::floor(h)) % 6;
-    const float f = h - std::floor(h);
+    const float h = (hsv.x - floorExact(hsv.x)) * 6.0f, s = hsv.y, v = hsv.z;
+    const int i = static_cast<int>(floorExact(h)) % 6;
+    const float f = h - floorExact(h);
     const float p = v * (1.0f - s), q = v * (1.0f - s * f), t = v * (1.0f - s * (1.0f - f));
     switch (i) {
     case 0:
@@ -56,63 +58,8 @@ double signedUnit(std::uint64_t h) {
     return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0;
 }
 
-double smooth(double t) {
-    return t * t * (3.0 - 2.0 * t);
-}
-
-// Three value noises in [-1, 1]: random values at the integer lattice, smoothly interpolated.
-// The eight lattice values of the last cell are kept: cards come branch by branch, and the next
-// card is most often in the same cell (1.5 m patches), so the 48 hashes a card are mostly made
-// once a cell (perf record of the English oak: the noise half of tintLeafCards' time). The
-// values are a function of the cell alone: the same noise.
-class ValueNoise {
-public:
-    explicit ValueNoise(std::uint64_t seed) : mSeed(seed) {}
-
-    glm::dvec3 operator()(const glm::dvec3& p) {
-        const glm::dvec3 f = glm::floor(p);
-        const glm::dvec3 t = p - f;
-        const auto ix = static_cast<std::int64_t>(f.x), iy = static_cast<std::int64_t>(f.y),
-                   iz = static_cast<std::int64_t>(f.z);
-        if (!mValid || ix != mCell[0] || iy != mCell[1] || iz != mCell[2]) {
-            for (int dz = 0; dz < 2; ++dz)
-                for (int dy = 0; dy < 2; ++dy)
-                    for (int dx = 0; dx < 2; ++dx)
-                        mCorner[dz][dy][dx] = lattice(ix + dx, iy + dy, iz + dz);
-            mCell[0] = ix;
-            mCell[1] = iy;
-            mCell[2] = iz;
-            mValid = true;
-        }
-        const double sx = smooth(t.x), sy = smooth(t.y), sz = smooth(t.z);
-        glm::dvec3 c[2][2];
-        for (int dz = 0; dz < 2; ++dz)
-            for (int dy = 0; dy < 2; ++dy) {
-                const glm::dvec3& a = mCorner[dz][dy][0];
-                const glm::dvec3& b = mCorner[dz][dy][1];
-                c[dz][dy] = a + (b - a) * sx;
-            }
-        const glm::dvec3 y0 = c[0][0] + (c[0][1] - c[0][0]) * sy;
-        const glm::dvec3 y1 = c[1][0] + (c[1][1] - c[1][0]) * sy;
-        return y0 + (y1 - y0) * sz;
-    }
-
-private:
-    glm::dvec3 lattice(std::int64_t x, std::int64_t y, std::int64_t z) const {
-        const std::uint64_t h = mixSeed(
-            mixSeed(mixSeed(mSeed, static_cast<std::uint64_t>(x)), static_cast<std::uint64_t>(y)),
-            static_cast<std::uint64_t>(z));
-        return glm::dvec3(signedUnit(mixSeed(h, 1)), signedUnit(mixSeed(h, 2)),
-                          signedUnit(mixSeed(h, 3)));
-    }
-    std::uint64_t mSeed;
-    bool mValid = false;
-    std::int64_t mCell[3] = {0, 0, 0};
-    glm::dvec3 mCorner[2][2][2];
-};
-
 std::uint8_t toByte(double v) {
-    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+    return static_cast<std::uint8_t>(llroundExact(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
 // A card's own share of its variation; the rest follows the crown's patches. Patches are
@@ -164,35 +111,63 @@ Reference reference(const glm::vec3& referenceSrgb) {
     return r;
 }
 
-glm::u8vec4 multiplier(const Reference& r, double hue, double saturation, double value) {
-    glm::vec3 hsv = r.hsv;
-    hsv.x += static_cast<float>(hue / 360.0);
-    hsv.y = std::clamp(hsv.y * static_cast<float>(1.0 + saturation), 0.0f, 1.0f);
-    hsv.z *= static_cast<float>(std::clamp(value, 0.0, 1.0));
-    const glm::vec3 turned = hsvToRgb(hsv);
-    double m[3];
-    for (int k = 0; k < 3; ++k)
-        m[k] = srgbToLinear(turned[k]) / r.lin[k];
-    // A multiplier cannot brighten: when a channel would have to grow (green turned toward
-    // yellow needs more red), the others shrink instead, so the hue turns as asked and the
-    // card is a little darker. Channels that carry under a quarter of the colour's strongest
-    // are left out of that (a leaf green's blue, an autumn orange's blue: their ratios swing
-    // wildly for no visible change), and every channel keeps a quarter at least, so as not to
-    // strip it from a texture's highlights.
-    double scale = 1.0;
-    for (int k = 0; k < 3; ++k)
-        if (r.strong[k]) scale = std::max(scale, m[k]);
-    glm::u8vec4 out(255);
-    for (int k = 0; k < 3; ++k)
-        out[k] = toByte(std::clamp(m[k] / scale, 0.25, 1.0));
-    return out;
+// The most multipliers made together.
+constexpr std::size_t kTintLanes = 8;
+
+// The multipliers of \p n (at most kTintLanes) cards' variations, each stage for every card
+// before the next: a card's multiplier is one long chain (divisions, the HSV turn, three
+// powf, three more divisions) and the cards' chains side by side overlap (perf record of the
+// English oak: multiplier and powf half of tintLeafCards' time). Each card's arithmetic its
+// own, in its order: the same bytes as one card at a time.
+void multipliers(const Reference& r, const double* hue, const double* saturation,
+                 const double* value, glm::u8vec4* out, std::size_t n) {
+    glm::vec3 turned[kTintLanes];
+    for (std::size_t c = 0; c < n; ++c) {
+        glm::vec3 hsv = r.hsv;
+        hsv.x += static_cast<float>(hue[c] / 360.0);
+        hsv.y = std::clamp(hsv.y * static_cast<float>(1.0 + saturation[c]), 0.0f, 1.0f);
+        hsv.z *= static_cast<float>(std::clamp(value[c], 0.0, 1.0));
+        turned[c] = hsvToRgb(hsv);
+    }
+    float linear[kTintLanes][3];
+    for (std::size_t c = 0; c < n; ++c)
+        for (int k = 0; k < 3; ++k)
+            linear[c][k] = srgbToLinear(turned[c][k]);
+    for (std::size_t c = 0; c < n; ++c) {
+        double m[3];
+        for (int k = 0; k < 3; ++k)
+            m[k] = linear[c][k] / r.lin[k];
+        // A multiplier cannot brighten: when a channel would have to grow (green turned toward
+        // yellow needs more red), the others shrink instead, so the hue turns as asked and the
+        // card is a little darker. Channels that carry under a quarter of the colour's
+        // strongest are left out of that (a leaf green's blue, an autumn orange's blue: their
+        // ratios swing wildly for no visible change), and every channel keeps a quarter at
+        // least, so as not to strip it from a texture's highlights.
+        double scale = 1.0;
+        for (int k = 0; k < 3; ++k)
+            if (r.strong[k]) scale = std::max(scale, m[k]);
+        out[c] = glm::u8vec4(255);
+        for (int k = 0; k < 3; ++k)
+            out[c][k] = toByte(std::clamp(m[k] / scale, 0.25, 1.0));
+    }
 }
 
 } // namespace
 
 glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double saturation,
                            double value) {
-    return multiplier(reference(referenceSrgb), hue, saturation, value);
+    glm::u8vec4 out;
+    multipliers(reference(referenceSrgb), &hue, &saturation, &value, &out, 1);
+    return out;
+}
+
+void tintMultipliers(const glm::vec3& referenceSrgb, std::span<const double> hue,
+                     std::span<const double> saturation, std::span<const double> value,
+                     std::span<glm::u8vec4> out) {
+    const Reference ref = reference(referenceSrgb);
+    for (std::size_t first = 0; first < out.size(); first += kTintLanes)
+        multipliers(ref, &hue[first], &saturation[first], &value[first], &out[first],
+                    std::min(kTintLanes, out.size() - first));
 }
 
 void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation& variation,
@@ -206,6 +181,21 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
     ValueNoise noise(mixSeed(seed, 0x9a7c));
     const Reference ref = reference(referenceSrgb);
     const double invPatch = patchSize > 0.0 ? 1.0 / patchSize : 0.0;
+    if (invPatch > 0.0) {
+        // Every card's centre is in its vertices' box: its patches' lattice values made once.
+        glm::vec3 lo = mesh.positions[firstVertex], hi = lo;
+        for (std::size_t v = firstVertex; v < n; ++v) {
+            lo = glm::min(lo, mesh.positions[v]);
+            hi = glm::max(hi, mesh.positions[v]);
+        }
+        noise.cover(glm::dvec3(lo) * invPatch, glm::dvec3(hi) * invPatch,
+                    2 * (n - firstVertex) + 64);
+    }
+    // The cards' variations kTintLanes at a time, then their multipliers together.
+    double hue[kTintLanes], saturation[kTintLanes], value[kTintLanes];
+    std::size_t first[kTintLanes];
+    glm::u8vec4 tint[kTintLanes];
+    std::size_t lanes = 0;
     for (std::size_t v = firstVertex; v < n; v += 4) {
         const std::size_t end = std::min(n, v + 4);
         glm::dvec3 centre(0.0);
@@ -216,7 +206,7 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
         // line, their corners rounded differently) get one colour.
         std::uint64_t h = seed;
         for (int k = 0; k < 3; ++k)
-            h = mixSeed(h, static_cast<std::uint64_t>(std::llround(centre[k] * 1000.0)));
+            h = mixSeed(h, static_cast<std::uint64_t>(llroundExact(centre[k] * 1000.0)));
         const glm::dvec3 patch = invPatch > 0.0 ? noise(centre * invPatch) : glm::dvec3(0.0);
         double r[3];
         for (int k = 0; k < 3; ++k) {
@@ -233,11 +223,17 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
         const std::size_t card = (v - firstVertex) / 4;
         const double lit =
             shaded && card < cardLight.size() ? static_cast<double>(cardLight[card]) : 1.0;
-        const glm::u8vec4 tint = multiplier(ref, variation.hue * r[0], variation.saturation * r[1],
-                                            (1.0 - variation.brightness * dark * dark) *
-                                                (1.0 - lightShading * (1.0 - lit)));
-        for (std::size_t k = v; k < end; ++k)
-            mesh.colors[k] = tint;
+        hue[lanes] = variation.hue * r[0];
+        saturation[lanes] = variation.saturation * r[1];
+        value[lanes] =
+            (1.0 - variation.brightness * dark * dark) * (1.0 - lightShading * (1.0 - lit));
+        first[lanes++] = v;
+        if (lanes < kTintLanes && end < n) continue;
+        multipliers(ref, hue, saturation, value, tint, lanes);
+        for (std::size_t c = 0; c < lanes; ++c)
+            for (std::size_t k = first[c]; k < std::min(n, first[c] + 4); ++k)
+                mesh.colors[k] = tint[c];
+        lanes = 0;
     }
 }
 

@@ -56,6 +56,14 @@ glm::vec3 leafReferenceColor(const LeafTintSettings& settings, Season season, bo
 glm::u8vec4 tintMultiplier(const glm::vec3& referenceSrgb, double hue, double saturation,
                            double value);
 
+/// tintMultiplier for many cards: \p hue, \p saturation and \p value of each card, its
+/// multiplier in \p out (all four the same length). The same bytes as tintMultiplier card by
+/// card; eight cards at a time, each stage of the computation for all eight before the next
+/// (their chains of divisions and powf overlap: what tintLeafCards uses).
+void tintMultipliers(const glm::vec3& referenceSrgb, std::span<const double> hue,
+                     std::span<const double> saturation, std::span<const double> value,
+                     std::span<glm::u8vec4> out);
+
 /// Gives the quads (four vertices a card, as appendLeafCards and appendLeafClusterCards make
 /// them) from \p firstVertex to the end of \p mesh their Mesh::colors: each card one colour,
 /// from a random of \p seed and the card's centre to a millimetre (the two sheets of a crossed

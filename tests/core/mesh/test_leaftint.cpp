@@ -2,12 +2,14 @@
 
 #include <cmath>
 #include <set>
+#include <vector>
 
 #include "../common/testtrees.h"
 #include "engine/mesh/impostor.h"
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/leaftint.h"
 #include "engine/mesh/treemesh.h"
+#include "engine/util/random.h"
 
 using namespace sylva;
 using sylva::testing::leafyTree;
@@ -237,4 +239,27 @@ TEST(LeafTint, CardsAddedLaterKeepTheColoursInStep) {
     ASSERT_EQ(m.colors.size(), m.positions.size());
     EXPECT_EQ(m.colors.back(), glm::u8vec4(255));
     EXPECT_NE(m.colors[before - 1], glm::u8vec4(255));
+}
+
+// The multipliers made eight cards at a time (what tintLeafCards does) are tintMultiplier's,
+// card by card, for every batch length, the reference colours of the seasons and an autumn
+// orange, and variations past their ranges (clamped).
+TEST(LeafTint, BatchedMultipliersAreTheSingleOnes) {
+    Rng rng(17);
+    for (const glm::vec3& reference :
+         {kGreen, glm::vec3(0.42f, 0.58f, 0.18f), glm::vec3(0.8f, 0.45f, 0.1f)})
+        for (std::size_t count : {1u, 5u, 8u, 9u, 100u}) {
+            std::vector<double> hue(count), saturation(count), value(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                hue[i] = rng.uniform(-100.0, 100.0);
+                saturation[i] = rng.uniform(-1.2, 1.2);
+                value[i] = rng.uniform(-0.1, 1.1);
+            }
+            std::vector<glm::u8vec4> batched(count);
+            mesh::tintMultipliers(reference, hue, saturation, value, batched);
+            for (std::size_t i = 0; i < count; ++i)
+                EXPECT_EQ(batched[i],
+                          mesh::tintMultiplier(reference, hue[i], saturation[i], value[i]))
+                    << count << " " << i;
+        }
 }

@@ -1,0 +1,300 @@
+#include "engine/mesh/cardfit.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#include <xmmintrin.h>
+#endif
+
+namespace sylva::mesh {
+
+void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
+                         std::span<const std::uint32_t> group, float aspect, float scale,
+                         CardFitInput& in) {
+    std::vector<glm::vec3>& pts = in.corners;
+    pts.resize(4 * group.size());
+    glm::dvec3 heading(0.0), up(0.0), left(0.0);
+    glm::vec3* out = pts.data();
+    for (std::uint32_t i : group) {
+        // Each axis made once a leaf (the corners and the sums both need them).
+        const glm::vec3 h = skel::headingOf(leaves[i].orientation);
+        const glm::vec3 l = skel::leftOf(leaves[i].orientation);
+        leafCorners(leaves[i], h, l, aspect, scale, out);
+        out += 4;
+        heading += glm::dvec3(h);
+        up += glm::dvec3(skel::upOf(leaves[i].orientation));
+        left += glm::dvec3(l);
+    }
+    glm::dvec3 m(0.0);
+    for (const glm::vec3& q : pts)
+        m += glm::dvec3(q);
+    m /= static_cast<double>(pts.size());
+    glm::dmat3 cov(0.0);
+    for (const glm::vec3& q : pts) {
+        const glm::dvec3 d = glm::dvec3(q) - m;
+        cov += glm::outerProduct(d, d);
+    }
+    in.heading = heading;
+    in.up = up;
+    in.left = left;
+    in.m = m;
+    in.cov = cov;
+}
+
+void leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+    mids.resize(leaves.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const skel::Leaf& leaf = leaves[i];
+        mids[i] = glm::dvec3(leaf.position) + 0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) *
+                                                  static_cast<double>(leaf.size);
+    }
+}
+
+void cardExtentPlain(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
+                     double& a0, double& a1, double& c0, double& c1) {
+    a0 = 1e300, a1 = -1e300, c0 = 1e300, c1 = -1e300;
+    for (const glm::vec3& p : in.corners) {
+        const glm::dvec3 q(p);
+        const double a = glm::dot(q - in.m, along), c = glm::dot(q - in.m, across);
+        a0 = std::min(a0, a);
+        a1 = std::max(a1, a);
+        c0 = std::min(c0, c);
+        c1 = std::max(c1, c);
+    }
+}
+
+#if defined(__SSE2__)
+
+namespace {
+
+// A float corner's x and y as two doubles, its z as the low double.
+__m128d xyOf(const glm::vec3& p) {
+    // __m128i may alias any type: the two floats as one 64-bit load.
+    return _mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(&p.x))));
+}
+__m128d zOf(const glm::vec3& p) {
+    return _mm_cvtss_sd(_mm_setzero_pd(), _mm_load_ss(&p.z));
+}
+
+// glm's q * v (v + ((uv * w) + uuv) * 2, uv = cross(q.xyz, v), uuv = cross(q.xyz, uv), cross(a,
+// b) = (a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y)) for four
+// quaternions, each lane the same float operations in the same order.
+struct Vec4x3 {
+    __m128 x, y, z;
+};
+Vec4x3 rotate(__m128 qx, __m128 qy, __m128 qz, __m128 qw, float vx, float vy, float vz) {
+    const __m128 Vx = _mm_set1_ps(vx), Vy = _mm_set1_ps(vy), Vz = _mm_set1_ps(vz);
+    const __m128 uvx = _mm_sub_ps(_mm_mul_ps(qy, Vz), _mm_mul_ps(Vy, qz));
+    const __m128 uvy = _mm_sub_ps(_mm_mul_ps(qz, Vx), _mm_mul_ps(Vz, qx));
+    const __m128 uvz = _mm_sub_ps(_mm_mul_ps(qx, Vy), _mm_mul_ps(Vx, qy));
+    const __m128 uuvx = _mm_sub_ps(_mm_mul_ps(qy, uvz), _mm_mul_ps(uvy, qz));
+    const __m128 uuvy = _mm_sub_ps(_mm_mul_ps(qz, uvx), _mm_mul_ps(uvz, qx));
+    const __m128 uuvz = _mm_sub_ps(_mm_mul_ps(qx, uvy), _mm_mul_ps(uvx, qy));
+    const __m128 two = _mm_set1_ps(2.0f);
+    return {_mm_add_ps(Vx, _mm_mul_ps(_mm_add_ps(_mm_mul_ps(uvx, qw), uuvx), two)),
+            _mm_add_ps(Vy, _mm_mul_ps(_mm_add_ps(_mm_mul_ps(uvy, qw), uuvy), two)),
+            _mm_add_ps(Vz, _mm_mul_ps(_mm_add_ps(_mm_mul_ps(uvz, qw), uuvz), two))};
+}
+
+// Four lanes' (x, y, z) as four (x, y, z, 0) vectors, one a lane.
+void toPoints(const Vec4x3& v, __m128 out[4]) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+    out[3] = _mm_setzero_ps();
+    _MM_TRANSPOSE4_PS(out[0], out[1], out[2], out[3]);
+}
+
+// A point (x, y, z, 0)'s x and y as doubles, and its z (and 0).
+__m128d xyOf(__m128 p) {
+    return _mm_cvtps_pd(p);
+}
+__m128d zOf(__m128 p) {
+    return _mm_cvtps_pd(_mm_movehl_ps(p, p));
+}
+
+} // namespace
+
+void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
+                    float aspect, float scale, CardFitInput& in) {
+    static_assert(offsetof(glm::quat, w) == 3 * sizeof(float), "a quaternion is x, y, z, w");
+    std::vector<glm::vec3>& pts = in.corners;
+    const std::size_t n = group.size();
+    pts.resize(4 * n);
+    const float halfAspect = 0.5f * aspect; // leafCorners' 0.5f * aspect * len
+    const __m128 scale4 = _mm_set1_ps(scale);
+    __m128d headingXY = _mm_setzero_pd(), headingZ = _mm_setzero_pd();
+    __m128d upXY = _mm_setzero_pd(), upZ = _mm_setzero_pd();
+    __m128d leftXY = _mm_setzero_pd(), leftZ = _mm_setzero_pd();
+    __m128d sumXY = _mm_setzero_pd(), sumZ = _mm_setzero_pd();
+    // Four leaves at a time (the last ones repeated to fill a four): their axes and corners
+    // as leafCorners and skel::headingOf, leftOf, upOf make them, lane by lane.
+    for (std::size_t b = 0; b < n; b += 4) {
+        const std::size_t r = std::min<std::size_t>(4, n - b);
+        const skel::Leaf* leaf[4];
+        for (std::size_t j = 0; j < 4; ++j)
+            leaf[j] = &leaves[group[b + std::min(j, r - 1)]];
+        __m128 qx = _mm_loadu_ps(&leaf[0]->orientation.x);
+        __m128 qy = _mm_loadu_ps(&leaf[1]->orientation.x);
+        __m128 qz = _mm_loadu_ps(&leaf[2]->orientation.x);
+        __m128 qw = _mm_loadu_ps(&leaf[3]->orientation.x);
+        _MM_TRANSPOSE4_PS(qx, qy, qz, qw);
+        __m128 px = _mm_loadu_ps(&leaf[0]->position.x); // x, y, z and the orientation's x
+        __m128 py = _mm_loadu_ps(&leaf[1]->position.x);
+        __m128 pz = _mm_loadu_ps(&leaf[2]->position.x);
+        __m128 pw = _mm_loadu_ps(&leaf[3]->position.x);
+        _MM_TRANSPOSE4_PS(px, py, pz, pw);
+        const Vec4x3 h = rotate(qx, qy, qz, qw, 0.0f, 1.0f, 0.0f);
+        const Vec4x3 l = rotate(qx, qy, qz, qw, -1.0f, 0.0f, 0.0f);
+        const Vec4x3 u = rotate(qx, qy, qz, qw, 0.0f, 0.0f, 1.0f);
+        const __m128 len = _mm_mul_ps(
+            _mm_set_ps(leaf[3]->size, leaf[2]->size, leaf[1]->size, leaf[0]->size), scale4);
+        const __m128 across = _mm_mul_ps(_mm_set1_ps(halfAspect), len);
+        const Vec4x3 hl{_mm_mul_ps(h.x, len), _mm_mul_ps(h.y, len), _mm_mul_ps(h.z, len)};
+        const Vec4x3 ll{_mm_mul_ps(l.x, across), _mm_mul_ps(l.y, across), _mm_mul_ps(l.z, across)};
+        const Vec4x3 plus{_mm_add_ps(px, ll.x), _mm_add_ps(py, ll.y), _mm_add_ps(pz, ll.z)};
+        const Vec4x3 minus{_mm_sub_ps(px, ll.x), _mm_sub_ps(py, ll.y), _mm_sub_ps(pz, ll.z)};
+        const Vec4x3 tipMinus{_mm_add_ps(minus.x, hl.x), _mm_add_ps(minus.y, hl.y),
+                              _mm_add_ps(minus.z, hl.z)};
+        const Vec4x3 tipPlus{_mm_add_ps(plus.x, hl.x), _mm_add_ps(plus.y, hl.y),
+                             _mm_add_ps(plus.z, hl.z)};
+        __m128 corner[4][4], heading[4], left[4], up[4];
+        toPoints(plus, corner[0]);
+        toPoints(minus, corner[1]);
+        toPoints(tipMinus, corner[2]);
+        toPoints(tipPlus, corner[3]);
+        toPoints(h, heading);
+        toPoints(l, left);
+        toPoints(u, up);
+        for (std::size_t j = 0; j < r; ++j) {
+            glm::vec3* out = &pts[4 * (b + j)];
+            for (int c = 0; c < 4; ++c) {
+                const __m128 p = corner[c][j];
+                _mm_storel_pi(reinterpret_cast<__m64*>(&out[c].x), p);
+                _mm_store_ss(&out[c].z, _mm_movehl_ps(p, p));
+                sumXY = _mm_add_pd(sumXY, xyOf(p));
+                sumZ = _mm_add_pd(sumZ, zOf(p));
+            }
+            headingXY = _mm_add_pd(headingXY, xyOf(heading[j]));
+            headingZ = _mm_add_pd(headingZ, zOf(heading[j]));
+            upXY = _mm_add_pd(upXY, xyOf(up[j]));
+            upZ = _mm_add_pd(upZ, zOf(up[j]));
+            leftXY = _mm_add_pd(leftXY, xyOf(left[j]));
+            leftZ = _mm_add_pd(leftZ, zOf(left[j]));
+        }
+    }
+    const double count = static_cast<double>(pts.size());
+    const __m128d mXY = _mm_div_pd(sumXY, _mm_set1_pd(count));
+    const __m128d mZ = _mm_div_sd(sumZ, _mm_set_sd(count));
+    // cov[i][j] += d[j] * d[i]: column i's rows x and y are dXY * d[i], its row z d[z] * d[i]
+    // (the product the other way round: the same double); the rows z of columns x and y
+    // together, d[z] * dXY.
+    __m128d col0 = _mm_setzero_pd(), col1 = _mm_setzero_pd(), col2 = _mm_setzero_pd();
+    __m128d row2 = _mm_setzero_pd(), zz = _mm_setzero_pd();
+    for (const glm::vec3& q : pts) {
+        const __m128d dXY = _mm_sub_pd(xyOf(q), mXY);
+        const __m128d dZ = _mm_sub_sd(zOf(q), mZ);
+        const __m128d dx = _mm_unpacklo_pd(dXY, dXY), dy = _mm_unpackhi_pd(dXY, dXY);
+        const __m128d dz = _mm_unpacklo_pd(dZ, dZ);
+        col0 = _mm_add_pd(col0, _mm_mul_pd(dXY, dx));
+        col1 = _mm_add_pd(col1, _mm_mul_pd(dXY, dy));
+        col2 = _mm_add_pd(col2, _mm_mul_pd(dXY, dz));
+        row2 = _mm_add_pd(row2, _mm_mul_pd(dz, dXY));
+        zz = _mm_add_sd(zz, _mm_mul_sd(dZ, dZ));
+    }
+    alignas(16) double c0[2], c1[2], c2[2], r2[2], v[6];
+    _mm_store_pd(c0, col0);
+    _mm_store_pd(c1, col1);
+    _mm_store_pd(c2, col2);
+    _mm_store_pd(r2, row2);
+    in.cov = glm::dmat3(c0[0], c0[1], r2[0], c1[0], c1[1], r2[1], c2[0], c2[1], _mm_cvtsd_f64(zz));
+    _mm_store_pd(v, mXY);
+    in.m = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(mZ));
+    _mm_store_pd(v, headingXY);
+    in.heading = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(headingZ));
+    _mm_store_pd(v, upXY);
+    in.up = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(upZ));
+    _mm_store_pd(v, leftXY);
+    in.left = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(leftZ));
+}
+
+void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+    const std::size_t n = leaves.size();
+    mids.resize(n);
+    const __m128d half = _mm_set1_pd(0.5);
+    for (std::size_t b = 0; b < n; b += 4) {
+        const std::size_t r = std::min<std::size_t>(4, n - b);
+        const skel::Leaf* leaf[4];
+        for (std::size_t j = 0; j < 4; ++j)
+            leaf[j] = &leaves[b + std::min(j, r - 1)];
+        __m128 qx = _mm_loadu_ps(&leaf[0]->orientation.x);
+        __m128 qy = _mm_loadu_ps(&leaf[1]->orientation.x);
+        __m128 qz = _mm_loadu_ps(&leaf[2]->orientation.x);
+        __m128 qw = _mm_loadu_ps(&leaf[3]->orientation.x);
+        _MM_TRANSPOSE4_PS(qx, qy, qz, qw);
+        __m128 heading[4];
+        toPoints(rotate(qx, qy, qz, qw, 0.0f, 1.0f, 0.0f), heading);
+        for (std::size_t j = 0; j < r; ++j) {
+            // position + (0.5 * heading) * size, in double, as leafMiddlesPlain.
+            const glm::vec3& p = leaf[j]->position;
+            const __m128d size = _mm_set1_pd(static_cast<double>(leaf[j]->size));
+            const __m128d xy =
+                _mm_add_pd(xyOf(p), _mm_mul_pd(_mm_mul_pd(half, xyOf(heading[j])), size));
+            const __m128d z =
+                _mm_add_sd(zOf(p), _mm_mul_sd(_mm_mul_sd(half, zOf(heading[j])), size));
+            alignas(16) double v[2];
+            _mm_store_pd(v, xy);
+            mids[b + j] = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(z));
+        }
+    }
+}
+
+void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
+                double& a0, double& a1, double& c0, double& c1) {
+    // Lane 0 the along products, lane 1 the across ones: dot = (x + y) + z, as glm::dot.
+    const __m128d mXY = _mm_set_pd(in.m.y, in.m.x), mZ = _mm_set_sd(in.m.z);
+    const __m128d alongXY = _mm_set_pd(along.y, along.x);
+    const __m128d acrossXY = _mm_set_pd(across.y, across.x);
+    const __m128d axesZ = _mm_set_pd(across.z, along.z);
+    __m128d lo = _mm_set1_pd(1e300), hi = _mm_set1_pd(-1e300);
+    for (const glm::vec3& q : in.corners) {
+        const __m128d dXY = _mm_sub_pd(xyOf(q), mXY);
+        const __m128d dZ = _mm_sub_sd(zOf(q), mZ);
+        const __m128d ta = _mm_mul_pd(dXY, alongXY), tc = _mm_mul_pd(dXY, acrossXY);
+        const __m128d xs = _mm_unpacklo_pd(ta, tc), ys = _mm_unpackhi_pd(ta, tc);
+        const __m128d zs = _mm_mul_pd(_mm_unpacklo_pd(dZ, dZ), axesZ);
+        const __m128d dot = _mm_add_pd(_mm_add_pd(xs, ys), zs);
+        // std::min(lo, dot) is dot < lo ? dot : lo, as minpd(dot, lo); max alike.
+        lo = _mm_min_pd(dot, lo);
+        hi = _mm_max_pd(dot, hi);
+    }
+    alignas(16) double l[2], h[2];
+    _mm_store_pd(l, lo);
+    _mm_store_pd(h, hi);
+    a0 = l[0];
+    c0 = l[1];
+    a1 = h[0];
+    c1 = h[1];
+}
+
+#else
+
+void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+    leafMiddlesPlain(leaves, mids);
+}
+
+void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
+                    float aspect, float scale, CardFitInput& in) {
+    prepareCardFitPlain(leaves, group, aspect, scale, in);
+}
+
+void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
+                double& a0, double& a1, double& c0, double& c1) {
+    cardExtentPlain(in, along, across, a0, a1, c0, c1);
+}
+
+#endif
+
+} // namespace sylva::mesh

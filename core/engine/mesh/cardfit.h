@@ -1,0 +1,70 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "engine/skeleton/skeleton.h"
+
+namespace sylva::mesh {
+
+/// The corners appendLeafCards gives \p leaf (stem left, stem right, tip right, tip left),
+/// from its heading and left axes; \p aspect and \p scale as LeafCardSettings'.
+inline void leafCorners(const skel::Leaf& leaf, const glm::vec3& heading, const glm::vec3& left,
+                        float aspect, float scale, glm::vec3 out[4]) {
+    const float len = leaf.size * scale;
+    const glm::vec3 h = heading * len;
+    const glm::vec3 l = left * (0.5f * aspect * len);
+    out[0] = leaf.position + l;
+    out[1] = leaf.position - l;
+    out[2] = leaf.position - l + h;
+    out[3] = leaf.position + l + h;
+}
+/// The same from the leaf's orientation.
+inline void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::vec3 out[4]) {
+    leafCorners(leaf, skel::headingOf(leaf.orientation), skel::leftOf(leaf.orientation), aspect,
+                scale, out);
+}
+
+/// Each leaf's middle, position + 0.5 * size * heading in double (where a leaf belongs when
+/// leaves are grouped in cells): four leaves at a time on SSE2, bit for bit leafMiddlesPlain.
+void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids);
+
+/// What a cluster card (leafclusters.h) is fitted from: its leaves' card corners (four a leaf,
+/// in leaf order), their mean and covariance (made in double from the float corners, summed in
+/// that order), and the sums of the leaves' heading, up and left axes.
+struct CardFitInput {
+    std::vector<glm::vec3> corners;
+    glm::dvec3 heading{0.0}, up{0.0}, left{0.0}, m{0.0};
+    glm::dmat3 cov{0.0};
+};
+
+/// \p in for the leaves of \p group: four leaves at a time on SSE2, their quaternions turned
+/// into their axes and corners four lanes to a register, each lane the float operations of
+/// glm's quaternion product and leafCorners in order; the mean summed as the corners are made,
+/// the covariance each point's coordinates two to a register: bit for bit
+/// prepareCardFitPlain's (perf record of the English oak: prepareCardFit 17 % of the cards'
+/// stage, three quaternion products and a card a leaf, one float at a time).
+void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
+                    float aspect, float scale, CardFitInput& in);
+
+/// The smallest and largest dot products of (corner - in.m) with \p along (a0, a1) and with
+/// \p across (c0, c1): a corner's two products in one SSE2 register, each lane the scalar
+/// operations in order, bit for bit cardExtentPlain's (perf record of the English oak: the
+/// fits' last pass over the corners, 0.15 -> 0.14 ms a tree; with the corners kept as floats,
+/// 0.25 ms without it).
+void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
+                double& a0, double& a1, double& c0, double& c1);
+
+/// prepareCardFit, leafMiddles and cardExtent the straightforward way (glm, one operation after the
+/// other), for tests.
+void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
+                         std::span<const std::uint32_t> group, float aspect, float scale,
+                         CardFitInput& in);
+void leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids);
+void cardExtentPlain(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
+                     double& a0, double& a1, double& c0, double& c1);
+
+} // namespace sylva::mesh

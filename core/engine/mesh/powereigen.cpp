@@ -1,0 +1,156 @@
+#include "engine/mesh/powereigen.h"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace sylva::mesh {
+
+namespace {
+
+constexpr int kPowerSteps = 24;
+constexpr int kBlock = 4;
+// A product of kBlock steps of a unit-sum matrix under this vanishes: the matrix's product
+// does (1e-18 a step).
+constexpr double kVanish = 1e-72;
+constexpr double kStepVanish = 1e-18;
+// The biased exponent field of 2^(-ceil(e / 2)) for a positive double of biased exponent field
+// E (e = E - 1023): 1534 - (E >> 1). A vector of squared length len2 times it is between
+// sqrt(1/2) and sqrt(2) long; E = 0 (zero, subnormal) gives 2^511, in range.
+constexpr std::uint64_t kHalfExponentBias = 1534;
+
+[[maybe_unused]] double powerOfTwoScale(double len2) {
+    const std::uint64_t field = kHalfExponentBias - (std::bit_cast<std::uint64_t>(len2) >> 53);
+    return std::bit_cast<double>(field << 52);
+}
+
+} // namespace
+
+void largestEigenvectors(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
+    double scale[kPowerLanes];
+    for (std::size_t k = 0; k < n; ++k) {
+        double sum = 0.0;
+        for (int col = 0; col < 3; ++col)
+            for (int row = 0; row < 3; ++row)
+                sum += std::abs(c[k][col][row]);
+        scale[k] = sum > 0.0 ? 1.0 / sum : 0.0;
+    }
+#if defined(__SSE2__)
+    // Lanes past n: a zero matrix, whose product vanishes at the first block.
+    alignas(16) double m[9][kPowerLanes] = {};
+    alignas(16) double x[kPowerLanes] = {}, y[kPowerLanes] = {}, z[kPowerLanes] = {};
+    for (std::size_t k = 0; k < n; ++k) {
+        for (int col = 0; col < 3; ++col)
+            for (int row = 0; row < 3; ++row)
+                m[3 * col + row][k] = c[k][col][row] * scale[k];
+        x[k] = v[k].x;
+        y[k] = v[k].y;
+        z[k] = v[k].z;
+    }
+    constexpr int kPairs = static_cast<int>(kPowerLanes / 2);
+    __m128d M[kPairs][9], X[kPairs], Y[kPairs], Z[kPairs], done[kPairs];
+    for (int h = 0; h < kPairs; ++h) {
+        for (int e = 0; e < 9; ++e)
+            M[h][e] = _mm_load_pd(&m[e][2 * h]);
+        X[h] = _mm_load_pd(&x[2 * h]);
+        Y[h] = _mm_load_pd(&y[2 * h]);
+        Z[h] = _mm_load_pd(&z[2 * h]);
+        done[h] = _mm_setzero_pd();
+    }
+    // Each pair's fourth power, two squarings: a block of kBlock products is one.
+    static_assert(kBlock == 4);
+    for (int h = 0; h < kPairs; ++h)
+        for (int s = 0; s < 2; ++s) {
+            const __m128d* a = M[h];
+            __m128d p[9];
+            // The power of a symmetric matrix is symmetric, bit for bit (entry (c, r) and
+            // entry (r, c) multiply the same pairs in the same order): six entries made.
+            for (int col = 0; col < 3; ++col)
+                for (int row = col; row < 3; ++row)
+                    p[3 * col + row] = p[3 * row + col] =
+                        _mm_add_pd(_mm_add_pd(_mm_mul_pd(a[row], a[3 * col]),
+                                              _mm_mul_pd(a[3 + row], a[3 * col + 1])),
+                                   _mm_mul_pd(a[6 + row], a[3 * col + 2]));
+            for (int e = 0; e < 9; ++e)
+                M[h][e] = p[e];
+        }
+    const __m128d tiny2 = _mm_set1_pd(kVanish * kVanish);
+    const __m128d one = _mm_set1_pd(1.0);
+    const __m128i bias = _mm_set1_epi64x(static_cast<long long>(kHalfExponentBias));
+    for (int i = 0; i < kPowerSteps; i += kBlock)
+        for (int h = 0; h < kPairs; ++h) {
+            const __m128d* q = M[h];
+            const __m128d px = X[h], py = Y[h], pz = Z[h];
+            const __m128d nx = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[0], px), _mm_mul_pd(q[3], py)),
+                                          _mm_mul_pd(q[6], pz));
+            const __m128d ny = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[1], px), _mm_mul_pd(q[4], py)),
+                                          _mm_mul_pd(q[7], pz));
+            const __m128d nz = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q[2], px), _mm_mul_pd(q[5], py)),
+                                          _mm_mul_pd(q[8], pz));
+            const __m128d len2 =
+                _mm_add_pd(_mm_add_pd(_mm_mul_pd(nx, nx), _mm_mul_pd(ny, ny)), _mm_mul_pd(nz, nz));
+            done[h] = _mm_or_pd(done[h], _mm_cmplt_pd(len2, tiny2));
+            const __m128d keep = done[h];
+            __m128d inv;
+            if (i + kBlock < kPowerSteps) {
+                // Between blocks: powerOfTwoScale, lane by lane.
+                const __m128i half = _mm_srli_epi64(_mm_castpd_si128(len2), 53);
+                inv = _mm_castsi128_pd(_mm_slli_epi64(_mm_sub_epi64(bias, half), 52));
+            } else {
+                // A kept lane's len may be 0: its quotient is discarded.
+                inv = _mm_div_pd(one, _mm_or_pd(_mm_sqrt_pd(len2), _mm_and_pd(keep, one)));
+            }
+            if (_mm_movemask_pd(keep) == 0) { // no lane kept: the usual case
+                X[h] = _mm_mul_pd(nx, inv);
+                Y[h] = _mm_mul_pd(ny, inv);
+                Z[h] = _mm_mul_pd(nz, inv);
+                continue;
+            }
+            X[h] = _mm_or_pd(_mm_and_pd(keep, X[h]), _mm_andnot_pd(keep, _mm_mul_pd(nx, inv)));
+            Y[h] = _mm_or_pd(_mm_and_pd(keep, Y[h]), _mm_andnot_pd(keep, _mm_mul_pd(ny, inv)));
+            Z[h] = _mm_or_pd(_mm_and_pd(keep, Z[h]), _mm_andnot_pd(keep, _mm_mul_pd(nz, inv)));
+        }
+    for (int h = 0; h < kPairs; ++h) {
+        _mm_store_pd(&x[2 * h], X[h]);
+        _mm_store_pd(&y[2 * h], Y[h]);
+        _mm_store_pd(&z[2 * h], Z[h]);
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        v[k] = glm::dvec3(x[k], y[k], z[k]);
+#else
+    for (std::size_t k = 0; k < n; ++k) {
+        const glm::dmat3 a = c[k] * scale[k];
+        const glm::dmat3 a2 = a * a;
+        const glm::dmat3 a4 = a2 * a2;
+        for (int i = 0; i < kPowerSteps; i += kBlock) {
+            const glm::dvec3 next = a4 * v[k];
+            const double len2 = glm::dot(next, next);
+            if (len2 < kVanish * kVanish) break;
+            v[k] =
+                next * (i + kBlock < kPowerSteps ? powerOfTwoScale(len2) : 1.0 / std::sqrt(len2));
+        }
+    }
+#endif
+}
+
+void largestEigenvectorsStepwise(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) {
+        double sum = 0.0;
+        for (int col = 0; col < 3; ++col)
+            for (int row = 0; row < 3; ++row)
+                sum += std::abs(c[k][col][row]);
+        const glm::dmat3 a = c[k] * (sum > 0.0 ? 1.0 / sum : 0.0);
+        for (int i = 0; i < kPowerSteps; ++i) {
+            const glm::dvec3 next = a * v[k];
+            const double len = glm::length(next);
+            if (len < kStepVanish) break;
+            v[k] = next / len;
+        }
+    }
+}
+
+} // namespace sylva::mesh

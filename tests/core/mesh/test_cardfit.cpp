@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "engine/mesh/cardfit.h"
+#include "engine/util/random.h"
+
+using namespace sylva;
+
+namespace {
+
+std::vector<skel::Leaf> randomLeaves(Rng& rng, int count) {
+    std::vector<skel::Leaf> leaves(static_cast<std::size_t>(count));
+    for (skel::Leaf& leaf : leaves) {
+        leaf.position = glm::vec3(rng.uniformf(-3, 3), rng.uniformf(2, 9), rng.uniformf(-3, 3));
+        leaf.orientation = glm::normalize(glm::quat(rng.uniformf(-1, 1), rng.uniformf(-1, 1),
+                                                    rng.uniformf(-1, 1), rng.uniformf(-1, 1)));
+        leaf.size = rng.uniformf(0.03f, 0.2f);
+    }
+    // Frames with zero components (signed zeros through the products) and the identity.
+    leaves[3].orientation = glm::quat(1, 0, 0, 0);
+    leaves[7].orientation = glm::quat(0, 0, 1, 0);
+    leaves[8].orientation = glm::quat(-0.0f, 0.6f, -0.0f, 0.8f);
+    leaves[12].orientation = glm::quat(0.5f, -0.5f, 0.5f, -0.5f);
+    return leaves;
+}
+
+// The same bits (a float's or a double's -0.0 and its 0.0 differ).
+template <typename V> bool sameBits(const V& a, const V& b) {
+    return std::memcmp(&a, &b, sizeof(V)) == 0;
+}
+
+} // namespace
+
+// The SSE2 preparation (four leaves a register) is the straightforward one bit for bit, for
+// groups of every size (every remainder of four), in any order of the leaves.
+TEST(CardFit, PreparationMatchesTheStraightforwardOne) {
+    Rng rng(9);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
+    mesh::CardFitInput fast, plain;
+    for (std::uint32_t size = 1; size <= 23; ++size)
+        for (int trial = 0; trial < 6; ++trial) {
+            std::vector<std::uint32_t> group(size);
+            for (std::uint32_t& i : group)
+                i = static_cast<std::uint32_t>(rng.below(leaves.size()));
+            if (trial == 0) std::iota(group.begin(), group.end(), 0u); // the special frames
+            mesh::prepareCardFit(leaves, group, 0.45f, 1.7f, fast);
+            mesh::prepareCardFitPlain(leaves, group, 0.45f, 1.7f, plain);
+            ASSERT_EQ(fast.corners.size(), plain.corners.size());
+            for (std::size_t k = 0; k < fast.corners.size(); ++k)
+                EXPECT_TRUE(sameBits(fast.corners[k], plain.corners[k])) << size << " " << k;
+            EXPECT_TRUE(sameBits(fast.heading, plain.heading)) << size;
+            EXPECT_TRUE(sameBits(fast.up, plain.up)) << size;
+            EXPECT_TRUE(sameBits(fast.left, plain.left)) << size;
+            EXPECT_TRUE(sameBits(fast.m, plain.m)) << size;
+            EXPECT_TRUE(sameBits(fast.cov, plain.cov)) << size;
+        }
+}
+
+// A card's corners, mean and covariance are the leaves' corners as appendLeafCards makes them
+// (four a leaf, in order), and the SSE2 extent is the straightforward one bit for bit, for
+// groups of every size and every direction.
+TEST(CardFit, ExtentMatchesTheStraightforwardOne) {
+    Rng rng(12);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 400);
+    mesh::CardFitInput in;
+    for (std::uint32_t first = 0, size = 1; first + size <= leaves.size(); first += size++) {
+        std::vector<std::uint32_t> group(size);
+        std::iota(group.begin(), group.end(), first);
+        mesh::prepareCardFit(leaves, group, 0.5f, 1.3f, in);
+        ASSERT_EQ(in.corners.size(), 4 * group.size());
+        glm::dvec3 sum(0.0);
+        for (std::size_t k = 0; k < group.size(); ++k) {
+            glm::vec3 c[4];
+            mesh::leafCorners(leaves[group[k]], 0.5f, 1.3f, c);
+            for (int j = 0; j < 4; ++j) {
+                EXPECT_EQ(in.corners[4 * k + j], c[j]);
+                sum += glm::dvec3(c[j]);
+            }
+        }
+        EXPECT_EQ(in.m, sum / static_cast<double>(in.corners.size()));
+        EXPECT_EQ(in.cov, glm::transpose(in.cov));
+        for (int trial = 0; trial < 4; ++trial) {
+            const glm::dvec3 along = glm::normalize(
+                glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            const glm::dvec3 across = glm::normalize(glm::cross(along, glm::dvec3(0.2, 1, 0.3)));
+            double f[4], p[4];
+            mesh::cardExtent(in, along, across, f[0], f[1], f[2], f[3]);
+            mesh::cardExtentPlain(in, along, across, p[0], p[1], p[2], p[3]);
+            for (int j = 0; j < 4; ++j)
+                EXPECT_EQ(f[j], p[j]) << size << " " << j;
+            EXPECT_LE(f[0], f[1]);
+            EXPECT_LE(f[2], f[3]);
+        }
+    }
+}
+
+// The leaves' middles four at a time are the straightforward ones bit for bit, for every
+// remainder of four.
+TEST(CardFit, MiddlesMatchTheStraightforwardOnes) {
+    Rng rng(4);
+    const std::vector<skel::Leaf> all = randomLeaves(rng, 40);
+    for (std::size_t count = 0; count <= all.size(); ++count) {
+        const std::vector<skel::Leaf> leaves(all.begin(), all.begin() + count);
+        std::vector<glm::dvec3> fast, plain;
+        mesh::leafMiddles(leaves, fast);
+        mesh::leafMiddlesPlain(leaves, plain);
+        ASSERT_EQ(fast.size(), count);
+        for (std::size_t i = 0; i < count; ++i)
+            EXPECT_TRUE(sameBits(fast[i], plain[i])) << count << " " << i;
+    }
+}
