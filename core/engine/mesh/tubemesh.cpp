@@ -119,6 +119,13 @@ glm::vec3 anyPerpendicular(const glm::vec3& t) {
 /// Tube directions may be very short (tiny segments): only shorter ones than this fall back.
 constexpr float kMinDirectionLength = 1e-10f;
 
+/// safeNormalize(v, anyPerpendicular(t), kMinDirectionLength), the fallback (a cross product
+/// and a normalization) made only where it is used: every ring of every axis asks.
+glm::vec3 normalizeOrPerpendicular(const glm::vec3& v, const glm::vec3& t) {
+    const float l = glm::length(v);
+    return l > kMinDirectionLength ? v / l : anyPerpendicular(t);
+}
+
 struct Layout {
     std::size_t vertices = 0;
     std::size_t indices = 0;
@@ -290,6 +297,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     std::size_t ringStart = firstRing;
     if (caps && !lateral) w.v = firstRing; // the base cap is written after the first frame
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
+    std::vector<float> rhoRows; // with relief: ρ of each ring vertex (rings × sides+1)
 
     for (std::size_t k = 0; k < m; ++k) {
         // A lateral's base ring sits at its parent's node but belongs to the lateral.
@@ -317,7 +325,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             const float c2 = glm::dot(v2, v2);
             if (c2 > 1e-20f) nL -= (2.0f / c2) * glm::dot(v2, nL) * v2;
             nL -= glm::dot(nL, t) * t;
-            n = safeNormalize(nL, anyPerpendicular(t), kMinDirectionLength);
+            n = normalizeOrPerpendicular(nL, t);
             const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
             v += uTiles * std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
         }
@@ -338,24 +346,34 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             auto lobeAt = [&](std::size_t kk, int j) {
                 return lobe != nullptr ? lobeAmp[kk] * lobe[static_cast<std::size_t>(j)].x : 0.0f;
             };
-            auto rho = [&](std::size_t kk, int j) {
-                return R(kk) * (1.0f + lobeAt(kk, j) +
-                                relief[kk * ringVerts + static_cast<std::size_t>(j)]);
-            };
+            // ρ of every ring, once (each vertex reads its ring's, its neighbours' and the
+            // neighbouring rings').
+            if (k == 0) {
+                rhoRows.resize(m * ringVerts);
+                for (std::size_t kk = 0; kk < m; ++kk)
+                    for (int j = 0; j <= res; ++j)
+                        rhoRows[kk * ringVerts + static_cast<std::size_t>(j)] =
+                            R(kk) * (1.0f + lobeAt(kk, j) +
+                                     relief[kk * ringVerts + static_cast<std::size_t>(j)]);
+            }
+            const float* rhoK = rhoRows.data() + k * ringVerts;
+            const float* rhoA = rhoRows.data() + ka * ringVerts;
+            const float* rhoB = rhoRows.data() + kb * ringVerts;
             const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
             for (int j = 0; j <= res; ++j) {
                 const glm::vec3 a = cs[static_cast<std::size_t>(j)];
                 const glm::vec3 radial = a.x * n + a.y * b;
                 const glm::vec3 around = -a.y * n + a.x * b;
                 const int jPrev = j == 0 ? res - 1 : j - 1, jNext = j == res ? 1 : j + 1;
-                const float rr = rho(k, j);
-                float dRdTheta = (rho(k, jNext) - rho(k, jPrev)) / (2.0f * dTheta);
-                if (lobe != nullptr) // the lobes' own slope is known exactly
-                    dRdTheta = R(k) * (amp * lobe[static_cast<std::size_t>(j)].y +
-                                       (relief[k * ringVerts + static_cast<std::size_t>(jNext)] -
-                                        relief[k * ringVerts + static_cast<std::size_t>(jPrev)]) /
-                                           (2.0f * dTheta));
-                const float dRds = ds > 1e-12f ? (rho(kb, j) - rho(ka, j)) / ds : 0.0f;
+                const float rr = rhoK[j];
+                const float dRdTheta =
+                    lobe != nullptr // the lobes' own slope is known exactly
+                        ? R(k) * (amp * lobe[static_cast<std::size_t>(j)].y +
+                                  (relief[k * ringVerts + static_cast<std::size_t>(jNext)] -
+                                   relief[k * ringVerts + static_cast<std::size_t>(jPrev)]) /
+                                      (2.0f * dTheta))
+                        : (rhoK[jNext] - rhoK[jPrev]) / (2.0f * dTheta);
+                const float dRds = ds > 1e-12f ? (rhoB[j] - rhoA[j]) / ds : 0.0f;
                 w.vertex(p + rr * radial,
                          safeNormalize(rr * radial - dRdTheta * around - rr * dRds * t, radial,
                                        kMinDirectionLength),
@@ -629,7 +647,7 @@ void meshRibbon(Writer& w, const skel::Skeleton& s, const std::vector<float>& ra
         }
         glm::vec3 view = camera - p;
         view -= glm::dot(view, t) * t;
-        const glm::vec3 normal = safeNormalize(view, anyPerpendicular(t), kMinDirectionLength);
+        const glm::vec3 normal = normalizeOrPerpendicular(view, t);
         const glm::vec3 side = glm::cross(t, normal);
         const float half = R(k) * widthScale;
         w.flex = 1.0f - R(k) * w.invRMax;
