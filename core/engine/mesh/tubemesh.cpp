@@ -606,11 +606,7 @@ void addBarkRelief(FlaredChain& f, const TubeSettings& settings, int columns, fl
     for (std::size_t k = 0; k < g.nodes.size(); ++k) {
         if (!(amp[k] > 0.0f)) continue;
         float* row = g.relief.data() + k * ringVerts;
-        for (int j = 0; j < sides; ++j)
-            row[j] = amp[k] *
-                     barkReliefShape(settings.barkPattern,
-                                     static_cast<float>(j * columns) / static_cast<float>(sides),
-                                     along[k] / width, columns, seed);
+        barkReliefRow(settings.barkPattern, columns, sides, along[k] / width, seed, amp[k], row);
         row[sides] = row[0];
     }
     f = std::move(g);
