@@ -5,6 +5,9 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "engine/util/error.h"
 #include "engine/util/hugepages.h"
@@ -179,6 +182,46 @@ struct Writer {
         }
         if (nodeIds) nodeIds[k] = node;
         ++v;
+    }
+    /// A round ring's vertices: vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, v})
+    /// with radial = a.x * n + a.y * b for each entry a of \p cs (res + 1 of them), bit for
+    /// bit: the same products and sums, a vector's three lanes at once where SSE2 is there.
+    void ring(const glm::vec3* cs, int res, const glm::vec3& p, float r, const glm::vec3& n,
+              const glm::vec3& b, float inv, const glm::vec3& tn, float uTiles, float vCoord) {
+#if defined(__SSE2__)
+        const __m128 vn = _mm_setr_ps(n.x, n.y, n.z, 0.0f);
+        const __m128 vb = _mm_setr_ps(b.x, b.y, b.z, 0.0f);
+        const __m128 vp = _mm_setr_ps(p.x, p.y, p.z, 0.0f);
+        const __m128 vtn = _mm_setr_ps(tn.x, tn.y, tn.z, 0.0f);
+        const __m128 vr = _mm_set1_ps(r), vinv = _mm_set1_ps(inv);
+        for (int j = 0; j <= res; ++j) {
+            const glm::vec3& a = cs[j];
+            const __m128 radial =
+                _mm_add_ps(_mm_mul_ps(_mm_load1_ps(&a.x), vn), _mm_mul_ps(_mm_load1_ps(&a.y), vb));
+            const __m128 position = _mm_add_ps(vp, _mm_mul_ps(vr, radial));
+            const __m128 normal = _mm_add_ps(_mm_mul_ps(radial, vinv), vtn);
+            const std::size_t k = v - base;
+            float* pk = &pos[k].x;
+            float* nk = &nrm[k].x;
+            _mm_storel_pi(reinterpret_cast<__m64*>(pk), position);
+            _mm_store_ss(pk + 2, _mm_movehl_ps(position, position));
+            _mm_storel_pi(reinterpret_cast<__m64*>(nk), normal);
+            _mm_store_ss(nk + 2, _mm_movehl_ps(normal, normal));
+            uvs[k] = {uTiles * a.z, vCoord};
+            if (orders) {
+                orders[k] = order;
+                flexes[k] = flex;
+            }
+            if (nodeIds) nodeIds[k] = node;
+            ++v;
+        }
+#else
+        for (int j = 0; j <= res; ++j) {
+            const glm::vec3& a = cs[j];
+            const glm::vec3 radial = a.x * n + a.y * b;
+            vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, vCoord});
+        }
+#endif
     }
     void triangle(std::size_t a, std::size_t b, std::size_t c) {
         std::uint32_t* t = idx + (i - indexBase);
@@ -380,23 +423,21 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
                          {uTiles * a.z, v});
             }
         }
-        for (int j = 0; relief == nullptr && j <= res; ++j) {
+        if (relief == nullptr && !(amp > 0.0f))
+            w.ring(cs.data(), res, p, r, n, b, inv, tn, uTiles, v);
+        for (int j = 0; relief == nullptr && amp > 0.0f && j <= res; ++j) {
             const glm::vec3 a = cs[static_cast<std::size_t>(j)];
             const glm::vec3 radial = a.x * n + a.y * b;
-            if (amp > 0.0f) {
-                // r(θ) = r (1 + amp · shape(θ)); the normal of the lobed section leans
-                // against dr/dθ along the ring's tangent.
-                const glm::vec2 sh = lobe[j];
-                const glm::vec3 around = -a.y * n + a.x * b;
-                const float rr = r * (1.0f + amp * sh.x);
-                const glm::vec3 inPlane = safeNormalize(rr * radial - r * amp * sh.y * around,
-                                                        radial, kMinDirectionLength);
-                w.vertex(p + rr * radial,
-                         safeNormalize(inPlane * inv + tn, radial, kMinDirectionLength),
-                         {uTiles * a.z, v});
-                continue;
-            }
-            w.vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, v});
+            // r(θ) = r (1 + amp · shape(θ)); the normal of the lobed section leans against
+            // dr/dθ along the ring's tangent.
+            const glm::vec2 sh = lobe[j];
+            const glm::vec3 around = -a.y * n + a.x * b;
+            const float rr = r * (1.0f + amp * sh.x);
+            const glm::vec3 inPlane =
+                safeNormalize(rr * radial - r * amp * sh.y * around, radial, kMinDirectionLength);
+            w.vertex(p + rr * radial,
+                     safeNormalize(inPlane * inv + tn, radial, kMinDirectionLength),
+                     {uTiles * a.z, v});
         }
         if (k > 0) {
             const std::size_t a0 = ringStart - ringVerts;
