@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "engine/util/error.h"
 
@@ -52,6 +53,7 @@ float noise(float x, float y, int period, std::uint32_t seed) {
 }
 
 float ridges(float x, float y, int columns, std::uint32_t seed) {
+    // (ridgesRow makes the same numbers a ring at a time: change both together.)
     // The ridges meander over a few of their widths along the axis.
     // (Its lattice is two columns wide where the columns are even, so that it closes the ring.)
     const bool even = columns % 2 == 0;
@@ -92,6 +94,53 @@ float plates(float x, float y, int columns, std::uint32_t seed) {
     return std::min(edge, edgeAlong) * height * tilt;
 }
 
+/// ridges(x_j, y, columns, seed) scaled by \p amplitude for a whole ring, the same operations
+/// in the same order; what does not change along the ring (the warp noise's row of lattice
+/// values, each column's height and break) is made once.
+void ridgesRow(int columns, int sides, float y, std::uint32_t seed, float amplitude, float* row) {
+    const bool even = columns % 2 == 0;
+    const int period = even ? columns / 2 : columns;
+    // The warp noise's lattice rows iy and iy + 1 (noise's y is constant along the ring).
+    const float ny = y * 0.25f;
+    const float fy = std::floor(ny);
+    const auto iy = static_cast<std::int32_t>(fy);
+    const float ty = smooth(ny - fy);
+    const auto cols = static_cast<std::size_t>(columns);
+    std::vector<float> table(2 * static_cast<std::size_t>(period) + 2 * cols);
+    float* low = table.data();
+    float* high = low + period;
+    float* height = high + period;
+    float* brk = height + cols;
+    for (std::int32_t i = 0; i < period; ++i) {
+        low[i] = unit(i, iy, seed);
+        high[i] = unit(i, iy + 1, seed);
+    }
+    for (std::int32_t col = 0; col < columns; ++col) {
+        const float along = y / 3.0f + unit(col, -1, seed);
+        const float fa = std::floor(along);
+        const float u = along - fa;
+        height[col] = 0.55f + 0.45f * unit(col, static_cast<std::int32_t>(fa), seed ^ 0x51u);
+        brk[col] = 0.35f + 0.65f * smoothstep(0.0f, 0.15f, u) * smoothstep(0.0f, 0.15f, 1.0f - u);
+    }
+    for (int j = 0; j < sides; ++j) {
+        const float x = static_cast<float>(j * columns) / static_cast<float>(sides);
+        const float nx = even ? x * 0.5f : x;
+        const float fx0 = std::floor(nx);
+        const float tx = smooth(nx - fx0);
+        const std::int32_t x0 = wrap(static_cast<std::int32_t>(fx0), period);
+        const std::int32_t x1 = x0 + 1 == period ? 0 : x0 + 1;
+        const float a = low[x0], b = low[x1], c = high[x0], d = high[x1];
+        const float n = (a + (b - a) * tx) + ((c + (d - c) * tx) - (a + (b - a) * tx)) * ty;
+        const float warp = 0.9f * (n - 0.5f);
+        const float xs = x + warp;
+        const float fx = std::floor(xs);
+        const std::int32_t col = wrap(static_cast<std::int32_t>(fx), columns);
+        const float f = xs - fx;
+        const float ridge = std::sqrt(std::max(std::sin(std::numbers::pi_v<float> * f), 0.0f));
+        row[j] = amplitude * (ridge * height[col] * brk[col]);
+    }
+}
+
 } // namespace
 
 BarkPattern parseBarkPattern(const std::string& name) {
@@ -109,6 +158,19 @@ float barkReliefShape(BarkPattern pattern, float x, float y, int columns, std::u
     columns = std::max(columns, 1);
     return pattern == BarkPattern::Ridges ? ridges(x, y, columns, seed)
                                           : plates(x, y, columns, seed);
+}
+
+void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::uint32_t seed,
+                   float amplitude, float* row) {
+    if (pattern == BarkPattern::Ridges) {
+        ridgesRow(std::max(columns, 1), sides, y, seed, amplitude, row);
+        return;
+    }
+    for (int j = 0; j < sides; ++j)
+        row[j] =
+            amplitude * barkReliefShape(pattern,
+                                        static_cast<float>(j * columns) / static_cast<float>(sides),
+                                        y, columns, seed);
 }
 
 } // namespace sylva::mesh

@@ -29,4 +29,11 @@ double barkRingSpacing(BarkPattern pattern);
 /// only, the same on every platform.
 float barkReliefShape(BarkPattern pattern, float x, float y, int columns, std::uint32_t seed);
 
+/// One ring of the pattern: row[j] = amplitude * barkReliefShape(pattern, x_j, y, columns, seed)
+/// for j in [0, sides), x_j = float(j * columns) / float(sides), bit for bit. The ridges' lattice
+/// hashes, constant along a ring, and each column's break and height are made once a ring
+/// instead of once a vertex (the English oak's bark: about a quarter of its tube meshing).
+void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::uint32_t seed,
+                   float amplitude, float* row);
+
 } // namespace sylva::mesh

@@ -5,6 +5,9 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "engine/util/error.h"
 #include "engine/util/hugepages.h"
@@ -119,6 +122,13 @@ glm::vec3 anyPerpendicular(const glm::vec3& t) {
 /// Tube directions may be very short (tiny segments): only shorter ones than this fall back.
 constexpr float kMinDirectionLength = 1e-10f;
 
+/// safeNormalize(v, anyPerpendicular(t), kMinDirectionLength), the fallback (a cross product
+/// and a normalization) made only where it is used: every ring of every axis asks.
+glm::vec3 normalizeOrPerpendicular(const glm::vec3& v, const glm::vec3& t) {
+    const float l = glm::length(v);
+    return l > kMinDirectionLength ? v / l : anyPerpendicular(t);
+}
+
 struct Layout {
     std::size_t vertices = 0;
     std::size_t indices = 0;
@@ -172,6 +182,46 @@ struct Writer {
         }
         if (nodeIds) nodeIds[k] = node;
         ++v;
+    }
+    /// A round ring's vertices: vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, v})
+    /// with radial = a.x * n + a.y * b for each entry a of \p cs (res + 1 of them), bit for
+    /// bit: the same products and sums, a vector's three lanes at once where SSE2 is there.
+    void ring(const glm::vec3* cs, int res, const glm::vec3& p, float r, const glm::vec3& n,
+              const glm::vec3& b, float inv, const glm::vec3& tn, float uTiles, float vCoord) {
+#if defined(__SSE2__)
+        const __m128 vn = _mm_setr_ps(n.x, n.y, n.z, 0.0f);
+        const __m128 vb = _mm_setr_ps(b.x, b.y, b.z, 0.0f);
+        const __m128 vp = _mm_setr_ps(p.x, p.y, p.z, 0.0f);
+        const __m128 vtn = _mm_setr_ps(tn.x, tn.y, tn.z, 0.0f);
+        const __m128 vr = _mm_set1_ps(r), vinv = _mm_set1_ps(inv);
+        for (int j = 0; j <= res; ++j) {
+            const glm::vec3& a = cs[j];
+            const __m128 radial =
+                _mm_add_ps(_mm_mul_ps(_mm_load1_ps(&a.x), vn), _mm_mul_ps(_mm_load1_ps(&a.y), vb));
+            const __m128 position = _mm_add_ps(vp, _mm_mul_ps(vr, radial));
+            const __m128 normal = _mm_add_ps(_mm_mul_ps(radial, vinv), vtn);
+            const std::size_t k = v - base;
+            float* pk = &pos[k].x;
+            float* nk = &nrm[k].x;
+            _mm_storel_pi(reinterpret_cast<__m64*>(pk), position);
+            _mm_store_ss(pk + 2, _mm_movehl_ps(position, position));
+            _mm_storel_pi(reinterpret_cast<__m64*>(nk), normal);
+            _mm_store_ss(nk + 2, _mm_movehl_ps(normal, normal));
+            uvs[k] = {uTiles * a.z, vCoord};
+            if (orders) {
+                orders[k] = order;
+                flexes[k] = flex;
+            }
+            if (nodeIds) nodeIds[k] = node;
+            ++v;
+        }
+#else
+        for (int j = 0; j <= res; ++j) {
+            const glm::vec3& a = cs[j];
+            const glm::vec3 radial = a.x * n + a.y * b;
+            vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, vCoord});
+        }
+#endif
     }
     void triangle(std::size_t a, std::size_t b, std::size_t c) {
         std::uint32_t* t = idx + (i - indexBase);
@@ -290,6 +340,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     std::size_t ringStart = firstRing;
     if (caps && !lateral) w.v = firstRing; // the base cap is written after the first frame
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
+    std::vector<float> rhoRows; // with relief: ρ of each ring vertex (rings × sides+1)
 
     for (std::size_t k = 0; k < m; ++k) {
         // A lateral's base ring sits at its parent's node but belongs to the lateral.
@@ -317,7 +368,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             const float c2 = glm::dot(v2, v2);
             if (c2 > 1e-20f) nL -= (2.0f / c2) * glm::dot(v2, nL) * v2;
             nL -= glm::dot(nL, t) * t;
-            n = safeNormalize(nL, anyPerpendicular(t), kMinDirectionLength);
+            n = normalizeOrPerpendicular(nL, t);
             const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
             v += uTiles * std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
         }
@@ -338,47 +389,55 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             auto lobeAt = [&](std::size_t kk, int j) {
                 return lobe != nullptr ? lobeAmp[kk] * lobe[static_cast<std::size_t>(j)].x : 0.0f;
             };
-            auto rho = [&](std::size_t kk, int j) {
-                return R(kk) * (1.0f + lobeAt(kk, j) +
-                                relief[kk * ringVerts + static_cast<std::size_t>(j)]);
-            };
+            // ρ of every ring, once (each vertex reads its ring's, its neighbours' and the
+            // neighbouring rings').
+            if (k == 0) {
+                rhoRows.resize(m * ringVerts);
+                for (std::size_t kk = 0; kk < m; ++kk)
+                    for (int j = 0; j <= res; ++j)
+                        rhoRows[kk * ringVerts + static_cast<std::size_t>(j)] =
+                            R(kk) * (1.0f + lobeAt(kk, j) +
+                                     relief[kk * ringVerts + static_cast<std::size_t>(j)]);
+            }
+            const float* rhoK = rhoRows.data() + k * ringVerts;
+            const float* rhoA = rhoRows.data() + ka * ringVerts;
+            const float* rhoB = rhoRows.data() + kb * ringVerts;
             const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
             for (int j = 0; j <= res; ++j) {
                 const glm::vec3 a = cs[static_cast<std::size_t>(j)];
                 const glm::vec3 radial = a.x * n + a.y * b;
                 const glm::vec3 around = -a.y * n + a.x * b;
                 const int jPrev = j == 0 ? res - 1 : j - 1, jNext = j == res ? 1 : j + 1;
-                const float rr = rho(k, j);
-                float dRdTheta = (rho(k, jNext) - rho(k, jPrev)) / (2.0f * dTheta);
-                if (lobe != nullptr) // the lobes' own slope is known exactly
-                    dRdTheta = R(k) * (amp * lobe[static_cast<std::size_t>(j)].y +
-                                       (relief[k * ringVerts + static_cast<std::size_t>(jNext)] -
-                                        relief[k * ringVerts + static_cast<std::size_t>(jPrev)]) /
-                                           (2.0f * dTheta));
-                const float dRds = ds > 1e-12f ? (rho(kb, j) - rho(ka, j)) / ds : 0.0f;
+                const float rr = rhoK[j];
+                const float dRdTheta =
+                    lobe != nullptr // the lobes' own slope is known exactly
+                        ? R(k) * (amp * lobe[static_cast<std::size_t>(j)].y +
+                                  (relief[k * ringVerts + static_cast<std::size_t>(jNext)] -
+                                   relief[k * ringVerts + static_cast<std::size_t>(jPrev)]) /
+                                      (2.0f * dTheta))
+                        : (rhoK[jNext] - rhoK[jPrev]) / (2.0f * dTheta);
+                const float dRds = ds > 1e-12f ? (rhoB[j] - rhoA[j]) / ds : 0.0f;
                 w.vertex(p + rr * radial,
                          safeNormalize(rr * radial - dRdTheta * around - rr * dRds * t, radial,
                                        kMinDirectionLength),
                          {uTiles * a.z, v});
             }
         }
-        for (int j = 0; relief == nullptr && j <= res; ++j) {
+        if (relief == nullptr && !(amp > 0.0f))
+            w.ring(cs.data(), res, p, r, n, b, inv, tn, uTiles, v);
+        for (int j = 0; relief == nullptr && amp > 0.0f && j <= res; ++j) {
             const glm::vec3 a = cs[static_cast<std::size_t>(j)];
             const glm::vec3 radial = a.x * n + a.y * b;
-            if (amp > 0.0f) {
-                // r(θ) = r (1 + amp · shape(θ)); the normal of the lobed section leans
-                // against dr/dθ along the ring's tangent.
-                const glm::vec2 sh = lobe[j];
-                const glm::vec3 around = -a.y * n + a.x * b;
-                const float rr = r * (1.0f + amp * sh.x);
-                const glm::vec3 inPlane = safeNormalize(rr * radial - r * amp * sh.y * around,
-                                                        radial, kMinDirectionLength);
-                w.vertex(p + rr * radial,
-                         safeNormalize(inPlane * inv + tn, radial, kMinDirectionLength),
-                         {uTiles * a.z, v});
-                continue;
-            }
-            w.vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, v});
+            // r(θ) = r (1 + amp · shape(θ)); the normal of the lobed section leans against
+            // dr/dθ along the ring's tangent.
+            const glm::vec2 sh = lobe[j];
+            const glm::vec3 around = -a.y * n + a.x * b;
+            const float rr = r * (1.0f + amp * sh.x);
+            const glm::vec3 inPlane =
+                safeNormalize(rr * radial - r * amp * sh.y * around, radial, kMinDirectionLength);
+            w.vertex(p + rr * radial,
+                     safeNormalize(inPlane * inv + tn, radial, kMinDirectionLength),
+                     {uTiles * a.z, v});
         }
         if (k > 0) {
             const std::size_t a0 = ringStart - ringVerts;
@@ -588,11 +647,7 @@ void addBarkRelief(FlaredChain& f, const TubeSettings& settings, int columns, fl
     for (std::size_t k = 0; k < g.nodes.size(); ++k) {
         if (!(amp[k] > 0.0f)) continue;
         float* row = g.relief.data() + k * ringVerts;
-        for (int j = 0; j < sides; ++j)
-            row[j] = amp[k] *
-                     barkReliefShape(settings.barkPattern,
-                                     static_cast<float>(j * columns) / static_cast<float>(sides),
-                                     along[k] / width, columns, seed);
+        barkReliefRow(settings.barkPattern, columns, sides, along[k] / width, seed, amp[k], row);
         row[sides] = row[0];
     }
     f = std::move(g);
@@ -629,7 +684,7 @@ void meshRibbon(Writer& w, const skel::Skeleton& s, const std::vector<float>& ra
         }
         glm::vec3 view = camera - p;
         view -= glm::dot(view, t) * t;
-        const glm::vec3 normal = safeNormalize(view, anyPerpendicular(t), kMinDirectionLength);
+        const glm::vec3 normal = normalizeOrPerpendicular(view, t);
         const glm::vec3 side = glm::cross(t, normal);
         const float half = R(k) * widthScale;
         w.flex = 1.0f - R(k) * w.invRMax;

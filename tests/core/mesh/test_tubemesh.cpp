@@ -287,7 +287,8 @@ TEST(TubeMesh, RejectsBadResolution) {
 }
 
 // Oracle: the first, straightforward mesher (resize + write at offsets) gives the same bytes as
-// the optimized one (scratch blocks appended in order), on one and two threads, with and
+// the optimized one (scratch blocks appended in order; round rings' vertices three lanes at once
+// with SSE2, Writer::ring), on one and two threads, with and
 // without caps, wind attributes, twig dropping, and when appending to a mesh that has vertices
 // but no normals yet.
 TEST(TubeMesh, SameBytesAsStraightforwardMesher) {
