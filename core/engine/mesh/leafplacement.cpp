@@ -1,6 +1,7 @@
 #include "engine/mesh/leafplacement.h"
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include <glm/gtc/quaternion.hpp>
@@ -96,11 +97,15 @@ struct Placer {
         leaf.size = static_cast<float>(p.size * (1.0 + v));
         leaf.node = node;
         out.push_back(leaf);
+        // Written through raw pointers into room made once (seven push_backs a leaf were a
+        // capacity test and an end pointer's load and store each).
+        float* const in = inputs.get() + count;
         for (int a = 0; a < 3; ++a) {
-            inputs[a].push_back(t[a]);
-            inputs[3 + a].push_back(radial[a]);
+            in[a * stride] = t[a];
+            in[(3 + a) * stride] = radial[a];
         }
-        inputs[6].push_back(forward);
+        in[6 * stride] = forward;
+        ++count;
     }
 
     // The orientations of the leaves from out[first] on (leaf() calls, in order): frame()'s
@@ -109,7 +114,7 @@ struct Placer {
     // same quaternions, bit for bit). One leaf's frame is four square roots and divisions in a
     // chain; perf record of the English oak: Placer::leaf 10 % of the tree.
     void orientAll(std::size_t first) {
-        const std::size_t n = inputs[6].size();
+        const std::size_t n = count;
         std::size_t k = 0;
 #if defined(__SSE2__)
         const __m128 sp = _mm_set1_ps(sinPetiole), cp = _mm_set1_ps(cosPetiole);
@@ -126,11 +131,11 @@ struct Placer {
                               _mm_mul_ps(az, bz));
         };
         for (; k + 4 <= n; k += 4) {
-            const __m128 tx = _mm_loadu_ps(&inputs[0][k]), ty = _mm_loadu_ps(&inputs[1][k]),
-                         tz = _mm_loadu_ps(&inputs[2][k]);
-            const __m128 rx = _mm_loadu_ps(&inputs[3][k]), ry = _mm_loadu_ps(&inputs[4][k]),
-                         rz = _mm_loadu_ps(&inputs[5][k]);
-            const __m128 fw = _mm_loadu_ps(&inputs[6][k]);
+            const __m128 tx = _mm_loadu_ps(&input(0)[k]), ty = _mm_loadu_ps(&input(1)[k]),
+                         tz = _mm_loadu_ps(&input(2)[k]);
+            const __m128 rx = _mm_loadu_ps(&input(3)[k]), ry = _mm_loadu_ps(&input(4)[k]),
+                         rz = _mm_loadu_ps(&input(5)[k]);
+            const __m128 fw = _mm_loadu_ps(&input(6)[k]);
             __m128 hx =
                 _mm_add_ps(_mm_add_ps(_mm_mul_ps(sp, rx), _mm_mul_ps(cp, tx)), _mm_mul_ps(fw, tx));
             __m128 hy =
@@ -222,17 +227,29 @@ struct Placer {
 #endif
         for (; k < n; ++k)
             out[first + k].orientation = scalarFrame(k);
-        for (std::vector<float>& in : inputs)
-            in.clear();
+        count = 0;
     }
 
     glm::quat scalarFrame(std::size_t k) const {
-        return frame({inputs[0][k], inputs[1][k], inputs[2][k]},
-                     {inputs[3][k], inputs[4][k], inputs[5][k]}, inputs[6][k]);
+        return frame({input(0)[k], input(1)[k], input(2)[k]},
+                     {input(3)[k], input(4)[k], input(5)[k]}, input(6)[k]);
     }
 
-    /// leaf()'s tangents (x, y, z), radial directions (x, y, z) and forward weights, by leaf.
-    std::vector<float> inputs[7]{};
+    /// Room for \p leaves leaf() calls.
+    void reserve(std::size_t leaves) {
+        stride = leaves;
+        inputs = std::make_unique_for_overwrite<float[]>(7 * leaves);
+        count = 0;
+    }
+    const float* input(int a) const {
+        return inputs.get() + static_cast<std::size_t>(a) * stride;
+    }
+
+    /// leaf()'s tangents (x, y, z), radial directions (x, y, z) and forward weights: seven
+    /// arrays of stride floats, count leaves in each.
+    std::unique_ptr<float[]> inputs{};
+    std::size_t stride = 0;
+    std::size_t count = 0;
 
     // The cosines and sines of the leaves' angles at position index k (radians), as floats.
     // They depend on k only (spiral) or on its parity: made once each, from the same double
@@ -339,8 +356,7 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
     const std::size_t bound = leafBound(s, p, hidden, children);
     const std::size_t first = out.size();
     out.reserve(first + bound);
-    for (std::vector<float>& in : placer.inputs)
-        in.reserve(bound);
+    placer.reserve(bound);
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
