@@ -3,6 +3,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <span>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -254,16 +255,17 @@ struct Placer {
     // The cosines and sines of the leaves' angles at position index k (radians), as floats.
     // They depend on k only (spiral) or on its parity: made once each, from the same double
     // angle as before (std::sincos of a double was a tenth of the placement).
-    void angles(std::uint64_t k, std::vector<glm::vec2>& a) {
-        a.clear();
+    // Returned as a view of the tables (copying them into a vector at every position was a
+    // clear and a push_back a leaf).
+    std::span<const glm::vec2> angles(std::uint64_t k) {
         if (p.phyllotaxis == Phyllotaxis::Spiral) {
             const std::uint64_t j = k % 100000;
             if (j >= spiral.size() && j < kSpiralTable)
                 for (std::uint64_t q = spiral.size(); q <= j; ++q)
                     spiral.push_back(trig(137.5 * kDeg * static_cast<double>(q)));
-            a.push_back(j < spiral.size() ? spiral[j]
-                                          : trig(137.5 * kDeg * static_cast<double>(j)));
-            return;
+            if (j < spiral.size()) return {&spiral[j], 1};
+            far = trig(137.5 * kDeg * static_cast<double>(j));
+            return {&far, 1};
         }
         std::vector<glm::vec2>& cached = parity[k % 2];
         if (cached.empty()) {
@@ -288,7 +290,7 @@ struct Placer {
                 break;
             }
         }
-        a = cached;
+        return cached;
     }
 
     static glm::vec2 trig(double ang) {
@@ -296,14 +298,22 @@ struct Placer {
     }
     static constexpr std::uint64_t kSpiralTable = 1u << 16;
     std::vector<glm::vec2> spiral{};    ///< by k % 100000, filled as far as asked
+    glm::vec2 far{};                    ///< the angle of a spiral position past the table
     std::vector<glm::vec2> parity[2]{}; ///< the other arrangements, by k % 2
+};
+
+// A segment's length, tangent and the two radial axes its leaves turn about.
+struct SegmentFrame {
+    float len = 0.0f;
+    glm::vec3 t{0.0f}, e1{0.0f}, e2{0.0f};
 };
 
 // At least as many leaves as placeLeaves makes (one more a segment than its density gives):
 // the output reserved once, not grown by copying.
 std::size_t leafBound(const skel::Skeleton& s, const LeafPlacement& p,
                       const std::vector<std::uint8_t>& hidden,
-                      const std::vector<std::uint32_t>& children) {
+                      const std::vector<std::uint32_t>& children,
+                      const std::vector<SegmentFrame>& frames) {
     const std::size_t perPosition = p.phyllotaxis == Phyllotaxis::Opposite  ? 2
                                     : p.phyllotaxis == Phyllotaxis::Whorled ? p.whorlCount
                                                                             : 1;
@@ -312,8 +322,7 @@ std::size_t leafBound(const skel::Skeleton& s, const LeafPlacement& p,
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius) {
-            const float len =
-                glm::length(s.position[i] - s.position[static_cast<std::size_t>(par)]);
+            const float len = frames[i].len;
             bound += perPosition * (static_cast<std::size_t>(p.density * len) + 1);
         }
         if (p.atTips && children[i] == 0) bound += static_cast<std::size_t>(p.tipCount);
@@ -350,10 +359,22 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
             (s.flags[i] & skel::kHidden) || (par >= 0 && hidden[static_cast<std::size_t>(par)]);
         if (par >= 0 && !hidden[i]) ++children[static_cast<std::size_t>(par)];
     }
+    // Each segment's frame first, in a loop of their own: a frame is a chain of two square
+    // roots and divisions, which the segments' loops of leaves kept from overlapping.
+    std::vector<SegmentFrame> frames(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t par = s.parent[i];
+        if (par < 0 || hidden[i]) continue;
+        const glm::vec3 a0 = s.position[static_cast<std::size_t>(par)], a1 = s.position[i];
+        SegmentFrame& f = frames[i];
+        f.len = glm::length(a1 - a0);
+        f.t = f.len > 1e-9f ? (a1 - a0) / f.len : skel::headingOf(s.orientation[i]);
+        f.e1 = perpendicular(f.t, skel::upOf(s.orientation[i]));
+        f.e2 = glm::cross(f.t, f.e1);
+    }
     // Running position index along each axis so phyllotaxis continues across segments.
     std::vector<std::uint64_t> index(n, 0);
-    std::vector<glm::vec2> a;
-    const std::size_t bound = leafBound(s, p, hidden, children);
+    const std::size_t bound = leafBound(s, p, hidden, children, frames);
     const std::size_t first = out.size();
     out.reserve(first + bound);
     placer.reserve(bound);
@@ -363,10 +384,9 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
         const auto pi = static_cast<std::size_t>(par);
         Rng rng(mixSeed(p.seed, i));
         const glm::vec3 a0 = s.position[pi], a1 = s.position[i];
-        const float len = glm::length(a1 - a0);
-        const glm::vec3 t = len > 1e-9f ? (a1 - a0) / len : skel::headingOf(s.orientation[i]);
-        const glm::vec3 e1 = perpendicular(t, skel::upOf(s.orientation[i]));
-        const glm::vec3 e2 = glm::cross(t, e1);
+        const SegmentFrame& frame = frames[i];
+        const float len = frame.len;
+        const glm::vec3 t = frame.t, e1 = frame.e1, e2 = frame.e2;
         std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
             const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
@@ -374,8 +394,7 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
                 const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
                 const glm::vec3 axis = a0 + f * (a1 - a0);
                 const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
-                placer.angles(k, a);
-                for (const glm::vec2& cs : a) {
+                for (const glm::vec2& cs : placer.angles(k)) {
                     const glm::vec3 radial = cs.x * e1 + cs.y * e2;
                     placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
                                 static_cast<std::int32_t>(i));
