@@ -128,6 +128,26 @@ Scene makeScene(std::uint64_t seed, std::size_t nodes, std::size_t leafCount, fl
         skel::Leaf leaf;
         leaf.position = at + glm::vec3(rng.uniformf(-spread, spread), rng.uniformf(-spread, spread),
                                        rng.uniformf(-spread, spread));
+        // Some on a cell's boundary or a hair either side of it (the cells' floors), -0 and
+        // subnormal coordinates included.
+        for (int a = 0; a < 3; ++a)
+            switch (rng.below(12)) {
+            case 0:
+                leaf.position[a] = std::round(leaf.position[a] * 2.0f) * 0.5f;
+                break;
+            case 1:
+                leaf.position[a] =
+                    std::nextafter(std::round(leaf.position[a] * 2.0f) * 0.5f, -1e9f);
+                break;
+            case 2:
+                leaf.position[a] = std::nextafter(std::round(leaf.position[a] * 2.0f) * 0.5f, 1e9f);
+                break;
+            case 3:
+                leaf.position[a] = rng.below(2) ? -0.0f : -1e-40f;
+                break;
+            default:
+                break;
+            }
         leaf.node = rng.below(40) == 0 ? -1 : static_cast<std::int32_t>(rng.below(nodes));
         sc.leaves.push_back(leaf);
         glm::vec3 centre = leaf.position;
