@@ -57,6 +57,44 @@ glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
 #endif
 }
 
+// The mean of a card's \p count corners in doubles, summed in order from +0.
+glm::dvec3 centreOf(const glm::vec3* corners, std::size_t count) {
+    glm::dvec3 centre(0.0);
+    for (std::size_t k = 0; k < count; ++k)
+        centre += glm::dvec3(corners[k]);
+    // Four corners: times a quarter, the quotient's bits without a division.
+    if (count == 4)
+        centre *= 0.25;
+    else
+        centre /= static_cast<double>(count);
+    return centre;
+}
+
+// cellOf(centreOf(...)) of a card's four corners, x and y in one SSE2 register of doubles
+// (each lane the same sums from +0, the same quarter and floor as the scalar ones).
+glm::ivec3 cardCellOf(const glm::vec3* corners) {
+#if defined(__SSE2__)
+    __m128d xy = _mm_setzero_pd();
+    double z = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &corners[k].x, sizeof bits); // x and y
+        xy = _mm_add_pd(
+            xy, _mm_cvtps_pd(_mm_castsi128_ps(_mm_cvtsi64_si128(static_cast<long long>(bits)))));
+        z += static_cast<double>(corners[k].z);
+    }
+    const __m128d q = _mm_mul_pd(_mm_mul_pd(xy, _mm_set1_pd(0.25)), _mm_set1_pd(1.0 / kCell));
+    const __m128i i = _mm_cvttpd_epi32(q); // two ints, low lanes
+    const __m128i above = _mm_shuffle_epi32(_mm_castpd_si128(_mm_cmpgt_pd(_mm_cvtepi32_pd(i), q)),
+                                            _MM_SHUFFLE(3, 3, 2, 0));
+    alignas(16) int c[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(c), _mm_add_epi32(i, above));
+    return {c[0], c[1], floorToInt(z * 0.25 / kCell)};
+#else
+    return cellOf(centreOf(corners, 4));
+#endif
+}
+
 // The light a node gathers itself: its record less its children's (a space colonization node's
 // own exposure, a self-organizing tip's buds'); where that is nothing (a self-organizing node
 // whose buds all grew or were shed), the mean per tip of its subtree.
@@ -275,15 +313,8 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
     for (std::size_t card = 0; card < light.size(); ++card) {
         const std::size_t v = firstVertex + 4 * card;
         const std::size_t end = std::min(mesh.positions.size(), v + 4);
-        glm::dvec3 centre(0.0);
-        for (std::size_t k = v; k < end; ++k)
-            centre += glm::dvec3(mesh.positions[k]);
-        // A card's four corners: times a quarter, the quotient's bits without a division.
-        if (end - v == 4)
-            centre *= 0.25;
-        else
-            centre /= static_cast<double>(end - v);
-        Sum s = sums.around(cellOf(centre));
+        Sum s = sums.around(end - v == 4 ? cardCellOf(&mesh.positions[v])
+                                         : cellOf(centreOf(&mesh.positions[v], end - v)));
         if (s.count == 0.0) s = all;
         light[card] = static_cast<float>(s.light / s.count);
     }

@@ -155,6 +155,17 @@ Scene makeScene(std::uint64_t seed, std::size_t nodes, std::size_t leafCount, fl
             centre += glm::vec3(rng.uniformf(-1.2f, 1.2f), rng.uniformf(-1.2f, 1.2f),
                                 rng.uniformf(-1.2f, 1.2f));
         if (rng.below(50) == 0) centre += glm::vec3(40.0f, 0.0f, 0.0f);
+        if (rng.below(6) == 0) {
+            // A card centred on a cell's corner (its corners' mean exactly there), or a hair
+            // off it.
+            const glm::vec3 corner = glm::round(centre * 2.0f) * 0.5f;
+            const float hair = rng.below(2) ? 0.0f : 1e-6f;
+            for (const glm::vec3 d :
+                 {glm::vec3(0.125f, -0.25f, 0.125f), glm::vec3(-0.125f, 0.25f, -0.125f),
+                  glm::vec3(0.25f, 0.125f, -0.25f), glm::vec3(-0.25f, -0.125f, 0.25f + hair)})
+                sc.mesh.positions.push_back(corner + d);
+            continue;
+        }
         for (int k = 0; k < 4; ++k)
             sc.mesh.positions.push_back(centre + glm::vec3(rng.uniformf(-0.1f, 0.1f),
                                                            rng.uniformf(-0.1f, 0.1f),
