@@ -64,6 +64,69 @@ glm::quat quatOfFrame(const glm::mat3& m) {
     return {v[pick[0]], v[pick[1]], v[pick[2]], v[pick[3]]};
 }
 
+#if defined(__SSE2__)
+// Eight floats as two SSE2 registers, each operation made on both in turn: two blocks of four
+// leaves whose chains of square roots and divisions interleave in the instruction stream (one
+// block's chain was too long for the processor to overlap the next block's). Each lane's
+// operations are the scalar ones in order.
+struct Pack {
+    static constexpr int kLanes = 8;
+    __m128 a, b;
+    static Pack all(float v) { return {_mm_set1_ps(v), _mm_set1_ps(v)}; }
+    static Pack load(const float* f) { return {_mm_loadu_ps(f), _mm_loadu_ps(f + 4)}; }
+    void store(float* f) const {
+        _mm_store_ps(f, a);
+        _mm_store_ps(f + 4, b);
+    }
+};
+inline Pack operator+(Pack x, Pack y) {
+    return {_mm_add_ps(x.a, y.a), _mm_add_ps(x.b, y.b)};
+}
+inline Pack operator-(Pack x, Pack y) {
+    return {_mm_sub_ps(x.a, y.a), _mm_sub_ps(x.b, y.b)};
+}
+inline Pack operator*(Pack x, Pack y) {
+    return {_mm_mul_ps(x.a, y.a), _mm_mul_ps(x.b, y.b)};
+}
+inline Pack operator/(Pack x, Pack y) {
+    return {_mm_div_ps(x.a, y.a), _mm_div_ps(x.b, y.b)};
+}
+inline Pack operator-(Pack x) { // the sign bit flipped, as glm's unary minus on floats
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    return {_mm_xor_ps(x.a, sign), _mm_xor_ps(x.b, sign)};
+}
+inline Pack sqrt(Pack x) {
+    return {_mm_sqrt_ps(x.a), _mm_sqrt_ps(x.b)};
+}
+inline unsigned lessMask(Pack x, Pack y) {
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(x.a, y.a)) |
+                                 _mm_movemask_ps(_mm_cmplt_ps(x.b, y.b)) << 4);
+}
+inline unsigned lessEqualMask(Pack x, Pack y) {
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(x.a, y.a)) |
+                                 _mm_movemask_ps(_mm_cmple_ps(x.b, y.b)) << 4);
+}
+struct PackIndex {
+    __m128i a = _mm_setzero_si128(), b = _mm_setzero_si128();
+    void store(std::int32_t* i) const {
+        _mm_store_si128(reinterpret_cast<__m128i*>(i), a);
+        _mm_store_si128(reinterpret_cast<__m128i*>(i + 4), b);
+    }
+};
+// quatOfFrame's running choice: where f is larger than big, big becomes f and index i.
+inline void take(Pack f, int i, Pack& big, PackIndex& index) {
+    const __m128i ii = _mm_set1_epi32(i);
+    auto one = [&](__m128 fv, __m128& bg, __m128i& ix) {
+        const __m128 more = _mm_cmpgt_ps(fv, bg);
+        bg = _mm_or_ps(_mm_and_ps(more, fv), _mm_andnot_ps(more, bg));
+        const __m128i mi = _mm_castps_si128(more);
+        ix = _mm_or_si128(_mm_and_si128(mi, ii), _mm_andnot_si128(mi, ix));
+    };
+    one(f.a, big.a, index.a);
+    one(f.b, big.b, index.b);
+}
+#endif
+
 struct Placer {
     const LeafPlacement& p;
     glm::vec3 light;
@@ -118,106 +181,86 @@ struct Placer {
         const std::size_t n = count;
         std::size_t k = 0;
 #if defined(__SSE2__)
-        const __m128 sp = _mm_set1_ps(sinPetiole), cp = _mm_set1_ps(cosPetiole);
-        const __m128 nw = _mm_set1_ps(static_cast<float>(p.normalWeight));
-        const __m128 uw = _mm_set1_ps(static_cast<float>(p.upWeight));
-        const __m128 lw = _mm_set1_ps(static_cast<float>(p.lightWeight));
-        const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-        const __m128 upX = _mm_mul_ps(uw, zero), upY = _mm_mul_ps(uw, one), upZ = upX;
-        const __m128 lwX = _mm_mul_ps(lw, _mm_set1_ps(light.x));
-        const __m128 lwY = _mm_mul_ps(lw, _mm_set1_ps(light.y));
-        const __m128 lwZ = _mm_mul_ps(lw, _mm_set1_ps(light.z));
-        auto dot = [](__m128 ax, __m128 ay, __m128 az, __m128 bx, __m128 by, __m128 bz) {
-            return _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)),
-                              _mm_mul_ps(az, bz));
-        };
-        for (; k + 4 <= n; k += 4) {
-            const __m128 tx = _mm_loadu_ps(&input(0)[k]), ty = _mm_loadu_ps(&input(1)[k]),
-                         tz = _mm_loadu_ps(&input(2)[k]);
-            const __m128 rx = _mm_loadu_ps(&input(3)[k]), ry = _mm_loadu_ps(&input(4)[k]),
-                         rz = _mm_loadu_ps(&input(5)[k]);
-            const __m128 fw = _mm_loadu_ps(&input(6)[k]);
-            __m128 hx =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(sp, rx), _mm_mul_ps(cp, tx)), _mm_mul_ps(fw, tx));
-            __m128 hy =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(sp, ry), _mm_mul_ps(cp, ty)), _mm_mul_ps(fw, ty));
-            __m128 hz =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(sp, rz), _mm_mul_ps(cp, tz)), _mm_mul_ps(fw, tz));
-            __m128 inv = _mm_div_ps(one, _mm_sqrt_ps(dot(hx, hy, hz, hx, hy, hz)));
-            hx = _mm_mul_ps(hx, inv);
-            hy = _mm_mul_ps(hy, inv);
-            hz = _mm_mul_ps(hz, inv);
-            __m128 nx = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nw, rx), upX), lwX);
-            __m128 ny = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nw, ry), upY), lwY);
-            __m128 nz = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nw, rz), upZ), lwZ);
-            const __m128 nh = dot(nx, ny, nz, hx, hy, hz);
-            nx = _mm_sub_ps(nx, _mm_mul_ps(nh, hx));
-            ny = _mm_sub_ps(ny, _mm_mul_ps(nh, hy));
-            nz = _mm_sub_ps(nz, _mm_mul_ps(nh, hz));
-            const __m128 nn = dot(nx, ny, nz, nx, ny, nz);
+        using P = Pack;
+        const P sp = P::all(sinPetiole), cp = P::all(cosPetiole);
+        const P nw = P::all(static_cast<float>(p.normalWeight));
+        const P uw = P::all(static_cast<float>(p.upWeight));
+        const P lw = P::all(static_cast<float>(p.lightWeight));
+        const P zero = P::all(0.0f), one = P::all(1.0f);
+        const P upX = uw * zero, upY = uw * one, upZ = upX;
+        const P lwX = lw * P::all(light.x), lwY = lw * P::all(light.y), lwZ = lw * P::all(light.z);
+        auto dot = [](P ax, P ay, P az, P bx, P by, P bz) { return ax * bx + ay * by + az * bz; };
+        for (; k + Pack::kLanes <= n; k += Pack::kLanes) {
+            const P tx = P::load(&input(0)[k]), ty = P::load(&input(1)[k]),
+                    tz = P::load(&input(2)[k]);
+            const P rx = P::load(&input(3)[k]), ry = P::load(&input(4)[k]),
+                    rz = P::load(&input(5)[k]);
+            const P fw = P::load(&input(6)[k]);
+            P hx = sp * rx + cp * tx + fw * tx;
+            P hy = sp * ry + cp * ty + fw * ty;
+            P hz = sp * rz + cp * tz + fw * tz;
+            P inv = one / sqrt(dot(hx, hy, hz, hx, hy, hz));
+            hx = hx * inv;
+            hy = hy * inv;
+            hz = hz * inv;
+            P nx = nw * rx + upX + lwX;
+            P ny = nw * ry + upY + lwY;
+            P nz = nw * rz + upZ + lwZ;
+            const P nh = dot(nx, ny, nz, hx, hy, hz);
+            nx = nx - nh * hx;
+            ny = ny - nh * hy;
+            nz = nz - nh * hz;
+            const P nn = dot(nx, ny, nz, nx, ny, nz);
             // A lane whose normal is (nearly) along its heading takes frame()'s other branch.
-            const int odd = _mm_movemask_ps(_mm_cmplt_ps(nn, _mm_set1_ps(1e-8f)));
-            inv = _mm_div_ps(one, _mm_sqrt_ps(nn));
-            nx = _mm_mul_ps(nx, inv);
-            ny = _mm_mul_ps(ny, inv);
-            nz = _mm_mul_ps(nz, inv);
+            const unsigned odd = lessMask(nn, P::all(1e-8f));
+            inv = one / sqrt(nn);
+            nx = nx * inv;
+            ny = ny * inv;
+            nz = nz * inv;
             // l = cross(n, h); the frame's matrix is (-l, h, n) by columns.
-            const __m128 lx = _mm_sub_ps(_mm_mul_ps(ny, hz), _mm_mul_ps(hy, nz));
-            const __m128 ly = _mm_sub_ps(_mm_mul_ps(nz, hx), _mm_mul_ps(hz, nx));
-            const __m128 lz = _mm_sub_ps(_mm_mul_ps(nx, hy), _mm_mul_ps(hx, ny));
-            const __m128 sign = _mm_set1_ps(-0.0f); // -l as glm negates: the sign flipped
-            const __m128 m00 = _mm_xor_ps(lx, sign), m01 = _mm_xor_ps(ly, sign),
-                         m02 = _mm_xor_ps(lz, sign);
-            const __m128 m10 = hx, m11 = hy, m12 = hz, m20 = nx, m21 = ny, m22 = nz;
-            // quatOfFrame, four at a time.
-            const __m128 fx = _mm_sub_ps(_mm_sub_ps(m00, m11), m22);
-            const __m128 fy = _mm_sub_ps(_mm_sub_ps(m11, m00), m22);
-            const __m128 fz = _mm_sub_ps(_mm_sub_ps(m22, m00), m11);
-            const __m128 fwq = _mm_add_ps(_mm_add_ps(m00, m11), m22);
-            __m128 big = fwq;
-            __m128i index = _mm_setzero_si128();
-            auto take = [&](__m128 f, int i) {
-                const __m128 more = _mm_cmpgt_ps(f, big);
-                big = _mm_or_ps(_mm_and_ps(more, f), _mm_andnot_ps(more, big));
-                const __m128i mi = _mm_castps_si128(more);
-                index =
-                    _mm_or_si128(_mm_and_si128(mi, _mm_set1_epi32(i)), _mm_andnot_si128(mi, index));
-            };
-            take(fx, 1);
-            take(fy, 2);
-            take(fz, 3);
-            const __m128 bv = _mm_mul_ps(_mm_sqrt_ps(_mm_add_ps(big, one)), _mm_set1_ps(0.5f));
-            const __m128 mult = _mm_div_ps(_mm_set1_ps(0.25f), bv);
-            alignas(16) float v[7][4];
-            alignas(16) std::int32_t which[4];
-            _mm_store_ps(v[0], bv);
-            _mm_store_ps(v[1], _mm_mul_ps(_mm_sub_ps(m12, m21), mult));
-            _mm_store_ps(v[2], _mm_mul_ps(_mm_sub_ps(m20, m02), mult));
-            _mm_store_ps(v[3], _mm_mul_ps(_mm_sub_ps(m01, m10), mult));
-            _mm_store_ps(v[4], _mm_mul_ps(_mm_add_ps(m01, m10), mult));
-            _mm_store_ps(v[5], _mm_mul_ps(_mm_add_ps(m20, m02), mult));
-            _mm_store_ps(v[6], _mm_mul_ps(_mm_add_ps(m12, m21), mult));
-            _mm_store_si128(reinterpret_cast<__m128i*>(which), index);
-            alignas(16) float q[4][4]; // w, x, y, z by lane
-            for (int lane = 0; lane < 4; ++lane) {
+            const P lx = ny * hz - hy * nz;
+            const P ly = nz * hx - hz * nx;
+            const P lz = nx * hy - hx * ny;
+            const P m00 = -lx, m01 = -ly, m02 = -lz; // -l as glm negates: the sign flipped
+            const P m10 = hx, m11 = hy, m12 = hz, m20 = nx, m21 = ny, m22 = nz;
+            // quatOfFrame, a pack at a time.
+            const P fx = m00 - m11 - m22;
+            const P fy = m11 - m00 - m22;
+            const P fz = m22 - m00 - m11;
+            P big = m00 + m11 + m22;
+            PackIndex index{};
+            take(fx, 1, big, index);
+            take(fy, 2, big, index);
+            take(fz, 3, big, index);
+            const P bv = sqrt(big + one) * P::all(0.5f);
+            const P mult = P::all(0.25f) / bv;
+            alignas(16) float v[7][Pack::kLanes];
+            alignas(16) std::int32_t which[Pack::kLanes];
+            bv.store(v[0]);
+            ((m12 - m21) * mult).store(v[1]);
+            ((m20 - m02) * mult).store(v[2]);
+            ((m01 - m10) * mult).store(v[3]);
+            ((m01 + m10) * mult).store(v[4]);
+            ((m20 + m02) * mult).store(v[5]);
+            ((m12 + m21) * mult).store(v[6]);
+            index.store(which);
+            alignas(16) float q[4][Pack::kLanes]; // w, x, y, z by lane
+            for (int lane = 0; lane < Pack::kLanes; ++lane) {
                 const int* pick = kFramePick[which[lane]];
                 for (int c = 0; c < 4; ++c)
                     q[c][lane] = v[pick[c]][lane];
             }
             // glm::normalize(quat): (w w + x x) + (y y + z z), one over its root.
-            const __m128 qw = _mm_load_ps(q[0]), qx = _mm_load_ps(q[1]), qy = _mm_load_ps(q[2]),
-                         qz = _mm_load_ps(q[3]);
-            const __m128 len =
-                _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(qw, qw), _mm_mul_ps(qx, qx)),
-                                       _mm_add_ps(_mm_mul_ps(qy, qy), _mm_mul_ps(qz, qz))));
-            const int flat = _mm_movemask_ps(_mm_cmple_ps(len, zero));
-            const __m128 over = _mm_div_ps(one, len);
-            alignas(16) float r[4][4];
-            _mm_store_ps(r[0], _mm_mul_ps(qw, over));
-            _mm_store_ps(r[1], _mm_mul_ps(qx, over));
-            _mm_store_ps(r[2], _mm_mul_ps(qy, over));
-            _mm_store_ps(r[3], _mm_mul_ps(qz, over));
-            for (int lane = 0; lane < 4; ++lane) {
+            const P qw = P::load(q[0]), qx = P::load(q[1]), qy = P::load(q[2]), qz = P::load(q[3]);
+            const P len = sqrt((qw * qw + qx * qx) + (qy * qy + qz * qz));
+            const unsigned flat = lessEqualMask(len, zero);
+            const P over = one / len;
+            alignas(16) float r[4][Pack::kLanes];
+            (qw * over).store(r[0]);
+            (qx * over).store(r[1]);
+            (qy * over).store(r[2]);
+            (qz * over).store(r[3]);
+            for (int lane = 0; lane < Pack::kLanes; ++lane) {
                 skel::Leaf& leaf = out[first + k + static_cast<std::size_t>(lane)];
                 if ((odd | flat) >> lane & 1)
                     leaf.orientation = scalarFrame(k + static_cast<std::size_t>(lane));
