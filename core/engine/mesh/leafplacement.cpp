@@ -1,7 +1,9 @@
 #include "engine/mesh/leafplacement.h"
 
 #include <cmath>
+#include <memory>
 #include <numbers>
+#include <span>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -62,6 +64,69 @@ glm::quat quatOfFrame(const glm::mat3& m) {
     return {v[pick[0]], v[pick[1]], v[pick[2]], v[pick[3]]};
 }
 
+#if defined(__SSE2__)
+// Eight floats as two SSE2 registers, each operation made on both in turn: two blocks of four
+// leaves whose chains of square roots and divisions interleave in the instruction stream (one
+// block's chain was too long for the processor to overlap the next block's). Each lane's
+// operations are the scalar ones in order.
+struct Pack {
+    static constexpr int kLanes = 8;
+    __m128 a, b;
+    static Pack all(float v) { return {_mm_set1_ps(v), _mm_set1_ps(v)}; }
+    static Pack load(const float* f) { return {_mm_loadu_ps(f), _mm_loadu_ps(f + 4)}; }
+    void store(float* f) const {
+        _mm_store_ps(f, a);
+        _mm_store_ps(f + 4, b);
+    }
+};
+inline Pack operator+(Pack x, Pack y) {
+    return {_mm_add_ps(x.a, y.a), _mm_add_ps(x.b, y.b)};
+}
+inline Pack operator-(Pack x, Pack y) {
+    return {_mm_sub_ps(x.a, y.a), _mm_sub_ps(x.b, y.b)};
+}
+inline Pack operator*(Pack x, Pack y) {
+    return {_mm_mul_ps(x.a, y.a), _mm_mul_ps(x.b, y.b)};
+}
+inline Pack operator/(Pack x, Pack y) {
+    return {_mm_div_ps(x.a, y.a), _mm_div_ps(x.b, y.b)};
+}
+inline Pack operator-(Pack x) { // the sign bit flipped, as glm's unary minus on floats
+    const __m128 sign = _mm_set1_ps(-0.0f);
+    return {_mm_xor_ps(x.a, sign), _mm_xor_ps(x.b, sign)};
+}
+inline Pack sqrt(Pack x) {
+    return {_mm_sqrt_ps(x.a), _mm_sqrt_ps(x.b)};
+}
+inline unsigned lessMask(Pack x, Pack y) {
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(x.a, y.a)) |
+                                 _mm_movemask_ps(_mm_cmplt_ps(x.b, y.b)) << 4);
+}
+inline unsigned lessEqualMask(Pack x, Pack y) {
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(x.a, y.a)) |
+                                 _mm_movemask_ps(_mm_cmple_ps(x.b, y.b)) << 4);
+}
+struct PackIndex {
+    __m128i a = _mm_setzero_si128(), b = _mm_setzero_si128();
+    void store(std::int32_t* i) const {
+        _mm_store_si128(reinterpret_cast<__m128i*>(i), a);
+        _mm_store_si128(reinterpret_cast<__m128i*>(i + 4), b);
+    }
+};
+// quatOfFrame's running choice: where f is larger than big, big becomes f and index i.
+inline void take(Pack f, int i, Pack& big, PackIndex& index) {
+    const __m128i ii = _mm_set1_epi32(i);
+    auto one = [&](__m128 fv, __m128& bg, __m128i& ix) {
+        const __m128 more = _mm_cmpgt_ps(fv, bg);
+        bg = _mm_or_ps(_mm_and_ps(more, fv), _mm_andnot_ps(more, bg));
+        const __m128i mi = _mm_castps_si128(more);
+        ix = _mm_or_si128(_mm_and_si128(mi, ii), _mm_andnot_si128(mi, ix));
+    };
+    one(f.a, big.a, index.a);
+    one(f.b, big.b, index.b);
+}
+#endif
+
 struct Placer {
     const LeafPlacement& p;
     glm::vec3 light;
@@ -96,11 +161,15 @@ struct Placer {
         leaf.size = static_cast<float>(p.size * (1.0 + v));
         leaf.node = node;
         out.push_back(leaf);
+        // Written through raw pointers into room made once (seven push_backs a leaf were a
+        // capacity test and an end pointer's load and store each).
+        float* const in = inputs.get() + count;
         for (int a = 0; a < 3; ++a) {
-            inputs[a].push_back(t[a]);
-            inputs[3 + a].push_back(radial[a]);
+            in[a * stride] = t[a];
+            in[(3 + a) * stride] = radial[a];
         }
-        inputs[6].push_back(forward);
+        in[6 * stride] = forward;
+        ++count;
     }
 
     // The orientations of the leaves from out[first] on (leaf() calls, in order): frame()'s
@@ -109,109 +178,89 @@ struct Placer {
     // same quaternions, bit for bit). One leaf's frame is four square roots and divisions in a
     // chain; perf record of the English oak: Placer::leaf 10 % of the tree.
     void orientAll(std::size_t first) {
-        const std::size_t n = inputs[6].size();
+        const std::size_t n = count;
         std::size_t k = 0;
 #if defined(__SSE2__)
-        const __m128 sp = _mm_set1_ps(sinPetiole), cp = _mm_set1_ps(cosPetiole);
-        const __m128 nw = _mm_set1_ps(static_cast<float>(p.normalWeight));
-        const __m128 uw = _mm_set1_ps(static_cast<float>(p.upWeight));
-        const __m128 lw = _mm_set1_ps(static_cast<float>(p.lightWeight));
-        const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-        const __m128 upX = _mm_mul_ps(uw, zero), upY = _mm_mul_ps(uw, one), upZ = upX;
-        const __m128 lwX = _mm_mul_ps(lw, _mm_set1_ps(light.x));
-        const __m128 lwY = _mm_mul_ps(lw, _mm_set1_ps(light.y));
-        const __m128 lwZ = _mm_mul_ps(lw, _mm_set1_ps(light.z));
-        auto dot = [](__m128 ax, __m128 ay, __m128 az, __m128 bx, __m128 by, __m128 bz) {
-            return _mm_add_ps(_mm_add_ps(_mm_mul_ps(ax, bx), _mm_mul_ps(ay, by)),
-                              _mm_mul_ps(az, bz));
-        };
-        for (; k + 4 <= n; k += 4) {
-            const __m128 tx = _mm_loadu_ps(&inputs[0][k]), ty = _mm_loadu_ps(&inputs[1][k]),
-                         tz = _mm_loadu_ps(&inputs[2][k]);
-            const __m128 rx = _mm_loadu_ps(&inputs[3][k]), ry = _mm_loadu_ps(&inputs[4][k]),
-                         rz = _mm_loadu_ps(&inputs[5][k]);
-            const __m128 fw = _mm_loadu_ps(&inputs[6][k]);
-            __m128 hx =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(sp, rx), _mm_mul_ps(cp, tx)), _mm_mul_ps(fw, tx));
-            __m128 hy =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(sp, ry), _mm_mul_ps(cp, ty)), _mm_mul_ps(fw, ty));
-            __m128 hz =
-                _mm_add_ps(_mm_add_ps(_mm_mul_ps(sp, rz), _mm_mul_ps(cp, tz)), _mm_mul_ps(fw, tz));
-            __m128 inv = _mm_div_ps(one, _mm_sqrt_ps(dot(hx, hy, hz, hx, hy, hz)));
-            hx = _mm_mul_ps(hx, inv);
-            hy = _mm_mul_ps(hy, inv);
-            hz = _mm_mul_ps(hz, inv);
-            __m128 nx = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nw, rx), upX), lwX);
-            __m128 ny = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nw, ry), upY), lwY);
-            __m128 nz = _mm_add_ps(_mm_add_ps(_mm_mul_ps(nw, rz), upZ), lwZ);
-            const __m128 nh = dot(nx, ny, nz, hx, hy, hz);
-            nx = _mm_sub_ps(nx, _mm_mul_ps(nh, hx));
-            ny = _mm_sub_ps(ny, _mm_mul_ps(nh, hy));
-            nz = _mm_sub_ps(nz, _mm_mul_ps(nh, hz));
-            const __m128 nn = dot(nx, ny, nz, nx, ny, nz);
+        using P = Pack;
+        const P sp = P::all(sinPetiole), cp = P::all(cosPetiole);
+        const P nw = P::all(static_cast<float>(p.normalWeight));
+        const P uw = P::all(static_cast<float>(p.upWeight));
+        const P lw = P::all(static_cast<float>(p.lightWeight));
+        const P zero = P::all(0.0f), one = P::all(1.0f);
+        const P upX = uw * zero, upY = uw * one, upZ = upX;
+        const P lwX = lw * P::all(light.x), lwY = lw * P::all(light.y), lwZ = lw * P::all(light.z);
+        auto dot = [](P ax, P ay, P az, P bx, P by, P bz) { return ax * bx + ay * by + az * bz; };
+        for (; k + Pack::kLanes <= n; k += Pack::kLanes) {
+            const P tx = P::load(&input(0)[k]), ty = P::load(&input(1)[k]),
+                    tz = P::load(&input(2)[k]);
+            const P rx = P::load(&input(3)[k]), ry = P::load(&input(4)[k]),
+                    rz = P::load(&input(5)[k]);
+            const P fw = P::load(&input(6)[k]);
+            P hx = sp * rx + cp * tx + fw * tx;
+            P hy = sp * ry + cp * ty + fw * ty;
+            P hz = sp * rz + cp * tz + fw * tz;
+            P inv = one / sqrt(dot(hx, hy, hz, hx, hy, hz));
+            hx = hx * inv;
+            hy = hy * inv;
+            hz = hz * inv;
+            P nx = nw * rx + upX + lwX;
+            P ny = nw * ry + upY + lwY;
+            P nz = nw * rz + upZ + lwZ;
+            const P nh = dot(nx, ny, nz, hx, hy, hz);
+            nx = nx - nh * hx;
+            ny = ny - nh * hy;
+            nz = nz - nh * hz;
+            const P nn = dot(nx, ny, nz, nx, ny, nz);
             // A lane whose normal is (nearly) along its heading takes frame()'s other branch.
-            const int odd = _mm_movemask_ps(_mm_cmplt_ps(nn, _mm_set1_ps(1e-8f)));
-            inv = _mm_div_ps(one, _mm_sqrt_ps(nn));
-            nx = _mm_mul_ps(nx, inv);
-            ny = _mm_mul_ps(ny, inv);
-            nz = _mm_mul_ps(nz, inv);
+            const unsigned odd = lessMask(nn, P::all(1e-8f));
+            inv = one / sqrt(nn);
+            nx = nx * inv;
+            ny = ny * inv;
+            nz = nz * inv;
             // l = cross(n, h); the frame's matrix is (-l, h, n) by columns.
-            const __m128 lx = _mm_sub_ps(_mm_mul_ps(ny, hz), _mm_mul_ps(hy, nz));
-            const __m128 ly = _mm_sub_ps(_mm_mul_ps(nz, hx), _mm_mul_ps(hz, nx));
-            const __m128 lz = _mm_sub_ps(_mm_mul_ps(nx, hy), _mm_mul_ps(hx, ny));
-            const __m128 sign = _mm_set1_ps(-0.0f); // -l as glm negates: the sign flipped
-            const __m128 m00 = _mm_xor_ps(lx, sign), m01 = _mm_xor_ps(ly, sign),
-                         m02 = _mm_xor_ps(lz, sign);
-            const __m128 m10 = hx, m11 = hy, m12 = hz, m20 = nx, m21 = ny, m22 = nz;
-            // quatOfFrame, four at a time.
-            const __m128 fx = _mm_sub_ps(_mm_sub_ps(m00, m11), m22);
-            const __m128 fy = _mm_sub_ps(_mm_sub_ps(m11, m00), m22);
-            const __m128 fz = _mm_sub_ps(_mm_sub_ps(m22, m00), m11);
-            const __m128 fwq = _mm_add_ps(_mm_add_ps(m00, m11), m22);
-            __m128 big = fwq;
-            __m128i index = _mm_setzero_si128();
-            auto take = [&](__m128 f, int i) {
-                const __m128 more = _mm_cmpgt_ps(f, big);
-                big = _mm_or_ps(_mm_and_ps(more, f), _mm_andnot_ps(more, big));
-                const __m128i mi = _mm_castps_si128(more);
-                index =
-                    _mm_or_si128(_mm_and_si128(mi, _mm_set1_epi32(i)), _mm_andnot_si128(mi, index));
-            };
-            take(fx, 1);
-            take(fy, 2);
-            take(fz, 3);
-            const __m128 bv = _mm_mul_ps(_mm_sqrt_ps(_mm_add_ps(big, one)), _mm_set1_ps(0.5f));
-            const __m128 mult = _mm_div_ps(_mm_set1_ps(0.25f), bv);
-            alignas(16) float v[7][4];
-            alignas(16) std::int32_t which[4];
-            _mm_store_ps(v[0], bv);
-            _mm_store_ps(v[1], _mm_mul_ps(_mm_sub_ps(m12, m21), mult));
-            _mm_store_ps(v[2], _mm_mul_ps(_mm_sub_ps(m20, m02), mult));
-            _mm_store_ps(v[3], _mm_mul_ps(_mm_sub_ps(m01, m10), mult));
-            _mm_store_ps(v[4], _mm_mul_ps(_mm_add_ps(m01, m10), mult));
-            _mm_store_ps(v[5], _mm_mul_ps(_mm_add_ps(m20, m02), mult));
-            _mm_store_ps(v[6], _mm_mul_ps(_mm_add_ps(m12, m21), mult));
-            _mm_store_si128(reinterpret_cast<__m128i*>(which), index);
-            alignas(16) float q[4][4]; // w, x, y, z by lane
-            for (int lane = 0; lane < 4; ++lane) {
+            const P lx = ny * hz - hy * nz;
+            const P ly = nz * hx - hz * nx;
+            const P lz = nx * hy - hx * ny;
+            const P m00 = -lx, m01 = -ly, m02 = -lz; // -l as glm negates: the sign flipped
+            const P m10 = hx, m11 = hy, m12 = hz, m20 = nx, m21 = ny, m22 = nz;
+            // quatOfFrame, a pack at a time.
+            const P fx = m00 - m11 - m22;
+            const P fy = m11 - m00 - m22;
+            const P fz = m22 - m00 - m11;
+            P big = m00 + m11 + m22;
+            PackIndex index{};
+            take(fx, 1, big, index);
+            take(fy, 2, big, index);
+            take(fz, 3, big, index);
+            const P bv = sqrt(big + one) * P::all(0.5f);
+            const P mult = P::all(0.25f) / bv;
+            alignas(16) float v[7][Pack::kLanes];
+            alignas(16) std::int32_t which[Pack::kLanes];
+            bv.store(v[0]);
+            ((m12 - m21) * mult).store(v[1]);
+            ((m20 - m02) * mult).store(v[2]);
+            ((m01 - m10) * mult).store(v[3]);
+            ((m01 + m10) * mult).store(v[4]);
+            ((m20 + m02) * mult).store(v[5]);
+            ((m12 + m21) * mult).store(v[6]);
+            index.store(which);
+            alignas(16) float q[4][Pack::kLanes]; // w, x, y, z by lane
+            for (int lane = 0; lane < Pack::kLanes; ++lane) {
                 const int* pick = kFramePick[which[lane]];
                 for (int c = 0; c < 4; ++c)
                     q[c][lane] = v[pick[c]][lane];
             }
             // glm::normalize(quat): (w w + x x) + (y y + z z), one over its root.
-            const __m128 qw = _mm_load_ps(q[0]), qx = _mm_load_ps(q[1]), qy = _mm_load_ps(q[2]),
-                         qz = _mm_load_ps(q[3]);
-            const __m128 len =
-                _mm_sqrt_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(qw, qw), _mm_mul_ps(qx, qx)),
-                                       _mm_add_ps(_mm_mul_ps(qy, qy), _mm_mul_ps(qz, qz))));
-            const int flat = _mm_movemask_ps(_mm_cmple_ps(len, zero));
-            const __m128 over = _mm_div_ps(one, len);
-            alignas(16) float r[4][4];
-            _mm_store_ps(r[0], _mm_mul_ps(qw, over));
-            _mm_store_ps(r[1], _mm_mul_ps(qx, over));
-            _mm_store_ps(r[2], _mm_mul_ps(qy, over));
-            _mm_store_ps(r[3], _mm_mul_ps(qz, over));
-            for (int lane = 0; lane < 4; ++lane) {
+            const P qw = P::load(q[0]), qx = P::load(q[1]), qy = P::load(q[2]), qz = P::load(q[3]);
+            const P len = sqrt((qw * qw + qx * qx) + (qy * qy + qz * qz));
+            const unsigned flat = lessEqualMask(len, zero);
+            const P over = one / len;
+            alignas(16) float r[4][Pack::kLanes];
+            (qw * over).store(r[0]);
+            (qx * over).store(r[1]);
+            (qy * over).store(r[2]);
+            (qz * over).store(r[3]);
+            for (int lane = 0; lane < Pack::kLanes; ++lane) {
                 skel::Leaf& leaf = out[first + k + static_cast<std::size_t>(lane)];
                 if ((odd | flat) >> lane & 1)
                     leaf.orientation = scalarFrame(k + static_cast<std::size_t>(lane));
@@ -222,31 +271,44 @@ struct Placer {
 #endif
         for (; k < n; ++k)
             out[first + k].orientation = scalarFrame(k);
-        for (std::vector<float>& in : inputs)
-            in.clear();
+        count = 0;
     }
 
     glm::quat scalarFrame(std::size_t k) const {
-        return frame({inputs[0][k], inputs[1][k], inputs[2][k]},
-                     {inputs[3][k], inputs[4][k], inputs[5][k]}, inputs[6][k]);
+        return frame({input(0)[k], input(1)[k], input(2)[k]},
+                     {input(3)[k], input(4)[k], input(5)[k]}, input(6)[k]);
     }
 
-    /// leaf()'s tangents (x, y, z), radial directions (x, y, z) and forward weights, by leaf.
-    std::vector<float> inputs[7]{};
+    /// Room for \p leaves leaf() calls.
+    void reserve(std::size_t leaves) {
+        stride = leaves;
+        inputs = std::make_unique_for_overwrite<float[]>(7 * leaves);
+        count = 0;
+    }
+    const float* input(int a) const {
+        return inputs.get() + static_cast<std::size_t>(a) * stride;
+    }
+
+    /// leaf()'s tangents (x, y, z), radial directions (x, y, z) and forward weights: seven
+    /// arrays of stride floats, count leaves in each.
+    std::unique_ptr<float[]> inputs{};
+    std::size_t stride = 0;
+    std::size_t count = 0;
 
     // The cosines and sines of the leaves' angles at position index k (radians), as floats.
     // They depend on k only (spiral) or on its parity: made once each, from the same double
     // angle as before (std::sincos of a double was a tenth of the placement).
-    void angles(std::uint64_t k, std::vector<glm::vec2>& a) {
-        a.clear();
+    // Returned as a view of the tables (copying them into a vector at every position was a
+    // clear and a push_back a leaf).
+    std::span<const glm::vec2> angles(std::uint64_t k) {
         if (p.phyllotaxis == Phyllotaxis::Spiral) {
             const std::uint64_t j = k % 100000;
             if (j >= spiral.size() && j < kSpiralTable)
                 for (std::uint64_t q = spiral.size(); q <= j; ++q)
                     spiral.push_back(trig(137.5 * kDeg * static_cast<double>(q)));
-            a.push_back(j < spiral.size() ? spiral[j]
-                                          : trig(137.5 * kDeg * static_cast<double>(j)));
-            return;
+            if (j < spiral.size()) return {&spiral[j], 1};
+            far = trig(137.5 * kDeg * static_cast<double>(j));
+            return {&far, 1};
         }
         std::vector<glm::vec2>& cached = parity[k % 2];
         if (cached.empty()) {
@@ -271,7 +333,7 @@ struct Placer {
                 break;
             }
         }
-        a = cached;
+        return cached;
     }
 
     static glm::vec2 trig(double ang) {
@@ -279,14 +341,22 @@ struct Placer {
     }
     static constexpr std::uint64_t kSpiralTable = 1u << 16;
     std::vector<glm::vec2> spiral{};    ///< by k % 100000, filled as far as asked
+    glm::vec2 far{};                    ///< the angle of a spiral position past the table
     std::vector<glm::vec2> parity[2]{}; ///< the other arrangements, by k % 2
+};
+
+// A segment's length, tangent and the two radial axes its leaves turn about.
+struct SegmentFrame {
+    float len = 0.0f;
+    glm::vec3 t{0.0f}, e1{0.0f}, e2{0.0f};
 };
 
 // At least as many leaves as placeLeaves makes (one more a segment than its density gives):
 // the output reserved once, not grown by copying.
 std::size_t leafBound(const skel::Skeleton& s, const LeafPlacement& p,
                       const std::vector<std::uint8_t>& hidden,
-                      const std::vector<std::uint32_t>& children) {
+                      const std::vector<std::uint32_t>& children,
+                      const std::vector<SegmentFrame>& frames) {
     const std::size_t perPosition = p.phyllotaxis == Phyllotaxis::Opposite  ? 2
                                     : p.phyllotaxis == Phyllotaxis::Whorled ? p.whorlCount
                                                                             : 1;
@@ -295,8 +365,7 @@ std::size_t leafBound(const skel::Skeleton& s, const LeafPlacement& p,
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius) {
-            const float len =
-                glm::length(s.position[i] - s.position[static_cast<std::size_t>(par)]);
+            const float len = frames[i].len;
             bound += perPosition * (static_cast<std::size_t>(p.density * len) + 1);
         }
         if (p.atTips && children[i] == 0) bound += static_cast<std::size_t>(p.tipCount);
@@ -333,24 +402,34 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
             (s.flags[i] & skel::kHidden) || (par >= 0 && hidden[static_cast<std::size_t>(par)]);
         if (par >= 0 && !hidden[i]) ++children[static_cast<std::size_t>(par)];
     }
+    // Each segment's frame first, in a loop of their own: a frame is a chain of two square
+    // roots and divisions, which the segments' loops of leaves kept from overlapping.
+    std::vector<SegmentFrame> frames(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t par = s.parent[i];
+        if (par < 0 || hidden[i]) continue;
+        const glm::vec3 a0 = s.position[static_cast<std::size_t>(par)], a1 = s.position[i];
+        SegmentFrame& f = frames[i];
+        f.len = glm::length(a1 - a0);
+        f.t = f.len > 1e-9f ? (a1 - a0) / f.len : skel::headingOf(s.orientation[i]);
+        f.e1 = perpendicular(f.t, skel::upOf(s.orientation[i]));
+        f.e2 = glm::cross(f.t, f.e1);
+    }
     // Running position index along each axis so phyllotaxis continues across segments.
     std::vector<std::uint64_t> index(n, 0);
-    std::vector<glm::vec2> a;
-    const std::size_t bound = leafBound(s, p, hidden, children);
+    const std::size_t bound = leafBound(s, p, hidden, children, frames);
     const std::size_t first = out.size();
     out.reserve(first + bound);
-    for (std::vector<float>& in : placer.inputs)
-        in.reserve(bound);
+    placer.reserve(bound);
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
         const auto pi = static_cast<std::size_t>(par);
         Rng rng(mixSeed(p.seed, i));
         const glm::vec3 a0 = s.position[pi], a1 = s.position[i];
-        const float len = glm::length(a1 - a0);
-        const glm::vec3 t = len > 1e-9f ? (a1 - a0) / len : skel::headingOf(s.orientation[i]);
-        const glm::vec3 e1 = perpendicular(t, skel::upOf(s.orientation[i]));
-        const glm::vec3 e2 = glm::cross(t, e1);
+        const SegmentFrame& frame = frames[i];
+        const float len = frame.len;
+        const glm::vec3 t = frame.t, e1 = frame.e1, e2 = frame.e2;
         std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
             const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
@@ -358,8 +437,7 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
                 const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
                 const glm::vec3 axis = a0 + f * (a1 - a0);
                 const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
-                placer.angles(k, a);
-                for (const glm::vec2& cs : a) {
+                for (const glm::vec2& cs : placer.angles(k)) {
                     const glm::vec3 radial = cs.x * e1 + cs.y * e2;
                     placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
                                 static_cast<std::int32_t>(i));

@@ -1,10 +1,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
+
+#include <glm/gtc/quaternion.hpp>
 
 #include "engine/mesh/leafplacement.h"
 #include "engine/util/error.h"
+#include "engine/util/random.h"
 
 using namespace sylva;
 
@@ -119,4 +123,180 @@ TEST(LeafPlacement, RangesAreChecked) {
     p = {};
     p.sizeVariation = 2.0;
     EXPECT_THROW(mesh::placeLeaves(twig(1), p), InvalidInput);
+}
+
+namespace {
+
+// placeLeaves written the straightforward way (each leaf's frame by glm::quat_cast when it is
+// placed, the angles' cosines and sines of the same double angles, every leaf pushed back): the
+// reference its tables, segment frames, raw inputs and SSE2 orientations must match bit for bit.
+glm::vec3 referencePerpendicular(const glm::vec3& t, const glm::vec3& hint) {
+    glm::vec3 p = hint - glm::dot(hint, t) * t;
+    if (glm::dot(p, p) < 1e-8f) {
+        const glm::vec3 a = std::abs(t.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+        p = glm::cross(t, a);
+    }
+    return glm::normalize(p);
+}
+
+std::vector<skel::Leaf> referencePlaceLeaves(const skel::Skeleton& s,
+                                             const mesh::LeafPlacement& p) {
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    const float ll = glm::length(p.lightDirection);
+    const glm::vec3 light = ll > 0.0f ? p.lightDirection / ll : glm::vec3(0, 1, 0);
+    const float sinPetiole = std::sin(static_cast<float>(p.petioleAngle * kDeg));
+    const float cosPetiole = std::cos(static_cast<float>(p.petioleAngle * kDeg));
+    std::vector<skel::Leaf> out;
+    if (p.keepGrammarLeaves) out = s.leaves;
+    auto place = [&](const glm::vec3& pos, const glm::vec3& t, const glm::vec3& radial,
+                     float forward, Rng& rng, std::int32_t node) {
+        skel::Leaf leaf;
+        leaf.position = pos;
+        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
+        leaf.size = static_cast<float>(p.size * (1.0 + v));
+        leaf.node = node;
+        const glm::vec3 h = glm::normalize(sinPetiole * radial + cosPetiole * t + forward * t);
+        glm::vec3 n = static_cast<float>(p.normalWeight) * radial +
+                      static_cast<float>(p.upWeight) * glm::vec3(0, 1, 0) +
+                      static_cast<float>(p.lightWeight) * light;
+        n -= glm::dot(n, h) * h;
+        if (glm::dot(n, n) < 1e-8f) n = referencePerpendicular(h, glm::cross(h, t) + radial);
+        n = glm::normalize(n);
+        const glm::vec3 l = glm::cross(n, h);
+        leaf.orientation = glm::normalize(glm::quat_cast(glm::mat3(-l, h, n)));
+        out.push_back(leaf);
+    };
+    auto trig = [](double a) {
+        return glm::vec2(static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a)));
+    };
+    std::vector<glm::vec2> angles;
+    auto anglesAt = [&](std::uint64_t k) {
+        angles.clear();
+        switch (p.phyllotaxis) {
+        case mesh::Phyllotaxis::Spiral:
+            angles.push_back(trig(137.5 * kDeg * static_cast<double>(k % 100000)));
+            break;
+        case mesh::Phyllotaxis::Alternate:
+            angles.push_back(trig(std::numbers::pi * static_cast<double>(k % 2)));
+            break;
+        case mesh::Phyllotaxis::Opposite: {
+            const double base = 0.5 * std::numbers::pi * static_cast<double>(k % 2);
+            angles.push_back(trig(base));
+            angles.push_back(trig(base + std::numbers::pi));
+            break;
+        }
+        case mesh::Phyllotaxis::Whorled: {
+            const double gap = 2.0 * std::numbers::pi / p.whorlCount;
+            const double base = 0.5 * gap * static_cast<double>(k % 2);
+            for (int i = 0; i < p.whorlCount; ++i)
+                angles.push_back(trig(base + gap * i));
+            break;
+        }
+        }
+    };
+    const std::size_t n = s.size();
+    std::vector<std::uint32_t> children(n, 0);
+    std::vector<std::uint8_t> hidden(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t par = s.parent[i];
+        hidden[i] =
+            (s.flags[i] & skel::kHidden) || (par >= 0 && hidden[static_cast<std::size_t>(par)]);
+        if (par >= 0 && !hidden[i]) ++children[static_cast<std::size_t>(par)];
+    }
+    std::vector<std::uint64_t> index(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::int32_t par = s.parent[i];
+        if (par < 0 || hidden[i]) continue;
+        const auto pi = static_cast<std::size_t>(par);
+        Rng rng(mixSeed(p.seed, i));
+        const glm::vec3 a0 = s.position[pi], a1 = s.position[i];
+        const float len = glm::length(a1 - a0);
+        const glm::vec3 t = len > 1e-9f ? (a1 - a0) / len : skel::headingOf(s.orientation[i]);
+        const glm::vec3 e1 = referencePerpendicular(t, skel::upOf(s.orientation[i]));
+        const glm::vec3 e2 = glm::cross(t, e1);
+        std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
+        if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
+            const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
+            for (std::uint64_t c = 0; c < count; ++c, ++k) {
+                const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
+                const glm::vec3 axis = a0 + f * (a1 - a0);
+                const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
+                anglesAt(k);
+                for (const glm::vec2& cs : angles) {
+                    const glm::vec3 radial = cs.x * e1 + cs.y * e2;
+                    place(axis + r * radial, t, radial, 0.0f, rng, static_cast<std::int32_t>(i));
+                }
+            }
+        }
+        index[i] = k;
+        if (p.atTips && children[i] == 0)
+            for (int c = 0; c < p.tipCount; ++c) {
+                const double ang = 2.0 * std::numbers::pi * c / p.tipCount + rng.uniform(0.0, 0.5);
+                const glm::vec3 radial =
+                    static_cast<float>(std::cos(ang)) * e1 + static_cast<float>(std::sin(ang)) * e2;
+                place(a1, t, radial, 1.0f, rng, static_cast<std::int32_t>(i));
+            }
+    }
+    return out;
+}
+
+// A random bushy skeleton: branches of several orders turning every way, some segments of zero
+// length, some hidden, thick and thin.
+skel::Skeleton bush(std::uint64_t seed, int nodes) {
+    skel::Skeleton s;
+    Rng rng(seed);
+    s.addNode({0, 0, 0}, -1, 0.05f, 0, glm::quat(1, 0, 0, 0));
+    for (int i = 1; i < nodes; ++i) {
+        const auto par = static_cast<std::int32_t>(rng.below(static_cast<std::uint64_t>(i)));
+        glm::vec3 step(rng.uniformf(-0.4f, 0.4f), rng.uniformf(-0.4f, 0.4f),
+                       rng.uniformf(-0.4f, 0.4f));
+        if (rng.below(15) == 0) step = glm::vec3(0.0f);
+        if (rng.below(12) == 0) step = glm::vec3(0.0f, rng.uniformf(0.1f, 0.5f), 0.0f);
+        const glm::quat frame = glm::normalize(glm::quat(rng.uniformf(-1, 1), rng.uniformf(-1, 1),
+                                                         rng.uniformf(-1, 1), rng.uniformf(-1, 1)));
+        const auto order = static_cast<std::uint16_t>(rng.below(3));
+        s.addNode(s.position[static_cast<std::size_t>(par)] + step, par,
+                  rng.uniformf(0.002f, 0.04f), order, frame,
+                  static_cast<std::uint8_t>(rng.below(25) == 0 ? skel::kHidden : 0));
+    }
+    s.finalize();
+    return s;
+}
+
+bool sameBits(const skel::Leaf& a, const skel::Leaf& b) {
+    return std::memcmp(&a.position, &b.position, sizeof a.position) == 0 &&
+           std::memcmp(&a.orientation, &b.orientation, sizeof a.orientation) == 0 &&
+           std::memcmp(&a.size, &b.size, sizeof a.size) == 0 && a.node == b.node;
+}
+
+} // namespace
+
+TEST(LeafPlacement, SameAsTheStraightforwardVersion) {
+    const mesh::Phyllotaxis kinds[] = {mesh::Phyllotaxis::Spiral, mesh::Phyllotaxis::Alternate,
+                                       mesh::Phyllotaxis::Opposite, mesh::Phyllotaxis::Whorled};
+    int compared = 0;
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        const skel::Skeleton s = bush(seed, 300);
+        mesh::LeafPlacement p;
+        p.seed = seed;
+        p.phyllotaxis = kinds[seed % 4];
+        p.whorlCount = 3 + static_cast<int>(seed % 4);
+        p.density = 10.0 + 7.0 * static_cast<double>(seed);
+        p.maxBranchRadius = 0.03;
+        p.tipCount = static_cast<int>(seed % 5);
+        p.petioleAngle = 10.0 * static_cast<double>(seed);
+        // Seed 3: only the up weight and no petiole angle, so the leaves of vertical segments
+        // have their normal along their heading (frame()'s other branch, SSE2's scalar lanes).
+        if (seed == 3) {
+            p.normalWeight = p.lightWeight = 0.0;
+            p.petioleAngle = 0.0;
+        }
+        const std::vector<skel::Leaf> got = mesh::placeLeaves(s, p);
+        const std::vector<skel::Leaf> want = referencePlaceLeaves(s, p);
+        ASSERT_EQ(got.size(), want.size()) << "seed " << seed;
+        for (std::size_t i = 0; i < got.size(); ++i)
+            ASSERT_TRUE(sameBits(got[i], want[i])) << "seed " << seed << " leaf " << i;
+        compared += static_cast<int>(got.size());
+    }
+    EXPECT_GT(compared, 4000);
 }
