@@ -605,21 +605,34 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         lastCount.resize(n, 0);
         lastGrown.resize(n, -2);
         attracted.clear();
-        for (std::uint32_t a : s.live) {
-            const std::int32_t bn = s.bestNode[a];
+        // The arrays are read through local pointers: through the vectors, the stores to sum
+        // and setHash made the compiler load every data pointer again each point (the oak's
+        // grow ~1 % faster; the killed points' erase_if fused into this loop was ~1 % slower).
+        const glm::vec3* const pts = s.points.data();
+        const glm::vec3* const pos = skel.position.data();
+        const float* const best2 = s.best2.data();
+        const std::int32_t* const bestNode = s.bestNode.data();
+        glm::vec3* const sumP = sum.data();
+        std::uint32_t* const countP = count.data();
+        std::uint64_t* const hashP = setHash.data();
+        float* const near2P = nearest2.data();
+        std::uint32_t* const nearP = nearest.data();
+        for (const std::uint32_t a : s.live) {
+            const std::int32_t bn = bestNode[a];
             if (bn < 0) continue;
             const auto j = static_cast<std::size_t>(bn);
-            if (count[j]++ == 0) {
+            if (countP[j]++ == 0) {
                 attracted.push_back(static_cast<std::uint32_t>(j));
-                sum[j] = glm::vec3(0.0f);
-                setHash[j] = 0x243F6A8885A308D3ull;
-                nearest2[j] = std::numeric_limits<float>::infinity();
+                sumP[j] = glm::vec3(0.0f);
+                hashP[j] = 0x243F6A8885A308D3ull;
+                near2P[j] = std::numeric_limits<float>::infinity();
             }
-            sum[j] += (s.points[a] - skel.position[j]) * (1.0f / std::sqrt(s.best2[a]));
-            setHash[j] = mixSeed(setHash[j], a);
-            if (s.best2[a] < nearest2[j]) {
-                nearest2[j] = s.best2[a];
-                nearest[j] = a;
+            const float b2 = best2[a];
+            sumP[j] += (pts[a] - pos[j]) * (1.0f / std::sqrt(b2));
+            hashP[j] = mixSeed(hashP[j], a);
+            if (b2 < near2P[j]) {
+                near2P[j] = b2;
+                nearP[j] = a;
             }
         }
         if (attracted.empty()) {

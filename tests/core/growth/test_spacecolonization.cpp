@@ -2,7 +2,9 @@
 // the envelope bound, the pipe model, determinism across thread counts and the validation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <omp.h>
 
@@ -178,6 +180,47 @@ TEST(PipeModel, HandComputed) {
     EXPECT_THROW(applyPipeModel(s, 0.5f, 0.9f), InvalidInput);
     EXPECT_THROW(applyPipeModel(s, 0.5f, 4.1f), InvalidInput);
     EXPECT_THROW(applyPipeModel(s, 0.0f, 2.0f), InvalidInput);
+}
+
+// The pipe model as it was written before its pow calls were saved (a tip's r^e once, r * r
+// for the exponent 2): the radii must be the same bits, on random trees with hidden nodes, for
+// the exponent 2 and others, and for tip radii whose squares are powers of two.
+TEST(PipeModel, SameBitsAsPowEveryNode) {
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;
+    auto next = [&state] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<std::uint32_t>(state >> 33);
+    };
+    const glm::quat q(1, 0, 0, 0);
+    int checked = 0;
+    for (int t = 0; t < 12; ++t) {
+        skel::Skeleton s;
+        s.addNode({0, 0, 0}, -1, 0, 0, q);
+        for (int i = 1; i < 3000; ++i) {
+            // Chains and forks: the parent among the last few nodes, or anywhere.
+            const auto size = static_cast<std::uint32_t>(s.size());
+            const std::uint32_t back =
+                next() % 4 == 0 ? next() % size : next() % std::min(size, 3u);
+            const auto parent = static_cast<std::int32_t>(size - 1 - back);
+            s.addNode({0, float(i), 0}, parent, 0, 0, q, next() % 17 == 0 ? skel::kHidden : 0);
+        }
+        const float tips[] = {0.013f, 0.5f, 0.25f, 1.0f / 3.0f, 7.9f, 1e-6f};
+        const float others[] = {2.5f, 1.0f, 3.0f, 1.5f, 4.0f, 2.2f};
+        const float tip = tips[t % 6];
+        const float e = t < 6 ? 2.0f : others[t % 6]; // every tip radius with the exponent 2
+        applyPipeModel(s, tip, e);
+        std::vector<double> sum(s.size(), 0.0);
+        for (std::size_t k = s.size(); k-- > 0;) {
+            const float r = sum[k] > 0.0 ? static_cast<float>(std::pow(sum[k], 1.0 / e)) : tip;
+            ASSERT_EQ(std::memcmp(&r, &s.radius[k], sizeof r), 0)
+                << "tree " << t << " node " << k << ": " << r << " vs " << s.radius[k];
+            const std::int32_t p = s.parent[k];
+            if (p >= 0 && (s.flags[k] & skel::kHidden) == 0)
+                sum[static_cast<std::size_t>(p)] += std::pow(static_cast<double>(r), double(e));
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 12 * 3000);
 }
 
 TEST(SpaceColonization, SameResultOnOneAndTwoThreads) {
