@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
+
 #include "engine/mesh/valuenoise.h"
 #include "engine/util/exactround.h"
 #include "engine/util/random.h"
@@ -170,6 +174,51 @@ void tintMultipliers(const glm::vec3& referenceSrgb, std::span<const double> hue
                     std::min(kTintLanes, out.size() - first));
 }
 
+void vertexBox(std::span<const glm::vec3> points, glm::vec3& lo, glm::vec3& hi) {
+    lo = hi = points[0];
+    std::size_t v = 1;
+#if defined(__SSE2__)
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "a vec3 is three packed floats");
+    if (points.size() >= 5) {
+        // Four points are three registers, (x y z x) (y z x y) (z x y z); each lane's chain
+        // starts from the first point's coordinate as the plain loop does, and _mm_min_ps(p, m)
+        // is glm::min(m, p) ((p < m) ? p : m), _mm_max_ps(p, m) glm::max(m, p).
+        const glm::vec3 f = points[0];
+        const __m128 initA = _mm_setr_ps(f.x, f.y, f.z, f.x);
+        const __m128 initB = _mm_setr_ps(f.y, f.z, f.x, f.y);
+        const __m128 initC = _mm_setr_ps(f.z, f.x, f.y, f.z);
+        __m128 loA = initA, loB = initB, loC = initC, hiA = initA, hiB = initB, hiC = initC;
+        for (; v + 4 <= points.size(); v += 4) {
+            const float* p = &points[v].x;
+            const __m128 a = _mm_loadu_ps(p), b = _mm_loadu_ps(p + 4), c = _mm_loadu_ps(p + 8);
+            loA = _mm_min_ps(a, loA);
+            loB = _mm_min_ps(b, loB);
+            loC = _mm_min_ps(c, loC);
+            hiA = _mm_max_ps(a, hiA);
+            hiB = _mm_max_ps(b, hiB);
+            hiC = _mm_max_ps(c, hiC);
+        }
+        float l[12], h[12];
+        _mm_storeu_ps(l, loA);
+        _mm_storeu_ps(l + 4, loB);
+        _mm_storeu_ps(l + 8, loC);
+        _mm_storeu_ps(h, hiA);
+        _mm_storeu_ps(h + 4, hiB);
+        _mm_storeu_ps(h + 8, hiC);
+        for (int k = 0; k < 4; ++k) {
+            const glm::vec3 lk(l[3 * k], l[3 * k + 1], l[3 * k + 2]);
+            const glm::vec3 hk(h[3 * k], h[3 * k + 1], h[3 * k + 2]);
+            lo = glm::min(lo, lk);
+            hi = glm::max(hi, hk);
+        }
+    }
+#endif
+    for (; v < points.size(); ++v) {
+        lo = glm::min(lo, points[v]);
+        hi = glm::max(hi, points[v]);
+    }
+}
+
 void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation& variation,
                    const glm::vec3& referenceSrgb, double patchSize, std::uint64_t seed,
                    std::span<const float> cardLight, double lightShading) {
@@ -183,11 +232,8 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
     const double invPatch = patchSize > 0.0 ? 1.0 / patchSize : 0.0;
     if (invPatch > 0.0) {
         // Every card's centre is in its vertices' box: its patches' lattice values made once.
-        glm::vec3 lo = mesh.positions[firstVertex], hi = lo;
-        for (std::size_t v = firstVertex; v < n; ++v) {
-            lo = glm::min(lo, mesh.positions[v]);
-            hi = glm::max(hi, mesh.positions[v]);
-        }
+        glm::vec3 lo, hi;
+        vertexBox(std::span(mesh.positions).subspan(firstVertex), lo, hi);
         noise.cover(glm::dvec3(lo) * invPatch, glm::dvec3(hi) * invPatch,
                     2 * (n - firstVertex) + 64);
     }

@@ -64,6 +64,14 @@ void tintMultipliers(const glm::vec3& referenceSrgb, std::span<const double> hue
                      std::span<const double> saturation, std::span<const double> value,
                      std::span<glm::u8vec4> out);
 
+/// The box of \p points (not empty) in \p lo and \p hi: glm::min and glm::max from the first
+/// point on, four points a step on SSE2 as four chains side by side (one chain of every point,
+/// each step waiting on the one before it, was most of the box's time). The same box as the
+/// plain loop, NaN points skipped alike; where +0 and -0 are both an axis's extreme, either
+/// may be the one kept (tintLeafCards' colours do not depend on the box: only which noise
+/// lattice values are kept in ValueNoise's grid).
+void vertexBox(std::span<const glm::vec3> points, glm::vec3& lo, glm::vec3& hi);
+
 /// Gives the quads (four vertices a card, as appendLeafCards and appendLeafClusterCards make
 /// them) from \p firstVertex to the end of \p mesh their Mesh::colors: each card one colour,
 /// from a random of \p seed and the card's centre to a millimetre (the two sheets of a crossed
