@@ -327,7 +327,9 @@ std::optional<QPointF> Viewport::project(const glm::vec3& world) const {
 }
 
 bool Viewport::levelsChangeView() const {
-    if (mLastReduced) return true; // a frame at rest follows anyway
+    // After a frame drawn while the view moved, the sharp frame its timer asks for draws the
+    // new levels: no frame of its own.
+    if (mLastReduced) return false;
     for (const TreeDraw& d : mLastDrawList) {
         if (d.level <= 0 || d.index >= mTrees.size()) continue;
         const ViewTree& t = mTrees[d.index];
