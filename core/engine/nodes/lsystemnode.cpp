@@ -2,11 +2,10 @@
 #include "engine/nodes/lsystemnode.h"
 
 #include <chrono>
-#include <fstream>
-#include <sstream>
 
 #include "engine/lsystem/derivation.h"
 #include "engine/lsystem/grammar.h"
+#include "engine/lsystem/grammarcache.h"
 #include "engine/lsystem/turtle.h"
 #include "engine/nodes/paramspecs.h"
 #include "engine/skeleton/radii.h"
@@ -19,14 +18,6 @@ namespace {
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
         .count();
-}
-
-std::string readTextFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError("cannot read " + path.string());
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 /// Every parameter, in panel order: the one statement of its default and range, which the
@@ -69,22 +60,20 @@ const std::vector<ParamSpec>& lsystemParams() {
 /// `lsystem`: grammar text (inline `grammar` or `grammar_file`) → derived word → turtle skeleton.
 graph::NodeOutput evaluateLsystem(const graph::NodeContext& ctx) {
     const Value& p = ctx.params;
-    std::string text;
-    std::string fileName;
+    graph::NodeOutput out;
+    auto t0 = std::chrono::steady_clock::now();
+    // Parsed once a version of the file (or once a text), not at every growth.
+    std::shared_ptr<const lsys::Grammar> parsed;
     if (const Value* inline_ = p.find("grammar"); inline_ && !inline_->isNull()) {
-        text = inline_->toString("grammar");
-        fileName = ctx.sourceFile.empty() ? std::string("<grammar>") : ctx.sourceFile;
+        parsed = lsys::parsedGrammarText(inline_->toString("grammar"),
+                                         ctx.sourceFile.empty() ? std::string("<grammar>")
+                                                                : ctx.sourceFile);
     } else if (const Value* file = p.find("grammar_file"); file && !file->isNull()) {
-        const std::filesystem::path path = ctx.resolve(file->toString("grammar_file"));
-        text = readTextFile(path);
-        fileName = path.string();
+        parsed = lsys::parsedGrammarFile(ctx.resolve(file->toString("grammar_file")));
     } else {
         ctx.fail("needs a 'grammar' (inline text) or a 'grammar_file' parameter");
     }
-
-    graph::NodeOutput out;
-    auto t0 = std::chrono::steady_clock::now();
-    const lsys::Grammar grammar = lsys::parseGrammar(text, fileName);
+    const lsys::Grammar& grammar = *parsed;
 
     const nodes::ParamReader read(lsystemParams(), p);
     lsys::DeriveOptions options;
