@@ -182,16 +182,16 @@ private:
 
 /// The leaves' sums by cell, and a card's: its own cell's, or where no leaf is in it, its 27
 /// cells' (in the order dx, dy, dz, each from -1 to 1). Over the leaves' box of cells a dense
-/// grid of slots into the sums (a slot, no hash and no probe; the 27-cell fallback was a quarter
+/// grid of the cells' sums (no hash and no probe; the 27-cell fallback was a quarter
 /// of this file's time in perf record of the English oak, most of it probing for empty cells);
 /// CellSums where that box is much larger than the leaves. Both look cells up by cellKey's
 /// 21-bit coordinates, so the same cells meet (far ones alias alike).
 class LeafSums {
 public:
-    LeafSums(const std::vector<skel::Leaf>& leaves, const std::vector<float>& perTip, Sum& all) {
+    LeafSums(const std::vector<skel::Leaf>& leaves, const std::vector<float>& perTip) {
         const std::size_t n = perTip.size();
         std::vector<glm::ivec3> cells;
-        std::vector<double> lights;
+        std::vector<double>& lights = mLights;
         cells.reserve(leaves.size());
         lights.reserve(leaves.size());
         glm::ivec3 lo(0), hi(0);
@@ -211,32 +211,33 @@ public:
             narrow = narrow && mExtent[a] <= (std::int64_t{1} << 21);
             size = std::min<std::int64_t>(size * mExtent[a], std::int64_t{1} << 40);
         }
-        // The grid where it is at most about 32 cells a leaf (the oak: ~17k cells, ~19k leaves).
+        // The grid where it is at most about 8 cells a leaf (the oak: ~17k cells, ~19k leaves;
+        // 16 bytes a cell, what 32 cells a leaf of 4-byte slots into the sums took).
         mDense =
-            !cells.empty() && narrow && size <= 4096 + 32 * static_cast<std::int64_t>(cells.size());
-        if (mDense) {
-            mSlots.assign(static_cast<std::size_t>(size), 0);
-            mSums.reserve(cells.size() + 1);
-            mSums.push_back({}); // slot 0: no leaf
-        }
+            !cells.empty() && narrow && size <= 4096 + 8 * static_cast<std::int64_t>(cells.size());
+        if (mDense) mGrid.assign(static_cast<std::size_t>(size), Sum{});
+        // Each cell's sums in the grid itself: no slot to look up and no branch on a new cell
+        // (slots into sums made as cells were met: a branch about one leaf in ten, mispredicted).
         for (std::size_t i = 0; i < cells.size(); ++i) {
             const glm::ivec3 c = cells[i];
-            Sum* s = nullptr;
-            if (mDense) {
-                std::uint32_t& slot = mSlots[slotOf(c)];
-                if (slot == 0) {
-                    slot = static_cast<std::uint32_t>(mSums.size());
-                    mSums.push_back({});
-                }
-                s = &mSums[slot];
-            } else {
-                s = &mCells[cellKey(c.x, c.y, c.z)];
-            }
-            s->light += lights[i];
-            s->count += 1.0;
-            all.light += lights[i];
-            all.count += 1.0;
+            Sum& s = mDense ? mGrid[slotOf(c)] : mCells[cellKey(c.x, c.y, c.z)];
+            s.light += lights[i];
+            s.count += 1.0;
         }
+    }
+
+    bool empty() const { return mLights.empty(); }
+
+    /// Every leaf's sums, in leaf order: made only for a card with no leaf in its 27 cells (one
+    /// chain of additions over all the leaves, a tenth of leafCardLight where it was made as
+    /// the cells were filled).
+    Sum all() const {
+        Sum s;
+        for (double l : mLights) {
+            s.light += l;
+            s.count += 1.0;
+        }
+        return s;
     }
 
     Sum around(const glm::ivec3& c) const {
@@ -254,14 +255,14 @@ public:
                             }
             return s;
         }
-        Sum s = mSums[at(c.x, c.y, c.z)];
+        Sum s = at(c.x, c.y, c.z);
         if (s.count == 0.0)
-            // An empty cell's sums are +0 (slot 0), and no sum is -0 (sums start at +0, and +0
+            // An empty cell's sums are +0, and no sum is -0 (sums start at +0, and +0
             // plus -0 is +0): adding them leaves s's bits as skipping them did.
             for (int dx = -1; dx <= 1; ++dx)
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dz = -1; dz <= 1; ++dz) {
-                        const Sum& near = mSums[at(c.x + dx, c.y + dy, c.z + dz)];
+                        const Sum& near = at(c.x + dx, c.y + dy, c.z + dz);
                         s.light += near.light;
                         s.count += near.count;
                     }
@@ -280,21 +281,22 @@ private:
                    static_cast<std::size_t>(mExtent[2]) +
                offset(c.z, 2);
     }
-    // The slot of a cell's sums, 0 where no leaf is in it.
-    std::uint32_t at(int x, int y, int z) const {
+    // A cell's sums, +0 where no leaf is in it.
+    const Sum& at(int x, int y, int z) const {
+        static constexpr Sum kNone{};
         const std::uint32_t ox = offset(x, 0), oy = offset(y, 1), oz = offset(z, 2);
-        if (ox >= mExtent[0] || oy >= mExtent[1] || oz >= mExtent[2]) return 0;
-        return mSlots[(static_cast<std::size_t>(ox) * static_cast<std::size_t>(mExtent[1]) + oy) *
-                          static_cast<std::size_t>(mExtent[2]) +
-                      oz];
+        if (ox >= mExtent[0] || oy >= mExtent[1] || oz >= mExtent[2]) return kNone;
+        return mGrid[(static_cast<std::size_t>(ox) * static_cast<std::size_t>(mExtent[1]) + oy) *
+                         static_cast<std::size_t>(mExtent[2]) +
+                     oz];
     }
 
     bool mDense = false;
     glm::ivec3 mLo{0};
     std::int64_t mExtent[3]{};
-    std::vector<std::uint32_t> mSlots;
-    std::vector<Sum> mSums;
+    std::vector<Sum> mGrid; ///< the box's cells' sums, z fastest, then y
     CellSums mCells;
+    std::vector<double> mLights; ///< each counted leaf's light, in leaf order
 };
 
 } // namespace
@@ -305,9 +307,10 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
     const std::size_t n = skeleton.size();
     if (n == 0 || skeleton.light.size() != n || firstVertex >= mesh.positions.size()) return {};
     const std::vector<float> perTip = ownLight(skeleton);
+    const LeafSums sums(leaves, perTip);
+    if (sums.empty()) return {};
     Sum all;
-    const LeafSums sums(leaves, perTip, all);
-    if (all.count == 0.0) return {};
+    bool allMade = false;
     const std::size_t vertices = mesh.positions.size() - firstVertex;
     std::vector<float> light((vertices + 3) / 4);
     for (std::size_t card = 0; card < light.size(); ++card) {
@@ -315,7 +318,11 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
         const std::size_t end = std::min(mesh.positions.size(), v + 4);
         Sum s = sums.around(end - v == 4 ? cardCellOf(&mesh.positions[v])
                                          : cellOf(centreOf(&mesh.positions[v], end - v)));
-        if (s.count == 0.0) s = all;
+        if (s.count == 0.0) {
+            if (!allMade) all = sums.all();
+            allMade = true;
+            s = all;
+        }
         light[card] = static_cast<float>(s.light / s.count);
     }
     // Spread between the 5th and 50th percentiles: the records' scale depends on the crown's
