@@ -337,10 +337,7 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
             groupOf[i] = static_cast<std::uint32_t>(i);
         return LeafGroups::of(groupOf, leaves.size());
     }
-    double mean = 0.0;
-    for (const skel::Leaf& leaf : leaves)
-        mean += leaf.size * sizeScale;
-    mean = std::max(mean / static_cast<double>(leaves.size()), 1e-4);
+
     // The first cell size of 1.2 x the mean leaf, growing by 8 %, at which there are no more
     // than leaves / leavesPerCard groups (40 sizes at most, the last taken whatever it gives).
     // Each size only counts its cells, and stops counting past the limit; the groups are made
@@ -348,7 +345,8 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
     // The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every
     // cell size tried, so made once a leaf.
     std::vector<glm::dvec3> mids;
-    leafMiddles(leaves, mids);
+    const double mean =
+        std::max(leafMiddles(leaves, sizeScale, mids) / static_cast<double>(leaves.size()), 1e-4);
     // The groups come from the count that passed, not from one more pass over the leaves.
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));

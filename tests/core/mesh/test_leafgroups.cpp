@@ -35,7 +35,7 @@ Groups plainGroups(const std::vector<skel::Leaf>& leaves, double sizeScale, int 
         mean += leaf.size * sizeScale;
     mean = std::max(mean / static_cast<double>(leaves.size()), 1e-4);
     std::vector<glm::dvec3> mids;
-    mesh::leafMiddlesPlain(leaves, mids);
+    mesh::leafMiddlesPlain(leaves, sizeScale, mids);
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(perCard)));
     double cell = 1.2 * mean;
