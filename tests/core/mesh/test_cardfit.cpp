@@ -106,8 +106,11 @@ TEST(CardFit, ExtentMatchesTheStraightforwardOne) {
 TEST(CardFit, MiddlesMatchTheStraightforwardOnes) {
     Rng rng(4);
     std::vector<skel::Leaf> all = randomLeaves(rng, 40);
-    for (std::size_t i = 0; i < all.size(); i += 3)
-        all[i].size *= i % 2 ? 3.1e7f : 1.7e-6f;
+    // Sizes a unit apart and halves of a unit's last place: summed in another order (the small
+    // ones together first) they round differently.
+    for (std::size_t i = 0; i < all.size(); ++i)
+        all[i].size =
+            i % 3 == 0 ? 1.0f + static_cast<float>(i % 5) : (i % 2 ? 0x1p-53f : 0x1.8p-53f);
     for (double scale : {1.0, 0.37}) {
         for (std::size_t count = 0; count <= all.size(); ++count) {
             const std::vector<skel::Leaf> leaves(all.begin(), all.begin() + count);
