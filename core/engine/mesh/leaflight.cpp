@@ -10,6 +10,8 @@
 #include <emmintrin.h>
 #endif
 
+#include "engine/mesh/rankselect.h"
+
 namespace sylva::mesh {
 
 namespace {
@@ -330,14 +332,20 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
     // lit half keeps the texture's brightness, so the crown's outside is no darker than it was
     // (with the 80th, the side views of the oak, beech and maple lost 12-23 % of their
     // brightness; with the 50th, 9-16 %).
-    // The two order statistics by selection, not a full sort (the same values).
-    std::vector<float> sorted = light;
-    const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-    std::nth_element(sorted.begin(), mid, sorted.end());
-    const float hi = *mid;
-    const auto low = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 20);
-    std::nth_element(sorted.begin(), low, mid);
-    const float lo = *low;
+    // The two order statistics by selection, not a full sort (the same values): by the floats'
+    // bits where every value is +0 or above (the usual case: the two std::nth_element were ~35 us
+    // of the English oak's ~4,800 cards), else by std::nth_element.
+    const std::size_t midRank = light.size() / 2, lowRank = light.size() / 20;
+    float hi = 0.0f, lo = 0.0f;
+    if (!valueAtRank(light, midRank, hi) || !valueAtRank(light, lowRank, lo)) {
+        std::vector<float> sorted = light;
+        const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(midRank);
+        std::nth_element(sorted.begin(), mid, sorted.end());
+        hi = *mid;
+        const auto low = sorted.begin() + static_cast<std::ptrdiff_t>(lowRank);
+        std::nth_element(sorted.begin(), low, mid);
+        lo = *low;
+    }
     const float span = hi - lo;
     for (float& l : light)
         l = span > 1e-9f ? std::clamp((l - lo) / span, 0.0f, 1.0f) : 1.0f;
