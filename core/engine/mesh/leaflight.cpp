@@ -42,8 +42,9 @@ glm::ivec3 cellOf(const glm::dvec3& p) {
 // coordinate times 2 (one over kCell) is exact in float as in double (an overflow to infinity
 // converts to the same out-of-range int as the double), so the floors and the ints are the same;
 // the conversions and the floors' corrections are the same operations in single precision.
-glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
 #if defined(__SSE2__)
+// The cell's x, y and z in the low three lanes (the fourth: the next float's, unused).
+__m128i leafCellLanes(const skel::Leaf& leaf) {
     static_assert(sizeof(skel::Leaf) >= 16 && offsetof(skel::Leaf, position) == 0);
     static_assert(1.0 / kCell == 2.0);
     float xyzw[4];
@@ -51,13 +52,54 @@ glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
     const __m128 q = _mm_mul_ps(_mm_loadu_ps(xyzw), _mm_set1_ps(2.0f));
     const __m128i i = _mm_cvttps_epi32(q);
     // floorToInt: one less where the truncation is above the quotient (same for NaN: none).
-    const __m128i floors = _mm_add_epi32(i, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(i), q)));
-    alignas(16) int c[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(c), floors);
-    return {c[0], c[1], c[2]};
+    return _mm_add_epi32(i, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(i), q)));
+}
+
+glm::ivec3 lanesToCell(__m128i c) {
+    return {_mm_cvtsi128_si32(c), _mm_cvtsi128_si32(_mm_shuffle_epi32(c, 0x55)),
+            _mm_cvtsi128_si32(_mm_shuffle_epi32(c, 0xAA))};
+}
+#endif
+
+glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
+#if defined(__SSE2__)
+    return lanesToCell(leafCellLanes(leaf));
 #else
     return cellOf(glm::dvec3(leaf.position));
 #endif
+}
+
+// The box of the cells of the leaves on a node below \p n (glm::min and glm::max of their
+// cells, from INT_MAX and INT_MIN), and their count: on SSE2 the three axes in one register,
+// kept there (each cell stored and read back as three ints was a tenth of leafCardLight).
+std::size_t cellBox(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::ivec3& lo,
+                    glm::ivec3& hi) {
+    std::size_t count = 0;
+#if defined(__SSE2__)
+    __m128i l = _mm_set1_epi32(std::numeric_limits<int>::max());
+    __m128i h = _mm_set1_epi32(std::numeric_limits<int>::min());
+    for (const skel::Leaf& leaf : leaves) {
+        if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+        const __m128i c = leafCellLanes(leaf);
+        const __m128i below = _mm_cmpgt_epi32(l, c), above = _mm_cmpgt_epi32(c, h);
+        l = _mm_or_si128(_mm_and_si128(below, c), _mm_andnot_si128(below, l));
+        h = _mm_or_si128(_mm_and_si128(above, c), _mm_andnot_si128(above, h));
+        ++count;
+    }
+    lo = lanesToCell(l);
+    hi = lanesToCell(h);
+#else
+    lo = glm::ivec3(std::numeric_limits<int>::max());
+    hi = glm::ivec3(std::numeric_limits<int>::min());
+    for (const skel::Leaf& leaf : leaves) {
+        if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+        const glm::ivec3 c = leafCellOf(leaf);
+        lo = glm::min(lo, c);
+        hi = glm::max(hi, c);
+        ++count;
+    }
+#endif
+    return count;
 }
 
 // The mean of a card's \p count corners in doubles, summed in order from +0.
@@ -197,15 +239,8 @@ public:
         mPerTip = &perTip;
         // The box of the counted leaves' cells first; their cells are made again as they are
         // summed (kept from this pass, 20 bytes a leaf written and read back, they were slower).
-        mCount = 0;
-        glm::ivec3 lo(std::numeric_limits<int>::max()), hi(std::numeric_limits<int>::min());
-        for (const skel::Leaf& leaf : leaves) {
-            if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
-            const glm::ivec3 c = leafCellOf(leaf);
-            lo = glm::min(lo, c);
-            hi = glm::max(hi, c);
-            ++mCount;
-        }
+        glm::ivec3 lo, hi;
+        mCount = cellBox(leaves, n, lo, hi);
         if (mCount == 0) lo = hi = glm::ivec3(0);
         mLo = lo;
         std::int64_t size = 1;
