@@ -248,7 +248,10 @@ public:
         for (int a = 0; a < 3; ++a) {
             mExtent[a] = static_cast<std::int64_t>(hi[a]) - lo[a] + 1;
             narrow = narrow && mExtent[a] <= (std::int64_t{1} << 21);
-            size = std::min<std::int64_t>(size * mExtent[a], std::int64_t{1} << 40);
+            // (an extent past 2^21 is not narrow: capped there, the product cannot overflow)
+            size = std::min<std::int64_t>(
+                size * std::min<std::int64_t>(mExtent[a], (std::int64_t{1} << 21) + 1),
+                std::int64_t{1} << 40);
         }
         // The grid where it is at most about 8 cells a leaf (the oak: ~17k cells, ~19k leaves;
         // 16 bytes a cell, what 32 cells a leaf of 4-byte slots into the sums took).
