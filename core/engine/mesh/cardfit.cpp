@@ -43,13 +43,18 @@ void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
     in.cov = cov;
 }
 
-void leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+double leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, double sizeScale,
+                        std::vector<glm::dvec3>& mids) {
     mids.resize(leaves.size());
+    double sizes = 0.0;
+    for (const skel::Leaf& leaf : leaves)
+        sizes += leaf.size * sizeScale;
     for (std::size_t i = 0; i < leaves.size(); ++i) {
         const skel::Leaf& leaf = leaves[i];
         mids[i] = glm::dvec3(leaf.position) + 0.5 * glm::dvec3(skel::headingOf(leaf.orientation)) *
                                                   static_cast<double>(leaf.size);
     }
+    return sizes;
 }
 
 void cardExtentPlain(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
@@ -220,9 +225,11 @@ void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::
     in.left = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(leftZ));
 }
 
-void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
+double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
+                   std::vector<glm::dvec3>& mids) {
     const std::size_t n = leaves.size();
     mids.resize(n);
+    double sizes = 0.0;
     const __m128d half = _mm_set1_pd(0.5);
     for (std::size_t b = 0; b < n; b += 4) {
         const std::size_t r = std::min<std::size_t>(4, n - b);
@@ -247,8 +254,10 @@ void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>&
             alignas(16) double v[2];
             _mm_store_pd(v, xy);
             mids[b + j] = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(z));
+            sizes += leaf[j]->size * sizeScale;
         }
     }
+    return sizes;
 }
 
 void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
@@ -281,8 +290,9 @@ void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec
 
 #else
 
-void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids) {
-    leafMiddlesPlain(leaves, mids);
+double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
+                   std::vector<glm::dvec3>& mids) {
+    return leafMiddlesPlain(leaves, sizeScale, mids);
 }
 
 void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,

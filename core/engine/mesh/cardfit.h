@@ -30,7 +30,10 @@ inline void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::
 
 /// Each leaf's middle, position + 0.5 * size * heading in double (where a leaf belongs when
 /// leaves are grouped in cells): four leaves at a time on SSE2, bit for bit leafMiddlesPlain.
-void leafMiddles(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids);
+/// \return the sum of leaf.size x sizeScale in leaf order (the groups' mean leaf), made in the
+/// same pass (a pass of its own read the ~690 KB of the English oak's leaves once more).
+double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
+                   std::vector<glm::dvec3>& mids);
 
 /// What a cluster card (leafclusters.h) is fitted from: its leaves' card corners (four a leaf,
 /// in leaf order), their mean and covariance (made in double from the float corners, summed in
@@ -63,7 +66,8 @@ void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec
 void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
                          std::span<const std::uint32_t> group, float aspect, float scale,
                          CardFitInput& in);
-void leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, std::vector<glm::dvec3>& mids);
+double leafMiddlesPlain(const std::vector<skel::Leaf>& leaves, double sizeScale,
+                        std::vector<glm::dvec3>& mids);
 void cardExtentPlain(const CardFitInput& in, const glm::dvec3& along, const glm::dvec3& across,
                      double& a0, double& a1, double& c0, double& c1);
 

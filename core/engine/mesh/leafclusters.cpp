@@ -50,10 +50,10 @@ public:
         groupOf.resize(mids.size());
         mCells.resize(kChunk);
         mHashes.resize(kChunk);
-        // Every leaf looks its cell up; only a new cell is written. A shortcut for a leaf in
-        // the cell of the leaf before it was a branch taken about every other leaf, mispredicted
-        // (perf record of the English oak: CellTable::fill 10 % of the tree). Writing every
-        // leaf's slot whether or not its cell was new (no branch on it) was slower once the
+        // Every leaf looks its cell up; only a new cell's table slot is written. A shortcut for a
+        // leaf in the cell of the leaf before it was a branch taken about every other leaf,
+        // mispredicted (perf record of the English oak: CellTable::fill 10 % of the tree). Writing
+        // every leaf's slot whether or not its cell was new (no branch on it) was slower once the
         // table was a quarter full: 0.46 ms a tree for the oak's two fills, 0.43 ms with the
         // branch (a leaf's table read waited on the slot writes of the leaves before it).
         // A chunk's cells and hashes first, then their lookups, each slot fetched kAhead
@@ -61,6 +61,8 @@ public:
         // in L2: every lookup waited on it, two dependent reads; 0.43 -> 0.35 ms a tree for the
         // oak's fills).
         std::uint32_t count = 0;
+        const std::size_t keyLast = mKeys.size() - 1;
+        Slot scratch;
         for (std::size_t c0 = 0; c0 < mids.size(); c0 += kChunk) {
             const std::size_t c1 = std::min(mids.size(), c0 + kChunk);
             for (std::size_t i = c0; i < c1; ++i) {
@@ -75,18 +77,32 @@ public:
                         mSlots[mHashes[k + kKeyAhead]].group, mKeys.size() - 1)]);
                 const CellKey& key = mCells[k];
                 std::size_t slot = mHashes[k];
-                while (mSlots[slot].stamp == mStamp && !(mKeys[mSlots[slot].group] == key))
-                    slot = (slot + 1) & mMask;
-                Slot& s = mSlots[slot];
-                std::uint32_t group = s.group;
-                if (s.stamp != mStamp) {
-                    group = count;
-                    s.stamp = mStamp;
-                    s.group = group;
-                    mKeys[count] = key;
-                    ++count;
+                // The first probe without a branch on what it finds (a new cell about one leaf
+                // in four, at random: the branch on it was mispredicted, most of the fill's
+                // samples in perf record of the English oak; the compiler put the branch back
+                // unless the flags are opaque); only a neighbour's cell in the slot probes on.
+                Slot s = mSlots[slot];
+                std::uint32_t used = opaque(s.stamp == mStamp);
+                if (opaque(used & !sameCell(mKeys[std::min<std::size_t>(s.group, keyLast)], key))) {
+                    do {
+                        slot = (slot + 1) & mMask;
+                        s = mSlots[slot];
+                    } while (s.stamp == mStamp && !sameCell(mKeys[s.group], key));
+                    used = opaque(s.stamp == mStamp);
                 }
-                groupOf[i] = group;
+                // A new cell's slot and key are written; for a known cell the key goes past the
+                // last group (overwritten by the next new one) and the slot to a scratch slot
+                // (every leaf's table slot written was slower: the next reads waited on those
+                // stores). The same groups and slots as a branch on the cell being new.
+                const std::uint32_t keep = 0u - used; // all ones for a known cell
+                const std::uintptr_t keepPtr = 0u - static_cast<std::uintptr_t>(used);
+                mKeys[count] = key;
+                auto* const dst = reinterpret_cast<Slot*>(
+                    (reinterpret_cast<std::uintptr_t>(&scratch) & keepPtr) |
+                    (reinterpret_cast<std::uintptr_t>(&mSlots[slot]) & ~keepPtr));
+                *dst = Slot{mStamp, count};
+                groupOf[i] = (s.group & keep) | (count & ~keep);
+                count += 1u - used;
                 if (count > limit) return limit + 1;
             }
         }
@@ -94,6 +110,16 @@ public:
     }
 
 private:
+    // \p v, hidden from the optimiser so that it selects with it instead of branching on it.
+    static std::uint32_t opaque(std::uint32_t v) {
+#if defined(__GNUC__)
+        __asm__("" : "+r"(v));
+#endif
+        return v;
+    }
+    static bool sameCell(const CellKey& a, const CellKey& b) {
+        return ((a.x ^ b.x) | (a.y ^ b.y) | (a.z ^ b.z)) == 0;
+    }
     // A slot is 8 bytes and the table is sized for the limit, the keys kept apart in the order
     // the cells are met: the table's random reads stay in L2 (with the keys in the slots, 32
     // bytes a slot, sized for every leaf, it was 2 MiB for the English oak's 19,900 leaves and
@@ -311,10 +337,7 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
             groupOf[i] = static_cast<std::uint32_t>(i);
         return LeafGroups::of(groupOf, leaves.size());
     }
-    double mean = 0.0;
-    for (const skel::Leaf& leaf : leaves)
-        mean += leaf.size * sizeScale;
-    mean = std::max(mean / static_cast<double>(leaves.size()), 1e-4);
+
     // The first cell size of 1.2 x the mean leaf, growing by 8 %, at which there are no more
     // than leaves / leavesPerCard groups (40 sizes at most, the last taken whatever it gives).
     // Each size only counts its cells, and stops counting past the limit; the groups are made
@@ -322,7 +345,8 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
     // The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every
     // cell size tried, so made once a leaf.
     std::vector<glm::dvec3> mids;
-    leafMiddles(leaves, mids);
+    const double mean =
+        std::max(leafMiddles(leaves, sizeScale, mids) / static_cast<double>(leaves.size()), 1e-4);
     // The groups come from the count that passed, not from one more pass over the leaves.
     const auto limit = static_cast<std::size_t>(
         std::floor(static_cast<double>(leaves.size()) / static_cast<double>(leavesPerCard)));

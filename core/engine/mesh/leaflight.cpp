@@ -5,10 +5,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+
+#include "engine/mesh/rankselect.h"
 
 namespace sylva::mesh {
 
@@ -39,8 +42,9 @@ glm::ivec3 cellOf(const glm::dvec3& p) {
 // coordinate times 2 (one over kCell) is exact in float as in double (an overflow to infinity
 // converts to the same out-of-range int as the double), so the floors and the ints are the same;
 // the conversions and the floors' corrections are the same operations in single precision.
-glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
 #if defined(__SSE2__)
+// The cell's x, y and z in the low three lanes (the fourth: the next float's, unused).
+__m128i leafCellLanes(const skel::Leaf& leaf) {
     static_assert(sizeof(skel::Leaf) >= 16 && offsetof(skel::Leaf, position) == 0);
     static_assert(1.0 / kCell == 2.0);
     float xyzw[4];
@@ -48,13 +52,54 @@ glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
     const __m128 q = _mm_mul_ps(_mm_loadu_ps(xyzw), _mm_set1_ps(2.0f));
     const __m128i i = _mm_cvttps_epi32(q);
     // floorToInt: one less where the truncation is above the quotient (same for NaN: none).
-    const __m128i floors = _mm_add_epi32(i, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(i), q)));
-    alignas(16) int c[4];
-    _mm_store_si128(reinterpret_cast<__m128i*>(c), floors);
-    return {c[0], c[1], c[2]};
+    return _mm_add_epi32(i, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(i), q)));
+}
+
+glm::ivec3 lanesToCell(__m128i c) {
+    return {_mm_cvtsi128_si32(c), _mm_cvtsi128_si32(_mm_shuffle_epi32(c, 0x55)),
+            _mm_cvtsi128_si32(_mm_shuffle_epi32(c, 0xAA))};
+}
+#endif
+
+glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
+#if defined(__SSE2__)
+    return lanesToCell(leafCellLanes(leaf));
 #else
     return cellOf(glm::dvec3(leaf.position));
 #endif
+}
+
+// The box of the cells of the leaves on a node below \p n (glm::min and glm::max of their
+// cells, from INT_MAX and INT_MIN), and their count: on SSE2 the three axes in one register,
+// kept there (each cell stored and read back as three ints was a tenth of leafCardLight).
+std::size_t cellBox(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::ivec3& lo,
+                    glm::ivec3& hi) {
+    std::size_t count = 0;
+#if defined(__SSE2__)
+    __m128i l = _mm_set1_epi32(std::numeric_limits<int>::max());
+    __m128i h = _mm_set1_epi32(std::numeric_limits<int>::min());
+    for (const skel::Leaf& leaf : leaves) {
+        if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+        const __m128i c = leafCellLanes(leaf);
+        const __m128i below = _mm_cmpgt_epi32(l, c), above = _mm_cmpgt_epi32(c, h);
+        l = _mm_or_si128(_mm_and_si128(below, c), _mm_andnot_si128(below, l));
+        h = _mm_or_si128(_mm_and_si128(above, c), _mm_andnot_si128(above, h));
+        ++count;
+    }
+    lo = lanesToCell(l);
+    hi = lanesToCell(h);
+#else
+    lo = glm::ivec3(std::numeric_limits<int>::max());
+    hi = glm::ivec3(std::numeric_limits<int>::min());
+    for (const skel::Leaf& leaf : leaves) {
+        if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+        const glm::ivec3 c = leafCellOf(leaf);
+        lo = glm::min(lo, c);
+        hi = glm::max(hi, c);
+        ++count;
+    }
+#endif
+    return count;
 }
 
 // The mean of a card's \p count corners in doubles, summed in order from +0.
@@ -182,61 +227,60 @@ private:
 
 /// The leaves' sums by cell, and a card's: its own cell's, or where no leaf is in it, its 27
 /// cells' (in the order dx, dy, dz, each from -1 to 1). Over the leaves' box of cells a dense
-/// grid of slots into the sums (a slot, no hash and no probe; the 27-cell fallback was a quarter
+/// grid of the cells' sums (no hash and no probe; the 27-cell fallback was a quarter
 /// of this file's time in perf record of the English oak, most of it probing for empty cells);
 /// CellSums where that box is much larger than the leaves. Both look cells up by cellKey's
 /// 21-bit coordinates, so the same cells meet (far ones alias alike).
 class LeafSums {
 public:
-    LeafSums(const std::vector<skel::Leaf>& leaves, const std::vector<float>& perTip, Sum& all) {
+    LeafSums(const std::vector<skel::Leaf>& leaves, const std::vector<float>& perTip) {
         const std::size_t n = perTip.size();
-        std::vector<glm::ivec3> cells;
-        std::vector<double> lights;
-        cells.reserve(leaves.size());
-        lights.reserve(leaves.size());
-        glm::ivec3 lo(0), hi(0);
-        for (const skel::Leaf& leaf : leaves) {
-            if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
-            const glm::ivec3 c = leafCellOf(leaf);
-            lo = cells.empty() ? c : glm::min(lo, c);
-            hi = cells.empty() ? c : glm::max(hi, c);
-            cells.push_back(c);
-            lights.push_back(perTip[static_cast<std::size_t>(leaf.node)]);
-        }
+        mLeaves = &leaves;
+        mPerTip = &perTip;
+        // The box of the counted leaves' cells first; their cells are made again as they are
+        // summed (kept from this pass, 20 bytes a leaf written and read back, they were slower).
+        glm::ivec3 lo, hi;
+        mCount = cellBox(leaves, n, lo, hi);
+        if (mCount == 0) lo = hi = glm::ivec3(0);
         mLo = lo;
         std::int64_t size = 1;
         bool narrow = true;
         for (int a = 0; a < 3; ++a) {
             mExtent[a] = static_cast<std::int64_t>(hi[a]) - lo[a] + 1;
             narrow = narrow && mExtent[a] <= (std::int64_t{1} << 21);
-            size = std::min<std::int64_t>(size * mExtent[a], std::int64_t{1} << 40);
+            // (an extent past 2^21 is not narrow: capped there, the product cannot overflow)
+            size = std::min<std::int64_t>(
+                size * std::min<std::int64_t>(mExtent[a], (std::int64_t{1} << 21) + 1),
+                std::int64_t{1} << 40);
         }
-        // The grid where it is at most about 32 cells a leaf (the oak: ~17k cells, ~19k leaves).
-        mDense =
-            !cells.empty() && narrow && size <= 4096 + 32 * static_cast<std::int64_t>(cells.size());
-        if (mDense) {
-            mSlots.assign(static_cast<std::size_t>(size), 0);
-            mSums.reserve(cells.size() + 1);
-            mSums.push_back({}); // slot 0: no leaf
+        // The grid where it is at most about 8 cells a leaf (the oak: ~17k cells, ~19k leaves;
+        // 16 bytes a cell, what 32 cells a leaf of 4-byte slots into the sums took).
+        mDense = mCount > 0 && narrow && size <= 4096 + 8 * static_cast<std::int64_t>(mCount);
+        if (mDense) mGrid.assign(static_cast<std::size_t>(size), Sum{});
+        // Each cell's sums in the grid itself: no slot to look up and no branch on a new cell
+        // (slots into sums made as cells were met: a branch about one leaf in ten, mispredicted).
+        for (const skel::Leaf& leaf : leaves) {
+            if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+            const glm::ivec3 c = leafCellOf(leaf);
+            Sum& s = mDense ? mGrid[slotOf(c)] : mCells[cellKey(c.x, c.y, c.z)];
+            s.light += perTip[static_cast<std::size_t>(leaf.node)];
+            s.count += 1.0;
         }
-        for (std::size_t i = 0; i < cells.size(); ++i) {
-            const glm::ivec3 c = cells[i];
-            Sum* s = nullptr;
-            if (mDense) {
-                std::uint32_t& slot = mSlots[slotOf(c)];
-                if (slot == 0) {
-                    slot = static_cast<std::uint32_t>(mSums.size());
-                    mSums.push_back({});
-                }
-                s = &mSums[slot];
-            } else {
-                s = &mCells[cellKey(c.x, c.y, c.z)];
-            }
-            s->light += lights[i];
-            s->count += 1.0;
-            all.light += lights[i];
-            all.count += 1.0;
+    }
+
+    bool empty() const { return mCount == 0; }
+
+    /// Every leaf's sums, in leaf order: made only for a card with no leaf in its 27 cells (one
+    /// chain of additions over all the leaves, a tenth of leafCardLight where it was made as
+    /// the cells were filled).
+    Sum all() const {
+        Sum s;
+        for (const skel::Leaf& leaf : *mLeaves) {
+            if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= mPerTip->size()) continue;
+            s.light += (*mPerTip)[static_cast<std::size_t>(leaf.node)];
+            s.count += 1.0;
         }
+        return s;
     }
 
     Sum around(const glm::ivec3& c) const {
@@ -254,14 +298,14 @@ public:
                             }
             return s;
         }
-        Sum s = mSums[at(c.x, c.y, c.z)];
+        Sum s = at(c.x, c.y, c.z);
         if (s.count == 0.0)
-            // An empty cell's sums are +0 (slot 0), and no sum is -0 (sums start at +0, and +0
+            // An empty cell's sums are +0, and no sum is -0 (sums start at +0, and +0
             // plus -0 is +0): adding them leaves s's bits as skipping them did.
             for (int dx = -1; dx <= 1; ++dx)
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dz = -1; dz <= 1; ++dz) {
-                        const Sum& near = mSums[at(c.x + dx, c.y + dy, c.z + dz)];
+                        const Sum& near = at(c.x + dx, c.y + dy, c.z + dz);
                         s.light += near.light;
                         s.count += near.count;
                     }
@@ -280,21 +324,24 @@ private:
                    static_cast<std::size_t>(mExtent[2]) +
                offset(c.z, 2);
     }
-    // The slot of a cell's sums, 0 where no leaf is in it.
-    std::uint32_t at(int x, int y, int z) const {
+    // A cell's sums, +0 where no leaf is in it.
+    const Sum& at(int x, int y, int z) const {
+        static constexpr Sum kNone{};
         const std::uint32_t ox = offset(x, 0), oy = offset(y, 1), oz = offset(z, 2);
-        if (ox >= mExtent[0] || oy >= mExtent[1] || oz >= mExtent[2]) return 0;
-        return mSlots[(static_cast<std::size_t>(ox) * static_cast<std::size_t>(mExtent[1]) + oy) *
-                          static_cast<std::size_t>(mExtent[2]) +
-                      oz];
+        if (ox >= mExtent[0] || oy >= mExtent[1] || oz >= mExtent[2]) return kNone;
+        return mGrid[(static_cast<std::size_t>(ox) * static_cast<std::size_t>(mExtent[1]) + oy) *
+                         static_cast<std::size_t>(mExtent[2]) +
+                     oz];
     }
 
     bool mDense = false;
     glm::ivec3 mLo{0};
     std::int64_t mExtent[3]{};
-    std::vector<std::uint32_t> mSlots;
-    std::vector<Sum> mSums;
+    std::vector<Sum> mGrid; ///< the box's cells' sums, z fastest, then y
     CellSums mCells;
+    const std::vector<skel::Leaf>* mLeaves = nullptr;
+    const std::vector<float>* mPerTip = nullptr;
+    std::size_t mCount = 0; ///< the leaves counted (on a node of the skeleton)
 };
 
 } // namespace
@@ -305,9 +352,10 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
     const std::size_t n = skeleton.size();
     if (n == 0 || skeleton.light.size() != n || firstVertex >= mesh.positions.size()) return {};
     const std::vector<float> perTip = ownLight(skeleton);
+    const LeafSums sums(leaves, perTip);
+    if (sums.empty()) return {};
     Sum all;
-    const LeafSums sums(leaves, perTip, all);
-    if (all.count == 0.0) return {};
+    bool allMade = false;
     const std::size_t vertices = mesh.positions.size() - firstVertex;
     std::vector<float> light((vertices + 3) / 4);
     for (std::size_t card = 0; card < light.size(); ++card) {
@@ -315,7 +363,11 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
         const std::size_t end = std::min(mesh.positions.size(), v + 4);
         Sum s = sums.around(end - v == 4 ? cardCellOf(&mesh.positions[v])
                                          : cellOf(centreOf(&mesh.positions[v], end - v)));
-        if (s.count == 0.0) s = all;
+        if (s.count == 0.0) {
+            if (!allMade) all = sums.all();
+            allMade = true;
+            s = all;
+        }
         light[card] = static_cast<float>(s.light / s.count);
     }
     // Spread between the 5th and 50th percentiles: the records' scale depends on the crown's
@@ -323,14 +375,20 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
     // lit half keeps the texture's brightness, so the crown's outside is no darker than it was
     // (with the 80th, the side views of the oak, beech and maple lost 12-23 % of their
     // brightness; with the 50th, 9-16 %).
-    // The two order statistics by selection, not a full sort (the same values).
-    std::vector<float> sorted = light;
-    const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-    std::nth_element(sorted.begin(), mid, sorted.end());
-    const float hi = *mid;
-    const auto low = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 20);
-    std::nth_element(sorted.begin(), low, mid);
-    const float lo = *low;
+    // The two order statistics by selection, not a full sort (the same values): by the floats'
+    // bits where every value is +0 or above (the usual case: the two std::nth_element were ~35 us
+    // of the English oak's ~4,800 cards), else by std::nth_element.
+    const std::size_t midRank = light.size() / 2, lowRank = light.size() / 20;
+    float hi = 0.0f, lo = 0.0f;
+    if (!valueAtRank(light, midRank, hi) || !valueAtRank(light, lowRank, lo)) {
+        std::vector<float> sorted = light;
+        const auto mid = sorted.begin() + static_cast<std::ptrdiff_t>(midRank);
+        std::nth_element(sorted.begin(), mid, sorted.end());
+        hi = *mid;
+        const auto low = sorted.begin() + static_cast<std::ptrdiff_t>(lowRank);
+        std::nth_element(sorted.begin(), low, mid);
+        lo = *low;
+    }
     const float span = hi - lo;
     for (float& l : light)
         l = span > 1e-9f ? std::clamp((l - lo) / span, 0.0f, 1.0f) : 1.0f;

@@ -44,6 +44,7 @@ double floorNear(double x) {
 void ValueNoise::cover(const glm::dvec3& lo, const glm::dvec3& hi, std::size_t maxPoints) {
     mGrid.clear();
     mMade.clear();
+    mCellMade.clear();
     std::int64_t origin[3], size[3];
     std::size_t points = 1;
     for (int k = 0; k < 3; ++k) {
@@ -61,6 +62,7 @@ void ValueNoise::cover(const glm::dvec3& lo, const glm::dvec3& hi, std::size_t m
     }
     mGrid.resize(points);
     mMade.assign(points, 0);
+    mCellMade.assign(points, 0);
 }
 
 glm::dvec3 ValueNoise::lattice(std::int64_t x, std::int64_t y, std::int64_t z) const {
@@ -92,43 +94,59 @@ glm::dvec3 ValueNoise::operator()(const glm::dvec3& p) {
     const glm::dvec3 t = p - f;
     const auto ix = static_cast<std::int64_t>(f.x), iy = static_cast<std::int64_t>(f.y),
                iz = static_cast<std::int64_t>(f.z);
+    const double sx = smooth(t.x), sy = smooth(t.y), sz = smooth(t.z);
+    const std::int64_t gx = ix - mOrigin[0], gy = iy - mOrigin[1], gz = iz - mOrigin[2];
+    if (gx >= 0 && gy >= 0 && gz >= 0 && gx + 1 < mSize[0] && gy + 1 < mSize[1] &&
+        gz + 1 < mSize[2]) {
+        // A cell inside the grid reads its eight points there, made the first time a cell
+        // needs them (one test a cell: the cards change cell about every other card, and a
+        // branch on the cell being the last one's was mispredicted about as often).
+        const auto sx1 = static_cast<std::size_t>(mSize[0]);
+        const std::size_t sxy = sx1 * static_cast<std::size_t>(mSize[1]);
+        const auto base = static_cast<std::size_t>((gz * mSize[1] + gy) * mSize[0] + gx);
+        if (!mCellMade[base]) makeCell(ix, iy, iz, base);
+        const glm::dvec3* row[2][2] = {{&mGrid[base], &mGrid[base + sx1]},
+                                       {&mGrid[base + sxy], &mGrid[base + sxy + sx1]}};
+        return interpolate(row, sx, sy, sz);
+    }
     if (!mValid || ix != mCell[0] || iy != mCell[1] || iz != mCell[2]) {
-        const std::int64_t gx = ix - mOrigin[0], gy = iy - mOrigin[1], gz = iz - mOrigin[2];
-        if (gx >= 0 && gy >= 0 && gz >= 0 && gx + 1 < mSize[0] && gy + 1 < mSize[1] &&
-            gz + 1 < mSize[2]) {
-            // The cell's eight points in the grid: one bounds test, not eight.
-            const auto sx = static_cast<std::size_t>(mSize[0]);
-            const std::size_t sxy = sx * static_cast<std::size_t>(mSize[1]);
-            const auto base = static_cast<std::size_t>((gz * mSize[1] + gy) * mSize[0] + gx);
-            for (int dz = 0; dz < 2; ++dz)
-                for (int dy = 0; dy < 2; ++dy)
-                    for (int dx = 0; dx < 2; ++dx) {
-                        const std::size_t i = base + static_cast<std::size_t>(dz) * sxy +
-                                              static_cast<std::size_t>(dy) * sx +
-                                              static_cast<std::size_t>(dx);
-                        if (!mMade[i]) {
-                            mGrid[i] = lattice(ix + dx, iy + dy, iz + dz);
-                            mMade[i] = 1;
-                        }
-                        mCorner[dz][dy][dx] = mGrid[i];
-                    }
-        } else {
-            for (int dz = 0; dz < 2; ++dz)
-                for (int dy = 0; dy < 2; ++dy)
-                    for (int dx = 0; dx < 2; ++dx)
-                        mCorner[dz][dy][dx] = kept(ix + dx, iy + dy, iz + dz);
-        }
+        for (int dz = 0; dz < 2; ++dz)
+            for (int dy = 0; dy < 2; ++dy)
+                for (int dx = 0; dx < 2; ++dx)
+                    mCorner[dz][dy][dx] = kept(ix + dx, iy + dy, iz + dz);
         mCell[0] = ix;
         mCell[1] = iy;
         mCell[2] = iz;
         mValid = true;
     }
-    const double sx = smooth(t.x), sy = smooth(t.y), sz = smooth(t.z);
+    const glm::dvec3* row[2][2] = {{mCorner[0][0], mCorner[0][1]}, {mCorner[1][0], mCorner[1][1]}};
+    return interpolate(row, sx, sy, sz);
+}
+
+void ValueNoise::makeCell(std::int64_t ix, std::int64_t iy, std::int64_t iz, std::size_t base) {
+    const auto sx = static_cast<std::size_t>(mSize[0]);
+    const std::size_t sxy = sx * static_cast<std::size_t>(mSize[1]);
+    for (int dz = 0; dz < 2; ++dz)
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+                const std::size_t i = base + static_cast<std::size_t>(dz) * sxy +
+                                      static_cast<std::size_t>(dy) * sx +
+                                      static_cast<std::size_t>(dx);
+                if (!mMade[i]) {
+                    mGrid[i] = lattice(ix + dx, iy + dy, iz + dz);
+                    mMade[i] = 1;
+                }
+            }
+    mCellMade[base] = 1;
+}
+
+glm::dvec3 ValueNoise::interpolate(const glm::dvec3* const row[2][2], double sx, double sy,
+                                   double sz) {
     glm::dvec3 c[2][2];
     for (int dz = 0; dz < 2; ++dz)
         for (int dy = 0; dy < 2; ++dy) {
-            const glm::dvec3& a = mCorner[dz][dy][0];
-            const glm::dvec3& b = mCorner[dz][dy][1];
+            const glm::dvec3& a = row[dz][dy][0];
+            const glm::dvec3& b = row[dz][dy][1];
             c[dz][dy] = a + (b - a) * sx;
         }
     const glm::dvec3 y0 = c[0][0] + (c[0][1] - c[0][0]) * sy;

@@ -101,17 +101,26 @@ TEST(CardFit, ExtentMatchesTheStraightforwardOne) {
 }
 
 // The leaves' middles four at a time are the straightforward ones bit for bit, for every
-// remainder of four.
+// remainder of four, and so is the sum of their sizes made in the same pass (in leaf order:
+// sizes of very different magnitudes, whose sum another order would round differently).
 TEST(CardFit, MiddlesMatchTheStraightforwardOnes) {
     Rng rng(4);
-    const std::vector<skel::Leaf> all = randomLeaves(rng, 40);
-    for (std::size_t count = 0; count <= all.size(); ++count) {
-        const std::vector<skel::Leaf> leaves(all.begin(), all.begin() + count);
-        std::vector<glm::dvec3> fast, plain;
-        mesh::leafMiddles(leaves, fast);
-        mesh::leafMiddlesPlain(leaves, plain);
-        ASSERT_EQ(fast.size(), count);
-        for (std::size_t i = 0; i < count; ++i)
-            EXPECT_TRUE(sameBits(fast[i], plain[i])) << count << " " << i;
+    std::vector<skel::Leaf> all = randomLeaves(rng, 40);
+    // Sizes a unit apart and halves of a unit's last place: summed in another order (the small
+    // ones together first) they round differently.
+    for (std::size_t i = 0; i < all.size(); ++i)
+        all[i].size =
+            i % 3 == 0 ? 1.0f + static_cast<float>(i % 5) : (i % 2 ? 0x1p-53f : 0x1.8p-53f);
+    for (double scale : {1.0, 0.37}) {
+        for (std::size_t count = 0; count <= all.size(); ++count) {
+            const std::vector<skel::Leaf> leaves(all.begin(), all.begin() + count);
+            std::vector<glm::dvec3> fast, plain;
+            const double fastSum = mesh::leafMiddles(leaves, scale, fast);
+            const double plainSum = mesh::leafMiddlesPlain(leaves, scale, plain);
+            ASSERT_EQ(fast.size(), count);
+            for (std::size_t i = 0; i < count; ++i)
+                EXPECT_TRUE(sameBits(fast[i], plain[i])) << count << " " << i;
+            EXPECT_EQ(std::memcmp(&fastSum, &plainSum, sizeof fastSum), 0) << count;
+        }
     }
 }

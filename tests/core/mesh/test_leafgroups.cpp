@@ -1,0 +1,106 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "engine/mesh/cardfit.h"
+#include "engine/mesh/leafcell.h"
+#include "engine/mesh/leafclusters.h"
+#include "engine/util/random.h"
+
+using namespace sylva;
+
+namespace {
+
+using Groups = std::vector<std::vector<std::uint32_t>>;
+
+// groupLeaves the straightforward way: at each cell size a map from every leaf's cell to its
+// group (numbered in the order the cells are first met), the sizes tried as
+// appendLeafClusterCards tries them (1.2 x the mean leaf, 8 % larger a step, the 40th taken
+// whatever it gives).
+Groups plainGroups(const std::vector<skel::Leaf>& leaves, double sizeScale, int perCard) {
+    Groups out;
+    if (leaves.empty()) return out;
+    if (perCard <= 1) {
+        for (std::uint32_t i = 0; i < leaves.size(); ++i)
+            out.push_back({i});
+        return out;
+    }
+    double mean = 0.0;
+    for (const skel::Leaf& leaf : leaves)
+        mean += leaf.size * sizeScale;
+    mean = std::max(mean / static_cast<double>(leaves.size()), 1e-4);
+    std::vector<glm::dvec3> mids;
+    mesh::leafMiddlesPlain(leaves, sizeScale, mids);
+    const auto limit = static_cast<std::size_t>(
+        std::floor(static_cast<double>(leaves.size()) / static_cast<double>(perCard)));
+    double cell = 1.2 * mean;
+    for (int step = 0;; ++step) {
+        std::map<std::tuple<std::int64_t, std::int64_t, std::int64_t>, std::uint32_t> groupOf;
+        out.clear();
+        for (std::uint32_t i = 0; i < mids.size(); ++i) {
+            const mesh::LeafCell c = mesh::leafCellPlain(mids[i], cell);
+            const auto [it, added] =
+                groupOf.try_emplace({c.x, c.y, c.z}, static_cast<std::uint32_t>(groupOf.size()));
+            if (added) out.emplace_back();
+            out[it->second].push_back(i);
+        }
+        if (out.size() <= limit || step == 39) return out;
+        cell *= 1.08;
+    }
+}
+
+// A bush of \p clumps clumps of leaves (turned every way, sizes 0.02-0.3 m) round random
+// centres, \p spread metres across.
+std::vector<skel::Leaf> bush(std::uint64_t seed, int count, int clumps, double spread) {
+    Rng rng(seed);
+    std::vector<glm::vec3> centres;
+    for (int c = 0; c < clumps; ++c)
+        centres.emplace_back(rng.uniformf(-1, 1), rng.uniformf(-1, 1), rng.uniformf(-1, 1));
+    std::vector<skel::Leaf> leaves(static_cast<std::size_t>(count));
+    for (skel::Leaf& l : leaves) {
+        const glm::vec3 offset(rng.uniformf(-0.3f, 0.3f), rng.uniformf(-0.3f, 0.3f),
+                               rng.uniformf(-0.3f, 0.3f));
+        l.position = static_cast<float>(spread) * (centres[rng.below(centres.size())] + offset);
+        l.orientation = glm::normalize(glm::quat(rng.uniformf(-1, 1), rng.uniformf(-1, 1),
+                                                 rng.uniformf(-1, 1), rng.uniformf(-1, 1)));
+        l.size = rng.uniformf(0.02f, 0.3f);
+        l.node = static_cast<int>(rng.below(100));
+    }
+    return leaves;
+}
+
+} // namespace
+
+// The cell table (open addressing, its first probe and the new-cell writes without a branch)
+// gives the groups of a map of cells: bushes dense and sparse (many cells to a table, probes
+// past a neighbour's slot), every cluster size, a bush whose leaves are too far apart for any
+// of the 39 sizes (the 40th taken), leaves all in one cell, one leaf.
+TEST(LeafGroups, SameAsAMapOfCells) {
+    std::size_t compared = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed)
+        for (int perCard : {0, 1, 2, 3, 4, 6, 9, 16, 64}) {
+            const double spread = seed % 2 ? 3.0 : 12.0;
+            const std::vector<skel::Leaf> leaves = bush(seed, 500 + 700 * static_cast<int>(seed),
+                                                        3 + 5 * static_cast<int>(seed), spread);
+            for (double scale : {1.0, 0.37}) {
+                EXPECT_EQ(mesh::groupLeaves(leaves, scale, perCard),
+                          plainGroups(leaves, scale, perCard))
+                    << seed << " " << perCard << " " << scale;
+                ++compared;
+            }
+        }
+    std::vector<skel::Leaf> far = bush(9, 300, 300, 1e5);
+    EXPECT_EQ(mesh::groupLeaves(far, 1.0, 4), plainGroups(far, 1.0, 4));
+    std::vector<skel::Leaf> together(50);
+    for (skel::Leaf& l : together)
+        l.size = 0.1f;
+    EXPECT_EQ(mesh::groupLeaves(together, 1.0, 4), plainGroups(together, 1.0, 4));
+    EXPECT_EQ(mesh::groupLeaves(std::vector<skel::Leaf>(1), 1.0, 4),
+              plainGroups(std::vector<skel::Leaf>(1), 1.0, 4));
+    EXPECT_EQ(compared, 108u);
+}
