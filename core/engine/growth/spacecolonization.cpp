@@ -17,6 +17,7 @@
 #define SYLVA_OFFER_AVX 1
 #endif
 
+#include "engine/growth/attraction.h"
 #include "engine/growth/pipemodel.h"
 #include "engine/growth/spatialgrid.h"
 #include "engine/util/error.h"
@@ -558,15 +559,10 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         fast = std::make_unique<AcceleratedSearch>(attractors, params.influenceDistance);
 
     // Per-node scratch, grown with the skeleton.
-    std::vector<glm::vec3> sum;
-    std::vector<std::uint32_t> count;
-    std::vector<std::uint64_t> setHash;
-    std::vector<float> nearest2;
-    std::vector<std::uint32_t> nearest;
+    Attraction at;
     std::vector<std::uint64_t> lastHash;
     std::vector<std::uint32_t> lastCount;
     std::vector<int> lastGrown;
-    std::vector<std::uint32_t> attracted;
 
     Rng rng(mixSeed(params.seed, salt::kSpaceColonization));
     std::size_t firstNew = 0;
@@ -596,50 +592,16 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
 
         // 2. sum the unit vectors per node, in point index order
         const std::size_t n = skel.size();
-        sum.resize(n);
-        count.resize(n, 0);
-        setHash.resize(n);
-        nearest2.resize(n);
-        nearest.resize(n);
+        sumAttraction(at, s.live, s.points.data(), s.best2.data(), s.bestNode.data(),
+                      skel.position.data(), n);
         lastHash.resize(n, 0);
         lastCount.resize(n, 0);
         lastGrown.resize(n, -2);
-        attracted.clear();
-        // The arrays are read through local pointers: through the vectors, the stores to sum
-        // and setHash made the compiler load every data pointer again each point (the oak's
-        // grow ~1 % faster; the killed points' erase_if fused into this loop was ~1 % slower).
-        const glm::vec3* const pts = s.points.data();
-        const glm::vec3* const pos = skel.position.data();
-        const float* const best2 = s.best2.data();
-        const std::int32_t* const bestNode = s.bestNode.data();
-        glm::vec3* const sumP = sum.data();
-        std::uint32_t* const countP = count.data();
-        std::uint64_t* const hashP = setHash.data();
-        float* const near2P = nearest2.data();
-        std::uint32_t* const nearP = nearest.data();
-        for (const std::uint32_t a : s.live) {
-            const std::int32_t bn = bestNode[a];
-            if (bn < 0) continue;
-            const auto j = static_cast<std::size_t>(bn);
-            if (countP[j]++ == 0) {
-                attracted.push_back(static_cast<std::uint32_t>(j));
-                sumP[j] = glm::vec3(0.0f);
-                hashP[j] = 0x243F6A8885A308D3ull;
-                near2P[j] = std::numeric_limits<float>::infinity();
-            }
-            const float b2 = best2[a];
-            sumP[j] += (pts[a] - pos[j]) * (1.0f / std::sqrt(b2));
-            hashP[j] = mixSeed(hashP[j], a);
-            if (b2 < near2P[j]) {
-                near2P[j] = b2;
-                nearP[j] = a;
-            }
-        }
+        const std::vector<std::uint32_t>& attracted = at.attracted;
         if (attracted.empty()) {
             result.stopReason = StopReason::NothingInReach;
             break;
         }
-        std::sort(attracted.begin(), attracted.end());
 
         // 3. grow one segment from every attracted node, in node index order
         if (skel.size() + attracted.size() > kMaxColonizationNodes)
@@ -648,25 +610,25 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
                                 " nodes; use fewer attraction points or a longer segment_length");
         for (std::uint32_t j : attracted) {
             const glm::vec3 origin = skel.position[j];
-            const float len = glm::length(sum[j]);
-            const bool cancelled = len <= 1e-5f * static_cast<float>(count[j]);
+            const float len = glm::length(at.sum[j]);
+            const bool cancelled = len <= 1e-5f * static_cast<float>(at.count[j]);
             const bool repeated = !cancelled && lastGrown[j] == iteration - 1 &&
-                                  lastHash[j] == setHash[j] && lastCount[j] == count[j];
+                                  lastHash[j] == at.setHash[j] && lastCount[j] == at.count[j];
             glm::vec3 dir;
             if (cancelled || repeated) {
-                dir = (s.points[nearest[j]] - origin) * (1.0f / std::sqrt(nearest2[j]));
+                dir = (s.points[at.nearest[j]] - origin) * (1.0f / std::sqrt(at.nearest2[j]));
                 ++(cancelled ? result.zeroAverageFixes : result.oscillationFixes);
             } else {
-                const glm::vec3 mean = sum[j] / len;
+                const glm::vec3 mean = at.sum[j] / len;
                 dir = mean;
                 if (params.randomness > 0.0f) dir += params.randomness * randomUnit(rng);
                 dir += params.tropism;
                 dir = safeNormalize(dir, mean);
             }
             lastGrown[j] = iteration;
-            lastHash[j] = setHash[j];
-            lastCount[j] = count[j];
-            count[j] = 0;
+            lastHash[j] = at.setHash[j];
+            lastCount[j] = at.count[j];
+            at.count[j] = 0;
             skel.addNode(origin + D * dir, static_cast<std::int32_t>(j), 0.0f, skel.order[j],
                          transport(skel.orientation[j], dir));
         }

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace sylva::growth {
+
+/// One space-colonization iteration's attraction (step 2 of colonize()): for every node that is
+/// the closest node of at least one live point, the sum of the unit vectors from it to those
+/// points (summed in point index order), their count, a hash of the set (mixSeed folded over the
+/// point indices in order), and the closest of them; the nodes so attracted in increasing index
+/// order. The arrays are per node and grow with the skeleton; the caller zeroes count[j] of each
+/// attracted node once it has used it (the other entries of sum, setHash, nearest2 and nearest
+/// are stale until a node is attracted again).
+struct Attraction {
+    std::vector<glm::vec3> sum;
+    std::vector<std::uint32_t> count; ///< 0 outside attracted between iterations
+    std::vector<std::uint64_t> setHash;
+    std::vector<float> nearest2;
+    std::vector<std::uint32_t> nearest;
+    std::vector<std::uint32_t> attracted; ///< increasing node index
+    std::vector<std::uint64_t> marks;     ///< one bit a node, all zero between calls
+};
+
+/// Fills \p a for \p nodeCount nodes at \p nodes from the live points \p live (increasing
+/// index order) with their cached closest node (\p bestNode, −1 when none is in reach) and its
+/// squared distance (\p best2). Each point adds (point − node) · (1 / √best2) to its node's sum.
+/// The attracted nodes come from a bit per node marked as a node is first met, read word by word
+/// (the same order as sorting them, without the sort).
+void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
+                   const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
+                   std::size_t nodeCount);
+
+} // namespace sylva::growth
