@@ -201,7 +201,7 @@ struct AcceleratedSearch::Impl {
         std::uint32_t begin; ///< into the point arrays; storage is padded to 4 lanes
         std::uint32_t live;  ///< live points, stored first
         float max2;          ///< largest cached best2 of the live points
-        glm::vec3 lo, hi;    ///< bounds of all the cell's points
+        glm::vec3 lo, hi;    ///< bounds of the cell's live points
     };
 
     static std::uint32_t padded(std::uint32_t n) {
@@ -348,22 +348,36 @@ struct AcceleratedSearch::Impl {
 
         std::uint32_t kept = 0;
         float keptMax = 0.0f;
+        float lox = std::numeric_limits<float>::infinity(), loy = lox, loz = lox;
+        float hix = -lox, hiy = -lox, hiz = -lox;
         for (std::uint32_t i = 0; i < cell.live; ++i) {
             if (B[i] < dk2) {
                 s.killed[I[i]] = 1;
                 continue;
             }
-            X[kept] = X[i];
-            Y[kept] = Y[i];
-            Z[kept] = Z[i];
+            const float x = X[i], y = Y[i], z = Z[i];
+            X[kept] = x;
+            Y[kept] = y;
+            Z[kept] = z;
             B[kept] = B[i];
             N[kept] = N[i];
             mId[cell.begin + kept] = I[i];
             keptMax = std::max(keptMax, B[i]);
+            lox = std::min(lox, x);
+            loy = std::min(loy, y);
+            loz = std::min(loz, z);
+            hix = std::max(hix, x);
+            hiy = std::max(hiy, y);
+            hiz = std::max(hiz, z);
             ++kept;
         }
         cell.live = kept;
         cell.max2 = keptMax;
+        // The bounds of the points left: the dead ones need no node offered any more.
+        if (kept > 0) {
+            cell.lo = {lox, loy, loz};
+            cell.hi = {hix, hiy, hiz};
+        }
         clearPadding(cell.begin, kept);
     }
 
