@@ -11,7 +11,8 @@ namespace {
 
 // The per-point loop on its own, out of line: inlined into colonize() its pointers and the
 // live cursor were kept on the stack and loaded again every point (colonize's registers were
-// taken by its other loops).
+// taken by its other loops). Hash: fold each point into its node's setHash.
+template <bool Hash>
 __attribute__((noinline)) void
 sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __restrict pts,
           const float* __restrict best2, const std::int32_t* __restrict bestNode,
@@ -26,12 +27,12 @@ sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __r
         if (count[j]++ == 0) {
             marks[j >> 6] |= std::uint64_t{1} << (j & 63);
             sum[j] = glm::vec3(0.0f);
-            hash[j] = 0x243F6A8885A308D3ull;
+            if constexpr (Hash) hash[j] = 0x243F6A8885A308D3ull;
             near2[j] = std::numeric_limits<float>::infinity();
         }
         const float b2 = best2[a];
         sum[j] += (pts[a] - pos[j]) * (1.0f / std::sqrt(b2));
-        hash[j] = mixSeed(hash[j], a);
+        if constexpr (Hash) hash[j] = mixSeed(hash[j], a);
         if (b2 < near2[j]) {
             near2[j] = b2;
             near[j] = a;
@@ -43,16 +44,21 @@ sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __r
 
 void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
                    const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
-                   std::size_t nodeCount) {
+                   std::size_t nodeCount, bool hashSets) {
     a.sum.resize(nodeCount);
     a.count.resize(nodeCount, 0);
     a.setHash.resize(nodeCount);
     a.nearest2.resize(nodeCount);
     a.nearest.resize(nodeCount);
     a.marks.resize((nodeCount + 63) / 64, 0);
-    sumPoints(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
-              a.count.data(), a.setHash.data(), a.nearest2.data(), a.nearest.data(),
-              a.marks.data());
+    if (hashSets)
+        sumPoints<true>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
+                        a.count.data(), a.setHash.data(), a.nearest2.data(), a.nearest.data(),
+                        a.marks.data());
+    else
+        sumPoints<false>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
+                         a.count.data(), a.setHash.data(), a.nearest2.data(), a.nearest.data(),
+                         a.marks.data());
     a.attracted.clear();
     for (std::size_t w = 0; w < a.marks.size(); ++w) {
         for (std::uint64_t m = a.marks[w]; m != 0; m &= m - 1)

@@ -18,8 +18,8 @@ namespace sylva::growth {
 /// are stale until a node is attracted again).
 struct Attraction {
     std::vector<glm::vec3> sum;
-    std::vector<std::uint32_t> count; ///< 0 outside attracted between iterations
-    std::vector<std::uint64_t> setHash;
+    std::vector<std::uint32_t> count;   ///< 0 outside attracted between iterations
+    std::vector<std::uint64_t> setHash; ///< with hashSets only
     std::vector<float> nearest2;
     std::vector<std::uint32_t> nearest;
     std::vector<std::uint32_t> attracted; ///< increasing node index
@@ -30,9 +30,11 @@ struct Attraction {
 /// index order) with their cached closest node (\p bestNode, −1 when none is in reach) and its
 /// squared distance (\p best2). Each point adds (point − node) · (1 / √best2) to its node's sum.
 /// The attracted nodes come from a bit per node marked as a node is first met, read word by word
-/// (the same order as sorting them, without the sort).
+/// (the same order as sorting them, without the sort). setHash only with \p hashSets (else it
+/// is left as it was): colonize() needs no hash to tell a node's set from the last iteration's
+/// (see there), and keeps it for its naive search, the oracle.
 void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
                    const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
-                   std::size_t nodeCount);
+                   std::size_t nodeCount, bool hashSets = true);
 
 } // namespace sylva::growth

@@ -76,7 +76,7 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
         for (glm::vec3& p : points)
             p = {uniform(rng, -5, 5), uniform(rng, 0, 10), uniform(rng, -5, 5)};
         std::vector<glm::vec3> nodes;
-        Attraction fast;
+        Attraction fast, noHash;
         Reference ref;
         std::size_t attractedTotal = 0;
         for (int iteration = 0; iteration < 12; ++iteration) {
@@ -105,7 +105,10 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
             referenceSums(ref, live, points, best2, bestNode, nodes);
             sumAttraction(fast, live, points.data(), best2.data(), bestNode.data(), nodes.data(),
                           nodes.size());
+            sumAttraction(noHash, live, points.data(), best2.data(), bestNode.data(), nodes.data(),
+                          nodes.size(), false);
             ASSERT_EQ(fast.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
+            ASSERT_EQ(noHash.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
             attractedTotal += ref.attracted.size();
             for (const std::uint32_t j : ref.attracted) {
                 ASSERT_EQ(std::memcmp(&fast.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0)
@@ -114,6 +117,12 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 ASSERT_EQ(fast.setHash[j], ref.setHash[j]) << "node " << j;
                 ASSERT_EQ(std::memcmp(&fast.nearest2[j], &ref.nearest2[j], sizeof(float)), 0);
                 ASSERT_EQ(fast.nearest[j], ref.nearest[j]) << "node " << j;
+                // Without the hash: everything else the same.
+                ASSERT_EQ(std::memcmp(&noHash.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
+                ASSERT_EQ(noHash.count[j], ref.count[j]) << "node " << j;
+                ASSERT_EQ(std::memcmp(&noHash.nearest2[j], &ref.nearest2[j], sizeof(float)), 0);
+                ASSERT_EQ(noHash.nearest[j], ref.nearest[j]) << "node " << j;
+                noHash.count[j] = 0;
                 // As colonize() does once it has grown the node.
                 fast.count[j] = 0;
                 ref.count[j] = 0;
