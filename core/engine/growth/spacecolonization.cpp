@@ -164,6 +164,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     std::vector<std::uint64_t> lastHash;
     std::vector<std::uint32_t> lastCount;
     std::vector<int> lastGrown;
+    std::vector<glm::vec3> dirs; ///< of the attracted nodes, this iteration
 
     Rng rng(mixSeed(params.seed, salt::kSpaceColonization));
     std::size_t firstNew = 0;
@@ -209,7 +210,12 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
             throw LimitExceeded("space colonization would exceed " +
                                 std::to_string(kMaxColonizationNodes) +
                                 " nodes; use fewer attraction points or a longer segment_length");
-        for (std::uint32_t j : attracted) {
+        // The directions first, then the nodes: each node's chain of square roots and
+        // divisions (the mean, the random unit, the normalisation, then transport's rotation)
+        // overlaps the next one's instead of waiting behind the skeleton's appends.
+        dirs.resize(attracted.size());
+        for (std::size_t k = 0; k < attracted.size(); ++k) {
+            const std::uint32_t j = attracted[k];
             const glm::vec3 origin = skel.position[j];
             const float len = glm::length(at.sum[j]);
             const bool cancelled = len <= 1e-5f * static_cast<float>(at.count[j]);
@@ -227,12 +233,16 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
                 dir += params.tropism;
                 dir = safeNormalize(dir, mean);
             }
+            dirs[k] = dir;
             lastGrown[j] = iteration;
             lastHash[j] = at.setHash[j];
             lastCount[j] = at.count[j];
             at.count[j] = 0;
-            skel.addNode(origin + D * dir, static_cast<std::int32_t>(j), 0.0f, skel.order[j],
-                         transport(skel.orientation[j], dir));
+        }
+        for (std::size_t k = 0; k < attracted.size(); ++k) {
+            const std::uint32_t j = attracted[k];
+            skel.addNode(skel.position[j] + D * dirs[k], static_cast<std::int32_t>(j), 0.0f,
+                         skel.order[j], transport(skel.orientation[j], dirs[k]));
         }
         result.iterations = iteration + 1;
         progress.report(static_cast<double>(iteration + 1) / params.maxIterations, "grow");
