@@ -38,14 +38,16 @@ __attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, co
         const __m256 dz = _mm256_sub_ps(_mm256_loadu_ps(Z + i), vz);
         const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
                                         _mm256_mul_ps(dz, dz));
-        __m256 b = _mm256_loadu_ps(B + i);
+        // min(d2, b) is d2 < b ? d2 : b, the select by the same comparison, in one operation
+        // (a blendv for the node index came out as a branch a lane).
+        const __m256 b = _mm256_loadu_ps(B + i);
         const __m256 better = _mm256_cmp_ps(d2, b, _CMP_LT_OQ);
-        b = _mm256_or_ps(_mm256_and_ps(better, d2), _mm256_andnot_ps(better, b));
-        _mm256_storeu_ps(B + i, b);
+        const __m256 nb = _mm256_min_ps(d2, b);
+        _mm256_storeu_ps(B + i, nb);
         auto* np = reinterpret_cast<float*>(N + i);
         _mm256_storeu_ps(np, _mm256_or_ps(_mm256_and_ps(better, vnode),
                                           _mm256_andnot_ps(better, _mm256_loadu_ps(np))));
-        vm = _mm256_max_ps(vm, b);
+        vm = _mm256_max_ps(vm, nb);
     }
     __m128 m = _mm_max_ps(_mm256_castps256_ps128(vm), _mm256_extractf128_ps(vm, 1));
     if (i < lanes) {
@@ -54,14 +56,14 @@ __attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, co
         const __m128 dz = _mm_sub_ps(_mm_loadu_ps(Z + i), _mm_set1_ps(pz));
         const __m128 d2 =
             _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-        __m128 b = _mm_loadu_ps(B + i);
+        const __m128 b = _mm_loadu_ps(B + i);
         const __m128 better = _mm_cmplt_ps(d2, b);
-        b = _mm_or_ps(_mm_and_ps(better, d2), _mm_andnot_ps(better, b));
-        _mm_storeu_ps(B + i, b);
+        const __m128 nb = _mm_min_ps(d2, b);
+        _mm_storeu_ps(B + i, nb);
         auto* np = reinterpret_cast<float*>(N + i);
         _mm_storeu_ps(np, _mm_or_ps(_mm_and_ps(better, _mm256_castps256_ps128(vnode)),
                                     _mm_andnot_ps(better, _mm_loadu_ps(np))));
-        m = _mm_max_ps(m, b);
+        m = _mm_max_ps(m, nb);
     }
     alignas(16) float m4[4];
     _mm_store_ps(m4, m);
@@ -265,9 +267,9 @@ struct AcceleratedSearch::Impl {
                 const __m128 dz = _mm_sub_ps(_mm_loadu_ps(Z + i), vz);
                 const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
                                              _mm_mul_ps(dz, dz));
-                __m128 b = _mm_loadu_ps(B + i);
-                const __m128 better = _mm_cmplt_ps(d2, b);
-                b = _mm_or_ps(_mm_and_ps(better, d2), _mm_andnot_ps(better, b));
+                const __m128 b0 = _mm_loadu_ps(B + i);
+                const __m128 better = _mm_cmplt_ps(d2, b0);
+                const __m128 b = _mm_min_ps(d2, b0); // d2 < b0 ? d2 : b0
                 _mm_storeu_ps(B + i, b);
                 const __m128i m = _mm_castps_si128(better);
                 auto* np = reinterpret_cast<__m128i*>(N + i);
