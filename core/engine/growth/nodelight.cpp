@@ -103,15 +103,19 @@ void recordLight(skel::Skeleton& s, float voxelSize) {
     };
     for (const glm::ivec3& v : voxel)
         ++sat[at(v)];
+    // Rows before the box hold no node (they stay zero), rows after it repeat its last.
+    const std::size_t rowsEnd = static_cast<std::size_t>(box.x) + d + 1;
     for (std::size_t y = 0; y < static_cast<std::size_t>(box.y); ++y) {
         std::uint32_t* layer = sat.data() + y * sy;
-        for (std::size_t x = 1; x < dx; ++x) {
+        for (std::size_t x = d + 1; x < rowsEnd; ++x) {
             std::uint32_t run = 0;
             for (std::size_t z = 1; z < dz; ++z) {
                 run += layer[x * sx + z];
                 layer[x * sx + z] = run + layer[(x - 1) * sx + z];
             }
         }
+        for (std::size_t x = rowsEnd; x < dx; ++x)
+            std::copy_n(layer + (x - 1) * sx, sx, layer + x * sx);
     }
     const std::vector<std::int32_t>& delta = k.kernel.delta;
     std::vector<std::int32_t> raw(n);
