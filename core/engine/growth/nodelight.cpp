@@ -79,11 +79,14 @@ void recordLight(skel::Skeleton& s, float voxelSize) {
         hi = glm::max(hi, voxel[i]);
     }
     // The grid path's voxels are at most the box, its margin and half its first size again on
-    // each axis: where that could reach ShadowGrid's limit, take the grid path (and its error).
+    // each axis: where that could reach ShadowGrid's limit, take the grid path (and its error);
+    // and for a box of more than 2^24 voxels, whose table and per-voxel sums (12 bytes a voxel
+    // here) would outgrow the grid's five.
     const glm::dvec3 box = glm::dvec3(hi) - glm::dvec3(lo) + 1.0;
     const double m = depth;
     if ((box.x + 3 * m + 8) * (1.5 * box.y + 8) * (box.z + 3 * m + 8) >=
-        static_cast<double>(kMaxShadowVoxels)) {
+            static_cast<double>(kMaxShadowVoxels) ||
+        box.x * box.y * box.z > static_cast<double>(std::size_t{1} << 24)) {
         recordLightByShadowGrid(s, voxelSize);
         return;
     }

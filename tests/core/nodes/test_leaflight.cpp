@@ -20,6 +20,7 @@
 #include "engine/growth/spacecolonization.h"
 #include "engine/mesh/leaftint.h"
 #include "engine/mesh/mesh.h"
+#include "engine/util/error.h"
 #include "engine/util/random.h"
 
 using namespace sylva;
@@ -171,4 +172,16 @@ TEST(LeafLight, SummedCountsEqualTheShadowGridBitForBit) {
     ASSERT_GT(grown.skeleton.size(), 1000u);
     for (float voxel : {0.3f, 0.6f})
         same(grown.skeleton, voxel);
+}
+
+// A crown whose grid would pass the ShadowGrid's voxel limit takes the grid path: the same
+// LimitExceeded (before any large allocation) from both.
+TEST(LeafLight, AHugeCrownFailsAsTheShadowGridDoes) {
+    skel::Skeleton s;
+    const std::int32_t root = s.addNode({0, 0, 0}, -1, 0.1f, 0, {1, 0, 0, 0});
+    s.addNode({3000, 50, 3000}, root, 0.01f, 1, {1, 0, 0, 0});
+    s.finalize();
+    skel::Skeleton t = s;
+    EXPECT_THROW(growth::recordLight(s, 0.1f), LimitExceeded);
+    EXPECT_THROW(growth::recordLightByShadowGrid(t, 0.1f), LimitExceeded);
 }
