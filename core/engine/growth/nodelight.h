@@ -20,7 +20,8 @@ void recordLight(skel::Skeleton& skeleton, float voxelSize);
 
 /// The same records from a ShadowGrid that every node's pyramid is added to (applyBatch): the
 /// reference recordLight is tested against bit for bit, and what it takes for a crown whose
-/// grid could reach the ShadowGrid's limit (so the same LimitExceeded).
+/// grid could reach the ShadowGrid's limit (so the same LimitExceeded) or whose box passes 2^24
+/// voxels.
 void recordLightByShadowGrid(skel::Skeleton& skeleton, float voxelSize);
 
 } // namespace sylva::growth
