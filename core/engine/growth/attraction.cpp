@@ -17,8 +17,8 @@ __attribute__((noinline)) void
 sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __restrict pts,
           const float* __restrict best2, const std::int32_t* __restrict bestNode,
           const glm::vec3* __restrict pos, glm::vec3* __restrict sum,
-          std::uint32_t* __restrict count, std::uint64_t* __restrict hash, float* __restrict near2,
-          std::uint32_t* __restrict near, std::uint64_t* __restrict marks) {
+          std::uint32_t* __restrict count, std::uint64_t* __restrict hash,
+          std::uint64_t* __restrict marks) {
     for (std::size_t k = 0; k < liveCount; ++k) {
         const std::uint32_t a = live[k];
         const std::int32_t bn = bestNode[a];
@@ -28,15 +28,10 @@ sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __r
             marks[j >> 6] |= std::uint64_t{1} << (j & 63);
             sum[j] = glm::vec3(0.0f);
             if constexpr (Hash) hash[j] = 0x243F6A8885A308D3ull;
-            near2[j] = std::numeric_limits<float>::infinity();
         }
         const float b2 = best2[a];
         sum[j] += (pts[a] - pos[j]) * (1.0f / std::sqrt(b2));
         if constexpr (Hash) hash[j] = mixSeed(hash[j], a);
-        if (b2 < near2[j]) {
-            near2[j] = b2;
-            near[j] = a;
-        }
     }
 }
 
@@ -48,23 +43,32 @@ void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm
     a.sum.resize(nodeCount);
     a.count.resize(nodeCount, 0);
     a.setHash.resize(nodeCount);
-    a.nearest2.resize(nodeCount);
-    a.nearest.resize(nodeCount);
     a.marks.resize((nodeCount + 63) / 64, 0);
     if (hashSets)
         sumPoints<true>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
-                        a.count.data(), a.setHash.data(), a.nearest2.data(), a.nearest.data(),
-                        a.marks.data());
+                        a.count.data(), a.setHash.data(), a.marks.data());
     else
         sumPoints<false>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
-                         a.count.data(), a.setHash.data(), a.nearest2.data(), a.nearest.data(),
-                         a.marks.data());
+                         a.count.data(), a.setHash.data(), a.marks.data());
     a.attracted.clear();
     for (std::size_t w = 0; w < a.marks.size(); ++w) {
         for (std::uint64_t m = a.marks[w]; m != 0; m &= m - 1)
             a.attracted.push_back(static_cast<std::uint32_t>(w * 64 + __builtin_ctzll(m)));
         a.marks[w] = 0;
     }
+}
+
+std::pair<std::uint32_t, float> nearestPoint(std::uint32_t node,
+                                             std::span<const std::uint32_t> live,
+                                             const float* best2, const std::int32_t* bestNode) {
+    float near2 = std::numeric_limits<float>::infinity();
+    std::uint32_t near = 0;
+    for (const std::uint32_t a : live)
+        if (bestNode[a] == static_cast<std::int32_t>(node) && best2[a] < near2) {
+            near2 = best2[a];
+            near = a;
+        }
+    return {near, near2};
 }
 
 } // namespace sylva::growth

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -11,17 +12,15 @@ namespace sylva::growth {
 
 /// One space-colonization iteration's attraction (step 2 of colonize()): for every node that is
 /// the closest node of at least one live point, the sum of the unit vectors from it to those
-/// points (summed in point index order), their count, a hash of the set (mixSeed folded over the
-/// point indices in order), and the closest of them; the nodes so attracted in increasing index
-/// order. The arrays are per node and grow with the skeleton; the caller zeroes count[j] of each
-/// attracted node once it has used it (the other entries of sum, setHash, nearest2 and nearest
-/// are stale until a node is attracted again).
+/// points (summed in point index order), their count and a hash of the set (mixSeed folded over
+/// the point indices in order); the nodes so attracted in increasing index order. The arrays
+/// are per node and grow with the skeleton; the caller zeroes count[j] of each attracted node
+/// once it has used it (the other entries of sum and setHash are stale until a node is
+/// attracted again). The closest of a node's points: nearestPoint().
 struct Attraction {
     std::vector<glm::vec3> sum;
-    std::vector<std::uint32_t> count;   ///< 0 outside attracted between iterations
-    std::vector<std::uint64_t> setHash; ///< with hashSets only
-    std::vector<float> nearest2;
-    std::vector<std::uint32_t> nearest;
+    std::vector<std::uint32_t> count;     ///< 0 outside attracted between iterations
+    std::vector<std::uint64_t> setHash;   ///< with hashSets only
     std::vector<std::uint32_t> attracted; ///< increasing node index
     std::vector<std::uint64_t> marks;     ///< one bit a node, all zero between calls
 };
@@ -36,5 +35,13 @@ struct Attraction {
 void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
                    const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
                    std::size_t nodeCount, bool hashSets = true);
+
+/// The closest of node \p node's live points (the first in index order of equally close ones)
+/// and its squared distance, by a pass over the live points: colonize() needs it only for a
+/// node whose vectors cancel or whose set repeats (a few a tree), so the sums no longer track
+/// it point by point (a compare and a branch on every point).
+std::pair<std::uint32_t, float> nearestPoint(std::uint32_t node,
+                                             std::span<const std::uint32_t> live,
+                                             const float* best2, const std::int32_t* bestNode);
 
 } // namespace sylva::growth

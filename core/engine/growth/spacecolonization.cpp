@@ -224,7 +224,9 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
                                   (!hashSets || lastHash[j] == at.setHash[j]);
             glm::vec3 dir;
             if (cancelled || repeated) {
-                dir = (s.points[at.nearest[j]] - origin) * (1.0f / std::sqrt(at.nearest2[j]));
+                const std::pair<std::uint32_t, float> near =
+                    nearestPoint(j, s.live, s.best2.data(), s.bestNode.data());
+                dir = (s.points[near.first] - origin) * (1.0f / std::sqrt(near.second));
                 ++(cancelled ? result.zeroAverageFixes : result.oscillationFixes);
             } else {
                 const glm::vec3 mean = at.sum[j] / len;
