@@ -58,17 +58,28 @@ void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm
     }
 }
 
-std::pair<std::uint32_t, float> nearestPoint(std::uint32_t node,
-                                             std::span<const std::uint32_t> live,
-                                             const float* best2, const std::int32_t* bestNode) {
-    float near2 = std::numeric_limits<float>::infinity();
-    std::uint32_t near = 0;
-    for (const std::uint32_t a : live)
-        if (bestNode[a] == static_cast<std::int32_t>(node) && best2[a] < near2) {
-            near2 = best2[a];
-            near = a;
+void nearestPoints(Attraction& a, std::span<const std::uint32_t> nodes,
+                   std::span<const std::uint32_t> live, const float* best2,
+                   const std::int32_t* bestNode) {
+    const std::size_t n = a.sum.size();
+    a.wanted.resize(n, 0);
+    a.nearest2.resize(n);
+    a.nearest.resize(n);
+    for (const std::uint32_t j : nodes) {
+        a.wanted[j] = 1;
+        a.nearest2[j] = std::numeric_limits<float>::infinity();
+    }
+    for (const std::uint32_t p : live) {
+        const std::int32_t bn = bestNode[p];
+        if (bn < 0 || a.wanted[static_cast<std::size_t>(bn)] == 0) continue;
+        const auto j = static_cast<std::size_t>(bn);
+        if (best2[p] < a.nearest2[j]) {
+            a.nearest2[j] = best2[p];
+            a.nearest[j] = p;
         }
-    return {near, near2};
+    }
+    for (const std::uint32_t j : nodes)
+        a.wanted[j] = 0;
 }
 
 } // namespace sylva::growth

@@ -3,7 +3,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -16,11 +15,14 @@ namespace sylva::growth {
 /// the point indices in order); the nodes so attracted in increasing index order. The arrays
 /// are per node and grow with the skeleton; the caller zeroes count[j] of each attracted node
 /// once it has used it (the other entries of sum and setHash are stale until a node is
-/// attracted again). The closest of a node's points: nearestPoint().
+/// attracted again). The closest of a node's points: nearestPoints().
 struct Attraction {
     std::vector<glm::vec3> sum;
-    std::vector<std::uint32_t> count;     ///< 0 outside attracted between iterations
-    std::vector<std::uint64_t> setHash;   ///< with hashSets only
+    std::vector<std::uint32_t> count;   ///< 0 outside attracted between iterations
+    std::vector<std::uint64_t> setHash; ///< with hashSets only
+    std::vector<float> nearest2;        ///< by nearestPoints, for the nodes it was given
+    std::vector<std::uint32_t> nearest;
+    std::vector<std::uint8_t> wanted;     ///< nearestPoints' scratch, all zero between calls
     std::vector<std::uint32_t> attracted; ///< increasing node index
     std::vector<std::uint64_t> marks;     ///< one bit a node, all zero between calls
 };
@@ -36,12 +38,13 @@ void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm
                    const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
                    std::size_t nodeCount, bool hashSets = true);
 
-/// The closest of node \p node's live points (the first in index order of equally close ones)
-/// and its squared distance, by a pass over the live points: colonize() needs it only for a
-/// node whose vectors cancel or whose set repeats (a few a tree), so the sums no longer track
-/// it point by point (a compare and a branch on every point).
-std::pair<std::uint32_t, float> nearestPoint(std::uint32_t node,
-                                             std::span<const std::uint32_t> live,
-                                             const float* best2, const std::int32_t* bestNode);
+/// For each node of \p nodes (attracted ones): the closest of its live points (the first in index
+/// order of equally close ones) into a.nearest[node], its squared distance into a.nearest2[node],
+/// by one pass over the live points. colonize() needs them only for the nodes whose vectors
+/// cancel or whose set repeats (a few a tree), so the sums do not track them point by point (a
+/// compare and a branch on every point); one pass an iteration whatever their number.
+void nearestPoints(Attraction& a, std::span<const std::uint32_t> nodes,
+                   std::span<const std::uint32_t> live, const float* best2,
+                   const std::int32_t* bestNode);
 
 } // namespace sylva::growth

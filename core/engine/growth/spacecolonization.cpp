@@ -164,7 +164,10 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     std::vector<std::uint64_t> lastHash;
     std::vector<std::uint32_t> lastCount;
     std::vector<int> lastGrown;
-    std::vector<glm::vec3> dirs; ///< of the attracted nodes, this iteration
+    std::vector<glm::vec3> dirs;      ///< of the attracted nodes, this iteration
+    std::vector<std::uint8_t> fix;    ///< per attracted node: 1 its vectors cancel, 2 it repeats
+    std::vector<std::uint32_t> fixed; ///< the attracted nodes with a fix
+    std::vector<float> lens;          ///< per attracted node: the length of its sum
 
     Rng rng(mixSeed(params.seed, salt::kSpaceColonization));
     std::size_t firstNew = 0;
@@ -213,23 +216,33 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         // The directions first, then the nodes: each node's chain of square roots and
         // divisions (the mean, the random unit, the normalisation, then transport's rotation)
         // overlaps the next one's instead of waiting behind the skeleton's appends.
-        dirs.resize(attracted.size());
+        // The nodes that grow straight toward their closest point (their vectors cancel, or
+        // they kept last iteration's points), and those points, in one pass.
+        fix.resize(attracted.size());
+        lens.resize(attracted.size());
+        fixed.clear();
         for (std::size_t k = 0; k < attracted.size(); ++k) {
             const std::uint32_t j = attracted[k];
-            const glm::vec3 origin = skel.position[j];
             const float len = glm::length(at.sum[j]);
             const bool cancelled = len <= 1e-5f * static_cast<float>(at.count[j]);
             const bool repeated = !cancelled && lastGrown[j] == iteration - 1 &&
                                   lastCount[j] == at.count[j] &&
                                   (!hashSets || lastHash[j] == at.setHash[j]);
+            fix[k] = cancelled ? 1 : repeated ? 2 : 0;
+            lens[k] = len;
+            if (fix[k] != 0) fixed.push_back(j);
+        }
+        if (!fixed.empty()) nearestPoints(at, fixed, s.live, s.best2.data(), s.bestNode.data());
+        dirs.resize(attracted.size());
+        for (std::size_t k = 0; k < attracted.size(); ++k) {
+            const std::uint32_t j = attracted[k];
+            const glm::vec3 origin = skel.position[j];
             glm::vec3 dir;
-            if (cancelled || repeated) {
-                const std::pair<std::uint32_t, float> near =
-                    nearestPoint(j, s.live, s.best2.data(), s.bestNode.data());
-                dir = (s.points[near.first] - origin) * (1.0f / std::sqrt(near.second));
-                ++(cancelled ? result.zeroAverageFixes : result.oscillationFixes);
+            if (fix[k] != 0) {
+                dir = (s.points[at.nearest[j]] - origin) * (1.0f / std::sqrt(at.nearest2[j]));
+                ++(fix[k] == 1 ? result.zeroAverageFixes : result.oscillationFixes);
             } else {
-                const glm::vec3 mean = at.sum[j] / len;
+                const glm::vec3 mean = at.sum[j] / lens[k];
                 dir = mean;
                 if (params.randomness > 0.0f) dir += params.randomness * randomUnit(rng);
                 dir += params.tropism;
