@@ -13,6 +13,15 @@ namespace sylva::growth {
 /// self-organizing records' units); a record less its children's is the node's own exposure.
 /// Replaces any light already there; leaves vigour and age as they are. O(nodes + voxels).
 /// \param voxelSize metres, > 0 (space_colonization's `light_voxel_size`).
+/// Reads the shadow only at the nodes' voxels: each node counts the nodes in the square above it
+/// at each depth (a summed-area table of the counts per layer) instead of every pyramid being
+/// spread over a grid, the same integers as recordLightByShadowGrid.
 void recordLight(skel::Skeleton& skeleton, float voxelSize);
+
+/// The same records from a ShadowGrid that every node's pyramid is added to (applyBatch): the
+/// reference recordLight is tested against bit for bit, and what it takes for a crown whose
+/// grid could reach the ShadowGrid's limit (so the same LimitExceeded) or whose box passes 2^24
+/// voxels.
+void recordLightByShadowGrid(skel::Skeleton& skeleton, float voxelSize);
 
 } // namespace sylva::growth

@@ -9,14 +9,8 @@
 
 #include <glm/gtx/quaternion.hpp>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#define SYLVA_OFFER_AVX 1
-#endif
-
+#include "engine/growth/attraction.h"
+#include "engine/growth/colonizationsearch.h"
 #include "engine/growth/pipemodel.h"
 #include "engine/growth/spatialgrid.h"
 #include "engine/util/error.h"
@@ -57,405 +51,6 @@ void validate(const ColonizationParams& p) {
 }
 
 namespace {
-
-/// Closest node within d_i of every live point, and the kill test.
-struct PointState {
-    const std::vector<glm::vec3>& points;
-    std::vector<float> best2;           ///< squared distance to bestNode, d_i² when none
-    std::vector<std::int32_t> bestNode; ///< -1 when no node is within d_i
-    std::vector<std::uint8_t> killed;
-    std::vector<std::uint32_t> live; ///< live points in increasing index order
-};
-
-#if SYLVA_OFFER_AVX
-/// AcceleratedSearch's offer of one node to a cell's points, eight lanes at a time where the
-/// processor has AVX (built for it alone, dispatched at run time): each lane the same float
-/// subtractions, products, sums and comparison as the SSE2 loop (no fused multiply-add: AVX
-/// alone has none), so the same distances, closest nodes and largest distance. The offers were
-/// most of the colonization search (perf record of the English oak: AcceleratedSearch::update
-/// 12 % of the tree). \p lanes is a multiple of 4. Returns the largest cached distance.
-__attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, const float* Z,
-                                              float* B, std::int32_t* N, std::uint32_t lanes,
-                                              float px, float py, float pz, std::int32_t node) {
-    const __m256 vx = _mm256_set1_ps(px), vy = _mm256_set1_ps(py), vz = _mm256_set1_ps(pz);
-    const __m256 vnode = _mm256_castsi256_ps(_mm256_set1_epi32(node));
-    __m256 vm = _mm256_setzero_ps();
-    std::uint32_t i = 0;
-    for (; i + 8 <= lanes; i += 8) {
-        const __m256 dx = _mm256_sub_ps(_mm256_loadu_ps(X + i), vx);
-        const __m256 dy = _mm256_sub_ps(_mm256_loadu_ps(Y + i), vy);
-        const __m256 dz = _mm256_sub_ps(_mm256_loadu_ps(Z + i), vz);
-        const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
-                                        _mm256_mul_ps(dz, dz));
-        __m256 b = _mm256_loadu_ps(B + i);
-        const __m256 better = _mm256_cmp_ps(d2, b, _CMP_LT_OQ);
-        b = _mm256_or_ps(_mm256_and_ps(better, d2), _mm256_andnot_ps(better, b));
-        _mm256_storeu_ps(B + i, b);
-        auto* np = reinterpret_cast<float*>(N + i);
-        _mm256_storeu_ps(np, _mm256_or_ps(_mm256_and_ps(better, vnode),
-                                          _mm256_andnot_ps(better, _mm256_loadu_ps(np))));
-        vm = _mm256_max_ps(vm, b);
-    }
-    __m128 m = _mm_max_ps(_mm256_castps256_ps128(vm), _mm256_extractf128_ps(vm, 1));
-    if (i < lanes) {
-        const __m128 dx = _mm_sub_ps(_mm_loadu_ps(X + i), _mm_set1_ps(px));
-        const __m128 dy = _mm_sub_ps(_mm_loadu_ps(Y + i), _mm_set1_ps(py));
-        const __m128 dz = _mm_sub_ps(_mm_loadu_ps(Z + i), _mm_set1_ps(pz));
-        const __m128 d2 =
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-        __m128 b = _mm_loadu_ps(B + i);
-        const __m128 better = _mm_cmplt_ps(d2, b);
-        b = _mm_or_ps(_mm_and_ps(better, d2), _mm_andnot_ps(better, b));
-        _mm_storeu_ps(B + i, b);
-        auto* np = reinterpret_cast<float*>(N + i);
-        _mm_storeu_ps(np, _mm_or_ps(_mm_and_ps(better, _mm256_castps256_ps128(vnode)),
-                                    _mm_andnot_ps(better, _mm_loadu_ps(np))));
-        m = _mm_max_ps(m, b);
-    }
-    alignas(16) float m4[4];
-    _mm_store_ps(m4, m);
-    return std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3]));
-}
-
-/// The node-to-cell bound of every new node, eight nodes at a time (the SSE2 loop's
-/// subtractions, maxima, products and sums in each lane), and offerAvx inlined for each node
-/// that passes it, in index order. max2 only shrinks, so testing a block against the max2 of
-/// its start processes at most a node more for nothing (which changes no result), as the SSE2
-/// loop does a block of four. Returns the cell's new max2; \p touched when a node was offered.
-__attribute__((target("avx"))) float
-scanNodesAvx(const float* nx, const float* ny, const float* nz, std::size_t newNodes,
-             std::size_t firstNew, const glm::vec3& lo, const glm::vec3& hi, float* X, float* Y,
-             float* Z, float* B, std::int32_t* N, std::uint32_t lanes, float max2, bool& touched) {
-    const __m256 vlx = _mm256_set1_ps(lo.x), vly = _mm256_set1_ps(lo.y), vlz = _mm256_set1_ps(lo.z);
-    const __m256 vhx = _mm256_set1_ps(hi.x), vhy = _mm256_set1_ps(hi.y), vhz = _mm256_set1_ps(hi.z);
-    const __m256 zero = _mm256_setzero_ps();
-    std::size_t j = 0;
-    for (; j + 8 <= newNodes; j += 8) {
-        const __m256 x = _mm256_loadu_ps(nx + j);
-        const __m256 y = _mm256_loadu_ps(ny + j);
-        const __m256 z = _mm256_loadu_ps(nz + j);
-        const __m256 dx =
-            _mm256_max_ps(_mm256_max_ps(_mm256_sub_ps(vlx, x), _mm256_sub_ps(x, vhx)), zero);
-        const __m256 dy =
-            _mm256_max_ps(_mm256_max_ps(_mm256_sub_ps(vly, y), _mm256_sub_ps(y, vhy)), zero);
-        const __m256 dz =
-            _mm256_max_ps(_mm256_max_ps(_mm256_sub_ps(vlz, z), _mm256_sub_ps(z, vhz)), zero);
-        const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
-                                        _mm256_mul_ps(dz, dz));
-        int mask = _mm256_movemask_ps(_mm256_cmp_ps(d2, _mm256_set1_ps(max2), _CMP_LT_OQ));
-        for (; mask != 0; mask &= mask - 1) {
-            const std::size_t k =
-                j + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask)));
-            max2 = offerAvx(X, Y, Z, B, N, lanes, nx[k], ny[k], nz[k],
-                            static_cast<std::int32_t>(firstNew + k));
-            touched = true;
-        }
-    }
-    for (; j < newNodes; ++j) {
-        const float dx = std::max(std::max(lo.x - nx[j], nx[j] - hi.x), 0.0f);
-        const float dy = std::max(std::max(lo.y - ny[j], ny[j] - hi.y), 0.0f);
-        const float dz = std::max(std::max(lo.z - nz[j], nz[j] - hi.z), 0.0f);
-        if ((dx * dx + dy * dy) + dz * dz < max2) {
-            max2 = offerAvx(X, Y, Z, B, N, lanes, nx[j], ny[j], nz[j],
-                            static_cast<std::int32_t>(firstNew + j));
-            touched = true;
-        }
-    }
-    return max2;
-}
-
-// The processor's features read first (a static initializer may run before libgcc's own).
-// SYLVA_NO_AVX=1 takes the SSE2 offers on any processor (its tests run them on one with AVX).
-const bool kHasAvx =
-    (__builtin_cpu_init(), __builtin_cpu_supports("avx")) && std::getenv("SYLVA_NO_AVX") == nullptr;
-#endif
-
-/// The oracle: every live point against every node, every iteration.
-void updateNaive(PointState& s, const std::vector<glm::vec3>& nodes, float di2, float dk2) {
-    for (std::uint32_t a : s.live) {
-        float b2 = di2;
-        std::int32_t bn = -1;
-        const glm::vec3 p = s.points[a];
-        for (std::size_t j = 0; j < nodes.size(); ++j) {
-            const float d2 = distance2(p, nodes[j]);
-            if (d2 < b2) {
-                b2 = d2;
-                bn = static_cast<std::int32_t>(j);
-            }
-        }
-        s.best2[a] = b2;
-        s.bestNode[a] = bn;
-        if (b2 < dk2) s.killed[a] = 1;
-    }
-}
-
-/// Cached closest node per point. Nodes never move and points only die, so the closest node
-/// can change only to a node added since the last update; nodes are visited in increasing index
-/// order with a strict '<', which reproduces the oracle's lowest-index tie-breaking exactly.
-/// Points are kept cell by cell (PointGrid cells) in struct-of-arrays form, live points first,
-/// so both inner loops are branch-free and vectorize. A cell is skipped for a new node when the
-/// node is no closer to the cell's bounds than the worst cached distance of its live points
-/// (no point of it could improve); the bound holds in float arithmetic, so skipping never
-/// changes a result.
-class AcceleratedSearch {
-public:
-    AcceleratedSearch(const std::vector<glm::vec3>& points, float di) {
-        const PointGrid grid(points, cellSizeFor(points, di));
-        std::size_t total = 0;
-        for (const PointGrid::Cell& c : grid.cells())
-            total += padded(c.end - c.begin);
-        mX.resize(total);
-        mY.resize(total);
-        mZ.resize(total);
-        mBest2.resize(total);
-        mNode.resize(total);
-        mId.resize(total);
-        std::uint32_t begin = 0;
-        for (const PointGrid::Cell& c : grid.cells()) {
-            const std::uint32_t n = c.end - c.begin;
-            for (std::uint32_t k = 0; k < n; ++k) {
-                const std::uint32_t i = grid.order()[c.begin + k];
-                mX[begin + k] = points[i].x;
-                mY[begin + k] = points[i].y;
-                mZ[begin + k] = points[i].z;
-                mBest2[begin + k] = di * di;
-                mNode[begin + k] = -1;
-                mId[begin + k] = i;
-            }
-            clearPadding(begin, n);
-            mActive.push_back(static_cast<std::uint32_t>(mCells.size()));
-            mCells.push_back({begin, n, di * di, c.lo, c.hi});
-            begin += padded(n);
-        }
-    }
-
-    void update(PointState& s, const std::vector<glm::vec3>& nodes, std::size_t firstNew,
-                float dk2) {
-        const std::size_t newNodes = nodes.size() - firstNew;
-        mNX.resize(newNodes);
-        mNY.resize(newNodes);
-        mNZ.resize(newNodes);
-        for (std::size_t j = 0; j < newNodes; ++j) {
-            mNX[j] = nodes[firstNew + j].x;
-            mNY[j] = nodes[firstNew + j].y;
-            mNZ[j] = nodes[firstNew + j].z;
-        }
-        const auto cellCount = static_cast<std::int64_t>(mActive.size());
-        // Each cell is owned by one thread and its points see the nodes in index order, so the
-        // result does not depend on the number of threads. Small updates stay serial: waking
-        // a team costs more than they do.
-        const bool parallel = cellCount * static_cast<std::int64_t>(newNodes) > 200000;
-#pragma omp parallel for schedule(dynamic, 32) if (parallel)
-        for (std::int64_t k = 0; k < cellCount; ++k)
-            if (useAvx())
-                updateCell<true>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
-            else
-                updateCell<false>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
-        std::erase_if(mActive, [this](std::uint32_t c) { return mCells[c].live == 0; });
-    }
-
-private:
-    struct Cell {
-        std::uint32_t begin; ///< into the point arrays; storage is padded to 4 lanes
-        std::uint32_t live;  ///< live points, stored first
-        float max2;          ///< largest cached best2 of the live points
-        glm::vec3 lo, hi;    ///< bounds of all the cell's points
-    };
-
-    static std::uint32_t padded(std::uint32_t n) {
-        return (n + 3u) & ~3u;
-    }
-
-    // Inert lanes: an infinite distance never beats anything and 0 never raises the maximum.
-    void clearPadding(std::uint32_t begin, std::uint32_t live) {
-        const float inf = std::numeric_limits<float>::infinity();
-        for (std::uint32_t k = live; k < padded(live); ++k) {
-            mX[begin + k] = mY[begin + k] = mZ[begin + k] = inf;
-            mBest2[begin + k] = 0.0f;
-            mNode[begin + k] = -1;
-            mId[begin + k] = 0;
-        }
-    }
-
-    static bool useAvx() {
-#if SYLVA_OFFER_AVX
-        return kHasAvx;
-#else
-        return false;
-#endif
-    }
-
-    // Avx: the bound tests and offers by scanNodesAvx (offerAvx inlined in it; one instance a
-    // path: a call in the SSE2 loop's lambda cost that loop 6 %, its registers saved round it).
-    template <bool Avx>
-    void updateCell(PointState& s, Cell& cell, std::size_t firstNew, float dk2) {
-        const std::size_t newNodes = mNX.size();
-        const float* nx = mNX.data();
-        const float* ny = mNY.data();
-        const float* nz = mNZ.data();
-        const float lx = cell.lo.x, ly = cell.lo.y, lz = cell.lo.z;
-        const float hx = cell.hi.x, hy = cell.hi.y, hz = cell.hi.z;
-        float* X = mX.data() + cell.begin;
-        float* Y = mY.data() + cell.begin;
-        float* Z = mZ.data() + cell.begin;
-        float* B = mBest2.data() + cell.begin;
-        std::int32_t* N = mNode.data() + cell.begin;
-        const std::uint32_t* I = mId.data() + cell.begin;
-        const std::uint32_t lanes = padded(cell.live);
-        float max2 = cell.max2;
-        bool touched = false;
-
-        // Offers new node j to every live point of the cell (the oracle's distance2 expression
-        // and strict '<') and tightens max2, without a branch on the lanes that improve: what
-        // the shared state sees is published once a cell, below (the closest node of a point
-        // after all new nodes is all it reads).
-        auto process = [&](std::size_t j) {
-            const float px = nx[j], py = ny[j], pz = nz[j];
-            const auto node = static_cast<std::int32_t>(firstNew + j);
-            touched = true;
-#if defined(__SSE2__)
-            const __m128 vx = _mm_set1_ps(px), vy = _mm_set1_ps(py), vz = _mm_set1_ps(pz);
-            const __m128i vnode = _mm_set1_epi32(node);
-            __m128 vm = _mm_setzero_ps();
-            for (std::uint32_t i = 0; i < lanes; i += 4) {
-                const __m128 dx = _mm_sub_ps(_mm_loadu_ps(X + i), vx);
-                const __m128 dy = _mm_sub_ps(_mm_loadu_ps(Y + i), vy);
-                const __m128 dz = _mm_sub_ps(_mm_loadu_ps(Z + i), vz);
-                const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
-                                             _mm_mul_ps(dz, dz));
-                __m128 b = _mm_loadu_ps(B + i);
-                const __m128 better = _mm_cmplt_ps(d2, b);
-                b = _mm_or_ps(_mm_and_ps(better, d2), _mm_andnot_ps(better, b));
-                _mm_storeu_ps(B + i, b);
-                const __m128i m = _mm_castps_si128(better);
-                auto* np = reinterpret_cast<__m128i*>(N + i);
-                _mm_storeu_si128(np, _mm_or_si128(_mm_and_si128(m, vnode),
-                                                  _mm_andnot_si128(m, _mm_loadu_si128(np))));
-                vm = _mm_max_ps(vm, b);
-            }
-            alignas(16) float m4[4];
-            _mm_store_ps(m4, vm);
-            max2 = std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3]));
-#else
-            float m = 0.0f;
-            for (std::uint32_t i = 0; i < lanes; ++i) {
-                const float dx = X[i] - px;
-                const float dy = Y[i] - py;
-                const float dz = Z[i] - pz;
-                const float d2 = (dx * dx + dy * dy) + dz * dz;
-                if (d2 < B[i]) {
-                    B[i] = d2;
-                    N[i] = node;
-                }
-                m = std::max(m, B[i]);
-            }
-            max2 = m;
-#endif
-        };
-
-        // The node-to-cell bound is PointGrid::boxDistance2, written branch-free. max2 only
-        // shrinks while nodes are processed, so a node that fails the test stays skipped; one
-        // tested against a stale max2 is processed for nothing but changes no result.
-        std::size_t j = 0;
-#if SYLVA_OFFER_AVX
-        if constexpr (Avx) {
-            max2 = scanNodesAvx(nx, ny, nz, newNodes, firstNew, cell.lo, cell.hi, X, Y, Z, B, N,
-                                lanes, max2, touched);
-            j = newNodes;
-        }
-#endif
-#if defined(__SSE2__)
-        {
-            const __m128 vlx = _mm_set1_ps(lx), vly = _mm_set1_ps(ly), vlz = _mm_set1_ps(lz);
-            const __m128 vhx = _mm_set1_ps(hx), vhy = _mm_set1_ps(hy), vhz = _mm_set1_ps(hz);
-            const __m128 zero = _mm_setzero_ps();
-            for (; j + 4 <= newNodes; j += 4) {
-                const __m128 x = _mm_loadu_ps(nx + j);
-                const __m128 y = _mm_loadu_ps(ny + j);
-                const __m128 z = _mm_loadu_ps(nz + j);
-                const __m128 dx =
-                    _mm_max_ps(_mm_max_ps(_mm_sub_ps(vlx, x), _mm_sub_ps(x, vhx)), zero);
-                const __m128 dy =
-                    _mm_max_ps(_mm_max_ps(_mm_sub_ps(vly, y), _mm_sub_ps(y, vhy)), zero);
-                const __m128 dz =
-                    _mm_max_ps(_mm_max_ps(_mm_sub_ps(vlz, z), _mm_sub_ps(z, vhz)), zero);
-                const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
-                                             _mm_mul_ps(dz, dz));
-                int mask = _mm_movemask_ps(_mm_cmplt_ps(d2, _mm_set1_ps(max2)));
-                for (; mask != 0; mask &= mask - 1)
-                    process(j +
-                            static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask))));
-            }
-        }
-#endif
-        for (; j < newNodes; ++j) {
-            const float dx = std::max(std::max(lx - nx[j], nx[j] - hx), 0.0f);
-            const float dy = std::max(std::max(ly - ny[j], ny[j] - hy), 0.0f);
-            const float dz = std::max(std::max(lz - nz[j], nz[j] - hz), 0.0f);
-            if ((dx * dx + dy * dy) + dz * dz < max2) process(j);
-        }
-        cell.max2 = max2;
-        if (!touched) return;
-        bool anyKill = false;
-        for (std::uint32_t i = 0; i < cell.live; ++i) {
-            s.best2[I[i]] = B[i];
-            s.bestNode[I[i]] = N[i];
-            anyKill |= B[i] < dk2;
-        }
-        if (!anyKill) return;
-
-        std::uint32_t kept = 0;
-        float keptMax = 0.0f;
-        for (std::uint32_t i = 0; i < cell.live; ++i) {
-            if (B[i] < dk2) {
-                s.killed[I[i]] = 1;
-                continue;
-            }
-            X[kept] = X[i];
-            Y[kept] = Y[i];
-            Z[kept] = Z[i];
-            B[kept] = B[i];
-            N[kept] = N[i];
-            mId[cell.begin + kept] = I[i];
-            keptMax = std::max(keptMax, B[i]);
-            ++kept;
-        }
-        cell.live = kept;
-        cell.max2 = keptMax;
-        clearPadding(cell.begin, kept);
-    }
-
-    // About pointsPerCell() points per cell, never finer than d_i / 8 (the pruning works on
-    // cells: smaller cells prune more points but cost more node-to-cell tests; 16 against 8:
-    // bench_spacecolonization 3k-100k points 14-20 % faster, the English oak 2-5 %, since the
-    // point loop went branch-free; 32 against 16: 3k-100k points 9-13 % faster, perf_gate
-    // spacecol 11 %, the oak 2 %, as the nodes were offered to whole cells four at a time;
-    // 64 no better than 32 then; 64 against 32 once the offers took eight lanes (offerAvx):
-    // perf_gate spacecol 6 %, the oak 1 %).
-    static float cellSizeFor(const std::vector<glm::vec3>& points, float di) {
-        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        for (const glm::vec3& p : points) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
-        const glm::dvec3 e = glm::max(glm::dvec3(hi - lo), glm::dvec3(1e-3));
-        const double h =
-            std::cbrt(e.x * e.y * e.z * pointsPerCell() / static_cast<double>(points.size()));
-        return static_cast<float>(std::max(h, static_cast<double>(di) / 8.0));
-    }
-    // 64 with the eight-lane offers, 32 with SSE2's four (64 there: perf_gate spacecol 0.379
-    // -> 0.40).
-    static double pointsPerCell() {
-        return useAvx() ? 64.0 : 32.0;
-    }
-
-    std::vector<float> mX, mY, mZ, mBest2; ///< per point, grouped by cell, padded
-    std::vector<std::int32_t> mNode;
-    std::vector<std::uint32_t> mId;
-    std::vector<Cell> mCells;
-    std::vector<std::uint32_t> mActive; ///< cells with live points
-    std::vector<float> mNX, mNY, mNZ;   ///< the nodes added since the last update
-};
 
 glm::vec3 randomUnit(Rng& rng) {
     const double z = rng.uniform(-1.0, 1.0);
@@ -558,15 +153,21 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         fast = std::make_unique<AcceleratedSearch>(attractors, params.influenceDistance);
 
     // Per-node scratch, grown with the skeleton.
-    std::vector<glm::vec3> sum;
-    std::vector<std::uint32_t> count;
-    std::vector<std::uint64_t> setHash;
-    std::vector<float> nearest2;
-    std::vector<std::uint32_t> nearest;
+    Attraction at;
+    // Did node j keep the points it had when it grew last iteration? Its points now are a
+    // subset of those: a point's closest node changes only to a node added since, and j was
+    // not (it grew last iteration, so it was searched then), and points only die. So the same
+    // count is the same set, and the hash of the set adds nothing: the accelerated path skips
+    // it (its sum loop's longest chain); the naive path, the oracle, keeps hash and count,
+    // and the tests hold both to the same skeleton.
+    const bool hashSets = search == NeighbourSearch::Naive;
     std::vector<std::uint64_t> lastHash;
     std::vector<std::uint32_t> lastCount;
     std::vector<int> lastGrown;
-    std::vector<std::uint32_t> attracted;
+    std::vector<glm::vec3> dirs;      ///< of the attracted nodes, this iteration
+    std::vector<std::uint8_t> fix;    ///< per attracted node: 1 its vectors cancel, 2 it repeats
+    std::vector<std::uint32_t> fixed; ///< the attracted nodes with a fix
+    std::vector<float> lens;          ///< per attracted node: the length of its sum
 
     Rng rng(mixSeed(params.seed, salt::kSpaceColonization));
     std::size_t firstNew = 0;
@@ -596,79 +197,67 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
 
         // 2. sum the unit vectors per node, in point index order
         const std::size_t n = skel.size();
-        sum.resize(n);
-        count.resize(n, 0);
-        setHash.resize(n);
-        nearest2.resize(n);
-        nearest.resize(n);
+        sumAttraction(at, s.live, s.points.data(), s.best2.data(), s.bestNode.data(),
+                      skel.position.data(), n, hashSets);
         lastHash.resize(n, 0);
         lastCount.resize(n, 0);
         lastGrown.resize(n, -2);
-        attracted.clear();
-        // The arrays are read through local pointers: through the vectors, the stores to sum
-        // and setHash made the compiler load every data pointer again each point (the oak's
-        // grow ~1 % faster; the killed points' erase_if fused into this loop was ~1 % slower).
-        const glm::vec3* const pts = s.points.data();
-        const glm::vec3* const pos = skel.position.data();
-        const float* const best2 = s.best2.data();
-        const std::int32_t* const bestNode = s.bestNode.data();
-        glm::vec3* const sumP = sum.data();
-        std::uint32_t* const countP = count.data();
-        std::uint64_t* const hashP = setHash.data();
-        float* const near2P = nearest2.data();
-        std::uint32_t* const nearP = nearest.data();
-        for (const std::uint32_t a : s.live) {
-            const std::int32_t bn = bestNode[a];
-            if (bn < 0) continue;
-            const auto j = static_cast<std::size_t>(bn);
-            if (countP[j]++ == 0) {
-                attracted.push_back(static_cast<std::uint32_t>(j));
-                sumP[j] = glm::vec3(0.0f);
-                hashP[j] = 0x243F6A8885A308D3ull;
-                near2P[j] = std::numeric_limits<float>::infinity();
-            }
-            const float b2 = best2[a];
-            sumP[j] += (pts[a] - pos[j]) * (1.0f / std::sqrt(b2));
-            hashP[j] = mixSeed(hashP[j], a);
-            if (b2 < near2P[j]) {
-                near2P[j] = b2;
-                nearP[j] = a;
-            }
-        }
+        const std::vector<std::uint32_t>& attracted = at.attracted;
         if (attracted.empty()) {
             result.stopReason = StopReason::NothingInReach;
             break;
         }
-        std::sort(attracted.begin(), attracted.end());
 
         // 3. grow one segment from every attracted node, in node index order
         if (skel.size() + attracted.size() > kMaxColonizationNodes)
             throw LimitExceeded("space colonization would exceed " +
                                 std::to_string(kMaxColonizationNodes) +
                                 " nodes; use fewer attraction points or a longer segment_length");
-        for (std::uint32_t j : attracted) {
-            const glm::vec3 origin = skel.position[j];
-            const float len = glm::length(sum[j]);
-            const bool cancelled = len <= 1e-5f * static_cast<float>(count[j]);
+        // The directions first, then the nodes: each node's chain of square roots and
+        // divisions (the mean, the random unit, the normalisation, then transport's rotation)
+        // overlaps the next one's instead of waiting behind the skeleton's appends.
+        // The nodes that grow straight toward their closest point (their vectors cancel, or
+        // they kept last iteration's points), and those points, in one pass.
+        fix.resize(attracted.size());
+        lens.resize(attracted.size());
+        fixed.clear();
+        for (std::size_t k = 0; k < attracted.size(); ++k) {
+            const std::uint32_t j = attracted[k];
+            const float len = glm::length(at.sum[j]);
+            const bool cancelled = len <= 1e-5f * static_cast<float>(at.count[j]);
             const bool repeated = !cancelled && lastGrown[j] == iteration - 1 &&
-                                  lastHash[j] == setHash[j] && lastCount[j] == count[j];
+                                  lastCount[j] == at.count[j] &&
+                                  (!hashSets || lastHash[j] == at.setHash[j]);
+            fix[k] = cancelled ? 1 : repeated ? 2 : 0;
+            lens[k] = len;
+            if (fix[k] != 0) fixed.push_back(j);
+        }
+        if (!fixed.empty()) nearestPoints(at, fixed, s.live, s.best2.data(), s.bestNode.data());
+        dirs.resize(attracted.size());
+        for (std::size_t k = 0; k < attracted.size(); ++k) {
+            const std::uint32_t j = attracted[k];
+            const glm::vec3 origin = skel.position[j];
             glm::vec3 dir;
-            if (cancelled || repeated) {
-                dir = (s.points[nearest[j]] - origin) * (1.0f / std::sqrt(nearest2[j]));
-                ++(cancelled ? result.zeroAverageFixes : result.oscillationFixes);
+            if (fix[k] != 0) {
+                dir = (s.points[at.nearest[j]] - origin) * (1.0f / std::sqrt(at.nearest2[j]));
+                ++(fix[k] == 1 ? result.zeroAverageFixes : result.oscillationFixes);
             } else {
-                const glm::vec3 mean = sum[j] / len;
+                const glm::vec3 mean = at.sum[j] / lens[k];
                 dir = mean;
                 if (params.randomness > 0.0f) dir += params.randomness * randomUnit(rng);
                 dir += params.tropism;
                 dir = safeNormalize(dir, mean);
             }
+            dirs[k] = dir;
             lastGrown[j] = iteration;
-            lastHash[j] = setHash[j];
-            lastCount[j] = count[j];
-            count[j] = 0;
-            skel.addNode(origin + D * dir, static_cast<std::int32_t>(j), 0.0f, skel.order[j],
-                         transport(skel.orientation[j], dir));
+            lastHash[j] = at.setHash[j];
+            lastCount[j] = at.count[j];
+            at.count[j] = 0;
+        }
+        for (std::size_t k = 0; k < attracted.size(); ++k) {
+            const std::uint32_t j = attracted[k];
+            skel.addNode(skel.position[j] + D * dirs[k], static_cast<std::int32_t>(j), 0.0f,
+                         skel.order[j], transport(skel.orientation[j], dirs[k]));
         }
         result.iterations = iteration + 1;
         progress.report(static_cast<double>(iteration + 1) / params.maxIterations, "grow");

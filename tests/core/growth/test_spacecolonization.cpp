@@ -91,6 +91,27 @@ TEST(SpaceColonization, AcceleratedEqualsNaiveOtherShapesAndTropism) {
     EXPECT_EQ(fast.killed, slow.killed);
 }
 
+// Enough points for a few dozen cells (192 a cell with AVX, 64 without), two clumps of
+// different density: cells skipped, shrunk as their points die and emptied.
+TEST(SpaceColonization, AcceleratedEqualsNaiveManyCells) {
+    ColonizationParams p;
+    p.influenceDistance = 2.0f;
+    p.killDistance = 0.4f;
+    p.segmentLength = 0.15f;
+    p.trunkHeight = 1.5f;
+    p.randomness = 0.25f;
+    p.clearTrunk = 1.0f;
+    std::vector<glm::vec3> points = Envelope::ellipsoid({0, 5, 0}, {4, 3, 4}).sample(2600, 11);
+    for (const glm::vec3& q : Envelope::sphere({3, 7, 1}, 1.2f).sample(1400, 12))
+        points.push_back(q);
+    const ColonizationResult fast = colonize(points, p, nullptr, NeighbourSearch::Accelerated);
+    const ColonizationResult slow = colonize(points, p, nullptr, NeighbourSearch::Naive);
+    expectIdentical(fast.skeleton, slow.skeleton);
+    EXPECT_EQ(fast.killed, slow.killed);
+    EXPECT_EQ(fast.iterations, slow.iterations);
+    EXPECT_GT(fast.killedCount, 3000u);
+}
+
 TEST(SpaceColonization, EveryPointKilledOrOutOfReach) {
     const auto points = spherePoints(1000);
     const ColonizationParams p = referenceParams();

@@ -6,16 +6,22 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <utility>
 #include <vector>
 
 #include "../forest/presetfile.h"
 #include "engine/graph/graph.h"
+#include "engine/growth/envelope.h"
 #include "engine/growth/nodelight.h"
+#include "engine/growth/spacecolonization.h"
 #include "engine/mesh/leaftint.h"
 #include "engine/mesh/mesh.h"
+#include "engine/util/error.h"
+#include "engine/util/random.h"
 
 using namespace sylva;
 
@@ -125,4 +131,57 @@ TEST(LeafLight, ATipUnderACanopyGathersLessLight) {
     }
     EXPECT_NEAR(s.light[static_cast<std::size_t>(root)], sum, 1e-4);
     EXPECT_GT(s.light[static_cast<std::size_t>(root)], 1.0f);
+}
+
+// recordLight reads the shadow at the nodes' voxels from a summed-area table of node counts;
+// recordLightByShadowGrid spreads every pyramid over a ShadowGrid. The same records bit for
+// bit: random trees of 1-3,000 nodes (clusters sharing voxels, negative coordinates, one node),
+// voxel sizes whose depth is clamped at 16 and at 2 and in between, and a grown crown.
+TEST(LeafLight, SummedCountsEqualTheShadowGridBitForBit) {
+    auto same = [](const skel::Skeleton& grown, float voxel) {
+        skel::Skeleton a = grown, b = grown;
+        growth::recordLight(a, voxel);
+        growth::recordLightByShadowGrid(b, voxel);
+        ASSERT_EQ(a.light.size(), b.light.size());
+        for (std::size_t i = 0; i < a.light.size(); ++i)
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(a.light[i]),
+                      std::bit_cast<std::uint32_t>(b.light[i]))
+                << "node " << i << " of " << a.size() << ", voxel " << voxel;
+    };
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        Rng rng(seed);
+        skel::Skeleton s;
+        const std::size_t n = seed == 1 ? 1 : 500 * seed;
+        const glm::vec3 centre(rng.uniformf(-20, 20), rng.uniformf(-3, 3), rng.uniformf(-20, 20));
+        const float spread = rng.uniformf(1, 8);
+        for (std::size_t i = 0; i < n; ++i) {
+            glm::vec3 p = centre + spread * glm::vec3(rng.uniformf(-1, 1), rng.uniformf(0, 1.5f),
+                                                      rng.uniformf(-1, 1));
+            if (i % 7 == 3) p = s.position[rng.below(i)] + 0.05f * glm::vec3(rng.uniformf(-1, 1));
+            const auto parent = i == 0 ? -1 : static_cast<std::int32_t>(rng.below(i));
+            s.addNode(p, parent, 0.01f, 0, {1, 0, 0, 0});
+        }
+        for (float voxel : {0.1f, 0.37f, 0.6f, 1.0f, 2.5f})
+            same(s, voxel);
+    }
+    const std::vector<glm::vec3> points =
+        growth::Envelope::ellipsoid({0, 6, 0}, {5, 3.5f, 5}).sample(2000, 3);
+    growth::ColonizationParams p;
+    p.trunkHeight = 2.0f;
+    const growth::ColonizationResult grown = growth::colonize(points, p);
+    ASSERT_GT(grown.skeleton.size(), 1000u);
+    for (float voxel : {0.3f, 0.6f})
+        same(grown.skeleton, voxel);
+}
+
+// A crown whose grid would pass the ShadowGrid's voxel limit takes the grid path: the same
+// LimitExceeded (before any large allocation) from both.
+TEST(LeafLight, AHugeCrownFailsAsTheShadowGridDoes) {
+    skel::Skeleton s;
+    const std::int32_t root = s.addNode({0, 0, 0}, -1, 0.1f, 0, {1, 0, 0, 0});
+    s.addNode({3000, 50, 3000}, root, 0.01f, 1, {1, 0, 0, 0});
+    s.finalize();
+    skel::Skeleton t = s;
+    EXPECT_THROW(growth::recordLight(s, 0.1f), LimitExceeded);
+    EXPECT_THROW(growth::recordLightByShadowGrid(t, 0.1f), LimitExceeded);
 }

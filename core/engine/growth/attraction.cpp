@@ -1,0 +1,85 @@
+#include "engine/growth/attraction.h"
+
+#include <cmath>
+#include <limits>
+
+#include "engine/util/random.h"
+
+namespace sylva::growth {
+
+namespace {
+
+// The per-point loop on its own, out of line: inlined into colonize() its pointers and the
+// live cursor were kept on the stack and loaded again every point (colonize's registers were
+// taken by its other loops). Hash: fold each point into its node's setHash.
+template <bool Hash>
+__attribute__((noinline)) void
+sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __restrict pts,
+          const float* __restrict best2, const std::int32_t* __restrict bestNode,
+          const glm::vec3* __restrict pos, glm::vec3* __restrict sum,
+          std::uint32_t* __restrict count, std::uint64_t* __restrict hash,
+          std::uint64_t* __restrict marks) {
+    for (std::size_t k = 0; k < liveCount; ++k) {
+        const std::uint32_t a = live[k];
+        const std::int32_t bn = bestNode[a];
+        if (bn < 0) continue;
+        const auto j = static_cast<std::size_t>(bn);
+        if (count[j]++ == 0) {
+            marks[j >> 6] |= std::uint64_t{1} << (j & 63);
+            sum[j] = glm::vec3(0.0f);
+            if constexpr (Hash) hash[j] = 0x243F6A8885A308D3ull;
+        }
+        const float b2 = best2[a];
+        sum[j] += (pts[a] - pos[j]) * (1.0f / std::sqrt(b2));
+        if constexpr (Hash) hash[j] = mixSeed(hash[j], a);
+    }
+}
+
+} // namespace
+
+void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
+                   const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
+                   std::size_t nodeCount, bool hashSets) {
+    a.sum.resize(nodeCount);
+    a.count.resize(nodeCount, 0);
+    a.setHash.resize(nodeCount);
+    a.marks.resize((nodeCount + 63) / 64, 0);
+    if (hashSets)
+        sumPoints<true>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
+                        a.count.data(), a.setHash.data(), a.marks.data());
+    else
+        sumPoints<false>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
+                         a.count.data(), a.setHash.data(), a.marks.data());
+    a.attracted.clear();
+    for (std::size_t w = 0; w < a.marks.size(); ++w) {
+        for (std::uint64_t m = a.marks[w]; m != 0; m &= m - 1)
+            a.attracted.push_back(static_cast<std::uint32_t>(w * 64 + __builtin_ctzll(m)));
+        a.marks[w] = 0;
+    }
+}
+
+void nearestPoints(Attraction& a, std::span<const std::uint32_t> nodes,
+                   std::span<const std::uint32_t> live, const float* best2,
+                   const std::int32_t* bestNode) {
+    const std::size_t n = a.sum.size();
+    a.wanted.resize(n, 0);
+    a.nearest2.resize(n);
+    a.nearest.resize(n);
+    for (const std::uint32_t j : nodes) {
+        a.wanted[j] = 1;
+        a.nearest2[j] = std::numeric_limits<float>::infinity();
+    }
+    for (const std::uint32_t p : live) {
+        const std::int32_t bn = bestNode[p];
+        if (bn < 0 || a.wanted[static_cast<std::size_t>(bn)] == 0) continue;
+        const auto j = static_cast<std::size_t>(bn);
+        if (best2[p] < a.nearest2[j]) {
+            a.nearest2[j] = best2[p];
+            a.nearest[j] = p;
+        }
+    }
+    for (const std::uint32_t j : nodes)
+        a.wanted[j] = 0;
+}
+
+} // namespace sylva::growth
