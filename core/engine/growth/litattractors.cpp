@@ -12,6 +12,7 @@
 #endif
 
 #include "engine/growth/litcandidates.h"
+#include "engine/growth/shadowcounts.h"
 #include "engine/growth/shadowgrid.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
@@ -182,19 +183,27 @@ std::vector<glm::vec3> litAttractors(const std::vector<glm::vec3>& points,
     bounds(points, lo, hi);
     const float halfExtent = std::max((hi.x - lo.x + hi.y - lo.y + hi.z - lo.z) / 6.0f, 1e-3f);
 
-    // Shadow of the others at each point's voxel (integer pyramids: order-independent).
+    // Shadow of the others at each point's voxel (integer pyramids: order-independent), counted
+    // at the points (shadowAtSources: the grid's values there, bit for bit) unless the grid
+    // must decide (a box that could reach its limit).
     const ShadowKernel kernel = ShadowKernel::make(kShadowA, kShadowB, kShadowDepth);
     ShadowGrid grid(params.voxelSize, lo.y - params.voxelSize, kShadowDepth);
     std::vector<ShadowSource> sources(points.size());
     grid.voxelsOf(points, sources);
-    grid.applyBatch(sources, std::span<const ShadowKernel>(&kernel, 1));
     const std::size_t n = points.size();
-    std::vector<std::int32_t> raw(n);
-    std::vector<float> shadow(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        raw[i] = grid.raw(sources[i].voxel);
-        shadow[i] = shadowOf(raw[i]);
+    std::vector<glm::ivec3> voxels(n);
+    for (std::size_t i = 0; i < n; ++i)
+        voxels[i] = sources[i].voxel;
+    std::vector<std::int32_t> raw;
+    if (!shadowAtSources(voxels, kernel, raw)) {
+        grid.applyBatch(sources, std::span<const ShadowKernel>(&kernel, 1));
+        raw.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+            raw[i] = grid.raw(sources[i].voxel);
     }
+    std::vector<float> shadow(n);
+    for (std::size_t i = 0; i < n; ++i)
+        shadow[i] = shadowOf(raw[i]);
     // Every value is a sum of the kernel's increments: a multiple of their lowest power of two.
     int shift = 31;
     for (const std::int32_t d : kernel.delta)
