@@ -190,12 +190,22 @@ struct AcceleratedSearch::Impl {
         // result does not depend on the number of threads. Small updates stay serial: waking
         // a team costs more than they do.
         const bool parallel = cellCount * static_cast<std::int64_t>(newNodes) > 200000;
-#pragma omp parallel for schedule(dynamic, 32) if (parallel)
-        for (std::int64_t k = 0; k < cellCount; ++k)
+        auto update = [&](std::int64_t k) {
             if (useAvx())
                 updateCell<true>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
             else
                 updateCell<false>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
+        };
+        // Not `parallel for ... if (parallel)`: a region whose if fails still starts a team of
+        // one and ends it at a barrier (a futex call here), once an iteration.
+        if (parallel) {
+#pragma omp parallel for schedule(dynamic, 32)
+            for (std::int64_t k = 0; k < cellCount; ++k)
+                update(k);
+        } else {
+            for (std::int64_t k = 0; k < cellCount; ++k)
+                update(k);
+        }
         std::erase_if(mActive, [this](std::uint32_t c) { return mCells[c].live == 0; });
     }
 
