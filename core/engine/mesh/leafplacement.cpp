@@ -65,65 +65,86 @@ glm::quat quatOfFrame(const glm::mat3& m) {
 }
 
 #if defined(__SSE2__)
-// Eight floats as two SSE2 registers, each operation made on both in turn: two blocks of four
-// leaves whose chains of square roots and divisions interleave in the instruction stream (one
-// block's chain was too long for the processor to overlap the next block's). Each lane's
-// operations are the scalar ones in order.
+// Sixteen floats as four SSE2 registers, each operation made on all four in turn: blocks of four
+// leaves whose chains of square roots and divisions interleave in the instruction stream. A
+// block's chain (three square roots and divisions, the quaternion's pick through memory, its
+// normalisation: roughly 250 cycles by the latencies) is too long for the processor to overlap the
+// next iteration's, so the work was bound by the chain's latency (the oak: ~8 ns a leaf with two
+// registers, ~6.5 with four; eight registers spill: slower). Each lane's operations are the scalar
+// ones in order.
 struct Pack {
-    static constexpr int kLanes = 8;
-    __m128 a, b;
-    static Pack all(float v) { return {_mm_set1_ps(v), _mm_set1_ps(v)}; }
-    static Pack load(const float* f) { return {_mm_loadu_ps(f), _mm_loadu_ps(f + 4)}; }
+    static constexpr int kRegs = 4;
+    static constexpr int kLanes = 4 * kRegs;
+    __m128 r[kRegs];
+    static Pack all(float v) {
+        Pack p;
+        for (__m128& x : p.r)
+            x = _mm_set1_ps(v);
+        return p;
+    }
+    static Pack load(const float* f) {
+        Pack p;
+        for (int i = 0; i < kRegs; ++i)
+            p.r[i] = _mm_loadu_ps(f + 4 * i);
+        return p;
+    }
     void store(float* f) const {
-        _mm_store_ps(f, a);
-        _mm_store_ps(f + 4, b);
+        for (int i = 0; i < kRegs; ++i)
+            _mm_store_ps(f + 4 * i, r[i]);
+    }
+    template <class Op> static Pack map(Pack x, Pack y, Op op) {
+        Pack p;
+        for (int i = 0; i < kRegs; ++i)
+            p.r[i] = op(x.r[i], y.r[i]);
+        return p;
     }
 };
 inline Pack operator+(Pack x, Pack y) {
-    return {_mm_add_ps(x.a, y.a), _mm_add_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_add_ps(a, b); });
 }
 inline Pack operator-(Pack x, Pack y) {
-    return {_mm_sub_ps(x.a, y.a), _mm_sub_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_sub_ps(a, b); });
 }
 inline Pack operator*(Pack x, Pack y) {
-    return {_mm_mul_ps(x.a, y.a), _mm_mul_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_mul_ps(a, b); });
 }
 inline Pack operator/(Pack x, Pack y) {
-    return {_mm_div_ps(x.a, y.a), _mm_div_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_div_ps(a, b); });
 }
 inline Pack operator-(Pack x) { // the sign bit flipped, as glm's unary minus on floats
-    const __m128 sign = _mm_set1_ps(-0.0f);
-    return {_mm_xor_ps(x.a, sign), _mm_xor_ps(x.b, sign)};
+    return Pack::map(x, x, [](__m128 a, __m128) { return _mm_xor_ps(a, _mm_set1_ps(-0.0f)); });
 }
 inline Pack sqrt(Pack x) {
-    return {_mm_sqrt_ps(x.a), _mm_sqrt_ps(x.b)};
+    return Pack::map(x, x, [](__m128 a, __m128) { return _mm_sqrt_ps(a); });
 }
 inline unsigned lessMask(Pack x, Pack y) {
-    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(x.a, y.a)) |
-                                 _mm_movemask_ps(_mm_cmplt_ps(x.b, y.b)) << 4);
+    unsigned m = 0;
+    for (int i = 0; i < Pack::kRegs; ++i)
+        m |= static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(x.r[i], y.r[i]))) << (4 * i);
+    return m;
 }
 inline unsigned lessEqualMask(Pack x, Pack y) {
-    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(x.a, y.a)) |
-                                 _mm_movemask_ps(_mm_cmple_ps(x.b, y.b)) << 4);
+    unsigned m = 0;
+    for (int i = 0; i < Pack::kRegs; ++i)
+        m |= static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(x.r[i], y.r[i]))) << (4 * i);
+    return m;
 }
 struct PackIndex {
-    __m128i a = _mm_setzero_si128(), b = _mm_setzero_si128();
+    __m128i r[Pack::kRegs] = {};
     void store(std::int32_t* i) const {
-        _mm_store_si128(reinterpret_cast<__m128i*>(i), a);
-        _mm_store_si128(reinterpret_cast<__m128i*>(i + 4), b);
+        for (int k = 0; k < Pack::kRegs; ++k)
+            _mm_store_si128(reinterpret_cast<__m128i*>(i + 4 * k), r[k]);
     }
 };
 // quatOfFrame's running choice: where f is larger than big, big becomes f and index i.
 inline void take(Pack f, int i, Pack& big, PackIndex& index) {
     const __m128i ii = _mm_set1_epi32(i);
-    auto one = [&](__m128 fv, __m128& bg, __m128i& ix) {
-        const __m128 more = _mm_cmpgt_ps(fv, bg);
-        bg = _mm_or_ps(_mm_and_ps(more, fv), _mm_andnot_ps(more, bg));
+    for (int k = 0; k < Pack::kRegs; ++k) {
+        const __m128 more = _mm_cmpgt_ps(f.r[k], big.r[k]);
+        big.r[k] = _mm_or_ps(_mm_and_ps(more, f.r[k]), _mm_andnot_ps(more, big.r[k]));
         const __m128i mi = _mm_castps_si128(more);
-        ix = _mm_or_si128(_mm_and_si128(mi, ii), _mm_andnot_si128(mi, ix));
-    };
-    one(f.a, big.a, index.a);
-    one(f.b, big.b, index.b);
+        index.r[k] = _mm_or_si128(_mm_and_si128(mi, ii), _mm_andnot_si128(mi, index.r[k]));
+    }
 }
 #endif
 
