@@ -131,9 +131,22 @@ inline unsigned lessEqualMask(Pack x, Pack y) {
 }
 struct PackIndex {
     __m128i r[Pack::kRegs] = {};
-    void store(std::int32_t* i) const {
+};
+// Each lane's a_i for its index i (0..3) in a PackIndex, by masks: the value's bits unchanged.
+struct PackPick {
+    __m128 is[4][Pack::kRegs];
+    explicit PackPick(const PackIndex& index) {
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < Pack::kRegs; ++k)
+                is[i][k] = _mm_castsi128_ps(_mm_cmpeq_epi32(index.r[k], _mm_set1_epi32(i)));
+    }
+    Pack operator()(const Pack& a0, const Pack& a1, const Pack& a2, const Pack& a3) const {
+        Pack p;
         for (int k = 0; k < Pack::kRegs; ++k)
-            _mm_store_si128(reinterpret_cast<__m128i*>(i + 4 * k), r[k]);
+            p.r[k] =
+                _mm_or_ps(_mm_or_ps(_mm_and_ps(is[0][k], a0.r[k]), _mm_and_ps(is[1][k], a1.r[k])),
+                          _mm_or_ps(_mm_and_ps(is[2][k], a2.r[k]), _mm_and_ps(is[3][k], a3.r[k])));
+        return p;
     }
 };
 // quatOfFrame's running choice: where f is larger than big, big becomes f and index i.
@@ -255,24 +268,15 @@ struct Placer {
             take(fz, 3, big, index);
             const P bv = sqrt(big + one) * P::all(0.5f);
             const P mult = P::all(0.25f) / bv;
-            alignas(16) float v[7][Pack::kLanes];
-            alignas(16) std::int32_t which[Pack::kLanes];
-            bv.store(v[0]);
-            ((m12 - m21) * mult).store(v[1]);
-            ((m20 - m02) * mult).store(v[2]);
-            ((m01 - m10) * mult).store(v[3]);
-            ((m01 + m10) * mult).store(v[4]);
-            ((m20 + m02) * mult).store(v[5]);
-            ((m12 + m21) * mult).store(v[6]);
-            index.store(which);
-            alignas(16) float q[4][Pack::kLanes]; // w, x, y, z by lane
-            for (int lane = 0; lane < Pack::kLanes; ++lane) {
-                const int* pick = kFramePick[which[lane]];
-                for (int c = 0; c < 4; ++c)
-                    q[c][lane] = v[pick[c]][lane];
-            }
+            const P v1 = (m12 - m21) * mult, v2 = (m20 - m02) * mult, v3 = (m01 - m10) * mult;
+            const P v4 = (m01 + m10) * mult, v5 = (m20 + m02) * mult, v6 = (m12 + m21) * mult;
+            // w, x, y, z: each lane's kFramePick[index] of {bv, v1, ..., v6}, chosen by masks
+            // (the same bits; through memory, a store and reload a lane, the pick was part of
+            // the chain the iteration waits on).
+            const PackPick pick(index);
+            const P qw = pick(bv, v1, v2, v3), qx = pick(v1, bv, v4, v5);
+            const P qy = pick(v2, v4, bv, v6), qz = pick(v3, v5, v6, bv);
             // glm::normalize(quat): (w w + x x) + (y y + z z), one over its root.
-            const P qw = P::load(q[0]), qx = P::load(q[1]), qy = P::load(q[2]), qz = P::load(q[3]);
             const P len = sqrt((qw * qw + qx * qx) + (qy * qy + qz * qz));
             const unsigned flat = lessEqualMask(len, zero);
             const P over = one / len;
