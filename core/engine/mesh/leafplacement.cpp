@@ -361,6 +361,17 @@ struct Placer {
         return cached;
     }
 
+    /// The angles of positions k .. k + count - 1 where they are one a position (spiral) and
+    /// lie in a row of the table (filled as far as needed); null otherwise (angles() then).
+    const glm::vec2* spiralRun(std::uint64_t k, std::uint64_t count) {
+        if (p.phyllotaxis != Phyllotaxis::Spiral || count == 0) return nullptr;
+        const std::uint64_t j = k % 100000;
+        if (j + count > kSpiralTable || j + count > 100000) return nullptr;
+        for (std::uint64_t q = spiral.size(); q < j + count; ++q)
+            spiral.push_back(trig(137.5 * kDeg * static_cast<double>(q)));
+        return spiral.data() + j;
+    }
+
     static glm::vec2 trig(double ang) {
         return {static_cast<float>(std::cos(ang)), static_cast<float>(std::sin(ang))};
     }
@@ -458,14 +469,27 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
         std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
             const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
-            for (std::uint64_t c = 0; c < count; ++c, ++k) {
-                const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
-                const glm::vec3 axis = a0 + f * (a1 - a0);
-                const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
-                for (const glm::vec2& cs : placer.angles(k)) {
-                    const glm::vec3 radial = cs.x * e1 + cs.y * e2;
+            // The spiral's one angle a position, from its table without a call a leaf.
+            if (const glm::vec2* run = placer.spiralRun(k, count); run != nullptr) {
+                for (std::uint64_t c = 0; c < count; ++c) {
+                    const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
+                    const glm::vec3 axis = a0 + f * (a1 - a0);
+                    const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
+                    const glm::vec3 radial = run[c].x * e1 + run[c].y * e2;
                     placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
                                 static_cast<std::int32_t>(i));
+                }
+                k += count;
+            } else {
+                for (std::uint64_t c = 0; c < count; ++c, ++k) {
+                    const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
+                    const glm::vec3 axis = a0 + f * (a1 - a0);
+                    const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
+                    for (const glm::vec2& cs : placer.angles(k)) {
+                        const glm::vec3 radial = cs.x * e1 + cs.y * e2;
+                        placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
+                                    static_cast<std::int32_t>(i));
+                    }
                 }
             }
         }
