@@ -1,5 +1,6 @@
 #include "engine/mesh/leafplacement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -204,6 +205,29 @@ struct Placer {
         }
         in[6 * stride] = forward;
         ++count;
+    }
+
+    // leaf() without the tangent and forward weight, which fill() writes for a run of leaves
+    // after (a segment's run shares them; seven values a leaf kept the loop's values on the
+    // stack).
+    void leafAround(const glm::vec3& base, const glm::vec3& radial, Rng& rng, std::int32_t node) {
+        skel::Leaf leaf;
+        leaf.position = base;
+        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
+        leaf.size = static_cast<float>(p.size * (1.0 + v));
+        leaf.node = node;
+        out.push_back(leaf);
+        float* const in = inputs.get() + count;
+        for (int a = 0; a < 3; ++a)
+            in[(3 + a) * stride] = radial[a];
+        ++count;
+    }
+    /// The tangent \p t and forward weight of the leaves from leaf() call \p from to the last.
+    void fill(std::size_t from, const glm::vec3& t, float forward) {
+        float* const in = inputs.get();
+        for (int a = 0; a < 3; ++a)
+            std::fill(in + a * stride + from, in + a * stride + count, t[a]);
+        std::fill(in + 6 * stride + from, in + 6 * stride + count, forward);
     }
 
     // The orientations of the leaves from out[first] on (leaf() calls, in order): frame()'s
@@ -471,14 +495,15 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
             const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
             // The spiral's one angle a position, from its table without a call a leaf.
             if (const glm::vec2* run = placer.spiralRun(k, count); run != nullptr) {
+                const std::size_t from = placer.count;
                 for (std::uint64_t c = 0; c < count; ++c) {
                     const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
                     const glm::vec3 axis = a0 + f * (a1 - a0);
                     const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
                     const glm::vec3 radial = run[c].x * e1 + run[c].y * e2;
-                    placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
-                                static_cast<std::int32_t>(i));
+                    placer.leafAround(axis + r * radial, radial, rng, static_cast<std::int32_t>(i));
                 }
+                placer.fill(from, t, 0.0f);
                 k += count;
             } else {
                 for (std::uint64_t c = 0; c < count; ++c, ++k) {
