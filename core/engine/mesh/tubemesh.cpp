@@ -152,6 +152,12 @@ Layout chainLayout(std::size_t rings, bool lateral, bool caps, int res, bool rib
     return l;
 }
 
+/// A ring's place and frame (meshChain's first loop; its second writes the rings).
+struct RingFrame {
+    glm::vec3 p, t, n, b, tn;
+    float r, ds, inv, v;
+};
+
 // Writes one run of chains into a scratch block: vertex v lands at v - base (indices keep
 // their absolute values). Raw pointers, so the compiler does not reload vector internals.
 struct Writer {
@@ -166,6 +172,7 @@ struct Writer {
     std::size_t indexBase;
     std::size_t v;
     std::size_t i;
+    std::vector<RingFrame>* frames = nullptr; ///< meshChain's rings, room reused
     std::uint16_t order = 0;
     float invRMax = 0.0f;
     float flex = 0.0f;
@@ -243,6 +250,7 @@ struct Scratch {
     std::vector<float> flexes;
     std::vector<std::uint32_t> nodeIds;
     std::vector<std::uint32_t> idx;
+    std::vector<RingFrame> frames;
 
     Writer writer(std::size_t vBegin, std::size_t vCount, std::size_t iBegin, std::size_t iCount,
                   bool wind, bool ids) {
@@ -267,7 +275,8 @@ struct Scratch {
                       vBegin,
                       iBegin,
                       vBegin,
-                      iBegin};
+                      iBegin,
+                      &frames};
     }
     void appendTo(Mesh& m, std::size_t vCount, std::size_t iCount, bool wind, bool ids) const {
         const auto vn = static_cast<std::ptrdiff_t>(vCount);
@@ -334,7 +343,7 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
 
     glm::vec3 tPrev(0.0f), n(0.0f), pPrev(0.0f);
     glm::vec3 dPrev = dir(0);
-    float v = 0.0f;
+    float vAlong = 0.0f; // the bark texture's v at each ring
     const std::size_t ringVerts = static_cast<std::size_t>(res) + 1;
     const std::size_t firstRing = caps && !lateral ? w.v + ringVerts + 1 : w.v;
     std::size_t ringStart = firstRing;
@@ -342,9 +351,12 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
     std::vector<float> rhoRows; // with relief: ρ of each ring vertex (rings × sides+1)
 
+    // The rings' frames first, in a loop of their own: each ring's normal is transported from
+    // the last one's (a chain of a square root and divisions a ring), and with the rings'
+    // vertices between them the processor could not run ahead to the next chain's.
+    std::vector<RingFrame>& frames = *w.frames;
+    if (frames.size() < m) frames.resize(m);
     for (std::size_t k = 0; k < m; ++k) {
-        // A lateral's base ring sits at its parent's node but belongs to the lateral.
-        w.node = id(k == 0 && lateral ? 1 : k);
         const glm::vec3 p = P(k);
         const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
         const glm::vec3 t = k == 0       ? dNext
@@ -370,17 +382,29 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             nL -= glm::dot(nL, t) * t;
             n = normalizeOrPerpendicular(nL, t);
             const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
-            v += uTiles * std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
+            vAlong += uTiles * std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
         }
         const glm::vec3 b = glm::cross(t, n);
         const float r = R(k);
-        w.flex = std::max(1.0f - r * w.invRMax, 0.0f); // a flared root is wider than rMax
         // Taper slope dr/ds tilts the normals towards the thinner end.
         const std::size_t ka = k > 0 ? k - 1 : k, kb = k + 1 < m ? k + 1 : k;
         const float ds = glm::length(P(kb) - P(ka));
         const float slope = ds > 1e-12f ? (R(kb) - R(ka)) / ds : 0.0f;
         const float inv = 1.0f / std::sqrt(1.0f + slope * slope);
         const glm::vec3 tn = -slope * inv * t;
+        frames[k] = {p, t, n, b, tn, r, ds, inv, vAlong};
+        tPrev = t;
+        pPrev = p;
+        dPrev = dNext;
+    }
+    for (std::size_t k = 0; k < m; ++k) {
+        const RingFrame& f = frames[k];
+        const glm::vec3 p = f.p, t = f.t, n = f.n, b = f.b, tn = f.tn;
+        const float r = f.r, ds = f.ds, inv = f.inv, v = f.v;
+        const std::size_t ka = k > 0 ? k - 1 : k, kb = k + 1 < m ? k + 1 : k;
+        // A lateral's base ring sits at its parent's node but belongs to the lateral.
+        w.node = id(k == 0 && lateral ? 1 : k);
+        w.flex = std::max(1.0f - r * w.invRMax, 0.0f); // a flared root is wider than rMax
         const float amp = lobeAmp != nullptr ? lobeAmp[k] : 0.0f;
         if (relief != nullptr) {
             // ρ(k, j) = R(k) (1 + lobe + relief): the normal of the displaced surface,
@@ -454,9 +478,6 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             t0 = t;
         }
         ringStart += ringVerts;
-        tPrev = t;
-        pPrev = p;
-        dPrev = dNext;
         if (k + 1 == m && caps) cap(w, p, n, b, t, r, cs, false);
     }
     if (caps && !lateral) {
