@@ -187,41 +187,35 @@ struct Placer {
     }
 
     // A leaf at \p base on a branch with tangent \p t, radial direction \p radial: its
-    // position, size and node now (the size draws from rng, in leaf order), its orientation
-    // by orientAll.
+    // position, size (drawn from rng, in leaf order) and node now, its orientation and the
+    // leaf itself by orientAll. Written through raw pointers into room made once: a push_back
+    // here (its growth a call) kept the leaf loop's values on the stack.
     void leaf(const glm::vec3& base, const glm::vec3& t, const glm::vec3& radial, float forward,
               Rng& rng, std::int32_t node) {
-        skel::Leaf leaf;
-        leaf.position = base;
-        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
-        leaf.size = static_cast<float>(p.size * (1.0 + v));
-        leaf.node = node;
-        out.push_back(leaf);
-        // Written through raw pointers into room made once (seven push_backs a leaf were a
-        // capacity test and an end pointer's load and store each).
         float* const in = inputs.get() + count;
-        for (int a = 0; a < 3; ++a) {
+        for (int a = 0; a < 3; ++a)
             in[a * stride] = t[a];
-            in[(3 + a) * stride] = radial[a];
-        }
         in[6 * stride] = forward;
-        ++count;
+        leafAround(base, radial, rng, node);
     }
 
     // leaf() without the tangent and forward weight, which fill() writes for a run of leaves
     // after (a segment's run shares them; seven values a leaf kept the loop's values on the
     // stack).
     void leafAround(const glm::vec3& base, const glm::vec3& radial, Rng& rng, std::int32_t node) {
-        skel::Leaf leaf;
-        leaf.position = base;
-        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
-        leaf.size = static_cast<float>(p.size * (1.0 + v));
-        leaf.node = node;
-        out.push_back(leaf);
         float* const in = inputs.get() + count;
-        for (int a = 0; a < 3; ++a)
+        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
+        for (int a = 0; a < 3; ++a) {
             in[(3 + a) * stride] = radial[a];
+            in[(7 + a) * stride] = base[a];
+        }
+        in[10 * stride] = static_cast<float>(p.size * (1.0 + v));
+        nodes[count] = node;
         ++count;
+    }
+    /// Leaf k (leaf() call k) with its orientation \p q, appended to out.
+    void emit(std::size_t k, const glm::quat& q) {
+        out.push_back({{input(7)[k], input(8)[k], input(9)[k]}, q, input(10)[k], nodes[k]});
     }
     /// The tangent \p t and forward weight of the leaves from leaf() call \p from to the last.
     void fill(std::size_t from, const glm::vec3& t, float forward) {
@@ -231,12 +225,12 @@ struct Placer {
         std::fill(in + 6 * stride + from, in + 6 * stride + count, forward);
     }
 
-    // The orientations of the leaves from out[first] on (leaf() calls, in order): frame()'s
-    // arithmetic four leaves at a time on SSE2 (each lane's operations are the scalar ones, in
-    // the same order, and packed square roots and divisions round as the scalar ones do: the
-    // same quaternions, bit for bit). One leaf's frame is four square roots and divisions in a
+    // The orientations of the leaves (leaf() calls, in order), each leaf then appended to out:
+    // frame()'s arithmetic four leaves at a time on SSE2 (each lane's operations are the scalar
+    // ones, in the same order, and packed square roots and divisions round as the scalar ones do:
+    // the same quaternions, bit for bit). One leaf's frame is four square roots and divisions in a
     // chain; perf record of the English oak: Placer::leaf 10 % of the tree.
-    void orientAll(std::size_t first) {
+    void orientAll() {
         const std::size_t n = count;
         std::size_t k = 0;
         if (leafFramesAvx()) {
@@ -255,12 +249,10 @@ struct Placer {
                                             input(4) + k, input(5) + k, input(6) + k};
                 const unsigned scalar = leafFramesAvx16(w, in, q);
                 for (int lane = 0; lane < 16; ++lane) {
-                    skel::Leaf& leaf = out[first + k + static_cast<std::size_t>(lane)];
-                    if (scalar >> lane & 1)
-                        leaf.orientation = scalarFrame(k + static_cast<std::size_t>(lane));
-                    else
-                        leaf.orientation =
-                            glm::quat(q[0][lane], q[1][lane], q[2][lane], q[3][lane]);
+                    const std::size_t kk = k + static_cast<std::size_t>(lane);
+                    emit(kk, scalar >> lane & 1
+                                 ? scalarFrame(kk)
+                                 : glm::quat(q[0][lane], q[1][lane], q[2][lane], q[3][lane]));
                 }
             }
         }
@@ -336,16 +328,15 @@ struct Placer {
             (qy * over).store(r[2]);
             (qz * over).store(r[3]);
             for (int lane = 0; lane < Pack::kLanes; ++lane) {
-                skel::Leaf& leaf = out[first + k + static_cast<std::size_t>(lane)];
-                if ((odd | flat) >> lane & 1)
-                    leaf.orientation = scalarFrame(k + static_cast<std::size_t>(lane));
-                else
-                    leaf.orientation = glm::quat(r[0][lane], r[1][lane], r[2][lane], r[3][lane]);
+                const std::size_t kk = k + static_cast<std::size_t>(lane);
+                emit(kk, (odd | flat) >> lane & 1
+                             ? scalarFrame(kk)
+                             : glm::quat(r[0][lane], r[1][lane], r[2][lane], r[3][lane]));
             }
         }
 #endif
         for (; k < n; ++k)
-            out[first + k].orientation = scalarFrame(k);
+            emit(k, scalarFrame(k));
         count = 0;
     }
 
@@ -357,16 +348,18 @@ struct Placer {
     /// Room for \p leaves leaf() calls.
     void reserve(std::size_t leaves) {
         stride = leaves;
-        inputs = std::make_unique_for_overwrite<float[]>(7 * leaves);
+        inputs = std::make_unique_for_overwrite<float[]>(11 * leaves);
+        nodes = std::make_unique_for_overwrite<std::int32_t[]>(leaves);
         count = 0;
     }
     const float* input(int a) const {
         return inputs.get() + static_cast<std::size_t>(a) * stride;
     }
 
-    /// leaf()'s tangents (x, y, z), radial directions (x, y, z) and forward weights: seven
-    /// arrays of stride floats, count leaves in each.
+    /// leaf()'s tangents (x, y, z), radial directions (x, y, z), forward weights, positions
+    /// (x, y, z) and sizes: eleven arrays of stride floats, count leaves in each; and nodes.
     std::unique_ptr<float[]> inputs{};
+    std::unique_ptr<std::int32_t[]> nodes{};
     std::size_t stride = 0;
     std::size_t count = 0;
 
@@ -554,7 +547,7 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
             }
         }
     }
-    placer.orientAll(first);
+    placer.orientAll();
     return out;
 }
 
