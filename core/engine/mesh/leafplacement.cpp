@@ -1,5 +1,6 @@
 #include "engine/mesh/leafplacement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -11,6 +12,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "engine/mesh/leafframesavx.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 
@@ -65,65 +67,99 @@ glm::quat quatOfFrame(const glm::mat3& m) {
 }
 
 #if defined(__SSE2__)
-// Eight floats as two SSE2 registers, each operation made on both in turn: two blocks of four
-// leaves whose chains of square roots and divisions interleave in the instruction stream (one
-// block's chain was too long for the processor to overlap the next block's). Each lane's
-// operations are the scalar ones in order.
+// Sixteen floats as four SSE2 registers, each operation made on all four in turn: blocks of four
+// leaves whose chains of square roots and divisions interleave in the instruction stream. A
+// block's chain (three square roots and divisions, the quaternion's pick through memory, its
+// normalisation: roughly 250 cycles by the latencies) is too long for the processor to overlap the
+// next iteration's, so the work was bound by the chain's latency (the oak: ~8 ns a leaf with two
+// registers, ~6.5 with four; eight registers spill: slower). Each lane's operations are the scalar
+// ones in order.
 struct Pack {
-    static constexpr int kLanes = 8;
-    __m128 a, b;
-    static Pack all(float v) { return {_mm_set1_ps(v), _mm_set1_ps(v)}; }
-    static Pack load(const float* f) { return {_mm_loadu_ps(f), _mm_loadu_ps(f + 4)}; }
+    static constexpr int kRegs = 4;
+    static constexpr int kLanes = 4 * kRegs;
+    __m128 r[kRegs];
+    static Pack all(float v) {
+        Pack p;
+        for (__m128& x : p.r)
+            x = _mm_set1_ps(v);
+        return p;
+    }
+    static Pack load(const float* f) {
+        Pack p;
+        for (int i = 0; i < kRegs; ++i)
+            p.r[i] = _mm_loadu_ps(f + 4 * i);
+        return p;
+    }
     void store(float* f) const {
-        _mm_store_ps(f, a);
-        _mm_store_ps(f + 4, b);
+        for (int i = 0; i < kRegs; ++i)
+            _mm_store_ps(f + 4 * i, r[i]);
+    }
+    template <class Op> static Pack map(Pack x, Pack y, Op op) {
+        Pack p;
+        for (int i = 0; i < kRegs; ++i)
+            p.r[i] = op(x.r[i], y.r[i]);
+        return p;
     }
 };
 inline Pack operator+(Pack x, Pack y) {
-    return {_mm_add_ps(x.a, y.a), _mm_add_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_add_ps(a, b); });
 }
 inline Pack operator-(Pack x, Pack y) {
-    return {_mm_sub_ps(x.a, y.a), _mm_sub_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_sub_ps(a, b); });
 }
 inline Pack operator*(Pack x, Pack y) {
-    return {_mm_mul_ps(x.a, y.a), _mm_mul_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_mul_ps(a, b); });
 }
 inline Pack operator/(Pack x, Pack y) {
-    return {_mm_div_ps(x.a, y.a), _mm_div_ps(x.b, y.b)};
+    return Pack::map(x, y, [](__m128 a, __m128 b) { return _mm_div_ps(a, b); });
 }
 inline Pack operator-(Pack x) { // the sign bit flipped, as glm's unary minus on floats
-    const __m128 sign = _mm_set1_ps(-0.0f);
-    return {_mm_xor_ps(x.a, sign), _mm_xor_ps(x.b, sign)};
+    return Pack::map(x, x, [](__m128 a, __m128) { return _mm_xor_ps(a, _mm_set1_ps(-0.0f)); });
 }
 inline Pack sqrt(Pack x) {
-    return {_mm_sqrt_ps(x.a), _mm_sqrt_ps(x.b)};
+    return Pack::map(x, x, [](__m128 a, __m128) { return _mm_sqrt_ps(a); });
 }
 inline unsigned lessMask(Pack x, Pack y) {
-    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(x.a, y.a)) |
-                                 _mm_movemask_ps(_mm_cmplt_ps(x.b, y.b)) << 4);
+    unsigned m = 0;
+    for (int i = 0; i < Pack::kRegs; ++i)
+        m |= static_cast<unsigned>(_mm_movemask_ps(_mm_cmplt_ps(x.r[i], y.r[i]))) << (4 * i);
+    return m;
 }
 inline unsigned lessEqualMask(Pack x, Pack y) {
-    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(x.a, y.a)) |
-                                 _mm_movemask_ps(_mm_cmple_ps(x.b, y.b)) << 4);
+    unsigned m = 0;
+    for (int i = 0; i < Pack::kRegs; ++i)
+        m |= static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(x.r[i], y.r[i]))) << (4 * i);
+    return m;
 }
 struct PackIndex {
-    __m128i a = _mm_setzero_si128(), b = _mm_setzero_si128();
-    void store(std::int32_t* i) const {
-        _mm_store_si128(reinterpret_cast<__m128i*>(i), a);
-        _mm_store_si128(reinterpret_cast<__m128i*>(i + 4), b);
+    __m128i r[Pack::kRegs] = {};
+};
+// Each lane's a_i for its index i (0..3) in a PackIndex, by masks: the value's bits unchanged.
+struct PackPick {
+    __m128 is[4][Pack::kRegs];
+    explicit PackPick(const PackIndex& index) {
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < Pack::kRegs; ++k)
+                is[i][k] = _mm_castsi128_ps(_mm_cmpeq_epi32(index.r[k], _mm_set1_epi32(i)));
+    }
+    Pack operator()(const Pack& a0, const Pack& a1, const Pack& a2, const Pack& a3) const {
+        Pack p;
+        for (int k = 0; k < Pack::kRegs; ++k)
+            p.r[k] =
+                _mm_or_ps(_mm_or_ps(_mm_and_ps(is[0][k], a0.r[k]), _mm_and_ps(is[1][k], a1.r[k])),
+                          _mm_or_ps(_mm_and_ps(is[2][k], a2.r[k]), _mm_and_ps(is[3][k], a3.r[k])));
+        return p;
     }
 };
 // quatOfFrame's running choice: where f is larger than big, big becomes f and index i.
 inline void take(Pack f, int i, Pack& big, PackIndex& index) {
     const __m128i ii = _mm_set1_epi32(i);
-    auto one = [&](__m128 fv, __m128& bg, __m128i& ix) {
-        const __m128 more = _mm_cmpgt_ps(fv, bg);
-        bg = _mm_or_ps(_mm_and_ps(more, fv), _mm_andnot_ps(more, bg));
+    for (int k = 0; k < Pack::kRegs; ++k) {
+        const __m128 more = _mm_cmpgt_ps(f.r[k], big.r[k]);
+        big.r[k] = _mm_or_ps(_mm_and_ps(more, f.r[k]), _mm_andnot_ps(more, big.r[k]));
         const __m128i mi = _mm_castps_si128(more);
-        ix = _mm_or_si128(_mm_and_si128(mi, ii), _mm_andnot_si128(mi, ix));
-    };
-    one(f.a, big.a, index.a);
-    one(f.b, big.b, index.b);
+        index.r[k] = _mm_or_si128(_mm_and_si128(mi, ii), _mm_andnot_si128(mi, index.r[k]));
+    }
 }
 #endif
 
@@ -151,35 +187,75 @@ struct Placer {
     }
 
     // A leaf at \p base on a branch with tangent \p t, radial direction \p radial: its
-    // position, size and node now (the size draws from rng, in leaf order), its orientation
-    // by orientAll.
+    // position, size (drawn from rng, in leaf order) and node now, its orientation and the
+    // leaf itself by orientAll. Written through raw pointers into room made once: a push_back
+    // here (its growth a call) kept the leaf loop's values on the stack.
     void leaf(const glm::vec3& base, const glm::vec3& t, const glm::vec3& radial, float forward,
               Rng& rng, std::int32_t node) {
-        skel::Leaf leaf;
-        leaf.position = base;
-        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
-        leaf.size = static_cast<float>(p.size * (1.0 + v));
-        leaf.node = node;
-        out.push_back(leaf);
-        // Written through raw pointers into room made once (seven push_backs a leaf were a
-        // capacity test and an end pointer's load and store each).
         float* const in = inputs.get() + count;
-        for (int a = 0; a < 3; ++a) {
+        for (int a = 0; a < 3; ++a)
             in[a * stride] = t[a];
-            in[(3 + a) * stride] = radial[a];
-        }
         in[6 * stride] = forward;
-        ++count;
+        leafAround(base, radial, rng, node);
     }
 
-    // The orientations of the leaves from out[first] on (leaf() calls, in order): frame()'s
-    // arithmetic four leaves at a time on SSE2 (each lane's operations are the scalar ones, in
-    // the same order, and packed square roots and divisions round as the scalar ones do: the
-    // same quaternions, bit for bit). One leaf's frame is four square roots and divisions in a
+    // leaf() without the tangent and forward weight, which fill() writes for a run of leaves
+    // after (a segment's run shares them; seven values a leaf kept the loop's values on the
+    // stack).
+    void leafAround(const glm::vec3& base, const glm::vec3& radial, Rng& rng, std::int32_t node) {
+        float* const in = inputs.get() + count;
+        const double v = p.sizeVariation * rng.uniform(-1.0, 1.0);
+        for (int a = 0; a < 3; ++a) {
+            in[(3 + a) * stride] = radial[a];
+            in[(7 + a) * stride] = base[a];
+        }
+        in[10 * stride] = static_cast<float>(p.size * (1.0 + v));
+        nodes[count] = node;
+        ++count;
+    }
+    /// Leaf k (leaf() call k) with its orientation \p q, appended to out.
+    void emit(std::size_t k, const glm::quat& q) {
+        out.push_back({{input(7)[k], input(8)[k], input(9)[k]}, q, input(10)[k], nodes[k]});
+    }
+    /// The tangent \p t and forward weight of the leaves from leaf() call \p from to the last.
+    void fill(std::size_t from, const glm::vec3& t, float forward) {
+        float* const in = inputs.get();
+        for (int a = 0; a < 3; ++a)
+            std::fill(in + a * stride + from, in + a * stride + count, t[a]);
+        std::fill(in + 6 * stride + from, in + 6 * stride + count, forward);
+    }
+
+    // The orientations of the leaves (leaf() calls, in order), each leaf then appended to out:
+    // frame()'s arithmetic four leaves at a time on SSE2 (each lane's operations are the scalar
+    // ones, in the same order, and packed square roots and divisions round as the scalar ones do:
+    // the same quaternions, bit for bit). One leaf's frame is four square roots and divisions in a
     // chain; perf record of the English oak: Placer::leaf 10 % of the tree.
-    void orientAll(std::size_t first) {
+    void orientAll() {
         const std::size_t n = count;
         std::size_t k = 0;
+        if (leafFramesAvx()) {
+            // The same lanes eight to a register (leafFramesAvx16).
+            const LeafFrameWeights w{sinPetiole,
+                                     cosPetiole,
+                                     static_cast<float>(p.normalWeight),
+                                     static_cast<float>(p.upWeight),
+                                     static_cast<float>(p.lightWeight),
+                                     light.x,
+                                     light.y,
+                                     light.z};
+            alignas(32) float q[4][16];
+            for (; k + 16 <= n; k += 16) {
+                const float* const in[7] = {input(0) + k, input(1) + k, input(2) + k, input(3) + k,
+                                            input(4) + k, input(5) + k, input(6) + k};
+                const unsigned scalar = leafFramesAvx16(w, in, q);
+                for (int lane = 0; lane < 16; ++lane) {
+                    const std::size_t kk = k + static_cast<std::size_t>(lane);
+                    emit(kk, scalar >> lane & 1
+                                 ? scalarFrame(kk)
+                                 : glm::quat(q[0][lane], q[1][lane], q[2][lane], q[3][lane]));
+                }
+            }
+        }
 #if defined(__SSE2__)
         using P = Pack;
         const P sp = P::all(sinPetiole), cp = P::all(cosPetiole);
@@ -234,24 +310,15 @@ struct Placer {
             take(fz, 3, big, index);
             const P bv = sqrt(big + one) * P::all(0.5f);
             const P mult = P::all(0.25f) / bv;
-            alignas(16) float v[7][Pack::kLanes];
-            alignas(16) std::int32_t which[Pack::kLanes];
-            bv.store(v[0]);
-            ((m12 - m21) * mult).store(v[1]);
-            ((m20 - m02) * mult).store(v[2]);
-            ((m01 - m10) * mult).store(v[3]);
-            ((m01 + m10) * mult).store(v[4]);
-            ((m20 + m02) * mult).store(v[5]);
-            ((m12 + m21) * mult).store(v[6]);
-            index.store(which);
-            alignas(16) float q[4][Pack::kLanes]; // w, x, y, z by lane
-            for (int lane = 0; lane < Pack::kLanes; ++lane) {
-                const int* pick = kFramePick[which[lane]];
-                for (int c = 0; c < 4; ++c)
-                    q[c][lane] = v[pick[c]][lane];
-            }
+            const P v1 = (m12 - m21) * mult, v2 = (m20 - m02) * mult, v3 = (m01 - m10) * mult;
+            const P v4 = (m01 + m10) * mult, v5 = (m20 + m02) * mult, v6 = (m12 + m21) * mult;
+            // w, x, y, z: each lane's kFramePick[index] of {bv, v1, ..., v6}, chosen by masks
+            // (the same bits; through memory, a store and reload a lane, the pick was part of
+            // the chain the iteration waits on).
+            const PackPick pick(index);
+            const P qw = pick(bv, v1, v2, v3), qx = pick(v1, bv, v4, v5);
+            const P qy = pick(v2, v4, bv, v6), qz = pick(v3, v5, v6, bv);
             // glm::normalize(quat): (w w + x x) + (y y + z z), one over its root.
-            const P qw = P::load(q[0]), qx = P::load(q[1]), qy = P::load(q[2]), qz = P::load(q[3]);
             const P len = sqrt((qw * qw + qx * qx) + (qy * qy + qz * qz));
             const unsigned flat = lessEqualMask(len, zero);
             const P over = one / len;
@@ -261,16 +328,15 @@ struct Placer {
             (qy * over).store(r[2]);
             (qz * over).store(r[3]);
             for (int lane = 0; lane < Pack::kLanes; ++lane) {
-                skel::Leaf& leaf = out[first + k + static_cast<std::size_t>(lane)];
-                if ((odd | flat) >> lane & 1)
-                    leaf.orientation = scalarFrame(k + static_cast<std::size_t>(lane));
-                else
-                    leaf.orientation = glm::quat(r[0][lane], r[1][lane], r[2][lane], r[3][lane]);
+                const std::size_t kk = k + static_cast<std::size_t>(lane);
+                emit(kk, (odd | flat) >> lane & 1
+                             ? scalarFrame(kk)
+                             : glm::quat(r[0][lane], r[1][lane], r[2][lane], r[3][lane]));
             }
         }
 #endif
         for (; k < n; ++k)
-            out[first + k].orientation = scalarFrame(k);
+            emit(k, scalarFrame(k));
         count = 0;
     }
 
@@ -282,16 +348,18 @@ struct Placer {
     /// Room for \p leaves leaf() calls.
     void reserve(std::size_t leaves) {
         stride = leaves;
-        inputs = std::make_unique_for_overwrite<float[]>(7 * leaves);
+        inputs = std::make_unique_for_overwrite<float[]>(11 * leaves);
+        nodes = std::make_unique_for_overwrite<std::int32_t[]>(leaves);
         count = 0;
     }
     const float* input(int a) const {
         return inputs.get() + static_cast<std::size_t>(a) * stride;
     }
 
-    /// leaf()'s tangents (x, y, z), radial directions (x, y, z) and forward weights: seven
-    /// arrays of stride floats, count leaves in each.
+    /// leaf()'s tangents (x, y, z), radial directions (x, y, z), forward weights, positions
+    /// (x, y, z) and sizes: eleven arrays of stride floats, count leaves in each; and nodes.
     std::unique_ptr<float[]> inputs{};
+    std::unique_ptr<std::int32_t[]> nodes{};
     std::size_t stride = 0;
     std::size_t count = 0;
 
@@ -334,6 +402,17 @@ struct Placer {
             }
         }
         return cached;
+    }
+
+    /// The angles of positions k .. k + count - 1 where they are one a position (spiral) and
+    /// lie in a row of the table (filled as far as needed); null otherwise (angles() then).
+    const glm::vec2* spiralRun(std::uint64_t k, std::uint64_t count) {
+        if (p.phyllotaxis != Phyllotaxis::Spiral || count == 0) return nullptr;
+        const std::uint64_t j = k % 100000;
+        if (j + count > kSpiralTable || j + count > 100000) return nullptr;
+        for (std::uint64_t q = spiral.size(); q < j + count; ++q)
+            spiral.push_back(trig(137.5 * kDeg * static_cast<double>(q)));
+        return spiral.data() + j;
     }
 
     static glm::vec2 trig(double ang) {
@@ -433,14 +512,28 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
         std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
             const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
-            for (std::uint64_t c = 0; c < count; ++c, ++k) {
-                const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
-                const glm::vec3 axis = a0 + f * (a1 - a0);
-                const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
-                for (const glm::vec2& cs : placer.angles(k)) {
-                    const glm::vec3 radial = cs.x * e1 + cs.y * e2;
-                    placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
-                                static_cast<std::int32_t>(i));
+            // The spiral's one angle a position, from its table without a call a leaf.
+            if (const glm::vec2* run = placer.spiralRun(k, count); run != nullptr) {
+                const std::size_t from = placer.count;
+                for (std::uint64_t c = 0; c < count; ++c) {
+                    const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
+                    const glm::vec3 axis = a0 + f * (a1 - a0);
+                    const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
+                    const glm::vec3 radial = run[c].x * e1 + run[c].y * e2;
+                    placer.leafAround(axis + r * radial, radial, rng, static_cast<std::int32_t>(i));
+                }
+                placer.fill(from, t, 0.0f);
+                k += count;
+            } else {
+                for (std::uint64_t c = 0; c < count; ++c, ++k) {
+                    const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
+                    const glm::vec3 axis = a0 + f * (a1 - a0);
+                    const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
+                    for (const glm::vec2& cs : placer.angles(k)) {
+                        const glm::vec3 radial = cs.x * e1 + cs.y * e2;
+                        placer.leaf(axis + r * radial, t, radial, 0.0f, rng,
+                                    static_cast<std::int32_t>(i));
+                    }
                 }
             }
         }
@@ -454,7 +547,7 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
             }
         }
     }
-    placer.orientAll(first);
+    placer.orientAll();
     return out;
 }
 

@@ -152,6 +152,12 @@ Layout chainLayout(std::size_t rings, bool lateral, bool caps, int res, bool rib
     return l;
 }
 
+/// A ring's place and frame (meshChain's first loop; its second writes the rings).
+struct RingFrame {
+    glm::vec3 p, t, n, b, tn;
+    float r, ds, inv, v;
+};
+
 // Writes one run of chains into a scratch block: vertex v lands at v - base (indices keep
 // their absolute values). Raw pointers, so the compiler does not reload vector internals.
 struct Writer {
@@ -243,6 +249,7 @@ struct Scratch {
     std::vector<float> flexes;
     std::vector<std::uint32_t> nodeIds;
     std::vector<std::uint32_t> idx;
+    std::vector<RingFrame> frames; ///< a run's rings' frames (meshChain's first pass)
 
     Writer writer(std::size_t vBegin, std::size_t vCount, std::size_t iBegin, std::size_t iCount,
                   bool wind, bool ids) {
@@ -309,11 +316,17 @@ float barkTiles(float r0, float width) {
     return std::max(1.0f, std::round(2.0f * std::numbers::pi_v<float> * r0 / width));
 }
 
-void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& radius,
-               const std::int32_t* nodes, std::size_t m, bool lateral, bool caps,
-               const std::vector<glm::vec3>& cs, const std::uint32_t* ids = nullptr,
-               const glm::vec2* lobe = nullptr, const float* lobeAmp = nullptr,
-               const float* relief = nullptr, float uTiles = 1.0f) {
+/// meshChain's two passes: the rings' frames (into \p frames, m of them), then the rings from
+/// them. A run's chains take the first pass each before the second: each ring's normal is
+/// transported from the last one's, a chain of a square root and divisions, and with rings
+/// written between them the processor could not run ahead to the next rings' or chain's.
+enum class ChainPass { Frames, Rings };
+
+void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleton& s,
+               const std::vector<float>& radius, const std::int32_t* nodes, std::size_t m,
+               bool lateral, bool caps, const std::vector<glm::vec3>& cs,
+               const std::uint32_t* ids = nullptr, const glm::vec2* lobe = nullptr,
+               const float* lobeAmp = nullptr, const float* relief = nullptr, float uTiles = 1.0f) {
     auto id = [&](std::size_t k) {
         return ids != nullptr ? ids[k] : static_cast<std::uint32_t>(nodes[k]);
     };
@@ -332,55 +345,71 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
         return safeNormalize(P(k + 1) - P(k), frameHeading, kMinDirectionLength);
     };
 
-    glm::vec3 tPrev(0.0f), n(0.0f), pPrev(0.0f);
-    glm::vec3 dPrev = dir(0);
-    float v = 0.0f;
+    if (pass == ChainPass::Frames) {
+        glm::vec3 tPrev(0.0f), n(0.0f), pPrev(0.0f);
+        glm::vec3 dPrev = dir(0);
+        float vAlong = 0.0f; // the bark texture's v at each ring
+        // The rings' frames first, in a loop of their own: each ring's normal is transported from
+        // the last one's (a chain of a square root and divisions a ring), and with the rings'
+        // vertices between them the processor could not run ahead to the next chain's.
+        for (std::size_t k = 0; k < m; ++k) {
+            const glm::vec3 p = P(k);
+            const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
+            const glm::vec3 t = k == 0 ? dNext
+                                : k + 1 == m
+                                    ? dPrev
+                                    : safeNormalize(dPrev + dNext, dNext, kMinDirectionLength);
+            if (k == 0) {
+                const glm::quat q = s.orientation[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
+                glm::vec3 up = skel::upOf(q);
+                up -= glm::dot(up, t) * t;
+                n = glm::dot(up, up) > 1e-6f ? glm::normalize(up) : anyPerpendicular(t);
+            } else {
+                // Double reflection (Wang et al. 2008): rotation-minimizing frame transport.
+                const glm::vec3 v1 = p - pPrev;
+                const float c1 = glm::dot(v1, v1);
+                glm::vec3 nL = n, tL = tPrev;
+                if (c1 > 1e-20f) {
+                    nL = n - (2.0f / c1) * glm::dot(v1, n) * v1;
+                    tL = tPrev - (2.0f / c1) * glm::dot(v1, tPrev) * v1;
+                }
+                const glm::vec3 v2 = t - tL;
+                const float c2 = glm::dot(v2, v2);
+                if (c2 > 1e-20f) nL -= (2.0f / c2) * glm::dot(v2, nL) * v2;
+                nL -= glm::dot(nL, t) * t;
+                n = normalizeOrPerpendicular(nL, t);
+                const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
+                vAlong += uTiles * std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
+            }
+            const glm::vec3 b = glm::cross(t, n);
+            const float r = R(k);
+            // Taper slope dr/ds tilts the normals towards the thinner end.
+            const std::size_t ka = k > 0 ? k - 1 : k, kb = k + 1 < m ? k + 1 : k;
+            const float ds = glm::length(P(kb) - P(ka));
+            const float slope = ds > 1e-12f ? (R(kb) - R(ka)) / ds : 0.0f;
+            const float inv = 1.0f / std::sqrt(1.0f + slope * slope);
+            const glm::vec3 tn = -slope * inv * t;
+            frames[k] = {p, t, n, b, tn, r, ds, inv, vAlong};
+            tPrev = t;
+            pPrev = p;
+            dPrev = dNext;
+        }
+        return;
+    }
     const std::size_t ringVerts = static_cast<std::size_t>(res) + 1;
     const std::size_t firstRing = caps && !lateral ? w.v + ringVerts + 1 : w.v;
     std::size_t ringStart = firstRing;
     if (caps && !lateral) w.v = firstRing; // the base cap is written after the first frame
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
     std::vector<float> rhoRows; // with relief: ρ of each ring vertex (rings × sides+1)
-
     for (std::size_t k = 0; k < m; ++k) {
+        const RingFrame& f = frames[k];
+        const glm::vec3 p = f.p, t = f.t, n = f.n, b = f.b, tn = f.tn;
+        const float r = f.r, ds = f.ds, inv = f.inv, v = f.v;
+        const std::size_t ka = k > 0 ? k - 1 : k, kb = k + 1 < m ? k + 1 : k;
         // A lateral's base ring sits at its parent's node but belongs to the lateral.
         w.node = id(k == 0 && lateral ? 1 : k);
-        const glm::vec3 p = P(k);
-        const glm::vec3 dNext = k + 1 < m ? dir(k) : dPrev;
-        const glm::vec3 t = k == 0       ? dNext
-                            : k + 1 == m ? dPrev
-                                         : safeNormalize(dPrev + dNext, dNext, kMinDirectionLength);
-        if (k == 0) {
-            const glm::quat q = s.orientation[static_cast<std::size_t>(nodes[lateral ? 1 : 0])];
-            glm::vec3 up = skel::upOf(q);
-            up -= glm::dot(up, t) * t;
-            n = glm::dot(up, up) > 1e-6f ? glm::normalize(up) : anyPerpendicular(t);
-        } else {
-            // Double reflection (Wang et al. 2008): rotation-minimizing frame transport.
-            const glm::vec3 v1 = p - pPrev;
-            const float c1 = glm::dot(v1, v1);
-            glm::vec3 nL = n, tL = tPrev;
-            if (c1 > 1e-20f) {
-                nL = n - (2.0f / c1) * glm::dot(v1, n) * v1;
-                tL = tPrev - (2.0f / c1) * glm::dot(v1, tPrev) * v1;
-            }
-            const glm::vec3 v2 = t - tL;
-            const float c2 = glm::dot(v2, v2);
-            if (c2 > 1e-20f) nL -= (2.0f / c2) * glm::dot(v2, nL) * v2;
-            nL -= glm::dot(nL, t) * t;
-            n = normalizeOrPerpendicular(nL, t);
-            const float rAvg = std::max(0.5f * (R(k - 1) + R(k)), 1e-3f);
-            v += uTiles * std::sqrt(c1) / (2.0f * std::numbers::pi_v<float> * rAvg);
-        }
-        const glm::vec3 b = glm::cross(t, n);
-        const float r = R(k);
         w.flex = std::max(1.0f - r * w.invRMax, 0.0f); // a flared root is wider than rMax
-        // Taper slope dr/ds tilts the normals towards the thinner end.
-        const std::size_t ka = k > 0 ? k - 1 : k, kb = k + 1 < m ? k + 1 : k;
-        const float ds = glm::length(P(kb) - P(ka));
-        const float slope = ds > 1e-12f ? (R(kb) - R(ka)) / ds : 0.0f;
-        const float inv = 1.0f / std::sqrt(1.0f + slope * slope);
-        const glm::vec3 tn = -slope * inv * t;
         const float amp = lobeAmp != nullptr ? lobeAmp[k] : 0.0f;
         if (relief != nullptr) {
             // ρ(k, j) = R(k) (1 + lobe + relief): the normal of the displaced surface,
@@ -454,9 +483,6 @@ void meshChain(Writer& w, const skel::Skeleton& s, const std::vector<float>& rad
             t0 = t;
         }
         ringStart += ringVerts;
-        tPrev = t;
-        pPrev = p;
-        dPrev = dNext;
         if (k + 1 == m && caps) cap(w, p, n, b, t, r, cs, false);
     }
     if (caps && !lateral) {
@@ -916,26 +942,42 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                 const std::size_t nv = vOff[c1] - vOff[c0], ni = iOff[c1] - iOff[c0];
                 Writer w = scratch.writer(vOff[c0], nv, iOff[c0], ni, wind, ids);
                 w.invRMax = invRMax;
-                for (std::size_t c = c0; c < c1; ++c) {
-                    const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
-                    const std::size_t m = chains.begin[c + 1] - chains.begin[c];
-                    const bool lateral = chains.lateral[c] != 0;
-                    const std::int32_t own = nodes[lateral ? 1 : 0];
-                    w.order = s.order[static_cast<std::size_t>(own)];
-                    const float tiles =
-                        barkTiles(radius[static_cast<std::size_t>(own)], textureWidth);
-                    if (flaredOf[c] >= 0) {
-                        const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
-                        meshChain(w, f.sub, f.radius, f.nodes.data(), f.nodes.size(), lateral,
-                                  settings.caps, f.cs, f.ids.data(),
-                                  f.lobe.empty() ? nullptr : f.lobe.data(), f.lobeAmp.data(),
-                                  f.relief.empty() ? nullptr : f.relief.data(), tiles);
-                    } else if (ribbon[c])
-                        meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
-                                   static_cast<float>(settings.ribbonWidthScale));
-                    else
-                        meshChain(w, s, radius, nodes, m, lateral, settings.caps,
-                                  twig[c] ? csTwig : cs, nullptr, nullptr, nullptr, nullptr, tiles);
+                std::size_t rings = 0;
+                for (std::size_t c = c0; c < c1; ++c)
+                    if (flaredOf[c] >= 0)
+                        rings += flared[static_cast<std::size_t>(flaredOf[c])].nodes.size();
+                    else if (!ribbon[c])
+                        rings += chains.begin[c + 1] - chains.begin[c];
+                if (scratch.frames.size() < rings) scratch.frames.resize(rings);
+                // Every chain's frames first, then the rings (ChainPass).
+                for (const ChainPass pass : {ChainPass::Frames, ChainPass::Rings}) {
+                    RingFrame* frames = scratch.frames.data();
+                    for (std::size_t c = c0; c < c1; ++c) {
+                        const std::int32_t* nodes = chains.nodes.data() + chains.begin[c];
+                        const std::size_t m = chains.begin[c + 1] - chains.begin[c];
+                        const bool lateral = chains.lateral[c] != 0;
+                        const std::int32_t own = nodes[lateral ? 1 : 0];
+                        w.order = s.order[static_cast<std::size_t>(own)];
+                        const float tiles =
+                            barkTiles(radius[static_cast<std::size_t>(own)], textureWidth);
+                        if (flaredOf[c] >= 0) {
+                            const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
+                            meshChain(w, pass, frames, f.sub, f.radius, f.nodes.data(),
+                                      f.nodes.size(), lateral, settings.caps, f.cs, f.ids.data(),
+                                      f.lobe.empty() ? nullptr : f.lobe.data(), f.lobeAmp.data(),
+                                      f.relief.empty() ? nullptr : f.relief.data(), tiles);
+                            frames += f.nodes.size();
+                        } else if (ribbon[c]) {
+                            if (pass == ChainPass::Rings)
+                                meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
+                                           static_cast<float>(settings.ribbonWidthScale));
+                        } else {
+                            meshChain(w, pass, frames, s, radius, nodes, m, lateral, settings.caps,
+                                      twig[c] ? csTwig : cs, nullptr, nullptr, nullptr, nullptr,
+                                      tiles);
+                            frames += m;
+                        }
+                    }
                 }
 #pragma omp ordered
                 scratch.appendTo(out, nv, ni, wind, ids);

@@ -276,9 +276,14 @@ TEST(LeafPlacement, SameAsTheStraightforwardVersion) {
                                        mesh::Phyllotaxis::Opposite, mesh::Phyllotaxis::Whorled};
     int compared = 0;
     for (std::uint64_t seed = 1; seed <= 8; ++seed) {
-        const skel::Skeleton s = bush(seed, 300);
+        skel::Skeleton s = bush(seed, 300);
         mesh::LeafPlacement p;
         p.seed = seed;
+        // Seed 5: the grammar's own leaves kept, the placed ones after them.
+        if (seed == 5) {
+            s.leaves = {{{1, 2, 3}, glm::quat(0, 1, 0, 0), 0.5f, 7}, {{4, 5, 6}, {}, 0.25f, 9}};
+            p.keepGrammarLeaves = true;
+        }
         p.phyllotaxis = kinds[seed % 4];
         p.whorlCount = 3 + static_cast<int>(seed % 4);
         p.density = 10.0 + 7.0 * static_cast<double>(seed);

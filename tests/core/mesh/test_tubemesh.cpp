@@ -11,6 +11,7 @@
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/tubemesh.h"
 #include "engine/util/error.h"
+#include "engine/util/random.h"
 #include "referencetubemesh.h"
 
 using namespace sylva;
@@ -331,6 +332,46 @@ TEST(TubeMesh, SameBytesAsStraightforwardMesher) {
             }
         }
     omp_set_num_threads(saved);
+}
+
+// A random bush: many short axes (a node's first child of its order continues the axis, the
+// others start laterals), some segments of zero length, some hidden nodes.
+skel::Skeleton shortAxes(std::uint64_t seed, int nodes) {
+    skel::Skeleton s;
+    Rng rng(seed);
+    s.addNode({0, 0, 0}, -1, 0.05f, 0, glm::quat(1, 0, 0, 0));
+    for (int i = 1; i < nodes; ++i) {
+        const auto par = static_cast<std::int32_t>(rng.below(static_cast<std::uint64_t>(i)));
+        glm::vec3 step(rng.uniformf(-0.4f, 0.4f), rng.uniformf(-0.4f, 0.4f),
+                       rng.uniformf(-0.4f, 0.4f));
+        if (rng.below(15) == 0) step = glm::vec3(0.0f);
+        const glm::quat frame = glm::normalize(glm::quat(rng.uniformf(-1, 1), rng.uniformf(-1, 1),
+                                                         rng.uniformf(-1, 1), rng.uniformf(-1, 1)));
+        s.addNode(s.position[static_cast<std::size_t>(par)] + step, par,
+                  rng.uniformf(0.002f, 0.04f), static_cast<std::uint16_t>(rng.below(3)), frame,
+                  static_cast<std::uint8_t>(rng.below(25) == 0 ? skel::kHidden : 0));
+    }
+    s.finalize();
+    return s;
+}
+
+// The meshing of a run's chains in two passes (every chain's ring frames, then the rings) on
+// axes of one to a few segments, where each chain's frames start at its own place.
+TEST(TubeMesh, SameBytesAsStraightforwardMesherOnShortAxes) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const skel::Skeleton s = shortAxes(seed, 2500);
+        mesh::TubeSettings settings;
+        settings.resolution = seed == 2 ? 5 : 8;
+        settings.caps = seed != 3;
+        mesh::Mesh a, b;
+        mesh::appendTubes(a, s, settings);
+        mesh::reference::appendTubesReference(b, s, settings);
+        ASSERT_GT(a.vertexCount(), 2u * 4096u) << "seed " << seed; // several scratch runs
+        EXPECT_EQ(a.positions, b.positions) << "seed " << seed;
+        EXPECT_EQ(a.normals, b.normals) << "seed " << seed;
+        EXPECT_EQ(a.uvs, b.uvs) << "seed " << seed;
+        EXPECT_EQ(a.indices, b.indices) << "seed " << seed;
+    }
 }
 
 TEST(TubeMesh, NodeIdsNameTheNodeOfEveryVertex) {
