@@ -1,13 +1,19 @@
 #pragma once
 
-#include "engine/mesh/leafframes.h"
-
 namespace sylva::mesh {
+
+/// The constants of a leaf's frame (placeLeaves): the petiole angle's sine and cosine, the
+/// weights of the branch normal, world up and the light, and the light's direction.
+struct LeafFrameWeights {
+    float sinPetiole = 0.0f, cosPetiole = 1.0f;
+    float normal = 0.0f, up = 0.0f, light = 0.0f;
+    float lightX = 0.0f, lightY = 1.0f, lightZ = 0.0f;
+};
 
 /// Whether leafFramesAvx16 runs here: the processor has AVX and SYLVA_NO_AVX is unset.
 bool leafFramesAvx();
 
-/// The frames of sixteen leaves, leafFramesSse16's lanes eight to a register (the
+/// The frames of sixteen leaves, placeLeaves' SSE2 orientations eight lanes to a register (the
 /// same operations in each lane, in the same order: the same bits). \p in: the leaves' tangents
 /// (x, y, z), radial directions (x, y, z) and forward weights, seven arrays from the first of the
 /// sixteen. Writes each lane's normalised quaternion to q (w, x, y, z by lane) and returns the
