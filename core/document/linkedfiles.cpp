@@ -1,7 +1,7 @@
 #include "document/linkedfiles.h"
 
+#include "document/scenebuild.h"
 #include "document/speciesfile.h"
-#include "engine/environment/obstaclemesh.h"
 #include "engine/graph/fileparams.h"
 #include "engine/graph/graph.h"
 #include "engine/lsystem/grammar.h"
@@ -58,10 +58,11 @@ void checkLinkedFiles(const Project& project) {
                      : loadSpecies(project.resolve(ps.file));
         checkSpeciesGraph(g, ps.name);
     }
-    for (const ProjectObstacle& o : project.obstacles)
-        env::loadObstacleMesh(project.resolve(o.file).toStdString());
+    // Loaded as the growth loads them, into the scene cache it reads: read once, not twice.
+    if (const auto obstacles = obstacleSpecsOf(project); !obstacles.empty())
+        env::loadObstacleScene(obstacles);
     for (const PlacementDomain& d : project.domains)
-        if (d.shape == "terrain") env::loadObstacleMesh(project.resolve(d.terrain).toStdString());
+        if (d.shape == "terrain") env::loadObstacleScene({terrainSpecOf(project, d)});
 }
 
 } // namespace sylva::doc

@@ -12,6 +12,25 @@
 
 namespace sylva::doc {
 
+std::vector<env::ObstacleSpec> obstacleSpecsOf(const Project& project) {
+    std::vector<env::ObstacleSpec> obstacles;
+    for (const ProjectObstacle& o : project.obstacles) {
+        env::ObstacleSpec spec;
+        spec.file = project.resolve(o.file).toStdString();
+        spec.transform.translate = o.translate;
+        spec.transform.rotateDeg = o.rotate;
+        spec.transform.scale = o.scale;
+        obstacles.push_back(spec);
+    }
+    return obstacles;
+}
+
+env::ObstacleSpec terrainSpecOf(const Project& project, const PlacementDomain& d) {
+    env::ObstacleSpec spec;
+    spec.file = project.resolve(d.terrain).toStdString();
+    return spec;
+}
+
 forest::ForestScene makeForestScene(const Project& original) {
     // Ids name the trees: a project built in memory without them gets the ones saving would give.
     std::optional<Project> withIds;
@@ -45,16 +64,8 @@ forest::ForestScene makeForestScene(const Project& original) {
         s.species.push_back(std::move(species));
     }
 
-    std::vector<env::ObstacleSpec> obstacles;
-    for (const ProjectObstacle& o : project.obstacles) {
-        env::ObstacleSpec spec;
-        spec.file = project.resolve(o.file).toStdString();
-        spec.transform.translate = o.translate;
-        spec.transform.rotateDeg = o.rotate;
-        spec.transform.scale = o.scale;
-        obstacles.push_back(spec);
-    }
-    if (!obstacles.empty()) s.obstacles = env::loadObstacleScene(obstacles);
+    if (const auto obstacles = obstacleSpecsOf(project); !obstacles.empty())
+        s.obstacles = env::loadObstacleScene(obstacles);
 
     for (const PlacementDomain& d : project.domains) {
         placement::Domain domain;
@@ -64,9 +75,7 @@ forest::ForestScene makeForestScene(const Project& original) {
             domain.polygon = d.polygon;
         } else if (d.shape == "terrain") {
             // Trees go where a ray down meets the terrain, within the terrain's footprint.
-            env::ObstacleSpec spec;
-            spec.file = project.resolve(d.terrain).toStdString();
-            s.ground = env::loadObstacleScene({spec});
+            s.ground = env::loadObstacleScene({terrainSpecOf(project, d)});
             domain.min = {s.ground->lo().x, s.ground->lo().z};
             domain.max = {s.ground->hi().x, s.ground->hi().z};
         } else {

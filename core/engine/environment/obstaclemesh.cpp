@@ -1,5 +1,6 @@
 #include "engine/environment/obstaclemesh.h"
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -32,6 +33,8 @@ glm::mat4 MeshTransform::matrix() const {
 }
 
 namespace {
+
+std::atomic<std::size_t> gFilesRead{0};
 
 bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -118,8 +121,13 @@ ObstacleMesh makeObstacleMesh(std::string name, const std::vector<glm::vec3>& ve
     return mesh;
 }
 
+std::size_t obstacleMeshFilesRead() {
+    return gFilesRead.load(std::memory_order_relaxed);
+}
+
 ObstacleMesh loadObstacleMesh(const std::filesystem::path& file, const MeshTransform& transform,
                               std::size_t maxTriangles) {
+    gFilesRead.fetch_add(1, std::memory_order_relaxed);
     std::error_code ec;
     if (!std::filesystem::exists(file, ec))
         throw IoError("obstacle mesh " + quoted(file) + ": file not found");

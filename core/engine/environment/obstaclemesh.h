@@ -54,6 +54,10 @@ ObstacleMesh loadObstacleMesh(const std::filesystem::path& file,
                               const MeshTransform& transform = {},
                               std::size_t maxTriangles = kMaxObstacleTriangles);
 
+/// How many obstacle mesh files loadObstacleMesh has read in this process (those it refused
+/// included): what a check that a file is read once per open counts. Thread-safe.
+std::size_t obstacleMeshFilesRead();
+
 /// A closed, outward-facing axis-aligned box (12 triangles); for tests and simple walls.
 ObstacleMesh makeBoxMesh(const glm::vec3& lo, const glm::vec3& hi, std::string name = "box");
 

@@ -1,39 +1,16 @@
 #include "engine/lsystem/grammarcache.h"
 
-#include <chrono>
 #include <deque>
 #include <fstream>
 #include <mutex>
 #include <sstream>
 
-#include <sys/stat.h>
-
 #include "engine/util/error.h"
+#include "engine/util/fileversion.h"
 
 namespace sylva::lsys {
 
 namespace {
-
-constexpr std::int64_t kRacySeconds = 2;
-
-/// What a file's stat() says about its contents: another write gives another modification
-/// time (nanoseconds), size or (a save by rename) inode.
-struct FileVersion {
-    std::uint64_t device = 0, inode = 0, size = 0;
-    std::int64_t seconds = 0, nanoseconds = 0;
-    bool operator==(const FileVersion&) const = default;
-};
-
-bool versionOf(const std::filesystem::path& path, FileVersion& v) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return false;
-    v.device = static_cast<std::uint64_t>(st.st_dev);
-    v.inode = static_cast<std::uint64_t>(st.st_ino);
-    v.size = static_cast<std::uint64_t>(st.st_size);
-    v.seconds = static_cast<std::int64_t>(st.st_mtim.tv_sec);
-    v.nanoseconds = static_cast<std::int64_t>(st.st_mtim.tv_nsec);
-    return true;
-}
 
 std::string readTextFile(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -77,23 +54,17 @@ Cache& cache() {
 } // namespace
 
 std::shared_ptr<const Grammar> parsedGrammarFile(const std::filesystem::path& path) {
-    FileVersion before;
-    const bool known = versionOf(path, before);
+    const std::optional<FileVersion> before = fileVersionOf(path);
     std::string key = path.string();
-    if (known)
-        if (auto g = cache().find(key, before)) return g;
+    if (before)
+        if (auto g = cache().find(key, *before)) return g;
     const std::string text = readTextFile(path);
     auto g = std::make_shared<const Grammar>(parseGrammar(text, key));
-    // Kept only when the file did not change while it was read, and was last written more
-    // than kRacySeconds ago: file times move in clock ticks of a few milliseconds, so a second
-    // write in place within the tick of the version read here could leave size and time as
-    // they were ("racy git"); a version that old cannot share its time with a later write.
-    FileVersion after;
-    const auto now = std::chrono::duration_cast<std::chrono::seconds>(
-                         std::chrono::system_clock::now().time_since_epoch())
-                         .count();
-    if (known && versionOf(path, after) && after == before && now - after.seconds > kRacySeconds)
-        cache().add(std::move(key), after, g);
+    // Kept only when the file did not change while it was read and is settled (a later write
+    // in place cannot share its time: see settled()).
+    const std::optional<FileVersion> after = fileVersionOf(path);
+    if (before && after && *after == *before && settled(*after))
+        cache().add(std::move(key), *after, g);
     return g;
 }
 

@@ -11,6 +11,7 @@
 #include "engine/graph/vectorparam.h"
 #include "engine/nodes/paramspecs.h"
 #include "engine/util/error.h"
+#include "engine/util/fileversion.h"
 
 namespace sylva::env {
 
@@ -62,22 +63,27 @@ glm::vec3 vec3OrUniform(const Value& v, const std::string& what) {
     return out;
 }
 
+// The files' versions (one stat() each) and the transforms: another write of a file, or a save
+// by rename, gives another key. A file rewritten in place within one tick of its clock with the
+// same size would keep its key (see settled()). Unlike parsed grammars, a scene is kept whether
+// or not its files are settled: keeping the scene is what keeps the trees adapted to it, and a
+// mesh exported twice within a few milliseconds at the same size is not an artist's case.
 std::string cacheKey(const std::vector<ObstacleSpec>& specs) {
     std::string key;
     for (const ObstacleSpec& s : specs) {
-        std::error_code sizeError, timeError, pathError;
-        const auto size = std::filesystem::file_size(s.file, sizeError);
-        const auto time = std::filesystem::last_write_time(s.file, timeError);
+        std::error_code pathError;
         // One spelling per file (a project saved in another folder names it through another
         // relative path): the same scene, so the trees adapted to it are kept.
         std::filesystem::path file = std::filesystem::weakly_canonical(s.file, pathError);
         if (pathError) file = std::filesystem::absolute(s.file, pathError).lexically_normal();
-        key += file.string() + '|' + std::to_string(sizeError ? 0 : size) + '|' +
-               std::to_string(timeError ? 0 : time.time_since_epoch().count()) + '|';
+        const FileVersion v = fileVersionOf(s.file).value_or(FileVersion{});
+        key += file.string() + '|' + std::to_string(v.size) + '|' + std::to_string(v.seconds) +
+               '.' + std::to_string(v.nanoseconds) + '|' + std::to_string(v.inode) + '|' +
+               std::to_string(v.device) + '|';
         const MeshTransform& t = s.transform;
-        for (const glm::vec3* v : {&t.translate, &t.rotateDeg, &t.scale})
+        for (const glm::vec3* v3 : {&t.translate, &t.rotateDeg, &t.scale})
             for (int k = 0; k < 3; ++k)
-                key += std::to_string((*v)[k]) + ',';
+                key += std::to_string((*v3)[k]) + ',';
         key += '\n';
     }
     return key;

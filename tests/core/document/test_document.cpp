@@ -6,7 +6,9 @@
 #include "document/filerefs.h"
 #include "document/presetlibrary.h"
 #include "document/projectsettings.h"
+#include "document/scenebuild.h"
 #include "document/speciesfile.h"
+#include "engine/environment/obstaclemesh.h"
 #include "engine/util/error.h"
 #include "engine/util/random.h"
 #include "engine/util/text.h"
@@ -853,6 +855,31 @@ TEST_F(DocumentTest, OpeningAProjectWithABadLinkedFileLeavesTheOpenOneAsItWas) {
         openError(write(QStringLiteral("badgrammar.sylva"), badGrammar));
     EXPECT_NE(grammarError.find("bad.lsys:3:"), std::string::npos) << grammarError;
     expectUnchanged();
+}
+
+// Opening checks every linked obstacle mesh by loading it as the growth does, into the scene
+// cache the growth then reads: each file is read once, not once to check and again to grow (a
+// scanned cliff of a million triangles took as long again to open).
+TEST_F(DocumentTest, OpeningAndGrowingReadEachObstacleMeshOnce) {
+    const QString rock = QDir(mDir.path()).filePath(QStringLiteral("rock.obj"));
+    ASSERT_TRUE(
+        QFile::copy(QStringLiteral(SYLVA_SOURCE_DIR "/resources/demo/meshes/boulder.obj"), rock));
+    doc::ProjectObstacle o;
+    o.file = rock.toStdString();
+    o.translate = {3.0f, 0.0f, 1.0f};
+    mDoc.addObstacle(o);
+    const QString saved = QDir(mDir.path()).filePath(QStringLiteral("rocks.sylva"));
+    mDoc.save(saved);
+
+    Document other;
+    const std::size_t before = env::obstacleMeshFilesRead();
+    other.open(saved);
+    const std::size_t obstacles = other.project().obstacles.size();
+    ASSERT_GE(obstacles, 1u);
+    EXPECT_EQ(env::obstacleMeshFilesRead() - before, obstacles);
+    const forest::ForestScene scene = doc::makeForestScene(other.project());
+    ASSERT_TRUE(scene.obstacles);
+    EXPECT_EQ(env::obstacleMeshFilesRead() - before, obstacles);
 }
 
 // Issue #43: hand edits of single branches go through the document as one undo step each, and
