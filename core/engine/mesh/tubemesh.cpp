@@ -670,10 +670,11 @@ void addBarkRelief(FlaredChain& f, const TubeSettings& settings, int columns, fl
     const int sides = static_cast<int>(g.cs.size()) - 1;
     const std::size_t ringVerts = static_cast<std::size_t>(sides) + 1;
     g.relief.assign(g.nodes.size() * ringVerts, 0.0f);
+    BarkRing ring(settings.barkPattern, columns, sides); // what every ring of the axis shares
     for (std::size_t k = 0; k < g.nodes.size(); ++k) {
         if (!(amp[k] > 0.0f)) continue;
         float* row = g.relief.data() + k * ringVerts;
-        barkReliefRow(settings.barkPattern, columns, sides, along[k] / width, seed, amp[k], row);
+        barkReliefRow(ring, along[k] / width, seed, amp[k], row);
         row[sides] = row[0];
     }
     f = std::move(g);
