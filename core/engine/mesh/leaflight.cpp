@@ -289,7 +289,7 @@ public:
             for (const skel::Leaf& leaf : leaves) {
                 if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
                 const glm::ivec3 c = leafCellOf(leaf);
-                // slotOf(c)
+                // The cell's slot: offset() of each axis, z fastest, then y (as at() reads).
                 const std::size_t slot =
                     ((static_cast<std::size_t>((static_cast<std::uint32_t>(c.x) - lx) & 0x1fffff) *
                           ey +
@@ -360,12 +360,6 @@ private:
     // them: the box is narrower than 2^21 cells, so each cell of it has its own key).
     std::uint32_t offset(int v, int a) const {
         return (static_cast<std::uint32_t>(v) - static_cast<std::uint32_t>(mLo[a])) & 0x1fffff;
-    }
-    std::size_t slotOf(const glm::ivec3& c) const {
-        return (static_cast<std::size_t>(offset(c.x, 0)) * static_cast<std::size_t>(mExtent[1]) +
-                offset(c.y, 1)) *
-                   static_cast<std::size_t>(mExtent[2]) +
-               offset(c.z, 2);
     }
     // A cell's sums, +0 where no leaf is in it.
     const Sum& at(int x, int y, int z) const {
