@@ -96,8 +96,10 @@ float plates(float x, float y, int columns, std::uint32_t seed) {
 
 /// ridges(x_j, y, columns, seed) scaled by \p amplitude for a whole ring, the same operations
 /// in the same order; what does not change along the ring (the warp noise's row of lattice
-/// values, each column's height and break) is made once.
-void ridgesRow(int columns, int sides, float y, std::uint32_t seed, float amplitude, float* row) {
+/// values, each column's height and break) is made once, what depends on j alone (x_j and its
+/// warp lattice columns and blend) is \p ring's.
+void ridgesRow(BarkRing& ring, float y, std::uint32_t seed, float amplitude, float* row) {
+    const int columns = std::max(ring.columns, 1);
     const bool even = columns % 2 == 0;
     const int period = even ? columns / 2 : columns;
     // The warp noise's lattice rows iy and iy + 1 (noise's y is constant along the ring).
@@ -106,8 +108,8 @@ void ridgesRow(int columns, int sides, float y, std::uint32_t seed, float amplit
     const auto iy = static_cast<std::int32_t>(fy);
     const float ty = smooth(ny - fy);
     const auto cols = static_cast<std::size_t>(columns);
-    std::vector<float> table(2 * static_cast<std::size_t>(period) + 2 * cols);
-    float* low = table.data();
+    ring.scratch.resize(2 * static_cast<std::size_t>(period) + 2 * cols);
+    float* low = ring.scratch.data();
     float* high = low + period;
     float* height = high + period;
     float* brk = height + cols;
@@ -122,12 +124,13 @@ void ridgesRow(int columns, int sides, float y, std::uint32_t seed, float amplit
         height[col] = 0.55f + 0.45f * unit(col, static_cast<std::int32_t>(fa), seed ^ 0x51u);
         brk[col] = 0.35f + 0.65f * smoothstep(0.0f, 0.15f, u) * smoothstep(0.0f, 0.15f, 1.0f - u);
     }
-    for (int j = 0; j < sides; ++j) {
-        const float x = static_cast<float>(j * columns) / static_cast<float>(sides);
-        const float nx = even ? x * 0.5f : x;
-        const float fx0 = std::floor(nx);
-        const float tx = smooth(nx - fx0);
-        const std::int32_t x0 = wrap(static_cast<std::int32_t>(fx0), period);
+    const float* xs0 = ring.x.data();
+    const float* blend = ring.blend.data();
+    const std::int32_t* lower = ring.lower.data();
+    for (int j = 0; j < ring.sides; ++j) {
+        const float x = xs0[j];
+        const float tx = blend[j];
+        const std::int32_t x0 = lower[j];
         const std::int32_t x1 = x0 + 1 == period ? 0 : x0 + 1;
         const float a = low[x0], b = low[x1], c = high[x0], d = high[x1];
         const float n = (a + (b - a) * tx) + ((c + (d - c) * tx) - (a + (b - a) * tx)) * ty;
@@ -160,17 +163,43 @@ float barkReliefShape(BarkPattern pattern, float x, float y, int columns, std::u
                                           : plates(x, y, columns, seed);
 }
 
-void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::uint32_t seed,
-                   float amplitude, float* row) {
-    if (pattern == BarkPattern::Ridges) {
-        ridgesRow(std::max(columns, 1), sides, y, seed, amplitude, row);
+BarkRing::BarkRing(BarkPattern pattern_, int columns_, int sides_)
+    : pattern(pattern_), columns(columns_), sides(std::max(sides_, 0)) {
+    if (pattern != BarkPattern::Ridges) return;
+    // ridges()'s x and its warp noise's lattice column and blend (nx, floor, smooth, wrap).
+    const int cols = std::max(columns, 1);
+    const bool even = cols % 2 == 0;
+    const int period = even ? cols / 2 : cols;
+    const auto n = static_cast<std::size_t>(sides);
+    x.resize(n);
+    blend.resize(n);
+    lower.resize(n);
+    for (int j = 0; j < sides; ++j) {
+        const auto k = static_cast<std::size_t>(j);
+        x[k] = static_cast<float>(j * cols) / static_cast<float>(sides);
+        const float nx = even ? x[k] * 0.5f : x[k];
+        const float fx0 = std::floor(nx);
+        blend[k] = smooth(nx - fx0);
+        lower[k] = wrap(static_cast<std::int32_t>(fx0), period);
+    }
+}
+
+void barkReliefRow(BarkRing& ring, float y, std::uint32_t seed, float amplitude, float* row) {
+    if (ring.pattern == BarkPattern::Ridges) {
+        ridgesRow(ring, y, seed, amplitude, row);
         return;
     }
-    for (int j = 0; j < sides; ++j)
-        row[j] =
-            amplitude * barkReliefShape(pattern,
-                                        static_cast<float>(j * columns) / static_cast<float>(sides),
-                                        y, columns, seed);
+    for (int j = 0; j < ring.sides; ++j)
+        row[j] = amplitude * barkReliefShape(ring.pattern,
+                                             static_cast<float>(j * ring.columns) /
+                                                 static_cast<float>(ring.sides),
+                                             y, ring.columns, seed);
+}
+
+void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::uint32_t seed,
+                   float amplitude, float* row) {
+    BarkRing ring(pattern, columns, sides);
+    barkReliefRow(ring, y, seed, amplitude, row);
 }
 
 } // namespace sylva::mesh

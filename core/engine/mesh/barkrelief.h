@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace sylva::mesh {
 
@@ -29,10 +30,28 @@ double barkRingSpacing(BarkPattern pattern);
 /// only, the same on every platform.
 float barkReliefShape(BarkPattern pattern, float x, float y, int columns, std::uint32_t seed);
 
+/// The rings of one axis (their pattern, columns and sides): what the ridges need of each
+/// vertex's place around the axis (x_j, its warp noise's lattice columns and blend), the same on
+/// every ring, made once for all of them; and the room a ring's lattice rows take.
+struct BarkRing {
+    BarkRing(BarkPattern pattern, int columns, int sides);
+    BarkPattern pattern;
+    int columns;
+    int sides;
+    std::vector<float> x, blend;     ///< the ridges' x_j and the warp noise's smoothed fraction
+    std::vector<std::int32_t> lower; ///< the warp lattice's column below x_j (the next: wraps)
+    std::vector<float> scratch;      ///< a ring's lattice rows, heights and breaks
+};
+
 /// One ring of the pattern: row[j] = amplitude * barkReliefShape(pattern, x_j, y, columns, seed)
 /// for j in [0, sides), x_j = float(j * columns) / float(sides), bit for bit. The ridges' lattice
 /// hashes, constant along a ring, and each column's break and height are made once a ring
-/// instead of once a vertex (the English oak's bark: about a quarter of its tube meshing).
+/// instead of once a vertex (the English oak's bark: about a quarter of its tube meshing); what
+/// depends on j alone (x_j, its lattice columns and blend: a division, a floor, a smoothstep and
+/// an integer division a vertex) once for all the rings of \p ring.
+void barkReliefRow(BarkRing& ring, float y, std::uint32_t seed, float amplitude, float* row);
+
+/// The same for one ring (a BarkRing made for it).
 void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::uint32_t seed,
                    float amplitude, float* row);
 

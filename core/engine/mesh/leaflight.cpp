@@ -76,18 +76,36 @@ std::size_t cellBox(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::i
                     glm::ivec3& hi) {
     std::size_t count = 0;
 #if defined(__SSE2__)
-    __m128i l = _mm_set1_epi32(std::numeric_limits<int>::max());
-    __m128i h = _mm_set1_epi32(std::numeric_limits<int>::min());
-    for (const skel::Leaf& leaf : leaves) {
-        if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
-        const __m128i c = leafCellLanes(leaf);
-        const __m128i below = _mm_cmpgt_epi32(l, c), above = _mm_cmpgt_epi32(c, h);
-        l = _mm_or_si128(_mm_and_si128(below, c), _mm_andnot_si128(below, l));
-        h = _mm_or_si128(_mm_and_si128(above, c), _mm_andnot_si128(above, h));
-        ++count;
+    // Two boxes, of the even and the odd leaves, joined at the end (integers: the same box): each
+    // step's compare and select (three operations in a chain) waited on the step before.
+    auto least = [](__m128i a, __m128i b) { // lane by lane the lesser
+        const __m128i above = _mm_cmpgt_epi32(a, b);
+        return _mm_or_si128(_mm_and_si128(above, b), _mm_andnot_si128(above, a));
+    };
+    auto greatest = [](__m128i a, __m128i b) { // lane by lane the greater
+        const __m128i below = _mm_cmpgt_epi32(b, a);
+        return _mm_or_si128(_mm_and_si128(below, b), _mm_andnot_si128(below, a));
+    };
+    __m128i l[2], h[2];
+    for (int k = 0; k < 2; ++k) {
+        l[k] = _mm_set1_epi32(std::numeric_limits<int>::max());
+        h[k] = _mm_set1_epi32(std::numeric_limits<int>::min());
     }
-    lo = lanesToCell(l);
-    hi = lanesToCell(h);
+    const std::size_t size = leaves.size();
+    for (std::size_t i = 0; i < size; i += 2)
+        for (std::size_t k = 0; k < 2 && i + k < size; ++k) {
+            const skel::Leaf& leaf = leaves[i + k];
+            if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+            const __m128i c = leafCellLanes(leaf);
+            l[k] = least(l[k], c);
+            h[k] = greatest(h[k], c);
+            ++count;
+        }
+    // (a box with no leaf is INT_MAX and INT_MIN: the other one's is kept)
+    l[0] = least(l[0], l[1]);
+    h[0] = greatest(h[0], h[1]);
+    lo = lanesToCell(l[0]);
+    hi = lanesToCell(h[0]);
 #else
     lo = glm::ivec3(std::numeric_limits<int>::max());
     hi = glm::ivec3(std::numeric_limits<int>::min());
@@ -147,21 +165,21 @@ std::vector<float> ownLight(const skel::Skeleton& s) {
     const std::size_t n = s.size();
     std::vector<double> children(n, 0.0), tips(n, 0.0);
     std::vector<char> hasChild(n, 0);
-    for (std::size_t i = 0; i < n; ++i)
-        if (s.parent[i] >= 0) hasChild[static_cast<std::size_t>(s.parent[i])] = 1;
+    std::vector<float> out(n);
+    // One walk from the last node back: a node comes after its parent (Skeleton::validate), so
+    // its children have added to its sums and marked it by the time it is reached (three walks
+    // before, one to mark the parents and one for the results; the same sums in the same order).
     for (std::size_t i = n; i-- > 0;) {
         if (!hasChild[i]) tips[i] += 1.0;
-        if (s.parent[i] < 0) continue;
-        const auto p = static_cast<std::size_t>(s.parent[i]);
-        tips[p] += tips[i];
-        children[p] += s.light[i];
-    }
-    std::vector<float> out(n);
-    for (std::size_t i = 0; i < n; ++i) {
         const double own = s.light[i] - children[i];
         out[i] = static_cast<float>(own > 1e-4 * std::max(1.0, static_cast<double>(s.light[i]))
                                         ? own
                                         : s.light[i] / std::max(tips[i], 1.0));
+        if (s.parent[i] < 0) continue;
+        const auto p = static_cast<std::size_t>(s.parent[i]);
+        hasChild[p] = 1;
+        tips[p] += tips[i];
+        children[p] += s.light[i];
     }
     return out;
 }
@@ -259,12 +277,37 @@ public:
         if (mDense) mGrid.assign(static_cast<std::size_t>(size), Sum{});
         // Each cell's sums in the grid itself: no slot to look up and no branch on a new cell
         // (slots into sums made as cells were met: a branch about one leaf in ten, mispredicted).
-        for (const skel::Leaf& leaf : leaves) {
-            if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
-            const glm::ivec3 c = leafCellOf(leaf);
-            Sum& s = mDense ? mGrid[slotOf(c)] : mCells[cellKey(c.x, c.y, c.z)];
-            s.light += perTip[static_cast<std::size_t>(leaf.node)];
-            s.count += 1.0;
+        if (mDense) {
+            // The grid's box and strides in locals (members reloaded after every sum's store).
+            const auto lx = static_cast<std::uint32_t>(mLo.x),
+                       ly = static_cast<std::uint32_t>(mLo.y),
+                       lz = static_cast<std::uint32_t>(mLo.z);
+            const auto ey = static_cast<std::size_t>(mExtent[1]),
+                       ez = static_cast<std::size_t>(mExtent[2]);
+            Sum* const grid = mGrid.data();
+            const float* const light = perTip.data();
+            for (const skel::Leaf& leaf : leaves) {
+                if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+                const glm::ivec3 c = leafCellOf(leaf);
+                // The cell's slot: offset() of each axis, z fastest, then y (as at() reads).
+                const std::size_t slot =
+                    ((static_cast<std::size_t>((static_cast<std::uint32_t>(c.x) - lx) & 0x1fffff) *
+                          ey +
+                      ((static_cast<std::uint32_t>(c.y) - ly) & 0x1fffff)) *
+                     ez) +
+                    ((static_cast<std::uint32_t>(c.z) - lz) & 0x1fffff);
+                Sum& s = grid[slot];
+                s.light += light[static_cast<std::size_t>(leaf.node)];
+                s.count += 1.0;
+            }
+        } else {
+            for (const skel::Leaf& leaf : leaves) {
+                if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+                const glm::ivec3 c = leafCellOf(leaf);
+                Sum& s = mCells[cellKey(c.x, c.y, c.z)];
+                s.light += perTip[static_cast<std::size_t>(leaf.node)];
+                s.count += 1.0;
+            }
         }
     }
 
@@ -317,12 +360,6 @@ private:
     // them: the box is narrower than 2^21 cells, so each cell of it has its own key).
     std::uint32_t offset(int v, int a) const {
         return (static_cast<std::uint32_t>(v) - static_cast<std::uint32_t>(mLo[a])) & 0x1fffff;
-    }
-    std::size_t slotOf(const glm::ivec3& c) const {
-        return (static_cast<std::size_t>(offset(c.x, 0)) * static_cast<std::size_t>(mExtent[1]) +
-                offset(c.y, 1)) *
-                   static_cast<std::size_t>(mExtent[2]) +
-               offset(c.z, 2);
     }
     // A cell's sums, +0 where no leaf is in it.
     const Sum& at(int x, int y, int z) const {

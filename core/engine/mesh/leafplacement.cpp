@@ -163,6 +163,25 @@ inline void take(Pack f, int i, Pack& big, PackIndex& index) {
 }
 #endif
 
+// The cosine and sine of an angle in radians, as floats.
+glm::vec2 angleTrig(double ang) {
+    return {static_cast<float>(std::cos(ang)), static_cast<float>(std::sin(ang))};
+}
+
+// The spiral's angles of its first kSharedSpiral positions, made once for the process (they
+// depend on the position only: every tree made them again, ~200 std::cos and std::sin of a
+// double a tree for the English oak); Placer's own table goes on past them.
+constexpr std::uint64_t kSharedSpiral = 512;
+const glm::vec2* sharedSpiral() {
+    static const std::vector<glm::vec2> table = [] {
+        std::vector<glm::vec2> t(kSharedSpiral);
+        for (std::uint64_t q = 0; q < kSharedSpiral; ++q)
+            t[q] = angleTrig(137.5 * kDeg * static_cast<double>(q));
+        return t;
+    }();
+    return table.data();
+}
+
 struct Placer {
     const LeafPlacement& p;
     glm::vec3 light;
@@ -371,6 +390,7 @@ struct Placer {
     std::span<const glm::vec2> angles(std::uint64_t k) {
         if (p.phyllotaxis == Phyllotaxis::Spiral) {
             const std::uint64_t j = k % 100000;
+            if (j < kSharedSpiral) return {sharedSpiral() + j, 1};
             if (j >= spiral.size() && j < kSpiralTable)
                 for (std::uint64_t q = spiral.size(); q <= j; ++q)
                     spiral.push_back(trig(137.5 * kDeg * static_cast<double>(q)));
@@ -409,6 +429,7 @@ struct Placer {
     const glm::vec2* spiralRun(std::uint64_t k, std::uint64_t count) {
         if (p.phyllotaxis != Phyllotaxis::Spiral || count == 0) return nullptr;
         const std::uint64_t j = k % 100000;
+        if (j + count <= kSharedSpiral) return sharedSpiral() + j;
         if (j + count > kSpiralTable || j + count > 100000) return nullptr;
         for (std::uint64_t q = spiral.size(); q < j + count; ++q)
             spiral.push_back(trig(137.5 * kDeg * static_cast<double>(q)));
@@ -416,7 +437,7 @@ struct Placer {
     }
 
     static glm::vec2 trig(double ang) {
-        return {static_cast<float>(std::cos(ang)), static_cast<float>(std::sin(ang))};
+        return angleTrig(ang);
     }
     static constexpr std::uint64_t kSpiralTable = 1u << 16;
     std::vector<glm::vec2> spiral{};    ///< by k % 100000, filled as far as asked

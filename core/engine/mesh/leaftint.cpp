@@ -237,49 +237,59 @@ void tintLeafCards(Mesh& mesh, std::size_t firstVertex, const LeafColorVariation
         noise.cover(glm::dvec3(lo) * invPatch, glm::dvec3(hi) * invPatch,
                     2 * (n - firstVertex) + 64);
     }
-    // The cards' variations kTintLanes at a time, then their multipliers together.
+    // The cards' variations kTintLanes at a time, each stage for every card of the block before
+    // the next (their centres and hash chains, their noises, their variations, their
+    // multipliers): one card's hash chain (six mixSeed) and noise interleave with the others'.
+    // Each card's arithmetic its own, in its order: the same bytes as one card at a time.
     double hue[kTintLanes], saturation[kTintLanes], value[kTintLanes];
-    std::size_t first[kTintLanes];
+    glm::dvec3 centre[kTintLanes], patch[kTintLanes];
+    std::uint64_t hash[kTintLanes];
     glm::u8vec4 tint[kTintLanes];
-    std::size_t lanes = 0;
-    for (std::size_t v = firstVertex; v < n; v += 4) {
-        const std::size_t end = std::min(n, v + 4);
-        glm::dvec3 centre(0.0);
-        for (std::size_t k = v; k < end; ++k)
-            centre += glm::dvec3(mesh.positions[k]);
-        centre /= static_cast<double>(end - v);
-        // The centre to a millimetre: two sheets of one crossed cluster card (the same centre
-        // line, their corners rounded differently) get one colour.
-        std::uint64_t h = seed;
-        for (int k = 0; k < 3; ++k)
-            h = mixSeed(h, static_cast<std::uint64_t>(llroundExact(centre[k] * 1000.0)));
-        const glm::dvec3 patch = invPatch > 0.0 ? noise(centre * invPatch) : glm::dvec3(0.0);
-        double r[3];
-        for (int k = 0; k < 3; ++k) {
-            const double own = signedUnit(mixSeed(h, static_cast<std::uint64_t>(k)));
-            // Value noise keeps to about ±0.3 (std): doubled, the patches reach the range.
-            r[k] = invPatch > 0.0
-                       ? std::clamp(kOwnShare * own + (1.0 - kOwnShare) * 2.0 * patch[k], -1.0, 1.0)
-                       : own;
+    for (std::size_t v0 = firstVertex; v0 < n; v0 += 4 * kTintLanes) {
+        const std::size_t lanes = std::min(kTintLanes, (n - v0 + 3) / 4);
+        for (std::size_t c = 0; c < lanes; ++c) {
+            const std::size_t v = v0 + 4 * c, end = std::min(n, v + 4);
+            glm::dvec3 sum(0.0);
+            for (std::size_t k = v; k < end; ++k)
+                sum += glm::dvec3(mesh.positions[k]);
+            // Four corners: times a quarter, the quotient's bits without a division (on the
+            // way to the card's hash chain).
+            centre[c] = end - v == 4 ? sum * 0.25 : sum / static_cast<double>(end - v);
+            // The centre to a millimetre: two sheets of one crossed cluster card (the same
+            // centre line, their corners rounded differently) get one colour.
+            std::uint64_t h = seed;
+            for (int k = 0; k < 3; ++k)
+                h = mixSeed(h, static_cast<std::uint64_t>(llroundExact(centre[c][k] * 1000.0)));
+            hash[c] = h;
         }
-        // Squared: most cards keep near the texture's brightness, a few are clearly darker
-        // (a crown a third as much darker on average as with a linear spread: one of the same
-        // look is b/3 darker, not b/2).
-        const double dark = 0.5 + 0.5 * r[2];
-        const std::size_t card = (v - firstVertex) / 4;
-        const double lit =
-            shaded && card < cardLight.size() ? static_cast<double>(cardLight[card]) : 1.0;
-        hue[lanes] = variation.hue * r[0];
-        saturation[lanes] = variation.saturation * r[1];
-        value[lanes] =
-            (1.0 - variation.brightness * dark * dark) * (1.0 - lightShading * (1.0 - lit));
-        first[lanes++] = v;
-        if (lanes < kTintLanes && end < n) continue;
+        for (std::size_t c = 0; c < lanes; ++c)
+            patch[c] = invPatch > 0.0 ? noise(centre[c] * invPatch) : glm::dvec3(0.0);
+        for (std::size_t c = 0; c < lanes; ++c) {
+            double r[3];
+            for (int k = 0; k < 3; ++k) {
+                const double own = signedUnit(mixSeed(hash[c], static_cast<std::uint64_t>(k)));
+                // Value noise keeps to about ±0.3 (std): doubled, the patches reach the range.
+                r[k] = invPatch > 0.0
+                           ? std::clamp(kOwnShare * own + (1.0 - kOwnShare) * 2.0 * patch[c][k],
+                                        -1.0, 1.0)
+                           : own;
+            }
+            // Squared: most cards keep near the texture's brightness, a few are clearly darker
+            // (a crown a third as much darker on average as with a linear spread: one of the
+            // same look is b/3 darker, not b/2).
+            const double dark = 0.5 + 0.5 * r[2];
+            const std::size_t card = (v0 - firstVertex) / 4 + c;
+            const double lit =
+                shaded && card < cardLight.size() ? static_cast<double>(cardLight[card]) : 1.0;
+            hue[c] = variation.hue * r[0];
+            saturation[c] = variation.saturation * r[1];
+            value[c] =
+                (1.0 - variation.brightness * dark * dark) * (1.0 - lightShading * (1.0 - lit));
+        }
         multipliers(ref, hue, saturation, value, tint, lanes);
         for (std::size_t c = 0; c < lanes; ++c)
-            for (std::size_t k = first[c]; k < std::min(n, first[c] + 4); ++k)
+            for (std::size_t k = v0 + 4 * c; k < std::min(n, v0 + 4 * c + 4); ++k)
                 mesh.colors[k] = tint[c];
-        lanes = 0;
     }
 }
 

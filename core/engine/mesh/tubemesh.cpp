@@ -200,27 +200,39 @@ struct Writer {
         const __m128 vp = _mm_setr_ps(p.x, p.y, p.z, 0.0f);
         const __m128 vtn = _mm_setr_ps(tn.x, tn.y, tn.z, 0.0f);
         const __m128 vr = _mm_set1_ps(r), vinv = _mm_set1_ps(inv);
+        // The writer's arrays and values in locals: _mm_storel_pi stores through __m64, which may
+        // alias anything, so the members were loaded again after every vertex's store.
+        const std::size_t first = v - base;
+        float* const positions = &pos[first].x;
+        float* const normals = &nrm[first].x;
+        glm::vec2* const uv = uvs + first;
+        std::uint16_t* const ord = orders != nullptr ? orders + first : nullptr;
+        float* const flx = orders != nullptr ? flexes + first : nullptr;
+        std::uint32_t* const ids = nodeIds != nullptr ? nodeIds + first : nullptr;
+        const std::uint16_t o = order;
+        const float fl = flex;
+        const std::uint32_t id = node;
         for (int j = 0; j <= res; ++j) {
             const glm::vec3& a = cs[j];
             const __m128 radial =
                 _mm_add_ps(_mm_mul_ps(_mm_load1_ps(&a.x), vn), _mm_mul_ps(_mm_load1_ps(&a.y), vb));
             const __m128 position = _mm_add_ps(vp, _mm_mul_ps(vr, radial));
             const __m128 normal = _mm_add_ps(_mm_mul_ps(radial, vinv), vtn);
-            const std::size_t k = v - base;
-            float* pk = &pos[k].x;
-            float* nk = &nrm[k].x;
+            const auto k = static_cast<std::size_t>(j);
+            float* pk = positions + 3 * k;
+            float* nk = normals + 3 * k;
             _mm_storel_pi(reinterpret_cast<__m64*>(pk), position);
             _mm_store_ss(pk + 2, _mm_movehl_ps(position, position));
             _mm_storel_pi(reinterpret_cast<__m64*>(nk), normal);
             _mm_store_ss(nk + 2, _mm_movehl_ps(normal, normal));
-            uvs[k] = {uTiles * a.z, vCoord};
-            if (orders) {
-                orders[k] = order;
-                flexes[k] = flex;
+            uv[k] = {uTiles * a.z, vCoord};
+            if (ord) {
+                ord[k] = o;
+                flx[k] = fl;
             }
-            if (nodeIds) nodeIds[k] = node;
-            ++v;
+            if (ids) ids[k] = id;
         }
+        v += static_cast<std::size_t>(res) + 1;
 #else
         for (int j = 0; j <= res; ++j) {
             const glm::vec3& a = cs[j];
@@ -670,10 +682,11 @@ void addBarkRelief(FlaredChain& f, const TubeSettings& settings, int columns, fl
     const int sides = static_cast<int>(g.cs.size()) - 1;
     const std::size_t ringVerts = static_cast<std::size_t>(sides) + 1;
     g.relief.assign(g.nodes.size() * ringVerts, 0.0f);
+    BarkRing ring(settings.barkPattern, columns, sides); // what every ring of the axis shares
     for (std::size_t k = 0; k < g.nodes.size(); ++k) {
         if (!(amp[k] > 0.0f)) continue;
         float* row = g.relief.data() + k * ringVerts;
-        barkReliefRow(settings.barkPattern, columns, sides, along[k] / width, seed, amp[k], row);
+        barkReliefRow(ring, along[k] / width, seed, amp[k], row);
         row[sides] = row[0];
     }
     f = std::move(g);

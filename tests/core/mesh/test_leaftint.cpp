@@ -11,6 +11,8 @@
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/leaftint.h"
 #include "engine/mesh/treemesh.h"
+#include "engine/mesh/valuenoise.h"
+#include "engine/util/exactround.h"
 #include "engine/util/random.h"
 
 using namespace sylva;
@@ -308,5 +310,87 @@ TEST(LeafTint, VertexBoxIsThePlainBox) {
                 plainBox(points, plainLo, plainHi);
                 EXPECT_TRUE(sameBits(lo, plainLo) && sameBits(hi, plainHi))
                     << count << " " << at << " " << variant;
+            }
+}
+
+namespace {
+
+// tintLeafCards one card at a time, as it was before its cards were taken in blocks: each card's
+// centre (its corners' mean in doubles, a division), its hash and noise, its variation and its
+// multiplier by tintMultiplier, then the next card.
+void cardByCardTint(mesh::Mesh& mesh, std::size_t firstVertex,
+                    const mesh::LeafColorVariation& variation, const glm::vec3& reference,
+                    double patchSize, std::uint64_t seed, std::span<const float> cardLight,
+                    double lightShading) {
+    const std::size_t n = mesh.positions.size();
+    mesh.colors.resize(n, glm::u8vec4(255));
+    mesh::ValueNoise noise(mixSeed(seed, 0x9a7c));
+    const double invPatch = patchSize > 0.0 ? 1.0 / patchSize : 0.0;
+    const bool shaded = lightShading > 0.0 && !cardLight.empty();
+    auto signedUnit = [](std::uint64_t h) {
+        return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0;
+    };
+    for (std::size_t v = firstVertex; v < n; v += 4) {
+        const std::size_t end = std::min(n, v + 4);
+        glm::dvec3 centre(0.0);
+        for (std::size_t k = v; k < end; ++k)
+            centre += glm::dvec3(mesh.positions[k]);
+        centre /= static_cast<double>(end - v);
+        std::uint64_t h = seed;
+        for (int k = 0; k < 3; ++k)
+            h = mixSeed(h, static_cast<std::uint64_t>(llroundExact(centre[k] * 1000.0)));
+        const glm::dvec3 patch = invPatch > 0.0 ? noise(centre * invPatch) : glm::dvec3(0.0);
+        double r[3];
+        for (int k = 0; k < 3; ++k) {
+            const double own = signedUnit(mixSeed(h, static_cast<std::uint64_t>(k)));
+            r[k] = invPatch > 0.0 ? std::clamp(0.4 * own + 0.6 * 2.0 * patch[k], -1.0, 1.0) : own;
+        }
+        const double dark = 0.5 + 0.5 * r[2];
+        const std::size_t card = (v - firstVertex) / 4;
+        const double lit =
+            shaded && card < cardLight.size() ? static_cast<double>(cardLight[card]) : 1.0;
+        const glm::u8vec4 tint = mesh::tintMultiplier(
+            reference, variation.hue * r[0], variation.saturation * r[1],
+            (1.0 - variation.brightness * dark * dark) * (1.0 - lightShading * (1.0 - lit)));
+        for (std::size_t k = v; k < end; ++k)
+            mesh.colors[k] = tint;
+    }
+}
+
+} // namespace
+
+// tintLeafCards (its cards eight at a time, each stage for the block's cards before the next)
+// against the card-by-card version above, bit for bit: card counts on either side of a block's
+// eight, a last card of one to three vertices, cards far apart and close together (a noise cell
+// shared or not), patches and none, light shading with fewer lights than cards, and colours
+// already on the mesh (white bark before the cards).
+TEST(LeafTint, BlocksOfCardsAreTheCardByCardColours) {
+    Rng rng(41);
+    for (std::size_t cards : {1u, 7u, 8u, 9u, 16u, 17u, 203u})
+        for (std::size_t extra : {0u, 1u, 2u, 3u})
+            for (int variant = 0; variant < 3; ++variant) {
+                const std::size_t vertices = 4 * cards + extra;
+                mesh::Mesh m;
+                const std::size_t bark = variant == 2 ? 5 : 0;
+                const double spread = variant == 0 ? 0.3 : 40.0;
+                for (std::size_t v = 0; v < bark + vertices; ++v)
+                    m.positions.push_back(
+                        glm::vec3(static_cast<float>(rng.uniform(-spread, spread)),
+                                  static_cast<float>(rng.uniform(0.0, 2.0 * spread)),
+                                  static_cast<float>(rng.uniform(-spread, spread))));
+                if (variant == 2) m.colors.assign(m.positions.size(), glm::u8vec4(9, 8, 7, 255));
+                std::vector<float> light(cards / 2 + 1);
+                for (float& l : light)
+                    l = static_cast<float>(rng.uniform(0.0, 1.0));
+                const mesh::LeafColorVariation variation{12.0, 0.3, 0.4};
+                const double patch = variant == 1 ? 0.0 : 1.5;
+                const double shading = variant == 0 ? 0.0 : 0.3;
+                mesh::Mesh blocks = m, plain = m;
+                mesh::tintLeafCards(blocks, bark, variation, kGreen, patch, 99, light, shading);
+                cardByCardTint(plain, bark, variation, kGreen, patch, 99, light, shading);
+                ASSERT_EQ(blocks.colors.size(), plain.colors.size());
+                EXPECT_TRUE(std::memcmp(blocks.colors.data(), plain.colors.data(),
+                                        plain.colors.size() * sizeof(glm::u8vec4)) == 0)
+                    << cards << " " << extra << " " << variant;
             }
 }
