@@ -3,7 +3,8 @@
 # seed by seed so that the shared machine's drift falls on both alike: two worker processes, one
 # per module folder, answer in turn (which goes first alternates), the least of the rounds a
 # seed, the mean over seeds. Run it in both orders; the same module against itself reads within
-# about 0.6 % (docs/perf/geometry.md, sixth pass).
+# about 0.6 % (docs/perf/geometry.md, sixth pass); with 4 rounds a stage reads within 1-2 %,
+# so use 16 for changes of a few per cent.
 #   python3 scripts/compare/stage_ab.py OLD_DIR NEW_DIR [rounds=4] [stage=grow] \
 #       [species=presets/english-oak.json]
 # OLD_DIR and NEW_DIR each hold one sylva*.so (e.g. copies of build/release/python).
@@ -38,7 +39,9 @@ def main():
         return p
 
     def ask(p, seed):
-        p.stdin.write(f"{seed} 2\n")
+        # One grow an ask: a second grow of the same seed is the species' cached result, with
+        # the same timings (a wasted grow, not a second sample); the rounds are the repeats.
+        p.stdin.write(f"{seed} 1\n")
         p.stdin.flush()
         return float(p.stdout.readline())
 
