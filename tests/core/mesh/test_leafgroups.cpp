@@ -104,3 +104,25 @@ TEST(LeafGroups, SameAsAMapOfCells) {
               plainGroups(std::vector<skel::Leaf>(1), 1.0, 4));
     EXPECT_EQ(compared, 108u);
 }
+
+// The first cell size is ruled out by a bound on its cells' count (distinct hash bits), not by a
+// fill: leaves two to a cell along a line, as many cells at the first size as the limit allows
+// (taken there: a bound that overcounts would go on to the next size) and one more (the next
+// size taken: one that undercounts, or compares with the limit one off, would stop there). The
+// small counts' cells mostly have a hash bit each, so a bound one off reaches the limit there.
+TEST(LeafGroups, FirstSizeRuledOutOnlyPastTheLimit) {
+    for (const int n : {8, 9, 12, 20, 21, 40, 200, 201, 202, 4000, 4002}) {
+        std::vector<skel::Leaf> leaves(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i) {
+            // Middles at x = 0.03 + 0.06 i: two a cell of 1.2 x the mean size 0.1 (0.12).
+            leaves[static_cast<std::size_t>(i)].position =
+                glm::vec3(0.03f + 0.06f * static_cast<float>(i), -0.05f, 0.0f);
+            leaves[static_cast<std::size_t>(i)].size = 0.1f;
+        }
+        const Groups groups = mesh::groupLeaves(leaves, 1.0, 2);
+        EXPECT_EQ(groups, plainGroups(leaves, 1.0, 2)) << n;
+        // n / 2 groups (rounded up) at the first size: taken where that is the limit (n even).
+        const bool firstSize = n % 2 == 0;
+        EXPECT_EQ(groups.size() == static_cast<std::size_t>((n + 1) / 2), firstSize) << n;
+    }
+}
