@@ -29,7 +29,8 @@ inline void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::
 }
 
 /// Each leaf's middle, position + 0.5 * size * heading in double (where a leaf belongs when
-/// leaves are grouped in cells): four leaves at a time on SSE2, bit for bit leafMiddlesPlain.
+/// leaves are grouped in cells): four leaves at a time on SSE2 (the heading as prepareCardFit
+/// makes it), bit for bit leafMiddlesPlain for finite quaternions.
 /// \return the sum of leaf.size x sizeScale in leaf order (the groups' mean leaf), made in the
 /// same pass (a pass of its own read the ~690 KB of the English oak's leaves once more).
 double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
@@ -46,7 +47,9 @@ struct CardFitInput {
 
 /// \p in for the leaves of \p group: four leaves at a time on SSE2, their quaternions turned
 /// into their axes and corners four lanes to a register, each lane the float operations of
-/// glm's quaternion product and leafCorners in order; the mean summed as the corners are made,
+/// leafCorners in order and the axes from the nine products of a quaternion's components the
+/// three share (glm's quaternion product less its products by 0 and 1: its bits for every
+/// finite quaternion); the mean summed as the corners are made,
 /// the covariance each point's coordinates two to a register: bit for bit
 /// prepareCardFitPlain's (perf record of the English oak: prepareCardFit 17 % of the cards'
 /// stage, three quaternion products and a card a leaf, one float at a time).

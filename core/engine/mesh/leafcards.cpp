@@ -4,16 +4,26 @@
 
 namespace sylva::mesh {
 
-CardSpan growForCards(Mesh& out, std::size_t cards) {
+namespace {
+
+CardSpan makeRoomForCards(Mesh& out, std::size_t cards, bool grow) {
     CardSpan span;
     span.firstVertex = out.positions.size();
     span.firstIndex = out.indices.size();
     if (out.submeshes.empty() && span.firstIndex > 0)
         out.submeshes.push_back({"bark", 0, static_cast<std::uint32_t>(span.firstIndex)});
     const std::size_t nv = span.firstVertex + 4 * cards;
-    out.positions.resize(nv);
-    out.normals.resize(nv, glm::vec3(0, 1, 0));
-    out.uvs.resize(nv, glm::vec2(0.0f));
+    if (grow) {
+        out.positions.resize(nv);
+        out.normals.resize(nv, glm::vec3(0, 1, 0));
+        out.uvs.resize(nv, glm::vec2(0.0f));
+        out.indices.resize(span.firstIndex + 6 * cards);
+    } else {
+        out.positions.reserve(nv);
+        out.normals.reserve(nv);
+        out.uvs.reserve(nv);
+        out.indices.reserve(span.firstIndex + 6 * cards);
+    }
     span.wind = !out.branchOrder.empty();
     if (span.wind) {
         out.branchOrder.resize(nv, 0);
@@ -23,8 +33,17 @@ CardSpan growForCards(Mesh& out, std::size_t cards) {
     if (span.ids) out.node.resize(nv, Mesh::kNoNode);
     // Leaf tints (leaftint.h) are given after the cards are made: white until then.
     if (!out.colors.empty()) out.colors.resize(nv, glm::u8vec4(255));
-    out.indices.resize(span.firstIndex + 6 * cards);
     return span;
+}
+
+} // namespace
+
+CardSpan growForCards(Mesh& out, std::size_t cards) {
+    return makeRoomForCards(out, cards, true);
+}
+
+CardSpan reserveForCards(Mesh& out, std::size_t cards) {
+    return makeRoomForCards(out, cards, false);
 }
 
 void appendLeafCards(Mesh& out, const std::vector<skel::Leaf>& leaves,

@@ -30,5 +30,8 @@ struct CardSpan {
     bool ids = false;  ///< the mesh carries Mesh::node
 };
 CardSpan growForCards(Mesh& out, std::size_t cards);
+/// growForCards with the positions, normals, uvs and indices reserved, not grown: the caller
+/// appends the cards' (push_back), in card order.
+CardSpan reserveForCards(Mesh& out, std::size_t cards);
 
 } // namespace sylva::mesh

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "engine/mesh/leafcards.h"
@@ -35,9 +36,9 @@ struct LeafClusterSettings {
 };
 
 /// Appends the leaves as cluster cards ("leaf" submesh). Leaves are grouped by cubic cells whose
-/// edge starts at 1.2 x the mean leaf length and grows by a quarter until the cards carry
-/// leavesPerCard leaves on average (at most twelve steps). Each group's card lies in the plane
-/// that best fits its leaf cards' corners (the two largest principal axes; its normal turned
+/// edge starts at 1.2 x the mean leaf length and grows by 8 % until there are no more cells than
+/// leaves / leavesPerCard (the 40th size taken whatever it gives). Each group's card lies in the
+/// plane that best fits its leaf cards' corners (the two largest principal axes; its normal turned
 /// toward the leaves' mean up axis), stem edge toward where its leaves start, and covers the
 /// corners' extent in that plane; so the cards keep the leaves' spread and their varied
 /// orientations, not one facing. A leaf alone keeps its own card (tile 7). Wind attributes and
@@ -52,6 +53,42 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
                                    const LeafClusterSettings& clusters,
                                    const skel::Skeleton* skeleton = nullptr,
                                    const std::function<bool(const skel::Leaf&)>& accept = {});
+
+/// appendLeafClusterCards in two steps: the leaves grouped, the groups' cards fitted and
+/// checked with \p accept (planLeafClusterCards), then written (appendLeafClusterCards with the
+/// plan). A tree's mesh makes the plan before its bark, so that the bark's arrays are made with
+/// room for the cards (TubeSettings::reserveVertices): growing them for the cards moved the
+/// bark's ~2 MB (the English oak).
+class LeafClusterPlan {
+public:
+    LeafClusterPlan();
+    ~LeafClusterPlan();
+    LeafClusterPlan(LeafClusterPlan&&) noexcept;
+    LeafClusterPlan& operator=(LeafClusterPlan&&) noexcept;
+    /// The cards (quads: four vertices, six indices) appendLeafClusterCards will append.
+    std::size_t cards() const { return mCards; }
+
+private:
+    struct Data;
+    std::unique_ptr<Data> mData;
+    std::size_t mCards = 0, mLeaves = 0;
+    bool mCrossed = false;
+    friend LeafClusterPlan planLeafClusterCards(const std::vector<skel::Leaf>&,
+                                                const LeafCardSettings&, const LeafClusterSettings&,
+                                                const std::function<bool(const skel::Leaf&)>&);
+    friend std::size_t appendLeafClusterCards(Mesh&, const std::vector<skel::Leaf>&,
+                                              const LeafClusterSettings&, const skel::Skeleton*,
+                                              const LeafClusterPlan&);
+};
+LeafClusterPlan planLeafClusterCards(const std::vector<skel::Leaf>& leaves,
+                                     const LeafCardSettings& cards,
+                                     const LeafClusterSettings& clusters,
+                                     const std::function<bool(const skel::Leaf&)>& accept = {});
+/// Writes \p plan's cards for the same \p leaves and \p clusters it was made with (else
+/// \throw InvalidInput). \return the number of cards made.
+std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& leaves,
+                                   const LeafClusterSettings& clusters,
+                                   const skel::Skeleton* skeleton, const LeafClusterPlan& plan);
 
 /// The groups appendLeafClusterCards makes: for each card, the indices of its leaves (in
 /// order of their first leaf). Exposed for tests.

@@ -902,15 +902,16 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
         v.reserve(n);
         if (fresh) adviseHugePages(v);
     };
-    reserveBig(out.positions, vOff[count]);
-    reserveBig(out.normals, vOff[count]);
-    reserveBig(out.uvs, vOff[count]);
+    const std::size_t vRoom = vOff[count] + settings.reserveVertices;
+    reserveBig(out.positions, vRoom);
+    reserveBig(out.normals, vRoom);
+    reserveBig(out.uvs, vRoom);
     if (wind) {
-        reserveBig(out.branchOrder, vOff[count]);
-        reserveBig(out.flexibility, vOff[count]);
+        reserveBig(out.branchOrder, vRoom);
+        reserveBig(out.flexibility, vRoom);
     }
-    if (ids) reserveBig(out.node, vOff[count]);
-    reserveBig(out.indices, iOff[count]);
+    if (ids) reserveBig(out.node, vRoom);
+    reserveBig(out.indices, iOff[count] + settings.reserveIndices);
     if (iOff[count] > iOff[0]) {
         if (out.submeshes.empty() && iOff[0] > 0)
             out.submeshes.push_back({"bark", 0, static_cast<std::uint32_t>(iOff[0])});
@@ -1000,6 +1001,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
     // Bark is not tinted: white where the mesh carries colours (leaf cards made before).
     if (settings.barkColorTop > settings.barkColorBottom && !s.empty()) {
         // The bark's colour by height: the low colour blending into the high one.
+        out.colors.reserve(vRoom);
         out.colors.resize(existing, glm::u8vec4(255));
         const auto ground = static_cast<double>(s.position[0].y);
         const double span = settings.barkColorTop - settings.barkColorBottom;

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <numeric>
@@ -123,4 +124,55 @@ TEST(CardFit, MiddlesMatchTheStraightforwardOnes) {
             EXPECT_EQ(std::memcmp(&fastSum, &plainSum, sizeof fastSum), 0) << count;
         }
     }
+}
+
+// The axes of every quaternion whose components are signed zeros, ±1, a value whose squares and
+// products are subnormal or vanish, and plain values (not normalised: any finite quaternion):
+// the corners, the axes' sums and the middles the straightforward ones' bit for bit, signed
+// zeros included (the products by 0 and 1 the SSE2 axes leave out; the +0 they still add, which
+// the middles of leaves at -0 show).
+TEST(CardFit, AxesOfQuaternionsWithZerosMatchTheStraightforwardOnes) {
+    const float values[] = {0.0f, -0.0f, 1.0f, -1.0f, 0.6f, -0.8f, 3e-20f, -1e-25f};
+    std::vector<skel::Leaf> leaves;
+    for (float x : values)
+        for (float y : values)
+            for (float z : values)
+                for (float w : values) {
+                    skel::Leaf leaf;
+                    leaf.position =
+                        glm::vec3(0.25f * static_cast<float>(leaves.size() % 7), 1.0f, -0.5f);
+                    leaf.orientation = glm::quat(w, x, y, z);
+                    leaf.size = 0.1f;
+                    leaves.push_back(leaf);
+                }
+    mesh::CardFitInput fast, plain;
+    for (std::uint32_t first = 0, size = 1; first < leaves.size();
+         first += size, size = size % 7 + 1) {
+        std::vector<std::uint32_t> group(std::min<std::size_t>(size, leaves.size() - first));
+        std::iota(group.begin(), group.end(), first);
+        mesh::prepareCardFit(leaves, group, 0.5f, 1.0f, fast);
+        mesh::prepareCardFitPlain(leaves, group, 0.5f, 1.0f, plain);
+        for (std::size_t k = 0; k < fast.corners.size(); ++k)
+            ASSERT_TRUE(sameBits(fast.corners[k], plain.corners[k])) << first << " " << k;
+        ASSERT_TRUE(sameBits(fast.heading, plain.heading)) << first;
+        ASSERT_TRUE(sameBits(fast.up, plain.up)) << first;
+        ASSERT_TRUE(sameBits(fast.left, plain.left)) << first;
+    }
+    // The axes alone, one leaf a group.
+    for (std::uint32_t i = 0; i < leaves.size(); ++i) {
+        const std::uint32_t one[] = {i};
+        mesh::prepareCardFit(leaves, one, 0.5f, 1.0f, fast);
+        mesh::prepareCardFitPlain(leaves, one, 0.5f, 1.0f, plain);
+        ASSERT_TRUE(sameBits(fast.heading, plain.heading)) << i;
+        ASSERT_TRUE(sameBits(fast.up, plain.up)) << i;
+        ASSERT_TRUE(sameBits(fast.left, plain.left)) << i;
+    }
+    // The middles at -0 (where a heading's -0 and +0 give middles of different bits).
+    for (skel::Leaf& leaf : leaves)
+        leaf.position = glm::vec3(-0.0f);
+    std::vector<glm::dvec3> fastMids, plainMids;
+    mesh::leafMiddles(leaves, 1.0, fastMids);
+    mesh::leafMiddlesPlain(leaves, 1.0, plainMids);
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+        ASSERT_TRUE(sameBits(fastMids[i], plainMids[i])) << i;
 }

@@ -269,6 +269,36 @@ TEST(TubeMesh, SameOnOneAndTwoThreads) {
     EXPECT_EQ(a.flexibility, b.flexibility);
 }
 
+// Room reserved past the bark (for a tree's leaf cards) changes no output, and is there.
+TEST(TubeMesh, RoomReservedForTheCardsChangesNothing) {
+    const auto s = bigTree();
+    mesh::TubeSettings settings;
+    settings.windAttributes = true;
+    settings.nodeIds = true;
+    settings.barkColorBottom = 0.0;
+    settings.barkColorTop = 2.0;
+    const auto plain = mesh::buildTubeMesh(s, settings);
+    settings.reserveVertices = 1000;
+    settings.reserveIndices = 1500;
+    const auto roomy = mesh::buildTubeMesh(s, settings);
+    EXPECT_EQ(roomy.positions, plain.positions);
+    EXPECT_EQ(roomy.normals, plain.normals);
+    EXPECT_EQ(roomy.uvs, plain.uvs);
+    EXPECT_EQ(roomy.indices, plain.indices);
+    EXPECT_EQ(roomy.branchOrder, plain.branchOrder);
+    EXPECT_EQ(roomy.flexibility, plain.flexibility);
+    EXPECT_EQ(roomy.node, plain.node);
+    EXPECT_EQ(roomy.colors, plain.colors);
+    ASSERT_FALSE(roomy.colors.empty());
+    const std::size_t v = roomy.positions.size() + 1000;
+    for (std::size_t capacity :
+         {roomy.positions.capacity(), roomy.normals.capacity(), roomy.uvs.capacity(),
+          roomy.branchOrder.capacity(), roomy.flexibility.capacity(), roomy.node.capacity(),
+          roomy.colors.capacity()})
+        EXPECT_GE(capacity, v);
+    EXPECT_GE(roomy.indices.capacity(), roomy.indices.size() + 1500);
+}
+
 TEST(TubeMesh, ZeroLengthAndZeroWidthSegmentsStayWellFormed) {
     const auto s = tree("FF(0)F!(0)F[+F(0)]");
     const auto m = mesh::buildTubeMesh(s, mesh::TubeSettings{});
