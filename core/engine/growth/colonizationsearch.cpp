@@ -19,51 +19,101 @@ namespace sylva::growth {
 namespace {
 
 #if SYLVA_OFFER_AVX
-/// AcceleratedSearch's offer of one node to a cell's points, eight lanes at a time where the
-/// processor has AVX (built for it alone, dispatched at run time): each lane the same float
-/// subtractions, products, sums and comparison as the SSE2 loop (no fused multiply-add: AVX
-/// alone has none), so the same distances, closest nodes and largest distance. The offers were
-/// most of the colonization search (perf record of the English oak: AcceleratedSearch::update
-/// 12 % of the tree). \p lanes is a multiple of 4. Returns the largest cached distance.
-__attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, const float* Z,
-                                              float* B, std::int32_t* N, std::uint32_t lanes,
-                                              float px, float py, float pz, std::int32_t node) {
-    const __m256 vx = _mm256_set1_ps(px), vy = _mm256_set1_ps(py), vz = _mm256_set1_ps(pz);
-    const __m256 vnode = _mm256_castsi256_ps(_mm256_set1_epi32(node));
+/// better ? node : n a lane, by its sign bit, in one instruction: GCC expands the intrinsic
+/// _mm256_blendv_ps of a comparison lane by lane in a target("avx") function.
+__attribute__((target("avx"), always_inline)) inline __m256 blendAvx(__m256 n, __m256 node,
+                                                                     __m256 better) {
+    asm("vblendvps %2, %1, %0, %0" : "+x"(n) : "x"(node), "x"(better));
+    return n;
+}
+
+/// Offers \p count nodes (coordinates \p cx, \p cy, \p cz, indices \p cn, in index order)
+/// to every lane of a cell, eight lanes at a time where the processor has AVX (built for it
+/// alone, dispatched at run time), the lanes' distances and nodes held in registers across the
+/// nodes instead of loaded and stored again for every node. Each lane sees the nodes in the
+/// same order through the same float subtractions, products, sums, comparison and min as the
+/// SSE2 loop (no fused multiply-add: AVX alone has none), so the same distances, closest nodes
+/// and largest distance. \p lanes is a multiple of 4. Returns the largest cached distance.
+__attribute__((target("avx"))) float offerChunkAvx(const float* X, const float* Y, const float* Z,
+                                                   float* B, std::int32_t* N, std::uint32_t lanes,
+                                                   const float* cx, const float* cy,
+                                                   const float* cz, const std::int32_t* cn,
+                                                   std::size_t count) {
+    const auto* cnf = reinterpret_cast<const float*>(cn);
     __m256 vm = _mm256_setzero_ps();
     std::uint32_t i = 0;
-    for (; i + 8 <= lanes; i += 8) {
-        const __m256 dx = _mm256_sub_ps(_mm256_loadu_ps(X + i), vx);
-        const __m256 dy = _mm256_sub_ps(_mm256_loadu_ps(Y + i), vy);
-        const __m256 dz = _mm256_sub_ps(_mm256_loadu_ps(Z + i), vz);
-        const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
-                                        _mm256_mul_ps(dz, dz));
-        // min(d2, b) is d2 < b ? d2 : b, the select by the same comparison, in one operation
-        // (a blendv for the node index came out as a branch a lane).
-        const __m256 b = _mm256_loadu_ps(B + i);
-        const __m256 better = _mm256_cmp_ps(d2, b, _CMP_LT_OQ);
-        const __m256 nb = _mm256_min_ps(d2, b);
-        _mm256_storeu_ps(B + i, nb);
+    for (; i + 16 <= lanes; i += 16) {
+        __m256 b0 = _mm256_loadu_ps(B + i), b1 = _mm256_loadu_ps(B + i + 8);
         auto* np = reinterpret_cast<float*>(N + i);
-        _mm256_storeu_ps(np, _mm256_or_ps(_mm256_and_ps(better, vnode),
-                                          _mm256_andnot_ps(better, _mm256_loadu_ps(np))));
-        vm = _mm256_max_ps(vm, nb);
+        __m256 n0 = _mm256_loadu_ps(np), n1 = _mm256_loadu_ps(np + 8);
+        for (std::size_t k = 0; k < count; ++k) {
+            const __m256 px = _mm256_broadcast_ss(cx + k);
+            const __m256 py = _mm256_broadcast_ss(cy + k);
+            const __m256 pz = _mm256_broadcast_ss(cz + k);
+            const __m256 node = _mm256_broadcast_ss(cnf + k);
+            const __m256 dx0 = _mm256_sub_ps(_mm256_loadu_ps(X + i), px);
+            const __m256 dy0 = _mm256_sub_ps(_mm256_loadu_ps(Y + i), py);
+            const __m256 dz0 = _mm256_sub_ps(_mm256_loadu_ps(Z + i), pz);
+            const __m256 dx1 = _mm256_sub_ps(_mm256_loadu_ps(X + i + 8), px);
+            const __m256 dy1 = _mm256_sub_ps(_mm256_loadu_ps(Y + i + 8), py);
+            const __m256 dz1 = _mm256_sub_ps(_mm256_loadu_ps(Z + i + 8), pz);
+            const __m256 d20 =
+                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx0, dx0), _mm256_mul_ps(dy0, dy0)),
+                              _mm256_mul_ps(dz0, dz0));
+            const __m256 d21 =
+                _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx1, dx1), _mm256_mul_ps(dy1, dy1)),
+                              _mm256_mul_ps(dz1, dz1));
+            const __m256 better0 = _mm256_cmp_ps(d20, b0, _CMP_LT_OQ);
+            const __m256 better1 = _mm256_cmp_ps(d21, b1, _CMP_LT_OQ);
+            b0 = _mm256_min_ps(d20, b0);
+            b1 = _mm256_min_ps(d21, b1);
+            n0 = blendAvx(n0, node, better0);
+            n1 = blendAvx(n1, node, better1);
+        }
+        _mm256_storeu_ps(B + i, b0);
+        _mm256_storeu_ps(B + i + 8, b1);
+        _mm256_storeu_ps(np, n0);
+        _mm256_storeu_ps(np + 8, n1);
+        vm = _mm256_max_ps(vm, _mm256_max_ps(b0, b1));
+    }
+    for (; i + 8 <= lanes; i += 8) {
+        __m256 b = _mm256_loadu_ps(B + i);
+        auto* np = reinterpret_cast<float*>(N + i);
+        __m256 n = _mm256_loadu_ps(np);
+        for (std::size_t k = 0; k < count; ++k) {
+            const __m256 node = _mm256_broadcast_ss(cnf + k);
+            const __m256 dx = _mm256_sub_ps(_mm256_loadu_ps(X + i), _mm256_broadcast_ss(cx + k));
+            const __m256 dy = _mm256_sub_ps(_mm256_loadu_ps(Y + i), _mm256_broadcast_ss(cy + k));
+            const __m256 dz = _mm256_sub_ps(_mm256_loadu_ps(Z + i), _mm256_broadcast_ss(cz + k));
+            const __m256 d2 = _mm256_add_ps(
+                _mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
+            const __m256 better = _mm256_cmp_ps(d2, b, _CMP_LT_OQ);
+            b = _mm256_min_ps(d2, b);
+            n = blendAvx(n, node, better);
+        }
+        _mm256_storeu_ps(B + i, b);
+        _mm256_storeu_ps(np, n);
+        vm = _mm256_max_ps(vm, b);
     }
     __m128 m = _mm_max_ps(_mm256_castps256_ps128(vm), _mm256_extractf128_ps(vm, 1));
     if (i < lanes) {
-        const __m128 dx = _mm_sub_ps(_mm_loadu_ps(X + i), _mm_set1_ps(px));
-        const __m128 dy = _mm_sub_ps(_mm_loadu_ps(Y + i), _mm_set1_ps(py));
-        const __m128 dz = _mm_sub_ps(_mm_loadu_ps(Z + i), _mm_set1_ps(pz));
-        const __m128 d2 =
-            _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-        const __m128 b = _mm_loadu_ps(B + i);
-        const __m128 better = _mm_cmplt_ps(d2, b);
-        const __m128 nb = _mm_min_ps(d2, b);
-        _mm_storeu_ps(B + i, nb);
+        __m128 b = _mm_loadu_ps(B + i);
         auto* np = reinterpret_cast<float*>(N + i);
-        _mm_storeu_ps(np, _mm_or_ps(_mm_and_ps(better, _mm256_castps256_ps128(vnode)),
-                                    _mm_andnot_ps(better, _mm_loadu_ps(np))));
-        m = _mm_max_ps(m, nb);
+        __m128 n = _mm_loadu_ps(np);
+        for (std::size_t k = 0; k < count; ++k) {
+            const __m128 node = _mm_broadcast_ss(cnf + k);
+            const __m128 dx = _mm_sub_ps(_mm_loadu_ps(X + i), _mm_broadcast_ss(cx + k));
+            const __m128 dy = _mm_sub_ps(_mm_loadu_ps(Y + i), _mm_broadcast_ss(cy + k));
+            const __m128 dz = _mm_sub_ps(_mm_loadu_ps(Z + i), _mm_broadcast_ss(cz + k));
+            const __m128 d2 =
+                _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+            const __m128 better = _mm_cmplt_ps(d2, b);
+            b = _mm_min_ps(d2, b);
+            n = _mm_or_ps(_mm_and_ps(better, node), _mm_andnot_ps(better, n));
+        }
+        _mm_storeu_ps(B + i, b);
+        _mm_storeu_ps(np, n);
+        m = _mm_max_ps(m, b);
     }
     alignas(16) float m4[4];
     _mm_store_ps(m4, m);
@@ -71,14 +121,30 @@ __attribute__((target("avx"))) float offerAvx(const float* X, const float* Y, co
 }
 
 /// The node-to-cell bound of every new node, eight nodes at a time (the SSE2 loop's
-/// subtractions, maxima, products and sums in each lane), and offerAvx inlined for each node
-/// that passes it, in index order. max2 only shrinks, so testing a block against the max2 of
-/// its start processes at most a node more for nothing (which changes no result), as the SSE2
-/// loop does a block of four. Returns the cell's new max2; \p touched when a node was offered.
+/// subtractions, maxima, products and sums in each lane); the nodes that pass it are gathered,
+/// in index order, kChunk at a time and offered together by offerChunkAvx. The cell's max2
+/// only shrinks, so a node tested against the max2 of its chunk's start, or of its block's,
+/// is at most offered for nothing (it improves no lane: changes no result), as the SSE2 loop
+/// offers a block of four. Returns the cell's new max2; \p touched when a node was offered.
 __attribute__((target("avx"))) float
 scanNodesAvx(const float* nx, const float* ny, const float* nz, std::size_t newNodes,
              std::size_t firstNew, const glm::vec3& lo, const glm::vec3& hi, float* X, float* Y,
              float* Z, float* B, std::int32_t* N, std::uint32_t lanes, float max2, bool& touched) {
+    constexpr std::size_t kChunk = 64;
+    float cx[kChunk], cy[kChunk], cz[kChunk];
+    std::int32_t cn[kChunk];
+    std::size_t count = 0;
+    auto take = [&](std::size_t k) {
+        cx[count] = nx[k];
+        cy[count] = ny[k];
+        cz[count] = nz[k];
+        cn[count] = static_cast<std::int32_t>(firstNew + k);
+        if (++count == kChunk) {
+            max2 = offerChunkAvx(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
+            touched = true;
+            count = 0;
+        }
+    };
     const __m256 vlx = _mm256_set1_ps(lo.x), vly = _mm256_set1_ps(lo.y), vlz = _mm256_set1_ps(lo.z);
     const __m256 vhx = _mm256_set1_ps(hi.x), vhy = _mm256_set1_ps(hi.y), vhz = _mm256_set1_ps(hi.z);
     const __m256 zero = _mm256_setzero_ps();
@@ -96,23 +162,18 @@ scanNodesAvx(const float* nx, const float* ny, const float* nz, std::size_t newN
         const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
                                         _mm256_mul_ps(dz, dz));
         int mask = _mm256_movemask_ps(_mm256_cmp_ps(d2, _mm256_set1_ps(max2), _CMP_LT_OQ));
-        for (; mask != 0; mask &= mask - 1) {
-            const std::size_t k =
-                j + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask)));
-            max2 = offerAvx(X, Y, Z, B, N, lanes, nx[k], ny[k], nz[k],
-                            static_cast<std::int32_t>(firstNew + k));
-            touched = true;
-        }
+        for (; mask != 0; mask &= mask - 1)
+            take(j + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(mask))));
     }
     for (; j < newNodes; ++j) {
         const float dx = std::max(std::max(lo.x - nx[j], nx[j] - hi.x), 0.0f);
         const float dy = std::max(std::max(lo.y - ny[j], ny[j] - hi.y), 0.0f);
         const float dz = std::max(std::max(lo.z - nz[j], nz[j] - hi.z), 0.0f);
-        if ((dx * dx + dy * dy) + dz * dz < max2) {
-            max2 = offerAvx(X, Y, Z, B, N, lanes, nx[j], ny[j], nz[j],
-                            static_cast<std::int32_t>(firstNew + j));
-            touched = true;
-        }
+        if ((dx * dx + dy * dy) + dz * dz < max2) take(j);
+    }
+    if (count > 0) {
+        max2 = offerChunkAvx(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
+        touched = true;
     }
     return max2;
 }
