@@ -419,39 +419,86 @@ struct AcceleratedSearch::Impl {
         }
         if (!anyKill) return;
 
+        // Without a branch on the kills (one misprediction or two each): every lane written
+        // at kept, kept advanced past the live ones. A live point's flag is 0, so storing the
+        // test sets exactly the killed ones.
+        std::uint32_t* ids = mId.data() + cell.begin;
         std::uint32_t kept = 0;
-        float keptMax = 0.0f;
-        float lox = std::numeric_limits<float>::infinity(), loy = lox, loz = lox;
-        float hix = -lox, hiy = -lox, hiz = -lox;
         for (std::uint32_t i = 0; i < cell.live; ++i) {
-            if (B[i] < dk2) {
-                s.killed[I[i]] = 1;
-                continue;
-            }
-            const float x = X[i], y = Y[i], z = Z[i];
-            X[kept] = x;
-            Y[kept] = y;
-            Z[kept] = z;
+            const bool kill = B[i] < dk2;
+            s.killed[I[i]] = static_cast<std::uint8_t>(kill);
+            X[kept] = X[i];
+            Y[kept] = Y[i];
+            Z[kept] = Z[i];
             B[kept] = B[i];
             N[kept] = N[i];
-            mId[cell.begin + kept] = I[i];
-            keptMax = std::max(keptMax, B[i]);
-            lox = std::min(lox, x);
-            loy = std::min(loy, y);
-            loz = std::min(loz, z);
-            hix = std::max(hix, x);
-            hiy = std::max(hiy, y);
-            hiz = std::max(hiz, z);
-            ++kept;
+            ids[kept] = I[i];
+            kept += kill ? 0u : 1u;
         }
         cell.live = kept;
-        cell.max2 = keptMax;
-        // The bounds of the points left: the dead ones need no node offered any more.
-        if (kept > 0) {
-            cell.lo = {lox, loy, loz};
-            cell.hi = {hix, hiy, hiz};
-        }
+        // The bounds of the points left (the dead ones need no node offered any more) and
+        // their largest distance: minima and maxima, the same in any order.
+        if (kept > 0)
+            boundLive(X, Y, Z, B, kept, cell);
+        else
+            cell.max2 = 0.0f;
         clearPadding(cell.begin, kept);
+    }
+
+    // cell.lo, cell.hi: the bounds of the \p live points; cell.max2 the largest of their B.
+    static void boundLive(const float* X, const float* Y, const float* Z, const float* B,
+                          std::uint32_t live, Cell& cell) {
+        float lox = X[0], loy = Y[0], loz = Z[0];
+        float hix = lox, hiy = loy, hiz = loz;
+        float m = B[0];
+        std::uint32_t i = 0;
+#if defined(__SSE2__)
+        if (live >= 4) {
+            __m128 l[3] = {_mm_loadu_ps(X), _mm_loadu_ps(Y), _mm_loadu_ps(Z)};
+            __m128 h[3] = {l[0], l[1], l[2]};
+            __m128 vm = _mm_loadu_ps(B);
+            for (i = 4; i + 4 <= live; i += 4) {
+                const __m128 x = _mm_loadu_ps(X + i), y = _mm_loadu_ps(Y + i),
+                             z = _mm_loadu_ps(Z + i);
+                l[0] = _mm_min_ps(l[0], x);
+                l[1] = _mm_min_ps(l[1], y);
+                l[2] = _mm_min_ps(l[2], z);
+                h[0] = _mm_max_ps(h[0], x);
+                h[1] = _mm_max_ps(h[1], y);
+                h[2] = _mm_max_ps(h[2], z);
+                vm = _mm_max_ps(vm, _mm_loadu_ps(B + i));
+            }
+            alignas(16) float a[7][4];
+            _mm_store_ps(a[0], l[0]);
+            _mm_store_ps(a[1], l[1]);
+            _mm_store_ps(a[2], l[2]);
+            _mm_store_ps(a[3], h[0]);
+            _mm_store_ps(a[4], h[1]);
+            _mm_store_ps(a[5], h[2]);
+            _mm_store_ps(a[6], vm);
+            for (int k = 0; k < 4; ++k) {
+                lox = std::min(lox, a[0][k]);
+                loy = std::min(loy, a[1][k]);
+                loz = std::min(loz, a[2][k]);
+                hix = std::max(hix, a[3][k]);
+                hiy = std::max(hiy, a[4][k]);
+                hiz = std::max(hiz, a[5][k]);
+                m = std::max(m, a[6][k]);
+            }
+        }
+#endif
+        for (; i < live; ++i) {
+            lox = std::min(lox, X[i]);
+            loy = std::min(loy, Y[i]);
+            loz = std::min(loz, Z[i]);
+            hix = std::max(hix, X[i]);
+            hiy = std::max(hiy, Y[i]);
+            hiz = std::max(hiz, Z[i]);
+            m = std::max(m, B[i]);
+        }
+        cell.lo = {lox, loy, loz};
+        cell.hi = {hix, hiy, hiz};
+        cell.max2 = m;
     }
 
     // About pointsPerCell() points per cell, never finer than d_i / 8 (the pruning works on
