@@ -112,6 +112,41 @@ TEST(SpaceColonization, AcceleratedEqualsNaiveManyCells) {
     EXPECT_GT(fast.killedCount, 3000u);
 }
 
+// A bush of 300 initial nodes, every one in reach of every cell at first: the search gathers
+// the nodes that pass a cell's bound 64 at a time (more than one gathering a cell), and offers
+// them to its lanes 16, 8 and 4 at a time. Pairs of nodes at one position, 1, 63, 64 and 65
+// apart in index, tie exactly: the lower index must win across a gathering's end.
+TEST(SpaceColonization, AcceleratedEqualsNaiveManyNodesACell) {
+    skel::Skeleton bush;
+    bush.addNode({0, 0, 0}, -1, 0.2f, 0, glm::quat(1, 0, 0, 0));
+    const std::vector<glm::vec3> spots = Envelope::ellipsoid({0, 4, 0}, {3, 2, 3}).sample(240, 21);
+    for (std::size_t i = 0; bush.size() < 300; ++i) {
+        const std::size_t k = bush.size();
+        // Every fourth node repeats the position of the node 1, 63, 64 or 65 before it.
+        const std::size_t back = k % 4 == 0 && k > 70  ? std::size_t{63} + (k / 4) % 3
+                                 : k % 4 == 1 && k > 2 ? 1
+                                                       : 0;
+        const glm::vec3 at = back > 0 ? bush.position[k - back] : spots[i % spots.size()];
+        bush.addNode(at, 0, 0.05f, 1, glm::quat(1, 0, 0, 0));
+    }
+    bush.finalize();
+    ColonizationParams p;
+    p.influenceDistance = 7.0f;
+    p.killDistance = 0.35f;
+    p.segmentLength = 0.12f;
+    p.randomness = 0.2f;
+    for (std::uint64_t seed : {3u, 4u}) {
+        p.seed = seed;
+        const auto points = Envelope::ellipsoid({0, 4, 0}, {4, 3, 4}).sample(2501, seed);
+        const ColonizationResult fast = colonize(points, p, &bush, NeighbourSearch::Accelerated);
+        const ColonizationResult slow = colonize(points, p, &bush, NeighbourSearch::Naive);
+        expectIdentical(fast.skeleton, slow.skeleton);
+        EXPECT_EQ(fast.killed, slow.killed);
+        EXPECT_EQ(fast.iterations, slow.iterations);
+        EXPECT_GT(fast.skeleton.size(), bush.size() + 500);
+    }
+}
+
 TEST(SpaceColonization, EveryPointKilledOrOutOfReach) {
     const auto points = spherePoints(1000);
     const ColonizationParams p = referenceParams();
