@@ -205,33 +205,84 @@ void updateNaive(PointState& s, const std::vector<glm::vec3>& nodes, float di2, 
 }
 
 struct AcceleratedSearch::Impl {
+    // The points sorted into cells by a counting sort straight into the lanes: PointGrid's
+    // cells (its cell size, its cap on the table), each cell's points in increasing index
+    // order, without its copies of the points, its per-point divisions by floor and its
+    // vectors (it was a third of the search's setup, ~3 % of the oak's grow stage). Which cell
+    // a point falls in changes what is pruned, never a result: any partition gives the same.
     Impl(const std::vector<glm::vec3>& points, float di) {
-        const PointGrid grid(points, cellSizeFor(points, di));
-        std::size_t total = 0;
-        for (const PointGrid::Cell& c : grid.cells())
-            total += padded(c.end - c.begin);
+        const std::size_t n = points.size();
+        glm::vec3 lo = points[0], hi = lo;
+        for (const glm::vec3& p : points) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        // PointGrid's table: at most four entries a point (or 4,096), the cell enlarged if not.
+        const double maxCells = std::max(4096.0, 4.0 * static_cast<double>(n));
+        const glm::dvec3 extent = glm::dvec3(hi - lo);
+        double h = cellSizeFor(lo, hi, n, di);
+        for (;;) {
+            const double cells = (std::floor(extent.x / h) + 1) * (std::floor(extent.y / h) + 1) *
+                                 (std::floor(extent.z / h) + 1);
+            if (cells <= maxCells) break;
+            h *= 1.25;
+        }
+        const glm::ivec3 dims(static_cast<int>(std::floor(extent.x / h)) + 1,
+                              static_cast<int>(std::floor(extent.y / h)) + 1,
+                              static_cast<int>(std::floor(extent.z / h)) + 1);
+        const auto inv = static_cast<float>(1.0 / h);
+        const auto tableSize = static_cast<std::size_t>(dims.x) * static_cast<std::size_t>(dims.y) *
+                               static_cast<std::size_t>(dims.z);
+        std::vector<std::uint32_t> cellOf(n);
+        std::vector<std::uint32_t> count(tableSize, 0);
+        // p - lo >= 0, so truncation is the floor; the last cell takes what rounds past it.
+        auto axis = [inv](float p, float l, int dim) {
+            return static_cast<std::size_t>(std::min(static_cast<int>((p - l) * inv), dim - 1));
+        };
+        for (std::size_t i = 0; i < n; ++i) {
+            const glm::vec3& p = points[i];
+            const std::size_t c = (axis(p.z, lo.z, dims.z) * static_cast<std::size_t>(dims.y) +
+                                   axis(p.y, lo.y, dims.y)) *
+                                      static_cast<std::size_t>(dims.x) +
+                                  axis(p.x, lo.x, dims.x);
+            cellOf[i] = static_cast<std::uint32_t>(c);
+            ++count[c];
+        }
+        // Each non-empty cell's first lane (the cursor of the sort), cells in table order.
+        std::vector<std::uint32_t> cursor(tableSize);
+        std::uint32_t total = 0;
+        std::size_t cellCount = 0;
+        for (std::size_t t = 0; t < tableSize; ++t) {
+            cursor[t] = total;
+            total += padded(count[t]);
+            cellCount += count[t] > 0 ? 1 : 0;
+        }
         mX.resize(total);
         mY.resize(total);
         mZ.resize(total);
         mBest2.resize(total);
         mNode.resize(total);
         mId.resize(total);
-        std::uint32_t begin = 0;
-        for (const PointGrid::Cell& c : grid.cells()) {
-            const std::uint32_t n = c.end - c.begin;
-            for (std::uint32_t k = 0; k < n; ++k) {
-                const std::uint32_t i = grid.order()[c.begin + k];
-                mX[begin + k] = points[i].x;
-                mY[begin + k] = points[i].y;
-                mZ[begin + k] = points[i].z;
-                mBest2[begin + k] = di * di;
-                mNode[begin + k] = -1;
-                mId[begin + k] = i;
-            }
-            clearPadding(begin, n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t k = cursor[cellOf[i]]++;
+            mX[k] = points[i].x;
+            mY[k] = points[i].y;
+            mZ[k] = points[i].z;
+            mBest2[k] = di * di;
+            mNode[k] = -1;
+            mId[k] = static_cast<std::uint32_t>(i);
+        }
+        mCells.reserve(cellCount);
+        mActive.reserve(cellCount);
+        for (std::size_t t = 0; t < tableSize; ++t) {
+            const std::uint32_t live = count[t];
+            if (live == 0) continue;
+            Cell cell{cursor[t] - live, live, 0.0f, {}, {}};
+            boundLive(mX.data() + cell.begin, mY.data() + cell.begin, mZ.data() + cell.begin,
+                      mBest2.data() + cell.begin, live, cell);
+            clearPadding(cell.begin, live);
             mActive.push_back(static_cast<std::uint32_t>(mCells.size()));
-            mCells.push_back({begin, n, di * di, c.lo, c.hi});
-            begin += padded(n);
+            mCells.push_back(cell);
         }
     }
 
@@ -508,15 +559,10 @@ struct AcceleratedSearch::Impl {
     // spacecol 11 %, the oak 2 %, as the nodes were offered to whole cells four at a time;
     // 64 no better than 32 then; 64 against 32 once the offers took eight lanes (offerAvx):
     // perf_gate spacecol 6 %, the oak 1 %).
-    static float cellSizeFor(const std::vector<glm::vec3>& points, float di) {
-        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        for (const glm::vec3& p : points) {
-            lo = glm::min(lo, p);
-            hi = glm::max(hi, p);
-        }
+    static float cellSizeFor(const glm::vec3& lo, const glm::vec3& hi, std::size_t points,
+                             float di) {
         const glm::dvec3 e = glm::max(glm::dvec3(hi - lo), glm::dvec3(1e-3));
-        const double h =
-            std::cbrt(e.x * e.y * e.z * pointsPerCell() / static_cast<double>(points.size()));
+        const double h = std::cbrt(e.x * e.y * e.z * pointsPerCell() / static_cast<double>(points));
         return static_cast<float>(std::max(h, static_cast<double>(di) / 8.0));
     }
     // 64 with the eight-lane offers, 32 with SSE2's four (64 there: perf_gate spacecol 0.379
