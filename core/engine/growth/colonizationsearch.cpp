@@ -267,6 +267,45 @@ __attribute__((target("avx"))) float scanNodesAvx(const float* nx, const float* 
     return max2;
 }
 
+/// Moves the lanes of the \p live points not killed (B < \p dk2) down, in order, sixteen at a
+/// time: each block's kept lanes compressed into a register and stored at the count so far
+/// (before any lane not yet read), its killed points flagged. What the scalar loop of
+/// updateCell does, without its store of every lane one by one. Returns the lanes kept.
+__attribute__((target("avx512f"))) std::uint32_t
+compactAvx512(float* X, float* Y, float* Z, float* B, std::int32_t* N, std::uint32_t* ids,
+              std::uint32_t live, float dk2, std::uint8_t* killed) {
+    const __m512 vdk2 = _mm512_set1_ps(dk2);
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < live; i += 16) {
+        const auto in = static_cast<__mmask16>(live - i >= 16 ? 0xFFFFu : (1u << (live - i)) - 1u);
+        const __m512 b = _mm512_maskz_loadu_ps(in, B + i);
+        const __mmask16 kill = _mm512_mask_cmp_ps_mask(in, b, vdk2, _CMP_LT_OQ);
+        const auto keep = static_cast<__mmask16>(in & ~kill);
+        const auto n = static_cast<std::uint32_t>(__builtin_popcount(keep));
+        if (kill == 0 && kept == i) { // nothing killed so far: the lanes stay where they are
+            kept += n;
+            continue;
+        }
+        for (unsigned m = kill; m != 0; m &= m - 1)
+            killed[ids[i + static_cast<std::uint32_t>(__builtin_ctz(m))]] = 1;
+        const auto out = static_cast<__mmask16>((1u << n) - 1u);
+        _mm512_mask_storeu_ps(X + kept, out,
+                              _mm512_maskz_compress_ps(keep, _mm512_maskz_loadu_ps(in, X + i)));
+        _mm512_mask_storeu_ps(Y + kept, out,
+                              _mm512_maskz_compress_ps(keep, _mm512_maskz_loadu_ps(in, Y + i)));
+        _mm512_mask_storeu_ps(Z + kept, out,
+                              _mm512_maskz_compress_ps(keep, _mm512_maskz_loadu_ps(in, Z + i)));
+        _mm512_mask_storeu_ps(B + kept, out, _mm512_maskz_compress_ps(keep, b));
+        _mm512_mask_storeu_epi32(
+            N + kept, out, _mm512_maskz_compress_epi32(keep, _mm512_maskz_loadu_epi32(in, N + i)));
+        _mm512_mask_storeu_epi32(
+            ids + kept, out,
+            _mm512_maskz_compress_epi32(keep, _mm512_maskz_loadu_epi32(in, ids + i)));
+        kept += n;
+    }
+    return kept;
+}
+
 // The processor's features read first (a static initializer may run before libgcc's own).
 // SYLVA_NO_AVX=1 takes the SSE2 offers on any processor (its tests run them on one with AVX).
 const bool kHasAvx =
@@ -568,17 +607,22 @@ struct AcceleratedSearch::Impl {
         // test sets exactly the killed ones.
         std::uint32_t* ids = mId.data() + cell.begin;
         std::uint32_t kept = 0;
-        for (std::uint32_t i = 0; i < cell.live; ++i) {
-            const bool kill = B[i] < dk2;
-            s.killed[I[i]] = static_cast<std::uint8_t>(kill);
-            X[kept] = X[i];
-            Y[kept] = Y[i];
-            Z[kept] = Z[i];
-            B[kept] = B[i];
-            N[kept] = N[i];
-            ids[kept] = I[i];
-            kept += kill ? 0u : 1u;
-        }
+#if SYLVA_OFFER_AVX
+        if (Avx && kHasAvx512)
+            kept = compactAvx512(X, Y, Z, B, N, ids, cell.live, dk2, s.killed.data());
+        else
+#endif
+            for (std::uint32_t i = 0; i < cell.live; ++i) {
+                const bool kill = B[i] < dk2;
+                s.killed[I[i]] = static_cast<std::uint8_t>(kill);
+                X[kept] = X[i];
+                Y[kept] = Y[i];
+                Z[kept] = Z[i];
+                B[kept] = B[i];
+                N[kept] = N[i];
+                ids[kept] = I[i];
+                kept += kill ? 0u : 1u;
+            }
         cell.live = kept;
         // The bounds of the points left (the dead ones need no node offered any more) and
         // their largest distance: minima and maxima, the same in any order.
