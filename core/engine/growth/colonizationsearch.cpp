@@ -209,16 +209,16 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
     return std::max(std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3])), tail);
 }
 
-using OfferChunk = float (*)(const float*, const float*, const float*, float*, std::int32_t*,
-                             std::uint32_t, const float*, const float*, const float*,
-                             const std::int32_t*, std::size_t);
-
-__attribute__((target("avx"))) float scanNodesAvx(const float* nx, const float* ny, const float* nz,
-                                                  std::size_t newNodes, std::size_t firstNew,
-                                                  const glm::vec3& lo, const glm::vec3& hi,
-                                                  float* X, float* Y, float* Z, float* B,
-                                                  std::int32_t* N, std::uint32_t lanes, float max2,
-                                                  bool& touched, OfferChunk offer) {
+/// The node-to-cell bound of every new node, eight nodes at a time (the SSE2 loop's
+/// subtractions, maxima, products and sums in each lane); the nodes that pass it are gathered,
+/// in index order, kChunk at a time and offered together by offerChunkAvx. The cell's max2
+/// only shrinks, so a node tested against the max2 of its chunk's start, or of its block's,
+/// is at most offered for nothing (it improves no lane: changes no result), as the SSE2 loop
+/// offers a block of four. Returns the cell's new max2; \p touched when a node was offered.
+__attribute__((target("avx"))) float
+scanNodesAvx(const float* nx, const float* ny, const float* nz, std::size_t newNodes,
+             std::size_t firstNew, const glm::vec3& lo, const glm::vec3& hi, float* X, float* Y,
+             float* Z, float* B, std::int32_t* N, std::uint32_t lanes, float max2, bool& touched) {
     constexpr std::size_t kChunk = 64;
     float cx[kChunk], cy[kChunk], cz[kChunk];
     std::int32_t cn[kChunk];
@@ -229,7 +229,7 @@ __attribute__((target("avx"))) float scanNodesAvx(const float* nx, const float* 
         cz[count] = nz[k];
         cn[count] = static_cast<std::int32_t>(firstNew + k);
         if (++count == kChunk) {
-            max2 = offer(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
+            max2 = offerChunkAvx(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
             touched = true;
             count = 0;
         }
@@ -261,7 +261,7 @@ __attribute__((target("avx"))) float scanNodesAvx(const float* nx, const float* 
         if ((dx * dx + dy * dy) + dz * dz < max2) take(j);
     }
     if (count > 0) {
-        max2 = offer(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
+        max2 = offerChunkAvx(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
         touched = true;
     }
     return max2;
@@ -304,6 +304,59 @@ compactAvx512(float* X, float* Y, float* Z, float* B, std::int32_t* N, std::uint
         kept += n;
     }
     return kept;
+}
+
+/// scanNodesAvx with AVX-512: sixteen nodes tested at a time (the same subtractions, maxima,
+/// products and unfused sums a lane), the nodes that pass compressed into the chunk (their
+/// coordinates and indices, in index order) without a branch a node, the last group by a
+/// masked load; a chunk of 49 to 64 nodes offered by offerChunkAvx512 (any chunking offers
+/// each lane the same nodes in the same order).
+__attribute__((target("avx512f"))) float
+scanNodesAvx512(const float* nx, const float* ny, const float* nz, std::size_t newNodes,
+                std::size_t firstNew, const glm::vec3& lo, const glm::vec3& hi, float* X, float* Y,
+                float* Z, float* B, std::int32_t* N, std::uint32_t lanes, float max2,
+                bool& touched) {
+    constexpr std::size_t kChunk = 64;
+    alignas(64) float cx[kChunk + 16], cy[kChunk + 16], cz[kChunk + 16];
+    alignas(64) std::int32_t cn[kChunk + 16];
+    std::size_t count = 0;
+    const __m512 vlx = _mm512_set1_ps(lo.x), vly = _mm512_set1_ps(lo.y), vlz = _mm512_set1_ps(lo.z);
+    const __m512 vhx = _mm512_set1_ps(hi.x), vhy = _mm512_set1_ps(hi.y), vhz = _mm512_set1_ps(hi.z);
+    const __m512 zero = _mm512_setzero_ps();
+    const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    for (std::size_t j = 0; j < newNodes; j += 16) {
+        const auto in =
+            static_cast<__mmask16>(newNodes - j >= 16 ? 0xFFFFu : (1u << (newNodes - j)) - 1u);
+        const __m512 x = _mm512_maskz_loadu_ps(in, nx + j);
+        const __m512 y = _mm512_maskz_loadu_ps(in, ny + j);
+        const __m512 z = _mm512_maskz_loadu_ps(in, nz + j);
+        const __m512 dx =
+            _mm512_max_ps(_mm512_max_ps(_mm512_sub_ps(vlx, x), _mm512_sub_ps(x, vhx)), zero);
+        const __m512 dy =
+            _mm512_max_ps(_mm512_max_ps(_mm512_sub_ps(vly, y), _mm512_sub_ps(y, vhy)), zero);
+        const __m512 dz =
+            _mm512_max_ps(_mm512_max_ps(_mm512_sub_ps(vlz, z), _mm512_sub_ps(z, vhz)), zero);
+        const __m512 d2 =
+            add512(add512(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
+        const __mmask16 pass = _mm512_mask_cmp_ps_mask(in, d2, _mm512_set1_ps(max2), _CMP_LT_OQ);
+        _mm512_storeu_ps(cx + count, _mm512_maskz_compress_ps(pass, x));
+        _mm512_storeu_ps(cy + count, _mm512_maskz_compress_ps(pass, y));
+        _mm512_storeu_ps(cz + count, _mm512_maskz_compress_ps(pass, z));
+        const __m512i index =
+            _mm512_add_epi32(_mm512_set1_epi32(static_cast<std::int32_t>(firstNew + j)), lane);
+        _mm512_storeu_si512(cn + count, _mm512_maskz_compress_epi32(pass, index));
+        count += static_cast<std::size_t>(__builtin_popcount(pass));
+        if (count > kChunk - 16) {
+            max2 = offerChunkAvx512(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
+            touched = true;
+            count = 0;
+        }
+    }
+    if (count > 0) {
+        max2 = offerChunkAvx512(X, Y, Z, B, N, lanes, cx, cy, cz, cn, count);
+        touched = true;
+    }
+    return max2;
 }
 
 // The processor's features read first (a static initializer may run before libgcc's own).
@@ -556,9 +609,10 @@ struct AcceleratedSearch::Impl {
         std::size_t j = 0;
 #if SYLVA_OFFER_AVX
         if constexpr (Avx) {
-            max2 =
-                scanNodesAvx(nx, ny, nz, newNodes, firstNew, cell.lo, cell.hi, X, Y, Z, B, N, lanes,
-                             max2, touched, kHasAvx512 ? offerChunkAvx512 : offerChunkAvx);
+            max2 = kHasAvx512 ? scanNodesAvx512(nx, ny, nz, newNodes, firstNew, cell.lo, cell.hi, X,
+                                                Y, Z, B, N, lanes, max2, touched)
+                              : scanNodesAvx(nx, ny, nz, newNodes, firstNew, cell.lo, cell.hi, X, Y,
+                                             Z, B, N, lanes, max2, touched);
             j = newNodes;
         }
 #endif
