@@ -135,8 +135,7 @@ __attribute__((target("avx512f"), always_inline)) inline __m512 add512(__m512 a,
 /// offerChunkAvx with sixteen lanes a register where the processor has AVX-512 (built for it
 /// alone, dispatched at run time; SYLVA_NO_AVX512=1 takes the AVX offers): each lane the same
 /// subtractions, products, sums (add512: none fused), comparison and min, the node taken by
-/// a masked move; its last 4 to 12 lanes by offerChunkAvx (not inlined here, where its sums
-/// could be fused). The offers were ~45 % of the oak's colonization; a 16-lane block costs the same
+/// a masked move. The offers were ~45 % of the oak's colonization; a 16-lane block costs the same
 /// instructions as an 8-lane one.
 __attribute__((target("avx512f"))) float
 offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::int32_t* N,
@@ -196,17 +195,37 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
         vm = _mm512_max_ps(vm, b);
         i += 16;
     }
-    // The last 4 to 12 lanes (a multiple of 4) as offerChunkAvx does them, then the maxima.
-    const float tail = i < lanes ? offerChunkAvx(X + i, Y + i, Z + i, B + i, N + i, lanes - i, cx,
-                                                 cy, cz, cn, count)
-                                 : 0.0f;
+    // The last 4 to 12 lanes (a multiple of 4) by the same block under a mask: the lanes past
+    // them are neither read nor written (their B read as 0 raises no maximum).
+    if (i < lanes) {
+        const auto in = static_cast<__mmask16>((1u << (lanes - i)) - 1u);
+        __m512 b = _mm512_maskz_loadu_ps(in, B + i);
+        auto* np = reinterpret_cast<float*>(N + i);
+        __m512 n = _mm512_maskz_loadu_ps(in, np);
+        const __m512 x = _mm512_maskz_loadu_ps(in, X + i);
+        const __m512 y = _mm512_maskz_loadu_ps(in, Y + i);
+        const __m512 z = _mm512_maskz_loadu_ps(in, Z + i);
+        for (std::size_t k = 0; k < count; ++k) {
+            const __m512 dx = _mm512_sub_ps(x, _mm512_set1_ps(cx[k]));
+            const __m512 dy = _mm512_sub_ps(y, _mm512_set1_ps(cy[k]));
+            const __m512 dz = _mm512_sub_ps(z, _mm512_set1_ps(cz[k]));
+            const __m512 d2 =
+                add512(add512(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
+            const __mmask16 better = _mm512_cmp_ps_mask(d2, b, _CMP_LT_OQ);
+            b = _mm512_min_ps(d2, b);
+            n = _mm512_mask_mov_ps(n, better, _mm512_set1_ps(cnf[k]));
+        }
+        _mm512_mask_storeu_ps(B + i, in, b);
+        _mm512_mask_storeu_ps(np, in, n);
+        vm = _mm512_max_ps(vm, b);
+    }
     const __m256 m8 =
         _mm256_max_ps(_mm512_castps512_ps256(vm),
                       _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(vm), 1)));
     __m128 m = _mm_max_ps(_mm256_castps256_ps128(m8), _mm256_extractf128_ps(m8, 1));
     alignas(16) float m4[4];
     _mm_store_ps(m4, m);
-    return std::max(std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3])), tail);
+    return std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3]));
 }
 
 /// The node-to-cell bound of every new node, eight nodes at a time (the SSE2 loop's
