@@ -382,6 +382,29 @@ scanNodesAvx512(const float* nx, const float* ny, const float* nz, std::size_t n
     return max2;
 }
 
+/// dropKilled's AVX-512 pass over the \p n ids of \p live (increasing) with the flags of
+/// \p points points: each block's flags gathered (four bytes from a flag: blocks whose last id
+/// is within three of the end go one by one), its live ids compressed and stored at the count
+/// so far. Returns the count.
+__attribute__((target("avx512f"))) std::size_t dropKilledAvx512(std::uint32_t* live, std::size_t n,
+                                                                const std::uint8_t* killed,
+                                                                std::size_t points) {
+    const __m512i low = _mm512_set1_epi32(0xFF);
+    std::size_t out = 0, i = 0;
+    for (; i + 16 <= n && live[i + 15] + std::size_t{3} < points; i += 16) {
+        const __m512i ids = _mm512_loadu_si512(live + i);
+        const __m512i flags = _mm512_and_si512(_mm512_i32gather_epi32(ids, killed, 1), low);
+        const __mmask16 keep = _mm512_cmpeq_epi32_mask(flags, _mm512_setzero_si512());
+        _mm512_storeu_si512(live + out, _mm512_maskz_compress_epi32(keep, ids));
+        out += static_cast<std::size_t>(__builtin_popcount(keep));
+    }
+    for (; i < n; ++i) {
+        live[out] = live[i];
+        out += killed[live[i]] == 0 ? 1 : 0;
+    }
+    return out;
+}
+
 // The processor's features read first (a static initializer may run before libgcc's own).
 // SYLVA_NO_AVX=1 takes the SSE2 offers on any processor (its tests run them on one with AVX).
 const bool kHasAvx =
@@ -392,6 +415,17 @@ const bool kHasAvx512 =
 #endif
 
 } // namespace
+
+void dropKilled(PointState& s) {
+#if SYLVA_OFFER_AVX
+    if (kHasAvx512) {
+        s.live.resize(
+            dropKilledAvx512(s.live.data(), s.live.size(), s.killed.data(), s.killed.size()));
+        return;
+    }
+#endif
+    std::erase_if(s.live, [&s](std::uint32_t a) { return s.killed[a] != 0; });
+}
 
 void updateNaive(PointState& s, const std::vector<glm::vec3>& nodes, float di2, float dk2) {
     for (std::uint32_t a : s.live) {

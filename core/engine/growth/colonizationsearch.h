@@ -18,6 +18,11 @@ struct PointState {
     std::vector<std::uint32_t> live; ///< live points in increasing index order
 };
 
+/// Drops the points killed by the last update (\p s.killed) from \p s.live, keeping its order:
+/// sixteen at a time with AVX-512 (their flags gathered, the kept ones compressed), else by
+/// erase_if.
+void dropKilled(PointState& s);
+
 /// The oracle: every live point against every node, every iteration.
 void updateNaive(PointState& s, const std::vector<glm::vec3>& nodes, float di2, float dk2);
 

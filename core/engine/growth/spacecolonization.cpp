@@ -184,7 +184,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
             fast->update(s, searched, firstNew, dk2);
         else
             updateNaive(s, searched, di2, dk2);
-        std::erase_if(s.live, [&s](std::uint32_t a) { return s.killed[a] != 0; });
+        dropKilled(s);
         firstNew = skel.size();
         if (s.live.empty()) {
             result.stopReason = StopReason::NoPointsLeft;
