@@ -39,12 +39,21 @@ bool gatherLightAndMarkShed(const MetamerTopology& t, std::span<const double> te
     scratch.resize(n);
     ShedSums* sums = scratch.data();
     const auto count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static) if (count > 8192)
-    for (std::int64_t k = 0; k < count; ++k) {
+    auto own = [&](std::int64_t k) {
         const auto i = static_cast<std::size_t>(k);
-        const double own = (t.mainChild[i] < 0 ? terminalLight[i] : 0.0) +
-                           (t.lateralChild[i] < 0 ? axillaryLight[i] : 0.0);
-        sums[i] = {own, own, 1, 1};
+        const double o = (t.mainChild[i] < 0 ? terminalLight[i] : 0.0) +
+                         (t.lateralChild[i] < 0 ? axillaryLight[i] : 0.0);
+        sums[i] = {o, o, 1, 1};
+    };
+    // The region only where it runs in parallel: a `parallel for ... if` that fails still
+    // starts a team of one and ends it at a barrier (a futex call a self-organizing cycle).
+    if (count > 8192) {
+#pragma omp parallel for schedule(static)
+        for (std::int64_t k = 0; k < count; ++k)
+            own(k);
+    } else {
+        for (std::int64_t k = 0; k < count; ++k)
+            own(k);
     }
     bool any = false;
     // Reverse scan: when i is reached, all its descendants (higher indices) have added into it,

@@ -9,7 +9,17 @@
 #include <emmintrin.h>
 #endif
 #if defined(__x86_64__) && defined(__GNUC__)
+// GCC 12's AVX-512 intrinsics pass _mm512_undefined_ps() as their unused merge operand, which
+// -Wuninitialized reports where they are inlined (GCC bug 105593): off for the header alone.
+#if !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <immintrin.h>
+#if !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 #define SYLVA_CANDIDATES_AVX 1
 #endif
 
@@ -163,10 +173,65 @@ __attribute__((target("avx"))) std::size_t visitAvx(const Arrays& arrays, std::s
     return k;
 }
 
+/// visitAvx sixteen lanes at a time, built for AVX-512F alone (chosen at run time): the sums
+/// by the builtin with the current rounding (_mm512_add_ps is a generic vector sum, which GCC
+/// would fuse with the products into multiply-adds here), the selections by masks, the
+/// indices as integers.
+template <CandidateVisit what>
+__attribute__((target("avx512f"))) std::size_t
+visitAvx512(const Arrays& arrays, std::size_t n, const glm::vec3& centre, float r2, Best& b) {
+    const Arrays a = arrays;
+    const __m512 cx = _mm512_set1_ps(centre.x), cy = _mm512_set1_ps(centre.y),
+                 cz = _mm512_set1_ps(centre.z), vr2 = _mm512_set1_ps(r2);
+    const __m512i allSet = _mm512_set1_epi32(-1);
+    __m512 top = _mm512_set1_ps(-1.0f);
+    __m512i topIndex = _mm512_set1_epi32(-1);
+    __m512i index = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __m512i sixteen = _mm512_set1_epi32(16);
+    constexpr bool score = scores(what);
+    constexpr int kRound = _MM_FROUND_CUR_DIRECTION;
+    std::size_t k = 0;
+    for (; k + 16 <= n; k += 16) {
+        const __m512 dx = _mm512_sub_ps(_mm512_loadu_ps(a.x + k), cx);
+        const __m512 dy = _mm512_sub_ps(_mm512_loadu_ps(a.y + k), cy);
+        const __m512 dz = _mm512_sub_ps(_mm512_loadu_ps(a.z + k), cz);
+        const __m512 d2 = _mm512_add_round_ps(
+            _mm512_add_round_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy), kRound),
+            _mm512_mul_ps(dz, dz), kRound);
+        // lit |= (d2 <= r2 ? ~0 : 0): all ones stored where it holds.
+        _mm512_mask_storeu_epi32(a.lit + k, _mm512_cmp_ps_mask(d2, vr2, _CMP_LE_OQ), allSet);
+        if constexpr (what == CandidateVisit::Lit) continue;
+        const __m512 nearest = _mm512_min_ps(d2, _mm512_loadu_ps(a.nearest + k));
+        _mm512_storeu_ps(a.nearest + k, nearest);
+        if constexpr (!score) continue;
+        const __m512 s = _mm512_sqrt_ps(nearest);
+        const __m512 w = what == CandidateVisit::WeightedSpread
+                             ? _mm512_mul_ps(_mm512_loadu_ps(a.weight + k), s)
+                             : s;
+        const __m512 v = _mm512_mul_ps(w, _mm512_loadu_ps(a.jitter + k));
+        const __mmask16 greater = _mm512_cmp_ps_mask(v, top, _CMP_GT_OQ);
+        top = _mm512_mask_mov_ps(top, greater, v);
+        topIndex = _mm512_mask_mov_epi32(topIndex, greater, index);
+        index = _mm512_add_epi32(index, sixteen);
+    }
+    if constexpr (score) {
+        alignas(64) float tops[16];
+        alignas(64) std::int32_t indices[16];
+        _mm512_store_ps(tops, top);
+        _mm512_store_si512(indices, topIndex);
+        for (int l = 0; l < 16; ++l)
+            if (indices[l] >= 0) b.offerLane(tops[l], static_cast<std::size_t>(indices[l]));
+    }
+    return k;
+}
+
 // The processor's features read first (a static initializer may run before libgcc's own).
-// SYLVA_NO_AVX=1 takes the SSE2 lanes on any processor, as the colonization search does.
+// SYLVA_NO_AVX=1 takes the SSE2 lanes on any processor, as the colonization search does;
+// SYLVA_NO_AVX512=1 the AVX lanes.
 const bool kHasAvx =
     (__builtin_cpu_init(), __builtin_cpu_supports("avx")) && std::getenv("SYLVA_NO_AVX") == nullptr;
+const bool kHasAvx512 =
+    kHasAvx && __builtin_cpu_supports("avx512f") && std::getenv("SYLVA_NO_AVX512") == nullptr;
 #endif
 
 } // namespace
@@ -197,6 +262,14 @@ bool LitCandidates::hasAvx() {
 #endif
 }
 
+bool LitCandidates::hasAvx512() {
+#if SYLVA_CANDIDATES_AVX
+    return kHasAvx512;
+#else
+    return false;
+#endif
+}
+
 float LitCandidates::scoreOf(std::size_t k, CandidateScore score) const {
     const float s = score == CandidateScore::Weight ? 1.0f : std::sqrt(mNearest[k]);
     return (score == CandidateScore::Spread ? s : mWeight[k] * s) * mJitter[k];
@@ -217,10 +290,14 @@ std::size_t LitCandidates::visit(const glm::vec3& centre, float r2, CandidateVis
     std::size_t k = 0;
 #if SYLVA_CANDIDATES_AVX
     // Float lane indices are exact below 2^24 candidates (the node's limit is 2 million).
+    const bool avx512 =
+        lanes == CandidateLanes::Avx512 || (lanes == CandidateLanes::Widest && kHasAvx512);
     const bool avx =
-        (lanes == CandidateLanes::Avx || (lanes == CandidateLanes::Widest && kHasAvx)) &&
-        n < (std::size_t{1} << 24);
-    if (avx)
+        avx512 || ((lanes == CandidateLanes::Avx || (lanes == CandidateLanes::Widest && kHasAvx)) &&
+                   n < (std::size_t{1} << 24));
+    if (avx512)
+        k = dispatch(what, [&]<CandidateVisit W>() { return visitAvx512<W>(a, n, centre, r2, b); });
+    else if (avx)
         k = dispatch(what, [&]<CandidateVisit W>() { return visitAvx<W>(a, n, centre, r2, b); });
 #else
     const bool avx = false;

@@ -27,17 +27,18 @@ enum class CandidateVisit {
     WeightedSpread ///< both, then the best of CandidateScore::WeightedSpread
 };
 
-/// Which lanes a visit runs on: the widest the processor has (AVX, else SSE2), or one named
-/// for the tests that check they agree.
-enum class CandidateLanes { Widest, Scalar, Sse2, Avx };
+/// Which lanes a visit runs on: the widest the processor has (AVX-512, else AVX, else SSE2), or
+/// one named for the tests that check they agree.
+enum class CandidateLanes { Widest, Scalar, Sse2, Avx, Avx512 };
 
 /// The candidate cluster centres of litAttractors() (a subset of the points, in index order),
 /// struct of arrays. Each centre chosen is visited once: every candidate's squared distance to
 /// it (summed as glm::dot sums it) lowers its distance to the nearest centre and marks it lit
 /// when it is within that centre's radius, and the same pass scores the candidates for the next
 /// centre and keeps the first of the highest score. Four lanes at a time on SSE2, eight where
-/// the processor has AVX (dispatched at run time; AVX has no fused multiply-add): each lane the
-/// scalar code's operations in its order, so every lane count gives the same floats and centres.
+/// the processor has AVX, sixteen where it has AVX-512 (dispatched at run time; no fused
+/// multiply-add on either): each lane the scalar code's operations in its order, so every lane
+/// count gives the same floats and centres.
 class LitCandidates {
 public:
     /// Room for \p capacity candidates.
@@ -75,6 +76,9 @@ public:
 
     /// Whether CandidateLanes::Avx runs here (the processor has AVX and SYLVA_NO_AVX is unset).
     static bool hasAvx();
+    /// Whether CandidateLanes::Avx512 runs here (AVX-512F, and neither SYLVA_NO_AVX nor
+    /// SYLVA_NO_AVX512 set).
+    static bool hasAvx512();
 
 private:
     float scoreOf(std::size_t k, CandidateScore score) const;

@@ -31,6 +31,29 @@ constexpr std::uint8_t kBarrenTerminal = 4u, kBarrenAxillary = 8u;
 /// editor) leaves the other threads spinning for milliseconds after it: a 5,000-internode
 /// broadleaf took twice its CPU time on two threads. A 100k-internode tree stays parallel.
 constexpr std::int64_t kParallelCheap = 16384, kParallelCostly = 2048;
+/// body(k) for k in [0, count), on OpenMP's threads when \p parallel (static or dynamic chunks
+/// of 64), else here. Not `parallel for ... if (parallel)`: a region whose if fails still starts
+/// a team of one and ends it at a barrier (a futex call; ~115 a tree of so-broadleaf.json).
+template <class Body> void forStatic(std::int64_t count, bool parallel, const Body& body) {
+    if (parallel) {
+#pragma omp parallel for schedule(static)
+        for (std::int64_t k = 0; k < count; ++k)
+            body(k);
+    } else {
+        for (std::int64_t k = 0; k < count; ++k)
+            body(k);
+    }
+}
+template <class Body> void forDynamic(std::int64_t count, bool parallel, const Body& body) {
+    if (parallel) {
+#pragma omp parallel for schedule(dynamic, 64)
+        for (std::int64_t k = 0; k < count; ++k)
+            body(k);
+    } else {
+        for (std::int64_t k = 0; k < count; ++k)
+            body(k);
+    }
+}
 float radians(double degrees) {
     return static_cast<float>(degrees) * kPi / 180.0f;
 }
@@ -311,15 +334,13 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
         // each prefetched kAhead buds early so that their cache misses overlap.
         constexpr std::int64_t kNoBud = -2, kAhead = 24;
         mCells.resize(n);
-#pragma omp parallel for schedule(static) if (count >= kParallelCheap)
-        for (std::int64_t k = 0; k < count; ++k) {
+        forStatic(count, count >= kParallelCheap, [&](std::int64_t k) {
             const auto i = static_cast<std::size_t>(k);
             mCells[i] = terminalAlive(i) || axillaryAlive(i) ? grid.cellOf(grid.voxelOf(mM.end[i]))
                                                              : kNoBud;
-        }
+        });
         const bool anyBlocked = grid.anyBlocked();
-#pragma omp parallel for schedule(static) if (count >= kParallelCheap)
-        for (std::int64_t k = 0; k < count; ++k) {
+        forStatic(count, count >= kParallelCheap, [&](std::int64_t k) {
             const auto i = static_cast<std::size_t>(k);
             if (k + kAhead < count) grid.prefetchCell(mCells[i + kAhead]);
             const std::int64_t cell = mCells[i];
@@ -332,7 +353,7 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
             }
             terminal[i] = terminalAlive(i) ? q : 0.0;
             axillary[i] = axillaryAlive(i) ? q : 0.0;
-        }
+        });
         return;
     }
     terminal.assign(n, 0.0);
@@ -392,45 +413,57 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
         std::vector<std::int32_t> bud;
     };
     std::vector<Best> best(static_cast<std::size_t>(threads));
-#pragma omp parallel num_threads(threads)
-    {
-        Best& mine = best[static_cast<std::size_t>(omp_get_thread_num())];
+    auto perceive = [&](std::int64_t k, Best& mine) {
+        const Bud& bud = buds[static_cast<std::size_t>(k)];
+        const auto b = static_cast<std::int32_t>(k);
+        bool perceives = false;
+        // The bud perceives a spherical sector (radius r, half-angle θ): the sphere through
+        // its apex and rim, centre r / (2 cos θ) along the axis, holds it and is smaller than
+        // the ball for θ < 60° (0.71 r at the usual 45°: a third of the ball's markers to
+        // test). Made 1 % larger against rounding; each marker is then tested as before, its
+        // distance to the bud included, so the same markers pass.
+        glm::vec3 centre = bud.pos;
+        float reach = bud.r;
+        if (bud.cosHalf > 0.5f) {
+            const float half = bud.r / (2.0f * bud.cosHalf);
+            centre = bud.pos + bud.dir * half;
+            reach = 1.01f * half;
+        }
+        grid.forEachInRadius(centre, reach, [&](std::uint32_t m, float) {
+            const float d2 = distance2(mp[m], bud.pos);
+            if (!(d2 < bud.r2)) return;
+            float& bestD2 = mine.d2[m];
+            if (perceives && d2 > bestD2) return;
+            const glm::vec3 d = mp[m] - bud.pos;
+            if (glm::dot(d, bud.dir) < bud.cosHalf * std::sqrt(d2)) return;
+            perceives = true;
+            if (d2 > bestD2) return;
+            if (d2 < bestD2 || b < mine.bud[m]) {
+                bestD2 = d2;
+                mine.bud[m] = b;
+            }
+        });
+        if (!perceives)
+            mM.deadBuds[bud.key >> 1] |= (bud.key & 1u) ? kBarrenAxillary : kBarrenTerminal;
+    };
+    auto start = [&](Best& mine) {
         mine.d2.assign(mp.size(), std::numeric_limits<float>::max());
         mine.bud.assign(mp.size(), -1);
+    };
+    // The region only where it has threads: a team of one still ends at a barrier (a futex).
+    if (threads > 1) {
+#pragma omp parallel num_threads(threads)
+        {
+            Best& mine = best[static_cast<std::size_t>(omp_get_thread_num())];
+            start(mine);
 #pragma omp for schedule(static)
-        for (std::int64_t k = 0; k < budCount; ++k) {
-            const Bud& bud = buds[static_cast<std::size_t>(k)];
-            const auto b = static_cast<std::int32_t>(k);
-            bool perceives = false;
-            // The bud perceives a spherical sector (radius r, half-angle θ): the sphere through
-            // its apex and rim, centre r / (2 cos θ) along the axis, holds it and is smaller than
-            // the ball for θ < 60° (0.71 r at the usual 45°: a third of the ball's markers to
-            // test). Made 1 % larger against rounding; each marker is then tested as before, its
-            // distance to the bud included, so the same markers pass.
-            glm::vec3 centre = bud.pos;
-            float reach = bud.r;
-            if (bud.cosHalf > 0.5f) {
-                const float half = bud.r / (2.0f * bud.cosHalf);
-                centre = bud.pos + bud.dir * half;
-                reach = 1.01f * half;
-            }
-            grid.forEachInRadius(centre, reach, [&](std::uint32_t m, float) {
-                const float d2 = distance2(mp[m], bud.pos);
-                if (!(d2 < bud.r2)) return;
-                float& bestD2 = mine.d2[m];
-                if (perceives && d2 > bestD2) return;
-                const glm::vec3 d = mp[m] - bud.pos;
-                if (glm::dot(d, bud.dir) < bud.cosHalf * std::sqrt(d2)) return;
-                perceives = true;
-                if (d2 > bestD2) return;
-                if (d2 < bestD2 || b < mine.bud[m]) {
-                    bestD2 = d2;
-                    mine.bud[m] = b;
-                }
-            });
-            if (!perceives)
-                mM.deadBuds[bud.key >> 1] |= (bud.key & 1u) ? kBarrenAxillary : kBarrenTerminal;
+            for (std::int64_t k = 0; k < budCount; ++k)
+                perceive(k, mine);
         }
+    } else {
+        start(best[0]);
+        for (std::int64_t k = 0; k < budCount; ++k)
+            perceive(k, best[0]);
     }
     std::vector<std::int32_t> owner(alive.size());
     for (std::size_t k = 0; k < alive.size(); ++k) {
@@ -515,45 +548,53 @@ void SelfOrganizingSimulation::shed() {
     // two groups that two threads move at once (each group in one pass, so no array is read
     // and written by both). Child links are set from the child's side (its mark says whether
     // it is its parent's lateral child), after the parent's own slot has been reset.
-#pragma omp parallel sections if (n >= kParallelCheap)
-    {
-#pragma omp section
-        {
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::int32_t r = mRemap[i];
-                if (r < 0) continue;
-                const std::size_t k = sz(r);
-                mM.end[k] = mM.end[i];
-                mM.frame[k] = mM.frame[i];
-                mM.tree[k] = mM.tree[i];
-                mM.order[k] = mM.order[i];
-                mM.born[k] = mM.born[i];
-                if (sc) {
-                    mOptimalTerminal[k] = mOptimalTerminal[i];
-                    mOptimalAxillary[k] = mOptimalAxillary[i];
-                }
+    auto moveA = [&] {
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::int32_t r = mRemap[i];
+            if (r < 0) continue;
+            const std::size_t k = sz(r);
+            mM.end[k] = mM.end[i];
+            mM.frame[k] = mM.frame[i];
+            mM.tree[k] = mM.tree[i];
+            mM.order[k] = mM.order[i];
+            mM.born[k] = mM.born[i];
+            if (sc) {
+                mOptimalTerminal[k] = mOptimalTerminal[i];
+                mOptimalAxillary[k] = mOptimalAxillary[i];
             }
         }
-#pragma omp section
-        {
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::int32_t r = mRemap[i];
-                if (r < 0) continue;
-                const std::size_t k = sz(r);
-                const std::int32_t p = mM.parent[i];
-                const std::int32_t newParent = p < 0 ? -1 : mRemap[sz(p)];
-                mM.parent[k] = newParent;
-                mM.mainChild[k] = -1;
-                mM.lateralChild[k] = -1;
-                mM.deadBuds[k] = mM.deadBuds[i];
-                mTerminalLight[k] = mTerminalLight[i];
-                mAxillaryLight[k] = mAxillaryLight[i];
-                mGathered[k] = mGathered[i];
-                mInternodes[k] = mInternodes[i];
-                if (newParent >= 0)
-                    ((mMarks[i] & 2u) ? mM.lateralChild : mM.mainChild)[sz(newParent)] = r;
-            }
+    };
+    auto moveB = [&] {
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::int32_t r = mRemap[i];
+            if (r < 0) continue;
+            const std::size_t k = sz(r);
+            const std::int32_t p = mM.parent[i];
+            const std::int32_t newParent = p < 0 ? -1 : mRemap[sz(p)];
+            mM.parent[k] = newParent;
+            mM.mainChild[k] = -1;
+            mM.lateralChild[k] = -1;
+            mM.deadBuds[k] = mM.deadBuds[i];
+            mTerminalLight[k] = mTerminalLight[i];
+            mAxillaryLight[k] = mAxillaryLight[i];
+            mGathered[k] = mGathered[i];
+            mInternodes[k] = mInternodes[i];
+            if (newParent >= 0)
+                ((mMarks[i] & 2u) ? mM.lateralChild : mM.mainChild)[sz(newParent)] = r;
         }
+    };
+    if (n >= kParallelCheap) {
+#pragma omp parallel sections
+        {
+#pragma omp section
+            moveA();
+#pragma omp section
+            moveB();
+        }
+    } else {
+        // Not `parallel sections if (...)`: a failed if still starts a team of one (a futex).
+        moveA();
+        moveB();
     }
     resizeMetamers(kept);
     mTerminalLight.resize(kept);
@@ -694,10 +735,9 @@ void SelfOrganizingSimulation::commitShoots() {
     }
     const auto count = static_cast<std::int64_t>(mGrowing.size());
     const auto cycle = static_cast<std::uint16_t>(mCycle);
-#pragma omp parallel for schedule(static) if (total >= kParallelCheap)
-    for (std::int64_t k = 0; k < count; ++k) {
+    forStatic(count, total >= kParallelCheap, [&](std::int64_t k) {
         const Growing& g = mGrowing[static_cast<std::size_t>(k)];
-        if (g.made == 0) continue;
+        if (g.made == 0) return;
         const std::size_t from = sz(g.metamer);
         const std::size_t scratch = g.slot;
         const std::uint16_t tree = mM.tree[from];
@@ -715,7 +755,7 @@ void SelfOrganizingSimulation::commitShoots() {
             // A shoot cut short loses its terminal bud.
             mM.deadBuds[i] = j + 1 == g.made && g.made < g.planned ? 1u : 0u;
         }
-    }
+    });
 }
 
 void SelfOrganizingSimulation::step() {
@@ -804,14 +844,12 @@ void SelfOrganizingSimulation::step() {
     constexpr std::int64_t kAhead = 8;
     if (mShadow) {
         mBudVoxels.resize(mGrowing.size());
-#pragma omp parallel for schedule(static) if (count >= kParallelCheap)
-        for (std::int64_t k = 0; k < count; ++k) {
+        forStatic(count, count >= kParallelCheap, [&](std::int64_t k) {
             const auto b = static_cast<std::size_t>(k);
             mBudVoxels[b] = mShadow->voxelOf(mM.end[sz(mGrowing[b].metamer)]);
-        }
+        });
     }
-#pragma omp parallel for schedule(dynamic, 64) if (count >= kParallelCostly)
-    for (std::int64_t k = 0; k < count; ++k) {
+    forDynamic(count, count >= kParallelCostly, [&](std::int64_t k) {
         Growing& g = mGrowing[static_cast<std::size_t>(k)];
         const std::size_t i = sz(g.metamer);
         if (g.seedling) {
@@ -826,13 +864,12 @@ void SelfOrganizingSimulation::step() {
             g.optimal = optimalShadowDirection(mBudVoxels[static_cast<std::size_t>(k)],
                                                skel::headingOf(f), mCosHalfCone[t]);
         }
-    }
+    });
     const Clock::time_point s1 = Clock::now();
-#pragma omp parallel for schedule(dynamic, 64) if (count >= kParallelCostly)
-    for (std::int64_t k = 0; k < count; ++k) {
+    forDynamic(count, count >= kParallelCostly, [&](std::int64_t k) {
         Growing& g = mGrowing[static_cast<std::size_t>(k)];
         g.made = makeShoot(g, mShootEnd.data() + g.slot, mShootFrame.data() + g.slot);
-    }
+    });
     const Clock::time_point s2 = Clock::now();
     commitShoots();
     const Clock::time_point t4 = Clock::now();
@@ -843,12 +880,11 @@ void SelfOrganizingSimulation::step() {
         const std::size_t removed = mSources.size();
         mSources.resize(removed + (n1 - n0));
         const auto added = static_cast<std::int64_t>(n1 - n0);
-#pragma omp parallel for schedule(static) if (added >= kParallelCheap)
-        for (std::int64_t k = 0; k < added; ++k) {
+        forStatic(added, added >= kParallelCheap, [&](std::int64_t k) {
             const std::size_t i = n0 + static_cast<std::size_t>(k);
             mSources[removed + static_cast<std::size_t>(k)] = {mShadow->voxelOf(mM.end[i]), 1,
                                                                mM.tree[i]};
-        }
+        });
         mShadow->applyBatch(mSources, mKernels);
     }
     if (mMarkers)

@@ -207,89 +207,111 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     // An exception must not leave the parallel region (that terminates the process): the grid's
     // limit is caught here and thrown again after it (fuzz finding 17 found the limit reached).
     std::exception_ptr failure;
-#pragma omp parallel num_threads(threads)
-    {
-        const auto t = static_cast<std::size_t>(omp_get_thread_num());
-        const auto nt = static_cast<std::size_t>(omp_get_num_threads());
-        const std::size_t begin = sources.size() * t / nt;
-        const std::size_t end = sources.size() * (t + 1) / nt;
-        glm::ivec3 plo = sources[begin].voxel, phi = plo;
+    // The steps of the sort: a share's bounds; the grid made to hold them and the layers (one
+    // thread); a share counted; the counts merged (one thread); a share placed.
+    auto setup = [&](std::size_t nt) {
+        // One share per thread of the team actually running, which can be smaller than
+        // omp_get_max_threads() (one thread when called inside another parallel region).
+        mPart.resize(nt);
+        // Pyramids are clipped only below the floor; the grid's margin covers them sideways.
+        try {
+            reserveAround(lo);
+            reserveAround(hi);
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        nothing = failure || hi.y < mFloor;
+        firstSource = std::max(lo.y, mFloor);
+        layers = nothing ? 0 : static_cast<std::size_t>(hi.y - firstSource + 1);
+    };
+    auto countShare = [&](Part& part, std::size_t begin, std::size_t end) {
+        if (nothing) return;
+        part.count.assign(layers, 0);
+        part.extent.assign(layers, noExtent);
+        part.reach.assign(layers * depths, 0);
         for (std::size_t i = begin; i < end; ++i) {
-            plo = glm::min(plo, sources[i].voxel);
-            phi = glm::max(phi, sources[i].voxel);
+            const ShadowSource& s = sources[i];
+            if (s.voxel.y < firstSource) continue;
+            const auto b = static_cast<std::size_t>(s.voxel.y - firstSource);
+            ++part.count[b];
+            glm::ivec4& e = part.extent[b];
+            e = {std::min(e.x, s.voxel.x), std::max(e.y, s.voxel.x), std::min(e.z, s.voxel.z),
+                 std::max(e.w, s.voxel.z)};
+            // Counted at its own depth; the suffix sums below make it "reaches q".
+            ++part.reach[b * depths + static_cast<std::size_t>(kernels[s.kernel].depth)];
         }
+    };
+    auto merge = [&] {
+        if (nothing) return;
+        mBucketStart.assign(layers + 1, 0);
+        mLayerExtent.assign(layers, noExtent);
+        mReach.assign(layers * depths, 0);
+        std::uint32_t at = 0;
+        for (std::size_t b = 0; b < layers; ++b) {
+            mBucketStart[b] = at;
+            glm::ivec4& e = mLayerExtent[b];
+            for (Part& p : mPart) {
+                const std::uint32_t c = p.count[b];
+                p.count[b] = at; // becomes this part's first slot in the bucket
+                at += c;
+                const glm::ivec4& pe = p.extent[b];
+                e = {std::min(e.x, pe.x), std::max(e.y, pe.y), std::min(e.z, pe.z),
+                     std::max(e.w, pe.w)};
+                for (std::size_t q = 0; q < depths; ++q)
+                    mReach[b * depths + q] += p.reach[b * depths + q];
+            }
+            for (std::size_t q = depths - 1; q-- > 0;)
+                mReach[b * depths + q] += mReach[b * depths + q + 1];
+        }
+        mBucketStart[layers] = at;
+        mSorted.resize(at);
+    };
+    auto place = [&](Part& part, std::size_t begin, std::size_t end) {
+        if (nothing) return;
+        for (std::size_t i = begin; i < end; ++i) {
+            const ShadowSource& s = sources[i];
+            if (s.voxel.y < firstSource) continue;
+            const auto b = static_cast<std::size_t>(s.voxel.y - firstSource);
+            mSorted[part.count[b]++] = {s.voxel.x, s.voxel.z, s.weight, s.kernel};
+        }
+    };
+    // The region only where it has threads: a team of one still ends at a barrier (a futex
+    // call a batch: the self-organizing model applies one a cycle).
+    if (threads > 1) {
+#pragma omp parallel num_threads(threads)
+        {
+            const auto t = static_cast<std::size_t>(omp_get_thread_num());
+            const auto nt = static_cast<std::size_t>(omp_get_num_threads());
+            const std::size_t begin = sources.size() * t / nt;
+            const std::size_t end = sources.size() * (t + 1) / nt;
+            glm::ivec3 plo = sources[begin].voxel, phi = plo;
+            for (std::size_t i = begin; i < end; ++i) {
+                plo = glm::min(plo, sources[i].voxel);
+                phi = glm::max(phi, sources[i].voxel);
+            }
 #pragma omp critical(sylva_shadow_bounds)
-        {
-            lo = glm::min(lo, plo);
-            hi = glm::max(hi, phi);
-        }
+            {
+                lo = glm::min(lo, plo);
+                hi = glm::max(hi, phi);
+            }
 #pragma omp barrier
 #pragma omp single
-        {
-            // One share per thread of the team actually running, which can be smaller than
-            // omp_get_max_threads() (one thread when called inside another parallel region).
-            mPart.resize(nt);
-            // Pyramids are clipped only below the floor; the grid's margin covers them sideways.
-            try {
-                reserveAround(lo);
-                reserveAround(hi);
-            } catch (...) {
-                failure = std::current_exception();
-            }
-            nothing = failure || hi.y < mFloor;
-            firstSource = std::max(lo.y, mFloor);
-            layers = nothing ? 0 : static_cast<std::size_t>(hi.y - firstSource + 1);
-        }
-        Part& part = mPart[t];
-        if (!nothing) {
-            part.count.assign(layers, 0);
-            part.extent.assign(layers, noExtent);
-            part.reach.assign(layers * depths, 0);
-            for (std::size_t i = begin; i < end; ++i) {
-                const ShadowSource& s = sources[i];
-                if (s.voxel.y < firstSource) continue;
-                const auto b = static_cast<std::size_t>(s.voxel.y - firstSource);
-                ++part.count[b];
-                glm::ivec4& e = part.extent[b];
-                e = {std::min(e.x, s.voxel.x), std::max(e.y, s.voxel.x), std::min(e.z, s.voxel.z),
-                     std::max(e.w, s.voxel.z)};
-                // Counted at its own depth; the suffix sums below make it "reaches q".
-                ++part.reach[b * depths + static_cast<std::size_t>(kernels[s.kernel].depth)];
-            }
-        }
+            setup(nt);
+            countShare(mPart[t], begin, end);
 #pragma omp barrier
 #pragma omp single
-        if (!nothing) {
-            mBucketStart.assign(layers + 1, 0);
-            mLayerExtent.assign(layers, noExtent);
-            mReach.assign(layers * depths, 0);
-            std::uint32_t at = 0;
-            for (std::size_t b = 0; b < layers; ++b) {
-                mBucketStart[b] = at;
-                glm::ivec4& e = mLayerExtent[b];
-                for (Part& p : mPart) {
-                    const std::uint32_t c = p.count[b];
-                    p.count[b] = at; // becomes this part's first slot in the bucket
-                    at += c;
-                    const glm::ivec4& pe = p.extent[b];
-                    e = {std::min(e.x, pe.x), std::max(e.y, pe.y), std::min(e.z, pe.z),
-                         std::max(e.w, pe.w)};
-                    for (std::size_t q = 0; q < depths; ++q)
-                        mReach[b * depths + q] += p.reach[b * depths + q];
-                }
-                for (std::size_t q = depths - 1; q-- > 0;)
-                    mReach[b * depths + q] += mReach[b * depths + q + 1];
-            }
-            mBucketStart[layers] = at;
-            mSorted.resize(at);
+            merge();
+            place(mPart[t], begin, end);
         }
-        if (!nothing)
-            for (std::size_t i = begin; i < end; ++i) {
-                const ShadowSource& s = sources[i];
-                if (s.voxel.y < firstSource) continue;
-                const auto b = static_cast<std::size_t>(s.voxel.y - firstSource);
-                mSorted[part.count[b]++] = {s.voxel.x, s.voxel.z, s.weight, s.kernel};
-            }
+    } else {
+        for (const ShadowSource& s : sources) {
+            lo = glm::min(lo, s.voxel);
+            hi = glm::max(hi, s.voxel);
+        }
+        setup(1);
+        countShare(mPart[0], 0, sources.size());
+        merge();
+        place(mPart[0], 0, sources.size());
     }
     if (failure) std::rethrow_exception(failure);
     if (nothing) return;
@@ -312,109 +334,121 @@ void ShadowGrid::applyBatch(std::span<const ShadowSource> sources,
     mDiff.resize(static_cast<std::size_t>(omp_get_max_threads()));
     for (std::vector<std::int32_t>& d : mDiff)
         if (d.size() != planeD) d.assign(planeD, 0);
-#pragma omp parallel if (total >= kParallelSources)
-    {
-        std::vector<std::int32_t>& diff = mDiff[static_cast<std::size_t>(omp_get_thread_num())];
-        std::vector<std::int32_t> colAcc(dz + 1);
-#pragma omp for schedule(dynamic, 1)
-        for (int l = 0; l < layerCount; ++l) {
-            const int y = firstLayer + l;
-            std::int32_t* plane = mValues.data() + static_cast<std::size_t>(y - mLo.y) * dx * dz;
-            // Extent and direct cost of this layer's squares, from the per-layer summaries.
-            int x0 = std::numeric_limits<int>::max(), z0 = x0;
-            int x1 = std::numeric_limits<int>::min(), z1 = x1;
-            std::int64_t cells = 0;
+    // One output layer (a task of the loop below), with its thread's difference plane and column
+    // sums.
+    auto layer = [&](int l, std::vector<std::int32_t>& diff, std::vector<std::int32_t>& colAcc) {
+        const int y = firstLayer + l;
+        std::int32_t* plane = mValues.data() + static_cast<std::size_t>(y - mLo.y) * dx * dz;
+        // Extent and direct cost of this layer's squares, from the per-layer summaries.
+        int x0 = std::numeric_limits<int>::max(), z0 = x0;
+        int x1 = std::numeric_limits<int>::min(), z1 = x1;
+        std::int64_t cells = 0;
+        for (int q = 0; q <= maxDepth; ++q) {
+            const int sy = y + q;
+            if (sy < firstSource || sy > hi.y) continue;
+            const auto b = static_cast<std::size_t>(sy - firstSource);
+            const std::uint32_t reach = mReach[b * depths + static_cast<std::size_t>(q)];
+            if (reach == 0) continue;
+            const glm::ivec4& e = mLayerExtent[b];
+            x0 = std::min(x0, e.x - q);
+            x1 = std::max(x1, e.y + q);
+            z0 = std::min(z0, e.z - q);
+            z1 = std::max(z1, e.w + q);
+            cells += static_cast<std::int64_t>(reach) * (2 * q + 1) * (2 * q + 1);
+        }
+        if (cells == 0) return;
+        // Calls f(source, q, Δs) for every source slice that reaches this layer (all the
+        // loop state in locals, so that the writes into int arrays cannot force reloads).
+        auto forEach = [&](auto&& f) {
             for (int q = 0; q <= maxDepth; ++q) {
                 const int sy = y + q;
                 if (sy < firstSource || sy > hi.y) continue;
                 const auto b = static_cast<std::size_t>(sy - firstSource);
-                const std::uint32_t reach = mReach[b * depths + static_cast<std::size_t>(q)];
-                if (reach == 0) continue;
-                const glm::ivec4& e = mLayerExtent[b];
-                x0 = std::min(x0, e.x - q);
-                x1 = std::max(x1, e.y + q);
-                z0 = std::min(z0, e.z - q);
-                z1 = std::max(z1, e.w + q);
-                cells += static_cast<std::int64_t>(reach) * (2 * q + 1) * (2 * q + 1);
-            }
-            if (cells == 0) continue;
-            // Calls f(source, q, Δs) for every source slice that reaches this layer (all the
-            // loop state in locals, so that the writes into int arrays cannot force reloads).
-            auto forEach = [&](auto&& f) {
-                for (int q = 0; q <= maxDepth; ++q) {
-                    const int sy = y + q;
-                    if (sy < firstSource || sy > hi.y) continue;
-                    const auto b = static_cast<std::size_t>(sy - firstSource);
-                    if (mReach[b * depths + static_cast<std::size_t>(q)] == 0) continue;
-                    const std::int32_t* delta =
-                        mDeltaByDepth.data() + static_cast<std::size_t>(q) * kernelCount;
-                    const SortedSource* s = mSorted.data() + mBucketStart[b];
-                    const SortedSource* const end = mSorted.data() + mBucketStart[b + 1];
-                    for (; s != end; ++s) {
-                        const std::int32_t d = s->weight * delta[s->kernel];
-                        if (d != 0) f(*s, q, d); // 0: beyond the kernel's depth, or no change
-                    }
+                if (mReach[b * depths + static_cast<std::size_t>(q)] == 0) continue;
+                const std::int32_t* delta =
+                    mDeltaByDepth.data() + static_cast<std::size_t>(q) * kernelCount;
+                const SortedSource* s = mSorted.data() + mBucketStart[b];
+                const SortedSource* const end = mSorted.data() + mBucketStart[b + 1];
+                for (; s != end; ++s) {
+                    const std::int32_t d = s->weight * delta[s->kernel];
+                    if (d != 0) f(*s, q, d); // 0: beyond the kernel's depth, or no change
                 }
-            };
-            const std::int64_t area =
-                static_cast<std::int64_t>(x1 - x0 + 1) * static_cast<std::int64_t>(z1 - z0 + 1);
+            }
+        };
+        const std::int64_t area =
+            static_cast<std::int64_t>(x1 - x0 + 1) * static_cast<std::int64_t>(z1 - z0 + 1);
 
-            if (cells < 2 * area) {
-                forEach([&](const SortedSource& s, int q, std::int32_t d) {
-                    for (int x = s.x - q; x <= s.x + q; ++x) {
-                        std::int32_t* row = plane + static_cast<std::size_t>(x - mLo.x) * dz +
-                                            static_cast<std::size_t>(s.z - q - mLo.z);
-                        for (int z = 0; z <= 2 * q; ++z)
-                            row[z] += d;
-                    }
-                });
-                continue;
-            }
-            // The difference array covers just this layer's extent (local coordinates, one extra
-            // row and column for the far corners), so the corners and the sweeps stay in a
-            // compact block of the thread's cache instead of spanning the whole grid's plane.
-            const std::size_t width = static_cast<std::size_t>(z1 - z0) + 1;
-            const std::size_t rows = static_cast<std::size_t>(x1 - x0) + 1;
-            const std::size_t stride = width + 1;
-            // Corner (x − q, z − q) of a slice is at x·stride + z − origin(q); the other three
-            // are w = 2q + 1 columns and/or rows further.
-            std::int32_t* __restrict corners = diff.data();
-            const auto iStride = static_cast<std::ptrdiff_t>(stride);
+        if (cells < 2 * area) {
             forEach([&](const SortedSource& s, int q, std::int32_t d) {
-                const std::ptrdiff_t w = 2 * q + 1;
-                const std::ptrdiff_t origin = (x0 + q) * iStride + (z0 + q);
-                const std::ptrdiff_t i = s.x * iStride + s.z - origin;
-                corners[i] += d;
-                corners[i + w] -= d;
-                corners[i + w * iStride] -= d;
-                corners[i + w * iStride + w] += d;
+                for (int x = s.x - q; x <= s.x + q; ++x) {
+                    std::int32_t* row = plane + static_cast<std::size_t>(x - mLo.x) * dz +
+                                        static_cast<std::size_t>(s.z - q - mLo.z);
+                    for (int z = 0; z <= 2 * q; ++z)
+                        row[z] += d;
+                }
             });
-            // Two sweeps so that the second vectorizes: prefix sums along z in place (a chain
-            // per row), then running sums down x added into the layer; the array is left zeroed.
-            std::fill_n(colAcc.begin(), width, 0);
-            for (std::size_t x = 0; x < rows; ++x) {
-                std::int32_t* drow = diff.data() + x * stride;
-                std::int32_t run = 0;
-                for (std::size_t z = 0; z < width; ++z) {
-                    run += drow[z];
-                    drow[z] = run;
-                }
-                drow[width] = 0;
-            }
-            const std::size_t planeOrigin =
-                static_cast<std::size_t>(x0 - mLo.x) * dz + static_cast<std::size_t>(z0 - mLo.z);
-            for (std::size_t x = 0; x < rows; ++x) {
-                std::int32_t* __restrict drow = diff.data() + x * stride;
-                std::int32_t* __restrict srow = plane + planeOrigin + x * dz;
-                std::int32_t* __restrict acc = colAcc.data();
-                for (std::size_t z = 0; z < width; ++z) {
-                    acc[z] += drow[z];
-                    srow[z] += acc[z];
-                    drow[z] = 0;
-                }
-            }
-            std::fill_n(diff.data() + rows * stride, stride, 0);
+            return;
         }
+        // The difference array covers just this layer's extent (local coordinates, one extra
+        // row and column for the far corners), so the corners and the sweeps stay in a
+        // compact block of the thread's cache instead of spanning the whole grid's plane.
+        const std::size_t width = static_cast<std::size_t>(z1 - z0) + 1;
+        const std::size_t rows = static_cast<std::size_t>(x1 - x0) + 1;
+        const std::size_t stride = width + 1;
+        // Corner (x − q, z − q) of a slice is at x·stride + z − origin(q); the other three
+        // are w = 2q + 1 columns and/or rows further.
+        std::int32_t* __restrict corners = diff.data();
+        const auto iStride = static_cast<std::ptrdiff_t>(stride);
+        forEach([&](const SortedSource& s, int q, std::int32_t d) {
+            const std::ptrdiff_t w = 2 * q + 1;
+            const std::ptrdiff_t origin = (x0 + q) * iStride + (z0 + q);
+            const std::ptrdiff_t i = s.x * iStride + s.z - origin;
+            corners[i] += d;
+            corners[i + w] -= d;
+            corners[i + w * iStride] -= d;
+            corners[i + w * iStride + w] += d;
+        });
+        // Two sweeps so that the second vectorizes: prefix sums along z in place (a chain
+        // per row), then running sums down x added into the layer; the array is left zeroed.
+        std::fill_n(colAcc.begin(), width, 0);
+        for (std::size_t x = 0; x < rows; ++x) {
+            std::int32_t* drow = diff.data() + x * stride;
+            std::int32_t run = 0;
+            for (std::size_t z = 0; z < width; ++z) {
+                run += drow[z];
+                drow[z] = run;
+            }
+            drow[width] = 0;
+        }
+        const std::size_t planeOrigin =
+            static_cast<std::size_t>(x0 - mLo.x) * dz + static_cast<std::size_t>(z0 - mLo.z);
+        for (std::size_t x = 0; x < rows; ++x) {
+            std::int32_t* __restrict drow = diff.data() + x * stride;
+            std::int32_t* __restrict srow = plane + planeOrigin + x * dz;
+            std::int32_t* __restrict acc = colAcc.data();
+            for (std::size_t z = 0; z < width; ++z) {
+                acc[z] += drow[z];
+                srow[z] += acc[z];
+                drow[z] = 0;
+            }
+        }
+        std::fill_n(diff.data() + rows * stride, stride, 0);
+    };
+    // The region only where it runs in parallel: a team of one still ends at a barrier (a
+    // futex call a batch: the self-organizing model applies one a cycle).
+    if (total >= kParallelSources) {
+#pragma omp parallel
+        {
+            std::vector<std::int32_t>& diff = mDiff[static_cast<std::size_t>(omp_get_thread_num())];
+            std::vector<std::int32_t> colAcc(dz + 1);
+#pragma omp for schedule(dynamic, 1)
+            for (int l = 0; l < layerCount; ++l)
+                layer(l, diff, colAcc);
+        }
+    } else {
+        std::vector<std::int32_t> colAcc(dz + 1);
+        for (int l = 0; l < layerCount; ++l)
+            layer(l, mDiff[0], colAcc);
     }
 }
 

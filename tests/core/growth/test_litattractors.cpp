@@ -282,16 +282,17 @@ TEST(LitAttractors, SameAsTheStraightforwardVersion) {
     EXPECT_EQ(compared, 24);
 }
 
-// The candidates' visits on every lane count this processor has (scalar, SSE2, AVX) give the
-// same distances, lit flags and best candidates, for every kind of visit and counts that leave
-// tails of every length.
+// The candidates' visits on every lane count this processor has (scalar, SSE2, AVX, AVX-512)
+// give the same distances, lit flags and best candidates, for every kind of visit and counts
+// that leave tails of every length.
 TEST(LitAttractors, CandidateVisitsAgreeOnEveryLaneCount) {
     std::vector<CandidateLanes> lanes = {CandidateLanes::Scalar, CandidateLanes::Sse2};
     if (LitCandidates::hasAvx()) lanes.push_back(CandidateLanes::Avx);
+    if (LitCandidates::hasAvx512()) lanes.push_back(CandidateLanes::Avx512);
     const CandidateVisit kinds[] = {CandidateVisit::WeightedSpread, CandidateVisit::Nearest,
                                     CandidateVisit::Spread, CandidateVisit::Lit,
                                     CandidateVisit::WeightedSpread};
-    for (std::size_t count : {1u, 7u, 8u, 13u, 500u, 1003u}) {
+    for (std::size_t count : {1u, 7u, 8u, 13u, 16u, 33u, 500u, 1003u}) {
         const std::vector<glm::vec3> pts = Envelope::sphere(glm::vec3(0, 4, 0), 3.0f)
                                                .sample(std::max<std::size_t>(count, 19), count);
         Rng rng(count);

@@ -8,11 +8,13 @@
 #include <cstring>
 #include <omp.h>
 
+#include "engine/growth/colonizationsearch.h"
 #include "engine/growth/envelope.h"
 #include "engine/growth/pipemodel.h"
 #include "engine/growth/spacecolonization.h"
 #include "engine/growth/spatialgrid.h"
 #include "engine/util/error.h"
+#include "engine/util/random.h"
 
 using namespace sylva;
 using namespace sylva::growth;
@@ -110,6 +112,63 @@ TEST(SpaceColonization, AcceleratedEqualsNaiveManyCells) {
     EXPECT_EQ(fast.killed, slow.killed);
     EXPECT_EQ(fast.iterations, slow.iterations);
     EXPECT_GT(fast.killedCount, 3000u);
+}
+
+// A bush of 300 initial nodes, every one in reach of every cell at first: the search gathers
+// the nodes that pass a cell's bound 64 at a time (more than one gathering a cell), and offers
+// them to its lanes 16, 8 and 4 at a time. Pairs of nodes at one position, 1, 63, 64 and 65
+// apart in index, tie exactly: the lower index must win across a gathering's end.
+TEST(SpaceColonization, AcceleratedEqualsNaiveManyNodesACell) {
+    skel::Skeleton bush;
+    bush.addNode({0, 0, 0}, -1, 0.2f, 0, glm::quat(1, 0, 0, 0));
+    const std::vector<glm::vec3> spots = Envelope::ellipsoid({0, 4, 0}, {3, 2, 3}).sample(240, 21);
+    for (std::size_t i = 0; bush.size() < 300; ++i) {
+        const std::size_t k = bush.size();
+        // Every fourth node repeats the position of the node 1, 63, 64 or 65 before it.
+        const std::size_t back = k % 4 == 0 && k > 70  ? std::size_t{63} + (k / 4) % 3
+                                 : k % 4 == 1 && k > 2 ? 1
+                                                       : 0;
+        const glm::vec3 at = back > 0 ? bush.position[k - back] : spots[i % spots.size()];
+        bush.addNode(at, 0, 0.05f, 1, glm::quat(1, 0, 0, 0));
+    }
+    bush.finalize();
+    ColonizationParams p;
+    p.influenceDistance = 7.0f;
+    p.killDistance = 0.35f;
+    p.segmentLength = 0.12f;
+    p.randomness = 0.2f;
+    for (std::uint64_t seed : {3u, 4u}) {
+        p.seed = seed;
+        const auto points = Envelope::ellipsoid({0, 4, 0}, {4, 3, 4}).sample(2501, seed);
+        const ColonizationResult fast = colonize(points, p, &bush, NeighbourSearch::Accelerated);
+        const ColonizationResult slow = colonize(points, p, &bush, NeighbourSearch::Naive);
+        expectIdentical(fast.skeleton, slow.skeleton);
+        EXPECT_EQ(fast.killed, slow.killed);
+        EXPECT_EQ(fast.iterations, slow.iterations);
+        EXPECT_GT(fast.skeleton.size(), bush.size() + 500);
+    }
+}
+
+// dropKilled (sixteen ids at a time with AVX-512, their flags gathered four bytes a flag)
+// against erase_if on the flags: every live list of up to 70 of 40-80 points, kills dense and
+// sparse, ids up to the last point (the blocks within three of the end go one by one).
+TEST(SpaceColonization, DropKilledEqualsEraseIf) {
+    Rng rng(17);
+    for (int round = 0; round < 400; ++round) {
+        const std::size_t points = 40 + rng.below(41);
+        const std::vector<glm::vec3> none(points);
+        PointState s{none, {}, {}, std::vector<std::uint8_t>(points, 0), {}};
+        const double keep = rng.uniform(0.2, 1.0);
+        for (std::uint32_t a = 0; a < points; ++a)
+            if (rng.uniform(0.0, 1.0) < keep || a + 3 >= points) s.live.push_back(a);
+        const double die = round % 4 == 0 ? 0.02 : rng.uniform(0.0, 0.9);
+        for (const std::uint32_t a : s.live)
+            s.killed[a] = rng.uniform(0.0, 1.0) < die ? 1 : 0;
+        std::vector<std::uint32_t> expected = s.live;
+        std::erase_if(expected, [&s](std::uint32_t a) { return s.killed[a] != 0; });
+        dropKilled(s);
+        ASSERT_EQ(s.live, expected) << "round " << round;
+    }
 }
 
 TEST(SpaceColonization, EveryPointKilledOrOutOfReach) {
