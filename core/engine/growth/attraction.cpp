@@ -35,21 +35,58 @@ sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __r
     }
 }
 
+// Without the hash, no branch on a node's first point (one mispredicted a node an iteration):
+// the sums start at zero (sumAttraction clears the last call's), each point's node is stored at
+// the first-met cursor, which advances only when the node's count was 0. Points out of reach go
+// to the spare node \p dummy (its sum and count are scratch; its position read is node 0's).
+__attribute__((noinline)) std::size_t
+sumPointsNoHash(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __restrict pts,
+                const float* __restrict best2, const std::int32_t* __restrict bestNode,
+                const glm::vec3* __restrict pos, glm::vec3* __restrict sum,
+                std::uint32_t* __restrict count, std::uint32_t* __restrict firstMet,
+                std::uint32_t dummy) {
+    std::size_t met = 0;
+    for (std::size_t k = 0; k < liveCount; ++k) {
+        const std::uint32_t a = live[k];
+        const std::int32_t bn = bestNode[a];
+        const std::uint32_t j = bn < 0 ? dummy : static_cast<std::uint32_t>(bn);
+        const std::uint32_t c = count[j];
+        count[j] = c + 1;
+        firstMet[met] = j;
+        met += c == 0 ? 1 : 0;
+        const float b2 = best2[a];
+        sum[j] += (pts[a] - pos[bn < 0 ? 0 : j]) * (1.0f / std::sqrt(b2));
+    }
+    return met;
+}
+
 } // namespace
 
 void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
                    const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
                    std::size_t nodeCount, bool hashSets) {
-    a.sum.resize(nodeCount);
-    a.count.resize(nodeCount, 0);
+    for (const std::uint32_t j : a.attracted)
+        if (j < a.sum.size()) a.sum[j] = glm::vec3(0.0f); // as sumPointsNoHash needs them
+    a.sum.resize(nodeCount + 1, glm::vec3(0.0f));
+    a.count.resize(nodeCount + 1, 0);
     a.setHash.resize(nodeCount);
     a.marks.resize((nodeCount + 63) / 64, 0);
-    if (hashSets)
+    if (hashSets) {
         sumPoints<true>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
                         a.count.data(), a.setHash.data(), a.marks.data());
-    else
-        sumPoints<false>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
-                         a.count.data(), a.setHash.data(), a.marks.data());
+    } else if (nodeCount > 0) {
+        a.firstMet.resize(nodeCount + 2);
+        const auto dummy = static_cast<std::uint32_t>(nodeCount);
+        const std::size_t met =
+            sumPointsNoHash(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
+                            a.count.data(), a.firstMet.data(), dummy);
+        a.count[nodeCount] = 0;
+        a.sum[nodeCount] = glm::vec3(0.0f);
+        for (std::size_t k = 0; k < met; ++k) {
+            const std::uint32_t j = a.firstMet[k];
+            if (j != dummy) a.marks[j >> 6] |= std::uint64_t{1} << (j & 63);
+        }
+    }
     a.attracted.clear();
     for (std::size_t w = 0; w < a.marks.size(); ++w) {
         for (std::uint64_t m = a.marks[w]; m != 0; m &= m - 1)

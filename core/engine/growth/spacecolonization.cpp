@@ -174,8 +174,9 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     std::vector<std::uint32_t> fixed; ///< the attracted nodes with a fix
     std::vector<float> lens;          ///< per attracted node: the length of its sum
     // The per-node arrays the same room (resized each iteration as the nodes come).
-    at.sum.reserve(room);
-    at.count.reserve(room);
+    at.sum.reserve(room + 1); // a spare entry past the nodes (see sumAttraction)
+    at.count.reserve(room + 1);
+    at.firstMet.reserve(room + 2);
     at.setHash.reserve(room);
     at.marks.reserve(room / 64 + 1);
     lastHash.reserve(room);
