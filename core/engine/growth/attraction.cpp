@@ -35,27 +35,108 @@ sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __r
     }
 }
 
+// Without the hash, no branch on a node's first point (one mispredicted a node an iteration):
+// the sums start at zero (sumAttraction clears the last call's), each point's node is stored at
+// the first-met cursor, which advances only when the node's count was 0. Points out of reach go
+// to the spare node \p dummy (its sum and count are scratch; its position read is node 0's).
+// Drop: \p live as the search left it, the points it killed (\p killed) moved out in the same
+// pass (written at the kept count, which advances past the live ones, as dropKilled's scalar
+// loop does) and summed into the spare node; \p kept their count.
+template <bool Drop>
+__attribute__((noinline)) std::size_t
+sumPointsNoHash(const std::uint32_t* live, std::size_t liveCount, std::uint32_t* liveOut,
+                const std::uint8_t* __restrict killed, std::size_t& kept,
+                const glm::vec3* __restrict pts, const float* __restrict best2,
+                const std::int32_t* __restrict bestNode, const glm::vec3* __restrict pos,
+                glm::vec3* __restrict sum, std::uint32_t* __restrict count,
+                std::uint32_t* __restrict firstMet, std::uint32_t dummy) {
+    std::size_t met = 0, out = 0;
+    for (std::size_t k = 0; k < liveCount; ++k) {
+        const std::uint32_t a = live[k];
+        std::int32_t bn = bestNode[a];
+        if constexpr (Drop) {
+            const std::uint8_t dead = killed[a];
+            liveOut[out] = a;
+            out += dead == 0 ? 1 : 0;
+            bn = dead != 0 ? -1 : bn;
+        }
+        const std::uint32_t j = bn < 0 ? dummy : static_cast<std::uint32_t>(bn);
+        const std::uint32_t c = count[j];
+        count[j] = c + 1;
+        firstMet[met] = j;
+        met += c == 0 ? 1 : 0;
+        const float b2 = best2[a];
+        sum[j] += (pts[a] - pos[bn < 0 ? 0 : j]) * (1.0f / std::sqrt(b2));
+    }
+    kept = Drop ? out : liveCount;
+    return met;
+}
+
 } // namespace
 
-void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
-                   const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
-                   std::size_t nodeCount, bool hashSets) {
-    a.sum.resize(nodeCount);
-    a.count.resize(nodeCount, 0);
+// liveOut (the same array as live) and killed: sumAttractionDroppingKilled; liveCount then
+// becomes the kept count.
+static void sumAttractionImpl(Attraction& a, const std::uint32_t* liveData, std::size_t& liveCount,
+                              std::uint32_t* liveOut, const std::uint8_t* killed,
+                              const glm::vec3* points, const float* best2,
+                              const std::int32_t* bestNode, const glm::vec3* nodes,
+                              std::size_t nodeCount, bool hashSets) {
+    const std::span<const std::uint32_t> live(liveData, liveCount);
+    for (const std::uint32_t j : a.attracted)
+        if (j < a.sum.size()) a.sum[j] = glm::vec3(0.0f); // as sumPointsNoHash needs them
+    a.sum.resize(nodeCount + 1, glm::vec3(0.0f));
+    a.count.resize(nodeCount + 1, 0);
     a.setHash.resize(nodeCount);
     a.marks.resize((nodeCount + 63) / 64, 0);
-    if (hashSets)
+    if (hashSets) {
         sumPoints<true>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
                         a.count.data(), a.setHash.data(), a.marks.data());
-    else
-        sumPoints<false>(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
-                         a.count.data(), a.setHash.data(), a.marks.data());
+    } else if (nodeCount > 0) {
+        a.firstMet.resize(nodeCount + 2);
+        const auto dummy = static_cast<std::uint32_t>(nodeCount);
+        const std::size_t met =
+            killed != nullptr
+                ? sumPointsNoHash<true>(liveData, liveCount, liveOut, killed, liveCount, points,
+                                        best2, bestNode, nodes, a.sum.data(), a.count.data(),
+                                        a.firstMet.data(), dummy)
+                : sumPointsNoHash<false>(liveData, liveCount, nullptr, nullptr, liveCount, points,
+                                         best2, bestNode, nodes, a.sum.data(), a.count.data(),
+                                         a.firstMet.data(), dummy);
+        a.count[nodeCount] = 0;
+        a.sum[nodeCount] = glm::vec3(0.0f);
+        for (std::size_t k = 0; k < met; ++k) {
+            const std::uint32_t j = a.firstMet[k];
+            if (j != dummy) a.marks[j >> 6] |= std::uint64_t{1} << (j & 63);
+        }
+    }
     a.attracted.clear();
     for (std::size_t w = 0; w < a.marks.size(); ++w) {
         for (std::uint64_t m = a.marks[w]; m != 0; m &= m - 1)
             a.attracted.push_back(static_cast<std::uint32_t>(w * 64 + __builtin_ctzll(m)));
         a.marks[w] = 0;
     }
+}
+
+void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
+                   const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
+                   std::size_t nodeCount, bool hashSets) {
+    std::size_t count = live.size();
+    sumAttractionImpl(a, live.data(), count, nullptr, nullptr, points, best2, bestNode, nodes,
+                      nodeCount, hashSets);
+}
+
+void sumAttractionDroppingKilled(Attraction& a, std::vector<std::uint32_t>& live,
+                                 const std::uint8_t* killed, const glm::vec3* points,
+                                 const float* best2, const std::int32_t* bestNode,
+                                 const glm::vec3* nodes, std::size_t nodeCount) {
+    std::size_t count = live.size();
+    if (nodeCount == 0) {
+        std::erase_if(live, [killed](std::uint32_t p) { return killed[p] != 0; });
+        count = live.size();
+    }
+    sumAttractionImpl(a, live.data(), count, live.data(), killed, points, best2, bestNode, nodes,
+                      nodeCount, false);
+    live.resize(count);
 }
 
 void nearestPoints(Attraction& a, std::span<const std::uint32_t> nodes,

@@ -18,13 +18,14 @@ namespace sylva::growth {
 /// attracted again). The closest of a node's points: nearestPoints().
 struct Attraction {
     std::vector<glm::vec3> sum;
-    std::vector<std::uint32_t> count;   ///< 0 outside attracted between iterations
+    std::vector<std::uint32_t> count;   ///< 0 outside attracted between iterations; one spare
     std::vector<std::uint64_t> setHash; ///< with hashSets only
     std::vector<float> nearest2;        ///< by nearestPoints, for the nodes it was given
     std::vector<std::uint32_t> nearest;
     std::vector<std::uint8_t> wanted;     ///< nearestPoints' scratch, all zero between calls
     std::vector<std::uint32_t> attracted; ///< increasing node index
     std::vector<std::uint64_t> marks;     ///< one bit a node, all zero between calls
+    std::vector<std::uint32_t> firstMet;  ///< scratch: the nodes as first met (without the hash)
 };
 
 /// Fills \p a for \p nodeCount nodes at \p nodes from the live points \p live (increasing
@@ -32,11 +33,21 @@ struct Attraction {
 /// squared distance (\p best2). Each point adds (point − node) · (1 / √best2) to its node's sum.
 /// The attracted nodes come from a bit per node marked as a node is first met, read word by word
 /// (the same order as sorting them, without the sort). setHash only with \p hashSets (else it
-/// is left as it was): colonize() needs no hash to tell a node's set from the last iteration's
-/// (see there), and keeps it for its naive search, the oracle.
+/// is left as it was; without it the sums take no branch a point: sum and count hold one spare
+/// entry past the nodes for the points out of reach): colonize() needs no hash to tell a node's set
+/// from the last iteration's (see there), and keeps it for its naive search, the oracle.
 void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
                    const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
                    std::size_t nodeCount, bool hashSets = true);
+
+/// sumAttraction without the hash over \p live as the search left it: the points it killed
+/// (\p killed non-zero) dropped from \p live in the same pass, in order (what dropKilled does),
+/// their vectors not summed. colonize()'s accelerated path: one pass over the live points an
+/// iteration instead of two.
+void sumAttractionDroppingKilled(Attraction& a, std::vector<std::uint32_t>& live,
+                                 const std::uint8_t* killed, const glm::vec3* points,
+                                 const float* best2, const std::int32_t* bestNode,
+                                 const glm::vec3* nodes, std::size_t nodeCount);
 
 /// For each node of \p nodes (attracted ones): the closest of its live points (the first in index
 /// order of equally close ones) into a.nearest[node], its squared distance into a.nearest2[node],

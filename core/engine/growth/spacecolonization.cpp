@@ -174,8 +174,9 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     std::vector<std::uint32_t> fixed; ///< the attracted nodes with a fix
     std::vector<float> lens;          ///< per attracted node: the length of its sum
     // The per-node arrays the same room (resized each iteration as the nodes come).
-    at.sum.reserve(room);
-    at.count.reserve(room);
+    at.sum.reserve(room + 1); // a spare entry past the nodes (see sumAttraction)
+    at.count.reserve(room + 1);
+    at.firstMet.reserve(room + 2);
     at.setHash.reserve(room);
     at.marks.reserve(room / 64 + 1);
     lastHash.reserve(room);
@@ -197,21 +198,35 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
             fast->update(s, searched, firstNew, dk2);
         else
             updateNaive(s, searched, di2, dk2);
-        dropKilled(s);
         firstNew = skel.size();
-        if (s.live.empty()) {
-            result.stopReason = StopReason::NoPointsLeft;
-            break;
-        }
-        if (iteration >= params.maxIterations) {
-            result.stopReason = StopReason::IterationCap;
-            break;
+        // The killed points dropped from the live list by the sums' pass (without the hash),
+        // unless the loop ends here.
+        const bool last = iteration >= params.maxIterations;
+        if (hashSets || last) {
+            dropKilled(s);
+            if (s.live.empty()) {
+                result.stopReason = StopReason::NoPointsLeft;
+                break;
+            }
+            if (last) {
+                result.stopReason = StopReason::IterationCap;
+                break;
+            }
         }
 
         // 2. sum the unit vectors per node, in point index order
         const std::size_t n = skel.size();
-        sumAttraction(at, s.live, s.points.data(), s.best2.data(), s.bestNode.data(),
-                      skel.position.data(), n, hashSets);
+        if (hashSets) {
+            sumAttraction(at, s.live, s.points.data(), s.best2.data(), s.bestNode.data(),
+                          skel.position.data(), n, true);
+        } else {
+            sumAttractionDroppingKilled(at, s.live, s.killed.data(), s.points.data(),
+                                        s.best2.data(), s.bestNode.data(), skel.position.data(), n);
+            if (s.live.empty()) {
+                result.stopReason = StopReason::NoPointsLeft;
+                break;
+            }
+        }
         lastHash.resize(n, 0);
         lastCount.resize(n, 0);
         lastGrown.resize(n, -2);

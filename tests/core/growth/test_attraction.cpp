@@ -1,7 +1,8 @@
 // Space colonization's attraction sums (sumAttraction) and closest points (nearestPoint) against
 // the straightforward loop that colonize() ran before: the attracted nodes pushed as first met
 // and sorted, the closest point tracked point by point, every array through its vector. Bit for
-// bit over random points, nodes and live lists.
+// bit over random points, nodes and live lists; without the hash, and dropping the killed points
+// from the live list in the same pass (sumAttractionDroppingKilled).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,7 +78,7 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
         for (glm::vec3& p : points)
             p = {uniform(rng, -5, 5), uniform(rng, 0, 10), uniform(rng, -5, 5)};
         std::vector<glm::vec3> nodes;
-        Attraction fast, noHash;
+        Attraction fast, noHash, dropping;
         Reference ref;
         std::size_t attractedTotal = 0;
         for (int iteration = 0; iteration < 12; ++iteration) {
@@ -86,12 +87,17 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 nodes.push_back({uniform(rng, -5, 5), uniform(rng, 0, 10), uniform(rng, -5, 5)});
             // A node may repeat one before it: points equally far from both keep the lower.
             if (nodes.size() > 2 && rng.below(2) == 0) nodes.back() = nodes[nodes.size() - 2];
-            std::vector<std::uint32_t> live;
+            std::vector<std::uint32_t> live, withKilled;
+            std::vector<std::uint8_t> killed(pointCount, 0);
             std::vector<float> best2(pointCount, 0.0f);
             std::vector<std::int32_t> bestNode(pointCount, -1);
             const float di2 = 2.5f * 2.5f;
             for (std::uint32_t a = 0; a < pointCount; ++a) {
-                if (rng.below(5) == 0) continue; // killed
+                withKilled.push_back(a); // as the search leaves the list: its kills still in it
+                if (rng.below(5) == 0) {
+                    killed[a] = 1;
+                    continue;
+                }
                 live.push_back(a);
                 float b2 = di2;
                 for (std::size_t j = 0; j < nodes.size(); ++j) {
@@ -108,6 +114,16 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                           nodes.size());
             sumAttraction(noHash, live, points.data(), best2.data(), bestNode.data(), nodes.data(),
                           nodes.size(), false);
+            // The killed points in reach of a node (the search kills the closest ones).
+            for (std::uint32_t a = 0; a < pointCount; ++a)
+                if (killed[a] != 0 && nodes.size() > a % 7) {
+                    bestNode[a] = static_cast<std::int32_t>(a % 7);
+                    best2[a] = 0.25f;
+                }
+            sumAttractionDroppingKilled(dropping, withKilled, killed.data(), points.data(),
+                                        best2.data(), bestNode.data(), nodes.data(), nodes.size());
+            ASSERT_EQ(withKilled, live) << "seed " << seed << " it " << iteration;
+            ASSERT_EQ(dropping.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
             ASSERT_EQ(fast.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
             std::vector<std::uint32_t> even;
             for (const std::uint32_t j : ref.attracted)
@@ -131,11 +147,21 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 ASSERT_EQ(std::memcmp(&noHash.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
                 ASSERT_EQ(noHash.count[j], ref.count[j]) << "node " << j;
                 noHash.count[j] = 0;
+                // Dropping the killed points in the same pass: the same again.
+                ASSERT_EQ(std::memcmp(&dropping.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
+                ASSERT_EQ(dropping.count[j], ref.count[j]) << "node " << j;
+                dropping.count[j] = 0;
                 // As colonize() does once it has grown the node.
                 fast.count[j] = 0;
                 ref.count[j] = 0;
             }
-            ASSERT_EQ(fast.count, ref.count);
+            ASSERT_EQ(std::vector<std::uint32_t>(fast.count.begin(),
+                                                 fast.count.begin() + ref.count.size()),
+                      ref.count);
+            for (const std::uint32_t c : noHash.count)
+                ASSERT_EQ(c, 0u); // the spare entry too
+            for (const std::uint32_t c : dropping.count)
+                ASSERT_EQ(c, 0u);
         }
         EXPECT_GT(attractedTotal, 100u) << "seed " << seed; // the test exercises something
     }
