@@ -13,7 +13,7 @@ namespace sylva::mesh {
 void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
                          std::span<const std::uint32_t> group, float aspect, float scale,
                          CardFitInput& in) {
-    std::vector<glm::vec3>& pts = in.corners;
+    RawVector<glm::vec3>& pts = in.corners;
     pts.resize(4 * group.size());
     glm::dvec3 heading(0.0), up(0.0), left(0.0);
     glm::vec3* out = pts.data();
@@ -148,7 +148,7 @@ __m128d zOf(__m128 p) {
 void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                     float aspect, float scale, CardFitInput& in) {
     static_assert(offsetof(glm::quat, w) == 3 * sizeof(float), "a quaternion is x, y, z, w");
-    std::vector<glm::vec3>& pts = in.corners;
+    RawVector<glm::vec3>& pts = in.corners;
     const std::size_t n = group.size();
     pts.resize(4 * n);
     const float halfAspect = 0.5f * aspect; // leafCorners' 0.5f * aspect * len

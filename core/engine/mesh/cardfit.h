@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/skeleton/skeleton.h"
+#include "engine/util/rawvector.h"
 
 namespace sylva::mesh {
 
@@ -38,9 +39,13 @@ double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
 
 /// What a cluster card (leafclusters.h) is fitted from: its leaves' card corners (four a leaf,
 /// in leaf order), their mean and covariance (made in double from the float corners, summed in
-/// that order), and the sums of the leaves' heading, up and left axes.
+/// that order), and the sums of the leaves' heading, up and left axes. The corners a RawVector:
+/// each fit resizes them to its group and writes every one, and std::vector's resize() inside
+/// the capacity (the lanes' inputs are reused, group after group) value-initialised each new
+/// vec3 through a stack temporary written in parts and read back whole (docs/perf/geometry.md,
+/// eighth pass).
 struct CardFitInput {
-    std::vector<glm::vec3> corners;
+    RawVector<glm::vec3> corners;
     glm::dvec3 heading{0.0}, up{0.0}, left{0.0}, m{0.0};
     glm::dmat3 cov{0.0};
 };
