@@ -246,7 +246,7 @@ void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::
 }
 
 double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
-                   std::vector<glm::dvec3>& mids) {
+                   RawVector<glm::dvec3>& mids) {
     const std::size_t n = leaves.size();
     mids.resize(n);
     double sizes = 0.0;
@@ -311,8 +311,11 @@ void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec
 #else
 
 double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
-                   std::vector<glm::dvec3>& mids) {
-    return leafMiddlesPlain(leaves, sizeScale, mids);
+                   RawVector<glm::dvec3>& mids) {
+    std::vector<glm::dvec3> plain;
+    const double sizes = leafMiddlesPlain(leaves, sizeScale, plain);
+    mids.assign(plain.begin(), plain.end());
+    return sizes;
 }
 
 void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,

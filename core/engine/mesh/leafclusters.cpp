@@ -42,7 +42,7 @@ public:
     /// The number of distinct cells of \p mids at \p cell, or limit + 1 as soon as there are
     /// more than \p limit (at most the table's size), and each leaf's group: the index of its
     /// cell in the order the cells are first met.
-    std::size_t fill(const std::vector<glm::dvec3>& mids, double cell, std::size_t limit,
+    std::size_t fill(const RawVector<glm::dvec3>& mids, double cell, std::size_t limit,
                      std::vector<std::uint32_t>& groupOf) {
         ++mStamp;
         // Room for every key a fill may write (one past the limit), written in place below.
@@ -147,8 +147,7 @@ private:
 /// \return how many leaves it took for the count to pass \p limit, or 0 where that was not
 /// shown: every leaf taken, or fewer bits than 0.8 x limit with half of them taken (on the
 /// presets, sizes with too many cells had 0.84 x limit or more there, sizes taken 0.77 or less).
-std::size_t leavesPastCellLimit(const std::vector<glm::dvec3>& mids, double cell,
-                                std::size_t limit) {
+std::size_t leavesPastCellLimit(const RawVector<glm::dvec3>& mids, double cell, std::size_t limit) {
     // About 32 bits a cell allowed, 2 MB at most: few hashes share a bit (the oak: 2^18 bits,
     // 32 KB, in L1).
     int bitsLog2 = 6;
@@ -380,7 +379,7 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
     // once, for the size chosen.
     // The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every
     // cell size tried, so made once a leaf.
-    std::vector<glm::dvec3> mids;
+    RawVector<glm::dvec3> mids;
     const double mean =
         std::max(leafMiddles(leaves, sizeScale, mids) / static_cast<double>(leaves.size()), 1e-4);
     // The groups come from the count that passed, not from one more pass over the leaves.
