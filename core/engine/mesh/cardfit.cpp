@@ -13,7 +13,7 @@ namespace sylva::mesh {
 void prepareCardFitPlain(const std::vector<skel::Leaf>& leaves,
                          std::span<const std::uint32_t> group, float aspect, float scale,
                          CardFitInput& in) {
-    std::vector<glm::vec3>& pts = in.corners;
+    RawVector<glm::vec3>& pts = in.corners;
     pts.resize(4 * group.size());
     glm::dvec3 heading(0.0), up(0.0), left(0.0);
     glm::vec3* out = pts.data();
@@ -148,7 +148,7 @@ __m128d zOf(__m128 p) {
 void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                     float aspect, float scale, CardFitInput& in) {
     static_assert(offsetof(glm::quat, w) == 3 * sizeof(float), "a quaternion is x, y, z, w");
-    std::vector<glm::vec3>& pts = in.corners;
+    RawVector<glm::vec3>& pts = in.corners;
     const std::size_t n = group.size();
     pts.resize(4 * n);
     const float halfAspect = 0.5f * aspect; // leafCorners' 0.5f * aspect * len
@@ -215,28 +215,26 @@ void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::
     const double count = static_cast<double>(pts.size());
     const __m128d mXY = _mm_div_pd(sumXY, _mm_set1_pd(count));
     const __m128d mZ = _mm_div_sd(sumZ, _mm_set_sd(count));
-    // cov[i][j] += d[j] * d[i]: column i's rows x and y are dXY * d[i], its row z d[z] * d[i]
-    // (the product the other way round: the same double); the rows z of columns x and y
-    // together, d[z] * dXY.
-    __m128d col0 = _mm_setzero_pd(), col1 = _mm_setzero_pd(), col2 = _mm_setzero_pd();
-    __m128d row2 = _mm_setzero_pd(), zz = _mm_setzero_pd();
+    // cov[i][j] += d[j] * d[i], the six distinct sums of the nine (a product is the same double
+    // either way round, and each is summed in corner order from +0 in both of its places): xx
+    // and yy as dXY * dXY, xz and yz as dXY * dz, xy and zz as (dx, dz) * (dy, dz). Three
+    // products and three sums a corner where the four columns' and rows' took five and five
+    // (perf annotate of the English oak: the covariance pass a third of prepareCardFit).
+    __m128d sq = _mm_setzero_pd(), xzyz = _mm_setzero_pd(), xyzz = _mm_setzero_pd();
     for (const glm::vec3& q : pts) {
         const __m128d dXY = _mm_sub_pd(xyOf(q), mXY);
         const __m128d dZ = _mm_sub_sd(zOf(q), mZ);
-        const __m128d dx = _mm_unpacklo_pd(dXY, dXY), dy = _mm_unpackhi_pd(dXY, dXY);
         const __m128d dz = _mm_unpacklo_pd(dZ, dZ);
-        col0 = _mm_add_pd(col0, _mm_mul_pd(dXY, dx));
-        col1 = _mm_add_pd(col1, _mm_mul_pd(dXY, dy));
-        col2 = _mm_add_pd(col2, _mm_mul_pd(dXY, dz));
-        row2 = _mm_add_pd(row2, _mm_mul_pd(dz, dXY));
-        zz = _mm_add_sd(zz, _mm_mul_sd(dZ, dZ));
+        sq = _mm_add_pd(sq, _mm_mul_pd(dXY, dXY));
+        xzyz = _mm_add_pd(xzyz, _mm_mul_pd(dXY, dz));
+        xyzz = _mm_add_pd(xyzz, _mm_mul_pd(_mm_unpacklo_pd(dXY, dz), _mm_unpackhi_pd(dXY, dz)));
     }
-    alignas(16) double c0[2], c1[2], c2[2], r2[2], v[6];
-    _mm_store_pd(c0, col0);
-    _mm_store_pd(c1, col1);
-    _mm_store_pd(c2, col2);
-    _mm_store_pd(r2, row2);
-    in.cov = glm::dmat3(c0[0], c0[1], r2[0], c1[0], c1[1], r2[1], c2[0], c2[1], _mm_cvtsd_f64(zz));
+    alignas(16) double xxYy[2], xzYz[2], xyZz[2], v[6];
+    _mm_store_pd(xxYy, sq);
+    _mm_store_pd(xzYz, xzyz);
+    _mm_store_pd(xyZz, xyzz);
+    in.cov =
+        glm::dmat3(xxYy[0], xyZz[0], xzYz[0], xyZz[0], xxYy[1], xzYz[1], xzYz[0], xzYz[1], xyZz[1]);
     _mm_store_pd(v, mXY);
     in.m = glm::dvec3(v[0], v[1], _mm_cvtsd_f64(mZ));
     _mm_store_pd(v, headingXY);
@@ -248,7 +246,7 @@ void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::
 }
 
 double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
-                   std::vector<glm::dvec3>& mids) {
+                   RawVector<glm::dvec3>& mids) {
     const std::size_t n = leaves.size();
     mids.resize(n);
     double sizes = 0.0;
@@ -313,8 +311,11 @@ void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec
 #else
 
 double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
-                   std::vector<glm::dvec3>& mids) {
-    return leafMiddlesPlain(leaves, sizeScale, mids);
+                   RawVector<glm::dvec3>& mids) {
+    std::vector<glm::dvec3> plain;
+    const double sizes = leafMiddlesPlain(leaves, sizeScale, plain);
+    mids.assign(plain.begin(), plain.end());
+    return sizes;
 }
 
 void prepareCardFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "engine/skeleton/skeleton.h"
+#include "engine/util/rawvector.h"
 
 namespace sylva::mesh {
 
@@ -33,14 +34,20 @@ inline void leafCorners(const skel::Leaf& leaf, float aspect, float scale, glm::
 /// makes it), bit for bit leafMiddlesPlain for finite quaternions.
 /// \return the sum of leaf.size x sizeScale in leaf order (the groups' mean leaf), made in the
 /// same pass (a pass of its own read the ~690 KB of the English oak's leaves once more).
+/// \p mids a RawVector: every middle is written, and the zero fill of a std::vector's resize
+/// (the oak's ~460 KB a tree, a fresh vector each) was ~0.4 % of the tree's samples.
 double leafMiddles(const std::vector<skel::Leaf>& leaves, double sizeScale,
-                   std::vector<glm::dvec3>& mids);
+                   RawVector<glm::dvec3>& mids);
 
 /// What a cluster card (leafclusters.h) is fitted from: its leaves' card corners (four a leaf,
 /// in leaf order), their mean and covariance (made in double from the float corners, summed in
-/// that order), and the sums of the leaves' heading, up and left axes.
+/// that order), and the sums of the leaves' heading, up and left axes. The corners a RawVector:
+/// each fit resizes them to its group and writes every one, and std::vector's resize() inside
+/// the capacity (the lanes' inputs are reused, group after group) value-initialised each new
+/// vec3 through a stack temporary written in parts and read back whole (docs/perf/geometry.md,
+/// eighth pass).
 struct CardFitInput {
-    std::vector<glm::vec3> corners;
+    RawVector<glm::vec3> corners;
     glm::dvec3 heading{0.0}, up{0.0}, left{0.0}, m{0.0};
     glm::dmat3 cov{0.0};
 };

@@ -42,7 +42,7 @@ public:
     /// The number of distinct cells of \p mids at \p cell, or limit + 1 as soon as there are
     /// more than \p limit (at most the table's size), and each leaf's group: the index of its
     /// cell in the order the cells are first met.
-    std::size_t fill(const std::vector<glm::dvec3>& mids, double cell, std::size_t limit,
+    std::size_t fill(const RawVector<glm::dvec3>& mids, double cell, std::size_t limit,
                      std::vector<std::uint32_t>& groupOf) {
         ++mStamp;
         // Room for every key a fill may write (one past the limit), written in place below.
@@ -147,8 +147,7 @@ private:
 /// \return how many leaves it took for the count to pass \p limit, or 0 where that was not
 /// shown: every leaf taken, or fewer bits than 0.8 x limit with half of them taken (on the
 /// presets, sizes with too many cells had 0.84 x limit or more there, sizes taken 0.77 or less).
-std::size_t leavesPastCellLimit(const std::vector<glm::dvec3>& mids, double cell,
-                                std::size_t limit) {
+std::size_t leavesPastCellLimit(const RawVector<glm::dvec3>& mids, double cell, std::size_t limit) {
     // About 32 bits a cell allowed, 2 MB at most: few hashes share a bit (the oak: 2^18 bits,
     // 32 KB, in L1).
     int bitsLog2 = 6;
@@ -325,9 +324,11 @@ void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint3
 /// order: the same cards as one group at a time, without waiting on one chain of divisions and
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
-std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
-                                 float aspect, float scale, std::vector<CardBounds>* bounds) {
-    std::vector<FittedCard> cards(groups.size());
+RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
+                               float aspect, float scale, std::vector<CardBounds>* bounds) {
+    // Room, not zeros (the oak's ~4,700 cards, 280 KB): a single leaf's card is set to the
+    // default where it is passed over, every other card is fitted.
+    RawVector<FittedCard> cards(groups.size());
     if (bounds) bounds->assign(groups.size(), CardBounds{});
     constexpr std::size_t kLanes = kPowerLanes;
     CardFitInput in[kLanes];
@@ -337,7 +338,10 @@ std::vector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Le
         std::size_t n = 0;
         std::span<const std::uint32_t> members[kLanes];
         for (; g < groups.size() && n < kLanes; ++g) {
-            if (groups[g].size() < 2) continue;
+            if (groups[g].size() < 2) {
+                cards[g] = FittedCard{};
+                continue;
+            }
             members[n] = groups[g];
             lane[n++] = g;
         }
@@ -380,7 +384,7 @@ LeafGroups groupLeafIndices(const std::vector<skel::Leaf>& leaves, double sizeSc
     // once, for the size chosen.
     // The leaf's middle, not its stem: a leaf belongs where most of it is. The same for every
     // cell size tried, so made once a leaf.
-    std::vector<glm::dvec3> mids;
+    RawVector<glm::dvec3> mids;
     const double mean =
         std::max(leafMiddles(leaves, sizeScale, mids) / static_cast<double>(leaves.size()), 1e-4);
     // The groups come from the count that passed, not from one more pass over the leaves.
@@ -427,7 +431,7 @@ std::vector<std::vector<std::uint32_t>> groupLeaves(const std::vector<skel::Leaf
 
 struct LeafClusterPlan::Data {
     LeafGroups groups;
-    std::vector<FittedCard> fitted;    ///< a group's card (a single leaf's: unused)
+    RawVector<FittedCard> fitted;      ///< a group's card (a single leaf's: unused)
     float aspect = 0.0f, scale = 0.0f; ///< a single leaf's card (leafCorners)
 };
 
@@ -452,11 +456,11 @@ LeafClusterPlan planLeafClusterCards(const std::vector<skel::Leaf>& leaves,
     LeafGroups groups = groupLeafIndices(leaves, cards.sizeScale, clusters.leavesPerCard);
     // Each group's card, fitted once (it was fitted again for the mesh after the check).
     std::vector<CardBounds> bounds;
-    std::vector<FittedCard> fitted =
+    RawVector<FittedCard> fitted =
         fitCards(leaves, groups, aspect, scale, accept ? &bounds : nullptr);
     if (accept) {
         LeafGroups kept;
-        std::vector<FittedCard> keptFits;
+        RawVector<FittedCard> keptFits;
         kept.reserve(groups.size(), leaves.size());
         keptFits.reserve(groups.size());
         for (std::size_t k = 0; k < groups.size(); ++k) {
@@ -469,7 +473,7 @@ LeafClusterPlan planLeafClusterCards(const std::vector<skel::Leaf>& leaves,
             } else {
                 for (const std::uint32_t& i : g) {
                     kept.add({&i, 1});
-                    keptFits.emplace_back();
+                    keptFits.push_back(FittedCard{});
                 }
             }
         }
@@ -496,7 +500,7 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
         throw InvalidInput("leaf cluster cards: the plan was made for other leaves or settings");
     if (leaves.empty()) return 0;
     const LeafGroups& groups = plan.mData->groups;
-    const std::vector<FittedCard>& fitted = plan.mData->fitted;
+    const RawVector<FittedCard>& fitted = plan.mData->fitted;
     const float aspect = plan.mData->aspect, scale = plan.mData->scale;
     const std::size_t cardCount = plan.mCards;
     // Room made, not filled: the positions, normals, uvs and indices are appended below.

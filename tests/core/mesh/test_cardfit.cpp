@@ -115,7 +115,8 @@ TEST(CardFit, MiddlesMatchTheStraightforwardOnes) {
     for (double scale : {1.0, 0.37}) {
         for (std::size_t count = 0; count <= all.size(); ++count) {
             const std::vector<skel::Leaf> leaves(all.begin(), all.begin() + count);
-            std::vector<glm::dvec3> fast, plain;
+            RawVector<glm::dvec3> fast;
+            std::vector<glm::dvec3> plain;
             const double fastSum = mesh::leafMiddles(leaves, scale, fast);
             const double plainSum = mesh::leafMiddlesPlain(leaves, scale, plain);
             ASSERT_EQ(fast.size(), count);
@@ -170,7 +171,8 @@ TEST(CardFit, AxesOfQuaternionsWithZerosMatchTheStraightforwardOnes) {
     // The middles at -0 (where a heading's -0 and +0 give middles of different bits).
     for (skel::Leaf& leaf : leaves)
         leaf.position = glm::vec3(-0.0f);
-    std::vector<glm::dvec3> fastMids, plainMids;
+    RawVector<glm::dvec3> fastMids;
+    std::vector<glm::dvec3> plainMids;
     mesh::leafMiddles(leaves, 1.0, fastMids);
     mesh::leafMiddlesPlain(leaves, 1.0, plainMids);
     for (std::size_t i = 0; i < leaves.size(); ++i)
