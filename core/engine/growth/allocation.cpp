@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <functional>
 
+#include "engine/util/parallelfor.h"
+
 namespace sylva::growth {
 
 namespace {
@@ -45,16 +47,7 @@ bool gatherLightAndMarkShed(const MetamerTopology& t, std::span<const double> te
                          (t.lateralChild[i] < 0 ? axillaryLight[i] : 0.0);
         sums[i] = {o, o, 1, 1};
     };
-    // The region only where it runs in parallel: a `parallel for ... if` that fails still
-    // starts a team of one and ends it at a barrier (a futex call a self-organizing cycle).
-    if (count > 8192) {
-#pragma omp parallel for schedule(static)
-        for (std::int64_t k = 0; k < count; ++k)
-            own(k);
-    } else {
-        for (std::int64_t k = 0; k < count; ++k)
-            own(k);
-    }
+    forEachIndex(count, count > 8192, own);
     bool any = false;
     // Reverse scan: when i is reached, all its descendants (higher indices) have added into it,
     // so its sums are final and its shedding can be decided before it adds to its parent.

@@ -7,22 +7,13 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__x86_64__) && defined(__GNUC__)
-// GCC 12's AVX-512 intrinsics pass _mm512_undefined_ps() as their unused merge operand, which
-// -Wuninitialized reports where they are inlined (GCC bug 105593): off for the header alone.
-#if !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <immintrin.h>
-#if !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "engine/util/x86intrinsics.h"
+#if defined(SYLVA_X86_INTRINSICS)
 #define SYLVA_OFFER_AVX 1
 #endif
 
 #include "engine/growth/spatialgrid.h"
+#include "engine/util/parallelfor.h"
 
 namespace sylva::growth {
 
@@ -549,16 +540,7 @@ struct AcceleratedSearch::Impl {
             else
                 updateCell<false>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
         };
-        // Not `parallel for ... if (parallel)`: a region whose if fails still starts a team of
-        // one and ends it at a barrier (a futex call here), once an iteration.
-        if (parallel) {
-#pragma omp parallel for schedule(dynamic, 32)
-            for (std::int64_t k = 0; k < cellCount; ++k)
-                update(k);
-        } else {
-            for (std::int64_t k = 0; k < cellCount; ++k)
-                update(k);
-        }
+        forEachIndexDynamic(cellCount, parallel, 32, update);
         std::erase_if(mActive, [this](std::uint32_t c) { return mCells[c].live == 0; });
     }
 
@@ -569,9 +551,7 @@ struct AcceleratedSearch::Impl {
         glm::vec3 lo, hi;    ///< bounds of the cell's live points
     };
 
-    static std::uint32_t padded(std::uint32_t n) {
-        return (n + 3u) & ~3u;
-    }
+    static std::uint32_t padded(std::uint32_t n) { return (n + 3u) & ~3u; }
 
     // Inert lanes: an infinite distance never beats anything and 0 never raises the maximum.
     void clearPadding(std::uint32_t begin, std::uint32_t live) {

@@ -8,18 +8,8 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__x86_64__) && defined(__GNUC__)
-// GCC 12's AVX-512 intrinsics pass _mm512_undefined_ps() as their unused merge operand, which
-// -Wuninitialized reports where they are inlined (GCC bug 105593): off for the header alone.
-#if !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wuninitialized"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
-#include <immintrin.h>
-#if !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
+#include "engine/util/x86intrinsics.h"
+#if defined(SYLVA_X86_INTRINSICS)
 #define SYLVA_CANDIDATES_AVX 1
 #endif
 

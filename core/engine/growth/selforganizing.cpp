@@ -14,6 +14,7 @@
 #include "engine/growth/pipemodel.h"
 #include "engine/skeleton/radii.h"
 #include "engine/util/error.h"
+#include "engine/util/parallelfor.h"
 #include "engine/util/randomvector.h"
 #include "engine/util/safenormalize.h"
 #include "engine/util/seedsalts.h"
@@ -31,29 +32,6 @@ constexpr std::uint8_t kBarrenTerminal = 4u, kBarrenAxillary = 8u;
 /// editor) leaves the other threads spinning for milliseconds after it: a 5,000-internode
 /// broadleaf took twice its CPU time on two threads. A 100k-internode tree stays parallel.
 constexpr std::int64_t kParallelCheap = 16384, kParallelCostly = 2048;
-/// body(k) for k in [0, count), on OpenMP's threads when \p parallel (static or dynamic chunks
-/// of 64), else here. Not `parallel for ... if (parallel)`: a region whose if fails still starts
-/// a team of one and ends it at a barrier (a futex call; ~115 a tree of so-broadleaf.json).
-template <class Body> void forStatic(std::int64_t count, bool parallel, const Body& body) {
-    if (parallel) {
-#pragma omp parallel for schedule(static)
-        for (std::int64_t k = 0; k < count; ++k)
-            body(k);
-    } else {
-        for (std::int64_t k = 0; k < count; ++k)
-            body(k);
-    }
-}
-template <class Body> void forDynamic(std::int64_t count, bool parallel, const Body& body) {
-    if (parallel) {
-#pragma omp parallel for schedule(dynamic, 64)
-        for (std::int64_t k = 0; k < count; ++k)
-            body(k);
-    } else {
-        for (std::int64_t k = 0; k < count; ++k)
-            body(k);
-    }
-}
 float radians(double degrees) {
     return static_cast<float>(degrees) * kPi / 180.0f;
 }
@@ -334,13 +312,13 @@ void SelfOrganizingSimulation::evaluateLight(std::vector<double>& terminal,
         // each prefetched kAhead buds early so that their cache misses overlap.
         constexpr std::int64_t kNoBud = -2, kAhead = 24;
         mCells.resize(n);
-        forStatic(count, count >= kParallelCheap, [&](std::int64_t k) {
+        forEachIndex(count, count >= kParallelCheap, [&](std::int64_t k) {
             const auto i = static_cast<std::size_t>(k);
             mCells[i] = terminalAlive(i) || axillaryAlive(i) ? grid.cellOf(grid.voxelOf(mM.end[i]))
                                                              : kNoBud;
         });
         const bool anyBlocked = grid.anyBlocked();
-        forStatic(count, count >= kParallelCheap, [&](std::int64_t k) {
+        forEachIndex(count, count >= kParallelCheap, [&](std::int64_t k) {
             const auto i = static_cast<std::size_t>(k);
             if (k + kAhead < count) grid.prefetchCell(mCells[i + kAhead]);
             const std::int64_t cell = mCells[i];
@@ -735,7 +713,7 @@ void SelfOrganizingSimulation::commitShoots() {
     }
     const auto count = static_cast<std::int64_t>(mGrowing.size());
     const auto cycle = static_cast<std::uint16_t>(mCycle);
-    forStatic(count, total >= kParallelCheap, [&](std::int64_t k) {
+    forEachIndex(count, total >= kParallelCheap, [&](std::int64_t k) {
         const Growing& g = mGrowing[static_cast<std::size_t>(k)];
         if (g.made == 0) return;
         const std::size_t from = sz(g.metamer);
@@ -844,12 +822,12 @@ void SelfOrganizingSimulation::step() {
     constexpr std::int64_t kAhead = 8;
     if (mShadow) {
         mBudVoxels.resize(mGrowing.size());
-        forStatic(count, count >= kParallelCheap, [&](std::int64_t k) {
+        forEachIndex(count, count >= kParallelCheap, [&](std::int64_t k) {
             const auto b = static_cast<std::size_t>(k);
             mBudVoxels[b] = mShadow->voxelOf(mM.end[sz(mGrowing[b].metamer)]);
         });
     }
-    forDynamic(count, count >= kParallelCostly, [&](std::int64_t k) {
+    forEachIndexDynamic(count, count >= kParallelCostly, 64, [&](std::int64_t k) {
         Growing& g = mGrowing[static_cast<std::size_t>(k)];
         const std::size_t i = sz(g.metamer);
         if (g.seedling) {
@@ -866,7 +844,7 @@ void SelfOrganizingSimulation::step() {
         }
     });
     const Clock::time_point s1 = Clock::now();
-    forDynamic(count, count >= kParallelCostly, [&](std::int64_t k) {
+    forEachIndexDynamic(count, count >= kParallelCostly, 64, [&](std::int64_t k) {
         Growing& g = mGrowing[static_cast<std::size_t>(k)];
         g.made = makeShoot(g, mShootEnd.data() + g.slot, mShootFrame.data() + g.slot);
     });
@@ -880,7 +858,7 @@ void SelfOrganizingSimulation::step() {
         const std::size_t removed = mSources.size();
         mSources.resize(removed + (n1 - n0));
         const auto added = static_cast<std::int64_t>(n1 - n0);
-        forStatic(added, added >= kParallelCheap, [&](std::int64_t k) {
+        forEachIndex(added, added >= kParallelCheap, [&](std::int64_t k) {
             const std::size_t i = n0 + static_cast<std::size_t>(k);
             mSources[removed + static_cast<std::size_t>(k)] = {mShadow->voxelOf(mM.end[i]), 1,
                                                                mM.tree[i]};
