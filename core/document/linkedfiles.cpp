@@ -5,24 +5,15 @@
 #include "engine/graph/fileparams.h"
 #include "engine/graph/graph.h"
 #include "engine/lsystem/grammar.h"
+#include "engine/lsystem/grammarcache.h"
 #include "engine/util/error.h"
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace sylva::doc {
 
 namespace {
-
-std::string readLinkedText(const std::filesystem::path& path, const std::string& species) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw IoError("species '" + species + "': cannot read the linked file " + path.string());
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 void checkSpeciesGraph(const graph::SpeciesGraph& g, const std::string& species) {
     graph::registerBuiltinNodeTypes();
@@ -30,17 +21,26 @@ void checkSpeciesGraph(const graph::SpeciesGraph& g, const std::string& species)
     for (const graph::NodeDesc& node : g.nodes) {
         const Value& p = node.params;
         if (!p.isObject()) continue;
+        std::filesystem::path grammarFile; // read below: not opened again as a linked file
         if (const Value* text = p.find("grammar"); text && text->isString()) {
             lsys::parseGrammar(text->toString("grammar"),
                                g.sourceFile.empty() ? species : g.sourceFile);
         } else if (const Value* file = p.find("grammar_file"); file && file->isString()) {
-            const std::filesystem::path path = g.baseDir / file->toString("grammar_file");
-            lsys::parseGrammar(readLinkedText(path, species), path.string());
+            // Parsed through the cache the growth reads (lsys::parsedGrammarFile): a grammar
+            // file is parsed once an open, not once to check and again to grow.
+            grammarFile = g.baseDir / file->toString("grammar_file");
+            try {
+                lsys::parsedGrammarFile(grammarFile);
+            } catch (const IoError&) {
+                throw IoError("species '" + species + "': cannot read the linked file " +
+                              grammarFile.string());
+            }
         }
         Value params = p; // forEachFileIn walks a mutable value
         graph::forEachFileIn(params, [&](const Value& v) {
             if (v.toString("file").empty()) return;
             const std::filesystem::path path = g.baseDir / v.toString("file");
+            if (path == grammarFile) return;
             std::ifstream in(path, std::ios::binary);
             if (!in)
                 throw IoError("species '" + species + "', node '" + node.id +
