@@ -52,6 +52,13 @@ case $mode in
 --fresh-root)
   root=${3:?--fresh-root needs a folder}
   [[ ! -e $root || -z $(ls -A "$root") ]] || fail "$root exists and is not empty"
+  # A fresh root with the package's Depends is about 0.9 GB: say so up front rather than fail
+  # half-way through unpacking (a CI run once did, on a disk filled by old outputs).
+  parent=$(dirname "$root")
+  mkdir -p "$parent"
+  free_kb=$(df -Pk "$parent" | awk 'NR == 2 {print $4}')
+  (( free_kb >= 2 * 1024 * 1024 )) ||
+    fail "$(( free_kb / 1024 )) MB free at $parent; the fresh root needs 2 GB (0.9 GB installed, and room to unpack)"
   command -v debootstrap >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -q debootstrap >/dev/null
   debootstrap --variant=minbase bookworm "$root" "$mirror" > "$root.debootstrap.log" 2>&1 ||
     { tail -20 "$root.debootstrap.log"; fail "debootstrap"; }
