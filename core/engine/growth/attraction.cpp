@@ -55,10 +55,12 @@ sumPointsNoHash(const std::uint32_t* live, std::size_t liveCount, std::uint32_t*
         const std::uint32_t a = live[k];
         std::int32_t bn = bestNode[a];
         if constexpr (Drop) {
-            const std::uint8_t dead = killed[a];
+            // A killed point's node -1 by an or, not a select: GCC made the select a branch,
+            // mispredicted at every kill.
+            const std::int32_t dead = killed[a] != 0 ? 1 : 0;
             liveOut[out] = a;
-            out += dead == 0 ? 1 : 0;
-            bn = dead != 0 ? -1 : bn;
+            out += static_cast<std::size_t>(1 - dead);
+            bn |= -dead;
         }
         const std::uint32_t j = bn < 0 ? dummy : static_cast<std::uint32_t>(bn);
         const std::uint32_t c = count[j];
