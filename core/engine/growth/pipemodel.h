@@ -19,4 +19,11 @@ inline constexpr float kMaxPipeExponent = 4.0f;
 /// \throw InvalidInput for a value out of range or an invalid skeleton.
 void applyPipeModel(skel::Skeleton& skeleton, float tipRadius, float exponent);
 
+/// static_cast<float>(std::pow(x, 0.5)) for a finite \p x > 0, mostly without pow: the
+/// correctly rounded square root s, taken where every double within four steps of s rounds to
+/// the same float (pow's result is within 1 ulp of the true root, s within half an ulp, so pow's
+/// is one of those doubles and, rounding being monotone, rounds to that float too); pow where
+/// they do not (about once in 10^7 for random x). The pipe model's radius for the exponent 2.
+float floatSquareRoot(double x);
+
 } // namespace sylva::growth

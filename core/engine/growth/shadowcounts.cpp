@@ -59,29 +59,19 @@ bool shadowAtSources(std::span<const glm::ivec3> voxels, const ShadowKernel& ker
     const std::vector<std::int32_t>& delta = kernel.delta;
     raw.resize(n);
     const std::uint32_t* const t = sat.data();
-    // Sources share voxels: each voxel's sum is taken once.
-    const auto bx = static_cast<std::size_t>(box.x), bz = static_cast<std::size_t>(box.z);
-    std::vector<std::int64_t> memo(static_cast<std::size_t>(box.y) * bx * bz, -1);
     for (std::size_t i = 0; i < n; ++i) {
         const glm::ivec3 v = voxels[i];
-        std::int64_t& sum64 = memo[(static_cast<std::size_t>(v.y - lo.y) * bx +
-                                    static_cast<std::size_t>(v.x - lo.x)) *
-                                       bz +
-                                   static_cast<std::size_t>(v.z - lo.z)];
-        if (sum64 < 0) {
-            // The corners of the square q around the voxel's column at layer y + q.
-            std::size_t hh = at(v), ll = hh - sx - 1, lh = hh - sx, hl = hh - 1;
-            std::uint32_t sum = 0;
-            for (std::size_t q = 0; q <= d; ++q) {
-                sum += static_cast<std::uint32_t>(delta[q]) * (t[hh] - t[lh] - t[hl] + t[ll]);
-                hh += sy + sx + 1;
-                ll += sy - sx - 1;
-                lh += sy - sx + 1;
-                hl += sy + sx - 1;
-            }
-            sum64 = sum;
+        // The corners of the square q around the voxel's column at layer y + q.
+        std::size_t hh = at(v), ll = hh - sx - 1, lh = hh - sx, hl = hh - 1;
+        std::uint32_t sum = 0;
+        for (std::size_t q = 0; q <= d; ++q) {
+            sum += static_cast<std::uint32_t>(delta[q]) * (t[hh] - t[lh] - t[hl] + t[ll]);
+            hh += sy + sx + 1;
+            ll += sy - sx - 1;
+            lh += sy - sx + 1;
+            hl += sy + sx - 1;
         }
-        raw[i] = static_cast<std::int32_t>(static_cast<std::uint32_t>(sum64));
+        raw[i] = static_cast<std::int32_t>(sum);
     }
     return true;
 }

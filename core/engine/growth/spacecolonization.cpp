@@ -11,9 +11,11 @@
 
 #include "engine/growth/attraction.h"
 #include "engine/growth/colonizationsearch.h"
+#include "engine/growth/nodeframes.h"
 #include "engine/growth/pipemodel.h"
 #include "engine/growth/spatialgrid.h"
 #include "engine/util/error.h"
+#include "engine/util/floatsincos.h"
 #include "engine/util/random.h"
 #include "engine/util/safenormalize.h"
 #include "engine/util/seedsalts.h"
@@ -56,12 +58,10 @@ glm::vec3 randomUnit(Rng& rng) {
     const double z = rng.uniform(-1.0, 1.0);
     const double phi = rng.uniform(0.0, 2.0 * 3.14159265358979323846);
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-    return glm::vec3(static_cast<float>(r * std::cos(phi)), static_cast<float>(z),
-                     static_cast<float>(r * std::sin(phi)));
-}
-
-glm::quat transport(const glm::quat& parent, const glm::vec3& dir) {
-    return glm::normalize(glm::rotation(skel::headingOf(parent), dir) * parent);
+    // static_cast<float>(r * std::cos(phi)) and of r * std::sin(phi), mostly without libm's
+    // sincos (~10 ns a node).
+    const FloatSinCos t = floatSinCos(phi, r);
+    return glm::vec3(t.cos, static_cast<float>(z), t.sin);
 }
 
 void buildTrunk(skel::Skeleton& skel, const std::vector<glm::vec3>& points,
@@ -173,6 +173,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     std::vector<std::uint8_t> fix;    ///< per attracted node: 1 its vectors cancel, 2 it repeats
     std::vector<std::uint32_t> fixed; ///< the attracted nodes with a fix
     std::vector<float> lens;          ///< per attracted node: the length of its sum
+    std::vector<glm::quat> frames;    ///< per attracted node: its new node's frame
     // The per-node arrays the same room (resized each iteration as the nodes come).
     at.sum.reserve(room + 1); // a spare entry past the nodes (see sumAttraction)
     at.count.reserve(room + 1);
@@ -282,10 +283,13 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
             lastCount[j] = at.count[j];
             at.count[j] = 0;
         }
+        // The new nodes' frames sixteen at a time where the processor has AVX-512 (each a chain
+        // of two square roots and divisions, the rotation's and the normalisation's).
+        transportFrames(skel.orientation, attracted, dirs, frames);
         for (std::size_t k = 0; k < attracted.size(); ++k) {
             const std::uint32_t j = attracted[k];
             skel.addNode(skel.position[j] + D * dirs[k], static_cast<std::int32_t>(j), 0.0f,
-                         skel.order[j], transport(skel.orientation[j], dirs[k]));
+                         skel.order[j], frames[k]);
         }
         result.iterations = iteration + 1;
         progress.report(static_cast<double>(iteration + 1) / params.maxIterations, "grow");

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+
 namespace sylva::mesh {
 
 /// The constants of a leaf's frame (placeLeaves): the petiole angle's sine and cosine, the
@@ -20,5 +22,15 @@ bool leafFramesAvx();
 /// lanes (bit i: lane i) whose frame the scalar path must make instead (the normal along the
 /// heading, or a quaternion of no length). Call only where leafFramesAvx() is true.
 unsigned leafFramesAvx16(const LeafFrameWeights& w, const float* const in[7], float q[4][16]);
+
+/// Whether leafFramesAvx512x64 runs here: the processor has AVX-512 and neither SYLVA_NO_AVX
+/// nor SYLVA_NO_AVX512 is set.
+bool leafFramesAvx512();
+
+/// leafFramesAvx16 for sixty-four leaves, sixteen lanes to a register (the same operations in
+/// each lane, in the same order: the same bits); bit i of the result is lane i. Call only where
+/// leafFramesAvx512() is true.
+std::uint64_t leafFramesAvx512x64(const LeafFrameWeights& w, const float* const in[7],
+                                  float q[4][64]);
 
 } // namespace sylva::mesh

@@ -253,7 +253,8 @@ struct Placer {
         const std::size_t n = count;
         std::size_t k = 0;
         if (leafFramesAvx()) {
-            // The same lanes eight to a register (leafFramesAvx16).
+            // The same lanes eight to a register (leafFramesAvx16), or sixteen, four registers
+            // a call (leafFramesAvx512x64).
             const LeafFrameWeights w{sinPetiole,
                                      cosPetiole,
                                      static_cast<float>(p.normalWeight),
@@ -262,6 +263,21 @@ struct Placer {
                                      light.x,
                                      light.y,
                                      light.z};
+            if (leafFramesAvx512()) {
+                alignas(64) float q[4][64];
+                for (; k + 64 <= n; k += 64) {
+                    const float* const in[7] = {input(0) + k, input(1) + k, input(2) + k,
+                                                input(3) + k, input(4) + k, input(5) + k,
+                                                input(6) + k};
+                    const std::uint64_t scalar = leafFramesAvx512x64(w, in, q);
+                    for (int lane = 0; lane < 64; ++lane) {
+                        const std::size_t kk = k + static_cast<std::size_t>(lane);
+                        emit(kk, scalar >> lane & 1
+                                     ? scalarFrame(kk)
+                                     : glm::quat(q[0][lane], q[1][lane], q[2][lane], q[3][lane]));
+                    }
+                }
+            }
             alignas(32) float q[4][16];
             for (; k + 16 <= n; k += 16) {
                 const float* const in[7] = {input(0) + k, input(1) + k, input(2) + k, input(3) + k,

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <omp.h>
 
 #include "engine/growth/colonizationsearch.h"
@@ -301,6 +303,50 @@ TEST(PipeModel, SameBitsAsPowEveryNode) {
         }
     }
     EXPECT_EQ(checked, 12 * 3000);
+}
+
+// The pipe model's radius for the exponent 2 against the float of pow(x, 1/2) it stands for,
+// where the float's rounding is closest to a tie: the squares of the midpoints between adjacent
+// floats (their root is exactly the midpoint, which pow returns and which rounds to even) and
+// the doubles a few steps either side, then random sums of squares.
+TEST(PipeModel, FloatSquareRootIsTheFloatOfPow) {
+    std::uint64_t state = 0x243F6A8885A308D3ull;
+    auto next = [&state] {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return state >> 11;
+    };
+    auto same = [](double x) {
+        const float want = static_cast<float>(std::pow(x, 0.5));
+        const float got = floatSquareRoot(x);
+        return std::memcmp(&want, &got, sizeof want) == 0;
+    };
+    int checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        // A float in [1e-6, 10), the midpoint to the next one, exact in double, and its square
+        // (25 bits squared: exact too).
+        const auto a = static_cast<float>(1e-6 + 10.0 * static_cast<double>(next()) * 0x1.0p-53);
+        const double m =
+            (static_cast<double>(a) +
+             static_cast<double>(std::nextafter(a, std::numeric_limits<float>::max()))) /
+            2.0;
+        const double x = m * m;
+        for (int step = -6; step <= 6; ++step) {
+            const double y = std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) +
+                                                   static_cast<std::uint64_t>(step));
+            ASSERT_TRUE(same(y)) << "x " << y;
+            ++checked;
+        }
+        double sum = 0.0;
+        for (std::uint64_t c = next() % 5; c-- > 0;) {
+            const auto r =
+                static_cast<double>(static_cast<float>(static_cast<double>(next()) * 0x1.0p-53));
+            sum += r * r;
+        }
+        if (sum > 0.0) {
+            ASSERT_TRUE(same(sum)) << "sum " << sum;
+        }
+    }
+    EXPECT_EQ(checked, 20000 * 13);
 }
 
 TEST(SpaceColonization, SameResultOnOneAndTwoThreads) {
