@@ -11,6 +11,7 @@
 
 #include "engine/util/error.h"
 #include "engine/util/hugepages.h"
+#include "engine/util/rawvector.h"
 #include "engine/util/safenormalize.h"
 
 namespace sylva::mesh {
@@ -254,28 +255,35 @@ struct Writer {
 // appended to the mesh in chain order. Generating into a block that stays in cache and then
 // appending to reserved (not resized) arrays writes the big arrays once: resize() would first
 // zero-fill them (value-initialized glm vectors), a whole extra pass over ~56 bytes a vertex.
+// The block itself is RawVectors: every slot of a run is written before it is appended (the
+// chains' layout), so a zero fill of the block (~0.5 MB a tree for the English oak: its
+// trunk's run of relief rings) would be written over unread; a block too small is made anew,
+// not grown (growing would copy the last run's vertices).
 struct Scratch {
-    std::vector<glm::vec3> pos, nrm;
-    std::vector<glm::vec2> uvs;
-    std::vector<std::uint16_t> orders;
-    std::vector<float> flexes;
-    std::vector<std::uint32_t> nodeIds;
-    std::vector<std::uint32_t> idx;
-    std::vector<RingFrame> frames; ///< a run's rings' frames (meshChain's first pass)
+    RawVector<glm::vec3> pos, nrm;
+    RawVector<glm::vec2> uvs;
+    RawVector<std::uint16_t> orders;
+    RawVector<float> flexes;
+    RawVector<std::uint32_t> nodeIds;
+    RawVector<std::uint32_t> idx;
+    RawVector<RingFrame> frames; ///< a run's rings' frames (meshChain's first pass)
 
+    template <class T> static void room(RawVector<T>& v, std::size_t n) {
+        if (v.size() >= n) return;
+        v.clear();
+        v.resize(n);
+    }
     Writer writer(std::size_t vBegin, std::size_t vCount, std::size_t iBegin, std::size_t iCount,
                   bool wind, bool ids) {
-        if (pos.size() < vCount) {
-            pos.resize(vCount);
-            nrm.resize(vCount);
-            uvs.resize(vCount);
+        room(pos, vCount);
+        room(nrm, vCount);
+        room(uvs, vCount);
+        if (wind) {
+            room(orders, vCount);
+            room(flexes, vCount);
         }
-        if (wind && orders.size() < vCount) {
-            orders.resize(vCount);
-            flexes.resize(vCount);
-        }
-        if (ids && nodeIds.size() < vCount) nodeIds.resize(vCount);
-        if (idx.size() < iCount) idx.resize(iCount);
+        if (ids) room(nodeIds, vCount);
+        room(idx, iCount);
         return Writer{pos.data(),
                       nrm.data(),
                       uvs.data(),
@@ -962,7 +970,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                         rings += flared[static_cast<std::size_t>(flaredOf[c])].nodes.size();
                     else if (!ribbon[c])
                         rings += chains.begin[c + 1] - chains.begin[c];
-                if (scratch.frames.size() < rings) scratch.frames.resize(rings);
+                Scratch::room(scratch.frames, rings);
                 // Every chain's frames first, then the rings (ChainPass).
                 for (const ChainPass pass : {ChainPass::Frames, ChainPass::Rings}) {
                     RingFrame* frames = scratch.frames.data();
