@@ -4,7 +4,7 @@
 #include <cmath>
 
 #if defined(__SSE2__)
-#include <xmmintrin.h>
+#include <emmintrin.h>
 #endif
 
 #include "engine/mesh/valuenoise.h"
@@ -123,6 +123,131 @@ constexpr std::size_t kTintLanes = 8;
 // powf, three more divisions) and the cards' chains side by side overlap (perf record of the
 // English oak: multiplier and powf half of tintLeafCards' time). Each card's arithmetic its
 // own, in its order: the same bytes as one card at a time.
+//
+// Where SSE2 is there, the block's divisions, conversions, clamps and roundings are made two
+// cards (doubles) or four (floats) to an instruction: ten divisions a card (the hue's, three in
+// srgbToLinear, six ratios), which waited on the divider one by one. Each lane is the scalar
+// operation on the same operands (IEEE division, products, sums and conversions round alike
+// packed or not; the clamps and the maximum are written as the same comparisons, NaN kept where
+// std::clamp and std::max keep it); without SSE2, card by card.
+#if defined(__SSE2__)
+
+// std::clamp(v, lo, hi) lane by lane: (v < lo) ? lo : (hi < v) ? hi : v (a NaN stays).
+__m128d clampPd(__m128d v, __m128d lo, __m128d hi) {
+    const __m128d below = _mm_cmplt_pd(v, lo), above = _mm_cmplt_pd(hi, v);
+    const __m128d r = _mm_or_pd(_mm_and_pd(above, hi), _mm_andnot_pd(above, v));
+    return _mm_or_pd(_mm_and_pd(below, lo), _mm_andnot_pd(below, r));
+}
+
+__m128 clampPs(__m128 v, __m128 lo, __m128 hi) {
+    const __m128 below = _mm_cmplt_ps(v, lo), above = _mm_cmplt_ps(hi, v);
+    const __m128 r = _mm_or_ps(_mm_and_ps(above, hi), _mm_andnot_ps(above, v));
+    return _mm_or_ps(_mm_and_ps(below, lo), _mm_andnot_ps(below, r));
+}
+
+// Four floats from two pairs of doubles, each static_cast<float>.
+__m128 toFloats(__m128d a, __m128d b) {
+    return _mm_movelh_ps(_mm_cvtpd_ps(a), _mm_cvtpd_ps(b));
+}
+
+void multipliers(const Reference& r, const double* hue, const double* saturation,
+                 const double* value, glm::u8vec4* out, std::size_t n) {
+    static_assert(kTintLanes % 4 == 0, "the block is whole registers of floats");
+    // The lanes past n take zeros; their results are not stored.
+    alignas(16) double hu[kTintLanes] = {}, sa[kTintLanes] = {}, va[kTintLanes] = {};
+    for (std::size_t c = 0; c < n; ++c) {
+        hu[c] = hue[c];
+        sa[c] = saturation[c];
+        va[c] = value[c];
+    }
+    // The turns: hsv.x + float(hue / 360), clamp(hsv.y * float(1 + saturation), 0, 1),
+    // hsv.z * float(clamp(value, 0, 1)).
+    alignas(16) float th[kTintLanes], ts[kTintLanes], tv[kTintLanes];
+    {
+        const __m128d d360 = _mm_set1_pd(360.0), d0 = _mm_setzero_pd(), d1 = _mm_set1_pd(1.0);
+        const __m128 rh = _mm_set1_ps(r.hsv.x), rs = _mm_set1_ps(r.hsv.y),
+                     rv = _mm_set1_ps(r.hsv.z), f0 = _mm_setzero_ps(), f1 = _mm_set1_ps(1.0f);
+        for (std::size_t c = 0; c < kTintLanes; c += 4) {
+            const __m128 h = toFloats(_mm_div_pd(_mm_load_pd(hu + c), d360),
+                                      _mm_div_pd(_mm_load_pd(hu + c + 2), d360));
+            _mm_store_ps(th + c, _mm_add_ps(rh, h));
+            const __m128 s = toFloats(_mm_add_pd(d1, _mm_load_pd(sa + c)),
+                                      _mm_add_pd(d1, _mm_load_pd(sa + c + 2)));
+            _mm_store_ps(ts + c, clampPs(_mm_mul_ps(rs, s), f0, f1));
+            const __m128 v = toFloats(clampPd(_mm_load_pd(va + c), d0, d1),
+                                      clampPd(_mm_load_pd(va + c + 2), d0, d1));
+            _mm_store_ps(tv + c, _mm_mul_ps(rv, v));
+        }
+    }
+    // The turned colours, channel by channel (rgb[k][c]); srgbToLinear's two quotients made
+    // for every lane, the one it takes picked lane by lane (powf only where it is taken).
+    alignas(16) float rgb[3][kTintLanes] = {};
+    for (std::size_t c = 0; c < n; ++c) {
+        const glm::vec3 t = hsvToRgb({th[c], ts[c], tv[c]});
+        rgb[0][c] = t.x;
+        rgb[1][c] = t.y;
+        rgb[2][c] = t.z;
+    }
+    alignas(16) float low[3][kTintLanes], high[3][kTintLanes];
+    {
+        const __m128 a = _mm_set1_ps(0.055f), b = _mm_set1_ps(1.055f), d = _mm_set1_ps(12.92f);
+        for (int k = 0; k < 3; ++k)
+            for (std::size_t c = 0; c < kTintLanes; c += 4) {
+                const __m128 x = _mm_load_ps(&rgb[k][c]);
+                _mm_store_ps(&low[k][c], _mm_div_ps(x, d));
+                _mm_store_ps(&high[k][c], _mm_div_ps(_mm_add_ps(x, a), b));
+            }
+    }
+    alignas(16) float linear[3][kTintLanes] = {};
+    for (int k = 0; k < 3; ++k)
+        for (std::size_t c = 0; c < n; ++c)
+            linear[k][c] = rgb[k][c] <= 0.04045f ? low[k][c] : std::pow(high[k][c], 2.4f);
+    // The ratios to the reference, the scale (the strong channels' largest ratio, at least 1),
+    // the clamped ratios to it and their bytes (llroundExact of x * 255: below 2^31 the
+    // truncation, plus one from a fraction of a half or more; a NaN lane takes toByte).
+    alignas(16) std::int32_t bytes[3][kTintLanes];
+    {
+        const __m128d d1 = _mm_set1_pd(1.0), quarter = _mm_set1_pd(0.25), d255 = _mm_set1_pd(255.0),
+                      half = _mm_set1_pd(0.5);
+        const __m128d ref[3] = {_mm_set1_pd(r.lin[0]), _mm_set1_pd(r.lin[1]),
+                                _mm_set1_pd(r.lin[2])};
+        for (std::size_t c = 0; c < kTintLanes; c += 2) {
+            __m128d m[3];
+            const std::size_t half4 = c & 3;
+            for (int k = 0; k < 3; ++k) {
+                const __m128 four = _mm_load_ps(&linear[k][c - half4]);
+                const __m128 two = half4 == 0 ? four : _mm_movehl_ps(four, four);
+                m[k] = _mm_div_pd(_mm_cvtps_pd(two), ref[k]);
+            }
+            __m128d scale = d1;
+            for (int k = 0; k < 3; ++k)
+                if (r.strong[k]) scale = _mm_max_pd(m[k], scale); // (scale < m) ? m : scale
+            for (int k = 0; k < 3; ++k) {
+                const __m128d q = clampPd(_mm_div_pd(m[k], scale), quarter, d1);
+                const __m128d x = _mm_mul_pd(q, d255);
+                const __m128i i = _mm_cvttpd_epi32(x);
+                const __m128d fraction = _mm_sub_pd(x, _mm_cvtepi32_pd(i));
+                const __m128i up = _mm_castpd_si128(_mm_cmpge_pd(fraction, half));
+                // The comparison's lanes are 64 bits: their low halves to the two int lanes.
+                const __m128i round = _mm_shuffle_epi32(up, _MM_SHUFFLE(3, 3, 2, 0));
+                _mm_storel_epi64(reinterpret_cast<__m128i*>(&bytes[k][c]), _mm_sub_epi32(i, round));
+                if (_mm_movemask_pd(_mm_cmpunord_pd(x, x)) != 0) {
+                    alignas(16) double qs[2];
+                    _mm_store_pd(qs, q);
+                    for (int l = 0; l < 2; ++l)
+                        bytes[k][c + static_cast<std::size_t>(l)] = toByte(qs[l]);
+                }
+            }
+        }
+    }
+    for (std::size_t c = 0; c < n; ++c)
+        out[c] = glm::u8vec4(static_cast<std::uint8_t>(bytes[0][c]),
+                             static_cast<std::uint8_t>(bytes[1][c]),
+                             static_cast<std::uint8_t>(bytes[2][c]), 255);
+}
+
+#else
+
 void multipliers(const Reference& r, const double* hue, const double* saturation,
                  const double* value, glm::u8vec4* out, std::size_t n) {
     glm::vec3 turned[kTintLanes];
@@ -155,6 +280,8 @@ void multipliers(const Reference& r, const double* hue, const double* saturation
             out[c][k] = toByte(std::clamp(m[k] / scale, 0.25, 1.0));
     }
 }
+
+#endif
 
 } // namespace
 
