@@ -486,3 +486,32 @@ TEST(LeafTint, BlocksOfCardsAreTheCardByCardColours) {
                     << cards << " " << extra << " " << variant;
             }
 }
+
+// The cards' hashes eight at a time (AVX-512 where the processor has it) against the card-by-card
+// tint, bit for bit, where llroundExact's rounding decides: centres whose millimetres are exact
+// halves (a sixteenth of a metre is 62.5 mm), either side of zero, and integers; a block with a
+// centre past 2^52 mm (made card by card, llroundExact's std::llround) between blocks that are
+// not. The ctest LeafTint.SameWithoutAvx512 runs these tests on the card-by-card hashes.
+TEST(LeafTint, CardHashesRoundHalvesAndFarCentresAsTheCardByCardOnes) {
+    Rng rng(53);
+    for (int variant = 0; variant < 2; ++variant) {
+        mesh::Mesh m;
+        const std::size_t cards = 40;
+        for (std::size_t c = 0; c < cards; ++c) {
+            // Every corner at the centre: the corners' mean is the centre exactly.
+            glm::vec3 centre(static_cast<float>(static_cast<int>(rng.below(81)) - 40) / 16.0f,
+                             static_cast<float>(static_cast<int>(rng.below(81)) - 40) / 16.0f,
+                             static_cast<float>(static_cast<int>(rng.below(81)) - 40) / 16.0f);
+            if (variant == 1 && c / 8 == 2 && c % 8 == 5) centre.x = 1e13f;
+            for (int k = 0; k < 4; ++k)
+                m.positions.push_back(centre);
+        }
+        const mesh::LeafColorVariation variation{12.0, 0.3, 0.4};
+        mesh::Mesh blocks = m, plain = m;
+        mesh::tintLeafCards(blocks, 0, variation, kGreen, 0.0, 5, {}, 0.0);
+        cardByCardTint(plain, 0, variation, kGreen, 0.0, 5, {}, 0.0);
+        ASSERT_EQ(blocks.colors.size(), plain.colors.size());
+        for (std::size_t v = 0; v < plain.colors.size(); ++v)
+            EXPECT_EQ(blocks.colors[v], plain.colors[v]) << variant << " " << v;
+    }
+}
