@@ -7,6 +7,10 @@
 
 #include "engine/util/error.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace sylva::mesh {
 
 namespace {
@@ -200,6 +204,37 @@ void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::ui
                    float amplitude, float* row) {
     BarkRing ring(pattern, columns, sides);
     barkReliefRow(ring, y, seed, amplitude, row);
+}
+
+// (four quotients to a division on SSE2, each the scalar one: IEEE division rounds alike
+// packed or not)
+void barkSlopeRow(const float* row, const float* a, const float* b, int res, float twoDTheta,
+                  float ds, float* dTh, float* dS) {
+    const auto n = static_cast<std::size_t>(res) + 1;
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t prev = j == 0 ? static_cast<std::size_t>(res) - 1 : j - 1;
+        const std::size_t next = j == static_cast<std::size_t>(res) ? 1 : j + 1;
+        dTh[j] = row[next] - row[prev];
+        dS[j] = b[j] - a[j];
+    }
+    const bool along = ds > 1e-12f;
+#if defined(__SSE2__)
+    for (std::size_t j = n; j % 4 != 0; ++j)
+        dTh[j] = dS[j] = 0.0f;
+    const __m128 d = _mm_set1_ps(twoDTheta), e = _mm_set1_ps(along ? ds : 1.0f);
+    for (std::size_t j = 0; j < n; j += 4) {
+        _mm_storeu_ps(dTh + j, _mm_div_ps(_mm_loadu_ps(dTh + j), d));
+        _mm_storeu_ps(dS + j, _mm_div_ps(_mm_loadu_ps(dS + j), e));
+    }
+#else
+    for (std::size_t j = 0; j < n; ++j) {
+        dTh[j] /= twoDTheta;
+        dS[j] /= along ? ds : 1.0f;
+    }
+#endif
+    if (!along)
+        for (std::size_t j = 0; j < n; ++j)
+            dS[j] = 0.0f;
 }
 
 } // namespace sylva::mesh

@@ -55,4 +55,12 @@ void barkReliefRow(BarkRing& ring, float y, std::uint32_t seed, float amplitude,
 void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::uint32_t seed,
                    float amplitude, float* row);
 
+/// A relief ring's slopes for its vertices' normals (the tube mesher's relief rings), j from 0 to
+/// \p res: dTh[j] = (row[jNext] - row[jPrev]) / twoDTheta, the seam's neighbours across it (jPrev
+/// of 0 is res - 1, jNext of res is 1), and dS[j] = (b[j] - a[j]) / ds, 0 where ds is not above
+/// 1e-12: bit for bit those quotients one by one, made four to a division (they were a relief
+/// vertex's two divisions besides its normal's). \p dTh and \p dS have room for res + 4 floats.
+void barkSlopeRow(const float* row, const float* a, const float* b, int res, float twoDTheta,
+                  float ds, float* dTh, float* dS);
+
 } // namespace sylva::mesh

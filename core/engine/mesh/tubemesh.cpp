@@ -422,6 +422,7 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
     if (caps && !lateral) w.v = firstRing; // the base cap is written after the first frame
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
     std::vector<float> rhoRows; // with relief: ρ of each ring vertex (rings × sides+1)
+    std::vector<float> slopes;  // with relief: a ring's slopes (barkSlopeRow)
     for (std::size_t k = 0; k < m; ++k) {
         const RingFrame& f = frames[k];
         const glm::vec3 p = f.p, t = f.t, n = f.n, b = f.b, tn = f.tn;
@@ -452,20 +453,24 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
             const float* rhoA = rhoRows.data() + ka * ringVerts;
             const float* rhoB = rhoRows.data() + kb * ringVerts;
             const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
+            // The ring's slopes first, four quotients to a division (barkSlopeRow): ∂ρ/∂θ's
+            // difference over 2 dθ (the relief's, where the lobes' own is known exactly) and
+            // ∂ρ/∂s's over ds, the same quotients as a vertex at a time.
+            if (k == 0) slopes.resize(2 * (ringVerts + 3));
+            float* const dTh = slopes.data();
+            float* const dS = dTh + ringVerts + 3;
+            barkSlopeRow(lobe != nullptr ? relief + k * ringVerts : rhoK, rhoA, rhoB, res,
+                         2.0f * dTheta, ds, dTh, dS);
             for (int j = 0; j <= res; ++j) {
                 const glm::vec3 a = cs[static_cast<std::size_t>(j)];
                 const glm::vec3 radial = a.x * n + a.y * b;
                 const glm::vec3 around = -a.y * n + a.x * b;
-                const int jPrev = j == 0 ? res - 1 : j - 1, jNext = j == res ? 1 : j + 1;
                 const float rr = rhoK[j];
-                const float dRdTheta =
-                    lobe != nullptr // the lobes' own slope is known exactly
-                        ? R(k) * (amp * lobe[static_cast<std::size_t>(j)].y +
-                                  (relief[k * ringVerts + static_cast<std::size_t>(jNext)] -
-                                   relief[k * ringVerts + static_cast<std::size_t>(jPrev)]) /
-                                      (2.0f * dTheta))
-                        : (rhoK[jNext] - rhoK[jPrev]) / (2.0f * dTheta);
-                const float dRds = ds > 1e-12f ? (rhoB[j] - rhoA[j]) / ds : 0.0f;
+                const auto jj = static_cast<std::size_t>(j);
+                const float dRdTheta = lobe != nullptr // the lobes' own slope is known exactly
+                                           ? R(k) * (amp * lobe[jj].y + dTh[jj])
+                                           : dTh[jj];
+                const float dRds = dS[jj];
                 w.vertex(p + rr * radial,
                          safeNormalize(rr * radial - dRdTheta * around - rr * dRds * t, radial,
                                        kMinDirectionLength),

@@ -2,9 +2,12 @@
 
 #include <bit>
 #include <cstdint>
+#include <cstring>
+#include <numbers>
 #include <vector>
 
 #include "engine/mesh/barkrelief.h"
+#include "engine/util/random.h"
 
 using namespace sylva;
 
@@ -80,4 +83,36 @@ TEST(BarkReliefRow, OneRingLayoutServesEveryRingOfTheAxis) {
                     }
             }
     EXPECT_GT(compared, 100000);
+}
+
+// barkSlopeRow (four quotients to a division on SSE2) against the relief vertices' slopes as the
+// tube mesher made them one vertex at a time, bit for bit: every side count from 3 to 100 (each
+// remainder of four, the seam's neighbours), rows of random ρ with repeated values, steps ds
+// above, at and below the 1e-12 threshold (0 and negative included).
+TEST(BarkReliefRow, SlopeRowIsTheVertexByVertexQuotients) {
+    sylva::Rng rng(31);
+    for (int res = 3; res <= 100; ++res)
+        for (const float ds : {0.37f, 1e-12f, 2e-12f, 0.0f, -0.5f, 3.0e-7f}) {
+            std::vector<float> row(static_cast<std::size_t>(res) + 1), a(row.size()), b(row.size());
+            for (std::size_t j = 0; j < row.size(); ++j) {
+                row[j] = rng.below(5) == 0 ? 0.25f : rng.uniformf(0.05f, 0.6f);
+                a[j] = rng.uniformf(0.05f, 0.6f);
+                b[j] = rng.below(7) == 0 ? a[j] : rng.uniformf(0.05f, 0.6f);
+            }
+            const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
+            std::vector<float> dTh(row.size() + 3), dS(row.size() + 3);
+            mesh::barkSlopeRow(row.data(), a.data(), b.data(), res, 2.0f * dTheta, ds, dTh.data(),
+                               dS.data());
+            for (int j = 0; j <= res; ++j) {
+                const int jPrev = j == 0 ? res - 1 : j - 1, jNext = j == res ? 1 : j + 1;
+                const auto k = static_cast<std::size_t>(j);
+                const float theta =
+                    (row[static_cast<std::size_t>(jNext)] - row[static_cast<std::size_t>(jPrev)]) /
+                    (2.0f * dTheta);
+                const float along = ds > 1e-12f ? (b[k] - a[k]) / ds : 0.0f;
+                EXPECT_EQ(std::memcmp(&dTh[k], &theta, sizeof theta), 0) << res << " " << j;
+                EXPECT_EQ(std::memcmp(&dS[k], &along, sizeof along), 0)
+                    << res << " " << j << " " << ds;
+            }
+        }
 }
