@@ -421,8 +421,9 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
     std::size_t ringStart = firstRing;
     if (caps && !lateral) w.v = firstRing; // the base cap is written after the first frame
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
-    std::vector<float> rhoRows; // with relief: ρ of each ring vertex (rings × sides+1)
-    std::vector<float> slopes;  // with relief: a ring's slopes (barkSlopeRow)
+    std::vector<float> rhoRows;        // with relief: ρ of each ring vertex (rings × sides+1)
+    std::vector<float> slopes;         // with relief: a ring's slopes (barkSlopeRow)
+    std::vector<float> csLanes, lanes; // with relief: cs's x and y, a ring's vertices
     for (std::size_t k = 0; k < m; ++k) {
         const RingFrame& f = frames[k];
         const glm::vec3 p = f.p, t = f.t, n = f.n, b = f.b, tn = f.tn;
@@ -442,7 +443,7 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
             // ρ of every ring, once (each vertex reads its ring's, its neighbours' and the
             // neighbouring rings').
             if (k == 0) {
-                rhoRows.resize(m * ringVerts);
+                rhoRows.resize(m * ringVerts + 4); // (the last ring read four at a time)
                 for (std::size_t kk = 0; kk < m; ++kk)
                     for (int j = 0; j <= res; ++j)
                         rhoRows[kk * ringVerts + static_cast<std::size_t>(j)] =
@@ -461,20 +462,31 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
             float* const dS = dTh + ringVerts + 3;
             barkSlopeRow(lobe != nullptr ? relief + k * ringVerts : rhoK, rhoA, rhoB, res,
                          2.0f * dTheta, ds, dTh, dS);
-            for (int j = 0; j <= res; ++j) {
-                const glm::vec3 a = cs[static_cast<std::size_t>(j)];
-                const glm::vec3 radial = a.x * n + a.y * b;
-                const glm::vec3 around = -a.y * n + a.x * b;
-                const float rr = rhoK[j];
-                const auto jj = static_cast<std::size_t>(j);
-                const float dRdTheta = lobe != nullptr // the lobes' own slope is known exactly
-                                           ? R(k) * (amp * lobe[jj].y + dTh[jj])
-                                           : dTh[jj];
-                const float dRds = dS[jj];
-                w.vertex(p + rr * radial,
-                         safeNormalize(rr * radial - dRdTheta * around - rr * dRds * t, radial,
-                                       kMinDirectionLength),
-                         {uTiles * a.z, v});
+            // The ring's positions and normals (barkReliefVertices: four vertices to an
+            // instruction on SSE2, a relief vertex's normal is a square root and three
+            // divisions), then written a vertex at a time.
+            const std::size_t stride = ringVerts + 3;
+            if (k == 0) {
+                csLanes.assign(2 * stride, 0.0f);
+                for (std::size_t j = 0; j < ringVerts; ++j) {
+                    csLanes[j] = cs[j].x;
+                    csLanes[stride + j] = cs[j].y;
+                }
+                lanes.resize(6 * stride);
+            }
+            if (lobe != nullptr) { // the lobes' own slope is known exactly
+                const float rk = R(k);
+                for (std::size_t j = 0; j < ringVerts; ++j)
+                    dTh[j] = rk * (amp * lobe[j].y + dTh[j]);
+            }
+            {
+                float* o = lanes.data();
+                barkReliefVertices(csLanes.data(), csLanes.data() + stride, ringVerts, p, n, b, t,
+                                   rhoK, dTh, dS, kMinDirectionLength, o, stride);
+                for (std::size_t j = 0; j < ringVerts; ++j)
+                    w.vertex({o[j], o[stride + j], o[2 * stride + j]},
+                             {o[3 * stride + j], o[4 * stride + j], o[5 * stride + j]},
+                             {uTiles * cs[j].z, v});
             }
         }
         if (relief == nullptr && !(amp > 0.0f))
