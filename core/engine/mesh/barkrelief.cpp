@@ -6,6 +6,11 @@
 #include <vector>
 
 #include "engine/util/error.h"
+#include "engine/util/safenormalize.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace sylva::mesh {
 
@@ -200,6 +205,98 @@ void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::ui
                    float amplitude, float* row) {
     BarkRing ring(pattern, columns, sides);
     barkReliefRow(ring, y, seed, amplitude, row);
+}
+
+// (four quotients to a division on SSE2, each the scalar one: IEEE division rounds alike
+// packed or not)
+void barkSlopeRow(const float* row, const float* a, const float* b, int res, float twoDTheta,
+                  float ds, float* dTh, float* dS) {
+    const auto n = static_cast<std::size_t>(res) + 1;
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t prev = j == 0 ? static_cast<std::size_t>(res) - 1 : j - 1;
+        const std::size_t next = j == static_cast<std::size_t>(res) ? 1 : j + 1;
+        dTh[j] = row[next] - row[prev];
+        dS[j] = b[j] - a[j];
+    }
+    const bool along = ds > 1e-12f;
+#if defined(__SSE2__)
+    for (std::size_t j = n; j % 4 != 0; ++j)
+        dTh[j] = dS[j] = 0.0f;
+    const __m128 d = _mm_set1_ps(twoDTheta), e = _mm_set1_ps(along ? ds : 1.0f);
+    for (std::size_t j = 0; j < n; j += 4) {
+        _mm_storeu_ps(dTh + j, _mm_div_ps(_mm_loadu_ps(dTh + j), d));
+        _mm_storeu_ps(dS + j, _mm_div_ps(_mm_loadu_ps(dS + j), e));
+    }
+#else
+    for (std::size_t j = 0; j < n; ++j) {
+        dTh[j] /= twoDTheta;
+        dS[j] /= along ? ds : 1.0f;
+    }
+#endif
+    if (!along)
+        for (std::size_t j = 0; j < n; ++j)
+            dS[j] = 0.0f;
+}
+
+void barkReliefVertices(const float* ax, const float* ay, std::size_t count, const glm::vec3& p,
+                        const glm::vec3& n, const glm::vec3& b, const glm::vec3& t,
+                        const float* rho, const float* dTheta, const float* dS, float minLength,
+                        float* out, std::size_t stride) {
+#if defined(__SSE2__)
+    const __m128 nX = _mm_set1_ps(n.x), nY = _mm_set1_ps(n.y), nZ = _mm_set1_ps(n.z);
+    const __m128 bX = _mm_set1_ps(b.x), bY = _mm_set1_ps(b.y), bZ = _mm_set1_ps(b.z);
+    const __m128 tX = _mm_set1_ps(t.x), tY = _mm_set1_ps(t.y), tZ = _mm_set1_ps(t.z);
+    const __m128 pX = _mm_set1_ps(p.x), pY = _mm_set1_ps(p.y), pZ = _mm_set1_ps(p.z);
+    const __m128 sign = _mm_set1_ps(-0.0f), least = _mm_set1_ps(minLength);
+    for (std::size_t j = 0; j < count; j += 4) {
+        const __m128 x = _mm_loadu_ps(ax + j), y = _mm_loadu_ps(ay + j);
+        const __m128 minusY = _mm_xor_ps(y, sign); // -a.y (a sign flip, as glm's negation)
+        // radial = a.x n + a.y b, around = -a.y n + a.x b
+        const __m128 rx = _mm_add_ps(_mm_mul_ps(x, nX), _mm_mul_ps(y, bX));
+        const __m128 ry = _mm_add_ps(_mm_mul_ps(x, nY), _mm_mul_ps(y, bY));
+        const __m128 rz = _mm_add_ps(_mm_mul_ps(x, nZ), _mm_mul_ps(y, bZ));
+        const __m128 ux = _mm_add_ps(_mm_mul_ps(minusY, nX), _mm_mul_ps(x, bX));
+        const __m128 uy = _mm_add_ps(_mm_mul_ps(minusY, nY), _mm_mul_ps(x, bY));
+        const __m128 uz = _mm_add_ps(_mm_mul_ps(minusY, nZ), _mm_mul_ps(x, bZ));
+        const __m128 rr = _mm_loadu_ps(rho + j);
+        const __m128 dT = _mm_loadu_ps(dTheta + j);
+        const __m128 rrd = _mm_mul_ps(rr, _mm_loadu_ps(dS + j));
+        // (rr radial - dTheta around) - (rr dS) t
+        const __m128 vx =
+            _mm_sub_ps(_mm_sub_ps(_mm_mul_ps(rr, rx), _mm_mul_ps(dT, ux)), _mm_mul_ps(rrd, tX));
+        const __m128 vy =
+            _mm_sub_ps(_mm_sub_ps(_mm_mul_ps(rr, ry), _mm_mul_ps(dT, uy)), _mm_mul_ps(rrd, tY));
+        const __m128 vz =
+            _mm_sub_ps(_mm_sub_ps(_mm_mul_ps(rr, rz), _mm_mul_ps(dT, uz)), _mm_mul_ps(rrd, tZ));
+        // safeNormalize: glm::length's dot ((x x + y y) + z z) and its square root, v / l where
+        // l is above minLength, else radial (also where l is NaN)
+        const __m128 l = _mm_sqrt_ps(
+            _mm_add_ps(_mm_add_ps(_mm_mul_ps(vx, vx), _mm_mul_ps(vy, vy)), _mm_mul_ps(vz, vz)));
+        const __m128 longer = _mm_cmpgt_ps(l, least);
+        auto pick = [&](__m128 q, __m128 fallback) {
+            return _mm_or_ps(_mm_and_ps(longer, q), _mm_andnot_ps(longer, fallback));
+        };
+        _mm_storeu_ps(out + j, _mm_add_ps(pX, _mm_mul_ps(rr, rx)));
+        _mm_storeu_ps(out + stride + j, _mm_add_ps(pY, _mm_mul_ps(rr, ry)));
+        _mm_storeu_ps(out + 2 * stride + j, _mm_add_ps(pZ, _mm_mul_ps(rr, rz)));
+        _mm_storeu_ps(out + 3 * stride + j, pick(_mm_div_ps(vx, l), rx));
+        _mm_storeu_ps(out + 4 * stride + j, pick(_mm_div_ps(vy, l), ry));
+        _mm_storeu_ps(out + 5 * stride + j, pick(_mm_div_ps(vz, l), rz));
+    }
+#else
+    for (std::size_t j = 0; j < count; ++j) {
+        const glm::vec3 radial = ax[j] * n + ay[j] * b;
+        const glm::vec3 around = -ay[j] * n + ax[j] * b;
+        const float rr = rho[j];
+        const glm::vec3 position = p + rr * radial;
+        const glm::vec3 normal =
+            safeNormalize(rr * radial - dTheta[j] * around - rr * dS[j] * t, radial, minLength);
+        for (int k = 0; k < 3; ++k) {
+            out[static_cast<std::size_t>(k) * stride + j] = position[k];
+            out[static_cast<std::size_t>(3 + k) * stride + j] = normal[k];
+        }
+    }
+#endif
 }
 
 } // namespace sylva::mesh

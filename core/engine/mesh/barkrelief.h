@@ -1,8 +1,11 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 namespace sylva::mesh {
 
@@ -54,5 +57,26 @@ void barkReliefRow(BarkRing& ring, float y, std::uint32_t seed, float amplitude,
 /// The same for one ring (a BarkRing made for it).
 void barkReliefRow(BarkPattern pattern, int columns, int sides, float y, std::uint32_t seed,
                    float amplitude, float* row);
+
+/// A relief ring's slopes for its vertices' normals (the tube mesher's relief rings), j from 0 to
+/// \p res: dTh[j] = (row[jNext] - row[jPrev]) / twoDTheta, the seam's neighbours across it (jPrev
+/// of 0 is res - 1, jNext of res is 1), and dS[j] = (b[j] - a[j]) / ds, 0 where ds is not above
+/// 1e-12: bit for bit those quotients one by one, made four to a division (they were a relief
+/// vertex's two divisions besides its normal's). \p dTh and \p dS have room for res + 4 floats.
+void barkSlopeRow(const float* row, const float* a, const float* b, int res, float twoDTheta,
+                  float ds, float* dTh, float* dS);
+
+/// A relief ring's vertices, j from 0 to \p count - 1: with a = (ax[j], ay[j]) its direction
+/// round the ring (cos, sin), radial = a.x n + a.y b and around = -a.y n + a.x b, the position
+/// p + rho[j] radial and the normal safeNormalize(rho[j] radial - dTheta[j] around - rho[j] dS[j]
+/// t, radial, minLength), as glm makes them vertex by vertex, bit for bit; written to \p out as six
+/// rows of \p stride floats (position x, y, z, normal x, y, z). On SSE2 four vertices to an
+/// instruction (their square roots and divisions: the relief vertices waited on the divider):
+/// \p ax, \p ay, \p rho, \p dTheta, \p dS are read up to \p count rounded up to four, and
+/// \p stride is at least that.
+void barkReliefVertices(const float* ax, const float* ay, std::size_t count, const glm::vec3& p,
+                        const glm::vec3& n, const glm::vec3& b, const glm::vec3& t,
+                        const float* rho, const float* dTheta, const float* dS, float minLength,
+                        float* out, std::size_t stride);
 
 } // namespace sylva::mesh

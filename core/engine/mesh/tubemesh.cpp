@@ -11,6 +11,7 @@
 
 #include "engine/util/error.h"
 #include "engine/util/hugepages.h"
+#include "engine/util/rawvector.h"
 #include "engine/util/safenormalize.h"
 
 namespace sylva::mesh {
@@ -254,28 +255,35 @@ struct Writer {
 // appended to the mesh in chain order. Generating into a block that stays in cache and then
 // appending to reserved (not resized) arrays writes the big arrays once: resize() would first
 // zero-fill them (value-initialized glm vectors), a whole extra pass over ~56 bytes a vertex.
+// The block itself is RawVectors: every slot of a run is written before it is appended (the
+// chains' layout), so a zero fill of the block (~0.5 MB a tree for the English oak: its
+// trunk's run of relief rings) would be written over unread; a block too small is made anew,
+// not grown (growing would copy the last run's vertices).
 struct Scratch {
-    std::vector<glm::vec3> pos, nrm;
-    std::vector<glm::vec2> uvs;
-    std::vector<std::uint16_t> orders;
-    std::vector<float> flexes;
-    std::vector<std::uint32_t> nodeIds;
-    std::vector<std::uint32_t> idx;
-    std::vector<RingFrame> frames; ///< a run's rings' frames (meshChain's first pass)
+    RawVector<glm::vec3> pos, nrm;
+    RawVector<glm::vec2> uvs;
+    RawVector<std::uint16_t> orders;
+    RawVector<float> flexes;
+    RawVector<std::uint32_t> nodeIds;
+    RawVector<std::uint32_t> idx;
+    RawVector<RingFrame> frames; ///< a run's rings' frames (meshChain's first pass)
 
+    template <class T> static void room(RawVector<T>& v, std::size_t n) {
+        if (v.size() >= n) return;
+        v.clear();
+        v.resize(n);
+    }
     Writer writer(std::size_t vBegin, std::size_t vCount, std::size_t iBegin, std::size_t iCount,
                   bool wind, bool ids) {
-        if (pos.size() < vCount) {
-            pos.resize(vCount);
-            nrm.resize(vCount);
-            uvs.resize(vCount);
+        room(pos, vCount);
+        room(nrm, vCount);
+        room(uvs, vCount);
+        if (wind) {
+            room(orders, vCount);
+            room(flexes, vCount);
         }
-        if (wind && orders.size() < vCount) {
-            orders.resize(vCount);
-            flexes.resize(vCount);
-        }
-        if (ids && nodeIds.size() < vCount) nodeIds.resize(vCount);
-        if (idx.size() < iCount) idx.resize(iCount);
+        if (ids) room(nodeIds, vCount);
+        room(idx, iCount);
         return Writer{pos.data(),
                       nrm.data(),
                       uvs.data(),
@@ -413,7 +421,9 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
     std::size_t ringStart = firstRing;
     if (caps && !lateral) w.v = firstRing; // the base cap is written after the first frame
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
-    std::vector<float> rhoRows; // with relief: ρ of each ring vertex (rings × sides+1)
+    std::vector<float> rhoRows;        // with relief: ρ of each ring vertex (rings × sides+1)
+    std::vector<float> slopes;         // with relief: a ring's slopes (barkSlopeRow)
+    std::vector<float> csLanes, lanes; // with relief: cs's x and y, a ring's vertices
     for (std::size_t k = 0; k < m; ++k) {
         const RingFrame& f = frames[k];
         const glm::vec3 p = f.p, t = f.t, n = f.n, b = f.b, tn = f.tn;
@@ -433,7 +443,7 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
             // ρ of every ring, once (each vertex reads its ring's, its neighbours' and the
             // neighbouring rings').
             if (k == 0) {
-                rhoRows.resize(m * ringVerts);
+                rhoRows.resize(m * ringVerts + 4); // (the last ring read four at a time)
                 for (std::size_t kk = 0; kk < m; ++kk)
                     for (int j = 0; j <= res; ++j)
                         rhoRows[kk * ringVerts + static_cast<std::size_t>(j)] =
@@ -444,24 +454,39 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
             const float* rhoA = rhoRows.data() + ka * ringVerts;
             const float* rhoB = rhoRows.data() + kb * ringVerts;
             const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
-            for (int j = 0; j <= res; ++j) {
-                const glm::vec3 a = cs[static_cast<std::size_t>(j)];
-                const glm::vec3 radial = a.x * n + a.y * b;
-                const glm::vec3 around = -a.y * n + a.x * b;
-                const int jPrev = j == 0 ? res - 1 : j - 1, jNext = j == res ? 1 : j + 1;
-                const float rr = rhoK[j];
-                const float dRdTheta =
-                    lobe != nullptr // the lobes' own slope is known exactly
-                        ? R(k) * (amp * lobe[static_cast<std::size_t>(j)].y +
-                                  (relief[k * ringVerts + static_cast<std::size_t>(jNext)] -
-                                   relief[k * ringVerts + static_cast<std::size_t>(jPrev)]) /
-                                      (2.0f * dTheta))
-                        : (rhoK[jNext] - rhoK[jPrev]) / (2.0f * dTheta);
-                const float dRds = ds > 1e-12f ? (rhoB[j] - rhoA[j]) / ds : 0.0f;
-                w.vertex(p + rr * radial,
-                         safeNormalize(rr * radial - dRdTheta * around - rr * dRds * t, radial,
-                                       kMinDirectionLength),
-                         {uTiles * a.z, v});
+            // The ring's slopes first, four quotients to a division (barkSlopeRow): ∂ρ/∂θ's
+            // difference over 2 dθ (the relief's, where the lobes' own is known exactly) and
+            // ∂ρ/∂s's over ds, the same quotients as a vertex at a time.
+            if (k == 0) slopes.resize(2 * (ringVerts + 3));
+            float* const dTh = slopes.data();
+            float* const dS = dTh + ringVerts + 3;
+            barkSlopeRow(lobe != nullptr ? relief + k * ringVerts : rhoK, rhoA, rhoB, res,
+                         2.0f * dTheta, ds, dTh, dS);
+            // The ring's positions and normals (barkReliefVertices: four vertices to an
+            // instruction on SSE2, a relief vertex's normal is a square root and three
+            // divisions), then written a vertex at a time.
+            const std::size_t stride = ringVerts + 3;
+            if (k == 0) {
+                csLanes.assign(2 * stride, 0.0f);
+                for (std::size_t j = 0; j < ringVerts; ++j) {
+                    csLanes[j] = cs[j].x;
+                    csLanes[stride + j] = cs[j].y;
+                }
+                lanes.resize(6 * stride);
+            }
+            if (lobe != nullptr) { // the lobes' own slope is known exactly
+                const float rk = R(k);
+                for (std::size_t j = 0; j < ringVerts; ++j)
+                    dTh[j] = rk * (amp * lobe[j].y + dTh[j]);
+            }
+            {
+                float* o = lanes.data();
+                barkReliefVertices(csLanes.data(), csLanes.data() + stride, ringVerts, p, n, b, t,
+                                   rhoK, dTh, dS, kMinDirectionLength, o, stride);
+                for (std::size_t j = 0; j < ringVerts; ++j)
+                    w.vertex({o[j], o[stride + j], o[2 * stride + j]},
+                             {o[3 * stride + j], o[4 * stride + j], o[5 * stride + j]},
+                             {uTiles * cs[j].z, v});
             }
         }
         if (relief == nullptr && !(amp > 0.0f))
@@ -962,7 +987,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                         rings += flared[static_cast<std::size_t>(flaredOf[c])].nodes.size();
                     else if (!ribbon[c])
                         rings += chains.begin[c + 1] - chains.begin[c];
-                if (scratch.frames.size() < rings) scratch.frames.resize(rings);
+                Scratch::room(scratch.frames, rings);
                 // Every chain's frames first, then the rings (ChainPass).
                 for (const ChainPass pass : {ChainPass::Frames, ChainPass::Rings}) {
                     RingFrame* frames = scratch.frames.data();

@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include "engine/util/rawvector.h"
+
 namespace sylva::mesh {
 
 /// Three value noises in [-1, 1] (the leaf tints' patches over a crown, leaftint.h): random
@@ -48,7 +50,10 @@ private:
     // The grid: mSize points along each axis from mOrigin; mMade says which are made.
     std::int64_t mOrigin[3] = {0, 0, 0};
     std::int64_t mSize[3] = {0, 0, 0};
-    std::vector<glm::dvec3> mGrid;
+    /// The grid's points, each written when it is made (mMade) before it is read: a RawVector,
+    /// whose resize does not zero them (the English oak's crown: ~10-40k points, 24 bytes each,
+    /// a zero fill a tree that the points overwrote or never read).
+    RawVector<glm::dvec3> mGrid;
     std::vector<std::uint8_t> mMade;
     std::vector<std::uint8_t>
         mCellMade; ///< the cells (by their lowest point) whose points are made

@@ -1,10 +1,15 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <numbers>
 #include <vector>
 
 #include "engine/mesh/barkrelief.h"
+#include "engine/util/random.h"
+#include "engine/util/safenormalize.h"
 
 using namespace sylva;
 
@@ -80,4 +85,85 @@ TEST(BarkReliefRow, OneRingLayoutServesEveryRingOfTheAxis) {
                     }
             }
     EXPECT_GT(compared, 100000);
+}
+
+// barkSlopeRow (four quotients to a division on SSE2) against the relief vertices' slopes as the
+// tube mesher made them one vertex at a time, bit for bit: every side count from 3 to 100 (each
+// remainder of four, the seam's neighbours), rows of random ρ with repeated values, steps ds
+// above, at and below the 1e-12 threshold (0 and negative included).
+TEST(BarkReliefRow, SlopeRowIsTheVertexByVertexQuotients) {
+    sylva::Rng rng(31);
+    for (int res = 3; res <= 100; ++res)
+        for (const float ds : {0.37f, 1e-12f, 2e-12f, 0.0f, -0.5f, 3.0e-7f}) {
+            std::vector<float> row(static_cast<std::size_t>(res) + 1), a(row.size()), b(row.size());
+            for (std::size_t j = 0; j < row.size(); ++j) {
+                row[j] = rng.below(5) == 0 ? 0.25f : rng.uniformf(0.05f, 0.6f);
+                a[j] = rng.uniformf(0.05f, 0.6f);
+                b[j] = rng.below(7) == 0 ? a[j] : rng.uniformf(0.05f, 0.6f);
+            }
+            const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
+            std::vector<float> dTh(row.size() + 3), dS(row.size() + 3);
+            mesh::barkSlopeRow(row.data(), a.data(), b.data(), res, 2.0f * dTheta, ds, dTh.data(),
+                               dS.data());
+            for (int j = 0; j <= res; ++j) {
+                const int jPrev = j == 0 ? res - 1 : j - 1, jNext = j == res ? 1 : j + 1;
+                const auto k = static_cast<std::size_t>(j);
+                const float theta =
+                    (row[static_cast<std::size_t>(jNext)] - row[static_cast<std::size_t>(jPrev)]) /
+                    (2.0f * dTheta);
+                const float along = ds > 1e-12f ? (b[k] - a[k]) / ds : 0.0f;
+                EXPECT_EQ(std::memcmp(&dTh[k], &theta, sizeof theta), 0) << res << " " << j;
+                EXPECT_EQ(std::memcmp(&dS[k], &along, sizeof along), 0)
+                    << res << " " << j << " " << ds;
+            }
+        }
+}
+
+// barkReliefVertices (four vertices to an instruction on SSE2) against glm's expressions a vertex
+// at a time, as the tube mesher wrote the relief rings, bit for bit: every side count from 3 to
+// 100 (each remainder of four), random frames, ρ and slopes, vertices whose normal has no length
+// (ρ and the slopes 0: the radial direction instead), one of a length just under and over the
+// least, and -0 directions (a ring table's sines of 0 and π).
+TEST(BarkReliefRow, ReliefVerticesAreGlmsVertexByVertex) {
+    sylva::Rng rng(37);
+    auto unitVector = [&] {
+        return glm::normalize(
+            glm::vec3(rng.uniformf(-1, 1), rng.uniformf(-1, 1), rng.uniformf(-1, 1)) +
+            glm::vec3(0.0f, 0.01f, 0.0f));
+    };
+    for (int sides = 3; sides <= 100; ++sides) {
+        const std::size_t count = static_cast<std::size_t>(sides) + 1, stride = count + 3;
+        std::vector<float> ax(stride, 0.0f), ay(stride, 0.0f), rho(stride, 0.0f),
+            dTheta(stride, 0.0f), dS(stride, 0.0f);
+        for (std::size_t j = 0; j < count; ++j) {
+            const double a = 2.0 * std::numbers::pi * static_cast<double>(j % sides) / sides;
+            ax[j] = static_cast<float>(std::cos(a));
+            ay[j] = j % 7 == 3 ? -0.0f : static_cast<float>(std::sin(a));
+            rho[j] = j % 5 == 2 ? 0.0f : rng.uniformf(0.05f, 0.6f);
+            dTheta[j] = j % 5 == 2 ? 0.0f : rng.uniformf(-0.3f, 0.3f);
+            dS[j] = j % 5 == 2 ? 0.0f : rng.uniformf(-0.2f, 0.2f);
+        }
+        const glm::vec3 n = unitVector(), t = glm::normalize(glm::cross(n, unitVector())),
+                        b = glm::cross(t, n);
+        const glm::vec3 p(rng.uniformf(-5, 5), rng.uniformf(0, 20), rng.uniformf(-5, 5));
+        // The least length: over most normals, between two vertices' in turn.
+        const float least = sides % 3 == 0 ? 1e-10f : sides % 3 == 1 ? 0.2f : 0.35f;
+        std::vector<float> out(6 * stride);
+        mesh::barkReliefVertices(ax.data(), ay.data(), count, p, n, b, t, rho.data(), dTheta.data(),
+                                 dS.data(), least, out.data(), stride);
+        for (std::size_t j = 0; j < count; ++j) {
+            const glm::vec3 radial = ax[j] * n + ay[j] * b;
+            const glm::vec3 around = -ay[j] * n + ax[j] * b;
+            const glm::vec3 position = p + rho[j] * radial;
+            const glm::vec3 normal = safeNormalize(
+                rho[j] * radial - dTheta[j] * around - rho[j] * dS[j] * t, radial, least);
+            for (int k = 0; k < 3; ++k) {
+                const float got = out[static_cast<std::size_t>(k) * stride + j];
+                const float gotNormal = out[static_cast<std::size_t>(3 + k) * stride + j];
+                EXPECT_EQ(std::memcmp(&got, &position[k], sizeof got), 0) << sides << " " << j;
+                EXPECT_EQ(std::memcmp(&gotNormal, &normal[k], sizeof got), 0)
+                    << sides << " " << j << " " << k;
+            }
+        }
+    }
 }

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -270,6 +271,97 @@ TEST(LeafTint, BatchedMultipliersAreTheSingleOnes) {
 
 namespace {
 
+// tintMultiplier as it was written card by card before its block took SSE2 (its divisions,
+// conversions, clamps and roundings two or four lanes to an instruction): the reference's HSV
+// and linear values, the turn, hsvToRgb, srgbToLinear, the ratios, the scale and the bytes.
+glm::u8vec4 plainMultiplier(const glm::vec3& referenceSrgb, double hue, double saturation,
+                            double value) {
+    const glm::vec3 ref = glm::clamp(referenceSrgb, glm::vec3(0.02f), glm::vec3(1.0f));
+    const float mx = std::max({ref.x, ref.y, ref.z}), mn = std::min({ref.x, ref.y, ref.z});
+    const float d = mx - mn;
+    float h = 0.0f;
+    if (d > 1e-6f) {
+        if (mx == ref.x)
+            h = (ref.y - ref.z) / d;
+        else if (mx == ref.y)
+            h = 2.0f + (ref.z - ref.x) / d;
+        else
+            h = 4.0f + (ref.x - ref.y) / d;
+        h /= 6.0f;
+        if (h < 0.0f) h += 1.0f;
+    }
+    glm::vec3 hsv{h, mx > 0.0f ? d / mx : 0.0f, mx};
+    double lin[3], strongest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        lin[k] = mesh::srgbToLinear(ref[k]);
+        strongest = std::max(strongest, lin[k]);
+    }
+    hsv.x += static_cast<float>(hue / 360.0);
+    hsv.y = std::clamp(hsv.y * static_cast<float>(1.0 + saturation), 0.0f, 1.0f);
+    hsv.z *= static_cast<float>(std::clamp(value, 0.0, 1.0));
+    const float sh = (hsv.x - floorExact(hsv.x)) * 6.0f, s = hsv.y, v = hsv.z;
+    const int sector = static_cast<int>(floorExact(sh)) % 6;
+    const float f = sh - floorExact(sh);
+    const float p = v * (1.0f - s), q = v * (1.0f - s * f), t = v * (1.0f - s * (1.0f - f));
+    const glm::vec3 turned = sector == 0   ? glm::vec3(v, t, p)
+                             : sector == 1 ? glm::vec3(q, v, p)
+                             : sector == 2 ? glm::vec3(p, v, t)
+                             : sector == 3 ? glm::vec3(p, q, v)
+                             : sector == 4 ? glm::vec3(t, p, v)
+                                           : glm::vec3(v, p, q);
+    double m[3];
+    for (int k = 0; k < 3; ++k)
+        m[k] = static_cast<double>(mesh::srgbToLinear(turned[k])) / lin[k];
+    double scale = 1.0;
+    for (int k = 0; k < 3; ++k)
+        if (lin[k] >= 0.25 * strongest) scale = std::max(scale, m[k]);
+    glm::u8vec4 out(255);
+    for (int k = 0; k < 3; ++k)
+        out[k] = static_cast<std::uint8_t>(
+            llroundExact(std::clamp(std::clamp(m[k] / scale, 0.25, 1.0), 0.0, 1.0) * 255.0));
+    return out;
+}
+
+} // namespace
+
+// The multipliers of a block (SSE2: two or four cards to an instruction) against the plain
+// card-by-card ones above, bit for bit: every block length and its padding lanes (1 to 17 cards,
+// then 300), the seasons' greens, an autumn orange, a grey (every channel strong, no hue) and a
+// near-black reference, variations past their ranges (clamped), turned colours dark enough for
+// srgbToLinear's linear segment, and NaN or infinite inputs (a grey's saturation times +inf is a
+// NaN that std::max keeps out of the scale).
+TEST(LeafTint, PackedMultipliersAreThePlainOnes) {
+    Rng rng(29);
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<std::size_t> counts;
+    for (std::size_t c = 1; c <= 17; ++c)
+        counts.push_back(c);
+    counts.push_back(300);
+    for (const glm::vec3& reference :
+         {kGreen, glm::vec3(0.42f, 0.58f, 0.18f), glm::vec3(0.8f, 0.45f, 0.1f),
+          glm::vec3(0.5f, 0.5f, 0.5f), glm::vec3(0.03f, 0.02f, 0.05f)})
+        for (std::size_t count : counts) {
+            std::vector<double> hue(count), saturation(count), value(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                hue[i] = rng.uniform(-200.0, 200.0);
+                saturation[i] = rng.uniform(-1.5, 1.5);
+                // A tenth of the cards dark (their channels in srgbToLinear's linear segment).
+                value[i] = i % 10 == 3 ? rng.uniform(0.0, 0.05) : rng.uniform(-0.2, 1.2);
+                if (i % 37 == 5) saturation[i] = inf;
+                if (i % 41 == 7) value[i] = nan;
+                if (i % 43 == 11) saturation[i] = -inf;
+            }
+            std::vector<glm::u8vec4> packed(count);
+            mesh::tintMultipliers(reference, hue, saturation, value, packed);
+            for (std::size_t i = 0; i < count; ++i)
+                EXPECT_EQ(packed[i], plainMultiplier(reference, hue[i], saturation[i], value[i]))
+                    << reference.x << " " << count << " " << i;
+        }
+}
+
+namespace {
+
 // The plain box: glm::min and glm::max from the first point on, one point after the other.
 void plainBox(const std::vector<glm::vec3>& points, glm::vec3& lo, glm::vec3& hi) {
     lo = hi = points[0];
@@ -393,4 +485,33 @@ TEST(LeafTint, BlocksOfCardsAreTheCardByCardColours) {
                                         plain.colors.size() * sizeof(glm::u8vec4)) == 0)
                     << cards << " " << extra << " " << variant;
             }
+}
+
+// The cards' hashes eight at a time (AVX-512 where the processor has it) against the card-by-card
+// tint, bit for bit, where llroundExact's rounding decides: centres whose millimetres are exact
+// halves (a sixteenth of a metre is 62.5 mm), either side of zero, and integers; a block with a
+// centre past 2^52 mm (made card by card, llroundExact's std::llround) between blocks that are
+// not. The ctest LeafTint.SameWithoutAvx512 runs these tests on the card-by-card hashes.
+TEST(LeafTint, CardHashesRoundHalvesAndFarCentresAsTheCardByCardOnes) {
+    Rng rng(53);
+    for (int variant = 0; variant < 2; ++variant) {
+        mesh::Mesh m;
+        const std::size_t cards = 40;
+        for (std::size_t c = 0; c < cards; ++c) {
+            // Every corner at the centre: the corners' mean is the centre exactly.
+            glm::vec3 centre(static_cast<float>(static_cast<int>(rng.below(81)) - 40) / 16.0f,
+                             static_cast<float>(static_cast<int>(rng.below(81)) - 40) / 16.0f,
+                             static_cast<float>(static_cast<int>(rng.below(81)) - 40) / 16.0f);
+            if (variant == 1 && c / 8 == 2 && c % 8 == 5) centre.x = 1e13f;
+            for (int k = 0; k < 4; ++k)
+                m.positions.push_back(centre);
+        }
+        const mesh::LeafColorVariation variation{12.0, 0.3, 0.4};
+        mesh::Mesh blocks = m, plain = m;
+        mesh::tintLeafCards(blocks, 0, variation, kGreen, 0.0, 5, {}, 0.0);
+        cardByCardTint(plain, 0, variation, kGreen, 0.0, 5, {}, 0.0);
+        ASSERT_EQ(blocks.colors.size(), plain.colors.size());
+        for (std::size_t v = 0; v < plain.colors.size(); ++v)
+            EXPECT_EQ(blocks.colors[v], plain.colors[v]) << variant << " " << v;
+    }
 }
