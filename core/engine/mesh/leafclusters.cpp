@@ -632,9 +632,16 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
                 std::fill_n(out.branchOrder.begin() + static_cast<std::ptrdiff_t>(v), 4, order);
                 std::fill_n(out.flexibility.begin() + static_cast<std::ptrdiff_t>(v), 4, 1.0f);
             }
+            // One index at a time: the six written to a stack array and inserted were read
+            // back 8 and 16 bytes at a time from 4-byte stores, a failed store-to-load forwarding
+            // a card (perf annotate: ~27 % of appendLeafClusterCards' samples).
             const auto b = static_cast<std::uint32_t>(v);
-            const std::uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
-            out.indices.insert(out.indices.end(), tri, tri + 6);
+            out.indices.push_back(b);
+            out.indices.push_back(b + 1);
+            out.indices.push_back(b + 2);
+            out.indices.push_back(b);
+            out.indices.push_back(b + 2);
+            out.indices.push_back(b + 3);
         }
     }
     out.submeshes.push_back({"leaf", static_cast<std::uint32_t>(span.firstIndex),
