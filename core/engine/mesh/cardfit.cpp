@@ -1,4 +1,5 @@
 #include "engine/mesh/cardfit.h"
+#include "engine/mesh/cardaxes4.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -81,49 +82,6 @@ __m128d xyOf(const glm::vec3& p) {
 }
 __m128d zOf(const glm::vec3& p) {
     return _mm_cvtss_sd(_mm_setzero_pd(), _mm_load_ss(&p.z));
-}
-
-// Four lanes' x, y and z.
-struct Vec4x3 {
-    __m128 x, y, z;
-};
-
-// glm's q * v (v + ((uv * w) + uuv) * 2, uv = cross(q.xyz, v), uuv = cross(q.xyz, uv), cross(a,
-// b) = (a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y)) for four
-// quaternions and v the heading (0, 1, 0), the left (-1, 0, 0) and the up (0, 0, 1) axes,
-// bit for bit for finite quaternions, from the nine products of q's components the three
-// share: q * v's products by 0 and 1 dropped (a product by 1 is exact; one by 0 a zero, and a zero
-// added to or taken from a value leaves it as it is, so only the sign of a zero can differ on the
-// way, and the last addition of v's +0, 1 or -1 makes every zero +0 as q * v's does), each
-// remaining sum the one q * v adds, -a - b as -(a) - b (negation is exact). 39 operations for the
-// three axes where three whole products took 90 (perf annotate of the English oak: the rotations
-// were the larger part of prepareCardFit's ~140 operations a leaf).
-struct Axes4 {
-    Vec4x3 h, l, u;
-};
-Vec4x3 headingAxis(__m128 qx, __m128 qy, __m128 qz, __m128 qw) {
-    const __m128 sign = _mm_set1_ps(-0.0f), two = _mm_set1_ps(2.0f);
-    const __m128 xx = _mm_mul_ps(qx, qx), zz = _mm_mul_ps(qz, qz);
-    const __m128 xy = _mm_mul_ps(qy, qx), yz = _mm_mul_ps(qz, qy);
-    const __m128 xw = _mm_mul_ps(qx, qw), zw = _mm_mul_ps(qz, qw);
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
-    return {_mm_add_ps(zero, _mm_mul_ps(_mm_sub_ps(xy, zw), two)),
-            _mm_add_ps(one, _mm_mul_ps(_mm_sub_ps(_mm_xor_ps(zz, sign), xx), two)),
-            _mm_add_ps(zero, _mm_mul_ps(_mm_add_ps(xw, yz), two))};
-}
-Axes4 basisAxes(__m128 qx, __m128 qy, __m128 qz, __m128 qw) {
-    const __m128 sign = _mm_set1_ps(-0.0f), two = _mm_set1_ps(2.0f);
-    const __m128 xx = _mm_mul_ps(qx, qx), yy = _mm_mul_ps(qy, qy), zz = _mm_mul_ps(qz, qz);
-    const __m128 xy = _mm_mul_ps(qy, qx), xz = _mm_mul_ps(qx, qz), yz = _mm_mul_ps(qz, qy);
-    const __m128 xw = _mm_mul_ps(qx, qw), yw = _mm_mul_ps(qy, qw), zw = _mm_mul_ps(qz, qw);
-    const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f), minusOne = _mm_set1_ps(-1.0f);
-    const auto axis = [&](__m128 v, __m128 sum) { return _mm_add_ps(v, _mm_mul_ps(sum, two)); };
-    return {{axis(zero, _mm_sub_ps(xy, zw)), axis(one, _mm_sub_ps(_mm_xor_ps(zz, sign), xx)),
-             axis(zero, _mm_add_ps(xw, yz))},
-            {axis(minusOne, _mm_add_ps(yy, zz)), axis(zero, _mm_sub_ps(_mm_xor_ps(zw, sign), xy)),
-             axis(zero, _mm_sub_ps(yw, xz))},
-            {axis(zero, _mm_add_ps(yw, xz)), axis(zero, _mm_sub_ps(yz, xw)),
-             axis(one, _mm_sub_ps(_mm_xor_ps(xx, sign), yy))}};
 }
 
 // Four lanes' (x, y, z) as four (x, y, z, 0) vectors, one a lane.

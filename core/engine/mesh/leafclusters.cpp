@@ -6,6 +6,7 @@
 #include <span>
 
 #include "engine/mesh/cardfit.h"
+#include "engine/mesh/cardfitlanes.h"
 #include "engine/mesh/leafcards.h"
 #include "engine/mesh/leafcell.h"
 #include "engine/mesh/powereigen.h"
@@ -281,13 +282,13 @@ void cardAxes(const CardFitInput* in, const std::span<const std::uint32_t>* grou
         out[k].across = glm::normalize(glm::cross(out[k].n, out[k].along));
 }
 
+// \p extent: cardExtent's a0, a1, c0 and c1.
 void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                float aspect, float scale, const CardFitInput& in, const CardAxes& axes,
-               FittedCard& f, CardBounds* bounds) {
+               const double (&extent)[4], FittedCard& f, CardBounds* bounds) {
     const glm::dvec3& m = in.m;
     const glm::dvec3 &n = axes.n, &along = axes.along, &across = axes.across;
-    double a0, a1, c0, c1;
-    cardExtent(in, along, across, a0, a1, c0, c1);
+    double a0 = extent[0], a1 = extent[1], c0 = extent[2], c1 = extent[3];
     // The corners' box is larger than the leaves it holds (their outlines are not a
     // rectangle): shrunk about its middle so the card covers about what they cover.
     const double shrink = kCardShrink;
@@ -324,30 +325,58 @@ void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint3
 /// order: the same cards as one group at a time, without waiting on one chain of divisions and
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
+/// With AVX the preparation and the extent take four groups a register (CardFitLanes), the
+/// groups taken by size so that the four lanes of a register have as many leaves (which groups
+/// share a batch changes only the time: each lane's arithmetic is its own group's).
 RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
                                float aspect, float scale, std::vector<CardBounds>* bounds) {
     // Room, not zeros (the oak's ~4,700 cards, 280 KB): a single leaf's card is set to the
-    // default where it is passed over, every other card is fitted.
+    // default here, every other card is fitted.
     RawVector<FittedCard> cards(groups.size());
     if (bounds) bounds->assign(groups.size(), CardBounds{});
-    constexpr std::size_t kLanes = kPowerLanes;
-    CardFitInput in[kLanes];
-    std::size_t lane[kLanes];
-    std::size_t g = 0;
-    while (g < groups.size()) {
-        std::size_t n = 0;
-        std::span<const std::uint32_t> members[kLanes];
-        for (; g < groups.size() && n < kLanes; ++g) {
-            if (groups[g].size() < 2) {
-                cards[g] = FittedCard{};
-                continue;
-            }
-            members[n] = groups[g];
-            lane[n++] = g;
+    const bool lanes = cardFitLanesAvailable();
+    // The groups to fit, in group order, or by size (then group order) for the lanes.
+    RawVector<std::uint32_t> order(groups.size());
+    std::size_t fits = 0, largest = 0;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const std::size_t size = groups[g].size();
+        if (size < 2) {
+            cards[g] = FittedCard{};
+            continue;
         }
-        if (n == 0) break;
+        order[fits++] = static_cast<std::uint32_t>(g);
+        largest = std::max(largest, size);
+    }
+    order.resize(fits);
+    if (lanes) {
+        std::vector<std::uint32_t> start(largest + 2, 0);
+        for (const std::uint32_t g : order)
+            ++start[groups[g].size() + 1];
+        for (std::size_t s = 1; s < start.size(); ++s)
+            start[s] += start[s - 1];
+        RawVector<std::uint32_t> bySize(fits);
+        for (const std::uint32_t g : order)
+            bySize[start[groups[g].size()]++] = g;
+        order = std::move(bySize);
+    }
+    constexpr std::size_t kLanes = kPowerLanes;
+    static_assert(kLanes == 8, "two CardFitLanes a batch");
+    CardFitInput in[kLanes];
+    CardFitLanes corners[2];
+    for (std::size_t b = 0; b < fits; b += kLanes) {
+        const std::size_t n = std::min(kLanes, fits - b);
+        std::span<const std::uint32_t> members[kLanes];
+        const std::uint32_t* const lane = order.data() + b;
         for (std::size_t k = 0; k < n; ++k)
-            prepareCardFit(leaves, members[k], aspect, scale, in[k]);
+            members[k] = groups[lane[k]];
+        if (lanes) {
+            for (std::size_t h = 0; 4 * h < n; ++h)
+                prepareCardFitLanes(leaves, members + 4 * h, std::min<std::size_t>(4, n - 4 * h),
+                                    aspect, scale, in + 4 * h, corners[h]);
+        } else {
+            for (std::size_t k = 0; k < n; ++k)
+                prepareCardFit(leaves, members[k], aspect, scale, in[k]);
+        }
         glm::dmat3 c[kLanes];
         glm::dvec3 e1[kLanes], e2[kLanes];
         for (std::size_t k = 0; k < n; ++k) {
@@ -360,8 +389,23 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
         largestEigenvectors(c, e2, n);
         CardAxes axes[kLanes];
         cardAxes(in, members, e1, e2, axes, n);
+        double extent[kLanes][4];
+        if (lanes) {
+            glm::dvec3 along[kLanes], across[kLanes];
+            for (std::size_t k = 0; k < n; ++k) {
+                along[k] = axes[k].along;
+                across[k] = axes[k].across;
+            }
+            for (std::size_t h = 0; 4 * h < n; ++h)
+                cardExtentLanes(corners[h], in + 4 * h, along + 4 * h, across + 4 * h,
+                                std::min<std::size_t>(4, n - 4 * h), extent + 4 * h);
+        } else {
+            for (std::size_t k = 0; k < n; ++k)
+                cardExtent(in[k], axes[k].along, axes[k].across, extent[k][0], extent[k][1],
+                           extent[k][2], extent[k][3]);
+        }
         for (std::size_t k = 0; k < n; ++k)
-            finishFit(leaves, members[k], aspect, scale, in[k], axes[k], cards[lane[k]],
+            finishFit(leaves, members[k], aspect, scale, in[k], axes[k], extent[k], cards[lane[k]],
                       bounds ? &(*bounds)[lane[k]] : nullptr);
     }
     return cards;
@@ -588,9 +632,16 @@ std::size_t appendLeafClusterCards(Mesh& out, const std::vector<skel::Leaf>& lea
                 std::fill_n(out.branchOrder.begin() + static_cast<std::ptrdiff_t>(v), 4, order);
                 std::fill_n(out.flexibility.begin() + static_cast<std::ptrdiff_t>(v), 4, 1.0f);
             }
+            // One index at a time: the six written to a stack array and inserted were read
+            // back 8 and 16 bytes at a time from 4-byte stores, a failed store-to-load forwarding
+            // a card (perf annotate: ~27 % of appendLeafClusterCards' samples).
             const auto b = static_cast<std::uint32_t>(v);
-            const std::uint32_t tri[6] = {b, b + 1, b + 2, b, b + 2, b + 3};
-            out.indices.insert(out.indices.end(), tri, tri + 6);
+            out.indices.push_back(b);
+            out.indices.push_back(b + 1);
+            out.indices.push_back(b + 2);
+            out.indices.push_back(b);
+            out.indices.push_back(b + 2);
+            out.indices.push_back(b + 3);
         }
     }
     out.submeshes.push_back({"leaf", static_cast<std::uint32_t>(span.firstIndex),

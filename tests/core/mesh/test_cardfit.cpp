@@ -9,6 +9,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "engine/mesh/cardfit.h"
+#include "engine/mesh/cardfitlanes.h"
 #include "engine/util/random.h"
 
 using namespace sylva;
@@ -177,4 +178,54 @@ TEST(CardFit, AxesOfQuaternionsWithZerosMatchTheStraightforwardOnes) {
     mesh::leafMiddlesPlain(leaves, 1.0, plainMids);
     for (std::size_t i = 0; i < leaves.size(); ++i)
         ASSERT_TRUE(sameBits(fastMids[i], plainMids[i])) << i;
+}
+
+// Four groups a register (AVX, a group a lane) are the straightforward preparation and extent
+// bit for bit in every lane: one to four groups, of equal and unequal sizes (a lane whose group
+// has ended adds nothing), every size 1-23 in some lane, the special frames included.
+TEST(CardFit, LanesMatchTheStraightforwardOnes) {
+    if (!mesh::cardFitLanesAvailable()) GTEST_SKIP() << "no AVX lanes here";
+    Rng rng(21);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
+    mesh::CardFitLanes lanes;
+    int checked = 0;
+    for (int trial = 0; trial < 120; ++trial) {
+        const std::size_t n = 1 + static_cast<std::size_t>(trial % 4);
+        std::vector<std::uint32_t> groups[4];
+        std::span<const std::uint32_t> spans[4];
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t size =
+                trial % 3 == 0 ? 1 + static_cast<std::size_t>(trial / 3) % 23 : 1 + rng.below(23);
+            groups[k].resize(size);
+            for (std::uint32_t& i : groups[k])
+                i = static_cast<std::uint32_t>(rng.below(leaves.size()));
+            if (trial < 4 && k == 0)
+                std::iota(groups[k].begin(), groups[k].end(), 0u); // the special frames
+            spans[k] = groups[k];
+        }
+        mesh::CardFitInput fast[4], plain[4];
+        mesh::prepareCardFitLanes(leaves, spans, n, 0.45f, 1.7f, fast, lanes);
+        glm::dvec3 along[4], across[4];
+        for (std::size_t k = 0; k < n; ++k) {
+            mesh::prepareCardFitPlain(leaves, spans[k], 0.45f, 1.7f, plain[k]);
+            EXPECT_TRUE(sameBits(fast[k].heading, plain[k].heading)) << trial << " " << k;
+            EXPECT_TRUE(sameBits(fast[k].up, plain[k].up)) << trial << " " << k;
+            EXPECT_TRUE(sameBits(fast[k].left, plain[k].left)) << trial << " " << k;
+            EXPECT_TRUE(sameBits(fast[k].m, plain[k].m)) << trial << " " << k;
+            EXPECT_TRUE(sameBits(fast[k].cov, plain[k].cov)) << trial << " " << k;
+            along[k] = glm::normalize(
+                glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            across[k] = glm::normalize(glm::cross(along[k], glm::dvec3(0.2, 1, 0.3)));
+        }
+        double extent[4][4];
+        mesh::cardExtentLanes(lanes, plain, along, across, n, extent);
+        for (std::size_t k = 0; k < n; ++k) {
+            double p[4];
+            mesh::cardExtentPlain(plain[k], along[k], across[k], p[0], p[1], p[2], p[3]);
+            for (int j = 0; j < 4; ++j)
+                EXPECT_TRUE(sameBits(extent[k][j], p[j])) << trial << " " << k << " " << j;
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 300);
 }

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/mesh/cardfit.h"
+#include "engine/util/rawvector.h"
+
+namespace sylva::mesh {
+
+/// Four groups' card fits side by side, a group a lane (the fits' double sums in one AVX
+/// register, four groups' chains in step): perf record of the English oak had prepareCardFit
+/// and cardExtent at ~10 % of the tree, each group's chains of double additions one corner after
+/// the other (a group's mean, covariance and extent wait on the addition before). Each lane is
+/// its group's arithmetic in prepareCardFitPlain's and cardExtentPlain's order, bit for bit.
+/// The corners, a step (leaf j's corner c, step 4j + c) four lanes of x, y and z.
+struct CardFitLanes {
+    RawVector<float> x, y, z;  ///< step s, lane k at [4s + k]
+    std::size_t steps = 0;     ///< 4 x the largest group's leaves
+    std::size_t sizes[4] = {}; ///< each lane's leaves (a lane past the groups: the first's)
+};
+
+/// Whether prepareCardFitLanes and cardExtentLanes run here: x86-64 with AVX (chosen at run
+/// time), not with SYLVA_NO_AVX=1 set.
+bool cardFitLanesAvailable();
+
+/// prepareCardFit of \p groups[k] into \p in[k] for k < n (1 to 4, every group of one leaf or
+/// more), each lane bit for bit prepareCardFitPlain's heading, up, left, m and cov; the corners
+/// kept in \p lanes (in[k].corners untouched). Only where cardFitLanesAvailable().
+void prepareCardFitLanes(const std::vector<skel::Leaf>& leaves,
+                         const std::span<const std::uint32_t>* groups, std::size_t n, float aspect,
+                         float scale, CardFitInput* in, CardFitLanes& lanes);
+
+/// cardExtent of each lane k < n of \p lanes about in[k].m along along[k] and across[k]:
+/// extent[k] = {a0, a1, c0, c1}, bit for bit cardExtentPlain's. Only where
+/// cardFitLanesAvailable().
+void cardExtentLanes(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3* along,
+                     const glm::dvec3* across, std::size_t n, double (*extent)[4]);
+
+} // namespace sylva::mesh
