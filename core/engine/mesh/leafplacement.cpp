@@ -593,10 +593,15 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
     }
     // Each segment's frame first, in a loop of their own: a frame is a chain of two square
     // roots and divisions, which the segments' loops of leaves kept from overlapping.
+    // Only the segments that bear leaves (along it or at its tip) need theirs: the thick ones
+    // below the leafy twigs are skipped (their frame stays zero, never read).
     std::vector<SegmentFrame> frames(n);
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
+        if (!(p.alongBranches && s.radius[i] <= p.maxBranchRadius) &&
+            !(p.atTips && children[i] == 0))
+            continue;
         const glm::vec3 a0 = s.position[static_cast<std::size_t>(par)], a1 = s.position[i];
         SegmentFrame& f = frames[i];
         f.len = glm::length(a1 - a0);
