@@ -619,12 +619,18 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
         const auto pi = static_cast<std::size_t>(par);
+        std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
+        // A segment without leaves passes its axis's position index on (no generator seeded).
+        if (!(p.alongBranches && s.radius[i] <= p.maxBranchRadius) &&
+            !(p.atTips && children[i] == 0)) {
+            index[i] = k;
+            continue;
+        }
         Rng rng(mixSeed(p.seed, i));
         const glm::vec3 a0 = s.position[pi], a1 = s.position[i];
         const SegmentFrame& frame = frames[i];
         const float len = frame.len;
         const glm::vec3 t = frame.t, e1 = frame.e1, e2 = frame.e2;
-        std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
             const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
             // The spiral's one angle a position, from its table without a call a leaf.
