@@ -535,17 +535,17 @@ struct Placer {
 };
 
 // A segment's length, tangent and the two radial axes its leaves turn about.
+// Left uninitialised where made (placeLeaves writes the leafy segments' and reads no other).
 struct SegmentFrame {
-    float len = 0.0f;
-    glm::vec3 t{0.0f}, e1{0.0f}, e2{0.0f};
+    float len;
+    glm::vec3 t, e1, e2;
 };
 
 // At least as many leaves as placeLeaves makes (one more a segment than its density gives):
 // the output reserved once, not grown by copying.
 std::size_t leafBound(const skel::Skeleton& s, const LeafPlacement& p,
                       const std::vector<std::uint8_t>& hidden,
-                      const std::vector<std::uint32_t>& children,
-                      const std::vector<SegmentFrame>& frames) {
+                      const std::vector<std::uint32_t>& children, const SegmentFrame* frames) {
     const std::size_t perPosition = p.phyllotaxis == Phyllotaxis::Opposite  ? 2
                                     : p.phyllotaxis == Phyllotaxis::Whorled ? p.whorlCount
                                                                             : 1;
@@ -594,8 +594,9 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
     // Each segment's frame first, in a loop of their own: a frame is a chain of two square
     // roots and divisions, which the segments' loops of leaves kept from overlapping.
     // Only the segments that bear leaves (along it or at its tip) need theirs: the thick ones
-    // below the leafy twigs are skipped (their frame stays zero, never read).
-    std::vector<SegmentFrame> frames(n);
+    // below the leafy twigs are skipped (their frame is left unwritten and never read).
+    const auto frameRoom = std::make_unique_for_overwrite<SegmentFrame[]>(n);
+    SegmentFrame* const frames = frameRoom.get();
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
