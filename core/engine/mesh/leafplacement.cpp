@@ -232,6 +232,79 @@ struct Placer {
         nodes[count] = node;
         ++count;
     }
+    // \p n spiral leaves along a segment from \p a0 (radius \p r0) to \p a1 (radius \p r1),
+    // leaf c at its middle fraction f = (c + 0.5) / n and angle run[c]: leafAround()'s values in
+    // two loops, the sizes first (the generator's draws, in leaf order) and then the positions
+    // and radial directions, the same products and sums of the same floats a leaf, four leaves
+    // a step (n < 2^31).
+    void spiralLeaves(const glm::vec2* run, std::uint32_t n, const glm::vec3& a0,
+                      const glm::vec3& a1, float r0, float r1, const glm::vec3& e1,
+                      const glm::vec3& e2, Rng& rng, std::int32_t node) {
+        float* const in = inputs.get() + count;
+        float* __restrict const size = in + 10 * stride;
+        std::int32_t* __restrict const nodeOut = nodes.get() + count;
+        const double sizeVariation = p.sizeVariation, leafSize = p.size;
+        for (std::uint32_t c = 0; c < n; ++c) {
+            const double v = sizeVariation * rng.uniform(-1.0, 1.0);
+            size[c] = static_cast<float>(leafSize * (1.0 + v));
+            nodeOut[c] = node;
+        }
+        float* __restrict const rx = in + 3 * stride;
+        float* __restrict const ry = in + 4 * stride;
+        float* __restrict const rz = in + 5 * stride;
+        float* __restrict const bx = in + 7 * stride;
+        float* __restrict const by = in + 8 * stride;
+        float* __restrict const bz = in + 9 * stride;
+        const glm::vec3 d = a1 - a0;
+        const float dr = r1 - r0;
+        const auto fn = static_cast<float>(n);
+        // The angles as floats (cosine, sine); four leaves a step on SSE2, each lane the
+        // scalar loop's operations in its order (no product is fused: the same bits).
+        const float* const trig = &run[0].x;
+        std::int32_t c = 0;
+        const auto last = static_cast<std::int32_t>(n);
+#if defined(__SSE2__)
+        const __m128 half = _mm_set1_ps(0.5f), fv = _mm_set1_ps(fn);
+        const __m128 r0v = _mm_set1_ps(r0), drv = _mm_set1_ps(dr);
+        const __m128 e1x = _mm_set1_ps(e1.x), e1y = _mm_set1_ps(e1.y), e1z = _mm_set1_ps(e1.z);
+        const __m128 e2x = _mm_set1_ps(e2.x), e2y = _mm_set1_ps(e2.y), e2z = _mm_set1_ps(e2.z);
+        const __m128 ax = _mm_set1_ps(a0.x), ay = _mm_set1_ps(a0.y), az = _mm_set1_ps(a0.z);
+        const __m128 dx = _mm_set1_ps(d.x), dy = _mm_set1_ps(d.y), dz = _mm_set1_ps(d.z);
+        for (; c + 4 <= last; c += 4) {
+            const __m128 cf = _mm_cvtepi32_ps(_mm_setr_epi32(c, c + 1, c + 2, c + 3));
+            const __m128 f = _mm_div_ps(_mm_add_ps(cf, half), fv);
+            const __m128 r = _mm_add_ps(r0v, _mm_mul_ps(f, drv));
+            const __m128 lo = _mm_loadu_ps(trig + 2 * c), hi = _mm_loadu_ps(trig + 2 * c + 4);
+            const __m128 cx = _mm_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0));
+            const __m128 cy = _mm_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1));
+            const __m128 x = _mm_add_ps(_mm_mul_ps(cx, e1x), _mm_mul_ps(cy, e2x));
+            const __m128 y = _mm_add_ps(_mm_mul_ps(cx, e1y), _mm_mul_ps(cy, e2y));
+            const __m128 z = _mm_add_ps(_mm_mul_ps(cx, e1z), _mm_mul_ps(cy, e2z));
+            _mm_storeu_ps(rx + c, x);
+            _mm_storeu_ps(ry + c, y);
+            _mm_storeu_ps(rz + c, z);
+            _mm_storeu_ps(bx + c, _mm_add_ps(_mm_add_ps(ax, _mm_mul_ps(f, dx)), _mm_mul_ps(r, x)));
+            _mm_storeu_ps(by + c, _mm_add_ps(_mm_add_ps(ay, _mm_mul_ps(f, dy)), _mm_mul_ps(r, y)));
+            _mm_storeu_ps(bz + c, _mm_add_ps(_mm_add_ps(az, _mm_mul_ps(f, dz)), _mm_mul_ps(r, z)));
+        }
+#endif
+        for (; c < last; ++c) {
+            const float f = (static_cast<float>(c) + 0.5f) / fn;
+            const float r = r0 + f * dr;
+            const float cx = trig[2 * c], cy = trig[2 * c + 1];
+            const float x = cx * e1.x + cy * e2.x;
+            const float y = cx * e1.y + cy * e2.y;
+            const float z = cx * e1.z + cy * e2.z;
+            rx[c] = x;
+            ry[c] = y;
+            rz[c] = z;
+            bx[c] = (a0.x + f * d.x) + r * x;
+            by[c] = (a0.y + f * d.y) + r * y;
+            bz[c] = (a0.z + f * d.z) + r * z;
+        }
+        count += n;
+    }
+
     /// Leaf k (leaf() call k) with its orientation \p q, appended to out.
     void emit(std::size_t k, const glm::quat& q) {
         out.push_back({{input(7)[k], input(8)[k], input(9)[k]}, q, input(10)[k], nodes[k]});
@@ -462,17 +535,17 @@ struct Placer {
 };
 
 // A segment's length, tangent and the two radial axes its leaves turn about.
+// Left uninitialised where made (placeLeaves writes the leafy segments' and reads no other).
 struct SegmentFrame {
-    float len = 0.0f;
-    glm::vec3 t{0.0f}, e1{0.0f}, e2{0.0f};
+    float len;
+    glm::vec3 t, e1, e2;
 };
 
 // At least as many leaves as placeLeaves makes (one more a segment than its density gives):
 // the output reserved once, not grown by copying.
 std::size_t leafBound(const skel::Skeleton& s, const LeafPlacement& p,
                       const std::vector<std::uint8_t>& hidden,
-                      const std::vector<std::uint32_t>& children,
-                      const std::vector<SegmentFrame>& frames) {
+                      const std::vector<std::uint32_t>& children, const SegmentFrame* frames) {
     const std::size_t perPosition = p.phyllotaxis == Phyllotaxis::Opposite  ? 2
                                     : p.phyllotaxis == Phyllotaxis::Whorled ? p.whorlCount
                                                                             : 1;
@@ -520,10 +593,16 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
     }
     // Each segment's frame first, in a loop of their own: a frame is a chain of two square
     // roots and divisions, which the segments' loops of leaves kept from overlapping.
-    std::vector<SegmentFrame> frames(n);
+    // Only the segments that bear leaves (along it or at its tip) need theirs: the thick ones
+    // below the leafy twigs are skipped (their frame is left unwritten and never read).
+    const auto frameRoom = std::make_unique_for_overwrite<SegmentFrame[]>(n);
+    SegmentFrame* const frames = frameRoom.get();
     for (std::size_t i = 0; i < n; ++i) {
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
+        if (!(p.alongBranches && s.radius[i] <= p.maxBranchRadius) &&
+            !(p.atTips && children[i] == 0))
+            continue;
         const glm::vec3 a0 = s.position[static_cast<std::size_t>(par)], a1 = s.position[i];
         SegmentFrame& f = frames[i];
         f.len = glm::length(a1 - a0);
@@ -541,24 +620,26 @@ std::vector<skel::Leaf> placeLeaves(const skel::Skeleton& s, const LeafPlacement
         const std::int32_t par = s.parent[i];
         if (par < 0 || hidden[i]) continue;
         const auto pi = static_cast<std::size_t>(par);
+        std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
+        // A segment without leaves passes its axis's position index on (no generator seeded).
+        if (!(p.alongBranches && s.radius[i] <= p.maxBranchRadius) &&
+            !(p.atTips && children[i] == 0)) {
+            index[i] = k;
+            continue;
+        }
         Rng rng(mixSeed(p.seed, i));
         const glm::vec3 a0 = s.position[pi], a1 = s.position[i];
         const SegmentFrame& frame = frames[i];
         const float len = frame.len;
         const glm::vec3 t = frame.t, e1 = frame.e1, e2 = frame.e2;
-        std::uint64_t k = s.order[i] == s.order[pi] ? index[pi] : 0;
         if (p.alongBranches && s.radius[i] <= p.maxBranchRadius && len > 0.0f) {
             const auto count = static_cast<std::uint64_t>(p.density * len + rng.uniform());
             // The spiral's one angle a position, from its table without a call a leaf.
-            if (const glm::vec2* run = placer.spiralRun(k, count); run != nullptr) {
+            const glm::vec2* run = count < (1u << 31) ? placer.spiralRun(k, count) : nullptr;
+            if (run != nullptr) {
                 const std::size_t from = placer.count;
-                for (std::uint64_t c = 0; c < count; ++c) {
-                    const float f = (static_cast<float>(c) + 0.5f) / static_cast<float>(count);
-                    const glm::vec3 axis = a0 + f * (a1 - a0);
-                    const float r = s.radius[pi] + f * (s.radius[i] - s.radius[pi]);
-                    const glm::vec3 radial = run[c].x * e1 + run[c].y * e2;
-                    placer.leafAround(axis + r * radial, radial, rng, static_cast<std::int32_t>(i));
-                }
+                placer.spiralLeaves(run, static_cast<std::uint32_t>(count), a0, a1, s.radius[pi],
+                                    s.radius[i], e1, e2, rng, static_cast<std::int32_t>(i));
                 placer.fill(from, t, 0.0f);
                 k += count;
             } else {
