@@ -345,6 +345,31 @@ public:
                        ez = static_cast<std::size_t>(mExtent[2]);
             Sum* const grid = mGrid.data();
             const float* const light = perTip.data();
+#if defined(__SSE2__)
+            // Where every offset and the x stride (ey ez) fit 15 bits (the oak's box: ~17k
+            // cells), the slot in the register: the offsets packed to 16 bits, ox ey ez + oy ez
+            // and oz + 0 by one pmaddwd, then added (the same integer as the scalar slot below:
+            // nothing overflows); the three cells' ints extracted, and ten integer operations, a
+            // leaf before.
+            const std::size_t strideX = ey * ez;
+            if (mExtent[0] < 32768 && strideX < 32768) {
+                const __m128i lo = _mm_setr_epi32(mLo.x, mLo.y, mLo.z, 0);
+                const __m128i mask = _mm_set1_epi32(0x1fffff);
+                const __m128i weights = _mm_setr_epi16(static_cast<short>(strideX),
+                                                       static_cast<short>(ez), 1, 0, 0, 0, 0, 0);
+                for (const skel::Leaf& leaf : leaves) {
+                    if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+                    const __m128i o = _mm_and_si128(_mm_sub_epi32(leafCellLanes(leaf), lo), mask);
+                    const __m128i terms = _mm_madd_epi16(_mm_packs_epi32(o, o), weights);
+                    const auto slot = static_cast<std::size_t>(static_cast<std::uint32_t>(
+                        _mm_cvtsi128_si32(_mm_add_epi32(terms, _mm_shuffle_epi32(terms, 0x55)))));
+                    Sum& s = grid[slot];
+                    s.light += light[static_cast<std::size_t>(leaf.node)];
+                    s.count += 1.0;
+                }
+                return;
+            }
+#endif
             for (const skel::Leaf& leaf : leaves) {
                 if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
                 const glm::ivec3 c = leafCellOf(leaf);
@@ -370,7 +395,9 @@ public:
         }
     }
 
-    bool empty() const { return mCount == 0; }
+    bool empty() const {
+        return mCount == 0;
+    }
 
     /// Every leaf's sums, in leaf order: made only for a card with no leaf in its 27 cells (one
     /// chain of additions over all the leaves, a tenth of leafCardLight where it was made as

@@ -202,6 +202,24 @@ TEST(LeafCardLight, DenseGridMatchesTheHashedCells) {
     }
 }
 
+TEST(LeafCardLight, FlatGridWiderThanPackedSlotsMatchesTheHashedCells) {
+    // A grid two cells thick and ~200 cells square: still dense (10,000 leaves), but its x
+    // stride (~40,000 cells) is past the packed slots' 15 bits: the slots made from the three
+    // ints.
+    Scene sc = makeScene(10, 300, 10000, 4.0f, glm::vec3(0.0f));
+    for (skel::Leaf& leaf : sc.leaves) {
+        leaf.position.x = leaf.position.x < 0.0f ? 0.2f : 0.7f;
+        leaf.position.y *= 12.5f;
+        leaf.position.z *= 12.5f;
+    }
+    for (glm::vec3& p : sc.mesh.positions) {
+        p.y *= 12.5f;
+        p.z *= 12.5f;
+    }
+    expectSameBits(mesh::leafCardLight(sc.mesh, 0, sc.leaves, sc.skeleton),
+                   referenceLight(sc.mesh, 0, sc.leaves, sc.skeleton));
+}
+
 TEST(LeafCardLight, SparseLeavesAndFarCellsMatchTheHashedCells) {
     // Two clumps far apart: the box of cells is too large for a grid (the hashed cells).
     Scene sc = makeScene(7, 50, 400, 1.0f, glm::vec3(0.0f));
