@@ -69,11 +69,13 @@ glm::ivec3 leafCellOf(const skel::Leaf& leaf) {
 #endif
 }
 
+} // namespace
+
 // The box of the cells of the leaves on a node below \p n (glm::min and glm::max of their
 // cells, from INT_MAX and INT_MIN), and their count: on SSE2 the three axes in one register,
 // kept there (each cell stored and read back as three ints was a tenth of leafCardLight).
-std::size_t cellBox(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::ivec3& lo,
-                    glm::ivec3& hi) {
+std::size_t leafCellBoxOfCells(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::ivec3& lo,
+                               glm::ivec3& hi) {
     std::size_t count = 0;
 #if defined(__SSE2__)
     // Two boxes, of the even and the odd leaves, joined at the end (integers: the same box): each
@@ -119,6 +121,63 @@ std::size_t cellBox(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::i
 #endif
     return count;
 }
+
+// leafCellBoxOfCells' box from the positions' box: a cell is floor(2 v) of each coordinate v, which
+// never decreases as v grows, so the least cell is the least coordinate's and the greatest the
+// greatest's, where every 2 v is a number within the int range (then floor(2 v) is exact, and
+// a float's 2 v is exact). A leaf a minps and a maxps (no conversions, floors, compares and
+// selects a leaf: the box was a fifth of leafCardLight); where a coordinate is NaN or a box's
+// 2 v is past 2^30, the cells' own box (leafCellBoxOfCells), whose conversions say what such a
+// leaf's cell is.
+std::size_t leafCellBox(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::ivec3& lo,
+                        glm::ivec3& hi) {
+#if defined(__SSE2__)
+    __m128 l[2], h[2], nan[2];
+    for (int k = 0; k < 2; ++k) {
+        l[k] = _mm_set1_ps(std::numeric_limits<float>::infinity());
+        h[k] = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+        nan[k] = _mm_setzero_ps();
+    }
+    std::size_t count = 0;
+    const std::size_t size = leaves.size();
+    for (std::size_t i = 0; i < size; i += 2)
+        for (std::size_t k = 0; k < 2 && i + k < size; ++k) {
+            const skel::Leaf& leaf = leaves[i + k];
+            if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+            float xyzw[4];
+            std::memcpy(xyzw, &leaf, sizeof xyzw); // the position and the next float (unused)
+            const __m128 p = _mm_loadu_ps(xyzw);
+            l[k] = _mm_min_ps(l[k], p);
+            h[k] = _mm_max_ps(h[k], p);
+            nan[k] = _mm_or_ps(nan[k], _mm_cmpunord_ps(p, p));
+            ++count;
+        }
+    if (count == 0) {
+        lo = glm::ivec3(std::numeric_limits<int>::max());
+        hi = glm::ivec3(std::numeric_limits<int>::min());
+        return 0;
+    }
+    const __m128 least = _mm_mul_ps(_mm_min_ps(l[0], l[1]), _mm_set1_ps(2.0f));
+    const __m128 greatest = _mm_mul_ps(_mm_max_ps(h[0], h[1]), _mm_set1_ps(2.0f));
+    const __m128 limit = _mm_set1_ps(1073741824.0f); // 2^30
+    const __m128 outside =
+        _mm_or_ps(_mm_or_ps(nan[0], nan[1]),
+                  _mm_or_ps(_mm_cmplt_ps(least, _mm_sub_ps(_mm_setzero_ps(), limit)),
+                            _mm_cmpgt_ps(greatest, limit)));
+    if ((_mm_movemask_ps(outside) & 7) != 0) return leafCellBoxOfCells(leaves, n, lo, hi);
+    auto floors = [](__m128 q) { // floorToInt of each lane (q within the int range)
+        const __m128i i = _mm_cvttps_epi32(q);
+        return lanesToCell(_mm_add_epi32(i, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(i), q))));
+    };
+    lo = floors(least);
+    hi = floors(greatest);
+    return count;
+#else
+    return leafCellBoxOfCells(leaves, n, lo, hi);
+#endif
+}
+
+namespace {
 
 // The mean of a card's \p count corners in doubles, summed in order from +0.
 glm::dvec3 centreOf(const glm::vec3* corners, std::size_t count) {
@@ -258,7 +317,7 @@ public:
         // The box of the counted leaves' cells first; their cells are made again as they are
         // summed (kept from this pass, 20 bytes a leaf written and read back, they were slower).
         glm::ivec3 lo, hi;
-        mCount = cellBox(leaves, n, lo, hi);
+        mCount = leafCellBox(leaves, n, lo, hi);
         if (mCount == 0) lo = hi = glm::ivec3(0);
         mLo = lo;
         std::int64_t size = 1;
@@ -286,6 +345,31 @@ public:
                        ez = static_cast<std::size_t>(mExtent[2]);
             Sum* const grid = mGrid.data();
             const float* const light = perTip.data();
+#if defined(__SSE2__)
+            // Where every offset and the x stride (ey ez) fit 15 bits (the oak's box: ~17k
+            // cells), the slot in the register: the offsets packed to 16 bits, ox ey ez + oy ez
+            // and oz + 0 by one pmaddwd, then added (the same integer as the scalar slot below:
+            // nothing overflows); the three cells' ints extracted, and ten integer operations, a
+            // leaf before.
+            const std::size_t strideX = ey * ez;
+            if (mExtent[0] < 32768 && strideX < 32768) {
+                const __m128i lo = _mm_setr_epi32(mLo.x, mLo.y, mLo.z, 0);
+                const __m128i mask = _mm_set1_epi32(0x1fffff);
+                const __m128i weights = _mm_setr_epi16(static_cast<short>(strideX),
+                                                       static_cast<short>(ez), 1, 0, 0, 0, 0, 0);
+                for (const skel::Leaf& leaf : leaves) {
+                    if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
+                    const __m128i o = _mm_and_si128(_mm_sub_epi32(leafCellLanes(leaf), lo), mask);
+                    const __m128i terms = _mm_madd_epi16(_mm_packs_epi32(o, o), weights);
+                    const auto slot = static_cast<std::size_t>(static_cast<std::uint32_t>(
+                        _mm_cvtsi128_si32(_mm_add_epi32(terms, _mm_shuffle_epi32(terms, 0x55)))));
+                    Sum& s = grid[slot];
+                    s.light += light[static_cast<std::size_t>(leaf.node)];
+                    s.count += 1.0;
+                }
+                return;
+            }
+#endif
             for (const skel::Leaf& leaf : leaves) {
                 if (leaf.node < 0 || static_cast<std::size_t>(leaf.node) >= n) continue;
                 const glm::ivec3 c = leafCellOf(leaf);
@@ -311,7 +395,9 @@ public:
         }
     }
 
-    bool empty() const { return mCount == 0; }
+    bool empty() const {
+        return mCount == 0;
+    }
 
     /// Every leaf's sums, in leaf order: made only for a card with no leaf in its 27 cells (one
     /// chain of additions over all the leaves, a tenth of leafCardLight where it was made as

@@ -20,4 +20,14 @@ std::vector<float> leafCardLight(const Mesh& mesh, std::size_t firstVertex,
                                  const std::vector<skel::Leaf>& leaves,
                                  const skel::Skeleton& skeleton);
 
+/// The box of the 0.5 m cells of the leaves on a node below \p n (into \p lo and \p hi, each
+/// axis' least and greatest cell; INT_MAX and INT_MIN where no leaf counts), and how many leaves
+/// count: leafCardLight's grid. leafCellBox takes the box of the positions and their cells'
+/// floors; leafCellBoxOfCells (its reference and its fallback for NaN and far coordinates) the
+/// box of every leaf's cell. The same boxes and counts.
+std::size_t leafCellBox(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::ivec3& lo,
+                        glm::ivec3& hi);
+std::size_t leafCellBoxOfCells(const std::vector<skel::Leaf>& leaves, std::size_t n, glm::ivec3& lo,
+                               glm::ivec3& hi);
+
 } // namespace sylva::mesh

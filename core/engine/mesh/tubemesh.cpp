@@ -507,7 +507,34 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
         }
         if (k > 0) {
             const std::size_t a0 = ringStart - ringVerts;
-            for (int j = 0; j < res; ++j) {
+            int j = 0;
+#if defined(__SSE2__)
+            // Two quads' six triangles (twelve indices) in three stores: the scalar writes' values
+            // (modulo 2^32 as their casts), each lane two more every step.
+            {
+                const auto a = static_cast<std::uint32_t>(a0),
+                           c = static_cast<std::uint32_t>(ringStart);
+                auto lanes = [](std::uint32_t x, std::uint32_t y, std::uint32_t z,
+                                std::uint32_t u) {
+                    return _mm_setr_epi32(static_cast<int>(x), static_cast<int>(y),
+                                          static_cast<int>(z), static_cast<int>(u));
+                };
+                __m128i t0 = lanes(a, a + 1, c + 1, a), t1 = lanes(c + 1, c, a + 1, a + 2),
+                        t2 = lanes(c + 2, a + 1, c + 2, c + 1);
+                const __m128i two = _mm_set1_epi32(2);
+                auto* out = reinterpret_cast<__m128i*>(w.idx + (w.i - w.indexBase));
+                for (; j + 1 < res; j += 2, out += 3) {
+                    _mm_storeu_si128(out, t0);
+                    _mm_storeu_si128(out + 1, t1);
+                    _mm_storeu_si128(out + 2, t2);
+                    t0 = _mm_add_epi32(t0, two);
+                    t1 = _mm_add_epi32(t1, two);
+                    t2 = _mm_add_epi32(t2, two);
+                }
+                w.i += 6 * static_cast<std::size_t>(j);
+            }
+#endif
+            for (; j < res; ++j) {
                 const std::size_t a = a0 + static_cast<std::size_t>(j);
                 const std::size_t c = ringStart + static_cast<std::size_t>(j);
                 w.triangle(a, a + 1, c + 1);

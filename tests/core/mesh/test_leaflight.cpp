@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <unordered_map>
 
 #include "engine/mesh/leaflight.h"
@@ -201,6 +202,24 @@ TEST(LeafCardLight, DenseGridMatchesTheHashedCells) {
     }
 }
 
+TEST(LeafCardLight, FlatGridWiderThanPackedSlotsMatchesTheHashedCells) {
+    // A grid two cells thick and ~200 cells square: still dense (10,000 leaves), but its x
+    // stride (~40,000 cells) is past the packed slots' 15 bits: the slots made from the three
+    // ints.
+    Scene sc = makeScene(10, 300, 10000, 4.0f, glm::vec3(0.0f));
+    for (skel::Leaf& leaf : sc.leaves) {
+        leaf.position.x = leaf.position.x < 0.0f ? 0.2f : 0.7f;
+        leaf.position.y *= 12.5f;
+        leaf.position.z *= 12.5f;
+    }
+    for (glm::vec3& p : sc.mesh.positions) {
+        p.y *= 12.5f;
+        p.z *= 12.5f;
+    }
+    expectSameBits(mesh::leafCardLight(sc.mesh, 0, sc.leaves, sc.skeleton),
+                   referenceLight(sc.mesh, 0, sc.leaves, sc.skeleton));
+}
+
 TEST(LeafCardLight, SparseLeavesAndFarCellsMatchTheHashedCells) {
     // Two clumps far apart: the box of cells is too large for a grid (the hashed cells).
     Scene sc = makeScene(7, 50, 400, 1.0f, glm::vec3(0.0f));
@@ -219,4 +238,55 @@ TEST(LeafCardLight, SparseLeavesAndFarCellsMatchTheHashedCells) {
     one.mesh.positions[64].z -= 1048576.0f;
     const std::vector<float> got = mesh::leafCardLight(one.mesh, 0, one.leaves, one.skeleton);
     expectSameBits(got, referenceLight(one.mesh, 0, one.leaves, one.skeleton));
+}
+
+TEST(LeafCardLight, PositionsBoxGivesTheCellsBox) {
+    // leafCellBox (the positions' box, then its floors) against leafCellBoxOfCells (every leaf's
+    // cell): the same box and count, with leaves on cell borders (exact half metres and a float
+    // either side), on both sides of zero, on no node, NaN and far (past 2^30 cells) coordinates.
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    auto check = [](const std::vector<skel::Leaf>& leaves, std::size_t n, const char* what) {
+        glm::ivec3 lo(1), hi(2), refLo(3), refHi(4);
+        const std::size_t count = mesh::leafCellBox(leaves, n, lo, hi);
+        const std::size_t refCount = mesh::leafCellBoxOfCells(leaves, n, refLo, refHi);
+        EXPECT_EQ(count, refCount) << what;
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_EQ(lo[a], refLo[a]) << what << " axis " << a;
+            EXPECT_EQ(hi[a], refHi[a]) << what << " axis " << a;
+        }
+    };
+    Rng rng(41);
+    const std::size_t n = 20;
+    auto coordinate = [&](float reach) {
+        float v = std::round(rng.uniformf(-reach, reach) * 2.0f) * 0.5f; // a cell border
+        switch (rng.below(4)) {
+        case 0:
+            return v;
+        case 1:
+            return std::nextafter(v, -1e30f);
+        case 2:
+            return std::nextafter(v, 1e30f);
+        default:
+            return rng.uniformf(-reach, reach);
+        }
+    };
+    for (std::size_t size = 0; size <= 41; ++size)
+        for (int round = 0; round < 20; ++round) {
+            const float reach = round % 2 == 0 ? 3.0f : 40000.0f;
+            std::vector<skel::Leaf> leaves(size);
+            for (skel::Leaf& leaf : leaves) {
+                leaf.position = {coordinate(reach), coordinate(reach), coordinate(reach)};
+                leaf.node = static_cast<std::int32_t>(rng.below(n + 4)) - 2; // some on no node
+            }
+            check(leaves, n, "borders");
+            if (size == 0) continue;
+            // One far or NaN coordinate, counted or not.
+            std::vector<skel::Leaf> odd = leaves;
+            skel::Leaf& leaf = odd[rng.below(size)];
+            const float far[] = {nan, 3e9f, -3e9f, 1e30f, -1e30f, 5.4e8f, -5.4e8f};
+            leaf.position[static_cast<int>(rng.below(3))] = far[rng.below(7)];
+            check(odd, n, "far or NaN");
+            leaf.node = 0;
+            check(odd, n, "far or NaN, counted");
+        }
 }
