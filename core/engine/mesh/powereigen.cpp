@@ -4,8 +4,16 @@
 #include <cmath>
 #include <cstdint>
 
+#include <cstdlib>
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+#include "engine/util/x86intrinsics.h"
+#if defined(SYLVA_X86_INTRINSICS) && defined(__SSE2__)
+#define SYLVA_POWER_AVX512 1
+#else
+#define SYLVA_POWER_AVX512 0
 #endif
 
 namespace sylva::mesh {
@@ -28,9 +36,108 @@ constexpr std::uint64_t kHalfExponentBias = 1534;
     return std::bit_cast<double>(field << 52);
 }
 
+#if SYLVA_POWER_AVX512
+// The processor's features read first (a static initializer may run before libgcc's own).
+// SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes the SSE2 pairs on a processor with AVX-512.
+const bool kHasAvx512 = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f")) &&
+                        std::getenv("SYLVA_NO_AVX512") == nullptr &&
+                        std::getenv("SYLVA_NO_AVX") == nullptr;
+
+// Products and sums by the _round forms with the current rounding: GCC contracts a product into
+// the generic vector sum _mm512_add_pd is written as (a fused multiply-add rounds once, not
+// twice); the builtins it does not.
+#define SYLVA_AVX512 __attribute__((target("avx512f"), always_inline)) inline
+SYLVA_AVX512 __m512d mul(__m512d a, __m512d b) {
+    return _mm512_mul_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
+}
+SYLVA_AVX512 __m512d add(__m512d a, __m512d b) {
+    return _mm512_add_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
+}
+#undef SYLVA_AVX512
+
+// The eight lanes in one AVX-512 register each (the SSE2 pairs' 48 registers of matrices and
+// vectors spilled to the stack, four pairs an operation): each lane the SSE2 path's operations
+// in order, the same bits. The matrices and starts gathered (lanes past n: zeros, as there).
+__attribute__((target("avx512f"))) void largestEigenvectorsAvx512(const glm::dmat3* c,
+                                                                  glm::dvec3* v, std::size_t n) {
+    const __mmask8 live = static_cast<__mmask8>((1u << n) - 1u);
+    const __m512d zero = _mm512_setzero_pd();
+    const __m512d one = _mm512_set1_pd(1.0);
+    const __m512i mIndex = _mm512_set_epi64(63, 54, 45, 36, 27, 18, 9, 0);
+    const __m512i vIndex = _mm512_set_epi64(21, 18, 15, 12, 9, 6, 3, 0);
+    const double* const cm = &c[0][0][0];
+    __m512d M[9];
+    __m512d sum = zero;
+    for (int e = 0; e < 9; ++e) {
+        M[e] = _mm512_mask_i64gather_pd(zero, live, mIndex, cm + e, 8);
+        sum = add(sum, _mm512_abs_pd(M[e]));
+    }
+    // sum > 0 ? 1 / sum : 0, lane by lane.
+    const __m512d scale = _mm512_maskz_div_round_pd(_mm512_cmp_pd_mask(sum, zero, _CMP_GT_OQ), one,
+                                                    sum, _MM_FROUND_CUR_DIRECTION);
+    for (int e = 0; e < 9; ++e)
+        M[e] = mul(M[e], scale);
+    const double* const vm = &v[0][0];
+    __m512d X = _mm512_mask_i64gather_pd(zero, live, vIndex, vm, 8);
+    __m512d Y = _mm512_mask_i64gather_pd(zero, live, vIndex, vm + 1, 8);
+    __m512d Z = _mm512_mask_i64gather_pd(zero, live, vIndex, vm + 2, 8);
+    static_assert(kBlock == 4);
+    for (int s = 0; s < 2; ++s) {
+        __m512d p[9];
+        for (int col = 0; col < 3; ++col)
+            for (int row = col; row < 3; ++row)
+                p[3 * col + row] = p[3 * row + col] =
+                    add(add(mul(M[row], M[3 * col]), mul(M[3 + row], M[3 * col + 1])),
+                        mul(M[6 + row], M[3 * col + 2]));
+        for (int e = 0; e < 9; ++e)
+            M[e] = p[e];
+    }
+    const __m512d tiny2 = _mm512_set1_pd(kVanish * kVanish);
+    const __m512i bias = _mm512_set1_epi64(static_cast<long long>(kHalfExponentBias));
+    __mmask8 done = 0;
+    for (int i = 0; i < kPowerSteps; i += kBlock) {
+        const __m512d nx = add(add(mul(M[0], X), mul(M[3], Y)), mul(M[6], Z));
+        const __m512d ny = add(add(mul(M[1], X), mul(M[4], Y)), mul(M[7], Z));
+        const __m512d nz = add(add(mul(M[2], X), mul(M[5], Y)), mul(M[8], Z));
+        const __m512d len2 = add(add(mul(nx, nx), mul(ny, ny)), mul(nz, nz));
+        done |= _mm512_cmp_pd_mask(len2, tiny2, _CMP_LT_OQ);
+        __m512d inv;
+        if (i + kBlock < kPowerSteps) {
+            const __m512i half = _mm512_srli_epi64(_mm512_castpd_si512(len2), 53);
+            inv = _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_sub_epi64(bias, half), 52));
+        } else {
+            // A kept lane's len may be 0: its quotient is discarded.
+            inv = _mm512_div_round_pd(one, _mm512_mask_mov_pd(_mm512_sqrt_pd(len2), done, one),
+                                      _MM_FROUND_CUR_DIRECTION);
+        }
+        const __mmask8 go = static_cast<__mmask8>(~done);
+        X = _mm512_mask_mul_round_pd(X, go, nx, inv, _MM_FROUND_CUR_DIRECTION);
+        Y = _mm512_mask_mul_round_pd(Y, go, ny, inv, _MM_FROUND_CUR_DIRECTION);
+        Z = _mm512_mask_mul_round_pd(Z, go, nz, inv, _MM_FROUND_CUR_DIRECTION);
+    }
+    alignas(64) double x[kPowerLanes], y[kPowerLanes], z[kPowerLanes];
+    _mm512_store_pd(x, X);
+    _mm512_store_pd(y, Y);
+    _mm512_store_pd(z, Z);
+    for (std::size_t k = 0; k < n; ++k)
+        v[k] = glm::dvec3(x[k], y[k], z[k]);
+}
+#endif
+
 } // namespace
 
 void largestEigenvectors(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
+#if SYLVA_POWER_AVX512
+    static_assert(kPowerLanes == 8, "one AVX-512 register a matrix entry");
+    if (kHasAvx512 && n > 0) {
+        largestEigenvectorsAvx512(c, v, n);
+        return;
+    }
+#endif
+    largestEigenvectorsPairs(c, v, n);
+}
+
+void largestEigenvectorsPairs(const glm::dmat3* c, glm::dvec3* v, std::size_t n) {
     double scale[kPowerLanes];
     for (std::size_t k = 0; k < n; ++k) {
         double sum = 0.0;
