@@ -7,7 +7,7 @@
 namespace sylva::mesh {
 
 /// The most eigenvectors largestEigenvectors takes at once.
-inline constexpr std::size_t kPowerLanes = 8;
+inline constexpr std::size_t kPowerLanes = 16;
 
 /// Largest eigenvectors of \p n (at most kPowerLanes) symmetric 3x3 matrices by power iteration,
 /// each from its \p v (replaced by the result): 24 steps, a matrix whose product vanishes keeps its
@@ -23,8 +23,10 @@ inline constexpr std::size_t kPowerLanes = 8;
 /// squarings make the six entries of a symmetric matrix (\p c must be symmetric, bit for bit,
 /// as a covariance is), and the vectors are blended with their kept ones only where a lane's
 /// product vanished (0.19 -> 0.17 ms a tree). Where there is AVX-512 (and neither SYLVA_NO_AVX512
-/// nor SYLVA_NO_AVX is set) the eight lanes take one register each: the same operations in each
-/// lane's order, the same bits as largestEigenvectorsPairs.
+/// nor SYLVA_NO_AVX is set) eight lanes take one register, sixteen two side by side (each
+/// register's chain of products waits on every operation before it; two overlap): the same
+/// operations in each lane's order, the same bits as largestEigenvectorsPairs (which takes
+/// eight at a time).
 /// Used by the leaf cluster cards' fits (appendLeafClusterCards).
 void largestEigenvectors(const glm::dmat3* c, glm::dvec3* v, std::size_t n);
 
