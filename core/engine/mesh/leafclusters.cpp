@@ -324,7 +324,8 @@ void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint3
 /// iterations of kPowerLanes groups at a time in step (each group's own arithmetic, in its own
 /// order: the same cards as one group at a time, without waiting on one chain of divisions and
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
-/// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record).
+/// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record;
+/// sixteen, two AVX-512 registers, overlap two chains of 24 products, as four CardFitLanes).
 /// With AVX the preparation and the extent take four groups a register (CardFitLanes), the
 /// groups taken by size so that the four lanes of a register have as many leaves (which groups
 /// share a batch changes only the time: each lane's arithmetic is its own group's).
@@ -360,9 +361,9 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
         order = std::move(bySize);
     }
     constexpr std::size_t kLanes = kPowerLanes;
-    static_assert(kLanes == 8, "two CardFitLanes a batch");
+    static_assert(kLanes % 4 == 0, "whole CardFitLanes a batch");
     CardFitInput in[kLanes];
-    CardFitLanes corners[2];
+    CardFitLanes corners[kLanes / 4];
     for (std::size_t b = 0; b < fits; b += kLanes) {
         const std::size_t n = std::min(kLanes, fits - b);
         std::span<const std::uint32_t> members[kLanes];

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
 #include <vector>
 
 #include "engine/mesh/powereigen.h"
@@ -83,4 +85,39 @@ TEST(PowerEigen, VanishingAndRankOneMatrices) {
         EXPECT_GT(glm::length(product), 0.0);
         EXPECT_LT(glm::length(glm::cross(product, v[k])), 1e-9 * glm::length(product)) << k;
     }
+}
+
+// largestEigenvectors (one AVX-512 register a lane where there is AVX-512) gives the SSE2 pairs'
+// vectors bit for bit, in batches of every size: spreads near equal, tiny and huge matrices,
+// zero matrices, and rank-one ones started across their line (whose products vanish).
+TEST(PowerEigen, LanesMatchThePairsBitForBit) {
+    Rng rng(43);
+    std::vector<glm::dmat3> cs;
+    std::vector<glm::dvec3> starts;
+    for (int i = 0; i < 120; ++i) {
+        const double near = i % 3 == 0 ? 1.0 + 1e-3 * rng.uniform() : rng.uniform(0.2, 3.0);
+        glm::dmat3 c = covariance(rng, {near, 1.0, rng.uniform(0.0, 0.5)}, 2 + i % 23);
+        glm::dvec3 start(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+        if (i % 7 == 3) c = glm::dmat3(0.0);
+        if (i % 11 == 5) c *= 1e-150;
+        if (i % 13 == 6) c *= 1e150;
+        if (i % 17 == 8) {
+            c = glm::outerProduct(glm::dvec3(1.0, 2.0, 0.5), glm::dvec3(1.0, 2.0, 0.5));
+            start = glm::dvec3(2.0, -1.0, 0.0); // across the line: its product is zero
+        }
+        cs.push_back(c);
+        starts.push_back(start);
+    }
+    for (std::size_t batch = 1; batch <= mesh::kPowerLanes; ++batch)
+        for (std::size_t first = 0; first + batch <= cs.size(); first += batch) {
+            std::vector<glm::dvec3> lanes(starts.begin() + first, starts.begin() + first + batch);
+            std::vector<glm::dvec3> pairs = lanes;
+            mesh::largestEigenvectors(&cs[first], lanes.data(), batch);
+            mesh::largestEigenvectorsPairs(&cs[first], pairs.data(), batch);
+            for (std::size_t k = 0; k < batch; ++k)
+                for (int e = 0; e < 3; ++e)
+                    EXPECT_EQ(std::bit_cast<std::uint64_t>(lanes[k][e]),
+                              std::bit_cast<std::uint64_t>(pairs[k][e]))
+                        << first + k << " " << e;
+        }
 }
