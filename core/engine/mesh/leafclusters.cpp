@@ -346,13 +346,14 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
     // The groups to fit, in group order, or by size (then group order) for the lanes.
     RawVector<std::uint32_t> order(groups.size());
     std::size_t fits = 0, largest = 0;
+    // Without a branch on the group's size (perf annotate: a single leaf's default card, its
+    // branch mispredicted, ~6 % of fitCards' samples): every card set to the default, the fits
+    // overwriting theirs, and every group written to the order, counted only with two leaves.
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const std::size_t size = groups[g].size();
-        if (size < 2) {
-            cards[g] = FittedCard{};
-            continue;
-        }
-        order[fits++] = static_cast<std::uint32_t>(g);
+        cards[g] = FittedCard{};
+        order[fits] = static_cast<std::uint32_t>(g);
+        fits += size >= 2;
         largest = std::max(largest, size);
     }
     order.resize(fits);
