@@ -188,3 +188,41 @@ TEST(Evaluator, TracedSourcesReachTheMesherThroughAdapt) {
     EXPECT_EQ(e.evaluations(), before + 3); // the cache was dropped: every node ran again
     EXPECT_EQ(s.sourceLine, (std::vector<std::int32_t>{2, 2, 2, 3}));
 }
+
+TEST(Evaluator, SharedGraphIsCopiedOnceAChange) {
+    registerTestTypes();
+    Evaluator e(chainGraph());
+    const std::shared_ptr<const SpeciesGraph> first = e.sharedGraph();
+    EXPECT_EQ(e.sharedGraph(), first); // unchanged graph: the same copy again
+    EXPECT_EQ(first->findNode("src")->params.toJson(), R"({"length":3})");
+    EXPECT_THROW(e.setParam("src", "bogus", Value(1)), sylva::InvalidInput);
+    EXPECT_EQ(e.sharedGraph(), first); // a rejected edit changes nothing
+    e.setParam("src", "length", Value(5));
+    const std::shared_ptr<const SpeciesGraph> second = e.sharedGraph();
+    EXPECT_NE(second, first);
+    EXPECT_EQ(second->findNode("src")->params.toJson(), R"({"length":5})");
+    EXPECT_EQ(first->findNode("src")->params.toJson(), R"({"length":3})"); // kept as it was
+}
+
+TEST(Evaluator, ParameterHashesFollowEveryKindOfEdit) {
+    // The cache keys use the parameters' hashes computed when the graph is set: a rejected edit
+    // keeps the old ones, setGraph and setParam make new ones.
+    registerTestTypes();
+    Evaluator e(chainGraph());
+    e.evaluate();
+    EXPECT_EQ(e.evaluations(), 2u);
+    EXPECT_THROW(e.setParam("src", "bogus", Value(1)), sylva::InvalidInput);
+    e.evaluate();
+    EXPECT_EQ(e.evaluations(), 2u); // the rejected edit left the keys as they were
+    SpeciesGraph g = chainGraph();
+    g.nodes[0].params = Value::Object{{"length", 4}};
+    e.setGraph(g);
+    EXPECT_EQ(e.evaluate().skeleton->size(), 5u);
+    EXPECT_EQ(e.evaluations(), 4u);
+    e.setGraph(g); // the same graph again: the same keys, nothing re-runs
+    e.evaluate();
+    EXPECT_EQ(e.evaluations(), 4u);
+    e.setParam("src", "length", Value(3)); // back to the first graph's parameters
+    EXPECT_EQ(e.evaluate().skeleton->size(), 4u);
+    EXPECT_EQ(e.evaluations(), 6u);
+}
