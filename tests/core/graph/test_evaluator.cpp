@@ -226,3 +226,40 @@ TEST(Evaluator, ParameterHashesFollowEveryKindOfEdit) {
     EXPECT_EQ(e.evaluate().skeleton->size(), 4u);
     EXPECT_EQ(e.evaluations(), 6u);
 }
+
+TEST(Evaluator, MesherReadsEachSpeciesOwnParameters) {
+    // tube_mesh keeps the settings it read last (per thread) while its parameters stay the same:
+    // species alternating on one thread, and edits, must each get their own mesh.
+    registerBuiltinNodeTypes();
+    auto graphWith = [](int resolution) {
+        SpeciesGraph g;
+        g.name = "tubes";
+        g.nodes = {
+            NodeDesc{"grow",
+                     "lsystem",
+                     Value::Object{{"grammar", "axiom: A\nA -> F[+F]B\nB -> F[-F]A\n"},
+                                   {"generations", 4}},
+                     {}},
+            NodeDesc{"mesh", "tube_mesh", Value::Object{{"resolution", resolution}}, {"grow"}}};
+        g.output = "mesh";
+        return g;
+    };
+    auto meshOf = [](Evaluator& e, std::uint64_t seed) {
+        const NodeOutput& out = e.evaluate(seed);
+        EXPECT_TRUE(out.mesh);
+        return std::make_pair(out.mesh->positions.size(), out.mesh->indices);
+    };
+    Evaluator six(graphWith(6));
+    Evaluator eight(graphWith(8));
+    const auto sixMesh = meshOf(six, 1);
+    const auto eightMesh = meshOf(eight, 1);
+    EXPECT_NE(sixMesh.first, eightMesh.first);
+    EXPECT_EQ(meshOf(six, 2), sixMesh); // after the other species: read again
+    EXPECT_EQ(meshOf(eight, 2), eightMesh);
+    six.setParam("mesh", "resolution", Value(8));
+    EXPECT_EQ(meshOf(six, 3), eightMesh); // an edit is read
+    six.setParam("mesh", "resolution", Value(6));
+    EXPECT_EQ(meshOf(six, 4), sixMesh);
+    EXPECT_THROW(six.setParam("mesh", "resolution", Value(65)), sylva::InvalidInput);
+    EXPECT_EQ(meshOf(six, 5), sixMesh);
+}
