@@ -442,7 +442,7 @@ void bindSpecies(py::module_& m) {
                             if (graph) species.evaluator->setGraph(std::move(*graph));
                         }
                     } restore{s, own};
-                    t.graph = std::make_shared<const graph::SpeciesGraph>(s.graph());
+                    t.graph = s.evaluator->sharedGraph(); // shared until the species changes
                     // wind=True grows with wind data for this tree only: the species' graph
                     // (and its cached results) comes back afterwards.
                     std::optional<graph::Evaluator> windy;

@@ -241,6 +241,19 @@ std::vector<std::string> NodeRegistry::names() const {
 Evaluator::Evaluator(SpeciesGraph graph) : mGraph(std::move(graph)) {
     registerBuiltinNodeTypes(); // engine/nodes: the built-in types (a link-time plug-in)
     validate();
+    graphChanged();
+}
+
+void Evaluator::graphChanged() {
+    mParamHashes.clear();
+    for (const NodeDesc& n : mGraph.nodes)
+        mParamHashes.push_back(n.params.hash());
+    mShared.reset();
+}
+
+std::shared_ptr<const SpeciesGraph> Evaluator::sharedGraph() const {
+    if (!mShared) mShared = std::make_shared<const SpeciesGraph>(mGraph);
+    return mShared;
 }
 
 void Evaluator::validate() const {
@@ -381,6 +394,7 @@ void Evaluator::setGraph(SpeciesGraph graph) {
         mGraph = std::move(previous); // a rejected edit loses nothing
         throw;
     }
+    graphChanged();
 }
 
 std::uint64_t Evaluator::nodeKey(const NodeDesc& node, std::uint64_t seed, bool seedOverridden,
@@ -394,7 +408,8 @@ std::uint64_t Evaluator::nodeKey(const NodeDesc& node, std::uint64_t seed, bool 
     };
     for (unsigned char c : node.type)
         mix(c);
-    mix(node.params.hash());
+    // The node's parameters' hash, computed when the graph was set (node is one of mGraph's).
+    mix(mParamHashes[static_cast<std::size_t>(&node - mGraph.nodes.data())]);
     mix(seedOverridden ? seed : 0xFFFFFFFFFFFFFFFFull);
     for (unsigned char c : mGraph.baseDir.string())
         mix(c);

@@ -258,6 +258,9 @@ public:
     explicit Evaluator(SpeciesGraph graph);
 
     const SpeciesGraph& graph() const { return mGraph; }
+    /// The graph as a shared, immutable copy (a grown tree keeps the graph it grew from): made
+    /// once after each change of the graph, then handed out again without copying.
+    std::shared_ptr<const SpeciesGraph> sharedGraph() const;
     /// Checks ids, types, parameters (against the metadata), port kinds, cycles and the output
     /// node; nodes the output does not depend on may still lack inputs. Throws InvalidInput.
     void validate() const;
@@ -309,7 +312,13 @@ private:
     const TreeContext* mTree = nullptr; ///< during evaluateTree() only
     bool mTraceSources = false;
 
+    /// Called whenever mGraph changes: the parameters' hashes and the shared copy.
+    void graphChanged();
+
     SpeciesGraph mGraph;
+    /// mGraph.nodes[i].params.hash(), computed once a graph (Value::hash prints the JSON).
+    std::vector<std::uint64_t> mParamHashes;
+    mutable std::shared_ptr<const SpeciesGraph> mShared; ///< sharedGraph()'s copy, or null
     std::map<std::string, CacheEntry> mCache;
     std::map<std::string, NodeRun> mRuns;
     std::size_t mEvaluations = 0;

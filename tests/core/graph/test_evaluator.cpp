@@ -188,3 +188,78 @@ TEST(Evaluator, TracedSourcesReachTheMesherThroughAdapt) {
     EXPECT_EQ(e.evaluations(), before + 3); // the cache was dropped: every node ran again
     EXPECT_EQ(s.sourceLine, (std::vector<std::int32_t>{2, 2, 2, 3}));
 }
+
+TEST(Evaluator, SharedGraphIsCopiedOnceAChange) {
+    registerTestTypes();
+    Evaluator e(chainGraph());
+    const std::shared_ptr<const SpeciesGraph> first = e.sharedGraph();
+    EXPECT_EQ(e.sharedGraph(), first); // unchanged graph: the same copy again
+    EXPECT_EQ(first->findNode("src")->params.toJson(), R"({"length":3})");
+    EXPECT_THROW(e.setParam("src", "bogus", Value(1)), sylva::InvalidInput);
+    EXPECT_EQ(e.sharedGraph(), first); // a rejected edit changes nothing
+    e.setParam("src", "length", Value(5));
+    const std::shared_ptr<const SpeciesGraph> second = e.sharedGraph();
+    EXPECT_NE(second, first);
+    EXPECT_EQ(second->findNode("src")->params.toJson(), R"({"length":5})");
+    EXPECT_EQ(first->findNode("src")->params.toJson(), R"({"length":3})"); // kept as it was
+}
+
+TEST(Evaluator, ParameterHashesFollowEveryKindOfEdit) {
+    // The cache keys use the parameters' hashes computed when the graph is set: a rejected edit
+    // keeps the old ones, setGraph and setParam make new ones.
+    registerTestTypes();
+    Evaluator e(chainGraph());
+    e.evaluate();
+    EXPECT_EQ(e.evaluations(), 2u);
+    EXPECT_THROW(e.setParam("src", "bogus", Value(1)), sylva::InvalidInput);
+    e.evaluate();
+    EXPECT_EQ(e.evaluations(), 2u); // the rejected edit left the keys as they were
+    SpeciesGraph g = chainGraph();
+    g.nodes[0].params = Value::Object{{"length", 4}};
+    e.setGraph(g);
+    EXPECT_EQ(e.evaluate().skeleton->size(), 5u);
+    EXPECT_EQ(e.evaluations(), 4u);
+    e.setGraph(g); // the same graph again: the same keys, nothing re-runs
+    e.evaluate();
+    EXPECT_EQ(e.evaluations(), 4u);
+    e.setParam("src", "length", Value(3)); // back to the first graph's parameters
+    EXPECT_EQ(e.evaluate().skeleton->size(), 4u);
+    EXPECT_EQ(e.evaluations(), 6u);
+}
+
+TEST(Evaluator, MesherReadsEachSpeciesOwnParameters) {
+    // tube_mesh keeps the settings it read last (per thread) while its parameters stay the same:
+    // species alternating on one thread, and edits, must each get their own mesh.
+    registerBuiltinNodeTypes();
+    auto graphWith = [](int resolution) {
+        SpeciesGraph g;
+        g.name = "tubes";
+        g.nodes = {
+            NodeDesc{"grow",
+                     "lsystem",
+                     Value::Object{{"grammar", "axiom: A\nA -> F[+F]B\nB -> F[-F]A\n"},
+                                   {"generations", 4}},
+                     {}},
+            NodeDesc{"mesh", "tube_mesh", Value::Object{{"resolution", resolution}}, {"grow"}}};
+        g.output = "mesh";
+        return g;
+    };
+    auto meshOf = [](Evaluator& e, std::uint64_t seed) {
+        const NodeOutput& out = e.evaluate(seed);
+        EXPECT_TRUE(out.mesh);
+        return std::make_pair(out.mesh->positions.size(), out.mesh->indices);
+    };
+    Evaluator six(graphWith(6));
+    Evaluator eight(graphWith(8));
+    const auto sixMesh = meshOf(six, 1);
+    const auto eightMesh = meshOf(eight, 1);
+    EXPECT_NE(sixMesh.first, eightMesh.first);
+    EXPECT_EQ(meshOf(six, 2), sixMesh); // after the other species: read again
+    EXPECT_EQ(meshOf(eight, 2), eightMesh);
+    six.setParam("mesh", "resolution", Value(8));
+    EXPECT_EQ(meshOf(six, 3), eightMesh); // an edit is read
+    six.setParam("mesh", "resolution", Value(6));
+    EXPECT_EQ(meshOf(six, 4), sixMesh);
+    EXPECT_THROW(six.setParam("mesh", "resolution", Value(65)), sylva::InvalidInput);
+    EXPECT_EQ(meshOf(six, 5), sixMesh);
+}
