@@ -396,13 +396,11 @@ __attribute__((target("avx512f"))) std::size_t dropKilledAvx512(std::uint32_t* l
     return out;
 }
 
-// The processor's features read first (a static initializer may run before libgcc's own).
+// Read once (util/x86intrinsics).
 // SYLVA_NO_AVX=1 takes the SSE2 offers on any processor (its tests run them on one with AVX).
-const bool kHasAvx =
-    (__builtin_cpu_init(), __builtin_cpu_supports("avx")) && std::getenv("SYLVA_NO_AVX") == nullptr;
+const bool kHasAvx = simd::useAvx();
 // SYLVA_NO_AVX512=1 takes the AVX offers on a processor with AVX-512 (their tests run them).
-const bool kHasAvx512 =
-    kHasAvx && __builtin_cpu_supports("avx512f") && std::getenv("SYLVA_NO_AVX512") == nullptr;
+const bool kHasAvx512 = simd::useAvx512();
 #endif
 
 } // namespace

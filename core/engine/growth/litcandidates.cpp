@@ -215,13 +215,11 @@ visitAvx512(const Arrays& arrays, std::size_t n, const glm::vec3& centre, float 
     return k;
 }
 
-// The processor's features read first (a static initializer may run before libgcc's own).
+// Read once (util/x86intrinsics).
 // SYLVA_NO_AVX=1 takes the SSE2 lanes on any processor, as the colonization search does;
 // SYLVA_NO_AVX512=1 the AVX lanes.
-const bool kHasAvx =
-    (__builtin_cpu_init(), __builtin_cpu_supports("avx")) && std::getenv("SYLVA_NO_AVX") == nullptr;
-const bool kHasAvx512 =
-    kHasAvx && __builtin_cpu_supports("avx512f") && std::getenv("SYLVA_NO_AVX512") == nullptr;
+const bool kHasAvx = simd::useAvx();
+const bool kHasAvx512 = simd::useAvx512();
 #endif
 
 } // namespace

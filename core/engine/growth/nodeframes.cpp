@@ -18,10 +18,8 @@ glm::quat transportFrame(const glm::quat& parent, const glm::vec3& dir) {
 namespace {
 
 #if defined(SYLVA_X86_INTRINSICS)
-// The processor's features read first (a static initializer may run before libgcc's own).
-const bool kHasAvx512 = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f")) &&
-                        std::getenv("SYLVA_NO_AVX") == nullptr &&
-                        std::getenv("SYLVA_NO_AVX512") == nullptr;
+// Read once (util/x86intrinsics).
+const bool kHasAvx512 = simd::useAvx512();
 
 // Sums and differences by the _round forms with the current rounding: GCC contracts a product
 // into the generic vector sum _mm512_add_ps is written as (a fused multiply-add rounds once);

@@ -4,9 +4,9 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#if defined(__x86_64__) && defined(__SSE2__)
-#include <immintrin.h>
+#include "engine/util/x86intrinsics.h"
 
+#if defined(SYLVA_X86_INTRINSICS) && defined(__SSE2__)
 #include "engine/mesh/cardaxes4.h"
 #define SYLVA_CARD_LANES 1
 #else
@@ -19,10 +19,8 @@ namespace sylva::mesh {
 
 namespace {
 
-// The processor's features read first (a static initializer may run before libgcc's own).
 // SYLVA_NO_AVX=1 takes the one-group-at-a-time fits (their tests run them on one with AVX).
-const bool kHasAvx =
-    (__builtin_cpu_init(), __builtin_cpu_supports("avx")) && std::getenv("SYLVA_NO_AVX") == nullptr;
+const bool kHasAvx = simd::useAvx();
 
 // AVX has no fused multiply-add: every product and sum below rounds on its own, as the scalar
 // code's. A lane whose group has no leaf at a step adds +0 (its mask's and): a sum that starts

@@ -81,12 +81,10 @@ SYLVA_AVX V pick(V index, V a0, V a1, V a2, V a3) {
 }
 #undef SYLVA_AVX
 
-// The processor's features read first (a static initializer may run before libgcc's own).
-const bool kHasAvx =
-    (__builtin_cpu_init(), __builtin_cpu_supports("avx")) && std::getenv("SYLVA_NO_AVX") == nullptr;
+// Read once (util/x86intrinsics).
+const bool kHasAvx = simd::useAvx();
 // SYLVA_NO_AVX512=1 takes the AVX lanes on a processor with AVX-512 (their tests run them).
-const bool kHasAvx512 =
-    kHasAvx && __builtin_cpu_supports("avx512f") && std::getenv("SYLVA_NO_AVX512") == nullptr;
+const bool kHasAvx512 = simd::useAvx512();
 
 // Sixty-four floats as four AVX-512 registers, each operation made on all four in turn. The
 // AVX path's sixteen lanes were bound by their chain (three square roots and divisions, the

@@ -352,12 +352,8 @@ ownVariationsAvx512(const glm::dvec3* centre, std::uint64_t seed, double own[3][
     return true;
 }
 
-// The processor's features read first (a static initializer may run before libgcc's own);
 // SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes the card-by-card hashes on any processor.
-const bool kTintAvx512 = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f") &&
-                                                    __builtin_cpu_supports("avx512dq")) &&
-                         std::getenv("SYLVA_NO_AVX512") == nullptr &&
-                         std::getenv("SYLVA_NO_AVX") == nullptr;
+const bool kTintAvx512 = simd::useAvx512() && __builtin_cpu_supports("avx512dq");
 #endif
 
 void ownVariations(const glm::dvec3* centre, std::size_t n, std::uint64_t seed,

@@ -40,11 +40,9 @@ constexpr std::uint64_t kHalfExponentBias = 1534;
 }
 
 #if SYLVA_POWER_AVX512
-// The processor's features read first (a static initializer may run before libgcc's own).
+// Read once (util/x86intrinsics).
 // SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes the SSE2 pairs on a processor with AVX-512.
-const bool kHasAvx512 = (__builtin_cpu_init(), __builtin_cpu_supports("avx512f")) &&
-                        std::getenv("SYLVA_NO_AVX512") == nullptr &&
-                        std::getenv("SYLVA_NO_AVX") == nullptr;
+const bool kHasAvx512 = simd::useAvx512();
 
 // Products and sums by the _round forms with the current rounding: GCC contracts a product into
 // the generic vector sum _mm512_add_pd is written as (a fused multiply-add rounds once, not

@@ -15,3 +15,26 @@
 #endif
 #define SYLVA_X86_INTRINSICS 1
 #endif
+
+#if defined(SYLVA_X86_INTRINSICS)
+#include <cstdlib>
+
+namespace sylva::simd {
+
+/// Whether the AVX kernels run: the processor has AVX and SYLVA_NO_AVX is unset. Read once, on
+/// first use (the processor's features first: a static initializer may run before libgcc's).
+inline bool useAvx() {
+    static const bool use = (__builtin_cpu_init(), __builtin_cpu_supports("avx")) &&
+                            std::getenv("SYLVA_NO_AVX") == nullptr;
+    return use;
+}
+/// Whether the AVX-512 (avx512f) kernels run: useAvx(), the processor has AVX-512 and
+/// SYLVA_NO_AVX512 is unset (the AVX or SSE2 paths then run, with the same bytes).
+inline bool useAvx512() {
+    static const bool use =
+        useAvx() && __builtin_cpu_supports("avx512f") && std::getenv("SYLVA_NO_AVX512") == nullptr;
+    return use;
+}
+
+} // namespace sylva::simd
+#endif
