@@ -1,10 +1,12 @@
 #pragma once
 
-// The axes of four leaves' quaternions, four lanes to an SSE2 register (cardfit's and
+// The axes and card corners of four leaves, four lanes to an SSE2 register (cardfit's and
 // cardfitlanes' shared arithmetic; x86-64 only).
 
 #if defined(__SSE2__)
 #include <xmmintrin.h>
+
+#include "engine/skeleton/skeleton.h"
 
 namespace sylva::mesh {
 
@@ -49,6 +51,41 @@ inline Axes4 basisAxes(__m128 qx, __m128 qy, __m128 qz, __m128 qw) {
              axis(zero, _mm_sub_ps(yw, xz))},
             {axis(zero, _mm_add_ps(yw, xz)), axis(zero, _mm_sub_ps(yz, xw)),
              axis(one, _mm_sub_ps(_mm_xor_ps(xx, sign), yy))}};
+}
+
+// Four leaves' axes and their cards' corners (leafCorners' float operations lane by lane:
+// stem left, stem right, tip right, tip left), \p halfAspect leafCorners' 0.5f * aspect and
+// \p scale4 its scale in every lane.
+struct LeafCards4 {
+    Axes4 axes;
+    Vec4x3 corner[4];
+};
+inline LeafCards4 leafCards4(const skel::Leaf* const leaf[4], float halfAspect, __m128 scale4) {
+    __m128 qx = _mm_loadu_ps(&leaf[0]->orientation.x);
+    __m128 qy = _mm_loadu_ps(&leaf[1]->orientation.x);
+    __m128 qz = _mm_loadu_ps(&leaf[2]->orientation.x);
+    __m128 qw = _mm_loadu_ps(&leaf[3]->orientation.x);
+    _MM_TRANSPOSE4_PS(qx, qy, qz, qw);
+    __m128 px = _mm_loadu_ps(&leaf[0]->position.x); // x, y, z and the orientation's x
+    __m128 py = _mm_loadu_ps(&leaf[1]->position.x);
+    __m128 pz = _mm_loadu_ps(&leaf[2]->position.x);
+    __m128 pw = _mm_loadu_ps(&leaf[3]->position.x);
+    _MM_TRANSPOSE4_PS(px, py, pz, pw);
+    LeafCards4 out{basisAxes(qx, qy, qz, qw), {}};
+    const Vec4x3 &h = out.axes.h, &l = out.axes.l;
+    const __m128 len =
+        _mm_mul_ps(_mm_set_ps(leaf[3]->size, leaf[2]->size, leaf[1]->size, leaf[0]->size), scale4);
+    const __m128 across = _mm_mul_ps(_mm_set1_ps(halfAspect), len);
+    const Vec4x3 hl{_mm_mul_ps(h.x, len), _mm_mul_ps(h.y, len), _mm_mul_ps(h.z, len)};
+    const Vec4x3 ll{_mm_mul_ps(l.x, across), _mm_mul_ps(l.y, across), _mm_mul_ps(l.z, across)};
+    const Vec4x3 plus{_mm_add_ps(px, ll.x), _mm_add_ps(py, ll.y), _mm_add_ps(pz, ll.z)};
+    const Vec4x3 minus{_mm_sub_ps(px, ll.x), _mm_sub_ps(py, ll.y), _mm_sub_ps(pz, ll.z)};
+    out.corner[0] = plus;
+    out.corner[1] = minus;
+    out.corner[2] = {_mm_add_ps(minus.x, hl.x), _mm_add_ps(minus.y, hl.y),
+                     _mm_add_ps(minus.z, hl.z)};
+    out.corner[3] = {_mm_add_ps(plus.x, hl.x), _mm_add_ps(plus.y, hl.y), _mm_add_ps(plus.z, hl.z)};
+    return out;
 }
 
 } // namespace sylva::mesh

@@ -70,31 +70,10 @@ __attribute__((target("avx"))) void prepareAvx(const std::vector<skel::Leaf>& le
         const skel::Leaf* leaf[4];
         for (std::size_t k = 0; k < 4; ++k)
             leaf[k] = &leaves[g[k][std::min(j, g[k].size() - 1)]];
-        __m128 qx = _mm_loadu_ps(&leaf[0]->orientation.x);
-        __m128 qy = _mm_loadu_ps(&leaf[1]->orientation.x);
-        __m128 qz = _mm_loadu_ps(&leaf[2]->orientation.x);
-        __m128 qw = _mm_loadu_ps(&leaf[3]->orientation.x);
-        _MM_TRANSPOSE4_PS(qx, qy, qz, qw);
-        __m128 px = _mm_loadu_ps(&leaf[0]->position.x); // x, y, z and the orientation's x
-        __m128 py = _mm_loadu_ps(&leaf[1]->position.x);
-        __m128 pz = _mm_loadu_ps(&leaf[2]->position.x);
-        __m128 pw = _mm_loadu_ps(&leaf[3]->position.x);
-        _MM_TRANSPOSE4_PS(px, py, pz, pw);
         // leafCorners' arithmetic, lane by lane (as prepareCardFit's).
-        const Axes4 axes = basisAxes(qx, qy, qz, qw);
-        const Vec4x3 &h = axes.h, &l = axes.l, &u = axes.u;
-        const __m128 len = _mm_mul_ps(
-            _mm_set_ps(leaf[3]->size, leaf[2]->size, leaf[1]->size, leaf[0]->size), scale4);
-        const __m128 across = _mm_mul_ps(_mm_set1_ps(halfAspect), len);
-        const Vec4x3 hl{_mm_mul_ps(h.x, len), _mm_mul_ps(h.y, len), _mm_mul_ps(h.z, len)};
-        const Vec4x3 ll{_mm_mul_ps(l.x, across), _mm_mul_ps(l.y, across), _mm_mul_ps(l.z, across)};
-        const Vec4x3 plus{_mm_add_ps(px, ll.x), _mm_add_ps(py, ll.y), _mm_add_ps(pz, ll.z)};
-        const Vec4x3 minus{_mm_sub_ps(px, ll.x), _mm_sub_ps(py, ll.y), _mm_sub_ps(pz, ll.z)};
-        const Vec4x3 corner[4] = {
-            plus,
-            minus,
-            {_mm_add_ps(minus.x, hl.x), _mm_add_ps(minus.y, hl.y), _mm_add_ps(minus.z, hl.z)},
-            {_mm_add_ps(plus.x, hl.x), _mm_add_ps(plus.y, hl.y), _mm_add_ps(plus.z, hl.z)}};
+        const LeafCards4 cards = leafCards4(leaf, halfAspect, scale4);
+        const Vec4x3 &h = cards.axes.h, &l = cards.axes.l, &u = cards.axes.u;
+        const Vec4x3* const corner = cards.corner;
         const __m256d on = onAt(j, sizes);
         for (std::size_t c = 0; c < 4; ++c) {
             const std::size_t at = 4 * (4 * j + c);
