@@ -120,16 +120,11 @@ offerChunkAvx(const float* X, const float* Y, const float* Z, float* B, std::int
     return std::max(std::max(m4[0], m4[1]), std::max(m4[2], m4[3]));
 }
 
-/// a + b: the builtin with the current rounding (vaddps, as _mm512_add_ps), which GCC does
-/// not contract with the product feeding it into a fused multiply-add (it does the generic
-/// vector sum _mm512_add_ps is written as, where the target has FMA: AVX-512 does).
-__attribute__((target("avx512f"), always_inline)) inline __m512 add512(__m512 a, __m512 b) {
-    return _mm512_add_round_ps(a, b, _MM_FROUND_CUR_DIRECTION);
-}
+using simd::add; // unfused (util/x86intrinsics)
 
 /// offerChunkAvx with sixteen lanes a register where the processor has AVX-512 (built for it
 /// alone, dispatched at run time; SYLVA_NO_AVX512=1 takes the AVX offers): each lane the same
-/// subtractions, products, sums (add512: none fused), comparison and min, the node taken by
+/// subtractions, products, sums (add: none fused), comparison and min, the node taken by
 /// a masked move. The offers were ~45 % of the oak's colonization; a 16-lane block costs the same
 /// instructions as an 8-lane one.
 __attribute__((target("avx512f"))) float
@@ -154,10 +149,10 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
             const __m512 dx1 = _mm512_sub_ps(_mm512_loadu_ps(X + i + 16), px);
             const __m512 dy1 = _mm512_sub_ps(_mm512_loadu_ps(Y + i + 16), py);
             const __m512 dz1 = _mm512_sub_ps(_mm512_loadu_ps(Z + i + 16), pz);
-            const __m512 d20 = add512(add512(_mm512_mul_ps(dx0, dx0), _mm512_mul_ps(dy0, dy0)),
-                                      _mm512_mul_ps(dz0, dz0));
-            const __m512 d21 = add512(add512(_mm512_mul_ps(dx1, dx1), _mm512_mul_ps(dy1, dy1)),
-                                      _mm512_mul_ps(dz1, dz1));
+            const __m512 d20 =
+                add(add(_mm512_mul_ps(dx0, dx0), _mm512_mul_ps(dy0, dy0)), _mm512_mul_ps(dz0, dz0));
+            const __m512 d21 =
+                add(add(_mm512_mul_ps(dx1, dx1), _mm512_mul_ps(dy1, dy1)), _mm512_mul_ps(dz1, dz1));
             const __mmask16 better0 = _mm512_cmp_ps_mask(d20, b0, _CMP_LT_OQ);
             const __mmask16 better1 = _mm512_cmp_ps_mask(d21, b1, _CMP_LT_OQ);
             b0 = _mm512_min_ps(d20, b0); // d2 < b ? d2 : b
@@ -180,7 +175,7 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
             const __m512 dy = _mm512_sub_ps(_mm512_loadu_ps(Y + i), _mm512_set1_ps(cy[k]));
             const __m512 dz = _mm512_sub_ps(_mm512_loadu_ps(Z + i), _mm512_set1_ps(cz[k]));
             const __m512 d2 =
-                add512(add512(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
+                add(add(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
             const __mmask16 better = _mm512_cmp_ps_mask(d2, b, _CMP_LT_OQ);
             b = _mm512_min_ps(d2, b);
             n = _mm512_mask_mov_ps(n, better, _mm512_set1_ps(cnf[k]));
@@ -205,7 +200,7 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
             const __m512 dy = _mm512_sub_ps(y, _mm512_set1_ps(cy[k]));
             const __m512 dz = _mm512_sub_ps(z, _mm512_set1_ps(cz[k]));
             const __m512 d2 =
-                add512(add512(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
+                add(add(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
             const __mmask16 better = _mm512_cmp_ps_mask(d2, b, _CMP_LT_OQ);
             b = _mm512_min_ps(d2, b);
             n = _mm512_mask_mov_ps(n, better, _mm512_set1_ps(cnf[k]));
@@ -351,7 +346,7 @@ scanNodesAvx512(const float* nx, const float* ny, const float* nz, std::size_t n
         const __m512 dz =
             _mm512_max_ps(_mm512_max_ps(_mm512_sub_ps(vlz, z), _mm512_sub_ps(z, vhz)), zero);
         const __m512 d2 =
-            add512(add512(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
+            add(add(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
         const __mmask16 pass = _mm512_mask_cmp_ps_mask(in, d2, _mm512_set1_ps(max2), _CMP_LT_OQ);
         _mm512_storeu_ps(cx + count, _mm512_maskz_compress_ps(pass, x));
         _mm512_storeu_ps(cy + count, _mm512_maskz_compress_ps(pass, y));

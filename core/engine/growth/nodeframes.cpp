@@ -21,20 +21,9 @@ namespace {
 // Read once (util/x86intrinsics).
 const bool kHasAvx512 = simd::useAvx512();
 
-// Sums and differences by the _round forms with the current rounding: GCC contracts a product
-// into the generic vector sum _mm512_add_ps is written as (a fused multiply-add rounds once);
-// the builtins it does not. Products, divisions and square roots round as the scalar ones.
-#define SYLVA_AVX512 __attribute__((target("avx512f"), always_inline)) inline
-SYLVA_AVX512 __m512 add(__m512 a, __m512 b) {
-    return _mm512_add_round_ps(a, b, _MM_FROUND_CUR_DIRECTION);
-}
-SYLVA_AVX512 __m512 sub(__m512 a, __m512 b) {
-    return _mm512_sub_round_ps(a, b, _MM_FROUND_CUR_DIRECTION);
-}
-SYLVA_AVX512 __m512 mul(__m512 a, __m512 b) {
-    return _mm512_mul_ps(a, b);
-}
-#undef SYLVA_AVX512
+using simd::add; // unfused: glm's bits
+using simd::mul;
+using simd::sub;
 
 /// Sixteen lanes of transportFrame: parents (w, x, y, z) and directions (x, y, z) by component,
 /// the frames written to q (w, x, y, z). Returns the lanes transportFrame must make instead.

@@ -44,17 +44,8 @@ constexpr std::uint64_t kHalfExponentBias = 1534;
 // SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes the SSE2 pairs on a processor with AVX-512.
 const bool kHasAvx512 = simd::useAvx512();
 
-// Products and sums by the _round forms with the current rounding: GCC contracts a product into
-// the generic vector sum _mm512_add_pd is written as (a fused multiply-add rounds once, not
-// twice); the builtins it does not.
-#define SYLVA_AVX512 __attribute__((target("avx512f"), always_inline)) inline
-SYLVA_AVX512 __m512d mul(__m512d a, __m512d b) {
-    return _mm512_mul_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
-}
-SYLVA_AVX512 __m512d add(__m512d a, __m512d b) {
-    return _mm512_add_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
-}
-#undef SYLVA_AVX512
+using simd::add; // unfused: the SSE2 pairs' bits
+using simd::mul;
 
 // Eight lanes an AVX-512 register, R registers side by side (the SSE2 pairs' 48 registers of
 // matrices and vectors spilled to the stack, four pairs an operation; one register's chain of

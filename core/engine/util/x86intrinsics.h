@@ -36,5 +36,27 @@ inline bool useAvx512() {
     return use;
 }
 
+// AVX-512 sums, differences and products by the _round forms with the current rounding: each
+// rounds on its own, as the scalar operation. GCC contracts a product into the generic vector
+// sum _mm512_add_ps / _pd are written as (a fused multiply-add rounds once, where the target has
+// FMA: AVX-512 does); the builtins it does not. For the kernels that must give the scalar bits.
+#define SYLVA_AVX512_UNFUSED __attribute__((target("avx512f"), always_inline)) inline
+SYLVA_AVX512_UNFUSED __m512 add(__m512 a, __m512 b) {
+    return _mm512_add_round_ps(a, b, _MM_FROUND_CUR_DIRECTION);
+}
+SYLVA_AVX512_UNFUSED __m512 sub(__m512 a, __m512 b) {
+    return _mm512_sub_round_ps(a, b, _MM_FROUND_CUR_DIRECTION);
+}
+SYLVA_AVX512_UNFUSED __m512 mul(__m512 a, __m512 b) {
+    return _mm512_mul_round_ps(a, b, _MM_FROUND_CUR_DIRECTION);
+}
+SYLVA_AVX512_UNFUSED __m512d add(__m512d a, __m512d b) {
+    return _mm512_add_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
+}
+SYLVA_AVX512_UNFUSED __m512d mul(__m512d a, __m512d b) {
+    return _mm512_mul_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
+}
+#undef SYLVA_AVX512_UNFUSED
+
 } // namespace sylva::simd
 #endif
