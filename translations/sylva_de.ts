@@ -79,10 +79,6 @@
         <translation>Grammatik bearbeiten</translation>
     </message>
     <message>
-        <source>Change %1</source>
-        <translation>%1 ändern</translation>
-    </message>
-    <message>
         <source>Change project seed</source>
         <translation>Startwert des Projekts ändern</translation>
     </message>
@@ -225,6 +221,10 @@
     <message>
         <source>Clear branch edits</source>
         <translation>Astbearbeitungen löschen</translation>
+    </message>
+    <message>
+        <source>Change %1 (%2)</source>
+        <translation>%1 ändern (%2)</translation>
     </message>
 </context>
 <context>

@@ -79,10 +79,6 @@
         <translation>Modifier la grammaire</translation>
     </message>
     <message>
-        <source>Change %1</source>
-        <translation>Modifier %1</translation>
-    </message>
-    <message>
         <source>Change project seed</source>
         <translation>Modifier la graine du projet</translation>
     </message>
@@ -225,6 +221,10 @@
     <message>
         <source>Clear branch edits</source>
         <translation>Effacer les modifications des branches</translation>
+    </message>
+    <message>
+        <source>Change %1 (%2)</source>
+        <translation>Modifier %1 (%2)</translation>
     </message>
 </context>
 <context>

@@ -372,8 +372,10 @@ void Document::setParam(const std::string& species, const std::string& path, con
     const std::string key = parts.second;
     editGraph(species, QString::fromStdString(node),
               key == "grammar" ? QCoreApplication::translate("Commands", "Edit grammar")
-                               : QCoreApplication::translate("Commands", "Change %1")
-                                     .arg(QString::fromStdString(path)),
+                               // "Change leaf scale (mesh)": the parameter in words, then its node.
+                               : QCoreApplication::translate("Commands", "Change %1 (%2)")
+                                     .arg(QString::fromStdString(graph::paramWords(key)),
+                                          QString::fromStdString(node)),
               commit, [&](Value& g) { setNodeParam(g, species, node, key, value); });
 }
 

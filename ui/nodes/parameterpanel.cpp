@@ -277,7 +277,8 @@ void ParameterPanel::rebuild() {
         connect(reset, &QToolButton::clicked, this, [this, name] { apply(name, Value()); });
         rowLayout->addWidget(reset);
         mResetButtons[spec.name] = reset;
-        QString label = QString::fromStdString(spec.name);
+        // "Leaf scale (m)"; the tooltip names leaf_scale, what Python and files call it.
+        QString label = QString::fromStdString(spec.label());
         if (!spec.unit.empty())
             label += QStringLiteral(" (%1)").arg(QString::fromStdString(spec.unit));
         auto* labelWidget = new QLabel(label, group);

@@ -2,12 +2,14 @@
 
 #include "engine/util/error.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace sylva::graph {
 
@@ -106,6 +108,29 @@ std::string ParamSpec::rangeText() const {
             text += (text.empty() ? "" : " | ") + c;
     }
     if (!unit.empty()) text += (text.empty() ? "" : " ") + unit;
+    return text;
+}
+
+std::string paramWords(std::string_view name) {
+    static constexpr std::pair<std::string_view, std::string_view> kAcronyms[] = {
+        {"lod", "LOD"}, {"fov", "FOV"}, {"id", "ID"}, {"ids", "IDs"}, {"uv", "UV"}, {"co2", "CO2"}};
+    std::string words;
+    std::size_t at = 0;
+    while (at <= name.size()) {
+        const std::size_t end = std::min(name.find('_', at), name.size());
+        std::string_view word = name.substr(at, end - at);
+        for (const auto& [lower, upper] : kAcronyms)
+            if (word == lower) word = upper;
+        if (!word.empty()) words += (words.empty() ? "" : " ") + std::string(word);
+        at = end + 1;
+    }
+    return words;
+}
+
+std::string ParamSpec::label() const {
+    std::string text = paramWords(name);
+    if (!text.empty() && text[0] >= 'a' && text[0] <= 'z')
+        text[0] = static_cast<char>(text[0] - 'a' + 'A');
     return text;
 }
 

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -184,7 +185,14 @@ struct ParamSpec {
 
     /// "[1, 2000000]" or "(0, 100] m": the allowed range as a user reads it.
     std::string rangeText() const;
+    /// "Leaf scale" for leaf_scale, "LOD distance" for lod_distance: the name as a panel shows it
+    /// (Python, files and the command line keep the name itself).
+    std::string label() const;
 };
+
+/// A parameter's name in words, lower case but for acronyms: "leaf scale", "LOD distance",
+/// "node IDs". Undo steps say "Change leaf scale"; ParamSpec::label capitalises the first.
+std::string paramWords(std::string_view name);
 
 /// What flows along an edge of the species graph.
 enum class PortKind {

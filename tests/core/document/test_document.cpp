@@ -235,6 +235,8 @@ TEST_F(DocumentTest, SpeciesEditInlinesTheSpeciesAndKeepsItsFiles) {
     const sylva::Value before = mDoc.param("alder", "mesh.resolution");
     EXPECT_EQ(before.toNumber(), 8.0);
     mDoc.setParam("alder", "mesh.resolution", 5.0);
+    // The undo step names the parameter in words and its node, not the path.
+    EXPECT_EQ(mDoc.undoStack()->undoText().toStdString(), "Change resolution (mesh)");
     const doc::ProjectSpecies& s = mDoc.project().species[0];
     EXPECT_TRUE(s.file.empty());
     ASSERT_TRUE(s.graph.has_value());

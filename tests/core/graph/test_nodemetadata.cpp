@@ -77,6 +77,28 @@ TEST_F(NodeMetadata, EveryBuiltinTypeDescribesEveryParameter) {
     }
 }
 
+// Panels and undo steps show a parameter in words; Python and files keep its name.
+TEST_F(NodeMetadata, ParametersReadAsWords) {
+    EXPECT_EQ(paramWords("leaf_scale"), "leaf scale");
+    EXPECT_EQ(paramWords("lod_leaf_cluster_pixels"), "LOD leaf cluster pixels");
+    EXPECT_EQ(paramWords("node_ids"), "node IDs");
+    EXPECT_EQ(paramWords("w_max"), "w max");
+    EXPECT_EQ(paramWords("seed"), "seed");
+    EXPECT_EQ(paramWords("_odd__name_"), "odd name");
+    EXPECT_EQ(paramWords(""), "");
+    ParamSpec spec;
+    spec.name = "lod_fov";
+    EXPECT_EQ(spec.label(), "LOD FOV");
+    spec.name = "max_bend";
+    EXPECT_EQ(spec.label(), "Max bend");
+    // Every built-in parameter has a label, and no label keeps an underscore.
+    for (const std::string& type : NodeRegistry::instance().names())
+        for (const ParamSpec& p : NodeRegistry::instance().find(type)->params) {
+            EXPECT_FALSE(p.label().empty()) << type << "." << p.name;
+            EXPECT_EQ(p.label().find('_'), std::string::npos) << type << "." << p.name;
+        }
+}
+
 TEST_F(NodeMetadata, PaperSymbolsAreNamed) {
     const NodeRegistry& r = NodeRegistry::instance();
     auto doc = [&](const char* type, const char* param) {
