@@ -218,13 +218,13 @@ __attribute__((target("avx512f"))) inline __m512d bytesAvx512(__m512d q) {
 // they differ, or where a channel is outside [0, 1] or NaN: multipliers takes powf then. glibc's
 // powf was 2 % of the English oak's time, three calls a card.
 __attribute__((target("avx512f"))) bool boundedMultipliersAvx512(const Reference& r,
-                                                                 const float (&rgb)[3][kTintLanes],
+                                                                 const __m256 (&rgb)[3],
                                                                  glm::u8vec4* out, std::size_t n) {
     static_assert(kTintLanes == 8, "a block is a register of doubles");
     const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
     __m512d mlo[3], mhi[3];
     for (int k = 0; k < 3; ++k) {
-        const __m256 x = _mm256_loadu_ps(rgb[k]);
+        const __m256 x = rgb[k];
         const __m512d xd = _mm512_cvtps_pd(x);
         // NaN fails both comparisons.
         if (_mm512_cmp_pd_mask(xd, zero, _CMP_GE_OQ) != 0xff ||
@@ -268,6 +268,76 @@ __attribute__((target("avx512f"))) bool boundedMultipliersAvx512(const Reference
     return true;
 }
 
+// std::clamp(v, lo, hi) lane by lane: (v < lo) ? lo : (hi < v) ? hi : v (a NaN stays).
+__attribute__((target("avx512f"))) inline __m512 clamp512(__m512 v, __m512 lo, __m512 hi) {
+    const __m512 r = _mm512_mask_mov_ps(v, _mm512_cmp_ps_mask(hi, v, _CMP_LT_OQ), hi);
+    return _mm512_mask_mov_ps(r, _mm512_cmp_ps_mask(v, lo, _CMP_LT_OQ), lo);
+}
+__attribute__((target("avx512f"))) inline __m512d clamp512(__m512d v, __m512d lo, __m512d hi) {
+    const __m512d r = _mm512_mask_mov_pd(v, _mm512_cmp_pd_mask(hi, v, _CMP_LT_OQ), hi);
+    return _mm512_mask_mov_pd(r, _mm512_cmp_pd_mask(v, lo, _CMP_LT_OQ), lo);
+}
+
+// Eight doubles as floats in the low half of a register, the high half zeros.
+__attribute__((target("avx512f"))) inline __m512 floats512(__m512d d) {
+    return _mm512_zextps256_ps512(_mm512_cvtpd_ps(d));
+}
+// The lanes of i equal to k.
+__attribute__((target("avx512f"))) inline __mmask16 sector512(__m512i i, int k) {
+    return _mm512_cmpeq_epi32_mask(i, _mm512_set1_epi32(k));
+}
+
+// The whole block on AVX-512: the turns (as the SSE2 block makes them), hsvToRgb eight cards to
+// an instruction (floats in the low half of a register, each lane hsvToRgb's operations in its
+// order, products and sums by simd::mul / sub so that none is fused; the sector's values picked
+// by masks), then boundedMultipliersAvx512 on the turned colours in registers (card by card,
+// hsvToRgb's switch and its results stored and read back as vectors waited on each other).
+// False, nothing written, where a turned hue is not finite or boundedMultipliersAvx512 is false.
+__attribute__((target("avx512f"))) bool multipliersAvx512(const Reference& r, const double* hue,
+                                                          const double* saturation,
+                                                          const double* value, glm::u8vec4* out,
+                                                          std::size_t n) {
+    const __mmask8 lanes = static_cast<__mmask8>((1u << n) - 1); // the lanes past n: zeros
+    const __m512d hu = _mm512_maskz_loadu_pd(lanes, hue),
+                  sa = _mm512_maskz_loadu_pd(lanes, saturation),
+                  va = _mm512_maskz_loadu_pd(lanes, value);
+    const __m512 f0 = _mm512_setzero_ps(), f1 = _mm512_set1_ps(1.0f);
+    // hsv.x + float(hue / 360), clamp(hsv.y * float(1 + saturation), 0, 1),
+    // hsv.z * float(clamp(value, 0, 1)).
+    const __m512 h =
+        simd::add(_mm512_set1_ps(r.hsv.x), floats512(_mm512_div_pd(hu, _mm512_set1_pd(360.0))));
+    const __m512 s = clamp512(
+        simd::mul(_mm512_set1_ps(r.hsv.y), floats512(simd::add(_mm512_set1_pd(1.0), sa))), f0, f1);
+    const __m512 v = simd::mul(_mm512_set1_ps(r.hsv.z),
+                               floats512(clamp512(va, _mm512_setzero_pd(), _mm512_set1_pd(1.0))));
+    if (_mm512_cmp_ps_mask(simd::sub(h, h), f0, _CMP_EQ_OQ) != 0xffff) return false; // inf, NaN
+    // hsvToRgb: floorExact is the floor (the value itself from 2^23 on, -0 kept).
+    constexpr int kFloor = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
+    const __m512 hx =
+        simd::mul(simd::sub(h, _mm512_roundscale_ps(h, kFloor)), _mm512_set1_ps(6.0f));
+    const __m512 fh = _mm512_roundscale_ps(hx, kFloor); // 0 to 6
+    const __m512i i = _mm512_cvttps_epi32(fh);
+    const __m512 f = simd::sub(hx, fh);
+    const __m512 p = simd::mul(v, simd::sub(f1, s));
+    const __m512 q = simd::mul(v, simd::sub(f1, simd::mul(s, f)));
+    const __m512 t = simd::mul(v, simd::sub(f1, simd::mul(s, simd::sub(f1, f))));
+    const __mmask16 s0 = sector512(i, 0) | sector512(i, 6), s1 = sector512(i, 1),
+                    s2 = sector512(i, 2), s3 = sector512(i, 3), s4 = sector512(i, 4);
+    // 0: (v, t, p), 1: (q, v, p), 2: (p, v, t), 3: (p, q, v), 4: (t, p, v), else (v, p, q).
+    __m512 red = _mm512_mask_mov_ps(v, s1, q);
+    red = _mm512_mask_mov_ps(red, s2 | s3, p);
+    red = _mm512_mask_mov_ps(red, s4, t);
+    __m512 green = _mm512_mask_mov_ps(p, s0, t);
+    green = _mm512_mask_mov_ps(green, s1 | s2, v);
+    green = _mm512_mask_mov_ps(green, s3, q);
+    __m512 blue = _mm512_mask_mov_ps(q, s0 | s1, p);
+    blue = _mm512_mask_mov_ps(blue, s2, t);
+    blue = _mm512_mask_mov_ps(blue, s3 | s4, v);
+    const __m256 rgb[3] = {_mm512_castps512_ps256(red), _mm512_castps512_ps256(green),
+                           _mm512_castps512_ps256(blue)};
+    return boundedMultipliersAvx512(r, rgb, out, n);
+}
+
 // SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes powf on any processor.
 const bool kBoundedMultipliers = simd::useAvx512();
 #endif
@@ -275,6 +345,9 @@ const bool kBoundedMultipliers = simd::useAvx512();
 void multipliers(const Reference& r, const double* hue, const double* saturation,
                  const double* value, glm::u8vec4* out, std::size_t n) {
     static_assert(kTintLanes % 4 == 0, "the block is whole registers of floats");
+#if defined(SYLVA_X86_INTRINSICS)
+    if (kBoundedMultipliers && multipliersAvx512(r, hue, saturation, value, out, n)) return;
+#endif
     // The lanes past n take zeros; their results are not stored.
     alignas(16) double hu[kTintLanes] = {}, sa[kTintLanes] = {}, va[kTintLanes] = {};
     for (std::size_t c = 0; c < n; ++c) {
@@ -310,9 +383,6 @@ void multipliers(const Reference& r, const double* hue, const double* saturation
         rgb[1][c] = t.y;
         rgb[2][c] = t.z;
     }
-#if defined(SYLVA_X86_INTRINSICS)
-    if (kBoundedMultipliers && boundedMultipliersAvx512(r, rgb, out, n)) return;
-#endif
     alignas(16) float low[3][kTintLanes], high[3][kTintLanes];
     {
         const __m128 a = _mm_set1_ps(0.055f), b = _mm_set1_ps(1.055f), d = _mm_set1_ps(12.92f);

@@ -393,10 +393,11 @@ TEST(LeafTint, PowfWithinItsBounds) {
     EXPECT_EQ(checked, static_cast<std::size_t>(last - first) + 1);
 }
 
-// The multipliers with AVX-512 (powf bounded, not called, where the bounds' bytes agree) against
-// the plain card-by-card ones, bit for bit, over 200,000 cards of each reference colour (the
-// oak's spread and wider; about a card in a thousand takes powf, its bytes not decided by the
-// bounds).
+// The multipliers with AVX-512 (the turns and hsvToRgb eight cards to an instruction, powf
+// bounded, not called, where the bounds' bytes agree) against the plain card-by-card ones, bit
+// for bit, over 200,000 cards of each reference colour (the oak's spread and wider, every sector,
+// turns of whole sectors; about a block in a hundred takes powf, its bytes not decided by the
+// bounds). Fails with the fourth sector's green taken from p.
 TEST(LeafTint, BoundedMultipliersAreThePlainOnes) {
     Rng rng(31);
     for (const glm::vec3& reference : {kGreen, glm::vec3(0.42f, 0.58f, 0.18f),
@@ -408,6 +409,8 @@ TEST(LeafTint, BoundedMultipliersAreThePlainOnes) {
             hue[i] = wider ? rng.uniform(-120.0, 120.0) : rng.uniform(-20.0, 20.0);
             saturation[i] = wider ? rng.uniform(-1.0, 1.0) : rng.uniform(-0.3, 0.3);
             value[i] = wider ? rng.uniform(0.0, 1.0) : rng.uniform(0.6, 1.0);
+            // Turns of whole sectors (a grey's hue is 0: its turned hue on a sector's edge).
+            if (i % 7 == 3) hue[i] = 60.0 * static_cast<double>(static_cast<int>(i / 7 % 13) - 6);
         }
         std::vector<glm::u8vec4> bounded(count);
         mesh::tintMultipliers(reference, hue, saturation, value, bounded);
