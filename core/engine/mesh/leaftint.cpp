@@ -297,10 +297,20 @@ __attribute__((target("avx512f"))) bool multipliersAvx512(const Reference& r, co
                                                           const double* saturation,
                                                           const double* value, glm::u8vec4* out,
                                                           std::size_t n) {
-    const __mmask8 lanes = static_cast<__mmask8>((1u << n) - 1); // the lanes past n: zeros
-    const __m512d hu = _mm512_maskz_loadu_pd(lanes, hue),
-                  sa = _mm512_maskz_loadu_pd(lanes, saturation),
-                  va = _mm512_maskz_loadu_pd(lanes, value);
+    // A block of fewer cards (the last) copied with zeros past n: no read past the caller's cards.
+    double padded[3][kTintLanes];
+    if (n < kTintLanes) {
+        for (auto& lanes : padded)
+            std::fill_n(lanes, kTintLanes, 0.0);
+        std::copy(hue, hue + n, padded[0]);
+        std::copy(saturation, saturation + n, padded[1]);
+        std::copy(value, value + n, padded[2]);
+        hue = padded[0];
+        saturation = padded[1];
+        value = padded[2];
+    }
+    const __m512d hu = _mm512_loadu_pd(hue), sa = _mm512_loadu_pd(saturation),
+                  va = _mm512_loadu_pd(value);
     const __m512 f0 = _mm512_setzero_ps(), f1 = _mm512_set1_ps(1.0f);
     // hsv.x + float(hue / 360), clamp(hsv.y * float(1 + saturation), 0, 1),
     // hsv.z * float(clamp(value, 0, 1)).
