@@ -152,9 +152,212 @@ __m128 toFloats(__m128d a, __m128d b) {
     return _mm_movelh_ps(_mm_cvtpd_ps(a), _mm_cvtpd_ps(b));
 }
 
+#if defined(SYLVA_X86_INTRINSICS)
+// x^2.4f (the float 2.4f) for doubles x in [2^-4, 1], eight lanes: ln x from x = 2^e m (m in
+// [sqrt(1/2), sqrt(2)]) as 2 atanh((m - 1) / (m + 1)) to its s^13 term, then exp of 2.4f ln x
+// as 2^k exp(f), |f| <= ln(2) / 2, to its f^10 term: within ~1e-12 of x^2.4f (the series'
+// remainders ~5e-13, the roundings ~30 ulps of a double), whatever the roundings or fused
+// products; powfBoundsAvx512 takes it to 2^-21 either side.
+__attribute__((target("avx512f"))) inline __m512d pow24Avx512(__m512d x) {
+    __m512d e = _mm512_getexp_pd(x);
+    __m512d m = _mm512_getmant_pd(x, _MM_MANT_NORM_1_2, _MM_MANT_SIGN_src);
+    const __mmask8 big = _mm512_cmp_pd_mask(m, _mm512_set1_pd(1.4142135623730951), _CMP_GT_OQ);
+    m = _mm512_mask_mul_pd(m, big, m, _mm512_set1_pd(0.5));
+    e = _mm512_mask_add_pd(e, big, e, _mm512_set1_pd(1.0));
+    const __m512d one = _mm512_set1_pd(1.0);
+    const __m512d s = _mm512_div_pd(_mm512_sub_pd(m, one), _mm512_add_pd(m, one));
+    const __m512d s2 = _mm512_mul_pd(s, s);
+    __m512d p = _mm512_set1_pd(1.0 / 13.0);
+    for (const double c : {1.0 / 11.0, 1.0 / 9.0, 1.0 / 7.0, 1.0 / 5.0, 1.0 / 3.0, 1.0})
+        p = _mm512_fmadd_pd(p, s2, _mm512_set1_pd(c));
+    const __m512d ln2 = _mm512_set1_pd(0.6931471805599453);
+    const __m512d lnx =
+        _mm512_fmadd_pd(e, ln2, _mm512_mul_pd(_mm512_add_pd(s, s), p)); // e ln 2 + ln m
+    const __m512d t = _mm512_mul_pd(_mm512_set1_pd(static_cast<double>(2.4f)), lnx);
+    const __m512d k = _mm512_roundscale_pd(_mm512_mul_pd(t, _mm512_set1_pd(1.4426950408889634)),
+                                           _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+    const __m512d f = _mm512_fnmadd_pd(k, ln2, t);
+    __m512d q = _mm512_set1_pd(1.0 / 3628800.0);
+    for (const double c : {1.0 / 362880.0, 1.0 / 40320.0, 1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0,
+                           1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0})
+        q = _mm512_fmadd_pd(q, f, _mm512_set1_pd(c));
+    return _mm512_scalef_pd(q, k);
+}
+
+/// Bounds on glibc's powf(a, 2.4f) for the floats \p a in [2^-4, 1]: pow24Avx512 less and plus
+/// 2^-21 of it. powf is within 0.82 ulp of the power (glibc's own bound: a float's ulp is at most
+/// 2^-23 of it), pow24Avx512 within ~1e-12: the margin is four times what is needed
+/// (LeafTint.PowfWithinItsBounds holds every float a of [2^-4, 1]).
+__attribute__((target("avx512f"))) inline void powfBoundsAvx512(__m512d a, __m512d& lo,
+                                                                __m512d& hi) {
+    const __m512d y = pow24Avx512(a);
+    lo = _mm512_mul_pd(y, _mm512_set1_pd(1.0 - 0x1p-21));
+    hi = _mm512_mul_pd(y, _mm512_set1_pd(1.0 + 0x1p-21));
+}
+
+// toByte of each lane of q (in [0.25, 1]) as a double, as the packed multipliers round it: the
+// truncation of q * 255 plus one where its fraction is a half or more (the product rounded on its
+// own; the truncation of a value under 2^31 is its int's).
+__attribute__((target("avx512f"))) inline __m512d bytesAvx512(__m512d q) {
+    const __m512d x = _mm512_mul_round_pd(q, _mm512_set1_pd(255.0), _MM_FROUND_CUR_DIRECTION);
+    const __m512d i = _mm512_roundscale_pd(x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+    const __m512d fraction = _mm512_sub_round_pd(x, i, _MM_FROUND_CUR_DIRECTION);
+    const __mmask8 up = _mm512_cmp_pd_mask(fraction, _mm512_set1_pd(0.5), _CMP_GE_OQ);
+    return _mm512_mask_add_pd(i, up, i, _mm512_set1_pd(1.0));
+}
+
+// The multipliers' bytes of a block's turned colours \p rgb (rgb[k][c], lanes past n zero)
+// without powf: each channel's srgbToLinear where it takes powf is bounded (powfBoundsAvx512), and
+// every step after it (the ratio to the reference, the scale, the clamped quotient, the rounded
+// byte) is a correctly rounded operation that never decreases as its operand grows (the quotient
+// never increases as the scale grows; the values are all >= 0): the byte made from the lower
+// bounds (the scale from the upper ones) is at most the multiplier's, the byte from the upper
+// bounds at least. Where the two are the same for every channel of every card, they are the
+// multiplier's bytes, written to out (the bounds are ~10^-3 of a byte apart at most: a block in
+// about a hundred has a rounding boundary between them). Returns false, writing nothing, where
+// they differ, or where a channel is outside [0, 1] or NaN: multipliers takes powf then. glibc's
+// powf was 2 % of the English oak's time, three calls a card.
+__attribute__((target("avx512f"))) bool boundedMultipliersAvx512(const Reference& r,
+                                                                 const __m256 (&rgb)[3],
+                                                                 glm::u8vec4* out, std::size_t n) {
+    static_assert(kTintLanes == 8, "a block is a register of doubles");
+    const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0);
+    __m512d mlo[3], mhi[3];
+    for (int k = 0; k < 3; ++k) {
+        const __m256 x = rgb[k];
+        const __m512d xd = _mm512_cvtps_pd(x);
+        // NaN fails both comparisons.
+        if (_mm512_cmp_pd_mask(xd, zero, _CMP_GE_OQ) != 0xff ||
+            _mm512_cmp_pd_mask(xd, one, _CMP_LE_OQ) != 0xff)
+            return false;
+        // srgbToLinear's two branches in floats (a quotient each: no product to fuse).
+        const __m512d low = _mm512_cvtps_pd(_mm256_div_ps(x, _mm256_set1_ps(12.92f)));
+        const __m512d a = _mm512_cvtps_pd(
+            _mm256_div_ps(_mm256_add_ps(x, _mm256_set1_ps(0.055f)), _mm256_set1_ps(1.055f)));
+        const __mmask8 linear =
+            _mm512_cmp_pd_mask(xd, _mm512_set1_pd(static_cast<double>(0.04045f)), _CMP_LE_OQ);
+        __m512d lo, hi;
+        powfBoundsAvx512(a, lo, hi);
+        lo = _mm512_mask_blend_pd(linear, lo, low);
+        hi = _mm512_mask_blend_pd(linear, hi, low);
+        const __m512d ref = _mm512_set1_pd(r.lin[k]);
+        mlo[k] = _mm512_div_pd(lo, ref);
+        mhi[k] = _mm512_div_pd(hi, ref);
+    }
+    __m512d scaleLo = one, scaleHi = one;
+    for (int k = 0; k < 3; ++k)
+        if (r.strong[k]) {
+            scaleLo = _mm512_max_pd(mlo[k], scaleLo);
+            scaleHi = _mm512_max_pd(mhi[k], scaleHi);
+        }
+    const __m512d quarter = _mm512_set1_pd(0.25);
+    alignas(32) std::int32_t bytes[3][kTintLanes];
+    for (int k = 0; k < 3; ++k) {
+        const __m512d qlo =
+            _mm512_min_pd(_mm512_max_pd(_mm512_div_pd(mlo[k], scaleHi), quarter), one);
+        const __m512d qhi =
+            _mm512_min_pd(_mm512_max_pd(_mm512_div_pd(mhi[k], scaleLo), quarter), one);
+        const __m512d b = bytesAvx512(qlo);
+        if (_mm512_cmp_pd_mask(b, bytesAvx512(qhi), _CMP_NEQ_UQ) != 0) return false;
+        _mm256_store_si256(reinterpret_cast<__m256i*>(bytes[k]), _mm512_cvttpd_epi32(b));
+    }
+    for (std::size_t c = 0; c < n; ++c)
+        out[c] = glm::u8vec4(static_cast<std::uint8_t>(bytes[0][c]),
+                             static_cast<std::uint8_t>(bytes[1][c]),
+                             static_cast<std::uint8_t>(bytes[2][c]), 255);
+    return true;
+}
+
+// std::clamp(v, lo, hi) lane by lane: (v < lo) ? lo : (hi < v) ? hi : v (a NaN stays).
+__attribute__((target("avx512f"))) inline __m512 clamp512(__m512 v, __m512 lo, __m512 hi) {
+    const __m512 r = _mm512_mask_mov_ps(v, _mm512_cmp_ps_mask(hi, v, _CMP_LT_OQ), hi);
+    return _mm512_mask_mov_ps(r, _mm512_cmp_ps_mask(v, lo, _CMP_LT_OQ), lo);
+}
+__attribute__((target("avx512f"))) inline __m512d clamp512(__m512d v, __m512d lo, __m512d hi) {
+    const __m512d r = _mm512_mask_mov_pd(v, _mm512_cmp_pd_mask(hi, v, _CMP_LT_OQ), hi);
+    return _mm512_mask_mov_pd(r, _mm512_cmp_pd_mask(v, lo, _CMP_LT_OQ), lo);
+}
+
+// Eight doubles as floats in the low half of a register, the high half zeros.
+__attribute__((target("avx512f"))) inline __m512 floats512(__m512d d) {
+    return _mm512_zextps256_ps512(_mm512_cvtpd_ps(d));
+}
+// The lanes of i equal to k.
+__attribute__((target("avx512f"))) inline __mmask16 sector512(__m512i i, int k) {
+    return _mm512_cmpeq_epi32_mask(i, _mm512_set1_epi32(k));
+}
+
+// The whole block on AVX-512: the turns (as the SSE2 block makes them), hsvToRgb eight cards to
+// an instruction (floats in the low half of a register, each lane hsvToRgb's operations in its
+// order, products and sums by simd::mul / sub so that none is fused; the sector's values picked
+// by masks), then boundedMultipliersAvx512 on the turned colours in registers (card by card,
+// hsvToRgb's switch and its results stored and read back as vectors waited on each other).
+// False, nothing written, where a turned hue is not finite or boundedMultipliersAvx512 is false.
+__attribute__((target("avx512f"))) bool multipliersAvx512(const Reference& r, const double* hue,
+                                                          const double* saturation,
+                                                          const double* value, glm::u8vec4* out,
+                                                          std::size_t n) {
+    // A block of fewer cards (the last) copied with zeros past n: no read past the caller's cards.
+    double padded[3][kTintLanes];
+    if (n < kTintLanes) {
+        for (auto& lanes : padded)
+            std::fill_n(lanes, kTintLanes, 0.0);
+        std::copy(hue, hue + n, padded[0]);
+        std::copy(saturation, saturation + n, padded[1]);
+        std::copy(value, value + n, padded[2]);
+        hue = padded[0];
+        saturation = padded[1];
+        value = padded[2];
+    }
+    const __m512d hu = _mm512_loadu_pd(hue), sa = _mm512_loadu_pd(saturation),
+                  va = _mm512_loadu_pd(value);
+    const __m512 f0 = _mm512_setzero_ps(), f1 = _mm512_set1_ps(1.0f);
+    // hsv.x + float(hue / 360), clamp(hsv.y * float(1 + saturation), 0, 1),
+    // hsv.z * float(clamp(value, 0, 1)).
+    const __m512 h =
+        simd::add(_mm512_set1_ps(r.hsv.x), floats512(_mm512_div_pd(hu, _mm512_set1_pd(360.0))));
+    const __m512 s = clamp512(
+        simd::mul(_mm512_set1_ps(r.hsv.y), floats512(simd::add(_mm512_set1_pd(1.0), sa))), f0, f1);
+    const __m512 v = simd::mul(_mm512_set1_ps(r.hsv.z),
+                               floats512(clamp512(va, _mm512_setzero_pd(), _mm512_set1_pd(1.0))));
+    if (_mm512_cmp_ps_mask(simd::sub(h, h), f0, _CMP_EQ_OQ) != 0xffff) return false; // inf, NaN
+    // hsvToRgb: floorExact is the floor (the value itself from 2^23 on, -0 kept).
+    constexpr int kFloor = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
+    const __m512 hx =
+        simd::mul(simd::sub(h, _mm512_roundscale_ps(h, kFloor)), _mm512_set1_ps(6.0f));
+    const __m512 fh = _mm512_roundscale_ps(hx, kFloor); // 0 to 6
+    const __m512i i = _mm512_cvttps_epi32(fh);
+    const __m512 f = simd::sub(hx, fh);
+    const __m512 p = simd::mul(v, simd::sub(f1, s));
+    const __m512 q = simd::mul(v, simd::sub(f1, simd::mul(s, f)));
+    const __m512 t = simd::mul(v, simd::sub(f1, simd::mul(s, simd::sub(f1, f))));
+    const __mmask16 s0 = sector512(i, 0) | sector512(i, 6), s1 = sector512(i, 1),
+                    s2 = sector512(i, 2), s3 = sector512(i, 3), s4 = sector512(i, 4);
+    // 0: (v, t, p), 1: (q, v, p), 2: (p, v, t), 3: (p, q, v), 4: (t, p, v), else (v, p, q).
+    __m512 red = _mm512_mask_mov_ps(v, s1, q);
+    red = _mm512_mask_mov_ps(red, s2 | s3, p);
+    red = _mm512_mask_mov_ps(red, s4, t);
+    __m512 green = _mm512_mask_mov_ps(p, s0, t);
+    green = _mm512_mask_mov_ps(green, s1 | s2, v);
+    green = _mm512_mask_mov_ps(green, s3, q);
+    __m512 blue = _mm512_mask_mov_ps(q, s0 | s1, p);
+    blue = _mm512_mask_mov_ps(blue, s2, t);
+    blue = _mm512_mask_mov_ps(blue, s3 | s4, v);
+    const __m256 rgb[3] = {_mm512_castps512_ps256(red), _mm512_castps512_ps256(green),
+                           _mm512_castps512_ps256(blue)};
+    return boundedMultipliersAvx512(r, rgb, out, n);
+}
+
+// SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes powf on any processor.
+const bool kBoundedMultipliers = simd::useAvx512();
+#endif
+
 void multipliers(const Reference& r, const double* hue, const double* saturation,
                  const double* value, glm::u8vec4* out, std::size_t n) {
     static_assert(kTintLanes % 4 == 0, "the block is whole registers of floats");
+#if defined(SYLVA_X86_INTRINSICS)
+    if (kBoundedMultipliers && multipliersAvx512(r, hue, saturation, value, out, n)) return;
+#endif
     // The lanes past n take zeros; their results are not stored.
     alignas(16) double hu[kTintLanes] = {}, sa[kTintLanes] = {}, va[kTintLanes] = {};
     for (std::size_t c = 0; c < n; ++c) {
@@ -380,6 +583,35 @@ void tintMultipliers(const glm::vec3& referenceSrgb, std::span<const double> hue
     for (std::size_t first = 0; first < out.size(); first += kTintLanes)
         multipliers(ref, &hue[first], &saturation[first], &value[first], &out[first],
                     std::min(kTintLanes, out.size() - first));
+}
+
+#if defined(SYLVA_X86_INTRINSICS)
+namespace {
+__attribute__((target("avx512f"))) void powfBoundsOf(const float* a, double* lo, double* hi,
+                                                     std::size_t n) {
+    for (std::size_t i = 0; i < n; i += kTintLanes) {
+        const std::size_t lanes = std::min(kTintLanes, n - i);
+        const __mmask8 m = static_cast<__mmask8>((1u << lanes) - 1);
+        float block[kTintLanes] = {};
+        std::copy(a + i, a + i + lanes, block);
+        __m512d l, h;
+        powfBoundsAvx512(_mm512_cvtps_pd(_mm256_loadu_ps(block)), l, h);
+        _mm512_mask_storeu_pd(lo + i, m, l);
+        _mm512_mask_storeu_pd(hi + i, m, h);
+    }
+}
+} // namespace
+#endif
+
+bool tintPowfBounds(std::span<const float> a, std::span<double> lo, std::span<double> hi) {
+#if defined(SYLVA_X86_INTRINSICS)
+    if (!kBoundedMultipliers) return false;
+    powfBoundsOf(a.data(), lo.data(), hi.data(), std::min({a.size(), lo.size(), hi.size()}));
+    return true;
+#else
+    (void)a, (void)lo, (void)hi;
+    return false;
+#endif
 }
 
 void vertexBox(std::span<const glm::vec3> points, glm::vec3& lo, glm::vec3& hi) {

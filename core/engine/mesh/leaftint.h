@@ -64,6 +64,13 @@ void tintMultipliers(const glm::vec3& referenceSrgb, std::span<const double> hue
                      std::span<const double> saturation, std::span<const double> value,
                      std::span<glm::u8vec4> out);
 
+/// The bounds the multipliers take, with AVX-512, on srgbToLinear's powf(a, 2.4f) instead of
+/// calling it (where the bytes made from both bounds agree, they are the bytes powf would give):
+/// for each float of \p a (each in [2^-4, 1]) in \p lo and \p hi. False, nothing written, where
+/// the multipliers call powf (no AVX-512, SYLVA_NO_AVX512 or SYLVA_NO_AVX). For the tests: powf
+/// must lie within them for every such a.
+bool tintPowfBounds(std::span<const float> a, std::span<double> lo, std::span<double> hi);
+
 /// The box of \p points (not empty) in \p lo and \p hi: glm::min and glm::max from the first
 /// point on, four points a step on SSE2 as four chains side by side (one chain of every point,
 /// each step waiting on the one before it, was most of the box's time). The same box as the

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -358,6 +359,71 @@ TEST(LeafTint, PackedMultipliersAreThePlainOnes) {
                 EXPECT_EQ(packed[i], plainMultiplier(reference, hue[i], saturation[i], value[i]))
                     << reference.x << " " << count << " " << i;
         }
+}
+
+// The bounds the AVX-512 multipliers take on powf(a, 2.4f) instead of calling it hold the C
+// library's powf for every float a in [2^-4, 1] (srgbToLinear's powers: a = (c + 0.055) / 1.055
+// for c in (0.04045, 1] is in [0.09, 1]), and are about 2^-20 of it apart (so that the bytes
+// made from them mostly agree). Fails with the upper bound's margin 2^-26 instead of 2^-21.
+TEST(LeafTint, PowfWithinItsBounds) {
+    std::vector<float> a;
+    std::vector<double> lo, hi;
+    const std::uint32_t first = std::bit_cast<std::uint32_t>(0.0625f),
+                        last = std::bit_cast<std::uint32_t>(1.0f);
+    std::size_t outside = 0, wide = 0, checked = 0;
+    for (std::uint32_t b0 = first; b0 <= last; b0 += 1u << 16) {
+        const std::uint32_t b1 = std::min(last + 1, b0 + (1u << 16));
+        a.resize(b1 - b0);
+        for (std::uint32_t b = b0; b < b1; ++b)
+            a[b - b0] = std::bit_cast<float>(b);
+        lo.assign(a.size(), 0.0);
+        hi.assign(a.size(), 0.0);
+        if (!mesh::tintPowfBounds(a, lo, hi)) GTEST_SKIP() << "the multipliers call powf here";
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            const double p = std::pow(a[i], 2.4f); // powf, as srgbToLinear's
+            if (!(lo[i] <= p && p <= hi[i]) && outside++ < 5)
+                ADD_FAILURE() << "powf(" << a[i] << ", 2.4f) = " << p << " outside [" << lo[i]
+                              << ", " << hi[i] << "]";
+            wide += !(hi[i] - lo[i] <= 0x1.01p-20 * p);
+        }
+        checked += a.size();
+    }
+    EXPECT_EQ(outside, 0u);
+    EXPECT_EQ(wide, 0u);
+    EXPECT_EQ(checked, static_cast<std::size_t>(last - first) + 1);
+}
+
+// The multipliers with AVX-512 (the turns and hsvToRgb eight cards to an instruction, powf
+// bounded, not called, where the bounds' bytes agree) against the plain card-by-card ones, bit
+// for bit, over 200,000 cards of each reference colour (the oak's spread and wider, every sector,
+// turns of whole sectors; about a block in a hundred takes powf, its bytes not decided by the
+// bounds). Fails with the fourth sector's green taken from p.
+TEST(LeafTint, BoundedMultipliersAreThePlainOnes) {
+    Rng rng(31);
+    for (const glm::vec3& reference : {kGreen, glm::vec3(0.42f, 0.58f, 0.18f),
+                                       glm::vec3(0.8f, 0.45f, 0.1f), glm::vec3(0.5f, 0.5f, 0.5f)}) {
+        const std::size_t count = 200000;
+        std::vector<double> hue(count), saturation(count), value(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const bool wider = i % 2 == 1;
+            hue[i] = wider ? rng.uniform(-120.0, 120.0) : rng.uniform(-20.0, 20.0);
+            saturation[i] = wider ? rng.uniform(-1.0, 1.0) : rng.uniform(-0.3, 0.3);
+            value[i] = wider ? rng.uniform(0.0, 1.0) : rng.uniform(0.6, 1.0);
+            // Turns of whole sectors (a grey's hue is 0: its turned hue on a sector's edge).
+            if (i % 7 == 3) hue[i] = 60.0 * static_cast<double>(static_cast<int>(i / 7 % 13) - 6);
+        }
+        std::vector<glm::u8vec4> bounded(count);
+        mesh::tintMultipliers(reference, hue, saturation, value, bounded);
+        std::size_t wrong = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::u8vec4 plain = plainMultiplier(reference, hue[i], saturation[i], value[i]);
+            if (bounded[i] != plain && wrong++ < 5)
+                ADD_FAILURE() << reference.x << " card " << i << ": " << int(bounded[i].x) << " "
+                              << int(bounded[i].y) << " " << int(bounded[i].z) << " against "
+                              << int(plain.x) << " " << int(plain.y) << " " << int(plain.z);
+        }
+        EXPECT_EQ(wrong, 0u);
+    }
 }
 
 namespace {
