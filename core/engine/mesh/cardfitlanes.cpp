@@ -19,8 +19,10 @@ namespace sylva::mesh {
 
 namespace {
 
-// SYLVA_NO_AVX=1 takes the one-group-at-a-time fits (their tests run them on one with AVX).
+// SYLVA_NO_AVX=1 takes the one-group-at-a-time fits (their tests run them on one with AVX);
+// SYLVA_NO_AVX512=1 the four-lane ones.
 const bool kHasAvx = simd::useAvx();
+const bool kHasAvx512 = simd::useAvx512();
 
 // AVX has no fused multiply-add: every product and sum below rounds on its own, as the scalar
 // code's. A lane whose group has no leaf at a step adds +0 (its mask's and): a sum that starts
@@ -52,6 +54,7 @@ __attribute__((target("avx"))) void prepareAvx(const std::vector<skel::Leaf>& le
         most = std::max(most, g[k].size());
     }
     lanes.steps = 4 * most;
+    lanes.width = 4;
     lanes.x.resize(4 * lanes.steps);
     lanes.y.resize(4 * lanes.steps);
     lanes.z.resize(4 * lanes.steps);
@@ -189,29 +192,210 @@ __attribute__((target("avx"))) void extentAvx(const CardFitLanes& lanes, const C
             extent[k][e] = v[e][k];
 }
 
+// Eight groups a zmm register of doubles (AVX-512): prepareAvx's arithmetic lane by lane, the
+// float corners and axes of leaves 0-3 and 4-7 by leafCards4 (SSE2, as there), the double sums
+// unfused (simd::add / sub / mul: GCC contracts the generic AVX-512 sums and products into fused
+// multiply-adds). A lane whose group has ended keeps its sums by a masked addition: the same
+// bits as prepareAvx's +0 (a sum from +0 is never -0).
+using simd::add;
+using simd::mul;
+using simd::sub;
+
+__attribute__((target("avx512f"), always_inline)) inline __m512d addOn8(__m512d sum, __mmask8 on,
+                                                                        __m512d v) {
+    return _mm512_mask_add_round_pd(sum, on, sum, v, _MM_FROUND_CUR_DIRECTION);
+}
+// Lanes 0-3 from lo, 4-7 from hi, as doubles.
+__attribute__((target("avx512f"), always_inline)) inline __m512d wide8(__m128 lo, __m128 hi) {
+    return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_cvtps_pd(lo)), _mm256_cvtps_pd(hi), 1);
+}
+__attribute__((target("avx512f"), always_inline)) inline __m512d wide8(const float* p) {
+    return _mm512_cvtps_pd(_mm256_loadu_ps(p));
+}
+
+__attribute__((target("avx512f"))) void prepareAvx512(const std::vector<skel::Leaf>& leaves,
+                                                      const std::span<const std::uint32_t>* groups,
+                                                      std::size_t n, float aspect, float scale,
+                                                      CardFitInput* in, CardFitLanes& lanes) {
+    std::span<const std::uint32_t> g[8];
+    std::size_t most = 0;
+    alignas(64) double size[8];
+    for (std::size_t k = 0; k < 8; ++k) {
+        g[k] = groups[k < n ? k : 0];
+        lanes.sizes[k] = g[k].size();
+        size[k] = static_cast<double>(g[k].size());
+        most = std::max(most, g[k].size());
+    }
+    lanes.steps = 4 * most;
+    lanes.width = 8;
+    lanes.x.resize(8 * lanes.steps);
+    lanes.y.resize(8 * lanes.steps);
+    lanes.z.resize(8 * lanes.steps);
+    const __m512d sizes = _mm512_load_pd(size);
+    const float halfAspect = 0.5f * aspect; // leafCorners' 0.5f * aspect * len
+    const __m128 scale4 = _mm_set1_ps(scale);
+    const __m512d zero = _mm512_setzero_pd();
+    __m512d sx = zero, sy = zero, sz = zero, hx = zero, hy = zero, hz = zero;
+    __m512d ux = zero, uy = zero, uz = zero, lx = zero, ly = zero, lz = zero;
+    float* const X = lanes.x.data();
+    float* const Y = lanes.y.data();
+    float* const Z = lanes.z.data();
+    for (std::size_t j = 0; j < most; ++j) {
+        const skel::Leaf* leaf[8];
+        for (std::size_t k = 0; k < 8; ++k)
+            leaf[k] = &leaves[g[k][std::min(j, g[k].size() - 1)]];
+        const LeafCards4 lo = leafCards4(leaf, halfAspect, scale4);
+        const LeafCards4 hi = leafCards4(leaf + 4, halfAspect, scale4);
+        const __mmask8 on =
+            _mm512_cmp_pd_mask(_mm512_set1_pd(static_cast<double>(j)), sizes, _CMP_LT_OQ);
+        for (std::size_t c = 0; c < 4; ++c) {
+            const std::size_t at = 8 * (4 * j + c);
+            _mm_storeu_ps(X + at, lo.corner[c].x);
+            _mm_storeu_ps(X + at + 4, hi.corner[c].x);
+            _mm_storeu_ps(Y + at, lo.corner[c].y);
+            _mm_storeu_ps(Y + at + 4, hi.corner[c].y);
+            _mm_storeu_ps(Z + at, lo.corner[c].z);
+            _mm_storeu_ps(Z + at + 4, hi.corner[c].z);
+            sx = addOn8(sx, on, wide8(lo.corner[c].x, hi.corner[c].x));
+            sy = addOn8(sy, on, wide8(lo.corner[c].y, hi.corner[c].y));
+            sz = addOn8(sz, on, wide8(lo.corner[c].z, hi.corner[c].z));
+        }
+        hx = addOn8(hx, on, wide8(lo.axes.h.x, hi.axes.h.x));
+        hy = addOn8(hy, on, wide8(lo.axes.h.y, hi.axes.h.y));
+        hz = addOn8(hz, on, wide8(lo.axes.h.z, hi.axes.h.z));
+        ux = addOn8(ux, on, wide8(lo.axes.u.x, hi.axes.u.x));
+        uy = addOn8(uy, on, wide8(lo.axes.u.y, hi.axes.u.y));
+        uz = addOn8(uz, on, wide8(lo.axes.u.z, hi.axes.u.z));
+        lx = addOn8(lx, on, wide8(lo.axes.l.x, hi.axes.l.x));
+        ly = addOn8(ly, on, wide8(lo.axes.l.y, hi.axes.l.y));
+        lz = addOn8(lz, on, wide8(lo.axes.l.z, hi.axes.l.z));
+    }
+    // The mean: the corners' sum over their count (exact: four times the leaves).
+    const __m512d count = mul(sizes, _mm512_set1_pd(4.0));
+    const __m512d mx = _mm512_div_round_pd(sx, count, _MM_FROUND_CUR_DIRECTION);
+    const __m512d my = _mm512_div_round_pd(sy, count, _MM_FROUND_CUR_DIRECTION);
+    const __m512d mz = _mm512_div_round_pd(sz, count, _MM_FROUND_CUR_DIRECTION);
+    // The covariance's six distinct sums, each in corner order from +0.
+    __m512d xx = zero, yy = zero, zz = zero, xy = zero, xz = zero, yz = zero;
+    for (std::size_t s = 0; s < lanes.steps; ++s) {
+        const __mmask8 on =
+            _mm512_cmp_pd_mask(_mm512_set1_pd(static_cast<double>(s / 4)), sizes, _CMP_LT_OQ);
+        const __m512d dx = sub(wide8(X + 8 * s), mx);
+        const __m512d dy = sub(wide8(Y + 8 * s), my);
+        const __m512d dz = sub(wide8(Z + 8 * s), mz);
+        xx = addOn8(xx, on, mul(dx, dx));
+        yy = addOn8(yy, on, mul(dy, dy));
+        zz = addOn8(zz, on, mul(dz, dz));
+        xy = addOn8(xy, on, mul(dx, dy));
+        xz = addOn8(xz, on, mul(dx, dz));
+        yz = addOn8(yz, on, mul(dy, dz));
+    }
+    alignas(64) double v[18][8];
+    const __m512d all[18] = {hx, hy, hz, ux, uy, uz, lx, ly, lz,
+                             mx, my, mz, xx, yy, zz, xy, xz, yz};
+    for (int e = 0; e < 18; ++e)
+        _mm512_store_pd(v[e], all[e]);
+    for (std::size_t k = 0; k < n; ++k) {
+        in[k].heading = glm::dvec3(v[0][k], v[1][k], v[2][k]);
+        in[k].up = glm::dvec3(v[3][k], v[4][k], v[5][k]);
+        in[k].left = glm::dvec3(v[6][k], v[7][k], v[8][k]);
+        in[k].m = glm::dvec3(v[9][k], v[10][k], v[11][k]);
+        in[k].cov = glm::dmat3(v[12][k], v[15][k], v[16][k], v[15][k], v[13][k], v[17][k], v[16][k],
+                               v[17][k], v[14][k]);
+    }
+}
+
+__attribute__((target("avx512f"))) void
+extentAvx512(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3* along,
+             const glm::dvec3* across, std::size_t n, double (*extent)[4]) {
+    // Lanes past n repeat the first group; each vector gathered from its eight lanes' doubles.
+    static_assert(sizeof(CardFitInput) % sizeof(double) == 0 && sizeof(glm::dvec3) == 24);
+    constexpr long long kIn = sizeof(CardFitInput) / sizeof(double);
+    long long inLane[8], vecLane[8];
+    for (std::size_t k = 0; k < 8; ++k) {
+        const auto lane = static_cast<long long>(k < n ? k : 0);
+        inLane[k] = lane * kIn;
+        vecLane[k] = lane * 3;
+    }
+    const __m512i inAt = _mm512_loadu_si512(inLane);
+    const __m512i vecAt = _mm512_loadu_si512(vecLane);
+    const double* const m = &in[0].m.x;
+    const __m512d mx = _mm512_i64gather_pd(inAt, m, 8), my = _mm512_i64gather_pd(inAt, m + 1, 8),
+                  mz = _mm512_i64gather_pd(inAt, m + 2, 8);
+    const double* const a = &along[0].x;
+    const __m512d ax = _mm512_i64gather_pd(vecAt, a, 8), ay = _mm512_i64gather_pd(vecAt, a + 1, 8),
+                  az = _mm512_i64gather_pd(vecAt, a + 2, 8);
+    const double* const c = &across[0].x;
+    const __m512d cx = _mm512_i64gather_pd(vecAt, c, 8), cy = _mm512_i64gather_pd(vecAt, c + 1, 8),
+                  cz = _mm512_i64gather_pd(vecAt, c + 2, 8);
+    __m512d a0 = _mm512_set1_pd(1e300), a1 = _mm512_set1_pd(-1e300);
+    __m512d c0 = a0, c1 = a1;
+    const float* const X = lanes.x.data();
+    const float* const Y = lanes.y.data();
+    const float* const Z = lanes.z.data();
+    for (std::size_t s = 0; s < lanes.steps; ++s) {
+        const __m512d dx = sub(wide8(X + 8 * s), mx);
+        const __m512d dy = sub(wide8(Y + 8 * s), my);
+        const __m512d dz = sub(wide8(Z + 8 * s), mz);
+        // glm::dot: (x + y) + z.
+        const __m512d pa = add(add(mul(dx, ax), mul(dy, ay)), mul(dz, az));
+        const __m512d pc = add(add(mul(dx, cx), mul(dy, cy)), mul(dz, cz));
+        // vminpd / vmaxpd as extentAvx's (a < lo ? a : lo); an ended lane's repeated corners
+        // change nothing.
+        a0 = _mm512_min_pd(pa, a0);
+        a1 = _mm512_max_pd(pa, a1);
+        c0 = _mm512_min_pd(pc, c0);
+        c1 = _mm512_max_pd(pc, c1);
+    }
+    alignas(64) double v[4][8];
+    _mm512_store_pd(v[0], a0);
+    _mm512_store_pd(v[1], a1);
+    _mm512_store_pd(v[2], c0);
+    _mm512_store_pd(v[3], c1);
+    for (std::size_t k = 0; k < n; ++k)
+        for (int e = 0; e < 4; ++e)
+            extent[k][e] = v[e][k];
+}
+
 } // namespace
 
 bool cardFitLanesAvailable() {
     return kHasAvx;
 }
 
+std::size_t cardFitLanesWidth() {
+    return kHasAvx512 ? 8 : kHasAvx ? 4 : 0;
+}
+
 void prepareCardFitLanes(const std::vector<skel::Leaf>& leaves,
                          const std::span<const std::uint32_t>* groups, std::size_t n, float aspect,
                          float scale, CardFitInput* in, CardFitLanes& lanes) {
     if (!kHasAvx) throw std::logic_error("prepareCardFitLanes: no AVX lanes here");
-    prepareAvx(leaves, groups, n, aspect, scale, in, lanes);
+    if (n < 1 || n > cardFitLanesWidth())
+        throw std::logic_error("prepareCardFitLanes: 1 to cardFitLanesWidth() groups");
+    if (kHasAvx512)
+        prepareAvx512(leaves, groups, n, aspect, scale, in, lanes);
+    else
+        prepareAvx(leaves, groups, n, aspect, scale, in, lanes);
 }
 
 void cardExtentLanes(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3* along,
                      const glm::dvec3* across, std::size_t n, double (*extent)[4]) {
     if (!kHasAvx) throw std::logic_error("cardExtentLanes: no AVX lanes here");
-    extentAvx(lanes, in, along, across, n, extent);
+    if (lanes.width == 8)
+        extentAvx512(lanes, in, along, across, n, extent);
+    else
+        extentAvx(lanes, in, along, across, n, extent);
 }
 
 #else
 
 bool cardFitLanesAvailable() {
     return false;
+}
+
+std::size_t cardFitLanesWidth() {
+    return 0;
 }
 
 void prepareCardFitLanes(const std::vector<skel::Leaf>&, const std::span<const std::uint32_t>*,

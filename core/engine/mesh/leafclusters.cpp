@@ -333,9 +333,9 @@ void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint3
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record;
 /// sixteen, two AVX-512 registers, overlap two chains of 24 products, as four CardFitLanes).
-/// With AVX the preparation and the extent take four groups a register (CardFitLanes), the
-/// groups taken by size so that the four lanes of a register have as many leaves (which groups
-/// share a batch changes only the time: each lane's arithmetic is its own group's).
+/// With AVX the preparation and the extent take four groups a register (CardFitLanes; eight
+/// with AVX-512), the groups taken by size so that the lanes of a register have as many leaves
+/// (which groups share a batch changes only the time: each lane's arithmetic is its own group's).
 RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
                                float aspect, float scale, std::vector<CardBounds>* bounds) {
     // Room, not zeros (the oak's ~4,700 cards, 280 KB): a single leaf's card is set to the
@@ -343,6 +343,8 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
     RawVector<FittedCard> cards(groups.size());
     if (bounds) bounds->assign(groups.size(), CardBounds{});
     const bool lanes = cardFitLanesAvailable();
+    // Groups a CardFitLanes: 8 with AVX-512, 4 with AVX.
+    const std::size_t width = cardFitLanesWidth();
     // The groups to fit, in group order, or by size (then group order) for the lanes.
     RawVector<std::uint32_t> order(groups.size());
     std::size_t fits = 0, largest = 0;
@@ -379,9 +381,9 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
         for (std::size_t k = 0; k < n; ++k)
             members[k] = groups[lane[k]];
         if (lanes) {
-            for (std::size_t h = 0; 4 * h < n; ++h)
-                prepareCardFitLanes(leaves, members + 4 * h, std::min<std::size_t>(4, n - 4 * h),
-                                    aspect, scale, in + 4 * h, corners[h]);
+            for (std::size_t h = 0; width * h < n; ++h)
+                prepareCardFitLanes(leaves, members + width * h, std::min(width, n - width * h),
+                                    aspect, scale, in + width * h, corners[h]);
         } else {
             for (std::size_t k = 0; k < n; ++k)
                 prepareCardFit(leaves, members[k], aspect, scale, in[k]);
@@ -405,9 +407,9 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
                 along[k] = axes[k].along;
                 across[k] = axes[k].across;
             }
-            for (std::size_t h = 0; 4 * h < n; ++h)
-                cardExtentLanes(corners[h], in + 4 * h, along + 4 * h, across + 4 * h,
-                                std::min<std::size_t>(4, n - 4 * h), extent + 4 * h);
+            for (std::size_t h = 0; width * h < n; ++h)
+                cardExtentLanes(corners[h], in + width * h, along + width * h, across + width * h,
+                                std::min(width, n - width * h), extent + width * h);
         } else {
             for (std::size_t k = 0; k < n; ++k)
                 cardExtent(in[k], axes[k].along, axes[k].across, extent[k][0], extent[k][1],

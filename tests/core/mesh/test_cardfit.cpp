@@ -180,19 +180,23 @@ TEST(CardFit, AxesOfQuaternionsWithZerosMatchTheStraightforwardOnes) {
         ASSERT_TRUE(sameBits(fastMids[i], plainMids[i])) << i;
 }
 
-// Four groups a register (AVX, a group a lane) are the straightforward preparation and extent
-// bit for bit in every lane: one to four groups, of equal and unequal sizes (a lane whose group
-// has ended adds nothing), every size 1-23 in some lane, the special frames included.
+// Four groups a register (AVX, a group a lane; eight with AVX-512) are the straightforward
+// preparation and extent bit for bit in every lane: one to cardFitLanesWidth() groups, of equal and
+// unequal sizes (a lane whose group has ended adds nothing), every size 1-23 in some lane, the
+// special frames included.
 TEST(CardFit, LanesMatchTheStraightforwardOnes) {
     if (!mesh::cardFitLanesAvailable()) GTEST_SKIP() << "no AVX lanes here";
     Rng rng(21);
     const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
     mesh::CardFitLanes lanes;
-    int checked = 0;
+    const std::size_t width = mesh::cardFitLanesWidth();
+    ASSERT_TRUE(width == 4 || width == 8);
+    std::size_t checked = 0, expected = 0;
     for (int trial = 0; trial < 120; ++trial) {
-        const std::size_t n = 1 + static_cast<std::size_t>(trial % 4);
-        std::vector<std::uint32_t> groups[4];
-        std::span<const std::uint32_t> spans[4];
+        const std::size_t n = 1 + static_cast<std::size_t>(trial) % width;
+        expected += n;
+        std::vector<std::uint32_t> groups[8];
+        std::span<const std::uint32_t> spans[8];
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t size =
                 trial % 3 == 0 ? 1 + static_cast<std::size_t>(trial / 3) % 23 : 1 + rng.below(23);
@@ -203,9 +207,9 @@ TEST(CardFit, LanesMatchTheStraightforwardOnes) {
                 std::iota(groups[k].begin(), groups[k].end(), 0u); // the special frames
             spans[k] = groups[k];
         }
-        mesh::CardFitInput fast[4], plain[4];
+        mesh::CardFitInput fast[8], plain[8];
         mesh::prepareCardFitLanes(leaves, spans, n, 0.45f, 1.7f, fast, lanes);
-        glm::dvec3 along[4], across[4];
+        glm::dvec3 along[8], across[8];
         for (std::size_t k = 0; k < n; ++k) {
             mesh::prepareCardFitPlain(leaves, spans[k], 0.45f, 1.7f, plain[k]);
             EXPECT_TRUE(sameBits(fast[k].heading, plain[k].heading)) << trial << " " << k;
@@ -217,7 +221,7 @@ TEST(CardFit, LanesMatchTheStraightforwardOnes) {
                 glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
             across[k] = glm::normalize(glm::cross(along[k], glm::dvec3(0.2, 1, 0.3)));
         }
-        double extent[4][4];
+        double extent[8][4];
         mesh::cardExtentLanes(lanes, plain, along, across, n, extent);
         for (std::size_t k = 0; k < n; ++k) {
             double p[4];
@@ -227,5 +231,5 @@ TEST(CardFit, LanesMatchTheStraightforwardOnes) {
             ++checked;
         }
     }
-    EXPECT_EQ(checked, 300);
+    EXPECT_EQ(checked, expected);
 }
