@@ -193,7 +193,7 @@ __attribute__((target("avx"))) void extentAvx(const CardFitLanes& lanes, const C
 }
 
 // Eight groups a zmm register of doubles (AVX-512): prepareAvx's arithmetic lane by lane, the
-// float corners and axes of leaves 0-3 and 4-7 by leafCards4 (SSE2, as there), the double sums
+// float corners and axes eight leaves a ymm register (leafCards8: leafCards4's), the double sums
 // unfused (simd::add / sub / mul: GCC contracts the generic AVX-512 sums and products into fused
 // multiply-adds). A lane whose group has ended keeps its sums by a masked addition: the same
 // bits as prepareAvx's +0 (a sum from +0 is never -0).
@@ -205,12 +205,86 @@ __attribute__((target("avx512f"), always_inline)) inline __m512d addOn8(__m512d 
                                                                         __m512d v) {
     return _mm512_mask_add_round_pd(sum, on, sum, v, _MM_FROUND_CUR_DIRECTION);
 }
-// Lanes 0-3 from lo, 4-7 from hi, as doubles.
-__attribute__((target("avx512f"), always_inline)) inline __m512d wide8(__m128 lo, __m128 hi) {
-    return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_cvtps_pd(lo)), _mm256_cvtps_pd(hi), 1);
-}
 __attribute__((target("avx512f"), always_inline)) inline __m512d wide8(const float* p) {
     return _mm512_cvtps_pd(_mm256_loadu_ps(p));
+}
+
+// Eight lanes' x, y and z (lanes 0-3 the low half).
+struct Vec8x3 {
+    __m256 x, y, z;
+};
+struct LeafCards8 {
+    Vec8x3 h, l, u;
+    Vec8x3 corner[4];
+};
+// leafCards4 of leaves 0-3 and 4-7 in one ymm register a coordinate: the same float operations
+// lane by lane (basisAxes', then the corners'), on AVX (no fused multiply-add: AVX-512F alone
+// does not contract ymm products and sums, objdump: no vfmadd in prepareAvx512).
+__attribute__((target("avx512f"), always_inline)) inline void
+transpose8(const float* const p[8], __m256& x, __m256& y, __m256& z, __m256& w) {
+    __m256 r[4];
+    for (int k = 0; k < 4; ++k)
+        r[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p[k])),
+                                    _mm_loadu_ps(p[k + 4]), 1);
+    const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpacklo_ps(r[2], r[3]);
+    const __m256 t2 = _mm256_unpackhi_ps(r[0], r[1]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+    x = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(1, 0, 1, 0));
+    y = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(3, 2, 3, 2));
+    z = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(1, 0, 1, 0));
+    w = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+// v + sum * 2 (basisAxes' axis).
+__attribute__((target("avx512f"), always_inline)) inline __m256 axis8(__m256 two, __m256 v,
+                                                                      __m256 sum) {
+    return _mm256_add_ps(v, _mm256_mul_ps(sum, two));
+}
+__attribute__((target("avx512f"), always_inline)) inline LeafCards8
+leafCards8(const skel::Leaf* const leaf[8], float halfAspect, float scale) {
+    const float* q[8];
+    const float* p[8];
+    for (int k = 0; k < 8; ++k) {
+        q[k] = &leaf[k]->orientation.x;
+        p[k] = &leaf[k]->position.x; // x, y, z and the orientation's x
+    }
+    __m256 qx, qy, qz, qw, px, py, pz, pw;
+    transpose8(q, qx, qy, qz, qw);
+    transpose8(p, px, py, pz, pw);
+    const __m256 sign = _mm256_set1_ps(-0.0f), two = _mm256_set1_ps(2.0f);
+    const __m256 xx = _mm256_mul_ps(qx, qx), yy = _mm256_mul_ps(qy, qy), zz = _mm256_mul_ps(qz, qz);
+    const __m256 xy = _mm256_mul_ps(qy, qx), xz = _mm256_mul_ps(qx, qz), yz = _mm256_mul_ps(qz, qy);
+    const __m256 xw = _mm256_mul_ps(qx, qw), yw = _mm256_mul_ps(qy, qw), zw = _mm256_mul_ps(qz, qw);
+    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f),
+                 minusOne = _mm256_set1_ps(-1.0f);
+    LeafCards8 out;
+    out.h = {axis8(two, zero, _mm256_sub_ps(xy, zw)),
+             axis8(two, one, _mm256_sub_ps(_mm256_xor_ps(zz, sign), xx)),
+             axis8(two, zero, _mm256_add_ps(xw, yz))};
+    out.l = {axis8(two, minusOne, _mm256_add_ps(yy, zz)),
+             axis8(two, zero, _mm256_sub_ps(_mm256_xor_ps(zw, sign), xy)),
+             axis8(two, zero, _mm256_sub_ps(yw, xz))};
+    out.u = {axis8(two, zero, _mm256_add_ps(yw, xz)), axis8(two, zero, _mm256_sub_ps(yz, xw)),
+             axis8(two, one, _mm256_sub_ps(_mm256_xor_ps(xx, sign), yy))};
+    const Vec8x3 &h = out.h, &l = out.l;
+    const __m256 len =
+        _mm256_mul_ps(_mm256_set_ps(leaf[7]->size, leaf[6]->size, leaf[5]->size, leaf[4]->size,
+                                    leaf[3]->size, leaf[2]->size, leaf[1]->size, leaf[0]->size),
+                      _mm256_set1_ps(scale));
+    const __m256 across = _mm256_mul_ps(_mm256_set1_ps(halfAspect), len);
+    const Vec8x3 hl{_mm256_mul_ps(h.x, len), _mm256_mul_ps(h.y, len), _mm256_mul_ps(h.z, len)};
+    const Vec8x3 ll{_mm256_mul_ps(l.x, across), _mm256_mul_ps(l.y, across),
+                    _mm256_mul_ps(l.z, across)};
+    const Vec8x3 plus{_mm256_add_ps(px, ll.x), _mm256_add_ps(py, ll.y), _mm256_add_ps(pz, ll.z)};
+    const Vec8x3 minus{_mm256_sub_ps(px, ll.x), _mm256_sub_ps(py, ll.y), _mm256_sub_ps(pz, ll.z)};
+    out.corner[0] = plus;
+    out.corner[1] = minus;
+    out.corner[2] = {_mm256_add_ps(minus.x, hl.x), _mm256_add_ps(minus.y, hl.y),
+                     _mm256_add_ps(minus.z, hl.z)};
+    out.corner[3] = {_mm256_add_ps(plus.x, hl.x), _mm256_add_ps(plus.y, hl.y),
+                     _mm256_add_ps(plus.z, hl.z)};
+    return out;
+}
+__attribute__((target("avx512f"), always_inline)) inline __m512d wide8(__m256 v) {
+    return _mm512_cvtps_pd(v);
 }
 
 __attribute__((target("avx512f"))) void prepareAvx512(const std::vector<skel::Leaf>& leaves,
@@ -233,7 +307,6 @@ __attribute__((target("avx512f"))) void prepareAvx512(const std::vector<skel::Le
     lanes.z.resize(8 * lanes.steps);
     const __m512d sizes = _mm512_load_pd(size);
     const float halfAspect = 0.5f * aspect; // leafCorners' 0.5f * aspect * len
-    const __m128 scale4 = _mm_set1_ps(scale);
     const __m512d zero = _mm512_setzero_pd();
     __m512d sx = zero, sy = zero, sz = zero, hx = zero, hy = zero, hz = zero;
     __m512d ux = zero, uy = zero, uz = zero, lx = zero, ly = zero, lz = zero;
@@ -244,31 +317,28 @@ __attribute__((target("avx512f"))) void prepareAvx512(const std::vector<skel::Le
         const skel::Leaf* leaf[8];
         for (std::size_t k = 0; k < 8; ++k)
             leaf[k] = &leaves[g[k][std::min(j, g[k].size() - 1)]];
-        const LeafCards4 lo = leafCards4(leaf, halfAspect, scale4);
-        const LeafCards4 hi = leafCards4(leaf + 4, halfAspect, scale4);
+        const LeafCards8 cards = leafCards8(leaf, halfAspect, scale);
         const __mmask8 on =
             _mm512_cmp_pd_mask(_mm512_set1_pd(static_cast<double>(j)), sizes, _CMP_LT_OQ);
         for (std::size_t c = 0; c < 4; ++c) {
             const std::size_t at = 8 * (4 * j + c);
-            _mm_storeu_ps(X + at, lo.corner[c].x);
-            _mm_storeu_ps(X + at + 4, hi.corner[c].x);
-            _mm_storeu_ps(Y + at, lo.corner[c].y);
-            _mm_storeu_ps(Y + at + 4, hi.corner[c].y);
-            _mm_storeu_ps(Z + at, lo.corner[c].z);
-            _mm_storeu_ps(Z + at + 4, hi.corner[c].z);
-            sx = addOn8(sx, on, wide8(lo.corner[c].x, hi.corner[c].x));
-            sy = addOn8(sy, on, wide8(lo.corner[c].y, hi.corner[c].y));
-            sz = addOn8(sz, on, wide8(lo.corner[c].z, hi.corner[c].z));
+            const Vec8x3& corner = cards.corner[c];
+            _mm256_storeu_ps(X + at, corner.x);
+            _mm256_storeu_ps(Y + at, corner.y);
+            _mm256_storeu_ps(Z + at, corner.z);
+            sx = addOn8(sx, on, wide8(corner.x));
+            sy = addOn8(sy, on, wide8(corner.y));
+            sz = addOn8(sz, on, wide8(corner.z));
         }
-        hx = addOn8(hx, on, wide8(lo.axes.h.x, hi.axes.h.x));
-        hy = addOn8(hy, on, wide8(lo.axes.h.y, hi.axes.h.y));
-        hz = addOn8(hz, on, wide8(lo.axes.h.z, hi.axes.h.z));
-        ux = addOn8(ux, on, wide8(lo.axes.u.x, hi.axes.u.x));
-        uy = addOn8(uy, on, wide8(lo.axes.u.y, hi.axes.u.y));
-        uz = addOn8(uz, on, wide8(lo.axes.u.z, hi.axes.u.z));
-        lx = addOn8(lx, on, wide8(lo.axes.l.x, hi.axes.l.x));
-        ly = addOn8(ly, on, wide8(lo.axes.l.y, hi.axes.l.y));
-        lz = addOn8(lz, on, wide8(lo.axes.l.z, hi.axes.l.z));
+        hx = addOn8(hx, on, wide8(cards.h.x));
+        hy = addOn8(hy, on, wide8(cards.h.y));
+        hz = addOn8(hz, on, wide8(cards.h.z));
+        ux = addOn8(ux, on, wide8(cards.u.x));
+        uy = addOn8(uy, on, wide8(cards.u.y));
+        uz = addOn8(uz, on, wide8(cards.u.z));
+        lx = addOn8(lx, on, wide8(cards.l.x));
+        ly = addOn8(ly, on, wide8(cards.l.y));
+        lz = addOn8(lz, on, wide8(cards.l.z));
     }
     // The mean: the corners' sum over their count (exact: four times the leaves).
     const __m512d count = mul(sizes, _mm512_set1_pd(4.0));
@@ -291,10 +361,25 @@ __attribute__((target("avx512f"))) void prepareAvx512(const std::vector<skel::Le
         yz = addOn8(yz, on, mul(dy, dz));
     }
     alignas(64) double v[18][8];
-    const __m512d all[18] = {hx, hy, hz, ux, uy, uz, lx, ly, lz,
-                             mx, my, mz, xx, yy, zz, xy, xz, yz};
-    for (int e = 0; e < 18; ++e)
-        _mm512_store_pd(v[e], all[e]);
+    // Stored one by one (an array of the eighteen registers was copied by rep movsq).
+    _mm512_store_pd(v[0], hx);
+    _mm512_store_pd(v[1], hy);
+    _mm512_store_pd(v[2], hz);
+    _mm512_store_pd(v[3], ux);
+    _mm512_store_pd(v[4], uy);
+    _mm512_store_pd(v[5], uz);
+    _mm512_store_pd(v[6], lx);
+    _mm512_store_pd(v[7], ly);
+    _mm512_store_pd(v[8], lz);
+    _mm512_store_pd(v[9], mx);
+    _mm512_store_pd(v[10], my);
+    _mm512_store_pd(v[11], mz);
+    _mm512_store_pd(v[12], xx);
+    _mm512_store_pd(v[13], yy);
+    _mm512_store_pd(v[14], zz);
+    _mm512_store_pd(v[15], xy);
+    _mm512_store_pd(v[16], xz);
+    _mm512_store_pd(v[17], yz);
     for (std::size_t k = 0; k < n; ++k) {
         in[k].heading = glm::dvec3(v[0][k], v[1][k], v[2][k]);
         in[k].up = glm::dvec3(v[3][k], v[4][k], v[5][k]);
