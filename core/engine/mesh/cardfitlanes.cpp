@@ -442,6 +442,146 @@ extentAvx512(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3
             extent[k][e] = v[e][k];
 }
 
+// glm::dot: (x + y) + z, the products unfused.
+struct Vec8d {
+    __m512d x, y, z;
+};
+__attribute__((target("avx512f"), always_inline)) inline __m512d dot8(const Vec8d& a,
+                                                                      const Vec8d& b) {
+    return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
+}
+// glm::cross.
+__attribute__((target("avx512f"), always_inline)) inline Vec8d cross8(const Vec8d& a,
+                                                                      const Vec8d& b) {
+    return {sub(mul(a.y, b.z), mul(b.y, a.z)), sub(mul(a.z, b.x), mul(b.z, a.x)),
+            sub(mul(a.x, b.y), mul(b.x, a.y))};
+}
+__attribute__((target("avx512f"), always_inline)) inline Vec8d scale8(const Vec8d& v, __m512d s) {
+    return {mul(v.x, s), mul(v.y, s), mul(v.z, s)};
+}
+// 1 / x, rounded once (glm's inversesqrt is 1 / sqrt(x); scaledBy's 1.0 / length).
+__attribute__((target("avx512f"), always_inline)) inline __m512d inverse8(__m512d x) {
+    return _mm512_div_round_pd(_mm512_set1_pd(1.0), x, _MM_FROUND_CUR_DIRECTION);
+}
+__attribute__((target("avx512f"), always_inline)) inline __m512d sqrt8(__m512d x) {
+    return _mm512_sqrt_round_pd(x, _MM_FROUND_CUR_DIRECTION);
+}
+// -a where \p m is set (the sign flipped, as the scalar negation).
+__attribute__((target("avx512f"), always_inline)) inline __m512d flipWhere(__mmask8 m, __m512d a) {
+    const __m512i sign = _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ull));
+    return _mm512_castsi512_pd(
+        _mm512_mask_xor_epi64(_mm512_castpd_si512(a), m, _mm512_castpd_si512(a), sign));
+}
+// -v where \p m is set.
+__attribute__((target("avx512f"), always_inline)) inline Vec8d negateWhere(__mmask8 m,
+                                                                           const Vec8d& v) {
+    return {flipWhere(m, v.x), flipWhere(m, v.y), flipWhere(m, v.z)};
+}
+__attribute__((target("avx512f"), always_inline)) inline Vec8d gather8(__m512i at,
+                                                                       const double* p) {
+    return {_mm512_i64gather_pd(at, p, 8), _mm512_i64gather_pd(at, p + 1, 8),
+            _mm512_i64gather_pd(at, p + 2, 8)};
+}
+
+// edge + t x across as floats, into three rows of eight.
+__attribute__((target("avx512f"), always_inline)) inline void
+putCorner(float (*row)[8], const Vec8d& edge, __m512d t, const Vec8d& across) {
+    _mm256_store_ps(row[0], _mm512_cvtpd_ps(add(edge.x, mul(t, across.x))));
+    _mm256_store_ps(row[1], _mm512_cvtpd_ps(add(edge.y, mul(t, across.y))));
+    _mm256_store_ps(row[2], _mm512_cvtpd_ps(add(edge.z, mul(t, across.z))));
+}
+
+// cardAxes, extentAvx512 and cardRect / cardCorners of eight cards a zmm register, each lane the
+// scalar operations in order (unfused): the axes' four normalisations, the extent over the kept
+// corners and the corners as floats. False (nothing written) where a lane's e2 runs along its
+// e1 (the scalar path's anyPerpendicular).
+__attribute__((target("avx512f"))) bool finishAvx512(const CardFitLanes& lanes,
+                                                     const CardFitInput* in,
+                                                     const std::span<const std::uint32_t>* group,
+                                                     const glm::dvec3* e1p, const glm::dvec3* e2p,
+                                                     std::size_t n, glm::vec3* const* out) {
+    static_assert(sizeof(CardFitInput) % sizeof(double) == 0 && sizeof(glm::dvec3) == 24);
+    constexpr long long kIn = sizeof(CardFitInput) / sizeof(double);
+    long long inLane[8], vecLane[8];
+    alignas(64) double size[8];
+    for (std::size_t k = 0; k < 8; ++k) {
+        const std::size_t l = k < n ? k : 0;
+        inLane[k] = static_cast<long long>(l) * kIn;
+        vecLane[k] = static_cast<long long>(l) * 3;
+        size[k] = static_cast<double>(group[l].size());
+    }
+    const __m512i inAt = _mm512_loadu_si512(inLane);
+    const __m512i vecAt = _mm512_loadu_si512(vecLane);
+    const Vec8d e1 = gather8(vecAt, &e1p[0].x);
+    Vec8d e2 = gather8(vecAt, &e2p[0].x);
+    const Vec8d heading = gather8(inAt, &in[0].heading.x);
+    const Vec8d up = gather8(inAt, &in[0].up.x);
+    const Vec8d m = gather8(inAt, &in[0].m.x);
+    const __m512d zero = _mm512_setzero_pd();
+    // e2 less its part along e1, normalised (scaledBy).
+    const __m512d d = dot8(e2, e1);
+    e2 = {sub(e2.x, mul(d, e1.x)), sub(e2.y, mul(d, e1.y)), sub(e2.z, mul(d, e1.z))};
+    const __m512d e2Length = sqrt8(dot8(e2, e2));
+    if (_mm512_cmp_pd_mask(e2Length, _mm512_set1_pd(1e-9), _CMP_LT_OQ) != 0) return false;
+    e2 = scale8(e2, inverse8(e2Length));
+    // n: normalize(cross(e1, e2)), turned toward the leaves' up.
+    Vec8d c = cross8(e1, e2);
+    c = scale8(c, inverse8(sqrt8(dot8(c, c))));
+    c = negateWhere(_mm512_cmp_pd_mask(dot8(c, up), zero, _CMP_LT_OQ), c);
+    // along: the mean heading in the plane where it is long enough, else +-e1.
+    const __m512d h = dot8(heading, c);
+    const Vec8d inPlane = {sub(heading.x, mul(h, c.x)), sub(heading.y, mul(h, c.y)),
+                           sub(heading.z, mul(h, c.z))};
+    const __m512d length = sqrt8(dot8(inPlane, inPlane));
+    const Vec8d scaled = scale8(inPlane, inverse8(length));
+    const Vec8d e1Turned = negateWhere(_mm512_cmp_pd_mask(dot8(e1, heading), zero, _CMP_LT_OQ), e1);
+    const __mmask8 longEnough =
+        _mm512_cmp_pd_mask(length, mul(_mm512_set1_pd(0.2), _mm512_load_pd(size)), _CMP_GT_OQ);
+    const Vec8d along = {_mm512_mask_blend_pd(longEnough, e1Turned.x, scaled.x),
+                         _mm512_mask_blend_pd(longEnough, e1Turned.y, scaled.y),
+                         _mm512_mask_blend_pd(longEnough, e1Turned.z, scaled.z)};
+    Vec8d across = cross8(c, along);
+    across = scale8(across, inverse8(sqrt8(dot8(across, across))));
+    // The extent (extentAvx512's loop).
+    __m512d a0 = _mm512_set1_pd(1e300), a1 = _mm512_set1_pd(-1e300);
+    __m512d c0 = a0, c1 = a1;
+    const float* const X = lanes.x.data();
+    const float* const Y = lanes.y.data();
+    const float* const Z = lanes.z.data();
+    for (std::size_t s = 0; s < lanes.steps; ++s) {
+        const Vec8d delta = {sub(wide8(X + 8 * s), m.x), sub(wide8(Y + 8 * s), m.y),
+                             sub(wide8(Z + 8 * s), m.z)};
+        const __m512d pa = dot8(delta, along);
+        const __m512d pc = dot8(delta, across);
+        a0 = _mm512_min_pd(pa, a0);
+        a1 = _mm512_max_pd(pa, a1);
+        c0 = _mm512_min_pd(pc, c0);
+        c1 = _mm512_max_pd(pc, c1);
+    }
+    // cardRect: shrunk about its middle.
+    const __m512d half = _mm512_set1_pd(0.5), shrink = _mm512_set1_pd(kCardShrink);
+    const __m512d am = mul(half, add(a0, a1)), cm = mul(half, add(c0, c1));
+    const __m512d A0 = add(am, mul(shrink, sub(a0, am))), A1 = add(am, mul(shrink, sub(a1, am)));
+    const __m512d C0 = add(cm, mul(shrink, sub(c0, cm))), C1 = add(cm, mul(shrink, sub(c1, cm)));
+    const Vec8d lo = {add(m.x, mul(A0, along.x)), add(m.y, mul(A0, along.y)),
+                      add(m.z, mul(A0, along.z))};
+    const Vec8d hi = {add(m.x, mul(A1, along.x)), add(m.y, mul(A1, along.y)),
+                      add(m.z, mul(A1, along.z))};
+    // cardCorners: lo + c1, lo + c0, hi + c0, hi + c1 across, then the normal, as floats.
+    alignas(32) float f[15][8];
+    putCorner(f + 0, lo, C1, across);
+    putCorner(f + 3, lo, C0, across);
+    putCorner(f + 6, hi, C0, across);
+    putCorner(f + 9, hi, C1, across);
+    _mm256_store_ps(f[12], _mm512_cvtpd_ps(c.x));
+    _mm256_store_ps(f[13], _mm512_cvtpd_ps(c.y));
+    _mm256_store_ps(f[14], _mm512_cvtpd_ps(c.z));
+    for (std::size_t k = 0; k < n; ++k)
+        for (int v = 0; v < 5; ++v)
+            out[k][v] = glm::vec3(f[3 * v][k], f[3 * v + 1][k], f[3 * v + 2][k]);
+    return true;
+}
+
 } // namespace
 
 bool cardFitLanesAvailable() {
@@ -473,6 +613,14 @@ void cardExtentLanes(const CardFitLanes& lanes, const CardFitInput* in, const gl
         extentAvx(lanes, in, along, across, n, extent);
 }
 
+bool finishCardFitLanes(const CardFitLanes& lanes, const CardFitInput* in,
+                        const std::span<const std::uint32_t>* group, const glm::dvec3* e1,
+                        const glm::dvec3* e2, std::size_t n, glm::vec3* const* out) {
+    if (lanes.width != 8 || !kHasAvx512)
+        throw std::logic_error("finishCardFitLanes: eight AVX-512 lanes only");
+    return finishAvx512(lanes, in, group, e1, e2, n, out);
+}
+
 #else
 
 bool cardFitLanesAvailable() {
@@ -491,6 +639,12 @@ void prepareCardFitLanes(const std::vector<skel::Leaf>&, const std::span<const s
 void cardExtentLanes(const CardFitLanes&, const CardFitInput*, const glm::dvec3*, const glm::dvec3*,
                      std::size_t, double (*)[4]) {
     throw std::logic_error("cardExtentLanes: no AVX lanes on this processor");
+}
+
+bool finishCardFitLanes(const CardFitLanes&, const CardFitInput*,
+                        const std::span<const std::uint32_t>*, const glm::dvec3*, const glm::dvec3*,
+                        std::size_t, glm::vec3* const*) {
+    throw std::logic_error("finishCardFitLanes: no AVX-512 lanes on this processor");
 }
 
 #endif

@@ -47,4 +47,14 @@ void prepareCardFitLanes(const std::vector<skel::Leaf>& leaves,
 void cardExtentLanes(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3* along,
                      const glm::dvec3* across, std::size_t n, double (*extent)[4]);
 
+/// cardAxes, cardExtentLanes, cardRect and cardCorners of the eight lanes k < n of \p lanes
+/// (prepareCardFitLanes' with AVX-512: lanes.width 8) in one zmm register a coordinate, each
+/// lane bit for bit the scalar functions': out[k][0..3] the corners, out[k][4] the normal.
+/// \p e1, \p e2 the covariances' two largest eigenvectors (e2 not yet made perpendicular).
+/// \return false, nothing written, where a lane's e2 runs along its e1 (cardAxes then takes
+/// anyPerpendicular: the caller takes the scalar functions for those lanes).
+bool finishCardFitLanes(const CardFitLanes& lanes, const CardFitInput* in,
+                        const std::span<const std::uint32_t>* group, const glm::dvec3* e1,
+                        const glm::dvec3* e2, std::size_t n, glm::vec3* const* out);
+
 } // namespace sylva::mesh

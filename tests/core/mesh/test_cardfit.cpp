@@ -233,3 +233,80 @@ TEST(CardFit, LanesMatchTheStraightforwardOnes) {
     }
     EXPECT_EQ(checked, expected);
 }
+
+// Eight cards a register (AVX-512): the axes, extent and corners are cardAxes', cardExtentPlain's,
+// cardRect's and cardCorners' bit for bit in every lane, for one to eight cards: the leaves'
+// mean heading long enough in the plane or not (then +-e1), the normal turned toward the leaves'
+// up or not; a lane whose e2 runs along its e1 refuses the register.
+TEST(CardFit, FinishLanesMatchTheStraightforwardOnes) {
+    if (mesh::cardFitLanesWidth() != 8) GTEST_SKIP() << "no AVX-512 lanes here";
+    Rng rng(33);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
+    mesh::CardFitLanes lanes;
+    const auto unit = [&rng] {
+        return glm::normalize(
+            glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+    };
+    std::size_t checked = 0, refused = 0, flipped = 0, shortHeading = 0;
+    for (int trial = 0; trial < 160; ++trial) {
+        const std::size_t n = 1 + static_cast<std::size_t>(trial) % 8;
+        std::vector<std::uint32_t> groups[8];
+        std::span<const std::uint32_t> spans[8];
+        for (std::size_t k = 0; k < n; ++k) {
+            groups[k].resize(2 + rng.below(14));
+            for (std::uint32_t& i : groups[k])
+                i = static_cast<std::uint32_t>(rng.below(leaves.size()));
+            spans[k] = groups[k];
+        }
+        mesh::CardFitInput in[8], plain[8];
+        mesh::prepareCardFitLanes(leaves, spans, n, 0.45f, 1.7f, in, lanes);
+        glm::dvec3 e1[8], e2[8];
+        for (std::size_t k = 0; k < n; ++k) {
+            // The lanes keep the corners, the plain extent reads them from its input.
+            mesh::prepareCardFitPlain(leaves, spans[k], 0.45f, 1.7f, plain[k]);
+            e1[k] = unit();
+            e2[k] = unit();
+            const int kind = static_cast<int>(rng.below(6));
+            if (kind == 0) in[k].heading *= 1e-3; // too short in the plane: +-e1
+            if (kind == 1) in[k].heading = -e1[k] * 1e-4;
+            if (kind == 2) in[k].up = -in[k].up;
+            if (kind == 3 && trial % 10 == 0) e2[k] = e1[k] * 2.0; // along e1: refused
+            plain[k].heading = in[k].heading;
+            plain[k].up = in[k].up;
+        }
+        glm::vec3 fast[8][5];
+        glm::vec3* out[8];
+        for (std::size_t k = 0; k < 8; ++k)
+            out[k] = fast[k];
+        const bool done = mesh::finishCardFitLanes(lanes, in, spans, e1, e2, n, out);
+        glm::dvec3 e2Plain[8];
+        std::copy(e2, e2 + n, e2Plain);
+        mesh::CardAxes axes[8];
+        bool along = false;
+        for (std::size_t k = 0; k < n; ++k)
+            along = along || glm::length(e2[k] - glm::dot(e2[k], e1[k]) * e1[k]) < 1e-9;
+        ASSERT_EQ(done, !along) << trial;
+        if (!done) {
+            ++refused;
+            continue;
+        }
+        mesh::cardAxes(plain, spans, e1, e2Plain, axes, n);
+        for (std::size_t k = 0; k < n; ++k) {
+            double extent[4];
+            mesh::cardExtentPlain(plain[k], axes[k].along, axes[k].across, extent[0], extent[1],
+                                  extent[2], extent[3]);
+            glm::vec3 corners[4], normal;
+            mesh::cardCorners(mesh::cardRect(plain[k], axes[k], extent), axes[k], corners, normal);
+            for (int c = 0; c < 4; ++c)
+                EXPECT_TRUE(sameBits(fast[k][c], corners[c])) << trial << " " << k << " " << c;
+            EXPECT_TRUE(sameBits(fast[k][4], normal)) << trial << " " << k;
+            flipped += glm::dot(glm::cross(e1[k], e2Plain[k]), plain[k].up) < 0.0;
+            shortHeading += axes[k].along == e1[k] || axes[k].along == -e1[k];
+            ++checked;
+        }
+    }
+    EXPECT_GT(refused, 0u);
+    EXPECT_GT(flipped, 20u);
+    EXPECT_GT(shortHeading, 20u);
+    EXPECT_GT(checked, 500u);
+}
