@@ -304,6 +304,15 @@ void cardAxes(const CardFitInput* in, const std::span<const std::uint32_t>* grou
         out[k].across = glm::normalize(glm::cross(out[k].n, out[k].along));
 }
 
+glm::dmat3 secondMatrix(const CardFitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
+    const double l1 = glm::dot(e1, in.cov * e1);
+    const glm::dmat3 rest = in.cov - l1 * glm::outerProduct(e1, e1);
+    const glm::dvec3 s2 = in.left - glm::dot(in.left, e1) * e1;
+    const double length = glm::length(s2);
+    seed2 = length < 1e-9 ? glm::normalize(anyPerpendicular(e1)) : scaledBy(s2, length);
+    return rest;
+}
+
 CardRect cardRect(const CardFitInput& in, const CardAxes& axes, const double (&extent)[4]) {
     CardRect r{};
     const double shrink = kCardShrink;

@@ -81,6 +81,10 @@ struct CardAxes {
 /// A unit vector perpendicular to \p v.
 glm::dvec3 anyPerpendicular(const glm::dvec3& v);
 
+/// The covariance of \p in without its part along its largest eigenvector \p e1, and in \p seed2
+/// the start of the second power iteration: in.left made perpendicular to e1, normalised.
+glm::dmat3 secondMatrix(const CardFitInput& in, const glm::dvec3& e1, glm::dvec3& seed2);
+
 /// The axes of \p n cards from their inputs, their groups (for the leaves' count) and their
 /// covariances' two largest eigenvectors \p e1 and \p e2 (e2 made perpendicular to e1 and
 /// normalised in place), each stage for every card before the next: a card's chain of four

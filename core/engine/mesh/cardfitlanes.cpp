@@ -582,6 +582,57 @@ __attribute__((target("avx512f"))) bool finishAvx512(const CardFitLanes& lanes,
     return true;
 }
 
+// secondMatrix of eight cards a zmm register, each lane the scalar operations in order
+// (unfused): l1 = dot(e1, cov * e1), rest = cov - l1 x outerProduct(e1, e1), the second seed
+// left - dot(left, e1) e1 normalised. False (nothing written) where a lane's seed vanishes (the
+// scalar path's anyPerpendicular).
+__attribute__((target("avx512f"))) bool secondAvx512(const CardFitInput* in, const glm::dvec3* e1p,
+                                                     std::size_t n, glm::dmat3* rest,
+                                                     glm::dvec3* seed2) {
+    static_assert(sizeof(CardFitInput) % sizeof(double) == 0 && sizeof(glm::dvec3) == 24);
+    constexpr long long kIn = sizeof(CardFitInput) / sizeof(double);
+    long long inLane[8], vecLane[8];
+    for (std::size_t k = 0; k < 8; ++k) {
+        const std::size_t l = k < n ? k : 0;
+        inLane[k] = static_cast<long long>(l) * kIn;
+        vecLane[k] = static_cast<long long>(l) * 3;
+    }
+    const __m512i inAt = _mm512_loadu_si512(inLane);
+    const __m512i vecAt = _mm512_loadu_si512(vecLane);
+    const Vec8d e1 = gather8(vecAt, &e1p[0].x);
+    const Vec8d left = gather8(inAt, &in[0].left.x);
+    __m512d cov[3][3];
+    for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row)
+            cov[col][row] = _mm512_i64gather_pd(inAt, &in[0].cov[col][row], 8);
+    // The seed first: a lane whose seed vanishes refuses the register before anything is written.
+    const __m512d along = dot8(left, e1);
+    const Vec8d s2 = {sub(left.x, mul(along, e1.x)), sub(left.y, mul(along, e1.y)),
+                      sub(left.z, mul(along, e1.z))};
+    const __m512d length = sqrt8(dot8(s2, s2));
+    if (_mm512_cmp_pd_mask(length, _mm512_set1_pd(1e-9), _CMP_LT_OQ) != 0) return false;
+    const Vec8d seed = scale8(s2, inverse8(length));
+    // cov * e1: row r is (m[0][r] x + m[1][r] y) + m[2][r] z.
+    const __m512d e[3] = {e1.x, e1.y, e1.z};
+    __m512d ce[3];
+    for (int row = 0; row < 3; ++row)
+        ce[row] = add(add(mul(cov[0][row], e1.x), mul(cov[1][row], e1.y)), mul(cov[2][row], e1.z));
+    const __m512d l1 = add(add(mul(e1.x, ce[0]), mul(e1.y, ce[1])), mul(e1.z, ce[2]));
+    alignas(64) double r[9][8], v[3][8];
+    for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row)
+            _mm512_store_pd(r[3 * col + row], sub(cov[col][row], mul(mul(e[row], e[col]), l1)));
+    _mm512_store_pd(v[0], seed.x);
+    _mm512_store_pd(v[1], seed.y);
+    _mm512_store_pd(v[2], seed.z);
+    for (std::size_t k = 0; k < n; ++k) {
+        rest[k] = glm::dmat3(r[0][k], r[1][k], r[2][k], r[3][k], r[4][k], r[5][k], r[6][k], r[7][k],
+                             r[8][k]);
+        seed2[k] = glm::dvec3(v[0][k], v[1][k], v[2][k]);
+    }
+    return true;
+}
+
 } // namespace
 
 bool cardFitLanesAvailable() {
@@ -621,6 +672,13 @@ bool finishCardFitLanes(const CardFitLanes& lanes, const CardFitInput* in,
     return finishAvx512(lanes, in, group, e1, e2, n, out);
 }
 
+bool secondMatrixLanes(const CardFitInput* in, const glm::dvec3* e1, std::size_t n,
+                       glm::dmat3* rest, glm::dvec3* seed2) {
+    if (!kHasAvx512 || n < 1 || n > 8)
+        throw std::logic_error("secondMatrixLanes: one to eight AVX-512 lanes only");
+    return secondAvx512(in, e1, n, rest, seed2);
+}
+
 #else
 
 bool cardFitLanesAvailable() {
@@ -645,6 +703,11 @@ bool finishCardFitLanes(const CardFitLanes&, const CardFitInput*,
                         const std::span<const std::uint32_t>*, const glm::dvec3*, const glm::dvec3*,
                         std::size_t, glm::vec3* const*) {
     throw std::logic_error("finishCardFitLanes: no AVX-512 lanes on this processor");
+}
+
+bool secondMatrixLanes(const CardFitInput*, const glm::dvec3*, std::size_t, glm::dmat3*,
+                       glm::dvec3*) {
+    throw std::logic_error("secondMatrixLanes: no AVX-512 lanes on this processor");
 }
 
 #endif

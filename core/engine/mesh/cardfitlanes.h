@@ -57,4 +57,11 @@ bool finishCardFitLanes(const CardFitLanes& lanes, const CardFitInput* in,
                         const std::span<const std::uint32_t>* group, const glm::dvec3* e1,
                         const glm::dvec3* e2, std::size_t n, glm::vec3* const* out);
 
+/// secondMatrix of in[k] and e1[k] for k < n (1 to 8, where cardFitLanesWidth() is 8) in one
+/// zmm register a coordinate, each lane bit for bit the scalar function's rest[k] and seed2[k].
+/// \return false, nothing written, where a lane's seed vanishes (secondMatrix then takes
+/// anyPerpendicular: the caller takes the scalar function for those lanes).
+bool secondMatrixLanes(const CardFitInput* in, const glm::dvec3* e1, std::size_t n,
+                       glm::dmat3* rest, glm::dvec3* seed2);
+
 } // namespace sylva::mesh

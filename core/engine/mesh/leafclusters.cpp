@@ -238,16 +238,6 @@ glm::dvec3 firstSeed(const CardFitInput& in) {
     return seed1 + glm::dvec3(1e-3, 2e-3, 3e-3);
 }
 
-// The covariance without e1's part, and the start of the second power iteration.
-glm::dmat3 secondMatrix(const CardFitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
-    const double l1 = glm::dot(e1, in.cov * e1);
-    const glm::dmat3 rest = in.cov - l1 * glm::outerProduct(e1, e1);
-    const glm::dvec3 s2 = in.left - glm::dot(in.left, e1) * e1;
-    const double length = glm::length(s2);
-    seed2 = length < 1e-9 ? glm::normalize(anyPerpendicular(e1)) : scaledBy(s2, length);
-    return rest;
-}
-
 // \p extent: cardExtent's a0, a1, c0 and c1.
 void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                float aspect, float scale, const CardFitInput& in, const CardAxes& axes,
@@ -293,6 +283,7 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
     // The axes, extent and corners eight cards a register too (finishCardFitLanes: the bounds of
     // an obstacle check are made by the scalar finishFit).
     const bool finishLanes = width == 8 && !bounds;
+    const bool secondLanes = width == 8;
     // The groups to fit, in group order, or by size (then group order) for the lanes.
     RawVector<std::uint32_t> order(groups.size());
     std::size_t fits = 0, largest = 0;
@@ -343,8 +334,16 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
             e1[k] = firstSeed(in[k]);
         }
         largestEigenvectors(c, e1, n);
-        for (std::size_t k = 0; k < n; ++k)
-            c[k] = secondMatrix(in[k], e1[k], e2[k]);
+        // Eight cards a register with AVX-512 (a register whose seed vanishes in a lane: the
+        // scalar secondMatrix).
+        for (std::size_t first = 0; first < n; first += 8) {
+            const std::size_t count = std::min<std::size_t>(8, n - first);
+            if (secondLanes &&
+                secondMatrixLanes(in + first, e1 + first, count, c + first, e2 + first))
+                continue;
+            for (std::size_t k = first; k < first + count; ++k)
+                c[k] = secondMatrix(in[k], e1[k], e2[k]);
+        }
         largestEigenvectors(c, e2, n);
         // The axes, extent and corners of groups [first, first + count) (whole CardFitLanes
         // where there are lanes), one stage after the other.

@@ -310,3 +310,55 @@ TEST(CardFit, FinishLanesMatchTheStraightforwardOnes) {
     EXPECT_GT(shortHeading, 20u);
     EXPECT_GT(checked, 500u);
 }
+
+// The second power iteration's matrix and start eight cards a register (AVX-512) are
+// secondMatrix's bit for bit in every lane, for one to eight cards; a lane whose seed vanishes
+// (its leaves' left sum along e1) refuses the register.
+TEST(CardFit, SecondMatrixLanesMatchTheScalarOne) {
+    if (mesh::cardFitLanesWidth() != 8) GTEST_SKIP() << "no AVX-512 lanes here";
+    Rng rng(45);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
+    mesh::CardFitLanes lanes;
+    std::size_t checked = 0, refused = 0;
+    for (int trial = 0; trial < 160; ++trial) {
+        const std::size_t n = 1 + static_cast<std::size_t>(trial) % 8;
+        std::vector<std::uint32_t> groups[8];
+        std::span<const std::uint32_t> spans[8];
+        for (std::size_t k = 0; k < n; ++k) {
+            groups[k].resize(2 + rng.below(14));
+            for (std::uint32_t& i : groups[k])
+                i = static_cast<std::uint32_t>(rng.below(leaves.size()));
+            spans[k] = groups[k];
+        }
+        mesh::CardFitInput in[8];
+        mesh::prepareCardFitLanes(leaves, spans, n, 0.45f, 1.7f, in, lanes);
+        glm::dvec3 e1[8];
+        bool vanishes = false;
+        for (std::size_t k = 0; k < n; ++k) {
+            e1[k] = glm::normalize(
+                glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            if (trial % 12 == 5 && k == n - 1) in[k].left = -3.0 * e1[k]; // the seed vanishes
+            glm::dvec3 seed;
+            (void)mesh::secondMatrix(in[k], e1[k], seed);
+            const glm::dvec3 s2 = in[k].left - glm::dot(in[k].left, e1[k]) * e1[k];
+            vanishes = vanishes || glm::length(s2) < 1e-9;
+        }
+        glm::dmat3 rest[8];
+        glm::dvec3 seed2[8];
+        const bool done = mesh::secondMatrixLanes(in, e1, n, rest, seed2);
+        ASSERT_EQ(done, !vanishes) << trial;
+        if (!done) {
+            ++refused;
+            continue;
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            glm::dvec3 seed;
+            const glm::dmat3 plain = mesh::secondMatrix(in[k], e1[k], seed);
+            EXPECT_TRUE(sameBits(rest[k], plain)) << trial << " " << k;
+            EXPECT_TRUE(sameBits(seed2[k], seed)) << trial << " " << k;
+            ++checked;
+        }
+    }
+    EXPECT_GT(refused, 0u);
+    EXPECT_GT(checked, 500u);
+}
