@@ -2,6 +2,7 @@
 #include "engine/mesh/cardaxes4.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #if defined(__SSE2__)
@@ -264,5 +265,75 @@ void cardExtent(const CardFitInput& in, const glm::dvec3& along, const glm::dvec
 }
 
 #endif
+
+glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
+    const glm::dvec3 a = std::abs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    return glm::normalize(glm::cross(v, a));
+}
+
+namespace {
+// glm::normalize(v) given glm::length(v): v * (1 / sqrt(dot(v, v))), glm's own arithmetic, the
+// square root taken once where a length test comes first (the same doubles as glm::normalize).
+glm::dvec3 scaledBy(const glm::dvec3& v, double length) {
+    return v * (1.0 / length);
+}
+} // namespace
+
+void cardAxes(const CardFitInput* in, const std::span<const std::uint32_t>* group,
+              const glm::dvec3* e1, glm::dvec3* e2, CardAxes* out, std::size_t n) {
+    for (std::size_t k = 0; k < n; ++k) {
+        e2[k] = e2[k] - glm::dot(e2[k], e1[k]) * e1[k];
+        const double length = glm::length(e2[k]);
+        e2[k] = length < 1e-9 ? glm::normalize(anyPerpendicular(e1[k])) : scaledBy(e2[k], length);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        glm::dvec3 c = glm::normalize(glm::cross(e1[k], e2[k]));
+        if (glm::dot(c, in[k].up) < 0.0) c = -c;
+        out[k].n = c;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        const glm::dvec3& heading = in[k].heading;
+        const glm::dvec3& c = out[k].n;
+        const glm::dvec3 along = heading - glm::dot(heading, c) * c;
+        const double length = glm::length(along);
+        out[k].along = length > 0.2 * static_cast<double>(group[k].size())
+                           ? scaledBy(along, length)
+                           : (glm::dot(e1[k], heading) < 0.0 ? -e1[k] : e1[k]);
+    }
+    for (std::size_t k = 0; k < n; ++k)
+        out[k].across = glm::normalize(glm::cross(out[k].n, out[k].along));
+}
+
+glm::dmat3 secondMatrix(const CardFitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
+    const double l1 = glm::dot(e1, in.cov * e1);
+    const glm::dmat3 rest = in.cov - l1 * glm::outerProduct(e1, e1);
+    const glm::dvec3 s2 = in.left - glm::dot(in.left, e1) * e1;
+    const double length = glm::length(s2);
+    seed2 = length < 1e-9 ? glm::normalize(anyPerpendicular(e1)) : scaledBy(s2, length);
+    return rest;
+}
+
+CardRect cardRect(const CardFitInput& in, const CardAxes& axes, const double (&extent)[4]) {
+    CardRect r{};
+    const double shrink = kCardShrink;
+    const double a0 = extent[0], a1 = extent[1], c0 = extent[2], c1 = extent[3];
+    const double am = 0.5 * (a0 + a1);
+    r.cm = 0.5 * (c0 + c1);
+    r.a0 = am + shrink * (a0 - am);
+    r.a1 = am + shrink * (a1 - am);
+    r.c0 = r.cm + shrink * (c0 - r.cm);
+    r.c1 = r.cm + shrink * (c1 - r.cm);
+    r.lo = in.m + r.a0 * axes.along;
+    r.hi = in.m + r.a1 * axes.along;
+    return r;
+}
+
+void cardCorners(const CardRect& r, const CardAxes& axes, glm::vec3 corners[4], glm::vec3& normal) {
+    corners[0] = glm::vec3(r.lo + r.c1 * axes.across);
+    corners[1] = glm::vec3(r.lo + r.c0 * axes.across);
+    corners[2] = glm::vec3(r.hi + r.c0 * axes.across);
+    corners[3] = glm::vec3(r.hi + r.c1 * axes.across);
+    normal = glm::vec3(axes.n);
+}
 
 } // namespace sylva::mesh

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <span>
 
@@ -209,20 +210,13 @@ private:
     std::vector<std::uint32_t> mLeaves;
 };
 
-glm::dvec3 anyPerpendicular(const glm::dvec3& v) {
-    const glm::dvec3 a = std::abs(v.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    return glm::normalize(glm::cross(v, a));
-}
-
-// Measured on the broadleaf library (test_leafclusters): 0.9 covers what one card a leaf
-// covers within 3% from the side and from the camera.
-constexpr double kCardShrink = 0.9;
-
-// The card of a group of two or more leaves (see appendLeafClusterCards).
+// The card of a group of two or more leaves (see appendLeafClusterCards): corners then normal,
+// five vec3 one after the other (finishCardFitLanes writes them so).
 struct FittedCard {
     glm::vec3 corners[4];
     glm::vec3 normal;
 };
+static_assert(offsetof(FittedCard, normal) == 4 * sizeof(glm::vec3));
 
 // A fitted card as a leaf whose card (size long, aspect x size wide) holds it: what the
 // obstacle check of a forest tests; made only for an accept callback (kept apart: the oak's
@@ -244,85 +238,26 @@ glm::dvec3 firstSeed(const CardFitInput& in) {
     return seed1 + glm::dvec3(1e-3, 2e-3, 3e-3);
 }
 
-// The covariance without e1's part, and the start of the second power iteration.
-glm::dmat3 secondMatrix(const CardFitInput& in, const glm::dvec3& e1, glm::dvec3& seed2) {
-    const double l1 = glm::dot(e1, in.cov * e1);
-    const glm::dmat3 rest = in.cov - l1 * glm::outerProduct(e1, e1);
-    const glm::dvec3 s2 = in.left - glm::dot(in.left, e1) * e1;
-    const double length = glm::length(s2);
-    seed2 = length < 1e-9 ? glm::normalize(anyPerpendicular(e1)) : scaledBy(s2, length);
-    return rest;
-}
-
-// A card's plane and axes: n (toward the leaves' up), along (the stem edge toward where the
-// leaves start: their mean heading in the plane, e1 when they point every way) and across.
-struct CardAxes {
-    glm::dvec3 n, along, across;
-};
-
-// The axes of \p n cards, each stage for every card before the next: a card's chain of four
-// normalisations (a square root and a division each) waited on the one before; cards side by
-// side overlap theirs (perf record of the English oak: finishFit 4.6 %, on those chains). Each
-// card's arithmetic is its own, in its order: the same axes as one card at a time.
-void cardAxes(const CardFitInput* in, const std::span<const std::uint32_t>* group,
-              const glm::dvec3* e1, glm::dvec3* e2, CardAxes* out, std::size_t n) {
-    for (std::size_t k = 0; k < n; ++k) {
-        e2[k] = e2[k] - glm::dot(e2[k], e1[k]) * e1[k];
-        const double length = glm::length(e2[k]);
-        e2[k] = length < 1e-9 ? glm::normalize(anyPerpendicular(e1[k])) : scaledBy(e2[k], length);
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        glm::dvec3 c = glm::normalize(glm::cross(e1[k], e2[k]));
-        if (glm::dot(c, in[k].up) < 0.0) c = -c;
-        out[k].n = c;
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        const glm::dvec3& heading = in[k].heading;
-        const glm::dvec3& c = out[k].n;
-        const glm::dvec3 along = heading - glm::dot(heading, c) * c;
-        const double length = glm::length(along);
-        out[k].along = length > 0.2 * static_cast<double>(group[k].size())
-                           ? scaledBy(along, length)
-                           : (glm::dot(e1[k], heading) < 0.0 ? -e1[k] : e1[k]);
-    }
-    for (std::size_t k = 0; k < n; ++k)
-        out[k].across = glm::normalize(glm::cross(out[k].n, out[k].along));
-}
-
 // \p extent: cardExtent's a0, a1, c0 and c1.
 void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint32_t> group,
                float aspect, float scale, const CardFitInput& in, const CardAxes& axes,
                const double (&extent)[4], FittedCard& f, CardBounds* bounds) {
-    const glm::dvec3& m = in.m;
-    const glm::dvec3 &n = axes.n, &along = axes.along, &across = axes.across;
-    double a0 = extent[0], a1 = extent[1], c0 = extent[2], c1 = extent[3];
-    // The corners' box is larger than the leaves it holds (their outlines are not a
-    // rectangle): shrunk about its middle so the card covers about what they cover.
-    const double shrink = kCardShrink;
-    const double am = 0.5 * (a0 + a1), cm = 0.5 * (c0 + c1);
-    a0 = am + shrink * (a0 - am);
-    a1 = am + shrink * (a1 - am);
-    c0 = cm + shrink * (c0 - cm);
-    c1 = cm + shrink * (c1 - cm);
-    const glm::dvec3 lo = m + a0 * along, hi = m + a1 * along;
-    f.corners[0] = glm::vec3(lo + c1 * across);
-    f.corners[1] = glm::vec3(lo + c0 * across);
-    f.corners[2] = glm::vec3(hi + c0 * across);
-    f.corners[3] = glm::vec3(hi + c1 * across);
-    f.normal = glm::vec3(n);
+    const CardRect r = cardRect(in, axes, extent);
+    cardCorners(r, axes, f.corners, f.normal);
     // The bounds only for the obstacle check (two quat_casts a card whose branches the cards'
     // turning every way mispredicted, for nothing without one).
     if (!bounds) return;
     CardBounds& b = *bounds;
-    const double length = a1 - a0, width = c1 - c0;
-    b.bounds.position = glm::vec3(lo + cm * across);
+    const glm::dvec3 &n = axes.n, &along = axes.along, &across = axes.across;
+    const double length = r.a1 - r.a0, width = r.c1 - r.c0;
+    b.bounds.position = glm::vec3(r.lo + r.cm * across);
     b.bounds.orientation =
         glm::quat_cast(glm::mat3(glm::vec3(-across), glm::vec3(along), glm::vec3(n)));
     b.bounds.size = static_cast<float>(std::max(length, width / aspect) / scale);
     b.bounds.node = leaves[group.front()].node;
     // The crossing card is the card turned a quarter round its centre line: across -> n.
     b.crossBounds = b.bounds;
-    b.crossBounds.position = glm::vec3(lo + cm * across);
+    b.crossBounds.position = glm::vec3(r.lo + r.cm * across);
     b.crossBounds.orientation =
         glm::quat_cast(glm::mat3(glm::vec3(-n), glm::vec3(along), glm::vec3(-across)));
 }
@@ -333,9 +268,9 @@ void finishFit(const std::vector<skel::Leaf>& leaves, std::span<const std::uint3
 /// square roots after another: they were 20 % of the English oak's time; eight in step keep the
 /// divider busy where four waited on it, principal 0.97 -> 0.56 ms a tree in perf record;
 /// sixteen, two AVX-512 registers, overlap two chains of 24 products, as four CardFitLanes).
-/// With AVX the preparation and the extent take four groups a register (CardFitLanes), the
-/// groups taken by size so that the four lanes of a register have as many leaves (which groups
-/// share a batch changes only the time: each lane's arithmetic is its own group's).
+/// With AVX the preparation and the extent take four groups a register (CardFitLanes; eight
+/// with AVX-512), the groups taken by size so that the lanes of a register have as many leaves
+/// (which groups share a batch changes only the time: each lane's arithmetic is its own group's).
 RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const LeafGroups& groups,
                                float aspect, float scale, std::vector<CardBounds>* bounds) {
     // Room, not zeros (the oak's ~4,700 cards, 280 KB): a single leaf's card is set to the
@@ -343,6 +278,12 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
     RawVector<FittedCard> cards(groups.size());
     if (bounds) bounds->assign(groups.size(), CardBounds{});
     const bool lanes = cardFitLanesAvailable();
+    // Groups a CardFitLanes: 8 with AVX-512, 4 with AVX.
+    const std::size_t width = cardFitLanesWidth();
+    // The axes, extent and corners eight cards a register too (finishCardFitLanes: the bounds of
+    // an obstacle check are made by the scalar finishFit).
+    const bool finishLanes = width == 8 && !bounds;
+    const bool secondLanes = width == 8;
     // The groups to fit, in group order, or by size (then group order) for the lanes.
     RawVector<std::uint32_t> order(groups.size());
     std::size_t fits = 0, largest = 0;
@@ -379,9 +320,9 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
         for (std::size_t k = 0; k < n; ++k)
             members[k] = groups[lane[k]];
         if (lanes) {
-            for (std::size_t h = 0; 4 * h < n; ++h)
-                prepareCardFitLanes(leaves, members + 4 * h, std::min<std::size_t>(4, n - 4 * h),
-                                    aspect, scale, in + 4 * h, corners[h]);
+            for (std::size_t h = 0; width * h < n; ++h)
+                prepareCardFitLanes(leaves, members + width * h, std::min(width, n - width * h),
+                                    aspect, scale, in + width * h, corners[h]);
         } else {
             for (std::size_t k = 0; k < n; ++k)
                 prepareCardFit(leaves, members[k], aspect, scale, in[k]);
@@ -393,29 +334,58 @@ RawVector<FittedCard> fitCards(const std::vector<skel::Leaf>& leaves, const Leaf
             e1[k] = firstSeed(in[k]);
         }
         largestEigenvectors(c, e1, n);
-        for (std::size_t k = 0; k < n; ++k)
-            c[k] = secondMatrix(in[k], e1[k], e2[k]);
-        largestEigenvectors(c, e2, n);
-        CardAxes axes[kLanes];
-        cardAxes(in, members, e1, e2, axes, n);
-        double extent[kLanes][4];
-        if (lanes) {
-            glm::dvec3 along[kLanes], across[kLanes];
-            for (std::size_t k = 0; k < n; ++k) {
-                along[k] = axes[k].along;
-                across[k] = axes[k].across;
-            }
-            for (std::size_t h = 0; 4 * h < n; ++h)
-                cardExtentLanes(corners[h], in + 4 * h, along + 4 * h, across + 4 * h,
-                                std::min<std::size_t>(4, n - 4 * h), extent + 4 * h);
-        } else {
-            for (std::size_t k = 0; k < n; ++k)
-                cardExtent(in[k], axes[k].along, axes[k].across, extent[k][0], extent[k][1],
-                           extent[k][2], extent[k][3]);
+        // Eight cards a register with AVX-512 (a register whose seed vanishes in a lane: the
+        // scalar secondMatrix).
+        for (std::size_t first = 0; first < n; first += 8) {
+            const std::size_t count = std::min<std::size_t>(8, n - first);
+            if (secondLanes &&
+                secondMatrixLanes(in + first, e1 + first, count, c + first, e2 + first))
+                continue;
+            for (std::size_t k = first; k < first + count; ++k)
+                c[k] = secondMatrix(in[k], e1[k], e2[k]);
         }
-        for (std::size_t k = 0; k < n; ++k)
-            finishFit(leaves, members[k], aspect, scale, in[k], axes[k], extent[k], cards[lane[k]],
-                      bounds ? &(*bounds)[lane[k]] : nullptr);
+        largestEigenvectors(c, e2, n);
+        // The axes, extent and corners of groups [first, first + count) (whole CardFitLanes
+        // where there are lanes), one stage after the other.
+        const auto finish = [&](std::size_t first, std::size_t count) {
+            CardAxes axes[kLanes];
+            cardAxes(in + first, members + first, e1 + first, e2 + first, axes, count);
+            double extent[kLanes][4];
+            if (lanes) {
+                glm::dvec3 along[kLanes], across[kLanes];
+                for (std::size_t k = 0; k < count; ++k) {
+                    along[k] = axes[k].along;
+                    across[k] = axes[k].across;
+                }
+                for (std::size_t h = 0; width * h < count; ++h)
+                    cardExtentLanes(corners[first / width + h], in + first + width * h,
+                                    along + width * h, across + width * h,
+                                    std::min(width, count - width * h), extent + width * h);
+            } else {
+                for (std::size_t k = 0; k < count; ++k)
+                    cardExtent(in[first + k], axes[k].along, axes[k].across, extent[k][0],
+                               extent[k][1], extent[k][2], extent[k][3]);
+            }
+            for (std::size_t k = 0; k < count; ++k)
+                finishFit(leaves, members[first + k], aspect, scale, in[first + k], axes[k],
+                          extent[k], cards[lane[first + k]],
+                          bounds ? &(*bounds)[lane[first + k]] : nullptr);
+        };
+        if (!finishLanes) {
+            finish(0, n);
+            continue;
+        }
+        // Eight cards a zmm register (AVX-512, no obstacle bounds wanted): the same axes, extent
+        // and corners; a register with a lane whose e2 runs along its e1 takes the scalar path.
+        for (std::size_t h = 0; width * h < n; ++h) {
+            const std::size_t first = width * h, count = std::min(width, n - first);
+            glm::vec3* out[8];
+            for (std::size_t k = 0; k < count; ++k)
+                out[k] = cards[lane[first + k]].corners;
+            if (!finishCardFitLanes(corners[h], in + first, members + first, e1 + first, e2 + first,
+                                    count, out))
+                finish(first, count);
+        }
     }
     return cards;
 }

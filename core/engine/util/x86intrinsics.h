@@ -53,6 +53,9 @@ SYLVA_AVX512_UNFUSED __m512 mul(__m512 a, __m512 b) {
 SYLVA_AVX512_UNFUSED __m512d add(__m512d a, __m512d b) {
     return _mm512_add_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
 }
+SYLVA_AVX512_UNFUSED __m512d sub(__m512d a, __m512d b) {
+    return _mm512_sub_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
+}
 SYLVA_AVX512_UNFUSED __m512d mul(__m512d a, __m512d b) {
     return _mm512_mul_round_pd(a, b, _MM_FROUND_CUR_DIRECTION);
 }

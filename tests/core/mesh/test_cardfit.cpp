@@ -180,19 +180,23 @@ TEST(CardFit, AxesOfQuaternionsWithZerosMatchTheStraightforwardOnes) {
         ASSERT_TRUE(sameBits(fastMids[i], plainMids[i])) << i;
 }
 
-// Four groups a register (AVX, a group a lane) are the straightforward preparation and extent
-// bit for bit in every lane: one to four groups, of equal and unequal sizes (a lane whose group
-// has ended adds nothing), every size 1-23 in some lane, the special frames included.
+// Four groups a register (AVX, a group a lane; eight with AVX-512) are the straightforward
+// preparation and extent bit for bit in every lane: one to cardFitLanesWidth() groups, of equal and
+// unequal sizes (a lane whose group has ended adds nothing), every size 1-23 in some lane, the
+// special frames included.
 TEST(CardFit, LanesMatchTheStraightforwardOnes) {
     if (!mesh::cardFitLanesAvailable()) GTEST_SKIP() << "no AVX lanes here";
     Rng rng(21);
     const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
     mesh::CardFitLanes lanes;
-    int checked = 0;
+    const std::size_t width = mesh::cardFitLanesWidth();
+    ASSERT_TRUE(width == 4 || width == 8);
+    std::size_t checked = 0, expected = 0;
     for (int trial = 0; trial < 120; ++trial) {
-        const std::size_t n = 1 + static_cast<std::size_t>(trial % 4);
-        std::vector<std::uint32_t> groups[4];
-        std::span<const std::uint32_t> spans[4];
+        const std::size_t n = 1 + static_cast<std::size_t>(trial) % width;
+        expected += n;
+        std::vector<std::uint32_t> groups[8];
+        std::span<const std::uint32_t> spans[8];
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t size =
                 trial % 3 == 0 ? 1 + static_cast<std::size_t>(trial / 3) % 23 : 1 + rng.below(23);
@@ -203,9 +207,9 @@ TEST(CardFit, LanesMatchTheStraightforwardOnes) {
                 std::iota(groups[k].begin(), groups[k].end(), 0u); // the special frames
             spans[k] = groups[k];
         }
-        mesh::CardFitInput fast[4], plain[4];
+        mesh::CardFitInput fast[8], plain[8];
         mesh::prepareCardFitLanes(leaves, spans, n, 0.45f, 1.7f, fast, lanes);
-        glm::dvec3 along[4], across[4];
+        glm::dvec3 along[8], across[8];
         for (std::size_t k = 0; k < n; ++k) {
             mesh::prepareCardFitPlain(leaves, spans[k], 0.45f, 1.7f, plain[k]);
             EXPECT_TRUE(sameBits(fast[k].heading, plain[k].heading)) << trial << " " << k;
@@ -217,7 +221,7 @@ TEST(CardFit, LanesMatchTheStraightforwardOnes) {
                 glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
             across[k] = glm::normalize(glm::cross(along[k], glm::dvec3(0.2, 1, 0.3)));
         }
-        double extent[4][4];
+        double extent[8][4];
         mesh::cardExtentLanes(lanes, plain, along, across, n, extent);
         for (std::size_t k = 0; k < n; ++k) {
             double p[4];
@@ -227,5 +231,134 @@ TEST(CardFit, LanesMatchTheStraightforwardOnes) {
             ++checked;
         }
     }
-    EXPECT_EQ(checked, 300);
+    EXPECT_EQ(checked, expected);
+}
+
+// Eight cards a register (AVX-512): the axes, extent and corners are cardAxes', cardExtentPlain's,
+// cardRect's and cardCorners' bit for bit in every lane, for one to eight cards: the leaves'
+// mean heading long enough in the plane or not (then +-e1), the normal turned toward the leaves'
+// up or not; a lane whose e2 runs along its e1 refuses the register.
+TEST(CardFit, FinishLanesMatchTheStraightforwardOnes) {
+    if (mesh::cardFitLanesWidth() != 8) GTEST_SKIP() << "no AVX-512 lanes here";
+    Rng rng(33);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
+    mesh::CardFitLanes lanes;
+    const auto unit = [&rng] {
+        return glm::normalize(
+            glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+    };
+    std::size_t checked = 0, refused = 0, flipped = 0, shortHeading = 0;
+    for (int trial = 0; trial < 160; ++trial) {
+        const std::size_t n = 1 + static_cast<std::size_t>(trial) % 8;
+        std::vector<std::uint32_t> groups[8];
+        std::span<const std::uint32_t> spans[8];
+        for (std::size_t k = 0; k < n; ++k) {
+            groups[k].resize(2 + rng.below(14));
+            for (std::uint32_t& i : groups[k])
+                i = static_cast<std::uint32_t>(rng.below(leaves.size()));
+            spans[k] = groups[k];
+        }
+        mesh::CardFitInput in[8], plain[8];
+        mesh::prepareCardFitLanes(leaves, spans, n, 0.45f, 1.7f, in, lanes);
+        glm::dvec3 e1[8], e2[8];
+        for (std::size_t k = 0; k < n; ++k) {
+            // The lanes keep the corners, the plain extent reads them from its input.
+            mesh::prepareCardFitPlain(leaves, spans[k], 0.45f, 1.7f, plain[k]);
+            e1[k] = unit();
+            e2[k] = unit();
+            const int kind = static_cast<int>(rng.below(6));
+            if (kind == 0) in[k].heading *= 1e-3; // too short in the plane: +-e1
+            if (kind == 1) in[k].heading = -e1[k] * 1e-4;
+            if (kind == 2) in[k].up = -in[k].up;
+            if (kind == 3 && trial % 10 == 0) e2[k] = e1[k] * 2.0; // along e1: refused
+            plain[k].heading = in[k].heading;
+            plain[k].up = in[k].up;
+        }
+        glm::vec3 fast[8][5];
+        glm::vec3* out[8];
+        for (std::size_t k = 0; k < 8; ++k)
+            out[k] = fast[k];
+        const bool done = mesh::finishCardFitLanes(lanes, in, spans, e1, e2, n, out);
+        glm::dvec3 e2Plain[8];
+        std::copy(e2, e2 + n, e2Plain);
+        mesh::CardAxes axes[8];
+        bool along = false;
+        for (std::size_t k = 0; k < n; ++k)
+            along = along || glm::length(e2[k] - glm::dot(e2[k], e1[k]) * e1[k]) < 1e-9;
+        ASSERT_EQ(done, !along) << trial;
+        if (!done) {
+            ++refused;
+            continue;
+        }
+        mesh::cardAxes(plain, spans, e1, e2Plain, axes, n);
+        for (std::size_t k = 0; k < n; ++k) {
+            double extent[4];
+            mesh::cardExtentPlain(plain[k], axes[k].along, axes[k].across, extent[0], extent[1],
+                                  extent[2], extent[3]);
+            glm::vec3 corners[4], normal;
+            mesh::cardCorners(mesh::cardRect(plain[k], axes[k], extent), axes[k], corners, normal);
+            for (int c = 0; c < 4; ++c)
+                EXPECT_TRUE(sameBits(fast[k][c], corners[c])) << trial << " " << k << " " << c;
+            EXPECT_TRUE(sameBits(fast[k][4], normal)) << trial << " " << k;
+            flipped += glm::dot(glm::cross(e1[k], e2Plain[k]), plain[k].up) < 0.0;
+            shortHeading += axes[k].along == e1[k] || axes[k].along == -e1[k];
+            ++checked;
+        }
+    }
+    EXPECT_GT(refused, 0u);
+    EXPECT_GT(flipped, 20u);
+    EXPECT_GT(shortHeading, 20u);
+    EXPECT_GT(checked, 500u);
+}
+
+// The second power iteration's matrix and start eight cards a register (AVX-512) are
+// secondMatrix's bit for bit in every lane, for one to eight cards; a lane whose seed vanishes
+// (its leaves' left sum along e1) refuses the register.
+TEST(CardFit, SecondMatrixLanesMatchTheScalarOne) {
+    if (mesh::cardFitLanesWidth() != 8) GTEST_SKIP() << "no AVX-512 lanes here";
+    Rng rng(45);
+    const std::vector<skel::Leaf> leaves = randomLeaves(rng, 300);
+    mesh::CardFitLanes lanes;
+    std::size_t checked = 0, refused = 0;
+    for (int trial = 0; trial < 160; ++trial) {
+        const std::size_t n = 1 + static_cast<std::size_t>(trial) % 8;
+        std::vector<std::uint32_t> groups[8];
+        std::span<const std::uint32_t> spans[8];
+        for (std::size_t k = 0; k < n; ++k) {
+            groups[k].resize(2 + rng.below(14));
+            for (std::uint32_t& i : groups[k])
+                i = static_cast<std::uint32_t>(rng.below(leaves.size()));
+            spans[k] = groups[k];
+        }
+        mesh::CardFitInput in[8];
+        mesh::prepareCardFitLanes(leaves, spans, n, 0.45f, 1.7f, in, lanes);
+        glm::dvec3 e1[8];
+        bool vanishes = false;
+        for (std::size_t k = 0; k < n; ++k) {
+            e1[k] = glm::normalize(
+                glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+            if (trial % 12 == 5 && k == n - 1) in[k].left = -3.0 * e1[k]; // the seed vanishes
+            glm::dvec3 seed;
+            (void)mesh::secondMatrix(in[k], e1[k], seed);
+            const glm::dvec3 s2 = in[k].left - glm::dot(in[k].left, e1[k]) * e1[k];
+            vanishes = vanishes || glm::length(s2) < 1e-9;
+        }
+        glm::dmat3 rest[8];
+        glm::dvec3 seed2[8];
+        const bool done = mesh::secondMatrixLanes(in, e1, n, rest, seed2);
+        ASSERT_EQ(done, !vanishes) << trial;
+        if (!done) {
+            ++refused;
+            continue;
+        }
+        for (std::size_t k = 0; k < n; ++k) {
+            glm::dvec3 seed;
+            const glm::dmat3 plain = mesh::secondMatrix(in[k], e1[k], seed);
+            EXPECT_TRUE(sameBits(rest[k], plain)) << trial << " " << k;
+            EXPECT_TRUE(sameBits(seed2[k], seed)) << trial << " " << k;
+            ++checked;
+        }
+    }
+    EXPECT_GT(refused, 0u);
+    EXPECT_GT(checked, 500u);
 }
