@@ -177,7 +177,8 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     // The per-node arrays the same room (resized each iteration as the nodes come).
     at.sum.reserve(room + 1); // a spare entry past the nodes (see sumAttraction)
     at.count.reserve(room + 1);
-    at.firstMet.reserve(room + 2);
+    at.node4.reserve(room + 8); // the packed sums' nodes and spares (see sumAttraction)
+    at.met.reserve(room + 16);
     at.setHash.reserve(room);
     at.marks.reserve(room / 64 + 1);
     lastHash.reserve(room);
@@ -218,11 +219,11 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         // 2. sum the unit vectors per node, in point index order
         const std::size_t n = skel.size();
         if (hashSets) {
-            sumAttraction(at, s.live, s.points.data(), s.best2.data(), s.bestNode.data(),
+            sumAttraction(at, s.live, s.points, s.best2.data(), s.bestNode.data(),
                           skel.position.data(), n, true);
         } else {
-            sumAttractionDroppingKilled(at, s.live, s.killed.data(), s.points.data(),
-                                        s.best2.data(), s.bestNode.data(), skel.position.data(), n);
+            sumAttractionDroppingKilled(at, s.live, s.killed.data(), s.points, s.best2.data(),
+                                        s.bestNode.data(), skel.position.data(), n);
             if (s.live.empty()) {
                 result.stopReason = StopReason::NoPointsLeft;
                 break;

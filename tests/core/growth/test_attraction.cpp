@@ -2,7 +2,8 @@
 // the straightforward loop that colonize() ran before: the attracted nodes pushed as first met
 // and sorted, the closest point tracked point by point, every array through its vector. Bit for
 // bit over random points, nodes and live lists; without the hash, and dropping the killed points
-// from the live list in the same pass (sumAttractionDroppingKilled).
+// from the live list in the same pass (sumAttractionDroppingKilled), both by the packed sums
+// (each point, node and sum one register) and by the scalar loop.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,7 +79,8 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
         for (glm::vec3& p : points)
             p = {uniform(rng, -5, 5), uniform(rng, 0, 10), uniform(rng, -5, 5)};
         std::vector<glm::vec3> nodes;
-        Attraction fast, noHash, dropping;
+        // noHash and dropping take the packed sums (on SSE2), the Scalar ones the scalar loop.
+        Attraction fast, noHash, dropping, noHashScalar, droppingScalar;
         Reference ref;
         std::size_t attractedTotal = 0;
         for (int iteration = 0; iteration < 12; ++iteration) {
@@ -110,19 +112,28 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 best2[a] = b2;
             }
             referenceSums(ref, live, points, best2, bestNode, nodes);
-            sumAttraction(fast, live, points.data(), best2.data(), bestNode.data(), nodes.data(),
+            sumAttraction(fast, live, points, best2.data(), bestNode.data(), nodes.data(),
                           nodes.size());
-            sumAttraction(noHash, live, points.data(), best2.data(), bestNode.data(), nodes.data(),
+            sumAttraction(noHash, live, points, best2.data(), bestNode.data(), nodes.data(),
                           nodes.size(), false);
+            sumAttraction(noHashScalar, live, points, best2.data(), bestNode.data(), nodes.data(),
+                          nodes.size(), false, false);
             // The killed points in reach of a node (the search kills the closest ones).
             for (std::uint32_t a = 0; a < pointCount; ++a)
                 if (killed[a] != 0 && nodes.size() > a % 7) {
                     bestNode[a] = static_cast<std::int32_t>(a % 7);
                     best2[a] = 0.25f;
                 }
-            sumAttractionDroppingKilled(dropping, withKilled, killed.data(), points.data(),
-                                        best2.data(), bestNode.data(), nodes.data(), nodes.size());
+            std::vector<std::uint32_t> withKilledScalar = withKilled;
+            sumAttractionDroppingKilled(dropping, withKilled, killed.data(), points, best2.data(),
+                                        bestNode.data(), nodes.data(), nodes.size());
+            sumAttractionDroppingKilled(droppingScalar, withKilledScalar, killed.data(), points,
+                                        best2.data(), bestNode.data(), nodes.data(), nodes.size(),
+                                        false);
             ASSERT_EQ(withKilled, live) << "seed " << seed << " it " << iteration;
+            ASSERT_EQ(withKilledScalar, live) << "seed " << seed << " it " << iteration;
+            ASSERT_EQ(droppingScalar.attracted, ref.attracted);
+            ASSERT_EQ(noHashScalar.attracted, ref.attracted);
             ASSERT_EQ(dropping.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
             ASSERT_EQ(fast.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
             std::vector<std::uint32_t> even;
@@ -151,6 +162,13 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 ASSERT_EQ(std::memcmp(&dropping.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
                 ASSERT_EQ(dropping.count[j], ref.count[j]) << "node " << j;
                 dropping.count[j] = 0;
+                // The scalar loop, both ways.
+                ASSERT_EQ(std::memcmp(&noHashScalar.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
+                ASSERT_EQ(noHashScalar.count[j], ref.count[j]) << "node " << j;
+                noHashScalar.count[j] = 0;
+                ASSERT_EQ(std::memcmp(&droppingScalar.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
+                ASSERT_EQ(droppingScalar.count[j], ref.count[j]) << "node " << j;
+                droppingScalar.count[j] = 0;
                 // As colonize() does once it has grown the node.
                 fast.count[j] = 0;
                 ref.count[j] = 0;
@@ -162,6 +180,16 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 ASSERT_EQ(c, 0u); // the spare entry too
             for (const std::uint32_t c : dropping.count)
                 ASSERT_EQ(c, 0u);
+            for (const std::uint32_t c : noHashScalar.count)
+                ASSERT_EQ(c, 0u);
+            for (const std::uint32_t c : droppingScalar.count)
+                ASSERT_EQ(c, 0u);
+            // The packed sums' scratch left clear for the next call.
+            for (const std::uint8_t m : dropping.met)
+                ASSERT_EQ(m, 0);
+            for (const Attraction::NodeLanes& e : dropping.node4)
+                ASSERT_TRUE(e.sum.count == 0.0f && e.sum.x == 0.0f && e.sum.y == 0.0f &&
+                            e.sum.z == 0.0f);
         }
         EXPECT_GT(attractedTotal, 100u) << "seed " << seed; // the test exercises something
     }
@@ -175,10 +203,10 @@ TEST(Attraction, NothingInReach) {
     const std::vector<std::int32_t> none{-1, -1};
     const std::vector<std::uint32_t> live{0, 1};
     Attraction a;
-    sumAttraction(a, live, points.data(), best2.data(), none.data(), nodes.data(), 1);
+    sumAttraction(a, live, points, best2.data(), none.data(), nodes.data(), 1);
     EXPECT_TRUE(a.attracted.empty());
     const std::vector<std::int32_t> second{0, -1};
-    sumAttraction(a, live, points.data(), best2.data(), second.data(), nodes.data(), 1);
+    sumAttraction(a, live, points, best2.data(), second.data(), nodes.data(), 1);
     EXPECT_EQ(a.attracted, std::vector<std::uint32_t>{0});
     EXPECT_EQ(a.count[0], 1u);
 }
