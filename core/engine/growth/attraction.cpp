@@ -105,8 +105,8 @@ sumPointsPacked(const std::uint32_t* live, std::size_t liveCount, std::uint32_t*
     // Dropping, the list is read and written in place (liveOut is live): one pointer.
     const std::uint32_t* in = Drop ? liveOut : live;
     const std::uint32_t* const end = in + liveCount;
-    for (; in != end; ++in) {
-        const std::uint32_t a = *in;
+    // Point a with r4 = (r, r, r, r).
+    auto add = [&](std::uint32_t a, __m128 r4) __attribute__((always_inline)) {
         std::int32_t bn = bestNode[a];
         if constexpr (Drop) {
             const std::int32_t dead = killed[a] != 0 ? 1 : 0;
@@ -120,11 +120,27 @@ sumPointsPacked(const std::uint32_t* live, std::size_t liveCount, std::uint32_t*
         const std::uint32_t j =
             bn < 0 ? spare + (a & (kSpares - 1)) : static_cast<std::uint32_t>(bn);
         met[j] = 1;
-        __m128 r = _mm_div_ss(one, _mm_sqrt_ss(_mm_load_ss(best2 + a))); // 1.0f / std::sqrt
-        r = _mm_move_ss(_mm_shuffle_ps(r, r, 0), one);                   // (1, r, r, r)
+        const __m128 r = _mm_move_ss(r4, one); // (1, r, r, r)
         const __m128 d = _mm_sub_ps(_mm_load_ps(&pts[a].count), _mm_load_ps(&nodes[j].at.count));
         float* s = &nodes[j].sum.count;
         _mm_store_ps(s, _mm_add_ps(_mm_load_ps(s), _mm_mul_ps(d, r)));
+    };
+    // Four points' 1.0f / std::sqrt(best2) by one sqrtps and one divps: the divider, shared by
+    // square roots and divisions, took ~3 ns a point for sqrtss and divss.
+    for (; end - in >= 4; in += 4) {
+        const std::uint32_t a0 = in[0], a1 = in[1], a2 = in[2], a3 = in[3];
+        const __m128 b01 = _mm_unpacklo_ps(_mm_load_ss(best2 + a0), _mm_load_ss(best2 + a1));
+        const __m128 b23 = _mm_unpacklo_ps(_mm_load_ss(best2 + a2), _mm_load_ss(best2 + a3));
+        const __m128 r = _mm_div_ps(one, _mm_sqrt_ps(_mm_movelh_ps(b01, b23)));
+        add(a0, _mm_shuffle_ps(r, r, 0x00));
+        add(a1, _mm_shuffle_ps(r, r, 0x55));
+        add(a2, _mm_shuffle_ps(r, r, 0xAA));
+        add(a3, _mm_shuffle_ps(r, r, 0xFF));
+    }
+    for (; in != end; ++in) {
+        const std::uint32_t a = *in;
+        const __m128 r = _mm_div_ss(one, _mm_sqrt_ss(_mm_load_ss(best2 + a))); // 1.0f / std::sqrt
+        add(a, _mm_shuffle_ps(r, r, 0x00));
     }
     return Drop ? out : liveCount;
 }
