@@ -187,6 +187,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
 
     Rng rng(mixSeed(params.seed, salt::kSpaceColonization));
     std::size_t firstNew = 0;
+    std::size_t stale = 0; ///< killed points still in s.live (the accelerated search's)
     for (int iteration = 0;; ++iteration) {
         progress.checkCancelled();
         // 1. closest nodes and the kill zone
@@ -197,15 +198,17 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
                                    skel.position.end());
         const std::vector<glm::vec3>& searched = clearing ? searchPositions : skel.position;
         if (fast)
-            fast->update(s, searched, firstNew, dk2);
+            stale += fast->update(s, searched, firstNew, dk2);
         else
             updateNaive(s, searched, di2, dk2);
         firstNew = skel.size();
-        // The killed points dropped from the live list by the sums' pass (without the hash),
-        // unless the loop ends here.
+        // The accelerated search sets a killed point's node to −1, so the sums pass it by: the
+        // live list keeps the killed points until they are an eighth of it (or all of it), or
+        // the loop ends; the naive search's are dropped at once.
         const bool last = iteration >= params.maxIterations;
-        if (hashSets || last) {
+        if (hashSets || last || stale * 8 >= s.live.size()) {
             dropKilled(s);
+            stale = 0;
             if (s.live.empty()) {
                 result.stopReason = StopReason::NoPointsLeft;
                 break;
@@ -222,12 +225,8 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
             sumAttraction(at, s.live, s.points, s.best2.data(), s.bestNode.data(),
                           skel.position.data(), n, true);
         } else {
-            sumAttractionDroppingKilled(at, s.live, s.killed.data(), s.points, s.best2.data(),
-                                        s.bestNode.data(), skel.position.data(), n);
-            if (s.live.empty()) {
-                result.stopReason = StopReason::NoPointsLeft;
-                break;
-            }
+            sumAttraction(at, s.live, s.points, s.best2.data(), s.bestNode.data(),
+                          skel.position.data(), n, false);
         }
         lastHash.resize(n, 0);
         lastCount.resize(n, 0);
@@ -296,6 +295,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         progress.report(static_cast<double>(iteration + 1) / params.maxIterations, "grow");
     }
 
+    if (stale > 0) dropKilled(s);
     result.killed = std::move(s.killed);
     result.killedCount = attractors.size() - s.live.size();
 
