@@ -44,29 +44,16 @@ sumPoints(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __r
 // the sums start at zero (sumAttraction clears the last call's), each point's node is stored at
 // the first-met cursor, which advances only when the node's count was 0. Points out of reach go
 // to the spare node \p dummy (its sum and count are scratch; its position read is node 0's).
-// Drop: \p live as the search left it, the points it killed (\p killed) moved out in the same
-// pass (written at the kept count, which advances past the live ones, as dropKilled's scalar
-// loop does) and summed into the spare node; \p kept their count.
-template <bool Drop>
 __attribute__((noinline)) std::size_t
-sumPointsNoHash(const std::uint32_t* live, std::size_t liveCount, std::uint32_t* liveOut,
-                const std::uint8_t* __restrict killed, std::size_t& kept,
-                const glm::vec3* __restrict pts, const float* __restrict best2,
-                const std::int32_t* __restrict bestNode, const glm::vec3* __restrict pos,
-                glm::vec3* __restrict sum, std::uint32_t* __restrict count,
-                std::uint32_t* __restrict firstMet, std::uint32_t dummy) {
-    std::size_t met = 0, out = 0;
+sumPointsNoHash(const std::uint32_t* live, std::size_t liveCount, const glm::vec3* __restrict pts,
+                const float* __restrict best2, const std::int32_t* __restrict bestNode,
+                const glm::vec3* __restrict pos, glm::vec3* __restrict sum,
+                std::uint32_t* __restrict count, std::uint32_t* __restrict firstMet,
+                std::uint32_t dummy) {
+    std::size_t met = 0;
     for (std::size_t k = 0; k < liveCount; ++k) {
         const std::uint32_t a = live[k];
-        std::int32_t bn = bestNode[a];
-        if constexpr (Drop) {
-            // A killed point's node -1 by an or, not a select: GCC made the select a branch,
-            // mispredicted at every kill.
-            const std::int32_t dead = killed[a] != 0 ? 1 : 0;
-            liveOut[out] = a;
-            out += static_cast<std::size_t>(1 - dead);
-            bn |= -dead;
-        }
+        const std::int32_t bn = bestNode[a];
         const std::uint32_t j = bn < 0 ? dummy : static_cast<std::uint32_t>(bn);
         const std::uint32_t c = count[j];
         count[j] = c + 1;
@@ -75,12 +62,13 @@ sumPointsNoHash(const std::uint32_t* live, std::size_t liveCount, std::uint32_t*
         const float b2 = best2[a];
         sum[j] += (pts[a] - pos[bn < 0 ? 0 : j]) * (1.0f / std::sqrt(b2));
     }
-    kept = Drop ? out : liveCount;
     return met;
 }
 
 #if defined(__SSE2__)
-// Spare nodes past the last for the points out of reach and the killed ones.
+// Spare nodes past the last for the points out of reach (node −1: the accelerated search sets
+// a killed point's node to −1 too, and colonize drops the killed points from the list now and
+// then).
 constexpr std::size_t kSpares = 8;
 
 // sumPointsNoHash with each point, node and sum in one register (Attraction::Lanes: the count
@@ -92,29 +80,19 @@ constexpr std::size_t kSpares = 8;
 // are marked (a byte each, read after the loop) instead of listed as first met: 29 instructions
 // a point instead of 43, no pointer spilled but one. Counts are exact below 2^24 points.
 // Nodes from \p spare on are the spares.
-
-template <bool Drop>
-__attribute__((noinline)) std::size_t
-sumPointsPacked(const std::uint32_t* live, std::size_t liveCount, std::uint32_t* liveOut,
-                const std::uint8_t* __restrict killed, const Attraction::Lanes* __restrict pts,
-                const float* __restrict best2, const std::int32_t* __restrict bestNode,
-                Attraction::NodeLanes* __restrict nodes, std::uint8_t* __restrict met,
-                std::uint32_t spare) {
+__attribute__((noinline)) void sumPointsPacked(const std::uint32_t* live, std::size_t liveCount,
+                                               const Attraction::Lanes* __restrict pts,
+                                               const float* __restrict best2,
+                                               const std::int32_t* __restrict bestNode,
+                                               Attraction::NodeLanes* __restrict nodes,
+                                               std::uint8_t* __restrict met, std::uint32_t spare) {
     const __m128 one = _mm_set1_ps(1.0f);
-    std::size_t out = 0;
-    // Dropping, the list is read and written in place (liveOut is live): one pointer.
-    const std::uint32_t* in = Drop ? liveOut : live;
+    const std::uint32_t* in = live;
     const std::uint32_t* const end = in + liveCount;
     // Point a with r4 = (r, r, r, r).
     auto add = [&](std::uint32_t a, __m128 r4) __attribute__((always_inline)) {
-        std::int32_t bn = bestNode[a];
-        if constexpr (Drop) {
-            const std::int32_t dead = killed[a] != 0 ? 1 : 0;
-            liveOut[out] = a;
-            out += static_cast<std::size_t>(1 - dead);
-            bn |= -dead;
-        }
-        // Out of reach or killed: one of kSpares spare nodes by the point's index, so that their
+        const std::int32_t bn = bestNode[a];
+        // Node −1: one of kSpares spare nodes by the point's index, so that their
         // sums' loads and stores do not wait one on another (about half the points in the first
         // iterations are out of reach: one chain through one spare node).
         const std::uint32_t j =
@@ -142,7 +120,6 @@ sumPointsPacked(const std::uint32_t* live, std::size_t liveCount, std::uint32_t*
         const __m128 r = _mm_div_ss(one, _mm_sqrt_ss(_mm_load_ss(best2 + a))); // 1.0f / std::sqrt
         add(a, _mm_shuffle_ps(r, r, 0x00));
     }
-    return Drop ? out : liveCount;
 }
 #endif
 
@@ -161,8 +138,7 @@ static bool packedRuns(std::size_t points) {
 // The packed sums (sumPointsPacked) and their bookkeeping: the copies of the points (once) and
 // of the nodes new since the last call, then the loop, then the nodes met in index order, their
 // sums and counts handed over (a.sum, a.count) and cleared.
-static void sumPacked(Attraction& a, const std::uint32_t* liveData, std::size_t& liveCount,
-                      std::uint32_t* liveOut, const std::uint8_t* killed,
+static void sumPacked(Attraction& a, std::span<const std::uint32_t> live,
                       std::span<const glm::vec3> points, const float* best2,
                       const std::int32_t* bestNode, const glm::vec3* nodes, std::size_t nodeCount) {
 #if defined(__SSE2__)
@@ -189,11 +165,8 @@ static void sumPacked(Attraction& a, const std::uint32_t* liveData, std::size_t&
     // Read eight at a time below: room to a multiple of 8, zero.
     a.met.resize((withSpares + 7) & ~std::size_t{7}, 0);
     const auto spare = static_cast<std::uint32_t>(nodeCount);
-    liveCount = killed != nullptr
-                    ? sumPointsPacked<true>(liveData, liveCount, liveOut, killed, a.point4.data(),
-                                            best2, bestNode, a.node4.data(), a.met.data(), spare)
-                    : sumPointsPacked<false>(liveData, liveCount, nullptr, nullptr, a.point4.data(),
-                                             best2, bestNode, a.node4.data(), a.met.data(), spare);
+    sumPointsPacked(live.data(), live.size(), a.point4.data(), best2, bestNode, a.node4.data(),
+                    a.met.data(), spare);
     for (std::size_t j = nodeCount; j < withSpares; ++j) {
         a.met[j] = 0;
         a.node4[j].sum = zero;
@@ -214,20 +187,16 @@ static void sumPacked(Attraction& a, const std::uint32_t* liveData, std::size_t&
         }
     }
 #else
-    (void)a, (void)liveData, (void)liveCount, (void)liveOut, (void)killed, (void)points;
+    (void)a, (void)live, (void)points;
     (void)best2, (void)bestNode, (void)nodes, (void)nodeCount;
 #endif
 }
 
-// liveOut (the same array as live) and killed: sumAttractionDroppingKilled; liveCount then
-// becomes the kept count.
-static void sumAttractionImpl(Attraction& a, const std::uint32_t* liveData, std::size_t& liveCount,
-                              std::uint32_t* liveOut, const std::uint8_t* killed,
-                              std::span<const glm::vec3> pointSpan, const float* best2,
-                              const std::int32_t* bestNode, const glm::vec3* nodes,
-                              std::size_t nodeCount, bool hashSets, bool packed) {
+void sumAttraction(Attraction& a, std::span<const std::uint32_t> live,
+                   std::span<const glm::vec3> pointSpan, const float* best2,
+                   const std::int32_t* bestNode, const glm::vec3* nodes, std::size_t nodeCount,
+                   bool hashSets, bool packed) {
     const glm::vec3* points = pointSpan.data();
-    const std::span<const std::uint32_t> live(liveData, liveCount);
     packed = packed && !hashSets && nodeCount > 0 && packedRuns(pointSpan.size());
     // As sumPointsNoHash needs them (the packed sums write the attracted ones' whole).
     if (!packed)
@@ -248,8 +217,7 @@ static void sumAttractionImpl(Attraction& a, const std::uint32_t* liveData, std:
     a.setHash.resize(nodeCount);
     a.marks.resize((nodeCount + 63) / 64, 0);
     if (packed) {
-        sumPacked(a, liveData, liveCount, liveOut, killed, pointSpan, best2, bestNode, nodes,
-                  nodeCount);
+        sumPacked(a, live, pointSpan, best2, bestNode, nodes, nodeCount);
         return;
     }
     if (hashSets) {
@@ -259,13 +227,8 @@ static void sumAttractionImpl(Attraction& a, const std::uint32_t* liveData, std:
         a.firstMet.resize(nodeCount + 2);
         const auto dummy = static_cast<std::uint32_t>(nodeCount);
         const std::size_t met =
-            killed != nullptr
-                ? sumPointsNoHash<true>(liveData, liveCount, liveOut, killed, liveCount, points,
-                                        best2, bestNode, nodes, a.sum.data(), a.count.data(),
-                                        a.firstMet.data(), dummy)
-                : sumPointsNoHash<false>(liveData, liveCount, nullptr, nullptr, liveCount, points,
-                                         best2, bestNode, nodes, a.sum.data(), a.count.data(),
-                                         a.firstMet.data(), dummy);
+            sumPointsNoHash(live.data(), live.size(), points, best2, bestNode, nodes, a.sum.data(),
+                            a.count.data(), a.firstMet.data(), dummy);
         a.count[nodeCount] = 0;
         a.sum[nodeCount] = glm::vec3(0.0f);
         for (std::size_t k = 0; k < met; ++k) {
@@ -279,29 +242,6 @@ static void sumAttractionImpl(Attraction& a, const std::uint32_t* liveData, std:
             a.attracted.push_back(static_cast<std::uint32_t>(w * 64 + __builtin_ctzll(m)));
         a.marks[w] = 0;
     }
-}
-
-void sumAttraction(Attraction& a, std::span<const std::uint32_t> live,
-                   std::span<const glm::vec3> points, const float* best2,
-                   const std::int32_t* bestNode, const glm::vec3* nodes, std::size_t nodeCount,
-                   bool hashSets, bool packed) {
-    std::size_t count = live.size();
-    sumAttractionImpl(a, live.data(), count, nullptr, nullptr, points, best2, bestNode, nodes,
-                      nodeCount, hashSets, packed);
-}
-
-void sumAttractionDroppingKilled(Attraction& a, std::vector<std::uint32_t>& live,
-                                 const std::uint8_t* killed, std::span<const glm::vec3> points,
-                                 const float* best2, const std::int32_t* bestNode,
-                                 const glm::vec3* nodes, std::size_t nodeCount, bool packed) {
-    std::size_t count = live.size();
-    if (nodeCount == 0) {
-        std::erase_if(live, [killed](std::uint32_t p) { return killed[p] != 0; });
-        count = live.size();
-    }
-    sumAttractionImpl(a, live.data(), count, live.data(), killed, points, best2, bestNode, nodes,
-                      nodeCount, false, packed);
-    live.resize(count);
 }
 
 void nearestPoints(Attraction& a, std::span<const std::uint32_t> nodes,

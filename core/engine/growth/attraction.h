@@ -63,15 +63,6 @@ void sumAttraction(Attraction& a, std::span<const std::uint32_t> live,
                    const std::int32_t* bestNode, const glm::vec3* nodes, std::size_t nodeCount,
                    bool hashSets = true, bool packed = true);
 
-/// sumAttraction without the hash over \p live as the search left it: the points it killed
-/// (\p killed non-zero) dropped from \p live in the same pass, in order (what dropKilled does),
-/// their vectors not summed. colonize()'s accelerated path: one pass over the live points an
-/// iteration instead of two.
-void sumAttractionDroppingKilled(Attraction& a, std::vector<std::uint32_t>& live,
-                                 const std::uint8_t* killed, std::span<const glm::vec3> points,
-                                 const float* best2, const std::int32_t* bestNode,
-                                 const glm::vec3* nodes, std::size_t nodeCount, bool packed = true);
-
 /// For each node of \p nodes (attracted ones): the closest of its live points (the first in index
 /// order of equally close ones) into a.nearest[node], its squared distance into a.nearest2[node],
 /// by one pass over the live points. colonize() needs them only for the nodes whose vectors
