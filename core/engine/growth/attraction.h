@@ -26,6 +26,23 @@ struct Attraction {
     std::vector<std::uint32_t> attracted; ///< increasing node index
     std::vector<std::uint64_t> marks;     ///< one bit a node, all zero between calls
     std::vector<std::uint32_t> firstMet;  ///< scratch: the nodes as first met (without the hash)
+
+    /// A point, a node or a sum in one 16-byte register: lane 0 the count lane (1 for a point,
+    /// 0 for a node, a sum's count), then x, y, z. The packed sums (without the hash).
+    struct alignas(16) Lanes {
+        Lanes() {} // left as it is by resize (its fill went through a stack temporary)
+        Lanes(float c, float px, float py, float pz) : count(c), x(px), y(py), z(pz) {}
+        float count, x, y, z;
+    };
+    /// A node's position and its packed sum (all zero between calls), side by side.
+    struct NodeLanes {
+        Lanes at, sum;
+    };
+    std::vector<Lanes> point4;           ///< the points, made on the first packed call for them
+    std::vector<NodeLanes> node4;        ///< the nodes, grown as they come, and spares
+    std::vector<std::uint8_t> met;       ///< a node met by a point, all zero between calls
+    const glm::vec3* point4Of = nullptr; ///< the points point4 copies
+    const glm::vec3* node4Of = nullptr;  ///< the nodes node4 copies
 };
 
 /// Fills \p a for \p nodeCount nodes at \p nodes from the live points \p live (increasing
@@ -36,18 +53,15 @@ struct Attraction {
 /// is left as it was; without it the sums take no branch a point: sum and count hold one spare
 /// entry past the nodes for the points out of reach): colonize() needs no hash to tell a node's set
 /// from the last iteration's (see there), and keeps it for its naive search, the oracle.
-void sumAttraction(Attraction& a, std::span<const std::uint32_t> live, const glm::vec3* points,
-                   const float* best2, const std::int32_t* bestNode, const glm::vec3* nodes,
-                   std::size_t nodeCount, bool hashSets = true);
-
-/// sumAttraction without the hash over \p live as the search left it: the points it killed
-/// (\p killed non-zero) dropped from \p live in the same pass, in order (what dropKilled does),
-/// their vectors not summed. colonize()'s accelerated path: one pass over the live points an
-/// iteration instead of two.
-void sumAttractionDroppingKilled(Attraction& a, std::vector<std::uint32_t>& live,
-                                 const std::uint8_t* killed, const glm::vec3* points,
-                                 const float* best2, const std::int32_t* bestNode,
-                                 const glm::vec3* nodes, std::size_t nodeCount);
+/// Without the hash and with \p packed (on SSE2, below 2^24 points) each point, node and sum is
+/// one register (Attraction::Lanes; the same floats): \p a copies the points on its first call
+/// for them and the nodes as they come, so between calls with the same node array its nodes
+/// below the last call's count must not move (colonize only appends); \p packed false runs the
+/// scalar loop, which the tests hold it to.
+void sumAttraction(Attraction& a, std::span<const std::uint32_t> live,
+                   std::span<const glm::vec3> points, const float* best2,
+                   const std::int32_t* bestNode, const glm::vec3* nodes, std::size_t nodeCount,
+                   bool hashSets = true, bool packed = true);
 
 /// For each node of \p nodes (attracted ones): the closest of its live points (the first in index
 /// order of equally close ones) into a.nearest[node], its squared distance into a.nearest2[node],

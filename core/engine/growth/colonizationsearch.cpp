@@ -282,7 +282,7 @@ scanNodesAvx(const float* nx, const float* ny, const float* nz, std::size_t newN
 /// updateCell does, without its store of every lane one by one. Returns the lanes kept.
 __attribute__((target("avx512f"))) std::uint32_t
 compactAvx512(float* X, float* Y, float* Z, float* B, std::int32_t* N, std::uint32_t* ids,
-              std::uint32_t live, float dk2, std::uint8_t* killed) {
+              std::uint32_t live, float dk2, std::uint8_t* killed, std::int32_t* bestNode) {
     const __m512 vdk2 = _mm512_set1_ps(dk2);
     std::uint32_t kept = 0;
     for (std::uint32_t i = 0; i < live; i += 16) {
@@ -295,8 +295,11 @@ compactAvx512(float* X, float* Y, float* Z, float* B, std::int32_t* N, std::uint
             kept += n;
             continue;
         }
-        for (unsigned m = kill; m != 0; m &= m - 1)
-            killed[ids[i + static_cast<std::uint32_t>(__builtin_ctz(m))]] = 1;
+        for (unsigned m = kill; m != 0; m &= m - 1) {
+            const std::uint32_t id = ids[i + static_cast<std::uint32_t>(__builtin_ctz(m))];
+            killed[id] = 1;
+            bestNode[id] = -1;
+        }
         const auto out = static_cast<__mmask16>((1u << n) - 1u);
         _mm512_mask_storeu_ps(X + kept, out,
                               _mm512_maskz_compress_ps(keep, _mm512_maskz_loadu_ps(in, X + i)));
@@ -511,8 +514,11 @@ struct AcceleratedSearch::Impl {
         }
     }
 
-    void update(PointState& s, const std::vector<glm::vec3>& nodes, std::size_t firstNew,
-                float dk2) {
+    std::size_t update(PointState& s, const std::vector<glm::vec3>& nodes, std::size_t firstNew,
+                       float dk2) {
+        std::size_t liveBefore = 0;
+        for (const std::uint32_t c : mActive)
+            liveBefore += mCells[c].live;
         const std::size_t newNodes = nodes.size() - firstNew;
         mNX.resize(newNodes);
         mNY.resize(newNodes);
@@ -534,7 +540,11 @@ struct AcceleratedSearch::Impl {
                 updateCell<false>(s, mCells[mActive[static_cast<std::size_t>(k)]], firstNew, dk2);
         };
         forEachIndexDynamic(cellCount, parallel, 32, update);
+        std::size_t liveAfter = 0;
+        for (const std::uint32_t c : mActive)
+            liveAfter += mCells[c].live;
         std::erase_if(mActive, [this](std::uint32_t c) { return mCells[c].live == 0; });
+        return liveBefore - liveAfter;
     }
 
     struct Cell {
@@ -693,12 +703,14 @@ struct AcceleratedSearch::Impl {
         std::uint32_t kept = 0;
 #if SYLVA_OFFER_AVX
         if (Avx && kHasAvx512)
-            kept = compactAvx512(X, Y, Z, B, N, ids, cell.live, dk2, s.killed.data());
+            kept = compactAvx512(X, Y, Z, B, N, ids, cell.live, dk2, s.killed.data(),
+                                 s.bestNode.data());
         else
 #endif
             for (std::uint32_t i = 0; i < cell.live; ++i) {
                 const bool kill = B[i] < dk2;
                 s.killed[I[i]] = static_cast<std::uint8_t>(kill);
+                s.bestNode[I[i]] = kill ? -1 : N[i];
                 X[kept] = X[i];
                 Y[kept] = Y[i];
                 Z[kept] = Z[i];
@@ -807,9 +819,9 @@ AcceleratedSearch::AcceleratedSearch(const std::vector<glm::vec3>& points, float
 
 AcceleratedSearch::~AcceleratedSearch() = default;
 
-void AcceleratedSearch::update(PointState& s, const std::vector<glm::vec3>& nodes,
-                               std::size_t firstNew, float dk2) {
-    mImpl->update(s, nodes, firstNew, dk2);
+std::size_t AcceleratedSearch::update(PointState& s, const std::vector<glm::vec3>& nodes,
+                                      std::size_t firstNew, float dk2) {
+    return mImpl->update(s, nodes, firstNew, dk2);
 }
 
 } // namespace sylva::growth

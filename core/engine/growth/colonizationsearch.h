@@ -42,9 +42,11 @@ public:
     AcceleratedSearch& operator=(const AcceleratedSearch&) = delete;
 
     /// Offers the nodes from \p firstNew on to the live points (their closest node and
-    /// distance in \p s), and marks those within \p dk2 of it killed.
-    void update(PointState& s, const std::vector<glm::vec3>& nodes, std::size_t firstNew,
-                float dk2);
+    /// distance in \p s), and marks those within \p dk2 of it killed, their closest node −1
+    /// (so that sums over a live list that still holds them pass them by). Returns how many
+    /// it killed.
+    std::size_t update(PointState& s, const std::vector<glm::vec3>& nodes, std::size_t firstNew,
+                       float dk2);
 
 private:
     struct Impl;

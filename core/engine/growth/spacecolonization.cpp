@@ -177,7 +177,8 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
     // The per-node arrays the same room (resized each iteration as the nodes come).
     at.sum.reserve(room + 1); // a spare entry past the nodes (see sumAttraction)
     at.count.reserve(room + 1);
-    at.firstMet.reserve(room + 2);
+    at.node4.reserve(room + 8); // the packed sums' nodes and spares (see sumAttraction)
+    at.met.reserve(room + 16);
     at.setHash.reserve(room);
     at.marks.reserve(room / 64 + 1);
     lastHash.reserve(room);
@@ -186,6 +187,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
 
     Rng rng(mixSeed(params.seed, salt::kSpaceColonization));
     std::size_t firstNew = 0;
+    std::size_t stale = 0; ///< killed points still in s.live (the accelerated search's)
     for (int iteration = 0;; ++iteration) {
         progress.checkCancelled();
         // 1. closest nodes and the kill zone
@@ -196,15 +198,17 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
                                    skel.position.end());
         const std::vector<glm::vec3>& searched = clearing ? searchPositions : skel.position;
         if (fast)
-            fast->update(s, searched, firstNew, dk2);
+            stale += fast->update(s, searched, firstNew, dk2);
         else
             updateNaive(s, searched, di2, dk2);
         firstNew = skel.size();
-        // The killed points dropped from the live list by the sums' pass (without the hash),
-        // unless the loop ends here.
+        // The accelerated search sets a killed point's node to −1, so the sums pass it by: the
+        // live list keeps the killed points until they are an eighth of it (or all of it), or
+        // the loop ends; the naive search's are dropped at once.
         const bool last = iteration >= params.maxIterations;
-        if (hashSets || last) {
+        if (hashSets || last || stale * 8 >= s.live.size()) {
             dropKilled(s);
+            stale = 0;
             if (s.live.empty()) {
                 result.stopReason = StopReason::NoPointsLeft;
                 break;
@@ -218,15 +222,11 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         // 2. sum the unit vectors per node, in point index order
         const std::size_t n = skel.size();
         if (hashSets) {
-            sumAttraction(at, s.live, s.points.data(), s.best2.data(), s.bestNode.data(),
+            sumAttraction(at, s.live, s.points, s.best2.data(), s.bestNode.data(),
                           skel.position.data(), n, true);
         } else {
-            sumAttractionDroppingKilled(at, s.live, s.killed.data(), s.points.data(),
-                                        s.best2.data(), s.bestNode.data(), skel.position.data(), n);
-            if (s.live.empty()) {
-                result.stopReason = StopReason::NoPointsLeft;
-                break;
-            }
+            sumAttraction(at, s.live, s.points, s.best2.data(), s.bestNode.data(),
+                          skel.position.data(), n, false);
         }
         lastHash.resize(n, 0);
         lastCount.resize(n, 0);
@@ -295,6 +295,7 @@ ColonizationResult colonize(const std::vector<glm::vec3>& attractors,
         progress.report(static_cast<double>(iteration + 1) / params.maxIterations, "grow");
     }
 
+    if (stale > 0) dropKilled(s);
     result.killed = std::move(s.killed);
     result.killedCount = attractors.size() - s.live.size();
 

@@ -1,8 +1,9 @@
 // Space colonization's attraction sums (sumAttraction) and closest points (nearestPoint) against
 // the straightforward loop that colonize() ran before: the attracted nodes pushed as first met
 // and sorted, the closest point tracked point by point, every array through its vector. Bit for
-// bit over random points, nodes and live lists; without the hash, and dropping the killed points
-// from the live list in the same pass (sumAttractionDroppingKilled).
+// bit over random points, nodes and live lists; without the hash (killed points, node −1, left
+// in the list), both by the packed sums (each point, node and sum one register) and by the
+// scalar loop.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,7 +79,8 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
         for (glm::vec3& p : points)
             p = {uniform(rng, -5, 5), uniform(rng, 0, 10), uniform(rng, -5, 5)};
         std::vector<glm::vec3> nodes;
-        Attraction fast, noHash, dropping;
+        // noHash takes the packed sums (on SSE2), noHashScalar the scalar loop.
+        Attraction fast, noHash, noHashScalar;
         Reference ref;
         std::size_t attractedTotal = 0;
         for (int iteration = 0; iteration < 12; ++iteration) {
@@ -93,7 +95,7 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
             std::vector<std::int32_t> bestNode(pointCount, -1);
             const float di2 = 2.5f * 2.5f;
             for (std::uint32_t a = 0; a < pointCount; ++a) {
-                withKilled.push_back(a); // as the search leaves the list: its kills still in it
+                withKilled.push_back(a); // as colonize leaves the list: kills still in it
                 if (rng.below(5) == 0) {
                     killed[a] = 1;
                     continue;
@@ -110,21 +112,15 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 best2[a] = b2;
             }
             referenceSums(ref, live, points, best2, bestNode, nodes);
-            sumAttraction(fast, live, points.data(), best2.data(), bestNode.data(), nodes.data(),
+            sumAttraction(fast, live, points, best2.data(), bestNode.data(), nodes.data(),
                           nodes.size());
-            sumAttraction(noHash, live, points.data(), best2.data(), bestNode.data(), nodes.data(),
+            // Without the hash, over the list as colonize() leaves it: the killed points (their
+            // node −1, their distance 0 here) still in it, passed by.
+            sumAttraction(noHash, withKilled, points, best2.data(), bestNode.data(), nodes.data(),
                           nodes.size(), false);
-            // The killed points in reach of a node (the search kills the closest ones).
-            for (std::uint32_t a = 0; a < pointCount; ++a)
-                if (killed[a] != 0 && nodes.size() > a % 7) {
-                    bestNode[a] = static_cast<std::int32_t>(a % 7);
-                    best2[a] = 0.25f;
-                }
-            sumAttractionDroppingKilled(dropping, withKilled, killed.data(), points.data(),
-                                        best2.data(), bestNode.data(), nodes.data(), nodes.size());
-            ASSERT_EQ(withKilled, live) << "seed " << seed << " it " << iteration;
-            ASSERT_EQ(dropping.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
-            ASSERT_EQ(fast.attracted, ref.attracted) << "seed " << seed << " it " << iteration;
+            sumAttraction(noHashScalar, withKilled, points, best2.data(), bestNode.data(),
+                          nodes.data(), nodes.size(), false, false);
+            ASSERT_EQ(noHashScalar.attracted, ref.attracted);
             std::vector<std::uint32_t> even;
             for (const std::uint32_t j : ref.attracted)
                 if (j % 2 == 0) even.push_back(j);
@@ -147,10 +143,10 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                 ASSERT_EQ(std::memcmp(&noHash.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
                 ASSERT_EQ(noHash.count[j], ref.count[j]) << "node " << j;
                 noHash.count[j] = 0;
-                // Dropping the killed points in the same pass: the same again.
-                ASSERT_EQ(std::memcmp(&dropping.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
-                ASSERT_EQ(dropping.count[j], ref.count[j]) << "node " << j;
-                dropping.count[j] = 0;
+                // The scalar loop.
+                ASSERT_EQ(std::memcmp(&noHashScalar.sum[j], &ref.sum[j], sizeof(glm::vec3)), 0);
+                ASSERT_EQ(noHashScalar.count[j], ref.count[j]) << "node " << j;
+                noHashScalar.count[j] = 0;
                 // As colonize() does once it has grown the node.
                 fast.count[j] = 0;
                 ref.count[j] = 0;
@@ -160,8 +156,14 @@ TEST(Attraction, SameBitsAsSortedPushBack) {
                       ref.count);
             for (const std::uint32_t c : noHash.count)
                 ASSERT_EQ(c, 0u); // the spare entry too
-            for (const std::uint32_t c : dropping.count)
+            for (const std::uint32_t c : noHashScalar.count)
                 ASSERT_EQ(c, 0u);
+            // The packed sums' scratch left clear for the next call.
+            for (const std::uint8_t m : noHash.met)
+                ASSERT_EQ(m, 0);
+            for (const Attraction::NodeLanes& e : noHash.node4)
+                ASSERT_TRUE(e.sum.count == 0.0f && e.sum.x == 0.0f && e.sum.y == 0.0f &&
+                            e.sum.z == 0.0f);
         }
         EXPECT_GT(attractedTotal, 100u) << "seed " << seed; // the test exercises something
     }
@@ -175,10 +177,10 @@ TEST(Attraction, NothingInReach) {
     const std::vector<std::int32_t> none{-1, -1};
     const std::vector<std::uint32_t> live{0, 1};
     Attraction a;
-    sumAttraction(a, live, points.data(), best2.data(), none.data(), nodes.data(), 1);
+    sumAttraction(a, live, points, best2.data(), none.data(), nodes.data(), 1);
     EXPECT_TRUE(a.attracted.empty());
     const std::vector<std::int32_t> second{0, -1};
-    sumAttraction(a, live, points.data(), best2.data(), second.data(), nodes.data(), 1);
+    sumAttraction(a, live, points, best2.data(), second.data(), nodes.data(), 1);
     EXPECT_EQ(a.attracted, std::vector<std::uint32_t>{0});
     EXPECT_EQ(a.count[0], 1u);
 }

@@ -82,3 +82,20 @@ TEST(ShadowCounts, LeavesAHugeBoxToTheGrid) {
     EXPECT_TRUE(shadowAtSources({}, k, none));
     EXPECT_TRUE(none.empty());
 }
+
+// A square holding 2^16 sources or more (70,000 in one layer, sources below them): counted in
+// 32 bits, not 16; and 65,535 sources, the most counted in 16 bits, in one layer likewise.
+TEST(ShadowCounts, ManySourcesInOneLayer) {
+    const ShadowKernel k = ShadowKernel::make(1.0, 2.0, 4);
+    for (const std::size_t n : {std::size_t{70000}, std::size_t{65535}}) {
+        Rng rng(n);
+        std::vector<glm::ivec3> voxels(n);
+        for (std::size_t i = 0; i < n; ++i)
+            voxels[i] = i < 6 ? glm::ivec3(1, static_cast<int>(i), 1)
+                              : glm::ivec3(static_cast<int>(rng.below(3)), 6,
+                                           static_cast<int>(rng.below(3)));
+        std::vector<std::int32_t> counted;
+        ASSERT_TRUE(shadowAtSources(voxels, k, counted));
+        EXPECT_EQ(counted, byGrid(voxels, k)) << n;
+    }
+}

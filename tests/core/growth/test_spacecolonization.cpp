@@ -76,7 +76,35 @@ TEST(SpaceColonization, AcceleratedEqualsNaive) {
         expectIdentical(fast.skeleton, slow.skeleton);
         EXPECT_EQ(fast.killed, slow.killed);
         EXPECT_EQ(fast.iterations, slow.iterations);
+        EXPECT_EQ(fast.killedCount, slow.killedCount);
+        EXPECT_EQ(fast.stopReason, slow.stopReason);
         EXPECT_GT(fast.skeleton.size(), 200u);
+    }
+}
+
+// A crown that stops with points out of reach (a far clump, more points than the crown): the
+// accelerated search leaves its killed points in the live list until they are an eighth of
+// it, so some are still there at the stop; the counts and the stop reason are the oracle's.
+TEST(SpaceColonization, AcceleratedEqualsNaiveStoppingOutOfReach) {
+    for (std::uint64_t seed : {1u, 2u}) {
+        auto points = spherePoints(400, seed);
+        Rng rng(seed + 10);
+        for (int k = 0; k < 3000; ++k)
+            points.push_back({static_cast<float>(rng.uniform(40.0, 44.0)),
+                              static_cast<float>(rng.uniform(4.0, 8.0)),
+                              static_cast<float>(rng.uniform(-2.0, 2.0))});
+        ColonizationParams p = referenceParams();
+        p.seed = seed;
+        const ColonizationResult fast = colonize(points, p, nullptr, NeighbourSearch::Accelerated);
+        const ColonizationResult slow = colonize(points, p, nullptr, NeighbourSearch::Naive);
+        expectIdentical(fast.skeleton, slow.skeleton);
+        EXPECT_EQ(fast.killed, slow.killed);
+        EXPECT_EQ(fast.iterations, slow.iterations);
+        EXPECT_EQ(fast.stopReason, StopReason::NothingInReach);
+        EXPECT_EQ(slow.stopReason, StopReason::NothingInReach);
+        EXPECT_EQ(fast.killedCount, slow.killedCount);
+        EXPECT_GT(fast.killedCount, 300u);
+        EXPECT_LT(fast.killedCount, 500u);
     }
 }
 
