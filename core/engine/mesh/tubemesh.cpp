@@ -165,7 +165,7 @@ struct RingFrame {
 struct ReliefRows {
     RawVector<float> rho;     ///< ρ of each ring vertex (rings × sides+1, then four pads)
     RawVector<float> slopes;  ///< a ring's slopes (barkSlopeRow: ∂ρ/∂θ, then ∂ρ/∂s)
-    RawVector<float> csLanes; ///< cs's x, then its y (sides+1 and three zero pads each)
+    RawVector<float> csLanes; ///< cs's x, y, then z (sides+1 and three zero pads each)
     RawVector<float> lanes;   ///< a ring's positions and normals by component
 
     static float* room(RawVector<float>& v, std::size_t n) {
@@ -207,6 +207,20 @@ struct Writer {
         }
         if (nodeIds) nodeIds[k] = node;
         ++v;
+    }
+    /// The per-vertex attributes but position, normal and uv (order, flex, node) of the \p count
+    /// vertices from v, as vertex() writes them; v advanced past them.
+    void attributes(std::size_t count) {
+        const std::size_t first = v - base;
+        if (orders)
+            for (std::size_t k = first; k < first + count; ++k) {
+                orders[k] = order;
+                flexes[k] = flex;
+            }
+        if (nodeIds)
+            for (std::size_t k = first; k < first + count; ++k)
+                nodeIds[k] = node;
+        v += count;
     }
     /// A round ring's vertices: vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, v})
     /// with radial = a.x * n + a.y * b for each entry a of \p cs (res + 1 of them), bit for
@@ -443,8 +457,9 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
     const float* rhoRows = nullptr; // with relief: ρ of each ring vertex (rows.rho)
     float* dTh = nullptr;           // with relief: a ring's slopes (rows.slopes)
     float* dS = nullptr;
-    const float* csX = nullptr; // with relief: cs's x and y (rows.csLanes)
+    const float* csX = nullptr; // with relief: cs's x, y and z (rows.csLanes)
     const float* csY = nullptr;
+    const float* csZ = nullptr;
     float* ringLanes = nullptr; // with relief: a ring's vertices (rows.lanes)
     for (std::size_t k = 0; k < m; ++k) {
         const RingFrame& f = frames[k];
@@ -496,19 +511,22 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
                          2.0f * dTheta, ds, dTh, dS);
             // The ring's positions and normals (barkReliefVertices: four vertices to an
             // instruction on SSE2, a relief vertex's normal is a square root and three
-            // divisions), then written a vertex at a time.
+            // divisions), then written four vertices at a time (barkReliefInterleave).
             const std::size_t stride = ringVerts + 3;
             if (k == 0) {
-                float* x = ReliefRows::room(rows.csLanes, 2 * stride);
+                float* x = ReliefRows::room(rows.csLanes, 3 * stride);
                 float* y = x + stride;
+                float* z = y + stride;
                 for (std::size_t j = 0; j < ringVerts; ++j) {
                     x[j] = cs[j].x;
                     y[j] = cs[j].y;
+                    z[j] = cs[j].z;
                 }
                 for (std::size_t j = ringVerts; j < stride; ++j)
-                    x[j] = y[j] = 0.0f;
+                    x[j] = y[j] = z[j] = 0.0f;
                 csX = x;
                 csY = y;
+                csZ = z;
                 ringLanes = ReliefRows::room(rows.lanes, 6 * stride);
             }
             if (lobe != nullptr) { // the lobes' own slope is known exactly
@@ -520,10 +538,10 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
                 float* o = ringLanes;
                 barkReliefVertices(csX, csY, ringVerts, p, n, b, t, rhoK, dTh, dS,
                                    kMinDirectionLength, o, stride);
-                for (std::size_t j = 0; j < ringVerts; ++j)
-                    w.vertex({o[j], o[stride + j], o[2 * stride + j]},
-                             {o[3 * stride + j], o[4 * stride + j], o[5 * stride + j]},
-                             {uTiles * cs[j].z, v});
+                const std::size_t first = w.v - w.base;
+                barkReliefInterleave(o, stride, ringVerts, csZ, uTiles, v, w.pos + first,
+                                     w.nrm + first, w.uvs + first);
+                w.attributes(ringVerts);
             }
         }
         if (relief == nullptr && !(amp > 0.0f))
