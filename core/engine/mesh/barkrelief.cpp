@@ -299,4 +299,38 @@ void barkReliefVertices(const float* ax, const float* ay, std::size_t count, con
 #endif
 }
 
+void barkReliefInterleave(const float* lanes, std::size_t stride, std::size_t count, const float* u,
+                          float uTiles, float v, glm::vec3* pos, glm::vec3* nrm, glm::vec2* uv) {
+    std::size_t j = 0;
+#if defined(__SSE2__)
+    // Four x, y, z lanes to x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3.
+    auto triples = [](__m128 x, __m128 y, __m128 z, float* out) {
+        const __m128 xy = _mm_unpacklo_ps(x, y);                          // x0 y0 x1 y1
+        const __m128 zx = _mm_shuffle_ps(z, x, _MM_SHUFFLE(1, 1, 0, 0));  // z0 z0 x1 x1
+        const __m128 yz = _mm_shuffle_ps(y, z, _MM_SHUFFLE(1, 1, 1, 1));  // y1 y1 z1 z1
+        const __m128 xy2 = _mm_unpackhi_ps(x, y);                         // x2 y2 x3 y3
+        const __m128 zx2 = _mm_shuffle_ps(z, x, _MM_SHUFFLE(3, 3, 2, 2)); // z2 z2 x3 x3
+        const __m128 yz3 = _mm_shuffle_ps(y, z, _MM_SHUFFLE(3, 3, 3, 3)); // y3 y3 z3 z3
+        _mm_storeu_ps(out, _mm_shuffle_ps(xy, zx, _MM_SHUFFLE(2, 0, 1, 0)));
+        _mm_storeu_ps(out + 4, _mm_shuffle_ps(yz, xy2, _MM_SHUFFLE(1, 0, 2, 0)));
+        _mm_storeu_ps(out + 8, _mm_shuffle_ps(zx2, yz3, _MM_SHUFFLE(2, 0, 2, 0)));
+    };
+    const __m128 tiles = _mm_set1_ps(uTiles), vv = _mm_set1_ps(v);
+    for (; j + 4 <= count; j += 4) {
+        triples(_mm_loadu_ps(lanes + j), _mm_loadu_ps(lanes + stride + j),
+                _mm_loadu_ps(lanes + 2 * stride + j), &pos[j].x);
+        triples(_mm_loadu_ps(lanes + 3 * stride + j), _mm_loadu_ps(lanes + 4 * stride + j),
+                _mm_loadu_ps(lanes + 5 * stride + j), &nrm[j].x);
+        const __m128 us = _mm_mul_ps(tiles, _mm_loadu_ps(u + j));
+        _mm_storeu_ps(&uv[j].x, _mm_unpacklo_ps(us, vv));
+        _mm_storeu_ps(&uv[j + 2].x, _mm_unpackhi_ps(us, vv));
+    }
+#endif
+    for (; j < count; ++j) {
+        pos[j] = {lanes[j], lanes[stride + j], lanes[2 * stride + j]};
+        nrm[j] = {lanes[3 * stride + j], lanes[4 * stride + j], lanes[5 * stride + j]};
+        uv[j] = {uTiles * u[j], v};
+    }
+}
+
 } // namespace sylva::mesh

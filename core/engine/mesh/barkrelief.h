@@ -79,4 +79,12 @@ void barkReliefVertices(const float* ax, const float* ay, std::size_t count, con
                         const float* rho, const float* dTheta, const float* dS, float minLength,
                         float* out, std::size_t stride);
 
+/// barkReliefVertices' lanes (\p lanes: x, y, z of the positions, then of the normals, each row
+/// \p stride apart) as \p count vertices: pos[j] = (x, y, z), nrm[j] likewise and
+/// uv[j] = (uTiles · u[j], v), the same bits as a vertex at a time. Four vertices to three
+/// 16-byte stores of each array on SSE2 (a vertex's two 8-byte and 4-byte stores of each
+/// were most of the relief rings' samples), the last up to three a vertex at a time.
+void barkReliefInterleave(const float* lanes, std::size_t stride, std::size_t count, const float* u,
+                          float uTiles, float v, glm::vec3* pos, glm::vec3* nrm, glm::vec2* uv);
+
 } // namespace sylva::mesh

@@ -159,6 +159,24 @@ struct RingFrame {
     float r, ds, inv, v;
 };
 
+/// A relief chain's rows (meshChain's second pass), kept by the thread's Scratch from chain to
+/// chain: a fresh vector a chain was an allocation and a zero fill of rows that are written
+/// before they are read (the few pads that are read are set where the rows are made).
+struct ReliefRows {
+    RawVector<float> rho;     ///< ρ of each ring vertex (rings × sides+1, then four pads)
+    RawVector<float> slopes;  ///< a ring's slopes (barkSlopeRow: ∂ρ/∂θ, then ∂ρ/∂s)
+    RawVector<float> csLanes; ///< cs's x, y, then z (sides+1 and three zero pads each)
+    RawVector<float> lanes;   ///< a ring's positions and normals by component
+
+    static float* room(RawVector<float>& v, std::size_t n) {
+        if (v.size() < n) {
+            v.clear();
+            v.resize(n);
+        }
+        return v.data();
+    }
+};
+
 // Writes one run of chains into a scratch block: vertex v lands at v - base (indices keep
 // their absolute values). Raw pointers, so the compiler does not reload vector internals.
 struct Writer {
@@ -189,6 +207,20 @@ struct Writer {
         }
         if (nodeIds) nodeIds[k] = node;
         ++v;
+    }
+    /// The per-vertex attributes but position, normal and uv (order, flex, node) of the \p count
+    /// vertices from v, as vertex() writes them; v advanced past them.
+    void attributes(std::size_t count) {
+        const std::size_t first = v - base;
+        if (orders)
+            for (std::size_t k = first; k < first + count; ++k) {
+                orders[k] = order;
+                flexes[k] = flex;
+            }
+        if (nodeIds)
+            for (std::size_t k = first; k < first + count; ++k)
+                nodeIds[k] = node;
+        v += count;
     }
     /// A round ring's vertices: vertex(p + r * radial, radial * inv + tn, {uTiles * a.z, v})
     /// with radial = a.x * n + a.y * b for each entry a of \p cs (res + 1 of them), bit for
@@ -267,6 +299,7 @@ struct Scratch {
     RawVector<std::uint32_t> nodeIds;
     RawVector<std::uint32_t> idx;
     RawVector<RingFrame> frames; ///< a run's rings' frames (meshChain's first pass)
+    ReliefRows relief;           ///< a relief chain's rows (meshChain's second pass)
 
     template <class T> static void room(RawVector<T>& v, std::size_t n) {
         if (v.size() >= n) return;
@@ -342,9 +375,9 @@ float barkTiles(float r0, float width) {
 /// written between them the processor could not run ahead to the next rings' or chain's.
 enum class ChainPass { Frames, Rings };
 
-void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleton& s,
-               const std::vector<float>& radius, const std::int32_t* nodes, std::size_t m,
-               bool lateral, bool caps, const std::vector<glm::vec3>& cs,
+void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
+               const skel::Skeleton& s, const std::vector<float>& radius, const std::int32_t* nodes,
+               std::size_t m, bool lateral, bool caps, const std::vector<glm::vec3>& cs,
                const std::uint32_t* ids = nullptr, const glm::vec2* lobe = nullptr,
                const float* lobeAmp = nullptr, const float* relief = nullptr, float uTiles = 1.0f) {
     auto id = [&](std::size_t k) {
@@ -421,9 +454,13 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
     std::size_t ringStart = firstRing;
     if (caps && !lateral) w.v = firstRing; // the base cap is written after the first frame
     glm::vec3 n0(0.0f), b0(0.0f), t0(0.0f);
-    std::vector<float> rhoRows;        // with relief: ρ of each ring vertex (rings × sides+1)
-    std::vector<float> slopes;         // with relief: a ring's slopes (barkSlopeRow)
-    std::vector<float> csLanes, lanes; // with relief: cs's x and y, a ring's vertices
+    const float* rhoRows = nullptr; // with relief: ρ of each ring vertex (rows.rho)
+    float* dTh = nullptr;           // with relief: a ring's slopes (rows.slopes)
+    float* dS = nullptr;
+    const float* csX = nullptr; // with relief: cs's x, y and z (rows.csLanes)
+    const float* csY = nullptr;
+    const float* csZ = nullptr;
+    float* ringLanes = nullptr; // with relief: a ring's vertices (rows.lanes)
     for (std::size_t k = 0; k < m; ++k) {
         const RingFrame& f = frames[k];
         const glm::vec3 p = f.p, t = f.t, n = f.n, b = f.b, tn = f.tn;
@@ -437,42 +474,60 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
             // ρ(k, j) = R(k) (1 + lobe + relief): the normal of the displaced surface,
             // ρ·radial - ∂ρ/∂θ·around - ρ·∂ρ/∂s·t, from differences over the neighbouring
             // vertices (the seam's neighbours across it).
-            auto lobeAt = [&](std::size_t kk, int j) {
-                return lobe != nullptr ? lobeAmp[kk] * lobe[static_cast<std::size_t>(j)].x : 0.0f;
-            };
             // ρ of every ring, once (each vertex reads its ring's, its neighbours' and the
-            // neighbouring rings').
+            // neighbouring rings'): R(k) (1 + lobe + relief), the lobe's term a product or, on
+            // a round section, none (1 + 0 is 1: the same sum).
             if (k == 0) {
-                rhoRows.resize(m * ringVerts + 4); // (the last ring read four at a time)
-                for (std::size_t kk = 0; kk < m; ++kk)
-                    for (int j = 0; j <= res; ++j)
-                        rhoRows[kk * ringVerts + static_cast<std::size_t>(j)] =
-                            R(kk) * (1.0f + lobeAt(kk, j) +
-                                     relief[kk * ringVerts + static_cast<std::size_t>(j)]);
+                float* rho = ReliefRows::room(rows.rho, m * ringVerts + 4);
+                for (std::size_t kk = 0; kk < m; ++kk) {
+                    const float rk = R(kk);
+                    const float* rel = relief + kk * ringVerts;
+                    float* row = rho + kk * ringVerts;
+                    if (lobe != nullptr) {
+                        const float a = lobeAmp[kk];
+                        for (std::size_t j = 0; j < ringVerts; ++j)
+                            row[j] = rk * (1.0f + a * lobe[j].x + rel[j]);
+                    } else {
+                        for (std::size_t j = 0; j < ringVerts; ++j)
+                            row[j] = rk * (1.0f + rel[j]);
+                    }
+                }
+                for (std::size_t j = 0; j < 4; ++j) // (the last ring read four at a time)
+                    rho[m * ringVerts + j] = 0.0f;
+                rhoRows = rho;
             }
-            const float* rhoK = rhoRows.data() + k * ringVerts;
-            const float* rhoA = rhoRows.data() + ka * ringVerts;
-            const float* rhoB = rhoRows.data() + kb * ringVerts;
+            const float* rhoK = rhoRows + k * ringVerts;
+            const float* rhoA = rhoRows + ka * ringVerts;
+            const float* rhoB = rhoRows + kb * ringVerts;
             const float dTheta = 2.0f * std::numbers::pi_v<float> / static_cast<float>(res);
             // The ring's slopes first, four quotients to a division (barkSlopeRow): ∂ρ/∂θ's
             // difference over 2 dθ (the relief's, where the lobes' own is known exactly) and
             // ∂ρ/∂s's over ds, the same quotients as a vertex at a time.
-            if (k == 0) slopes.resize(2 * (ringVerts + 3));
-            float* const dTh = slopes.data();
-            float* const dS = dTh + ringVerts + 3;
+            if (k == 0) {
+                dTh = ReliefRows::room(rows.slopes, 2 * (ringVerts + 3));
+                dS = dTh + ringVerts + 3;
+            }
             barkSlopeRow(lobe != nullptr ? relief + k * ringVerts : rhoK, rhoA, rhoB, res,
                          2.0f * dTheta, ds, dTh, dS);
             // The ring's positions and normals (barkReliefVertices: four vertices to an
             // instruction on SSE2, a relief vertex's normal is a square root and three
-            // divisions), then written a vertex at a time.
+            // divisions), then written four vertices at a time (barkReliefInterleave).
             const std::size_t stride = ringVerts + 3;
             if (k == 0) {
-                csLanes.assign(2 * stride, 0.0f);
+                float* x = ReliefRows::room(rows.csLanes, 3 * stride);
+                float* y = x + stride;
+                float* z = y + stride;
                 for (std::size_t j = 0; j < ringVerts; ++j) {
-                    csLanes[j] = cs[j].x;
-                    csLanes[stride + j] = cs[j].y;
+                    x[j] = cs[j].x;
+                    y[j] = cs[j].y;
+                    z[j] = cs[j].z;
                 }
-                lanes.resize(6 * stride);
+                for (std::size_t j = ringVerts; j < stride; ++j)
+                    x[j] = y[j] = z[j] = 0.0f;
+                csX = x;
+                csY = y;
+                csZ = z;
+                ringLanes = ReliefRows::room(rows.lanes, 6 * stride);
             }
             if (lobe != nullptr) { // the lobes' own slope is known exactly
                 const float rk = R(k);
@@ -480,13 +535,13 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, const skel::Skeleto
                     dTh[j] = rk * (amp * lobe[j].y + dTh[j]);
             }
             {
-                float* o = lanes.data();
-                barkReliefVertices(csLanes.data(), csLanes.data() + stride, ringVerts, p, n, b, t,
-                                   rhoK, dTh, dS, kMinDirectionLength, o, stride);
-                for (std::size_t j = 0; j < ringVerts; ++j)
-                    w.vertex({o[j], o[stride + j], o[2 * stride + j]},
-                             {o[3 * stride + j], o[4 * stride + j], o[5 * stride + j]},
-                             {uTiles * cs[j].z, v});
+                float* o = ringLanes;
+                barkReliefVertices(csX, csY, ringVerts, p, n, b, t, rhoK, dTh, dS,
+                                   kMinDirectionLength, o, stride);
+                const std::size_t first = w.v - w.base;
+                barkReliefInterleave(o, stride, ringVerts, csZ, uTiles, v, w.pos + first,
+                                     w.nrm + first, w.uvs + first);
+                w.attributes(ringVerts);
             }
         }
         if (relief == nullptr && !(amp > 0.0f))
@@ -1028,9 +1083,10 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                             barkTiles(radius[static_cast<std::size_t>(own)], textureWidth);
                         if (flaredOf[c] >= 0) {
                             const FlaredChain& f = flared[static_cast<std::size_t>(flaredOf[c])];
-                            meshChain(w, pass, frames, f.sub, f.radius, f.nodes.data(),
-                                      f.nodes.size(), lateral, settings.caps, f.cs, f.ids.data(),
-                                      f.lobe.empty() ? nullptr : f.lobe.data(), f.lobeAmp.data(),
+                            meshChain(w, pass, frames, scratch.relief, f.sub, f.radius,
+                                      f.nodes.data(), f.nodes.size(), lateral, settings.caps, f.cs,
+                                      f.ids.data(), f.lobe.empty() ? nullptr : f.lobe.data(),
+                                      f.lobeAmp.data(),
                                       f.relief.empty() ? nullptr : f.relief.data(), tiles);
                             frames += f.nodes.size();
                         } else if (ribbon[c]) {
@@ -1038,9 +1094,9 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                                 meshRibbon(w, s, radius, nodes, m, lateral, settings.ribbonCamera,
                                            static_cast<float>(settings.ribbonWidthScale));
                         } else {
-                            meshChain(w, pass, frames, s, radius, nodes, m, lateral, settings.caps,
-                                      twig[c] ? csTwig : cs, nullptr, nullptr, nullptr, nullptr,
-                                      tiles);
+                            meshChain(w, pass, frames, scratch.relief, s, radius, nodes, m, lateral,
+                                      settings.caps, twig[c] ? csTwig : cs, nullptr, nullptr,
+                                      nullptr, nullptr, tiles);
                             frames += m;
                         }
                     }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -164,6 +165,47 @@ TEST(BarkReliefRow, ReliefVerticesAreGlmsVertexByVertex) {
                 EXPECT_EQ(std::memcmp(&gotNormal, &normal[k], sizeof got), 0)
                     << sides << " " << j << " " << k;
             }
+        }
+    }
+}
+
+// barkReliefInterleave against the vertex-by-vertex writes it replaces (a position, a normal and
+// uTiles · u, v a vertex), bit for bit: every count 0-40 (every tail past the fours), lanes of
+// random values with -0, a NaN and a subnormal among them, the vertices after the last untouched.
+TEST(BarkReliefRow, InterleaveIsTheVertexByVertexWrites) {
+    sylva::Rng rng(53);
+    for (std::size_t count = 0; count <= 40; ++count) {
+        const std::size_t stride = count + 3;
+        std::vector<float> lanes(6 * stride), u(stride);
+        for (float& x : lanes)
+            x = rng.uniformf(-50.0f, 50.0f);
+        for (float& x : u)
+            x = rng.uniformf(0.0f, 1.0f);
+        if (count > 2) {
+            lanes[1] = -0.0f;
+            lanes[stride + 2] = std::numeric_limits<float>::quiet_NaN();
+            lanes[4 * stride + count - 1] = 1e-42f;
+            u[count - 1] = -0.0f;
+        }
+        const float uTiles = rng.uniformf(1.0f, 7.0f), v = rng.uniformf(0.0f, 30.0f);
+        std::vector<glm::vec3> pos(count + 2, glm::vec3(7.0f)), nrm(count + 2, glm::vec3(7.0f));
+        std::vector<glm::vec2> uv(count + 2, glm::vec2(7.0f));
+        mesh::barkReliefInterleave(lanes.data(), stride, count, u.data(), uTiles, v, pos.data(),
+                                   nrm.data(), uv.data());
+        auto same = [](float a, float b) {
+            return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+        };
+        for (std::size_t j = 0; j < count + 2; ++j) {
+            const bool written = j < count;
+            for (int k = 0; k < 3; ++k) {
+                const auto kk = static_cast<std::size_t>(k);
+                EXPECT_TRUE(same(pos[j][k], written ? lanes[kk * stride + j] : 7.0f))
+                    << count << " " << j << " " << k;
+                EXPECT_TRUE(same(nrm[j][k], written ? lanes[(3 + kk) * stride + j] : 7.0f))
+                    << count << " " << j << " " << k;
+            }
+            EXPECT_TRUE(same(uv[j].x, written ? uTiles * u[j] : 7.0f)) << count << " " << j;
+            EXPECT_TRUE(same(uv[j].y, written ? v : 7.0f)) << count << " " << j;
         }
     }
 }
