@@ -125,9 +125,9 @@ using simd::add; // unfused (util/x86intrinsics)
 /// d2 < b and min(d2, b) for the offers' non-negative distances, by the integer order of their
 /// bits: for floats with a clear sign bit (a sum of squares, +0 included, +inf, the padding's
 /// 0 and a positive NaN past every finite one) the signed 32-bit order of the bits is the float
-/// order, so each lane chooses and keeps the same float. On Zen 4 the integer compare and minimum
-/// issue on all four vector pipes, the float ones only on the two that also take the offers'
-/// subtractions and sums (their bound).
+/// order, so each lane chooses and keeps the same float. The float compare and minimum share
+/// the adders' pipes with the offers' subtractions and sums (their bound); the integer ones were
+/// measured faster (docs/perf/geometry.md, thirteenth pass).
 __attribute__((target("avx512f"))) inline __mmask16 lessBits(__m512 d2, __m512 b) {
     return _mm512_cmplt_epi32_mask(_mm512_castps_si512(d2), _mm512_castps_si512(b));
 }
