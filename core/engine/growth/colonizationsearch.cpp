@@ -122,6 +122,19 @@ offerChunkAvx(const float* X, const float* Y, const float* Z, float* B, std::int
 
 using simd::add; // unfused (util/x86intrinsics)
 
+/// d2 < b and min(d2, b) for the offers' non-negative distances, by the integer order of their
+/// bits: for floats with a clear sign bit (a sum of squares, +0 included, +inf, the padding's
+/// 0 and a positive NaN past every finite one) the signed 32-bit order of the bits is the float
+/// order, so each lane chooses and keeps the same float. The float compare and minimum share
+/// the adders' pipes with the offers' subtractions and sums (their bound); the integer ones were
+/// measured faster (docs/perf/geometry.md, thirteenth pass).
+__attribute__((target("avx512f"))) inline __mmask16 lessBits(__m512 d2, __m512 b) {
+    return _mm512_cmplt_epi32_mask(_mm512_castps_si512(d2), _mm512_castps_si512(b));
+}
+__attribute__((target("avx512f"))) inline __m512 minBits(__m512 d2, __m512 b) {
+    return _mm512_castsi512_ps(_mm512_min_epi32(_mm512_castps_si512(d2), _mm512_castps_si512(b)));
+}
+
 /// offerChunkAvx with sixteen lanes a register where the processor has AVX-512 (built for it
 /// alone, dispatched at run time; SYLVA_NO_AVX512=1 takes the AVX offers): each lane the same
 /// subtractions, products, sums (add: none fused), comparison and min, the node taken by
@@ -153,10 +166,10 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
                 add(add(_mm512_mul_ps(dx0, dx0), _mm512_mul_ps(dy0, dy0)), _mm512_mul_ps(dz0, dz0));
             const __m512 d21 =
                 add(add(_mm512_mul_ps(dx1, dx1), _mm512_mul_ps(dy1, dy1)), _mm512_mul_ps(dz1, dz1));
-            const __mmask16 better0 = _mm512_cmp_ps_mask(d20, b0, _CMP_LT_OQ);
-            const __mmask16 better1 = _mm512_cmp_ps_mask(d21, b1, _CMP_LT_OQ);
-            b0 = _mm512_min_ps(d20, b0); // d2 < b ? d2 : b
-            b1 = _mm512_min_ps(d21, b1);
+            const __mmask16 better0 = lessBits(d20, b0);
+            const __mmask16 better1 = lessBits(d21, b1);
+            b0 = minBits(d20, b0); // d2 < b ? d2 : b
+            b1 = minBits(d21, b1);
             n0 = _mm512_mask_mov_ps(n0, better0, node);
             n1 = _mm512_mask_mov_ps(n1, better1, node);
         }
@@ -176,8 +189,8 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
             const __m512 dz = _mm512_sub_ps(_mm512_loadu_ps(Z + i), _mm512_set1_ps(cz[k]));
             const __m512 d2 =
                 add(add(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
-            const __mmask16 better = _mm512_cmp_ps_mask(d2, b, _CMP_LT_OQ);
-            b = _mm512_min_ps(d2, b);
+            const __mmask16 better = lessBits(d2, b);
+            b = minBits(d2, b);
             n = _mm512_mask_mov_ps(n, better, _mm512_set1_ps(cnf[k]));
         }
         _mm512_storeu_ps(B + i, b);
@@ -201,8 +214,8 @@ offerChunkAvx512(const float* X, const float* Y, const float* Z, float* B, std::
             const __m512 dz = _mm512_sub_ps(z, _mm512_set1_ps(cz[k]));
             const __m512 d2 =
                 add(add(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
-            const __mmask16 better = _mm512_cmp_ps_mask(d2, b, _CMP_LT_OQ);
-            b = _mm512_min_ps(d2, b);
+            const __mmask16 better = lessBits(d2, b);
+            b = minBits(d2, b);
             n = _mm512_mask_mov_ps(n, better, _mm512_set1_ps(cnf[k]));
         }
         _mm512_mask_storeu_ps(B + i, in, b);

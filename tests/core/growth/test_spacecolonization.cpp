@@ -179,6 +179,74 @@ TEST(SpaceColonization, AcceleratedEqualsNaiveManyNodesACell) {
     }
 }
 
+// The search's update against the oracle's on its own, bit for bit: the offers choose and keep
+// a distance by the integer order of its bits (AVX-512), which must equal the float order for
+// every distance they meet: points exactly on a node (+0), equal distances to mirrored and
+// repeated nodes (the lowest index wins), distances from 1e-6 to past d_i, cells of every size
+// (their padding lanes and the 32/16/masked blocks). Checked after every batch of nodes.
+TEST(SpaceColonization, SearchUpdateEqualsNaiveOnTiesAndZeros) {
+    Rng rng(29);
+    for (int round = 0; round < 6; ++round) {
+        const float di = 2.5f, dk = round % 2 == 0 ? 0.05f : 0.4f;
+        std::vector<glm::vec3> nodes;
+        for (int k = 0; k < 90; ++k) {
+            const glm::vec3 at(static_cast<float>(rng.uniform(-3.0, 3.0)),
+                               static_cast<float>(rng.uniform(-3.0, 3.0)),
+                               static_cast<float>(rng.uniform(-3.0, 3.0)));
+            nodes.push_back(at);
+            if (k % 3 == 0) nodes.push_back({-at.x, at.y, at.z}); // ties for points on x = 0
+            if (k % 5 == 0) nodes.push_back(at);                  // a repeated node
+        }
+        std::vector<glm::vec3> points;
+        for (int a = 0; a < 1500 + 37 * round; ++a) {
+            const int kind = a % 4;
+            const glm::vec3 n = nodes[static_cast<std::size_t>(a) % nodes.size()];
+            if (kind == 0) {
+                points.push_back(n); // on a node: distance +0
+            } else if (kind == 1) {
+                points.push_back({0.0f, n.y, n.z}); // equally far from n and its mirror
+            } else {
+                const double r = kind == 2 ? 1e-6 * rng.uniform(1.0, 1e5) : rng.uniform(0.0, 4.0);
+                points.push_back(n + glm::vec3(static_cast<float>(rng.uniform(-r, r)),
+                                               static_cast<float>(rng.uniform(-r, r)),
+                                               static_cast<float>(rng.uniform(-r, r))));
+            }
+        }
+        const std::size_t n = points.size();
+        std::vector<std::uint32_t> all(n);
+        for (std::uint32_t a = 0; a < n; ++a)
+            all[a] = a;
+        auto state = [&] {
+            return PointState{points, std::vector<float>(n, di * di),
+                              std::vector<std::int32_t>(n, -1), std::vector<std::uint8_t>(n, 0),
+                              all};
+        };
+        PointState fast = state(), slow = state();
+        AcceleratedSearch search(points, di);
+        std::vector<glm::vec3> offered;
+        std::size_t firstNew = 0;
+        for (std::size_t batch : {1u, 7u, 40u, 0u}) {
+            const std::size_t end =
+                batch == 0 ? nodes.size() : std::min(nodes.size(), firstNew + batch);
+            offered.assign(nodes.begin(), nodes.begin() + static_cast<std::ptrdiff_t>(end));
+            search.update(fast, offered, firstNew, dk * dk);
+            updateNaive(slow, offered, di * di, dk * dk);
+            ASSERT_EQ(fast.killed, slow.killed) << "round " << round << " batch " << batch;
+            for (const std::uint32_t a : slow.live) {
+                if (slow.killed[a] != 0) continue;
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(fast.best2[a]),
+                          std::bit_cast<std::uint32_t>(slow.best2[a]))
+                    << "round " << round << " point " << a;
+                ASSERT_EQ(fast.bestNode[a], slow.bestNode[a])
+                    << "round " << round << " point " << a;
+            }
+            dropKilled(fast);
+            dropKilled(slow);
+            firstNew = end;
+        }
+    }
+}
+
 // dropKilled (sixteen ids at a time with AVX-512, their flags gathered four bytes a flag)
 // against erase_if on the flags: every live list of up to 70 of 40-80 points, kills dense and
 // sparse, ids up to the last point (the blocks within three of the end go one by one).
