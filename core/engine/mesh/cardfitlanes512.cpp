@@ -209,6 +209,45 @@ __attribute__((target("avx512f"))) void prepareAvx512(const std::vector<skel::Le
     }
 }
 
+namespace {
+
+// glm::dot: (x + y) + z, the products unfused.
+struct Vec8d {
+    __m512d x, y, z;
+};
+__attribute__((target("avx512f"), always_inline)) inline __m512d dot8(const Vec8d& a,
+                                                                      const Vec8d& b) {
+    return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
+}
+
+// The corners' extent about m along and across, eight cards a register (cardExtentPlain's
+// loop): vminpd / vmaxpd as extentAvx's (a < lo ? a : lo); an ended lane's repeated corners
+// change nothing. What extentAvx512 and finishAvx512 share.
+struct Extent8 {
+    __m512d a0, a1, c0, c1;
+};
+__attribute__((target("avx512f"), always_inline)) inline Extent8
+extent8(const CardFitLanes& lanes, const Vec8d& m, const Vec8d& along, const Vec8d& across) {
+    Extent8 e{_mm512_set1_pd(1e300), _mm512_set1_pd(-1e300), _mm512_set1_pd(1e300),
+              _mm512_set1_pd(-1e300)};
+    const float* const X = lanes.x.data();
+    const float* const Y = lanes.y.data();
+    const float* const Z = lanes.z.data();
+    for (std::size_t s = 0; s < lanes.steps; ++s) {
+        const Vec8d delta = {sub(wide8(X + 8 * s), m.x), sub(wide8(Y + 8 * s), m.y),
+                             sub(wide8(Z + 8 * s), m.z)};
+        const __m512d pa = dot8(delta, along);
+        const __m512d pc = dot8(delta, across);
+        e.a0 = _mm512_min_pd(pa, e.a0);
+        e.a1 = _mm512_max_pd(pa, e.a1);
+        e.c0 = _mm512_min_pd(pc, e.c0);
+        e.c1 = _mm512_max_pd(pc, e.c1);
+    }
+    return e;
+}
+
+} // namespace
+
 __attribute__((target("avx512f"))) void
 extentAvx512(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3* along,
              const glm::dvec3* across, std::size_t n, double (*extent)[4]) {
@@ -232,30 +271,12 @@ extentAvx512(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3
     const double* const c = &across[0].x;
     const __m512d cx = _mm512_i64gather_pd(vecAt, c, 8), cy = _mm512_i64gather_pd(vecAt, c + 1, 8),
                   cz = _mm512_i64gather_pd(vecAt, c + 2, 8);
-    __m512d a0 = _mm512_set1_pd(1e300), a1 = _mm512_set1_pd(-1e300);
-    __m512d c0 = a0, c1 = a1;
-    const float* const X = lanes.x.data();
-    const float* const Y = lanes.y.data();
-    const float* const Z = lanes.z.data();
-    for (std::size_t s = 0; s < lanes.steps; ++s) {
-        const __m512d dx = sub(wide8(X + 8 * s), mx);
-        const __m512d dy = sub(wide8(Y + 8 * s), my);
-        const __m512d dz = sub(wide8(Z + 8 * s), mz);
-        // glm::dot: (x + y) + z.
-        const __m512d pa = add(add(mul(dx, ax), mul(dy, ay)), mul(dz, az));
-        const __m512d pc = add(add(mul(dx, cx), mul(dy, cy)), mul(dz, cz));
-        // vminpd / vmaxpd as extentAvx's (a < lo ? a : lo); an ended lane's repeated corners
-        // change nothing.
-        a0 = _mm512_min_pd(pa, a0);
-        a1 = _mm512_max_pd(pa, a1);
-        c0 = _mm512_min_pd(pc, c0);
-        c1 = _mm512_max_pd(pc, c1);
-    }
+    const Extent8 e = extent8(lanes, {mx, my, mz}, {ax, ay, az}, {cx, cy, cz});
     alignas(64) double v[4][8];
-    _mm512_store_pd(v[0], a0);
-    _mm512_store_pd(v[1], a1);
-    _mm512_store_pd(v[2], c0);
-    _mm512_store_pd(v[3], c1);
+    _mm512_store_pd(v[0], e.a0);
+    _mm512_store_pd(v[1], e.a1);
+    _mm512_store_pd(v[2], e.c0);
+    _mm512_store_pd(v[3], e.c1);
     for (std::size_t k = 0; k < n; ++k)
         for (int e = 0; e < 4; ++e)
             extent[k][e] = v[e][k];
@@ -263,14 +284,6 @@ extentAvx512(const CardFitLanes& lanes, const CardFitInput* in, const glm::dvec3
 
 namespace {
 
-// glm::dot: (x + y) + z, the products unfused.
-struct Vec8d {
-    __m512d x, y, z;
-};
-__attribute__((target("avx512f"), always_inline)) inline __m512d dot8(const Vec8d& a,
-                                                                      const Vec8d& b) {
-    return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
-}
 // glm::cross.
 __attribute__((target("avx512f"), always_inline)) inline Vec8d cross8(const Vec8d& a,
                                                                       const Vec8d& b) {
@@ -365,22 +378,9 @@ __attribute__((target("avx512f"))) bool finishAvx512(const CardFitLanes& lanes,
                          _mm512_mask_blend_pd(longEnough, e1Turned.z, scaled.z)};
     Vec8d across = cross8(c, along);
     across = scale8(across, inverse8(sqrt8(dot8(across, across))));
-    // The extent (extentAvx512's loop).
-    __m512d a0 = _mm512_set1_pd(1e300), a1 = _mm512_set1_pd(-1e300);
-    __m512d c0 = a0, c1 = a1;
-    const float* const X = lanes.x.data();
-    const float* const Y = lanes.y.data();
-    const float* const Z = lanes.z.data();
-    for (std::size_t s = 0; s < lanes.steps; ++s) {
-        const Vec8d delta = {sub(wide8(X + 8 * s), m.x), sub(wide8(Y + 8 * s), m.y),
-                             sub(wide8(Z + 8 * s), m.z)};
-        const __m512d pa = dot8(delta, along);
-        const __m512d pc = dot8(delta, across);
-        a0 = _mm512_min_pd(pa, a0);
-        a1 = _mm512_max_pd(pa, a1);
-        c0 = _mm512_min_pd(pc, c0);
-        c1 = _mm512_max_pd(pc, c1);
-    }
+    // The extent (extent8, as extentAvx512's).
+    const Extent8 e = extent8(lanes, m, along, across);
+    const __m512d a0 = e.a0, a1 = e.a1, c0 = e.c0, c1 = e.c1;
     // cardRect: shrunk about its middle.
     const __m512d half = _mm512_set1_pd(0.5), shrink = _mm512_set1_pd(kCardShrink);
     const __m512d am = mul(half, add(a0, a1)), cm = mul(half, add(c0, c1));
