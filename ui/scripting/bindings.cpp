@@ -455,8 +455,17 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
                 d["shown_hash"] = hash;
                 // The stages after the result: the upload of the new mesh and its frame
                 // (upload included), on the GUI thread.
-                d["upload_ms"] = window().workbench()->previewViewport()->lastUploadMs();
-                d["frame_ms"] = window().workbench()->previewViewport()->lastPaintMs();
+                const Viewport* view = window().workbench()->previewViewport();
+                d["upload_ms"] = view->lastUploadMs();
+                d["frame_ms"] = view->lastPaintMs();
+                d["present_ms"] = view->lastPresentMs();
+                // What is left of edit → screen: from the result to its frame's start (the GUI
+                // thread busy with other work, the window's update request).
+                const double screen = p->editToScreenMs();
+                d["wait_ms"] = screen > 0.0
+                                   ? std::max(0.0, screen - p->editToResultMs() -
+                                                       view->lastPaintMs() - view->lastPresentMs())
+                                   : 0.0;
                 return d;
             },
             "The last preview: edit → result and → screen, the evaluation alone, per node (ran, "
@@ -464,7 +473,9 @@ PYBIND11_EMBEDDED_MODULE(sylva, m) {
             "triangles and vertices, whether the pane shows that very mesh (shown_is_result) and "
             "a hash of the positions it shows (shown_hash), and the GUI thread's stages: the "
             "mesh's "
-            "upload (upload_ms) and the frame that drew it (frame_ms, upload included).")
+            "upload (upload_ms), the frame that drew it (frame_ms, upload included), the window "
+            "system's present after it (present_ms) and the wait from the result to that frame "
+            "(wait_ms).")
         .def("obstacles",
              [](DocumentApi&) { return python::obstaclesList(document().project().obstacles); })
         .def(

@@ -52,6 +52,10 @@ Viewport::Viewport(QWidget* parent) : QWidget(parent) {
         ViewportSurface::embed(*this, format,
                                {[this] { initializeGL(); },
                                 [this](int w, int h) { resizeGL(w, h); }, [this] { paintGL(); }});
+    // The present: from the end of paintGL to the swap done (recorded before frameSwapped is
+    // passed on, so that a slot on it reads this frame's).
+    connect(mSurface, &QOpenGLWindow::frameSwapped, this,
+            [this] { mLastPresentMs = double(mPaintStart.nsecsElapsed()) * 1e-6 - mLastPaintMs; });
     connect(mSurface, &QOpenGLWindow::frameSwapped, this, &Viewport::frameSwapped);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -434,13 +438,12 @@ void Viewport::resizeGL(int width, int height) {
 }
 
 void Viewport::paintGL() {
-    QElapsedTimer frameTimer;
-    frameTimer.start();
-    struct FrameTime { // the frame's CPU time, however paintGL returns
+    mPaintStart.start();
+    struct FrameTime { // the frame's time, however paintGL returns
         QElapsedTimer& timer;
         double& ms;
         ~FrameTime() { ms = double(timer.nsecsElapsed()) * 1e-6; }
-    } frameTime{frameTimer, mLastPaintMs};
+    } frameTime{mPaintStart, mLastPaintMs};
     ++mFramesPainted;
     if (!mGlReady) {
         // Without our functions, fall back to the context's basic ones to show a neutral grey.

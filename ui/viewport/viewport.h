@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QPoint>
@@ -207,6 +208,9 @@ public:
     /// its wind data only with View ▸ Wind on), and the last frame's paintGL (upload included).
     double lastUploadMs() const { return mLastUploadMs; }
     double lastPaintMs() const { return mLastPaintMs; }
+    /// Milliseconds from the end of the last frame's paintGL to its swap done (frameSwapped):
+    /// the window system's part of putting the frame on screen.
+    double lastPresentMs() const { return mLastPresentMs; }
     /// Frames painted since the viewport was made (tests count the repaints an edit causes).
     std::size_t framesPainted() const { return mFramesPainted; }
     /// The mesh setMesh() gave (none after a failed preview).
@@ -375,6 +379,8 @@ private:
     }
     double mLastUploadMs = 0.0;
     double mLastPaintMs = 0.0;
+    double mLastPresentMs = 0.0;
+    QElapsedTimer mPaintStart; ///< the last paintGL's start
     std::size_t mFramesPainted = 0;
     WindClock* mWind = nullptr; ///< a child
     void updateBounds();

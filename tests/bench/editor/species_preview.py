@@ -22,7 +22,7 @@ sylva.wait(0.5)
 
 
 def measure(label, edit):
-    times, results, evals, uploads, frames = [], [], [], [], []
+    times, results, evals, uploads, frames, presents, waits = [], [], [], [], [], [], []
     for i in range(N):
         edit(i)
         win.wait_for_preview(120)
@@ -33,11 +33,13 @@ def measure(label, edit):
         evals.append(st["evaluate_ms"])
         uploads.append(st.get("upload_ms", 0.0))
         frames.append(st.get("frame_ms", 0.0))
+        presents.append(st.get("present_ms", 0.0))
+        waits.append(st.get("wait_ms", 0.0))
     ran = [k for k, v in st["nodes"].items() if v[0]]
     print(f"{label:30s} edit→screen {statistics.median(times):7.1f} ms "
           f"[{min(times):.1f}-{max(times):.1f}]  edit→mesh {statistics.median(results):6.1f} ms"
           f"  evaluation {statistics.median(evals):6.1f} ms  upload {statistics.median(uploads):5.1f} ms"
-          f"  frame {statistics.median(frames):5.1f} ms  re-ran {','.join(ran)}")
+          f"  frame {statistics.median(frames):5.1f} ms  present {statistics.median(presents):4.1f} ms  wait {statistics.median(waits):4.1f} ms  re-ran {','.join(ran)}")
 
 
 for cull in (False, True) if hasattr(win, "set_back_face_culling") else (True,):

@@ -53,6 +53,15 @@ sylva.wait(0.2)
 st = doc.preview_stats()
 assert st["nodes"]["mesh"][0] and not st["nodes"]["grow"][0], st
 assert doc.preview_ms() > 0, doc.preview_ms()
+# Every stage of edit → screen is reported; on screen is the result, its frame, the present
+# and the wait before the frame (to rounding).
+sylva.wait(0.2)
+st = doc.preview_stats()
+for key in ("upload_ms", "frame_ms", "present_ms", "wait_ms"):
+    assert st[key] >= 0.0, (key, st)
+assert st["frame_ms"] > 0.0, st
+assert abs(st["edit_to_result_ms"] + st["frame_ms"] + st["present_ms"] + st["wait_ms"]
+           - st["edit_to_screen_ms"]) < 0.5 or st["wait_ms"] == 0.0, st
 
 # The grammar: diagnostics as (line, column, message); the edit is kept, as in the editor.
 text = doc.grammar("alder", "grow")
