@@ -84,7 +84,7 @@ __attribute__((target("avx512f,avx512dq"))) bool cellsHashed8(const glm::dvec3* 
 }
 
 // SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes the plain cells on any processor.
-const bool kCellsAvx512 = simd::useAvx512() && __builtin_cpu_supports("avx512dq");
+const bool kCellsAvx512 = simd::useAvx512Dq();
 
 } // namespace
 #endif

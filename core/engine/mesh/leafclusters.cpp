@@ -21,9 +21,6 @@ namespace sylva::mesh {
 namespace {
 
 using CellKey = LeafCell;
-std::uint64_t cellHash(const CellKey& k) {
-    return leafCellHash(k);
-}
 
 /// The leaves' cells at one cell size: an open-addressing table of the distinct cells, each
 /// with its group (the order the cells are first met), reused from size to size.
@@ -159,7 +156,7 @@ std::size_t leavesPastCellLimit(const RawVector<glm::dvec3>& mids, double cell, 
     for (std::size_t s0 = 0; s0 < kStride; ++s0) {
         if (s0 == kStride / 2 && 5 * count < 4 * limit) return 0;
         for (std::size_t i = s0; i < mids.size(); i += kStride) {
-            const std::uint64_t b = cellHash(leafCell(mids[i], cell)) >> shift;
+            const std::uint64_t b = leafCellHash(leafCell(mids[i], cell)) >> shift;
             std::uint64_t& word = bits[b >> 6];
             const std::uint64_t bit = std::uint64_t{1} << (b & 63);
             count += (word & bit) == 0;

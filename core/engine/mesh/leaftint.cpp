@@ -556,7 +556,7 @@ ownVariationsAvx512(const glm::dvec3* centre, std::uint64_t seed, double own[3][
 }
 
 // SYLVA_NO_AVX512=1 (or SYLVA_NO_AVX=1) takes the card-by-card hashes on any processor.
-const bool kTintAvx512 = simd::useAvx512() && __builtin_cpu_supports("avx512dq");
+const bool kTintAvx512 = simd::useAvx512Dq();
 #endif
 
 void ownVariations(const glm::dvec3* centre, std::size_t n, std::uint64_t seed,

@@ -159,6 +159,17 @@ struct RingFrame {
     float r, ds, inv, v;
 };
 
+/// \p v with room for \p n elements (grown, not filled, where it is smaller: what it held is
+/// then lost), and its data: the thread's scratch arrays, reused from run to run and chain to
+/// chain.
+template <class T> T* room(RawVector<T>& v, std::size_t n) {
+    if (v.size() < n) {
+        v.clear();
+        v.resize(n);
+    }
+    return v.data();
+}
+
 /// A relief chain's rows (meshChain's second pass), kept by the thread's Scratch from chain to
 /// chain: a fresh vector a chain was an allocation and a zero fill of rows that are written
 /// before they are read (the few pads that are read are set where the rows are made).
@@ -167,14 +178,6 @@ struct ReliefRows {
     RawVector<float> slopes;  ///< a ring's slopes (barkSlopeRow: ∂ρ/∂θ, then ∂ρ/∂s)
     RawVector<float> csLanes; ///< cs's x, y, then z (sides+1 and three zero pads each)
     RawVector<float> lanes;   ///< a ring's positions and normals by component
-
-    static float* room(RawVector<float>& v, std::size_t n) {
-        if (v.size() < n) {
-            v.clear();
-            v.resize(n);
-        }
-        return v.data();
-    }
 };
 
 // Writes one run of chains into a scratch block: vertex v lands at v - base (indices keep
@@ -301,11 +304,6 @@ struct Scratch {
     RawVector<RingFrame> frames; ///< a run's rings' frames (meshChain's first pass)
     ReliefRows relief;           ///< a relief chain's rows (meshChain's second pass)
 
-    template <class T> static void room(RawVector<T>& v, std::size_t n) {
-        if (v.size() >= n) return;
-        v.clear();
-        v.resize(n);
-    }
     Writer writer(std::size_t vBegin, std::size_t vCount, std::size_t iBegin, std::size_t iCount,
                   bool wind, bool ids) {
         room(pos, vCount);
@@ -478,7 +476,7 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
             // neighbouring rings'): R(k) (1 + lobe + relief), the lobe's term a product or, on
             // a round section, none (1 + 0 is 1: the same sum).
             if (k == 0) {
-                float* rho = ReliefRows::room(rows.rho, m * ringVerts + 4);
+                float* rho = room(rows.rho, m * ringVerts + 4);
                 for (std::size_t kk = 0; kk < m; ++kk) {
                     const float rk = R(kk);
                     const float* rel = relief + kk * ringVerts;
@@ -504,7 +502,7 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
             // difference over 2 dθ (the relief's, where the lobes' own is known exactly) and
             // ∂ρ/∂s's over ds, the same quotients as a vertex at a time.
             if (k == 0) {
-                dTh = ReliefRows::room(rows.slopes, 2 * (ringVerts + 3));
+                dTh = room(rows.slopes, 2 * (ringVerts + 3));
                 dS = dTh + ringVerts + 3;
             }
             barkSlopeRow(lobe != nullptr ? relief + k * ringVerts : rhoK, rhoA, rhoB, res,
@@ -514,7 +512,7 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
             // divisions), then written four vertices at a time (barkReliefInterleave).
             const std::size_t stride = ringVerts + 3;
             if (k == 0) {
-                float* x = ReliefRows::room(rows.csLanes, 3 * stride);
+                float* x = room(rows.csLanes, 3 * stride);
                 float* y = x + stride;
                 float* z = y + stride;
                 for (std::size_t j = 0; j < ringVerts; ++j) {
@@ -527,7 +525,7 @@ void meshChain(Writer& w, ChainPass pass, RingFrame* frames, ReliefRows& rows,
                 csX = x;
                 csY = y;
                 csZ = z;
-                ringLanes = ReliefRows::room(rows.lanes, 6 * stride);
+                ringLanes = room(rows.lanes, 6 * stride);
             }
             if (lobe != nullptr) { // the lobes' own slope is known exactly
                 const float rk = R(k);
@@ -1069,7 +1067,7 @@ void appendTubes(Mesh& out, const skel::Skeleton& s, const TubeSettings& setting
                         rings += flared[static_cast<std::size_t>(flaredOf[c])].nodes.size();
                     else if (!ribbon[c])
                         rings += chains.begin[c + 1] - chains.begin[c];
-                Scratch::room(scratch.frames, rings);
+                room(scratch.frames, rings);
                 // Every chain's frames first, then the rings (ChainPass).
                 for (const ChainPass pass : {ChainPass::Frames, ChainPass::Rings}) {
                     RingFrame* frames = scratch.frames.data();

@@ -35,6 +35,12 @@ inline bool useAvx512() {
         useAvx() && __builtin_cpu_supports("avx512f") && std::getenv("SYLVA_NO_AVX512") == nullptr;
     return use;
 }
+/// useAvx512() and the processor has AVX-512DQ (the 64-bit integer products and conversions
+/// of the tints' hashes and the leaf cells' kernels).
+inline bool useAvx512Dq() {
+    static const bool use = useAvx512() && __builtin_cpu_supports("avx512dq");
+    return use;
+}
 
 // AVX-512 sums, differences and products by the _round forms with the current rounding: each
 // rounds on its own, as the scalar operation. GCC contracts a product into the generic vector
